@@ -1,0 +1,354 @@
+"""Case files: TOML input validated by pydantic, physical values converted to SI by pint.
+
+A case has three tables, ``[booster]`` (with sub-tables ``cylinder1`` and ``cylinder2``),
+``[thrust]`` and ``[truncation]``; the embedded default case
+(``flexbooster init`` writes it) documents every field.  Each physical value is a plain number
+in SI or a string with units ("120 in", "10.5e6 psi"); everything the library sees is SI.
+
+Every invalid input raises :class:`~flexbooster.errors.CaseError` naming the field, the value
+and the rule.  Conditions under which the analysis can go on (h/R > 1/20, Mathieu parameters
+outside the memo's range) are warnings, produced by :func:`flexbooster.analysis.analyze`.
+"""
+
+from __future__ import annotations
+
+import math
+import tomllib
+from collections.abc import Mapping
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from pydantic import BaseModel, ConfigDict, StrictInt, ValidationError, field_validator
+
+from .errors import CaseError
+from .units import to_si
+
+__all__ = [
+    "Cylinder",
+    "Booster",
+    "Thrust",
+    "Truncation",
+    "Case",
+    "MAX_MODES",
+    "load_case",
+    "default_case",
+    "default_case_text",
+]
+
+#: Largest mode count, harmonic count or grid size a case may ask for (each index).
+MAX_MODES = 500
+#: Largest number of points of the Omega grid.
+MAX_GRID = 100_000
+
+_FROZEN = ConfigDict(extra="forbid", frozen=True)
+
+
+def _quantity(kind: str, positive: bool = True):
+    """A 'before' validator: number or string with units -> float in SI, optionally > 0."""
+
+    def convert(cls, value: Any, info) -> float:  # noqa: ANN001
+        result = to_si(info.field_name, value, kind)
+        if positive and not result > 0.0:
+            raise ValueError("must be positive")
+        return result
+
+    return convert
+
+
+class Cylinder(BaseModel):
+    """One thin cylindrical shell of the composite.
+
+    Attributes
+    ----------
+    radius : float
+        Mid-surface radius R_d (m), > 0.
+    half_length : float
+        Half-length L_d (m), > 0; the cylinder is 2 L_d long.
+    """
+
+    model_config = _FROZEN
+    radius: float
+    half_length: float
+
+    _length = field_validator("radius", "half_length", mode="before")(_quantity("length"))
+
+
+class Booster(BaseModel):
+    """The two-cylinder composite: cylinder 1 aft (thrust end), cylinder 2 forward.
+
+    Attributes
+    ----------
+    cylinder1, cylinder2 : Cylinder
+        Geometry of each shell.
+    thickness : float
+        Shell thickness h (m), the same for both cylinders (memo 2.2), 0 < h < R_d.
+    E : float
+        Young's modulus (Pa), > 0.
+    nu : float
+        Poisson's ratio, 0 < nu < 0.5.
+    rho : float
+        Mass density (kg/m^3), > 0.
+    """
+
+    model_config = _FROZEN
+    cylinder1: Cylinder
+    cylinder2: Cylinder
+    thickness: float
+    E: float
+    nu: float
+    rho: float
+
+    _h = field_validator("thickness", mode="before")(_quantity("length"))
+    _E = field_validator("E", mode="before")(_quantity("pressure"))
+    _rho = field_validator("rho", mode="before")(_quantity("density"))
+
+    @field_validator("nu", mode="before")
+    @classmethod
+    def _nu(cls, value: Any) -> float:
+        result = to_si("nu", value, "dimensionless")
+        if not 0.0 < result < 0.5:
+            raise ValueError("Poisson's ratio must lie in (0, 0.5)")
+        return result
+
+
+class Thrust(BaseModel):
+    """The gimbaled pulsating end thrust T(t) = T0 (1 - gamma cos Omega t) (memo 2.2-2).
+
+    Exactly one of ``F0`` (total force, N) and ``T0`` (force per unit circumference of the aft
+    edge, N/m; F0 = 2 pi R1 T0) is given.
+
+    Attributes
+    ----------
+    F0 : float or None
+        Total steady thrust (N), > 0.
+    T0 : float or None
+        Steady thrust per unit circumference (N/m), > 0.
+    gamma : float
+        Relative pulsation amplitude, 0 <= gamma < 1 (the thrust stays positive).
+    K : float
+        Gimbal gain (dimensionless), >= 0: the thrust turns by K psi (directional control).
+    omega_min, omega_max : float
+        Range of the thrust pulsation frequency Omega (rad/s; "Hz" values are cyclic and are
+        multiplied by 2 pi), 0 < omega_min < omega_max.
+    n_omega : int
+        Number of points of the (uniform) Omega grid, 2..100000.
+    """
+
+    model_config = _FROZEN
+    F0: float | None = None
+    T0: float | None = None
+    gamma: float
+    K: float
+    omega_min: float
+    omega_max: float
+    n_omega: StrictInt = 401
+
+    _F0 = field_validator("F0", mode="before")(_quantity("force"))
+    _T0 = field_validator("T0", mode="before")(_quantity("force_per_length"))
+    _omega = field_validator("omega_min", "omega_max", mode="before")(
+        _quantity("angular_frequency")
+    )
+
+    @field_validator("gamma", mode="before")
+    @classmethod
+    def _gamma(cls, value: Any) -> float:
+        result = to_si("gamma", value, "dimensionless")
+        if not 0.0 <= result < 1.0:
+            raise ValueError("must lie in [0, 1) so that the thrust stays positive")
+        return result
+
+    @field_validator("K", mode="before")
+    @classmethod
+    def _K(cls, value: Any) -> float:
+        result = to_si("K", value, "dimensionless")
+        if result < 0.0:
+            raise ValueError("gimbal gain must be >= 0 (directional control, memo 2.2-2c)")
+        return result
+
+    @field_validator("n_omega")
+    @classmethod
+    def _n_omega(cls, value: int) -> int:
+        if not 2 <= value <= MAX_GRID:
+            raise ValueError(f"must be an integer in [2, {MAX_GRID}]")
+        return value
+
+
+class Truncation(BaseModel):
+    """Series truncation (memo 4.1, 5.2, 7).
+
+    Attributes
+    ----------
+    M1, N1, M2, N2 : int
+        Shell modes of cylinder 1 and 2: j = 0..M_d axial, k = 0..N_d circumferential;
+        each in [1, 500].
+    N : int
+        Elastic free-free beam modes, [1, 500].
+    S : int
+        Harmonics s = -S..S of the Floquet (Hill) expansion (4.1-10/11), [0, 500].
+    R : int
+        Beam-action exponents alpha_r reported, r = 1..R, [1, N + 1].
+    """
+
+    model_config = _FROZEN
+    M1: StrictInt = 10
+    N1: StrictInt = 10
+    M2: StrictInt = 10
+    N2: StrictInt = 10
+    N: StrictInt = 10
+    S: StrictInt = 10
+    R: StrictInt = 4
+
+    @field_validator("M1", "N1", "M2", "N2", "N", "R")
+    @classmethod
+    def _count(cls, value: int) -> int:
+        if not 1 <= value <= MAX_MODES:
+            raise ValueError(f"must be an integer in [1, {MAX_MODES}]")
+        return value
+
+    @field_validator("S")
+    @classmethod
+    def _harmonics(cls, value: int) -> int:
+        if not 0 <= value <= MAX_MODES:
+            raise ValueError(f"must be an integer in [0, {MAX_MODES}]")
+        return value
+
+
+class Case(BaseModel):
+    """A validated analysis case, all values in SI.
+
+    Attributes
+    ----------
+    name : str
+        A label for reports.
+    booster : Booster
+    thrust : Thrust
+    truncation : Truncation
+    """
+
+    model_config = _FROZEN
+    name: str = "case"
+    booster: Booster
+    thrust: Thrust
+    truncation: Truncation = Truncation()
+
+    @property
+    def F0(self) -> float:
+        """Total steady thrust F0 = 2 pi R1 T0 (N)."""
+        if self.thrust.F0 is not None:
+            return self.thrust.F0
+        return 2.0 * math.pi * self.booster.cylinder1.radius * self.thrust.T0
+
+    @property
+    def T0(self) -> float:
+        """Steady thrust per unit circumference of the aft edge (N/m)."""
+        if self.thrust.T0 is not None:
+            return self.thrust.T0
+        return self.thrust.F0 / (2.0 * math.pi * self.booster.cylinder1.radius)
+
+    def omega_grid(self) -> np.ndarray:
+        """The uniform grid of thrust pulsation frequencies Omega (rad/s)."""
+        t = self.thrust
+        return np.linspace(t.omega_min, t.omega_max, t.n_omega)
+
+    def to_si_dict(self) -> dict[str, Any]:
+        """The case as plain SI numbers (what results.json records as its input)."""
+        data = self.model_dump()
+        data["thrust"]["F0"] = self.F0
+        data["thrust"]["T0"] = self.T0
+        return data
+
+
+def _describe(loc: tuple) -> str:
+    return ".".join(str(part) for part in loc) if loc else "case"
+
+
+def _from_validation_error(exc: ValidationError) -> CaseError:
+    """The first pydantic error as a one-line CaseError (field, value, rule)."""
+    err = exc.errors(include_url=False)[0]
+    field = _describe(err["loc"])
+    kind = err["type"]
+    value = err.get("input")
+    if kind == "missing":
+        return CaseError(field, None, "required field is missing")
+    if kind == "extra_forbidden":
+        return CaseError(field, value, "unknown key")
+    message = err["msg"].removeprefix("Value error, ")
+    if kind in ("int_type", "int_from_float", "int_parsing"):
+        message = "must be a whole number (integer)"
+    elif kind == "model_type":
+        message = "must be a table"
+    return CaseError(field, value, message)
+
+
+def _cross_checks(case: Case) -> None:
+    """Rules that involve more than one field."""
+    b, t, n = case.booster, case.thrust, case.truncation
+    if (t.F0 is None) == (t.T0 is None):
+        given = "both" if t.F0 is not None else "neither"
+        raise CaseError("thrust.F0/thrust.T0", given, "give exactly one of F0 (total) and T0 (per unit circumference)")
+    for d, cyl in ((1, b.cylinder1), (2, b.cylinder2)):
+        if not b.thickness < cyl.radius:
+            raise CaseError(
+                "booster.thickness", b.thickness, f"must be smaller than cylinder{d}.radius = {cyl.radius!r} m"
+            )
+    if not t.omega_min < t.omega_max:
+        raise CaseError("thrust.omega_min", t.omega_min, f"must be smaller than thrust.omega_max = {t.omega_max!r} rad/s")
+    if n.R > n.N + 1:
+        raise CaseError("truncation.R", n.R, f"must not exceed N + 1 = {n.N + 1} (rigid rotation plus N elastic modes)")
+
+
+def _validate(data: Mapping[str, Any]) -> Case:
+    if not isinstance(data, Mapping):
+        raise CaseError("case", type(data).__name__, "must be a table (mapping)")
+    try:
+        case = Case.model_validate(dict(data))
+    except ValidationError as exc:
+        raise _from_validation_error(exc) from None
+    _cross_checks(case)
+    return case
+
+
+def load_case(source: str | Path | Mapping[str, Any]) -> Case:
+    """Load and validate a case from a TOML file or a mapping.
+
+    Parameters
+    ----------
+    source : str or pathlib.Path or Mapping
+        Path of a TOML case file, or the already-parsed mapping.
+
+    Returns
+    -------
+    Case
+        The validated case, all values in SI.
+
+    Raises
+    ------
+    CaseError
+        For a missing file, a file that is not TOML, or any invalid field.
+    """
+    if isinstance(source, Mapping):
+        return _validate(source)
+    path = Path(source)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise CaseError("case file", str(path), "file not found") from None
+    except (IsADirectoryError, PermissionError, UnicodeDecodeError) as exc:
+        raise CaseError("case file", str(path), f"cannot be read as text ({type(exc).__name__})") from None
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise CaseError("case file", str(path), f"not a valid TOML file ({exc})") from None
+    return _validate(data)
+
+
+def default_case_text() -> str:
+    """The embedded default case file, with a comment on every field."""
+    return resources.files("flexbooster").joinpath("data/default_case.toml").read_text("utf-8")
+
+
+def default_case() -> Case:
+    """The embedded default case (a Saturn-class two-stage booster), validated."""
+    return _validate(tomllib.loads(default_case_text()))

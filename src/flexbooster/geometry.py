@@ -1,0 +1,189 @@
+"""Geometry and mass properties of the two-cylinder composite (memo section 2.2, Fig. 1-2).
+
+Coordinates (reading guide section 2; the memo's figures are lost): cylinder 1 (radius R1,
+half-length L1) is aft and carries the thrust on its aft edge; cylinder 2 (R2, L2) is forward.
+``x`` runs from the aft edge (x = 0) to the nose (x = 2 L).  Both shells have thickness h and
+density rho; the bulkheads are rigid and weightless, so the mass is that of the two shells.
+
+Distances from the centre of mass (CM), as in Fig. 1:
+
+* d2 = x_cm            (CM to the aft edge),
+* d1 = 2 L1 - x_cm     (CM to the junction; negative when the CM lies in cylinder 2),
+* d3 = 2 L - x_cm      (CM to the nose),
+* d4 = L - x_cm        (geometric centre minus CM),
+
+and the dimensionless axial coordinate xi_bar = (x - x_cm) / L runs from a = -d2/L (aft edge)
+through c = d1/L (junction) to b = d3/L (nose).
+
+References
+----------
+.. [1] Tech Memo 104, "Dynamic stability of a flexible booster subjected to a gimbaled,
+   periodically-varying end thrust", sections 2.2 and 4.2, Fig. 1-2.
+.. [2] W. Weaver, S. P. Timoshenko, D. H. Young, *Vibration Problems in Engineering*, 5th ed.,
+   Wiley, 1990, appendix (moments of inertia of a thin cylindrical tube).
+"""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass
+
+import numpy as np
+
+__all__ = ["MassProperties", "mass_properties", "moment_of_inertia_memo"]
+
+
+@dataclass(frozen=True)
+class MassProperties:
+    """Mass properties and axial coordinates of the composite (all SI).
+
+    Attributes
+    ----------
+    L : float
+        Half-length of the composite, L = L1 + L2 (m).
+    x_cm : float
+        Position of the centre of mass from the aft edge (m).
+    d1, d2, d3, d4 : float
+        Distances of Fig. 1 (m): CM to junction (signed), CM to aft edge, CM to nose,
+        geometric centre minus CM.
+    a, c, b : float
+        Dimensionless coordinates of the aft edge, the junction and the nose,
+        xi_bar = (x - x_cm) / L.
+    m1, m2, mass : float
+        Shell masses of cylinder 1 and 2 and the total (kg).
+    I_cm : float
+        Pitch moment of inertia about the CM, thin-shell formula (kg m^2), erratum E1.
+    cm_cylinder : int
+        The cylinder (1 or 2) that holds the CM; 1 if it lies exactly on the junction.
+    """
+
+    L: float
+    x_cm: float
+    d1: float
+    d2: float
+    d3: float
+    d4: float
+    a: float
+    c: float
+    b: float
+    m1: float
+    m2: float
+    mass: float
+    I_cm: float
+    cm_cylinder: int
+
+    def to_dict(self) -> dict[str, float | int]:
+        """Return the properties as a JSON-ready mapping."""
+        return asdict(self)
+
+
+def mass_properties(
+    R1: float, L1: float, R2: float, L2: float, h: float, rho: float
+) -> MassProperties:
+    """Mass properties of two joined thin cylindrical shells.
+
+    Parameters
+    ----------
+    R1, R2 : float
+        Mid-surface radii of cylinder 1 (aft) and cylinder 2 (forward) (m).
+    L1, L2 : float
+        Half-lengths of cylinder 1 and 2 (m).  ``L2 = 0`` gives the single cylinder.
+    h : float
+        Shell thickness, the same for both cylinders (m).
+    rho : float
+        Mass density of the shell material (kg/m^3).
+
+    Returns
+    -------
+    MassProperties
+        Masses, CM position, the distances d1..d4 and coordinates a, c, b of Fig. 1-2, and
+        I_cm.
+
+    Notes
+    -----
+    Shell masses m_d = 2 pi rho h R_d (2 L_d).  The moment of inertia about a transverse axis
+    through the CM is (erratum E1 of memo eqs. 2.2-3 and 4.2-2b)
+
+    .. math:: I_{cm} = \\sum_d m_d \\left[\\frac{R_d^2}{2} + \\frac{L_d^2}{3} + e_d^2\\right],
+              \\quad e_1 = d_2 - L_1,\\ e_2 = d_3 - L_2,
+
+    the thin tube's own inertia m (R^2/2 + (2L_d)^2/12) plus the parallel-axis term; e_d is
+    the distance from the CM to the centre of cylinder d, so the formula holds whichever
+    cylinder holds the CM.
+
+    References
+    ----------
+    Tech Memo 104, eqs. (2.2-3), (4.2-2b) and Fig. 1; reading guide, erratum E1.
+    """
+    m1 = 2.0 * np.pi * rho * h * R1 * (2.0 * L1)
+    m2 = 2.0 * np.pi * rho * h * R2 * (2.0 * L2)
+    mass = m1 + m2
+    L = L1 + L2
+    x_cm = (m1 * L1 + m2 * (2.0 * L1 + L2)) / mass  # first moment of the two shells
+    d2 = x_cm
+    d1 = 2.0 * L1 - x_cm
+    d3 = 2.0 * L - x_cm
+    d4 = L - x_cm
+    e1 = d2 - L1  # CM to the centre of cylinder 1
+    e2 = d3 - L2  # CM to the centre of cylinder 2
+    # Erratum E1 (memo eqs. 2.2-3 / 4.2-2b): thin tube about a transverse axis.
+    I_cm = m1 * (R1**2 / 2.0 + L1**2 / 3.0 + e1**2) + m2 * (R2**2 / 2.0 + L2**2 / 3.0 + e2**2)
+    return MassProperties(
+        L=float(L),
+        x_cm=float(x_cm),
+        d1=float(d1),
+        d2=float(d2),
+        d3=float(d3),
+        d4=float(d4),
+        a=float(-d2 / L),
+        c=float(d1 / L),
+        b=float(d3 / L),
+        m1=float(m1),
+        m2=float(m2),
+        mass=float(mass),
+        I_cm=float(I_cm),
+        cm_cylinder=1 if x_cm <= 2.0 * L1 else 2,
+    )
+
+
+def moment_of_inertia_memo(
+    R1: float, L1: float, R2: float, L2: float, h: float, rho: float, form: str = "2.2-3"
+) -> float:
+    """I_cm as printed in the memo (kept reachable for comparison; erratum E1).
+
+    Parameters
+    ----------
+    R1, R2 : float
+        Radii (m).
+    L1, L2 : float
+        Half-lengths (m).
+    h : float
+        Thickness (m).
+    rho : float
+        Density (kg/m^3).
+    form : {"2.2-3", "4.2-2b"}
+        Which printed form: eq. (2.2-3) has L_d^2/3, eq. (4.2-2b) has L_d^2/4.
+
+    Returns
+    -------
+    float
+        The printed expression evaluated as written, 2 pi rho h {R1 [2L1 (R1^2/4 + L1^2/k)
+        + (d2 - L1)^3] + R2 [2L2 (R2^2/4 + L2^2/k) + (d3 - L2)^3]}.  Its last terms have the
+        dimension m^3 rather than m^4 inside the braces, so it is not a moment of inertia;
+        see docs/memo-errata.md, E1.
+
+    References
+    ----------
+    Tech Memo 104, eqs. (2.2-3) and (4.2-2b).
+    """
+    divisor = {"2.2-3": 3.0, "4.2-2b": 4.0}[form]
+    p = mass_properties(R1, L1, R2, L2, h, rho)
+    return float(
+        2.0
+        * np.pi
+        * rho
+        * h
+        * (
+            R1 * (2.0 * L1 * (R1**2 / 4.0 + L1**2 / divisor) + (p.d2 - L1) ** 3)
+            + R2 * (2.0 * L2 * (R2**2 / 4.0 + L2**2 / divisor) + (p.d3 - L2) ** 3)
+        )
+    )

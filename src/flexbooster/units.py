@@ -1,0 +1,94 @@
+"""Physical quantities in case files: plain SI numbers or strings with units (pint).
+
+Everything inside flexbooster is SI.  A case value is either a plain number, taken to be in
+the field's SI unit, or a string such as ``"120 in"``, ``"10.5e6 psi"`` or
+``"2.59e-4 lbf*s^2/in^4"`` that pint converts.  Frequencies need care: pint treats ``Hz`` as
+``1/s`` and the radian as dimensionless, so ``"2 Hz"`` would silently become 2 rad/s.  Here a
+quantity written in hertz (or any prefixed hertz) is a *cyclic* frequency and is multiplied by
+2 pi on conversion to rad/s; ``rpm`` and ``rad/s`` are handled by pint correctly.
+
+This module is part of the input layer, not of the numerical core; only :mod:`flexbooster.case`
+imports it.
+"""
+
+from __future__ import annotations
+
+import math
+from functools import lru_cache
+
+import pint
+
+from .errors import CaseError
+
+__all__ = ["SI_UNITS", "to_si"]
+
+#: SI unit of each kind of quantity that a case file may hold.
+SI_UNITS: dict[str, str] = {
+    "length": "m",
+    "pressure": "Pa",
+    "density": "kg/m^3",
+    "force": "N",
+    "force_per_length": "N/m",
+    "angular_frequency": "rad/s",
+    "dimensionless": "",
+}
+
+
+@lru_cache(maxsize=1)
+def _registry() -> pint.UnitRegistry:
+    return pint.UnitRegistry()
+
+
+def _is_hertz(quantity: pint.Quantity) -> bool:
+    return any("hertz" in name for name in quantity._units)  # noqa: SLF001
+
+
+def to_si(field: str, value: object, kind: str) -> float:
+    """Convert a case value to a float in the SI unit of ``kind``.
+
+    Parameters
+    ----------
+    field : str
+        Dotted name of the field (used in error messages).
+    value : float or int or str
+        A plain number (already SI) or a string with units.
+    kind : str
+        One of the keys of :data:`SI_UNITS`.
+
+    Returns
+    -------
+    float
+        The value in SI units (rad/s for angular frequencies).
+
+    Raises
+    ------
+    CaseError
+        For a boolean, an unparsable string, an unknown unit, a unit of the wrong dimension,
+        or a value that is not finite.
+    """
+    target = SI_UNITS[kind]
+    if isinstance(value, bool):
+        raise CaseError(field, value, f"must be a number or a string with units of {target or 'nothing'}")
+    if isinstance(value, int | float):
+        result = float(value)
+    elif isinstance(value, str):
+        ureg = _registry()
+        try:
+            quantity = ureg.Quantity(value.strip())
+        except pint.errors.UndefinedUnitError as exc:
+            raise CaseError(field, value, f"unknown unit ({exc.unit_names[0] if exc.unit_names else exc})") from None
+        except Exception:  # pint raises several kinds of parse errors
+            raise CaseError(field, value, "cannot read this as a number with units") from None
+        if not isinstance(quantity, pint.Quantity):  # a bare number in a string
+            quantity = ureg.Quantity(float(quantity), "")
+        scale = 2.0 * math.pi if (kind == "angular_frequency" and _is_hertz(quantity)) else 1.0
+        try:
+            result = float(quantity.to(target).magnitude) * scale
+        except pint.errors.DimensionalityError:
+            expected = f"units of {target}" if target else "no units"
+            raise CaseError(field, value, f"wrong dimension: expected {expected}") from None
+    else:
+        raise CaseError(field, value, f"must be a number or a string with units of {target or 'nothing'}")
+    if not math.isfinite(result):
+        raise CaseError(field, value, "must be finite")
+    return result
