@@ -287,16 +287,30 @@ def _cross_checks(case: Case) -> None:
     b, t, n = case.booster, case.thrust, case.truncation
     if (t.F0 is None) == (t.T0 is None):
         given = "both" if t.F0 is not None else "neither"
-        raise CaseError("thrust.F0/thrust.T0", given, "give exactly one of F0 (total) and T0 (per unit circumference)")
+        raise CaseError(
+            "thrust.F0/thrust.T0",
+            given,
+            "give exactly one of F0 (total) and T0 (per unit circumference)",
+        )
     for d, cyl in ((1, b.cylinder1), (2, b.cylinder2)):
         if not b.thickness < cyl.radius:
             raise CaseError(
-                "booster.thickness", b.thickness, f"must be smaller than cylinder{d}.radius = {cyl.radius!r} m"
+                "booster.thickness",
+                b.thickness,
+                f"must be smaller than cylinder{d}.radius = {cyl.radius!r} m",
             )
     if not t.omega_min < t.omega_max:
-        raise CaseError("thrust.omega_min", t.omega_min, f"must be smaller than thrust.omega_max = {t.omega_max!r} rad/s")
+        raise CaseError(
+            "thrust.omega_min",
+            t.omega_min,
+            f"must be smaller than thrust.omega_max = {t.omega_max!r} rad/s",
+        )
     if n.R > n.N + 1:
-        raise CaseError("truncation.R", n.R, f"must not exceed N + 1 = {n.N + 1} (rigid rotation plus N elastic modes)")
+        raise CaseError(
+            "truncation.R",
+            n.R,
+            f"must not exceed N + 1 = {n.N + 1} (rigid rotation plus N elastic modes)",
+        )
 
 
 def _validate(data: Mapping[str, Any]) -> Case:
@@ -336,7 +350,9 @@ def load_case(source: str | Path | Mapping[str, Any]) -> Case:
     except FileNotFoundError:
         raise CaseError("case file", str(path), "file not found") from None
     except (IsADirectoryError, PermissionError, UnicodeDecodeError) as exc:
-        raise CaseError("case file", str(path), f"cannot be read as text ({type(exc).__name__})") from None
+        raise CaseError(
+            "case file", str(path), f"cannot be read as text ({type(exc).__name__})"
+        ) from None
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:

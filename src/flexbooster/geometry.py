@@ -29,7 +29,13 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
-__all__ = ["MassProperties", "mass_properties", "moment_of_inertia_memo"]
+__all__ = [
+    "DimensionlessGroups",
+    "MassProperties",
+    "dimensionless_groups",
+    "mass_properties",
+    "moment_of_inertia_memo",
+]
 
 
 @dataclass(frozen=True)
@@ -167,9 +173,10 @@ def moment_of_inertia_memo(
     -------
     float
         The printed expression evaluated as written, 2 pi rho h {R1 [2L1 (R1^2/4 + L1^2/k)
-        + (d2 - L1)^3] + R2 [2L2 (R2^2/4 + L2^2/k) + (d3 - L2)^3]}.  Its last terms have the
-        dimension m^3 rather than m^4 inside the braces, so it is not a moment of inertia;
-        see docs/memo-errata.md, E1.
+        + (d2 - L1)^3] + R2 [2L2 (R2^2/4 + L2^2/k) + (d3 - L2)^3]}.  It is not the moment of
+        inertia of the shells: R^2/4 is a solid disc's term (a thin tube has R^2/2), the two
+        printings disagree on L_d^2/3 vs L_d^2/4, and the parallel-axis term R_d e_d^3 is
+        not m_d e_d^2 (it even changes sign with e_d); see docs/memo-errata.md, E1.
 
     References
     ----------
@@ -186,4 +193,71 @@ def moment_of_inertia_memo(
             R1 * (2.0 * L1 * (R1**2 / 4.0 + L1**2 / divisor) + (p.d2 - L1) ** 3)
             + R2 * (2.0 * L2 * (R2**2 / 4.0 + L2**2 / divisor) + (p.d3 - L2) ** 3)
         )
+    )
+
+
+@dataclass(frozen=True)
+class DimensionlessGroups:
+    """The dimensionless groups of memo section 3.0.
+
+    Attributes
+    ----------
+    mu : float
+        mu = rho L^2 omega_1^2 / E (notation list; eq. 3.0-4a as printed lacks a power of L,
+        erratum E3).
+    lambda1, lambda2 : float
+        lambda_d = L / R_d (eq. 3.0-1), one per cylinder.
+    sigma : float
+        sigma = h / L (eq. 3.0-1).
+    T0_bar : float
+        T0_bar = T0 / (rho h L^2 omega_1^2) (eq. 3.0-4b).
+    """
+
+    mu: float
+    lambda1: float
+    lambda2: float
+    sigma: float
+    T0_bar: float
+
+    def to_dict(self) -> dict[str, float]:
+        """Return the groups as a JSON-ready mapping."""
+        return asdict(self)
+
+
+def dimensionless_groups(
+    L: float, R1: float, R2: float, h: float, E: float, rho: float, omega_1: float, T0: float
+) -> DimensionlessGroups:
+    """The dimensionless groups mu, lambda_d, sigma, T0_bar of memo section 3.0.
+
+    Parameters
+    ----------
+    L : float
+        Half-length of the composite (m).
+    R1, R2 : float
+        Radii of cylinder 1 and 2 (m).
+    h : float
+        Shell thickness (m).
+    E : float
+        Young's modulus (Pa).
+    rho : float
+        Density (kg/m^3).
+    omega_1 : float
+        First free-free bending frequency, eq. (4.2-8b) (rad/s).
+    T0 : float
+        Steady thrust per unit circumference of the aft edge (N/m).
+
+    Returns
+    -------
+    DimensionlessGroups
+
+    References
+    ----------
+    Tech Memo 104, eqs. (3.0-1), (3.0-4) and the notation list; reading guide, erratum E3.
+    """
+    return DimensionlessGroups(
+        mu=float(rho * L**2 * omega_1**2 / E),  # notation list (eq. 3.0-4a corrected, E3)
+        lambda1=float(L / R1),  # eq. (3.0-1)
+        lambda2=float(L / R2),  # eq. (3.0-1)
+        sigma=float(h / L),  # eq. (3.0-1)
+        T0_bar=float(T0 / (rho * h * L**2 * omega_1**2)),  # eq. (3.0-4b)
     )

@@ -68,7 +68,9 @@ def to_si(field: str, value: object, kind: str) -> float:
     """
     target = SI_UNITS[kind]
     if isinstance(value, bool):
-        raise CaseError(field, value, f"must be a number or a string with units of {target or 'nothing'}")
+        raise CaseError(
+            field, value, f"must be a number or a string with units of {target or 'nothing'}"
+        )
     if isinstance(value, int | float):
         result = float(value)
     elif isinstance(value, str):
@@ -76,7 +78,9 @@ def to_si(field: str, value: object, kind: str) -> float:
         try:
             quantity = ureg.Quantity(value.strip())
         except pint.errors.UndefinedUnitError as exc:
-            raise CaseError(field, value, f"unknown unit ({exc.unit_names[0] if exc.unit_names else exc})") from None
+            raise CaseError(
+                field, value, f"unknown unit ({exc.unit_names[0] if exc.unit_names else exc})"
+            ) from None
         except Exception:  # pint raises several kinds of parse errors
             raise CaseError(field, value, "cannot read this as a number with units") from None
         if not isinstance(quantity, pint.Quantity):  # a bare number in a string
@@ -88,7 +92,9 @@ def to_si(field: str, value: object, kind: str) -> float:
             expected = f"units of {target}" if target else "no units"
             raise CaseError(field, value, f"wrong dimension: expected {expected}") from None
     else:
-        raise CaseError(field, value, f"must be a number or a string with units of {target or 'nothing'}")
+        raise CaseError(
+            field, value, f"must be a number or a string with units of {target or 'nothing'}"
+        )
     if not math.isfinite(result):
         raise CaseError(field, value, "must be finite")
     return result

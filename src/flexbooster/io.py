@@ -1,0 +1,114 @@
+"""Writing results: atomic file writes and JSON with a schema version.
+
+Every file is written to a temporary name in the destination folder, flushed to disk and then
+renamed over the destination (``os.replace`` is atomic on POSIX and Windows), so an interrupted
+run never leaves a half-written result.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import math
+import os
+import tempfile
+from collections.abc import Iterable, Mapping
+from pathlib import Path
+from typing import Any
+
+__all__ = ["write_text_atomic", "write_json_atomic", "write_csv_atomic", "check_finite"]
+
+
+def write_text_atomic(path: str | Path, text: str) -> Path:
+    """Write ``text`` to ``path`` atomically (temporary file, fsync, rename).
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        Destination file; its folder is created if needed.
+    text : str
+        Content (UTF-8).
+
+    Returns
+    -------
+    pathlib.Path
+        The destination path.
+    """
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".part", dir=path.parent)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8", newline="") as handle:
+            handle.write(text)
+            handle.flush()
+            os.fsync(handle.fileno())
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+    return path
+
+
+def check_finite(data: Any, where: str = "results") -> None:
+    """Raise ``ValueError`` naming the first NaN or infinite number found in ``data``.
+
+    Parameters
+    ----------
+    data : object
+        Nested mappings, lists and numbers.
+    where : str
+        Dotted path used in the message.
+    """
+    if isinstance(data, float):
+        if not math.isfinite(data):
+            raise ValueError(f"{where} = {data!r}: a result must be finite (internal error)")
+    elif isinstance(data, Mapping):
+        for key, value in data.items():
+            check_finite(value, f"{where}.{key}")
+    elif isinstance(data, list | tuple):
+        for i, value in enumerate(data):
+            check_finite(value, f"{where}[{i}]")
+
+
+def write_json_atomic(path: str | Path, data: Mapping[str, Any]) -> Path:
+    """Write a mapping as JSON atomically; NaN and infinity are refused.
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        Destination file.
+    data : Mapping
+        JSON-ready data (plain lists, floats, strings).
+
+    Returns
+    -------
+    pathlib.Path
+        The destination path.
+    """
+    check_finite(data)
+    return write_text_atomic(path, json.dumps(data, indent=2, allow_nan=False) + "\n")
+
+
+def write_csv_atomic(path: str | Path, rows: Iterable[Mapping[str, Any]]) -> Path:
+    """Write rows (mappings with the same keys) as CSV atomically.
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        Destination file.
+    rows : iterable of Mapping
+        The table; the keys of the first row are the header.
+
+    Returns
+    -------
+    pathlib.Path
+        The destination path.
+    """
+    rows = list(rows)
+    buffer = io.StringIO()
+    if rows:
+        writer = csv.DictWriter(buffer, fieldnames=list(rows[0]), lineterminator="\n")
+        writer.writeheader()
+        writer.writerows(rows)
+    return write_text_atomic(path, buffer.getvalue())

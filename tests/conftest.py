@@ -1,0 +1,45 @@
+"""Shared fixtures: a valid case mapping that tests modify one field at a time."""
+
+from __future__ import annotations
+
+import copy
+import tomllib
+
+import matplotlib
+import pytest
+
+matplotlib.use("Agg")
+
+
+@pytest.fixture
+def case_dict() -> dict:
+    """The embedded default case as a fresh, mutable mapping."""
+    from flexbooster.case import default_case_text
+
+    return copy.deepcopy(tomllib.loads(default_case_text()))
+
+
+def dump_toml(data: dict, prefix: str = "") -> str:
+    """A minimal TOML writer for test cases: scalars first, then sub-tables."""
+    import json
+    import math
+
+    def scalar(value):
+        if isinstance(value, bool):
+            return "true" if value else "false"
+        if isinstance(value, float) and not math.isfinite(value):
+            return "nan" if math.isnan(value) else ("inf" if value > 0 else "-inf")
+        if isinstance(value, int | float):
+            return repr(value)
+        if isinstance(value, str):
+            return json.dumps(value)
+        if isinstance(value, list):
+            return "[" + ", ".join(scalar(v) for v in value) + "]"
+        raise TypeError(type(value))
+
+    lines = [f"{k} = {scalar(v)}" for k, v in data.items() if not isinstance(v, dict)]
+    for key, value in data.items():
+        if isinstance(value, dict):
+            name = f"{prefix}.{key}" if prefix else key
+            lines += ["", f"[{name}]", dump_toml(value, name)]
+    return "\n".join(lines)

@@ -1,0 +1,140 @@
+"""The pipeline: Mathieu parameters against the untransformed pitch equation, warnings, the
+results dictionary, and unit-system independence."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+import pint
+import pytest
+from scipy.integrate import solve_ivp
+
+from flexbooster import analyze, default_case, load_case
+
+INCH = 0.0254  # exact (international inch)
+LBF = 4.4482216152605  # N, exact (NIST SP 811)
+
+
+def test_mathieu_parameters_reproduce_the_pitch_equation(case_dict):
+    """Eqs. (4.2-1) -> (4.2-3): integrate the linearised pitch equation in physical time,
+    psi'' + (2 pi R1 d2 K T(t) / I_cm) psi = 0 (E2: lever arm d2), and the Mathieu equation
+    y'' + (a - 2q cos 2 tau1) y = 0 with the pipeline's a, q in tau1 = Omega t / 2; the two
+    solutions from the same initial state must coincide (solve_ivp DOP853, rtol 1e-11)."""
+    case_dict["thrust"]["gamma"] = 0.3  # a sizeable modulation makes a wrong q visible
+    case = load_case(case_dict)
+    res = analyze(case)
+    c1 = case.booster.cylinder1
+    k_phys = 2 * math.pi * c1.radius * res.mass.d2 * case.thrust.K * case.T0 / res.mass.I_cm
+    for i in (0, 50, 399):
+        Omega, a, q = res.Omega[i], res.a[i], res.q[i]
+        t_end = 6 * 2 * math.pi / Omega
+
+        def physical(t, y, Omega=Omega):
+            return [y[1], -k_phys * (1 - case.thrust.gamma * math.cos(Omega * t)) * y[0]]
+
+        def mathieu(s, y, a=a, q=q):
+            return [y[1], -(a - 2 * q * math.cos(2 * s)) * y[0]]
+
+        t = np.linspace(0, t_end, 7)
+        ref = solve_ivp(
+            physical, (0, t_end), [1e-3, 0.0], t_eval=t, rtol=1e-11, atol=1e-16, method="DOP853"
+        )
+        mat = solve_ivp(
+            mathieu,
+            (0, Omega * t_end / 2),
+            [1e-3, 0.0],
+            t_eval=Omega * t / 2,
+            rtol=1e-11,
+            atol=1e-16,
+            method="DOP853",
+        )
+        np.testing.assert_allclose(mat.y[0], ref.y[0], rtol=1e-7, atol=1e-12)
+
+
+def test_memo_moment_without_lever_arm_is_not_an_angular_acceleration():
+    """Erratum E2: 2 pi R1 T0 sin(K psi) / I_cm (eq. 2.2-2c as printed) has the dimension
+    1/(m s^2); with the lever arm d2 (eq. 4.2-1) it is 1/s^2 (pint)."""
+    u = pint.UnitRegistry()
+    R1, d2, T0, inertia = 1 * u.m, 1 * u.m, 1 * u("N/m"), 1 * u("kg*m^2")
+    printed = (2 * math.pi * R1 * T0 / inertia).to_base_units()
+    corrected = (2 * math.pi * R1 * d2 * T0 / inertia).to_base_units()
+    assert printed.dimensionality == (u.s**-2 / u.m).dimensionality
+    assert corrected.dimensionality == (u.s**-2).dimensionality
+
+
+def test_default_case_in_memo_range_without_warnings():
+    """The default case is chosen so that 0 < a < 1 and 0 < q <= 0.05 on its Omega grid (4.2-5)
+    and h/R <= 1/20."""
+    res = analyze(default_case())
+    assert res.warnings == ()
+    assert np.all((res.a > 0) & (res.a < 1)) and np.all((res.q > 0) & (res.q <= 0.05))
+
+
+@pytest.mark.parametrize(
+    ("changes", "codes"),
+    [
+        ({"thrust": {"K": 0.0}}, {"mathieu-a-range", "mathieu-q-range"}),
+        ({"thrust": {"omega_min": "1 rad/s"}}, {"mathieu-a-range", "mathieu-q-range"}),
+        ({"thrust": {"gamma": 0.0}}, {"mathieu-q-range"}),
+        ({"booster": {"thickness": "0.3 m"}}, {"thin-shell"}),
+    ],
+)
+def test_warnings(case_dict, changes, codes):
+    for table, values in changes.items():
+        case_dict[table].update(values)
+    res = analyze(load_case(case_dict))
+    assert {w.code for w in res.warnings} == codes
+    data = res.to_dict()
+    assert {w["code"] for w in data["warnings"]} == codes
+    json.dumps(data, allow_nan=False)  # no NaN or inf even with K = 0
+
+
+def _numbers(tree, prefix=""):
+    if isinstance(tree, dict):
+        for k, v in tree.items():
+            yield from _numbers(v, f"{prefix}.{k}")
+    elif isinstance(tree, list):
+        for i, v in enumerate(tree):
+            yield from _numbers(v, f"{prefix}[{i}]")
+    elif isinstance(tree, float | int) and not isinstance(tree, bool):
+        yield prefix, float(tree)
+
+
+def test_same_case_in_si_and_inch_pound_units(case_dict):
+    """The default case written in inch-pound units (exact conversion factors) gives the same
+    results to 1e-12 relative."""
+    si = default_case()
+    b, t = si.booster, si.thrust
+    ip = {
+        "name": si.name,
+        "booster": {
+            "thickness": f"{b.thickness / INCH!r} in",
+            "E": f"{b.E / (LBF / INCH**2)!r} psi",
+            "nu": b.nu,
+            "rho": f"{b.rho / (LBF / INCH**4)!r} lbf*s^2/in^4",
+            "cylinder1": {
+                "radius": f"{b.cylinder1.radius / INCH!r} in",
+                "half_length": f"{b.cylinder1.half_length / 12 / INCH!r} ft",
+            },
+            "cylinder2": {
+                "radius": f"{b.cylinder2.radius / INCH!r} in",
+                "half_length": f"{b.cylinder2.half_length / 12 / INCH!r} ft",
+            },
+        },
+        "thrust": {
+            "F0": f"{t.F0 / LBF!r} lbf",
+            "gamma": t.gamma,
+            "K": t.K,
+            "omega_min": f"{t.omega_min / (2 * math.pi)!r} Hz",
+            "omega_max": f"{t.omega_max * 60 / (2 * math.pi)!r} rpm",
+            "n_omega": t.n_omega,
+        },
+        "truncation": case_dict["truncation"],
+    }
+    a = dict(_numbers(analyze(si).to_dict()))
+    b_ = dict(_numbers(analyze(load_case(ip)).to_dict()))
+    assert a.keys() == b_.keys()
+    for key, value in a.items():
+        assert b_[key] == pytest.approx(value, rel=1e-12, abs=1e-300), key

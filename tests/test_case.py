@@ -1,0 +1,157 @@
+"""Case files: units, validation rules and the embedded default case."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from flexbooster.case import MAX_MODES, default_case, default_case_text, load_case
+from flexbooster.errors import CaseError
+from flexbooster.units import to_si
+
+# Exact unit definitions: 1 in = 0.0254 m (international inch, 1959); 1 lbf = 4.4482216152605 N
+# (NIST SP 811, appendix B); 1 psi = 1 lbf/in^2.
+INCH = 0.0254
+LBF = 4.4482216152605
+PSI = LBF / INCH**2
+
+
+@pytest.mark.parametrize(
+    ("value", "kind", "expected"),
+    [
+        ("120 in", "length", 120 * INCH),
+        ("3 ft", "length", 36 * INCH),
+        ("20 mm", "length", 0.020),
+        (5.05, "length", 5.05),
+        ("10.5e6 psi", "pressure", 10.5e6 * PSI),
+        ("72.4 GPa", "pressure", 72.4e9),
+        ("2.59e-4 lbf*s^2/in^4", "density", 2.59e-4 * LBF / INCH**4),
+        ("2.8 MN", "force", 2.8e6),
+        ("1000 lbf", "force", 1000 * LBF),
+        ("500 lbf/in", "force_per_length", 500 * LBF / INCH),
+        ("5 rad/s", "angular_frequency", 5.0),
+        ("2 Hz", "angular_frequency", 4 * math.pi),  # cycles per second -> 2 pi rad/s
+        ("1 kHz", "angular_frequency", 2000 * math.pi),
+        ("60 rpm", "angular_frequency", 2 * math.pi),
+        ("0.33", "dimensionless", 0.33),
+    ],
+)
+def test_unit_conversion(value, kind, expected):
+    assert to_si("f", value, kind) == pytest.approx(expected, rel=1e-14)
+
+
+@pytest.mark.parametrize(
+    ("value", "kind", "rule"),
+    [
+        ("12 furlongz", "length", "unknown unit"),
+        ("12 s", "length", "wrong dimension"),
+        ("3 kg", "pressure", "wrong dimension"),
+        ("abc def ++", "length", "cannot read"),
+        (True, "length", "must be a number"),
+        ([1, 2], "length", "must be a number"),
+        (float("nan"), "length", "must be finite"),
+        (float("inf"), "pressure", "must be finite"),
+    ],
+)
+def test_unit_errors_name_field_value_rule(value, kind, rule):
+    with pytest.raises(CaseError) as info:
+        to_si("booster.x", value, kind)
+    assert info.value.field == "booster.x"
+    assert rule in info.value.rule
+    assert "booster.x" in str(info.value)
+
+
+def test_default_case_is_valid_and_documented():
+    case = default_case()
+    assert case.booster.cylinder1.radius == 5.05
+    assert case.thrust.F0 == 2.8e6 and case.thrust.T0 is None
+    assert case.T0 == pytest.approx(2.8e6 / (2 * math.pi * 5.05), rel=1e-15)
+    # every field line of the embedded file carries a comment
+    for line in default_case_text().splitlines():
+        if "=" in line and not line.lstrip().startswith("#") and not line.startswith("name"):
+            assert "#" in line, line
+
+
+def test_T0_instead_of_F0(case_dict):
+    del case_dict["thrust"]["F0"]
+    case_dict["thrust"]["T0"] = "500 lbf/in"
+    case = load_case(case_dict)
+    assert case.F0 == pytest.approx(2 * math.pi * 5.05 * 500 * LBF / INCH, rel=1e-14)
+
+
+def _set(data, dotted, value):
+    *parents, last = dotted.split(".")
+    for key in parents:
+        data = data[key]
+    if value is _DELETE:
+        del data[last]
+    else:
+        data[last] = value
+
+
+_DELETE = object()
+
+# (field to change, new value, field named in the message, words of the rule)
+BAD_INPUTS = [
+    ("booster.cylinder1.radius", _DELETE, "booster.cylinder1.radius", "required"),
+    ("booster.E", _DELETE, "booster.E", "required"),
+    ("booster.cylinder1.radius", -5.0, "booster.cylinder1.radius", "positive"),
+    ("booster.cylinder2.half_length", "0 m", "booster.cylinder2.half_length", "positive"),
+    ("booster.thickness", "-1 mm", "booster.thickness", "positive"),
+    ("booster.E", 0, "booster.E", "positive"),
+    ("booster.rho", "-2700 kg/m^3", "booster.rho", "positive"),
+    ("booster.nu", 0.5, "booster.nu", "(0, 0.5)"),
+    ("booster.nu", -0.1, "booster.nu", "(0, 0.5)"),
+    ("booster.thickness", "4 m", "booster.thickness", "smaller than cylinder2.radius"),
+    ("thrust.T0", "1000 N/m", "thrust.F0/thrust.T0", "exactly one"),
+    ("thrust.F0", _DELETE, "thrust.F0/thrust.T0", "exactly one"),
+    ("thrust.omega_min", "3000 rad/s", "thrust.omega_min", "smaller than thrust.omega_max"),
+    ("thrust.omega_max", "5 rad/s", "thrust.omega_min", "smaller than thrust.omega_max"),
+    ("booster.E", "10.5e6 psx", "booster.E", "unknown unit"),
+    ("booster.E", "10.5e6 m", "booster.E", "wrong dimension"),
+    ("thrust.F0", "3 kg", "thrust.F0", "wrong dimension"),
+    ("thrust.omega_min", "5 m", "thrust.omega_min", "wrong dimension"),
+    ("truncation.M1", MAX_MODES + 1, "truncation.M1", "[1, 500]"),
+    ("truncation.N", 0, "truncation.N", "[1, 500]"),
+    ("truncation.S", -1, "truncation.S", "[0, 500]"),
+    ("truncation.R", 12, "truncation.R", "N + 1"),
+    ("truncation.M2", 2.5, "truncation.M2", "whole number"),
+    ("truncation.N2", "ten", "truncation.N2", "whole number"),
+    ("booster.radius", 3.0, "booster.radius", "unknown key"),
+    ("thrust.gimbal", 0.5, "thrust.gimbal", "unknown key"),
+    ("thrust.gamma", 1.0, "thrust.gamma", "[0, 1)"),
+    ("thrust.K", -0.5, "thrust.K", ">= 0"),
+    ("thrust.n_omega", 1, "thrust.n_omega", "[2, 100000]"),
+    ("booster.cylinder1.radius", float("nan"), "booster.cylinder1.radius", "finite"),
+    ("booster.cylinder1", 5.0, "booster.cylinder1", "table"),
+]
+
+
+@pytest.mark.parametrize(("path", "value", "field", "rule"), BAD_INPUTS)
+def test_bad_input_names_field_value_and_rule(case_dict, path, value, field, rule):
+    _set(case_dict, path, value)
+    with pytest.raises(CaseError) as info:
+        load_case(case_dict)
+    assert info.value.field == field
+    assert rule in info.value.rule
+    message = str(info.value)
+    assert "\n" not in message and field in message
+
+
+def test_file_not_toml(tmp_path):
+    path = tmp_path / "case.toml"
+    path.write_text("[booster\nradius = ")
+    with pytest.raises(CaseError, match="not a valid TOML file"):
+        load_case(path)
+
+
+def test_file_missing(tmp_path):
+    with pytest.raises(CaseError, match="file not found"):
+        load_case(tmp_path / "absent.toml")
+
+
+def test_case_is_frozen():
+    case = default_case()
+    with pytest.raises(Exception):  # noqa: B017 - pydantic raises ValidationError for frozen models
+        case.booster.E = 1.0

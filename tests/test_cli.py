@@ -1,0 +1,85 @@
+"""The command line: exit codes, one-line messages, files written atomically."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import pytest
+
+from conftest import dump_toml
+from flexbooster.cli import main
+from test_case import BAD_INPUTS, _set
+
+
+def run_cli(argv):
+    """Run the command in-process; return (exit code, stdout, stderr)."""
+    with pytest.raises(SystemExit) as info:
+        main(argv)
+    return info.value.code
+
+
+def test_run_default_writes_results(tmp_path, capsys):
+    assert run_cli(["run", "-o", str(tmp_path)]) == 0
+    out = capsys.readouterr().out
+    assert "Mass properties" in out and "omega_1" in out
+    data = json.loads((tmp_path / "results.json").read_text())
+    assert data["schema_version"] == "1.0" and "units" in data
+    assert data["mass_properties"]["I_cm"] > 0
+    assert [p.name for p in tmp_path.iterdir()] == ["results.json"]  # no temporary leftovers
+
+
+def test_init_then_run(tmp_path, capsys):
+    path = tmp_path / "my.toml"
+    assert run_cli(["init", str(path)]) == 0
+    assert run_cli(["init", str(path)]) == 2  # refuses to overwrite
+    assert "file exists" in capsys.readouterr().err
+    assert run_cli(["run", str(path), "-o", str(tmp_path / "out")]) == 0
+    assert (tmp_path / "out" / "results.json").exists()
+
+
+@pytest.mark.parametrize(("path", "value", "field", "rule"), BAD_INPUTS)
+def test_bad_input_exit_code_2(case_dict, tmp_path, capsys, path, value, field, rule):
+    _set(case_dict, path, value)
+    case_file = tmp_path / "bad.toml"
+    case_file.write_text(dump_toml(case_dict))
+    assert run_cli(["run", str(case_file), "-o", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1, err
+    assert field in err and rule in err
+    assert not (tmp_path / "out").exists()  # nothing written for a rejected case
+
+
+def test_not_toml_exit_code_2(tmp_path, capsys):
+    bad = tmp_path / "bad.toml"
+    bad.write_text("this is = = not toml")
+    assert run_cli(["run", str(bad)]) == 2
+    assert "not a valid TOML file" in capsys.readouterr().err
+
+
+def test_warning_reaches_summary_and_results(case_dict, tmp_path, capsys):
+    case_dict["booster"]["thickness"] = "0.2 m"  # h/R2 = 0.2/3.3 > 1/20
+    case_file = tmp_path / "thick.toml"
+    case_file.write_text(dump_toml(case_dict))
+    assert run_cli(["run", str(case_file), "-o", str(tmp_path)]) == 0
+    assert "thin-shell" in capsys.readouterr().out
+    codes = [w["code"] for w in json.loads((tmp_path / "results.json").read_text())["warnings"]]
+    assert codes == ["thin-shell"]
+
+
+def test_real_process_no_traceback(tmp_path):
+    """The installed entry point, as a user runs it: exit 2 and no traceback."""
+    bad = tmp_path / "bad.toml"
+    bad.write_text("[booster]\nE = '1 furlong'\n")
+    proc = subprocess.run(
+        [sys.executable, "-m", "flexbooster.cli", "run", str(bad)], capture_output=True, text=True
+    )
+    assert proc.returncode == 2
+    assert "Traceback" not in proc.stderr
+    assert proc.stderr.startswith("flexbooster: error:")
+
+
+def test_version(capsys):
+    assert run_cli(["--version"]) == 0
+    assert "0.1.0" in capsys.readouterr().out
