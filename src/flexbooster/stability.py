@@ -1,0 +1,539 @@
+"""Unstable thrust frequencies: the 13 families of stability equations (memo section 7).
+
+Each family equates an *excitation frequency* of the forcing of the shell modes to a shell
+natural frequency (memo 7.1: the vanishing denominators of the closed-form responses of 6.2).
+With Omega_bar = Omega / omega_1 and (7.2-6)
+
+    Omega_i = [(i - 2)^2 + eps_i beta(Omega)] Omega_bar,   eps = (-1/2, 1/2, 1/2),  i = 1, 2, 3,
+
+every excitation is |c(Omega)| Omega_bar with a coefficient c that is linear in beta and in the
+beam exponents alpha_r (table :data:`FAMILIES`).  beta and alpha_r depend on Omega, so each
+family is an implicit equation in Omega; all its roots in the requested range are found at once
+for every curve and every shell frequency:
+
+1. one pass over a scan grid evaluates beta and alpha_r once and every excitation curve;
+2. every shell frequency between two consecutive curve values brackets a root (sorted targets,
+   ``numpy.searchsorted``: all curves, intervals and targets at once);
+3. all brackets are refined together by a vectorised Illinois (regula falsi) iteration, one
+   batched evaluation of beta and alpha_r per step, to a residual below 1e-12 in Omega_bar;
+4. roots of coincident curves (e.g. Omega_bar + Omega_2 = Omega_3 identically) at the same
+   shell mode are reported once, with every family that produces them.
+
+A root is "active" when the forcing that produces it is structurally non-zero (reading guide
+section 5): the rigid-body and beam terms carry delta_1k (k = 1 only), the psi-dot-squared terms
+drive k = 0 (families 4-6) and, through delta_2k, k = 2 (families 10-12); the pulsation terms need
+gamma != 0; A_1 and A_3 of psi (4.2-7b, d) are proportional to q, so terms in Omega_1 or Omega_3
+need gamma != 0 too.  Other roots are "listed": the memo lists them, but no forcing reaches them.
+
+References
+----------
+.. [1] Tech Memo 104, sections 6.2 and 7 (eqs. 7.2-1..7.2-6, 7.3-1..7.3-35), errata E7, E8.
+.. [2] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, ch. 1
+   (combination resonances Omega_i +- Omega_p).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import numpy as np
+
+__all__ = [
+    "EPS",
+    "FAMILIES",
+    "ExcitationCurves",
+    "ShellModes",
+    "StabilityTable",
+    "excitation_curves",
+    "excitation",
+    "unstable_frequencies",
+]
+
+#: eps_i of eq. (7.2-5), i = 1, 2, 3.
+EPS = (-0.5, 0.5, 0.5)
+
+#: The 13 families: number -> (equation, shell-frequency set, source of the forcing, kind).
+#: kind: "Omega_i" c = (i-2)^2 + eps_i beta; "alpha" c = alpha_r + s; "Omega" c = 1;
+#: "2Omega_i" c = 2 [(i-2)^2 + eps_i beta]; "sum"/"difference" c = Omega_i +- Omega_p terms;
+#: "Omega+Omega_i"/"Omega-Omega_i" c = (i-2)^2 + eps_i beta +- 1.
+FAMILIES: dict[int, tuple[str, str, str, str]] = {
+    1: ("7.3-1", "0k", "U_0k", "Omega_i"),
+    2: ("7.3-3", "0k", "U_0k", "alpha"),
+    3: ("7.3-5", "j0", "U_j0, W_j0", "Omega"),
+    4: ("7.3-8 (E7)", "j0", "U_j0, W_j0", "2Omega_i"),
+    5: ("7.3-11", "j0", "U_j0, W_j0", "sum"),
+    6: ("7.3-14", "j0", "U_j0, W_j0", "difference"),
+    7: ("7.3-17", "jk", "J_1, J_2, J_3", "Omega_i"),
+    8: ("7.3-20", "jk", "J_1, J_2, J_3", "Omega+Omega_i"),
+    9: ("7.3-23", "jk", "J_1, J_2, J_3", "Omega-Omega_i"),
+    10: ("7.3-26 (E8)", "jk", "J_1, J_2, J_3", "sum"),
+    11: ("7.3-29 (E8)", "jk", "J_1, J_2, J_3", "difference"),
+    12: ("7.3-32 (E7)", "jk", "J_1, J_2, J_3", "2Omega_i"),
+    13: ("7.3-35", "jk", "J_1, J_2, J_3", "alpha"),
+}
+
+
+@dataclass(frozen=True)
+class ExcitationCurves:
+    """Excitation curves |k0 + kb beta + ka alpha_r| Omega_bar of all families (parallel arrays).
+
+    Attributes
+    ----------
+    family : numpy.ndarray of int
+        Family number 1..13 (memo 7.4).
+    i, p : numpy.ndarray of int
+        Indices of Omega_i, Omega_p (0 where unused).
+    r, s : numpy.ndarray of int
+        Beam exponent r (1..R, 0 where unused) and harmonic s.
+    k0, kb, ka : numpy.ndarray of float
+        Constant, beta and alpha_r coefficients of c.
+    """
+
+    family: np.ndarray
+    i: np.ndarray
+    p: np.ndarray
+    r: np.ndarray
+    s: np.ndarray
+    k0: np.ndarray
+    kb: np.ndarray
+    ka: np.ndarray
+
+    def __len__(self) -> int:
+        return int(self.family.size)
+
+
+def excitation_curves(R: int, S: int) -> ExcitationCurves:
+    """All excitation curves of the 13 families, each counted once.
+
+    Parameters
+    ----------
+    R : int
+        Number of beam exponents alpha_r (r = 1..R).
+    S : int
+        Harmonics s = -S..S.
+
+    Returns
+    -------
+    ExcitationCurves
+
+    Notes
+    -----
+    Omega_i + Omega_p and |Omega_i - Omega_p| are symmetric in (i, p): only i < p is kept, and
+    i = p of the sum is the family 2 Omega_i (4, 12), which would otherwise be counted twice.
+    Coefficients (eq. numbers of memo 7.3, with errata E7, E8):
+
+    * Omega_i (7.3-1, 7.3-17): (i-2)^2 + eps_i beta;
+    * 2 Omega_i (7.3-8, 7.3-32, E7): 2 [(i-2)^2 + eps_i beta];
+    * Omega_i + Omega_p (7.3-11, 7.3-26, E8): (i-2)^2 + (p-2)^2 + (eps_i + eps_p) beta;
+    * Omega_i - Omega_p (7.3-14, 7.3-29, E8): (i-2)^2 - (p-2)^2 + (eps_i - eps_p) beta;
+    * Omega_bar +- Omega_i (7.3-20, 7.3-23): (i-2)^2 + eps_i beta +- 1;
+    * Omega_bar (7.3-5): 1;  (alpha_r + s) Omega_bar (7.3-3, 7.3-35): alpha_r + s.
+
+    References
+    ----------
+    Tech Memo 104, eqs. (7.2-6), (7.3-1)..(7.3-35).
+    """
+    rows: list[tuple[int, int, int, int, int, float, float, float]] = []
+    idx = (1, 2, 3)
+    for fam, (_, _, _, kind) in FAMILIES.items():
+        if kind == "Omega_i":
+            rows += [(fam, i, 0, 0, 0, (i - 2) ** 2, EPS[i - 1], 0.0) for i in idx]  # (7.2-6)
+        elif kind == "2Omega_i":
+            rows += [(fam, i, 0, 0, 0, 2 * (i - 2) ** 2, 2 * EPS[i - 1], 0.0) for i in idx]  # E7
+        elif kind in ("sum", "difference"):
+            sign = 1 if kind == "sum" else -1
+            rows += [
+                (
+                    fam,
+                    i,
+                    p,
+                    0,
+                    0,
+                    (i - 2) ** 2 + sign * (p - 2) ** 2,
+                    EPS[i - 1] + sign * EPS[p - 1],
+                    0.0,
+                )
+                for i in idx
+                for p in idx
+                if i < p
+            ]  # (7.3-11, -14, -26, -29) with E8
+        elif kind in ("Omega+Omega_i", "Omega-Omega_i"):
+            sign = 1 if kind == "Omega+Omega_i" else -1
+            rows += [
+                (fam, i, 0, 0, 0, (i - 2) ** 2 + sign, EPS[i - 1], 0.0) for i in idx
+            ]  # (7.3-20, -23)
+        elif kind == "Omega":
+            rows.append((fam, 0, 0, 0, 0, 1.0, 0.0, 0.0))  # (7.3-5)
+        elif kind == "alpha":
+            rows += [
+                (fam, 0, 0, r, s, float(s), 0.0, 1.0)
+                for r in range(1, R + 1)
+                for s in range(-S, S + 1)
+            ]
+    cols = list(zip(*rows, strict=True))
+    ints = [np.array(c, dtype=int) for c in cols[:5]]
+    floats = [np.array(c, dtype=float) for c in cols[5:]]
+    return ExcitationCurves(*ints, *floats)
+
+
+def excitation(
+    curves: ExcitationCurves, Omega_bar: np.ndarray, beta: np.ndarray, alpha: np.ndarray
+) -> np.ndarray:
+    """Excitation frequencies |k0 + kb beta + ka alpha_r| Omega_bar of every curve on a grid.
+
+    Parameters
+    ----------
+    curves : ExcitationCurves
+        Curves to evaluate (length C).
+    Omega_bar : numpy.ndarray
+        Thrust frequencies Omega / omega_1, shape (n,).
+    beta : numpy.ndarray
+        Pitch stability parameter beta(Omega) (real part), shape (n,).
+    alpha : numpy.ndarray
+        Beam exponents alpha_r(Omega), shape (n, R) (R may be 0 when no curve uses them).
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (C, n), in units of omega_1.
+
+    References
+    ----------
+    Tech Memo 104, eq. (7.2-6) and the left-hand sides of (7.3-1)..(7.3-35).
+    """
+    Omega_bar = np.asarray(Omega_bar, dtype=float)
+    beta = np.asarray(beta, dtype=float)
+    alpha = np.asarray(alpha, dtype=float).reshape(Omega_bar.size, -1)
+    a_r = alpha.T[np.maximum(curves.r - 1, 0)] if alpha.shape[1] else 0.0  # (C, n)
+    c = curves.k0[:, None] + curves.kb[:, None] * beta[None, :] + curves.ka[:, None] * a_r
+    return np.abs(c) * Omega_bar[None, :]  # (7.2-6), (7.3-*)
+
+
+def _excitation_pointwise(
+    curves: ExcitationCurves, Omega_bar: np.ndarray, beta: np.ndarray, alpha: np.ndarray
+) -> np.ndarray:
+    """The excitation of curve n at Omega_bar[n] (all arrays of length C)."""
+    alpha = np.asarray(alpha, dtype=float).reshape(Omega_bar.size, -1)
+    a_r = alpha[np.arange(Omega_bar.size), np.maximum(curves.r - 1, 0)] if alpha.shape[1] else 0.0
+    return np.abs(curves.k0 + curves.kb * beta + curves.ka * a_r) * Omega_bar
+
+
+@dataclass(frozen=True)
+class ShellModes:
+    """Shell natural frequencies the excitations are compared with (parallel arrays).
+
+    Attributes
+    ----------
+    cylinder, j, k, branch : numpy.ndarray of int
+        Cylinder d, axial index j, circumferential index k, branch m of each frequency.
+    omega_bar : numpy.ndarray of float
+        Natural frequency in units of omega_1.
+    """
+
+    cylinder: np.ndarray
+    j: np.ndarray
+    k: np.ndarray
+    branch: np.ndarray
+    omega_bar: np.ndarray
+
+    def subset(self, kind: str) -> np.ndarray:
+        """Indices of the frequencies of one set: "0k" (j = 0, k >= 1), "j0", "jk"."""
+        j, k = self.j, self.k
+        mask = {"0k": (j == 0) & (k >= 1), "j0": (j >= 1) & (k == 0), "jk": (j >= 1) & (k >= 1)}[
+            kind
+        ]
+        return np.flatnonzero(mask)
+
+
+@dataclass(frozen=True)
+class StabilityTable:
+    """The unstable thrust frequencies (one row per root, parallel arrays).
+
+    Attributes
+    ----------
+    Omega : numpy.ndarray
+        Thrust pulsation frequency at the root (rad/s).
+    Omega_bar : numpy.ndarray
+        Omega / omega_1.
+    family, i, p, r, s : numpy.ndarray of int
+        The (first) family and its indices (0 where unused).
+    equation : tuple of str
+        Memo equation number of the family.
+    also : tuple of str
+        Other families whose curves coincide here ("" if none), e.g. "7(i=3)".
+    cylinder, j, k, branch : numpy.ndarray of int
+        The shell mode.
+    shell_omega_bar : numpy.ndarray
+        Its natural frequency in units of omega_1.
+    active : numpy.ndarray of bool
+        True where the forcing of that mode through this family is non-zero.
+    residual : numpy.ndarray
+        |excitation - shell frequency| at the reported root (units of omega_1).
+    omega_1 : float
+        The unit of the dimensionless frequencies (rad/s).
+    """
+
+    Omega: np.ndarray
+    Omega_bar: np.ndarray
+    family: np.ndarray
+    i: np.ndarray
+    p: np.ndarray
+    r: np.ndarray
+    s: np.ndarray
+    equation: tuple[str, ...]
+    also: tuple[str, ...]
+    cylinder: np.ndarray
+    j: np.ndarray
+    k: np.ndarray
+    branch: np.ndarray
+    shell_omega_bar: np.ndarray
+    active: np.ndarray
+    residual: np.ndarray
+    omega_1: float
+    warnings: tuple[str, ...] = field(default_factory=tuple)
+
+    def __len__(self) -> int:
+        return int(self.Omega.size)
+
+    def to_rows(self) -> list[dict]:
+        """One mapping per root (what the CSV holds), sorted by Omega."""
+        two_pi = 2.0 * np.pi
+        return [
+            {
+                "Omega_rad_s": float(self.Omega[n]),
+                "Omega_hz": float(self.Omega[n] / two_pi),
+                "Omega_over_omega1": float(self.Omega_bar[n]),
+                "family": int(self.family[n]),
+                "equation": self.equation[n],
+                "also": self.also[n],
+                "cylinder": int(self.cylinder[n]),
+                "j": int(self.j[n]),
+                "k": int(self.k[n]),
+                "branch": int(self.branch[n]),
+                "i": int(self.i[n]),
+                "p": int(self.p[n]),
+                "r": int(self.r[n]),
+                "s": int(self.s[n]),
+                "shell_omega_bar": float(self.shell_omega_bar[n]),
+                "shell_rad_s": float(self.shell_omega_bar[n] * self.omega_1),
+                "shell_hz": float(self.shell_omega_bar[n] * self.omega_1 / two_pi),
+                "forcing": "active" if self.active[n] else "listed",
+            }
+            for n in range(len(self))
+        ]
+
+    def to_dict(self) -> dict:
+        """JSON-ready: the rows, the counts and the warnings."""
+        return {
+            "count": len(self),
+            "active": int(self.active.sum()),
+            "rows": self.to_rows(),
+            "warnings": list(self.warnings),
+        }
+
+
+ParamsFn = Callable[[np.ndarray], tuple[np.ndarray, np.ndarray]]
+
+
+def _active(
+    fam: np.ndarray, i: np.ndarray, p: np.ndarray, k: np.ndarray, gamma: float, K: float
+) -> np.ndarray:
+    """Structural non-zero forcing (memo 6.2; reading guide section 5)."""
+    pulsed = gamma != 0.0
+    # A_1, A_3 of psi are proportional to q = gamma a / 2 (4.2-7b, d): zero without pulsation
+    amp_ok = ((i == 0) | (i == 2) | pulsed) & ((p == 0) | (p == 2) | pulsed)
+    out = np.zeros(fam.shape, dtype=bool)
+    out |= np.isin(fam, (1, 2, 7, 13)) & (k == 1)  # delta_1k: psi'' and beam (g*) terms
+    out |= (fam == 3) & pulsed  # T0 gamma cos(Omega tau), axial, k = 0 (6.2-11)
+    out |= np.isin(fam, (4, 5, 6)) & (k == 0)  # psi-dot^2, k = 0 (6.2-11, -12)
+    out |= (
+        np.isin(fam, (8, 9)) & (k == 1) & pulsed & (K != 0.0)
+    )  # T0 gamma cos(Omega) cos(Omega_i) (6.2-26)
+    out |= np.isin(fam, (10, 11, 12)) & (k == 2)  # delta_2k psi-dot^2 (6.2-26)
+    return out & amp_ok
+
+
+def unstable_frequencies(
+    modes: ShellModes,
+    params: ParamsFn,
+    Omega_range: tuple[float, float],
+    omega_1: float,
+    R: int,
+    S: int,
+    gamma: float,
+    K: float,
+    n_scan: int = 2001,
+    tol: float = 1e-12,
+) -> StabilityTable:
+    """All roots of the 13 families of stability equations in an Omega range.
+
+    Parameters
+    ----------
+    modes : ShellModes
+        Shell natural frequencies (units of omega_1) with their (d, j, k, m).
+    params : callable
+        ``params(Omega_bar) -> (beta, alpha)``: the real pitch stability parameter beta,
+        shape (n,), and the beam exponents alpha_r, shape (n, R), at Omega = Omega_bar omega_1;
+        vectorised over the 1-D array Omega_bar.
+    Omega_range : (float, float)
+        Range of the thrust pulsation frequency Omega (rad/s).
+    omega_1 : float
+        Reference frequency, eq. (4.2-8b) (rad/s).
+    R, S : int
+        Beam exponents r = 1..R and harmonics s = -S..S (families 2 and 13).
+    gamma, K : float
+        Thrust pulsation amplitude and gimbal gain (decide which forcing is active).
+    n_scan : int
+        Points of the geometric scan grid that brackets the roots.
+    tol : float
+        Residual to which each root is refined (units of omega_1).
+
+    Returns
+    -------
+    StabilityTable
+        Every root once, sorted by Omega.
+
+    Notes
+    -----
+    A root is found when the excitation curve crosses the shell frequency between two scan
+    points; two crossings closer together than the scan spacing (a near-tangency) may be
+    missed, and a curve that only touches a frequency is not a crossing.
+
+    References
+    ----------
+    Tech Memo 104, section 7.3; reading guide section 5.
+    """
+    lo_W, hi_W = (float(x) / omega_1 for x in Omega_range)
+    if not 0.0 < lo_W < hi_W:
+        raise ValueError(f"Omega_range = {Omega_range!r}: need 0 < Omega_min < Omega_max")
+    curves = excitation_curves(R, S)
+    grid = np.geomspace(lo_W, hi_W, int(n_scan))
+    beta_g, alpha_g = params(grid)
+    E = excitation(curves, grid, beta_g, alpha_g)  # (C, n): one pass over the scan grid
+    E0, E1 = E[:, :-1], E[:, 1:]
+    lo, hi = np.minimum(E0, E1), np.maximum(E0, E1)
+
+    found_c, found_t, found_a, found_b = [], [], [], []
+    for kind in ("0k", "j0", "jk"):
+        targets = modes.subset(kind)
+        cmask = np.isin(curves.family, [f for f, v in FAMILIES.items() if v[1] == kind])
+        if targets.size == 0 or not cmask.any():
+            continue
+        order = np.argsort(modes.omega_bar[targets], kind="stable")
+        tsorted = modes.omega_bar[targets][order]
+        cidx = np.flatnonzero(cmask)
+        first = np.searchsorted(tsorted, lo[cidx], side="left")  # targets in [lo, hi)
+        last = np.searchsorted(tsorted, hi[cidx], side="left")
+        count = (last - first).ravel()
+        if count.sum() == 0:
+            continue
+        pair = np.repeat(np.arange(count.size), count)  # (curve, interval) of each bracket
+        offset = np.arange(count.sum()) - np.repeat(np.cumsum(count) - count, count)
+        c_loc, interval = np.divmod(pair, E0.shape[1])
+        found_c.append(cidx[c_loc])
+        found_t.append(targets[order[first.ravel()[pair] + offset]])
+        found_a.append(grid[interval])
+        found_b.append(grid[interval + 1])
+    if not found_c:
+        return _empty(omega_1)
+    c = np.concatenate(found_c)
+    t = np.concatenate(found_t)
+    a = np.concatenate(found_a)
+    b = np.concatenate(found_b)
+    sub = ExcitationCurves(
+        *(getattr(curves, f)[c] for f in ("family", "i", "p", "r", "s", "k0", "kb", "ka"))
+    )
+    target = modes.omega_bar[t]
+
+    def f(x: np.ndarray) -> np.ndarray:
+        beta, alpha = params(x)
+        return _excitation_pointwise(sub, x, beta, alpha) - target
+
+    root, resid = _illinois(f, a, b, tol)
+
+    fam = sub.family
+    active = _active(fam, sub.i, sub.p, modes.k[t], gamma, K)
+    keep, also = _merge_coincident(root, t, fam, sub.i, sub.p, sub.r, sub.s, tol)
+    order = np.argsort(root[keep], kind="stable")
+    keep = keep[order]
+    also = [also[n] for n in order]
+    return StabilityTable(
+        Omega=root[keep] * omega_1,
+        Omega_bar=root[keep],
+        family=fam[keep],
+        i=sub.i[keep],
+        p=sub.p[keep],
+        r=sub.r[keep],
+        s=sub.s[keep],
+        equation=tuple(FAMILIES[int(x)][0] for x in fam[keep]),
+        also=tuple(also),
+        cylinder=modes.cylinder[t][keep],
+        j=modes.j[t][keep],
+        k=modes.k[t][keep],
+        branch=modes.branch[t][keep],
+        shell_omega_bar=target[keep],
+        active=active[keep],
+        residual=resid[keep],
+        omega_1=float(omega_1),
+    )
+
+
+def _empty(omega_1: float) -> StabilityTable:
+    zi, zf = np.zeros(0, dtype=int), np.zeros(0)
+    return StabilityTable(
+        zf, zf, zi, zi, zi, zi, zi, (), (), zi, zi, zi, zi, zf, np.zeros(0, bool), zf, omega_1
+    )
+
+
+def _illinois(
+    f: Callable[[np.ndarray], np.ndarray],
+    a: np.ndarray,
+    b: np.ndarray,
+    tol: float,
+    max_iter: int = 100,
+) -> tuple[np.ndarray, np.ndarray]:
+    """Vectorised Illinois (modified regula falsi) on brackets [a, b] with f(a) f(b) <= 0."""
+    a, b = a.copy(), b.copy()
+    fa, fb = f(a), f(b)
+    x, fx = np.where(np.abs(fa) <= np.abs(fb), a, b), np.minimum(np.abs(fa), np.abs(fb))
+    side = np.zeros(a.shape, dtype=int)
+    for _ in range(max_iter):
+        todo = (np.abs(fx) > tol) & (b - a > 4 * np.finfo(float).eps * np.abs(b))
+        if not todo.any():
+            break
+        denom = fb - fa
+        xn = np.where(
+            denom != 0.0, (a * fb - b * fa) / np.where(denom != 0.0, denom, 1.0), 0.5 * (a + b)
+        )
+        xn = np.where((xn > np.minimum(a, b)) & (xn < np.maximum(a, b)), xn, 0.5 * (a + b))
+        fn = np.where(todo, f(np.where(todo, xn, a)), 0.0)
+        left = todo & (np.sign(fn) == np.sign(fa))  # root in [xn, b]
+        right = todo & ~left
+        a = np.where(left, xn, a)
+        fa = np.where(left, fn, fa)
+        fb = np.where(left & (side == 1), fb / 2, fb)  # Illinois: halve the stale end
+        b = np.where(right, xn, b)
+        fb = np.where(right, fn, fb)
+        fa = np.where(right & (side == -1), fa / 2, fa)
+        side = np.where(left, 1, np.where(right, -1, side))
+        x = np.where(todo, xn, x)
+        fx = np.where(todo, fn, fx)
+    return x, np.abs(f(x))
+
+
+def _merge_coincident(root, t, fam, i, p, r, s, tol):
+    """Keep one row per (shell mode, root); list the other families that give the same root."""
+    order = np.lexsort((fam, root, t))
+    keep, also = [], []
+    scale = np.maximum(np.abs(root), 1.0)
+    for n in order:
+        if keep and t[keep[-1]] == t[n] and abs(root[n] - root[keep[-1]]) <= 1e3 * tol * scale[n]:
+            label = f"{fam[n]}" + "".join(
+                f"({k}={v})" for k, v in (("i", i[n]), ("p", p[n]), ("r", r[n]), ("s", s[n])) if v
+            )
+            also[-1] = f"{also[-1]}, {label}" if also[-1] else label
+            continue
+        keep.append(n)
+        also.append("")
+    return np.array(keep, dtype=int), also

@@ -1,0 +1,241 @@
+"""The 13 families of stability equations (memo 7.3): every root found once, none missed.
+
+The reference is a brute-force scan independent of the vectorised solver: for every curve and
+every shell frequency separately, the scalar function excitation(Omega) - omega_shell is sampled
+on a grid 20 times finer than the solver's and every sign change is refined by
+scipy.optimize.brentq (xtol 1e-14).  The excitation of each family is written there directly
+from eqs. 7.2-1..7.2-3 (Omega_1 = (1 - beta/2) Omega_bar, Omega_2 = beta Omega_bar / 2,
+Omega_3 = (1 + beta/2) Omega_bar), not from the solver's coefficient table.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from scipy.optimize import brentq
+
+from flexbooster.stability import (
+    FAMILIES,
+    ShellModes,
+    excitation,
+    excitation_curves,
+    unstable_frequencies,
+)
+
+OMEGA_1 = 113.5  # rad/s, of the order of the default case's omega_1
+W_PSI = 1.2 / OMEGA_1  # pitch frequency in units of omega_1
+LOADED = np.array([1.0, 2.76, 5.40])  # synthetic loaded-beam frequencies alpha_r Omega_bar
+
+
+def params(x):
+    """Smooth synthetic beta(Omega) ~ sqrt(a) = 2 omega_psi / Omega (plus a q^2-like term) and
+    alpha_r = loaded_r / Omega_bar (the gamma -> 0 behaviour of the beam exponents)."""
+    x = np.asarray(x, dtype=float)
+    beta = 2 * W_PSI / x * (1 + 0.01 * (2 * W_PSI / x) ** 2)
+    return beta, LOADED[None, :] / x[:, None]
+
+
+def omegas(x):
+    """Omega_1..3 from eqs. (7.2-1)..(7.2-3) as printed there (vectorised over x)."""
+    b = params(x)[0]
+    return {1: (1 - b / 2) * x, 2: b * x / 2, 3: (1 + b / 2) * x}
+
+
+def family_excitation(fam, i, p, r, s, x):
+    """Left-hand side of each family, written from the memo's equations (7.3-*) directly."""
+    x = np.asarray(x, dtype=float)
+    om = omegas(x)
+    if fam in (1, 7):
+        return om[i]
+    if fam in (2, 13):
+        return np.abs((params(x)[1][:, r - 1] + s) * x)
+    if fam == 3:
+        return x
+    if fam in (4, 12):
+        return 2 * om[i]
+    if fam in (5, 10):
+        return np.abs(om[i] + om[p])
+    if fam in (6, 11):
+        return np.abs(om[i] - om[p])
+    return np.abs(x + om[i]) if fam == 8 else np.abs(x - om[i])
+
+
+def small_modes():
+    """A handful of shell modes of each set, spread over the range of the excitations."""
+    rows = []
+    for d in (1, 2):
+        for j, k, m, w in [
+            (0, 1, 1, 0.7),
+            (0, 2, 1, 3.1),
+            (1, 0, 1, 0.9),
+            (2, 0, 2, 4.3),
+            (1, 0, 2, 11.7),
+            (1, 1, 1, 1.3),
+            (1, 2, 2, 2.2),
+            (2, 1, 3, 6.9),
+            (3, 2, 1, 9.4),
+            (2, 3, 1, 15.2),
+        ]:
+            rows.append((d, j, k, m, w * (1.0 if d == 1 else 1.37)))
+    c = np.array(rows)
+    return ShellModes(
+        c[:, 0].astype(int), c[:, 1].astype(int), c[:, 2].astype(int), c[:, 3].astype(int), c[:, 4]
+    )
+
+
+RANGE = (5.0, 2000.0)  # rad/s, the default case's Omega range
+R, S = 3, 4
+
+
+def brute_force(modes):
+    curves = excitation_curves(R, S)
+    x = np.geomspace(RANGE[0] / OMEGA_1, RANGE[1] / OMEGA_1, 40_001)
+    roots = set()
+    for c in range(len(curves)):
+        idx = tuple(int(getattr(curves, f)[c]) for f in ("family", "i", "p", "r", "s"))
+        sampled = family_excitation(*idx, x)
+        for t in modes.subset(FAMILIES[idx[0]][1]):
+            target = modes.omega_bar[t]
+            e = sampled - target
+            for n in np.flatnonzero(np.sign(e[:-1]) * np.sign(e[1:]) < 0):
+                root = brentq(
+                    lambda xx, target=target: (
+                        float(family_excitation(*idx, np.array([xx]))[0]) - target
+                    ),
+                    x[n],
+                    x[n + 1],
+                    xtol=1e-14,
+                    rtol=1e-15,
+                )
+                roots.add((int(t), round(root, 9)))
+    return roots
+
+
+def test_same_roots_as_brute_force_scan():
+    modes = small_modes()
+    table = unstable_frequencies(modes, params, RANGE, OMEGA_1, R, S, gamma=0.05, K=0.5)
+    mode_id = {
+        (d, j, k, m): n
+        for n, (d, j, k, m) in enumerate(
+            zip(modes.cylinder, modes.j, modes.k, modes.branch, strict=True)
+        )
+    }
+    found = {
+        (mode_id[(d, j, k, m)], round(x, 9))
+        for d, j, k, m, x in zip(
+            table.cylinder, table.j, table.k, table.branch, table.Omega_bar, strict=True
+        )
+    }
+    reference = brute_force(modes)
+    assert len(table) > 50  # the test exercises many families
+    assert found == reference
+
+
+def test_every_root_satisfies_its_equation():
+    """Residual below 1e-9 in Omega/omega_1 (issue 6), re-evaluated from the memo's equations."""
+    modes = small_modes()
+    table = unstable_frequencies(modes, params, RANGE, OMEGA_1, R, S, gamma=0.05, K=0.5)
+    for n in range(len(table)):
+        lhs = family_excitation(
+            int(table.family[n]),
+            int(table.i[n]),
+            int(table.p[n]),
+            int(table.r[n]),
+            int(table.s[n]),
+            np.array([table.Omega_bar[n]]),
+        )[0]
+        assert abs(lhs - table.shell_omega_bar[n]) < 1e-9
+    assert np.all((table.Omega >= RANGE[0]) & (table.Omega <= RANGE[1]))
+    assert np.all(np.diff(table.Omega) >= 0)
+
+
+def test_coincident_curves_are_reported_once():
+    """Omega_bar + Omega_2 = Omega_3 and |Omega_bar - Omega_2| = Omega_1 identically (7.2-1..3):
+    family 8 (i = 2) and 9 (i = 2) give the same roots as family 7 (i = 3, i = 1)."""
+    modes = small_modes()
+    table = unstable_frequencies(modes, params, RANGE, OMEGA_1, R, S, gamma=0.05, K=0.5)
+    key = list(
+        zip(
+            table.cylinder,
+            table.j,
+            table.k,
+            table.branch,
+            np.round(table.Omega_bar, 9),
+            strict=True,
+        )
+    )
+    assert len(key) == len(set(key))
+    fam7 = table.family == 7
+    # every family-7 root through Omega_1 is also a family-9 (i = 2) root, through Omega_3 a
+    # family-8 (i = 2) root (the shell frequencies here are far above Omega_2 ~ 0.02)
+    for i, partner in ((1, "9(i=2)"), (3, "8(i=2)")):
+        rows = np.flatnonzero(fam7 & (table.i == i))
+        assert rows.size > 0
+        assert all(partner in table.also[n] for n in rows)
+    assert not np.any(np.isin(table.family, (8, 9)) & np.isin(table.i, (2,)))
+
+
+def test_curve_table_counts():
+    """Families 1, 4, 7, 8, 9, 12: i = 1..3; 5, 6, 10, 11: pairs i < p (3 each); 3: one curve;
+    2, 13: R (2S + 1) curves each."""
+    curves = excitation_curves(R=2, S=3)
+    counts = {f: int((curves.family == f).sum()) for f in FAMILIES}
+    assert counts == {
+        1: 3,
+        2: 14,
+        3: 1,
+        4: 3,
+        5: 3,
+        6: 3,
+        7: 3,
+        8: 3,
+        9: 3,
+        10: 3,
+        11: 3,
+        12: 3,
+        13: 14,
+    }
+
+
+def test_excitation_matches_memo_equations_on_a_grid():
+    curves = excitation_curves(R, S)
+    x = np.geomspace(0.05, 15, 7)
+    beta, alpha = params(x)
+    E = excitation(curves, x, beta, alpha)
+    for c in range(len(curves)):
+        fam, i, p, r, s = (int(getattr(curves, f)[c]) for f in ("family", "i", "p", "r", "s"))
+        expected = family_excitation(fam, i, p, r, s, x)
+        # differences such as Omega_3 - Omega_1 cancel: absolute 1e-13 in units of omega_1
+        np.testing.assert_allclose(E[c], expected, rtol=1e-14, atol=1e-13)
+
+
+@pytest.mark.parametrize(
+    ("gamma", "K", "family", "k", "active"),
+    [
+        (0.05, 0.5, 1, 1, True),  # psi'' drives k = 1 (delta_1k)
+        (0.05, 0.5, 1, 2, False),
+        (0.05, 0.5, 7, 1, True),
+        (0.05, 0.5, 12, 2, True),  # psi-dot^2 drives k = 2 (delta_2k)
+        (0.05, 0.5, 12, 1, False),
+        (0.05, 0.5, 4, 0, True),  # psi-dot^2 drives k = 0
+        (0.0, 0.5, 3, 0, False),  # no pulsation: no cos(Omega tau) forcing
+        (0.05, 0.5, 3, 0, True),
+        (0.05, 0.0, 8, 1, False),  # T0 gamma sin(K psi) vanishes with K = 0
+    ],
+)
+def test_active_versus_listed(gamma, K, family, k, active):
+    from flexbooster.stability import _active
+
+    i = np.array([2]) if family in (1, 7, 12, 4, 8) else np.array([0])
+    got = _active(np.array([family]), i, np.array([0]), np.array([k]), gamma, K)
+    assert bool(got[0]) is active
+
+
+def test_no_pulsation_silences_omega_1_and_3():
+    """A_1, A_3 are proportional to q = gamma a / 2 (4.2-7b, d): with gamma = 0 only Omega_2
+    terms of psi remain, so roots through Omega_1 or Omega_3 are 'listed'."""
+    from flexbooster.stability import _active
+
+    fam = np.array([7, 7, 7])
+    got = _active(fam, np.array([1, 2, 3]), np.zeros(3, int), np.ones(3, int), 0.0, 0.5)
+    assert got.tolist() == [False, True, False]
