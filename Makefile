@@ -15,16 +15,19 @@ $(STAMP): pyproject.toml
 	$(PY) -m pip install --quiet -e '.[test]'
 	touch $(STAMP)
 
+run: export OPENBLAS_NUM_THREADS = 1
 run: $(STAMP)
 	$(VENV)/bin/flexbooster run -o $(OUT)
 
 lint: $(STAMP)
 	$(VENV)/bin/ruff check .
 
+test: export OPENBLAS_NUM_THREADS = 1
 test: $(STAMP)
 	$(VENV)/bin/ruff check .
 	$(PY) -m pytest -q
 
+bench: export OPENBLAS_NUM_THREADS = 1
 bench: $(STAMP)
 	@for f in benchmarks/bench_*.py; do echo "== $$f"; $(PY) $$f || exit 1; done
 

@@ -137,4 +137,12 @@ def test_same_case_in_si_and_inch_pound_units(case_dict):
     b_ = dict(_numbers(analyze(load_case(ip)).to_dict()))
     assert a.keys() == b_.keys()
     for key, value in a.items():
-        assert b_[key] == pytest.approx(value, rel=1e-12, abs=1e-300), key
+        if key.endswith("hill_monodromy_difference"):
+            continue  # an error estimate of the eigen-solvers (~1e-11), not a result
+        # Closed-form quantities (geometry, omega_1, a, q, beta, shell frequencies): 1e-12.
+        # The beam-action exponents come from eigenvalues of non-normal Floquet matrices whose
+        # own accuracy is about 1e-9 (Hill vs monodromy agree to 1e-8; docs/theory/beam-action.md),
+        # and the stability roots inherit it through alpha_r: 1e-8 for those.
+        solved = key.startswith((".beam_action.", ".stability."))
+        rel = 1e-8 if solved else 1e-12
+        assert b_[key] == pytest.approx(value, rel=rel, abs=1e-300 if not solved else 1e-12), key

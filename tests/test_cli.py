@@ -27,7 +27,10 @@ def test_run_default_writes_results(tmp_path, capsys):
     data = json.loads((tmp_path / "results.json").read_text())
     assert data["schema_version"] == "1.0" and "units" in data
     assert data["mass_properties"]["I_cm"] > 0
-    assert [p.name for p in tmp_path.iterdir()] == ["results.json"]  # no temporary leftovers
+    names = {p.name for p in tmp_path.iterdir()}
+    assert {"results.json", "shell-frequencies.csv", "unstable-frequencies.csv"} <= names
+    assert {"ince-strutt.svg", "ince-strutt.png", "campbell.svg"} <= names
+    assert not [n for n in names if n.endswith(".part")]  # no temporary leftovers
 
 
 def test_init_then_run(tmp_path, capsys):
@@ -35,7 +38,7 @@ def test_init_then_run(tmp_path, capsys):
     assert run_cli(["init", str(path)]) == 0
     assert run_cli(["init", str(path)]) == 2  # refuses to overwrite
     assert "file exists" in capsys.readouterr().err
-    assert run_cli(["run", str(path), "-o", str(tmp_path / "out")]) == 0
+    assert run_cli(["run", str(path), "-o", str(tmp_path / "out"), "--no-figures"]) == 0
     assert (tmp_path / "out" / "results.json").exists()
 
 
@@ -62,7 +65,7 @@ def test_warning_reaches_summary_and_results(case_dict, tmp_path, capsys):
     case_dict["booster"]["thickness"] = "0.2 m"  # h/R2 = 0.2/3.3 > 1/20
     case_file = tmp_path / "thick.toml"
     case_file.write_text(dump_toml(case_dict))
-    assert run_cli(["run", str(case_file), "-o", str(tmp_path)]) == 0
+    assert run_cli(["run", str(case_file), "-o", str(tmp_path), "--no-figures"]) == 0
     assert "thin-shell" in capsys.readouterr().out
     codes = [w["code"] for w in json.loads((tmp_path / "results.json").read_text())["warnings"]]
     assert codes == ["thin-shell"]
@@ -83,3 +86,49 @@ def test_real_process_no_traceback(tmp_path):
 def test_version(capsys):
     assert run_cli(["--version"]) == 0
     assert "0.1.0" in capsys.readouterr().out
+
+
+def test_stability_command(tmp_path, capsys):
+    """`flexbooster stability` on a narrow range: its table equals the rows of the full run
+    that fall in that range (the same equations on the same shell frequencies)."""
+    import csv
+
+    assert (
+        run_cli(["stability", "--omega-min", "100", "--omega-max", "20 Hz", "-o", str(tmp_path)])
+        == 0
+    )
+    assert "Unstable thrust frequencies" in capsys.readouterr().out
+    rows = list(csv.DictReader((tmp_path / "unstable-frequencies.csv").open()))
+    assert rows
+    omegas = [float(r["Omega_rad_s"]) for r in rows]
+    assert min(omegas) >= 100.0 and max(omegas) <= 40 * 3.141592653589793 + 1e-9
+
+
+def test_stability_command_bad_range(capsys):
+    assert run_cli(["stability", "--omega-min", "300", "--omega-max", "100"]) == 2
+    assert "thrust.omega_min" in capsys.readouterr().err
+
+
+def test_simulate_command(tmp_path, capsys):
+    code = run_cli(
+        ["simulate", "--omega", "300", "--tau-max", "5", "--n-out", "21", "-o", str(tmp_path)]
+    )
+    assert code == 0
+    names = {p.name for p in tmp_path.iterdir()}
+    assert {"time-histories.csv", "simulation.json", "modal-amplitudes.svg"} <= names
+    lines = (tmp_path / "time-histories.csv").read_text().splitlines()
+    assert len(lines) == 22  # header + n_out rows
+
+
+@pytest.mark.parametrize(
+    ("args", "words"),
+    [
+        (["--omega", "-5", "--tau-max", "5"], "Omega"),
+        (["--omega", "5 m", "--tau-max", "5"], "wrong dimension"),
+        (["--omega", "300", "--tau-max", "0"], "tau_max"),
+    ],
+)
+def test_simulate_bad_input(capsys, args, words):
+    assert run_cli(["simulate", *args]) == 2
+    err = capsys.readouterr().err
+    assert words in err and "Traceback" not in err

@@ -99,7 +99,7 @@ def brute_force(modes):
             e = sampled - target
             for n in np.flatnonzero(np.sign(e[:-1]) * np.sign(e[1:]) < 0):
                 root = brentq(
-                    lambda xx, target=target: (
+                    lambda xx, idx=idx, target=target: (
                         float(family_excitation(*idx, np.array([xx]))[0]) - target
                     ),
                     x[n],

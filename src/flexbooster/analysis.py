@@ -1,8 +1,10 @@
 """The analysis pipeline: a validated case in, a :class:`Results` out.
 
 This is the layer that strings the numerical modules together in the memo's order
-(reading guide section 1): geometry and mass properties, the equivalent beam (omega_1), the
-rigid-body pitch (Mathieu parameters along the Omega grid).  It also produces the warnings
+(reading guide section 1): geometry and mass properties, the equivalent beam (omega_1 and the
+free-free modes), the rigid-body pitch (Mathieu a, q and the exponent beta along the Omega
+grid), the shell natural frequencies, the beam action (exponents alpha_r) and the unstable
+thrust frequencies (the 13 families of memo 7.3).  It also produces the warnings
 under which the analysis goes on: thin-shell limit exceeded, Mathieu parameters outside the
 memo's range (4.2-5).
 """
@@ -15,14 +17,24 @@ from typing import Any
 import numpy as np
 
 from . import __version__
-from .beam import first_bending_frequency
+from .beam import BeamModes, beam_modes, first_bending_frequency
+from .beam_action import BeamActionResult, beam_action_analysis
 from .case import Case
 from .errors import AnalysisWarning
 from .geometry import DimensionlessGroups, MassProperties, dimensionless_groups, mass_properties
-from .pitch import mathieu_parameters, pitch_frequency
+from .pitch import (
+    PitchResult,
+    characteristic_exponent,
+    mathieu_parameters,
+    pitch_analysis,
+    pitch_frequency,
+)
+from .shell import ShellFrequencies, natural_frequencies
+from .stability import ShellModes, StabilityTable, unstable_frequencies
 
 __all__ = [
     "Results",
+    "stability_parameters",
     "analyze",
     "SCHEMA_VERSION",
     "THIN_SHELL_LIMIT",
@@ -63,8 +75,22 @@ UNITS: dict[str, str] = {
     "frequencies.omega_psi": "rad/s",
     "frequencies.omega_psi_hz": "Hz",
     "dimensionless.*": "1",
+    "beam_modes.lambda_n, alpha_n": "1",
+    "beam_modes.omega_n, omega_1": "rad/s",
     "pitch.Omega": "rad/s",
-    "pitch.a, q": "1",
+    "pitch.omega_psi": "rad/s",
+    "pitch.a, q, beta_*": "1",
+    "pitch.growth_rate, max_growth_rate": "1/s (amplitude e-folding rate of psi)",
+    "pitch.unstable_intervals": "rad/s",
+    "shell_frequencies.omega_bar": "1 (units of omega_1)",
+    "shell_frequencies.rad_s": "rad/s",
+    "shell_frequencies.hz": "Hz",
+    "beam_action.Omega": "rad/s",
+    "beam_action.Omega_bar, alpha_*, frequencies_*": "1 (alpha_r Omega_bar in units of omega_1)",
+    "beam_action.growth_rate, max_growth_rate": "1/s",
+    "stability.rows.Omega_rad_s, shell_rad_s": "rad/s",
+    "stability.rows.Omega_hz, shell_hz": "Hz",
+    "stability.rows.Omega_over_omega1, shell_omega_bar": "1 (units of omega_1)",
 }
 
 
@@ -84,10 +110,16 @@ class Results:
         Rigid-body pitch frequency under the steady thrust, sqrt(F0 d2 K / I_cm) (rad/s).
     groups : DimensionlessGroups
         mu, lambda_d, sigma, T0_bar (memo 3.0).
-    Omega : numpy.ndarray
-        The thrust pulsation frequencies analysed (rad/s).
-    a, q : numpy.ndarray
-        Mathieu parameters along ``Omega`` (eq. 4.2-4).
+    beam : BeamModes
+        lambda_n, alpha_n, omega_n of the first N free-free modes (appendix C).
+    pitch : PitchResult
+        Mathieu a, q, the exponent beta (exact and memo) and the rigid-body verdict (4.2).
+    shell : ShellFrequencies
+        Shell natural frequencies of both cylinders (5.4, 6.2, appendix A).
+    beam_action : BeamActionResult or None
+        Beam-action exponents alpha_r and verdict (4.1); None if not computed.
+    stability : StabilityTable or None
+        Unstable thrust frequencies (7.3); None if not computed.
     warnings : tuple of AnalysisWarning
         Conditions the user must know about.
     """
@@ -97,10 +129,27 @@ class Results:
     omega_1: float
     omega_psi: float
     groups: DimensionlessGroups
-    Omega: np.ndarray
-    a: np.ndarray
-    q: np.ndarray
+    beam: BeamModes
+    pitch: PitchResult
+    shell: ShellFrequencies
+    beam_action: BeamActionResult | None = None
+    stability: StabilityTable | None = None
     warnings: tuple[AnalysisWarning, ...] = field(default_factory=tuple)
+
+    @property
+    def Omega(self) -> np.ndarray:
+        """The thrust pulsation frequencies analysed (rad/s)."""
+        return self.pitch.Omega
+
+    @property
+    def a(self) -> np.ndarray:
+        """Mathieu parameter a along ``Omega`` (eq. 4.2-4)."""
+        return self.pitch.a
+
+    @property
+    def q(self) -> np.ndarray:
+        """Mathieu parameter q along ``Omega`` (eq. 4.2-4)."""
+        return self.pitch.q
 
     def to_dict(self) -> dict[str, Any]:
         """What results.json holds: schema version, units, inputs and every result."""
@@ -117,11 +166,11 @@ class Results:
                 "omega_psi_hz": self.omega_psi / (2.0 * np.pi),
             },
             "dimensionless": self.groups.to_dict(),
-            "pitch": {
-                "Omega": self.Omega.tolist(),
-                "a": self.a.tolist(),
-                "q": self.q.tolist(),
-            },
+            "beam_modes": self.beam.to_dict(),
+            "pitch": self.pitch.to_dict(),
+            "shell_frequencies": self.shell.to_dict(),
+            "beam_action": None if self.beam_action is None else self.beam_action.to_dict(),
+            "stability": None if self.stability is None else self.stability.to_dict(),
             "warnings": [w.to_dict() for w in self.warnings],
         }
 
@@ -171,21 +220,65 @@ def _warnings(
     return out
 
 
-def analyze(case: Case) -> Results:
+def stability_parameters(
+    omega_psi: float, gamma: float, omega_1: float, beam_action: BeamActionResult
+):
+    """params(Omega_bar) -> (beta, alpha) for :func:`stability.unstable_frequencies`.
+
+    Parameters
+    ----------
+    omega_psi : float
+        Rigid-body pitch frequency (rad/s).
+    gamma : float
+        Thrust pulsation amplitude.
+    omega_1 : float
+        Reference frequency (rad/s).
+    beam_action : BeamActionResult
+        Beam-action exponents on the case's Omega grid.
+
+    Returns
+    -------
+    callable
+        beta is the exact characteristic exponent (Hill's determinant; real part, i.e. the
+        band index inside a pitch tongue) at any Omega; alpha_r comes from the beam-action
+        exponents on the case's Omega grid, interpolated as alpha_r Omega_bar (nearly constant:
+        it tends to the loaded-beam frequency as gamma -> 0) by a cubic spline, held constant
+        outside the grid.
+    """
+    from scipy.interpolate import CubicSpline
+
+    x = beam_action.Omega_bar
+    order = np.argsort(x)
+    spline = CubicSpline(x[order], (beam_action.alpha.real * x[:, None])[order], axis=0)
+
+    def params(Omega_bar: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        a, q = mathieu_parameters(Omega_bar * omega_1, omega_psi, gamma)
+        beta = characteristic_exponent(a, q, method="hill").real
+        alpha = spline(np.clip(Omega_bar, x.min(), x.max())) / Omega_bar[:, None]
+        return beta, alpha
+
+    return params
+
+
+def analyze(case: Case, beam_action: bool = True, stability: bool = True) -> Results:
     """Run the analysis of a validated case.
 
     Parameters
     ----------
     case : Case
         From :func:`flexbooster.load_case` or :func:`flexbooster.default_case`.
+    beam_action : bool
+        Compute the beam-action exponents alpha_r (memo 4.1; the slowest stage).
+    stability : bool
+        Compute the table of unstable thrust frequencies (memo 7.3); needs ``beam_action``.
 
     Returns
     -------
     Results
-        Mass properties, omega_1, the pitch frequency, the dimensionless groups, the Mathieu
-        parameters along the Omega grid and the warnings.
+        Mass properties, omega_1, beam modes, rigid-body pitch, shell frequencies, beam action,
+        the unstable thrust frequencies and the warnings.
     """
-    b, t = case.booster, case.thrust
+    b, t, n = case.booster, case.thrust, case.truncation
     c1, c2 = b.cylinder1, b.cylinder2
     mass = mass_properties(c1.radius, c1.half_length, c2.radius, c2.half_length, b.thickness, b.rho)
     omega_1 = first_bending_frequency(mass.L, c1.radius, b.E, b.rho)
@@ -194,15 +287,42 @@ def analyze(case: Case) -> Results:
         mass.L, c1.radius, c2.radius, b.thickness, b.E, b.rho, omega_1, case.T0
     )
     Omega = case.omega_grid()
-    a, q = mathieu_parameters(Omega, omega_psi, t.gamma)
+    pitch = pitch_analysis(Omega, omega_psi, t.gamma)
+    beam = beam_modes(n.N, mass.L, c1.radius, b.E, b.rho)
+    shell = natural_frequencies(case)
+    action = None
+    if beam_action:
+        action = beam_action_analysis(
+            Omega,
+            omega_1,
+            mass.mass,
+            mass.L,
+            mass.d2,
+            mass.I_cm,
+            case.F0,
+            t.gamma,
+            t.K,
+            n.N,
+            n.S,
+            n.R,
+        )
+    table = None
+    if stability and action is not None:
+        modes = ShellModes(shell.cylinder, shell.j, shell.k, shell.branch, shell.omega_bar)
+        params = stability_parameters(omega_psi, t.gamma, omega_1, action)
+        table = unstable_frequencies(
+            modes, params, (t.omega_min, t.omega_max), omega_1, n.R, n.S, t.gamma, t.K
+        )
     return Results(
         case=case,
         mass=mass,
         omega_1=omega_1,
         omega_psi=omega_psi,
         groups=groups,
-        Omega=Omega,
-        a=a,
-        q=q,
-        warnings=tuple(_warnings(case, Omega, a, q, omega_psi)),
+        beam=beam,
+        pitch=pitch,
+        shell=shell,
+        beam_action=action,
+        stability=table,
+        warnings=tuple(_warnings(case, Omega, pitch.a, pitch.q, omega_psi)),
     )

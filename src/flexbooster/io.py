@@ -17,18 +17,24 @@ from collections.abc import Iterable, Mapping
 from pathlib import Path
 from typing import Any
 
-__all__ = ["write_text_atomic", "write_json_atomic", "write_csv_atomic", "check_finite"]
+__all__ = [
+    "check_finite",
+    "write_bytes_atomic",
+    "write_csv_atomic",
+    "write_json_atomic",
+    "write_text_atomic",
+]
 
 
-def write_text_atomic(path: str | Path, text: str) -> Path:
-    """Write ``text`` to ``path`` atomically (temporary file, fsync, rename).
+def write_bytes_atomic(path: str | Path, data: bytes) -> Path:
+    """Write ``data`` to ``path`` atomically (temporary file, fsync, rename).
 
     Parameters
     ----------
     path : str or pathlib.Path
         Destination file; its folder is created if needed.
-    text : str
-        Content (UTF-8).
+    data : bytes
+        Content.
 
     Returns
     -------
@@ -39,8 +45,8 @@ def write_text_atomic(path: str | Path, text: str) -> Path:
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".part", dir=path.parent)
     try:
-        with os.fdopen(fd, "w", encoding="utf-8", newline="") as handle:
-            handle.write(text)
+        with os.fdopen(fd, "wb") as handle:
+            handle.write(data)
             handle.flush()
             os.fsync(handle.fileno())
         os.replace(tmp, path)
@@ -48,6 +54,24 @@ def write_text_atomic(path: str | Path, text: str) -> Path:
         Path(tmp).unlink(missing_ok=True)
         raise
     return path
+
+
+def write_text_atomic(path: str | Path, text: str) -> Path:
+    """Write UTF-8 ``text`` to ``path`` atomically (see :func:`write_bytes_atomic`).
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        Destination file; its folder is created if needed.
+    text : str
+        Content.
+
+    Returns
+    -------
+    pathlib.Path
+        The destination path.
+    """
+    return write_bytes_atomic(path, text.encode("utf-8"))
 
 
 def check_finite(data: Any, where: str = "results") -> None:

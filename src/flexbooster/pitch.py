@@ -12,17 +12,58 @@ psi'' + (a - 2 q cos 2 tau_1) psi = 0 with (4.2-4)
 where omega_psi = sqrt(2 pi R1 d2 K T0 / I_cm) is the rigid-body pitch frequency under the
 steady thrust.
 
+Stability is decided by the characteristic (Floquet) exponent beta: the equation has the
+solutions e^(+-i beta tau_1) P(tau_1) with P pi-periodic, and cos(pi beta) = y1(pi) for the
+even solution y1(0) = 1, y1'(0) = 0.  :func:`characteristic_exponent` computes beta
+
+* ``"floquet"``: from the monodromy matrix, integrated over half a period with a fourth-order
+  Magnus scheme (exact 2 x 2 exponentials), vectorised over all (a, q) at once, using
+  1 - cos(pi beta) = -2 y1'(pi/2) y2(pi/2) and 1 + cos(pi beta) = 2 y1(pi/2) y2'(pi/2);
+* ``"hill"``: from Hill's infinite determinant (Whittaker & Watson 19.42), a tridiagonal
+  continuant here, for the pi-periodic and the pi-antiperiodic Fourier bases;
+* ``"memo"``: the small-q formula (4.2-9) corrected per erratum E4; ``"memo-printed"``: as
+  printed (sin(pi sqrt(a)/2)).
+
+The branch of beta is the one that tends to sqrt(a) as q -> 0: in the stable band between the
+characteristic values a_r(q) and b_(r+1)(q), r < beta < r + 1; inside the tongue between
+b_r(q) and a_r(q), beta = r + i mu with mu > 0, and the solution grows like
+e^(mu tau_1) = e^(mu Omega t / 2).  The band index r comes from a Sturm count of the Hill
+matrices (the number of characteristic values below a).
+
 References
 ----------
-.. [1] Tech Memo 104, eqs. (2.2-2c), (4.2-1)..(4.2-5).
-.. [2] N. W. McLachlan, *Theory and Application of Mathieu Functions*, Oxford, 1947.
+.. [1] Tech Memo 104, eqs. (2.2-2c), (4.2-1)..(4.2-9).
+.. [2] N. W. McLachlan, *Theory and Application of Mathieu Functions*, Oxford, 1947, ch. IV.
+.. [3] E. T. Whittaker, G. N. Watson, *A Course of Modern Analysis*, 4th ed., Cambridge, 1927,
+   sec. 19.41-19.42 (Hill's determinant).
+.. [4] M. Abramowitz, I. A. Stegun, *Handbook of Mathematical Functions*, NBS, 1964, ch. 20
+   (20.2.21-20.2.25 characteristic values and stability chart; 20.3.15 small-q expansion).
+.. [5] S. Blanes, F. Casas, J. Ros, "Improved high order integrators based on the Magnus
+   expansion", BIT 40 (2000) 434-450 (fourth-order Magnus with two Gauss nodes).
 """
 
 from __future__ import annotations
 
-import numpy as np
+from dataclasses import dataclass
+from typing import Any
 
-__all__ = ["pitch_frequency", "mathieu_parameters"]
+import numpy as np
+from scipy import integrate, special
+
+__all__ = [
+    "pitch_frequency",
+    "mathieu_parameters",
+    "characteristic_exponent",
+    "floquet_discriminant",
+    "transition_curves",
+    "psi_three_term",
+    "psi_numerical",
+    "three_term_error",
+    "PitchResult",
+    "pitch_analysis",
+]
+
+_METHODS = ("floquet", "hill", "memo", "memo-printed")
 
 
 def pitch_frequency(F0: float, d2: float, K: float, I_cm: float) -> float:
@@ -31,13 +72,13 @@ def pitch_frequency(F0: float, d2: float, K: float, I_cm: float) -> float:
     Parameters
     ----------
     F0 : float
-        Total steady thrust, F0 = 2 pi R1 T0 (N).
+        Total steady thrust, F0 = 2 pi R1 T0 (N), >= 0.
     d2 : float
-        Lever arm, CM to the aft edge (m) (erratum E2).
+        Lever arm, CM to the aft edge (m) (erratum E2), > 0.
     K : float
         Gimbal gain (dimensionless, >= 0): the thrust turns by K psi.
     I_cm : float
-        Pitch moment of inertia about the CM (kg m^2).
+        Pitch moment of inertia about the CM (kg m^2), > 0.
 
     Returns
     -------
@@ -48,6 +89,16 @@ def pitch_frequency(F0: float, d2: float, K: float, I_cm: float) -> float:
     ----------
     Tech Memo 104, eq. (4.2-1) linearised, with erratum E2.
     """
+    for name, value, positive in (
+        ("F0", F0, False),
+        ("d2", d2, True),
+        ("K", K, False),
+        ("I_cm", I_cm, True),
+    ):
+        ok = np.isfinite(value) and (value > 0 if positive else value >= 0)
+        if not ok:
+            rule = "> 0" if positive else ">= 0"
+            raise ValueError(f"{name} = {value!r}: must be finite and {rule}")
     return float(np.sqrt(F0 * d2 * K / I_cm))  # eq. (4.2-1), sin(K psi) ~ K psi
 
 
@@ -61,9 +112,9 @@ def mathieu_parameters(
     Omega : array_like
         Thrust pulsation frequency (rad/s), > 0.
     omega_psi : float
-        Rigid-body pitch frequency (rad/s), see :func:`pitch_frequency`.
+        Rigid-body pitch frequency (rad/s), >= 0, see :func:`pitch_frequency`.
     gamma : float
-        Relative amplitude of the thrust pulsation (dimensionless).
+        Relative amplitude of the thrust pulsation (dimensionless), >= 0.
 
     Returns
     -------
@@ -76,6 +127,746 @@ def mathieu_parameters(
     Tech Memo 104, eq. (4.2-4) with erratum E2.
     """
     Omega = np.asarray(Omega, dtype=float)
+    if Omega.size == 0 or not np.all(np.isfinite(Omega)) or np.any(Omega <= 0):
+        raise ValueError(f"Omega = {Omega!r}: every value must be finite and > 0")
+    if not (np.isfinite(omega_psi) and omega_psi >= 0):
+        raise ValueError(f"omega_psi = {omega_psi!r}: must be finite and >= 0")
+    if not (np.isfinite(gamma) and gamma >= 0):
+        raise ValueError(f"gamma = {gamma!r}: must be finite and >= 0")
     a = 4.0 * omega_psi**2 / Omega**2  # eq. (4.2-4): 8 pi R1 d2 K T0 / (I_cm Omega^2)
     q = gamma * a / 2.0  # eq. (4.2-4)
     return a, q
+
+
+# --------------------------------------------------------------------------------------------
+# Characteristic exponent
+# --------------------------------------------------------------------------------------------
+
+
+def _as_grid(a: Any, q: Any) -> tuple[np.ndarray, np.ndarray]:
+    a = np.asarray(a, dtype=float)
+    q = np.asarray(q, dtype=float)
+    if not np.all(np.isfinite(a)):
+        raise ValueError("a: every value must be finite")
+    if not np.all(np.isfinite(q)):
+        raise ValueError("q: every value must be finite")
+    a, q = np.broadcast_arrays(a, q)
+    return a, np.abs(q)  # the exponent is even in q (shift tau_1 by pi/2)
+
+
+def _hill_order(a: np.ndarray, q: np.ndarray) -> int:
+    """Truncation N of the Hill matrices (Fourier indices |m| <= 2N + 1) for these a, q.
+
+    N makes |a| <= (2N)^2 / 16 (the tail series in a converge fast) and the neglected links
+    small: with the tail included to second order, the remainder is O(eps^3),
+    eps = q^2 / (2N)^4, and (2N) >= 22 sqrt(q) keeps it below 1e-15 (checked against mpmath
+    up to q = 20 in the tests).
+    """
+    amax = float(np.max(np.abs(a))) if a.size else 0.0
+    qmax = float(np.max(q)) if q.size else 0.0
+    m_needed = max(4.0 * np.sqrt(amax), 22.0 * np.sqrt(qmax))
+    return int(np.ceil(m_needed / 2.0)) + 6
+
+
+def _chain_series(m0: int, factors: tuple[tuple[int, int], ...], kmax: int) -> np.ndarray:
+    """Coefficients c_k (k = 0..kmax) of sum_(m = m0, m0+2, ...) prod ((m + 2s)^2 - a)^-p.
+
+    ``factors`` are pairs (s, p).  Each factor is the series
+    sum_k binom(k + p - 1, p - 1) a^k x^-(k + p), x = (m + 2s)^2; the product is truncated at
+    a^kmax and summed explicitly over 2000 values of m (the terms fall at least like m^-6:
+    remainder below 1e-18).
+    """
+    m = m0 + 2.0 * np.arange(2000)
+    k = np.arange(kmax + 1)[:, None]
+    total = None
+    for s, p in factors:
+        inv = 1.0 / (m + 2.0 * s) ** 2
+        binom = special.comb(k + p - 1, p - 1)
+        ser = binom * inv ** (k + p)  # (kmax + 1, M)
+        if total is None:
+            total = ser
+        else:
+            prod = np.zeros_like(total)
+            for i in range(kmax + 1):
+                prod[i:] += total[i] * ser[: kmax + 1 - i]
+            total = prod
+    return np.sum(total, axis=1)
+
+
+def _tail_coefficients(m0: int, kmax: int) -> dict[str, np.ndarray]:
+    """Power series in a of the tails of the Hill continuant beyond |m| = m0 - 2.
+
+    Keys: ``"diag"``: sum_(m >= m0) log(1 - a/m^2) (Hurwitz zeta values);
+    ``"link"``: sum_(m >= m0 - 2) 1/((m^2 - a)((m+2)^2 - a)) (exact partial-fraction leading
+    term); ``"sq"``: the same with both factors squared; ``"adj"``: sum_(m >= m0 - 2)
+    1/((m^2 - a)((m+2)^2 - a)^2 ((m+4)^2 - a)); m runs over m0 - 2, m0, m0 + 2, ...
+    """
+    k = np.arange(kmax + 1)
+    diag = np.zeros(kmax + 1)
+    # sum_(m = m0, m0+2, ...) m^(-2k) = 4^(-k) zeta(2k, m0/2) (Hurwitz zeta)
+    diag[1:] = -special.zeta(2.0 * k[1:], m0 / 2.0) / (4.0 ** k[1:] * k[1:])
+    ml = m0 - 2  # first neglected link: rows m0 - 2 (kept) and m0 (dropped)
+    link = _chain_series(ml, ((0, 1), (1, 1)), kmax)
+    # leading term exact: 1/(m^2 (m+2)^2) = [m^-2 + (m+2)^-2 - 2/(m (m+2))] / 4, telescoping
+    link[0] = 0.25 * (
+        special.zeta(2.0, ml / 2.0) / 4.0 + special.zeta(2.0, ml / 2.0 + 1.0) / 4.0 - 1.0 / ml
+    )
+    return {
+        "diag": diag,
+        "link": link,
+        "sq": _chain_series(ml, ((0, 2), (1, 2)), kmax),
+        "adj": _chain_series(ml, ((0, 1), (1, 2), (2, 1)), kmax),
+    }
+
+
+def _series_order(a: np.ndarray, m0: int) -> int:
+    """Number of terms of the tail series in a/m0^2 for 1e-18 (at most 60)."""
+    ratio = float(np.max(np.abs(a))) / m0**2 if a.size else 0.0
+    if ratio <= 0.0:
+        return 1
+    return int(min(60, np.ceil(np.log(1e-18) / np.log(ratio)) + 1))
+
+
+def _series(coef: np.ndarray, a: np.ndarray) -> np.ndarray:
+    """Horner evaluation of sum_k coef_k a^k."""
+    out = np.full(a.shape, coef[-1])
+    for kk in range(coef.size - 2, -1, -1):
+        out = out * a + coef[kk]
+    return out
+
+
+def _log_tail(a: np.ndarray, q: np.ndarray, m_last: int, kmax: int) -> np.ndarray:
+    """log of the factor that the rows |m| > m_last contribute to the Hill determinant.
+
+    Rows scaled to diagonal 1 - a/m^2 have link products eps(m) = q^2/((m^2 - a)((m+2)^2 - a))
+    between rows m and m + 2; expanding log det in the links,
+    log det = sum log d - sum eps - (1/2) sum eps^2 - sum_(adjacent) eps eps' + O(eps^3).
+    The terms that involve a dropped row are summed here for one side (m > 0) and doubled.
+    """
+    tail = _tail_coefficients(m_last + 2, kmax)
+    q2 = q * q
+    eps_core = q2 / (((m_last - 2) ** 2 - a) * (m_last**2 - a))  # last kept link
+    eps_first = q2 / ((m_last**2 - a) * ((m_last + 2) ** 2 - a))  # first dropped link
+    one_side = (
+        _series(tail["diag"], a)
+        - q2 * _series(tail["link"], a)
+        - 0.5 * q2 * q2 * _series(tail["sq"], a)
+        - q2 * q2 * _series(tail["adj"], a)
+        - eps_core * eps_first
+    )
+    return 2.0 * one_side
+
+
+def _hill(a: np.ndarray, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """1 - cos(pi beta), 1 + cos(pi beta) and the number of characteristic values below a.
+
+    Hill's determinant in the pi-periodic basis e^(2 i n t) gives (Whittaker & Watson 19.42)
+    1 - cos(pi beta) = 2 sin^2(pi sqrt(a)/2) Delta_even(0); in the antiperiodic basis
+    e^(i (2n+1) t), 1 + cos(pi beta) = 2 cos^2(pi sqrt(a)/2) Delta_odd.  Each row m of Delta
+    (diagonal 1, off-diagonal -q / (a - m^2)) is multiplied by (1 - a/m^2) (row m = 0 by a),
+    which absorbs the product formulas of sin and cos, so no entry is singular at a = m^2;
+    the continuant is evaluated by its pivot recurrence, whose signs also give the Sturm
+    count of the symmetric matrices (diag m^2, off-diagonal q).  The rows |m| > m_N are
+    accounted for analytically (:func:`_log_tail`: the tails of the sin/cos products and the
+    links to second order); the truncated determinant alone converges only like q^2 / m_N^3.
+    """
+    N = _hill_order(a, q)
+    shape = a.shape
+    a = a.ravel().astype(float)
+    q = q.ravel().astype(float)
+    tiny = np.finfo(float).tiny
+
+    def continuant(ms: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        det = np.ones_like(a)
+        count = np.zeros(a.shape, dtype=np.int64)
+        piv = None
+        prev_off = None
+        for m in ms:
+            if m == 0:
+                diag, off, sgn = a, -q, -1.0  # row 0 of Delta times a: [-q, a, -q]
+            else:
+                diag, off, sgn = 1.0 - a / m**2, q / m**2, 1.0  # row m times (1 - a/m^2)
+            # Hill rows: diag 1, off -q/(a - m^2), times the factor above
+            piv = diag if piv is None else diag - off * prev_off / piv
+            piv = np.where(piv == 0.0, tiny, piv)
+            det = det * piv
+            count += (piv * sgn < 0.0).astype(np.int64)  # negative pivot of H - a I
+            prev_off = off
+        return det, count
+
+    m_even, m_odd = 2 * N, 2 * N + 1  # largest |m| kept
+    det_e, cnt_e = continuant(2 * np.arange(-N, N + 1))
+    det_o, cnt_o = continuant(2 * np.arange(-N - 1, N + 1) + 1)
+    kmax = _series_order(a, m_even)
+    log_e = _log_tail(a, q, m_even, kmax)
+    log_o = _log_tail(a, q, m_odd, kmax)
+    one_minus = 0.5 * np.pi**2 * np.exp(log_e) * det_e  # 2 sin^2(pi sqrt(a)/2) Delta_even
+    one_plus = 2.0 * np.exp(log_o) * det_o  # 2 cos^2(pi sqrt(a)/2) Delta_odd
+    return one_minus.reshape(shape), one_plus.reshape(shape), (cnt_e + cnt_o).reshape(shape)
+
+
+def _magnus(a: np.ndarray, q: np.ndarray, n_steps: int | None) -> tuple[np.ndarray, np.ndarray]:
+    """1 - cos(pi beta), 1 + cos(pi beta) from the fundamental matrix at pi/2.
+
+    Fourth-order Magnus with n and 2n steps, combined by Richardson extrapolation
+    (16 F(2n) - F(n)) / 15 (sixth order); n defaults to 24 + 16 max sqrt(|a| + 2|q|).
+    """
+    if n_steps is None:
+        scale = float(np.max(np.sqrt(np.abs(a) + 2.0 * q))) if a.size else 0.0
+        n_steps = int(np.ceil(24.0 + 16.0 * scale))
+    n_steps = int(n_steps)
+    if n_steps < 1:
+        raise ValueError(f"n_steps = {n_steps!r}: must be >= 1")
+    m1, p1 = _magnus_pass(a, q, n_steps)
+    m2, p2 = _magnus_pass(a, q, 2 * n_steps)
+    return (16.0 * m2 - m1) / 15.0, (16.0 * p2 - p1) / 15.0
+
+
+def _magnus_pass(a: np.ndarray, q: np.ndarray, n_steps: int) -> tuple[np.ndarray, np.ndarray]:
+    """One Magnus-4 pass over [0, pi/2] with n_steps equal steps; see :func:`_magnus`."""
+    h = 0.5 * np.pi / n_steps
+    c_comm = np.sqrt(3.0) * h**2 / 12.0
+    off = h / (2.0 * np.sqrt(3.0))
+    y11 = np.ones_like(a)  # y1
+    y21 = np.zeros_like(a)  # y1'
+    y12 = np.zeros_like(a)  # y2
+    y22 = np.ones_like(a)  # y2'
+    for i in range(n_steps):
+        tm = (i + 0.5) * h
+        c1, c2 = np.cos(2.0 * (tm - off)), np.cos(2.0 * (tm + off))  # two Gauss nodes
+        wbar = a - q * (c1 + c2)  # mean of w = a - 2 q cos 2t over the nodes, eq. (4.2-3)
+        cd = c_comm * (2.0 * q * (c2 - c1))  # sqrt(3) h^2/12 (w1 - w2)
+        z = h * h * wbar - cd * cd  # Omega^2 = -z I for the traceless Magnus matrix
+        root = np.sqrt(np.abs(z))
+        pos = z >= 0.0
+        if np.all(pos) and np.all(root > 0.0):  # oscillatory everywhere: the common case
+            cc = np.cos(root)
+            ss = np.sin(root) / root
+        else:
+            cc = np.where(pos, np.cos(root), np.cosh(root))
+            safe = np.where(root == 0.0, 1.0, root)
+            ss = np.where(root == 0.0, 1.0, np.where(pos, np.sin(root), np.sinh(root)) / safe)
+        # exp(Omega) = cc I + ss Omega, Omega = [[-cd, h], [-h wbar, cd]]
+        e11, e12, e21, e22 = cc - ss * cd, ss * h, -ss * h * wbar, cc + ss * cd
+        y11, y21 = e11 * y11 + e12 * y21, e21 * y11 + e22 * y21
+        y12, y22 = e11 * y12 + e12 * y22, e21 * y12 + e22 * y22
+    return -2.0 * y21 * y12, 2.0 * y11 * y22
+
+
+def _count(a: np.ndarray, q: np.ndarray) -> np.ndarray:
+    return _hill(a, q)[2]
+
+
+def _beta_from(one_minus: np.ndarray, one_plus: np.ndarray, count: np.ndarray) -> np.ndarray:
+    """Complex beta on the branch beta -> sqrt(a) (q -> 0) from 1 -+ cos(pi beta)."""
+    even_tongue = one_minus < 0.0  # cos(pi beta) > 1
+    odd_tongue = one_plus < 0.0  # cos(pi beta) < -1
+    stable = ~(even_tongue | odd_tongue)
+    half = count / 2.0
+    # stable band r: count = 2 r + 1; a count that rounding made even is taken as the band above
+    r_band = np.floor(half)
+    frac = (
+        2.0
+        / np.pi
+        * np.arctan2(np.sqrt(np.maximum(one_minus, 0.0)), np.sqrt(np.maximum(one_plus, 0.0)))
+    )
+    beta_stable = np.where(r_band % 2 == 0, r_band + frac, r_band + 1.0 - frac)
+    r_even = 2.0 * np.round(half / 2.0)  # nearest even integer to count/2
+    r_odd = 2.0 * np.round((half - 1.0) / 2.0) + 1.0  # nearest odd integer to count/2
+    y = np.where(even_tongue, -one_minus, np.where(odd_tongue, -one_plus, 0.0))
+    mu = np.log1p(y + np.sqrt(y * (y + 2.0))) / np.pi  # arccosh(1 + y) / pi
+    re = np.where(stable, beta_stable, np.where(even_tongue, r_even, r_odd))
+    return re + 1j * np.where(stable, 0.0, mu)
+
+
+def floquet_discriminant(
+    a: Any, q: Any, method: str = "floquet", n_steps: int | None = None
+) -> np.ndarray:
+    """The Floquet discriminant cos(pi beta) = y1(pi) of the Mathieu equation (4.2-3).
+
+    Parameters
+    ----------
+    a : array_like
+        Mathieu parameter a (dimensionless).
+    q : array_like
+        Mathieu parameter q (dimensionless), broadcast against ``a``.
+    method : {"floquet", "hill", "memo", "memo-printed"}
+        See :func:`characteristic_exponent`.
+    n_steps : int, optional
+        Magnus steps over [0, pi/2] for ``"floquet"`` (the scheme also runs 2 n_steps and
+        extrapolates); default 24 + 16 max sqrt(|a| + 2|q|).
+
+    Returns
+    -------
+    numpy.ndarray
+        cos(pi beta) (dimensionless), shaped like the broadcast of ``a`` and ``q``.
+
+    References
+    ----------
+    McLachlan (1947) ch. IV; Whittaker & Watson (1927) 19.42; Tech Memo 104, eq. (4.2-9).
+    """
+    a, q = _as_grid(a, q)
+    one_minus, one_plus, _ = _discriminants(a, q, method, n_steps)
+    return 0.5 * (one_plus - one_minus)
+
+
+def _discriminants(
+    a: np.ndarray, q: np.ndarray, method: str, n_steps: int | None
+) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
+    if method == "hill":
+        return _hill(a, q)
+    if method == "floquet":
+        one_minus, one_plus = _magnus(a.ravel(), q.ravel(), n_steps)
+        return one_minus.reshape(a.shape), one_plus.reshape(a.shape), None
+    if method in ("memo", "memo-printed"):
+        if np.any(a <= 0.0):
+            raise ValueError(f"a = {a!r}: method {method!r} (eq. 4.2-9) needs every a > 0")
+        if np.any(a == 1.0):
+            raise ValueError("a = 1: eq. (4.2-9) is singular at a = 1 (factor 1/(a - 1))")
+        sa = np.sqrt(a)
+        if method == "memo":
+            s_term = np.sin(np.pi * sa)  # eq. (4.2-9) corrected, erratum E4
+        else:
+            s_term = np.sin(np.pi * sa / 2.0)  # eq. (4.2-9) as printed
+        # eq. (4.2-9): cos(beta pi) = cos(pi a^1/2) + pi q^2 / (4 a^1/2 (a - 1)) sin(...)
+        corr = np.pi * q**2 / (4.0 * sa * (a - 1.0)) * s_term
+        # 1 -+ cos(pi beta) with 1 -+ cos(pi sqrt a) written as 2 sin^2, 2 cos^2 (no cancellation)
+        one_minus = 2.0 * np.sin(0.5 * np.pi * sa) ** 2 - corr
+        one_plus = 2.0 * np.cos(0.5 * np.pi * sa) ** 2 + corr
+        return one_minus, one_plus, None
+    raise ValueError(f"method = {method!r}: must be one of {_METHODS}")
+
+
+def characteristic_exponent(
+    a: Any, q: Any, method: str = "floquet", n_steps: int | None = None
+) -> np.ndarray:
+    """Characteristic exponent beta of psi'' + (a - 2 q cos 2 tau_1) psi = 0 (eq. 4.2-3).
+
+    Parameters
+    ----------
+    a : array_like
+        Mathieu parameter a = 4 omega_psi^2 / Omega^2 (dimensionless, eq. 4.2-4); any real.
+    q : array_like
+        Mathieu parameter q = gamma a / 2 (dimensionless), broadcast against ``a``; beta is
+        even in q.
+    method : {"floquet", "hill", "memo", "memo-printed"}
+        ``"floquet"``: monodromy matrix by a vectorised fourth-order Magnus integration;
+        ``"hill"``: Hill's determinant (fastest; the benchmark method);
+        ``"memo"``: eq. (4.2-9) with erratum E4, cos(pi beta) = cos(pi sqrt a)
+        + pi q^2 / (4 sqrt(a) (a - 1)) sin(pi sqrt a), valid for small q away from a = 1
+        (memo range 0 < a < 1, 0 < q <= 0.05, eq. 4.2-5); needs a > 0, a != 1;
+        ``"memo-printed"``: eq. (4.2-9) as printed, with sin(pi sqrt(a) / 2).
+    n_steps : int, optional
+        Number of Magnus steps over [0, pi/2] (``"floquet"`` only).
+
+    Returns
+    -------
+    numpy.ndarray of complex
+        beta, shaped like the broadcast of ``a`` and ``q``.  Real (imaginary part 0) where the
+        solutions are bounded, r < beta < r + 1 in the stable band above the tongue r;
+        r + i mu with mu > 0 inside the tongue r (between b_r(q) and a_r(q); r = 0 for
+        a < a_0(q)), where the solution grows like e^(mu tau_1).  The band index r is the
+        Sturm count of the Hill matrices for every method (for ``"memo"`` it is the
+        q -> 0 band, floor(sqrt a)).
+
+    Notes
+    -----
+    cos(pi beta) = y1(pi) (McLachlan ch. IV).  Both 1 - cos(pi beta) and 1 + cos(pi beta) are
+    computed without cancellation (as products, see :func:`floquet_discriminant`), so beta is
+    accurate near integers; at a transition curve beta has a square-root singularity in a
+    and q, so there its accuracy is about the square root of the discriminant's.
+
+    References
+    ----------
+    Tech Memo 104, eqs. (4.2-3), (4.2-9) (erratum E4); McLachlan (1947) ch. IV;
+    Whittaker & Watson (1927) 19.42; Abramowitz & Stegun (1964) 20.3.15.
+    """
+    a, q = _as_grid(a, q)
+    if method in ("memo", "memo-printed"):
+        one_minus, one_plus, _ = _discriminants(a, q, method, n_steps)
+        count = 2.0 * np.floor(np.sqrt(a)) + 1.0  # q -> 0 band r = floor(sqrt a)
+        return _beta_from(one_minus, one_plus, count)
+    one_minus, one_plus, count = _discriminants(a, q, method, n_steps)
+    if count is None:
+        count = _count(a, q)
+    return _beta_from(one_minus, one_plus, count)
+
+
+def transition_curves(q: Any, r_max: int = 4) -> dict[str, np.ndarray]:
+    """Mathieu characteristic values a_r(q) (r = 0..r_max) and b_r(q) (r = 1..r_max).
+
+    Parameters
+    ----------
+    q : array_like
+        Mathieu parameter q >= 0 (dimensionless), 1-D.
+    r_max : int
+        Highest order (>= 1).
+
+    Returns
+    -------
+    dict
+        ``"a0"``..``"a{r_max}"`` and ``"b1"``..``"b{r_max}"``: arrays shaped like ``q``, the
+        transition curves of the Ince-Strutt chart (dimensionless); tongue r lies between
+        b_r and a_r.
+
+    Notes
+    -----
+    Eigenvalues of the four symmetric tridiagonal matrices of A&S 20.2 (bases cos 2nt,
+    sin 2nt, cos (2n+1)t, sin (2n+1)t), batched over q with ``numpy.linalg.eigvalsh``.
+
+    References
+    ----------
+    Abramowitz & Stegun (1964) 20.2.21-20.2.25; McLachlan (1947) ch. III.
+    """
+    q = np.atleast_1d(np.asarray(q, dtype=float))
+    if q.ndim != 1 or not np.all(np.isfinite(q)) or np.any(q < 0):
+        raise ValueError(f"q = {q!r}: must be a 1-D array of finite values >= 0")
+    if int(r_max) != r_max or r_max < 1:
+        raise ValueError(f"r_max = {r_max!r}: must be an integer >= 1")
+    r_max = int(r_max)
+    size = r_max + 12 + int(np.ceil(np.sqrt(float(np.max(q)) if q.size else 0.0)))
+
+    def eig(diag: np.ndarray, first: Any, off_first: Any) -> np.ndarray:
+        mats = np.zeros((q.size, size, size))
+        idx = np.arange(size)
+        mats[:, idx, idx] = diag
+        mats[:, idx[:-1], idx[1:]] = q[:, None]
+        mats[:, idx[1:], idx[:-1]] = q[:, None]
+        mats[:, 0, 0] += first
+        mats[:, 0, 1] *= off_first
+        mats[:, 1, 0] *= off_first
+        return np.linalg.eigvalsh(mats)
+
+    n = np.arange(size)
+    a_even = eig((2.0 * n) ** 2, 0.0, np.sqrt(2.0))  # a_0, a_2, a_4, ...: cos 2nt, A&S 20.2.21
+    b_even = eig((2.0 * n + 2.0) ** 2, 0.0, 1.0)  # b_2, b_4, ...: sin 2nt
+    a_odd = eig((2.0 * n + 1.0) ** 2, q, 1.0)  # a_1, a_3, ...: cos (2n+1)t, (0,0) = 1 + q
+    b_odd = eig((2.0 * n + 1.0) ** 2, -q, 1.0)  # b_1, b_3, ...: sin (2n+1)t, (0,0) = 1 - q
+    out: dict[str, np.ndarray] = {}
+    for r in range(r_max + 1):
+        out[f"a{r}"] = (a_even if r % 2 == 0 else a_odd)[:, r // 2]
+        if r >= 1:
+            out[f"b{r}"] = b_even[:, r // 2 - 1] if r % 2 == 0 else b_odd[:, r // 2]
+    return out
+
+
+# --------------------------------------------------------------------------------------------
+# psi(tau): the memo's three-term solution and direct integration
+# --------------------------------------------------------------------------------------------
+
+
+def _scalar_aq(a: Any, q: Any) -> tuple[float, float]:
+    a, q = float(a), float(q)
+    if not np.isfinite(a):
+        raise ValueError(f"a = {a!r}: must be finite")
+    if not np.isfinite(q):
+        raise ValueError(f"q = {q!r}: must be finite")
+    return a, q
+
+
+def psi_three_term(
+    tau1: Any, a: float, q: float, psi0: float = 1.0, beta: float | None = None
+) -> np.ndarray:
+    """The memo's three-term solution psi = sum_(i=1..3) A_i cos(Omega_i tau) (4.2-6..8).
+
+    Parameters
+    ----------
+    tau1 : array_like
+        Mathieu time tau_1 = Omega t / 2 (dimensionless).  The memo's tau = omega_1 t is
+        tau = (2 omega_1 / Omega) tau_1 (4.2-6a), and Omega_i tau = (2 - beta) tau_1,
+        beta tau_1, (2 + beta) tau_1 (4.2-7e..g).
+    a, q : float
+        Mathieu parameters (dimensionless), in the stable region.
+    psi0 : float
+        psi(0) (rad) (4.2-8a).
+    beta : float, optional
+        The exponent to use; default the exact (Floquet) exponent.  Must be real.
+
+    Returns
+    -------
+    numpy.ndarray
+        psi(tau_1) (rad), shaped like ``tau1``; psi'(0) = 0.
+
+    References
+    ----------
+    Tech Memo 104, eqs. (4.2-6), (4.2-7), (4.2-8a).
+    """
+    a, q = _scalar_aq(a, q)
+    if beta is None:
+        b = complex(characteristic_exponent(a, q, "floquet"))
+        if b.imag != 0.0:
+            raise ValueError(
+                f"a = {a}, q = {q}: unstable (beta = {b}); the three-term form "
+                "(4.2-6) needs a real beta"
+            )
+        beta = b.real
+    if not np.isfinite(beta):
+        raise ValueError(f"beta = {beta!r}: must be finite and real")
+    tau1 = np.asarray(tau1, dtype=float)
+    den1 = a - (beta - 2.0) ** 2
+    den3 = a - (2.0 + beta) ** 2
+    if den1 == 0.0 or den3 == 0.0:
+        raise ValueError(f"a = {a}, beta = {beta}: a - (2 -+ beta)^2 = 0 in eq. (4.2-7)")
+    A2 = psi0 / (1.0 + q * (1.0 / den3 + 1.0 / den1))  # eq. (4.2-7c)
+    A1 = A2 * q / den1  # eq. (4.2-7b)
+    A3 = A2 * q / den3  # eq. (4.2-7d)
+    return (
+        A1 * np.cos((2.0 - beta) * tau1)  # eq. (4.2-6), (4.2-7e)
+        + A2 * np.cos(beta * tau1)  # eq. (4.2-7f)
+        + A3 * np.cos((2.0 + beta) * tau1)  # eq. (4.2-7g)
+    )
+
+
+def psi_numerical(tau1: Any, a: Any, q: Any, psi0: float = 1.0) -> np.ndarray:
+    """psi(tau_1) by direct integration of eq. (4.2-3), psi(0) = psi0, psi'(0) = 0.
+
+    Parameters
+    ----------
+    tau1 : array_like
+        Increasing output times tau_1 >= 0 (dimensionless), 1-D.
+    a, q : array_like
+        Mathieu parameters (dimensionless); 1-D arrays of equal length (or scalars) give one
+        solution per pair, integrated together as one system.
+    psi0 : float
+        Initial angle (rad).
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (len(a), len(tau1)) (or (len(tau1),) for scalar a, q), psi in rad.
+
+    Notes
+    -----
+    scipy.integrate.solve_ivp, DOP853, rtol 1e-12, atol 1e-14 |psi0|.
+
+    References
+    ----------
+    Tech Memo 104, eq. (4.2-3).
+    """
+    scalar = np.ndim(a) == 0 and np.ndim(q) == 0
+    _as_grid(a, q)  # validation only: psi, unlike beta, depends on the sign of q
+    a, q = np.broadcast_arrays(
+        np.atleast_1d(np.asarray(a, dtype=float)), np.atleast_1d(np.asarray(q, dtype=float))
+    )
+    a, q = a.ravel(), q.ravel()
+    tau1 = np.atleast_1d(np.asarray(tau1, dtype=float))
+    if tau1.ndim != 1 or np.any(tau1 < 0) or np.any(np.diff(tau1) < 0):
+        raise ValueError("tau1: must be a 1-D non-decreasing array of values >= 0")
+    if not (np.isfinite(psi0) and psi0 != 0):
+        raise ValueError(f"psi0 = {psi0!r}: must be finite and non-zero")
+    m = a.size
+
+    def rhs(t: float, y: np.ndarray) -> np.ndarray:
+        return np.concatenate([y[m:], -(a - 2.0 * q * np.cos(2.0 * t)) * y[:m]])  # eq. (4.2-3)
+
+    y0 = np.concatenate([np.full(m, float(psi0)), np.zeros(m)])
+    t_end = float(tau1[-1])
+    if t_end == 0.0:
+        out = np.full((m, tau1.size), float(psi0))
+    else:
+        sol = integrate.solve_ivp(
+            rhs, (0.0, t_end), y0, method="DOP853", t_eval=tau1, rtol=1e-12, atol=1e-14 * abs(psi0)
+        )
+        out = sol.y[:m]
+    return out[0] if scalar else out
+
+
+def three_term_error(
+    a: float, q: Any, tau1_max: float = 20.0 * np.pi, n_times: int = 2001
+) -> np.ndarray:
+    """Error of the memo's three-term psi against direct integration, as a function of q.
+
+    Parameters
+    ----------
+    a : float
+        Mathieu parameter a (dimensionless), 0 < a < 1 (memo range, eq. 4.2-5).
+    q : array_like
+        Values of q (dimensionless), 1-D; each must lie in the stable region.
+    tau1_max : float
+        Length of the comparison in Mathieu time tau_1 (dimensionless).
+    n_times : int
+        Number of comparison times.
+
+    Returns
+    -------
+    numpy.ndarray
+        max over tau_1 in [0, tau1_max] of |psi_3 - psi| / |psi0|, shaped like ``q``, with the
+        exact (Floquet) beta in the three-term form: the truncation error of (4.2-6), O(q^2).
+
+    References
+    ----------
+    Tech Memo 104, eqs. (4.2-3), (4.2-6)..(4.2-8).
+    """
+    q = np.atleast_1d(np.asarray(q, dtype=float))
+    if not (np.isfinite(tau1_max) and tau1_max > 0):
+        raise ValueError(f"tau1_max = {tau1_max!r}: must be finite and > 0")
+    tau = np.linspace(0.0, tau1_max, int(n_times))
+    exact = psi_numerical(tau, np.full(q.shape, float(a)), q)
+    betas = characteristic_exponent(float(a), q, "floquet")
+    if np.any(betas.imag != 0.0):
+        raise ValueError(f"q = {q!r}: every (a, q) must be stable for the three-term form")
+    approx = np.stack(
+        [psi_three_term(tau, a, qi, 1.0, float(b.real)) for qi, b in zip(q, betas, strict=True)]
+    )
+    return np.max(np.abs(approx - exact), axis=1)
+
+
+# --------------------------------------------------------------------------------------------
+# Result object for the pipeline
+# --------------------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class PitchResult:
+    """Rigid-body pitch stability along the Omega grid (memo section 4.2).
+
+    Attributes
+    ----------
+    Omega : numpy.ndarray
+        Thrust pulsation frequencies (rad/s).
+    omega_psi : float
+        Rigid-body pitch frequency (rad/s).
+    gamma : float
+        Pulsation amplitude (dimensionless).
+    a, q : numpy.ndarray
+        Mathieu parameters (4.2-4) (dimensionless).
+    beta_real, beta_imag : numpy.ndarray
+        Exact characteristic exponent (Floquet) (dimensionless).
+    beta_memo_real, beta_memo_imag : numpy.ndarray
+        Eq. (4.2-9) with erratum E4 (dimensionless); zero where a <= 0 or a = 1.
+    growth_rate : numpy.ndarray
+        Amplitude growth rate of psi, beta_imag Omega / 2 (1/s); 0 where stable.
+    stable : numpy.ndarray of bool
+        True where beta is real (bounded psi).
+    in_memo_range : numpy.ndarray of bool
+        0 < a < 1 and 0 < q <= 0.05 (eq. 4.2-5).
+    verdict : str
+        One-line stability verdict.
+    """
+
+    Omega: np.ndarray
+    omega_psi: float
+    gamma: float
+    a: np.ndarray
+    q: np.ndarray
+    beta_real: np.ndarray
+    beta_imag: np.ndarray
+    beta_memo_real: np.ndarray
+    beta_memo_imag: np.ndarray
+    growth_rate: np.ndarray
+    stable: np.ndarray
+    in_memo_range: np.ndarray
+    verdict: str
+
+    @property
+    def all_stable(self) -> bool:
+        """True when psi stays bounded over the whole grid."""
+        return bool(np.all(self.stable))
+
+    @property
+    def max_growth_rate(self) -> float:
+        """The largest growth rate on the grid (1/s), 0 when stable everywhere."""
+        return float(np.max(self.growth_rate)) if self.growth_rate.size else 0.0
+
+    def unstable_intervals(self) -> list[tuple[float, float]]:
+        """Runs of consecutive unstable grid points as (Omega_first, Omega_last) (rad/s)."""
+        bad = ~self.stable
+        runs = []
+        i = 0
+        idx = np.flatnonzero(bad)
+        while i < idx.size:
+            k = i
+            while k + 1 < idx.size and idx[k + 1] == idx[k] + 1:
+                k += 1
+            runs.append((float(self.Omega[idx[i]]), float(self.Omega[idx[k]])))
+            i = k + 1
+        return runs
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready mapping: plain lists of floats/bools, no NaN or inf."""
+
+        def fl(x: np.ndarray) -> list[float]:
+            return [float(v) for v in np.nan_to_num(np.asarray(x, dtype=float))]
+
+        return {
+            "omega_psi": float(self.omega_psi),
+            "gamma": float(self.gamma),
+            "Omega": fl(self.Omega),
+            "a": fl(self.a),
+            "q": fl(self.q),
+            "beta_real": fl(self.beta_real),
+            "beta_imag": fl(self.beta_imag),
+            "beta_memo_real": fl(self.beta_memo_real),
+            "beta_memo_imag": fl(self.beta_memo_imag),
+            "growth_rate": fl(self.growth_rate),
+            "stable": [bool(v) for v in self.stable],
+            "in_memo_range": [bool(v) for v in self.in_memo_range],
+            "all_stable": self.all_stable,
+            "max_growth_rate": self.max_growth_rate,
+            "unstable_intervals": [list(iv) for iv in self.unstable_intervals()],
+            "verdict": self.verdict,
+        }
+
+
+def pitch_analysis(Omega: Any, omega_psi: float, gamma: float) -> PitchResult:
+    """Rigid-body pitch stability over a grid of thrust frequencies.
+
+    Parameters
+    ----------
+    Omega : array_like
+        Thrust pulsation frequencies (rad/s), > 0, 1-D.
+    omega_psi : float
+        Rigid-body pitch frequency (rad/s), from :func:`pitch_frequency`.
+    gamma : float
+        Pulsation amplitude (dimensionless), >= 0.
+
+    Returns
+    -------
+    PitchResult
+        a, q (4.2-4), exact and memo beta, growth rates and the verdict.
+
+    References
+    ----------
+    Tech Memo 104, eqs. (4.2-3), (4.2-4), (4.2-5), (4.2-9).
+    """
+    Omega = np.atleast_1d(np.asarray(Omega, dtype=float))
+    if Omega.ndim != 1:
+        raise ValueError(f"Omega: must be 1-D, got shape {Omega.shape}")
+    a, q = mathieu_parameters(Omega, omega_psi, gamma)
+    beta = characteristic_exponent(a, q, "floquet")
+    memo = np.zeros(a.shape, dtype=complex)
+    ok = (a > 0) & (a != 1.0)
+    if np.any(ok):
+        memo[ok] = characteristic_exponent(a[ok], q[ok], "memo")
+    stable = beta.imag == 0.0
+    growth = np.where(stable, 0.0, beta.imag * Omega / 2.0)  # e^(mu tau_1), tau_1 = Omega t/2
+    in_range = (a > 0) & (a < 1) & (q > 0) & (q <= 0.05)  # eq. (4.2-5)
+    if np.all(stable):
+        verdict = (
+            f"rigid-body pitch stable for all {Omega.size} Omega in "
+            f"[{Omega.min():.6g}, {Omega.max():.6g}] rad/s"
+        )
+    else:
+        i = int(np.argmax(growth))
+        verdict = (
+            f"rigid-body pitch UNSTABLE at {int(np.sum(~stable))} of {Omega.size} Omega "
+            f"values; max growth rate {growth[i]:.6g} 1/s at Omega = {Omega[i]:.6g} "
+            f"rad/s (a = {a[i]:.6g}, q = {q[i]:.6g})"
+        )
+    if not np.all(in_range):
+        verdict += f"; {int(np.sum(~in_range))} points outside the memo range (4.2-5)"
+    return PitchResult(
+        Omega=Omega,
+        omega_psi=float(omega_psi),
+        gamma=float(gamma),
+        a=a,
+        q=q,
+        beta_real=beta.real.copy(),
+        beta_imag=beta.imag.copy(),
+        beta_memo_real=memo.real.copy(),
+        beta_memo_imag=memo.imag.copy(),
+        growth_rate=growth,
+        stable=stable,
+        in_memo_range=in_range,
+        verdict=verdict,
+    )

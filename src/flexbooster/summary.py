@@ -11,7 +11,7 @@ from rich.table import Table
 
 from .analysis import Results
 
-__all__ = ["print_summary"]
+__all__ = ["print_summary", "print_stability"]
 
 
 def _table(title: str, rows: list[tuple[str, str, str]]) -> Table:
@@ -117,9 +117,127 @@ def print_summary(results: Results, console: Console | None = None) -> None:
             ],
         )
     )
+    _print_beam_and_pitch(results, console)
+    _print_shell(results, console)
+    _print_beam_action(results, console)
+    print_stability(results, console)
     if results.warnings:
         console.print(f"[bold yellow]Warnings ({len(results.warnings)}):[/bold yellow]")
         for w in results.warnings:
             console.print(f"  [yellow]warning[/yellow] [{w.code}] {w.field}: {w.message}")
     else:
         console.print("No warnings.")
+
+
+def _print_beam_and_pitch(results: Results, console: Console) -> None:
+    beam = results.beam
+    n_show = min(5, beam.lambda_n.size)
+    rows = [
+        (
+            f"mode {n + 1}: lambda_n / alpha_n",
+            f"{beam.lambda_n[n]:.9g} / {beam.alpha_n[n]:.9g}",
+            f"{_g(beam.omega_n[n])} rad/s" if beam.omega_n is not None else "-",
+        )
+        for n in range(n_show)
+    ]
+    console.print(
+        _table(f"Free-free beam modes (appendix C; first {n_show} of {beam.lambda_n.size})", rows)
+    )
+    p = results.pitch
+    rows = [
+        ("verdict", p.verdict, ""),
+        ("max growth rate of psi", _g(p.max_growth_rate), "1/s"),
+        ("beta (exact) over the grid", f"{_g(p.beta_real.min())} .. {_g(p.beta_real.max())}", "-"),
+        (
+            "|beta memo (4.2-9, E4) - exact|, max",
+            _g(float(np.max(np.abs(p.beta_memo_real - p.beta_real)))),
+            "-",
+        ),
+    ]
+    rows += [
+        ("unstable interval", f"{_g(lo)} .. {_g(hi)}", "rad/s")
+        for lo, hi in p.unstable_intervals()[:5]
+    ]
+    console.print(_table("Rigid-body pitch (memo 4.2, Floquet exponent)", rows))
+
+
+def _print_shell(results: Results, console: Console) -> None:
+    sh = results.shell
+    rows = []
+    for d in (1, 2):
+        mask = sh.cylinder == d
+        i = int(np.flatnonzero(mask)[np.argmin(sh.hz[mask])])
+        rows.append(
+            (
+                f"cylinder {d}: lowest (j, k, m, type)",
+                f"{_g(sh.hz[i])} Hz ({sh.j[i]}, {sh.k[i]}, {sh.branch[i]}, {sh.mode_type[i]})",
+                f"{_g(sh.omega_bar[i])} omega_1",
+            )
+        )
+        rows.append((f"cylinder {d}: frequencies computed", str(int(mask.sum())), ""))
+    title = f"Shell natural frequencies (memo 5.4, 6.2; method {sh.method}; all in the CSV)"
+    console.print(_table(title, rows))
+
+
+def _print_beam_action(results: Results, console: Console) -> None:
+    ba = results.beam_action
+    if ba is None:
+        console.print("Beam action: not computed.")
+        return
+    rows = [
+        ("verdict", ba.verdict, ""),
+        ("max growth rate", _g(ba.max_growth_rate), "1/s"),
+        ("steady thrust P l^2 / EI (flutter at 109.69)", _g(ba.p), "-"),
+        ("Hill vs monodromy exponents, max difference", _g(ba.hill_monodromy_difference), "-"),
+    ]
+    rows += [
+        (
+            f"alpha_{r + 1} Omega_bar at gamma -> 0 (loaded frequency)",
+            _g(float(ba.frequencies.real[r])),
+            "omega_1",
+        )
+        for r in range(ba.frequencies.size)
+    ]
+    console.print(_table("Beam action (memo 4.1, Floquet exponents alpha_r)", rows))
+
+
+def print_stability(results: Results, console: Console) -> None:
+    st = results.stability
+    if st is None:
+        console.print("Unstable thrust frequencies: not computed.")
+        return
+    table = Table(
+        title=(
+            f"Unstable thrust frequencies (memo 7.3): {len(st)} roots, {int(st.active.sum())} "
+            "with active forcing (first 15 active; all in unstable-frequencies.csv)"
+        ),
+        title_justify="left",
+        header_style="bold",
+    )
+    for col in (
+        "Omega rad/s",
+        "Hz",
+        "Omega/omega_1",
+        "family (eq.)",
+        "d",
+        "j",
+        "k",
+        "m",
+        "i,p,r,s",
+        "shell Hz",
+    ):
+        table.add_column(col, justify="right")
+    for n in np.flatnonzero(st.active)[:15]:
+        table.add_row(
+            _g(st.Omega[n]),
+            _g(st.Omega[n] / (2 * np.pi)),
+            _g(st.Omega_bar[n]),
+            f"{st.family[n]} ({st.equation[n]})",
+            str(st.cylinder[n]),
+            str(st.j[n]),
+            str(st.k[n]),
+            str(st.branch[n]),
+            f"{st.i[n]},{st.p[n]},{st.r[n]},{st.s[n]}",
+            _g(st.shell_omega_bar[n] * st.omega_1 / (2 * np.pi)),
+        )
+    console.print(table)

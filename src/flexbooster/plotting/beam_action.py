@@ -1,0 +1,60 @@
+"""Instability chart of the beam-action system in the (Omega, gamma) plane (memo 4.1, ref. 11)."""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.axes import Axes
+from matplotlib.colors import LogNorm
+from matplotlib.figure import Figure
+
+from ..beam_action import StabilityChart
+
+__all__ = ["plot_stability_chart"]
+
+
+def _axes(ax: Axes | None, figsize: tuple[float, float]) -> tuple[Figure, Axes]:
+    if ax is None:
+        fig = Figure(figsize=figsize, layout="constrained")
+        return fig, fig.add_subplot()
+    return ax.figure, ax
+
+
+def plot_stability_chart(chart: StabilityChart, normalised: bool = True,
+                         ax: Axes | None = None) -> Figure:
+    """Shade the instability regions of the beam-action system (gamma against Omega).
+
+    Parameters
+    ----------
+    chart : StabilityChart
+        Result of :func:`flexbooster.beam_action.stability_chart`.
+    normalised : bool
+        Plot Omega / omega_1 (True) or Omega in rad/s (False) on the horizontal axis.
+    ax : matplotlib.axes.Axes, optional
+        Axes to draw on; a new figure is made when None.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure: unstable points coloured by the growth rate max |Im alpha| Omega (1/s,
+        logarithmic scale), stable points blank.
+
+    References
+    ----------
+    Bolotin (1964), ch. 3 (instability regions); Tech Memo 104, section 4.1.
+    """
+    fig, ax = _axes(ax, (6.4, 4.8))
+    x = chart.Omega / chart.omega_1 if normalised else chart.Omega
+    growth = np.where(chart.stable, np.nan, chart.growth_rate)
+    finite = growth[np.isfinite(growth)]
+    if finite.size:
+        lo = max(float(finite.min()), 1e-12)
+        hi = max(float(finite.max()), lo * 10.0)
+        mesh = ax.pcolormesh(x, chart.gamma, np.ma.masked_invalid(growth), shading="nearest",
+                             norm=LogNorm(vmin=lo, vmax=hi), cmap="magma_r")
+        fig.colorbar(mesh, ax=ax, label="growth rate max |Im alpha| Omega (1/s)")
+    ax.set_xlabel("Omega / omega_1" if normalised else "Omega (rad/s)")
+    ax.set_ylabel("gamma (pulsation amplitude)")
+    ax.set_xlim(x.min(), x.max())
+    ax.set_ylim(chart.gamma.min(), chart.gamma.max())
+    ax.set_title("Beam action: instability regions (shaded)")
+    return fig

@@ -1,0 +1,72 @@
+"""Shell frequency curves: frequency against circumferential wave number k for each j."""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from ..shell import ShellFrequencies
+
+__all__ = ["frequency_curves"]
+
+
+def frequency_curves(
+    table: ShellFrequencies,
+    cylinder: int,
+    branch: int = 1,
+    unit: str = "hz",
+    ax=None,
+) -> Figure:
+    """The classic shell frequency curves of one cylinder: f(k), one line per j.
+
+    Parameters
+    ----------
+    table : ShellFrequencies
+        From :func:`flexbooster.shell.natural_frequencies`.
+    cylinder : int
+        1 (aft) or 2 (forward).
+    branch : int
+        Which root per (j, k) to draw (1 = lowest; for k = 0 the lowest of the two).
+    unit : {"hz", "rad_s", "omega_bar"}
+        Frequency axis: Hz, rad/s or units of omega_1.
+    ax : matplotlib.axes.Axes, optional
+        Where to draw; a new figure when None.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One line per axial index j >= 1 through the points (k, f) that the table holds
+        (modes without a real frequency, ``table.excluded``, leave gaps), log frequency axis.
+
+    Raises
+    ------
+    ValueError
+        For a cylinder, branch or unit outside the allowed values.
+    """
+    if cylinder not in (1, 2):
+        raise ValueError(f"cylinder = {cylinder!r}: must be 1 or 2")
+    if branch not in (1, 2, 3):
+        raise ValueError(f"branch = {branch!r}: must be 1, 2 or 3")
+    labels = {"hz": "frequency (Hz)", "rad_s": "frequency (rad/s)",
+              "omega_bar": "$\\bar\\omega$ (units of $\\omega_1$)"}
+    if unit not in labels:
+        raise ValueError(f"unit = {unit!r}: must be one of {tuple(labels)}")
+    if ax is None:
+        fig = Figure(figsize=(7.0, 5.0))
+        ax = fig.add_subplot()
+    else:
+        fig = ax.figure
+    values = getattr(table, unit)
+    sel = (table.cylinder == cylinder) & (table.branch == branch) & (table.j >= 1)
+    for j in np.unique(table.j[sel]):
+        rows = np.flatnonzero(sel & (table.j == j))
+        rows = rows[np.argsort(table.k[rows])]
+        ax.plot(table.k[rows], values[rows], marker="o", ms=2.5, lw=0.9, label=f"j = {j}")
+    ax.set_yscale("log")
+    ax.set_xlabel("circumferential wave number k")
+    ax.set_ylabel(labels[unit])
+    ax.set_title(f"cylinder {cylinder}, branch {branch} ({table.method})")
+    ax.grid(True, which="both", lw=0.3, alpha=0.5)
+    if np.unique(table.j[sel]).size <= 12:
+        ax.legend(fontsize="small", ncol=2)
+    return fig

@@ -1,0 +1,798 @@
+"""Natural frequencies of the shell modes of the two cylinders (memo 5.4, 6.2, appendix D).
+
+For each cylinder d (1 aft, 2 forward) the memo's modal equations give
+
+* omega_0k (5.4-4): j = 0, k >= 1, a uniform axial (u = cos k theta) mode, one frequency;
+* omega_j0^{1,2} (6.2-5..7, D-9, D-10): j >= 1, k = 0, the (U, W) system of 5.4-6;
+* omega_jk^{1,2,3} (6.2-15..17, D-14..D-16): j, k >= 1, the (U, V, W) system of 5.4-8.
+
+They are computed here as the eigenvalues of the generalized problems K x = omega_bar^2 M x
+(:meth:`~flexbooster.shell_coefficients.CylinderCoefficients.matrices_j0`, ``matrices_jk``),
+all (d, j, k) stacked into one array and solved by one batched call of ``numpy.linalg``; the
+memo's symmetric-function forms serve as tests.  Frequencies are dimensionless, in units of
+omega_1 (4.2-8b); rad/s = omega_bar omega_1 and Hz = rad/s / (2 pi).  Each is labelled axial,
+torsional (circumferential) or radial from the largest component of its eigenvector (U, V, W).
+
+Methods (where the coefficients come from):
+
+* ``"zero-phase"`` (default): the Galerkin integrals with the shape functions' argument 0 at
+  each cylinder's aft edge.  They equal Donnell's shear-diaphragm coefficients of each
+  cylinder alone (appendix D-II with L_d for L), so the composite frequencies are those of the
+  isolated cylinders; see ``docs/theory/shell.md`` for why this is the consistent default.
+* ``"galerkin"``: the Galerkin integrals of the printed phase (5.3-2/3, erratum E10) with the
+  memo's one-sided edge terms: appendix A with its errata corrected.
+* ``"memo"``: appendix A as printed (memo-literal), errata included.
+
+References
+----------
+.. [1] Tech Memo 104, sections 5.4, 6.2 and appendix D.
+.. [2] A. W. Leissa, *Vibration of Shells*, NASA SP-288, 1973, sec. 2.1-2.3 (Donnell-Mushtari
+   theory, shear-diaphragm edges: frequency determinant eq. 2.20 and its cubic, eqs. 2.21-2.22).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from .beam import first_bending_frequency
+from .shell_coefficients import (
+    CylinderCoefficients,
+    ShellParameters,
+    galerkin_coefficients,
+    memo_coefficients,
+    shell_parameters,
+)
+
+if TYPE_CHECKING:  # the numerical core never imports the pydantic case model
+    from .case import Case
+
+__all__ = [
+    "METHODS",
+    "MODE_TYPES",
+    "MAX_COUNT",
+    "ShellFrequencies",
+    "natural_frequencies",
+    "composite_frequencies",
+    "cylinder_coefficients",
+    "generalized_eigen",
+    "donnell_frequencies",
+    "donnell_cubic",
+    "donnell_reference",
+    "single_cylinder_symmetric_functions",
+    "single_cylinder_roots_j0",
+    "single_cylinder_matrix",
+    "single_cylinder_frequencies",
+    "symmetric_functions_j0",
+    "symmetric_functions_jk",
+    "memo_roots_j0",
+]
+
+#: Sources of the modal coefficients, see the module docstring.
+METHODS = ("zero-phase", "galerkin", "memo")
+#: Mode types, indexed by the dominant component U, V, W.
+MODE_TYPES = ("axial", "torsional", "radial")
+#: Largest mode count per index accepted by the public functions.
+MAX_COUNT = 500
+
+
+@dataclass(frozen=True)
+class ShellFrequencies:
+    """Table of shell natural frequencies, one row per (cylinder, j, k, branch).
+
+    Attributes
+    ----------
+    cylinder : ndarray of int
+        1 (aft) or 2 (forward).
+    j, k : ndarray of int
+        Axial and circumferential indices (j = 0 rows are omega_0k).
+    branch : ndarray of int
+        m = 1, 2, 3 in ascending frequency within (cylinder, j, k).
+    omega_bar : ndarray of float
+        Frequency in units of omega_1.
+    rad_s : ndarray of float
+        Circular frequency (rad/s).
+    hz : ndarray of float
+        Frequency (Hz).
+    mode_type : ndarray of str
+        ``"axial"``, ``"torsional"`` or ``"radial"``.
+    method : str
+        Source of the coefficients (:data:`METHODS`).
+    omega_1 : float
+        Reference frequency (rad/s).
+    excluded : dict of str to ndarray
+        Modes whose modal system has no real positive omega^2 (possible only for the
+        non-symmetric printed-phase systems, ``"galerkin"`` and ``"memo"``): parallel arrays
+        ``cylinder, j, k, branch, omega_sq_real, omega_sq_imag`` (omega_bar^2, units of
+        omega_1^2).  Empty for ``"zero-phase"``.
+    """
+
+    cylinder: np.ndarray
+    j: np.ndarray
+    k: np.ndarray
+    branch: np.ndarray
+    omega_bar: np.ndarray
+    rad_s: np.ndarray
+    hz: np.ndarray
+    mode_type: np.ndarray
+    method: str
+    omega_1: float
+    excluded: dict = field(default_factory=dict, repr=False)
+
+    def __len__(self) -> int:
+        return int(self.cylinder.size)
+
+    def to_dict(self) -> dict:
+        """JSON-ready mapping of parallel lists (plus ``method`` and ``omega_1``)."""
+        return {
+            "method": self.method,
+            "omega_1": float(self.omega_1),
+            "columns": ["cylinder", "j", "k", "branch", "omega_bar", "rad_s", "hz", "mode_type"],
+            "cylinder": self.cylinder.tolist(),
+            "j": self.j.tolist(),
+            "k": self.k.tolist(),
+            "branch": self.branch.tolist(),
+            "omega_bar": self.omega_bar.tolist(),
+            "rad_s": self.rad_s.tolist(),
+            "hz": self.hz.tolist(),
+            "mode_type": self.mode_type.tolist(),
+            "excluded": {key: np.asarray(val).tolist() for key, val in self.excluded.items()},
+        }
+
+    def to_rows(self) -> list[dict]:
+        """One dict per row (for CSV), keys as in :meth:`to_dict` ``columns``."""
+        cols = zip(self.cylinder.tolist(), self.j.tolist(), self.k.tolist(),
+                   self.branch.tolist(), self.omega_bar.tolist(), self.rad_s.tolist(),
+                   self.hz.tolist(), self.mode_type.tolist(), strict=True)
+        names = ("cylinder", "j", "k", "branch", "omega_bar", "rad_s", "hz", "mode_type")
+        return [dict(zip(names, row, strict=True)) for row in cols]
+
+    def select(self, cylinder: int | None = None, j: int | None = None,
+               k: int | None = None, branch: int | None = None) -> np.ndarray:
+        """Boolean mask of the rows that match the given indices (``None`` matches all)."""
+        mask = np.ones(len(self), dtype=bool)
+        for arr, val in ((self.cylinder, cylinder), (self.j, j), (self.k, k),
+                         (self.branch, branch)):
+            if val is not None:
+                mask &= arr == val
+        return mask
+
+
+def _check_count(name: str, value: int) -> int:
+    if isinstance(value, bool) or not isinstance(value, int | np.integer):
+        raise ValueError(f"{name} = {value!r}: must be an integer between 1 and {MAX_COUNT}")
+    if not 1 <= value <= MAX_COUNT:
+        raise ValueError(f"{name} = {value!r}: must be an integer between 1 and {MAX_COUNT}")
+    return int(value)
+
+
+def _check_method(method: str) -> None:
+    if method not in METHODS:
+        raise ValueError(f"method = {method!r}: must be one of {METHODS}")
+
+
+def generalized_eigen(
+    mass: np.ndarray, stiff: np.ndarray, symmetric: bool = False
+) -> tuple[np.ndarray, np.ndarray]:
+    """Batched eigenvalues omega^2 and eigenvectors of K x = omega^2 M x.
+
+    Parameters
+    ----------
+    mass, stiff : ndarray, shape (..., n, n)
+        Mass and stiffness matrices (dimensionless), M invertible.
+    symmetric : bool
+        If true, M is taken as its diagonal D (positive) and K as its symmetric part, and the
+        problem is solved as the symmetric D^-1/2 K D^-1/2 y = omega^2 y (``eigh``: real
+        eigenvalues by construction).  For the zero-phase systems, whose off-diagonal mass
+        terms are quadrature zeros (|.| < 1e-15) and whose K is symmetric.
+
+    Returns
+    -------
+    omega_sq : ndarray of complex, shape (..., n)
+        Eigenvalues of M^-1 K, ordered by ascending real part along the last axis.
+    vectors : ndarray of float, shape (..., n, n)
+        Moduli of the matching eigenvector components (columns), each column scaled to unit
+        maximum, for classifying the mode.
+
+    Notes
+    -----
+    One ``numpy.linalg.solve`` and one ``numpy.linalg.eig`` over the stacked systems
+    (memo 6.2-5 and 6.2-15: Delta(s) = det(M s^2 + K) = 0 at s^2 = -omega^2).  For the
+    symmetric zero-phase systems the eigenvalues are real and positive; the printed-phase
+    systems are not symmetric and may have complex or negative omega^2 (see
+    :func:`composite_frequencies`).
+    """
+    if symmetric:
+        dm = np.sqrt(np.diagonal(mass, axis1=-2, axis2=-1))
+        ks = 0.5 * (stiff + np.swapaxes(stiff, -1, -2))
+        lam, vec = np.linalg.eigh(ks / dm[..., :, None] / dm[..., None, :])
+        vec = vec / dm[..., :, None]  # x = D^-1/2 y
+        vec = np.abs(vec) / np.max(np.abs(vec), axis=-2, keepdims=True)
+        return lam.astype(complex), vec
+    a = np.linalg.solve(mass, stiff)  # M^-1 K, batched
+    lam, vec = np.linalg.eig(a)
+    order = np.argsort(lam.real, axis=-1, kind="stable")
+    lam = np.take_along_axis(lam, order, axis=-1)
+    vec = np.abs(np.take_along_axis(vec, order[..., None, :], axis=-1))
+    vec = vec / np.max(vec, axis=-2, keepdims=True)
+    return lam.astype(complex), vec
+
+
+def _real_positive(omega_sq: np.ndarray) -> np.ndarray:
+    """Mask of eigenvalues that are real (|Im| <= 1e-9 max |lambda|) and positive."""
+    scale = np.max(np.abs(omega_sq), axis=-1, keepdims=True)
+    return (np.abs(omega_sq.imag) <= 1e-9 * scale) & (omega_sq.real > 0.0) & np.isfinite(
+        omega_sq.real)
+
+
+def cylinder_coefficients(p: ShellParameters, d: int, M: int, N: int,
+                          method: str = "zero-phase") -> CylinderCoefficients:
+    """Coefficients of cylinder ``d`` for a frequency ``method``.
+
+    Parameters
+    ----------
+    p : ShellParameters
+    d : int
+        Cylinder, 1 or 2.
+    M, N : int
+        Largest j and k.
+    method : {"zero-phase", "galerkin", "memo"}
+
+    Returns
+    -------
+    CylinderCoefficients
+
+    References
+    ----------
+    Tech Memo 104, appendix A; :mod:`flexbooster.shell_coefficients`.
+    """
+    _check_method(method)
+    if method == "memo":
+        return memo_coefficients(p, d, M, N)
+    phase = "zero" if method == "zero-phase" else "printed"
+    return galerkin_coefficients(p, d, M, N, phase=phase, delta="one-sided")
+
+
+def composite_frequencies(
+    R1: float, L1: float, R2: float, L2: float, h: float, E: float, nu: float, rho: float,
+    omega_1: float, M1: int, N1: int, M2: int, N2: int, method: str = "zero-phase",
+) -> ShellFrequencies:
+    """Shell natural frequencies of both cylinders from primitive arguments.
+
+    Parameters
+    ----------
+    R1, R2 : float
+        Radii of cylinder 1 (aft) and 2 (forward) (m).
+    L1, L2 : float
+        Half-lengths (m).
+    h : float
+        Thickness (m).
+    E : float
+        Young's modulus (Pa).
+    nu : float
+        Poisson's ratio.
+    rho : float
+        Density (kg/m^3).
+    omega_1 : float
+        Reference frequency (rad/s), memo 4.2-8b.
+    M1, N1, M2, N2 : int
+        Largest j and k of cylinder 1 and 2, 1..500.
+    method : {"zero-phase", "galerkin", "memo"}
+        Source of the modal coefficients (module docstring).
+
+    Returns
+    -------
+    ShellFrequencies
+        Rows ordered by cylinder, then omega_0k (k = 1..N), omega_j0 (j = 1..M, 2 branches),
+        omega_jk (j-major, 3 branches).
+
+    Raises
+    ------
+    ValueError
+        Bad parameter (the message names it).
+
+    Notes
+    -----
+    omega_0k^2 = lambda_d^2 k^2 / (2 (1 + nu) mu) (5.4-4) is the 1x1 case K/M.  The 2x2 and
+    3x3 problems of all (d, j, k) are solved in one batched call (:func:`generalized_eigen`).
+    A mode whose omega^2 is complex or not positive (the printed-phase systems are not
+    symmetric) has no natural frequency: it goes to ``excluded``, never into the table.
+
+    References
+    ----------
+    Tech Memo 104, eqs. (5.4-4), (6.2-5)..(6.2-7), (6.2-15)..(6.2-17), (D-9)..(D-20).
+    """
+    counts = [_check_count(n, v) for n, v in (("M1", M1), ("N1", N1), ("M2", M2), ("N2", N2))]
+    _check_method(method)
+    p = shell_parameters(R1, L1, R2, L2, h, E, nu, rho, omega_1)
+    blocks = []
+    m2, k2, m3, k3 = [], [], [], []
+    for d, (M, N) in ((1, counts[:2]), (2, counts[2:])):
+        coef = cylinder_coefficients(p, d, M, N, method)
+        a, b = coef.matrices_j0()
+        m2.append(a)
+        k2.append(b)
+        a, b = coef.matrices_jk()
+        m3.append(a.reshape(-1, 3, 3))
+        k3.append(b.reshape(-1, 3, 3))
+        blocks.append((d, M, N))
+    sym = method == "zero-phase"
+    w2, v2 = generalized_eigen(np.concatenate(m2), np.concatenate(k2), sym)
+    w3, v3 = generalized_eigen(np.concatenate(m3), np.concatenate(k3), sym)
+    type2 = np.array([0, 2])[np.argmax(v2, axis=-2)]  # (U, W) -> axial, radial
+    type3 = np.argmax(v3, axis=-2)  # (U, V, W) -> axial, torsional, radial
+    ok2 = _real_positive(w2)
+    ok3 = _real_positive(w3)
+
+    cyl, jj, kk, br, om2, typ, ok = [], [], [], [], [], [], []
+    o2 = o3 = 0
+    for d, M, N in blocks:
+        lam = p.lam(d)
+        k = np.arange(1, N + 1)
+        cyl.append(np.full(N, d))
+        jj.append(np.zeros(N, int))
+        kk.append(k)
+        br.append(np.ones(N, int))
+        om2.append((lam**2 * k**2 / (2.0 * (1.0 + p.nu) * p.mu)).astype(complex))  # (5.4-4)
+        typ.append(np.zeros(N, int))
+        ok.append(np.ones(N, bool))
+        j = np.arange(1, M + 1)
+        cyl.append(np.full(2 * M, d))
+        jj.append(np.repeat(j, 2))
+        kk.append(np.zeros(2 * M, int))
+        br.append(np.tile([1, 2], M))
+        om2.append(w2[o2:o2 + M].ravel())
+        typ.append(type2[o2:o2 + M].ravel())
+        ok.append(ok2[o2:o2 + M].ravel())
+        o2 += M
+        jg, kg = np.meshgrid(j, k, indexing="ij")
+        cyl.append(np.full(3 * M * N, d))
+        jj.append(np.repeat(jg.ravel(), 3))
+        kk.append(np.repeat(kg.ravel(), 3))
+        br.append(np.tile([1, 2, 3], M * N))
+        om2.append(w3[o3:o3 + M * N].ravel())
+        typ.append(type3[o3:o3 + M * N].ravel())
+        ok.append(ok3[o3:o3 + M * N].ravel())
+        o3 += M * N
+    cyl_a, j_a, k_a, br_a = (np.concatenate(x).astype(int) for x in (cyl, jj, kk, br))
+    om2_a, typ_a, ok_a = np.concatenate(om2), np.concatenate(typ), np.concatenate(ok)
+    omega_bar = np.sqrt(om2_a.real[ok_a])
+    rad_s = omega_bar * p.omega_1
+    bad = ~ok_a
+    return ShellFrequencies(
+        cylinder=cyl_a[ok_a],
+        j=j_a[ok_a],
+        k=k_a[ok_a],
+        branch=br_a[ok_a],
+        omega_bar=omega_bar,
+        rad_s=rad_s,
+        hz=rad_s / (2.0 * np.pi),
+        mode_type=np.asarray(MODE_TYPES)[typ_a[ok_a]],
+        method=method,
+        omega_1=float(p.omega_1),
+        excluded={"cylinder": cyl_a[bad], "j": j_a[bad], "k": k_a[bad], "branch": br_a[bad],
+                  "omega_sq_real": om2_a.real[bad], "omega_sq_imag": om2_a.imag[bad]},
+    )
+
+
+def natural_frequencies(case: Case, method: str = "zero-phase") -> ShellFrequencies:
+    """Shell natural frequencies of the case's two cylinders (the issue's API).
+
+    Parameters
+    ----------
+    case : Case-like
+        Any object with the attributes of :class:`flexbooster.case.Case`:
+        ``booster.cylinder1.radius``/``.half_length`` (m), ``booster.cylinder2``,
+        ``booster.thickness`` (m), ``booster.E`` (Pa), ``booster.nu``, ``booster.rho``
+        (kg/m^3), ``truncation.M1, N1, M2, N2``.
+    method : {"zero-phase", "galerkin", "memo"}
+        Source of the modal coefficients; ``"zero-phase"`` is the pipeline default.
+
+    Returns
+    -------
+    ShellFrequencies
+
+    Notes
+    -----
+    omega_1 = first free-free bending frequency of the equivalent beam (4.2-8b), from
+    :func:`flexbooster.beam.first_bending_frequency` with L = L1 + L2 and R1.
+
+    References
+    ----------
+    Tech Memo 104, sections 5.4, 6.2, appendix D.
+    """
+    b = case.booster
+    t = case.truncation
+    R1, L1 = b.cylinder1.radius, b.cylinder1.half_length
+    R2, L2 = b.cylinder2.radius, b.cylinder2.half_length
+    omega_1 = first_bending_frequency(L1 + L2, R1, b.E, b.rho)  # eq. (4.2-8b)
+    return composite_frequencies(R1, L1, R2, L2, b.thickness, b.E, b.nu, b.rho, omega_1,
+                                 t.M1, t.N1, t.M2, t.N2, method)
+
+
+# --------------------------------------------------------------------------------------------
+# Single cylinder: appendix D-II and Donnell's determinant (Leissa)
+# --------------------------------------------------------------------------------------------
+
+
+def single_cylinder_matrix(lam: float, sigma: float, mu: float, nu: float,
+                           j: np.ndarray, k: np.ndarray) -> np.ndarray:
+    """Matrix C^{jk} of appendix D-II (single cylinder, Donnell, memo units).
+
+    Parameters
+    ----------
+    lam : float
+        lambda = L / R (L the cylinder's half-length).
+    sigma : float
+        sigma = h / L.
+    mu : float
+        mu = rho L^2 omega_1^2 / E.
+    nu : float
+        Poisson's ratio.
+    j, k : array_like of int
+        Axial half-wave index (j >= 1: j half-waves over 2L) and circumferential wave number.
+
+    Returns
+    -------
+    ndarray, shape broadcast(j, k) + (3, 3)
+        Symmetric C with omega_bar^2 its eigenvalues (D-1..D-8); unknowns (U, V, W).
+
+    Notes
+    -----
+    With alpha = j pi / 2 and g = 1 / ((1 - nu^2) mu), from 3.0-2 and u = cos(alpha (xi+1)),
+    v, w = sin(alpha (xi+1)) (shear diaphragm):
+    C11 = g [alpha^2 + (1-nu)/2 lam^2 k^2], C12 = -g (1+nu)/2 lam k alpha,
+    C13 = g nu lam alpha, C22 = g [(1-nu)/2 alpha^2 + lam^2 k^2], C23 = -g lam^2 k,
+    C33 = g [lam^2 + sigma^2/12 (alpha^2 + lam^2 k^2)^2].  For k = 0 the (U, W) block gives
+    D-4 and D-5 (C11 + C22 -> C11 + C33 there).  The memo cites p. 60-62 of its ref. 3 for
+    these; the entries are derived here from 3.0-2.
+
+    References
+    ----------
+    Tech Memo 104, appendix D-II, eqs. (D-1)..(D-8), (3.0-2).
+    """
+    j, k = np.broadcast_arrays(np.asarray(j), np.asarray(k))  # object arrays (mpmath) pass
+    al = j * np.pi / 2.0
+    g = 1.0 / ((1.0 - nu**2) * mu)
+    c11 = g * (al**2 + (1 - nu) / 2 * lam**2 * k**2)
+    c12 = -g * (1 + nu) / 2 * lam * k * al
+    c13 = g * nu * lam * al
+    c22 = g * ((1 - nu) / 2 * al**2 + lam**2 * k**2)
+    c23 = -g * lam**2 * k
+    c33 = g * (lam**2 + sigma**2 / 12 * (al**2 + lam**2 * k**2) ** 2)
+    return np.stack([np.stack([c11, c12, c13], -1), np.stack([c12, c22, c23], -1),
+                     np.stack([c13, c23, c33], -1)], -2)
+
+
+def single_cylinder_frequencies(lam: float, sigma: float, mu: float, nu: float,
+                                j: np.ndarray, k: np.ndarray) -> np.ndarray:
+    """omega_bar of the single cylinder (appendix D-II), ascending, shape (..., 3).
+
+    Parameters
+    ----------
+    lam, sigma, mu, nu : float
+        As in :func:`single_cylinder_matrix`.
+    j, k : array_like of int
+        Indices, j >= 1.
+
+    Returns
+    -------
+    ndarray
+        Square roots of the eigenvalues of C^{jk} (for k = 0 the middle one is the
+        torsional root (1 - nu)/2 alpha^2 g, uncoupled and absent from the memo's D-II-1).
+
+    References
+    ----------
+    Tech Memo 104, eqs. (D-1)..(D-8).
+    """
+    c = single_cylinder_matrix(lam, sigma, mu, nu, j, k)
+    return np.sqrt(np.linalg.eigvalsh(c))  # D-6..D-8: symmetric functions of these
+
+
+def single_cylinder_symmetric_functions(c: np.ndarray) -> tuple:
+    """Right-hand sides of (D-6), (D-7), (D-8) from the matrix C^{jk}, as printed.
+
+    Parameters
+    ----------
+    c : ndarray, shape (..., 3, 3)
+        :func:`single_cylinder_matrix` (float, or object arrays of mpmath numbers).
+
+    Returns
+    -------
+    s1, s2, s3 : ndarray
+        Sum, pairwise-product sum and product of the three omega_bar^2.
+
+    References
+    ----------
+    Tech Memo 104, eqs. (D-6)..(D-8).
+    """
+    C = {(r + 1, q + 1): c[..., r, q] for r in range(3) for q in range(3)}
+    s1 = C[1, 1] + C[2, 2] + C[3, 3]  # (D-6)
+    s2 = ((C[2, 2] * C[3, 3] - C[3, 2] * C[2, 3]) + (C[1, 1] * C[3, 3] - C[3, 1] * C[1, 3])
+          + (C[1, 1] * C[2, 2] - C[2, 1] * C[1, 2]))  # (D-7)
+    s3 = (C[1, 1] * C[2, 2] * C[3, 3] + C[2, 1] * C[3, 2] * C[1, 3] + C[3, 1] * C[1, 2] * C[2, 3]
+          - C[3, 1] * C[2, 2] * C[1, 3] - C[2, 1] * C[1, 2] * C[3, 3]
+          - C[1, 1] * C[3, 2] * C[2, 3])  # (D-8)
+    return s1, s2, s3
+
+
+def single_cylinder_roots_j0(lam: float, sigma: float, mu: float, nu: float,
+                             j: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(omega_j0^1)^2 and (omega_j0^2)^2 of the single cylinder, closed form (D-1)..(D-5).
+
+    Parameters
+    ----------
+    lam, sigma, mu, nu : float
+        As in :func:`single_cylinder_matrix`.
+    j : array_like of int
+        Axial index, >= 1.
+
+    Returns
+    -------
+    lower, upper : ndarray
+        Squared dimensionless frequencies.
+
+    References
+    ----------
+    Tech Memo 104, eqs. (D-1)..(D-5).
+    """
+    j = np.asarray(j)
+    a = 1.0  # (D-3)
+    c11 = j**2 * np.pi**2 / (4 * (1 - nu**2) * mu)
+    c22 = (192 * lam**2 + j**4 * np.pi**4 * sigma**2) / (192 * (1 - nu**2) * mu)
+    b = c11 + c22  # (D-4)
+    c = c11 * c22 - (nu * lam * j * np.pi / (2 * (1 - nu**2) * mu)) ** 2  # (D-5)
+    root = np.sqrt(b**2 - 4 * a * c) / (2 * a)
+    return b / (2 * a) - root, b / (2 * a) + root  # (D-1), (D-2)
+
+
+def symmetric_functions_j0(mass: np.ndarray, stiff: np.ndarray) -> tuple:
+    """(a), (b), (c) of eq. (6.2-7) / (D-11..D-13) from 2x2 mass and stiffness matrices.
+
+    Parameters
+    ----------
+    mass, stiff : ndarray, shape (..., 2, 2)
+        M = [[a, b], [0, j]], K = [[c, d], [h, k]] (coefficient names of 5.4-6).
+
+    Returns
+    -------
+    a, b, c : ndarray
+        Delta(s) = a s^4 + b s^2 + c (6.2-5), so omega^2 sum b/a and product c/a.
+
+    References
+    ----------
+    Tech Memo 104, eqs. (6.2-7), (D-11)..(D-13).
+    """
+    a_, b_, j_ = mass[..., 0, 0], mass[..., 0, 1], mass[..., 1, 1]
+    c_, d_, h_, k_ = stiff[..., 0, 0], stiff[..., 0, 1], stiff[..., 1, 0], stiff[..., 1, 1]
+    return (a_ * j_,  # (6.2-7a)
+            c_ * j_ + a_ * k_ - h_ * b_,  # (6.2-7b)
+            c_ * k_ - h_ * d_)  # (6.2-7c)
+
+
+def symmetric_functions_jk(mass: np.ndarray, stiff: np.ndarray) -> tuple:
+    """(A), (B), (C), (D) of eq. (6.2-17) / (D-17..D-20) from 3x3 mass and stiffness.
+
+    Parameters
+    ----------
+    mass, stiff : ndarray, shape (..., 3, 3)
+        M = [[a, b, c], [0, h, 0], [0, 0, n]], K = [[d, e, f], [g, j, k], [l, m, p]].
+
+    Returns
+    -------
+    A, B, C, D : ndarray
+        Sum, pairwise sum and product of omega^2 are B/A, C/A, D/A (6.2-16).
+
+    References
+    ----------
+    Tech Memo 104, eqs. (6.2-16), (6.2-17) ("(i_jk)" in 6.2-17d read as (j_jk)).
+    """
+    a, b, c, h, n = (mass[..., 0, 0], mass[..., 0, 1], mass[..., 0, 2], mass[..., 1, 1],
+                     mass[..., 2, 2])
+    d, e, f = stiff[..., 0, 0], stiff[..., 0, 1], stiff[..., 0, 2]
+    g, j, k = stiff[..., 1, 0], stiff[..., 1, 1], stiff[..., 1, 2]
+    l, m, p = stiff[..., 2, 0], stiff[..., 2, 1], stiff[..., 2, 2]  # noqa: E741
+    A = a * h * n  # (6.2-17a)
+    B = a * j * n + a * h * p + d * h * n - l * h * c - g * b * n  # (6.2-17b)
+    C = (a * j * p + d * j * n + d * h * p + g * m * c + k * l * b - k * m * a
+         - l * j * c - l * f * h - g * e * n - g * b * p)  # (6.2-17c)
+    D = d * j * p + g * m * f + k * l * e - k * m * d - l * j * f - g * e * p  # (6.2-17d)
+    return A, B, C, D
+
+
+def memo_roots_j0(a: np.ndarray, b: np.ndarray, c: np.ndarray,
+                  form: str = "D-9") -> tuple[np.ndarray, np.ndarray]:
+    """The two k = 0 roots from (a), (b), (c): D-9/D-10 or 6.2-6 as printed.
+
+    Parameters
+    ----------
+    a, b, c : ndarray
+        Coefficients of 6.2-7.
+    form : {"D-9", "6.2-6"}
+        ``"D-9"``: omega^2 = b/(2a) -+ sqrt(b^2 - 4ac)/(2a) (D-9, D-10; returns omega^2);
+        ``"6.2-6"``: the printed b/(2a) -+ sqrt(b^2 - 4ac) (erratum E6; what it calls omega).
+
+    Returns
+    -------
+    lower, upper : ndarray
+
+    References
+    ----------
+    Tech Memo 104, eqs. (6.2-6), (D-9), (D-10); reading guide erratum E6.
+    """
+    if form == "D-9":
+        root = np.sqrt(b**2 - 4 * a * c) / (2 * a)  # (D-9), (D-10)
+    elif form == "6.2-6":
+        root = np.sqrt(b**2 - 4 * a * c)  # (6.2-6) as printed
+    else:
+        raise ValueError(f"form = {form!r}: must be 'D-9' or '6.2-6'")
+    return b / (2 * a) - root, b / (2 * a) + root
+
+
+def donnell_cubic(lam_l: np.ndarray, n: np.ndarray, k: float, nu: float) -> tuple:
+    """Coefficients of Donnell's frequency cubic (Leissa, NASA SP-288, eqs. 2.21-2.22).
+
+    Parameters
+    ----------
+    lam_l : array_like
+        lambda = m pi R / length.
+    n : array_like
+        Circumferential wave number.
+    k : float
+        h^2 / (12 R^2).
+    nu : float
+        Poisson's ratio.
+
+    Returns
+    -------
+    K2, K1, K0 : ndarray
+        Delta^3 + K2 Delta^2 + K1 Delta + K0 = 0, Delta = rho (1 - nu^2) R^2 omega^2 / E.
+        Plain arithmetic only, so mpmath numbers pass through.
+
+    References
+    ----------
+    A. W. Leissa, *Vibration of Shells*, NASA SP-288, 1973, eqs. (2.20)-(2.22).
+    """
+    s = lam_l**2 + n**2
+    K2 = -(1.0 + 0.5 * (3.0 - nu) * s + k * s**2)
+    K1 = 0.5 * (1.0 - nu) * ((3.0 + 2.0 * nu) * lam_l**2 + n**2 + s**2
+                             + (3.0 - nu) / (1.0 - nu) * k * s**3)
+    K0 = -0.5 * (1.0 - nu) * ((1.0 - nu**2) * lam_l**4 + k * s**4)
+    return K2, K1, K0
+
+
+def donnell_frequencies(
+    length: float, radius: float, thickness: float, E: float, nu: float, rho: float,
+    m: int | np.ndarray, n: int | np.ndarray,
+) -> np.ndarray:
+    """Donnell's shear-diaphragm frequencies of a single cylinder, in Hz.
+
+    Parameters
+    ----------
+    length : float
+        Total length of the cylinder (m), > 0 (2 L_d for cylinder d).
+    radius : float
+        Mid-surface radius R (m), > 0.
+    thickness : float
+        Wall thickness h (m), 0 < h < R.
+    E : float
+        Young's modulus (Pa), > 0.
+    nu : float
+        Poisson's ratio, 0 <= nu < 0.5.
+    rho : float
+        Density (kg/m^3), > 0.
+    m : array_like of int
+        Axial half-waves, >= 1.
+    n : array_like of int
+        Circumferential waves, >= 0.
+
+    Returns
+    -------
+    ndarray, shape broadcast(m, n) + (3,)
+        The three frequencies (Hz), ascending.
+
+    Notes
+    -----
+    With lambda = m pi R / length, k = h^2 / (12 R^2) and the frequency parameter
+    Delta = rho (1 - nu^2) R^2 omega^2 / E, Donnell's frequency determinant (Leissa eq. 2.20)
+    expands to the cubic Delta^3 + K2 Delta^2 + K1 Delta + K0 = 0 with (Leissa 2.21-2.22)
+
+    K2 = -[1 + (3 - nu)(n^2 + lambda^2)/2 + k (n^2 + lambda^2)^2],
+    K1 = (1 - nu)/2 [(3 + 2 nu) lambda^2 + n^2 + (n^2 + lambda^2)^2
+         + (3 - nu)/(1 - nu) k (n^2 + lambda^2)^3],
+    K0 = -(1 - nu)/2 [(1 - nu^2) lambda^4 + k (n^2 + lambda^2)^4].
+
+    The largest root comes from the trigonometric (Viete) formula, polished by Newton steps;
+    the other two from Vieta's relations (product -K0/Delta_3, sum (K1 - product)/Delta_3)
+    and the stable quadratic formula, so the small (bending, torsional, axial) roots keep
+    full relative precision even when they are 1e-8 of the largest.
+
+    References
+    ----------
+    A. W. Leissa, *Vibration of Shells*, NASA SP-288, 1973, eqs. (2.20)-(2.22).
+    """
+    for name, value in (("length", length), ("radius", radius), ("thickness", thickness),
+                        ("E", E), ("rho", rho)):
+        if not (np.isfinite(value) and value > 0.0):
+            raise ValueError(f"{name} = {value!r}: must be a finite positive number")
+    if not thickness < radius:
+        raise ValueError(f"thickness = {thickness!r}: must be smaller than radius = {radius!r}")
+    if not (np.isfinite(nu) and 0.0 <= nu < 0.5):
+        raise ValueError(f"nu = {nu!r}: must satisfy 0 <= nu < 0.5")
+    m_arr, n_arr = np.broadcast_arrays(np.asarray(m), np.asarray(n))
+    if m_arr.size and (np.any(m_arr < 1) or np.any(m_arr != np.round(m_arr))):
+        raise ValueError(f"m = {m!r}: must be integers >= 1 (axial half-waves)")
+    if n_arr.size and (np.any(n_arr < 0) or np.any(n_arr != np.round(n_arr))):
+        raise ValueError(f"n = {n!r}: must be integers >= 0 (circumferential waves)")
+    lam_l = m_arr.astype(float) * np.pi * radius / length
+    nn = n_arr.astype(float)
+    kk = thickness**2 / (12.0 * radius**2)
+    K2, K1, K0 = donnell_cubic(lam_l, nn, kk, nu)
+    # Largest root by Viete (Delta = t - K2/3, t^3 + P t + Q = 0, three real roots), which
+    # the trigonometric form gives to full relative precision; then Newton-polished.
+    P = K1 - K2**2 / 3.0
+    Q = 2.0 * K2**3 / 27.0 - K2 * K1 / 3.0 + K0
+    r = np.sqrt(np.maximum(-P / 3.0, 0.0))
+    arg = np.clip(-Q / (2.0 * np.where(r > 0, r, 1.0) ** 3), -1.0, 1.0)
+    big = 2.0 * r * np.cos(np.arccos(arg) / 3.0) - K2 / 3.0
+    for _ in range(2):
+        val = ((big + K2) * big + K1) * big + K0
+        der = (3.0 * big + 2.0 * K2) * big + K1
+        big = big - np.where(der > 0.0, val / np.where(der > 0.0, der, 1.0), 0.0)
+    # The other two from Vieta without cancellation: product -K0/big, sum (K1 - product)/big,
+    # then the stable quadratic formula (smaller root = product / larger root).
+    prod = -K0 / big
+    summ = (K1 - prod) / big
+    mid = 0.5 * (summ + np.sqrt(np.maximum(summ**2 - 4.0 * prod, 0.0)))
+    low = np.where(mid > 0.0, prod / np.where(mid > 0.0, mid, 1.0), 0.0)
+    roots = np.stack([low, mid, big], -1)
+    roots = np.maximum(roots, 0.0)
+    omega = np.sqrt(roots * E / (rho * (1.0 - nu**2) * radius**2))
+    return np.sort(omega, axis=-1) / (2.0 * np.pi)
+
+
+def donnell_reference(table: ShellFrequencies, R1: float, L1: float, R2: float, L2: float,
+                      h: float, E: float, nu: float, rho: float) -> np.ndarray:
+    """Isolated-cylinder frequencies (Hz) matching each row of a composite table.
+
+    Parameters
+    ----------
+    table : ShellFrequencies
+        Composite frequencies (any method).
+    R1, L1, R2, L2 : float
+        Radii and half-lengths (m).
+    h, E, nu, rho : float
+        Thickness (m), modulus (Pa), Poisson's ratio, density (kg/m^3).
+
+    Returns
+    -------
+    ndarray
+        For j >= 1 rows Donnell's shear-diaphragm frequency of cylinder d alone (length
+        2 L_d, m = j, n = k, :func:`donnell_frequencies`), branch-th of the roots that the
+        memo's system carries (for k = 0 the uncoupled torsional root is left out); for
+        j = 0 rows the uniform axial mode of the cylinder alone,
+        omega^2 = E k^2 / (2 (1 + nu) rho R_d^2) (5.4-4 in physical units).
+
+    References
+    ----------
+    Leissa, NASA SP-288, eqs. (2.20)-(2.22); Tech Memo 104, eq. (5.4-4).
+    """
+    out = np.empty(len(table))
+    for d, R, Ld in ((1, R1, L1), (2, R2, L2)):
+        sel = table.cylinder == d
+        j, k, br = table.j[sel], table.k[sel], table.branch[sel]
+        res = np.sqrt(E * k**2 / (2.0 * (1.0 + nu) * rho * R**2)) / (2.0 * np.pi)
+        pos = j >= 1
+        f3 = donnell_frequencies(2.0 * Ld, R, h, E, nu, rho, j[pos], k[pos])
+        lam_l = j[pos] * np.pi * R / (2.0 * Ld)
+        f_tors = np.sqrt((1.0 - nu) / 2.0 * lam_l**2 * E
+                         / (rho * (1.0 - nu**2) * R**2)) / (2.0 * np.pi)
+        drop = np.argmin(np.abs(f3 - f_tors[:, None]), axis=-1)  # torsional root (k = 0)
+        idx = np.arange(3)[None, :]
+        keep = np.where(k[pos, None] == 0, idx + (idx >= drop[:, None]), idx)
+        pick = np.take_along_axis(f3, np.minimum(keep, 2), axis=-1)
+        res[pos] = pick[np.arange(pick.shape[0]), br[pos] - 1]
+        out[sel] = res
+    return out

@@ -1,0 +1,380 @@
+"""Tests of flexbooster.pitch: Mathieu parameters, characteristic exponent, psi(tau).
+
+Tiers: exact limits (q = 0, symmetry), literature values (scipy/A&S characteristic values,
+an independent 50-digit mpmath Taylor-series monodromy), invariants and methods agreeing
+(Floquet vs Hill, O(q^4) of the corrected memo formula, O(q^2) of the three-term psi, growth
+rate against direct integration).
+"""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+from scipy import integrate, special
+
+from flexbooster import pitch
+
+mpmath = pytest.importorskip("mpmath")
+
+
+# --------------------------------------------------------------------------------------------
+# Independent references
+# --------------------------------------------------------------------------------------------
+
+
+def mp_discriminant(a: float, q: float, dps: int = 50) -> float:
+    """y1(pi) for y'' + (a - 2q cos 2t) y = 0, y(0) = 1, y'(0) = 0: Taylor series about 0.
+
+    c_(k+2) (k+2)(k+1) = -a c_k + 2q sum_m (-4)^m / (2m)! c_(k-2m), summed at t = pi with
+    mpmath at ``dps`` digits until the terms fall below 10^-(dps-5) (entire function).
+    """
+    with mpmath.workdps(dps):
+        a_, q_ = mpmath.mpf(a), mpmath.mpf(q)
+        cosc = []  # Taylor coefficients of cos 2t (even powers only)
+        c = [mpmath.mpf(1), mpmath.mpf(0)]
+        t = mpmath.pi
+        total = c[0]
+        tk = mpmath.mpf(1)
+        k = 0
+        small = mpmath.mpf(10) ** (-(dps - 5))
+        quiet = 0
+        while quiet < 8:
+            m_max = k // 2
+            while len(cosc) <= m_max:
+                m = len(cosc)
+                cosc.append((-4) ** m / mpmath.factorial(2 * m))
+            conv = mpmath.fsum(cosc[m] * c[k - 2 * m] for m in range(m_max + 1))
+            c.append((-a_ * c[k] + 2 * q_ * conv) / ((k + 2) * (k + 1)))
+            k += 1
+            tk *= t
+            term = c[k] * tk
+            total += term
+            quiet = quiet + 1 if abs(term) < small * max(1, abs(total)) else 0
+        return float(total)
+
+
+def scipy_count(a: float, q: float) -> int:
+    """Number of characteristic values a_0, b_1, a_1, b_2, ... below a (scipy.special)."""
+    n = 0
+    for r in range(0, 30):
+        n += int(special.mathieu_a(r, q) < a)
+        if r >= 1:
+            n += int(special.mathieu_b(r, q) < a)
+    return n
+
+
+def reference_beta(a: float, q: float) -> complex:
+    """beta from the mpmath discriminant and the scipy band index (stable band r: count 2r+1)."""
+    D = mp_discriminant(a, q)
+    count = scipy_count(a, q)
+    if abs(D) <= 1.0:
+        r = (count - 1) // 2
+        return complex(r + np.arccos((-1) ** r * D) / np.pi)
+    return complex(count // 2, np.arccosh(abs(D)) / np.pi)
+
+
+# (a, q): memo range, first-tongue interior, a < a_0, higher tongues and stable bands.
+EXPONENT_POINTS = [
+    (0.2, 0.01),
+    (0.5, 0.03),
+    (0.9, 0.05),
+    (0.99, 0.05),
+    (1.0, 0.05),
+    (1.04, 0.05),
+    (0.1, 0.5),
+    (0.5, 1.0),
+    (2.0, 0.5),
+    (3.0, 1.0),
+    (4.1, 2.0),
+    (-0.2, 0.1),
+    (-1.0, 1.0),
+    (6.0, 2.0),
+    (9.2, 3.0),
+    (10.0, 5.0),
+    (16.2, 4.0),
+    (20.0, 5.0),
+    (25.0, 3.0),
+    (2.5, 7.0),
+    (40.0, 20.0),
+    (0.7, 0.0),
+    (-0.3, 0.0),
+]
+
+
+@pytest.fixture(scope="module")
+def references():
+    return {pt: (mp_discriminant(*pt), reference_beta(*pt)) for pt in EXPONENT_POINTS}
+
+
+# --------------------------------------------------------------------------------------------
+# Tier 1: exact limits
+# --------------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("method", ["floquet", "hill"])
+def test_q_zero_gives_sqrt_a(method):
+    # q = 0: psi'' + a psi = 0, beta = sqrt(a) exactly (a > 0), i sqrt(-a) for a < 0.
+    a = np.array([0.01, 0.3, 0.81, 1.7, 3.9, 8.5, 15.0, 24.2])
+    beta = pitch.characteristic_exponent(a, 0.0, method)
+    np.testing.assert_allclose(beta.real, np.sqrt(a), rtol=0, atol=1e-11)
+    assert np.all(beta.imag == 0)
+    neg = pitch.characteristic_exponent(np.array([-0.5, -2.0]), 0.0, method)
+    np.testing.assert_allclose(neg.imag, np.sqrt([0.5, 2.0]), rtol=1e-11)
+    np.testing.assert_allclose(neg.real, 0.0, atol=0)
+
+
+@pytest.mark.parametrize("method", ["floquet", "hill", "memo"])
+def test_even_in_q(method):
+    # Shifting tau_1 by pi/2 maps q to -q, so beta(a, -q) = beta(a, q) (McLachlan ch. IV).
+    a = np.array([0.3, 0.6, 0.95])
+    q = np.array([0.01, 0.04, 0.05])
+    np.testing.assert_array_equal(
+        pitch.characteristic_exponent(a, -q, method), pitch.characteristic_exponent(a, q, method)
+    )
+
+
+def test_mathieu_parameters_definition():
+    # (4.2-4) with omega_psi^2 = 2 pi R1 d2 K T0 / I_cm: a = 8 pi R1 d2 K T0 / (I_cm Omega^2).
+    R1, d2, K, T0, I_cm, gamma = 5.05, 27.6, 0.5, 8.8e4, 2.7e7, 0.05
+    omega_psi = pitch.pitch_frequency(2 * np.pi * R1 * T0, d2, K, I_cm)
+    Omega = np.array([5.0, 50.0])
+    a, q = pitch.mathieu_parameters(Omega, omega_psi, gamma)
+    np.testing.assert_allclose(a, 8 * np.pi * R1 * d2 * K * T0 / (I_cm * Omega**2), rtol=1e-14)
+    np.testing.assert_allclose(q, gamma * a / 2, rtol=1e-15)
+
+
+def test_psi_numerical_q_zero_is_cosine():
+    # q = 0: psi = psi0 cos(sqrt(a) tau_1) exactly; solve_ivp at rtol 1e-12.
+    tau = np.linspace(0, 30, 301)
+    np.testing.assert_allclose(
+        pitch.psi_numerical(tau, 0.49, 0.0, psi0=0.1), 0.1 * np.cos(0.7 * tau), rtol=0, atol=1e-11
+    )
+
+
+# --------------------------------------------------------------------------------------------
+# Tier 2: literature values
+# --------------------------------------------------------------------------------------------
+
+
+def test_transition_curves_match_scipy():
+    # A&S 20.2 characteristic values, scipy.special.mathieu_a / mathieu_b (same q convention
+    # as eq. 4.2-3: y'' + (a - 2q cos 2t) y = 0); 1e-10 absolute on values O(1..30).
+    q = np.linspace(0.0, 10.0, 41)
+    curves = pitch.transition_curves(q, r_max=5)
+    for r in range(6):
+        np.testing.assert_allclose(curves[f"a{r}"], special.mathieu_a(r, q), rtol=0, atol=1e-10)
+        if r >= 1:
+            np.testing.assert_allclose(curves[f"b{r}"], special.mathieu_b(r, q), rtol=0, atol=1e-10)
+
+
+def test_small_q_characteristic_values():
+    # A&S 20.2.25: a_1 = 1 + q - q^2/8 - q^3/64 + ..., b_1 = 1 - q - q^2/8 + q^3/64 + ...,
+    # truncation error O(q^4) ~ 1e-8 at q = 0.05.
+    q = np.array([0.01, 0.05])
+    curves = pitch.transition_curves(q, r_max=1)
+    np.testing.assert_allclose(curves["a1"], 1 + q - q**2 / 8 - q**3 / 64, atol=1e-7)
+    np.testing.assert_allclose(curves["b1"], 1 - q - q**2 / 8 + q**3 / 64, atol=1e-7)
+
+
+def test_reference_points_cover_both_regions(references):
+    # The acceptance asks for points inside and outside the tongues: at least 8 of each.
+    imag = np.array([ref[1].imag for ref in references.values()])
+    assert np.sum(imag > 0) >= 8 and np.sum(imag == 0) >= 8
+
+
+@pytest.mark.parametrize("method", ["floquet", "hill"])
+@pytest.mark.parametrize("point", EXPONENT_POINTS)
+def test_exponent_against_mpmath(point, method, references):
+    # Reference: 50-digit mpmath Taylor series of y1(pi) (independent of both methods), band
+    # index from scipy's characteristic values.  cos(pi beta) to 1e-11 relative, beta to 1e-8
+    # (no point lies within 1e-4 of a transition curve, where beta has a square-root
+    # singularity, so 1e-11 in cos(pi beta) is < 1e-8 in beta).
+    a, q = point
+    D_ref, beta_ref = references[point]
+    D = float(pitch.floquet_discriminant(a, q, method))
+    assert abs(D - D_ref) <= 1e-11 * max(1.0, abs(D_ref))
+    beta = complex(pitch.characteristic_exponent(a, q, method))
+    assert abs(beta - beta_ref) < 1e-8
+    assert (beta.imag == 0) == (beta_ref.imag == 0)
+
+
+@pytest.mark.parametrize("r", [1, 2, 3])
+@pytest.mark.parametrize("q", [0.05, 0.5, 2.0])
+def test_tongue_structure_from_scipy_curves(r, q):
+    # Between b_r(q) and a_r(q) (scipy): Re beta = r, Im beta > 0; just outside: real beta
+    # within 1e-3 of r (square-root approach); midway to the next curve: r < beta < r + 1.
+    b_r, a_r = special.mathieu_b(r, q), special.mathieu_a(r, q)
+    inside = pitch.characteristic_exponent(0.5 * (a_r + b_r), q, "hill")
+    assert inside.real == r and inside.imag > 0
+    above = pitch.characteristic_exponent(a_r + 1e-7, q, "hill")
+    below = pitch.characteristic_exponent(b_r - 1e-7, q, "hill")
+    assert above.imag == 0 and r < above.real < r + 1e-3
+    assert below.imag == 0 and r - 1e-3 < below.real < r
+    band = pitch.characteristic_exponent(0.5 * (a_r + special.mathieu_b(r + 1, q)), q, "floquet")
+    assert band.imag == 0 and r < band.real < r + 1
+
+
+# --------------------------------------------------------------------------------------------
+# Tier 3: invariants, methods agree
+# --------------------------------------------------------------------------------------------
+
+
+def test_floquet_and_hill_agree_on_memo_range_grid():
+    # Two independent routes (Magnus-4 + Richardson vs Hill's determinant) on 60 x 40 points
+    # of the memo range (4.2-5) and beyond a = 1: beta to 1e-9 (the grid avoids no curve, so
+    # points within 1e-6 of b_1 or a_1 are dropped: there beta ~ sqrt(distance)).
+    a, q = np.meshgrid(np.linspace(0.01, 1.5, 60), np.linspace(0.001, 0.05, 40))
+    near = (np.abs(a - special.mathieu_a(1, q)) < 1e-6) | (
+        np.abs(a - special.mathieu_b(1, q)) < 1e-6
+    )
+    bf = pitch.characteristic_exponent(a, q, "floquet")
+    bh = pitch.characteristic_exponent(a, q, "hill")
+    assert np.max(np.abs(bf - bh)[~near]) < 1e-9
+
+
+def test_hill_even_and_odd_determinants_are_consistent():
+    # 1 - cos(pi beta) (pi-periodic determinant) and 1 + cos(pi beta) (antiperiodic one) are
+    # computed independently; they must add to 2 (1e-13 in the memo range).
+    a, q = np.meshgrid(np.linspace(-0.5, 1.5, 50), np.linspace(0.0, 0.05, 20))
+    one_minus, one_plus, _ = pitch._hill(a, q)
+    assert np.max(np.abs(one_minus + one_plus - 2.0)) < 1e-13
+
+
+def _slope(x, y):
+    return np.polyfit(np.log(x), np.log(y), 1)[0]
+
+
+@pytest.mark.parametrize("a", [0.1, 0.3, 0.5, 0.7])
+def test_memo_formula_error_is_order_q4_and_printed_is_order_q2(a):
+    # Erratum E4: with sin(pi sqrt a) eq. (4.2-9) is the small-q expansion
+    # nu^2 = a - q^2/(2(a - 1)) + O(q^4) (A&S 20.3.15), so its error against the exact beta
+    # (Hill) falls like q^4; as printed (sin(pi sqrt(a)/2)) like q^2.  Slopes on q in
+    # [0.05/16, 0.05] within 0.25 of 4 and 2.
+    q = 0.05 / 2.0 ** np.arange(5)
+    exact = pitch.characteristic_exponent(a, q, "hill")
+    corrected = np.abs(pitch.characteristic_exponent(a, q, "memo") - exact)
+    printed = np.abs(pitch.characteristic_exponent(a, q, "memo-printed") - exact)
+    assert abs(_slope(q, corrected) - 4.0) < 0.25
+    assert abs(_slope(q, printed) - 2.0) < 0.25
+    assert np.all(corrected < printed)
+
+
+def test_three_term_psi_error_is_order_q2():
+    # The truncation of (4.2-6) drops the Floquet harmonics c_(+-4) ~ q^2; against solve_ivp
+    # (DOP853, rtol 1e-12) over 10 periods the error falls like q^2 (slope within 0.2 of 2),
+    # and vanishes (< 1e-9) at q = 0.
+    q = np.array([0.05, 0.025, 0.0125, 0.00625])
+    err = pitch.three_term_error(0.5, q)
+    assert abs(_slope(q, err) - 2.0) < 0.2
+    assert pitch.three_term_error(0.5, [0.0])[0] < 1e-9
+
+
+def test_three_term_psi_memo_coefficients():
+    # (4.2-7): psi(0) = A1 + A2 + A3 = psi0 and psi'(0) = 0 (cosines); exact beta by default.
+    tau = np.array([0.0, 1e-6])
+    psi = pitch.psi_three_term(tau, 0.5, 0.05, psi0=0.2)
+    assert psi[0] == pytest.approx(0.2, rel=1e-15)
+    assert abs(psi[1] - psi[0]) < 1e-12
+
+
+def test_growth_rate_matches_direct_integration():
+    # Inside the first tongue (a = 1, q = 0.05) psi grows like e^(mu tau_1), mu = Im beta;
+    # solve_ivp (DOP853, rtol 1e-12) over 60 periods: the log growth per period, fitted over
+    # the last 30 periods, equals pi mu to 1e-4 relative.
+    a, q = 1.0, 0.05
+    mu = complex(pitch.characteristic_exponent(a, q, "floquet")).imag
+    tau = np.pi * np.arange(61)
+
+    def rhs(t, y):
+        return [y[1], -(a - 2 * q * np.cos(2 * t)) * y[0]]
+
+    sol = integrate.solve_ivp(
+        rhs, (0, tau[-1]), [1.0, 0.0], t_eval=tau, method="DOP853", rtol=1e-12, atol=1e-14
+    )
+    amp = np.hypot(sol.y[0], sol.y[1])
+    rate = np.polyfit(tau[30:], np.log(amp[30:]), 1)[0]
+    assert rate == pytest.approx(mu, rel=1e-4)
+
+
+def test_pitch_analysis_flags_first_tongue():
+    # Omega near 2 omega_psi puts a = 1 inside the first tongue (b_1(q) < 1 < a_1(q) for
+    # q = gamma/2 = 0.025): unstable with growth rate Im(beta) Omega / 2; Omega = 4 omega_psi
+    # (a = 1/4) is stable.
+    omega_psi, gamma = 3.0, 0.05
+    Omega = np.array([12.0, 6.0])
+    res = pitch.pitch_analysis(Omega, omega_psi, gamma)
+    assert res.stable.tolist() == [True, False]
+    beta = complex(pitch.characteristic_exponent(1.0, 0.025, "hill"))
+    assert res.growth_rate[1] == pytest.approx(beta.imag * 6.0 / 2.0, rel=1e-9)
+    assert "UNSTABLE" in res.verdict
+    assert res.unstable_intervals() == [(6.0, 6.0)]
+    data = json.loads(json.dumps(res.to_dict(), allow_nan=False))
+    assert data["stable"] == [True, False]
+    assert data["max_growth_rate"] == pytest.approx(res.growth_rate[1])
+
+
+def test_pitch_analysis_stable_default_like_case():
+    # Omega well above 2 omega_psi (a < 1/4, q <= 0.05/8): inside the memo range, stable,
+    # memo beta within 1e-6 of the exact one (its O(q^4) error).
+    res = pitch.pitch_analysis(np.linspace(10.0, 100.0, 30), 2.0, 0.05)
+    assert res.all_stable and res.max_growth_rate == 0.0
+    assert np.all(res.in_memo_range)
+    np.testing.assert_allclose(res.beta_memo_real, res.beta_real, rtol=0, atol=1e-6)
+    assert "stable" in res.verdict
+
+
+@pytest.mark.parametrize(
+    ("call", "match"),
+    [
+        (lambda: pitch.characteristic_exponent(0.5, 0.1, "exact"), "method"),
+        (lambda: pitch.characteristic_exponent(np.nan, 0.1), "a:"),
+        (lambda: pitch.characteristic_exponent(0.5, np.inf), "q:"),
+        (lambda: pitch.characteristic_exponent(-0.5, 0.1, "memo"), "a > 0"),
+        (lambda: pitch.characteristic_exponent(1.0, 0.01, "memo"), "a = 1"),
+        (lambda: pitch.mathieu_parameters([0.0, 1.0], 1.0, 0.05), "Omega"),
+        (lambda: pitch.mathieu_parameters([1.0], 1.0, -0.05), "gamma"),
+        (lambda: pitch.pitch_frequency(1.0, -2.0, 0.5, 1.0), "d2 = -2.0"),
+        (lambda: pitch.transition_curves([-1.0]), "q ="),
+        (lambda: pitch.psi_three_term([0.0], 1.0, 0.05), "unstable"),
+        (lambda: pitch.psi_numerical([1.0, 0.5], 0.5, 0.01), "tau1"),
+    ],
+)
+def test_bad_input_raises_value_error(call, match):
+    with pytest.raises(ValueError, match=match):
+        call()
+
+
+def test_ince_strutt_chart_draws_curves_and_path():
+    # The chart's transition curves are those of transition_curves (checked against scipy
+    # above) and the operating path is drawn as given; points inside a tongue are marked.
+    from matplotlib.figure import Figure
+
+    from flexbooster.plotting.pitch import ince_strutt_chart
+
+    a_path = np.array([0.5, 1.0, 1.2])
+    q_path = np.array([0.0125, 0.025, 0.03])
+    fig = ince_strutt_chart(path=(a_path, q_path), q_max=0.1, r_max=2, n_grid=40)
+    assert isinstance(fig, Figure)
+    ax = fig.axes[0]
+    lines = {line.get_label(): line for line in ax.get_lines()}
+    np.testing.assert_array_equal(lines["operating path"].get_ydata(), a_path)
+    np.testing.assert_array_equal(lines["unstable"].get_ydata(), [1.0])  # b_1 < 1 < a_1
+    a1 = pitch.transition_curves(np.linspace(0, 0.1, 40), 2)["a1"]
+    assert any(np.allclose(line.get_ydata(), a1) for line in ax.get_lines())
+    with pytest.raises(ValueError, match="path"):
+        ince_strutt_chart(path=(a_path, q_path[:2]))
+
+
+def test_psi_depends_on_sign_of_q_beta_does_not():
+    # Replacing q by -q shifts the solution by half a forcing period (tau_1 -> tau_1 + pi/2),
+    # so psi changes while beta does not; the three-term form (4.2-7, A1, A3 ~ q) and the
+    # direct integration must follow the same sign (error O(q^2) ~ 5e-4 at q = 0.05).
+    tau = np.linspace(0.0, 20.0, 201)
+    for q in (0.05, -0.05):
+        num = pitch.psi_numerical(tau, 0.5, q)
+        three = pitch.psi_three_term(tau, 0.5, q)
+        assert np.max(np.abs(num - three)) < 2e-3
+    diff = pitch.psi_numerical(tau, 0.5, 0.05) - pitch.psi_numerical(tau, 0.5, -0.05)
+    assert np.max(np.abs(diff)) > 0.05
