@@ -227,7 +227,7 @@ def test_active_versus_listed(gamma, K, family, k, active):
     from flexbooster.stability import _active
 
     i = np.array([2]) if family in (1, 7, 12, 4, 8) else np.array([0])
-    got = _active(np.array([family]), i, np.array([0]), np.array([k]), gamma, K)
+    got = _active(np.array([family]), i, np.array([0]), np.array([1]), np.array([k]), gamma, K)
     assert bool(got[0]) is active
 
 
@@ -237,5 +237,27 @@ def test_no_pulsation_silences_omega_1_and_3():
     from flexbooster.stability import _active
 
     fam = np.array([7, 7, 7])
-    got = _active(fam, np.array([1, 2, 3]), np.zeros(3, int), np.ones(3, int), 0.0, 0.5)
+    got = _active(
+        fam, np.array([1, 2, 3]), np.zeros(3, int), np.ones(3, int), np.ones(3, int), 0.0, 0.5
+    )
     assert got.tolist() == [False, True, False]
+
+
+def test_active_flags_match_the_forcing_computed_from_its_definition():
+    """The 'active' column of the default case against the resonant forcing of each root
+    computed by quadrature of the forcing functions (3.0-3, 5.3-4) on the shape functions
+    (responses.secular_rates): active roots have a relative forcing above 1e-17, the others
+    below 1e-22 (round-off). Families 2 and 13 (beam harmonics, one Hill solve per root) are
+    left out here; their selection is delta_1k only."""
+    from flexbooster import analyze, default_case
+    from flexbooster.responses import secular_rates
+
+    case = default_case()
+    table = analyze(case).stability
+    rows = [row for row in table.to_rows() if row["family"] not in (2, 13)]
+    rates = secular_rates(case, rows, beam_amplitude=0.0)
+    for row, rate in zip(rows, rates, strict=True):
+        if row["forcing"] == "active":
+            assert rate["relative"] > 1e-17, row
+        elif row["k"] <= 2:  # 'listed' with a forcing that could exist: must be round-off
+            assert rate["relative"] < 1e-22, row

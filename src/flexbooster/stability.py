@@ -23,7 +23,9 @@ A root is "active" when the forcing that produces it is structurally non-zero (r
 section 5): the rigid-body and beam terms carry delta_1k (k = 1 only), the psi-dot-squared terms
 drive k = 0 (families 4-6) and, through delta_2k, k = 2 (families 10-12); the pulsation terms need
 gamma != 0; A_1 and A_3 of psi (4.2-7b, d) are proportional to q, so terms in Omega_1 or Omega_3
-need gamma != 0 too.  Other roots are "listed": the memo lists them, but no forcing reaches them.
+need gamma != 0 too; and with the zero-phase shape functions the psi-dot-squared and
+T0 gamma sin(K psi) terms project on odd j only.  Other roots are "listed": the memo lists
+them, but no forcing reaches them.
 
 References
 ----------
@@ -337,20 +339,32 @@ ParamsFn = Callable[[np.ndarray], tuple[np.ndarray, np.ndarray]]
 
 
 def _active(
-    fam: np.ndarray, i: np.ndarray, p: np.ndarray, k: np.ndarray, gamma: float, K: float
+    fam: np.ndarray,
+    i: np.ndarray,
+    p: np.ndarray,
+    j: np.ndarray,
+    k: np.ndarray,
+    gamma: float,
+    K: float,
 ) -> np.ndarray:
-    """Structural non-zero forcing (memo 6.2; reading guide section 5)."""
+    """Structurally non-zero forcing (memo 6.2; reading guide section 5).
+
+    The Kronecker deltas of section 6 select k; the axial projections of the forcing on the
+    zero-phase shape functions select j: int sin s over the cylinder vanishes for even j, so the
+    psi-dot^2 terms (families 4-6 at k = 0, 10-12 at k = 2) and the T0 gamma sin(K psi) term
+    (families 8, 9 at k = 1) reach odd j only (checked against the forcing computed from its
+    definition, :func:`flexbooster.responses.secular_rates`, in the tests).
+    """
     pulsed = gamma != 0.0
+    odd_j = (j % 2) == 1
     # A_1, A_3 of psi are proportional to q = gamma a / 2 (4.2-7b, d): zero without pulsation
     amp_ok = ((i == 0) | (i == 2) | pulsed) & ((p == 0) | (p == 2) | pulsed)
     out = np.zeros(fam.shape, dtype=bool)
     out |= np.isin(fam, (1, 2, 7, 13)) & (k == 1)  # delta_1k: psi'' and beam (g*) terms
-    out |= (fam == 3) & pulsed  # T0 gamma cos(Omega tau), axial, k = 0 (6.2-11)
-    out |= np.isin(fam, (4, 5, 6)) & (k == 0)  # psi-dot^2, k = 0 (6.2-11, -12)
-    out |= (
-        np.isin(fam, (8, 9)) & (k == 1) & pulsed & (K != 0.0)
-    )  # T0 gamma cos(Omega) cos(Omega_i) (6.2-26)
-    out |= np.isin(fam, (10, 11, 12)) & (k == 2)  # delta_2k psi-dot^2 (6.2-26)
+    out |= (fam == 3) & pulsed  # T0 gamma cos(Omega tau), k = 0 (6.2-11, -12)
+    out |= np.isin(fam, (4, 5, 6)) & (k == 0) & odd_j  # psi-dot^2, k = 0 (6.2-11, -12)
+    out |= np.isin(fam, (8, 9)) & (k == 1) & pulsed & (K != 0.0) & odd_j  # (6.2-26)
+    out |= np.isin(fam, (10, 11, 12)) & (k == 2) & odd_j  # delta_2k psi-dot^2 (6.2-26)
     return out & amp_ok
 
 
@@ -453,7 +467,7 @@ def unstable_frequencies(
     root, resid = _illinois(f, a, b, tol)
 
     fam = sub.family
-    active = _active(fam, sub.i, sub.p, modes.k[t], gamma, K)
+    active = _active(fam, sub.i, sub.p, modes.j[t], modes.k[t], gamma, K)
     keep, also = _merge_coincident(root, t, fam, sub.i, sub.p, sub.r, sub.s, tol)
     order = np.argsort(root[keep], kind="stable")
     keep = keep[order]
