@@ -2,7 +2,7 @@
 
 Tiers: exact limits (zero phase = Donnell's single-cylinder coefficients of App. D-II),
 literature/definition (every App. A coefficient, j, k <= 20, both cylinders, two geometries,
-against its quadrature integral; each mismatch is an erratum row of docs/errata/shell.md and
+against its quadrature integral; each mismatch is an erratum row of docs/memo-errata.md and
 its correction is checked here), invariants (quadrature convergence, edge-term conventions,
 orthogonality, symmetry).
 """
@@ -100,7 +100,7 @@ def test_printed_phase_does_not_vanish_at_aft_edge():
 
 # --- tier 2: App. A as printed against its definition -------------------------------------
 
-#: Coefficients whose printed form differs from the Galerkin integral (docs/errata/shell.md).
+#: Coefficients whose printed form differs from the Galerkin integral (docs/memo-errata.md).
 ERRATA = {
     (1, "jk", "e"): "S-A17",
     (2, "j0", "g"): "S-A33",
@@ -139,7 +139,7 @@ def _printed_angles(p, d, j):
 
 @pytest.mark.parametrize("geometry", sorted(GEOMETRIES))
 def test_errata_corrections_reproduce_the_integrals(geometry):
-    # Each correction of docs/errata/shell.md applied to the printed coefficient gives the
+    # Each correction of docs/memo-errata.md applied to the printed coefficient gives the
     # quadrature integral (1e-11 of the coefficient's scale).
     p = params(geometry)
     j = np.arange(1, MJ + 1)[:, None]

@@ -261,3 +261,95 @@ def test_active_flags_match_the_forcing_computed_from_its_definition():
             assert rate["relative"] > 1e-17, row
         elif row["k"] <= 2:  # 'listed' with a forcing that could exist: must be round-off
             assert rate["relative"] < 1e-22, row
+
+
+def test_campbell_diagram_draws_every_root_and_shell_line():
+    """The figure's data, not its picture: one marker per root (active filled, listed open)
+    at (Omega_bar, shell frequency), and one horizontal line per shell frequency in view."""
+    from flexbooster.plotting.stability import campbell_diagram
+
+    modes = small_modes()
+    table = unstable_frequencies(modes, params, RANGE, OMEGA_1, R, S, gamma=0.05, K=0.5)
+    x = np.geomspace(RANGE[0] / OMEGA_1, RANGE[1] / OMEGA_1, 300)
+    beta, alpha = params(x)
+    fig = campbell_diagram(x, beta, alpha, modes.omega_bar, table, R, S)
+    ax = fig.axes[0]
+    lines = {line.get_label(): line for line in ax.get_lines()}
+    active, listed = lines["root, active"], lines["root, listed"]
+    assert len(active.get_xdata()) == int(table.active.sum())
+    assert len(listed.get_xdata()) == int((~table.active).sum())
+    np.testing.assert_array_equal(active.get_ydata(), table.shell_omega_bar[table.active])
+    segments = ax.collections[0].get_segments()
+    assert sorted(seg[0, 1] for seg in segments) == sorted(modes.omega_bar)
+
+
+def _labels(table):
+    """Every (shell mode, family, i, p, r, s) of the table, the merged 'also' entries included."""
+    import re
+
+    out = {}
+    for n in range(len(table)):
+        mode = (int(table.cylinder[n]), int(table.j[n]), int(table.k[n]), int(table.branch[n]))
+        names = [
+            (
+                int(table.family[n]),
+                int(table.i[n]),
+                int(table.p[n]),
+                int(table.r[n]),
+                int(table.s[n]),
+            )
+        ]
+        for item in filter(None, table.also[n].split(", ")):
+            fam = int(re.match(r"\d+", item).group())
+            idx = dict(re.findall(r"\((\w)=(-?\d+)\)", item))
+            names.append((fam, *(int(idx.get(c, 0)) for c in "iprs")))
+        for name in names:
+            out.setdefault((mode, name), []).append(float(table.Omega_bar[n]))
+    return out
+
+
+def test_default_case_same_roots_as_brute_force_on_sampled_curves():
+    """Issue 6 acceptance on the default case: for two curves of every family (sampled with a
+    fixed seed), every root against every shell frequency of its set found by a brute-force
+    scan -- the equation sampled on a grid ten times finer than the solver's, scipy brentq on each
+    sign change -- is in the table (its own row or merged into a coinciding family's), and the
+    table has no other root of those curves."""
+    from flexbooster import analyze, default_case
+    from flexbooster.analysis import stability_parameters
+
+    case = default_case()
+    res = analyze(case)
+    t, n = case.thrust, case.truncation
+    prm = stability_parameters(res.omega_psi, t.gamma, res.omega_1, res.beam_action)
+    modes = ShellModes(
+        res.shell.cylinder, res.shell.j, res.shell.k, res.shell.branch, res.shell.omega_bar
+    )
+    table = res.stability
+    found = _labels(table)
+    curves = excitation_curves(n.R, n.S)
+    rng = np.random.default_rng(6)
+    chosen = [int(c) for f in FAMILIES for c in rng.choice(np.flatnonzero(curves.family == f), 2)]
+    x = np.geomspace(t.omega_min, t.omega_max, 20_001) / res.omega_1
+    beta, alpha = prm(x)
+    E = excitation(curves, x, beta, alpha)
+    checked = 0
+    for c in chosen:
+        name = tuple(int(getattr(curves, f)[c]) for f in ("family", "i", "p", "r", "s"))
+        one = type(curves)(*(getattr(curves, f)[c : c + 1] for f in curves.__dataclass_fields__))
+        for m in modes.subset(FAMILIES[name[0]][1]):
+            target = modes.omega_bar[m]
+            e = E[c] - target
+            mode = (int(modes.cylinder[m]), int(modes.j[m]), int(modes.k[m]), int(modes.branch[m]))
+            brute = []
+            for k in np.flatnonzero(np.sign(e[:-1]) * np.sign(e[1:]) < 0):
+
+                def g(xx, one=one, target=target):
+                    b_, a_ = prm(np.array([xx]))
+                    return float(excitation(one, np.array([xx]), b_, a_)[0, 0]) - target
+
+                brute.append(brentq(g, x[k], x[k + 1], xtol=1e-13))
+            ours = sorted(found.get((mode, name), []))
+            assert len(ours) == len(brute), (name, mode, ours, brute)
+            np.testing.assert_allclose(ours, sorted(brute), rtol=1e-9)
+            checked += len(brute)
+    assert checked > 100

@@ -424,7 +424,7 @@ def limit_values(props: Any, N: int, derivative: int = 0) -> LimitValues:
 
     References
     ----------
-    Tech Memo 104, appendix C-II and C-III (errata C-13, C-20 in docs/errata/beam-pitch.md).
+    Tech Memo 104, appendix C-II and C-III (errata C-13, C-20 in docs/memo-errata.md).
     """
     L, L1, _L2, d1, d2, d3, d4 = _geometry(props)
     N = _check_count("N", N)
@@ -558,7 +558,7 @@ def coefficient_integrals(
     method : {"closed", "memo", "quadrature"}
         ``"closed"``: the antiderivative evaluated at the limits (corrected closed form);
         ``"memo"``: the closed form as printed in B-13..B-17 / B-19..B-23 (its structure is
-        wrong, see docs/errata/beam-pitch.md, rows B-13 and B-19); ``"quadrature"``:
+        wrong, see docs/memo-errata.md, rows B-13 and B-19); ``"quadrature"``:
         composite Gauss-Legendre quadrature of the defining integrals (B-1..B-12).
     phase : {"zero", "memo"}
         Phase of the shell functions, see :func:`shell_phase`.

@@ -1,4 +1,4 @@
-"""Writing an analysis to a folder: results.json, CSV tables and figures (SVG and PNG).
+"""Writing an analysis to a folder: results.json, CSV tables, figures (SVG, PNG), report.html.
 
 A thin layer over :mod:`flexbooster.io` (atomic writes) and :mod:`flexbooster.plotting`.
 """
@@ -7,11 +7,15 @@ from __future__ import annotations
 
 import io as _io
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from .analysis import Results
-from .io import write_bytes_atomic, write_csv_atomic, write_json_atomic
+from .io import write_bytes_atomic, write_csv_atomic, write_json_atomic, write_text_atomic
 
-__all__ = ["write_outputs", "save_figure"]
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+__all__ = ["write_outputs", "save_figure", "make_figures", "figure_svgs"]
 
 
 def save_figure(fig, path_stem: Path, formats: tuple[str, ...] = ("svg", "png")) -> list[Path]:
@@ -49,14 +53,16 @@ def write_outputs(results: Results, folder: str | Path, figures: bool = True) ->
     folder : str or pathlib.Path
         Output folder (created if needed).
     figures : bool
-        Also draw and save the figures (SVG and PNG).
+        Also draw and save the figures (SVG and PNG); the report then embeds them.
 
     Returns
     -------
     list of pathlib.Path
         The files written: results.json, shell-frequencies.csv, unstable-frequencies.csv (when
-        the stability table was computed) and the figures.
+        the stability table was computed), the figures and report.html (last).
     """
+    from .report import write_report
+
     folder = Path(folder)
     written = [write_json_atomic(folder / "results.json", results.to_dict())]
     written.append(write_csv_atomic(folder / "shell-frequencies.csv", results.shell.to_rows()))
@@ -64,31 +70,80 @@ def write_outputs(results: Results, folder: str | Path, figures: bool = True) ->
         written.append(
             write_csv_atomic(folder / "unstable-frequencies.csv", results.stability.to_rows())
         )
+    svgs: dict[str, str] = {}
     if figures:
-        written += _figures(results, folder)
+        for name, fig in make_figures(results).items():
+            svg, png = _render(fig)
+            svgs[name] = svg
+            written.append(write_text_atomic(folder / f"{name}.svg", svg))
+            written.append(write_bytes_atomic(folder / f"{name}.png", png))
+    written.append(write_report(results, folder / "report.html", svgs))
     return written
 
 
-def _figures(results: Results, folder: Path) -> list[Path]:
+def _render(fig) -> tuple[str, bytes]:
+    """SVG text (text kept as text, reproducible ids) and PNG bytes of a figure."""
+    import matplotlib
+
+    with matplotlib.rc_context({"svg.fonttype": "none", "svg.hashsalt": "flexbooster"}):
+        svg = _io.StringIO()
+        fig.savefig(svg, format="svg", bbox_inches="tight")
+    png = _io.BytesIO()
+    fig.savefig(png, format="png", dpi=150, bbox_inches="tight")
+    return svg.getvalue(), png.getvalue()
+
+
+def figure_svgs(results: Results) -> dict[str, str]:
+    """SVG text of every figure of :func:`make_figures`, by name (for the report).
+
+    Parameters
+    ----------
+    results : Results
+        The analysis.
+
+    Returns
+    -------
+    dict of str to str
+        Figure name -> SVG document.
+    """
+    return {name: _render(fig)[0] for name, fig in make_figures(results).items()}
+
+
+def make_figures(results: Results) -> dict[str, Figure]:
+    """Draw the figures of an analysis (matplotlib, Agg backend).
+
+    Parameters
+    ----------
+    results : Results
+        The analysis.
+
+    Returns
+    -------
+    dict of str to matplotlib.figure.Figure
+        By file stem: ``ince-strutt``, ``beam-modes``, ``shell-frequencies-cylinder1``,
+        ``shell-frequencies-cylinder2``, ``nodal-patterns`` and, when the stability table was
+        computed, ``campbell``.
+    """
     import matplotlib
 
     matplotlib.use("Agg")
     from .plotting.beam import mode_shape_plot
+    from .plotting.patterns import nodal_patterns
     from .plotting.pitch import ince_strutt_chart
     from .plotting.shell import frequency_curves
 
-    written = []
-    written += save_figure(
-        ince_strutt_chart(path=(results.pitch.a, results.pitch.q)), folder / "ince-strutt"
-    )
-    written += save_figure(
-        mode_shape_plot(N=min(4, results.case.truncation.N), props=results.mass),
-        folder / "beam-modes",
-    )
+    b = results.case.booster
+    figs: dict[str, Figure] = {
+        "ince-strutt": ince_strutt_chart(path=(results.pitch.a, results.pitch.q)),
+        "beam-modes": mode_shape_plot(N=min(4, results.case.truncation.N), props=results.mass),
+    }
     for d in (1, 2):
-        written += save_figure(
-            frequency_curves(results.shell, d), folder / f"shell-frequencies-cylinder{d}"
-        )
+        figs[f"shell-frequencies-cylinder{d}"] = frequency_curves(results.shell, d)
+    figs["nodal-patterns"] = nodal_patterns(
+        results.shell,
+        (b.cylinder1.radius, b.cylinder2.radius),
+        (b.cylinder1.half_length, b.cylinder2.half_length),
+    )
     if results.stability is not None and results.beam_action is not None:
         import numpy as np
 
@@ -100,7 +155,7 @@ def _figures(results: Results, folder: Path) -> list[Path]:
         beta, alpha = stability_parameters(
             results.omega_psi, t.gamma, results.omega_1, results.beam_action
         )(x)
-        fig = campbell_diagram(
+        figs["campbell"] = campbell_diagram(
             x,
             beta,
             alpha,
@@ -109,5 +164,4 @@ def _figures(results: Results, folder: Path) -> list[Path]:
             results.case.truncation.R,
             results.case.truncation.S,
         )
-        written += save_figure(fig, folder / "campbell")
-    return written
+    return figs

@@ -32,7 +32,7 @@ q_n, q_B of (4.1-10/11).  The responses are computed three ways:
   Gauss-Legendre quadrature on every step: fast for long times);
 * :func:`closed_form_0k`, :func:`closed_form_j0`, :func:`closed_form_jk`: the memo's closed
   forms 6.2-3, 6.2-8/9 (6.2-11/12) and 6.2-20 (6.2-28..30), errata fixed (see
-  ``docs/errata/responses.md``), for a forcing written as a sum of harmonics;
+  ``docs/memo-errata.md``), for a forcing written as a sum of harmonics;
 * :func:`harmonic_response`: the same closed forms with the resonance-safe kernel (finite at
   exact resonance, where it grows like tau) used by :func:`simulate`.
 

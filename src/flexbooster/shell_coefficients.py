@@ -11,7 +11,7 @@ whose coefficients ``(a..m)_j0`` and ``(a..p)_jk`` appendix A lists in closed fo
 gives them two ways:
 
 * :func:`memo_coefficients`, appendix A as printed ("memo-literal", eqs. A-1..A-52), with
-  only the obvious OCR slips read as meant (see ``docs/errata/shell.md``), and
+  only the obvious OCR slips read as meant (see ``docs/memo-errata.md``), and
 * :func:`galerkin_coefficients`, the integrals they stand for: the shell operators of 3.0-2
   applied to the trial functions of 5.2-1 (shape functions 5.3-2/3 times the step functions
   G_d, plus the xi-independent shift -A(theta) - (-1)^d (m pi/2) B(theta) and
@@ -341,7 +341,7 @@ def memo_coefficients(p: ShellParameters, d: int, M: int, N: int) -> CylinderCoe
     L1 in the fourth term of A-33, the missing (j pi L/2L2) sin j pi (2d1 - L1)/L2 term of
     A-42 and the half angles in the bracket of A-44.  Read as meant (OCR slips): "2 I_2"
     for 2 L2 in A-27/A-28, 1/(nu (1 - nu^2)) for 1/(mu (1 - nu^2)) in A-16.  Every
-    difference from :func:`galerkin_coefficients` is a row in ``docs/errata/shell.md``.
+    difference from :func:`galerkin_coefficients` is a row in ``docs/memo-errata.md``.
 
     References
     ----------

@@ -1,0 +1,528 @@
+"""The analysis report: one self-contained HTML file (``report.html``).
+
+A thin layer over :class:`~flexbooster.analysis.Results`: it formats what the analysis computed
+and computes nothing new.  The file has no external resource: the style sheet is inline, the
+figures are inline SVG (matplotlib, text kept as text), and there is no script.  Every text is
+escaped; a number that is not finite is shown as "n/a", never as NaN.  The markup is also
+well-formed XML (polyglot HTML5), which is what the tests check with a strict parser.
+
+Sections, by ``id``: ``summary``, ``inputs``, ``mass-properties``, ``frequencies``,
+``beam-modes``, ``rigid-body``, ``beam-action``, ``shell-frequencies``, ``nodal-patterns``,
+``unstable-frequencies``, ``campbell``, ``verification``, ``warnings``.
+"""
+
+from __future__ import annotations
+
+import html
+import math
+import re
+from collections.abc import Callable, Mapping, Sequence
+from datetime import UTC, datetime
+from pathlib import Path
+
+import numpy as np
+
+from . import __version__
+from .analysis import Results
+from .io import write_text_atomic
+
+__all__ = [
+    "SECTIONS",
+    "FIGURES",
+    "VERIFICATION",
+    "MAX_UNSTABLE_ROWS",
+    "inline_svg",
+    "render_report",
+    "write_report",
+]
+
+#: Section ids and titles, in the order of the report.
+SECTIONS: tuple[tuple[str, str], ...] = (
+    ("summary", "Summary"),
+    ("inputs", "Inputs"),
+    ("mass-properties", "Mass properties"),
+    ("frequencies", "Reference frequencies and dimensionless groups"),
+    ("beam-modes", "Free-free beam modes"),
+    ("rigid-body", "Rigid-body pitch"),
+    ("beam-action", "Beam action"),
+    ("shell-frequencies", "Shell natural frequencies"),
+    ("nodal-patterns", "Shell nodal patterns"),
+    ("unstable-frequencies", "Unstable thrust frequencies"),
+    ("campbell", "Campbell diagram"),
+    ("verification", "Verification summary"),
+    ("warnings", "Warnings"),
+)
+
+#: Figure name (the file stem written by :func:`flexbooster.outputs.write_outputs`) -> section
+#: and caption.
+FIGURES: dict[str, tuple[str, str]] = {
+    "beam-modes": (
+        "beam-modes",
+        "Free-free mode shapes phi_n(zeta) of the equivalent beam (appendix C); dashed: the "
+        "junction of the cylinders, dotted: the centre of mass.",
+    ),
+    "ince-strutt": (
+        "rigid-body",
+        "Ince-Strutt chart of the pitch equation (4.2-3) with the operating path "
+        "(a(Omega), q(Omega)) of eq. (4.2-4); shaded: unstable; red points: unstable grid points.",
+    ),
+    "shell-frequencies-cylinder1": (
+        "shell-frequencies",
+        "Shell frequencies of cylinder 1 (aft) against the circumferential wave number k, one "
+        "line per axial index j (branch 1).",
+    ),
+    "shell-frequencies-cylinder2": (
+        "shell-frequencies",
+        "Shell frequencies of cylinder 2 (forward), as for cylinder 1.",
+    ),
+    "nodal-patterns": (
+        "nodal-patterns",
+        "Nodal patterns (memo Fig. 4) of the lowest mode with j, k >= 1 of each cylinder on the "
+        "unrolled surface: radial displacement sin(j pi s/2) cos(k theta) (eqs. 5.3-2d, 5.3-3d) "
+        "positive in red, negative in blue, nodal lines black.",
+    ),
+    "campbell": (
+        "campbell",
+        "Excitation curves of memo 7.3 against the thrust frequency, shell frequencies as grey "
+        "horizontal lines; filled red: roots with active forcing, open: listed roots.",
+    ),
+}
+
+#: Largest number of rows of the unstable-frequency table shown (all are in the CSV).
+MAX_UNSTABLE_ROWS = 200
+#: Shell frequencies listed per cylinder (all are in shell-frequencies.csv).
+_SHELL_ROWS = 12
+
+#: What each result was checked against: (quantity, reference, tolerance, test).
+VERIFICATION: tuple[tuple[str, str, str, str], ...] = (
+    ("mass, x_cm, I_cm", "surface quadrature (Gauss-Legendre 20 points per cylinder x 64 "
+     "trapezoidal points in theta), four boosters", "1e-12 relative",
+     "test_geometry::test_mass_properties_against_surface_quadrature"),
+    ("d1..d4, a, c, b", "the relations of memo Fig. 1", "1e-12 relative",
+     "test_geometry::test_distances_and_coordinates_follow_figure_1"),
+    ("I_cm (erratum E1)", "single-cylinder limit m (R^2/2 + (2 L1)^2/12)", "1e-12 relative",
+     "test_geometry::test_single_cylinder_limit"),
+    ("lambda_n (free-free beam)", "Blevins / Young & Felgar tables; mpmath root of "
+     "cos cosh = 1", "1e-9 relative", "test_beam::test_lambda_reference_values"),
+    ("omega_1 (4.2-8b)", "section properties of a thin tube, EI / (rho A)", "1e-9 relative",
+     "test_beam::test_omega_1_from_section_properties"),
+    ("beam modes orthonormal", "Gram matrix by quadrature, N up to 200", "1e-10 absolute",
+     "test_beam::test_modes_orthonormal_up_to_n_200"),
+    ("Mathieu exponent beta", "mpmath 50-digit Taylor series of y1(pi)", "1e-8 in beta",
+     "test_pitch::test_exponent_against_mpmath"),
+    ("transition curves a_r, b_r", "scipy.special.mathieu_a / mathieu_b", "1e-10 absolute",
+     "test_pitch::test_transition_curves_match_scipy"),
+    ("pitch growth rate", "direct integration (solve_ivp, rtol 1e-12)", "see test",
+     "test_pitch::test_growth_rate_matches_direct_integration"),
+    ("beta memo formula (4.2-9, E4)", "exact exponent: error O(q^4) corrected, O(q^2) printed",
+     "slope", "test_pitch::test_memo_formula_error_is_order_q4_and_printed_is_order_q2"),
+    ("shell frequencies", "Donnell shear-diaphragm frequencies (Leissa, NASA SP-288, eq. 2.20)",
+     "1e-10 relative", "test_shell::test_d2_frequencies_equal_donnell_frequencies"),
+    ("shell frequencies (roots)", "mpmath roots of the Donnell cubic", "see test",
+     "test_shell::test_donnell_roots_against_mpmath"),
+    ("follower flutter load", "Beal (1965), P l^2/EI = 109.69", "1e-3 relative",
+     "test_beam_action::test_follower_flutter_load_beal"),
+    ("loaded-beam frequencies", "continuous beam by shooting (solve_ivp DOP853, rtol 1e-12)",
+     "2e-5 relative", "test_beam_action::test_steady_frequencies_against_continuous_beam_shooting"),
+    ("alpha_r: Hill against monodromy", "two methods, stable and unstable points",
+     "1e-8 absolute",
+     "test_beam_action::test_hill_and_monodromy_agree_1e8_including_unstable_points"),
+    ("unstable thrust frequencies", "brute-force scan of every excitation curve",
+     "same roots, 1e-9", "test_stability::test_same_roots_as_brute_force_scan"),
+    ("root residuals", "the memo's equations 7.3 re-evaluated", "1e-9 in Omega/omega_1",
+     "test_stability::test_every_root_satisfies_its_equation"),
+)
+
+_CSS = """
+body{font-family:system-ui,-apple-system,"Segoe UI",Roboto,Helvetica,Arial,sans-serif;
+margin:0 auto;max-width:1100px;padding:1em 2em;color:#1d1d1f;line-height:1.4}
+h1{font-size:1.6em;margin-bottom:0.2em}h2{border-bottom:2px solid #d0d7de;padding-bottom:0.2em;
+margin-top:1.6em}
+nav ol{columns:3;font-size:0.9em}
+table{border-collapse:collapse;margin:0.6em 0;font-size:0.88em}
+th,td{border:1px solid #d0d7de;padding:0.25em 0.6em;vertical-align:top}
+th{background:#f3f5f7;text-align:left}
+td.num{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}
+tr.active td{background:#fff1f0}
+.verdict{font-weight:bold}.ok{color:#116329}.bad{color:#a40e26}
+.warn{background:#fff8c5;border-left:4px solid #d4a72c;padding:0.4em 0.8em;margin:0.4em 0}
+.note{color:#57606a;font-size:0.9em}
+figure{margin:1em 0}figcaption{font-size:0.88em;color:#57606a;max-width:60em}
+figure svg{max-width:100%;height:auto;display:block}
+svg.figure *{stroke-linejoin:round;stroke-linecap:butt}
+"""
+
+
+def _fmt(x: object, digits: int = 6) -> str:
+    """A number as text; anything not finite becomes "n/a" (never NaN)."""
+    if x is None:
+        return "n/a"
+    if isinstance(x, bool | np.bool_):
+        return "yes" if x else "no"
+    if isinstance(x, int | np.integer):
+        return str(int(x))
+    try:
+        value = float(x)
+    except (TypeError, ValueError):
+        return str(x)
+    if not math.isfinite(value):
+        return "n/a"
+    return f"{value:.{digits}g}"
+
+
+def _e(text: object) -> str:
+    return html.escape(str(text), quote=True)
+
+
+def _table(header: Sequence[str], rows: Sequence[Sequence[object]],
+           numeric: Sequence[bool] | None = None, row_class: Sequence[str] | None = None) -> str:
+    numeric = numeric or [False] * len(header)
+    out = ["<table>", "<thead><tr>"]
+    out += [f"<th>{_e(h)}</th>" for h in header]
+    out.append("</tr></thead><tbody>")
+    for n, row in enumerate(rows):
+        cls = f' class="{_e(row_class[n])}"' if row_class and row_class[n] else ""
+        cells = []
+        for value, num in zip(row, numeric, strict=True):
+            text = _fmt(value) if num else str(value)
+            cells.append(f'<td class="num">{_e(text)}</td>' if num else f"<td>{_e(text)}</td>")
+        out.append(f"<tr{cls}>" + "".join(cells) + "</tr>")
+    out.append("</tbody></table>")
+    return "".join(out)
+
+
+def _qvu(rows: Sequence[tuple[str, object, str]]) -> str:
+    """Quantity / value / unit table; values are numbers or text."""
+    body = [(q, v if isinstance(v, str) else _fmt(v), u) for q, v, u in rows]
+    return _table(("quantity", "value", "unit"), body, (False, False, False))
+
+
+def _hz(rad_s: float) -> float:
+    return rad_s / (2.0 * np.pi)
+
+
+def inline_svg(svg: str, prefix: str, label: str) -> str:
+    """Make a matplotlib SVG document embeddable in HTML.
+
+    The XML declaration, DOCTYPE, metadata and the global style element are dropped, every
+    ``id`` (and every reference to it) is prefixed with ``prefix`` so that several figures can
+    share one page, and the root gets ``role="img"``, an ``aria-label`` and the class
+    ``figure``.
+
+    Parameters
+    ----------
+    svg : str
+        SVG text as written by ``Figure.savefig(format="svg")``.
+    prefix : str
+        Prefix of the ids, e.g. the figure name.
+    label : str
+        Accessible name of the image.
+
+    Returns
+    -------
+    str
+        The ``<svg>`` element.
+    """
+    start = svg.find("<svg")
+    if start < 0:
+        raise ValueError(f"svg = {svg[:40]!r}...: not an SVG document (no <svg element)")
+    body = svg[start:]
+    body = re.sub(r"<metadata>.*?</metadata>", "", body, flags=re.S)
+    body = re.sub(r"<style[^>]*>.*?</style>", "", body, flags=re.S)
+    body = re.sub(r'\bid="([^"]+)"', rf'id="{prefix}-\1"', body)
+    body = re.sub(r'(xlink:href|href)="#([^"]+)"', rf'\1="#{prefix}-\2"', body)
+    body = re.sub(r"url\(#([^)]+)\)", rf"url(#{prefix}-\1)", body)
+    return body.replace(
+        "<svg ", f'<svg class="figure" role="img" aria-label="{_e(label)}" ', 1
+    )
+
+
+def _figure(name: str, svgs: Mapping[str, str] | None) -> str:
+    caption = FIGURES[name][1]
+    if not svgs or name not in svgs:
+        return f'<p class="note">Figure "{_e(name)}" was not drawn (run without --no-figures).</p>'
+    return (
+        f'<figure id="fig-{_e(name)}">{inline_svg(svgs[name], f"fig-{name}", caption)}'
+        f"<figcaption>{_e(caption)}</figcaption></figure>"
+    )
+
+
+def _inputs(results: Results) -> str:
+    case = results.case
+    b, t, n = case.booster, case.thrust, case.truncation
+    rows = [
+        ("cylinder 1 (aft) radius R1", b.cylinder1.radius, "m"),
+        ("cylinder 1 half-length L1", b.cylinder1.half_length, "m"),
+        ("cylinder 2 (forward) radius R2", b.cylinder2.radius, "m"),
+        ("cylinder 2 half-length L2", b.cylinder2.half_length, "m"),
+        ("shell thickness h", b.thickness, "m"),
+        ("Young's modulus E", b.E, "Pa"),
+        ("Poisson's ratio nu", b.nu, "-"),
+        ("density rho", b.rho, "kg/m^3"),
+        ("steady thrust F0", case.F0, "N"),
+        ("thrust per unit circumference T0 = F0 / (2 pi R1)", case.T0, "N/m"),
+        ("pulsation amplitude gamma, T = T0 (1 - gamma cos Omega t)", t.gamma, "-"),
+        ("gimbal gain K", t.K, "-"),
+        ("Omega grid: lowest", t.omega_min, "rad/s"),
+        ("Omega grid: highest", t.omega_max, "rad/s"),
+        ("Omega grid: points", t.n_omega, "-"),
+        ("shell modes, cylinder 1: j = 0..M1, k = 0..N1", f"{n.M1}, {n.N1}", "-"),
+        ("shell modes, cylinder 2: j = 0..M2, k = 0..N2", f"{n.M2}, {n.N2}", "-"),
+        ("beam modes N / Floquet harmonics S / exponents R", f"{n.N} / {n.S} / {n.R}", "-"),
+    ]
+    return _qvu(rows)
+
+
+def _mass(results: Results) -> str:
+    m = results.mass
+    rows = [
+        ("half-length of the booster L = L1 + L2", m.L, "m"),
+        ("mass of cylinder 1 / cylinder 2", f"{_fmt(m.m1)} / {_fmt(m.m2)}", "kg"),
+        ("total mass", m.mass, "kg"),
+        ("centre of mass from the aft edge x_cm", m.x_cm, "m"),
+        ("cylinder holding the centre of mass", m.cm_cylinder, "-"),
+        ("d1 / d2 / d3 / d4 (Fig. 1)", " / ".join(_fmt(v) for v in (m.d1, m.d2, m.d3, m.d4)),
+         "m"),
+        ("aft edge a / junction c / nose b in xi_bar = (x - x_cm)/L",
+         " / ".join(_fmt(v) for v in (m.a, m.c, m.b)), "-"),
+        ("pitch moment of inertia about the CM, I_cm (erratum E1)", m.I_cm, "kg m^2"),
+    ]
+    return _qvu(rows)
+
+
+def _frequencies(results: Results) -> str:
+    g = results.groups
+    rows = [
+        ("first free-free bending frequency omega_1 (4.2-8b)", results.omega_1, "rad/s"),
+        ("  in Hz", _hz(results.omega_1), "Hz"),
+        ("rigid-body pitch frequency omega_psi = sqrt(F0 d2 K / I_cm)", results.omega_psi,
+         "rad/s"),
+        ("  in Hz", _hz(results.omega_psi), "Hz"),
+        ("mu = rho L^2 omega_1^2 / E", g.mu, "-"),
+        ("lambda_1 = L/R1, lambda_2 = L/R2", f"{_fmt(g.lambda1)}, {_fmt(g.lambda2)}", "-"),
+        ("sigma = h/L", g.sigma, "-"),
+        ("T0_bar = T0 / (rho h L^2 omega_1^2)", g.T0_bar, "-"),
+    ]
+    return _qvu(rows)
+
+
+def _beam(results: Results, svgs: Mapping[str, str] | None) -> str:
+    beam = results.beam
+    rows = []
+    for n in range(beam.lambda_n.size):
+        omega = None if beam.omega_n is None else beam.omega_n[n]
+        rows.append((n + 1, beam.lambda_n[n], beam.alpha_n[n], omega,
+                     None if omega is None else _hz(omega)))
+    table = _table(("n", "lambda_n", "alpha_n", "omega_n (rad/s)", "f_n (Hz)"), rows,
+                   (True, True, True, True, True))
+    return table + _figure("beam-modes", svgs)
+
+
+def _verdict(text: str, stable: bool) -> str:
+    cls = "ok" if stable else "bad"
+    return f'<p>Verdict: <span class="verdict {cls}">{_e(text)}</span></p>'
+
+
+def _pitch(results: Results, svgs: Mapping[str, str] | None) -> str:
+    p = results.pitch
+    rows = [
+        ("Mathieu a over the grid (4.2-4)", f"{_fmt(p.a.min())} .. {_fmt(p.a.max())}", "-"),
+        ("Mathieu q over the grid (4.2-4)", f"{_fmt(p.q.min())} .. {_fmt(p.q.max())}", "-"),
+        ("exponent beta (exact, Hill) over the grid",
+         f"{_fmt(p.beta_real.min())} .. {_fmt(p.beta_real.max())}", "-"),
+        ("largest |beta memo (4.2-9, E4) - beta exact|",
+         _fmt(float(np.max(np.abs(p.beta_memo_real - p.beta_real)))), "-"),
+        ("largest growth rate of psi", p.max_growth_rate, "1/s"),
+        ("grid points in the memo's range 0 < a < 1, 0 < q <= 0.05",
+         f"{int(np.sum(p.in_memo_range))} of {p.in_memo_range.size}", "-"),
+    ]
+    intervals = p.unstable_intervals()
+    out = _verdict(p.verdict, bool(np.all(p.stable))) + _qvu(rows)
+    if intervals:
+        out += "<p>Unstable intervals of Omega (rad/s):</p>" + _table(
+            ("from (rad/s)", "to (rad/s)", "from (Hz)", "to (Hz)"),
+            [(lo, hi, _hz(lo), _hz(hi)) for lo, hi in intervals[:50]], (True,) * 4)
+        if len(intervals) > 50:
+            out += f'<p class="note">First 50 of {len(intervals)} intervals.</p>'
+    return out + _figure("ince-strutt", svgs)
+
+
+def _beam_action(results: Results) -> str:
+    ba = results.beam_action
+    if ba is None:
+        return '<p class="note">Not computed.</p>'
+    rows = [
+        ("largest growth rate", ba.max_growth_rate, "1/s"),
+        ("Omega at the largest growth rate", ba.Omega_at_max, "rad/s"),
+        ("steady thrust P l^2 / EI (follower flutter at 109.69)", ba.p, "-"),
+        ("Hill against monodromy exponents, largest difference", ba.hill_monodromy_difference,
+         "-"),
+        ("stable grid points", f"{int(np.sum(ba.stable))} of {ba.stable.size}", "-"),
+    ]
+    rows += [
+        (f"alpha_{r + 1} Omega_bar at gamma -> 0 (loaded frequency)",
+         float(np.real(ba.frequencies[r])), "omega_1")
+        for r in range(np.size(ba.frequencies))
+    ]
+    return _verdict(ba.verdict, bool(np.all(ba.stable))) + _qvu(rows)
+
+
+def _shell(results: Results, svgs: Mapping[str, str] | None) -> str:
+    sh = results.shell
+    out = [f"<p>Method: {_e(sh.method)}; {len(sh)} frequencies in all (every one is in "
+           "shell-frequencies.csv). The lowest of each cylinder:</p>"]
+    for d in (1, 2):
+        rows_d = np.flatnonzero(sh.cylinder == d)
+        rows_d = rows_d[np.argsort(sh.hz[rows_d], kind="stable")][:_SHELL_ROWS]
+        out.append(f"<h3>Cylinder {d} ({'aft' if d == 1 else 'forward'})</h3>")
+        out.append(_table(
+            ("j", "k", "branch m", "type", "omega_bar (omega_1)", "rad/s", "Hz"),
+            [(sh.j[i], sh.k[i], sh.branch[i], sh.mode_type[i], sh.omega_bar[i], sh.rad_s[i],
+              sh.hz[i]) for i in rows_d],
+            (True, True, True, False, True, True, True)))
+    out.append(_figure("shell-frequencies-cylinder1", svgs))
+    out.append(_figure("shell-frequencies-cylinder2", svgs))
+    return "".join(out)
+
+
+def _unstable(results: Results) -> str:
+    st = results.stability
+    if st is None:
+        return '<p class="note">Not computed.</p>'
+    order = np.lexsort((st.Omega, ~np.asarray(st.active, dtype=bool)))  # active first
+    shown = order[:MAX_UNSTABLE_ROWS]
+    n_active = int(np.sum(st.active))
+    head = (f"<p>{len(st)} roots of the equations of memo 7.3 in the Omega range, "
+            f"{n_active} with active forcing (highlighted, listed first). ")
+    if len(st) > shown.size:
+        head += f"The first {shown.size} of {len(st)} are shown; all are in "
+    else:
+        head += "All are shown; they are also in "
+    head += "unstable-frequencies.csv.</p>"
+    rows = [
+        (st.Omega[n], _hz(st.Omega[n]), st.Omega_bar[n], f"{st.family[n]} ({st.equation[n]})",
+         st.cylinder[n], st.j[n], st.k[n], st.branch[n],
+         f"{st.i[n]}, {st.p[n]}, {st.r[n]}, {st.s[n]}",
+         _hz(st.shell_omega_bar[n] * st.omega_1), "active" if st.active[n] else "listed")
+        for n in shown
+    ]
+    table = _table(
+        ("Omega (rad/s)", "Omega (Hz)", "Omega/omega_1", "family (eq.)", "d", "j", "k", "m",
+         "i, p, r, s", "shell (Hz)", "forcing"),
+        rows, (True, True, True, False, True, True, True, True, False, True, False),
+        ["active" if st.active[n] else "" for n in shown])
+    notes = "".join(f'<p class="note">{_e(w)}</p>' for w in st.warnings)
+    return head + table + notes
+
+
+def _verification() -> str:
+    return ("<p>Every number of this report is produced by code that the test suite checks "
+            "against an independent computation (not against the memo, which prints no "
+            "numbers). Run <code>make test</code> to repeat the checks.</p>"
+            + _table(("quantity", "checked against", "tolerance", "test (tests/...)"),
+                     VERIFICATION, (False,) * 4))
+
+
+def _warnings(results: Results) -> str:
+    items = [(w.code, w.field, w.message) for w in results.warnings]
+    if results.stability is not None:
+        items += [("stability", "stability", w) for w in results.stability.warnings]
+    if not items:
+        return "<p>No warnings.</p>"
+    return "".join(
+        f'<div class="warn"><strong>[{_e(code)}]</strong> {_e(field)}: {_e(msg)}</div>'
+        for code, field, msg in items
+    )
+
+
+def _summary(results: Results) -> str:
+    ba, st, p = results.beam_action, results.stability, results.pitch
+    rows = [
+        ("first bending frequency omega_1", f"{_fmt(results.omega_1)} rad/s "
+         f"({_fmt(_hz(results.omega_1))} Hz)"),
+        ("rigid-body pitch", p.verdict),
+        ("beam action", "not computed" if ba is None else ba.verdict),
+        ("unstable thrust frequencies", "not computed" if st is None else
+         f"{len(st)} roots, {int(np.sum(st.active))} with active forcing"),
+        ("warnings", str(len(results.warnings))),
+    ]
+    return _table(("", ""), rows, (False, False))
+
+
+def render_report(results: Results, svgs: Mapping[str, str] | None = None,
+                  generated: str | None = None) -> str:
+    """The report of an analysis as one HTML document.
+
+    Parameters
+    ----------
+    results : Results
+        The analysis.
+    svgs : Mapping of str to str, optional
+        SVG text of the figures by name (the keys of :data:`FIGURES`), as returned by
+        :func:`flexbooster.outputs.figure_svgs`; missing figures are replaced by a note.
+    generated : str, optional
+        Time stamp printed in the header (default: now, UTC, to the second).
+
+    Returns
+    -------
+    str
+        The HTML text (UTF-8, no external resource).
+    """
+    generated = generated or datetime.now(UTC).strftime("%Y-%m-%d %H:%M:%S UTC")
+    case = results.case
+    body: dict[str, Callable[[], str]] = {
+        "summary": lambda: _summary(results),
+        "inputs": lambda: _inputs(results),
+        "mass-properties": lambda: _mass(results),
+        "frequencies": lambda: _frequencies(results),
+        "beam-modes": lambda: _beam(results, svgs),
+        "rigid-body": lambda: _pitch(results, svgs),
+        "beam-action": lambda: _beam_action(results),
+        "shell-frequencies": lambda: _shell(results, svgs),
+        "nodal-patterns": lambda: _figure("nodal-patterns", svgs),
+        "unstable-frequencies": lambda: _unstable(results),
+        "campbell": lambda: _figure("campbell", svgs),
+        "verification": _verification,
+        "warnings": lambda: _warnings(results),
+    }
+    title = f"flexbooster report: {case.name}"
+    parts = [
+        "<!DOCTYPE html>",
+        '<html lang="en"><head><meta charset="utf-8" />',
+        '<meta name="viewport" content="width=device-width, initial-scale=1" />',
+        f"<title>{_e(title)}</title><style>{_CSS}</style></head><body>",
+        f"<header><h1>{_e(title)}</h1>",
+        f'<p class="note">flexbooster {_e(__version__)}, {_e(generated)}. Dynamic stability '
+        "of a flexible two-cylinder booster under a gimbaled, pulsating thrust (Tech Memo 104). "
+        "All quantities in SI units.</p>",
+        "<nav><ol>",
+        *[f'<li><a href="#{sid}">{_e(name)}</a></li>' for sid, name in SECTIONS],
+        "</ol></nav></header><main>",
+    ]
+    for sid, name in SECTIONS:
+        parts.append(f'<section id="{sid}"><h2>{_e(name)}</h2>{body[sid]()}</section>')
+    parts.append("</main></body></html>\n")
+    return "\n".join(parts)
+
+
+def write_report(results: Results, path: str | Path, svgs: Mapping[str, str] | None = None,
+                 generated: str | None = None) -> Path:
+    """Write :func:`render_report` to ``path`` atomically (via ``io.write_text_atomic``).
+
+    Parameters
+    ----------
+    results : Results
+        The analysis.
+    path : str or pathlib.Path
+        Destination, usually ``<folder>/report.html``.
+    svgs : Mapping of str to str, optional
+        Figures by name (see :func:`render_report`).
+    generated : str, optional
+        Time stamp of the header.
+
+    Returns
+    -------
+    pathlib.Path
+        The path written.
+    """
+    return write_text_atomic(path, render_report(results, svgs, generated))
