@@ -49,6 +49,8 @@ from typing import Any
 
 import numpy as np
 
+from .checks import count
+
 __all__ = [
     "free_free_eigenvalues",
     "free_free_alpha",
@@ -68,14 +70,7 @@ _PHASES = ("memo", "zero")
 
 
 def _check_count(name: str, value: Any, minimum: int = 1) -> int:
-    """Return ``value`` as an int >= minimum or raise ValueError naming it."""
-    try:
-        ivalue = int(value)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} = {value!r}: must be an integer >= {minimum}") from None
-    if ivalue != value or ivalue < minimum:
-        raise ValueError(f"{name} = {value!r}: must be an integer >= {minimum}")
-    return ivalue
+    return count(name, value, low=minimum, high=None)
 
 
 def free_free_eigenvalues(n: int) -> np.ndarray:

@@ -51,7 +51,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from flexbooster import beam
+from . import beam
+from .checks import count, nonnegative, positive
 
 __all__ = [
     "BeamActionSystem",
@@ -124,20 +125,6 @@ class BeamActionSystem:
             "K": float(self.K),
             "N": int(self.N),
         }
-
-
-def _check_positive(name: str, value: float) -> float:
-    value = float(value)
-    if not np.isfinite(value) or value <= 0.0:
-        raise ValueError(f"{name} = {value!r}: must be finite and > 0")
-    return value
-
-
-def _check_nonneg(name: str, value: float) -> float:
-    value = float(value)
-    if not np.isfinite(value) or value < 0.0:
-        raise ValueError(f"{name} = {value!r}: must be finite and >= 0")
-    return value
 
 
 def _modal_integrals(N: int, n_quad: int | None = None) -> tuple[np.ndarray, ...]:
@@ -217,14 +204,14 @@ def beam_action_system(omega_1: float, mass: float, L: float, d2: float, I_cm: f
     ----------
     Tech Memo 104, eqs. (2.2-2), (4.1-1), (4.1-3), (4.2-1), (4.2-8b); Beal (1965).
     """
-    omega_1 = _check_positive("omega_1", omega_1)
-    mass = _check_positive("mass", mass)
-    L = _check_positive("L", L)
-    d2 = _check_positive("d2", d2)
-    I_cm = _check_positive("I_cm", I_cm)
-    F0 = _check_nonneg("F0", F0)
-    K = _check_nonneg("K", K)
-    N = _check_count("N", N, 0)
+    omega_1 = positive("omega_1", omega_1)
+    mass = positive("mass", mass)
+    L = positive("L", L)
+    d2 = positive("d2", d2)
+    I_cm = positive("I_cm", I_cm)
+    F0 = nonnegative("F0", F0)
+    K = nonnegative("K", K)
+    N = count("N", N, 0)
     load = F0 / (mass * L * omega_1**2)  # eps = F0 / (M L omega_1^2)
     Lam, B = _assemble(load, K, mass * L**2 / I_cm, d2 / L, N, n_quad)
     return BeamActionSystem(Lambda=Lam, B=B, omega_1=omega_1, load=load, K=K, N=N)
@@ -254,19 +241,13 @@ def uniform_beam_system(p: float, K: float, N: int, omega_1: float = 1.0) -> Bea
     ----------
     Beal (1965), eq. (4); Tech Memo 104, eq. (4.1-1).
     """
-    p = _check_nonneg("p", p)
-    K = _check_nonneg("K", K)
-    N = _check_count("N", N, 0)
-    omega_1 = _check_positive("omega_1", omega_1)
+    p = nonnegative("p", p)
+    K = nonnegative("K", K)
+    N = count("N", N, 0)
+    omega_1 = positive("omega_1", omega_1)
     load = 2.0 * p / beam.free_free_eigenvalues(1)[0] ** 4  # P/(M L omega_1^2) = 2 p / lambda_1^4
     Lam, B = _assemble(load, K, 3.0, 1.0, N)
     return BeamActionSystem(Lambda=Lam, B=B, omega_1=omega_1, load=load, K=K, N=N)
-
-
-def _check_count(name: str, value: int, low: int, high: int = 500) -> int:
-    if isinstance(value, bool) or int(value) != value or not low <= int(value) <= high:
-        raise ValueError(f"{name} = {value!r}: must be an integer in {low}..{high}")
-    return int(value)
 
 
 def follower_flutter_load(n_modes: int = 12, p_max: float = 1000.0,
@@ -298,9 +279,9 @@ def follower_flutter_load(n_modes: int = 12, p_max: float = 1000.0,
     ----------
     Beal (1965), fig. 2 and table 1; Tech Memo 104, section 4.1 (ref. 11).
     """
-    n_modes = _check_count("n_modes", n_modes, 2, 200)
-    p_max = _check_positive("p_max", p_max)
-    rtol = _check_positive("rtol", rtol)
+    n_modes = count("n_modes", n_modes, 2, 200)
+    p_max = positive("p_max", p_max)
+    rtol = positive("rtol", rtol)
     G, phi0, dphi0, lam = _modal_integrals(n_modes)
     Lam = np.diag((lam / lam[0]) ** 4)
     Be = -(G + np.outer(phi0, dphi0)) * 2.0 / lam[0] ** 4  # elastic block per unit p, K = 0
@@ -507,8 +488,8 @@ def hill_exponents(system: BeamActionSystem, Omega: np.ndarray, gamma: np.ndarra
     ----------
     Tech Memo 104, eqs. (4.1-10)..(4.1-12); Bolotin (1964), sec. 7; Magnus & Winkler (1966).
     """
-    S = _check_count("S", S, 0)
-    chunk = _check_count("chunk", chunk, 1, 10**6)
+    S = count("S", S, 0)
+    chunk = count("chunk", chunk, 1, 10**6)
     Ob, gam, _ = _grid(Omega, gamma, system.omega_1)
     n = system.N + 1
     h = 2 * S + 1
@@ -660,11 +641,11 @@ def monodromy_exponents(system: BeamActionSystem, Omega: np.ndarray, gamma: np.n
     Bolotin (1964), sec. 2-3; Lawson (1967); Tech Memo 104, eqs. (4.1-10), (4.1-11).
     """
     Ob, gam, _ = _grid(Omega, gamma, system.omega_1)
-    step_phase = _check_positive("step_phase", step_phase)
-    chunk = _check_count("chunk", chunk, 1, 10**6)
+    step_phase = positive("step_phase", step_phase)
+    chunk = count("chunk", chunk, 1, 10**6)
     mu, Bt = _modal(system)
     if n_steps is not None:
-        steps = np.full(Ob.size, _check_count("n_steps", n_steps, 1, 10**7))
+        steps = np.full(Ob.size, count("n_steps", n_steps, 1, 10**7))
     else:
         steps = _auto_steps(mu, Bt, Ob, gam, step_phase)
     rho = _multipliers(mu, Bt, Ob, gam, steps, chunk)
@@ -835,11 +816,11 @@ def beam_action_analysis(Omega: np.ndarray, omega_1: float, mass: float, L: floa
     Tech Memo 104, eqs. (4.1-10)..(4.1-12); Bolotin (1964); Beal (1965).
     """
     system = beam_action_system(omega_1, mass, L, d2, I_cm, F0, K, N)
-    R = _check_count("R", R, 1, N + 1)
-    S = _check_count("S", S, 0)
+    R = count("R", R, 1, N + 1)
+    S = count("S", S, 0)
     gamma = float(gamma)
     Ob, gam, _ = _grid(Omega, gamma, system.omega_1)
-    n_hill = _check_count("n_hill", n_hill, 1, Ob.size)
+    n_hill = count("n_hill", n_hill, 1, Ob.size)
     red_m = reduced_exponents(monodromy_exponents(system, Ob * system.omega_1, gam))
     pick = np.unique(np.round(np.linspace(0, Ob.size - 1, n_hill)).astype(int))
     hill = hill_exponents(system, Ob[pick] * system.omega_1, gam[pick], S)

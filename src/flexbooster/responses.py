@@ -64,6 +64,7 @@ from .beam_action import (
     natural_branch,
     reduced_exponents,
 )
+from .checks import count, finite, positive
 from .geometry import mass_properties
 from .pitch import characteristic_exponent, mathieu_parameters, pitch_frequency
 from .shell_coefficients import ShellParameters, galerkin_coefficients, shell_parameters
@@ -103,26 +104,6 @@ _GAUSS = 8  # Gauss-Legendre nodes per step of the Duhamel integrator
 # --------------------------------------------------------------------------------------------
 # Checks
 # --------------------------------------------------------------------------------------------
-def _positive(name: str, value: Any) -> float:
-    value = float(value)
-    if not (np.isfinite(value) and value > 0.0):
-        raise ValueError(f"{name} = {value!r}: must be finite and > 0")
-    return value
-
-
-def _finite(name: str, value: Any) -> float:
-    value = float(value)
-    if not np.isfinite(value):
-        raise ValueError(f"{name} = {value!r}: must be finite")
-    return value
-
-
-def _count(name: str, value: Any, low: int, high: int = 500) -> int:
-    if isinstance(value, bool) or int(value) != value or not low <= int(value) <= high:
-        raise ValueError(f"{name} = {value!r}: must be an integer in {low}..{high}")
-    return int(value)
-
-
 def _times(tau: Any) -> np.ndarray:
     tau = np.atleast_1d(np.asarray(tau, dtype=float))
     if tau.ndim != 1 or tau.size == 0 or not np.all(np.isfinite(tau)) or np.any(tau < 0):
@@ -350,7 +331,7 @@ def pitch_beam_parameters(case: Any, Omega_bar: Any, N: int, S: int, R: int,
     a, q = mathieu_parameters(x * cp["omega_1"], cp["omega_psi"], cp["gamma"])  # (4.2-4)
     beta = np.real(characteristic_exponent(a, q, beta_method))
     _, alpha = _beam_exponents(cp, x, N, S)
-    R = _count("R", R, 1, N + 1)
+    R = count("R", R, 1, N + 1)
     return beta, np.real(alpha[:, :R])
 
 
@@ -407,18 +388,18 @@ def make_excitation(case: Any, Omega: float, psi0: float = 0.01, beam_amplitude:
     Tech Memo 104, eqs. (4.1-10)..(4.1-12), (4.2-6)..(4.2-9).
     """
     cp = case_parameters(case)
-    N = _count("N", case.truncation.N if N is None else N, 0)
-    S = _count("S", case.truncation.S if S is None else S, 0)
+    N = count("N", case.truncation.N if N is None else N, 0)
+    S = count("S", case.truncation.S if S is None else S, 0)
     return _make_excitation(cp, Omega, psi0, beam_amplitude, beam_mode, N, S, beta_method)
 
 
 def _make_excitation(cp: dict, Omega: float, psi0: float, beam_amplitude: float,
                      beam_mode: int, N: int, S: int, beta_method: str,
                      beam_pre: tuple | None = None) -> Excitation:
-    Omega = _positive("Omega", Omega)
-    psi0 = _finite("psi0", psi0)
-    beam_amplitude = _finite("beam_amplitude", beam_amplitude)
-    beam_mode = _count("beam_mode", beam_mode, 1, N + 1)
+    Omega = positive("Omega", Omega)
+    psi0 = finite("psi0", psi0)
+    beam_amplitude = finite("beam_amplitude", beam_amplitude)
+    beam_mode = count("beam_mode", beam_mode, 1, N + 1)
     Ob = Omega / cp["omega_1"]
     a, q = mathieu_parameters(np.array([Omega]), cp["omega_psi"], cp["gamma"])
     a, q = float(a[0]), float(q[0])
@@ -580,11 +561,11 @@ def modal_groups(p: ShellParameters, M: tuple[int, int], Nk: tuple[int, int], N:
     Tech Memo 104, eqs. (3.0-2), (3.0-3), (4.1-3..7), (5.2-1), (5.3-4), (5.4-3), (5.4-4),
     (5.4-7), (5.4-9).
     """
-    N = _count("N", N, 0)
+    N = count("N", N, 0)
     out: list[ModalGroup] = []
     for d in (1, 2):
-        Md = _count(f"M{d}", M[d - 1], 1)
-        Nd = _count(f"N{d}", Nk[d - 1], 1)
+        Md = count(f"M{d}", M[d - 1], 1)
+        Nd = count(f"N{d}", Nk[d - 1], 1)
         out.extend(_cylinder_groups(p, d, Md, Nd, N, phase))
     return tuple(out)
 
@@ -1183,7 +1164,7 @@ def displacement_fields(result: SimulationResult, xi: Any, theta: Any,
     theta = np.atleast_1d(np.asarray(theta, dtype=float))
     if np.any(xi < p.a - 1e-12) or np.any(xi > p.b + 1e-12):
         raise ValueError(f"xi: must lie in [a, b] = [{p.a}, {p.b}]")
-    order = _count("order", order, 0, 4)
+    order = count("order", order, 0, 4)
     if part not in ("total", "shell", "beam"):
         raise ValueError(f"part = {part!r}: must be 'total', 'shell' or 'beam'")
     idx = np.arange(result.tau.size) if instants is None else np.atleast_1d(instants)
@@ -1258,7 +1239,7 @@ def edge_conditions(result: SimulationResult, n_theta: int = 24) -> dict[str, fl
     """
     p = result.params
     kmax = int(result.k.max()) if result.k.size else 1
-    n_theta = max(_count("n_theta", n_theta, 4, 4096), 2 * kmax + 8)
+    n_theta = max(count("n_theta", n_theta, 4, 4096), 2 * kmax + 8)
     th = np.linspace(0.0, 2.0 * np.pi, n_theta, endpoint=False)
     out: dict[str, float] = {}
 
@@ -1470,14 +1451,14 @@ def simulate(case: Any, Omega: float, tau_max: float, n_out: int = 401,
     ----------
     Tech Memo 104, sections 4, 5, 6 (eqs. 4.1-10/11, 4.2-6, 5.2-1, 5.3-4, 6.1-1..4, 6.2).
     """
-    Omega = _positive("Omega", Omega)
-    tau_max = _positive("tau_max", tau_max)
+    Omega = positive("Omega", Omega)
+    tau_max = positive("tau_max", tau_max)
     if tau_max > 1e6:
         raise ValueError(f"tau_max = {tau_max!r}: must be <= 1e6")
-    n_out = _count("n_out", n_out, 2, 100_000)
-    n_snapshots = _count("n_snapshots", n_snapshots, 0, 50)
-    n_xi = _count("n_xi", n_xi, 2, 2001)
-    n_theta = _count("n_theta", n_theta, 2, 2001)
+    n_out = count("n_out", n_out, 2, 100_000)
+    n_snapshots = count("n_snapshots", n_snapshots, 0, 50)
+    n_xi = count("n_xi", n_xi, 2, 2001)
+    n_theta = count("n_theta", n_theta, 2, 2001)
     if method not in ("closed-form", "duhamel", "DOP853", "Radau"):
         raise ValueError(f"method = {method!r}: must be 'closed-form', 'duhamel', 'DOP853' "
                          "or 'Radau'")
@@ -1496,7 +1477,7 @@ def simulate(case: Any, Omega: float, tau_max: float, n_out: int = 401,
             if d == g.cylinder and comp in g.components:
                 hit = np.flatnonzero((g.j == jj) & (g.k == kk))
                 if hit.size:
-                    x0[hit[0], g.components.index(comp)] = _finite("initial", value)
+                    x0[hit[0], g.components.index(comp)] = finite("initial", value)
                     used.add((d, jj, kk, comp))
         keep = g.forced() | np.any(x0 != 0.0, axis=1)
         if not keep.any():
@@ -1642,8 +1623,8 @@ def secular_growth(case: Any, Omega: float, cylinder: int, j: int, k: int, branc
     Tech Memo 104, section 7.1 (vanishing denominators = unbounded displacements); Bolotin
     (1964) ch. 1; reading guide section 5.
     """
-    tau_max = _positive("tau_max", tau_max)
-    n_out = _count("n_out", n_out, 16, 200_000)
+    tau_max = positive("tau_max", tau_max)
+    n_out = count("n_out", n_out, 16, 200_000)
     g, ex, branch = _single_mode(case, Omega, cylinder, j, k, branch, psi0, beam_amplitude,
                                  beam_mode, N, S, phase)
     d = g.cylinder
@@ -1675,9 +1656,9 @@ def secular_growth(case: Any, Omega: float, cylinder: int, j: int, k: int, branc
 def _single_mode(case: Any, Omega: float, cylinder: int, j: int, k: int, branch: int,
                  psi0: float, beam_amplitude: float, beam_mode: int, N: int | None,
                  S: int | None, phase: str) -> tuple[ModalGroup, Excitation, int]:
-    d = _count("cylinder", cylinder, 1, 2)
-    j = _count("j", j, 0)
-    k = _count("k", k, 0)
+    d = count("cylinder", cylinder, 1, 2)
+    j = count("j", j, 0)
+    k = count("k", k, 0)
     if j == 0 and k == 0:
         raise ValueError("j = k = 0: the rigid mode U_00 has no frequency (6.2.1)")
     cp = case_parameters(case)
@@ -1686,7 +1667,7 @@ def _single_mode(case: Any, Omega: float, cylinder: int, j: int, k: int, branch:
     groups = _cylinder_groups(cp["shell"], d, max(j, 1), max(k, 1), ex.N, phase)
     g = [x for x in groups if x.kind == kind][0]
     g = g.select(np.flatnonzero((g.j == j) & (g.k == k)))
-    branch = _count("branch", branch, 1, g.mass.shape[-1])
+    branch = count("branch", branch, 1, g.mass.shape[-1])
     return g, ex, branch
 
 
@@ -1766,8 +1747,8 @@ def secular_rates(case: Any, rows: list[dict], psi0: float = 0.01,
     Tech Memo 104, sections 6.2, 7.1; reading guide section 5.
     """
     cp = case_parameters(case)
-    N = _count("N", case.truncation.N if N is None else N, 0)
-    S = _count("S", case.truncation.S if S is None else S, 0)
+    N = count("N", case.truncation.N if N is None else N, 0)
+    S = count("S", case.truncation.S if S is None else S, 0)
     if not rows:
         return []
     Om = np.array([float(x["Omega_rad_s"]) for x in rows])

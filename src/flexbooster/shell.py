@@ -38,6 +38,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from .beam import first_bending_frequency
+from .checks import count
 from .shell_coefficients import (
     CylinderCoefficients,
     ShellParameters,
@@ -161,11 +162,7 @@ class ShellFrequencies:
 
 
 def _check_count(name: str, value: int) -> int:
-    if isinstance(value, bool) or not isinstance(value, int | np.integer):
-        raise ValueError(f"{name} = {value!r}: must be an integer between 1 and {MAX_COUNT}")
-    if not 1 <= value <= MAX_COUNT:
-        raise ValueError(f"{name} = {value!r}: must be an integer between 1 and {MAX_COUNT}")
-    return int(value)
+    return count(name, value, 1, MAX_COUNT)
 
 
 def _check_method(method: str) -> None:

@@ -53,6 +53,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.special import roots_legendre
 
+from .checks import positive
 from .geometry import mass_properties
 
 __all__ = [
@@ -137,11 +138,6 @@ class ShellParameters:
         return {k: float(v) for k, v in self.__dict__.items()}
 
 
-def _check_positive(name: str, value: float) -> None:
-    if not (np.isfinite(value) and value > 0.0):
-        raise ValueError(f"{name} = {value!r}: must be a finite positive number")
-
-
 def shell_parameters(
     R1: float,
     L1: float,
@@ -187,7 +183,7 @@ def shell_parameters(
     """
     for name, value in (("R1", R1), ("L1", L1), ("R2", R2), ("L2", L2), ("h", h), ("E", E),
                         ("rho", rho), ("omega_1", omega_1)):
-        _check_positive(name, value)
+        positive(name, value)
     if not (np.isfinite(nu) and 0.0 <= nu < 0.5):
         raise ValueError(f"nu = {nu!r}: must satisfy 0 <= nu < 0.5")
     if not h < min(R1, R2):

@@ -1,0 +1,71 @@
+"""Argument checks shared by the numerical modules.
+
+Each check returns the value converted (float or int) or raises ``ValueError`` with a message
+that names the parameter, the value and the rule, e.g. ``"N = 2.5: must be an integer in
+1..500"``.  Numerical core: imports numpy only.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+__all__ = ["count", "finite", "nonnegative", "positive"]
+
+
+def finite(name: str, value: Any) -> float:
+    """``value`` as a finite float.
+
+    Parameters
+    ----------
+    name : str
+        Parameter name for the message.
+    value : float-like
+        The value to check.
+
+    Returns
+    -------
+    float
+    """
+    try:
+        result = float(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} = {value!r}: must be a finite number") from None
+    if not np.isfinite(result):
+        raise ValueError(f"{name} = {value!r}: must be finite")
+    return result
+
+
+def positive(name: str, value: Any) -> float:
+    """``value`` as a finite float > 0 (see :func:`finite`)."""
+    result = finite(name, value)
+    if result <= 0.0:
+        raise ValueError(f"{name} = {value!r}: must be finite and > 0")
+    return result
+
+
+def nonnegative(name: str, value: Any) -> float:
+    """``value`` as a finite float >= 0 (see :func:`finite`)."""
+    result = finite(name, value)
+    if result < 0.0:
+        raise ValueError(f"{name} = {value!r}: must be finite and >= 0")
+    return result
+
+
+def count(name: str, value: Any, low: int = 1, high: int | None = 500) -> int:
+    """``value`` as an int in ``low..high`` (no upper bound when ``high`` is None).
+
+    Only Python or numpy integers are accepted (not booleans, not floats such as 2.0).
+    """
+    rule = (
+        f"must be an integer in {low}..{high}"
+        if high is not None
+        else f"must be an integer >= {low}"
+    )
+    if isinstance(value, bool | np.bool_) or not isinstance(value, int | np.integer):
+        raise ValueError(f"{name} = {value!r}: {rule}")
+    result = int(value)
+    if result < low or (high is not None and result > high):
+        raise ValueError(f"{name} = {value!r}: {rule}")
+    return result
