@@ -146,3 +146,20 @@ def test_same_case_in_si_and_inch_pound_units(case_dict):
         solved = key.startswith((".beam_action.", ".stability."))
         rel = 1e-8 if solved else 1e-12
         assert b_[key] == pytest.approx(value, rel=rel, abs=1e-300 if not solved else 1e-12), key
+
+
+def test_oversized_stability_table_becomes_a_warning(case_dict, monkeypatch):
+    """A truncation whose table would not fit in memory: the analysis goes on without the table
+    and says so (warning in the results), instead of crashing."""
+    from flexbooster import stability
+
+    original = stability.unstable_frequencies
+
+    def small_limit(*args, **kwargs):
+        return original(*args, **kwargs, max_roots=100)
+
+    monkeypatch.setattr("flexbooster.analysis.unstable_frequencies", small_limit)
+    res = analyze(load_case(case_dict))
+    assert res.stability is None
+    codes = [w["code"] for w in res.to_dict()["warnings"]]
+    assert codes == ["stability-skipped"]

@@ -353,3 +353,9 @@ def test_default_case_same_roots_as_brute_force_on_sampled_curves():
             np.testing.assert_allclose(ours, sorted(brute), rtol=1e-9)
             checked += len(brute)
     assert checked > 100
+
+
+def test_too_many_roots_is_a_clear_error_not_a_memory_crash():
+    modes = small_modes()
+    with pytest.raises(ValueError, match=r"exceed max_roots = 10; reduce the shell modes"):
+        unstable_frequencies(modes, params, RANGE, OMEGA_1, R, S, gamma=0.05, K=0.5, max_roots=10)

@@ -11,6 +11,7 @@ memo's range (4.2-5).
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -37,6 +38,7 @@ __all__ = [
     "stability_parameters",
     "analyze",
     "SCHEMA_VERSION",
+    "STAGES",
     "THIN_SHELL_LIMIT",
     "MATHIEU_A_RANGE",
     "MATHIEU_Q_MAX",
@@ -44,6 +46,14 @@ __all__ = [
 
 #: Version of the layout of results.json; bumped when a key changes meaning or disappears.
 SCHEMA_VERSION = "1.0"
+#: The stages of :func:`analyze`, in order, as passed to its ``progress`` callback.
+STAGES = (
+    "mass properties and beam modes",
+    "rigid-body pitch",
+    "shell frequencies",
+    "beam action",
+    "unstable thrust frequencies",
+)
 #: Thin-shell theory (Donnell, memo 2.3) is trusted for h/R up to 1/20.
 THIN_SHELL_LIMIT = 1.0 / 20.0
 #: The memo's range for the Mathieu parameters (eq. 4.2-5): 0 < a < 1, 0 < q <= 0.05.
@@ -260,7 +270,12 @@ def stability_parameters(
     return params
 
 
-def analyze(case: Case, beam_action: bool = True, stability: bool = True) -> Results:
+def analyze(
+    case: Case,
+    beam_action: bool = True,
+    stability: bool = True,
+    progress: Callable[[str], None] | None = None,
+) -> Results:
     """Run the analysis of a validated case.
 
     Parameters
@@ -271,6 +286,9 @@ def analyze(case: Case, beam_action: bool = True, stability: bool = True) -> Res
         Compute the beam-action exponents alpha_r (memo 4.1; the slowest stage).
     stability : bool
         Compute the table of unstable thrust frequencies (memo 7.3); needs ``beam_action``.
+    progress : callable, optional
+        Called with the name of each stage (:data:`STAGES`) as it starts, e.g. to drive a
+        progress bar; stages that are not computed are skipped.
 
     Returns
     -------
@@ -278,20 +296,25 @@ def analyze(case: Case, beam_action: bool = True, stability: bool = True) -> Res
         Mass properties, omega_1, beam modes, rigid-body pitch, shell frequencies, beam action,
         the unstable thrust frequencies and the warnings.
     """
+    step = progress or (lambda stage: None)
     b, t, n = case.booster, case.thrust, case.truncation
     c1, c2 = b.cylinder1, b.cylinder2
+    step(STAGES[0])
     mass = mass_properties(c1.radius, c1.half_length, c2.radius, c2.half_length, b.thickness, b.rho)
     omega_1 = first_bending_frequency(mass.L, c1.radius, b.E, b.rho)
     omega_psi = pitch_frequency(case.F0, mass.d2, t.K, mass.I_cm)
     groups = dimensionless_groups(
         mass.L, c1.radius, c2.radius, b.thickness, b.E, b.rho, omega_1, case.T0
     )
-    Omega = case.omega_grid()
-    pitch = pitch_analysis(Omega, omega_psi, t.gamma)
     beam = beam_modes(n.N, mass.L, c1.radius, b.E, b.rho)
+    Omega = case.omega_grid()
+    step(STAGES[1])
+    pitch = pitch_analysis(Omega, omega_psi, t.gamma)
+    step(STAGES[2])
     shell = natural_frequencies(case)
     action = None
     if beam_action:
+        step(STAGES[3])
         action = beam_action_analysis(
             Omega,
             omega_1,
@@ -307,12 +330,17 @@ def analyze(case: Case, beam_action: bool = True, stability: bool = True) -> Res
             n.R,
         )
     table = None
+    extra: list[AnalysisWarning] = []
     if stability and action is not None:
+        step(STAGES[4])
         modes = ShellModes(shell.cylinder, shell.j, shell.k, shell.branch, shell.omega_bar)
         params = stability_parameters(omega_psi, t.gamma, omega_1, action)
-        table = unstable_frequencies(
-            modes, params, (t.omega_min, t.omega_max), omega_1, n.R, n.S, t.gamma, t.K
-        )
+        try:
+            table = unstable_frequencies(
+                modes, params, (t.omega_min, t.omega_max), omega_1, n.R, n.S, t.gamma, t.K
+            )
+        except ValueError as exc:  # too many roots for memory: the rest of the analysis stands
+            extra.append(AnalysisWarning("stability-skipped", "truncation", str(exc)))
     return Results(
         case=case,
         mass=mass,
@@ -324,5 +352,5 @@ def analyze(case: Case, beam_action: bool = True, stability: bool = True) -> Res
         shell=shell,
         beam_action=action,
         stability=table,
-        warnings=tuple(_warnings(case, Omega, pitch.a, pitch.q, omega_psi)),
+        warnings=tuple(_warnings(case, Omega, pitch.a, pitch.q, omega_psi) + extra),
     )

@@ -45,6 +45,7 @@ def write_bytes_atomic(path: str | Path, data: bytes) -> Path:
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".part", dir=path.parent)
     try:
+        os.chmod(tmp, 0o666 & ~_umask())  # mkstemp makes 0600; give the usual permissions
         with os.fdopen(fd, "wb") as handle:
             handle.write(data)
             handle.flush()
@@ -54,6 +55,12 @@ def write_bytes_atomic(path: str | Path, data: bytes) -> Path:
         Path(tmp).unlink(missing_ok=True)
         raise
     return path
+
+
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
 
 
 def write_text_atomic(path: str | Path, text: str) -> Path:
@@ -111,7 +118,8 @@ def write_json_atomic(path: str | Path, data: Mapping[str, Any]) -> Path:
         The destination path.
     """
     check_finite(data)
-    return write_text_atomic(path, json.dumps(data, indent=2, allow_nan=False) + "\n")
+    # compact: results hold long arrays, which indentation would put one number per line
+    return write_text_atomic(path, json.dumps(data, separators=(",", ":"), allow_nan=False) + "\n")
 
 
 def write_csv_atomic(path: str | Path, rows: Iterable[Mapping[str, Any]]) -> Path:

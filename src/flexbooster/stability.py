@@ -326,13 +326,38 @@ class StabilityTable:
         ]
 
     def to_dict(self) -> dict:
-        """JSON-ready: the rows, the counts and the warnings."""
+        """JSON-ready and compact: one list per column (the columns of :meth:`to_rows`)."""
+        rows = self.to_rows()
+        names = list(rows[0]) if rows else list(_COLUMNS)
         return {
             "count": len(self),
             "active": int(self.active.sum()),
-            "rows": self.to_rows(),
+            "columns": names,
+            "table": {name: [row[name] for row in rows] for name in names},
             "warnings": list(self.warnings),
         }
+
+
+_COLUMNS = (
+    "Omega_rad_s",
+    "Omega_hz",
+    "Omega_over_omega1",
+    "family",
+    "equation",
+    "also",
+    "cylinder",
+    "j",
+    "k",
+    "branch",
+    "i",
+    "p",
+    "r",
+    "s",
+    "shell_omega_bar",
+    "shell_rad_s",
+    "shell_hz",
+    "forcing",
+)
 
 
 ParamsFn = Callable[[np.ndarray], tuple[np.ndarray, np.ndarray]]
@@ -379,6 +404,7 @@ def unstable_frequencies(
     K: float,
     n_scan: int = 2001,
     tol: float = 1e-12,
+    max_roots: int = 4_000_000,
 ) -> StabilityTable:
     """All roots of the 13 families of stability equations in an Omega range.
 
@@ -402,6 +428,9 @@ def unstable_frequencies(
         Points of the geometric scan grid that brackets the roots.
     tol : float
         Residual to which each root is refined (units of omega_1).
+    max_roots : int
+        Largest number of roots computed (memory grows with it: about 0.5 kB per root); more
+        raise ``ValueError`` before any refinement.
 
     Returns
     -------
@@ -451,6 +480,12 @@ def unstable_frequencies(
         found_b.append(grid[interval + 1])
     if not found_c:
         return _empty(omega_1)
+    total = sum(x.size for x in found_c)
+    if total > max_roots:
+        raise ValueError(
+            f"stability table: {total} roots in the Omega range exceed max_roots = {max_roots}; "
+            "reduce the shell modes (M1, N1, M2, N2), R or S, or the Omega range"
+        )
     c = np.concatenate(found_c)
     t = np.concatenate(found_t)
     a = np.concatenate(found_a)
