@@ -5,7 +5,7 @@ PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
 OUT    ?= flexbooster-results
 
-.PHONY: run test lint bench clean venv
+.PHONY: run test lint bench clean venv test-browser
 
 venv: $(STAMP)
 
@@ -26,6 +26,17 @@ test: export OPENBLAS_NUM_THREADS = 1
 test: $(STAMP)
 	$(VENV)/bin/ruff check .
 	$(PY) -m pytest -q
+
+# The report in headless Chromium (not part of `make test`: CI has no browser).  Installs
+# Debian's chromium and chromium-driver (apt-get, as root or via sudo) and selenium (the
+# `browser` extra) into the venv.
+SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+test-browser: export OPENBLAS_NUM_THREADS = 1
+test-browser: $(STAMP)
+	command -v chromium >/dev/null && command -v chromedriver >/dev/null || \
+	  { $(SUDO) apt-get update && $(SUDO) apt-get install -y chromium chromium-driver; }
+	$(PY) -m pip install --quiet -e '.[test,browser]'
+	$(PY) -m pytest -q -rs tests/test_browser.py tests/test_report.py
 
 bench: export OPENBLAS_NUM_THREADS = 1
 bench: $(STAMP)

@@ -30,6 +30,9 @@ def test_run_default_writes_results(tmp_path, capsys):
     names = {p.name for p in tmp_path.iterdir()}
     assert {"results.json", "shell-frequencies.csv", "unstable-frequencies.csv"} <= names
     assert {"ince-strutt.svg", "ince-strutt.png", "campbell.svg"} <= names
+    assert {"report.html", "nodal-patterns.svg"} <= names
+    report = (tmp_path / "report.html").read_text()
+    assert report.count("<svg") == 6 and 'id="unstable-frequencies"' in report
     assert not [n for n in names if n.endswith(".part")]  # no temporary leftovers
 
 
@@ -132,3 +135,48 @@ def test_simulate_bad_input(capsys, args, words):
     assert run_cli(["simulate", *args]) == 2
     err = capsys.readouterr().err
     assert words in err and "Traceback" not in err
+
+
+def test_format_json_is_results_json(tmp_path, capsys):
+    """--format json prints exactly what results.json holds, and nothing else, on stdout."""
+    code = run_cli(["run", "--format", "json", "--no-figures", "-o", str(tmp_path)])
+    assert code == 0
+    out, err = capsys.readouterr()
+    printed = json.loads(out)  # the whole of stdout is one JSON document
+    assert printed == json.loads((tmp_path / "results.json").read_text())
+    assert "wrote" in err and "wrote" not in out
+
+
+def test_quiet_prints_nothing(tmp_path, capsys):
+    assert run_cli(["run", "-q", "--no-figures", "-o", str(tmp_path)]) == 0
+    assert capsys.readouterr() == ("", "")
+    assert (tmp_path / "report.html").exists()  # the work is still done
+    assert run_cli(["stability", "-q", "--omega-min", "100", "--omega-max", "150",
+                    "-o", str(tmp_path)]) == 0
+    assert capsys.readouterr() == ("", "")
+
+
+def test_bad_format_is_a_usage_error(capsys):
+    assert run_cli(["run", "--format", "xml"]) == 2
+    assert "xml" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("argv", [["--help"], ["run", "--help"], ["stability", "--help"],
+                                  ["simulate", "--help"], ["init", "--help"]])
+def test_help_has_examples_and_exit_codes(capsys, argv):
+    assert run_cli(argv) == 0
+    out = capsys.readouterr().out
+    assert "Example" in out and "flexbooster " in out.split("Example", 1)[1]
+    assert "Exit codes" in out and "130" in out
+
+
+def test_progress_reports_every_stage_in_order():
+    from flexbooster.analysis import STAGES, analyze
+    from flexbooster.case import default_case
+
+    seen = []
+    analyze(default_case(), progress=seen.append)
+    assert seen == list(STAGES)
+    seen.clear()
+    analyze(default_case(), beam_action=False, progress=seen.append)
+    assert seen == list(STAGES[:3])  # the skipped stages are not announced

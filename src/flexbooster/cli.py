@@ -1,13 +1,19 @@
-"""Command line: ``flexbooster run``, ``flexbooster init``.
+"""Command line: ``flexbooster run``, ``stability``, ``simulate``, ``init``.
 
-Exit codes: 0 success; 1 an unexpected internal error; 2 invalid input (a one-line message
-naming the field, the value and the rule, no traceback); 130 interrupted.
+Exit codes: 0 success; 1 an unexpected internal error or a file that cannot be written;
+2 invalid input (a one-line message naming the field, the value and the rule, no traceback);
+130 interrupted.  ``run`` and ``stability`` show progress bars (rich, on standard error, only on
+a terminal), ``--quiet`` silences everything but errors and ``--format json`` prints
+``results.to_dict()`` as JSON on standard output.
 """
 
 from __future__ import annotations
 
+import json
 import os
 import sys
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from pathlib import Path
 
 import click
@@ -26,16 +32,32 @@ def _fail(message: str, code: int) -> None:
     sys.exit(code)
 
 
-@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+_EXIT_CODES = """\b
+Exit codes:
+  0    success
+  1    internal error, or an output file that cannot be written
+  2    invalid input: one line naming the field, the value and the rule
+  130  interrupted (Ctrl-C)"""
+
+
+@click.group(
+    context_settings={"help_option_names": ["-h", "--help"], "max_content_width": 100},
+    epilog=_EXIT_CODES,
+)
 @click.version_option(__version__, prog_name="flexbooster")
 def cli() -> None:
-    """Dynamic stability of a flexible two-cylinder booster under a gimbaled, pulsating thrust.
+    """Dynamic stability of a flexible two-cylinder booster under a gimbaled, pulsating thrust
+    (Tech Memo 104): mass properties, beam and shell frequencies, rigid-body and beam stability
+    and the thrust frequencies at which the structure goes unstable.
 
     \b
     Examples:
-      flexbooster run                      # analyse the embedded default case
-      flexbooster init my-booster.toml     # write the default case to edit
-      flexbooster run my-booster.toml -o results/
+      flexbooster run                         # the default case -> flexbooster-results/
+      flexbooster init my-booster.toml        # write the default case, commented, to edit
+      flexbooster run my-booster.toml -o out  # summary; out/results.json, CSV, report.html
+      flexbooster run -q --format json > r.json   # results as JSON on standard output
+      flexbooster stability --omega-min 10 --omega-max "20 Hz"
+      flexbooster simulate --omega 300 --tau-max 50
     """
 
 
@@ -59,35 +81,118 @@ _OUTPUT = click.option(
 )
 
 
-@cli.command()
+_QUIET = click.option(
+    "-q", "--quiet", is_flag=True, help="Print nothing but errors (no summary, no progress)."
+)
+_FORMAT = click.option(
+    "--format",
+    "fmt",
+    type=click.Choice(["table", "json"]),
+    default="table",
+    show_default=True,
+    help="table: readable summary; json: results.to_dict() as JSON on standard output.",
+)
+
+
+@contextmanager
+def _progress(stages: int, quiet: bool) -> Iterator[Callable[[str], None]]:
+    """A rich progress bar on standard error (a terminal only), advanced once per stage."""
+    from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
+
+    console = Console(stderr=True)
+    bar = Progress(
+        TextColumn("[bold]{task.description:<32}"),
+        BarColumn(),
+        TextColumn("{task.completed}/{task.total}"),
+        TimeElapsedColumn(),
+        console=console,
+        transient=True,
+        disable=quiet or not console.is_terminal,
+    )
+    with bar:
+        task = bar.add_task("starting", total=stages)
+        started = [False]
+
+        def step(stage: str) -> None:
+            if started[0]:
+                bar.advance(task)
+            started[0] = True
+            bar.update(task, description=stage)
+
+        yield step
+        bar.update(task, completed=stages)
+
+
+def _report(results, fmt: str, quiet: bool, printer: Callable) -> None:
+    """The summary (table) or the JSON document (json) on standard output."""
+    if fmt == "json":
+        from .io import check_finite
+
+        data = results.to_dict()
+        check_finite(data)
+        click.echo(json.dumps(data, indent=2, allow_nan=False))
+    elif not quiet:
+        printer(results, Console())
+
+
+def _wrote(paths, fmt: str, quiet: bool) -> None:
+    if not quiet:
+        for path in paths:
+            click.echo(f"wrote {path}", err=fmt == "json")
+
+
+@cli.command(epilog=_EXIT_CODES)
 @_CASE_ARG
 @_OUTPUT
 @click.option("--no-figures", is_flag=True, help="Do not draw the figures (faster).")
-def run(case_file: Path | None, output: Path, no_figures: bool) -> None:
+@_QUIET
+@_FORMAT
+def run(case_file: Path | None, output: Path, no_figures: bool, quiet: bool, fmt: str) -> None:
     """Analyse CASE_FILE (TOML; the embedded default case if omitted).
 
-    Prints a summary and writes OUTPUT/results.json, the CSV tables and the figures (each
+    Prints a summary and writes OUTPUT/results.json, the CSV tables, the figures and
+    OUTPUT/report.html, one self-contained page to read in a browser or send (each file is
     written to a temporary name and renamed, so an interrupted run never leaves a half-written
     file).
+
+    \b
+    Examples:
+      flexbooster run                        # default case -> flexbooster-results/report.html
+      flexbooster run my.toml -o out/ --no-figures
+      flexbooster run -q --format json | python -m json.tool | head
     """
-    from .analysis import analyze
-    from .outputs import write_outputs
+    from .analysis import STAGES, analyze
+    from .outputs import OUTPUT_STAGES, write_outputs
     from .summary import print_summary
 
-    results = analyze(_load(case_file))
-    print_summary(results, Console())
-    for path in write_outputs(results, output, figures=not no_figures):
-        click.echo(f"wrote {path}")
+    case = _load(case_file)
+    with _progress(len(STAGES) + len(OUTPUT_STAGES), quiet) as step:
+        results = analyze(case, progress=step)
+        paths = write_outputs(results, output, figures=not no_figures, progress=step)
+    _report(results, fmt, quiet, print_summary)
+    _wrote(paths, fmt, quiet)
 
 
-@cli.command()
+@cli.command(epilog=_EXIT_CODES)
 @_CASE_ARG
 @click.option("--omega-min", required=True, help='Lowest Omega, e.g. 10 or "2 Hz" (rad/s bare).')
 @click.option("--omega-max", required=True, help="Highest Omega (rad/s if no unit).")
 @_OUTPUT
-def stability(case_file: Path | None, omega_min: str, omega_max: str, output: Path) -> None:
-    """Unstable thrust frequencies (memo 7.3) of CASE_FILE for Omega in [OMEGA_MIN, OMEGA_MAX]."""
-    from .analysis import analyze
+@_QUIET
+@_FORMAT
+def stability(
+    case_file: Path | None, omega_min: str, omega_max: str, output: Path, quiet: bool, fmt: str
+) -> None:
+    """Unstable thrust frequencies (memo 7.3) of CASE_FILE for Omega in [OMEGA_MIN, OMEGA_MAX].
+
+    Writes OUTPUT/unstable-frequencies.csv.
+
+    \b
+    Examples:
+      flexbooster stability --omega-min 100 --omega-max "20 Hz"
+      flexbooster stability my.toml --omega-min 5 --omega-max 500 -o out/
+    """
+    from .analysis import STAGES, analyze
     from .case import load_case
     from .io import write_csv_atomic
     from .summary import print_stability
@@ -100,13 +205,15 @@ def stability(case_file: Path | None, omega_min: str, omega_max: str, output: Pa
 
     data = _load(case_file).model_dump(exclude_none=True)
     data["thrust"].update(omega_min=number(omega_min), omega_max=number(omega_max))
-    results = analyze(load_case(data))
-    print_stability(results, Console())
+    case = load_case(data)
+    with _progress(len(STAGES), quiet) as step:
+        results = analyze(case, progress=step)
+    _report(results, fmt, quiet, print_stability)
     path = write_csv_atomic(output / "unstable-frequencies.csv", results.stability.to_rows())
-    click.echo(f"wrote {path}")
+    _wrote([path], fmt, quiet)
 
 
-@cli.command()
+@cli.command(epilog=_EXIT_CODES)
 @_CASE_ARG
 @click.option(
     "--omega", required=True, help='Thrust frequency Omega, e.g. 300 or "50 Hz" (rad/s bare).'
@@ -126,6 +233,10 @@ def simulate(
 
     Writes OUTPUT/time-histories.csv, OUTPUT/simulation.json and figures of the modal
     amplitudes and of the deformed booster at a few instants.
+
+    \b
+    Example:
+      flexbooster simulate --omega "50 Hz" --tau-max 100 -o sim/
     """
     from .io import write_csv_atomic, write_json_atomic
     from .outputs import save_figure
@@ -165,7 +276,7 @@ def simulate(
         click.echo(f"wrote {path}")
 
 
-@cli.command()
+@cli.command(epilog=_EXIT_CODES)
 @click.argument(
     "path",
     required=False,
@@ -174,7 +285,12 @@ def simulate(
 )
 @click.option("--force", is_flag=True, help="Overwrite an existing file.")
 def init(path: Path, force: bool) -> None:
-    """Write the embedded default case, with a comment on every field, to PATH."""
+    """Write the embedded default case, with a comment on every field, to PATH.
+
+    \b
+    Example:
+      flexbooster init my-booster.toml && flexbooster run my-booster.toml
+    """
     from .case import default_case_text
     from .io import write_text_atomic
 

@@ -6,6 +6,7 @@ A thin layer over :mod:`flexbooster.io` (atomic writes) and :mod:`flexbooster.pl
 from __future__ import annotations
 
 import io as _io
+from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -15,7 +16,10 @@ from .io import write_bytes_atomic, write_csv_atomic, write_json_atomic, write_t
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
-__all__ = ["write_outputs", "save_figure", "make_figures", "figure_svgs"]
+__all__ = ["OUTPUT_STAGES", "write_outputs", "save_figure", "make_figures", "figure_svgs"]
+
+#: The stages of :func:`write_outputs`, as passed to its ``progress`` callback.
+OUTPUT_STAGES = ("results.json and CSV", "figures", "report.html")
 
 
 def save_figure(fig, path_stem: Path, formats: tuple[str, ...] = ("svg", "png")) -> list[Path]:
@@ -43,7 +47,12 @@ def save_figure(fig, path_stem: Path, formats: tuple[str, ...] = ("svg", "png"))
     return paths
 
 
-def write_outputs(results: Results, folder: str | Path, figures: bool = True) -> list[Path]:
+def write_outputs(
+    results: Results,
+    folder: str | Path,
+    figures: bool = True,
+    progress: Callable[[str], None] | None = None,
+) -> list[Path]:
     """Write every output of an analysis into ``folder``.
 
     Parameters
@@ -54,6 +63,8 @@ def write_outputs(results: Results, folder: str | Path, figures: bool = True) ->
         Output folder (created if needed).
     figures : bool
         Also draw and save the figures (SVG and PNG); the report then embeds them.
+    progress : callable, optional
+        Called with the name of each stage (:data:`OUTPUT_STAGES`) as it starts.
 
     Returns
     -------
@@ -63,7 +74,9 @@ def write_outputs(results: Results, folder: str | Path, figures: bool = True) ->
     """
     from .report import write_report
 
+    step = progress or (lambda stage: None)
     folder = Path(folder)
+    step(OUTPUT_STAGES[0])
     written = [write_json_atomic(folder / "results.json", results.to_dict())]
     written.append(write_csv_atomic(folder / "shell-frequencies.csv", results.shell.to_rows()))
     if results.stability is not None:
@@ -72,22 +85,32 @@ def write_outputs(results: Results, folder: str | Path, figures: bool = True) ->
         )
     svgs: dict[str, str] = {}
     if figures:
+        step(OUTPUT_STAGES[1])
         for name, fig in make_figures(results).items():
             svg, png = _render(fig)
             svgs[name] = svg
             written.append(write_text_atomic(folder / f"{name}.svg", svg))
             written.append(write_bytes_atomic(folder / f"{name}.png", png))
+    step(OUTPUT_STAGES[2])
     written.append(write_report(results, folder / "report.html", svgs))
     return written
 
 
 def _render(fig) -> tuple[str, bytes]:
-    """SVG text (text kept as text, reproducible ids) and PNG bytes of a figure."""
+    """SVG text (reproducible ids) and PNG bytes of a figure."""
     import matplotlib
+    from matplotlib.collections import LineCollection, QuadMesh
 
-    with matplotlib.rc_context({"svg.fonttype": "none", "svg.hashsalt": "flexbooster"}):
+    for ax in fig.axes:  # dense meshes and line bundles as an embedded image: small, fast SVG
+        for artist in ax.collections:
+            if isinstance(artist, QuadMesh | LineCollection):
+                artist.set_rasterized(True)
+        if len(ax.lines) > 40:  # e.g. the Campbell diagram's hundreds of excitation curves
+            for line in ax.lines:
+                line.set_rasterized(True)
+    with matplotlib.rc_context({"svg.hashsalt": "flexbooster"}):
         svg = _io.StringIO()
-        fig.savefig(svg, format="svg", bbox_inches="tight")
+        fig.savefig(svg, format="svg", dpi=150, bbox_inches="tight")
     png = _io.BytesIO()
     fig.savefig(png, format="png", dpi=150, bbox_inches="tight")
     return svg.getvalue(), png.getvalue()
@@ -139,10 +162,12 @@ def make_figures(results: Results) -> dict[str, Figure]:
     }
     for d in (1, 2):
         figs[f"shell-frequencies-cylinder{d}"] = frequency_curves(results.shell, d)
-    figs["nodal-patterns"] = nodal_patterns(
+    n = results.case.truncation
+    figs["nodal-patterns"] = nodal_patterns(  # the modes of memo Fig. 4, within the truncation
         results.shell,
         (b.cylinder1.radius, b.cylinder2.radius),
         (b.cylinder1.half_length, b.cylinder2.half_length),
+        modes={1: (min(4, n.M1), min(3, n.N1)), 2: (min(6, n.M2), min(2, n.N2))},
     )
     if results.stability is not None and results.beam_action is not None:
         import numpy as np

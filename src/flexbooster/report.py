@@ -2,7 +2,7 @@
 
 A thin layer over :class:`~flexbooster.analysis.Results`: it formats what the analysis computed
 and computes nothing new.  The file has no external resource: the style sheet is inline, the
-figures are inline SVG (matplotlib, text kept as text), and there is no script.  Every text is
+figures are inline SVG (matplotlib; ids prefixed per figure), and there is no script.  Every text is
 escaped; a number that is not finite is shown as "n/a", never as NaN.  The markup is also
 well-formed XML (polyglot HTML5), which is what the tests check with a strict parser.
 
@@ -77,9 +77,10 @@ FIGURES: dict[str, tuple[str, str]] = {
     ),
     "nodal-patterns": (
         "nodal-patterns",
-        "Nodal patterns (memo Fig. 4) of the lowest mode with j, k >= 1 of each cylinder on the "
-        "unrolled surface: radial displacement sin(j pi s/2) cos(k theta) (eqs. 5.3-2d, 5.3-3d) "
-        "positive in red, negative in blue, nodal lines black.",
+        "Nodal patterns on the unrolled surfaces, as in memo Fig. 4: cylinder 1 j = 4, k = 3; "
+        "cylinder 2 j = 6, k = 2 (or the largest indices of the truncation), with the lowest "
+        "frequency of that (j, k).  Radial displacement sin(j pi s/2) cos(k theta) (eqs. 5.3-2d, "
+        "5.3-3d) positive in red, negative in blue; nodal lines black.",
     ),
     "campbell": (
         "campbell",
@@ -388,7 +389,7 @@ def _shell(results: Results, svgs: Mapping[str, str] | None) -> str:
 def _unstable(results: Results) -> str:
     st = results.stability
     if st is None:
-        return '<p class="note">Not computed.</p>'
+        return '<p class="note">Not computed (see the warnings).</p>'
     order = np.lexsort((st.Omega, ~np.asarray(st.active, dtype=bool)))  # active first
     shown = order[:MAX_UNSTABLE_ROWS]
     n_active = int(np.sum(st.active))
@@ -442,11 +443,11 @@ def _summary(results: Results) -> str:
          f"({_fmt(_hz(results.omega_1))} Hz)"),
         ("rigid-body pitch", p.verdict),
         ("beam action", "not computed" if ba is None else ba.verdict),
-        ("unstable thrust frequencies", "not computed" if st is None else
+        ("unstable thrust frequencies", "not computed (see the warnings)" if st is None else
          f"{len(st)} roots, {int(np.sum(st.active))} with active forcing"),
         ("warnings", str(len(results.warnings))),
     ]
-    return _table(("", ""), rows, (False, False))
+    return _table(("result", "value"), rows, (False, False))
 
 
 def render_report(results: Results, svgs: Mapping[str, str] | None = None,
@@ -488,7 +489,7 @@ def render_report(results: Results, svgs: Mapping[str, str] | None = None,
     title = f"flexbooster report: {case.name}"
     parts = [
         "<!DOCTYPE html>",
-        '<html lang="en"><head><meta charset="utf-8" />',
+        '<html xmlns="http://www.w3.org/1999/xhtml" lang="en"><head><meta charset="utf-8" />',
         '<meta name="viewport" content="width=device-width, initial-scale=1" />',
         f"<title>{_e(title)}</title><style>{_CSS}</style></head><body>",
         f"<header><h1>{_e(title)}</h1>",

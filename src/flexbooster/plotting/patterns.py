@@ -59,7 +59,6 @@ def nodal_pattern(
     half_length: float,
     cylinder: int = 1,
     label: str | None = None,
-    n_points: int = 121,
     ax: Axes | None = None,
 ) -> Figure:
     """The (j, k) nodal pattern of one cylinder on its unrolled surface (memo Fig. 4).
@@ -76,8 +75,6 @@ def nodal_pattern(
         1 (aft) or 2 (forward), for the title.
     label : str, optional
         Extra text for the title, e.g. the frequency.
-    n_points : int
-        Grid points per axis of the sign shading (>= 8).
     ax : matplotlib.axes.Axes, optional
         Axes to draw on; a new figure is made when None.
 
@@ -96,18 +93,18 @@ def nodal_pattern(
     for name, value in (("radius", radius), ("half_length", half_length)):
         if not (np.isfinite(value) and value > 0):
             raise ValueError(f"{name} = {value!r}: must be finite and > 0 (m)")
-    n_points = _check_index("n_points", n_points, 8)
     if ax is None:
         fig = Figure(figsize=(6.4, 3.4), layout="constrained")
         ax = fig.add_subplot()
     else:
         fig = ax.figure
-    s = np.linspace(0.0, 2.0, n_points)
-    theta = np.linspace(0.0, 2.0 * np.pi, n_points)
-    w = np.sin(j * np.pi * s[None, :] / 2.0) * np.cos(k * theta[:, None])  # eq. (5.3-2d)
-    x, arc = s * half_length, theta * radius
-    ax.pcolormesh(x, arc, np.sign(np.round(w, 12)), shading="gouraud", cmap="RdBu_r",
-                  vmin=-1.5, vmax=1.5)
+    # One flat cell between neighbouring nodal lines, coloured by the sign of w at its centre.
+    theta_edges = np.concatenate(([0.0], theta_nodes, [2.0 * np.pi]))
+    s_mid = 0.5 * (s_nodes[1:] + s_nodes[:-1])
+    theta_mid = 0.5 * (theta_edges[1:] + theta_edges[:-1])
+    w = np.sin(j * np.pi * s_mid[None, :] / 2.0) * np.cos(k * theta_mid[:, None])  # (5.3-2d)
+    ax.pcolormesh(s_nodes * half_length, theta_edges * radius, np.sign(w), shading="flat",
+                  cmap="RdBu_r", vmin=-1.6, vmax=1.6)
     for xs in s_nodes * half_length:
         ax.axvline(xs, color="k", lw=1.2)
     for th in theta_nodes * radius:
