@@ -144,8 +144,8 @@ def make_figures(results: Results) -> dict[str, Figure]:
     -------
     dict of str to matplotlib.figure.Figure
         By file stem: ``ince-strutt``, ``beam-modes``, ``shell-frequencies-cylinder1``,
-        ``shell-frequencies-cylinder2``, ``nodal-patterns`` and, when the stability table was
-        computed, ``campbell``.
+        ``shell-frequencies-cylinder2``, ``nodal-patterns`` and, when they were computed,
+        ``beam-action-chart`` and ``campbell``.
     """
     import matplotlib
 
@@ -169,6 +169,8 @@ def make_figures(results: Results) -> dict[str, Figure]:
         (b.cylinder1.half_length, b.cylinder2.half_length),
         modes={1: (min(4, n.M1), min(3, n.N1)), 2: (min(6, n.M2), min(2, n.N2))},
     )
+    if results.beam_action is not None:
+        figs["beam-action-chart"] = _beam_action_chart(results)
     if results.stability is not None and results.beam_action is not None:
         import numpy as np
 
@@ -190,3 +192,20 @@ def make_figures(results: Results) -> dict[str, Figure]:
             results.case.truncation.S,
         )
     return figs
+
+
+def _beam_action_chart(results: Results) -> Figure:
+    """The (Omega, gamma) instability chart of the beam action on a coarse grid (80 x 30)."""
+    import numpy as np
+
+    from .beam_action import beam_action_system, stability_chart
+    from .plotting.beam_action import plot_stability_chart
+
+    m, t, n = results.mass, results.case.thrust, results.case.truncation
+    system = beam_action_system(
+        results.omega_1, m.mass, m.L, m.d2, m.I_cm, results.case.F0, t.K, n.N
+    )
+    chart = stability_chart(
+        system, np.geomspace(t.omega_min, t.omega_max, 80), np.linspace(0.0, 0.9, 30)
+    )
+    return plot_stability_chart(chart)

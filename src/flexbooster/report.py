@@ -82,6 +82,12 @@ FIGURES: dict[str, tuple[str, str]] = {
         "frequency of that (j, k).  Radial displacement sin(j pi s/2) cos(k theta) (eqs. 5.3-2d, "
         "5.3-3d) positive in red, negative in blue; nodal lines black.",
     ),
+    "beam-action-chart": (
+        "beam-action",
+        "Instability regions of the beam-action system (memo 4.1) in the plane of the thrust "
+        "frequency Omega/omega_1 and the pulsation amplitude gamma (monodromy exponents on a "
+        "coarse 80 x 30 grid); coloured: unstable, by growth rate; blank: stable.",
+    ),
     "campbell": (
         "campbell",
         "Excitation curves of memo 7.3 against the thrust frequency, shell frequencies as grey "
@@ -478,7 +484,7 @@ def render_report(results: Results, svgs: Mapping[str, str] | None = None,
         "frequencies": lambda: _frequencies(results),
         "beam-modes": lambda: _beam(results, svgs),
         "rigid-body": lambda: _pitch(results, svgs),
-        "beam-action": lambda: _beam_action(results),
+        "beam-action": lambda: _beam_action(results) + _figure("beam-action-chart", svgs),
         "shell-frequencies": lambda: _shell(results, svgs),
         "nodal-patterns": lambda: _figure("nodal-patterns", svgs),
         "unstable-frequencies": lambda: _unstable(results),

@@ -52,6 +52,9 @@ def plot_stability_chart(chart: StabilityChart, normalised: bool = True,
         mesh = ax.pcolormesh(x, chart.gamma, np.ma.masked_invalid(growth), shading="nearest",
                              norm=LogNorm(vmin=lo, vmax=hi), cmap="magma_r")
         fig.colorbar(mesh, ax=ax, label="growth rate max |Im alpha| Omega (1/s)")
+    else:
+        ax.text(0.5, 0.5, f"stable at all {chart.stable.size} grid points", transform=ax.transAxes,
+                ha="center", va="center")
     ax.set_xlabel("Omega / omega_1" if normalised else "Omega (rad/s)")
     ax.set_ylabel("gamma (pulsation amplitude)")
     ax.set_xlim(x.min(), x.max())
