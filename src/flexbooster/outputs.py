@@ -22,8 +22,8 @@ __all__ = ["OUTPUT_STAGES", "write_outputs", "save_figure", "make_figures", "fig
 OUTPUT_STAGES = ("results.json and CSV", "figures", "report.html")
 
 
-def save_figure(fig, path_stem: Path, formats: tuple[str, ...] = ("svg", "png")) -> list[Path]:
-    """Save a matplotlib figure atomically as ``path_stem.<format>`` for each format.
+def save_figure(fig, path_stem: Path) -> list[Path]:
+    """Save a matplotlib figure atomically as ``path_stem.svg`` and ``path_stem.png``.
 
     Parameters
     ----------
@@ -31,20 +31,17 @@ def save_figure(fig, path_stem: Path, formats: tuple[str, ...] = ("svg", "png"))
         The figure.
     path_stem : pathlib.Path
         Destination without suffix.
-    formats : tuple of str
-        Image formats.
 
     Returns
     -------
     list of pathlib.Path
-        The files written.
+        The two files written.
     """
-    paths = []
-    for fmt in formats:
-        buffer = _io.BytesIO()
-        fig.savefig(buffer, format=fmt, dpi=150, bbox_inches="tight")
-        paths.append(write_bytes_atomic(path_stem.with_suffix(f".{fmt}"), buffer.getvalue()))
-    return paths
+    svg, png = _render(fig)
+    return [
+        write_text_atomic(path_stem.with_suffix(".svg"), svg),
+        write_bytes_atomic(path_stem.with_suffix(".png"), png),
+    ]
 
 
 def write_outputs(
