@@ -23,8 +23,9 @@ import time
 
 import numpy as np
 
-from flexbooster import beam, geometry
-from flexbooster.beam_action import (
+from flexbooster.case import default_case
+from flexbooster.memo import beam, geometry
+from flexbooster.memo.beam_action import (
     beam_action_system,
     hill_exponents,
     monodromy_exponents,
@@ -32,7 +33,6 @@ from flexbooster.beam_action import (
     stability_chart,
     uniform_beam_system,
 )
-from flexbooster.case import default_case
 
 
 def default_system(N: int):

@@ -2,7 +2,7 @@
 
 M = N = 100 per cylinder (2 x (100 + 2*100 + 3*100*100) = 60,600 frequencies), default case,
 default method (zero-phase).  The vectorised path is
-:func:`flexbooster.shell.composite_frequencies` (coefficients by quadrature, one batched
+:func:`flexbooster.memo.shell.composite_frequencies` (coefficients by quadrature, one batched
 ``eigh`` per system size).  The baseline, measured in the same run, computes the same
 coefficients and then loops in Python over every (cylinder, j, k), solving each 2x2 or 3x3
 generalized problem with ``scipy.linalg.eigh(K, M)`` and sorting, as a straightforward
@@ -19,10 +19,10 @@ import time
 import numpy as np
 import scipy.linalg
 
-from flexbooster.beam import first_bending_frequency
 from flexbooster.case import default_case
-from flexbooster.shell import composite_frequencies, cylinder_coefficients
-from flexbooster.shell_coefficients import shell_parameters
+from flexbooster.memo.beam import first_bending_frequency
+from flexbooster.memo.shell import composite_frequencies, cylinder_coefficients
+from flexbooster.memo.shell_coefficients import shell_parameters
 
 __all__: list[str] = []
 

@@ -25,10 +25,11 @@ import time
 import numpy as np
 from scipy.optimize import brentq
 
-from flexbooster.analysis import analyze, stability_parameters
+from flexbooster.analysis import analyze
 from flexbooster.case import default_case, load_case
-from flexbooster.shell import natural_frequencies
-from flexbooster.stability import (
+from flexbooster.memo.responses import excitation_parameters
+from flexbooster.memo.shell import natural_frequencies
+from flexbooster.memo.stability import (
     FAMILIES,
     ShellModes,
     excitation,
@@ -47,15 +48,15 @@ def main() -> None:
     case = load_case(data)
     t = case.thrust
     base = analyze(case, stability=False)  # beam action etc., not timed
-    params = stability_parameters(base.omega_psi, t.gamma, base.omega_1, base.beam_action)
+    params = excitation_parameters(base.model, base.beam_action)
     n = case.truncation
 
     start = time.perf_counter()
-    shell = natural_frequencies(case)
+    shell = natural_frequencies(base.model)
     modes = ShellModes(shell.cylinder, shell.j, shell.k, shell.branch, shell.omega_bar)
     table = unstable_frequencies(
-        modes, params, (t.omega_min, t.omega_max), base.omega_1, n.R, n.S, t.gamma, t.K
-    )
+        modes, params, Omega_bar_range=(t.omega_min / base.omega_1, t.omega_max / base.omega_1),
+        omega_1=base.omega_1, R=n.R, S=n.S, gamma=t.gamma, K=t.K)
     vectorised = time.perf_counter() - start
 
     curves = excitation_curves(n.R, n.S)

@@ -1,4 +1,4 @@
-"""Tests of flexbooster.beam: free-free beam functions and appendix-B coefficient integrals.
+"""Tests of flexbooster.memo.beam: free-free beam functions and appendix-B coefficient integrals.
 
 Tiers: exact limits (free-end conditions, phi'''' = phi, the limits of the beam coordinate),
 literature values (reading guide section 6 / Blevins table 8-1), invariants and two methods
@@ -12,8 +12,9 @@ import json
 import numpy as np
 import pytest
 
-from flexbooster import beam
-from flexbooster.geometry import mass_properties
+from flexbooster.memo import beam
+from flexbooster.memo.geometry import mass_properties
+from flexbooster.reference import appendix_b
 
 # Geometries (R1, L1, R2, L2) in m, h = 20 mm, rho = 2768 kg/m^3:
 # the default case (Saturn-class), a short forward stage, and one with L/L2 = 7/4, for which
@@ -59,7 +60,7 @@ def test_limit_coordinates_are_beam_ends_and_junction():
     # (C-7)..(C-9) with d2 + d4 = L, d4 - d1 = L - 2 L1, d4 - d3 = -L (reading guide 2):
     # zeta = 0, 2 L1 / L, 2.
     p = props("default")
-    lim = beam.limit_values(p, 3)
+    lim = appendix_b.limit_values(p, 3)
     assert lim.zeta_a == pytest.approx(0.0, abs=1e-15)
     assert lim.zeta_c == pytest.approx(2 * 21.0 / 30.0, rel=1e-15)
     assert lim.zeta_b == pytest.approx(2.0, rel=1e-15)
@@ -81,7 +82,7 @@ def test_r_integral_exact(phase, cylinder):
         th_lo = j * np.pi * (2 * p.d1 - 21.0) / (2 * 9.0)  # B-7
         th_hi = j * np.pi * (p.d1 + p.d3 - 21.0) / (2 * 9.0)
     expected = 2 * L_d / (j * np.pi * 30.0) * (np.cos(th_lo) - np.cos(th_hi))
-    got = beam.coefficient_integrals(p, 20, 1, cylinder, "closed", phase).r[:, 0]
+    got = appendix_b.coefficient_integrals(p, 20, 1, cylinder, "closed", phase).r[:, 0]
     np.testing.assert_allclose(got, expected, rtol=0, atol=1e-14)
 
 
@@ -197,7 +198,7 @@ def test_limit_values_match_integrated_derivative(derivative, cylinder):
     # (C-11..C-14), (C-16..C-19): phi^(k)|_lo^hi = (lambda_n/2) int phi^(k+1) d xi_bar
     # (fundamental theorem; quadrature 20-point Gauss on 300 panels).
     p = props("default")
-    lim = beam.limit_values(p, 60, derivative)
+    lim = appendix_b.limit_values(p, 60, derivative)
     lo, hi = (lim.zeta_a, lim.zeta_c) if cylinder == 1 else (lim.zeta_c, lim.zeta_b)
     zeta, w = _gauss(lo, hi, 300)
     n = np.arange(1, 61)
@@ -238,7 +239,7 @@ def test_c11_to_c14_literal_forms_and_c13_misprint():
     literal = _printed_limits(p, 6, printed_c13=False)
     for k in range(4):
         np.testing.assert_allclose(
-            literal[k], beam.limit_values(p, 6, k).cylinder1, rtol=0, atol=1e-6
+            literal[k], appendix_b.limit_values(p, 6, k).cylinder1, rtol=0, atol=1e-6
         )
     printed = _printed_limits(p, 6, printed_c13=True)
     assert np.min(np.abs(printed[2] - literal[2])) > 1.0
@@ -255,8 +256,8 @@ def test_closed_form_matches_quadrature_n50_j50(geometry, cylinder, phase):
     # 1e-10 relative to max(|I|, 1e-3): entries below 1e-3 (down to 1e-14, structurally
     # near zero) are held to 1e-13 absolute; observed absolute differences are ~1e-14.
     p = props(geometry)
-    quad = beam.coefficient_integrals(p, 50, 50, cylinder, "quadrature", phase)
-    closed = beam.coefficient_integrals(p, 50, 50, cylinder, "closed", phase)
+    quad = appendix_b.coefficient_integrals(p, 50, 50, cylinder, "quadrature", phase)
+    closed = appendix_b.coefficient_integrals(p, 50, 50, cylinder, "closed", phase)
     for key in "stxyz":
         ref = getattr(quad, key)
         err = np.abs(getattr(closed, key) - ref) / np.maximum(np.abs(ref), 1e-3)
@@ -266,8 +267,8 @@ def test_closed_form_matches_quadrature_n50_j50(geometry, cylinder, phase):
 def test_quadrature_converged():
     # The quadrature default (~16 x 170 nodes here) against 16 x 700 nodes: below 1e-14.
     p = props("default")
-    coarse = beam.coefficient_integrals(p, 50, 50, 1, "quadrature", "zero")
-    fine = beam.coefficient_integrals(p, 50, 50, 1, "quadrature", "zero", n_points=16 * 700)
+    coarse = appendix_b.coefficient_integrals(p, 50, 50, 1, "quadrature", "zero")
+    fine = appendix_b.coefficient_integrals(p, 50, 50, 1, "quadrature", "zero", n_points=16 * 700)
     for key in "stxyz":
         assert np.max(np.abs(getattr(coarse, key) - getattr(fine, key))) < 1e-14
 
@@ -282,8 +283,8 @@ def test_memo_brackets_evaluated_as_difference_of_products_match_quadrature(
     # evaluated as [w(theta) P(X)]_lo^hi they equal the quadrature (tolerance as above, away
     # from jpiL/L_d = lambda_n where 2/B^- amplifies rounding).
     p = props(geometry)
-    quad = beam.coefficient_integrals(p, 50, 50, cylinder, "quadrature", phase)
-    fixed = beam.coefficient_integrals(p, 50, 50, cylinder, "memo-corrected", phase)
+    quad = appendix_b.coefficient_integrals(p, 50, 50, cylinder, "quadrature", phase)
+    fixed = appendix_b.coefficient_integrals(p, 50, 50, cylinder, "memo-corrected", phase)
     for key in "stxyz":
         ref = getattr(quad, key)
         err = np.abs(getattr(fixed, key) - ref) / np.maximum(np.abs(ref), 1e-3)
@@ -295,9 +296,9 @@ def test_memo_form_singular_at_resonance_closed_form_is_not():
     # double precision, e^-143) at j = 26, so (B^-)_2 = 0 in (B-19..B-24): the memo forms are
     # 0/0 there (returned as 0), the stable closed form matches quadrature (which is O(0.5)).
     p = props("resonant")
-    quad = beam.coefficient_integrals(p, 26, 45, 2, "quadrature", "zero")
-    fixed = beam.coefficient_integrals(p, 26, 45, 2, "memo-corrected", "zero")
-    closed = beam.coefficient_integrals(p, 26, 45, 2, "closed", "zero")
+    quad = appendix_b.coefficient_integrals(p, 26, 45, 2, "quadrature", "zero")
+    fixed = appendix_b.coefficient_integrals(p, 26, 45, 2, "memo-corrected", "zero")
+    closed = appendix_b.coefficient_integrals(p, 26, 45, 2, "closed", "zero")
     assert abs(quad.s[25, 44]) > 0.5
     assert fixed.s[25, 44] == 0.0
     assert abs(closed.s[25, 44] - quad.s[25, 44]) < 1e-12
@@ -310,8 +311,8 @@ def test_memo_printed_closed_form_disagrees_with_quadrature(cylinder):
     # (-1)^j - 1 and the sin-differences 0, so the printed s, t, x, y vanish for every even j,
     # while the integrals (quadrature) do not.
     p = props("default")
-    printed = beam.coefficient_integrals(p, 10, 10, cylinder, "memo", "zero")
-    quad = beam.coefficient_integrals(p, 10, 10, cylinder, "quadrature", "zero")
+    printed = appendix_b.coefficient_integrals(p, 10, 10, cylinder, "memo", "zero")
+    quad = appendix_b.coefficient_integrals(p, 10, 10, cylinder, "quadrature", "zero")
     for key in "stxy":
         assert np.max(np.abs(getattr(printed, key)[1::2, :])) < 1e-14
         assert np.max(np.abs(getattr(quad, key)[1::2, :])) > 0.05
@@ -332,7 +333,7 @@ def test_cylinder2_x_integral_needs_L_over_L2():
     n = np.arange(1, 11)
     phi2 = beam.mode_shape(n[:, None], zeta[None, :], 2)
     j = np.arange(1, 11)[:, None]
-    ref = beam.coefficient_integrals(p, 10, 10, 2, "memo-corrected", "memo").x
+    ref = appendix_b.coefficient_integrals(p, 10, 10, 2, "memo-corrected", "memo").x
     with_l2 = (np.sin(j * np.pi / 2 * (L / L2 * xi + r2 + 1)) * w) @ phi2.T
     with_l1 = (np.sin(j * np.pi / 2 * (L / L1 * xi + r2 + 1)) * w) @ phi2.T
     np.testing.assert_allclose(with_l2, ref, rtol=0, atol=1e-12)
@@ -343,12 +344,12 @@ def test_phase_choice_changes_integrals():
     # E10: the printed phase is not zero at the aft edge, so the integrals differ from the
     # zero-phase ones unless d1 = d2 (cylinder 1 exactly centred on the CM).
     p = props("default")
-    zero = beam.coefficient_integrals(p, 5, 5, 1, "closed", "zero")
-    memo = beam.coefficient_integrals(p, 5, 5, 1, "closed", "memo")
+    zero = appendix_b.coefficient_integrals(p, 5, 5, 1, "closed", "zero")
+    memo = appendix_b.coefficient_integrals(p, 5, 5, 1, "closed", "memo")
     assert np.max(np.abs(zero.s - memo.s)) > 0.1
     p_sym = mass_properties(1.0, 3.0, 1e-9, 1e-9, 0.02, 2768.0)  # L2 -> 0: d1 = d2
-    zero = beam.coefficient_integrals(p_sym, 5, 5, 1, "closed", "zero")
-    memo = beam.coefficient_integrals(p_sym, 5, 5, 1, "closed", "memo")
+    zero = appendix_b.coefficient_integrals(p_sym, 5, 5, 1, "closed", "zero")
+    memo = appendix_b.coefficient_integrals(p_sym, 5, 5, 1, "closed", "memo")
     np.testing.assert_allclose(memo.s, zero.s, rtol=0, atol=1e-8)
 
 
@@ -362,10 +363,10 @@ def test_result_objects_are_json_ready():
     text = json.dumps(modes.to_dict(), allow_nan=False)
     assert '"lambda_n"' in text
     assert beam.beam_modes(3).to_dict()["omega_1"] is None
-    ci = beam.coefficient_integrals(props("default"), 3, 4, 2, "closed", "zero")
+    ci = appendix_b.coefficient_integrals(props("default"), 3, 4, 2, "closed", "zero")
     assert ci.s.shape == (3, 4)
     json.dumps(ci.to_dict(), allow_nan=False)
-    json.dumps(beam.limit_values(props("default"), 4, 2).to_dict(), allow_nan=False)
+    json.dumps(appendix_b.limit_values(props("default"), 4, 2).to_dict(), allow_nan=False)
 
 
 @pytest.mark.parametrize(
@@ -378,11 +379,12 @@ def test_result_objects_are_json_ready():
         (lambda: beam.mode_shape(1, 0.5, -1), "derivative"),
         (lambda: beam.beam_modes(3, L=30.0), "all four"),
         (lambda: beam.first_bending_frequency(-1.0, 1.0, 1.0, 1.0), "L = -1.0"),
-        (lambda: beam.coefficient_integrals(props("default"), 0, 3), "M = 0"),
-        (lambda: beam.coefficient_integrals(props("default"), 3, 3, 3), "cylinder = 3"),
-        (lambda: beam.coefficient_integrals(props("default"), 3, 3, 1, "exact"), "method"),
-        (lambda: beam.coefficient_integrals(props("default"), 3, 3, 1, "closed", "x"), "phase"),
-        (lambda: beam.limit_values(object(), 3), "props"),
+        (lambda: appendix_b.coefficient_integrals(props("default"), 0, 3), "M = 0"),
+        (lambda: appendix_b.coefficient_integrals(props("default"), 3, 3, 3), "cylinder = 3"),
+        (lambda: appendix_b.coefficient_integrals(props("default"), 3, 3, 1, "exact"), "method"),
+        (lambda: appendix_b.coefficient_integrals(props("default"), 3, 3, 1, "closed", "x"),
+         "phase"),
+        (lambda: appendix_b.limit_values(object(), 3), "props"),
     ],
 )
 def test_bad_input_raises_value_error(call, match):
@@ -392,9 +394,12 @@ def test_bad_input_raises_value_error(call, match):
 
 def test_mode_shape_plot_marks_junction():
     # The plot draws phi_1..phi_N (as mode_shape) and the junction at zeta = 2 L1 / L (C-8).
-    from flexbooster.plotting.beam import mode_shape_plot
+    from flexbooster.memo.charts import beam_mode_shapes
+    from flexbooster.present.plotting.beam import mode_shape_plot
 
-    fig = mode_shape_plot(3, props("default"))
+    data = beam_mode_shapes(props("default"), N=3)
+    np.testing.assert_array_equal(data.phi[2], beam.mode_shape(3, data.zeta))  # eq. (C-1)
+    fig = mode_shape_plot(data)
     lines = fig.axes[0].get_lines()
     assert len([ln for ln in lines if ln.get_label().startswith("$\\phi")]) == 3
     junction = [ln for ln in lines if ln.get_label() == "junction"][0]

@@ -1,7 +1,8 @@
-"""Tests of flexbooster.beam_action: exact limits, literature values, two methods agree."""
+"""Tests of flexbooster.memo.beam_action: exact limits, literature values, two methods agree."""
 
 from __future__ import annotations
 
+import dataclasses
 import json
 
 import matplotlib
@@ -14,8 +15,8 @@ from scipy.integrate import quad, solve_ivp
 from scipy.optimize import brentq
 from scipy.special import mathieu_a, mathieu_b
 
-from flexbooster import beam, beam_action, pitch
-from flexbooster.beam_action import (
+from flexbooster.memo import beam, beam_action, pitch
+from flexbooster.memo.beam_action import (
     beam_action_analysis,
     beam_action_system,
     follower_flutter_load,
@@ -27,7 +28,7 @@ from flexbooster.beam_action import (
     stability_chart,
     uniform_beam_system,
 )
-from flexbooster.plotting.beam_action import plot_stability_chart
+from flexbooster.present.plotting.beam_action import plot_stability_chart
 
 LAM1 = beam.free_free_eigenvalues(1)[0]
 
@@ -311,12 +312,22 @@ def test_chart_classification_matches_hill():
     json.dumps(chart.to_dict(), allow_nan=False)
 
 
+def _model(Omega, N, S, R):
+    """Derived model of the default booster with the given Omega grid and truncation."""
+    from flexbooster.case import default_case
+    from flexbooster.memo.model import Truncation
+    from flexbooster.model import model_from_case
+
+    m = model_from_case(default_case())
+    return dataclasses.replace(m, Omega=np.asarray(Omega, dtype=float),
+                               truncation=Truncation(M1=1, N1=1, M2=1, N2=1, N=N, S=S, R=R))
+
+
 def test_analysis_result_is_json_ready_and_consistent():
     # Pipeline entry point on a composite of the default case's magnitude with a small grid;
     # both methods must agree (1e-8), alpha_r Omega_bar stays near omega_r for the weak
     # coupling of a realistic thrust (p ~ 0.02), and to_dict() is strict JSON.
-    res = beam_action_analysis(np.linspace(10.0, 600.0, 8), 113.5, 9.4e4, 30.0, 27.6, 2.7e7,
-                               2.8e6, 0.05, 0.5, 4, 6, 3, n_hill=3)
+    res = beam_action_analysis(_model(np.linspace(10.0, 600.0, 8), N=4, S=6, R=3), n_hill=3)
     assert res.alpha.shape == (8, 3)
     assert res.hill_monodromy_difference < 1e-8
     assert res.verdict in ("stable", "unstable")
@@ -352,7 +363,7 @@ def test_plot_returns_figure():
         (lambda: monodromy_exponents(uniform_beam_system(1, 0, 1), 1.0, 1.2), "gamma"),
         (lambda: follower_flutter_load(n_modes=1), "n_modes"),
         (lambda: follower_flutter_load(n_modes=4, p_max=50.0), "p_max"),
-        (lambda: beam_action_analysis([1.0], 1, 1, 1, 1, 1, 1, 0.1, 0, 2, 2, 4), "R"),
+        (lambda: beam_action_analysis(_model([10.0], N=2, S=2, R=4)), "R"),
     ],
 )
 def test_bad_input_raises_value_error_naming_parameter(call, name):

@@ -14,8 +14,8 @@ import pytest
 
 from flexbooster.analysis import analyze
 from flexbooster.case import default_case
-from flexbooster.outputs import write_outputs
-from flexbooster.report import FIGURES, SECTIONS
+from flexbooster.present.outputs import write_outputs
+from flexbooster.present.report import FIGURES, SECTIONS
 
 
 def _chromium() -> tuple[str | None, str | None]:

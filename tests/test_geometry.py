@@ -13,7 +13,7 @@ import numpy as np
 import pint
 import pytest
 
-from flexbooster.geometry import dimensionless_groups, mass_properties, moment_of_inertia_memo
+from flexbooster.memo.geometry import dimensionless_groups, mass_properties, moment_of_inertia_memo
 
 RTOL = 1e-12  # issue 2 acceptance: agreement to 1e-12 relative
 

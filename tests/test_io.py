@@ -7,7 +7,7 @@ import os
 
 import pytest
 
-from flexbooster import io as fio
+from flexbooster.present import io as fio
 
 
 def test_interrupted_write_leaves_previous_file(tmp_path, monkeypatch):

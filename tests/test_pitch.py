@@ -1,4 +1,4 @@
-"""Tests of flexbooster.pitch: Mathieu parameters, characteristic exponent, psi(tau).
+"""Tests of flexbooster.memo.pitch: Mathieu parameters, characteristic exponent, psi(tau).
 
 Tiers: exact limits (q = 0, symmetry), literature values (scipy/A&S characteristic values,
 an independent 50-digit mpmath Taylor-series monodromy), invariants and methods agreeing
@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 from scipy import integrate, special
 
-from flexbooster import pitch
+from flexbooster.memo import pitch
 
 mpmath = pytest.importorskip("mpmath")
 
@@ -351,11 +351,16 @@ def test_ince_strutt_chart_draws_curves_and_path():
     # above) and the operating path is drawn as given; points inside a tongue are marked.
     from matplotlib.figure import Figure
 
-    from flexbooster.plotting.pitch import ince_strutt_chart
+    from flexbooster.memo.charts import InceStruttData
+    from flexbooster.present.plotting.pitch import ince_strutt_chart
 
     a_path = np.array([0.5, 1.0, 1.2])
     q_path = np.array([0.0125, 0.025, 0.03])
-    fig = ince_strutt_chart(path=(a_path, q_path), q_max=0.1, r_max=2, n_grid=40)
+    q = np.linspace(0, 0.1, 40)
+    stable = np.imag(pitch.characteristic_exponent(a_path, q_path, "hill")) == 0
+    data = InceStruttData(q=q, curves=pitch.transition_curves(q, 2), a_path=a_path,
+                          q_path=q_path, path_stable=stable)
+    fig = ince_strutt_chart(data)
     assert isinstance(fig, Figure)
     ax = fig.axes[0]
     lines = {line.get_label(): line for line in ax.get_lines()}
@@ -363,8 +368,6 @@ def test_ince_strutt_chart_draws_curves_and_path():
     np.testing.assert_array_equal(lines["unstable"].get_ydata(), [1.0])  # b_1 < 1 < a_1
     a1 = pitch.transition_curves(np.linspace(0, 0.1, 40), 2)["a1"]
     assert any(np.allclose(line.get_ydata(), a1) for line in ax.get_lines())
-    with pytest.raises(ValueError, match="path"):
-        ince_strutt_chart(path=(a_path, q_path[:2]))
 
 
 def test_psi_depends_on_sign_of_q_beta_does_not():

@@ -19,9 +19,10 @@ import pytest
 from flexbooster.analysis import analyze
 from flexbooster.case import default_case
 from flexbooster.errors import AnalysisWarning
-from flexbooster.outputs import figure_svgs
-from flexbooster.plotting.patterns import nodal_lines, nodal_pattern, nodal_patterns
-from flexbooster.report import (
+from flexbooster.memo.charts import nodal_lines, nodal_pattern_data
+from flexbooster.present.outputs import figure_svgs
+from flexbooster.present.plotting.patterns import nodal_pattern, nodal_patterns
+from flexbooster.present.report import (
     FIGURES,
     MAX_UNSTABLE_ROWS,
     SECTIONS,
@@ -265,8 +266,9 @@ def test_nodal_lines_are_the_zeros_of_the_shape(j, k):
     assert changes == j - 1
 
 
-def test_nodal_pattern_alternating_cells():
-    fig = nodal_pattern(4, 3, radius=5.0, half_length=21.0, cylinder=1)
+def test_nodal_pattern_alternating_cells(results):
+    data = nodal_pattern_data(results.shell, cylinder=1, j=4, k=3, radius=5.0, half_length=21.0)
+    fig = nodal_pattern(data)
     ax = fig.axes[0]
     mesh = ax.collections[0]
     signs = np.asarray(mesh.get_array()).reshape(2 * 3 + 1, 4)
@@ -284,14 +286,17 @@ def test_nodal_pattern_alternating_cells():
 
 
 def test_nodal_patterns_use_the_table(results):
-    fig = nodal_patterns(
-        results.shell, (5.05, 3.3), (21.0, 9.0), modes={1: (4, 3), 2: (6, 2)}
-    )
+    fig = nodal_patterns(results.figures.nodal_patterns)
     titles = [ax.get_title() for ax in fig.axes]
     sh = results.shell
     f1 = float(sh.hz[sh.select(cylinder=1, j=4, k=3)].min())
     assert "j = 4, k = 3" in titles[0] and f"{f1:.4g} Hz" in titles[0]
     assert "cylinder 2" in titles[1] and "j = 6, k = 2" in titles[1]
+
+
+def _pattern(cylinder=1, **kw):
+    # the arguments are checked before the table is read: no table is needed
+    return nodal_pattern_data(None, cylinder=cylinder, j=1, k=1, **kw)
 
 
 @pytest.mark.parametrize(
@@ -300,9 +305,9 @@ def test_nodal_patterns_use_the_table(results):
         (lambda: nodal_lines(0, 1), "j = 0"),
         (lambda: nodal_lines(2, -1), "k = -1"),
         (lambda: nodal_lines(1.5, 1), "j = 1.5"),
-        (lambda: nodal_pattern(1, 1, radius=-1.0, half_length=1.0), "radius = -1.0"),
-        (lambda: nodal_pattern(1, 1, radius=1.0, half_length=math.nan), "half_length"),
-        (lambda: nodal_pattern(1, 1, 1.0, 1.0, cylinder=3), "cylinder = 3"),
+        (lambda: _pattern(radius=-1.0, half_length=1.0), "radius = -1.0"),
+        (lambda: _pattern(radius=1.0, half_length=math.nan), "half_length"),
+        (lambda: _pattern(radius=1.0, half_length=1.0, cylinder=3), "cylinder = 3"),
     ],
 )
 def test_bad_input_raises(call, word):

@@ -20,18 +20,21 @@ import numpy as np
 import pytest
 from numpy.polynomial.legendre import leggauss
 
-from flexbooster import beam
-from flexbooster import responses as r
 from flexbooster.case import default_case, default_case_text, load_case
-from flexbooster.stability import ShellModes, unstable_frequencies
+from flexbooster.memo import beam
+from flexbooster.memo import responses as r
+from flexbooster.memo.beam_action import beam_action_analysis
+from flexbooster.memo.responses import closed_form
+from flexbooster.memo.stability import ShellModes, unstable_frequencies
+from flexbooster.model import model_from_case
 
 
 def small_case(**thrust):
-    """Default geometry, few modes; optional thrust overrides (gamma, K)."""
+    """Derived model of the default geometry, few modes; optional thrust overrides (gamma, K)."""
     d = tomllib.loads(default_case_text())
     d["thrust"].update(thrust)
     d["truncation"].update(M1=2, N1=3, M2=2, N2=3, N=2, S=2, R=2)
-    return load_case(d)
+    return model_from_case(load_case(d))
 
 
 # Strong pulsation and gimbal gain so that every forcing term is well above round-off
@@ -41,10 +44,9 @@ STRONG = small_case(gamma=0.4, K=4.0)
 
 @pytest.fixture(scope="module")
 def strong():
-    cp = r.case_parameters(STRONG)
     ex = r.make_excitation(STRONG, 300.0, psi0=0.01, beam_amplitude=1e-4)
-    groups = r.modal_groups(cp["shell"], (2, 2), (3, 3), ex.N)
-    return cp, ex, groups
+    groups = r.modal_groups(STRONG.shell, (2, 2), (3, 3), ex.N)
+    return STRONG, ex, groups
 
 
 # --------------------------------------------------------------------------------------------
@@ -55,11 +57,11 @@ def test_resonance_safe_kernel_limits():
     tau = np.linspace(0.0, 40.0, 81)
     w = np.array([1.3])
     nu = np.array([0.4, -2.1, 1.3 * (1 + 1e-3)])
-    k = r._kernel(w, nu, tau)[0]
+    k = closed_form._kernel(w, nu, tau)[0]
     memo = (np.exp(1j * nu[:, None] * tau) - np.cos(w * tau)
             - 1j * (nu[:, None] / w) * np.sin(w * tau)) / (w**2 - nu[:, None] ** 2)
     np.testing.assert_allclose(k, memo, rtol=0, atol=1e-9 * np.abs(memo).max())  # cancellation
-    at = r._kernel(w, w, tau)[0, 0]
+    at = closed_form._kernel(w, w, tau)[0, 0]
     exact = -1j * tau * np.exp(1j * 1.3 * tau) / (2 * 1.3) + 1j * np.sin(1.3 * tau) / (2 * 1.3**2)
     np.testing.assert_allclose(at, exact, rtol=0, atol=1e-13)  # Meirovitch ch. 4, resonance
 
@@ -112,7 +114,7 @@ def _definition_projection(cp, ex, d, tau):
     forcing = -1/((1-nu^2) mu theta_int) int int phi [F + (1-nu^2) mu (u*,v*,w*)_tt
               - L(u*, v*, w*)], with L the left side of 3.0-2.
     """
-    p = cp["shell"]
+    p = cp.shell
     nu, mu, sg, lam = p.nu, p.mu, p.sigma, p.lam(d)
     lo, hi = p.edges(d)
     x, wx = leggauss(160)
@@ -240,12 +242,12 @@ def test_closed_form_matches_integration(strong, kind, d):
 def test_printed_phase_has_no_normal_coordinates():
     """With the printed phase (E10) low modes have complex/negative omega^2: modal_basis
     refuses them (docs/theory/shell.md section 3), the zero phase does not."""
-    cp = r.case_parameters(default_case())
-    printed = r.modal_groups(cp["shell"], (2, 2), (4, 4), 2, phase="printed")
+    shell = model_from_case(default_case()).shell
+    printed = r.modal_groups(shell, (2, 2), (4, 4), 2, phase="printed")
     with pytest.raises(ValueError, match="printed phase"):
         for g in printed:
             r.modal_basis(g)
-    for g in r.modal_groups(cp["shell"], (2, 2), (4, 4), 2):
+    for g in r.modal_groups(shell, (2, 2), (4, 4), 2):
         assert np.all(r.modal_basis(g)[0] > 0)
 
 
@@ -254,14 +256,16 @@ def test_printed_phase_has_no_normal_coordinates():
 # --------------------------------------------------------------------------------------------
 NB, SB, RB = 2, 2, 2
 TAU_MAX = 3000.0
+#: The pipeline's parameter function of the strong case (beta by Hill, alpha_r splined from the
+#: beam action on the case's Omega grid): the roots and the forcing below both use it.
+PARAMS = r.excitation_parameters(STRONG, beam_action_analysis(STRONG))
 
 
 @pytest.fixture(scope="module")
 def table():
     """Stability table of the small strong case (all 13 families have active roots)."""
-    cp = r.case_parameters(STRONG)
     rows = []
-    for g in r.modal_groups(cp["shell"], (2, 2), (3, 3), NB):
+    for g in r.modal_groups(STRONG.shell, (2, 2), (3, 3), NB):
         om = r.modal_basis(g)[0]
         rows += [(g.cylinder, g.j[i], g.k[i], m + 1, om[i, m])
                  for i in range(len(g)) for m in range(om.shape[1])]
@@ -269,11 +273,10 @@ def table():
     modes = ShellModes(c[:, 0].astype(int), c[:, 1].astype(int), c[:, 2].astype(int),
                        c[:, 3].astype(int), c[:, 4])
 
-    def params(x):
-        return r.pitch_beam_parameters(STRONG, x, NB, SB, RB)
-
-    return unstable_frequencies(modes, params, (8.0, 2000.0), cp["omega_1"], RB, SB,
-                                cp["gamma"], cp["K"], n_scan=801).to_rows()
+    w1 = STRONG.omega_1
+    return unstable_frequencies(modes, PARAMS, Omega_bar_range=(8.0 / w1, 2000.0 / w1),
+                                omega_1=w1, R=RB, S=SB, gamma=STRONG.gamma, K=STRONG.K,
+                                n_scan=801).to_rows()
 
 
 def _pick(rows, family):
@@ -295,6 +298,7 @@ def _pick(rows, family):
         key = (x["cylinder"], x["j"], x["k"], x["branch"])
         nu, gh, w = r.modal_forcing_spectrum(STRONG, x["Omega_rad_s"], *key, psi0=psi0,
                                              beam_amplitude=bamp, beam_mode=max(x["r"], 1),
+                                             params=PARAMS,
                                              N=NB, S=SB)
         res = np.abs(np.abs(nu) - w) < 1e-8 * w
         pred = np.abs(gh[res].sum()) / 2
@@ -327,7 +331,7 @@ def test_secular_growth_at_a_root_bounded_away(table, family):
     gap = int(np.argmax(np.diff(pts)))
     away = 0.5 * (pts[gap] + pts[gap + 1])  # midpoint of the widest root-free gap
     kw = dict(tau_max=TAU_MAX, psi0=psi0, beam_amplitude=bamp, beam_mode=max(x["r"], 1),
-              N=NB, S=SB)
+              N=NB, S=SB, params=PARAMS)
     at = r.secular_growth(STRONG, om, *key, **kw)
     off = r.secular_growth(STRONG, away, *key, **kw)
     assert at.predicted_slope > 0
@@ -347,7 +351,8 @@ def test_simulate_long_time_many_modes_no_nan():
     NaN."""
     d = tomllib.loads(default_case_text())
     d["truncation"].update(N=10, S=2, R=2)
-    res = r.simulate(load_case(d), 300.0, 1e4, n_out=101, modes=(100, 100, 100, 100),
+    res = r.simulate(model_from_case(load_case(d)), 300.0, 1e4, n_out=101,
+                     modes=(100, 100, 100, 100),
                      n_snapshots=2, n_xi=21, n_theta=13)
     assert np.all(np.isfinite(res.amplitude)) and res.amplitude.shape[1] == 101
     assert set(res.k.tolist()) <= {0, 1, 2}  # forcing only reaches k = 0, 1, 2 (6.2)
@@ -361,9 +366,9 @@ def test_simulate_at_exact_resonance_grows_without_overflow(table):
     grows like tau, with no division by zero."""
     vis, x, key, psi0, bamp = _pick(table, 3)
     res = r.simulate(STRONG, x["Omega_rad_s"], 400.0, n_out=201, psi0=psi0,
-                     beam_amplitude=bamp, n_snapshots=0)
+                     beam_amplitude=bamp, n_snapshots=0, params=PARAMS)
     num = r.simulate(STRONG, x["Omega_rad_s"], 400.0, n_out=201, psi0=psi0,
-                     beam_amplitude=bamp, n_snapshots=0, method="duhamel")
+                     beam_amplitude=bamp, n_snapshots=0, method="duhamel", params=PARAMS)
     np.testing.assert_allclose(res.amplitude, num.amplitude, rtol=0,
                                atol=1e-8 * np.abs(num.amplitude).max())
     c = np.flatnonzero((res.cylinder == key[0]) & (res.j == key[1]) & (res.k == key[2]))
@@ -392,7 +397,7 @@ def test_simulate_rows_initial_and_bad_input():
 def test_plots():
     import matplotlib.figure
 
-    from flexbooster.plotting.responses import deformed_booster, modal_amplitudes
+    from flexbooster.present.plotting.responses import deformed_booster, modal_amplitudes
 
     res = r.simulate(small_case(), 300.0, 20.0, n_out=41, n_snapshots=2)
     fig = modal_amplitudes(res, top=3)
@@ -416,7 +421,7 @@ def test_structural_zeros_of_the_zero_phase_projections(strong, table):
             odd = k2 & (g.j % 2 == 1)
             assert np.abs(g.forcing[4][even]).max() < 1e-14 * np.abs(g.forcing[4][odd]).max()
     rows = [x for x in table if x["forcing"] == "active" and x["family"] in (10, 11, 12)]
-    rates = r.secular_rates(STRONG, rows, N=NB, S=SB)
+    rates = r.secular_rates(STRONG, rows, N=NB, S=SB, params=PARAMS)
     for x, y in zip(rows, rates, strict=True):
         assert y["forced"] == (x["j"] % 2 == 1), (x, y)
         if not y["forced"]:

@@ -9,25 +9,28 @@ eigenvalues, mode counts up to 200, output formats, bad input).
 from __future__ import annotations
 
 import json
-from types import SimpleNamespace
 
 import matplotlib
 import mpmath
 import numpy as np
 import pytest
 
-from flexbooster.beam import first_bending_frequency
 from flexbooster.case import default_case
-from flexbooster.shell import (
+from flexbooster.memo.beam import first_bending_frequency
+from flexbooster.memo.shell import (
     METHODS,
     composite_frequencies,
     cylinder_coefficients,
+    generalized_eigen,
+    natural_frequencies,
+)
+from flexbooster.memo.shell_coefficients import shell_parameters
+from flexbooster.model import model_from_case
+from flexbooster.reference.donnell import (
     donnell_cubic,
     donnell_frequencies,
     donnell_reference,
-    generalized_eigen,
     memo_roots_j0,
-    natural_frequencies,
     single_cylinder_frequencies,
     single_cylinder_matrix,
     single_cylinder_roots_j0,
@@ -35,7 +38,6 @@ from flexbooster.shell import (
     symmetric_functions_j0,
     symmetric_functions_jk,
 )
-from flexbooster.shell_coefficients import shell_parameters
 
 matplotlib.use("Agg")
 
@@ -310,31 +312,26 @@ def test_mode_types_follow_shell_theory():
     assert {"axial", "torsional", "radial"} <= set(f.mode_type)
 
 
-def test_natural_frequencies_takes_any_case_like_object():
-    # The API accepts the pydantic Case or any object with its attributes (duck typing);
-    # omega_1 is beam.first_bending_frequency (4.2-8b).  Same table to the last bit.
+def test_natural_frequencies_of_the_model_equal_composite_frequencies():
+    # natural_frequencies(model) is composite_frequencies with the model's numbers; omega_1 is
+    # beam.first_bending_frequency (4.2-8b) of L = L1 + L2.  Same table to the last bit.
     case = default_case()
     b, t = case.booster, case.truncation
-    duck = SimpleNamespace(
-        booster=SimpleNamespace(
-            cylinder1=SimpleNamespace(radius=b.cylinder1.radius,
-                                      half_length=b.cylinder1.half_length),
-            cylinder2=SimpleNamespace(radius=b.cylinder2.radius,
-                                      half_length=b.cylinder2.half_length),
-            thickness=b.thickness, E=b.E, nu=b.nu, rho=b.rho),
-        truncation=SimpleNamespace(M1=t.M1, N1=t.N1, M2=t.M2, N2=t.N2))
-    a, c = natural_frequencies(case), natural_frequencies(duck)
+    a = natural_frequencies(model_from_case(case))
+    w1 = first_bending_frequency(b.cylinder1.half_length + b.cylinder2.half_length,
+                                 b.cylinder1.radius, b.E, b.rho)
+    c = composite_frequencies(b.cylinder1.radius, b.cylinder1.half_length, b.cylinder2.radius,
+                              b.cylinder2.half_length, b.thickness, b.E, b.nu, b.rho, w1,
+                              t.M1, t.N1, t.M2, t.N2)
     np.testing.assert_array_equal(a.hz, c.hz)
-    assert a.omega_1 == first_bending_frequency(b.cylinder1.half_length
-                                                + b.cylinder2.half_length,
-                                                b.cylinder1.radius, b.E, b.rho)
+    assert a.omega_1 == w1
     assert len(a) == 2 * (t.N1 + 2 * t.M1 + 3 * t.M1 * t.N1)
 
 
 def test_table_outputs():
     # to_dict: JSON-ready parallel lists; to_rows: one dict per row with the CSV columns;
     # hz = rad_s / 2 pi = omega_bar omega_1 / 2 pi (definitions).
-    f = natural_frequencies(default_case(), method="galerkin")
+    f = natural_frequencies(model_from_case(default_case()), method="galerkin")
     d = f.to_dict()
     json.dumps(d, allow_nan=False)
     assert len(d["hz"]) == len(f) and d["method"] == "galerkin"
@@ -347,7 +344,7 @@ def test_table_outputs():
 
 def test_frequency_curves_plot_the_table():
     # One line per j through (k, f) of branch 1, in the table's units.
-    from flexbooster.plotting.shell import frequency_curves
+    from flexbooster.present.plotting.shell import frequency_curves
 
     f = composite(*DEFAULT, M=4, N=6)
     fig = frequency_curves(f, 2)
@@ -374,7 +371,7 @@ def test_bad_counts_raise(name, value):
 
 def test_bad_method_raises():
     with pytest.raises(ValueError, match="method"):
-        natural_frequencies(default_case(), method="printed")
+        natural_frequencies(model_from_case(default_case()), method="printed")
 
 
 @pytest.mark.parametrize(

@@ -12,9 +12,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from flexbooster.beam import first_bending_frequency
-from flexbooster.shell import single_cylinder_matrix
-from flexbooster.shell_coefficients import (
+from flexbooster.memo.beam import first_bending_frequency
+from flexbooster.memo.shell_coefficients import (
     J0_NAMES,
     JK_NAMES,
     edge_arguments,
@@ -23,6 +22,7 @@ from flexbooster.shell_coefficients import (
     overlap_matrices,
     shell_parameters,
 )
+from flexbooster.reference.donnell import single_cylinder_matrix
 
 E, NU, RHO = 72.39e9, 0.33, 2768.0
 #: Geometries (R1, L1, R2, L2, h) in m: the default case (Saturn-class, CM in cylinder 1), a

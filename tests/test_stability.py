@@ -10,13 +10,16 @@ Omega_3 = (1 + beta/2) Omega_bar), not from the solver's coefficient table.
 
 from __future__ import annotations
 
+from types import SimpleNamespace
+
 import numpy as np
 import pytest
 from scipy.optimize import brentq
 
-from flexbooster.stability import (
+from flexbooster.memo.stability import (
     FAMILIES,
     ShellModes,
+    TooManyRootsError,
     excitation,
     excitation_curves,
     unstable_frequencies,
@@ -85,6 +88,9 @@ def small_modes():
 
 RANGE = (5.0, 2000.0)  # rad/s, the default case's Omega range
 R, S = 3, 4
+#: Keyword arguments of unstable_frequencies for the synthetic case (Omega in units of omega_1).
+SOLVE = dict(Omega_bar_range=(RANGE[0] / OMEGA_1, RANGE[1] / OMEGA_1), omega_1=OMEGA_1, R=R, S=S,
+             gamma=0.05, K=0.5)
 
 
 def brute_force(modes):
@@ -113,7 +119,7 @@ def brute_force(modes):
 
 def test_same_roots_as_brute_force_scan():
     modes = small_modes()
-    table = unstable_frequencies(modes, params, RANGE, OMEGA_1, R, S, gamma=0.05, K=0.5)
+    table = unstable_frequencies(modes, params, **SOLVE)
     mode_id = {
         (d, j, k, m): n
         for n, (d, j, k, m) in enumerate(
@@ -134,7 +140,7 @@ def test_same_roots_as_brute_force_scan():
 def test_every_root_satisfies_its_equation():
     """Residual below 1e-9 in Omega/omega_1 (issue 6), re-evaluated from the memo's equations."""
     modes = small_modes()
-    table = unstable_frequencies(modes, params, RANGE, OMEGA_1, R, S, gamma=0.05, K=0.5)
+    table = unstable_frequencies(modes, params, **SOLVE)
     for n in range(len(table)):
         lhs = family_excitation(
             int(table.family[n]),
@@ -153,7 +159,7 @@ def test_coincident_curves_are_reported_once():
     """Omega_bar + Omega_2 = Omega_3 and |Omega_bar - Omega_2| = Omega_1 identically (7.2-1..3):
     family 8 (i = 2) and 9 (i = 2) give the same roots as family 7 (i = 3, i = 1)."""
     modes = small_modes()
-    table = unstable_frequencies(modes, params, RANGE, OMEGA_1, R, S, gamma=0.05, K=0.5)
+    table = unstable_frequencies(modes, params, **SOLVE)
     key = list(
         zip(
             table.cylinder,
@@ -224,7 +230,7 @@ def test_excitation_matches_memo_equations_on_a_grid():
     ],
 )
 def test_active_versus_listed(gamma, K, family, k, active):
-    from flexbooster.stability import _active
+    from flexbooster.memo.stability import _active
 
     i = np.array([2]) if family in (1, 7, 12, 4, 8) else np.array([0])
     got = _active(np.array([family]), i, np.array([0]), np.array([1]), np.array([k]), gamma, K)
@@ -234,7 +240,7 @@ def test_active_versus_listed(gamma, K, family, k, active):
 def test_no_pulsation_silences_omega_1_and_3():
     """A_1, A_3 are proportional to q = gamma a / 2 (4.2-7b, d): with gamma = 0 only Omega_2
     terms of psi remain, so roots through Omega_1 or Omega_3 are 'listed'."""
-    from flexbooster.stability import _active
+    from flexbooster.memo.stability import _active
 
     fam = np.array([7, 7, 7])
     got = _active(
@@ -250,12 +256,12 @@ def test_active_flags_match_the_forcing_computed_from_its_definition():
     below 1e-22 (round-off). Families 2 and 13 (beam harmonics, one Hill solve per root) are
     left out here; their selection is delta_1k only."""
     from flexbooster import analyze, default_case
-    from flexbooster.responses import secular_rates
+    from flexbooster.memo.responses import secular_rates
 
-    case = default_case()
-    table = analyze(case).stability
+    res = analyze(default_case())
+    table = res.stability
     rows = [row for row in table.to_rows() if row["family"] not in (2, 13)]
-    rates = secular_rates(case, rows, beam_amplitude=0.0)
+    rates = secular_rates(res.model, rows, beam_amplitude=0.0)
     for row, rate in zip(rows, rates, strict=True):
         if row["forcing"] == "active":
             assert rate["relative"] > 1e-17, row
@@ -266,13 +272,15 @@ def test_active_flags_match_the_forcing_computed_from_its_definition():
 def test_campbell_diagram_draws_every_root_and_shell_line():
     """The figure's data, not its picture: one marker per root (active filled, listed open)
     at (Omega_bar, shell frequency), and one horizontal line per shell frequency in view."""
-    from flexbooster.plotting.stability import campbell_diagram
+    from flexbooster.memo.charts import campbell_data
+    from flexbooster.present.plotting.stability import campbell_diagram
 
     modes = small_modes()
-    table = unstable_frequencies(modes, params, RANGE, OMEGA_1, R, S, gamma=0.05, K=0.5)
-    x = np.geomspace(RANGE[0] / OMEGA_1, RANGE[1] / OMEGA_1, 300)
-    beta, alpha = params(x)
-    fig = campbell_diagram(x, beta, alpha, modes.omega_bar, table, R, S)
+    table = unstable_frequencies(modes, params, **SOLVE)
+    shell = SimpleNamespace(omega_bar=modes.omega_bar)
+    data = campbell_data(params=params, omega_range=RANGE, omega_1=OMEGA_1, shell=shell,
+                         table=table, R=R, S=S, n_points=300)
+    fig = campbell_diagram(data)
     ax = fig.axes[0]
     lines = {line.get_label(): line for line in ax.get_lines()}
     active, listed = lines["root, active"], lines["root, listed"]
@@ -315,12 +323,12 @@ def test_default_case_same_roots_as_brute_force_on_sampled_curves():
     sign change -- is in the table (its own row or merged into a coinciding family's), and the
     table has no other root of those curves."""
     from flexbooster import analyze, default_case
-    from flexbooster.analysis import stability_parameters
+    from flexbooster.memo.responses import excitation_parameters
 
     case = default_case()
     res = analyze(case)
     t, n = case.thrust, case.truncation
-    prm = stability_parameters(res.omega_psi, t.gamma, res.omega_1, res.beam_action)
+    prm = excitation_parameters(res.model, res.beam_action)
     modes = ShellModes(
         res.shell.cylinder, res.shell.j, res.shell.k, res.shell.branch, res.shell.omega_bar
     )
@@ -357,5 +365,5 @@ def test_default_case_same_roots_as_brute_force_on_sampled_curves():
 
 def test_too_many_roots_is_a_clear_error_not_a_memory_crash():
     modes = small_modes()
-    with pytest.raises(ValueError, match=r"exceed max_roots = 10; reduce the shell modes"):
-        unstable_frequencies(modes, params, RANGE, OMEGA_1, R, S, gamma=0.05, K=0.5, max_roots=10)
+    with pytest.raises(TooManyRootsError, match=r"exceed max_roots = 10; reduce the shell modes"):
+        unstable_frequencies(modes, params, **SOLVE, max_roots=10)

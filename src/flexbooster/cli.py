@@ -126,7 +126,7 @@ def _progress(stages: int, quiet: bool) -> Iterator[Callable[[str], None]]:
 def _report(results, fmt: str, quiet: bool, printer: Callable) -> None:
     """The summary (table) or the JSON document (json) on standard output."""
     if fmt == "json":
-        from .io import check_finite
+        from .present.io import check_finite
 
         data = results.to_dict()
         check_finite(data)
@@ -162,8 +162,8 @@ def run(case_file: Path | None, output: Path, no_figures: bool, quiet: bool, fmt
       flexbooster run -q --format json | python -m json.tool | head
     """
     from .analysis import STAGES, analyze
-    from .outputs import OUTPUT_STAGES, write_outputs
-    from .summary import print_summary
+    from .present.outputs import OUTPUT_STAGES, write_outputs
+    from .present.summary import print_summary
 
     case = _load(case_file)
     with _progress(len(STAGES) + len(OUTPUT_STAGES), quiet) as step:
@@ -194,8 +194,8 @@ def stability(
     """
     from .analysis import STAGES, analyze
     from .case import load_case
-    from .io import write_csv_atomic
-    from .summary import print_stability
+    from .present.io import write_csv_atomic
+    from .present.summary import print_stability
 
     def number(text: str) -> float | str:
         try:
@@ -238,10 +238,10 @@ def simulate(
     Example:
       flexbooster simulate --omega "50 Hz" --tau-max 100 -o sim/
     """
-    from .io import write_csv_atomic, write_json_atomic
-    from .outputs import save_figure
-    from .responses import edge_conditions
-    from .responses import simulate as run_simulation
+    from .analysis import simulate_case
+    from .memo.responses import edge_conditions
+    from .present.io import write_csv_atomic, write_json_atomic
+    from .present.outputs import save_figure
     from .units import to_si
 
     case = _load(case_file)
@@ -251,7 +251,7 @@ def simulate(
         value = omega
     Omega = to_si("--omega", value, "angular_frequency")
     try:
-        res = run_simulation(case, Omega, tau_max, n_out=n_out, psi0=psi0)
+        res = simulate_case(case, Omega, tau_max=tau_max, n_out=n_out, psi0=psi0)
     except ValueError as exc:
         raise CaseError("simulate", f"--omega {omega} --tau-max {tau_max}", str(exc)) from None
     for warning in res.warnings:
@@ -265,7 +265,7 @@ def simulate(
     import matplotlib
 
     matplotlib.use("Agg")
-    from .plotting.responses import deformed_booster, modal_amplitudes
+    from .present.plotting.responses import deformed_booster, modal_amplitudes
 
     written += save_figure(modal_amplitudes(res), output / "modal-amplitudes")
     for i in range(len(res.snapshots.get("index", []))):
@@ -292,7 +292,7 @@ def init(path: Path, force: bool) -> None:
       flexbooster init my-booster.toml && flexbooster run my-booster.toml
     """
     from .case import default_case_text
-    from .io import write_text_atomic
+    from .present.io import write_text_atomic
 
     if path.exists() and not force:
         raise CaseError("PATH", str(path), "file exists (use --force to overwrite)")

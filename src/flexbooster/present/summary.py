@@ -9,7 +9,7 @@ import numpy as np
 from rich.console import Console
 from rich.table import Table
 
-from .analysis import Results
+from ..results import Results
 
 __all__ = ["print_summary", "print_stability"]
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
-from ..responses import SimulationResult
+from ...memo.responses import SimulationResult
 
 __all__ = ["modal_amplitudes", "deformed_booster"]
 

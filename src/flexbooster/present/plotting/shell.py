@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
-from ..shell import ShellFrequencies
+from ...memo.shell import ShellFrequencies
 
 __all__ = ["frequency_curves"]
 

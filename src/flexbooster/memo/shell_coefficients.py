@@ -53,7 +53,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.special import roots_legendre
 
-from .checks import positive
+from ..checks import positive
 from .geometry import mass_properties
 
 __all__ = [

@@ -50,6 +50,7 @@ __all__ = [
     "excitation_curves",
     "excitation",
     "unstable_frequencies",
+    "TooManyRootsError",
 ]
 
 #: eps_i of eq. (7.2-5), i = 1, 2, 3.
@@ -393,10 +394,15 @@ def _active(
     return out & amp_ok
 
 
+class TooManyRootsError(RuntimeError):
+    """The stability table would hold more roots than ``max_roots`` (a memory limit)."""
+
+
 def unstable_frequencies(
     modes: ShellModes,
     params: ParamsFn,
-    Omega_range: tuple[float, float],
+    *,
+    Omega_bar_range: tuple[float, float],
     omega_1: float,
     R: int,
     S: int,
@@ -416,8 +422,8 @@ def unstable_frequencies(
         ``params(Omega_bar) -> (beta, alpha)``: the real pitch stability parameter beta,
         shape (n,), and the beam exponents alpha_r, shape (n, R), at Omega = Omega_bar omega_1;
         vectorised over the 1-D array Omega_bar.
-    Omega_range : (float, float)
-        Range of the thrust pulsation frequency Omega (rad/s).
+    Omega_bar_range : (float, float)
+        Range of the thrust pulsation frequency Omega / omega_1 (dimensionless).
     omega_1 : float
         Reference frequency, eq. (4.2-8b) (rad/s).
     R, S : int
@@ -430,7 +436,7 @@ def unstable_frequencies(
         Residual to which each root is refined (units of omega_1).
     max_roots : int
         Largest number of roots computed (memory grows with it: about 0.5 kB per root); more
-        raise ``ValueError`` before any refinement.
+        raise :class:`TooManyRootsError` before any refinement.
 
     Returns
     -------
@@ -447,9 +453,9 @@ def unstable_frequencies(
     ----------
     Tech Memo 104, section 7.3; reading guide section 5.
     """
-    lo_W, hi_W = (float(x) / omega_1 for x in Omega_range)
+    lo_W, hi_W = (float(x) for x in Omega_bar_range)
     if not 0.0 < lo_W < hi_W:
-        raise ValueError(f"Omega_range = {Omega_range!r}: need 0 < Omega_min < Omega_max")
+        raise ValueError(f"Omega_bar_range = {Omega_bar_range!r}: need 0 < min < max")
     curves = excitation_curves(R, S)
     grid = np.geomspace(lo_W, hi_W, int(n_scan))
     beta_g, alpha_g = params(grid)
@@ -482,7 +488,7 @@ def unstable_frequencies(
         return _empty(omega_1)
     total = sum(x.size for x in found_c)
     if total > max_roots:
-        raise ValueError(
+        raise TooManyRootsError(
             f"stability table: {total} roots in the Omega range exceed max_roots = {max_roots}; "
             "reduce the shell modes (M1, N1, M2, N2), R or S, or the Omega range"
         )
@@ -572,8 +578,36 @@ def _illinois(
 
 
 def _merge_coincident(root, t, fam, i, p, r, s, tol):
-    """Keep one row per (shell mode, root); list the other families that give the same root."""
+    """Keep one row per (shell mode, root); list the other families that give the same root.
+
+    Rows sorted by (shell mode, root, family); a row joins the group of the previous kept row
+    when it has the same shell mode and its root lies within 1e3 tol max(|root|, 1).  Groups
+    are found in one vectorised pass; the labels are built for the (few) merged rows only.
+    """
     order = np.lexsort((fam, root, t))
+    ro, to = root[order], t[order]
+    thr = 1e3 * tol * np.maximum(np.abs(ro), 1.0)
+    start = np.ones(order.size, dtype=bool)
+    start[1:] = (to[1:] != to[:-1]) | (ro[1:] - ro[:-1] > thr[1:])
+    group = np.cumsum(start) - 1
+    first = np.flatnonzero(start)
+    # a chain of small steps may drift past the tolerance of its first row: split it there
+    drift = ~start & (ro - ro[first[group]] > thr)
+    if drift.any():  # rare: fall back to the sequential rule for exactness
+        return _merge_sequential(order, root, t, fam, i, p, r, s, tol)
+    also = [""] * first.size
+    for n in np.flatnonzero(~start):
+        m = order[n]
+        label = f"{fam[m]}" + "".join(
+            f"({k}={v})" for k, v in (("i", i[m]), ("p", p[m]), ("r", r[m]), ("s", s[m])) if v
+        )
+        g = group[n]
+        also[g] = f"{also[g]}, {label}" if also[g] else label
+    return order[first].astype(int), also
+
+
+def _merge_sequential(order, root, t, fam, i, p, r, s, tol):
+    """The sequential form of :func:`_merge_coincident` (used when a chain drifts)."""
     keep, also = [], []
     scale = np.maximum(np.abs(root), 1.0)
     for n in order:

@@ -48,15 +48,20 @@ References
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
+from ..checks import count, nonnegative, positive
 from . import beam
-from .checks import count, nonnegative, positive
+
+if TYPE_CHECKING:
+    from .model import BoosterModel
 
 __all__ = [
     "BeamActionSystem",
     "beam_action_system",
+    "beam_system",
     "uniform_beam_system",
     "follower_flutter_load",
     "loaded_frequencies",
@@ -215,6 +220,30 @@ def beam_action_system(omega_1: float, mass: float, L: float, d2: float, I_cm: f
     load = F0 / (mass * L * omega_1**2)  # eps = F0 / (M L omega_1^2)
     Lam, B = _assemble(load, K, mass * L**2 / I_cm, d2 / L, N, n_quad)
     return BeamActionSystem(Lambda=Lam, B=B, omega_1=omega_1, load=load, K=K, N=N)
+
+
+def beam_system(model: BoosterModel, N: int | None = None) -> BeamActionSystem:
+    """The beam-action system of a booster's derived model.
+
+    Parameters
+    ----------
+    model : BoosterModel
+        The derived model (omega_1, mass properties, F0, K).
+    N : int, optional
+        Elastic modes (default: the model's truncation N).
+
+    Returns
+    -------
+    BeamActionSystem
+        :func:`beam_action_system` with the model's numbers.
+
+    References
+    ----------
+    Tech Memo 104, eqs. (4.1-1), (4.1-3), (4.2-1), (4.2-8b).
+    """
+    m = model.mass
+    return beam_action_system(model.omega_1, m.mass, m.L, m.d2, m.I_cm, model.F0, model.K,
+                              model.truncation.N if N is None else N)
 
 
 def uniform_beam_system(p: float, K: float, N: int, omega_1: float = 1.0) -> BeamActionSystem:
@@ -768,41 +797,19 @@ def _match_distance(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return np.max(np.abs(a - b), axis=-1)
 
 
-def beam_action_analysis(Omega: np.ndarray, omega_1: float, mass: float, L: float, d2: float,
-                         I_cm: float, F0: float, gamma: float, K: float, N: int, S: int,
-                         R: int, n_hill: int = 3) -> BeamActionResult:
+def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3) -> BeamActionResult:
     """alpha_r along the Omega grid and the beam-action verdict (pipeline entry point).
 
     Parameters
     ----------
-    Omega : array_like
-        Thrust pulsation frequencies (rad/s), > 0.
-    omega_1 : float
-        First bending frequency of eq. (4.2-8b) (rad/s).
-    mass : float
-        Total mass (kg).
-    L : float
-        Half-length (m).
-    d2 : float
-        CM to the aft edge (m).
-    I_cm : float
-        Pitch moment of inertia about the CM (kg m^2).
-    F0 : float
-        Steady thrust (N).
-    gamma : float
-        Pulsation amplitude, 0 <= gamma < 1.
-    K : float
-        Gimbal gain, >= 0.
-    N : int
-        Elastic modes, 0..500.
-    S : int
-        Hill harmonics s = -S..S, 0..500.
-    R : int
-        Exponents reported, 1..N + 1.
+    model : BoosterModel
+        The derived model: its Omega grid (rad/s), omega_1, mass properties, F0 (N), gamma, K
+        and truncation N (elastic modes), S (Hill harmonics), R (exponents reported).
     n_hill : int
         Number of grid points (evenly spread, ends included) at which Hill's determinant is
-        also solved and compared with the monodromy exponents, 1..len(Omega); Hill costs
-        O((2 (N + 1)(2 S + 1))^3) per point, about 0.1-0.5 s for N = S = 10.
+        also solved and compared with the monodromy exponents, 1..len(Omega) (clipped to the
+        grid size); Hill costs O((2 (N + 1)(2 S + 1))^3) per point, about 0.1-0.5 s for
+        N = S = 10.
 
     Returns
     -------
@@ -815,12 +822,12 @@ def beam_action_analysis(Omega: np.ndarray, omega_1: float, mass: float, L: floa
     ----------
     Tech Memo 104, eqs. (4.1-10)..(4.1-12); Bolotin (1964); Beal (1965).
     """
-    system = beam_action_system(omega_1, mass, L, d2, I_cm, F0, K, N)
-    R = count("R", R, 1, N + 1)
-    S = count("S", S, 0)
-    gamma = float(gamma)
-    Ob, gam, _ = _grid(Omega, gamma, system.omega_1)
-    n_hill = count("n_hill", n_hill, 1, Ob.size)
+    system = beam_system(model)
+    N, S = system.N, model.truncation.S
+    R = count("R", model.truncation.R, 1, N + 1)
+    gamma = float(model.gamma)
+    Ob, gam, _ = _grid(model.Omega, gamma, system.omega_1)
+    n_hill = min(count("n_hill", n_hill, 1, None), Ob.size)
     red_m = reduced_exponents(monodromy_exponents(system, Ob * system.omega_1, gam))
     pick = np.unique(np.round(np.linspace(0, Ob.size - 1, n_hill)).astype(int))
     hill = hill_exponents(system, Ob[pick] * system.omega_1, gam[pick], S)

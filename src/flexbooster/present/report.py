@@ -22,8 +22,8 @@ from pathlib import Path
 
 import numpy as np
 
-from . import __version__
-from .analysis import Results
+from .. import __version__
+from ..results import Results
 from .io import write_text_atomic
 
 __all__ = [

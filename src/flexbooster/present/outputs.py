@@ -10,7 +10,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from .analysis import Results
+from ..results import Results
 from .io import write_bytes_atomic, write_csv_atomic, write_json_atomic, write_text_atomic
 
 if TYPE_CHECKING:
@@ -130,12 +130,12 @@ def figure_svgs(results: Results) -> dict[str, str]:
 
 
 def make_figures(results: Results) -> dict[str, Figure]:
-    """Draw the figures of an analysis (matplotlib, Agg backend).
+    """Draw the figures of an analysis (matplotlib, Agg backend) from its stored data.
 
     Parameters
     ----------
     results : Results
-        The analysis.
+        The analysis; ``results.figures`` holds every curve drawn (nothing is recomputed).
 
     Returns
     -------
@@ -148,61 +148,24 @@ def make_figures(results: Results) -> dict[str, Figure]:
 
     matplotlib.use("Agg")
     from .plotting.beam import mode_shape_plot
+    from .plotting.beam_action import plot_stability_chart
     from .plotting.patterns import nodal_patterns
     from .plotting.pitch import ince_strutt_chart
     from .plotting.shell import frequency_curves
+    from .plotting.stability import campbell_diagram
 
-    b = results.case.booster
+    data = results.figures
+    if data is None:
+        raise ValueError("results.figures: no figure data (the results were not made by analyze)")
     figs: dict[str, Figure] = {
-        "ince-strutt": ince_strutt_chart(path=(results.pitch.a, results.pitch.q)),
-        "beam-modes": mode_shape_plot(N=min(4, results.case.truncation.N), props=results.mass),
+        "ince-strutt": ince_strutt_chart(data.ince_strutt),
+        "beam-modes": mode_shape_plot(data.beam_modes),
     }
     for d in (1, 2):
         figs[f"shell-frequencies-cylinder{d}"] = frequency_curves(results.shell, d)
-    n = results.case.truncation
-    figs["nodal-patterns"] = nodal_patterns(  # the modes of memo Fig. 4, within the truncation
-        results.shell,
-        (b.cylinder1.radius, b.cylinder2.radius),
-        (b.cylinder1.half_length, b.cylinder2.half_length),
-        modes={1: (min(4, n.M1), min(3, n.N1)), 2: (min(6, n.M2), min(2, n.N2))},
-    )
-    if results.beam_action is not None:
-        figs["beam-action-chart"] = _beam_action_chart(results)
-    if results.stability is not None and results.beam_action is not None:
-        import numpy as np
-
-        from .analysis import stability_parameters
-        from .plotting.stability import campbell_diagram
-
-        t = results.case.thrust
-        x = np.geomspace(t.omega_min, t.omega_max, 600) / results.omega_1
-        beta, alpha = stability_parameters(
-            results.omega_psi, t.gamma, results.omega_1, results.beam_action
-        )(x)
-        figs["campbell"] = campbell_diagram(
-            x,
-            beta,
-            alpha,
-            results.shell.omega_bar,
-            results.stability,
-            results.case.truncation.R,
-            results.case.truncation.S,
-        )
+    figs["nodal-patterns"] = nodal_patterns(data.nodal_patterns)
+    if data.beam_action_chart is not None:
+        figs["beam-action-chart"] = plot_stability_chart(data.beam_action_chart)
+    if data.campbell is not None:
+        figs["campbell"] = campbell_diagram(data.campbell)
     return figs
-
-
-def _beam_action_chart(results: Results) -> Figure:
-    """The (Omega, gamma) instability chart of the beam action on a coarse grid (80 x 30)."""
-    import numpy as np
-
-    from .beam_action import beam_action_system, stability_chart
-    from .plotting.beam_action import plot_stability_chart
-
-    m, t, n = results.mass, results.case.thrust, results.case.truncation
-    system = beam_action_system(
-        results.omega_1, m.mass, m.L, m.d2, m.I_cm, results.case.F0, t.K, n.N
-    )
-    chart = stability_chart(
-        system, np.geomspace(t.omega_min, t.omega_max, 80), np.linspace(0.0, 0.9, 30)
-    )
-    return plot_stability_chart(chart)

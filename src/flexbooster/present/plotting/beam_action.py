@@ -7,7 +7,7 @@ from matplotlib.axes import Axes
 from matplotlib.colors import LogNorm
 from matplotlib.figure import Figure
 
-from ..beam_action import StabilityChart
+from ...memo.beam_action import StabilityChart
 
 __all__ = ["plot_stability_chart"]
 

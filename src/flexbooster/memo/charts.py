@@ -1,0 +1,465 @@
+"""The data of every figure, computed by the pipeline (compute -> data -> plot).
+
+The presentation layer draws these objects and computes nothing: the Ince-Strutt chart's
+transition curves and operating path, the Campbell diagram's excitation curves, the beam-action
+(Omega, gamma) chart, the beam mode shapes and the shells' nodal lines.  The grids are named
+once here (:data:`INCE_STRUTT_Q_POINTS`, ...), and the report's captions cite them.
+
+References
+----------
+.. [1] Abramowitz & Stegun (1964), 20.2 and fig. 20.1 (Mathieu transition curves).
+.. [2] Tech Memo 104, eqs. (4.2-3)..(4.2-5), (5.3-2d), (5.3-3d), (7.3-1)..(7.3-35), (C-1),
+   (C-6)..(C-9), Fig. 4.
+.. [3] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, ch. 3.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from ..checks import count, positive
+from .beam import free_free_eigenvalues, mode_shape
+from .beam_action import StabilityChart, beam_system, stability_chart
+from .geometry import MassProperties
+from .pitch import PitchResult, transition_curves
+from .shell import ShellFrequencies
+from .stability import StabilityTable, excitation, excitation_curves
+
+__all__ = [
+    "INCE_STRUTT_Q_POINTS",
+    "INCE_STRUTT_ORDERS",
+    "CAMPBELL_POINTS",
+    "CAMPBELL_S_MAX",
+    "BEAM_ACTION_CHART_OMEGA_POINTS",
+    "BEAM_ACTION_CHART_GAMMA",
+    "BEAM_ACTION_CHART_STEP_PHASE",
+    "MODE_SHAPE_POINTS",
+    "MODE_SHAPE_COUNT",
+    "InceStruttData",
+    "ince_strutt_data",
+    "CampbellData",
+    "campbell_data",
+    "beam_action_chart",
+    "BeamModeShapes",
+    "beam_mode_shapes",
+    "NodalPattern",
+    "nodal_lines",
+    "nodal_pattern_data",
+    "FigureData",
+]
+
+#: q points of the Ince-Strutt transition curves, uniform on [0, q_max].
+INCE_STRUTT_Q_POINTS = 300
+#: Highest order r of the transition curves a_r, b_r drawn.
+INCE_STRUTT_ORDERS = 3
+#: Points of the Campbell diagram, logarithmic over the case's Omega range.
+CAMPBELL_POINTS = 600
+#: Harmonics |s| <= this of the (alpha_r + s) curves drawn in the Campbell diagram (all are
+#: solved for in the stability table).
+CAMPBELL_S_MAX = 2
+#: Omega points (logarithmic over the case's range) of the beam-action (Omega, gamma) chart.
+BEAM_ACTION_CHART_OMEGA_POINTS = 80
+#: gamma values of the beam-action chart: 30 points, uniform on [0, 0.9].
+BEAM_ACTION_CHART_GAMMA = (0.0, 0.9, 30)
+#: Phase per integration step of the chart's monodromy (see
+#: :func:`flexbooster.memo.beam_action.monodromy_exponents`).
+BEAM_ACTION_CHART_STEP_PHASE = 0.25
+#: Points per beam mode shape.
+MODE_SHAPE_POINTS = 400
+#: Beam modes drawn (at most the truncation N).
+MODE_SHAPE_COUNT = 4
+
+
+def _arrays(obj: Any) -> dict[str, Any]:
+    out: dict[str, Any] = {}
+    for key, value in obj.__dict__.items():
+        if isinstance(value, np.ndarray):
+            out[key] = value.tolist()
+        elif isinstance(value, dict):
+            out[key] = {k: np.asarray(v).tolist() for k, v in value.items()}
+        else:
+            out[key] = value
+    return out
+
+
+@dataclass(frozen=True)
+class InceStruttData:
+    """The Ince-Strutt chart: transition curves and the operating path (memo 4.2).
+
+    Attributes
+    ----------
+    q : numpy.ndarray
+        Shape (n,), q grid of the curves (dimensionless).
+    curves : dict of str to numpy.ndarray
+        ``"a0"``..``"a{r}"``, ``"b1"``..``"b{r}"`` on ``q``; tongue r lies between b_r and a_r
+        and a < a_0 is unstable (dimensionless).
+    a_path, q_path : numpy.ndarray
+        Shape (G,), the operating path (a(Omega), |q(Omega)|) of eq. (4.2-4).
+    path_stable : numpy.ndarray of bool
+        Shape (G,), beta real at each point of the path.
+    """
+
+    q: np.ndarray
+    curves: dict
+    a_path: np.ndarray
+    q_path: np.ndarray
+    path_stable: np.ndarray
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready mapping (plain lists)."""
+        return _arrays(self)
+
+
+def ince_strutt_data(pitch: PitchResult, *, n_q: int = INCE_STRUTT_Q_POINTS,
+                     r_max: int = INCE_STRUTT_ORDERS) -> InceStruttData:
+    """Transition curves over the q range of the operating path, and the path itself.
+
+    Parameters
+    ----------
+    pitch : PitchResult
+        The rigid-body pitch result (a, q along the Omega grid).
+    n_q : int
+        q points, 2..100000.
+    r_max : int
+        Highest order of the curves, 1..50.
+
+    Returns
+    -------
+    InceStruttData
+        q runs from 0 to max(0.1, 1.3 max |q|).
+
+    References
+    ----------
+    Abramowitz & Stegun (1964) 20.2; Tech Memo 104, eqs. (4.2-3)..(4.2-5).
+    """
+    n_q = count("n_q", n_q, 2, 100_000)
+    r_max = count("r_max", r_max, 1, 50)
+    q_path = np.abs(pitch.q)
+    q_max = max(0.1, 1.3 * float(np.max(q_path)))
+    q = np.linspace(0.0, q_max, n_q)
+    return InceStruttData(q=q, curves=transition_curves(q, r_max), a_path=pitch.a.copy(),
+                          q_path=q_path, path_stable=pitch.stable.copy())
+
+
+@dataclass(frozen=True)
+class CampbellData:
+    """The Campbell diagram: excitation curves (memo 7.3), shell frequencies and the roots.
+
+    Attributes
+    ----------
+    Omega_bar : numpy.ndarray
+        Shape (n,), thrust frequencies Omega / omega_1 of the curves.
+    curves : numpy.ndarray
+        Shape (C, n), excitation frequencies of the drawn curves (units of omega_1).
+    family, s : numpy.ndarray of int
+        Shape (C,), family (memo 7.4) and harmonic of each curve.
+    shell_omega_bar : numpy.ndarray
+        Shell natural frequencies (units of omega_1).
+    root_Omega_bar, root_shell_omega_bar : numpy.ndarray
+        Roots of the stability table (units of omega_1).
+    root_active : numpy.ndarray of bool
+        Active forcing at each root.
+    omega_1 : float
+        Reference frequency (rad/s).
+    """
+
+    Omega_bar: np.ndarray
+    curves: np.ndarray
+    family: np.ndarray
+    s: np.ndarray
+    shell_omega_bar: np.ndarray
+    root_Omega_bar: np.ndarray
+    root_shell_omega_bar: np.ndarray
+    root_active: np.ndarray
+    omega_1: float
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready mapping (plain lists)."""
+        return _arrays(self)
+
+
+#: Families drawn in the Campbell diagram (memo 7.4 numbering).
+_CAMPBELL_FAMILIES = (7, 12, 8, 9, 10, 11, 13, 3)
+
+
+def campbell_data(*, params: Any, omega_range: tuple[float, float], omega_1: float,
+                  shell: ShellFrequencies, table: StabilityTable, R: int, S: int,
+                  n_points: int = CAMPBELL_POINTS, s_max: int = CAMPBELL_S_MAX) -> CampbellData:
+    """Excitation curves on a logarithmic Omega grid, with the shell frequencies and roots.
+
+    Parameters
+    ----------
+    params : callable
+        ``params(Omega_bar) -> (beta, alpha)``, the pipeline's parameter function
+        (:class:`flexbooster.memo.responses.ExcitationParameters`).
+    omega_range : (float, float)
+        Omega range (rad/s), 0 < lo < hi.
+    omega_1 : float
+        Reference frequency (rad/s), > 0.
+    shell : ShellFrequencies
+        The shell frequencies.
+    table : StabilityTable
+        The roots.
+    R, S : int
+        Beam exponents and harmonics of the case.
+    n_points : int
+        Points of the Omega grid, 2..100000.
+    s_max : int
+        Harmonics |s| <= s_max of the (alpha_r + s) curves are kept, >= 0.
+
+    Returns
+    -------
+    CampbellData
+
+    References
+    ----------
+    Tech Memo 104, eqs. (7.3-1)..(7.3-35).
+    """
+    n_points = count("n_points", n_points, 2, 100_000)
+    s_max = count("s_max", s_max, 0, None)
+    x = np.geomspace(omega_range[0], omega_range[1], n_points) / omega_1
+    beta, alpha = params(x)
+    ec = excitation_curves(R, S)
+    keep = np.isin(ec.family, _CAMPBELL_FAMILIES) & (np.abs(ec.s) <= s_max)
+    E = excitation(ec, x, beta, alpha)[keep]
+    return CampbellData(
+        Omega_bar=x, curves=E, family=ec.family[keep], s=ec.s[keep],
+        shell_omega_bar=shell.omega_bar.copy(), root_Omega_bar=table.Omega_bar.copy(),
+        root_shell_omega_bar=table.shell_omega_bar.copy(), root_active=table.active.copy(),
+        omega_1=float(omega_1))
+
+
+def beam_action_chart(model: Any, *, n_omega: int = BEAM_ACTION_CHART_OMEGA_POINTS,
+                      gamma: tuple[float, float, int] = BEAM_ACTION_CHART_GAMMA,
+                      step_phase: float = BEAM_ACTION_CHART_STEP_PHASE) -> StabilityChart:
+    """The beam-action (Omega, gamma) chart on the named grid.
+
+    Parameters
+    ----------
+    model : BoosterModel
+        The derived model (Omega range, beam-action system).
+    n_omega : int
+        Omega points, logarithmic over the model's range, 2..10000.
+    gamma : (float, float, int)
+        (first, last, count) of the uniform gamma grid, 0 <= first < last < 1.
+    step_phase : float
+        Monodromy step parameter, > 0.
+
+    Returns
+    -------
+    StabilityChart
+
+    References
+    ----------
+    Bolotin (1964), ch. 3; Tech Memo 104, section 4.1.
+    """
+    n_omega = count("n_omega", n_omega, 2, 10_000)
+    lo, hi = model.omega_range
+    g = np.linspace(gamma[0], gamma[1], count("gamma count", gamma[2], 1, 10_000))
+    return stability_chart(beam_system(model), np.geomspace(lo, hi, n_omega), g,
+                           step_phase=step_phase)
+
+
+@dataclass(frozen=True)
+class BeamModeShapes:
+    """Free-free beam mode shapes phi_n(zeta) (appendix C).
+
+    Attributes
+    ----------
+    zeta : numpy.ndarray
+        Shape (n,), beam coordinate, 0 at the aft edge, 2 at the nose (dimensionless).
+    phi : numpy.ndarray
+        Shape (N, n), phi_n(zeta) (dimensionless).
+    lambda_n : numpy.ndarray
+        Shape (N,), eigenvalues (dimensionless).
+    zeta_junction, zeta_cm : float
+        zeta of the junction (eq. C-8) and of the CM.
+    """
+
+    zeta: np.ndarray
+    phi: np.ndarray
+    lambda_n: np.ndarray
+    zeta_junction: float
+    zeta_cm: float
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready mapping (plain lists)."""
+        return _arrays(self)
+
+
+def beam_mode_shapes(mass: MassProperties, *, N: int = MODE_SHAPE_COUNT,
+                     n_points: int = MODE_SHAPE_POINTS) -> BeamModeShapes:
+    """phi_n(zeta), n = 1..N, with the junction and the CM.
+
+    Parameters
+    ----------
+    mass : MassProperties
+        Mass properties (L, d1, d4 in m).
+    N : int
+        Modes, 1..500.
+    n_points : int
+        Points per mode, 2..100000.
+
+    Returns
+    -------
+    BeamModeShapes
+
+    References
+    ----------
+    Tech Memo 104, eqs. (4.1-2), (C-1), (C-6)..(C-9).
+    """
+    N = count("N", N, 1, 500)
+    n_points = count("n_points", n_points, 2, 100_000)
+    zeta = np.linspace(0.0, 2.0, n_points)
+    phi = np.stack([mode_shape(n, zeta) for n in range(1, N + 1)])  # eq. (C-1)
+    L = float(mass.L)
+    return BeamModeShapes(zeta=zeta, phi=phi, lambda_n=free_free_eigenvalues(N),
+                          zeta_junction=(L - (mass.d4 - mass.d1)) / L,  # eq. (C-8)
+                          zeta_cm=1.0 - mass.d4 / L)
+
+
+def nodal_lines(j: int, k: int) -> tuple[np.ndarray, np.ndarray]:
+    """Nodal lines of the radial shape sin(j pi s / 2) cos(k theta) (eqs. 5.3-2d, 5.3-3d).
+
+    Parameters
+    ----------
+    j : int
+        Axial index (>= 1; j half-waves along the cylinder).
+    k : int
+        Circumferential index (>= 0; k full waves around the circumference).
+
+    Returns
+    -------
+    s : numpy.ndarray
+        Axial nodal circles s = 2 i / j, i = 0..j, in the local coordinate s in [0, 2]
+        (0 = aft edge, 2 = forward edge).
+    theta : numpy.ndarray
+        Nodal generators theta = (2 i + 1) pi / (2 k), i = 0..2k - 1 (rad); empty for k = 0.
+
+    References
+    ----------
+    Tech Memo 104, eqs. (5.3-2d), (5.3-3d), Fig. 4.
+    """
+    j = count("j", j, 1, None)
+    k = count("k", k, 0, None)
+    s = 2.0 * np.arange(j + 1) / j  # sin(j pi s / 2) = 0, eq. (5.3-2d)
+    theta = (2.0 * np.arange(2 * k) + 1.0) * np.pi / (2.0 * k) if k else np.empty(0)  # cos k theta
+    return s, theta
+
+
+@dataclass(frozen=True)
+class NodalPattern:
+    """The nodal pattern of one shell mode on its unrolled cylinder (memo Fig. 4).
+
+    Attributes
+    ----------
+    cylinder, j, k : int
+        The mode.
+    radius, half_length : float
+        R_d, L_d (m).
+    s_nodes : numpy.ndarray
+        Nodal circles in the local coordinate s in [0, 2].
+    theta_nodes : numpy.ndarray
+        Nodal generators (rad).
+    sign : numpy.ndarray
+        Shape (len(theta cells), len(s cells)), sign of w in each cell.
+    hz : float
+        Lowest frequency of the mode (Hz), 0 if not in the table.
+    """
+
+    cylinder: int
+    j: int
+    k: int
+    radius: float
+    half_length: float
+    s_nodes: np.ndarray
+    theta_nodes: np.ndarray
+    sign: np.ndarray
+    hz: float
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready mapping (plain lists)."""
+        return _arrays(self)
+
+
+def nodal_pattern_data(shell: ShellFrequencies, *, cylinder: int, j: int | None = None,
+                       k: int | None = None, radius: float, half_length: float) -> NodalPattern:
+    """The nodal pattern of mode (j, k) of a cylinder; by default its lowest j, k >= 1 mode.
+
+    Parameters
+    ----------
+    shell : ShellFrequencies
+        The frequency table (gives the frequency).
+    cylinder : int
+        1 or 2.
+    j, k : int, optional
+        The mode; by default the lowest-frequency mode with j >= 1 and k >= 1.
+    radius, half_length : float
+        R_d, L_d (m), > 0.
+
+    Returns
+    -------
+    NodalPattern
+
+    References
+    ----------
+    Tech Memo 104, eqs. (5.3-2d), (5.3-3d), Fig. 4.
+    """
+    d = count("cylinder", cylinder, 1, 2)
+    radius = positive("radius", radius)
+    half_length = positive("half_length", half_length)
+    if j is None or k is None:
+        rows = np.flatnonzero((shell.cylinder == d) & (shell.j >= 1) & (shell.k >= 1))
+        if rows.size == 0:
+            rows = np.flatnonzero((shell.cylinder == d) & (shell.j >= 1))
+        if rows.size == 0:
+            raise ValueError(f"shell: cylinder {d} has no mode with j >= 1")
+        lowest = rows[np.argmin(shell.hz[rows])]
+        j, k = int(shell.j[lowest]), int(shell.k[lowest])
+    s_nodes, theta_nodes = nodal_lines(j, k)
+    theta_edges = np.concatenate(([0.0], theta_nodes, [2.0 * np.pi]))
+    s_mid = 0.5 * (s_nodes[1:] + s_nodes[:-1])
+    theta_mid = 0.5 * (theta_edges[1:] + theta_edges[:-1])
+    w = np.sin(j * np.pi * s_mid[None, :] / 2.0) * np.cos(k * theta_mid[:, None])  # (5.3-2d)
+    rows = np.flatnonzero(shell.select(cylinder=d, j=j, k=k))
+    return NodalPattern(cylinder=d, j=int(j), k=int(k), radius=float(radius),
+                        half_length=float(half_length), s_nodes=s_nodes,
+                        theta_nodes=theta_nodes, sign=np.sign(w),
+                        hz=float(np.min(shell.hz[rows])) if rows.size else 0.0)
+
+
+@dataclass(frozen=True)
+class FigureData:
+    """Everything the figures draw (stored in the results and in results.json ``figures``).
+
+    Attributes
+    ----------
+    ince_strutt : InceStruttData
+    beam_modes : BeamModeShapes
+    nodal_patterns : tuple of NodalPattern
+        One per cylinder.
+    beam_action_chart : StabilityChart or None
+        None when the beam action was not computed.
+    campbell : CampbellData or None
+        None when the stability table was not computed.
+    """
+
+    ince_strutt: InceStruttData
+    beam_modes: BeamModeShapes
+    nodal_patterns: tuple
+    beam_action_chart: StabilityChart | None = None
+    campbell: CampbellData | None = None
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready mapping; the grids are named in :mod:`flexbooster.memo.charts`."""
+        return {
+            "ince_strutt": self.ince_strutt.to_dict(),
+            "beam_modes": self.beam_modes.to_dict(),
+            "nodal_patterns": [p.to_dict() for p in self.nodal_patterns],
+            "beam_action_chart": (None if self.beam_action_chart is None
+                                  else self.beam_action_chart.to_dict()),
+            "campbell": None if self.campbell is None else self.campbell.to_dict(),
+        }

@@ -1,0 +1,422 @@
+"""Excitation of the shells: psi(tau), T(tau) and the beam coordinates (memo 4.1-10, 4.2-6).
+
+Part of :mod:`flexbooster.memo.responses`; see its docstring for the model.
+
+References
+----------
+.. [1] Tech Memo 104, sections 4.1, 4.2, 5.2-5.4, 6.1, 6.2, 7.1.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from ...checks import count, finite, positive
+from ..beam_action import (
+    BeamActionResult,
+    beam_system,
+    hill_exponents,
+    loaded_frequencies,
+    natural_branch,
+    reduced_exponents,
+)
+from ..model import BoosterModel
+from ..pitch import characteristic_exponent, mathieu_parameters
+
+__all__ = [
+    "BASIS",
+    "Excitation",
+    "ExcitationParameters",
+    "excitation_parameters",
+    "make_excitation",
+]
+
+BASIS = ("F_T", "u_T", "u_T_dd", "psi_dd", "psi_d_sq", "F_T_psi")
+_NB = len(BASIS)
+
+
+# --------------------------------------------------------------------------------------------
+# Checks
+# --------------------------------------------------------------------------------------------
+def _times(tau: Any) -> np.ndarray:
+    tau = np.atleast_1d(np.asarray(tau, dtype=float))
+    if tau.ndim != 1 or tau.size == 0 or not np.all(np.isfinite(tau)) or np.any(tau < 0):
+        raise ValueError("tau: must be a non-empty 1-D array of finite values >= 0")
+    if np.any(np.diff(tau) < 0):
+        raise ValueError("tau: must be non-decreasing")
+    return tau
+
+
+# --------------------------------------------------------------------------------------------
+# Excitation: psi(tau), T(tau), beam coordinates
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Excitation:
+    """Time functions that force the shell modes at one thrust frequency Omega.
+
+    Attributes
+    ----------
+    Omega_bar : float
+        Omega / omega_1 (dimensionless).
+    gamma : float
+        Thrust pulsation amplitude (dimensionless).
+    K : float
+        Gimbal gain (dimensionless).
+    T0_bar : float
+        T0 / (rho h L^2 omega_1^2) (3.0-4b).
+    strain : float
+        (1 - nu^2) T0 / (E h), the axial strain scale of u* (5.3-4a) (dimensionless).
+    beta : float
+        Pitch exponent beta (real, 4.2-9).
+    A : numpy.ndarray
+        Shape (3,), A_1..A_3 of psi (4.2-7) (rad).
+    Omega_i : numpy.ndarray
+        Shape (3,), Omega_i = [(i-2)^2 + eps_i beta] Omega_bar (7.2-6), units of omega_1.
+    beam_freq : numpy.ndarray
+        Shape (C,), (alpha_r + s) Omega_bar of the beam harmonics (4.1-10/11).
+    beam_amp : numpy.ndarray
+        Shape (C, N + 1) complex, C_n^(s) (rows q_1..q_N, q_B, 4.1-12); q = Re sum.
+    N : int
+        Beam modes.
+    alpha : complex
+        The beam exponent alpha_r used (its real part sets beam_freq).
+    warnings : tuple of str
+        Conditions under which the excitation was built (e.g. an unstable beam exponent).
+    """
+
+    Omega_bar: float
+    gamma: float
+    K: float
+    T0_bar: float
+    strain: float
+    beta: float
+    A: np.ndarray
+    Omega_i: np.ndarray
+    beam_freq: np.ndarray
+    beam_amp: np.ndarray
+    N: int
+    alpha: complex = 0j
+    warnings: tuple[str, ...] = field(default_factory=tuple)
+
+    def thrust(self, tau: np.ndarray, derivative: int = 0) -> np.ndarray:
+        """T(tau) / T0 = 1 - gamma cos(Omega_bar tau) (4.2-1a) or its second derivative."""
+        tau = np.asarray(tau, dtype=float)
+        c = np.cos(self.Omega_bar * tau)
+        if derivative == 2:
+            return self.gamma * self.Omega_bar**2 * c  # d^2/dtau^2 of (4.2-1a)
+        return 1.0 - self.gamma * c  # eq. (4.2-1a)
+
+    def psi(self, tau: np.ndarray, derivative: int = 0) -> np.ndarray:
+        """psi = sum A_i cos(Omega_i tau) (4.2-6) and its derivatives (rad)."""
+        ph = np.multiply.outer(np.asarray(tau, dtype=float), self.Omega_i)
+        w = self.Omega_i**derivative
+        trig = (np.cos, lambda x: -np.sin(x), lambda x: -np.cos(x))[derivative]
+        return trig(ph) @ (self.A * w)  # eq. (4.2-6)
+
+    def beam(self, tau: np.ndarray, derivative: int = 0) -> np.ndarray:
+        """q_1..q_N, q_B (4.1-10/11): Re sum_s C^(s) e^{i nu_s tau}, shape (N + 1, nt)."""
+        tau = np.atleast_1d(np.asarray(tau, dtype=float))
+        if self.beam_freq.size == 0:
+            return np.zeros((self.N + 1, tau.size))
+        e = np.exp(1j * np.multiply.outer(self.beam_freq, tau))  # (C, nt)
+        amp = self.beam_amp * ((1j * self.beam_freq[:, None]) ** derivative)
+        return np.real(amp.T @ e)  # eqs. (4.1-10), (4.1-11)
+
+    def time_functions(self, tau: np.ndarray) -> np.ndarray:
+        """All basis functions evaluated in the time domain, shape (6 + 2(N + 1), nt).
+
+        Rows: T0_bar T/2, eps T, eps T'', psi'', psi'^2, K T0_bar T psi/2 (:data:`BASIS`), then
+        q_1..q_N, q_B, then their second derivatives.
+        """
+        tau = np.atleast_1d(np.asarray(tau, dtype=float))
+        T = self.thrust(tau)
+        psi = self.psi(tau)
+        rows = [0.5 * self.T0_bar * T, self.strain * T, self.strain * self.thrust(tau, 2),
+                self.psi(tau, 2), self.psi(tau, 1) ** 2, 0.5 * self.K * self.T0_bar * T * psi]
+        return np.concatenate([np.stack(rows), self.beam(tau), self.beam(tau, 2)])
+
+    def harmonics(self) -> tuple[np.ndarray, np.ndarray]:
+        """The basis functions as sums of harmonics: f_b(tau) = Re sum_h c[b, h] e^{i nu_h tau}.
+
+        Returns
+        -------
+        nu : numpy.ndarray
+            Shape (H,), frequencies (units of omega_1; may be negative or zero).
+        c : numpy.ndarray
+            Shape (6 + 2(N + 1), H), complex amplitudes.
+
+        Notes
+        -----
+        psi'^2 = sum_ip A_i A_p Omega_i Omega_p sin sin = 1/2 sum [cos(Omega_i - Omega_p)
+        - cos(Omega_i + Omega_p)]; T psi = sum A_i cos Omega_i - gamma/2 sum A_i
+        [cos(Omega_bar + Omega_i) + cos(Omega_bar - Omega_i)] (the products behind the
+        families 4-6, 8-12 of memo 7.3).
+        """
+        Ob, g, A, W = self.Omega_bar, self.gamma, self.A, self.Omega_i
+        tf, eps, kt = 0.5 * self.T0_bar, self.strain, 0.5 * self.K * self.T0_bar
+        nb = _NB + 2 * (self.N + 1)
+        nu: list[float] = []
+        cols: list[tuple[int, complex]] = []
+
+        def add(freq: float, row: int, amp: complex) -> None:
+            nu.append(float(freq))
+            cols.append((row, complex(amp)))
+
+        add(0.0, 0, tf)  # T0_bar T / 2, T = 1 - gamma cos(Omega_bar tau) (4.2-1a)
+        add(Ob, 0, -g * tf)
+        add(0.0, 1, eps)  # eps T
+        add(Ob, 1, -g * eps)
+        add(Ob, 2, eps * g * Ob**2)  # eps T''
+        for i in range(3):
+            add(W[i], 3, -A[i] * W[i] ** 2)  # psi'' (4.2-6)
+            add(W[i], 5, kt * A[i])  # K T0_bar T psi / 2
+            add(Ob + W[i], 5, -0.5 * g * kt * A[i])
+            add(Ob - W[i], 5, -0.5 * g * kt * A[i])
+            for p in range(3):
+                half = 0.5 * A[i] * A[p] * W[i] * W[p]
+                add(W[i] - W[p], 4, half)  # psi'^2
+                add(W[i] + W[p], 4, -half)
+        for c, f in enumerate(self.beam_freq):
+            for b in range(self.N + 1):
+                add(f, _NB + b, self.beam_amp[c, b])  # q_b
+                add(f, _NB + self.N + 1 + b, -(f**2) * self.beam_amp[c, b])  # q_b''
+        out = np.zeros((nb, len(nu)), dtype=complex)
+        for h, (row, amp) in enumerate(cols):
+            out[row, h] = amp
+        return np.asarray(nu), out
+
+
+@dataclass(frozen=True)
+class ExcitationParameters:
+    """beta(Omega_bar) and alpha_r(Omega_bar): the one parameter function of the forcing.
+
+    The stability roots (:func:`flexbooster.memo.stability.unstable_frequencies`) and the
+    forcing of :func:`make_excitation` (hence :func:`flexbooster.memo.responses.simulate`) both
+    use it, so a simulation at a root of the table is exactly resonant.
+
+    Attributes
+    ----------
+    omega_psi : float
+        Rigid-body pitch frequency (rad/s).
+    gamma : float
+        Pulsation amplitude (dimensionless).
+    omega_1 : float
+        Reference frequency (rad/s).
+    Omega_bar : numpy.ndarray
+        Shape (G,), increasing, the grid on which the beam exponents were computed
+        (units of omega_1).
+    alpha_Omega : numpy.ndarray
+        Shape (G, R), Re alpha_r Omega_bar on that grid (units of omega_1), the quantity that
+        is interpolated (nearly constant: it tends to the loaded-beam frequency as gamma -> 0).
+    """
+
+    omega_psi: float
+    gamma: float
+    omega_1: float
+    Omega_bar: np.ndarray
+    alpha_Omega: np.ndarray
+    _spline: Any = field(repr=False, compare=False)
+
+    def beta(self, Omega_bar: Any) -> np.ndarray:
+        """Exact characteristic exponent beta (complex; Hill's determinant) at Omega_bar.
+
+        Parameters
+        ----------
+        Omega_bar : array_like
+            Omega / omega_1 (dimensionless), > 0.
+
+        Returns
+        -------
+        numpy.ndarray
+            beta, complex: its real part is the band index inside a pitch tongue (4.2-9).
+        """
+        x = np.atleast_1d(np.asarray(Omega_bar, dtype=float))
+        a, q = mathieu_parameters(x * self.omega_1, self.omega_psi, self.gamma)  # (4.2-4)
+        return characteristic_exponent(a, q, method="hill")
+
+    def alpha(self, Omega_bar: Any) -> np.ndarray:
+        """Re alpha_r (r = 1..R) at Omega_bar: the cubic spline of alpha_r Omega_bar.
+
+        Parameters
+        ----------
+        Omega_bar : array_like
+            Omega / omega_1 (dimensionless), > 0; held constant outside the grid.
+
+        Returns
+        -------
+        numpy.ndarray
+            Shape (n, R) (dimensionless).
+        """
+        x = np.atleast_1d(np.asarray(Omega_bar, dtype=float))
+        lo, hi = self.Omega_bar[0], self.Omega_bar[-1]
+        return self._spline(np.clip(x, lo, hi)) / x[:, None]
+
+    def __call__(self, Omega_bar: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(Re beta, Re alpha_r) at Omega_bar, the ``params`` of the stability solver.
+
+        Parameters
+        ----------
+        Omega_bar : numpy.ndarray
+            Shape (n,), Omega / omega_1 (dimensionless), > 0.
+
+        Returns
+        -------
+        beta : numpy.ndarray
+            Shape (n,), Re beta (dimensionless).
+        alpha : numpy.ndarray
+            Shape (n, R), Re alpha_r (dimensionless).
+        """
+        return self.beta(Omega_bar).real, self.alpha(Omega_bar)
+
+
+def excitation_parameters(model: BoosterModel, beam_action: BeamActionResult
+                          ) -> ExcitationParameters:
+    """The parameter function beta(Omega_bar), alpha_r(Omega_bar) of a booster.
+
+    Parameters
+    ----------
+    model : BoosterModel
+        The derived model (omega_psi, gamma, omega_1).
+    beam_action : BeamActionResult
+        Beam-action exponents on the case's Omega grid (natural branch).
+
+    Returns
+    -------
+    ExcitationParameters
+        beta is the exact characteristic exponent (Hill's determinant) at any Omega; alpha_r
+        comes from the beam-action exponents on the grid, interpolated as alpha_r Omega_bar by
+        a cubic spline, held constant outside the grid.
+
+    References
+    ----------
+    Tech Memo 104, eqs. (4.1-10), (4.1-11), (4.2-4), (4.2-9).
+    """
+    from scipy.interpolate import CubicSpline
+
+    x = beam_action.Omega_bar
+    order = np.argsort(x)
+    y = (beam_action.alpha.real * x[:, None])[order]
+    return ExcitationParameters(
+        omega_psi=float(model.omega_psi), gamma=float(model.gamma),
+        omega_1=float(model.omega_1), Omega_bar=x[order], alpha_Omega=y,
+        _spline=CubicSpline(x[order], y, axis=0))
+
+
+def _beam_exponents(model: BoosterModel, x: np.ndarray, N: int, S: int) -> tuple:
+    system = beam_system(model, N)
+    hill = hill_exponents(system, x * model.omega_1, np.full(x.shape, model.gamma), S)
+    nat = natural_branch(reduced_exponents(hill.alpha), x, loaded_frequencies(system))
+    return hill, nat
+
+
+def make_excitation(model: BoosterModel, Omega: float, *, psi0: float = 0.01,
+                    beam_amplitude: float = 1e-4, beam_mode: int = 1, N: int | None = None,
+                    S: int | None = None, params: ExcitationParameters | None = None
+                    ) -> Excitation:
+    """The time functions that force the shells at the thrust frequency Omega.
+
+    Parameters
+    ----------
+    model : BoosterModel
+        The derived model; ``truncation.N``, ``.S`` give the defaults of N, S.
+    Omega : float
+        Thrust pulsation frequency (rad/s), > 0.
+    psi0 : float
+        Initial pitch angle psi(0) (rad) (4.2-8a); 0 switches the rigid-body terms off.
+    beam_amplitude : float
+        Euclidean norm of the Floquet vector (C^(s))_s of the beam motion (dimensionless, g* is
+        in units of L); 0 switches the beam terms off.
+    beam_mode : int
+        Which beam exponent alpha_r (r = 1..N + 1, natural branch) moves the beam.
+    N, S : int, optional
+        Beam modes and Hill harmonics (default: the case's truncation).
+    params : ExcitationParameters, optional
+        The pipeline's parameter function: beta and the beam exponent alpha_r are taken from
+        it (the values the stability roots solve with), so that a simulation at a root is
+        exactly resonant.  Without it, beta is the exact exponent (Hill) and alpha_r comes
+        from Hill's determinant at Omega.
+
+    Returns
+    -------
+    Excitation
+
+    Raises
+    ------
+    ValueError
+        Bad input, or a pitch motion that is not bounded (complex beta: the three-term psi of
+        4.2-6 does not exist).
+
+    Notes
+    -----
+    A_i from (4.2-7b..d) with the exact beta; the beam vector from Hill's determinant at the
+    exponent of the Hill set nearest alpha_r of the natural branch.  A beam exponent with an
+    imaginary part (flutter or a parametric region of the beam) is used with its real part
+    only and recorded in ``warnings``.
+
+    References
+    ----------
+    Tech Memo 104, eqs. (4.1-10)..(4.1-12), (4.2-6)..(4.2-9).
+    """
+    N = count("N", model.truncation.N if N is None else N, 0)
+    S = count("S", model.truncation.S if S is None else S, 0)
+    return _make_excitation(model, Omega, psi0, beam_amplitude, beam_mode, N, S, params)
+
+
+def _make_excitation(model: BoosterModel, Omega: float, psi0: float, beam_amplitude: float,
+                     beam_mode: int, N: int, S: int, params: ExcitationParameters | None,
+                     beam_pre: tuple | None = None) -> Excitation:
+    Omega = positive("Omega", Omega)
+    psi0 = finite("psi0", psi0)
+    beam_amplitude = finite("beam_amplitude", beam_amplitude)
+    beam_mode = count("beam_mode", beam_mode, 1, N + 1)
+    Ob = Omega / model.omega_1
+    a, q = mathieu_parameters(np.array([Omega]), model.omega_psi, model.gamma)  # (4.2-4)
+    a, q = float(a[0]), float(q[0])
+    if params is not None:
+        beta_c = complex(params.beta(Ob)[0])
+    else:
+        beta_c = complex(characteristic_exponent(a, q, "hill"))
+    if abs(beta_c.imag) > 0.0:
+        raise ValueError(f"Omega = {Omega!r}: the pitch motion is unbounded (beta = {beta_c}); "
+                         "psi of eq. (4.2-6) does not exist")
+    beta = beta_c.real
+    if psi0 != 0.0:
+        den1, den3 = a - (beta - 2.0) ** 2, a - (2.0 + beta) ** 2
+        A2 = psi0 / (1.0 + q * (1.0 / den3 + 1.0 / den1))  # eq. (4.2-7c)
+        A = np.array([A2 * q / den1, A2, A2 * q / den3])  # eqs. (4.2-7b, d)
+    else:
+        A = np.zeros(3)
+    Omega_i = np.array([1.0 - beta / 2.0, beta / 2.0, 1.0 + beta / 2.0]) * Ob  # (7.2-1..3)
+    warnings: list[str] = []
+    alpha = 0j
+    if beam_amplitude != 0.0 and N >= 0:
+        if beam_pre is None:
+            hill, nat = _beam_exponents(model, np.array([Ob]), N, S)
+            beam_pre = (hill.alpha[0], hill.C[0], nat[0])
+        cand, Cs, nat_row = beam_pre
+        target = complex(nat_row[beam_mode - 1])
+        if params is not None and beam_mode <= params.alpha_Omega.shape[1]:
+            target = complex(params.alpha(Ob)[0, beam_mode - 1], target.imag)
+        shift = cand.real - target.real - np.round(cand.real - target.real)
+        dist = np.abs(shift) + np.abs(cand.imag - target.imag)
+        e = int(np.argmin(dist))
+        alpha = complex(cand[e])
+        if abs(alpha.imag) > 1e-9:
+            warnings.append(f"beam exponent alpha_{beam_mode} = {alpha:.6g} is complex at "
+                            f"Omega = {Omega:.6g} rad/s: its real part is used")
+        if params is not None:  # the parameter function's value, in Hill's representative
+            alpha = complex(alpha.real - shift[e], alpha.imag)
+        s = np.arange(-S, S + 1)
+        beam_freq = (alpha.real + s) * Ob  # eqs. (4.1-10), (4.1-11)
+        C = Cs[e]  # (2S + 1, N + 1), unit norm
+        beam_amp = beam_amplitude * C
+    else:
+        beam_freq = np.zeros(0)
+        beam_amp = np.zeros((0, N + 1), dtype=complex)
+    return Excitation(Omega_bar=Ob, gamma=model.gamma, K=model.K, T0_bar=model.T0_bar,
+                      strain=model.strain, beta=beta, A=A, Omega_i=Omega_i,
+                      beam_freq=beam_freq, beam_amp=beam_amp, N=N, alpha=alpha,
+                      warnings=tuple(warnings))

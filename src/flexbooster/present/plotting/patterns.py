@@ -1,0 +1,85 @@
+"""Nodal patterns of the shell modes on the unrolled cylinder surfaces (memo Fig. 4).
+
+The radial shape function of cylinder d is h_jk = sin(j pi s / 2) cos(k theta) (eqs. 5.3-2d,
+5.3-3d) with the local axial coordinate s = 0 at the cylinder's aft edge and s = 2 at its
+forward edge (the zero-phase default of :mod:`flexbooster.memo.shell`; erratum E10 explains why
+the printed phase is not used).  Its nodal lines (computed by
+:func:`flexbooster.memo.charts.nodal_pattern_data`) are the j + 1 circles s = 2 i / j and the
+2k generators theta = (2 i + 1) pi / (2 k); the cells between them alternate in sign, the
+chequerboard of memo Fig. 4.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.axes import Axes
+from matplotlib.figure import Figure
+
+from ...memo.charts import NodalPattern
+
+__all__ = ["nodal_pattern", "nodal_patterns"]
+
+
+def nodal_pattern(data: NodalPattern, ax: Axes | None = None) -> Figure:
+    """The (j, k) nodal pattern of one cylinder on its unrolled surface (memo Fig. 4).
+
+    Parameters
+    ----------
+    data : NodalPattern
+        The mode's nodal lines and cell signs, radius and half-length (m).
+    ax : matplotlib.axes.Axes, optional
+        Axes to draw on; a new figure is made when None.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Cells where w > 0 shaded red, w < 0 blue; nodal lines in black.
+
+    References
+    ----------
+    Tech Memo 104, eqs. (5.3-2d), (5.3-3d), Fig. 4.
+    """
+    if ax is None:
+        fig = Figure(figsize=(6.4, 3.4), layout="constrained")
+        ax = fig.add_subplot()
+    else:
+        fig = ax.figure
+    R, L = data.radius, data.half_length
+    theta_edges = np.concatenate(([0.0], data.theta_nodes, [2.0 * np.pi]))
+    ax.pcolormesh(data.s_nodes * L, theta_edges * R, data.sign, shading="flat",
+                  cmap="RdBu_r", vmin=-1.6, vmax=1.6)
+    for xs in data.s_nodes * L:
+        ax.axvline(xs, color="k", lw=1.2)
+    for th in data.theta_nodes * R:
+        ax.axhline(th, color="k", lw=1.2)
+    ax.set_xlim(0.0, 2.0 * L)
+    ax.set_ylim(0.0, 2.0 * np.pi * R)
+    ax.set_xlabel(f"x from the aft edge of cylinder {data.cylinder} (m)")
+    ax.set_ylabel(r"arc $R\theta$ (m)")
+    title = f"cylinder {data.cylinder}: nodal pattern j = {data.j}, k = {data.k}"
+    label = f" ({data.hz:.4g} Hz)" if data.hz > 0 else ""
+    ax.set_title(title + label, fontsize=9)
+    return fig
+
+
+def nodal_patterns(patterns: tuple[NodalPattern, ...] | list[NodalPattern]) -> Figure:
+    """Nodal patterns of one mode of each cylinder, one above the other (memo Fig. 4a, 4b).
+
+    Parameters
+    ----------
+    patterns : sequence of NodalPattern
+        One per panel, cylinder 1 (aft) first.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+
+    References
+    ----------
+    Tech Memo 104, Fig. 4, eqs. (5.3-2d), (5.3-3d).
+    """
+    fig = Figure(figsize=(7.0, 3.0 * len(patterns)), layout="constrained")
+    axes = np.atleast_1d(fig.subplots(len(patterns), 1))
+    for data, ax in zip(patterns, axes, strict=True):
+        nodal_pattern(data, ax=ax)
+    return fig

@@ -1,0 +1,109 @@
+"""Ince-Strutt stability chart of the rigid-body pitch equation (memo section 4.2)."""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.axes import Axes
+from matplotlib.figure import Figure
+
+from ...memo.charts import InceStruttData
+
+__all__ = ["ince_strutt_chart", "beta_comparison_plot"]
+
+
+def _axes(ax: Axes | None, figsize: tuple[float, float]) -> tuple[Figure, Axes]:
+    if ax is None:
+        fig = Figure(figsize=figsize, layout="constrained")
+        return fig, fig.add_subplot()
+    return ax.figure, ax
+
+
+def ince_strutt_chart(data: InceStruttData, ax: Axes | None = None) -> Figure:
+    """Ince-Strutt chart (a against q) with the booster's operating path.
+
+    Parameters
+    ----------
+    data : InceStruttData
+        Transition curves a_r(q), b_r(q) and the operating path (a(Omega), q(Omega)) of
+        eq. (4.2-4), from :func:`flexbooster.memo.charts.ince_strutt_data`.
+    ax : matplotlib.axes.Axes, optional
+        Axes to draw on; a new figure is made when None.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The unstable regions (tongue r between b_r and a_r; a < a_0) shaded from their
+        boundaries, the transition curves, and the path (unstable points in red).
+
+    References
+    ----------
+    Abramowitz & Stegun (1964), fig. 20.1; Tech Memo 104, eqs. (4.2-3)..(4.2-5).
+    """
+    fig, ax = _axes(ax, (6.4, 4.8))
+    q, curves = data.q, data.curves
+    a_lo = min(-0.2, float(np.min(data.a_path)) - 0.1)
+    a_hi = max(1.5, float(np.max(data.a_path)) * 1.1)
+    ax.fill_between(q, a_lo, curves["a0"], color="C3", alpha=0.25, lw=0)
+    r = 1
+    while f"a{r}" in curves:
+        lower = np.minimum(curves[f"a{r}"], curves[f"b{r}"])
+        upper = np.maximum(curves[f"a{r}"], curves[f"b{r}"])
+        ax.fill_between(q, lower, upper, color="C3", alpha=0.25, lw=0,
+                        label="unstable (tongues)" if r == 1 else None)
+        r += 1
+    for name, values in curves.items():
+        ax.plot(q, values, "-" if name.startswith("a") else "--", color="k", lw=0.8)
+        visible = (values > a_lo) & (values < a_hi)
+        if np.any(visible):
+            i = np.flatnonzero(visible)[-1]
+            ax.annotate(f"${name[0]}_{name[1:]}$", (q[i], values[i]), fontsize=8,
+                        xytext=(2, 2), textcoords="offset points")
+    ok = data.path_stable
+    ax.plot(data.q_path, data.a_path, "-", color="C0", lw=1.2, label="operating path")
+    ax.plot(data.q_path[ok], data.a_path[ok], "o", color="C0", ms=2.5)
+    if np.any(~ok):
+        ax.plot(data.q_path[~ok], data.a_path[~ok], "o", color="C3", ms=3.5, label="unstable")
+    ax.legend(loc="upper left", fontsize=8)
+    ax.set_xlim(0.0, float(q[-1]))
+    ax.set_ylim(a_lo, a_hi)
+    ax.set_xlabel("q")
+    ax.set_ylabel("a")
+    ax.set_title(r"Ince-Strutt chart, $\psi'' + (a - 2q\cos 2\tau_1)\psi = 0$")
+    return fig
+
+
+def beta_comparison_plot(q: np.ndarray, errors: dict, ax: Axes | None = None) -> Figure:
+    """|beta_memo - beta_exact| against q (log-log): eq. (4.2-9) corrected and as printed.
+
+    Parameters
+    ----------
+    q : numpy.ndarray
+        Shape (n,), Mathieu q (dimensionless), > 0.
+    errors : dict of float to (numpy.ndarray, numpy.ndarray)
+        a -> (|corrected - exact|, |printed - exact|), each shape (n,) (dimensionless).
+    ax : matplotlib.axes.Axes, optional
+        Axes to draw on; a new figure is made when None.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Solid: corrected (erratum E4), slope 4; dashed: printed, slope 2; dotted guides
+        proportional to q^4 and q^2.
+
+    References
+    ----------
+    Tech Memo 104, eq. (4.2-9); reading guide erratum E4; A&S (1964) 20.3.15.
+    """
+    fig, ax = _axes(ax, (5.6, 4.2))
+    q = np.asarray(q, dtype=float)
+    q_max = float(q.max())
+    for i, (a, (corr, printed)) in enumerate(errors.items()):
+        ax.loglog(q, np.maximum(corr, 1e-17), "-", color=f"C{i}", label=f"a = {a:g}, corrected")
+        ax.loglog(q, printed, "--", color=f"C{i}", label=f"a = {a:g}, as printed")
+    ax.loglog(q, 0.5 * (q / q_max) ** 4 * 1e-6, ":", color="0.4", label=r"$\propto q^4$")
+    ax.loglog(q, (q / q_max) ** 2 * 1e-3, ":", color="0.7", label=r"$\propto q^2$")
+    ax.set_xlabel("q")
+    ax.set_ylabel(r"$|\beta_{memo} - \beta_{exact}|$")
+    ax.set_title("Eq. (4.2-9) against the exact Floquet exponent")
+    ax.legend(fontsize=7, ncol=2)
+    return fig

@@ -1,0 +1,168 @@
+"""Result types of an analysis: what :func:`flexbooster.analyze` returns and results.json holds.
+
+The presentation layer (:mod:`flexbooster.present`) reads these objects only.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from . import __version__
+from .errors import AnalysisWarning
+from .memo.beam import BeamModes
+from .memo.beam_action import BeamActionResult
+from .memo.charts import FigureData
+from .memo.geometry import DimensionlessGroups, MassProperties
+from .memo.model import BoosterModel
+from .memo.pitch import PitchResult
+from .memo.shell import ShellFrequencies
+from .memo.stability import StabilityTable
+
+if TYPE_CHECKING:
+    from .case import Case
+
+__all__ = ["Results", "SCHEMA_VERSION", "UNITS"]
+
+#: Version of the layout of results.json; bumped when a key changes meaning or disappears.
+SCHEMA_VERSION = "1.0"
+#: Units of every number in results.json, by dotted key.
+UNITS: dict[str, str] = {
+    "case.booster.cylinder*.radius": "m",
+    "case.booster.cylinder*.half_length": "m",
+    "case.booster.thickness": "m",
+    "case.booster.E": "Pa",
+    "case.booster.nu": "1",
+    "case.booster.rho": "kg/m^3",
+    "case.thrust.F0": "N",
+    "case.thrust.T0": "N/m",
+    "case.thrust.gamma": "1",
+    "case.thrust.K": "1",
+    "case.thrust.omega_min": "rad/s",
+    "case.thrust.omega_max": "rad/s",
+    "mass_properties.L": "m",
+    "mass_properties.x_cm": "m",
+    "mass_properties.d1..d4": "m",
+    "mass_properties.a, c, b": "1 (xi_bar = (x - x_cm)/L)",
+    "mass_properties.m1, m2, mass": "kg",
+    "mass_properties.I_cm": "kg m^2",
+    "frequencies.omega_1": "rad/s",
+    "frequencies.omega_1_hz": "Hz",
+    "frequencies.omega_psi": "rad/s",
+    "frequencies.omega_psi_hz": "Hz",
+    "dimensionless.*": "1",
+    "beam_modes.lambda_n, alpha_n": "1",
+    "beam_modes.omega_n, omega_1": "rad/s",
+    "pitch.Omega": "rad/s",
+    "pitch.omega_psi": "rad/s",
+    "pitch.a, q, beta_*": "1",
+    "pitch.growth_rate, max_growth_rate": "1/s (amplitude e-folding rate of psi)",
+    "pitch.unstable_intervals": "rad/s",
+    "shell_frequencies.omega_bar": "1 (units of omega_1)",
+    "shell_frequencies.rad_s": "rad/s",
+    "shell_frequencies.hz": "Hz",
+    "beam_action.Omega": "rad/s",
+    "beam_action.Omega_bar, alpha_*, frequencies_*": "1 (alpha_r Omega_bar in units of omega_1)",
+    "beam_action.growth_rate, max_growth_rate": "1/s",
+    "stability.rows.Omega_rad_s, shell_rad_s": "rad/s",
+    "stability.rows.Omega_hz, shell_hz": "Hz",
+    "stability.rows.Omega_over_omega1, shell_omega_bar": "1 (units of omega_1)",
+    "figures.*.Omega_bar, curves, shell_omega_bar, root_*": "1 (units of omega_1)",
+    "figures.beam_action_chart.Omega": "rad/s",
+    "figures.beam_action_chart.growth_rate": "1/s",
+    "figures.nodal_patterns.radius, half_length": "m",
+    "figures.nodal_patterns.hz": "Hz",
+    "figures.ince_strutt.*, beam_modes.*": "1",
+}
+
+
+@dataclass(frozen=True)
+class Results:
+    """Everything one analysis produced (all SI).
+
+    Attributes
+    ----------
+    case : Case
+        The validated input.
+    mass : MassProperties
+        Geometry and mass properties (memo 2.2, Fig. 1-2).
+    omega_1 : float
+        First free-free bending frequency of the equivalent beam, eq. (4.2-8b) (rad/s).
+    omega_psi : float
+        Rigid-body pitch frequency under the steady thrust, sqrt(F0 d2 K / I_cm) (rad/s).
+    groups : DimensionlessGroups
+        mu, lambda_d, sigma, T0_bar (memo 3.0).
+    beam : BeamModes
+        lambda_n, alpha_n, omega_n of the first N free-free modes (appendix C).
+    pitch : PitchResult
+        Mathieu a, q, the exponent beta (exact and memo) and the rigid-body verdict (4.2).
+    shell : ShellFrequencies
+        Shell natural frequencies of both cylinders (5.4, 6.2, appendix A).
+    model : BoosterModel
+        The derived model the stages were computed from.
+    figures : FigureData
+        The data every figure draws (transition curves, excitation curves, charts, shapes).
+    beam_action : BeamActionResult or None
+        Beam-action exponents alpha_r and verdict (4.1); None if not computed.
+    stability : StabilityTable or None
+        Unstable thrust frequencies (7.3); None if not computed.
+    warnings : tuple of AnalysisWarning
+        Conditions the user must know about.
+    """
+
+    case: Case
+    mass: MassProperties
+    omega_1: float
+    omega_psi: float
+    groups: DimensionlessGroups
+    beam: BeamModes
+    pitch: PitchResult
+    shell: ShellFrequencies
+    model: BoosterModel | None = None
+    figures: FigureData | None = None
+    beam_action: BeamActionResult | None = None
+    stability: StabilityTable | None = None
+    warnings: tuple[AnalysisWarning, ...] = field(default_factory=tuple)
+
+    @property
+    def Omega(self) -> np.ndarray:
+        """The thrust pulsation frequencies analysed (rad/s)."""
+        return self.pitch.Omega
+
+    @property
+    def a(self) -> np.ndarray:
+        """Mathieu parameter a along ``Omega`` (eq. 4.2-4)."""
+        return self.pitch.a
+
+    @property
+    def q(self) -> np.ndarray:
+        """Mathieu parameter q along ``Omega`` (eq. 4.2-4)."""
+        return self.pitch.q
+
+    def to_dict(self) -> dict[str, Any]:
+        """What results.json holds: schema version, units, inputs and every result."""
+        return {
+            "schema_version": SCHEMA_VERSION,
+            "flexbooster_version": __version__,
+            "units": dict(UNITS),
+            "case": self.case.to_si_dict(),
+            "mass_properties": self.mass.to_dict(),
+            "frequencies": {
+                "omega_1": self.omega_1,
+                "omega_1_hz": self.omega_1 / (2.0 * np.pi),
+                "omega_psi": self.omega_psi,
+                "omega_psi_hz": self.omega_psi / (2.0 * np.pi),
+            },
+            "dimensionless": self.groups.to_dict(),
+            "beam_modes": self.beam.to_dict(),
+            "pitch": self.pitch.to_dict(),
+            "shell_frequencies": self.shell.to_dict(),
+            "beam_action": None if self.beam_action is None else self.beam_action.to_dict(),
+            "stability": None if self.stability is None else self.stability.to_dict(),
+            "warnings": [w.to_dict() for w in self.warnings],
+            "figures": None if self.figures is None else self.figures.to_dict(),
+        }
+
+
