@@ -1,7 +1,18 @@
-"""House rules that a test can enforce: the numerical core imports numpy and scipy only."""
+"""House rules that a test can enforce (docs/architecture.md).
+
+* the layers and which may import which (static: every ``import`` of every module);
+* the numerical core imports numpy and scipy only (at run time, in a fresh interpreter);
+* presentation takes result types only: from the core it imports classes (result dataclasses)
+  and constants, never a function;
+* every module has an explicit ``__all__`` and no star import; plotting never calls ``show``;
+* every public function and class of the package documents every parameter (numpydoc).
+"""
 
 from __future__ import annotations
 
+import ast
+import importlib
+import inspect
 import subprocess
 import sys
 from pathlib import Path
@@ -11,39 +22,135 @@ import pytest
 import flexbooster
 
 PACKAGE = Path(flexbooster.__file__).parent
-#: Layers allowed to use the input/plotting/report libraries.
-THIN_LAYERS = {
-    "__init__",
-    "analysis",
-    "case",
-    "cli",
-    "io",
-    "outputs",
-    "summary",
-    "units",
-    "report",
-    "errors",
+
+#: Layer of each top-level module or subpackage of flexbooster (docs/architecture.md).
+LAYER = {
+    "errors": "input", "units": "input", "checks": "input", "case": "input",
+    "memo": "core", "floquet": "core", "shell_of_revolution": "core", "vehicle": "core",
+    "model": "model", "_threads": "pipeline",
+    "results": "results", "analysis": "pipeline",
+    "reference": "reference",
+    "present": "present", "sweep": "sweep", "cli": "cli", "__init__": "api", "__main__": "cli",
 }
-CORE = sorted(p.stem for p in PACKAGE.glob("*.py") if p.stem not in THIN_LAYERS)
-FORBIDDEN = ("pydantic", "pint", "matplotlib", "rich", "click", "mpmath", "sympy")
+#: Which layers a layer may import (itself included).
+ALLOWED = {
+    "input": {"input"},
+    "core": {"core", "checks"},
+    "model": {"model", "core", "input"},
+    "results": {"results", "core", "input"},
+    "pipeline": {"pipeline", "results", "model", "core", "input"},
+    "reference": {"reference", "core", "checks"},
+    "present": {"present", "results", "core-types", "input", "api"},
+    "sweep": {"sweep", "pipeline", "results", "model", "core", "input", "present", "api"},
+    "cli": {"cli", "sweep", "present", "pipeline", "results", "model", "core", "input", "api"},
+    "api": {"api"},
+}
+CORE_THIRD_PARTY = {"numpy", "scipy"}
+FORBIDDEN_IN_CORE = ("pydantic", "pint", "matplotlib", "rich", "click", "mpmath", "sympy",
+                     "dask", "xarray", "threadpoolctl")
+MODULES = sorted(p for p in PACKAGE.rglob("*.py"))
 
 
-def test_core_modules_exist():
-    assert {"geometry", "beam", "pitch"} <= set(CORE)
+def _name(path: Path) -> str:
+    rel = path.relative_to(PACKAGE.parent).with_suffix("")
+    parts = list(rel.parts)
+    if parts[-1] == "__init__":
+        parts = parts[:-1]
+    return ".".join(parts)
 
 
-@pytest.mark.parametrize("module", CORE)
-def test_core_imports_numpy_and_scipy_only(module):
+def _layer(module: str) -> str:
+    parts = module.split(".")
+    top = parts[1] if len(parts) > 1 else "__init__"
+    if top == "checks":
+        return "checks"
+    return LAYER[top]
+
+
+def _imports(path: Path) -> list[tuple[str, list[str], int]]:
+    """(absolute module, imported names, line) of every import in a module (incl. lazy)."""
+    tree = ast.parse(path.read_text())
+    me = _name(path).split(".")
+    package = me if path.name == "__init__.py" else me[:-1]
+    out = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            out += [(a.name, [], node.lineno) for a in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            if node.level:
+                base = package[: len(package) - node.level + 1]
+                mod = ".".join(base + ([node.module] if node.module else []))
+            else:
+                mod = node.module or ""
+            out.append((mod, [a.name for a in node.names], node.lineno))
+    return out
+
+
+def test_every_module_has_a_layer():
+    for path in MODULES:
+        assert _layer(_name(path)) in ALLOWED or _layer(_name(path)) == "checks", path
+
+
+@pytest.mark.parametrize("path", MODULES, ids=lambda p: _name(p))
+def test_layers_import_only_what_they_may(path):
+    me = _name(path)
+    mine = _layer(me)
+    allowed = ALLOWED["core"] if mine == "checks" else ALLOWED[mine]
+    for mod, names, line in _imports(path):
+        if not mod.startswith("flexbooster"):
+            if mine in ("core", "checks", "reference"):
+                assert mod.split(".")[0] in CORE_THIRD_PARTY | set(sys.stdlib_module_names), (
+                    f"{me}:{line} imports {mod}: the numerical core uses numpy and scipy only")
+            continue
+        if mod == "flexbooster" and names == ["__version__"]:
+            continue  # the version string
+        targets = [mod] if mod != "flexbooster" else [f"flexbooster.{n}" for n in names]
+        for target in targets:
+            theirs = _layer(target)
+            if mine == "present" and theirs == "core":
+                # presentation reads result types: classes and constants, never a solver
+                module = importlib.import_module(target)
+                for n in names:
+                    obj = getattr(module, n)
+                    assert inspect.isclass(obj) or not callable(obj), (
+                        f"{me}:{line} imports the function {target}.{n}: presentation must "
+                        "draw stored results, not compute them")
+                continue
+            if theirs == "checks":
+                theirs = "checks" if mine in ("core", "checks", "reference") else "input"
+            assert theirs in allowed or theirs == mine, (
+                f"{me}:{line} ({mine}) imports {target} ({theirs}); allowed: {sorted(allowed)}")
+
+
+def test_nothing_in_the_product_imports_the_reference_package():
+    for path in MODULES:
+        me = _name(path)
+        if _layer(me) == "reference":
+            continue
+        for mod, _, line in _imports(path):
+            assert not mod.startswith("flexbooster.reference"), f"{me}:{line} imports {mod}"
+
+
+CORE_MODULES = [_name(p) for p in MODULES if _layer(_name(p)) in ("core", "checks")]
+
+
+@pytest.mark.parametrize("module", CORE_MODULES)
+def test_core_imports_numpy_and_scipy_only_at_run_time(module):
     code = (
-        f"import sys, flexbooster.{module}\n"
-        f"bad = sorted({{m.split('.')[0] for m in sys.modules}} & set({FORBIDDEN!r}))\n"
+        f"import sys, {module}\n"
+        f"bad = sorted({{m.split('.')[0] for m in sys.modules}} & set({FORBIDDEN_IN_CORE!r}))\n"
         "print(','.join(bad))"
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
-    assert out.stdout.strip() == "", f"flexbooster.{module} pulls in {out.stdout.strip()}"
+    assert out.stdout.strip() == "", f"{module} pulls in {out.stdout.strip()}"
 
 
-@pytest.mark.parametrize("path", sorted(PACKAGE.rglob("*.py")), ids=lambda p: p.stem)
+def test_core_packages_exist():
+    assert {"flexbooster.memo.geometry", "flexbooster.memo.beam",
+            "flexbooster.memo.pitch"} <= set(CORE_MODULES)
+
+
+@pytest.mark.parametrize("path", MODULES, ids=lambda p: _name(p))
 def test_explicit_all_and_no_star_imports(path):
     text = path.read_text()
     assert "import *" not in text
@@ -54,3 +161,58 @@ def test_explicit_all_and_no_star_imports(path):
 def test_plotting_never_calls_show():
     for path in (PACKAGE / "present" / "plotting").rglob("*.py"):
         assert ".show(" not in path.read_text(), path
+
+
+def _public_callables():
+    for path in MODULES:
+        name = _name(path)
+        if name.endswith("__main__"):
+            continue
+        module = importlib.import_module(name)
+        for attr in getattr(module, "__all__", []):
+            obj = getattr(module, attr, None)
+            if (inspect.isfunction(obj) or inspect.isclass(obj)) and obj.__module__ == name:
+                yield f"{name}.{attr}", obj
+
+
+def _documented(doc: str) -> set[str]:
+    """Parameter names of the numpydoc 'Parameters' (and 'Attributes') sections."""
+    names: set[str] = set()
+    lines = inspect.cleandoc(doc).splitlines()
+    section = None
+    for n, line in enumerate(lines):
+        nxt = lines[n + 1] if n + 1 < len(lines) else ""
+        if nxt and set(nxt.strip()) == {"-"} and len(nxt.strip()) >= 3:
+            section = line.strip()
+            continue
+        if section in ("Parameters", "Attributes", "Other Parameters") and line and \
+                not line.startswith(" ") and not set(line.strip()) <= {"-"}:
+            head = line.split(" : ")[0].rstrip(" :")
+            for part in head.split(","):
+                names.add(part.strip().lstrip("*"))
+    return names
+
+
+PUBLIC = list(_public_callables())
+
+
+@pytest.mark.parametrize("qualname, obj", PUBLIC, ids=[q for q, _ in PUBLIC])
+def test_public_parameters_are_documented(qualname, obj):
+    """numpydoc: every parameter of a public function (or class constructor, documented as
+    Parameters or Attributes of the class) is named in its docstring."""
+    if inspect.isclass(obj) and issubclass(obj, BaseException):
+        return
+    target = obj
+    doc = inspect.getdoc(obj) or ""
+    assert doc, f"{qualname} has no docstring"
+    try:
+        sig = inspect.signature(target)
+    except (TypeError, ValueError):
+        return
+    params = [p for p in sig.parameters.values()
+              if p.name not in ("self", "cls") and not p.name.startswith("_")]
+    if inspect.isclass(obj) and not params:
+        return
+    missing = [p.name for p in params if p.name not in _documented(doc)
+               and p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD)]
+    assert not missing, f"{qualname}: parameters not documented: {missing}"

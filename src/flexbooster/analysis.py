@@ -105,6 +105,7 @@ def analyze(
     beam_action: bool = True,
     stability: bool = True,
     progress: Callable[[str], None] | None = None,
+    figures: bool = True,
 ) -> Results:
     """Run the analysis of a validated case.
 
@@ -119,6 +120,9 @@ def analyze(
     progress : callable, optional
         Called with the name of each stage (:data:`STAGES`) as it starts, e.g. to drive a
         progress bar; stages that are not computed are skipped.
+    figures : bool
+        Compute the data of the figures (:mod:`flexbooster.memo.charts`; the beam-action
+        (Omega, gamma) chart is the costly part); ``results.figures`` is None without it.
 
     Returns
     -------
@@ -132,10 +136,11 @@ def analyze(
     (:func:`flexbooster._threads.blas_threads`): multithreaded BLAS makes them slower.
     """
     with blas_threads(1):
-        return _analyze(case, beam_action, stability, progress or (lambda stage: None))
+        return _analyze(case, beam_action, stability, figures,
+                        progress or (lambda stage: None))
 
 
-def _analyze(case: Case, beam_action: bool, stability: bool,
+def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
              step: Callable[[str], None]) -> Results:
     step(STAGES[0])
     model = model_from_case(case)
@@ -163,19 +168,10 @@ def _analyze(case: Case, beam_action: bool, stability: bool,
                 omega_1=model.omega_1, R=n.R, S=n.S, gamma=model.gamma, K=model.K)
         except TooManyRootsError as exc:  # a memory limit: the rest of the analysis stands
             extra.append(AnalysisWarning("stability-skipped", "truncation", str(exc)))
-    step(STAGES[5])
-    figures = charts.FigureData(
-        ince_strutt=charts.ince_strutt_data(pitch),
-        beam_modes=charts.beam_mode_shapes(model.mass, N=min(charts.MODE_SHAPE_COUNT, n.N)),
-        nodal_patterns=tuple(  # the modes of memo Fig. 4, within the truncation
-            charts.nodal_pattern_data(shell, cylinder=d, j=j, k=k, radius=R, half_length=L)
-            for d, j, k, R, L in ((1, min(4, n.M1), min(3, n.N1), model.R1, model.L1),
-                                  (2, min(6, n.M2), min(2, n.N2), model.R2, model.L2))),
-        beam_action_chart=charts.beam_action_chart(model) if action is not None else None,
-        campbell=None if table is None else charts.campbell_data(
-            params=params, omega_range=model.omega_range, omega_1=model.omega_1, shell=shell,
-            table=table, R=n.R, S=n.S),
-    )
+    data = None
+    if figures:
+        step(STAGES[5])
+        data = _figure_data(model, pitch, shell, action, table, params)
     return Results(
         case=case,
         mass=model.mass,
@@ -186,10 +182,27 @@ def _analyze(case: Case, beam_action: bool, stability: bool,
         pitch=pitch,
         shell=shell,
         model=model,
-        figures=figures,
+        figures=data,
         beam_action=action,
         stability=table,
         warnings=tuple(_warnings(model, pitch.a, pitch.q) + extra),
+    )
+
+
+def _figure_data(model, pitch, shell, action, table, params) -> charts.FigureData:
+    """The data of every figure (compute -> data -> plot), on the grids of :mod:`charts`."""
+    n = model.truncation
+    return charts.FigureData(
+        ince_strutt=charts.ince_strutt_data(pitch),
+        beam_modes=charts.beam_mode_shapes(model.mass, N=min(charts.MODE_SHAPE_COUNT, n.N)),
+        nodal_patterns=tuple(  # the modes of memo Fig. 4, within the truncation
+            charts.nodal_pattern_data(shell, cylinder=d, j=j, k=k, radius=R, half_length=L)
+            for d, j, k, R, L in ((1, min(4, n.M1), min(3, n.N1), model.R1, model.L1),
+                                  (2, min(6, n.M2), min(2, n.N2), model.R2, model.L2))),
+        beam_action_chart=charts.beam_action_chart(model) if action is not None else None,
+        campbell=None if table is None else charts.campbell_data(
+            params=params, omega_range=model.omega_range, omega_1=model.omega_1, shell=shell,
+            table=table, R=n.R, S=n.S),
     )
 
 

@@ -38,7 +38,19 @@ def finite(name: str, value: Any) -> float:
 
 
 def positive(name: str, value: Any) -> float:
-    """``value`` as a finite float > 0 (see :func:`finite`)."""
+    """``value`` as a finite float > 0 (see :func:`finite`).
+
+    Parameters
+    ----------
+    name : str
+        Parameter name for the message.
+    value : float-like
+        The value to check.
+
+    Returns
+    -------
+    float
+    """
     result = finite(name, value)
     if result <= 0.0:
         raise ValueError(f"{name} = {value!r}: must be finite and > 0")
@@ -46,7 +58,19 @@ def positive(name: str, value: Any) -> float:
 
 
 def nonnegative(name: str, value: Any) -> float:
-    """``value`` as a finite float >= 0 (see :func:`finite`)."""
+    """``value`` as a finite float >= 0 (see :func:`finite`).
+
+    Parameters
+    ----------
+    name : str
+        Parameter name for the message.
+    value : float-like
+        The value to check.
+
+    Returns
+    -------
+    float
+    """
     result = finite(name, value)
     if result < 0.0:
         raise ValueError(f"{name} = {value!r}: must be finite and >= 0")
@@ -57,6 +81,21 @@ def count(name: str, value: Any, low: int = 1, high: int | None = 500) -> int:
     """``value`` as an int in ``low..high`` (no upper bound when ``high`` is None).
 
     Only Python or numpy integers are accepted (not booleans, not floats such as 2.0).
+
+    Parameters
+    ----------
+    name : str
+        Parameter name for the message.
+    value : int
+        The value to check.
+    low : int
+        Smallest allowed value.
+    high : int or None
+        Largest allowed value (None: no upper bound).
+
+    Returns
+    -------
+    int
     """
     rule = (
         f"must be an integer in {low}..{high}"

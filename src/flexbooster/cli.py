@@ -9,7 +9,6 @@ a terminal), ``--quiet`` silences everything but errors and ``--format json`` pr
 
 from __future__ import annotations
 
-import json
 import os
 import sys
 from collections.abc import Callable, Iterator
@@ -126,11 +125,9 @@ def _progress(stages: int, quiet: bool) -> Iterator[Callable[[str], None]]:
 def _report(results, fmt: str, quiet: bool, printer: Callable) -> None:
     """The summary (table) or the JSON document (json) on standard output."""
     if fmt == "json":
-        from .present.io import check_finite
+        from .present.io import dumps_finite
 
-        data = results.to_dict()
-        check_finite(data)
-        click.echo(json.dumps(data, indent=2, allow_nan=False))
+        click.echo(dumps_finite(results.to_dict(), indent=2))
     elif not quiet:
         printer(results, Console())
 
@@ -167,7 +164,7 @@ def run(case_file: Path | None, output: Path, no_figures: bool, quiet: bool, fmt
 
     case = _load(case_file)
     with _progress(len(STAGES) + len(OUTPUT_STAGES), quiet) as step:
-        results = analyze(case, progress=step)
+        results = analyze(case, progress=step, figures=not no_figures)
         paths = write_outputs(results, output, figures=not no_figures, progress=step)
     _report(results, fmt, quiet, print_summary)
     _wrote(paths, fmt, quiet)
@@ -209,7 +206,7 @@ def stability(
     with _progress(len(STAGES), quiet) as step:
         results = analyze(case, progress=step)
     _report(results, fmt, quiet, print_stability)
-    path = write_csv_atomic(output / "unstable-frequencies.csv", results.stability.to_rows())
+    path = write_csv_atomic(output / "unstable-frequencies.csv", results.stability.to_columns())
     _wrote([path], fmt, quiet)
 
 
@@ -301,7 +298,13 @@ def init(path: Path, force: bool) -> None:
 
 
 def main(argv: list[str] | None = None) -> None:
-    """Entry point of the ``flexbooster`` command."""
+    """Entry point of the ``flexbooster`` command.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        Command-line arguments (default: ``sys.argv[1:]``).
+    """
     try:
         cli.main(args=argv, prog_name="flexbooster", standalone_mode=False)
     except CaseError as exc:

@@ -64,8 +64,8 @@ CAMPBELL_S_MAX = 2
 BEAM_ACTION_CHART_OMEGA_POINTS = 80
 #: gamma values of the beam-action chart: 30 points, uniform on [0, 0.9].
 BEAM_ACTION_CHART_GAMMA = (0.0, 0.9, 30)
-#: Phase per integration step of the chart's monodromy (see
-#: :func:`flexbooster.memo.beam_action.monodromy_exponents`).
+#: Phase per integration step of the chart's monodromy at the points refined near multiplier
+#: collisions (see :func:`flexbooster.memo.beam_action.stability_chart`).
 BEAM_ACTION_CHART_STEP_PHASE = 0.25
 #: Points per beam mode shape.
 MODE_SHAPE_POINTS = 400

@@ -37,7 +37,7 @@ References
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -294,48 +294,47 @@ class StabilityTable:
     active: np.ndarray
     residual: np.ndarray
     omega_1: float
-    warnings: tuple[str, ...] = field(default_factory=tuple)
 
     def __len__(self) -> int:
         return int(self.Omega.size)
 
-    def to_rows(self) -> list[dict]:
-        """One mapping per root (what the CSV holds), sorted by Omega."""
+    def to_columns(self) -> dict[str, list]:
+        """The table by columns (what the CSV and results.json hold), sorted by Omega."""
         two_pi = 2.0 * np.pi
-        return [
-            {
-                "Omega_rad_s": float(self.Omega[n]),
-                "Omega_hz": float(self.Omega[n] / two_pi),
-                "Omega_over_omega1": float(self.Omega_bar[n]),
-                "family": int(self.family[n]),
-                "equation": self.equation[n],
-                "also": self.also[n],
-                "cylinder": int(self.cylinder[n]),
-                "j": int(self.j[n]),
-                "k": int(self.k[n]),
-                "branch": int(self.branch[n]),
-                "i": int(self.i[n]),
-                "p": int(self.p[n]),
-                "r": int(self.r[n]),
-                "s": int(self.s[n]),
-                "shell_omega_bar": float(self.shell_omega_bar[n]),
-                "shell_rad_s": float(self.shell_omega_bar[n] * self.omega_1),
-                "shell_hz": float(self.shell_omega_bar[n] * self.omega_1 / two_pi),
-                "forcing": "active" if self.active[n] else "listed",
-            }
-            for n in range(len(self))
-        ]
+        return {
+            "Omega_rad_s": self.Omega.tolist(),
+            "Omega_hz": (self.Omega / two_pi).tolist(),
+            "Omega_over_omega1": self.Omega_bar.tolist(),
+            "family": self.family.tolist(),
+            "equation": list(self.equation),
+            "also": list(self.also),
+            "cylinder": self.cylinder.tolist(),
+            "j": self.j.tolist(),
+            "k": self.k.tolist(),
+            "branch": self.branch.tolist(),
+            "i": self.i.tolist(),
+            "p": self.p.tolist(),
+            "r": self.r.tolist(),
+            "s": self.s.tolist(),
+            "shell_omega_bar": self.shell_omega_bar.tolist(),
+            "shell_rad_s": (self.shell_omega_bar * self.omega_1).tolist(),
+            "shell_hz": (self.shell_omega_bar * self.omega_1 / two_pi).tolist(),
+            "forcing": np.where(self.active, "active", "listed").tolist(),
+        }
+
+    def to_rows(self) -> list[dict]:
+        """One mapping per root (the rows of :meth:`to_columns`), sorted by Omega."""
+        cols = self.to_columns()
+        return [dict(zip(cols, values, strict=True)) for values in zip(*cols.values(), strict=True)]
 
     def to_dict(self) -> dict:
-        """JSON-ready and compact: one list per column (the columns of :meth:`to_rows`)."""
-        rows = self.to_rows()
-        names = list(rows[0]) if rows else list(_COLUMNS)
+        """JSON-ready and compact: one list per column (:meth:`to_columns`)."""
         return {
             "count": len(self),
             "active": int(self.active.sum()),
-            "columns": names,
-            "table": {name: [row[name] for row in rows] for name in names},
-            "warnings": list(self.warnings),
+            "columns": list(_COLUMNS),
+            "table": self.to_columns(),
+            "warnings": [],  # kept for the results.json schema 1.0; warnings are in results
         }
 
 

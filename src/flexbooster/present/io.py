@@ -19,6 +19,7 @@ from typing import Any
 
 __all__ = [
     "check_finite",
+    "dumps_finite",
     "write_bytes_atomic",
     "write_csv_atomic",
     "write_json_atomic",
@@ -102,6 +103,35 @@ def check_finite(data: Any, where: str = "results") -> None:
             check_finite(value, f"{where}[{i}]")
 
 
+def dumps_finite(data: Any, **kwargs: Any) -> str:
+    """``json.dumps`` that refuses NaN and infinity, naming the first offending path.
+
+    Parameters
+    ----------
+    data : object
+        JSON-ready data (mappings, lists, numbers, strings).
+    **kwargs
+        Passed to :func:`json.dumps` (e.g. ``indent``, ``separators``).
+
+    Returns
+    -------
+    str
+        The JSON text.
+
+    Raises
+    ------
+    ValueError
+        ``"<path> = nan: a result must be finite (internal error)"``: the fast
+        ``allow_nan=False`` encoder failed, and the walk of :func:`check_finite` (run only
+        then) names the value.
+    """
+    try:
+        return json.dumps(data, allow_nan=False, **kwargs)
+    except ValueError:
+        check_finite(data)
+        raise
+
+
 def write_json_atomic(path: str | Path, data: Mapping[str, Any]) -> Path:
     """Write a mapping as JSON atomically; NaN and infinity are refused.
 
@@ -117,30 +147,37 @@ def write_json_atomic(path: str | Path, data: Mapping[str, Any]) -> Path:
     pathlib.Path
         The destination path.
     """
-    check_finite(data)
     # compact: results hold long arrays, which indentation would put one number per line
-    return write_text_atomic(path, json.dumps(data, separators=(",", ":"), allow_nan=False) + "\n")
+    return write_text_atomic(path, dumps_finite(data, separators=(",", ":")) + "\n")
 
 
-def write_csv_atomic(path: str | Path, rows: Iterable[Mapping[str, Any]]) -> Path:
-    """Write rows (mappings with the same keys) as CSV atomically.
+def write_csv_atomic(path: str | Path,
+                     table: Iterable[Mapping[str, Any]] | Mapping[str, list]) -> Path:
+    """Write a table as CSV atomically.
 
     Parameters
     ----------
     path : str or pathlib.Path
         Destination file.
-    rows : iterable of Mapping
-        The table; the keys of the first row are the header.
+    table : Mapping of str to list, or iterable of Mapping
+        By columns (name -> values, all of one length: the fast form) or by rows (mappings
+        with the same keys; the keys of the first row are the header).
 
     Returns
     -------
     pathlib.Path
         The destination path.
     """
-    rows = list(rows)
     buffer = io.StringIO()
-    if rows:
-        writer = csv.DictWriter(buffer, fieldnames=list(rows[0]), lineterminator="\n")
-        writer.writeheader()
-        writer.writerows(rows)
+    writer = csv.writer(buffer, lineterminator="\n")
+    if isinstance(table, Mapping):
+        if table:
+            writer.writerow(list(table))
+            writer.writerows(zip(*table.values(), strict=True))
+    else:
+        rows = list(table)
+        if rows:
+            names = list(rows[0])
+            writer.writerow(names)
+            writer.writerows([row[n] for n in names] for row in rows)
     return write_text_atomic(path, buffer.getvalue())

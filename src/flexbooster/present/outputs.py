@@ -78,10 +78,10 @@ def write_outputs(
     written.append(write_csv_atomic(folder / "shell-frequencies.csv", results.shell.to_rows()))
     if results.stability is not None:
         written.append(
-            write_csv_atomic(folder / "unstable-frequencies.csv", results.stability.to_rows())
+            write_csv_atomic(folder / "unstable-frequencies.csv", results.stability.to_columns())
         )
     svgs: dict[str, str] = {}
-    if figures:
+    if figures and results.figures is not None:
         step(OUTPUT_STAGES[1])
         for name, fig in make_figures(results).items():
             svg, png = _render(fig)
@@ -94,22 +94,30 @@ def write_outputs(
 
 
 def _render(fig) -> tuple[str, bytes]:
-    """SVG text (reproducible ids) and PNG bytes of a figure."""
+    """SVG text (reproducible ids) and PNG bytes of a figure.
+
+    The figure is laid out once by matplotlib's constrained layout (set here when the figure
+    has no layout engine) instead of ``bbox_inches="tight"``, which draws every figure twice.
+    """
     import matplotlib
+    import numpy as np
     from matplotlib.collections import LineCollection, QuadMesh
 
     for ax in fig.axes:  # dense meshes and line bundles as an embedded image: small, fast SVG
         for artist in ax.collections:
             if isinstance(artist, QuadMesh | LineCollection):
                 artist.set_rasterized(True)
-        if len(ax.lines) > 40:  # e.g. the Campbell diagram's hundreds of excitation curves
-            for line in ax.lines:
+        many = len(ax.lines) > 40  # many curves: one embedded image
+        for line in ax.lines:  # and every line with thousands of points or markers
+            if many or np.size(line.get_xdata()) > 2000:
                 line.set_rasterized(True)
+    if fig.get_layout_engine() is None:
+        fig.set_layout_engine("constrained")
     with matplotlib.rc_context({"svg.hashsalt": "flexbooster"}):
         svg = _io.StringIO()
-        fig.savefig(svg, format="svg", dpi=150, bbox_inches="tight")
+        fig.savefig(svg, format="svg", dpi=150, metadata={"Date": None})
     png = _io.BytesIO()
-    fig.savefig(png, format="png", dpi=150, bbox_inches="tight")
+    fig.savefig(png, format="png", dpi=120)
     return svg.getvalue(), png.getvalue()
 
 

@@ -418,8 +418,7 @@ def _unstable(results: Results) -> str:
          "i, p, r, s", "shell (Hz)", "forcing"),
         rows, (True, True, True, False, True, True, True, True, False, True, False),
         ["active" if st.active[n] else "" for n in shown])
-    notes = "".join(f'<p class="note">{_e(w)}</p>' for w in st.warnings)
-    return head + table + notes
+    return head + table
 
 
 def _verification() -> str:
@@ -432,8 +431,6 @@ def _verification() -> str:
 
 def _warnings(results: Results) -> str:
     items = [(w.code, w.field, w.message) for w in results.warnings]
-    if results.stability is not None:
-        items += [("stability", "stability", w) for w in results.stability.warnings]
     if not items:
         return "<p>No warnings.</p>"
     return "".join(

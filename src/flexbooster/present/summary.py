@@ -202,6 +202,15 @@ def _print_beam_action(results: Results, console: Console) -> None:
 
 
 def print_stability(results: Results, console: Console) -> None:
+    """Print the table of unstable thrust frequencies (the first 15 active roots).
+
+    Parameters
+    ----------
+    results : Results
+        The analysis.
+    console : rich.console.Console
+        Where to print.
+    """
     st = results.stability
     if st is None:
         console.print("Unstable thrust frequencies: not computed.")

@@ -1,0 +1,75 @@
+"""End-to-end speed of ``flexbooster run`` against the code before the redesign (issue 11).
+
+The baseline is commit ``BASELINE`` (the last commit before the redesign), checked out side by
+side with ``git worktree`` into a temporary folder and run with the same Python and packages
+in the same session, alternating with the current code; each command is timed best of
+``REPEATS`` (wall clock, subprocess), as a user runs it (OPENBLAS_NUM_THREADS unset: the
+library limits the BLAS threads itself since the redesign) and as ``make run`` does
+(OPENBLAS_NUM_THREADS=1).  It also
+checks that both write the same numbers (``compare_results.py``, 1e-12 relative).
+
+Run from the repository root (needs git and the project's venv)::
+
+    .venv/bin/python benchmarks/bench_run.py
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+__all__ = ["BASELINE", "main"]
+
+#: The last commit before the redesign of issue 11.
+BASELINE = "045ce06"
+REPEATS = 2
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def _time(src: Path, args: list[str], out: Path, threads: str | None) -> float:
+    env = dict(os.environ, PYTHONPATH=str(src))
+    env.pop("OPENBLAS_NUM_THREADS", None)
+    if threads is not None:
+        env["OPENBLAS_NUM_THREADS"] = threads
+    cmd = [sys.executable, "-c", "from flexbooster.cli import main; main()", "run", *args,
+           "-q", "-o", str(out)]
+    best = float("inf")
+    for _ in range(REPEATS):
+        start = time.perf_counter()
+        subprocess.run(cmd, env=env, check=True, cwd=out.parent)
+        best = min(best, time.perf_counter() - start)
+    return best
+
+
+def main() -> None:
+    with tempfile.TemporaryDirectory() as tmp:
+        tmp = Path(tmp)
+        base = tmp / "baseline"
+        subprocess.run(["git", "-C", str(ROOT), "worktree", "add", "-q", "--detach", str(base),
+                        BASELINE], check=True)
+        try:
+            rows = []
+            for threads in (None, "1"):
+                for label, args in (("run", []), ("run --no-figures", ["--no-figures"])):
+                    old = _time(base / "src", args, tmp / "old", threads)
+                    new = _time(ROOT / "src", args, tmp / "new", threads)
+                    env = "unset" if threads is None else threads
+                    rows.append((f"{label}, OPENBLAS_NUM_THREADS {env}", old, new))
+            same = subprocess.run([sys.executable, str(ROOT / "benchmarks/compare_results.py"),
+                                   str(tmp / "old/results.json"), str(tmp / "new/results.json")],
+                                  capture_output=True, text=True)
+        finally:
+            subprocess.run(["git", "-C", str(ROOT), "worktree", "remove", "--force", str(base)],
+                           check=False)
+    print(f"flexbooster run, default case, best of {REPEATS} (s), baseline {BASELINE}:")
+    for label, old, new in rows:
+        print(f"  {label:42s} baseline {old:6.2f}   now {new:6.2f}   speed-up {old / new:4.1f}x")
+    print(same.stdout.strip())
+
+
+if __name__ == "__main__":
+    main()
