@@ -10,15 +10,18 @@ through its meridian angle (Zienkiewicz & Taylor vol. 2, sec. 10.3).
 Constraints map every "full" DOF to one reduced DOF with a coefficient +-1, or eliminate it:
 
 * ends: ``"free"`` nothing; ``"shear-diaphragm"`` v = w = 0 (N_s = M_s = 0 natural);
-  ``"clamped"`` u = v = w = dw/ds = 0.
+  ``"hinged"`` u = v = w = 0 (M_s = 0); ``"clamped"`` u = v = w = dw/ds = 0.
 * ``"continuous"`` junction: u_x, u_r, v, chi equal on both sides.
-* ``"rigid-bulkhead"``: a rigid, weightless disc, moment-free: the junction ring moves in its
-  plane as the disc does (k = 0: u_r = 0, v common = disc rotation about the axis; k = 1: the
-  in-plane translation, u_r = -v = common; k >= 2: u_r = v = 0); the two shell edges are
-  joined (u_x and chi common), the disc does not restrain the rotation.
-* ``"memo-bulkhead"``: as ``"rigid-bulkhead"`` for k <= 1; for k >= 2 the two edges are
-  independent apart from u_r = v = 0 (u_x and chi free on each side: each shell sees a
-  shear diaphragm, Tech Memo 104 appendix D-II).
+* ``"rigid-bulkhead"``: a rigid, weightless disc hinged to both edges (it carries no moment:
+  chi free on each side).  k = 0: both edges share the disc's axial translation (u_x equal)
+  and its rotation about the axis (v / r equal), u_r = 0; k = 1: they share its lateral
+  translation (u_r = -v = D on both sides) and its tilt (u_x / r equal); k >= 2: a rigid
+  disc has no such motion, u_x = u_r = v = 0 on both edges (each shell sees a hinged edge).
+* ``"memo-bulkhead"``: the memo's disc, rigid in its plane but without out-of-plane
+  stiffness for k >= 2: as ``"rigid-bulkhead"`` for k <= 1; for k >= 2 u_r = v = 0 and u_x
+  free on each side (each shell sees a shear diaphragm, Tech Memo 104 appendix D-II).
+
+The bulkheads allow different radii on the two sides (the disc is an annulus between them).
 
 References
 ----------
@@ -289,38 +292,43 @@ def dof_map(vehicle: Vehicle, mesh: Mesh, k: int) -> DofMap:
     .. [1] Leissa 1973 sec. 1.6 (edge conditions); Tech Memo 104 Fig. 1 (bulkheads); see the
        module docstring for the bulkhead kinematics.
     """
+    segs = vehicle.segments
+    radii = tuple((segs[i].radius_fwd, segs[i + 1].radius_aft) for i in range(len(segs) - 1))
     return _dof_map(vehicle.aft_end, vehicle.fwd_end, vehicle.junctions, mesh.end_nodes,
-                    mesh.n_full, _k_class(k))
+                    mesh.n_full, _k_class(k), radii)
 
 
 @lru_cache(maxsize=64)
-def _dof_map(aft_end, fwd_end, junctions, end_nodes, n_full, kc) -> DofMap:
+def _dof_map(aft_end, fwd_end, junctions, end_nodes, n_full, kc, radii) -> DofMap:
     alias: dict[int, tuple[int, float]] = {}
     elim: set[int] = set()
     # node DOF order (a, v, b, chi): 0 = u or u_x, 1 = v, 2 = w or u_r, 3 = chi
     for node, cond in ((end_nodes[0], aft_end), (end_nodes[1], fwd_end)):
         if cond == "shear-diaphragm":
             elim.update((node + 1, node + 2))  # v = w = 0 (Leissa 1.6)
+        elif cond == "hinged":
+            elim.update((node, node + 1, node + 2))  # u = v = w = 0
         elif cond == "clamped":
             elim.update(node + j for j in range(4))
-    for (na, nb), kind in zip(end_nodes[2:], junctions, strict=True):
+    for (na, nb), kind, (ra, rb) in zip(end_nodes[2:], junctions, radii, strict=True):
         if kind == "continuous":
             for j in range(4):
                 alias[nb + j] = (na + j, 1.0)
             continue
-        joined = kind == "rigid-bulkhead" or kc < 2
-        if joined:  # u_x and chi common
+        # rigid weightless disc, hinged to both edges (chi free on each side)
+        if kc == 0:  # axial translation u_x and rotation about the axis v = r omega_x
             alias[nb] = (na, 1.0)
-            alias[nb + 3] = (na + 3, 1.0)
-        if kc == 0:  # disc: no radial expansion, common rotation about the axis
-            elim.update((na + 2, nb + 2))
+            alias[nb + 1] = (na + 1, rb / ra)
+            elim.update((na + 2, nb + 2))  # no radial expansion
+        elif kc == 1:  # lateral translation u_r = -v = D, tilt u_x = -r psi
+            alias[nb] = (na, rb / ra)
+            alias[na + 2] = (na + 1, -1.0)
             alias[nb + 1] = (na + 1, 1.0)
-        elif kc == 1:  # disc translation: u_r = W, v = -W on both sides
-            alias[na + 1] = (na + 2, -1.0)
-            alias[nb + 2] = (na + 2, 1.0)
-            alias[nb + 1] = (na + 2, -1.0)
-        else:  # rigid in its plane: u_r = v = 0
+            alias[nb + 2] = (na + 1, -1.0)
+        else:  # rigid in its plane: u_r = v = 0; rigid-bulkhead also out of plane
             elim.update((na + 1, na + 2, nb + 1, nb + 2))
+            if kind == "rigid-bulkhead":
+                elim.update((na, nb))
     index = np.full(n_full, -1, dtype=int)
     coef = np.ones(n_full)
     n = 0

@@ -5,7 +5,7 @@ segments: :class:`Cylinder` and :class:`Cone` (a cone of axial length 0 is a fla
 plate).  Consecutive segments meet at a junction, ``"continuous"`` (the shell is one piece) or
 a rigid, weightless bulkhead (``"rigid-bulkhead"``, ``"memo-bulkhead"``; see
 :data:`JUNCTIONS` and ``docs/theory/shell-of-revolution.md``).  Each end is ``"free"``,
-``"shear-diaphragm"`` or ``"clamped"``.
+``"shear-diaphragm"``, ``"hinged"`` or ``"clamped"``.
 
 References
 ----------
@@ -37,7 +37,7 @@ __all__ = [
 ]
 
 #: End conditions accepted for the aft and the forward edge.
-END_CONDITIONS = ("free", "shear-diaphragm", "clamped")
+END_CONDITIONS = ("free", "shear-diaphragm", "hinged", "clamped")
 #: Junction types between consecutive segments.
 JUNCTIONS = ("continuous", "rigid-bulkhead", "memo-bulkhead")
 #: Shell theories: Sanders-Koiter (default) and Donnell-Mushtari.
@@ -203,8 +203,9 @@ class Vehicle:
     Parameters
     ----------
     segments : sequence of Cylinder or Cone
-        At least one, ordered aft to forward; the forward radius of each equals the aft
-        radius of the next within :data:`RADIUS_RTOL` (relative).
+        At least one, ordered aft to forward; across a ``"continuous"`` junction the forward
+        radius of each equals the aft radius of the next within :data:`RADIUS_RTOL`
+        (relative); a bulkhead may join different radii.
     junctions : sequence of str, optional
         One per pair of neighbours, from :data:`JUNCTIONS`; default all ``"continuous"``.
     aft_end, fwd_end : str
@@ -257,7 +258,7 @@ class Vehicle:
         choice("theory", self.theory, THEORIES)
         for i in range(len(segs) - 1):
             ra, rb = segs[i].radius_fwd, segs[i + 1].radius_aft
-            if abs(ra - rb) > RADIUS_RTOL * max(ra, rb):
+            if junctions[i] == "continuous" and abs(ra - rb) > RADIUS_RTOL * max(ra, rb):
                 raise ValueError(f"segments[{i + 1}].radius_aft = {rb!r}: must equal "
                                  f"segments[{i}].radius_fwd = {ra!r} (relative tolerance "
                                  f"{RADIUS_RTOL:g})")

@@ -231,10 +231,10 @@ def _rigid_subspace(mesh: Mesh, dmap, k: int) -> np.ndarray:
     idx = dmap.index
     keep = idx >= 0
     red = np.zeros((fields.shape[0], dmap.n))
-    cnt = np.bincount(idx[keep], minlength=dmap.n).astype(float)
-    for i in range(fields.shape[0]):
+    den = np.bincount(idx[keep], weights=dmap.coef[keep] ** 2, minlength=dmap.n)
+    for i in range(fields.shape[0]):  # least-squares fit of full = coef * reduced
         red[i] = np.bincount(idx[keep], weights=(fields[i] * dmap.coef)[keep],
-                             minlength=dmap.n) / cnt
+                             minlength=dmap.n) / den
     resid = dmap.expand(red) - fields  # (m, n_full): violation of the constraints
     scale = np.linalg.norm(fields, axis=1).max()
     # combinations c with resid^T c = 0 are admissible
@@ -271,6 +271,10 @@ def _solve(h: _Harmonic, stiff: np.ndarray, *, n_modes: int | None, w2_max: floa
     """Lowest eigenpairs (omega^2, reduced vectors (n, m)) of stiff x = omega^2 M x."""
     A = _project(h, stiff)
     B = _project(h, h.M)
+    # symmetric diagonal scaling (unit mass diagonal): better-conditioned Cholesky reduction
+    scale = 1.0 / np.sqrt(np.diag(B))
+    A = A * scale[:, None] * scale[None, :]
+    B = B * scale[:, None] * scale[None, :]
     n = A.shape[0]
     kw: dict = {"driver": "gvx"}
     if n_modes is not None:
@@ -285,6 +289,7 @@ def _solve(h: _Harmonic, stiff: np.ndarray, *, n_modes: int | None, w2_max: floa
             vals, vecs = sla.eigh(A, B, **kw)
     else:
         vals, vecs = sla.eigh(A, B, **kw)
+    vecs = vecs * scale[:, None]
     if h.Q is not None:
         vecs = h.Q @ vecs
     return vals, vecs
