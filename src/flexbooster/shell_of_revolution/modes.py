@@ -267,8 +267,28 @@ def _project(h: _Harmonic, mat: np.ndarray) -> np.ndarray:
     return 0.5 * (out + out.T)
 
 
+def _none_below(stiff: np.ndarray, mass: np.ndarray, w2: float) -> bool:
+    """True if K - w2 M is positive definite: no eigenvalue below w2 (Sylvester's law of
+    inertia), decided by a banded Cholesky factorisation (O(n b^2))."""
+    A = stiff - w2 * mass
+    rows, cols = np.nonzero(A)
+    bw = int(np.max(np.abs(rows - cols))) if rows.size else 0
+    n = A.shape[0]
+    ab = np.zeros((bw + 1, n))
+    for d in range(bw + 1):
+        ab[d, :n - d] = np.diagonal(A, -d)
+    try:
+        sla.cholesky_banded(ab, lower=True, check_finite=False)
+    except sla.LinAlgError:
+        return False
+    return True
+
+
 def _solve(h: _Harmonic, stiff: np.ndarray, *, n_modes: int | None, w2_max: float | None):
     """Lowest eigenpairs (omega^2, reduced vectors (n, m)) of stiff x = omega^2 M x."""
+    if n_modes is None and w2_max is not None and h.Q is None and _none_below(
+            stiff, h.M, w2_max):
+        return np.zeros(0), np.zeros((stiff.shape[0], 0))
     A = _project(h, stiff)
     B = _project(h, h.M)
     # symmetric diagonal scaling (unit mass diagonal): better-conditioned Cholesky reduction
