@@ -499,6 +499,21 @@ def test_automatic_mesh_converged_to_0p1_percent():
             assert np.all(a >= b * (1 - 1e-12))
 
 
+def test_tolerance_option_refines_until_converged():
+    """tolerance = 1e-4 from a coarse uniform mesh (4 x p4): the result is within 1e-4 of a
+    much finer mesh (32 x p8; the error falls by > 2^6 per split, so the last change bounds
+    it); an unreachable tolerance raises."""
+    veh = Vehicle([Cylinder(1.0, 4.0, 0.01, **STEEL)], aft_end="clamped")
+    res = vehicle_modes(veh, k_max=6, n_modes=3, elements_per_segment=4, order=4,
+                        tolerance=1e-4)
+    ref = vehicle_modes(veh, k_max=6, n_modes=3, elements_per_segment=32, order=8)
+    assert np.max(np.abs(res.omega / ref.omega - 1)) < 1e-4
+    assert res.elements_per_segment[0] > 4
+    with pytest.raises(ValueError, match="^tolerance"):
+        vehicle_modes(veh, k_max=2, n_modes=2, elements_per_segment=1, order=3,
+                      tolerance=1e-9)
+
+
 def test_band_default_is_five_times_lowest():
     """Without f_max / n_modes every returned frequency is <= 5x the lowest one, and a
     frequency of k = 3 just below the bound is not lost."""

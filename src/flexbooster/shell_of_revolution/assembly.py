@@ -152,7 +152,7 @@ def _auto_breaks(seg, meridian: float, order: int) -> np.ndarray:
 
 def mesh_vehicle(
     vehicle: Vehicle, *, elements_per_segment: int | tuple | None = None,
-    order: int = DEFAULT_ORDER,
+    order: int = DEFAULT_ORDER, refinement: int = 1,
 ) -> Mesh:
     """Cut the meridian into conical elements of degree ``order``.
 
@@ -162,11 +162,13 @@ def mesh_vehicle(
         The vehicle.
     elements_per_segment : int or sequence of int, optional
         Elements per segment (dimensionless), 1..400, one value for all or one per segment;
-        default (None): a graded mesh per segment, first element 2 sqrt(R h) (6 / p) at
+        default (None): a graded mesh per segment, first element 3 sqrt(R h) (6 / p) at
         each end (the bending boundary-layer length is 2.4 sqrt(R h), Kraus sec. 7.3),
-        lengths doubling towards the middle up to 2 R (see ``docs/theory``).
+        lengths growing by 2.5 towards the middle up to 3 R (see ``docs/theory``).
     order : int
         Polynomial degree p (dimensionless), 3..12.
+    refinement : int
+        Split every element into this many equal ones (dimensionless), 1..64.
 
     Returns
     -------
@@ -177,6 +179,7 @@ def mesh_vehicle(
     .. [1] H. Kraus, *Thin Elastic Shells*, 1967, sec. 7.3 (edge-effect decay length).
     """
     order = integer("order", order, 3, 12)
+    refinement = integer("refinement", refinement, 1, 64)
     ref = reference_element(order)
     segs = vehicle.segments
     nseg = len(segs)
@@ -192,7 +195,14 @@ def mesh_vehicle(
         counts = tuple(integer("elements_per_segment", c, 1, MAX_ELEMENTS) for c in raw)
         breaks = [np.linspace(0.0, lm, c + 1)
                   for c, lm in zip(counts, vehicle.meridian_lengths(), strict=True)]
+    if refinement > 1:
+        frac = np.arange(refinement) / refinement
+        breaks = [np.append((b[:-1, None] + frac[None, :] * np.diff(b)[:, None]).ravel(), b[-1])
+                  for b in breaks]
     counts = tuple(b.size - 1 for b in breaks)
+    if max(counts) > MAX_ELEMENTS:
+        raise ValueError(f"refinement = {refinement}: more than {MAX_ELEMENTS} elements in a "
+                         "segment")
     n_int = 3 * order - 5
     cols = {key: [] for key in ("segment", "s1", "x1", "r1", "length", "sin", "cos",
                                  "h", "E", "nu", "rho")}

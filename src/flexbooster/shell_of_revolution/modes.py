@@ -390,6 +390,7 @@ def vehicle_modes(
     elements_per_segment: int | tuple | None = None,
     order: int = DEFAULT_ORDER,
     points_per_element: int = 9,
+    tolerance: float | None = None,
 ) -> VehicleModes:
     """Natural frequencies and labelled mode shapes for k = k_min..k_max.
 
@@ -416,6 +417,10 @@ def vehicle_modes(
     elements_per_segment, order : see :func:`~.assembly.mesh_vehicle`.
     points_per_element : int
         Shape samples per element (dimensionless), 2..50.
+    tolerance : float, optional
+        Target relative accuracy (dimensionless), 1e-9..0.1: the mesh is refined (every
+        element split in 2, 4, 8) until no returned frequency changes by more than this;
+        the finer result is returned (``ValueError`` if not reached at 8).
 
     Returns
     -------
@@ -435,7 +440,44 @@ def vehicle_modes(
     if band_factor < 1.0:
         raise ValueError(f"band_factor = {band_factor!r}: must be >= 1")
     points_per_element = integer("points_per_element", points_per_element, 2, 50)
-    mesh = mesh_vehicle(vehicle, elements_per_segment=elements_per_segment, order=order)
+    opts = dict(k_min=k_min, k_max=k_max, f_max=f_max, n_modes=n_modes, band_factor=band_factor,
+                F0=F0, supported=supported_forward_end, points_per_element=points_per_element)
+    if tolerance is None:
+        mesh = mesh_vehicle(vehicle, elements_per_segment=elements_per_segment, order=order)
+        return _modes_on_mesh(vehicle, mesh, **opts)
+    tolerance = positive("tolerance", tolerance)
+    if not 1e-9 <= tolerance <= 0.1:
+        raise ValueError(f"tolerance = {tolerance!r}: must be in [1e-9, 0.1]")
+    previous, change = None, np.inf
+    for refinement in (1, 2, 4, 8):
+        mesh = mesh_vehicle(vehicle, elements_per_segment=elements_per_segment, order=order,
+                            refinement=refinement)
+        current = _modes_on_mesh(vehicle, mesh, **opts)
+        if previous is not None:
+            change = _max_change(previous, current)
+            if change <= tolerance:
+                return current
+        previous = current
+    raise ValueError(f"tolerance = {tolerance!r}: not reached with every element split in 8 "
+                     f"(last change {change:.3g})")
+
+
+def _max_change(coarse: VehicleModes, fine: VehicleModes) -> float:
+    """Largest relative change of the frequencies of each k (matched in order)."""
+    change = 0.0
+    for kk in np.unique(np.concatenate([coarse.k, fine.k])):
+        a, b = coarse.omega[coarse.k == kk], fine.omega[fine.k == kk]
+        n = min(a.size, b.size)
+        if n:  # (a mode that crossed the band edge has no partner and is not compared)
+            change = max(change, float(np.max(np.abs(a[:n] / b[:n] - 1.0))))
+    return change
+
+
+def _modes_on_mesh(vehicle: Vehicle, mesh: Mesh, *, k_min: int, k_max: int,
+                   f_max: float | None, n_modes: int | None, band_factor: float, F0: float,
+                   supported: bool, points_per_element: int) -> VehicleModes:
+    """The work of :func:`vehicle_modes` on one mesh (arguments already checked)."""
+    supported_forward_end = supported
     loaded = F0 != 0.0
     ks = list(range(k_min, k_max + 1))
     band = f_max is None and n_modes is None
