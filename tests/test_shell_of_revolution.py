@@ -315,11 +315,12 @@ def test_inertia_relief_axial_force():
     length = 4.0
     r1 = np.array([1.0, 1.0])
     t = np.array([[0.0, 1.0, 2.0], [0.0, 1.0, 2.0]])
-    f = axial_force(r1, np.zeros(2), np.array([2.0, 2.0]), np.full(2, 78.5), t, 10.0)
+    geo = {"r1": r1, "sin_phi": np.zeros(2), "length": np.array([2.0, 2.0]),
+           "rho_h": np.full(2, 78.5)}
+    f = axial_force(t, 10.0, **geo)
     x = np.array([[0.0, 1.0, 2.0], [2.0, 3.0, 4.0]])
     np.testing.assert_allclose(f, 10.0 * (1 - x / length), atol=1e-12)
-    g = axial_force(r1, np.zeros(2), np.array([2.0, 2.0]), np.full(2, 78.5), t, 10.0,
-                    supported_forward_end=True)
+    g = axial_force(t, 10.0, supported_forward_end=True, **geo)
     np.testing.assert_allclose(g, 10.0)
 
 

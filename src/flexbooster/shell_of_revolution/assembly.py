@@ -36,7 +36,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from functools import lru_cache
 
 import numpy as np
 
@@ -308,7 +307,6 @@ def dof_map(vehicle: Vehicle, mesh: Mesh, k: int) -> DofMap:
                     mesh.n_full, _k_class(k), radii)
 
 
-@lru_cache(maxsize=64)
 def _dof_map(aft_end, fwd_end, junctions, end_nodes, n_full, kc, radii) -> DofMap:
     alias: dict[int, tuple[int, float]] = {}
     elim: set[int] = set()
@@ -341,17 +339,16 @@ def _dof_map(aft_end, fwd_end, junctions, end_nodes, n_full, kc, radii) -> DofMa
                 elim.update((na, nb))
     index = np.full(n_full, -1, dtype=int)
     coef = np.ones(n_full)
-    n = 0
-    for f in range(n_full):
-        if f in elim:
-            continue
-        if f in alias:
-            g, c = alias[f]
-            index[f] = index[g]
-            coef[f] = c * coef[g]
-            continue
-        index[f] = n
-        n += 1
+    src = np.array(sorted(alias), dtype=int)
+    tgt = np.array([alias[f][0] for f in src], dtype=int)
+    primary = np.ones(n_full, dtype=bool)
+    primary[list(elim)] = False
+    primary[src] = False
+    n = int(np.count_nonzero(primary))
+    index[primary] = np.arange(n)
+    if src.size:  # every alias points at a primary DOF of the aft-side node
+        index[src] = index[tgt]
+        coef[src] = [alias[f][1] for f in src]
     index.setflags(write=False)
     coef.setflags(write=False)
     return DofMap(index=index, coef=coef, n=n)
@@ -386,9 +383,10 @@ def prestress_resultant(mesh: Mesh, F0: float, *, supported_forward_end: bool = 
         raise ValueError(f"prestress_F0 = {F0!r}: a flat annular plate cannot carry the axial "
                          "force as a membrane (N_s = -F / (2 pi r cos(phi)))")
     t, r = _gauss_geometry(mesh, ref)
-    force = axial_force(mesh.r1, mesh.sin_phi, mesh.length, mesh.rho * mesh.thickness, t, F0,
+    force = axial_force(t, F0, r1=mesh.r1, sin_phi=mesh.sin_phi, length=mesh.length,
+                        rho_h=mesh.rho * mesh.thickness,
                         supported_forward_end=supported_forward_end)
-    return meridional_resultant(force, r, mesh.cos_phi)
+    return meridional_resultant(force, r, cos_phi=mesh.cos_phi)
 
 
 def element_set(vehicle: Vehicle, mesh: Mesh, k: int, *, prestress_F0: float = 0.0,

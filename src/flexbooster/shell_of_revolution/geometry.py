@@ -18,7 +18,7 @@ References
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import KW_ONLY, dataclass, field
 
 import numpy as np
 
@@ -70,7 +70,7 @@ class Cylinder:
     thickness : float
         Wall thickness h (m), > 0.
     E : float
-        Young's modulus (Pa), > 0.
+        Young's modulus (Pa), > 0 (keyword-only, as are ``nu`` and ``rho``).
     nu : float
         Poisson's ratio (dimensionless), 0 <= nu < 0.5.
     rho : float
@@ -84,6 +84,7 @@ class Cylinder:
     radius: float
     length: float
     thickness: float
+    _: KW_ONLY
     E: float
     nu: float
     rho: float
@@ -127,7 +128,7 @@ class Cone:
     thickness : float
         Wall thickness h (m), > 0.
     E : float
-        Young's modulus (Pa), > 0.
+        Young's modulus (Pa), > 0 (keyword-only, as are ``nu`` and ``rho``).
     nu : float
         Poisson's ratio (dimensionless), 0 <= nu < 0.5.
     rho : float
@@ -143,6 +144,7 @@ class Cone:
     radius_fwd: float
     length: float
     thickness: float
+    _: KW_ONLY
     E: float
     nu: float
     rho: float

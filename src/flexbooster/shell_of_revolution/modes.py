@@ -360,7 +360,10 @@ def _labels(mesh: Mesh, h: _Harmonic, vecs: np.ndarray, k: int, n_pts_per_el: in
     comp = sh[np.arange(m), dom]  # (m, pts)
     amp = np.abs(comp).max(axis=1, keepdims=True)
     sig = np.where(np.abs(comp) > 1e-3 * amp, np.sign(comp), 0.0)
-    order = np.array([int(np.count_nonzero(np.diff(row[row != 0]) != 0)) for row in sig])
+    # carry the last nonzero sign forward over the negligible samples, count sign changes
+    last = np.maximum.accumulate(np.where(sig != 0, np.arange(sig.shape[1])[None, :], 0), axis=1)
+    filled = np.take_along_axis(sig, last, axis=1)
+    order = np.count_nonzero(filled[:, 1:] * filled[:, :-1] < 0, axis=1)
     if k == 0:
         names = np.array(["axial", "torsional", "breathing"])[dom]
     elif k == 1:

@@ -34,13 +34,17 @@ def _mass_behind(r1, sin_phi, length, rho_h, t):
 
 
 def axial_force(
-    r1: np.ndarray, sin_phi: np.ndarray, length: np.ndarray, rho_h: np.ndarray,
-    t: np.ndarray, F0: float, *, supported_forward_end: bool = False,
+    t: np.ndarray, F0: float, *, r1: np.ndarray, sin_phi: np.ndarray, length: np.ndarray,
+    rho_h: np.ndarray, supported_forward_end: bool = False,
 ) -> np.ndarray:
     """Axial compressive force F(s) (N) at points t (m) inside every element.
 
     Parameters
     ----------
+    t : ndarray, shape (e, g)
+        Meridian distance of the points from each element's aft end (m).
+    F0 : float
+        Thrust at the aft edge (N).
     r1 : ndarray, shape (e,)
         Radius at each element's aft end (m).
     sin_phi : ndarray, shape (e,)
@@ -49,10 +53,6 @@ def axial_force(
         Meridian length of each element (m); the elements are ordered aft to forward.
     rho_h : ndarray, shape (e,)
         Mass per unit area rho h (kg/m^2).
-    t : ndarray, shape (e, g)
-        Meridian distance of the points from each element's aft end (m).
-    F0 : float
-        Thrust at the aft edge (N).
     supported_forward_end : bool
         Uniform F = F0 (reacted at the nose) instead of inertia relief.
 
@@ -75,7 +75,8 @@ def axial_force(
     return F0 * (total - behind) / total  # F = F0 m_ahead / m_total (inertia relief)
 
 
-def meridional_resultant(force: np.ndarray, r: np.ndarray, cos_phi: np.ndarray) -> np.ndarray:
+def meridional_resultant(force: np.ndarray, r: np.ndarray, *, cos_phi: np.ndarray
+                         ) -> np.ndarray:
     """Membrane prestress N_s^0 = -F / (2 pi r cos(phi)) (N/m, compression negative).
 
     Parameters
