@@ -17,13 +17,24 @@ Baselines in the same run:
 The convergence of the timed result is checked against a mesh with 2n + 4 elements at p = 8
 (max relative error printed; the target is 0.1 %).
 
+Against the 3-D shell FE (pyfe3d, ``scripts/fe3d_reference.py``), on its clamped-free
+cylinder-cone-cylinder: ``vehicle_modes`` for k = 2..10 (2 modes each, the modes compared in
+the tests) is timed here and set against the 3-D solve at 128 elements around (the mesh
+that first brings those modes within 1 %): run in this process when pyfe3d is importable and
+``BENCH_FE3D=1`` (about 100 s), else the time stored with the reference
+(tests/data/shell_of_revolution_fe3d.json, measured when it was made) is used and so marked.
+
 Run:  python benchmarks/bench_shell_of_revolution.py
 """
 
 from __future__ import annotations
 
+import importlib.util
+import json
 import os
+import sys
 import time
+from pathlib import Path
 
 import numpy as np
 import scipy.linalg as sla
@@ -81,6 +92,30 @@ def max_error(a, b):
     return err
 
 
+def fe3d_comparison() -> None:
+    """Time vehicle_modes against the 3-D shell FE on the reference's ccc vehicle."""
+    root = Path(__file__).resolve().parents[1]
+    data = json.loads((root / "tests/data/shell_of_revolution_fe3d.json").read_text())
+    segs = data["vehicles"]["ccc"]["segments"]
+    parts = [Cylinder(a, length, h, **STEEL) if a == b else Cone(a, b, length, h, **STEEL)
+             for a, b, length, h in segs]
+    veh = Vehicle(parts, aft_end="clamped")
+    t_axi, _ = best_of(lambda: vehicle_modes(veh, k_min=2, k_max=10, n_modes=2))
+    if os.environ.get("BENCH_FE3D") == "1" and importlib.util.find_spec("pyfe3d"):
+        sys.path.insert(0, str(root / "scripts"))
+        import fe3d_reference
+
+        t0 = time.perf_counter()
+        fe3d_reference.solve(segs, 128)
+        t_3d, how = time.perf_counter() - t0, "measured now"
+    else:
+        t_3d = next(m["seconds"] for m in data["vehicles"]["ccc"]["meshes"]
+                    if m["ntheta"] == 128)
+        how = "stored with the reference, not this run"
+    print(f"3-D shell FE (pyfe3d Quad4, 128 around, {how}): {t_3d:.1f} s; shell of revolution "
+          f"k = 2..10: {t_axi:.3f} s; ratio {t_3d / t_axi:.0f} (goal >= 100)")
+
+
 def main() -> None:
     vehicle_modes(VEHICLE, k_max=K_MAX)  # warm-up (caches, imports)
     t_fast, modes = best_of(lambda: vehicle_modes(VEHICLE, k_max=K_MAX))
@@ -114,6 +149,7 @@ def main() -> None:
           f"   (agree {agree:.1e})")
     print(f"baseline 2, p = 3 uniform x {n_el} per segment: {t_cubic:.3f} s   ratio "
           f"{t_cubic / t_fast:.1f}")
+    fe3d_comparison()
 
 
 if __name__ == "__main__":

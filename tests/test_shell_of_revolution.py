@@ -17,6 +17,7 @@ Tiers:
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -606,3 +607,34 @@ def test_prestress_beyond_buckling_raises():
     plate = Vehicle([Cylinder(1.0, 1.0, 0.01, **STEEL), Cone(1.0, 0.5, 0.0, 0.01, **STEEL)])
     with pytest.raises(ValueError, match="prestress_F0"):
         vehicle_modes(plate, k_max=1, n_modes=1, prestress_F0=1e5)
+
+
+# --------------------------------------------------------------------------- 3-D shell FE
+
+FE3D = Path(__file__).parent / "data" / "shell_of_revolution_fe3d.json"
+
+
+def _fe3d_cases():
+    data = json.loads(FE3D.read_text())
+    cases = []
+    for name, veh in data["vehicles"].items():
+        for k, cols in veh["modes"].items():
+            for j, col in enumerate(cols):
+                cases.append(pytest.param(name, int(k), j, col["extrapolated_hz"],
+                                          id=f"{name}-k{k}-{j}"))
+    return cases
+
+
+@pytest.mark.parametrize("name, k, j, ref_hz", _fe3d_cases())
+def test_against_3d_shell_fe(name, k, j, ref_hz):
+    """Clamped-free cylinder-cone-cylinder and thickness-step stacks: the j-th frequency of
+    each k = 2..10 within 0.2 % of an independent 3-D shell FE (pyfe3d Quad4, first-order
+    shear deformation, 64..160 elements around, Richardson-extrapolated from the three
+    finest, observed order 1.8-2.3; scripts/fe3d_reference.py, stored in
+    tests/data/shell_of_revolution_fe3d.json).  The brief asks for 1 %; observed |diff| <=
+    8.4e-4 (the finest 3-D mesh alone is 0.05-1.9 % high)."""
+    segs = json.loads(FE3D.read_text())["vehicles"][name]["segments"]
+    parts = [Cylinder(r1, length, h, **STEEL) if r1 == r2 else Cone(r1, r2, length, h, **STEEL)
+             for r1, r2, length, h in segs]
+    modes = vehicle_modes(Vehicle(parts, aft_end="clamped"), k_min=k, k_max=k, n_modes=j + 1)
+    assert abs(modes.hz[j] / ref_hz - 1) < 2e-3
