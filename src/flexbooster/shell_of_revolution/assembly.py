@@ -53,6 +53,8 @@ __all__ = [
     "assemble",
     "system_matrices",
     "rigid_body_fields",
+    "element_set",
+    "prestress_resultant",
 ]
 
 #: Default polynomial degree of the elements.
@@ -270,7 +272,18 @@ class DofMap:
     n: int
 
     def expand(self, reduced: np.ndarray) -> np.ndarray:
-        """Full DOF values (..., n_full) of reduced vectors (..., n) (0 where eliminated)."""
+        """Full DOF values of reduced vectors.
+
+        Parameters
+        ----------
+        reduced : ndarray, shape (..., n)
+            Reduced DOF values (m or rad, as the DOFs).
+
+        Returns
+        -------
+        ndarray, shape (..., n_full)
+            Full DOF values, 0 where eliminated.
+        """
         reduced = np.asarray(reduced)
         pad = np.concatenate([reduced, np.zeros(reduced.shape[:-1] + (1,))], axis=-1)
         return pad[..., self.index] * self.coef
@@ -377,7 +390,26 @@ def _gauss_geometry(mesh: Mesh, ref: ReferenceElement):
 
 def prestress_resultant(mesh: Mesh, F0: float, *, supported_forward_end: bool = False
                         ) -> np.ndarray:
-    """N_s^0 at the Gauss points of every element (N/m) for thrust F0 (N)."""
+    """Membrane prestress N_s^0 at the Gauss points of every element.
+
+    Parameters
+    ----------
+    mesh : Mesh
+        Mesh of the vehicle.
+    F0 : float
+        Thrust at the aft edge (N).
+    supported_forward_end : bool
+        Uniform compression F0 reacted at the nose instead of inertia relief.
+
+    Returns
+    -------
+    ndarray, shape (e, g)
+        N_s^0 (N/m), negative in compression.
+
+    References
+    ----------
+    .. [1] Flügge 1973 sec. 2.2.2; see :mod:`.prestress`.
+    """
     ref = reference_element(mesh.order)
     if F0 != 0.0 and np.any(np.abs(mesh.cos_phi) < 1e-12):
         raise ValueError(f"prestress_F0 = {F0!r}: a flat annular plate cannot carry the axial "
@@ -391,7 +423,32 @@ def prestress_resultant(mesh: Mesh, F0: float, *, supported_forward_end: bool = 
 
 def element_set(vehicle: Vehicle, mesh: Mesh, k: int, *, prestress_F0: float = 0.0,
                 supported_forward_end: bool = False, geometric: bool = False):
-    """Element matrices (e, n_dof, n_dof) in the node frames: M, K_e and K_g (or None)."""
+    """Element matrices of harmonic k rotated to the node frames.
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        The vehicle (its theory).
+    mesh : Mesh
+        Mesh of the vehicle.
+    k : int
+        Circumferential wave number (dimensionless), >= 0.
+    prestress_F0 : float
+        Thrust of the prestress (N).
+    supported_forward_end : bool
+        Uniform compression instead of inertia relief.
+    geometric : bool
+        Also compute K_g.
+
+    Returns
+    -------
+    M, K_e, K_g : ndarray, shape (e, n_dof, n_dof)
+        Mass (kg), elastic and geometric stiffness (N/m); K_g is None unless ``geometric``.
+
+    References
+    ----------
+    .. [1] Zienkiewicz & Taylor vol. 2, sec. 10.3 (transformation T^T K T).
+    """
     ref = reference_element(mesh.order)
     ns0 = None
     if geometric:

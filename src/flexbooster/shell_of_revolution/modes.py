@@ -121,7 +121,17 @@ class VehicleModes:
         return int(self.k.size)
 
     def select(self, k: int | None = None) -> np.ndarray:
-        """Boolean mask of the modes of harmonic ``k`` (None: all)."""
+        """Boolean mask of the modes of one harmonic.
+
+        Parameters
+        ----------
+        k : int, optional
+            Circumferential wave number (dimensionless); None selects all.
+
+        Returns
+        -------
+        ndarray of bool, shape (n,)
+        """
         return np.ones(len(self), bool) if k is None else self.k == k
 
     def to_dict(self, *, shapes: bool = True) -> dict:
