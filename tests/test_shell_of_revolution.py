@@ -53,12 +53,13 @@ def sd_cylinder_omega(length, radius, h, m, n, theory="sanders", load=0.0):
 
     u = A cos(lam x) cos(n t), v = B sin(lam x) sin(n t), w = C sin(lam x) cos(n t),
     lam = m pi / L (m = 0: u = A cos(n t) alone).  Strain amplitudes (Leissa 1973 sec. 2.1,
-    eq. 2.2 with Table 2.1: Sanders; Donnell drops the starred terms):
+    Donnell-Mushtari and Sanders strain-displacement relations; Donnell drops the starred
+    terms):
     eps_x = -lam A, eps_t = (n B + C)/R, gamma = lam B - n A/R, kappa_x = lam^2 C,
     kappa_t = (n^2 C + *n B)/R^2, tau = (2 n lam C + *1.5 lam B + *0.5 n A/R)/R.
-    Energy with the membrane and bending matrices of Leissa eq. 2.3; the characteristic
+    Energy with the membrane and bending stiffness matrices (Leissa sec. 2.1); the characteristic
     determinant |K - rho h omega^2 I| = 0 (Leissa sec. 2.3; Donnell: eq. 2.20).  ``load``: an
-    axial compression P (N/m) adds -P lam^2 to K_CC (Donnell; Brush & Almroth eq. 5.28).
+    axial compression P (N/m) adds -P lam^2 to K_CC (Donnell; Brush & Almroth 1975 ch. 5).
     """
     lam = m * np.pi / length
     c = 1.0 if theory == "sanders" else 0.0
@@ -86,7 +87,7 @@ def batdorf_ncr(length, radius, h, m, n):
     """Donnell buckling resultant (N/m) of the SD-SD cylinder in mode (m, n).
 
     N_cr = D (lam^2 + b^2)^2 / lam^2 + (E h / R^2) lam^2 / (lam^2 + b^2)^2, lam = m pi / L,
-    b = n / R (Brush & Almroth 1975 eq. 5.30; Batdorf, NACA TR 874, 1947).
+    b = n / R (Brush & Almroth 1975 ch. 5; Batdorf, NACA TR 874, 1947).
     """
     lam = m * np.pi / length
     b = n / radius
@@ -97,8 +98,9 @@ def batdorf_ncr(length, radius, h, m, n):
 def rayleigh_omega(radius, h, k):
     """Rayleigh's inextensional frequency (rad/s) of a free-free cylinder, harmonic k.
 
-    omega^2 = E h^2 k^2 (k^2 - 1)^2 / (12 rho (1 - nu^2) R^4 (k^2 + 1)) (Rayleigh, Theory of
-    Sound, sec. 235; Leissa 1973 eq. 2.? / sec. 2.5.1).
+    omega^2 = E h^2 k^2 (k^2 - 1)^2 / (12 rho (1 - nu^2) R^4 (k^2 + 1)) (Lord Rayleigh, The
+    Theory of Sound, 2nd ed., 1894, vol. 1, ch. X A, inextensional vibrations; Leissa 1973
+    ch. 2, free edges).
     """
     return np.sqrt(E * h**2 * k**2 * (k**2 - 1) ** 2
                    / (12 * RHO * (1 - NU**2) * radius**4 * (k**2 + 1)))
@@ -198,7 +200,7 @@ def test_slender_tube_beam_bending():
 def _cone_torsion_omegas(r1, r2, length, omega_max):
     """Donnell k = 0 torsion of a free-free cone by shooting: psi = v / r,
     (r^3 psi')' + (rho omega^2 / G) r^3 psi = 0, psi'(0) = psi'(l) = 0 (Euler-Lagrange of
-    U = pi G h int r^3 psi'^2 ds, T = pi rho h int r^3 psi^2 ds; Kraus eq. 2.6 gamma =
+    U = pi G h int r^3 psi'^2 ds, T = pi rho h int r^3 psi^2 ds; Kraus 1967 ch. 2: gamma =
     r (v/r)'), l the meridian length."""
     lm = np.hypot(length, r2 - r1)
     sa = (r2 - r1) / lm
@@ -261,7 +263,7 @@ def test_prestress_donnell_sd_cylinder(k):
 @pytest.mark.parametrize("k", [3, 7])
 def test_buckling_matches_batdorf(k):
     """SD-SD cylinder, uniform compression, Donnell: the smallest load factor for harmonic k
-    = min over m of Batdorf's N_cr(m, k) (Brush & Almroth eq. 5.30), rel. 1e-5 (mesh 16)."""
+    = min over m of Batdorf's N_cr(m, k) (Brush & Almroth 1975 ch. 5), rel. 1e-5 (mesh 16)."""
     length, radius, h = 2.0, 1.0, 0.01
     res = buckling_load(sd_vehicle(theory="donnell"), k, supported_forward_end=True,
                         elements_per_segment=16)
@@ -273,7 +275,7 @@ def test_buckling_matches_batdorf(k):
 def test_classical_buckling_stress():
     """Medium-length SD-SD cylinder (L = 2 m, R = 1 m, h = 10 mm, Batdorf Z = 380), Donnell:
     the lowest load over k = 2..16 is within 0.5 % above the classical
-    N = E h^2 / (R sqrt(3 (1 - nu^2))) (Brush & Almroth eq. 5.33; Timoshenko & Gere 1961
+    N = E h^2 / (R sqrt(3 (1 - nu^2))) (Brush & Almroth 1975 ch. 5; Timoshenko & Gere 1961
     sec. 11.4; observed +0.001 %: many (m, k) lie on Koiter's circle)."""
     classical = E * 0.01**2 / np.sqrt(3 * (1 - NU**2))
     veh = sd_vehicle(theory="donnell")
@@ -288,7 +290,7 @@ def test_classical_buckling_stress():
 def test_sanders_buckling_matches_closed_form(k):
     """Sanders SD-SD cylinder, uniform compression: smallest load factor = min over m of the
     closed-form 3x3 problem |K - P G| = 0 with G from Sanders' moderate-rotation strain
-    (beta_x^2 + phi^2)/2, phi = (v_x - u_theta / R)/2 (Brush & Almroth eq. 5.40), rel. 1e-5.
+    (beta_x^2 + phi^2)/2, phi = (v_x - u_theta / R)/2 (Brush & Almroth 1975 ch. 5), rel. 1e-5.
     (Sanders lies up to 6.4 % below the classical value here, at k = 5, m = 1: Donnell's
     n^2 >> 1 approximation fails for this long-wave mode.)"""
     length, radius, h = 2.0, 1.0, 0.01

@@ -526,7 +526,8 @@ def system_matrices(
 
     References
     ----------
-    .. [1] Zienkiewicz & Taylor vol. 2, ch. 10; Brush & Almroth 1975 eq. 5.40 (K_g).
+    .. [1] Zienkiewicz & Taylor vol. 2, ch. 10; Brush & Almroth 1975 ch. 5 (Sanders'
+       moderate-rotation strains: K_g).
     """
     k = integer("k", k, 0, 200)
     F0 = float(prestress_F0)
@@ -557,7 +558,7 @@ def rigid_body_fields(mesh: Mesh, k: int) -> np.ndarray:
 
     References
     ----------
-    .. [1] Kraus 1967 sec. 2.4 (rigid-body displacements of a shell of revolution: zero
+    .. [1] Kraus 1967 ch. 2 (rigid-body displacements of a shell of revolution: zero
        Sanders strains).
     """
     ref = reference_element(mesh.order)

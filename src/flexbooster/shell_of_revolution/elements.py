@@ -10,7 +10,7 @@ polynomial of degree p with the DOFs w, dw/ds at both ends and w at the p - 3 in
 points of degree p - 2 (p = 3: the Hermite cubic).  Element DOF order: end 1 (u, v, w, dw/ds),
 end 2 (u, v, w, dw/ds), interior u (p - 1), interior v (p - 1), interior w (p - 3).
 
-Strain-displacement relations of a cone (Kraus 1967 eqs. 2.6, 2.9 with 1/R_s = 0,
+Strain-displacement relations of a cone (Kraus 1967 ch. 2, shells of revolution, 1/R_s = 0,
 1/R_theta = cos(phi)/r, A_1 = 1, A_2 = r; Sanders 1959), for the harmonic amplitudes:
 
     eps_s   = U'                                         (cos k theta)
@@ -22,22 +22,22 @@ Strain-displacement relations of a cone (Kraus 1967 eqs. 2.6, 2.9 with 1/R_s = 0
               Phi = (V' + V sin phi / r + k U / r) / 2   (rotation about the normal)
 
 with c = 1 (Sanders) or 0 (Donnell: no v in the rotation, no Phi in the twist); tau is the
-engineering twist 2 kappa_s theta.  Energy densities (Kraus eq. 3.20):
+engineering twist 2 kappa_s theta.  Energy densities (Kraus 1967 ch. 3, constitutive law):
 N = A [eps_s, eps_th, gamma], A = E h / (1 - nu^2) [[1, nu, 0], [nu, 1, 0], [0, 0, (1 - nu)/2]],
 M = D [kappa_s, kappa_th, tau], D = E h^3 / (12 (1 - nu^2)) [same].  Mass: rho h (U^2 + V^2 +
 W^2) (consistent, no rotary inertia).  Geometric stiffness of a meridional prestress N_s^0
 (Sanders' moderate-rotation strain eps_s = U' + (beta_s^2 + Phi^2) / 2, beta_s = -W';
-Donnell: eps_s = U' + W'^2 / 2; Brush & Almroth 1975 eqs. 5.15, 5.40).  The theta integral
+Donnell: eps_s = U' + W'^2 / 2; Brush & Almroth 1975 ch. 5).  The theta integral
 gives the factor pi (k >= 1) or 2 pi (k = 0, where U, W (axisymmetric) and V (torsion)
 decouple).
 
 References
 ----------
-.. [1] H. Kraus, *Thin Elastic Shells*, Wiley, 1967, eqs. 2.6, 2.9, 3.20.
+.. [1] H. Kraus, *Thin Elastic Shells*, Wiley, 1967, ch. 2 (kinematics), ch. 3 (energy).
 .. [2] J. L. Sanders, "An improved first-approximation theory for thin shells", NASA TR R-24,
    1959.
 .. [3] D. O. Brush, B. O. Almroth, *Buckling of Bars, Plates and Shells*, McGraw-Hill, 1975,
-   eqs. 5.15 (Donnell), 5.40 (Sanders) nonlinear strains.
+   ch. 5 (Donnell and Sanders nonlinear strain-displacement relations).
 .. [4] O. C. Zienkiewicz, R. L. Taylor, *The Finite Element Method*, vol. 2, 5th ed., 2000,
    ch. 10 (axisymmetric shells, Fourier harmonics); R. D. Cook et al., *Concepts and
    Applications of FEA*, 4th ed., 2002, sec. 12.x (consistent mass).
@@ -238,7 +238,7 @@ def element_matrices(
 
     References
     ----------
-    .. [1] Kraus 1967 eqs. 2.6, 2.9, 3.20; Sanders 1959; Brush & Almroth 1975 eqs. 5.15, 5.40
+    .. [1] Kraus 1967 ch. 2-3; Sanders 1959; Brush & Almroth 1975 ch. 5
        (see the module docstring).
     """
     c = 1.0 if theory == "sanders" else 0.0
@@ -248,7 +248,7 @@ def element_matrices(
     sa = sin_phi[:, None, None]
     ca = cos_phi[:, None, None]
     rr = r[:, :, None]
-    B = (c * ca * V + k * W) / rr  # beta_theta amplitude (Kraus 2.9)
+    B = (c * ca * V + k * W) / rr  # beta_theta amplitude (Kraus ch. 2, Sanders)
     dB = (c * ca * dV + k * dW) / rr - B * sa / rr  # d/ds of B, r' = sin(phi)
     phi_n = 0.5 * (dV + V * sa / rr + k * U / rr)  # rotation about the normal (Sanders)
     strains = np.stack([
@@ -262,7 +262,7 @@ def element_matrices(
     a = E * thickness / (1.0 - nu**2)
     d = E * thickness**3 / (12.0 * (1.0 - nu**2))
     mat = np.zeros((length.size, 6, 6))
-    for off, val in ((0, a), (3, d)):  # Kraus 3.20: N = A eps, M = D kappa
+    for off, val in ((0, a), (3, d)):  # Kraus ch. 3: N = A eps, M = D kappa
         mat[:, off, off] = mat[:, off + 1, off + 1] = val
         mat[:, off, off + 1] = mat[:, off + 1, off] = nu * val
         mat[:, off + 2, off + 2] = 0.5 * (1.0 - nu) * val
@@ -274,6 +274,6 @@ def element_matrices(
                      optimize=True)
     geo = None
     if ns0 is not None:
-        rot = np.stack([-dW, c * phi_n], axis=2)  # beta_s and Phi (Brush & Almroth 5.40)
+        rot = np.stack([-dW, c * phi_n], axis=2)  # beta_s and Phi (Sanders; Brush & Almroth ch. 5)
         geo = np.einsum("egia,egib,eg->eab", rot, rot, ns0 * dvol, optimize=True)
     return mass, stiff, geo

@@ -17,7 +17,7 @@ References
 ----------
 .. [1] K.-J. Bathe, *Finite Element Procedures*, 1996, sec. 10.2 (generalised eigenproblem,
    M-orthogonality, rigid-body modes).
-.. [2] Brush & Almroth 1975, sec. 5.3 (linear buckling: K_e x = -lambda K_g x).
+.. [2] Brush & Almroth 1975, ch. 5 (linear buckling: K_e x = -lambda K_g x).
 """
 
 from __future__ import annotations
@@ -630,7 +630,8 @@ def buckling_load(
 
     References
     ----------
-    .. [1] Brush & Almroth 1975, sec. 5.3 (classical linear buckling); Bathe 1996 sec. 6.8.
+    .. [1] Brush & Almroth 1975, ch. 5 (classical linear buckling); Bathe 1996, ch. 6
+       (linearised buckling).
     """
     F0 = positive("F0", F0)
     k = integer("k", k, 0, K_MAX)

@@ -63,7 +63,7 @@ def axial_force(
 
     References
     ----------
-    .. [1] Brush & Almroth 1975, sec. 5.3; Newton's second law for the mass ahead of s.
+    .. [1] Brush & Almroth 1975, ch. 5; Newton's second law for the mass ahead of s.
     """
     if supported_forward_end:
         return np.full(t.shape, float(F0))
