@@ -1,0 +1,63 @@
+"""The whole vehicle as one thin shell of revolution (BOSOR-class Fourier-harmonic FE).
+
+Build a :class:`Vehicle` of :class:`Cylinder` and :class:`Cone` segments (aft to forward),
+then:
+
+* :func:`vehicle_modes` - natural frequencies and labelled mode shapes for k = 0..k_max,
+  optionally under the thrust prestress;
+* :func:`system_matrices` - M, K_e, K_g of one harmonic;
+* :func:`modal_system` - the same reduced to the first unloaded modes;
+* :func:`buckling_load` - linear buckling load factors of one harmonic.
+
+Theory, tests and limitations: ``docs/theory/shell-of-revolution.md``.
+
+References
+----------
+.. [1] H. Kraus, *Thin Elastic Shells*, 1967; A. W. Leissa, NASA SP-288, 1973;
+   D. Bushnell, Computers & Structures 4, 1974 (BOSOR).
+"""
+
+from __future__ import annotations
+
+from .assembly import DEFAULT_ORDER, Mesh, mesh_vehicle, system_matrices
+from .geometry import (
+    END_CONDITIONS,
+    JUNCTIONS,
+    THEORIES,
+    Cone,
+    Cylinder,
+    ShellWarning,
+    Vehicle,
+)
+from .modes import (
+    BAND_FACTOR,
+    MODE_TYPES,
+    BucklingLoad,
+    ModalSystem,
+    VehicleModes,
+    buckling_load,
+    modal_system,
+    vehicle_modes,
+)
+
+__all__ = [
+    "BAND_FACTOR",
+    "DEFAULT_ORDER",
+    "END_CONDITIONS",
+    "JUNCTIONS",
+    "MODE_TYPES",
+    "THEORIES",
+    "BucklingLoad",
+    "Cone",
+    "Cylinder",
+    "Mesh",
+    "ModalSystem",
+    "ShellWarning",
+    "Vehicle",
+    "VehicleModes",
+    "buckling_load",
+    "mesh_vehicle",
+    "modal_system",
+    "system_matrices",
+    "vehicle_modes",
+]

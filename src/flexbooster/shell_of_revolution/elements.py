@@ -1,0 +1,279 @@
+"""Conical frustum shell elements for one Fourier harmonic k (Sanders-Koiter or Donnell).
+
+Each element is a straight piece of meridian of length l_e at the meridian angle phi
+(dx/ds = cos phi, dr/ds = sin phi), with the local displacements
+
+    u = U(s) cos k theta   (meridional),   v = V(s) sin k theta,   w = W(s) cos k theta (normal)
+
+U, V: C0 Lagrange polynomials of degree p on the Gauss-Lobatto-Legendre points; W: C1
+polynomial of degree p with the DOFs w, dw/ds at both ends and w at the p - 3 interior GLL
+points of degree p - 2 (p = 3: the Hermite cubic).  Element DOF order: end 1 (u, v, w, dw/ds),
+end 2 (u, v, w, dw/ds), interior u (p - 1), interior v (p - 1), interior w (p - 3).
+
+Strain-displacement relations of a cone (Kraus 1967 ch. 2, shells of revolution, 1/R_s = 0,
+1/R_theta = cos(phi)/r, A_1 = 1, A_2 = r; Sanders 1959), for the harmonic amplitudes:
+
+    eps_s   = U'                                         (cos k theta)
+    eps_th  = (k V + U sin phi + W cos phi) / r          (cos)
+    gamma   = V' - V sin phi / r - k U / r               (sin)
+    kappa_s = -W''                                       (cos)
+    kappa_th = (k B - W' sin phi) / r,  B = (c V cos phi + k W) / r                      (cos)
+    tau     = B' - B sin phi / r + k W' / r + c (cos phi / r) Phi,                       (sin)
+              Phi = (V' + V sin phi / r + k U / r) / 2   (rotation about the normal)
+
+with c = 1 (Sanders) or 0 (Donnell: no v in the rotation, no Phi in the twist); tau is the
+engineering twist 2 kappa_s theta.  Energy densities (Kraus 1967 ch. 3, constitutive law):
+N = A [eps_s, eps_th, gamma], A = E h / (1 - nu^2) [[1, nu, 0], [nu, 1, 0], [0, 0, (1 - nu)/2]],
+M = D [kappa_s, kappa_th, tau], D = E h^3 / (12 (1 - nu^2)) [same].  Mass: rho h (U^2 + V^2 +
+W^2) (consistent, no rotary inertia).  Geometric stiffness of a meridional prestress N_s^0
+(Sanders' moderate-rotation strain eps_s = U' + (beta_s^2 + Phi^2) / 2, beta_s = -W';
+Donnell: eps_s = U' + W'^2 / 2; Brush & Almroth 1975 ch. 5).  The theta integral
+gives the factor pi (k >= 1) or 2 pi (k = 0, where U, W (axisymmetric) and V (torsion)
+decouple).
+
+References
+----------
+.. [1] H. Kraus, *Thin Elastic Shells*, Wiley, 1967, ch. 2 (kinematics), ch. 3 (energy).
+.. [2] J. L. Sanders, "An improved first-approximation theory for thin shells", NASA TR R-24,
+   1959.
+.. [3] D. O. Brush, B. O. Almroth, *Buckling of Bars, Plates and Shells*, McGraw-Hill, 1975,
+   ch. 5 (Donnell and Sanders nonlinear strain-displacement relations).
+.. [4] O. C. Zienkiewicz, R. L. Taylor, *The Finite Element Method*, vol. 2, 5th ed., 2000,
+   ch. 10 (axisymmetric shells, Fourier harmonics); R. D. Cook et al., *Concepts and
+   Applications of FEA*, 4th ed., 2002, sec. 12.x (consistent mass).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+from numpy.polynomial import legendre as leg
+
+__all__ = ["ReferenceElement", "reference_element", "element_matrices", "theta_weight"]
+
+
+@dataclass(frozen=True)
+class ReferenceElement:
+    """Shape functions of order p on xi in [-1, 1] at the Gauss points (read-only arrays).
+
+    Attributes
+    ----------
+    order : int
+        Polynomial degree p (dimensionless), >= 3.
+    n_dof : int
+        DOFs per element, 3 (p + 1).
+    xi, weight : ndarray, shape (g,)
+        Gauss-Legendre points and weights.
+    nuv, duv : ndarray, shape (g, p + 1)
+        U/V shape functions and d/dxi.
+    nw, dw, d2w : ndarray, shape (g, p + 1)
+        W shape functions and d/dxi, d^2/dxi^2 (the slope DOFs in units of dw/dxi; the element
+        scales them by l_e / 2).
+    iu, iv, iw : ndarray of int, shape (p + 1,)
+        Positions of the U, V, W coefficients in the element DOF vector.
+    slope : ndarray of int, shape (2,)
+        Positions (within ``iw``) of the two slope DOFs.
+    xi_nodes_uv, xi_nodes_w : ndarray
+        Reference points of the U/V and of the interior W DOFs.
+    """
+
+    order: int
+    n_dof: int
+    xi: np.ndarray
+    weight: np.ndarray
+    nuv: np.ndarray
+    duv: np.ndarray
+    nw: np.ndarray
+    dw: np.ndarray
+    d2w: np.ndarray
+    iu: np.ndarray
+    iv: np.ndarray
+    iw: np.ndarray
+    slope: np.ndarray
+    xi_nodes_uv: np.ndarray
+    xi_nodes_w: np.ndarray
+
+    def evaluate(self, xi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """U/V and W shape functions at arbitrary points ``xi`` (slopes in d/dxi units)."""
+        xi = np.asarray(xi, dtype=float)
+        cuv, cw = _coefficients(self.order)
+        return leg.legvander(xi, self.order) @ cuv, leg.legvander(xi, self.order) @ cw
+
+
+def _gll(p: int) -> np.ndarray:
+    """Gauss-Lobatto-Legendre points of degree p (p + 1 points, ascending)."""
+    inner = np.sort(leg.Legendre.basis(p).deriv().roots().real) if p >= 2 else np.empty(0)
+    return np.concatenate(([-1.0], inner, [1.0]))
+
+
+@lru_cache(maxsize=16)
+def _coefficients(p: int) -> tuple[np.ndarray, np.ndarray]:
+    """Legendre coefficients (p + 1, p + 1) of the U/V and W bases (columns)."""
+    x_uv = _gll(p)
+    cuv = np.linalg.inv(leg.legvander(x_uv, p))  # Lagrange at the GLL points
+    x_w = _gll(p - 2)[1:-1]
+    vd = leg.legvander(np.array([-1.0, 1.0]), p)
+    dcoef = leg.legder(np.eye(p + 1), axis=0)  # rows: derivative coefficients of P_j
+    dv = leg.legvander(np.array([-1.0, 1.0]), p - 1) @ dcoef
+    rows = [vd[0], dv[0], vd[1], dv[1]] + list(leg.legvander(x_w, p))
+    cw = np.linalg.inv(np.array(rows))  # functionals: w(-1), w'(-1), w(1), w'(1), w(x_w)
+    cuv.setflags(write=False)
+    cw.setflags(write=False)
+    return cuv, cw
+
+
+@lru_cache(maxsize=16)
+def reference_element(order: int) -> ReferenceElement:
+    """Shape functions and quadrature of the order-p element (cached, read-only).
+
+    Parameters
+    ----------
+    order : int
+        Polynomial degree p of U, V and W (dimensionless), 3 <= p <= 12.
+
+    Returns
+    -------
+    ReferenceElement
+
+    References
+    ----------
+    .. [1] C. Canuto et al., *Spectral Methods*, Springer, 2006, sec. 2.3 (GLL points);
+       Zienkiewicz & Taylor vol. 1, sec. 8.5 (Hermite C1 elements).
+    """
+    p = int(order)
+    if not 3 <= p <= 12:
+        raise ValueError(f"order = {order!r}: must be an integer in 3..12")
+    cuv, cw = _coefficients(p)
+    xi, wt = leg.leggauss(p + 3)  # exact for the polynomial (cylinder) integrands of degree 2p
+    vand = leg.legvander(xi, p)
+    d1 = leg.legder(np.eye(p + 1), axis=0)
+    d2 = leg.legder(np.eye(p + 1), m=2, axis=0)
+    nuv = vand @ cuv
+    duv = leg.legvander(xi, p - 1) @ (d1 @ cuv)
+    nw = vand @ cw
+    dw = leg.legvander(xi, p - 1) @ (d1 @ cw)
+    d2w = leg.legvander(xi, p - 2) @ (d2 @ cw)
+    # DOF positions: end 1 (u, v, w, w'), end 2 (u, v, w, w'), interior u, v, w
+    ni = p - 1
+    iu = np.concatenate(([0], 8 + np.arange(ni), [4]))
+    iv = np.concatenate(([1], 8 + ni + np.arange(ni), [5]))
+    iw = np.concatenate(([2, 3, 6, 7], 8 + 2 * ni + np.arange(p - 3)))
+    arrays = dict(xi=xi, weight=wt, nuv=nuv, duv=duv, nw=nw, dw=dw, d2w=d2w, iu=iu, iv=iv,
+                  iw=iw, slope=np.array([1, 3]), xi_nodes_uv=_gll(p),
+                  xi_nodes_w=_gll(p - 2)[1:-1])
+    for val in arrays.values():
+        val.setflags(write=False)
+    return ReferenceElement(order=p, n_dof=3 * (p + 1), **arrays)
+
+
+def theta_weight(k: int) -> float:
+    """Integral over theta of cos^2 k theta (pi for k >= 1, 2 pi for k = 0; dimensionless)."""
+    return 2.0 * np.pi if k == 0 else np.pi
+
+
+def _operators(ref: ReferenceElement, length: np.ndarray):
+    """U, V, W values and s-derivatives at the Gauss points, shape (e, g, n_dof) each."""
+    ne = length.size
+    jac = 0.5 * length[:, None, None]  # ds/dxi
+    nd = ref.n_dof
+    shape = (ne, ref.xi.size, nd)
+    U, dU, V, dV, W, dW, d2W = (np.zeros(shape) for _ in range(7))
+    U[:, :, ref.iu] = ref.nuv
+    dU[:, :, ref.iu] = ref.duv / jac
+    V[:, :, ref.iv] = ref.nuv
+    dV[:, :, ref.iv] = ref.duv / jac
+    scale = np.ones((ne, 1, ref.iw.size))
+    scale[:, :, ref.slope] = jac  # slope DOFs are dw/ds: w = ... + (l/2) (dw/ds) N_xi
+    W[:, :, ref.iw] = ref.nw * scale
+    dW[:, :, ref.iw] = ref.dw * scale / jac
+    d2W[:, :, ref.iw] = ref.d2w * scale / jac**2
+    return U, dU, V, dV, W, dW, d2W
+
+
+def element_matrices(
+    ref: ReferenceElement,
+    k: int,
+    *,
+    r1: np.ndarray,
+    length: np.ndarray,
+    sin_phi: np.ndarray,
+    cos_phi: np.ndarray,
+    thickness: np.ndarray,
+    E: np.ndarray,
+    nu: np.ndarray,
+    rho: np.ndarray,
+    theory: str = "sanders",
+    ns0: np.ndarray | None = None,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
+    """Mass, elastic and geometric stiffness of all elements for harmonic k (local DOFs).
+
+    Parameters
+    ----------
+    ref : ReferenceElement
+        Shape functions (:func:`reference_element`).
+    k : int
+        Circumferential wave number (dimensionless), >= 0.
+    r1 : ndarray, shape (e,)
+        Radius at the aft end of each element (m), > 0 along the element.
+    length : ndarray, shape (e,)
+        Meridian length of each element (m), > 0.
+    sin_phi, cos_phi : ndarray, shape (e,)
+        Meridian angle of each element (dimensionless): dr/ds and dx/ds.
+    thickness, E, nu, rho : ndarray, shape (e,)
+        Wall thickness (m), Young's modulus (Pa), Poisson's ratio (dimensionless), density
+        (kg/m^3).
+    theory : str
+        ``"sanders"`` or ``"donnell"``.
+    ns0 : ndarray, shape (e, g), optional
+        Meridional prestress resultant N_s^0 at the Gauss points (N/m, compression < 0).
+
+    Returns
+    -------
+    mass, stiffness : ndarray, shape (e, n_dof, n_dof)
+        Consistent mass (kg) and elastic stiffness (N/m) in the element DOFs.
+    geometric : ndarray, shape (e, n_dof, n_dof) or None
+        Geometric stiffness (N/m) of ``ns0``; None when ``ns0`` is None.
+
+    References
+    ----------
+    .. [1] Kraus 1967 ch. 2-3; Sanders 1959; Brush & Almroth 1975 ch. 5
+       (see the module docstring).
+    """
+    c = 1.0 if theory == "sanders" else 0.0
+    U, dU, V, dV, W, dW, d2W = _operators(ref, length)
+    jac = 0.5 * length[:, None]
+    r = r1[:, None] + (1.0 + ref.xi[None, :]) * jac * sin_phi[:, None]  # r = r1 + s sin(phi)
+    sa = sin_phi[:, None, None]
+    ca = cos_phi[:, None, None]
+    rr = r[:, :, None]
+    B = (c * ca * V + k * W) / rr  # beta_theta amplitude (Kraus ch. 2, Sanders)
+    dB = (c * ca * dV + k * dW) / rr - B * sa / rr  # d/ds of B, r' = sin(phi)
+    phi_n = 0.5 * (dV + V * sa / rr + k * U / rr)  # rotation about the normal (Sanders)
+    strains = np.stack([
+        dU,  # eps_s = u'
+        (k * V + U * sa + W * ca) / rr,  # eps_theta = (v_theta + u sin + w cos) / r
+        dV - V * sa / rr - k * U / rr,  # gamma = r (v/r)' + u_theta / r
+        -d2W,  # kappa_s = beta_s', beta_s = -w'
+        (k * B - dW * sa) / rr,  # kappa_theta = (beta_theta,theta + beta_s sin) / r
+        dB - B * sa / rr + k * dW / rr + c * (ca / rr) * phi_n,  # Sanders twist 2 kappa_st
+    ], axis=2)  # (e, g, 6, n_dof)
+    a = E * thickness / (1.0 - nu**2)
+    d = E * thickness**3 / (12.0 * (1.0 - nu**2))
+    mat = np.zeros((length.size, 6, 6))
+    for off, val in ((0, a), (3, d)):  # Kraus ch. 3: N = A eps, M = D kappa
+        mat[:, off, off] = mat[:, off + 1, off + 1] = val
+        mat[:, off, off + 1] = mat[:, off + 1, off] = nu * val
+        mat[:, off + 2, off + 2] = 0.5 * (1.0 - nu) * val
+    wt = theta_weight(k)
+    dvol = wt * ref.weight[None, :] * jac * r  # (e, g): theta weight * r ds
+    stiff = np.einsum("egia,eij,egjb,eg->eab", strains, mat, strains, dvol, optimize=True)
+    disp = np.stack([U, V, W], axis=2)
+    mass = np.einsum("egia,egib,eg->eab", disp, disp, (rho * thickness)[:, None] * dvol,
+                     optimize=True)
+    geo = None
+    if ns0 is not None:
+        rot = np.stack([-dW, c * phi_n], axis=2)  # beta_s and Phi (Sanders; Brush & Almroth ch. 5)
+        geo = np.einsum("egia,egib,eg->eab", rot, rot, ns0 * dvol, optimize=True)
+    return mass, stiff, geo

@@ -1,0 +1,663 @@
+"""Natural modes, loaded frequencies, modal systems and buckling of a shell-of-revolution vehicle.
+
+For each harmonic k the generalised eigenproblem K x = omega^2 M x (or (K_e + K_g) x =
+omega^2 M x with the thrust prestress) is solved densely (``scipy.linalg.eigh``, only the
+eigenpairs wanted).  For k = 0 and k = 1 the rigid-body motions that the constraints admit
+(k = 0: axial translation, rotation about the axis; k = 1: lateral translation, pitch) are
+identified (:func:`~.assembly.rigid_body_fields`, restricted to the admissible subspace) and
+removed exactly: the problem is solved on the M-orthogonal complement of that subspace.
+
+Every mode is labelled: ``k``; ``order``, the number of sign changes along the meridian of
+its dominant component (an SD-SD cylinder mode with m axial half-waves has order m - 1);
+``type`` from the largest kinetic-energy share of (u, v, w): k = 0 "axial" / "torsional" /
+"breathing", k = 1 "axial" / "bending", k >= 2 "axial" / "torsional" / "radial"; ``segment``,
+the segment holding the largest strain-energy share.
+
+References
+----------
+.. [1] K.-J. Bathe, *Finite Element Procedures*, 1996, sec. 10.2 (generalised eigenproblem,
+   M-orthogonality, rigid-body modes).
+.. [2] Brush & Almroth 1975, ch. 5 (linear buckling: K_e x = -lambda K_g x).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import scipy.linalg as sla
+
+from ._checks import finite, integer, positive
+from .assembly import (
+    DEFAULT_ORDER,
+    Mesh,
+    _transform,
+    assemble,
+    dof_map,
+    element_set,
+    mesh_vehicle,
+    rigid_body_fields,
+)
+from .elements import reference_element
+from .geometry import Vehicle
+
+__all__ = [
+    "MODE_TYPES",
+    "BAND_FACTOR",
+    "VehicleModes",
+    "ModalSystem",
+    "BucklingLoad",
+    "vehicle_modes",
+    "modal_system",
+    "buckling_load",
+]
+
+#: Mode type names (see the module docstring).
+MODE_TYPES = ("axial", "torsional", "breathing", "bending", "radial")
+#: Default band: frequencies up to this multiple of the lowest elastic one.
+BAND_FACTOR = 5.0
+#: Largest harmonic accepted.
+K_MAX = 200
+
+
+@dataclass(frozen=True)
+class VehicleModes:
+    """Natural modes of a vehicle, one row per mode (sorted by k, then frequency).
+
+    Attributes
+    ----------
+    k : ndarray of int, shape (n,)
+        Circumferential wave number.
+    omega : ndarray, shape (n,)
+        Circular frequency (rad/s).
+    hz : ndarray, shape (n,)
+        Frequency (Hz).
+    order : ndarray of int, shape (n,)
+        Sign changes of the dominant component along the meridian.
+    type : ndarray of str, shape (n,)
+        Mode type (:data:`MODE_TYPES`).
+    segment : ndarray of int, shape (n,)
+        Segment with the largest strain-energy share.
+    kinetic_share : ndarray, shape (n, 3)
+        Kinetic-energy shares of u (meridional), v, w (normal).
+    s, x, r : ndarray, shape (n_pts,)
+        Meridian coordinate, axial station and radius of the shape samples (m); element ends
+        appear twice (once per element).
+    shapes : ndarray, shape (n, 3, n_pts)
+        Local (u, v, w) amplitudes of each mode, scaled to max |.| = 1.
+    rigid_modes : dict
+        ``{k: n}``: number of rigid-body modes found and removed for k = 0 and 1.
+    prestress_F0 : float
+        Thrust (N) of the prestress (0: unloaded).
+    theory : str
+        Shell theory.
+    elements_per_segment : tuple of int
+        Mesh used.
+    element_order : int
+        Polynomial degree used.
+    warnings : tuple of ShellWarning
+        Warnings of the vehicle.
+    """
+
+    k: np.ndarray
+    omega: np.ndarray
+    hz: np.ndarray
+    order: np.ndarray
+    type: np.ndarray
+    segment: np.ndarray
+    kinetic_share: np.ndarray
+    s: np.ndarray
+    x: np.ndarray
+    r: np.ndarray
+    shapes: np.ndarray
+    rigid_modes: dict
+    prestress_F0: float
+    theory: str
+    elements_per_segment: tuple
+    element_order: int
+    warnings: tuple = field(default=(), repr=False)
+
+    def __len__(self) -> int:
+        return int(self.k.size)
+
+    def select(self, k: int | None = None) -> np.ndarray:
+        """Boolean mask of the modes of one harmonic.
+
+        Parameters
+        ----------
+        k : int, optional
+            Circumferential wave number (dimensionless); None selects all.
+
+        Returns
+        -------
+        ndarray of bool, shape (n,)
+        """
+        return np.ones(len(self), bool) if k is None else self.k == k
+
+    def to_dict(self, *, shapes: bool = True) -> dict:
+        """JSON-ready mapping of plain lists and floats (``shapes=False`` omits the shapes)."""
+        out = {
+            "columns": ["k", "omega", "hz", "order", "type", "segment"],
+            "k": self.k.tolist(), "omega": self.omega.tolist(), "hz": self.hz.tolist(),
+            "order": self.order.tolist(), "type": self.type.tolist(),
+            "segment": self.segment.tolist(), "kinetic_share": self.kinetic_share.tolist(),
+            "rigid_modes": {str(key): int(val) for key, val in self.rigid_modes.items()},
+            "prestress_F0": float(self.prestress_F0), "theory": self.theory,
+            "elements_per_segment": list(self.elements_per_segment),
+            "element_order": int(self.element_order),
+            "warnings": [w.to_dict() for w in self.warnings],
+        }
+        if shapes:
+            out.update(s=self.s.tolist(), x=self.x.tolist(), r=self.r.tolist(),
+                       shapes=self.shapes.tolist())
+        return out
+
+
+@dataclass(frozen=True)
+class ModalSystem:
+    """Modal matrices of one harmonic: M q'' + (K_e + (T(t)/F0) K_g) q = 0.
+
+    Attributes
+    ----------
+    k : int
+        Circumferential wave number.
+    omega : ndarray, shape (n,)
+        Unloaded natural frequencies of the basis modes (rad/s).
+    mass, stiffness, geometric : ndarray, shape (n, n)
+        Modal mass (identity, kg m^0 by mass normalisation), elastic stiffness
+        diag(omega^2) (1/s^2) and geometric stiffness of the thrust F0 (1/s^2).
+    F0 : float
+        Thrust of the prestress (N).
+    """
+
+    k: int
+    omega: np.ndarray
+    mass: np.ndarray
+    stiffness: np.ndarray
+    geometric: np.ndarray
+    F0: float
+
+    def to_dict(self) -> dict:
+        """JSON-ready mapping."""
+        return {"k": self.k, "omega": self.omega.tolist(), "mass": self.mass.tolist(),
+                "stiffness": self.stiffness.tolist(), "geometric": self.geometric.tolist(),
+                "F0": float(self.F0)}
+
+
+@dataclass(frozen=True)
+class BucklingLoad:
+    """Linear buckling of one harmonic under the thrust prestress.
+
+    Attributes
+    ----------
+    k : int
+        Circumferential wave number.
+    load_factor : ndarray, shape (n,)
+        Smallest positive lambda of K_e x = -lambda K_g(F0) x, ascending (dimensionless).
+    critical_thrust : ndarray, shape (n,)
+        lambda F0 (N).
+    s : ndarray, shape (n_pts,)
+        Meridian coordinate of the shape samples (m).
+    shapes : ndarray, shape (n, 3, n_pts)
+        Local (u, v, w) buckling modes, max |.| = 1.
+    """
+
+    k: int
+    load_factor: np.ndarray
+    critical_thrust: np.ndarray
+    s: np.ndarray
+    shapes: np.ndarray
+
+    def to_dict(self) -> dict:
+        """JSON-ready mapping."""
+        return {"k": self.k, "load_factor": self.load_factor.tolist(),
+                "critical_thrust": self.critical_thrust.tolist(), "s": self.s.tolist(),
+                "shapes": self.shapes.tolist()}
+
+
+# ----------------------------------------------------------------------------- helpers
+
+
+@dataclass(frozen=True)
+class _Harmonic:
+    """Matrices of one harmonic, with the rigid-free basis Q (None: no rigid motions)."""
+
+    k: int
+    M: np.ndarray
+    K: np.ndarray
+    G: np.ndarray | None
+    Q: np.ndarray | None
+    dmap: object
+    elem_k: np.ndarray
+    n_rigid: int
+
+
+def _rigid_subspace(mesh: Mesh, dmap, k: int) -> np.ndarray:
+    """Admissible rigid-body vectors in reduced DOFs, shape (n, m) (m may be 0)."""
+    fields = rigid_body_fields(mesh, k)
+    if fields.shape[0] == 0:
+        return np.zeros((dmap.n, 0))
+    # project each full field onto the constrained space: average over aliases
+    idx = dmap.index
+    keep = idx >= 0
+    red = np.zeros((fields.shape[0], dmap.n))
+    den = np.bincount(idx[keep], weights=dmap.coef[keep] ** 2, minlength=dmap.n)
+    for i in range(fields.shape[0]):  # least-squares fit of full = coef * reduced
+        red[i] = np.bincount(idx[keep], weights=(fields[i] * dmap.coef)[keep],
+                             minlength=dmap.n) / den
+    resid = dmap.expand(red) - fields  # (m, n_full): violation of the constraints
+    scale = np.linalg.norm(fields, axis=1).max()
+    # combinations c with resid^T c = 0 are admissible
+    _, sv, vt = np.linalg.svd(resid.T, full_matrices=True)
+    sv = np.concatenate([sv, np.zeros(fields.shape[0] - sv.size)])
+    null = vt[sv <= 1e-9 * scale]
+    return (null @ red).T
+
+
+def _harmonic(vehicle: Vehicle, mesh: Mesh, k: int, *, F0: float, supported: bool,
+              geometric: bool) -> _Harmonic:
+    dmap = dof_map(vehicle, mesh, k)
+    m, ke, kg = element_set(vehicle, mesh, k, prestress_F0=F0,
+                            supported_forward_end=supported, geometric=geometric)
+    M = assemble(mesh, dmap, m)
+    K = assemble(mesh, dmap, ke)
+    G = None if kg is None else assemble(mesh, dmap, kg)
+    R = _rigid_subspace(mesh, dmap, k)
+    Q = None
+    if R.shape[1]:
+        q_full, _ = np.linalg.qr(M @ R, mode="complete")
+        Q = q_full[:, R.shape[1]:]  # Q^T M R = 0: the M-orthogonal complement (Bathe 10.2)
+    return _Harmonic(k=k, M=M, K=K, G=G, Q=Q, dmap=dmap, elem_k=ke, n_rigid=R.shape[1])
+
+
+def _project(h: _Harmonic, mat: np.ndarray) -> np.ndarray:
+    if h.Q is None:
+        return mat
+    out = h.Q.T @ mat @ h.Q
+    return 0.5 * (out + out.T)
+
+
+def _none_below(stiff: np.ndarray, mass: np.ndarray, w2: float) -> bool:
+    """True if K - w2 M is positive definite: no eigenvalue below w2 (Sylvester's law of
+    inertia), decided by a banded Cholesky factorisation (O(n b^2))."""
+    A = stiff - w2 * mass
+    rows, cols = np.nonzero(A)
+    bw = int(np.max(np.abs(rows - cols))) if rows.size else 0
+    n = A.shape[0]
+    ab = np.zeros((bw + 1, n))
+    for d in range(bw + 1):
+        ab[d, :n - d] = np.diagonal(A, -d)
+    try:
+        sla.cholesky_banded(ab, lower=True, check_finite=False)
+    except sla.LinAlgError:
+        return False
+    return True
+
+
+def _solve(h: _Harmonic, stiff: np.ndarray, *, n_modes: int | None, w2_max: float | None):
+    """Lowest eigenpairs (omega^2, reduced vectors (n, m)) of stiff x = omega^2 M x."""
+    if n_modes is None and w2_max is not None and h.Q is None and _none_below(
+            stiff, h.M, w2_max):
+        return np.zeros(0), np.zeros((stiff.shape[0], 0))
+    A = _project(h, stiff)
+    B = _project(h, h.M)
+    # symmetric diagonal scaling (unit mass diagonal): better-conditioned Cholesky reduction
+    scale = 1.0 / np.sqrt(np.diag(B))
+    A = A * scale[:, None] * scale[None, :]
+    B = B * scale[:, None] * scale[None, :]
+    n = A.shape[0]
+    kw: dict = {"driver": "gvx"}
+    if n_modes is not None:
+        kw["subset_by_index"] = (0, min(n, n_modes) - 1)
+    if w2_max is not None:
+        if n_modes is not None:
+            vals, vecs = sla.eigh(A, B, **kw)
+            sel = vals <= w2_max
+            vals, vecs = vals[sel], vecs[:, sel]
+        else:
+            kw["subset_by_value"] = (-np.inf, w2_max)
+            vals, vecs = sla.eigh(A, B, **kw)
+    else:
+        vals, vecs = sla.eigh(A, B, **kw)
+    vecs = vecs * scale[:, None]
+    if h.Q is not None:
+        vecs = h.Q @ vecs
+    return vals, vecs
+
+
+def _sample(mesh: Mesh, dmap, vecs: np.ndarray, xi: np.ndarray):
+    """Local (U, V, W) of reduced vectors (n, m) at points xi of every element: (m, 3, e, q)."""
+    ref = reference_element(mesh.order)
+    full = dmap.expand(vecs.T)  # (m, n_full)
+    q = full[:, mesh.dofs]  # (m, e, nd)
+    q = np.einsum("eij,mej->mei", _transform(mesh), q)
+    nuv, nw = ref.evaluate(xi)
+    scale = np.ones((mesh.n_elements, ref.iw.size))
+    scale[:, ref.slope] = 0.5 * mesh.length[:, None]
+    U = np.einsum("qi,mei->meq", nuv, q[:, :, ref.iu])
+    V = np.einsum("qi,mei->meq", nuv, q[:, :, ref.iv])
+    W = np.einsum("qi,mei->meq", nw, q[:, :, ref.iw] * scale[None])
+    return np.stack([U, V, W], axis=1)
+
+
+def _labels(mesh: Mesh, h: _Harmonic, vecs: np.ndarray, k: int, n_pts_per_el: int):
+    ref = reference_element(mesh.order)
+    m = vecs.shape[1]
+    # kinetic shares by Gauss quadrature of rho h r (U^2, V^2, W^2)
+    gs = _sample(mesh, h.dmap, vecs, ref.xi)  # (m, 3, e, g)
+    r_g = mesh.r1[:, None] + 0.5 * (1 + ref.xi)[None, :] * mesh.length[:, None] * \
+        mesh.sin_phi[:, None]
+    wgt = (mesh.rho * mesh.thickness * 0.5 * mesh.length)[:, None] * ref.weight[None] * r_g
+    kin = np.einsum("mceg,eg->mc", gs**2, wgt)
+    share = kin / kin.sum(axis=1, keepdims=True)
+    # strain energy per segment
+    full = h.dmap.expand(vecs.T)[:, mesh.dofs]  # (m, e, nd)
+    e_el = np.einsum("mei,eij,mej->me", full, h.elem_k, full)
+    nseg = len(mesh.elements_per_segment)
+    e_seg = np.zeros((m, nseg))
+    np.add.at(e_seg.T, mesh.segment, e_el.T)
+    segment = np.argmax(e_seg, axis=1)
+    # shapes and order
+    xi = np.linspace(-1.0, 1.0, n_pts_per_el)
+    sh = _sample(mesh, h.dmap, vecs, xi).reshape(m, 3, -1)
+    peak = np.abs(sh).max(axis=(1, 2))
+    peak[peak == 0] = 1.0
+    sh = sh / peak[:, None, None]
+    flat = sh.reshape(m, -1)
+    sign = np.sign(flat[np.arange(m), np.argmax(np.abs(flat), axis=1)])
+    sh = sh * sign[:, None, None]
+    dom = np.argmax(share, axis=1)
+    comp = sh[np.arange(m), dom]  # (m, pts)
+    amp = np.abs(comp).max(axis=1, keepdims=True)
+    sig = np.where(np.abs(comp) > 1e-3 * amp, np.sign(comp), 0.0)
+    # carry the last nonzero sign forward over the negligible samples, count sign changes
+    last = np.maximum.accumulate(np.where(sig != 0, np.arange(sig.shape[1])[None, :], 0), axis=1)
+    filled = np.take_along_axis(sig, last, axis=1)
+    order = np.count_nonzero(filled[:, 1:] * filled[:, :-1] < 0, axis=1)
+    if k == 0:
+        names = np.array(["axial", "torsional", "breathing"])[dom]
+    elif k == 1:
+        names = np.where(share[:, 0] > 0.5, "axial", "bending")
+    else:
+        names = np.array(["axial", "torsional", "radial"])[dom]
+    return share, segment, order, names.astype(str), sh
+
+
+def _check_common(vehicle, k_max, prestress_F0):
+    if not isinstance(vehicle, Vehicle):
+        raise ValueError(f"vehicle = {vehicle!r}: must be a Vehicle")
+    k_max = integer("k_max", k_max, 0, K_MAX)
+    return k_max, finite("prestress_F0", prestress_F0)
+
+
+def vehicle_modes(
+    vehicle: Vehicle,
+    *,
+    k_max: int,
+    k_min: int = 0,
+    f_max: float | None = None,
+    n_modes: int | None = None,
+    band_factor: float = BAND_FACTOR,
+    prestress_F0: float = 0.0,
+    supported_forward_end: bool = False,
+    elements_per_segment: int | tuple | None = None,
+    order: int = DEFAULT_ORDER,
+    points_per_element: int = 9,
+    tolerance: float | None = None,
+) -> VehicleModes:
+    """Natural frequencies and labelled mode shapes for k = k_min..k_max.
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        The vehicle.
+    k_max : int
+        Highest circumferential wave number (dimensionless), 0..200.
+    k_min : int
+        Lowest one (dimensionless), 0..k_max.
+    f_max : float, optional
+        Keep the elastic modes up to this frequency (Hz), > 0.
+    n_modes : int, optional
+        Keep at most this many elastic modes per k (dimensionless), 1..2000.
+    band_factor : float
+        Without ``f_max`` and ``n_modes``: keep the modes up to ``band_factor`` times the
+        lowest elastic frequency over all k (dimensionless), >= 1; default 5.
+    prestress_F0 : float
+        Thrust (N) of the steady prestress (0: unloaded); the frequencies are those of
+        K_e + K_g(F0).
+    supported_forward_end : bool
+        Prestress as uniform compression F0 reacted at the nose.
+    elements_per_segment, order : see :func:`~.assembly.mesh_vehicle`.
+    points_per_element : int
+        Shape samples per element (dimensionless), 2..50.
+    tolerance : float, optional
+        Target relative accuracy (dimensionless), 1e-9..0.1: the mesh is refined (every
+        element split in 2, 4, 8) until no returned frequency changes by more than this;
+        the finer result is returned (``ValueError`` if not reached at 8).
+
+    Returns
+    -------
+    VehicleModes
+
+    References
+    ----------
+    .. [1] Bathe 1996 sec. 10.2; Zienkiewicz & Taylor vol. 2 ch. 10 (see the package docs).
+    """
+    k_max, F0 = _check_common(vehicle, k_max, prestress_F0)
+    k_min = integer("k_min", k_min, 0, k_max)
+    if f_max is not None:
+        f_max = positive("f_max", f_max)
+    if n_modes is not None:
+        n_modes = integer("n_modes", n_modes, 1, 2000)
+    band_factor = finite("band_factor", band_factor)
+    if band_factor < 1.0:
+        raise ValueError(f"band_factor = {band_factor!r}: must be >= 1")
+    points_per_element = integer("points_per_element", points_per_element, 2, 50)
+    opts = dict(k_min=k_min, k_max=k_max, f_max=f_max, n_modes=n_modes, band_factor=band_factor,
+                F0=F0, supported=supported_forward_end, points_per_element=points_per_element)
+    if tolerance is None:
+        mesh = mesh_vehicle(vehicle, elements_per_segment=elements_per_segment, order=order)
+        return _modes_on_mesh(vehicle, mesh, **opts)
+    tolerance = positive("tolerance", tolerance)
+    if not 1e-9 <= tolerance <= 0.1:
+        raise ValueError(f"tolerance = {tolerance!r}: must be in [1e-9, 0.1]")
+    previous, change = None, np.inf
+    for refinement in (1, 2, 4, 8):
+        mesh = mesh_vehicle(vehicle, elements_per_segment=elements_per_segment, order=order,
+                            refinement=refinement)
+        current = _modes_on_mesh(vehicle, mesh, **opts)
+        if previous is not None:
+            change = _max_change(previous, current)
+            if change <= tolerance:
+                return current
+        previous = current
+    raise ValueError(f"tolerance = {tolerance!r}: not reached with every element split in 8 "
+                     f"(last change {change:.3g})")
+
+
+def _max_change(coarse: VehicleModes, fine: VehicleModes) -> float:
+    """Largest relative change of the frequencies of each k (matched in order)."""
+    change = 0.0
+    for kk in np.unique(np.concatenate([coarse.k, fine.k])):
+        a, b = coarse.omega[coarse.k == kk], fine.omega[fine.k == kk]
+        n = min(a.size, b.size)
+        if n:  # (a mode that crossed the band edge has no partner and is not compared)
+            change = max(change, float(np.max(np.abs(a[:n] / b[:n] - 1.0))))
+    return change
+
+
+def _modes_on_mesh(vehicle: Vehicle, mesh: Mesh, *, k_min: int, k_max: int,
+                   f_max: float | None, n_modes: int | None, band_factor: float, F0: float,
+                   supported: bool, points_per_element: int) -> VehicleModes:
+    """The work of :func:`vehicle_modes` on one mesh (arguments already checked)."""
+    supported_forward_end = supported
+    loaded = F0 != 0.0
+    ks = list(range(k_min, k_max + 1))
+    band = f_max is None and n_modes is None
+    if band:  # likely lowest harmonics first, so that the band bound is found early
+        ks.sort(key=lambda kk: (kk == 0, abs(kk - 2)))
+    w2_bound = None if f_max is None else (2.0 * np.pi * f_max) ** 2
+    results = {}
+    for kk in ks:
+        h = _harmonic(vehicle, mesh, kk, F0=F0, supported=supported_forward_end,
+                      geometric=loaded)
+        stiff = h.K + h.G if loaded else h.K
+        if band and w2_bound is None:
+            vals, vecs = _solve(h, stiff, n_modes=min(12, stiff.shape[0]), w2_max=None)
+            positive_vals = vals[vals > 0]
+            if positive_vals.size:
+                w2_bound = band_factor**2 * positive_vals[0]
+                if vals[-1] < w2_bound:
+                    vals, vecs = _solve(h, stiff, n_modes=None, w2_max=w2_bound)
+        else:
+            vals, vecs = _solve(h, stiff, n_modes=n_modes, w2_max=w2_bound)
+        if band and vals.size and vals[0] > 0:
+            w2_bound = min(w2_bound, band_factor**2 * vals[0])
+        results[kk] = (h, vals, vecs)
+    rows = []
+    s_pts = None
+    for kk in sorted(results):
+        h, vals, vecs = results[kk]
+        if band:
+            keep = vals <= w2_bound
+            vals, vecs = vals[keep], vecs[:, keep]
+        if np.any(vals <= 0):
+            raise ValueError(f"prestress_F0 = {F0!r}: k = {kk} has a non-positive omega^2 "
+                             f"({vals.min():.4g} 1/s^2): the prestress exceeds a buckling load")
+        if vals.size == 0:
+            continue
+        share, seg, ordr, names, sh = _labels(mesh, h, vecs, kk, points_per_element)
+        rows.append((np.full(vals.size, kk), np.sqrt(vals), ordr, names, seg, share, sh))
+    xi = np.linspace(-1.0, 1.0, points_per_element)
+    t = 0.5 * (1 + xi)[None, :] * mesh.length[:, None]
+    s_pts = (mesh.s1[:, None] + t).ravel()
+    x_pts = (mesh.x1[:, None] + t * mesh.cos_phi[:, None]).ravel()
+    r_pts = (mesh.r1[:, None] + t * mesh.sin_phi[:, None]).ravel()
+    rigid = {kk: results[kk][0].n_rigid for kk in results if kk in (0, 1)}
+    if rows:
+        cat = [np.concatenate([row[i] for row in rows]) for i in range(7)]
+    else:
+        cat = [np.zeros(0, int), np.zeros(0), np.zeros(0, int), np.zeros(0, str),
+               np.zeros(0, int), np.zeros((0, 3)), np.zeros((0, 3, s_pts.size))]
+    omega = cat[1]
+    for arr in (omega, cat[5], cat[6]):
+        if not np.all(np.isfinite(arr)):
+            raise ValueError("vehicle_modes: non-finite result (mesh or input out of range)")
+    return VehicleModes(k=cat[0].astype(int), omega=omega, hz=omega / (2.0 * np.pi),
+                        order=cat[2].astype(int), type=cat[3].astype(str),
+                        segment=cat[4].astype(int), kinetic_share=cat[5], s=s_pts, x=x_pts,
+                        r=r_pts, shapes=cat[6], rigid_modes=rigid, prestress_F0=F0,
+                        theory=vehicle.theory, elements_per_segment=mesh.elements_per_segment,
+                        element_order=mesh.order, warnings=vehicle.warnings)
+
+
+def modal_system(
+    vehicle: Vehicle, k: int, n_modes: int, F0: float, *,
+    supported_forward_end: bool = False, elements_per_segment: int | tuple | None = None,
+    order: int = DEFAULT_ORDER,
+) -> ModalSystem:
+    """Modal M, K_e, K_g of harmonic k in the basis of its first n_modes unloaded modes.
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        The vehicle.
+    k : int
+        Circumferential wave number (dimensionless), 0..200.
+    n_modes : int
+        Number of unloaded elastic modes in the basis (dimensionless), 1..2000 (rigid-body
+        modes excluded).
+    F0 : float
+        Thrust (N) whose prestress K_g represents; the periodic problem is
+        q'' + (K_e + (T(t)/F0) K_g) q = 0.
+    supported_forward_end : bool
+        Uniform compression F0 reacted at the nose instead of inertia relief.
+    elements_per_segment, order : see :func:`~.assembly.mesh_vehicle`.
+
+    Returns
+    -------
+    ModalSystem
+
+    References
+    ----------
+    .. [1] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, 1964, sec. 8 (modal
+       reduction of parametrically loaded systems).
+    """
+    _, F0 = _check_common(vehicle, 0, F0)
+    k = integer("k", k, 0, K_MAX)
+    n_modes = integer("n_modes", n_modes, 1, 2000)
+    mesh = mesh_vehicle(vehicle, elements_per_segment=elements_per_segment, order=order)
+    h = _harmonic(vehicle, mesh, k, F0=F0, supported=supported_forward_end, geometric=True)
+    vals, vecs = _solve(h, h.K, n_modes=n_modes, w2_max=None)
+    if vals.size < n_modes:
+        raise ValueError(f"n_modes = {n_modes}: the mesh has only {vals.size} modes for k = {k}")
+    kg = vecs.T @ h.G @ vecs
+    return ModalSystem(k=k, omega=np.sqrt(np.maximum(vals, 0.0)), mass=vecs.T @ h.M @ vecs,
+                       stiffness=vecs.T @ h.K @ vecs, geometric=0.5 * (kg + kg.T), F0=F0)
+
+
+def buckling_load(
+    vehicle: Vehicle, k: int, *, F0: float = 1.0, n_modes: int = 1,
+    supported_forward_end: bool = False, elements_per_segment: int | tuple | None = None,
+    order: int = DEFAULT_ORDER, points_per_element: int = 9,
+) -> BucklingLoad:
+    """Linear buckling load factors of harmonic k: K_e x = -lambda K_g(F0) x.
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        The vehicle.
+    k : int
+        Circumferential wave number (dimensionless), 0..200.
+    F0 : float
+        Reference thrust (N), > 0.
+    n_modes : int
+        Number of load factors returned (dimensionless), 1..200.
+    supported_forward_end : bool
+        Uniform compression F0 reacted at the nose instead of inertia relief.
+    elements_per_segment, order : see :func:`~.assembly.mesh_vehicle`.
+    points_per_element : int
+        Shape samples per element (dimensionless), 2..50.
+
+    Returns
+    -------
+    BucklingLoad
+
+    Raises
+    ------
+    ValueError
+        If the harmonic has fewer than ``n_modes`` positive load factors.
+
+    References
+    ----------
+    .. [1] Brush & Almroth 1975, ch. 5 (classical linear buckling); Bathe 1996, ch. 6
+       (linearised buckling).
+    """
+    F0 = positive("F0", F0)
+    k = integer("k", k, 0, K_MAX)
+    n_modes = integer("n_modes", n_modes, 1, 200)
+    points_per_element = integer("points_per_element", points_per_element, 2, 50)
+    if not isinstance(vehicle, Vehicle):
+        raise ValueError(f"vehicle = {vehicle!r}: must be a Vehicle")
+    mesh = mesh_vehicle(vehicle, elements_per_segment=elements_per_segment, order=order)
+    h = _harmonic(vehicle, mesh, k, F0=F0, supported=supported_forward_end, geometric=True)
+    A = _project(h, -h.G)
+    B = _project(h, h.K)
+    n = A.shape[0]
+    # mu = 1/lambda; the largest mu give the smallest positive lambda
+    mu, vecs = sla.eigh(A, B, subset_by_index=(max(0, n - n_modes), n - 1), driver="gvx")
+    mu, vecs = mu[::-1], vecs[:, ::-1]
+    scale = np.abs(mu).max() if mu.size else 0.0
+    good = mu > 1e-12 * max(scale, 1e-300)
+    if np.count_nonzero(good) < n_modes:
+        raise ValueError(f"k = {k}: fewer than n_modes = {n_modes} positive load factors "
+                         "(the prestress does not compress this harmonic)")
+    if h.Q is not None:
+        vecs = h.Q @ vecs
+    lam = 1.0 / mu
+    xi = np.linspace(-1.0, 1.0, points_per_element)
+    sh = _sample(mesh, h.dmap, vecs, xi).reshape(vecs.shape[1], 3, -1)
+    peak = np.abs(sh).max(axis=(1, 2))
+    sh = sh / peak[:, None, None]
+    s_pts = (mesh.s1[:, None] + 0.5 * (1 + xi)[None, :] * mesh.length[:, None]).ravel()
+    return BucklingLoad(k=k, load_factor=lam, critical_thrust=lam * F0, s=s_pts, shapes=sh)
