@@ -11,7 +11,7 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["count", "finite", "nonnegative", "positive"]
+__all__ = ["choice", "count", "finite", "nonnegative", "positive"]
 
 
 def finite(name: str, value: Any) -> float:
@@ -108,3 +108,24 @@ def count(name: str, value: Any, low: int = 1, high: int | None = 500) -> int:
     if result < low or (high is not None and result > high):
         raise ValueError(f"{name} = {value!r}: {rule}")
     return result
+
+
+def choice(name: str, value: Any, options: tuple[str, ...]) -> str:
+    """``value`` if it is one of ``options``.
+
+    Parameters
+    ----------
+    name : str
+        Parameter name for the message.
+    value : str
+        The value to check.
+    options : tuple of str
+        The allowed values.
+
+    Returns
+    -------
+    str
+    """
+    if not isinstance(value, str) or value not in options:
+        raise ValueError(f"{name} = {value!r}: must be one of {options}")
+    return value

@@ -39,7 +39,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._checks import integer
+from ..checks import count
 from .elements import ReferenceElement, element_matrices, reference_element
 from .geometry import Cylinder, Vehicle
 from .prestress import axial_force, meridional_resultant
@@ -179,8 +179,8 @@ def mesh_vehicle(
     ----------
     .. [1] H. Kraus, *Thin Elastic Shells*, 1967, sec. 7.3 (edge-effect decay length).
     """
-    order = integer("order", order, 3, 12)
-    refinement = integer("refinement", refinement, 1, 64)
+    order = count("order", order, 3, 12)
+    refinement = count("refinement", refinement, 1, 64)
     ref = reference_element(order)
     segs = vehicle.segments
     nseg = len(segs)
@@ -193,7 +193,7 @@ def mesh_vehicle(
         if len(raw) != nseg:
             raise ValueError(f"elements_per_segment = {elements_per_segment!r}: need one "
                              f"value or {nseg}")
-        counts = tuple(integer("elements_per_segment", c, 1, MAX_ELEMENTS) for c in raw)
+        counts = tuple(count("elements_per_segment", c, 1, MAX_ELEMENTS) for c in raw)
         breaks = [np.linspace(0.0, lm, c + 1)
                   for c, lm in zip(counts, vehicle.meridian_lengths(), strict=True)]
     if refinement > 1:
@@ -529,7 +529,7 @@ def system_matrices(
     .. [1] Zienkiewicz & Taylor vol. 2, ch. 10; Brush & Almroth 1975 ch. 5 (Sanders'
        moderate-rotation strains: K_g).
     """
-    k = integer("k", k, 0, 200)
+    k = count("k", k, 0, 200)
     F0 = float(prestress_F0)
     if not np.isfinite(F0):
         raise ValueError(f"prestress_F0 = {prestress_F0!r}: must be finite")

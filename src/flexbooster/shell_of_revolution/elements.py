@@ -169,7 +169,17 @@ def reference_element(order: int) -> ReferenceElement:
 
 
 def theta_weight(k: int) -> float:
-    """Integral over theta of cos^2 k theta (pi for k >= 1, 2 pi for k = 0; dimensionless)."""
+    """Integral over theta of cos^2 k theta (pi for k >= 1, 2 pi for k = 0; dimensionless).
+
+    Parameters
+    ----------
+    k : int
+        Circumferential harmonic (>= 0).
+
+    Returns
+    -------
+    float
+    """
     return 2.0 * np.pi if k == 0 else np.pi
 
 

@@ -22,7 +22,7 @@ from dataclasses import KW_ONLY, dataclass, field
 
 import numpy as np
 
-from ._checks import choice, nonnegative, positive
+from ..checks import choice, nonnegative, positive
 
 __all__ = [
     "END_CONDITIONS",

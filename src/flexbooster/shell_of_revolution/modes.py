@@ -27,7 +27,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import scipy.linalg as sla
 
-from ._checks import finite, integer, positive
+from ..checks import count, finite, positive
 from .assembly import (
     DEFAULT_ORDER,
     Mesh,
@@ -386,7 +386,7 @@ def _labels(mesh: Mesh, h: _Harmonic, vecs: np.ndarray, k: int, n_pts_per_el: in
 def _check_common(vehicle, k_max, prestress_F0):
     if not isinstance(vehicle, Vehicle):
         raise ValueError(f"vehicle = {vehicle!r}: must be a Vehicle")
-    k_max = integer("k_max", k_max, 0, K_MAX)
+    k_max = count("k_max", k_max, 0, K_MAX)
     return k_max, finite("prestress_F0", prestress_F0)
 
 
@@ -444,15 +444,15 @@ def vehicle_modes(
     .. [1] Bathe 1996 sec. 10.2; Zienkiewicz & Taylor vol. 2 ch. 10 (see the package docs).
     """
     k_max, F0 = _check_common(vehicle, k_max, prestress_F0)
-    k_min = integer("k_min", k_min, 0, k_max)
+    k_min = count("k_min", k_min, 0, k_max)
     if f_max is not None:
         f_max = positive("f_max", f_max)
     if n_modes is not None:
-        n_modes = integer("n_modes", n_modes, 1, 2000)
+        n_modes = count("n_modes", n_modes, 1, 2000)
     band_factor = finite("band_factor", band_factor)
     if band_factor < 1.0:
         raise ValueError(f"band_factor = {band_factor!r}: must be >= 1")
-    points_per_element = integer("points_per_element", points_per_element, 2, 50)
+    points_per_element = count("points_per_element", points_per_element, 2, 50)
     opts = dict(k_min=k_min, k_max=k_max, f_max=f_max, n_modes=n_modes, band_factor=band_factor,
                 F0=F0, supported=supported_forward_end, points_per_element=points_per_element)
     if tolerance is None:
@@ -584,8 +584,8 @@ def modal_system(
        reduction of parametrically loaded systems).
     """
     _, F0 = _check_common(vehicle, 0, F0)
-    k = integer("k", k, 0, K_MAX)
-    n_modes = integer("n_modes", n_modes, 1, 2000)
+    k = count("k", k, 0, K_MAX)
+    n_modes = count("n_modes", n_modes, 1, 2000)
     mesh = mesh_vehicle(vehicle, elements_per_segment=elements_per_segment, order=order)
     h = _harmonic(vehicle, mesh, k, F0=F0, supported=supported_forward_end, geometric=True)
     vals, vecs = _solve(h, h.K, n_modes=n_modes, w2_max=None)
@@ -634,9 +634,9 @@ def buckling_load(
        (linearised buckling).
     """
     F0 = positive("F0", F0)
-    k = integer("k", k, 0, K_MAX)
-    n_modes = integer("n_modes", n_modes, 1, 200)
-    points_per_element = integer("points_per_element", points_per_element, 2, 50)
+    k = count("k", k, 0, K_MAX)
+    n_modes = count("n_modes", n_modes, 1, 200)
+    points_per_element = count("points_per_element", points_per_element, 2, 50)
     if not isinstance(vehicle, Vehicle):
         raise ValueError(f"vehicle = {vehicle!r}: must be a Vehicle")
     mesh = mesh_vehicle(vehicle, elements_per_segment=elements_per_segment, order=order)
