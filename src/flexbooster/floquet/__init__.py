@@ -1,13 +1,13 @@
 """Numerics of linear periodic systems M q'' + C q' + (A + B cos Omega t) q = 0.
 
-Floquet multipliers and growth rates (:mod:`.monodromy`), Hill's method and the harmonic
+Floquet multipliers and growth rates (:mod:`.multipliers`), Hill's method and the harmonic
 balance of the periodic boundaries (:mod:`.hill`), and the instability regions in Omega with
 their amplitude dependence (:mod:`.regions`).  Numerical core: numpy and scipy only.  Theory:
 ``docs/theory/floquet.md``.
 """
 
 from .hill import hill_exponents, periodic_boundaries
-from .monodromy import (
+from .multipliers import (
     LinearPeriodicSystem,
     floquet_exponents,
     floquet_multipliers,

@@ -19,7 +19,7 @@ from __future__ import annotations
 import numpy as np
 import scipy.linalg
 
-from .monodromy import LinearPeriodicSystem, _omega, periodic_system
+from .multipliers import LinearPeriodicSystem, _omega, periodic_system
 
 __all__ = ["hill_exponents", "periodic_boundaries"]
 
@@ -51,7 +51,7 @@ def hill_exponents(M, C, A, B, Omega, *, n_harmonics: int = 8, chunk: int = 8) -
     Parameters
     ----------
     M, C, A, B : array_like
-        The system (see :func:`flexbooster.floquet.monodromy.periodic_system`).
+        The system (see :func:`flexbooster.floquet.multipliers.periodic_system`).
     Omega : array_like
         Pulsation frequencies, shape (P,) (rad per time unit of the matrices), > 0.
     n_harmonics : int
@@ -141,7 +141,7 @@ def periodic_boundaries(M, C, A, B, *, period: str = "2T", n_harmonics: int = 8,
     Parameters
     ----------
     M, C, A, B : array_like
-        The system (see :func:`flexbooster.floquet.monodromy.periodic_system`).
+        The system (see :func:`flexbooster.floquet.multipliers.periodic_system`).
     period : {"2T", "T"}
         Period of the boundary solutions.
     n_harmonics : int

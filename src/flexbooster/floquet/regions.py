@@ -10,7 +10,7 @@ frequencies (eigenvalues of M^-1 A), regions can only grow out of
 
 j = 1, 2, ...  Without damping the system is time-reversible and the half-period map gives
 the n values s = rho + 1/rho (eigenvalues of a real n x n matrix, see
-:mod:`.monodromy`).  At gamma -> 0, s_i = 2 cos(2 pi omega_i / Omega).  Each candidate has a
+:mod:`.multipliers`).  At gamma -> 0, s_i = 2 cos(2 pi omega_i / Omega).  Each candidate has a
 smooth local indicator F(Omega), positive exactly inside its region:
 
 * simple, order j:  F = (-1)^j Re s - 2 for the s nearest to 2 (-1)^j  (|s| > 2: real
@@ -42,7 +42,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.optimize
 
-from .monodromy import (
+from .multipliers import (
     _MAX_STEPS,
     LinearPeriodicSystem,
     _full_maps,
@@ -190,17 +190,24 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
     right = np.concatenate([d, [np.inf]])
     gap = np.empty(total)
     gap[order] = np.minimum(left, right)
-    # width estimates: first order (Bolotin sec. 3 for simple, Hsu 1963 for combinations),
-    # zeta^j Omega_c for higher orders, zeta = max |Bt_ab| / (w_a w_b)
+    # width estimates: first order (Bolotin sec. 3 for simple, Hsu 1963 for combinations);
+    # order j: a product of j couplings along a path i -> ... -> k, bounded by
+    # Omega_c zeta_i zeta_k zeta^(j-2) with zeta_ab = |Bt_ab| / (w~_a w~_b), w~ = max(w, lo/2)
+    # (small denominators through slow modes are kept), zeta_i = max_b zeta_ib
     wt = np.maximum(w, 0.5 * lo)
-    zeta = float(np.max(np.abs(Bt) / np.outer(wt, wt)))
-    est = centre * zeta ** j.astype(float)
+    Z = np.abs(Bt) / np.outer(wt, wt)
+    zeta = float(np.max(Z))
+    zrow = np.max(np.maximum(Z, Z.T), axis=1)
+    jf = j.astype(float)
+    est = centre * zrow[i] * zrow[k] * zeta ** np.maximum(jf - 2.0, 0.0)
     first = np.where(kind == 0, np.abs(Bt[i, i]) / w[i],
                      np.sqrt(np.abs(Bt[i, k] * Bt[k, i]) / (w[i] * w[k])))
-    est = np.where(j == 1, np.maximum(first, centre * zeta**2), est)
+    est = np.where(j == 1, np.maximum(first, est), est)
+    # regions narrower than the round-off floor of the indicators cannot be told from zero
+    floor = np.maximum(opt.rtol, 2.0 * np.sqrt(_F_FLOOR) / (np.pi * jf))
     keep = (centre >= lo * (1.0 - 1e-9)) & (centre <= hi * (1.0 + 1e-9))
     keep |= (centre + 2.0 * est >= lo) & (centre - 2.0 * est <= hi)
-    keep &= est >= 1e-3 * opt.rtol * centre
+    keep &= est >= 1e-2 * floor * centre
     if opt.max_order is not None:
         keep &= j <= opt.max_order
     return {"kind": kind[keep], "i": i[keep], "k": k[keep], "j": j[keep],
@@ -221,18 +228,43 @@ def _indicator(system, w, cand, om, opt) -> np.ndarray:
     P = om.size
     rows = np.arange(P)
     sig = np.where(cand["j"] % 2 == 0, 1.0, -1.0)
-    # simple: the s nearest to 2 (-1)^j (rho = +-1 boundaries, Bolotin sec. 3)
-    near = np.argmin(np.abs(s - 2.0 * sig[:, None]), axis=1)
-    f_simple = sig * s[rows, near].real - 2.0
-    # combination: two s nearest to the predicted crossing value (cos a + cos b)
-    c = (np.cos(2.0 * np.pi * w[cand["i"]] / om) + np.cos(2.0 * np.pi * w[cand["k"]] / om))
+    # the s of each mode is tracked from its gamma -> 0 value 2 cos(2 pi omega / Omega)
+    p_i = 2.0 * np.cos(2.0 * np.pi * w[cand["i"]] / om)
+    p_k = 2.0 * np.cos(2.0 * np.pi * w[cand["k"]] / om)
+    d_i = np.abs(s - p_i[:, None])
+    first = np.argmin(d_i, axis=1)
+    # simple: F = (-1)^j Re s_i - 2 > 0 where s_i is real beyond +-2 (rho = +-1 at F = 0);
+    # a complex s_i belongs to a combination pair: F <= -|Im s_i| there (continuous)
+    s_i = s[rows, first]
+    f_simple = sig * s_i.real - 2.0
+    f_simple = np.where(s_i.imag == 0.0, f_simple, np.minimum(f_simple, -np.abs(s_i.imag)))
     if s.shape[1] >= 2:
-        two = np.argsort(np.abs(s - c[:, None]), axis=1)[:, :2]
-        e1, e2 = s[rows, two[:, 0]], s[rows, two[:, 1]]
-        f_comb = -((e1 - e2) ** 2).real  # > 0: s_a, s_b complex, the pair left |rho| = 1
+        # combination: the s nearest to each prediction; F = -Re (s_a - s_b)^2 > 0 where the
+        # pair is complex (left |rho| = 1), 0 where it collides on |rho| = 1
+        d_k = np.abs(s - p_k[:, None])
+        d_k[rows, first] = np.inf
+        second = np.argmin(d_k, axis=1)
+        f_comb = -((s[rows, first] - s[rows, second]) ** 2).real
     else:
         f_comb = np.full(P, -1.0)
     return np.where(cand["kind"] == 0, f_simple, f_comb)
+
+
+def _unstable_indicator(system, om, opt) -> np.ndarray:
+    """U > 0 exactly where the undamped system is unstable; U = 0 on |rho|_max = 1.
+
+    U = max(max_a |Re s_a| - 2, max_{a<b} -Re (s_a - s_b)^2) - floor: positive when some s is
+    real outside [-2, 2] (multipliers rho != +-1 real) or a pair is complex (multipliers off
+    the unit circle); continuous in Omega and crossing 0 linearly at both kinds of boundary.
+    The floor discounts round-off (a nearly double real s may come out complex, Im ~ 1e-8).
+    """
+    s = _s_values(system, om, opt)
+    u = np.max(np.abs(s.real) - 2.0, axis=1)
+    n = s.shape[1]
+    if n >= 2:
+        a, b = np.triu_indices(n, 1)
+        u = np.maximum(u, np.max(-((s[:, a] - s[:, b]) ** 2).real, axis=1))
+    return u - _F_FLOOR
 
 
 def _growth_undamped(system, om, opt) -> np.ndarray:
@@ -283,6 +315,69 @@ def _golden_max(f, a: np.ndarray, b: np.ndarray, xtol: np.ndarray, max_iter: int
     return np.where(best, x1, x2), np.where(best, f1, f2)
 
 
+def _brent_max(f, a: np.ndarray, b: np.ndarray, x0: np.ndarray, xtol: np.ndarray,
+               max_iter: int = 200, stop_positive: bool = False) -> tuple[np.ndarray, np.ndarray]:
+    """Maximise f on [a, b] from x0: Brent's golden section + parabolic steps, vectorised.
+
+    f(x, idx) evaluates the points idx only.  Parabolic steps converge superlinearly on the
+    smooth indicators (they are nearly quadratic near a candidate), golden steps guarantee
+    convergence.  With ``stop_positive`` a point stops as soon as f > floor somewhere.
+    (Brent 1973, ch. 5, procedure localmin, for -f.)
+    """
+    cgold = 0.5 * (3.0 - np.sqrt(5.0))
+    a, b = a.copy(), b.copy()
+    x = np.clip(x0, a, b)
+    fx = -f(x, np.arange(x.size))
+    w, v, fw, fv = x.copy(), x.copy(), fx.copy(), fx.copy()
+    d = np.zeros(x.size)
+    e = np.zeros(x.size)
+    done = np.zeros(x.size, dtype=bool)
+    for _ in range(max_iter):
+        xm = 0.5 * (a + b)
+        tol1 = 1.5e-8 * np.abs(x) + xtol / 3.0
+        tol2 = 2.0 * tol1
+        done |= np.abs(x - xm) <= tol2 - 0.5 * (b - a)
+        if stop_positive:
+            done |= -fx > _F_FLOOR
+        act = np.nonzero(~done)[0]
+        if act.size == 0:
+            return x, -fx
+        X, W, V, FX, FW, FV = x[act], w[act], v[act], fx[act], fw[act], fv[act]
+        A_, B_, D, E, T1, T2, XM = a[act], b[act], d[act], e[act], tol1[act], tol2[act], xm[act]
+        r = (X - W) * (FX - FV)
+        q = (X - V) * (FX - FW)
+        p = (X - V) * q - (X - W) * r
+        q = 2.0 * (q - r)
+        p = np.where(q > 0.0, -p, p)
+        q = np.abs(q)
+        try_par = np.abs(E) > T1
+        with np.errstate(divide="ignore", invalid="ignore"):
+            par = try_par & (np.abs(p) < np.abs(0.5 * q * E)) & (p > q * (A_ - X)) & (
+                p < q * (B_ - X))
+            dpar = np.where(par, p / np.where(q == 0.0, 1.0, q), 0.0)
+        upar = X + dpar
+        near_end = ((upar - A_) < T2) | ((B_ - upar) < T2)
+        dpar = np.where(near_end, np.where(XM - X >= 0.0, T1, -T1), dpar)
+        egold = np.where(X >= XM, A_ - X, B_ - X)
+        E_new = np.where(par, D, egold)  # e <- d (parabolic) or the golden interval
+        D_new = np.where(par, dpar, cgold * egold)
+        U = X + np.where(np.abs(D_new) >= T1, D_new, np.where(D_new >= 0.0, T1, -T1))
+        FU = -f(U, act)
+        better = FU <= FX
+        a[act] = np.where(better, np.where(U >= X, X, A_), np.where(U < X, U, A_))
+        b[act] = np.where(better, np.where(U >= X, B_, X), np.where(U < X, B_, U))
+        c1 = ~better & ((FU <= FW) | (W == X))
+        c2 = ~better & ~c1 & ((FU <= FV) | (V == X) | (V == W))
+        v[act] = np.where(better | c1, W, np.where(c2, U, V))
+        fv[act] = np.where(better | c1, FW, np.where(c2, FU, FV))
+        w[act] = np.where(better, X, np.where(c1, U, W))
+        fw[act] = np.where(better, FX, np.where(c1, FU, FW))
+        x[act] = np.where(better, U, X)
+        fx[act] = np.where(better, FU, FX)
+        d[act], e[act] = D_new, E_new
+    raise ValueError(f"maximiser: no convergence in {max_iter} iterations")
+
+
 def _illinois(f, x_in: np.ndarray, f_in: np.ndarray, x_out: np.ndarray, f_out: np.ndarray,
               xtol: np.ndarray, max_iter: int = 200) -> np.ndarray:
     """Root of f between x_in (f > 0) and x_out (f <= 0), Illinois regula falsi, vectorised.
@@ -315,7 +410,7 @@ def _illinois(f, x_in: np.ndarray, f_in: np.ndarray, x_out: np.ndarray, f_out: n
     raise ValueError(f"boundary refinement: no convergence in {max_iter} iterations")
 
 
-def _expand(f, x0: np.ndarray, d0: np.ndarray, direction: float, limit: np.ndarray,
+def _expand(f, x0: np.ndarray, d0: np.ndarray, direction, limit: np.ndarray,
             max_iter: int = 80) -> tuple[np.ndarray, ...]:
     """March from x0 (f > 0) by d0 * 3^m until f <= 0 or the range end; vectorised.
 
@@ -346,6 +441,57 @@ def _expand(f, x0: np.ndarray, d0: np.ndarray, direction: float, limit: np.ndarr
         open_[hit] = False
         d = d * 3.0
     raise ValueError(f"boundary bracketing: no sign change in {max_iter} expansions")
+
+
+def _edges(f, x0: np.ndarray, f0: np.ndarray, d0: np.ndarray, direction,
+           limit: np.ndarray, xtol: np.ndarray, scale: np.ndarray,
+           max_rounds: int = 6) -> tuple[np.ndarray, np.ndarray]:
+    """First boundary from x0 (f(x0) > 0) in ``direction``: bracket, refine, then check.
+
+    The outward march takes growing steps and could jump over a stable gap between two
+    adjacent regions; so points between x0 and the refined root are evaluated (8, or 64 when
+    the distance exceeds 4 ``scale``, the expected half-width) and, if one of them has f <= 0,
+    the root is searched again between it and its inner neighbour (up to ``max_rounds``
+    times).  Gaps narrower than the check spacing can still be missed (the region is then
+    reported too wide, never lost).  Returns (root, clipped).
+    """
+    xi, fi, xo, fo, clip = _expand(f, x0, d0, direction, limit)
+    fi = np.where(np.isinf(fi), f0, fi)
+    root = np.where(clip, limit, xo)
+
+    def refine(idx, a, fa, b, fb):
+        return _illinois(lambda x, act: f(x, idx[act]), a, fa, b, fb, xtol[idx])
+
+    idx = np.nonzero(~clip)[0]
+    if idx.size:
+        root[idx] = refine(idx, xi[idx], fi[idx], xo[idx], fo[idx])
+    for _ in range(max_rounds):
+        redo_all = []
+        for n_check, sel in ((8, np.abs(root - x0) <= 4.0 * scale),
+                             (64, np.abs(root - x0) > 4.0 * scale)):
+            ids = np.nonzero(sel)[0]
+            if ids.size == 0:
+                continue
+            frac = np.arange(1, n_check + 1) / (n_check + 1.0)
+            pts = x0[ids, None] + (root - x0)[ids, None] * frac[None, :]
+            fp = f(pts.ravel(), np.repeat(ids, n_check)).reshape(pts.shape)
+            gap = fp <= 0.0
+            bad = np.nonzero(np.any(gap, axis=1))[0]
+            if bad.size == 0:
+                continue
+            first = np.argmax(gap[bad], axis=1)
+            prev = np.maximum(first - 1, 0)
+            b = pts[bad, first]
+            fb = fp[bad, first]
+            a = np.where(first > 0, pts[bad, prev], x0[ids[bad]])
+            fa = np.where(first > 0, fp[bad, prev], f0[ids[bad]])
+            redo_all.append((ids[bad], a, fa, b, fb))
+        if not redo_all:
+            return root, clip
+        for redo, a, fa, b, fb in redo_all:
+            root[redo] = refine(redo, a, fa, b, fb)
+            clip[redo] = False
+    return root, clip
 
 
 # --------------------------------------------------------------------------------------------
@@ -379,10 +525,7 @@ def _undamped_search(system, w, cand, lo, hi, opt) -> list[dict]:
     delta = np.maximum(0.45 * cand["gap"], np.minimum(2.0 * cand["est"], 0.2 * Oc / cand["j"]))
     a = np.maximum(Oc - delta, 0.5 * Oc)
     b = Oc + delta
-    xs, fs = _golden_max(F, a, b, np.maximum(10.0 * xtol, 1e-15 * Oc), stop_positive=True)
-    fc = F(Oc)
-    use_c = fc > fs
-    xs, fs = np.where(use_c, Oc, xs), np.where(use_c, fc, fs)
+    xs, fs = _brent_max(F, a, b, Oc, np.maximum(10.0 * xtol, 1e-15 * Oc), stop_positive=True)
     hit = np.nonzero(fs > _F_FLOOR)[0]
     if hit.size == 0:
         return []
@@ -391,24 +534,35 @@ def _undamped_search(system, w, cand, lo, hi, opt) -> list[dict]:
     f0 = fs[hit]
     d0 = np.maximum(np.minimum(sub["est"], delta[hit]) / 4.0, 4.0 * xtol[hit])
 
-    def Fi(x, idx):
+    def Fo(x, idx):  # this candidate's own pair indicator
         return _indicator(system, w, {key: v[idx] for key, v in sub.items()}, x, opt)
 
+    def U(x, idx):  # the whole system: unstable where > 0
+        return _unstable_indicator(system, x, opt)
+
+    scale = np.maximum(sub["est"], 4.0 * xtol[hit])
     out = []
-    bounds = []
-    for direction, limit in ((-1.0, np.full(hit.size, lo)), (1.0, np.full(hit.size, hi))):
-        xi, fi, xo, fo, clip = _expand(Fi, x0, d0, direction, limit)
-        fi = np.where(np.isinf(fi), f0, fi)
-        xi = np.where(np.isinf(fi), x0, xi)
-        open_ = ~clip
-        root = np.where(clip, limit, xo)
-        if open_.any():
-            idx = np.nonzero(open_)[0]
-            root[idx] = _illinois(lambda x, act, idx=idx: Fi(x, idx[act]), xi[idx], fi[idx],
-                                  xo[idx],
-                                  fo[idx], xtol[hit][idx])
-        bounds.append((root, clip))
-    (olo, clo), (ohi, chi) = bounds
+    # both edges in one batch: entries 0..P-1 go down, P..2P-1 go up
+    P = hit.size
+    direction = np.concatenate([-np.ones(P), np.ones(P)])
+    limit = np.concatenate([np.full(P, lo), np.full(P, hi)])
+    X0, F0, D0 = (np.concatenate([v, v]) for v in (x0, f0, d0))
+    XT, SC = np.concatenate([xtol[hit], xtol[hit]]), np.concatenate([scale, scale])
+    # stage 1: where this candidate's pair returns to |rho| = 1
+    edge, clip = _edges(lambda x, idx: Fo(x, idx % P), X0, F0, D0, direction, limit, XT, SC)
+    # stage 2: if the system is still unstable just beyond (an overlapping region), go on to
+    # the first Omega where it is stable: the boundary is |rho|_max = 1
+    beyond = edge + direction * 4.0 * XT
+    go = np.nonzero(~clip & (direction * (limit - beyond) > 0.0))[0]
+    if go.size:
+        u = U(beyond[go], None)
+        go, u = go[u > 0.0], u[u > 0.0]
+    if go.size:
+        e2, c2 = _edges(lambda x, idx: U(x, None), beyond[go], u,
+                        np.maximum(D0[go], 4.0 * XT[go]), direction[go], limit[go], XT[go],
+                        SC[go])
+        edge[go], clip[go] = e2, c2
+    olo, ohi, clo, chi = edge[:P], edge[P:], clip[:P], clip[P:]
     olo, ohi = np.maximum(olo, lo), np.minimum(ohi, hi)
     for m in range(hit.size):
         if ohi[m] - olo[m] <= xtol[hit][m] or ohi[m] <= lo or olo[m] >= hi:
@@ -447,17 +601,12 @@ def _damped_search(system, undamped, opt) -> list[dict]:
     d0 = np.maximum(width[hit] / 16.0, 4.0 * xtol[hit])
     lo_lim = np.array([undamped[m]["lo"] for m in hit]) - 4.0 * width[hit]
     hi_lim = np.array([undamped[m]["hi"] for m in hit]) + 4.0 * width[hit]
-    bounds = []
-    for direction, limit in ((-1.0, lo_lim), (1.0, hi_lim)):
-        xi, fi, xo, fo, clip = _expand(lambda x, idx: G(x), x0, d0, direction, limit)
-        fi = np.where(np.isinf(fi), g0, fi)
-        xi = np.where(np.isinf(fi), x0, xi)
-        root = np.where(clip, limit, xo)
-        idx = np.nonzero(~clip)[0]
-        if idx.size:
-            root[idx] = _illinois(G, xi[idx], fi[idx], xo[idx], fo[idx],
-                                  xtol[hit][idx])
-        bounds.append(root)
+    P = hit.size
+    edge = _edges(lambda x, idx: G(x), np.concatenate([x0, x0]), np.concatenate([g0, g0]),
+                  np.concatenate([d0, d0]), np.concatenate([-np.ones(P), np.ones(P)]),
+                  np.concatenate([lo_lim, hi_lim]), np.concatenate([xtol[hit], xtol[hit]]),
+                  np.concatenate([0.5 * width[hit], 0.5 * width[hit]]))[0]
+    bounds = (edge[:P], edge[P:])
     for m_, m in enumerate(hit):
         r = dict(undamped[m])
         r["lo"], r["hi"] = float(bounds[0][m_]), float(bounds[1][m_])
@@ -468,7 +617,12 @@ def _damped_search(system, undamped, opt) -> list[dict]:
 def _finish(system, regions, lo, hi, opt, damped) -> tuple[InstabilityRegion, ...]:
     """Clip to the range, drop duplicates, maximise the growth rate inside each region."""
     regs = []
-    for r in sorted(regions, key=lambda r: (r["lo"], r["j"], r["kind"])):
+    quantum = 100.0 * opt.rtol * hi
+
+    def order(r):  # by the lower edge (to the tolerance), then the lowest order first
+        return (round(r["lo"] / quantum), r["j"], r["kind"])
+
+    for r in sorted(regions, key=order):
         r = dict(r)
         if r["lo"] < lo:
             r["lo"], r["clipped"] = lo, True
@@ -489,7 +643,14 @@ def _finish(system, regions, lo, hi, opt, damped) -> tuple[InstabilityRegion, ..
     def G(x, idx=None):
         return grow(system, x, opt)
 
-    xm, gm = _golden_max(G, a, b, np.maximum(1e-4 * (b - a), 1e-15 * b))
+    nsamp = 9  # a region may be a union of overlapping ones: sample, then golden section
+    grid = a[:, None] + (b - a)[:, None] * np.linspace(0.0, 1.0, nsamp)[None, :]
+    gg = G(grid.ravel()).reshape(grid.shape)
+    best = np.argmax(gg, axis=1)
+    rows = np.arange(a.size)
+    a2 = grid[rows, np.maximum(best - 1, 0)]
+    b2 = grid[rows, np.minimum(best + 1, nsamp - 1)]
+    xm, gm = _brent_max(G, a2, b2, grid[rows, best], np.maximum(1e-4 * (b2 - a2), 1e-15 * b2))
     out = []
     for m, r in enumerate(regs):
         modes = (r["i"],) if r["kind"] == 0 else (r["i"], r["k"])
@@ -545,7 +706,7 @@ def instability_regions(M, C, A, B, omega_min: float, omega_max: float, *,
         that are not reported.
     step_phase, max_steps, chunk
         Monodromy accuracy, cap and batch size (see
-        :func:`flexbooster.floquet.monodromy.monodromy`).
+        :func:`flexbooster.floquet.multipliers.monodromy`).
     max_order : int, optional
         Largest order j examined (default: every order whose estimated width, Omega_c zeta^j
         with zeta the largest modal coupling |Bt_ab| / (omega_a omega_b), exceeds 1e-3 rtol

@@ -276,9 +276,11 @@ def _half_modal(system: LinearPeriodicSystem, om: np.ndarray, n_steps: int) -> n
     c2, s2, _ = (e.T[:, :, None] for e in _rotation(mu[None, :], 0.5 * h[:, None]))  # E(h/2)
     hh = h[None, :, None]
 
-    def force(t, x):  # eta'' = -mu eta - cos(Omega t) Bt eta: velocity slope of the coupling
-        coef = (-np.cos(om * t))[None, :, None]
-        return coef * (Bt @ x.reshape(n, -1)).reshape(x.shape)
+    # -cos(Omega t) at t = k h, (k + 1/2) h for k = 0..2 n_steps (the stage times)
+    ncos = -np.cos(om[None, :] * (0.5 * h[None, :]) * np.arange(2 * n_steps + 1)[:, None])
+
+    def force(m, x):  # eta'' = -mu eta - cos(Omega t) Bt eta at t = m h / 2
+        return ncos[m][None, :, None] * (Bt @ x.reshape(n, -1)).reshape(x.shape)
 
     dtype = complex if not real else float
     x = np.zeros((n, P, 2 * n), dtype=dtype)
@@ -287,13 +289,12 @@ def _half_modal(system: LinearPeriodicSystem, om: np.ndarray, n_steps: int) -> n
     x[idx, :, idx] = 1.0
     v[idx, :, n + idx] = 1.0
     for k in range(n_steps):  # Lawson (1967) integrating-factor RK4
-        t0 = k * h
-        a1 = force(t0, x)  # k1 = N(t) z
-        a2 = force(t0 + 0.5 * h, c2 * x + s2 * (v + 0.5 * hh * a1))  # N E(h/2)(z + h/2 k1)
-        a3 = force(t0 + 0.5 * h, c2 * x + s2 * v)  # N [E(h/2) z + h/2 k2] (position part)
+        a1 = force(2 * k, x)  # k1 = N(t) z
+        a2 = force(2 * k + 1, c2 * x + s2 * (v + 0.5 * hh * a1))  # N E(h/2)(z + h/2 k1)
+        a3 = force(2 * k + 1, c2 * x + s2 * v)  # N [E(h/2) z + h/2 k2] (position part)
         xf = c1 * x + s1 * v  # E(h) z
         vf = m1 * x + c1 * v
-        a4 = force(t0 + h, xf + hh * s2 * a3)  # N [E(h) z + h E(h/2) k3]
+        a4 = force(2 * k + 2, xf + hh * s2 * a3)  # N [E(h) z + h E(h/2) k3]
         a23 = 2.0 * (a2 + a3)
         # z_new = E(h) z + h/6 [E(h) k1 + 2 E(h/2)(k2 + k3) + k4]   (Lawson 1967)
         x = xf + hh / 6.0 * (s1 * a1 + s2 * a23)
@@ -392,6 +393,8 @@ def _s_values_from_half(Phi: np.ndarray) -> np.ndarray:
     """
     n = Phi.shape[-1] // 2
     R = _reflection(n)
+    if np.iscomplexobj(Phi) and not np.any(Phi.imag):
+        Phi = Phi.real  # real eigenvalues come out exactly real (s of a real system)
     U = np.linalg.solve(np.swapaxes(Phi, -1, -2), np.swapaxes(Phi * R, -1, -2))
     U = np.swapaxes(U, -1, -2)  # U = (Phi R) Phi^-1
     return np.linalg.eigvals(2.0 * U[:, :n, :n])
