@@ -10,19 +10,23 @@ frequencies (eigenvalues of M^-1 A), regions can only grow out of
 
 j = 1, 2, ...  Without damping the system is time-reversible and the half-period map gives
 the n values s = rho + 1/rho (eigenvalues of a real n x n matrix, see
-:mod:`.multipliers`).  At gamma -> 0, s_i = 2 cos(2 pi omega_i / Omega).  Each candidate has a
-smooth local indicator F(Omega), positive exactly inside its region:
+:mod:`.multipliers`).  At gamma -> 0, s_i = 2 cos(2 pi omega_i / Omega), and each mode's s is
+tracked from that value.  Each candidate has a smooth local indicator F(Omega), positive
+exactly where its multipliers are off the unit circle:
 
-* simple, order j:  F = (-1)^j Re s - 2 for the s nearest to 2 (-1)^j  (|s| > 2: real
-  multipliers rho != +-1; F = 0 is rho = +-1, the T- or 2T-periodic boundary);
-* combination:      F = -Re (s_a - s_b)^2 for the two s nearest to the predicted crossing value
-  (F > 0: s_a, s_b complex conjugate, |rho| != 1; F = 0: the pair collides on |rho| = 1).
+* simple, order j:  F = (-1)^j s_i - 2 (s_i real; F <= -|Im s_i| when s_i is in a complex
+  pair); F = 0 is rho = +-1, the T- or 2T-periodic boundary;
+* combination:      F = -Re (s_i - s_k)^2 (F > 0: s_i, s_k complex conjugate, |rho| != 1;
+  F = 0: the pair collides on |rho| = 1).
 
-F is maximised near the candidate (vectorised golden section over all candidates at once, in a
-window that holds no other candidate), and where the maximum is positive both boundaries are
-bracketed outward and refined on F = 0 (vectorised Illinois regula falsi) to the stated
-tolerance.  With damping, the undamped regions seed the search of max log|rho| > 0 from the
-full-period monodromy (see ``docs/theory/floquet.md`` for the assumptions).
+F is maximised near the candidate (vectorised Brent maximiser over all candidates at once, in
+a window that holds no other candidate), and where the maximum is above the round-off floor
+both boundaries are bracketed outward and refined on F = 0 (vectorised Illinois regula falsi)
+to the stated tolerance; if the system is still unstable beyond (an overlapping region) the
+march goes on with the whole-system indicator to the first Omega where |rho|_max = 1, so
+overlapping regions are reported as their union.  With damping, the undamped regions seed the
+search of max log|rho| > 0 from the full-period monodromy (see ``docs/theory/floquet.md`` for
+the assumptions and limits).
 
 References
 ----------
@@ -717,9 +721,13 @@ def instability_regions(M, C, A, B, omega_min: float, omega_max: float, *,
     Returns
     -------
     tuple of InstabilityRegion
-        Sorted by omega_lo.  If the steady system (B = 0) is itself unstable (complex or
-        non-positive eigenvalues of M^-1 A, or a damped steady system with a growing mode) the
-        result is one region of kind "steady" over the whole range.
+        Sorted by omega_lo; every edge is a point of |rho|_max = 1 (or an end of the range,
+        ``clipped``); overlapping regions come as their union, labelled by the lowest-order
+        candidate that reached it.  Regions narrower than about 6e-8 / j of their centre are
+        below the round-off floor of the indicators and not reported.  If the steady system
+        (B = 0) is itself unstable (complex or non-positive eigenvalues of M^-1 A, or a damped
+        steady system with a growing mode) the result is one region of kind "steady" over the
+        whole range.
 
     Raises
     ------
