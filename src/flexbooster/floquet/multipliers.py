@@ -225,7 +225,7 @@ def step_counts(system: LinearPeriodicSystem, Omega, *, step_phase: float = 0.06
     Returns
     -------
     numpy.ndarray
-        Integer step counts, shape (P,), rounded up to powers of 2 so points batch in few
+        Integer step counts, shape (P,), rounded up to 2^(k/2) so points batch in few
         groups.
 
     Raises
@@ -246,7 +246,7 @@ def step_counts(system: LinearPeriodicSystem, Omega, *, step_phase: float = 0.06
     g = G[None] / np.maximum(w[None, :, None], 0.5 * om[:, None, None])
     rate = np.max(nu**0.75 * g**0.25, axis=(1, 2))
     steps = np.maximum(8.0, np.ceil(interval * rate / step_phase))
-    steps = 2.0 ** np.ceil(np.log2(steps))  # powers of 2: few batches of equal count
+    steps = np.ceil(2.0 ** (np.ceil(2.0 * np.log2(steps)) / 2.0))  # 2^(k/2): few batches
     worst = int(np.argmax(steps))
     if steps[worst] > max_steps:
         raise ValueError(f"Omega = {om[worst]!r}: needs about {int(steps[worst])} steps per "
