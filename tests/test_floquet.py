@@ -268,6 +268,40 @@ def test_hsu_edges_against_bruteforce_scan(b12, b21):
     assert (r.omega_lo, r.omega_hi) == pytest.approx((lo, hi), abs=1e-8)
 
 
+def test_damped_combination_against_exact_shift():
+    # C = 2 eps I: q = exp(-eps t) p maps the system exactly onto the undamped one with
+    # A - eps^2 I, so the damped sum-region edges are where that system's growth rate equals
+    # eps (brentq on the undamped modal kernel; the damped search uses the dense kernel):
+    # tolerance 1e-8
+    eps_d = 0.002
+    M, _, A, B = hsu(0.05, 1.0, 1.0)
+    (r,) = instability_regions(M, 2 * eps_d * np.eye(2), A, B, 2.5, 4.0, max_order=1)
+    assert r.kind == "sum"
+
+    def excess(x):
+        return growth_rate(M, None, A - eps_d**2 * np.eye(2), B, [x])[0] - eps_d
+
+    lo = brentq(excess, r.omega_lo - 1e-3, r.omega_center, xtol=1e-13)
+    hi = brentq(excess, r.omega_center, r.omega_hi + 1e-3, xtol=1e-13)
+    assert (r.omega_lo, r.omega_hi) == pytest.approx((lo, hi), abs=1e-8)
+    # critical coupling: growth (gamma / 4) sqrt(b12 b21 / (w1 w2)) = eps (Hsu 1963 first
+    # order with the shift above): gamma_cr = 4 eps sqrt(w1 w2 / (b12 b21)), rel. tol 1e-4
+    (c,) = critical_amplitude(M, 2 * eps_d * np.eye(2), A, B / 0.05, gamma_max=0.05,
+                              omega_min=2.5, omega_max=4.0, max_order=1)
+    assert c.gamma_cr == pytest.approx(4 * eps_d * np.sqrt(W1 * W2), rel=1e-4)
+
+
+def test_region_boundaries_hsu_width_linear_in_gamma():
+    # Hsu (1963): the sum region widens like gamma sqrt(b12 b21 / (w1 w2)) from its centre
+    # w1 + w2 at gamma = 0; traced widths / gamma within 0.1% of it for gamma <= 0.02
+    M, _, A, _ = hsu(1.0, 1.0, 1.0)
+    (rb,) = region_boundaries(M, None, A, np.array([[0.0, 1.0], [1.0, 0.0]]), gamma_max=0.02,
+                              omega_min=2.5, omega_max=4.0, max_order=1, n_gamma=3)
+    assert rb.kind == "sum" and rb.omega_lo[0] == rb.omega_hi[0] == W1 + W2
+    ratio = (rb.omega_hi[1:] - rb.omega_lo[1:]) / rb.gamma[1:] / np.sqrt(1.0 / (W1 * W2))
+    assert np.all(np.abs(ratio - 1.0) < 1e-3)
+
+
 # --------------------------------------------------------------------------------------------
 # Tier 3: invariants
 # --------------------------------------------------------------------------------------------
