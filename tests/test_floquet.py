@@ -17,7 +17,9 @@ from scipy.optimize import brentq
 from scipy.special import mathieu_a, mathieu_b
 
 from flexbooster.floquet import (
+    converged_periodic_boundaries,
     critical_amplitude,
+    floquet_exponents,
     floquet_multipliers,
     growth_rate,
     hill_exponents,
@@ -118,6 +120,18 @@ def test_harmonic_balance_boundaries_mathieu(period, r):
     assert np.min(np.abs(roots - lo)) < 1e-9 and np.min(np.abs(roots - hi)) < 1e-9
 
 
+@pytest.mark.parametrize("period,r", [("2T", 1), ("T", 2), ("2T", 3)],
+                         ids=["principal", "second", "third"])
+def test_harmonic_balance_raised_until_converged(period, r):
+    # harmonics raised until the roots in [0.5, 2.6] settle (rtol 1e-12): the edges of
+    # regions 1..3 of Mathieu mu = 0.2 against scipy.special to 1e-9
+    roots, K = converged_periodic_boundaries(*mathieu(0.2), period=period, omega_min=0.5,
+                                             omega_max=2.6, rtol=1e-12)
+    lo, hi = mathieu_edges(0.2, r)
+    assert 8 <= K <= 64
+    assert np.min(np.abs(roots - lo)) < 1e-9 and np.min(np.abs(roots - hi)) < 1e-9
+
+
 def test_steady_propagator_exact():
     # B = 0: the Lawson scheme propagates the steady system exactly; multipliers
     # exp(+-i omega T) with omega = 1, 2, 3 (closed form) to 1e-12, whatever the step count
@@ -129,6 +143,18 @@ def test_steady_propagator_exact():
     for p in range(Om.size):
         for e in np.concatenate([expect[p], expect[p].conj()]):
             assert np.min(np.abs(rho[p] - e)) < 1e-12
+    # exponents: Re = 0 and Im = +-omega modulo Omega (1e-12); Hill (S = 3) gives +-i omega
+    lam = floquet_exponents(np.eye(3), None, A, np.zeros((3, 3)), Om, n_steps=8)
+    assert np.max(np.abs(lam.real)) < 1e-12
+    lam_h = hill_exponents(np.eye(3), None, A, np.zeros((3, 3)), Om, n_harmonics=3)
+    for p in range(Om.size):
+        for w in (1.0, 2.0, 3.0):
+            for sign in (1.0, -1.0):
+                d = np.abs(np.angle(np.exp(1j * (lam[p].imag - sign * w) * T[p])))
+                assert np.min(d) < 1e-10
+                assert np.min(np.abs(lam_h[p] - 1j * sign * w
+                                     - 1j * Om[p] * np.round((lam_h[p].imag - sign * w)
+                                                             / Om[p]))) < 1e-12
 
 
 def test_undamped_monodromy_determinant_is_one():

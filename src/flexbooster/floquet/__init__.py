@@ -6,7 +6,7 @@ their amplitude dependence (:mod:`.regions`).  Numerical core: numpy and scipy o
 ``docs/theory/floquet.md``.
 """
 
-from .hill import hill_exponents, periodic_boundaries
+from .hill import converged_periodic_boundaries, hill_exponents, periodic_boundaries
 from .multipliers import (
     LinearPeriodicSystem,
     floquet_exponents,
@@ -30,6 +30,7 @@ __all__ = [
     "CriticalAmplitude",
     "InstabilityRegion",
     "RegionBoundary",
+    "converged_periodic_boundaries",
     "critical_amplitude",
     "instability_regions",
     "region_boundaries",

@@ -21,7 +21,7 @@ import scipy.linalg
 
 from .multipliers import LinearPeriodicSystem, _omega, periodic_system
 
-__all__ = ["hill_exponents", "periodic_boundaries"]
+__all__ = ["hill_exponents", "periodic_boundaries", "converged_periodic_boundaries"]
 
 
 def _system(M, C, A, B) -> LinearPeriodicSystem:
@@ -194,3 +194,61 @@ def periodic_boundaries(M, C, A, B, *, period: str = "2T", n_harmonics: int = 8,
     if omega_max is not None:
         roots = roots[roots <= float(omega_max)]
     return roots
+
+
+def converged_periodic_boundaries(M, C, A, B, *, period: str = "2T", omega_min: float,
+                                  omega_max: float, rtol: float = 1e-10,
+                                  max_harmonics: int = 64) -> tuple[np.ndarray, int]:
+    """:func:`periodic_boundaries` with the harmonics raised until the roots converge.
+
+    K = 4, 8, 12, ... until the roots in [omega_min, omega_max] are the same in number and
+    agree to rtol * omega_max for two successive K (Bolotin 1964, sec. 4-5: the truncated
+    determinants converge to the boundaries as harmonics are added).
+
+    Parameters
+    ----------
+    M, C, A, B : array_like
+        The system (see :func:`flexbooster.floquet.multipliers.periodic_system`).
+    period : {"2T", "T"}
+        Period of the boundary solutions.
+    omega_min, omega_max : float
+        Range of Omega of interest (rad per time unit), 0 < omega_min < omega_max.  Low roots
+        of a truncation (near 2 omega / (2K)) are poor: the range keeps them out of the test.
+    rtol : float
+        Convergence tolerance relative to omega_max (dimensionless), > 0.
+    max_harmonics : int
+        Largest K tried, 8..100; ValueError if the roots have not converged by then.
+
+    Returns
+    -------
+    roots : numpy.ndarray
+        Converged roots in the range (rad per time unit), from the larger K.
+    K : int
+        The number of harmonics used.
+
+    References
+    ----------
+    Bolotin (1964), ch. 1 sec. 4-5, ch. 2 sec. 8.
+    """
+    for name, v in (("omega_min", omega_min), ("omega_max", omega_max), ("rtol", rtol)):
+        if not np.isfinite(v) or v <= 0.0:
+            raise ValueError(f"{name} = {v!r}: must be finite and > 0")
+    if omega_min >= omega_max:
+        raise ValueError(f"omega_min = {omega_min!r}: must be < omega_max = {omega_max!r}")
+    Kmax = _harmonics("max_harmonics", max_harmonics, 8, 100)
+    system = _system(M, C, A, B)
+
+    def roots(K):
+        r = periodic_boundaries(system, None, None, None, period=period, n_harmonics=K,
+                                omega_max=omega_max)
+        return r[r >= omega_min]
+
+    prev = roots(4)
+    for K in range(8, Kmax + 1, 4):
+        cur = roots(K)
+        if cur.size == prev.size and (cur.size == 0 or np.max(np.abs(cur - prev))
+                                      <= rtol * omega_max):
+            return cur, K
+        prev = cur
+    raise ValueError(f"max_harmonics = {max_harmonics!r}: the {period} boundaries in "
+                     f"[{omega_min}, {omega_max}] did not converge to rtol = {rtol}")
