@@ -353,6 +353,7 @@ def test_harmonic_balance_converges_with_harmonics():
         assert np.max(np.abs(top8 - top12)) < 1e-12
 
 
+@pytest.mark.slow
 def test_regions_unchanged_under_truncation_and_accuracy():
     # strongly coupled 3-DOF system (overlapping regions): every interval found with orders
     # j <= 3 is found again, edges to 1e-8 relative, when orders up to 5 are examined and when
@@ -369,6 +370,7 @@ def test_regions_unchanged_under_truncation_and_accuracy():
             assert np.min(d) < 1e-8 * r.omega_hi, r
 
 
+@pytest.mark.slow
 def test_regions_are_unstable_inside_and_bounded_by_unit_multipliers():
     # invariant on the same system: growth rate > 0 at 9 interior points of every region, and
     # just outside each edge (1e-7 relative) the point is stable unless another region covers
@@ -537,6 +539,12 @@ def test_bad_omega_and_options():
         periodic_boundaries(*mathieu(0.1), period="3T")
     with pytest.raises(ValueError, match="rtol"):
         instability_regions(*mathieu(0.1), 1.0, 3.0, rtol=0.0)
+    with pytest.raises(ValueError, match="chunk"):
+        instability_regions(*mathieu(0.1), 1.0, 3.0, chunk=0)
+    with pytest.raises(ValueError, match="max_order"):
+        instability_regions(*mathieu(0.1), 1.0, 3.0, max_order=0)
+    with pytest.raises(ValueError, match="n_steps"):
+        monodromy(*mathieu(0.1), [1.0], n_steps=0)
     with pytest.raises(ValueError, match="gamma_max"):
         critical_amplitude(*mathieu(0.1), gamma_max=-1.0, omega_min=1.0, omega_max=3.0)
     with pytest.raises(ValueError, match="n_gamma"):

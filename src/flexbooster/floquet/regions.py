@@ -141,6 +141,12 @@ def _options(rtol=1e-9, step_phase=0.06, max_steps=_MAX_STEPS, max_order=None,
         raise ValueError(f"max_order = {max_order!r}: must be None or an integer in 1..10000")
     if not isinstance(max_candidates, int | np.integer) or max_candidates < 1:
         raise ValueError(f"max_candidates = {max_candidates!r}: must be an integer >= 1")
+    if not isinstance(max_steps, int | np.integer) or max_steps < 8:
+        raise ValueError(f"max_steps = {max_steps!r}: must be an integer >= 8")
+    if not isinstance(chunk, int | np.integer) or chunk < 1:
+        raise ValueError(f"chunk = {chunk!r}: must be an integer >= 1")
+    if not (np.isfinite(step_phase) and step_phase > 0.0):
+        raise ValueError(f"step_phase = {step_phase!r}: must be finite and > 0")
     return _Options(float(rtol), float(step_phase), int(max_steps), max_order,
                     int(max_candidates), int(chunk))
 
