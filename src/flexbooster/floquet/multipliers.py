@@ -73,6 +73,10 @@ class LinearPeriodicSystem:
         Eigenvectors of M^-1 A (None when ill-conditioned: the dense kernel is used).
     Bt : numpy.ndarray or None
         V^-1 M^-1 B V (modal frame).
+
+    References
+    ----------
+    Bolotin (1964), sec. 2 (matrix equations of dynamic stability).
     """
 
     K0: np.ndarray
@@ -150,7 +154,7 @@ def periodic_system(M, C, A, B) -> LinearPeriodicSystem:
                                 V=V, Bt=Bt)
 
 
-def steady_frequencies(M, A, C=None) -> np.ndarray:
+def steady_frequencies(M, A, *, C=None) -> np.ndarray:
     """Frequencies of the steady system (B = 0), sqrt of the eigenvalues of M^-1 A.
 
     Parameters
@@ -400,6 +404,43 @@ def _s_values_from_half(Phi: np.ndarray) -> np.ndarray:
     return np.linalg.eigvals(2.0 * U[:, :n, :n])
 
 
+def _s_sets_from_half(Phi: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """s, s - 2 and s + 2 from the half-period map, the shifted ones without cancellation.
+
+    With P = Phi(T/2)^-1: U - I = Phi (R - I) P and U + I = Phi (R + I) P, so
+    s - 2 = eig(-4 Phi_12 P_21) and s + 2 = eig(4 Phi_11 P_11): near rho = +1 (-1) the
+    small eigenvalue is a product of small factors, accurate relative to itself in the modal
+    frame of a weakly coupled system, where 2 U_11 - 2 I would lose it to cancellation.
+    Returns (s, s - 2, s + 2), each (P, n), each set in its own order.
+    """
+    n = Phi.shape[-1] // 2
+    if np.iscomplexobj(Phi) and not np.any(Phi.imag):
+        Phi = Phi.real
+    Pinv = np.linalg.solve(Phi, np.broadcast_to(np.eye(2 * n), Phi.shape))
+    Xm = 4.0 * Phi[:, :n, :n] @ Pinv[:, :n, :n]  # 2 (U_11 + I)
+    Xp = -4.0 * Phi[:, :n, n:] @ Pinv[:, n:, :n]  # 2 (U_11 - I)
+    S = 0.5 * (Xp + Xm)  # 2 U_11
+    return np.linalg.eigvals(S), np.linalg.eigvals(Xp), np.linalg.eigvals(Xm)
+
+
+def _rho_max_from_sets(xp: np.ndarray, xm: np.ndarray) -> np.ndarray:
+    """|rho|_max from s - 2 (used where Re s >= 0) and s + 2 (where Re s < 0).
+
+    rho = s/2 + sqrt((s/2 - 1)(s/2 + 1)) with the small factor taken from the shifted set.
+    """
+    xp = xp.astype(complex)
+    xm = xm.astype(complex)
+    sp = 2.0 + xp
+    rp = np.sqrt(0.5 * xp * (2.0 + 0.5 * xp))  # (s/2 - 1)(s/2 + 1), s = 2 + xp
+    ap = np.maximum(np.abs(0.5 * sp + rp), np.abs(0.5 * sp - rp))
+    sm = xm - 2.0
+    rm = np.sqrt(0.5 * xm * (0.5 * xm - 2.0))  # s = xm - 2
+    am = np.maximum(np.abs(0.5 * sm + rm), np.abs(0.5 * sm - rm))
+    ap = np.where(sp.real >= 0.0, ap, 0.0)
+    am = np.where(sm.real < 0.0, am, 0.0)
+    return np.maximum(np.max(ap, axis=-1), np.max(am, axis=-1))
+
+
 def _rho_from_s(s: np.ndarray) -> np.ndarray:
     """The 2n multipliers rho, 1/rho from s = rho + 1/rho."""
     r = np.sqrt(s.astype(complex) ** 2 / 4.0 - 1.0)
@@ -557,5 +598,9 @@ def growth_rate(M, C, A, B, Omega, *, method: str = "monodromy", n_harmonics: in
     if method != "monodromy":
         raise ValueError(f"method = {method!r}: must be 'monodromy' or 'hill'")
     system, om, steps = _prepare(M, C, A, B, Omega, n_steps, step_phase, max_steps, chunk)
-    rho = _multipliers(system, om, steps, chunk)[0]
-    return np.log(np.max(np.abs(rho), axis=-1)) * om / (2.0 * np.pi)  # log|rho|_max / T
+    if system.damped:
+        rho_max = np.max(np.abs(np.linalg.eigvals(_full_maps(system, om, steps, chunk))), -1)
+    else:
+        _, xp, xm = _s_sets_from_half(_half_maps(system, om, steps, chunk))
+        rho_max = _rho_max_from_sets(xp, xm)
+    return np.log(rho_max) * om / (2.0 * np.pi)  # log|rho|_max / T

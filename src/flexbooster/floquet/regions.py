@@ -51,8 +51,8 @@ from .multipliers import (
     LinearPeriodicSystem,
     _full_maps,
     _half_maps,
-    _rho_from_s,
-    _s_values_from_half,
+    _rho_max_from_sets,
+    _s_sets_from_half,
     periodic_system,
     step_counts,
 )
@@ -96,6 +96,10 @@ class InstabilityRegion:
         The analytic candidate centre.
     clipped : bool
         True when a boundary is the end of the Omega range asked for.
+
+    References
+    ----------
+    Bolotin (1964), ch. 1-2; Hsu (1963).
     """
 
     omega_lo: float
@@ -227,14 +231,15 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
 # --------------------------------------------------------------------------------------------
 # Indicators (vectorised over candidates)
 # --------------------------------------------------------------------------------------------
-def _s_values(system: LinearPeriodicSystem, om: np.ndarray, opt: _Options) -> np.ndarray:
+def _s_values(system: LinearPeriodicSystem, om: np.ndarray, opt: _Options) -> tuple:
+    """(s, s - 2, s + 2) at om (see :func:`.multipliers._s_sets_from_half`)."""
     steps = step_counts(system, om, step_phase=opt.step_phase, max_steps=opt.max_steps)
-    return _s_values_from_half(_half_maps(system, om, steps, opt.chunk))
+    return _s_sets_from_half(_half_maps(system, om, steps, opt.chunk))
 
 
 def _indicator(system, w, cand, om, opt) -> np.ndarray:
     """F per candidate at om (same length as the candidate arrays)."""
-    s = _s_values(system, om, opt)
+    s, xp, xm = _s_values(system, om, opt)
     P = om.size
     rows = np.arange(P)
     sig = np.where(cand["j"] % 2 == 0, 1.0, -1.0)
@@ -243,11 +248,14 @@ def _indicator(system, w, cand, om, opt) -> np.ndarray:
     p_k = 2.0 * np.cos(2.0 * np.pi * w[cand["k"]] / om)
     d_i = np.abs(s - p_i[:, None])
     first = np.argmin(d_i, axis=1)
-    # simple: F = (-1)^j Re s_i - 2 > 0 where s_i is real beyond +-2 (rho = +-1 at F = 0);
-    # a complex s_i belongs to a combination pair: F <= -|Im s_i| there (continuous)
-    s_i = s[rows, first]
-    f_simple = sig * s_i.real - 2.0
-    f_simple = np.where(s_i.imag == 0.0, f_simple, np.minimum(f_simple, -np.abs(s_i.imag)))
+    # simple: F = (-1)^j Re s_i - 2 > 0 where s_i is real beyond +-2 (rho = +-1 at F = 0),
+    # taken from the shifted set s -+ 2 (no cancellation); a complex s_i belongs to a
+    # combination pair: F <= -|Im s_i| there
+    x = np.where((sig > 0.0)[:, None], xp, xm)  # s - 2 sigma
+    near = np.argmin(np.abs(x + 2.0 * sig[:, None] - p_i[:, None]), axis=1)
+    x_i = x[rows, near]
+    f_simple = sig * x_i.real  # sigma (s - 2 sigma) = sigma s - 2
+    f_simple = np.where(x_i.imag == 0.0, f_simple, np.minimum(f_simple, -np.abs(x_i.imag)))
     if s.shape[1] >= 2:
         # combination: the s nearest to each prediction; F = -Re (s_a - s_b)^2 > 0 where the
         # pair is complex (left |rho| = 1), 0 where it collides on |rho| = 1
@@ -268,8 +276,11 @@ def _unstable_indicator(system, om, opt) -> np.ndarray:
     the unit circle); continuous in Omega and crossing 0 linearly at both kinds of boundary.
     The floor discounts round-off (a nearly double real s may come out complex, Im ~ 1e-8).
     """
-    s = _s_values(system, om, opt)
-    u = np.max(np.abs(s.real) - 2.0, axis=1)
+    s, xp, xm = _s_values(system, om, opt)
+    # |s| - 2 from the shifted sets: s - 2 where Re s >= 0, -(s + 2) where Re s < 0
+    up = np.where((xp.real + 2.0) >= 0.0, xp.real, -np.inf)
+    um = np.where((xm.real - 2.0) < 0.0, -xm.real, -np.inf)
+    u = np.maximum(np.max(up, axis=1), np.max(um, axis=1))
     n = s.shape[1]
     if n >= 2:
         a, b = np.triu_indices(n, 1)
@@ -278,8 +289,8 @@ def _unstable_indicator(system, om, opt) -> np.ndarray:
 
 
 def _growth_undamped(system, om, opt) -> np.ndarray:
-    rho = _rho_from_s(_s_values(system, om, opt))
-    return np.log(np.max(np.abs(rho), axis=1)) * om / (2.0 * np.pi)  # log|rho|_max / T
+    _, xp, xm = _s_values(system, om, opt)
+    return np.log(_rho_max_from_sets(xp, xm)) * om / (2.0 * np.pi)  # log|rho|_max / T
 
 
 def _growth_damped(system, om, opt) -> np.ndarray:
@@ -517,7 +528,7 @@ def _steady_check(system: LinearPeriodicSystem):
     bad = (np.abs(mu.imag) > 1e-10 * max(float(np.max(np.abs(mu))), 1e-300)) | (mu.real <= 0.0)
     growth = float(np.max(lam.real))
     unstable = bool(np.any(bad)) or growth > 1e-12 * scale
-    return not unstable, max(growth, 0.0), tuple(int(m) for m in np.nonzero(bad)[0])
+    return not unstable, max(growth, 0.0) + 0.0, tuple(int(m) for m in np.nonzero(bad)[0])
 
 
 def _undamped_search(system, w, cand, lo, hi, opt) -> list[dict]:
@@ -765,6 +776,10 @@ class CriticalAmplitude:
         Critical amplitude (dimensionless); 0 without damping.
     omega_cr : float
         Omega where the region appears (rad per time unit).
+
+    References
+    ----------
+    Bolotin (1964), sec. 6.
     """
 
     kind: str
@@ -793,6 +808,10 @@ class RegionBoundary:
         critical amplitude (0 without damping), where omega_lo = omega_hi.
     omega_lo, omega_hi : numpy.ndarray
         Boundaries at each gamma (rad per time unit).
+
+    References
+    ----------
+    Bolotin (1964), ch. 1 (regions in the (Omega, mu) plane), sec. 6.
     """
 
     kind: str
