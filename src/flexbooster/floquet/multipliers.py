@@ -292,17 +292,22 @@ def _half_modal(system: LinearPeriodicSystem, om: np.ndarray, n_steps: int) -> n
     idx = np.arange(n)
     x[idx, :, idx] = 1.0
     v[idx, :, n + idx] = 1.0
+    # step coefficients (products with h precomputed)
+    hs2h, hs2 = 0.5 * hh * s2, hh * s2
+    h6 = hh / 6.0
+    h6s1, h6s2, h6c1, h6c2 = h6 * s1, 2.0 * h6 * s2, h6 * c1, 2.0 * h6 * c2
     for k in range(n_steps):  # Lawson (1967) integrating-factor RK4
         a1 = force(2 * k, x)  # k1 = N(t) z
-        a2 = force(2 * k + 1, c2 * x + s2 * (v + 0.5 * hh * a1))  # N E(h/2)(z + h/2 k1)
-        a3 = force(2 * k + 1, c2 * x + s2 * v)  # N [E(h/2) z + h/2 k2] (position part)
+        p3 = c2 * x + s2 * v  # E(h/2) z (position part)
+        a2 = force(2 * k + 1, p3 + hs2h * a1)  # N E(h/2)(z + h/2 k1)
+        a3 = force(2 * k + 1, p3)  # N [E(h/2) z + h/2 k2] (k2 has no position part)
         xf = c1 * x + s1 * v  # E(h) z
         vf = m1 * x + c1 * v
-        a4 = force(2 * k + 2, xf + hh * s2 * a3)  # N [E(h) z + h E(h/2) k3]
-        a23 = 2.0 * (a2 + a3)
+        a4 = force(2 * k + 2, xf + hs2 * a3)  # N [E(h) z + h E(h/2) k3]
+        a23 = a2 + a3
         # z_new = E(h) z + h/6 [E(h) k1 + 2 E(h/2)(k2 + k3) + k4]   (Lawson 1967)
-        x = xf + hh / 6.0 * (s1 * a1 + s2 * a23)
-        v = vf + hh / 6.0 * (c1 * a1 + c2 * a23 + a4)
+        x = xf + h6s1 * a1 + h6s2 * a23
+        v = vf + h6c1 * a1 + h6c2 * a23 + h6 * a4
     return np.concatenate([x, v], axis=0).transpose(1, 0, 2)
 
 
