@@ -532,6 +532,13 @@ def test_bad_range(lo, hi, name):
         instability_regions(*mathieu(0.1), lo, hi)
 
 
+def test_overflow_raises_instead_of_inf():
+    # a violently unstable point: the monodromy would overflow; ValueError, never inf / NaN
+    for C in (None, [[0.01]]):
+        with pytest.raises(ValueError, match="overflowed"):
+            growth_rate(ONE, C, ONE, [[-300.0]], [0.02])
+
+
 def test_bad_omega_and_options():
     with pytest.raises(ValueError, match="Omega"):
         monodromy(*mathieu(0.1), [1.0, -2.0])

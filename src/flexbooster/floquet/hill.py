@@ -78,6 +78,9 @@ def hill_exponents(M, C, A, B, Omega, *, n_harmonics: int = 8, chunk: int = 8) -
     n = system.n
     h = 2 * S + 1
     m = n * h
+    if 2 * m > 4000:
+        raise ValueError(f"n_harmonics = {S}: the Hill matrix would be {2 * m} x {2 * m} "
+                         "(> 4000) for this system: use the monodromy")
     s = np.arange(-S, S + 1)
     Hm = np.kron(np.eye(h), system.K0) + np.kron(
         np.eye(h, k=1) + np.eye(h, k=-1), 0.5 * system.Kb)  # M^-1 H, Hill matrix
@@ -192,6 +195,8 @@ def periodic_boundaries(M, C, A, B, *, period: str = "2T", n_harmonics: int = 8,
         roots = ev.real[ok]
     roots = np.sort(roots)
     if omega_max is not None:
+        if not np.isfinite(omega_max) or omega_max <= 0.0:
+            raise ValueError(f"omega_max = {omega_max!r}: must be finite and > 0")
         roots = roots[roots <= float(omega_max)]
     return roots
 

@@ -292,7 +292,13 @@ def _half_modal(system: LinearPeriodicSystem, om: np.ndarray, n_steps: int) -> n
     idx = np.arange(n)
     x[idx, :, idx] = 1.0
     v[idx, :, n + idx] = 1.0
-    # step coefficients (products with h precomputed)
+    with np.errstate(over="ignore", invalid="ignore"):  # overflow is reported by _finite
+        x, v = _lawson_modal(x, v, force, n_steps, c1, s1, m1, c2, s2, hh)
+    return np.concatenate([x, v], axis=0).transpose(1, 0, 2)
+
+
+def _lawson_modal(x, v, force, n_steps, c1, s1, m1, c2, s2, hh):
+    """The Lawson RK4 loop of :func:`_half_modal` (returns the final x, v)."""
     hs2h, hs2 = 0.5 * hh * s2, hh * s2
     h6 = hh / 6.0
     h6s1, h6s2, h6c1, h6c2 = h6 * s1, 2.0 * h6 * s2, h6 * c1, 2.0 * h6 * c2
@@ -308,7 +314,7 @@ def _half_modal(system: LinearPeriodicSystem, om: np.ndarray, n_steps: int) -> n
         # z_new = E(h) z + h/6 [E(h) k1 + 2 E(h/2)(k2 + k3) + k4]   (Lawson 1967)
         x = xf + h6s1 * a1 + h6s2 * a23
         v = vf + h6c1 * a1 + h6c2 * a23 + h6 * a4
-    return np.concatenate([x, v], axis=0).transpose(1, 0, 2)
+    return x, v
 
 
 def _period_dense(system: LinearPeriodicSystem, om: np.ndarray, n_steps: int,
@@ -328,14 +334,15 @@ def _period_dense(system: LinearPeriodicSystem, om: np.ndarray, n_steps: int,
         return out
 
     z = np.broadcast_to(np.eye(2 * n), (P, 2 * n, 2 * n)).copy()
-    for k in range(n_steps):  # Lawson (1967) integrating-factor RK4
-        t0 = k * h
-        k1 = force(t0, z)
-        k2 = force(t0 + 0.5 * h, E2 @ (z + 0.5 * hh * k1))
-        k3 = force(t0 + 0.5 * h, E2 @ z + 0.5 * hh * k2)
-        Ez = E1 @ z
-        k4 = force(t0 + h, Ez + hh * (E2 @ k3))
-        z = Ez + hh / 6.0 * (E1 @ k1 + 2.0 * (E2 @ (k2 + k3)) + k4)
+    with np.errstate(over="ignore", invalid="ignore"):  # overflow is reported by _finite
+        for k in range(n_steps):  # Lawson (1967) integrating-factor RK4
+            t0 = k * h
+            k1 = force(t0, z)
+            k2 = force(t0 + 0.5 * h, E2 @ (z + 0.5 * hh * k1))
+            k3 = force(t0 + 0.5 * h, E2 @ z + 0.5 * hh * k2)
+            Ez = E1 @ z
+            k4 = force(t0 + h, Ez + hh * (E2 @ k3))
+            z = Ez + hh / 6.0 * (E1 @ k1 + 2.0 * (E2 @ (k2 + k3)) + k4)
     return z
 
 
@@ -373,7 +380,16 @@ def _half_maps(system: LinearPeriodicSystem, om: np.ndarray, steps: np.ndarray,
                 out[sel] = _half_modal(system, om[sel], int(ns))
             else:
                 out[sel] = _period_dense(system, om[sel], int(ns), True)
-    return out
+    return _finite(out, om)
+
+
+def _finite(Phi: np.ndarray, om: np.ndarray) -> np.ndarray:
+    """Raise instead of returning an overflowed (inf / NaN) map."""
+    bad = ~np.all(np.isfinite(Phi), axis=(-2, -1))
+    if np.any(bad):
+        raise ValueError(f"Omega = {om[bad][:5]!r}: the monodromy overflowed (growth over one "
+                         "period beyond floating point)")
+    return Phi
 
 
 def _full_maps(system: LinearPeriodicSystem, om: np.ndarray, steps: np.ndarray,
@@ -386,7 +402,7 @@ def _full_maps(system: LinearPeriodicSystem, om: np.ndarray, steps: np.ndarray,
         for start in range(0, where.size, chunk):
             sel = where[start:start + chunk]
             out[sel] = _period_dense(system, om[sel], int(ns), False)
-    return out
+    return _finite(out, om)
 
 
 def _reflection(n: int) -> np.ndarray:
