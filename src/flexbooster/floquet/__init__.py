@@ -1,0 +1,47 @@
+"""Numerics of linear periodic systems M q'' + C q' + (A + B cos Omega t) q = 0.
+
+Floquet multipliers and growth rates (:mod:`.multipliers`), Hill's method and the harmonic
+balance of the periodic boundaries (:mod:`.hill`), and the instability regions in Omega with
+their amplitude dependence (:mod:`.regions`).  Numerical core: numpy and scipy only.  Theory:
+``docs/theory/floquet.md``.
+"""
+
+from .hill import converged_periodic_boundaries, hill_exponents, periodic_boundaries
+from .multipliers import (
+    LinearPeriodicSystem,
+    floquet_exponents,
+    floquet_multipliers,
+    growth_rate,
+    monodromy,
+    periodic_system,
+    steady_frequencies,
+    step_counts,
+)
+from .regions import (
+    CriticalAmplitude,
+    InstabilityRegion,
+    RegionBoundary,
+    critical_amplitude,
+    instability_regions,
+    region_boundaries,
+)
+
+__all__ = [
+    "CriticalAmplitude",
+    "InstabilityRegion",
+    "RegionBoundary",
+    "converged_periodic_boundaries",
+    "critical_amplitude",
+    "instability_regions",
+    "region_boundaries",
+    "LinearPeriodicSystem",
+    "floquet_exponents",
+    "floquet_multipliers",
+    "growth_rate",
+    "hill_exponents",
+    "monodromy",
+    "periodic_boundaries",
+    "periodic_system",
+    "steady_frequencies",
+    "step_counts",
+]

@@ -1,0 +1,259 @@
+"""Harmonic balance for M q'' + C q' + (A + B cos Omega t) q = 0: Hill exponents and boundaries.
+
+* :func:`hill_exponents`: Hill's infinite determinant truncated at s = -S..S, solved as a
+  linear eigenproblem in the exponent lambda for each Omega (batched).
+* :func:`periodic_boundaries`: Bolotin's harmonic balance for the T- and 2T-periodic solutions,
+  which are the boundaries of the simple (parametric) instability regions, as an eigenproblem
+  in Omega (linear in Omega^2 when C = 0, quadratic in Omega, linearised, when C != 0).
+
+References
+----------
+.. [1] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, ch. 1
+   (sec. 3-5: harmonic balance, eqs. (3.4)-(3.9) for the boundaries with period 2T and T),
+   ch. 2 (sec. 7-8: matrix form; Hill's determinant).
+.. [2] W. Magnus, S. Winkler, *Hill's Equation*, Wiley, 1966, ch. 2 (Hill's determinant).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import scipy.linalg
+
+from .multipliers import LinearPeriodicSystem, _omega, periodic_system
+
+__all__ = ["hill_exponents", "periodic_boundaries", "converged_periodic_boundaries"]
+
+
+def _system(M, C, A, B) -> LinearPeriodicSystem:
+    return M if isinstance(M, LinearPeriodicSystem) else periodic_system(M, C, A, B)
+
+
+def _harmonics(name: str, value, low: int = 0, high: int = 200) -> int:
+    if isinstance(value, bool) or not isinstance(value, int | np.integer) or not (
+            low <= value <= high):
+        raise ValueError(f"{name} = {value!r}: must be an integer in {low}..{high}")
+    return int(value)
+
+
+def hill_exponents(M, C, A, B, Omega, *, n_harmonics: int = 8, chunk: int = 8) -> np.ndarray:
+    """Characteristic exponents by Hill's determinant truncated at s = -S..S.
+
+    With q = exp(lambda t) sum_s c_s exp(i s Omega t) the equation becomes, for each s,
+
+        M (lambda + i s Omega)^2 c_s + C (lambda + i s Omega) c_s + A c_s
+            + (B / 2) (c_{s-1} + c_{s+1}) = 0,
+
+    linearised with y_s = (lambda + i s Omega) c_s into the 2n(2S + 1) eigenproblem
+    lambda [c; y] = [[-D, I], [-M^-1 H, -D - M^-1 C]] [c; y], D = diag(i s Omega).  Of its
+    eigenvalues (each repeated modulo i Omega) the 2n whose Fourier vectors are most central
+    (smallest |sum_s s |c_s|^2|) are returned.
+
+    Parameters
+    ----------
+    M, C, A, B : array_like
+        The system (see :func:`flexbooster.floquet.multipliers.periodic_system`).
+    Omega : array_like
+        Pulsation frequencies, shape (P,) (rad per time unit of the matrices), > 0.
+    n_harmonics : int
+        S, harmonics s = -S..S, 0..200.
+    chunk : int
+        Points per batched eigen-solve (memory).
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (P, 2n), complex exponents lambda (1 / time unit); max Re lambda is the growth
+        rate.  Truncation error falls fast with S when Omega is not small against the
+        frequencies (Hill's method is the cheap one for few modes and Omega ~ omega).
+
+    References
+    ----------
+    Bolotin (1964), sec. 7-8; Magnus & Winkler (1966), ch. 2.
+    """
+    system = _system(M, C, A, B)
+    om = _omega(Omega)
+    S = _harmonics("n_harmonics", n_harmonics)
+    if not isinstance(chunk, int | np.integer) or chunk < 1:
+        raise ValueError(f"chunk = {chunk!r}: must be an integer >= 1")
+    n = system.n
+    h = 2 * S + 1
+    m = n * h
+    if 2 * m > 4000:
+        raise ValueError(f"n_harmonics = {S}: the Hill matrix would be {2 * m} x {2 * m} "
+                         "(> 4000) for this system: use the monodromy")
+    s = np.arange(-S, S + 1)
+    Hm = np.kron(np.eye(h), system.K0) + np.kron(
+        np.eye(h, k=1) + np.eye(h, k=-1), 0.5 * system.Kb)  # M^-1 H, Hill matrix
+    Cm = np.kron(np.eye(h), system.Kc)
+    out = []
+    for start in range(0, om.size, chunk):
+        ob = om[start:start + chunk]
+        P = ob.size
+        D = 1j * np.repeat(s, n)[None, :] * ob[:, None]  # (P, m)
+        Mat = np.zeros((P, 2 * m, 2 * m), dtype=complex)
+        idx = np.arange(m)
+        Mat[:, idx, idx] = -D
+        Mat[:, idx, m + idx] = 1.0
+        Mat[:, m:, :m] = -Hm[None]  # Bolotin (1964) eq. (7.4) in first-order form
+        Mat[:, m:, m:] = -Cm[None]
+        Mat[:, m + idx, m + idx] -= D
+        lam, vec = np.linalg.eig(Mat)
+        w = np.sum(np.abs(vec[:, :m, :].reshape(P, h, n, 2 * m)) ** 2, axis=2)
+        cen = np.einsum("s,psk->pk", s.astype(float), w / np.sum(w, axis=1, keepdims=True))
+        out.append(_distinct_central(lam, cen, ob, 2 * n))
+    return np.concatenate(out)
+
+
+def _distinct_central(lam: np.ndarray, cen: np.ndarray, om: np.ndarray,
+                      count: int) -> np.ndarray:
+    """The ``count`` most central exponents, distinct modulo i Omega (shifted to the centre).
+
+    lambda + i m Omega is the same exponent with its Fourier vector shifted by m harmonics, so
+    each eigenvalue is moved by i round(centroid) Omega and copies are dropped.
+    """
+    P, m2 = lam.shape
+    top = min(m2, 4 * count)
+    order = np.argsort(np.abs(cen), axis=1, kind="stable")[:, :top]
+    lam = np.take_along_axis(lam, order, axis=1)
+    cen = np.take_along_axis(cen, order, axis=1)
+    lam = lam + 1j * np.round(cen) * om[:, None]  # relabel to the central Fourier vector
+    half = 0.5 * om[:, None]
+    im = np.mod(lam.imag + half, om[:, None]) - half  # fold Im to [-Omega/2, Omega/2)
+    im = np.where(np.abs(im + half) <= 1e-7 * half, half[:, :1] * np.ones_like(im), im)
+    key = lam.real + 1j * im
+    scale = np.maximum(np.max(np.abs(key), axis=1), om)[:, None, None]
+    close = np.abs(key[:, :, None] - key[:, None, :]) <= 1e-7 * scale
+    dup = np.any(np.tril(close, k=-1), axis=2)  # equal to a more central one
+    rank = np.where(dup, np.inf, np.arange(top)[None, :].astype(float))
+    pick = np.argsort(rank, axis=1, kind="stable")[:, :count]
+    return np.take_along_axis(lam, pick, axis=1)
+
+
+def periodic_boundaries(M, C, A, B, *, period: str = "2T", n_harmonics: int = 8,
+                        omega_max: float | None = None) -> np.ndarray:
+    """Omega at which a T- or 2T-periodic solution exists (simple-region boundaries).
+
+    Harmonic balance with q = sum_k c_k exp(i k Omega t / 2), k odd (period 2T: boundaries of
+    the regions near 2 omega / j, j odd) or k even (period T: j even), |k| <= K:
+
+        [A - (k Omega / 2)^2 M + i (k Omega / 2) C] c_k + (B / 2) (c_{k-2} + c_{k+2}) = 0,
+
+    a quadratic eigenproblem in Omega (Bolotin 1964, eqs. (3.4)-(3.9) and sec. 8 for the
+    matrix form); with C = 0 it is the generalised eigenproblem for Omega^2.
+
+    Parameters
+    ----------
+    M, C, A, B : array_like
+        The system (see :func:`flexbooster.floquet.multipliers.periodic_system`).
+    period : {"2T", "T"}
+        Period of the boundary solutions.
+    n_harmonics : int
+        Number of positive harmonics kept (k = 1, 3, .. 2K - 1 for 2T; k = 0, 2, .. 2K for T),
+        1..100.  Boundaries of the region of order j need K well above j / 2: compare two
+        values of K (the regions' search uses the monodromy instead).
+    omega_max : float, optional
+        Only roots with 0 < Omega <= omega_max are returned.
+
+    Returns
+    -------
+    numpy.ndarray
+        Sorted real positive Omega (rad per time unit of the matrices) of the truncated
+        problem (roots with |Im Omega| > 1e-9 |Omega| are dropped: with damping these are
+        boundaries of a region that does not exist at this amplitude).
+
+    References
+    ----------
+    Bolotin (1964), ch. 1 sec. 3-5, ch. 2 sec. 8.
+    """
+    system = _system(M, C, A, B)
+    K = _harmonics("n_harmonics", n_harmonics, 1, 100)
+    if period == "2T":
+        k = np.arange(-(2 * K - 1), 2 * K, 2)
+    elif period == "T":
+        k = np.arange(-2 * K, 2 * K + 1, 2)
+    else:
+        raise ValueError(f"period = {period!r}: must be '2T' or 'T'")
+    n = system.n
+    h = k.size
+    P0 = np.kron(np.eye(h), system.K0) + np.kron(np.eye(h, k=1) + np.eye(h, k=-1),
+                                                 0.5 * system.Kb)  # Bolotin eq. (3.4)
+    P1 = np.kron(np.diag(1j * k / 2.0), system.Kc)
+    P2 = np.kron(np.diag(-(k / 2.0) ** 2), np.eye(n))  # -(k / 2)^2 (M^-1 M)
+    if not system.damped:
+        ev = scipy.linalg.eigvals(P0, -P2)  # Omega^2; k = 0 blocks give infinite values
+        ev = ev[np.isfinite(ev)]
+        ok = (np.abs(ev.imag) <= 1e-9 * np.abs(ev)) & (ev.real > 0.0)
+        roots = np.sqrt(ev.real[ok])
+    else:
+        m = n * h
+        Z, Id = np.zeros((m, m)), np.eye(m)
+        Lhs = np.block([[Z, Id], [-P0, -P1]])  # linearisation of (Omega^2 P2 + Omega P1 + P0)
+        Rhs = np.block([[Id, Z], [Z, P2]])
+        ev = scipy.linalg.eigvals(Lhs, Rhs)
+        ev = ev[np.isfinite(ev)]
+        ok = (np.abs(ev.imag) <= 1e-9 * np.abs(ev)) & (ev.real > 0.0)
+        roots = ev.real[ok]
+    roots = np.sort(roots)
+    if omega_max is not None:
+        if not np.isfinite(omega_max) or omega_max <= 0.0:
+            raise ValueError(f"omega_max = {omega_max!r}: must be finite and > 0")
+        roots = roots[roots <= float(omega_max)]
+    return roots
+
+
+def converged_periodic_boundaries(M, C, A, B, *, period: str = "2T", omega_min: float,
+                                  omega_max: float, rtol: float = 1e-10,
+                                  max_harmonics: int = 64) -> tuple[np.ndarray, int]:
+    """:func:`periodic_boundaries` with the harmonics raised until the roots converge.
+
+    K = 4, 8, 12, ... until the roots in [omega_min, omega_max] are the same in number and
+    agree to rtol * omega_max for two successive K (Bolotin 1964, sec. 4-5: the truncated
+    determinants converge to the boundaries as harmonics are added).
+
+    Parameters
+    ----------
+    M, C, A, B : array_like
+        The system (see :func:`flexbooster.floquet.multipliers.periodic_system`).
+    period : {"2T", "T"}
+        Period of the boundary solutions.
+    omega_min, omega_max : float
+        Range of Omega of interest (rad per time unit), 0 < omega_min < omega_max.  Low roots
+        of a truncation (near 2 omega / (2K)) are poor: the range keeps them out of the test.
+    rtol : float
+        Convergence tolerance relative to omega_max (dimensionless), > 0.
+    max_harmonics : int
+        Largest K tried, 8..100; ValueError if the roots have not converged by then.
+
+    Returns
+    -------
+    roots : numpy.ndarray
+        Converged roots in the range (rad per time unit), from the larger K.
+    K : int
+        The number of harmonics used.
+
+    References
+    ----------
+    Bolotin (1964), ch. 1 sec. 4-5, ch. 2 sec. 8.
+    """
+    for name, v in (("omega_min", omega_min), ("omega_max", omega_max), ("rtol", rtol)):
+        if not np.isfinite(v) or v <= 0.0:
+            raise ValueError(f"{name} = {v!r}: must be finite and > 0")
+    if omega_min >= omega_max:
+        raise ValueError(f"omega_min = {omega_min!r}: must be < omega_max = {omega_max!r}")
+    Kmax = _harmonics("max_harmonics", max_harmonics, 8, 100)
+    system = _system(M, C, A, B)
+
+    def roots(K):
+        r = periodic_boundaries(system, None, None, None, period=period, n_harmonics=K,
+                                omega_max=omega_max)
+        return r[r >= omega_min]
+
+    prev = roots(4)
+    for K in range(8, Kmax + 1, 4):
+        cur = roots(K)
+        if cur.size == prev.size and (cur.size == 0 or np.max(np.abs(cur - prev))
+                                      <= rtol * omega_max):
+            return cur, K
+        prev = cur
+    raise ValueError(f"max_harmonics = {max_harmonics!r}: the {period} boundaries in "
+                     f"[{omega_min}, {omega_max}] did not converge to rtol = {rtol}")

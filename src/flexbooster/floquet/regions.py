@@ -1,0 +1,975 @@
+"""Instability regions in Omega of M q'' + C q' + (A + B cos Omega t) q = 0 and their amplitude
+dependence.
+
+The search is driven by the analytic candidates, never by a grid: with omega_n the steady
+frequencies (eigenvalues of M^-1 A), regions can only grow out of
+
+* simple (parametric) resonances  Omega = 2 omega_i / j,
+* sum combinations                Omega = (omega_i + omega_k) / j,
+* difference combinations         Omega = |omega_k - omega_i| / j,
+
+j = 1, 2, ...  Without damping the system is time-reversible and the half-period map gives
+the n values s = rho + 1/rho (eigenvalues of a real n x n matrix, see
+:mod:`.multipliers`).  At gamma -> 0, s_i = 2 cos(2 pi omega_i / Omega), and each mode's s is
+tracked from that value.  Each candidate has a smooth local indicator F(Omega), positive
+exactly where its multipliers are off the unit circle:
+
+* simple, order j:  F = (-1)^j s_i - 2 (s_i real; F <= -|Im s_i| when s_i is in a complex
+  pair); F = 0 is rho = +-1, the T- or 2T-periodic boundary;
+* combination:      F = -Re (s_i - s_k)^2 (F > 0: s_i, s_k complex conjugate, |rho| != 1;
+  F = 0: the pair collides on |rho| = 1).
+
+F is maximised near the candidate (vectorised Brent maximiser over all candidates at once, in
+a window that holds no other candidate), and where the maximum is above the round-off floor
+both boundaries are bracketed outward and refined on F = 0 (vectorised Illinois regula falsi)
+to the stated tolerance; if the system is still unstable beyond (an overlapping region) the
+march goes on with the whole-system indicator to the first Omega where |rho|_max = 1, so
+overlapping regions are reported as their union.  With damping, the undamped regions seed the
+search of max log|rho| > 0 from the full-period monodromy (see ``docs/theory/floquet.md`` for
+the assumptions and limits).
+
+References
+----------
+.. [1] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, ch. 1-2
+   (regions, periodic boundaries), sec. 6 (damping: critical amplitude).
+.. [2] C. S. Hsu, "On the parametric excitation of a dynamic system having multiple degrees of
+   freedom", J. Appl. Mech. 30 (1963) 367-372 (combination resonances, first-order widths).
+.. [3] W. Magnus, S. Winkler, *Hill's Equation*, Wiley, 1966, ch. 1-2.
+.. [4] K. Takahashi, "An approach to investigate the instability of the multiple-degree-of-
+   freedom parametric dynamic systems", J. Sound Vib. 78 (1981) 519-529.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.optimize
+
+from .multipliers import (
+    _MAX_STEPS,
+    LinearPeriodicSystem,
+    _full_maps,
+    _half_maps,
+    _rho_max_from_sets,
+    _s_sets_from_half,
+    periodic_system,
+    step_counts,
+)
+
+__all__ = [
+    "InstabilityRegion",
+    "instability_regions",
+    "RegionBoundary",
+    "region_boundaries",
+    "CriticalAmplitude",
+    "critical_amplitude",
+]
+
+_KINDS = ("simple", "sum", "difference")
+_GOLD = 0.5 * (np.sqrt(5.0) - 1.0)
+#: Round-off floor of the indicators (s-values are O(1), eigenvalue errors ~ eps ||S||): a
+#: maximum below it is not a region.  Detection limit: relative width ~ 2 sqrt(floor) / (pi j).
+_F_FLOOR = 1e-14
+
+
+@dataclass(frozen=True)
+class InstabilityRegion:
+    """One instability region Omega in (omega_lo, omega_hi).
+
+    Attributes
+    ----------
+    omega_lo, omega_hi : float
+        Boundaries (rad per time unit of the matrices), |rho|_max = 1 there.
+    growth_rate_max : float
+        Largest growth rate max Re lambda = log|rho|_max / T inside (1 / time unit).
+    omega_at_max : float
+        Omega where it occurs.
+    kind : str
+        "simple", "sum", "difference", or "steady" (the steady system itself is unstable:
+        the region is the whole range asked for).
+    modes : tuple of int
+        Indices of the steady modes involved (in ascending order of frequency).
+    order : int
+        j of the candidate centre 2 omega_i / j or (omega_i +- omega_k) / j (0 for "steady").
+    omega_center : float
+        The analytic candidate centre.
+    clipped : bool
+        True when a boundary is the end of the Omega range asked for.
+
+    References
+    ----------
+    Bolotin (1964), ch. 1-2; Hsu (1963).
+    """
+
+    omega_lo: float
+    omega_hi: float
+    growth_rate_max: float
+    omega_at_max: float
+    kind: str
+    modes: tuple[int, ...]
+    order: int
+    omega_center: float
+    clipped: bool = False
+
+    @property
+    def width(self) -> float:
+        """omega_hi - omega_lo."""
+        return self.omega_hi - self.omega_lo
+
+    def to_dict(self) -> dict:
+        """JSON-ready mapping."""
+        return {"omega_lo": float(self.omega_lo), "omega_hi": float(self.omega_hi),
+                "growth_rate_max": float(self.growth_rate_max),
+                "omega_at_max": float(self.omega_at_max), "kind": self.kind,
+                "modes": [int(m) for m in self.modes], "order": int(self.order),
+                "omega_center": float(self.omega_center), "clipped": bool(self.clipped)}
+
+
+@dataclass(frozen=True)
+class _Options:
+    rtol: float
+    step_phase: float
+    max_steps: int
+    max_order: int | None
+    max_candidates: int
+    chunk: int
+
+
+def _options(rtol=1e-9, step_phase=0.12, max_steps=_MAX_STEPS, max_order=None,
+             max_candidates=200_000, chunk=256) -> _Options:
+    if not (np.isfinite(rtol) and 1e-14 <= rtol <= 1e-2):
+        raise ValueError(f"rtol = {rtol!r}: must be in 1e-14..1e-2")
+    if max_order is not None and (not isinstance(max_order, int | np.integer)
+                                  or not 1 <= max_order <= 10_000):
+        raise ValueError(f"max_order = {max_order!r}: must be None or an integer in 1..10000")
+    if not isinstance(max_candidates, int | np.integer) or max_candidates < 1:
+        raise ValueError(f"max_candidates = {max_candidates!r}: must be an integer >= 1")
+    if not isinstance(max_steps, int | np.integer) or max_steps < 8:
+        raise ValueError(f"max_steps = {max_steps!r}: must be an integer >= 8")
+    if not isinstance(chunk, int | np.integer) or chunk < 1:
+        raise ValueError(f"chunk = {chunk!r}: must be an integer >= 1")
+    if not (np.isfinite(step_phase) and step_phase > 0.0):
+        raise ValueError(f"step_phase = {step_phase!r}: must be finite and > 0")
+    return _Options(float(rtol), float(step_phase), int(max_steps), max_order,
+                    int(max_candidates), int(chunk))
+
+
+def _range(omega_min, omega_max) -> tuple[float, float]:
+    for name, v in (("omega_min", omega_min), ("omega_max", omega_max)):
+        if not isinstance(v, int | float | np.floating | np.integer) or not np.isfinite(v) \
+                or v <= 0.0:
+            raise ValueError(f"{name} = {v!r}: must be finite and > 0")
+    if omega_min >= omega_max:
+        raise ValueError(f"omega_min = {omega_min!r}: must be < omega_max = {omega_max!r}")
+    return float(omega_min), float(omega_max)
+
+
+# --------------------------------------------------------------------------------------------
+# Candidates
+# --------------------------------------------------------------------------------------------
+def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Options) -> dict:
+    """Analytic centres in [lo, hi] with their first-order width estimates.
+
+    Returns arrays kind (0 simple, 1 sum, 2 difference), i, k, j, centre, est, gap (distance
+    to the nearest other centre of *any* candidate, kept or not).
+    """
+    n = w.size
+    ii, kk = np.triu_indices(n, 1)
+    base = np.concatenate([2.0 * w, w[ii] + w[kk], np.abs(w[kk] - w[ii])])
+    kind0 = np.concatenate([np.zeros(n, int), np.ones(ii.size, int), np.full(ii.size, 2)])
+    i0 = np.concatenate([np.arange(n), ii, ii])
+    k0 = np.concatenate([np.arange(n), kk, kk])
+    ok = base > 1e-12 * max(float(np.max(w)), 1e-300)
+    base, kind0, i0, k0 = base[ok], kind0[ok], i0[ok], k0[ok]
+    # all orders whose centre lies in [lo / 2, 2 hi] (for the gaps), capped
+    jmax_all = np.floor(base / (0.5 * lo)).astype(np.int64)
+    jmin_all = np.maximum(1, np.ceil(base / (2.0 * hi)).astype(np.int64))
+    counts = np.maximum(0, jmax_all - jmin_all + 1)
+    total = int(np.sum(counts))
+    if total > opt.max_candidates:
+        raise ValueError(f"omega_min = {lo!r}: {total} resonance candidates, more than "
+                         f"max_candidates = {opt.max_candidates} (omega_min too small for the "
+                         "frequencies)")
+    rep = np.repeat(np.arange(base.size), counts)
+    offs = np.arange(total) - np.repeat(np.cumsum(counts) - counts, counts)
+    j = jmin_all[rep] + offs
+    centre = base[rep] / j
+    kind, i, k = kind0[rep], i0[rep], k0[rep]
+    # gaps to the nearest other centre (all candidates)
+    order = np.argsort(centre, kind="stable")
+    cs = centre[order]
+    d = np.diff(cs)
+    left = np.concatenate([[np.inf], d])
+    right = np.concatenate([d, [np.inf]])
+    gap = np.empty(total)
+    gap[order] = np.minimum(left, right)
+    # width estimates: first order (Bolotin sec. 3 for simple, Hsu 1963 for combinations);
+    # order j: a product of j couplings along a path i -> ... -> k, bounded by
+    # Omega_c zeta_i zeta_k zeta^(j-2) with zeta_ab = |Bt_ab| / (w~_a w~_b), w~ = max(w, lo/2)
+    # (small denominators through slow modes are kept), zeta_i = max_b zeta_ib
+    wt = np.maximum(w, 0.5 * lo)
+    Z = np.abs(Bt) / np.outer(wt, wt)
+    zeta = float(np.max(Z))
+    zrow = np.max(np.maximum(Z, Z.T), axis=1)
+    jf = j.astype(float)
+    est = centre * zrow[i] * zrow[k] * zeta ** np.maximum(jf - 2.0, 0.0)
+    first = np.where(kind == 0, np.abs(Bt[i, i]) / w[i],
+                     np.sqrt(np.abs(Bt[i, k] * Bt[k, i]) / (w[i] * w[k])))
+    est = np.where(j == 1, np.maximum(first, est), est)
+    # regions narrower than the round-off floor of the indicators cannot be told from zero
+    floor = np.maximum(opt.rtol, 2.0 * np.sqrt(_F_FLOOR) / (np.pi * jf))
+    keep = (centre >= lo * (1.0 - 1e-9)) & (centre <= hi * (1.0 + 1e-9))
+    keep |= (centre + 2.0 * est >= lo) & (centre - 2.0 * est <= hi)
+    keep &= est >= 1e-2 * floor * centre
+    if opt.max_order is not None:
+        keep &= j <= opt.max_order
+    return {"kind": kind[keep], "i": i[keep], "k": k[keep], "j": j[keep],
+            "centre": centre[keep], "est": est[keep], "gap": gap[keep]}
+
+
+# --------------------------------------------------------------------------------------------
+# Indicators (vectorised over candidates)
+# --------------------------------------------------------------------------------------------
+def _s_values(system: LinearPeriodicSystem, om: np.ndarray, opt: _Options) -> tuple:
+    """(s, s - 2, s + 2) at om (see :func:`.multipliers._s_sets_from_half`)."""
+    steps = step_counts(system, om, step_phase=opt.step_phase, max_steps=opt.max_steps)
+    return _s_sets_from_half(_half_maps(system, om, steps, opt.chunk))
+
+
+def _indicator(system, w, cand, om, opt) -> np.ndarray:
+    """F per candidate at om (same length as the candidate arrays)."""
+    s, xp, xm = _s_values(system, om, opt)
+    P = om.size
+    rows = np.arange(P)
+    sig = np.where(cand["j"] % 2 == 0, 1.0, -1.0)
+    # the s of each mode is tracked from its gamma -> 0 value 2 cos(2 pi omega / Omega)
+    p_i = 2.0 * np.cos(2.0 * np.pi * w[cand["i"]] / om)
+    p_k = 2.0 * np.cos(2.0 * np.pi * w[cand["k"]] / om)
+    d_i = np.abs(s - p_i[:, None])
+    first = np.argmin(d_i, axis=1)
+    # simple: F = (-1)^j Re s_i - 2 > 0 where s_i is real beyond +-2 (rho = +-1 at F = 0),
+    # taken from the shifted set s -+ 2 (no cancellation); a complex s_i belongs to a
+    # combination pair: F <= -|Im s_i| there
+    x = np.where((sig > 0.0)[:, None], xp, xm)  # s - 2 sigma
+    near = np.argmin(np.abs(x + 2.0 * sig[:, None] - p_i[:, None]), axis=1)
+    x_i = x[rows, near]
+    f_simple = sig * x_i.real  # sigma (s - 2 sigma) = sigma s - 2
+    f_simple = np.where(x_i.imag == 0.0, f_simple, np.minimum(f_simple, -np.abs(x_i.imag)))
+    if s.shape[1] >= 2:
+        # combination: the s nearest to each prediction; F = -Re (s_a - s_b)^2 > 0 where the
+        # pair is complex (left |rho| = 1), 0 where it collides on |rho| = 1
+        d_k = np.abs(s - p_k[:, None])
+        d_k[rows, first] = np.inf
+        second = np.argmin(d_k, axis=1)
+        f_comb = -((s[rows, first] - s[rows, second]) ** 2).real
+    else:
+        f_comb = np.full(P, -1.0)
+    return np.where(cand["kind"] == 0, f_simple, f_comb)
+
+
+def _unstable_indicator(system, om, opt) -> np.ndarray:
+    """U > 0 exactly where the undamped system is unstable; U = 0 on |rho|_max = 1.
+
+    U = max(max_a |Re s_a| - 2, max_{a<b} -Re (s_a - s_b)^2) - floor: positive when some s is
+    real outside [-2, 2] (multipliers rho != +-1 real) or a pair is complex (multipliers off
+    the unit circle); continuous in Omega and crossing 0 linearly at both kinds of boundary.
+    The floor discounts round-off (a nearly double real s may come out complex, Im ~ 1e-8).
+    """
+    s, xp, xm = _s_values(system, om, opt)
+    # |s| - 2 from the shifted sets: s - 2 where Re s >= 0, -(s + 2) where Re s < 0
+    up = np.where((xp.real + 2.0) >= 0.0, xp.real, -np.inf)
+    um = np.where((xm.real - 2.0) < 0.0, -xm.real, -np.inf)
+    u = np.maximum(np.max(up, axis=1), np.max(um, axis=1))
+    n = s.shape[1]
+    if n >= 2:
+        a, b = np.triu_indices(n, 1)
+        u = np.maximum(u, np.max(-((s[:, a] - s[:, b]) ** 2).real, axis=1))
+    return u - _F_FLOOR
+
+
+def _growth_undamped(system, om, opt) -> np.ndarray:
+    _, xp, xm = _s_values(system, om, opt)
+    return np.log(_rho_max_from_sets(xp, xm)) * om / (2.0 * np.pi)  # log|rho|_max / T
+
+
+def _growth_damped(system, om, opt) -> np.ndarray:
+    steps = step_counts(system, om, step_phase=opt.step_phase, max_steps=opt.max_steps)
+    rho = np.linalg.eigvals(_full_maps(system, om, steps, opt.chunk))
+    return np.log(np.max(np.abs(rho), axis=1)) * om / (2.0 * np.pi)  # log|rho|_max / T
+
+
+# --------------------------------------------------------------------------------------------
+# Vectorised scalar solvers
+# --------------------------------------------------------------------------------------------
+def _golden_max(f, a: np.ndarray, b: np.ndarray, xtol: np.ndarray, max_iter: int = 200,
+                stop_positive: bool = False) -> tuple[np.ndarray, np.ndarray]:
+    """Maximise f (vectorised) on [a, b] by golden section to |b - a| <= xtol.
+
+    With ``stop_positive`` a point stops as soon as f > 0 somewhere (the region is found; its
+    boundaries are bracketed from there).
+    """
+    a, b = a.copy(), b.copy()
+    x1 = b - _GOLD * (b - a)
+    x2 = a + _GOLD * (b - a)
+    every = np.arange(a.size)
+    f1, f2 = f(x1, every), f(x2, every)
+    for _ in range(max_iter):
+        done = b - a <= xtol
+        if stop_positive:
+            done |= (f1 > 0.0) | (f2 > 0.0)
+        if np.all(done):
+            break
+        right = f2 > f1  # max in [x1, b]
+        act = np.nonzero(~done)[0]
+        r_ = right[act]
+        a[act] = np.where(r_, x1[act], a[act])
+        b[act] = np.where(r_, b[act], x2[act])
+        xn = np.where(r_, a[act] + _GOLD * (b[act] - a[act]), b[act] - _GOLD * (b[act] - a[act]))
+        fn = f(xn, act)
+        x1[act], f1[act], x2[act], f2[act] = (
+            np.where(r_, x2[act], xn), np.where(r_, f2[act], fn),
+            np.where(r_, xn, x1[act]), np.where(r_, fn, f1[act]))
+    else:
+        raise ValueError(f"golden section: no convergence in {max_iter} iterations")
+    best = f1 >= f2
+    return np.where(best, x1, x2), np.where(best, f1, f2)
+
+
+def _brent_max(f, a: np.ndarray, b: np.ndarray, x0: np.ndarray, xtol: np.ndarray,
+               max_iter: int = 200, stop_positive: bool = False) -> tuple[np.ndarray, np.ndarray]:
+    """Maximise f on [a, b] from x0: Brent's golden section + parabolic steps, vectorised.
+
+    f(x, idx) evaluates the points idx only.  Parabolic steps converge superlinearly on the
+    smooth indicators (they are nearly quadratic near a candidate), golden steps guarantee
+    convergence.  With ``stop_positive`` a point stops as soon as f > floor somewhere.
+    (Brent 1973, ch. 5, procedure localmin, for -f.)
+    """
+    cgold = 0.5 * (3.0 - np.sqrt(5.0))
+    a, b = a.copy(), b.copy()
+    x = np.clip(x0, a, b)
+    fx = -f(x, np.arange(x.size))
+    w, v, fw, fv = x.copy(), x.copy(), fx.copy(), fx.copy()
+    d = np.zeros(x.size)
+    e = np.zeros(x.size)
+    done = np.zeros(x.size, dtype=bool)
+    for _ in range(max_iter):
+        xm = 0.5 * (a + b)
+        tol1 = 1.5e-8 * np.abs(x) + xtol / 3.0
+        tol2 = 2.0 * tol1
+        done |= np.abs(x - xm) <= tol2 - 0.5 * (b - a)
+        if stop_positive:
+            done |= -fx > _F_FLOOR
+        act = np.nonzero(~done)[0]
+        if act.size == 0:
+            return x, -fx
+        X, W, V, FX, FW, FV = x[act], w[act], v[act], fx[act], fw[act], fv[act]
+        A_, B_, D, E, T1, T2, XM = a[act], b[act], d[act], e[act], tol1[act], tol2[act], xm[act]
+        r = (X - W) * (FX - FV)
+        q = (X - V) * (FX - FW)
+        p = (X - V) * q - (X - W) * r
+        q = 2.0 * (q - r)
+        p = np.where(q > 0.0, -p, p)
+        q = np.abs(q)
+        try_par = np.abs(E) > T1
+        with np.errstate(divide="ignore", invalid="ignore"):
+            par = try_par & (np.abs(p) < np.abs(0.5 * q * E)) & (p > q * (A_ - X)) & (
+                p < q * (B_ - X))
+            dpar = np.where(par, p / np.where(q == 0.0, 1.0, q), 0.0)
+        upar = X + dpar
+        near_end = ((upar - A_) < T2) | ((B_ - upar) < T2)
+        dpar = np.where(near_end, np.where(XM - X >= 0.0, T1, -T1), dpar)
+        egold = np.where(X >= XM, A_ - X, B_ - X)
+        E_new = np.where(par, D, egold)  # e <- d (parabolic) or the golden interval
+        D_new = np.where(par, dpar, cgold * egold)
+        U = X + np.where(np.abs(D_new) >= T1, D_new, np.where(D_new >= 0.0, T1, -T1))
+        FU = -f(U, act)
+        better = FU <= FX
+        a[act] = np.where(better, np.where(U >= X, X, A_), np.where(U < X, U, A_))
+        b[act] = np.where(better, np.where(U >= X, B_, X), np.where(U < X, B_, U))
+        c1 = ~better & ((FU <= FW) | (W == X))
+        c2 = ~better & ~c1 & ((FU <= FV) | (V == X) | (V == W))
+        v[act] = np.where(better | c1, W, np.where(c2, U, V))
+        fv[act] = np.where(better | c1, FW, np.where(c2, FU, FV))
+        w[act] = np.where(better, X, np.where(c1, U, W))
+        fw[act] = np.where(better, FX, np.where(c1, FU, FW))
+        x[act] = np.where(better, U, X)
+        fx[act] = np.where(better, FU, FX)
+        d[act], e[act] = D_new, E_new
+    raise ValueError(f"maximiser: no convergence in {max_iter} iterations")
+
+
+def _illinois(f, x_in: np.ndarray, f_in: np.ndarray, x_out: np.ndarray, f_out: np.ndarray,
+              xtol: np.ndarray, max_iter: int = 200) -> np.ndarray:
+    """Root of f between x_in (f > 0) and x_out (f <= 0), Illinois regula falsi, vectorised.
+
+    f(x, idx) evaluates the points idx only.
+    """
+    a, fa, b, fb = x_in.copy(), f_in.copy(), x_out.copy(), f_out.copy()
+    last = np.zeros(a.size, dtype=int)  # which end moved last (+1 a, -1 b)
+    for _ in range(max_iter):
+        act = np.nonzero(np.abs(b - a) > xtol)[0]
+        if act.size == 0:
+            return 0.5 * (a + b)
+        A_, FA, B_, FB = a[act], fa[act], b[act], fb[act]
+        x = np.where(FA != FB, B_ - FB * (B_ - A_) / (FB - FA), 0.5 * (A_ + B_))
+        lo_, hi_ = np.minimum(A_, B_), np.maximum(A_, B_)
+        x = np.where((x > lo_) & (x < hi_), x, 0.5 * (A_ + B_))
+        # keep the new point at least xtol/2 inside so that the bracket always shrinks
+        tol = 0.5 * xtol[act]
+        x = np.clip(x, lo_ + tol, hi_ - tol)
+        fx = f(x, act)
+        pos = fx > 0.0
+        # Illinois: halve the value at the end that stays twice in a row
+        fb[act] = np.where(pos & (last[act] == 1), 0.5 * FB, FB)
+        fa[act] = np.where(~pos & (last[act] == -1), 0.5 * FA, FA)
+        a[act] = np.where(pos, x, A_)
+        fa[act] = np.where(pos, fx, fa[act])
+        b[act] = np.where(pos, B_, x)
+        fb[act] = np.where(pos, fb[act], fx)
+        last[act] = np.where(pos, 1, -1)
+    raise ValueError(f"boundary refinement: no convergence in {max_iter} iterations")
+
+
+def _expand(f, x0: np.ndarray, d0: np.ndarray, direction, limit: np.ndarray,
+            max_iter: int = 80) -> tuple[np.ndarray, ...]:
+    """March from x0 (f > 0) by d0 * 3^m until f <= 0 or the range end; vectorised.
+
+    Returns (x_in, f_in, x_out, f_out, clipped).
+    """
+    x_in = x0.copy()
+    f_in = np.full(x0.size, np.inf)
+    x_out = x0.copy()
+    f_out = np.zeros(x0.size)
+    clipped = np.zeros(x0.size, dtype=bool)
+    open_ = np.ones(x0.size, dtype=bool)
+    d = d0.copy()
+    for _ in range(max_iter):
+        if not open_.any():
+            return x_in, f_in, x_out, f_out, clipped
+        x = x0 + direction * d
+        past = direction * (x - limit) >= 0.0
+        x = np.where(past, limit, x)
+        idx = np.nonzero(open_)[0]
+        fx = f(x[idx], idx)
+        inside = fx > 0.0
+        out_i, in_i = idx[~inside], idx[inside]
+        x_out[out_i], f_out[out_i] = x[out_i], fx[~inside]
+        x_in[in_i], f_in[in_i] = x[in_i], fx[inside]
+        open_[out_i] = False
+        hit = in_i[past[in_i]]
+        clipped[hit] = True
+        open_[hit] = False
+        d = d * 3.0
+    raise ValueError(f"boundary bracketing: no sign change in {max_iter} expansions")
+
+
+def _edges(f, x0: np.ndarray, f0: np.ndarray, d0: np.ndarray, direction,
+           limit: np.ndarray, xtol: np.ndarray, scale: np.ndarray,
+           max_rounds: int = 6) -> tuple[np.ndarray, np.ndarray]:
+    """First boundary from x0 (f(x0) > 0) in ``direction``: bracket, refine, then check.
+
+    The outward march takes growing steps and could jump over a stable gap between two
+    adjacent regions; so points between x0 and the refined root are evaluated (8, or 64 when
+    the distance exceeds 4 ``scale``, the expected half-width) and, if one of them has f <= 0,
+    the root is searched again between it and its inner neighbour (up to ``max_rounds``
+    times).  Gaps narrower than the check spacing can still be missed (the region is then
+    reported too wide, never lost).  Returns (root, clipped).
+    """
+    xi, fi, xo, fo, clip = _expand(f, x0, d0, direction, limit)
+    fi = np.where(np.isinf(fi), f0, fi)
+    root = np.where(clip, limit, xo)
+
+    def refine(idx, a, fa, b, fb):
+        return _illinois(lambda x, act: f(x, idx[act]), a, fa, b, fb, xtol[idx])
+
+    idx = np.nonzero(~clip)[0]
+    if idx.size:
+        root[idx] = refine(idx, xi[idx], fi[idx], xo[idx], fo[idx])
+    for _ in range(max_rounds):
+        redo_all = []
+        for n_check, sel in ((8, np.abs(root - x0) <= 4.0 * scale),
+                             (64, np.abs(root - x0) > 4.0 * scale)):
+            ids = np.nonzero(sel)[0]
+            if ids.size == 0:
+                continue
+            frac = np.arange(1, n_check + 1) / (n_check + 1.0)
+            pts = x0[ids, None] + (root - x0)[ids, None] * frac[None, :]
+            fp = f(pts.ravel(), np.repeat(ids, n_check)).reshape(pts.shape)
+            gap = fp <= 0.0
+            bad = np.nonzero(np.any(gap, axis=1))[0]
+            if bad.size == 0:
+                continue
+            first = np.argmax(gap[bad], axis=1)
+            prev = np.maximum(first - 1, 0)
+            b = pts[bad, first]
+            fb = fp[bad, first]
+            a = np.where(first > 0, pts[bad, prev], x0[ids[bad]])
+            fa = np.where(first > 0, fp[bad, prev], f0[ids[bad]])
+            redo_all.append((ids[bad], a, fa, b, fb))
+        if not redo_all:
+            return root, clip
+        for redo, a, fa, b, fb in redo_all:
+            root[redo] = refine(redo, a, fa, b, fb)
+            clip[redo] = False
+    return root, clip
+
+
+# --------------------------------------------------------------------------------------------
+# The search
+# --------------------------------------------------------------------------------------------
+def _steady_check(system: LinearPeriodicSystem):
+    """(stable, growth, unstable modes) of the steady system (B = 0)."""
+    n = system.n
+    L0 = np.block([[np.zeros((n, n)), np.eye(n)], [-system.K0, -system.Kc]])
+    lam = np.linalg.eigvals(L0)
+    scale = max(float(np.max(np.abs(lam))), 1e-300)
+    mu = system.mu
+    bad = (np.abs(mu.imag) > 1e-10 * max(float(np.max(np.abs(mu))), 1e-300)) | (mu.real <= 0.0)
+    growth = float(np.max(lam.real))
+    unstable = bool(np.any(bad)) or growth > 1e-12 * scale
+    return not unstable, max(growth, 0.0) + 0.0, tuple(int(m) for m in np.nonzero(bad)[0])
+
+
+def _undamped_search(system, w, cand, lo, hi, opt) -> list[dict]:
+    """Regions of the undamped system for the candidate table; list of plain dicts."""
+    if cand["centre"].size == 0:
+        return []
+    Oc = cand["centre"]
+    xtol = opt.rtol * Oc
+
+    def F(x, idx=None):
+        sub = cand if idx is None else {key: v[idx] for key, v in cand.items()}
+        return _indicator(system, w, sub, x, opt)
+
+    # window: no other candidate inside (F stays unimodal), at least the estimated width
+    delta = np.maximum(0.45 * cand["gap"], np.minimum(2.0 * cand["est"], 0.2 * Oc / cand["j"]))
+    a = np.maximum(Oc - delta, 0.5 * Oc)
+    b = Oc + delta
+    xs, fs = _brent_max(F, a, b, Oc, np.maximum(10.0 * xtol, 1e-15 * Oc), stop_positive=True)
+    hit = np.nonzero(fs > _F_FLOOR)[0]
+    if hit.size == 0:
+        return []
+    sub = {key: v[hit] for key, v in cand.items()}
+    x0 = xs[hit]
+    f0 = fs[hit]
+    d0 = np.maximum(np.minimum(sub["est"], delta[hit]) / 4.0, 4.0 * xtol[hit])
+
+    def Fo(x, idx):  # this candidate's own pair indicator
+        return _indicator(system, w, {key: v[idx] for key, v in sub.items()}, x, opt)
+
+    def U(x, idx):  # the whole system: unstable where > 0
+        return _unstable_indicator(system, x, opt)
+
+    scale = np.maximum(sub["est"], 4.0 * xtol[hit])
+    out = []
+    # both edges in one batch: entries 0..P-1 go down, P..2P-1 go up
+    P = hit.size
+    direction = np.concatenate([-np.ones(P), np.ones(P)])
+    limit = np.concatenate([np.full(P, lo), np.full(P, hi)])
+    X0, F0, D0 = (np.concatenate([v, v]) for v in (x0, f0, d0))
+    XT, SC = np.concatenate([xtol[hit], xtol[hit]]), np.concatenate([scale, scale])
+    # stage 1: where this candidate's pair returns to |rho| = 1
+    edge, clip = _edges(lambda x, idx: Fo(x, idx % P), X0, F0, D0, direction, limit, XT, SC)
+    # stage 2: if the system is still unstable just beyond (an overlapping region), go on to
+    # the first Omega where it is stable: the boundary is |rho|_max = 1
+    beyond = edge + direction * 4.0 * XT
+    go = np.nonzero(~clip & (direction * (limit - beyond) > 0.0))[0]
+    if go.size:
+        u = U(beyond[go], None)
+        go, u = go[u > 0.0], u[u > 0.0]
+    if go.size:
+        e2, c2 = _edges(lambda x, idx: U(x, None), beyond[go], u,
+                        np.maximum(D0[go], 4.0 * XT[go]), direction[go], limit[go], XT[go],
+                        SC[go])
+        edge[go], clip[go] = e2, c2
+    olo, ohi, clo, chi = edge[:P], edge[P:], clip[:P], clip[P:]
+    olo, ohi = np.maximum(olo, lo), np.minimum(ohi, hi)
+    for m in range(hit.size):
+        if ohi[m] - olo[m] <= xtol[hit][m] or ohi[m] <= lo or olo[m] >= hi:
+            continue
+        out.append({"lo": float(olo[m]), "hi": float(ohi[m]), "kind": int(sub["kind"][m]),
+                    "i": int(sub["i"][m]), "k": int(sub["k"][m]), "j": int(sub["j"][m]),
+                    "centre": float(sub["centre"][m]), "clipped": bool(clo[m] or chi[m])})
+    return out
+
+
+def _damped_search(system, undamped, opt) -> list[dict]:
+    """Regions with damping, seeded by the undamped regions (see module docstring)."""
+    if not undamped:
+        return []
+    lo_u = np.array([r["lo"] for r in undamped])
+    hi_u = np.array([r["hi"] for r in undamped])
+    width = hi_u - lo_u
+    nsamp = 9
+    grid = lo_u[:, None] + width[:, None] * np.linspace(0.0, 1.0, nsamp)[None, :]
+    g = _growth_damped(system, grid.ravel(), opt).reshape(grid.shape)
+    best = np.argmax(g, axis=1)
+    rows = np.arange(lo_u.size)
+    a = grid[rows, np.maximum(best - 1, 0)]
+    b = grid[rows, np.minimum(best + 1, nsamp - 1)]
+    xtol = opt.rtol * 0.5 * (lo_u + hi_u)
+
+    def G(x, idx=None):
+        return _growth_damped(system, x, opt)
+
+    xs, gs = _golden_max(G, a, b, np.maximum(10.0 * xtol, 1e-15 * hi_u), stop_positive=True)
+    hit = np.nonzero(gs > 0.0)[0]
+    out = []
+    if hit.size == 0:
+        return out
+    x0, g0 = xs[hit], gs[hit]
+    d0 = np.maximum(width[hit] / 16.0, 4.0 * xtol[hit])
+    lo_lim = np.array([undamped[m]["lo"] for m in hit]) - 4.0 * width[hit]
+    hi_lim = np.array([undamped[m]["hi"] for m in hit]) + 4.0 * width[hit]
+    P = hit.size
+    edge = _edges(lambda x, idx: G(x), np.concatenate([x0, x0]), np.concatenate([g0, g0]),
+                  np.concatenate([d0, d0]), np.concatenate([-np.ones(P), np.ones(P)]),
+                  np.concatenate([lo_lim, hi_lim]), np.concatenate([xtol[hit], xtol[hit]]),
+                  np.concatenate([0.5 * width[hit], 0.5 * width[hit]]))[0]
+    bounds = (edge[:P], edge[P:])
+    for m_, m in enumerate(hit):
+        r = dict(undamped[m])
+        r["lo"], r["hi"] = float(bounds[0][m_]), float(bounds[1][m_])
+        out.append(r)
+    return out
+
+
+def _finish(system, regions, lo, hi, opt, damped) -> tuple[InstabilityRegion, ...]:
+    """Clip to the range, drop duplicates, maximise the growth rate inside each region."""
+    regs = []
+    quantum = 100.0 * opt.rtol * hi
+
+    def order(r):  # by the lower edge (to the tolerance), then the lowest order first
+        return (round(r["lo"] / quantum), r["j"], r["kind"])
+
+    for r in sorted(regions, key=order):
+        r = dict(r)
+        if r["lo"] < lo:
+            r["lo"], r["clipped"] = lo, True
+        if r["hi"] > hi:
+            r["hi"], r["clipped"] = hi, True
+        if r["hi"] <= r["lo"]:
+            continue
+        tol = 10.0 * opt.rtol * r["hi"]
+        if any(abs(q["lo"] - r["lo"]) <= tol and abs(q["hi"] - r["hi"]) <= tol for q in regs):
+            continue  # the same region reached from two candidates
+        regs.append(r)
+    if not regs:
+        return ()
+    a = np.array([r["lo"] for r in regs])
+    b = np.array([r["hi"] for r in regs])
+    grow = _growth_damped if damped else _growth_undamped
+
+    def G(x, idx=None):
+        return grow(system, x, opt)
+
+    nsamp = 9  # a region may be a union of overlapping ones: sample, then golden section
+    grid = a[:, None] + (b - a)[:, None] * np.linspace(0.0, 1.0, nsamp)[None, :]
+    gg = G(grid.ravel()).reshape(grid.shape)
+    best = np.argmax(gg, axis=1)
+    rows = np.arange(a.size)
+    a2 = grid[rows, np.maximum(best - 1, 0)]
+    b2 = grid[rows, np.minimum(best + 1, nsamp - 1)]
+    xm, gm = _brent_max(G, a2, b2, grid[rows, best], np.maximum(1e-4 * (b2 - a2), 1e-15 * b2))
+    out = []
+    for m, r in enumerate(regs):
+        modes = (r["i"],) if r["kind"] == 0 else (r["i"], r["k"])
+        out.append(InstabilityRegion(
+            omega_lo=r["lo"], omega_hi=r["hi"], growth_rate_max=float(max(gm[m], 0.0)),
+            omega_at_max=float(xm[m]), kind=_KINDS[r["kind"]], modes=modes, order=r["j"],
+            omega_center=r["centre"], clipped=r["clipped"]))
+    return tuple(out)
+
+
+def _search(system: LinearPeriodicSystem, lo: float, hi: float, opt: _Options,
+            select=None) -> tuple[InstabilityRegion, ...]:
+    stable, growth, bad = _steady_check(system)
+    if not stable:
+        return (InstabilityRegion(omega_lo=lo, omega_hi=hi, growth_rate_max=growth,
+                                  omega_at_max=lo, kind="steady", modes=bad, order=0,
+                                  omega_center=lo, clipped=True),)
+    undamped = system if not system.damped else LinearPeriodicSystem(
+        K0=system.K0, Kc=np.zeros_like(system.Kc), Kb=system.Kb, damped=False, mu=system.mu,
+        V=system.V, Bt=system.Bt)
+    if undamped.Bt is None:
+        raise ValueError("A = the steady matrix M^-1 A is defective (no modal frame): "
+                         "instability_regions needs distinct or semisimple eigenvalues")
+    w = np.sqrt(system.mu.real)
+    cand = _candidates(w, undamped.Bt, lo, hi, opt)
+    if select is not None:
+        keep = select(cand)
+        cand = {key: v[keep] for key, v in cand.items()}
+    if system.damped:  # seeds from the undamped system, searched a little wider
+        regs = _undamped_search(undamped, w, cand, 0.5 * lo, 2.0 * hi, opt)
+        regs = _damped_search(system, regs, opt)
+    else:
+        regs = _undamped_search(undamped, w, cand, lo, hi, opt)
+    return _finish(system, regs, lo, hi, opt, system.damped)
+
+
+def instability_regions(M, C, A, B, omega_min: float, omega_max: float, *,
+                        rtol: float = 1e-9, step_phase: float = 0.12,
+                        max_steps: int = _MAX_STEPS, max_order: int | None = None,
+                        max_candidates: int = 200_000,
+                        chunk: int = 256) -> tuple[InstabilityRegion, ...]:
+    """Instability regions in Omega in [omega_min, omega_max], from the analytic candidates.
+
+    Parameters
+    ----------
+    M, C, A, B : array_like
+        The system M q'' + C q' + (A + B cos Omega t) q = 0, each (n, n) (C may be None).
+    omega_min, omega_max : float
+        Range of Omega (rad per time unit of the matrices), 0 < omega_min < omega_max.
+    rtol : float
+        Boundary tolerance relative to the candidate centre (dimensionless), 1e-14..1e-2:
+        every boundary is refined on |rho|_max = 1 to rtol * Omega_c; regions narrower than
+        that are not reported.
+    step_phase, max_steps, chunk
+        Monodromy accuracy, cap and batch size (see
+        :func:`flexbooster.floquet.multipliers.monodromy`); the search's default step_phase
+        0.12 (half the steps of 0.06) errs by ~2e-8 on the edges of the damped Mathieu test
+        and leaves the default-case edges unchanged to 3e-10 relative.
+    max_order : int, optional
+        Largest order j examined (default: every order whose estimated width, Omega_c zeta^j
+        with zeta the largest modal coupling |Bt_ab| / (omega_a omega_b), exceeds 1e-3 rtol
+        Omega_c).
+    max_candidates : int
+        Cap on the number of resonance centres enumerated (ValueError beyond it).
+
+    Returns
+    -------
+    tuple of InstabilityRegion
+        Sorted by omega_lo; every edge is a point of |rho|_max = 1 (or an end of the range,
+        ``clipped``); overlapping regions come as their union, labelled by the lowest-order
+        candidate that reached it.  Regions narrower than about 6e-8 / j of their centre are
+        below the round-off floor of the indicators and not reported.  If the steady system
+        (B = 0) is itself unstable (complex or non-positive eigenvalues of M^-1 A, or a damped
+        steady system with a growing mode) the result is one region of kind "steady" over the
+        whole range.
+
+    Raises
+    ------
+    ValueError
+        Bad input (naming the argument), too many candidates, or a step count over the cap.
+
+    References
+    ----------
+    Bolotin (1964), ch. 1-2 and sec. 6; Hsu (1963); Magnus & Winkler (1966), ch. 2;
+    Takahashi (1981).
+    """
+    lo, hi = _range(omega_min, omega_max)
+    opt = _options(rtol, step_phase, max_steps, max_order, max_candidates, chunk)
+    return _search(periodic_system(M, C, A, B), lo, hi, opt)
+
+
+# --------------------------------------------------------------------------------------------
+# Amplitude dependence
+# --------------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class CriticalAmplitude:
+    """Smallest amplitude gamma at which a region exists (B = gamma B1).
+
+    Attributes
+    ----------
+    kind, modes, order : str, tuple of int, int
+        The region (see :class:`InstabilityRegion`).
+    gamma_cr : float
+        Critical amplitude (dimensionless); 0 without damping.
+    omega_cr : float
+        Omega where the region appears (rad per time unit).
+
+    References
+    ----------
+    Bolotin (1964), sec. 6.
+    """
+
+    kind: str
+    modes: tuple[int, ...]
+    order: int
+    gamma_cr: float
+    omega_cr: float
+
+    def to_dict(self) -> dict:
+        """JSON-ready mapping."""
+        return {"kind": self.kind, "modes": [int(m) for m in self.modes],
+                "order": int(self.order), "gamma_cr": float(self.gamma_cr),
+                "omega_cr": float(self.omega_cr)}
+
+
+@dataclass(frozen=True)
+class RegionBoundary:
+    """Boundary curves of one region in the (Omega, gamma) plane (B = gamma B1).
+
+    Attributes
+    ----------
+    kind, modes, order : str, tuple of int, int
+        The region.
+    gamma : numpy.ndarray
+        Amplitudes (dimensionless) at which the region exists, ascending; the first is the
+        critical amplitude (0 without damping), where omega_lo = omega_hi.
+    omega_lo, omega_hi : numpy.ndarray
+        Boundaries at each gamma (rad per time unit).
+
+    References
+    ----------
+    Bolotin (1964), ch. 1 (regions in the (Omega, mu) plane), sec. 6.
+    """
+
+    kind: str
+    modes: tuple[int, ...]
+    order: int
+    gamma: np.ndarray
+    omega_lo: np.ndarray
+    omega_hi: np.ndarray
+
+    def to_dict(self) -> dict:
+        """JSON-ready mapping."""
+        return {"kind": self.kind, "modes": [int(m) for m in self.modes],
+                "order": int(self.order), "gamma": self.gamma.tolist(),
+                "omega_lo": self.omega_lo.tolist(), "omega_hi": self.omega_hi.tolist()}
+
+
+def _gamma_max(gamma_max) -> float:
+    if not isinstance(gamma_max, int | float | np.floating | np.integer) or not np.isfinite(
+            gamma_max) or gamma_max <= 0.0:
+        raise ValueError(f"gamma_max = {gamma_max!r}: must be finite and > 0")
+    return float(gamma_max)
+
+
+def _key(r) -> tuple:
+    return (r.kind, r.modes, r.order)
+
+
+def critical_amplitude(M, C, A, B1, *, gamma_max: float, omega_min: float, omega_max: float,
+                       gamma_rtol: float = 1e-6,
+                       **options) -> tuple[CriticalAmplitude, ...]:
+    """Critical amplitude of every region that exists at gamma_max (B = gamma B1).
+
+    Without damping every region grows out of its candidate centre at gamma = 0.  With damping
+    the largest growth rate near the region, g(gamma) = max_Omega log|rho|_max / T, is negative
+    at gamma = 0 and positive at gamma_max; its root (brentq) is the amplitude at which the two
+    boundaries meet (Bolotin 1964, sec. 6: mu_cr = Delta / pi for the damped Mathieu equation).
+
+    Parameters
+    ----------
+    M, C, A, B1 : array_like
+        The system with B = gamma B1 (see :func:`instability_regions`).
+    gamma_max : float
+        Largest amplitude (dimensionless), > 0.
+    omega_min, omega_max : float
+        Omega range (rad per time unit).
+    gamma_rtol : float
+        Relative tolerance on gamma_cr (dimensionless).
+    **options
+        Passed to :func:`instability_regions`.
+
+    Returns
+    -------
+    tuple of CriticalAmplitude
+        One per region found at gamma_max (steady regions are skipped).
+
+    References
+    ----------
+    Bolotin (1964), sec. 6 (damping), ch. 1-2.
+    """
+    gmax = _gamma_max(gamma_max)
+    lo, hi = _range(omega_min, omega_max)
+    opt = _options(**options)
+    B1 = np.asarray(B1, dtype=float)
+    base = periodic_system(M, C, A, gmax * B1)
+    top = _search(base, lo, hi, opt)
+    out = []
+    for r in top:
+        if r.kind == "steady":
+            continue
+        if not base.damped:
+            out.append(CriticalAmplitude(r.kind, r.modes, r.order, 0.0, r.omega_center))
+            continue
+
+        def peak(g, r=r):
+            sys_g = periodic_system(M, C, A, g * B1)
+            regs = [q for q in _search(sys_g, lo, hi, opt, select=_selector(r)) if
+                    _key(q) == _key(r)]
+            if regs:
+                return regs[0].growth_rate_max, regs[0].omega_at_max
+            return -1.0, r.omega_center
+
+        glo = gmax * 1e-3
+        while peak(glo)[0] > 0.0 and glo > 1e-12 * gmax:
+            glo *= 0.1
+        g_cr = scipy.optimize.brentq(lambda g: peak(g)[0], glo, gmax, xtol=gamma_rtol * gmax,
+                                     maxiter=200)
+        out.append(CriticalAmplitude(r.kind, r.modes, r.order, float(g_cr),
+                                     float(peak(min(gmax, g_cr * (1 + 10 * gamma_rtol)))[1])))
+    return tuple(out)
+
+
+def _selector(r):
+    kind = _KINDS.index(r.kind)
+    i = r.modes[0]
+    k = r.modes[-1]
+
+    def select(cand):
+        return (cand["kind"] == kind) & (cand["i"] == i) & (cand["k"] == k) & (
+            cand["j"] == r.order)
+
+    return select
+
+
+def region_boundaries(M, C, A, B1, *, gamma_max: float, omega_min: float, omega_max: float,
+                      n_gamma: int = 21, **options) -> tuple[RegionBoundary, ...]:
+    """Boundary curves omega_lo(gamma), omega_hi(gamma) of every region (B = gamma B1).
+
+    At each of ``n_gamma`` amplitudes in (0, gamma_max] the boundaries are solved from the
+    boundary conditions (:func:`instability_regions`, refined on |rho| = 1), and matched to the
+    regions found at gamma_max by (kind, modes, order).  The tip is (0, Omega_c, Omega_c)
+    without damping and (gamma_cr, omega_cr, omega_cr) from :func:`critical_amplitude` with
+    damping.
+
+    Parameters
+    ----------
+    M, C, A, B1 : array_like
+        The system with B = gamma B1.
+    gamma_max : float
+        Largest amplitude (dimensionless), > 0.
+    omega_min, omega_max : float
+        Omega range (rad per time unit).
+    n_gamma : int
+        Number of amplitude levels, 2..1000.
+    **options
+        Passed to :func:`instability_regions`.
+
+    Returns
+    -------
+    tuple of RegionBoundary
+        One per region at gamma_max.
+
+    References
+    ----------
+    Bolotin (1964), ch. 1 (figs. of the regions in the (Omega, mu) plane), sec. 6.
+    """
+    gmax = _gamma_max(gamma_max)
+    lo, hi = _range(omega_min, omega_max)
+    if isinstance(n_gamma, bool) or not isinstance(n_gamma, int | np.integer) or not (
+            2 <= n_gamma <= 1000):
+        raise ValueError(f"n_gamma = {n_gamma!r}: must be an integer in 2..1000")
+    opt = _options(**options)
+    B1 = np.asarray(B1, dtype=float)
+    crit = critical_amplitude(M, C, A, B1, gamma_max=gmax, omega_min=lo, omega_max=hi,
+                              **options)
+    levels = np.linspace(0.0, gmax, n_gamma)[1:]
+    found = [_search(periodic_system(M, C, A, g * B1), lo, hi, opt) for g in levels]
+    out = []
+    for c in crit:
+        key = (c.kind, c.modes, c.order)
+        g, a, b = [c.gamma_cr], [c.omega_cr], [c.omega_cr]
+        for lev, regs in zip(levels, found, strict=True):
+            match = [r for r in regs if _key(r) == key]
+            if match and lev > c.gamma_cr:
+                g.append(float(lev))
+                a.append(match[0].omega_lo)
+                b.append(match[0].omega_hi)
+        out.append(RegionBoundary(c.kind, c.modes, c.order, np.array(g), np.array(a),
+                                  np.array(b)))
+    return tuple(out)

@@ -1,0 +1,574 @@
+"""flexbooster.floquet: monodromy, Hill's method, instability regions (docs/theory/floquet.md).
+
+Tiers: (1) exact limits and closed forms (Mathieu edges from scipy.special, steady propagator,
+det = 1), (2) literature / independent models (damped Mathieu threshold of Bolotin, Hsu's
+combination resonances, solve_ivp monodromy, brute-force scans), (3) invariants (Hill vs
+monodromy, harmonic balance vs monodromy, truncation, range independence), and bad input.
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+from scipy.optimize import brentq
+from scipy.special import mathieu_a, mathieu_b
+
+from flexbooster.floquet import (
+    converged_periodic_boundaries,
+    critical_amplitude,
+    floquet_exponents,
+    floquet_multipliers,
+    growth_rate,
+    hill_exponents,
+    instability_regions,
+    monodromy,
+    periodic_boundaries,
+    region_boundaries,
+    steady_frequencies,
+    step_counts,
+)
+from flexbooster.floquet.multipliers import periodic_system
+
+ONE = [[1.0]]
+
+
+def mathieu_edges(mu: float, r: int, qfac: float = 4.0) -> tuple[float, float]:
+    """Exact edges in theta of region r of f'' + (1 - 2 mu cos theta t) f = 0.
+
+    x = theta t / 2 maps it to y'' + (a - 2 q cos 2x) y = 0 with a = 4 / theta^2 and
+    q = 4 mu / theta^2 (derived here; the issue's q = 2 mu / theta^2, qfac = 2, is the map for
+    f'' + (1 - mu cos theta t) f = 0 and does not give its quoted mu = 0.1 numbers, see
+    test_mathieu_mapping); the edges are a = a_r(q), a = b_r(q) (DLMF 28.2(v)).
+    """
+    c = 2.0 / r
+    out = [brentq(lambda th, f=f: 4.0 / th**2 - f(r, qfac * mu / th**2), 0.55 * c, 1.6 * c,
+                  xtol=1e-15) for f in (mathieu_a, mathieu_b)]
+    return min(out), max(out)
+
+
+def mathieu(mu: float, eps: float = 0.0):
+    """(M, C, A, B) of f'' + 2 eps f' + (1 - 2 mu cos theta t) f = 0."""
+    return ONE, [[2.0 * eps]], ONE, [[-2.0 * mu]]
+
+
+def ivp_monodromy(M, C, A, B, Omega: float) -> np.ndarray:
+    """Independent monodromy: scipy solve_ivp (DOP853, rtol 1e-12) over one period."""
+    M, C, A, B = (np.atleast_2d(np.asarray(x, dtype=float)) for x in (M, C, A, B))
+    n = M.shape[0]
+    Mi = np.linalg.inv(M)
+
+    def rhs(t, z):
+        q, v = z[:n], z[n:]
+        return np.concatenate([v, -Mi @ (C @ v + (A + B * np.cos(Omega * t)) @ q)])
+
+    T = 2.0 * np.pi / Omega
+    cols = [solve_ivp(rhs, (0.0, T), e, method="DOP853", rtol=1e-12, atol=1e-14).y[:, -1]
+            for e in np.eye(2 * n)]
+    return np.array(cols).T
+
+
+def random_system(n: int, seed: int, damped: bool, scale: float = 0.4):
+    """Non-symmetric M, A, B (like a follower force), frequencies near 1, 2, 3, ..."""
+    rng = np.random.default_rng(seed)
+    M = np.eye(n) + 0.05 * rng.standard_normal((n, n))
+    A = np.diag(np.arange(1, n + 1, dtype=float) ** 2) + 0.2 * rng.standard_normal((n, n))
+    B = scale * rng.standard_normal((n, n))
+    C = 0.05 * np.eye(n) + 0.01 * rng.standard_normal((n, n)) if damped else None
+    return M, C, A, B
+
+
+# --------------------------------------------------------------------------------------------
+# Tier 1: exact limits and closed forms
+# --------------------------------------------------------------------------------------------
+def test_mathieu_mapping():
+    # The issue quotes mu = 0.1 -> [1.898848, 2.098688] (6 digits): a = 4/theta^2 with
+    # q = 4 mu/theta^2 reproduces them to 1e-6, q = 2 mu/theta^2 (the issue's) misses by 0.05.
+    lo, hi = mathieu_edges(0.1, 1)
+    assert abs(lo - 1.898848) < 1e-6 and abs(hi - 2.098688) < 1e-6
+    lo2, hi2 = mathieu_edges(0.1, 1, qfac=2.0)
+    assert abs(lo2 - 1.898848) > 1e-2 and abs(hi2 - 2.098688) > 1e-2
+
+
+@pytest.mark.parametrize("mu", [0.05, 0.1, 0.2, 0.3, 0.5])
+def test_mathieu_principal_region(mu):
+    # exact edges: scipy.special.mathieu_a / mathieu_b (mathieu_edges), tolerance 1e-6
+    regions = instability_regions(*mathieu(mu), 1.2, 3.2)
+    assert [(r.kind, r.order, r.modes) for r in regions] == [("simple", 1, (0,))]
+    lo, hi = mathieu_edges(mu, 1)
+    assert regions[0].omega_lo == pytest.approx(lo, abs=1e-6)
+    assert regions[0].omega_hi == pytest.approx(hi, abs=1e-6)
+
+
+@pytest.mark.parametrize("mu", [0.1, 0.3])
+def test_mathieu_second_region(mu):
+    # exact edges a = a_2(q), b_2(q) (scipy.special), theta near 1, tolerance 1e-5
+    regions = instability_regions(*mathieu(mu), 0.8, 1.3)
+    (r,) = [r for r in regions if r.order == 2]
+    lo, hi = mathieu_edges(mu, 2)
+    assert (r.omega_lo, r.omega_hi) == pytest.approx((lo, hi), abs=1e-5)
+
+
+@pytest.mark.parametrize("period,r", [("2T", 1), ("T", 2)], ids=["principal-2T", "second-T"])
+def test_harmonic_balance_boundaries_mathieu(period, r):
+    # Bolotin ch. 1 harmonic balance, converged with K = 8 harmonics, against the exact edges
+    # (scipy.special) to 1e-9
+    roots = periodic_boundaries(*mathieu(0.1), period=period, n_harmonics=8)
+    lo, hi = mathieu_edges(0.1, r)
+    assert np.min(np.abs(roots - lo)) < 1e-9 and np.min(np.abs(roots - hi)) < 1e-9
+
+
+@pytest.mark.parametrize("period,r", [("2T", 1), ("T", 2), ("2T", 3)],
+                         ids=["principal", "second", "third"])
+def test_harmonic_balance_raised_until_converged(period, r):
+    # harmonics raised until the roots in [0.5, 2.6] settle (rtol 1e-12): the edges of
+    # regions 1..3 of Mathieu mu = 0.2 against scipy.special to 1e-9
+    roots, K = converged_periodic_boundaries(*mathieu(0.2), period=period, omega_min=0.5,
+                                             omega_max=2.6, rtol=1e-12)
+    lo, hi = mathieu_edges(0.2, r)
+    assert 8 <= K <= 64
+    assert np.min(np.abs(roots - lo)) < 1e-9 and np.min(np.abs(roots - hi)) < 1e-9
+
+
+def test_steady_propagator_exact():
+    # B = 0: the Lawson scheme propagates the steady system exactly; multipliers
+    # exp(+-i omega T) with omega = 1, 2, 3 (closed form) to 1e-12, whatever the step count
+    A = np.diag([1.0, 4.0, 9.0])
+    Om = np.array([0.7, 1.3, 2.9])
+    rho = floquet_multipliers(np.eye(3), None, A, np.zeros((3, 3)), Om, n_steps=8)
+    T = 2.0 * np.pi / Om
+    expect = np.exp(1j * np.array([1.0, 2.0, 3.0])[None, :] * T[:, None])
+    for p in range(Om.size):
+        for e in np.concatenate([expect[p], expect[p].conj()]):
+            assert np.min(np.abs(rho[p] - e)) < 1e-12
+    # exponents: Re = 0 and Im = +-omega modulo Omega (1e-12); Hill (S = 3) gives +-i omega
+    lam = floquet_exponents(np.eye(3), None, A, np.zeros((3, 3)), Om, n_steps=8)
+    assert np.max(np.abs(lam.real)) < 1e-12
+    lam_h = hill_exponents(np.eye(3), None, A, np.zeros((3, 3)), Om, n_harmonics=3)
+    for p in range(Om.size):
+        for w in (1.0, 2.0, 3.0):
+            for sign in (1.0, -1.0):
+                d = np.abs(np.angle(np.exp(1j * (lam[p].imag - sign * w) * T[p])))
+                assert np.min(d) < 1e-10
+                assert np.min(np.abs(lam_h[p] - 1j * sign * w
+                                     - 1j * Om[p] * np.round((lam_h[p].imag - sign * w)
+                                                             / Om[p]))) < 1e-12
+
+
+def test_undamped_monodromy_determinant_is_one():
+    # Liouville: tr(L(t)) = 0 without damping, so det Phi(T) = 1 (tolerance 1e-10)
+    M, _, A, B = random_system(3, 1, damped=False)
+    Phi = monodromy(M, None, A, B, [0.9, 2.1, 4.4])
+    assert np.linalg.det(Phi) == pytest.approx(np.ones(3), abs=1e-10)
+
+
+def test_damped_monodromy_determinant_liouville():
+    # Liouville: det Phi(T) = exp(-tr(M^-1 C) T) exactly (tolerance 1e-8 relative: the
+    # integration error at the default step_phase, measured 6e-10)
+    M, C, A, B = random_system(3, 2, damped=True)
+    Om = np.array([1.1, 2.5])
+    Phi = monodromy(M, C, A, B, Om)
+    expect = np.exp(-np.trace(np.linalg.solve(M, C)) * 2.0 * np.pi / Om)
+    assert np.linalg.det(Phi) == pytest.approx(expect, rel=1e-8)
+
+
+# --------------------------------------------------------------------------------------------
+# Tier 2: independent models and literature
+# --------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("mu,eps", [(0.1, 0.0), (0.3, 0.0), (0.1, 0.01)])
+def test_growth_rate_against_solve_ivp(mu, eps):
+    # theta = 2 (centre of the principal region): growth rate against an independent
+    # monodromy (solve_ivp DOP853, rtol 1e-12), tolerance 1e-6 (1/s)
+    sysm = mathieu(mu, eps)
+    Phi = ivp_monodromy(*sysm, 2.0)
+    ref = np.log(np.max(np.abs(np.linalg.eigvals(Phi)))) / np.pi
+    assert growth_rate(*sysm, [2.0])[0] == pytest.approx(ref, abs=1e-6)
+    assert np.max(np.abs(monodromy(*sysm, [2.0])[0] - Phi)) < 1e-7
+
+
+def test_monodromy_against_solve_ivp_nonsymmetric():
+    # 3 DOF, non-symmetric A and B, with and without damping: monodromy matrix against
+    # solve_ivp (rtol 1e-12), tolerance 1e-7 (entries are O(1))
+    for damped in (False, True):
+        M, C, A, B = random_system(3, 4, damped)
+        Phi = monodromy(M, C, A, B, [1.7])[0]
+        ref = ivp_monodromy(M, np.zeros((3, 3)) if C is None else C, A, B, 1.7)
+        assert np.max(np.abs(Phi - ref)) < 1e-7
+
+
+@pytest.mark.parametrize("eps", [0.005, 0.01])
+def test_damped_mathieu_threshold(eps):
+    # Bolotin (1964) sec. 6: principal region of f'' + 2 eps f' + (1 - 2 mu cos theta t) f = 0
+    # exists only for mu > mu_cr = Delta / pi = 2 eps (Delta = 2 pi eps), to first order
+    mu_cr = 2.0 * eps
+    above = instability_regions(*mathieu(1.1 * mu_cr, eps), 1.5, 2.5)
+    below = instability_regions(*mathieu(0.9 * mu_cr, eps), 1.5, 2.5)
+    assert [(r.kind, r.order) for r in above] == [("simple", 1)]
+    assert above[0].omega_lo < 2.0 < above[0].omega_hi
+    assert below == ()
+    (crit,) = critical_amplitude(ONE, [[2.0 * eps]], ONE, [[-2.0]], gamma_max=3.0 * mu_cr,
+                                 omega_min=1.5, omega_max=2.5)
+    # first-order accuracy: relative error O(eps), asserted < eps (measured ~1e-5)
+    assert abs(crit.gamma_cr / mu_cr - 1.0) < eps
+    assert crit.omega_cr == pytest.approx(2.0, abs=10 * eps**2)
+
+
+def test_damped_region_against_harmonic_balance():
+    # damped Mathieu mu = 0.1, eps = 0.01: region edges (monodromy, |rho| = 1) against the
+    # damped harmonic balance for period 2T (quadratic eigenproblem in Omega, K = 8),
+    # tolerance 5e-8 at the search's default step_phase 0.12 (measured 1.6e-8), 1e-8 at 0.06
+    sysm = mathieu(0.1, 0.01)
+    roots = periodic_boundaries(*sysm, period="2T", n_harmonics=8)
+    for step_phase, tol in ((0.12, 5e-8), (0.06, 1e-8)):
+        (r,) = instability_regions(*sysm, 1.5, 2.5, step_phase=step_phase)
+        assert np.min(np.abs(roots - r.omega_lo)) < tol
+        assert np.min(np.abs(roots - r.omega_hi)) < tol
+
+
+W1, W2 = 1.0, 2.3
+
+
+def hsu(eps: float, b12: float, b21: float):
+    """q'' + diag(w1^2, w2^2) q + eps cos(theta t) b q = 0, b with zero diagonal (Hsu 1963)."""
+    return np.eye(2), None, np.diag([W1**2, W2**2]), eps * np.array([[0.0, b12], [b21, 0.0]])
+
+
+@pytest.mark.parametrize("b12,b21,kind,centre", [
+    (1.0, 1.0, "sum", W1 + W2),
+    (0.5, 2.0, "sum", W1 + W2),
+    (1.0, -1.0, "difference", W2 - W1),
+    (-0.5, 2.0, "difference", W2 - W1),
+], ids=["b12b21>0", "b12b21>0-asym", "b12b21<0", "b12b21<0-asym"])
+def test_hsu_combination_type_and_width(b12, b21, kind, centre):
+    # Hsu (1963): b12 b21 > 0 -> only a sum-type region near w1 + w2; < 0 -> only a
+    # difference-type region near w2 - w1; first-order width eps sqrt(|b12 b21| / (w1 w2)):
+    # ratio within 1% at eps = 0.01 (measured 1 - 1e-6) and closer to 1 as eps -> 0
+    ratios = []
+    for eps in (0.02, 0.01):
+        regions = instability_regions(*hsu(eps, b12, b21), 0.5, 4.0, max_order=1)
+        comb = [r for r in regions if r.kind in ("sum", "difference")]
+        assert [(r.kind, r.modes) for r in comb] == [(kind, (0, 1))]
+        assert comb[0].omega_lo < centre < comb[0].omega_hi
+        ratios.append(comb[0].width / (eps * np.sqrt(abs(b12 * b21) / (W1 * W2))))
+    assert abs(ratios[1] - 1.0) < 0.01
+    assert abs(ratios[1] - 1.0) <= abs(ratios[0] - 1.0) + 1e-9
+
+
+def _scan_edges(fun, lo: float, hi: float, n: int, tol: float) -> tuple[float, float]:
+    """Brute force: unstable points on a uniform grid, edges bisected to tol."""
+    grid = np.linspace(lo, hi, n)
+    bad = fun(grid) > 0.0
+    k = np.nonzero(bad)[0]
+    assert k.size and not bad[0] and not bad[-1]
+
+    def bisect(a, b):  # fun(a) <= 0 < fun(b) or the reverse
+        sa = fun(np.array([a]))[0] > 0.0
+        while b - a > tol:
+            m = 0.5 * (a + b)
+            if (fun(np.array([m]))[0] > 0.0) == sa:
+                a = m
+            else:
+                b = m
+        return 0.5 * (a + b)
+
+    return bisect(grid[k[0] - 1], grid[k[0]]), bisect(grid[k[-1]], grid[k[-1] + 1])
+
+
+@pytest.mark.parametrize("b12,b21", [(1.0, 1.0), (1.0, -1.0)], ids=["sum", "difference"])
+def test_hsu_edges_against_bruteforce_scan(b12, b21):
+    # exact edges: brute-force scan of log|rho|_max from the eigenvalues of the full monodromy
+    # matrix (41 points over 1.6 widths, each bracket bisected), tolerance 1e-8 (the scan
+    # threshold 1e-9 on log|rho| moves an edge by ~1e-10 here)
+    eps = 0.02
+    sysm = hsu(eps, b12, b21)
+    regions = instability_regions(*sysm, 0.5, 4.0, max_order=1)
+    (r,) = [r for r in regions if r.kind != "simple"]
+    w = r.width
+
+    def unstable(x):
+        rho = np.linalg.eigvals(monodromy(*sysm, x))
+        return np.log(np.max(np.abs(rho), axis=1)) - 1e-9
+
+    lo, hi = _scan_edges(unstable, r.omega_lo - 0.3 * w, r.omega_hi + 0.3 * w, 41, 1e-11)
+    assert (r.omega_lo, r.omega_hi) == pytest.approx((lo, hi), abs=1e-8)
+
+
+def test_damped_combination_against_exact_shift():
+    # C = 2 eps I: q = exp(-eps t) p maps the system exactly onto the undamped one with
+    # A - eps^2 I, so the damped sum-region edges are where that system's growth rate equals
+    # eps (brentq on the undamped modal kernel; the damped search uses the dense kernel):
+    # tolerance 1e-8
+    eps_d = 0.002
+    M, _, A, B = hsu(0.05, 1.0, 1.0)
+    (r,) = instability_regions(M, 2 * eps_d * np.eye(2), A, B, 2.5, 4.0, max_order=1)
+    assert r.kind == "sum"
+
+    def excess(x):
+        return growth_rate(M, None, A - eps_d**2 * np.eye(2), B, [x])[0] - eps_d
+
+    lo = brentq(excess, r.omega_lo - 1e-3, r.omega_center, xtol=1e-13)
+    hi = brentq(excess, r.omega_center, r.omega_hi + 1e-3, xtol=1e-13)
+    assert (r.omega_lo, r.omega_hi) == pytest.approx((lo, hi), abs=1e-8)
+    # critical coupling: growth (gamma / 4) sqrt(b12 b21 / (w1 w2)) = eps (Hsu 1963 first
+    # order with the shift above): gamma_cr = 4 eps sqrt(w1 w2 / (b12 b21)), rel. tol 1e-4
+    (c,) = critical_amplitude(M, 2 * eps_d * np.eye(2), A, B / 0.05, gamma_max=0.05,
+                              omega_min=2.5, omega_max=4.0, max_order=1)
+    assert c.gamma_cr == pytest.approx(4 * eps_d * np.sqrt(W1 * W2), rel=1e-4)
+
+
+def test_region_boundaries_hsu_width_linear_in_gamma():
+    # Hsu (1963): the sum region widens like gamma sqrt(b12 b21 / (w1 w2)) from its centre
+    # w1 + w2 at gamma = 0; traced widths / gamma within 0.1% of it for gamma <= 0.02
+    M, _, A, _ = hsu(1.0, 1.0, 1.0)
+    (rb,) = region_boundaries(M, None, A, np.array([[0.0, 1.0], [1.0, 0.0]]), gamma_max=0.02,
+                              omega_min=2.5, omega_max=4.0, max_order=1, n_gamma=3)
+    assert rb.kind == "sum" and rb.omega_lo[0] == rb.omega_hi[0] == W1 + W2
+    ratio = (rb.omega_hi[1:] - rb.omega_lo[1:]) / rb.gamma[1:] / np.sqrt(1.0 / (W1 * W2))
+    assert np.all(np.abs(ratio - 1.0) < 1e-3)
+
+
+# --------------------------------------------------------------------------------------------
+# Tier 3: invariants
+# --------------------------------------------------------------------------------------------
+@pytest.mark.parametrize("damped", [False, True], ids=["undamped", "damped"])
+def test_hill_agrees_with_monodromy(damped):
+    # two methods: Hill's determinant (S = 16) and the monodromy, 3 DOF non-symmetric,
+    # growth rates on 6 points (stable and unstable), tolerance 1e-8 (1/s)
+    M, C, A, B = random_system(3, 7, damped)
+    Om = np.array([0.6, 1.0, 1.9, 2.6, 4.1, 6.0])
+    g_m = growth_rate(M, C, A, B, Om)
+    g_h = growth_rate(M, C, A, B, Om, method="hill", n_harmonics=16)
+    assert np.max(np.abs(g_m - g_h)) < 1e-8
+    lam = hill_exponents(M, C, A, B, Om, n_harmonics=16)
+    assert lam.shape == (6, 6)
+
+
+def test_harmonic_balance_converges_with_harmonics():
+    # truncation: the principal and second boundaries do not move (1e-12) from K = 8 to 12
+    for period in ("2T", "T"):
+        r8 = periodic_boundaries(*mathieu(0.2), period=period, n_harmonics=8)
+        r12 = periodic_boundaries(*mathieu(0.2), period=period, n_harmonics=12)
+        top8, top12 = r8[-2:], r12[-2:]
+        assert np.max(np.abs(top8 - top12)) < 1e-12
+
+
+@pytest.mark.slow
+def test_regions_unchanged_under_truncation_and_accuracy():
+    # strongly coupled 3-DOF system (overlapping regions): every interval found with orders
+    # j <= 3 is found again, edges to 1e-8 relative, when orders up to 5 are examined and when
+    # the integration is refined (step_phase 0.12 (the default) -> 0.03)
+    M, _, A, B = random_system(3, 11, damped=False)
+    base = instability_regions(M, None, A, B, 1.0, 7.0, max_order=3)
+    more = instability_regions(M, None, A, B, 1.0, 7.0, max_order=5)
+    fine = instability_regions(M, None, A, B, 1.0, 7.0, max_order=3, step_phase=0.03)
+    assert len(base) >= 8
+    for other in (more, fine):
+        edges = np.array([(r.omega_lo, r.omega_hi) for r in other])
+        for r in base:
+            d = np.max(np.abs(edges - [r.omega_lo, r.omega_hi]), axis=1)
+            assert np.min(d) < 1e-8 * r.omega_hi, r
+
+
+@pytest.mark.slow
+def test_regions_are_unstable_inside_and_bounded_by_unit_multipliers():
+    # invariant on the same system: growth rate > 0 at 9 interior points of every region, and
+    # just outside each edge (1e-7 relative) the point is stable unless another region covers
+    # it; the union of the regions equals the unstable set of a 4000-point scan except
+    # within 1e-3 of an edge (brute force, grid spacing 1.5e-3)
+    M, _, A, B = random_system(3, 11, damped=False)
+    regions = instability_regions(M, None, A, B, 1.0, 7.0, max_order=4)
+    iv = np.array([(r.omega_lo, r.omega_hi) for r in regions])
+
+    def covered(x):
+        return np.any((x[:, None] > iv[None, :, 0]) & (x[:, None] < iv[None, :, 1]), axis=1)
+
+    for r in regions:
+        inner = np.linspace(r.omega_lo, r.omega_hi, 11)[1:-1]
+        assert np.all(growth_rate(M, None, A, B, inner) > 0.0), r
+    out = np.concatenate([iv[:, 0] * (1 - 1e-7), iv[:, 1] * (1 + 1e-7)])
+    out = out[~covered(out) & (out > 1.0) & (out < 7.0)]
+    assert np.all(growth_rate(M, None, A, B, out) < 1e-9)
+    grid = np.linspace(1.0, 7.0, 4000)
+    unstable = growth_rate(M, None, A, B, grid) > 1e-9
+    near = np.min(np.abs(grid[:, None] - iv.ravel()[None, :]), axis=1) < 1e-3
+    assert np.array_equal(unstable[~near], covered(grid)[~near])
+
+
+def test_regions_match_harmonic_balance_multidof():
+    # simple-region edges from the monodromy against the T / 2T harmonic balance (K = 10) for
+    # a weakly coupled 3-DOF non-symmetric system (separate regions), principal (j = 1) and
+    # second (j = 2) regions, tolerance 1e-8
+    M, _, A, B = random_system(3, 11, damped=False, scale=0.1)
+    regions = instability_regions(M, None, A, B, 1.0, 7.0, max_order=2)
+    hb = {1: periodic_boundaries(M, None, A, B, period="2T", n_harmonics=10),
+          2: periodic_boundaries(M, None, A, B, period="T", n_harmonics=10)}
+    simple = [r for r in regions if r.kind == "simple" and not r.clipped]
+    assert len(simple) >= 3
+    for r in simple:
+        roots = hb[r.order]
+        assert np.min(np.abs(roots - r.omega_lo)) < 1e-8
+        assert np.min(np.abs(roots - r.omega_hi)) < 1e-8
+
+
+@pytest.mark.parametrize("omega_min,omega_max", [(1.99, 2.01), (0.2, 20.0), (0.05, 60.0)])
+def test_narrow_region_found_in_wide_range(omega_min, omega_max):
+    # a 1e-4-wide principal region (Mathieu mu = 5e-5: width 2 mu theta-units = 1e-4) is found
+    # whatever the range (no user grid): edges equal in all ranges to 1e-10 and against
+    # scipy.special to 1e-9
+    mu = 5e-5
+    regions = instability_regions(*mathieu(mu), omega_min, omega_max)
+    (r,) = [r for r in regions if r.order == 1]
+    lo, hi = mathieu_edges(mu, 1)
+    assert r.width == pytest.approx(1e-4, rel=1e-3)
+    assert (r.omega_lo, r.omega_hi) == pytest.approx((lo, hi), abs=1e-9)
+
+
+def test_narrow_combination_region_two_modes_wide_range():
+    # a ~1e-4-wide sum region of Hsu's system (eps = 3.03e-4) found with a 100x wider range
+    eps = 1e-4 / np.sqrt(1.0 / (W1 * W2))
+    regions = instability_regions(*hsu(eps, 1.0, 1.0), 0.1, 10.0)
+    (r,) = [r for r in regions if r.kind == "sum" and r.order == 1]
+    assert r.width == pytest.approx(1e-4, rel=1e-3)  # Hsu first-order width, small-eps limit
+
+
+def test_growth_rate_max_inside_region():
+    # the bounded maximiser: growth_rate_max >= the growth rate at 21 points in the region
+    # (tolerance 1e-9, the integration error between step_phase 0.12 and 0.06) and equal to
+    # the monodromy growth at omega_at_max (1e-10)
+    sysm = mathieu(0.3)
+    (r,) = instability_regions(*sysm, 1.2, 3.2)
+    g = growth_rate(*sysm, np.linspace(r.omega_lo, r.omega_hi, 21))
+    assert r.growth_rate_max >= np.max(g) - 1e-9
+    g_at = growth_rate(*sysm, [r.omega_at_max], step_phase=0.12)[0]  # the search's setting
+    assert r.growth_rate_max == pytest.approx(g_at, rel=1e-10)
+
+
+def test_region_boundaries_follow_exact_mathieu_edges():
+    # traced boundary curves of f'' + (1 - 2 gamma cos theta t) f = 0 against scipy.special at
+    # each gamma (1e-6); tip at gamma = 0 on the candidate centre 2 (exact)
+    (rb,) = region_boundaries(ONE, None, ONE, [[-2.0]], gamma_max=0.3, omega_min=1.2,
+                              omega_max=3.2, n_gamma=4)
+    assert rb.kind == "simple" and rb.order == 1
+    assert rb.gamma[0] == 0.0 and rb.omega_lo[0] == rb.omega_hi[0] == 2.0
+    for g, lo, hi in zip(rb.gamma[1:], rb.omega_lo[1:], rb.omega_hi[1:], strict=True):
+        assert (lo, hi) == pytest.approx(mathieu_edges(g, 1), abs=1e-6)
+    json.dumps(rb.to_dict())
+
+
+def test_region_boundaries_damped_tip():
+    # with damping the curves start at the critical amplitude (Bolotin sec. 6) where the two
+    # boundaries meet, and widen with gamma
+    eps = 0.01
+    (rb,) = region_boundaries(ONE, [[2 * eps]], ONE, [[-2.0]], gamma_max=0.06, omega_min=1.5,
+                              omega_max=2.5, n_gamma=3)
+    assert abs(rb.gamma[0] / (2 * eps) - 1.0) < eps  # first order, as above
+    assert rb.omega_lo[0] == rb.omega_hi[0]
+    assert np.all(np.diff(rb.omega_hi - rb.omega_lo) > 0.0)
+
+
+def test_undamped_critical_amplitude_is_zero():
+    crit = critical_amplitude(ONE, None, ONE, [[-2.0]], gamma_max=0.1, omega_min=0.8,
+                              omega_max=2.5)
+    assert [(c.order, c.gamma_cr, c.omega_cr) for c in crit] == [(2, 0.0, 1.0), (1, 0.0, 2.0)]
+
+
+def test_steady_unstable_is_reported():
+    # flutter of the steady system (complex eigenvalues of M^-1 A): one "steady" region over
+    # the whole range with the steady growth rate Im-part sqrt (closed form), no crash
+    A = np.array([[1.0, 2.0], [-2.0, 2.0]])  # eigenvalues 1.5 +- i sqrt(3.75)
+    (r,) = instability_regions(np.eye(2), None, A, 0.1 * np.eye(2), 0.5, 5.0)
+    assert r.kind == "steady" and (r.omega_lo, r.omega_hi) == (0.5, 5.0)
+    lam = np.sqrt(-np.linalg.eigvals(A).astype(complex))
+    assert r.growth_rate_max == pytest.approx(np.max(np.abs(lam.real)), rel=1e-12)
+    w = steady_frequencies(np.eye(2), A)
+    assert np.all(np.abs(w.imag) > 0.1)
+
+
+def test_results_are_json_ready():
+    (r,) = instability_regions(*mathieu(0.1), 1.2, 3.2)
+    d = r.to_dict()
+    json.dumps(d)
+    assert d["kind"] == "simple" and d["modes"] == [0] and d["order"] == 1
+
+
+# --------------------------------------------------------------------------------------------
+# Cost model and bad input
+# --------------------------------------------------------------------------------------------
+def test_step_count_capped_as_omega_goes_to_zero():
+    system = periodic_system(ONE, None, ONE, [[-0.2]])
+    steps = step_counts(system, [1.0, 0.1, 0.01])
+    assert steps[1] > 5 * steps[0] and steps[2] > 5 * steps[1]  # grows like 1 / Omega
+    with pytest.raises(ValueError, match="max_steps"):
+        monodromy(ONE, None, ONE, [[-0.2]], [1e-6])
+    with pytest.raises(ValueError, match="max_candidates"):
+        instability_regions(*mathieu(0.1), 1e-7, 3.0)
+
+
+@pytest.mark.parametrize("args,name", [
+    (([[np.nan]], None, ONE, ONE), "M ="),
+    ((ONE, None, [[np.inf]], ONE), "A ="),
+    ((ONE, None, ONE, [[1.0, 0.0]]), "B ="),
+    ((np.eye(2), None, np.eye(3), np.eye(2)), "A ="),
+    ((np.zeros((2, 2)), None, np.eye(2), np.eye(2)), "M ="),
+    ((ONE, [[np.nan]], ONE, ONE), "C ="),
+], ids=["nan-M", "inf-A", "shape-B", "shape-A", "singular-M", "nan-C"])
+def test_bad_matrices(args, name):
+    with pytest.raises(ValueError, match=name):
+        monodromy(*args, [1.0])
+    with pytest.raises(ValueError, match=name):
+        instability_regions(*args, 0.5, 2.0)
+
+
+@pytest.mark.parametrize("lo,hi,name", [
+    (2.0, 1.0, "omega_min"), (1.0, 1.0, "omega_min"), (-1.0, 2.0, "omega_min"),
+    (1.0, np.inf, "omega_max"), (np.nan, 2.0, "omega_min"),
+])
+def test_bad_range(lo, hi, name):
+    with pytest.raises(ValueError, match=name):
+        instability_regions(*mathieu(0.1), lo, hi)
+
+
+def test_overflow_raises_instead_of_inf():
+    # a violently unstable point: the monodromy would overflow; ValueError, never inf / NaN
+    for C in (None, [[0.01]]):
+        with pytest.raises(ValueError, match="overflowed"):
+            growth_rate(ONE, C, ONE, [[-300.0]], [0.02])
+
+
+def test_bad_omega_and_options():
+    with pytest.raises(ValueError, match="Omega"):
+        monodromy(*mathieu(0.1), [1.0, -2.0])
+    with pytest.raises(ValueError, match="Omega"):
+        growth_rate(*mathieu(0.1), [np.nan])
+    with pytest.raises(ValueError, match="method"):
+        growth_rate(*mathieu(0.1), [1.0], method="grid")
+    with pytest.raises(ValueError, match="period"):
+        periodic_boundaries(*mathieu(0.1), period="3T")
+    with pytest.raises(ValueError, match="rtol"):
+        instability_regions(*mathieu(0.1), 1.0, 3.0, rtol=0.0)
+    with pytest.raises(ValueError, match="chunk"):
+        instability_regions(*mathieu(0.1), 1.0, 3.0, chunk=0)
+    with pytest.raises(ValueError, match="max_order"):
+        instability_regions(*mathieu(0.1), 1.0, 3.0, max_order=0)
+    with pytest.raises(ValueError, match="n_steps"):
+        monodromy(*mathieu(0.1), [1.0], n_steps=0)
+    with pytest.raises(ValueError, match="gamma_max"):
+        critical_amplitude(*mathieu(0.1), gamma_max=-1.0, omega_min=1.0, omega_max=3.0)
+    with pytest.raises(ValueError, match="n_gamma"):
+        region_boundaries(*mathieu(0.1), gamma_max=0.1, omega_min=1.0, omega_max=3.0,
+                          n_gamma=1)
+
+
+def test_numerical_core_imports_numpy_and_scipy_only():
+    # house rule (tests/test_architecture.py covers the top-level modules only)
+    code = ("import sys, flexbooster.floquet\n"
+            "bad = {m.split('.')[0] for m in sys.modules} & {'pydantic', 'pint', 'matplotlib',"
+            " 'rich', 'click', 'mpmath', 'sympy'}\n"
+            "print(','.join(sorted(bad)))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True)
+    assert out.stdout.strip() == ""
