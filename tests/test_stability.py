@@ -249,6 +249,7 @@ def test_no_pulsation_silences_omega_1_and_3():
     assert got.tolist() == [False, True, False]
 
 
+@pytest.mark.slow
 def test_active_flags_match_the_forcing_computed_from_its_definition():
     """The 'active' column of the default case against the resonant forcing of each root
     computed by quadrature of the forcing functions (3.0-3, 5.3-4) on the shape functions
@@ -316,6 +317,7 @@ def _labels(table):
     return out
 
 
+@pytest.mark.slow
 def test_default_case_same_roots_as_brute_force_on_sampled_curves():
     """Issue 6 acceptance on the default case: for two curves of every family (sampled with a
     fixed seed), every root against every shell frequency of its set found by a brute-force
