@@ -180,3 +180,18 @@ def test_progress_reports_every_stage_in_order():
     seen.clear()
     analyze(default_case(), beam_action=False, progress=seen.append)
     assert seen == [*STAGES[:3], STAGES[-1]]  # the skipped stages are not announced
+
+
+def test_two_runs_write_byte_identical_files(tmp_path, case_dict, capsys):
+    """Determinism (issue 18 item 5): no time stamp in report.html (unless SOURCE_DATE_EPOCH),
+    no date in the SVG metadata, fixed SVG ids: two runs of one case give the same bytes."""
+    case_dict["truncation"].update(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)
+    case_dict["thrust"]["n_omega"] = 40
+    path = tmp_path / "small.toml"
+    path.write_text(dump_toml(case_dict))
+    for out in ("a", "b"):
+        assert run_cli(["run", str(path), "-q", "-o", str(tmp_path / out)]) == 0
+    names = sorted(p.name for p in (tmp_path / "a").iterdir())
+    assert "report.html" in names and "campbell.svg" in names
+    for name in names:
+        assert (tmp_path / "a" / name).read_bytes() == (tmp_path / "b" / name).read_bytes(), name
