@@ -37,9 +37,9 @@ __all__ = [
 #: Modes drawn per harmonic in the meridian view (the lowest).
 SHAPES_PER_K = 3
 #: Harmonics drawn in the meridian view (those with the lowest first frequency).
-SHAPE_HARMONICS = 6
+SHAPE_HARMONICS = 4
 #: Modes drawn on the unrolled surface (the lowest of each of the first harmonics shown).
-UNROLLED_MODES = 4
+UNROLLED_MODES = 3
 
 
 @dataclass(frozen=True)

@@ -34,9 +34,9 @@ def meridian_shapes(views: ModeShapeViews) -> Figure:
     H. Kraus, *Thin Elastic Shells*, 1967, ch. 2 (meridian, local displacements).
     """
     ks = [int(k) for k in views.harmonics]
-    ncol = min(3, max(1, len(ks)))
+    ncol = min(2, max(1, len(ks)))
     nrow = max(1, math.ceil(len(ks) / ncol))
-    fig = Figure(figsize=(4.0 * ncol, 2.6 * nrow))
+    fig = Figure(figsize=(5.0 * ncol, 2.6 * nrow))
     for n, kk in enumerate(ks):
         ax = fig.add_subplot(nrow, ncol, n + 1)
         ax.plot(views.x, views.r, "--", color="0.6", lw=1.0, label="undeformed")
@@ -74,7 +74,7 @@ def unrolled_modes(views: ModeShapeViews) -> Figure:
         field = views.w[j]
         lim = float(np.max(np.abs(field))) or 1.0
         ax.pcolormesh(np.degrees(views.theta), views.s, field, cmap="RdBu_r", vmin=-lim,
-                      vmax=lim, shading="gouraud")
+                      vmax=lim, shading="nearest")
         ax.set_title(views.unrolled_label[j], fontsize=7)
         ax.set_xlabel("theta (deg)", fontsize=8)
         ax.set_ylabel("meridian s from aft edge (m)", fontsize=8)
