@@ -57,7 +57,8 @@ def main() -> None:
     for _ in range(REPEATS):
         marks = {}
         start = time.perf_counter()
-        analyze(with_vehicle, progress=lambda name, m=marks: m.setdefault(name, time.perf_counter()))
+        analyze(with_vehicle,
+                progress=lambda name, m=marks: m.setdefault(name, time.perf_counter()))
         end = time.perf_counter()
         stage.append(end - marks["vehicle modes"])
         total.append(end - start)
