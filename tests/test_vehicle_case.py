@@ -22,6 +22,7 @@ import csv
 import json
 import math
 import tomllib
+import xml.etree.ElementTree as ET
 
 import numpy as np
 import pytest
@@ -362,7 +363,6 @@ def test_modes_bad_options_exit_2(args, field, rule, capsys):
     assert err.startswith(f"flexbooster: error: {field} = ") and rule in err
 
 
-@pytest.mark.slow
 def test_modes_output_files(vehicle_case_file, tmp_path, capsys):
     """-o DIR: modes.json (the JSON plus the figure data), vehicle-modes.csv (one row per
     mode), the meridian and unrolled figures (SVG and PNG)."""
@@ -417,7 +417,7 @@ def test_report_embeds_the_vehicle_figures(vehicle_case_file):
     from dataclasses import replace
 
     from flexbooster.present.outputs import _render
-    from flexbooster.present.report import render_report
+    from flexbooster.present.report import SECTIONS, render_report
     from flexbooster.present.vehicle import vehicle_figures
 
     case = load_case(vehicle_case_file)
@@ -429,6 +429,11 @@ def test_report_embeds_the_vehicle_figures(vehicle_case_file):
     report = render_report(results, svgs)
     assert 'id="fig-vehicle-mode-shapes"' in report and 'id="fig-vehicle-unrolled"' in report
     assert report.index('id="vehicle-modes"') < report.index('id="verification"')
+    root = ET.fromstring(report.split("\n", 1)[1])  # strict XML (after the DOCTYPE line)
+    ids = [el.get("id") for el in root.iter() if el.get("id") is not None]
+    assert len(ids) == len(set(ids))  # the vehicle figures' ids are prefixed, no clash
+    sections = [el.get("id") for el in root.iter() if el.tag.endswith("section")]
+    assert sections.count("vehicle-modes") == 1 and len(sections) == len(SECTIONS) + 1
 
 
 def test_default_case_results_unchanged():

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 import os
+import signal
 import sys
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
@@ -71,13 +72,32 @@ def _load(case_file: Path | None):
 _CASE_ARG = click.argument(
     "case_file", required=False, type=click.Path(dir_okay=False, path_type=Path)
 )
+def _check_output(ctx: click.Context, param: click.Parameter, value: Path) -> Path:
+    """The output folder, checked before any analysis: not a file, under no file, writable."""
+    rule = None
+    if value.exists() and not value.is_dir():
+        rule = "is a file, not a folder"
+    else:
+        parent = value
+        while not parent.exists() and parent != parent.parent:
+            parent = parent.parent
+        if not parent.is_dir():
+            rule = f"cannot be created: {parent} is a file"
+        elif not os.access(parent, os.W_OK | os.X_OK):
+            rule = f"cannot be written: {parent} is not writable"
+    if rule:
+        raise CaseError("--output", str(value), rule)
+    return value
+
+
 _OUTPUT = click.option(
     "-o",
     "--output",
     "output",
     default="flexbooster-results",
     show_default=True,
-    type=click.Path(file_okay=False, path_type=Path),
+    type=click.Path(path_type=Path),
+    callback=_check_output,
     help="Folder for the results.",
 )
 
@@ -300,8 +320,9 @@ def _f_max(text: str | None) -> float | None:
                    "[default: up to 5x the lowest elastic frequency].")
 @click.option("--no-prestress", is_flag=True,
               help="Unloaded frequencies (default: prestressed by the thrust F0, inertia relief).")
-@click.option("-o", "--output", "output", default=None,
-              type=click.Path(file_okay=False, path_type=Path),
+@click.option("-o", "--output", "output", default=None, type=click.Path(path_type=Path),
+              callback=lambda ctx, param, value: None if value is None
+              else _check_output(ctx, param, value),
               help="Also write OUTPUT/modes.json, OUTPUT/vehicle-modes.csv and the figures.")
 @_QUIET
 @click.option("--format", "fmt", type=click.Choice(["table", "json"]), default="table",
@@ -376,6 +397,8 @@ def main(argv: list[str] | None = None) -> None:
     argv : list of str, optional
         Command-line arguments (default: ``sys.argv[1:]``).
     """
+    previous = signal.getsignal(signal.SIGTERM)
+    signal.signal(signal.SIGTERM, _terminate)  # SIGTERM cleans up like Ctrl-C
     try:
         cli.main(args=argv, prog_name="flexbooster", standalone_mode=False)
     except CaseError as exc:
@@ -384,9 +407,12 @@ def main(argv: list[str] | None = None) -> None:
         _fail("interrupted", EXIT_INTERRUPTED)
     except KeyboardInterrupt:
         _fail("interrupted", EXIT_INTERRUPTED)
-    except click.ClickException as exc:
-        exc.show()
-        sys.exit(EXIT_INPUT if isinstance(exc, click.UsageError) else exc.exit_code)
+    except click.ClickException as exc:  # usage errors: one line, exit 2
+        message = " ".join(exc.format_message().split())
+        ctx = getattr(exc, "ctx", None)
+        if isinstance(exc, click.UsageError) and ctx is not None:
+            message += f" (see '{ctx.command_path} --help')"
+        _fail(message, EXIT_INPUT if isinstance(exc, click.UsageError) else exc.exit_code)
     except OSError as exc:
         _fail(f"{exc.filename or ''}: {exc.strerror or exc}", EXIT_INTERNAL)
     except Exception as exc:  # pragma: no cover - a bug; keep the traceback reachable
@@ -397,7 +423,13 @@ def main(argv: list[str] | None = None) -> None:
             "(set FLEXBOOSTER_DEBUG=1 for a traceback)",
             EXIT_INTERNAL,
         )
+    finally:
+        signal.signal(signal.SIGTERM, previous)
     sys.exit(EXIT_OK)
+
+
+def _terminate(signum: int, frame: object) -> None:
+    raise KeyboardInterrupt
 
 
 if __name__ == "__main__":  # pragma: no cover

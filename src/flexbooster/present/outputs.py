@@ -119,6 +119,7 @@ def _render(fig) -> tuple[str, bytes]:
     with matplotlib.rc_context({"svg.hashsalt": "flexbooster"}):
         svg = _io.StringIO()
         fig.savefig(svg, format="svg", dpi=150, metadata={"Date": None})
+    fig.set_layout_engine("none")  # laid out by the first save: keep the positions
     png = _io.BytesIO()
     fig.savefig(png, format="png", dpi=120)
     return svg.getvalue(), png.getvalue()

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import html
 import math
+import os
 import re
 from collections.abc import Callable, Mapping, Sequence
 from datetime import UTC, datetime
@@ -483,6 +484,14 @@ def _summary(results: Results) -> str:
     return _table(("result", "value"), rows, (False, False))
 
 
+def _source_date() -> str:
+    """", YYYY-MM-DD HH:MM:SS UTC" from SOURCE_DATE_EPOCH, or "" (no time stamp)."""
+    value = os.environ.get("SOURCE_DATE_EPOCH", "").strip()
+    if not value.isdigit():
+        return ""
+    return ", " + datetime.fromtimestamp(int(value), UTC).strftime("%Y-%m-%d %H:%M:%S UTC")
+
+
 def render_report(results: Results, svgs: Mapping[str, str] | None = None,
                   generated: str | None = None) -> str:
     """The report of an analysis as one HTML document.
@@ -495,14 +504,16 @@ def render_report(results: Results, svgs: Mapping[str, str] | None = None,
         SVG text of the figures by name (the keys of :data:`FIGURES`), as returned by
         :func:`flexbooster.outputs.figure_svgs`; missing figures are replaced by a note.
     generated : str, optional
-        Time stamp printed in the header (default: now, UTC, to the second).
+        Time stamp printed in the header; by default the time given by the environment
+        variable ``SOURCE_DATE_EPOCH`` (seconds since 1970, UTC: reproducible builds), else
+        none, so that two runs of one case write the same file.
 
     Returns
     -------
     str
         The HTML text (UTF-8, no external resource).
     """
-    generated = generated or datetime.now(UTC).strftime("%Y-%m-%d %H:%M:%S UTC")
+    stamp = f", {generated}" if generated else _source_date()
     case = results.case
     body: dict[str, Callable[[], str]] = {
         "summary": lambda: _summary(results),
@@ -531,7 +542,7 @@ def render_report(results: Results, svgs: Mapping[str, str] | None = None,
         '<meta name="viewport" content="width=device-width, initial-scale=1" />',
         f"<title>{_e(title)}</title><style>{_CSS}</style></head><body>",
         f"<header><h1>{_e(title)}</h1>",
-        f'<p class="note">flexbooster {_e(__version__)}, {_e(generated)}. Dynamic stability '
+        f'<p class="note">flexbooster {_e(__version__)}{_e(stamp)}. Dynamic stability '
         "of a flexible two-cylinder booster under a gimbaled, pulsating thrust (Tech Memo 104). "
         "All quantities in SI units.</p>",
         "<nav><ol>",
