@@ -363,6 +363,15 @@ def test_modes_bad_options_exit_2(args, field, rule, capsys):
     assert err.startswith(f"flexbooster: error: {field} = ") and rule in err
 
 
+def test_modes_output_onto_a_file_exits_2(tmp_path, capsys):
+    """-o naming a file is refused before any analysis (the --output rule of `run`)."""
+    path = tmp_path / "a-file"
+    path.write_text("x")
+    assert run_cli(["modes", "-o", str(path)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("flexbooster: error: --output = ") and "is a file" in err
+
+
 def test_modes_output_files(vehicle_case_file, tmp_path, capsys):
     """-o DIR: modes.json (the JSON plus the figure data), vehicle-modes.csv (one row per
     mode), the meridian and unrolled figures (SVG and PNG)."""
