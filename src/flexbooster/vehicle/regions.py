@@ -7,7 +7,7 @@ for each circumferential harmonic k the modal equations of :func:`modal_system` 
     q'' + (K_e + (T(t) / F0) K_g) q = 0
       = q'' + (K_e + K_g) q - gamma cos(Omega t) K_g q = 0
 
-(Bolotin 1964, sec. 8, eq. (8.3) in modal form).  They are written in the basis of the modes
+(Bolotin 1964, sec. 8, in modal form).  They are written in the basis of the modes
 loaded by the steady thrust (eigenvectors V of K_e + K_g, orthonormal since the modal mass is
 I): with omega_L the loaded frequencies,
 
@@ -419,7 +419,7 @@ def harmonic_system(
 
     References
     ----------
-    Bolotin (1964), sec. 8, eq. (8.3) (modal form of the parametrically loaded system).
+    Bolotin (1964), sec. 8 (modal form of the parametrically loaded system).
     """
     vehicle = _vehicle(vehicle)
     k = count("k", k, 2, K_MAX)
@@ -431,7 +431,7 @@ def harmonic_system(
     mesh = {"elements_per_segment": elements_per_segment, "order": order}
     ms = modal_system(vehicle, k, n_modes, F0, supported_forward_end=supported_forward_end,
                       **mesh)
-    # steady part K_e + K_g (T = F0); M = I (Bolotin sec. 8, eq. (8.3))
+    # steady part K_e + K_g (T = F0); M = I (Bolotin sec. 8)
     w2, V = np.linalg.eigh(ms.stiffness + ms.geometric)
     if w2[0] <= 0.0:
         lam = buckling_load(vehicle, k, F0=F0, supported_forward_end=supported_forward_end,
