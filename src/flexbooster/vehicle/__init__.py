@@ -1,0 +1,28 @@
+"""Dynamic stability of the whole vehicle (shell of revolution) under the pulsating thrust.
+
+:func:`vehicle_regions` builds, per circumferential harmonic k >= 2, the periodic modal system
+q'' + C q' + (A + B cos Omega t) q = 0 of the pre-stressed shell of revolution under
+T(t) = F0 (1 - gamma cos Omega t) and returns its parametric instability regions in Omega
+(:mod:`.regions`).  Numerical core: numpy, scipy and flexbooster core packages only.  Theory:
+``docs/theory/vehicle-regions.md``.
+"""
+
+from .regions import (
+    HarmonicSystem,
+    RegionCurve,
+    RegionMode,
+    VehicleRegion,
+    VehicleRegions,
+    harmonic_system,
+    vehicle_regions,
+)
+
+__all__ = [
+    "HarmonicSystem",
+    "RegionCurve",
+    "RegionMode",
+    "VehicleRegion",
+    "VehicleRegions",
+    "harmonic_system",
+    "vehicle_regions",
+]

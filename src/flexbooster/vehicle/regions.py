@@ -1,0 +1,574 @@
+"""Parametric instability regions of the pre-stressed shell-of-revolution vehicle.
+
+The thrust T(t) = F0 (1 - gamma cos Omega t) acts on the vehicle of
+:mod:`flexbooster.shell_of_revolution`.  Its geometric stiffness is linear in the thrust, so
+for each circumferential harmonic k the modal equations of :func:`modal_system` are
+
+    q'' + (K_e + (T(t) / F0) K_g) q = 0
+      = q'' + (K_e + K_g) q - gamma cos(Omega t) K_g q = 0
+
+(Bolotin 1964, sec. 8, in modal form).  They are written in the basis of the modes
+loaded by the steady thrust (eigenvectors V of K_e + K_g, orthonormal since the modal mass is
+I): with omega_L the loaded frequencies,
+
+    M = I,  A = diag(omega_L^2),  B = -gamma V^T K_g V,  C = 2 zeta diag(omega_L),
+
+the modal damping acting on the loaded modes.  The regions in Omega are those of
+:func:`flexbooster.floquet.instability_regions` (candidates 2 omega_i / j,
+(omega_i +- omega_k) / j); the critical amplitude from :func:`flexbooster.floquet.
+critical_amplitude` and the boundary curves in (Omega, gamma) from
+:func:`flexbooster.floquet.region_boundaries`.
+
+References
+----------
+.. [1] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, ch. 1-2,
+   sec. 6 (damping, mu_cr = Delta / pi), sec. 8 (modal reduction of a parametrically loaded
+   elastic system).
+.. [2] C. S. Hsu, J. Appl. Mech. 30 (1963) 367-372 (combination resonances).
+.. [3] D. Bushnell, Computers & Structures 4 (1974) 399-435 (shells of revolution, BOSOR).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .. import floquet
+from ..checks import count, finite, nonnegative, positive
+from ..shell_of_revolution import (
+    DEFAULT_ORDER,
+    Vehicle,
+    buckling_load,
+    modal_system,
+    vehicle_modes,
+)
+
+__all__ = [
+    "RegionMode",
+    "HarmonicSystem",
+    "VehicleRegion",
+    "RegionCurve",
+    "VehicleRegions",
+    "harmonic_system",
+    "vehicle_regions",
+]
+
+#: Largest harmonic accepted (as :mod:`flexbooster.shell_of_revolution`).
+K_MAX = 200
+
+
+@dataclass(frozen=True)
+class RegionMode:
+    """One loaded mode taking part in a region.
+
+    Attributes
+    ----------
+    k : int
+        Circumferential wave number (dimensionless).
+    index : int
+        Index of the loaded mode in its harmonic, ascending frequency (dimensionless).
+    order : int
+        Sign changes along the meridian of the unloaded mode that dominates it
+        (:func:`~flexbooster.shell_of_revolution.vehicle_modes` label; dimensionless).
+    type : str
+        Type of that unloaded mode ("axial", "torsional", "radial").
+    omega_loaded : float
+        Frequency under the steady thrust F0 (rad/s).
+    share : float
+        Share V_ij^2 of the dominating unloaded mode in the loaded one (dimensionless).
+    """
+
+    k: int
+    index: int
+    order: int
+    type: str
+    omega_loaded: float
+    share: float
+
+    def to_dict(self) -> dict:
+        """JSON-ready mapping."""
+        return {"k": int(self.k), "index": int(self.index), "order": int(self.order),
+                "type": str(self.type), "omega_loaded": float(self.omega_loaded),
+                "share": float(self.share)}
+
+
+@dataclass(frozen=True)
+class HarmonicSystem:
+    """Periodic modal system of one harmonic: M q'' + C q' + (A + gamma B1 cos Omega t) q = 0.
+
+    Attributes
+    ----------
+    k : int
+        Circumferential wave number (dimensionless).
+    F0 : float
+        Steady thrust (N).
+    damping_ratio : float
+        Modal damping ratio zeta of the loaded modes (dimensionless).
+    omega_unloaded : ndarray, shape (n,)
+        Unloaded frequencies of the basis modes (rad/s).
+    omega_loaded : ndarray, shape (n,)
+        Frequencies under the steady thrust F0 (rad/s), ascending.
+    basis : ndarray, shape (n, n)
+        V: column j = loaded mode j in the unloaded modal coordinates (orthonormal).
+    mass : ndarray, shape (n, n)
+        M = I (modal mass, mass-normalised modes).
+    damping : ndarray, shape (n, n)
+        C = 2 zeta diag(omega_loaded) (1/s).
+    stiffness : ndarray, shape (n, n)
+        A = diag(omega_loaded^2) = V^T (K_e + K_g) V (1/s^2).
+    excitation : ndarray, shape (n, n)
+        B1 = -V^T K_g V (1/s^2): B = gamma B1 for T = F0 (1 - gamma cos Omega t).
+    mode_order, mode_type : ndarray, shape (n,)
+        Labels of the unloaded mode dominating each loaded mode.
+    mode_share : ndarray, shape (n,)
+        Its share V_ij^2 (dimensionless).
+
+    References
+    ----------
+    Bolotin (1964), sec. 8.
+    """
+
+    k: int
+    F0: float
+    damping_ratio: float
+    omega_unloaded: np.ndarray
+    omega_loaded: np.ndarray
+    basis: np.ndarray
+    mass: np.ndarray
+    damping: np.ndarray
+    stiffness: np.ndarray
+    excitation: np.ndarray
+    mode_order: np.ndarray
+    mode_type: np.ndarray
+    mode_share: np.ndarray
+
+    def matrices(self, gamma: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """(M, C, A, B) of the periodic system for pulsation amplitude gamma.
+
+        Parameters
+        ----------
+        gamma : float
+            Pulsation amplitude (dimensionless), 0 <= gamma < 1.
+
+        Returns
+        -------
+        tuple of ndarray
+            M (dimensionless), C (1/s), A (1/s^2), B = gamma B1 (1/s^2).
+        """
+        gamma = _gamma(gamma)
+        return self.mass, self.damping, self.stiffness, gamma * self.excitation
+
+    def mode(self, index: int) -> RegionMode:
+        """Label of loaded mode ``index`` (see :class:`RegionMode`).
+
+        Parameters
+        ----------
+        index : int
+            Loaded mode index (dimensionless), 0..n-1.
+
+        Returns
+        -------
+        RegionMode
+        """
+        index = count("index", index, 0, self.omega_loaded.size - 1)
+        return RegionMode(k=self.k, index=index, order=int(self.mode_order[index]),
+                          type=str(self.mode_type[index]),
+                          omega_loaded=float(self.omega_loaded[index]),
+                          share=float(self.mode_share[index]))
+
+    def to_dict(self) -> dict:
+        """JSON-ready mapping."""
+        return {"k": int(self.k), "F0": float(self.F0),
+                "damping_ratio": float(self.damping_ratio),
+                "omega_unloaded": self.omega_unloaded.tolist(),
+                "omega_loaded": self.omega_loaded.tolist(), "basis": self.basis.tolist(),
+                "damping": self.damping.tolist(), "stiffness": self.stiffness.tolist(),
+                "excitation": self.excitation.tolist(),
+                "mode_order": [int(v) for v in self.mode_order],
+                "mode_type": [str(v) for v in self.mode_type],
+                "mode_share": self.mode_share.tolist()}
+
+
+@dataclass(frozen=True)
+class VehicleRegion:
+    """One parametric instability region of harmonic k.
+
+    Attributes
+    ----------
+    k : int
+        Circumferential wave number (dimensionless).
+    kind : str
+        "simple" (Omega near 2 omega_i / j), "sum" ((omega_i + omega_k) / j) or "difference".
+    order : int
+        j of the resonance centre (dimensionless; not the meridian order of the modes).
+    modes : tuple of RegionMode
+        The loaded modes involved (one for "simple", two otherwise).
+    omega_lo, omega_hi : float
+        Boundaries in Omega (rad/s) at the requested gamma, |rho|_max = 1 there.
+    growth_rate_max : float
+        Largest growth rate log|rho|_max / T inside (1/s).
+    omega_at_max : float
+        Omega where it occurs (rad/s).
+    omega_center : float
+        Analytic centre (rad/s).
+    critical_gamma : float
+        Amplitude below which damping suppresses the region (dimensionless; 0 without
+        damping).
+    clipped : bool
+        A boundary is an end of the Omega range.
+
+    References
+    ----------
+    Bolotin (1964), ch. 1-2, sec. 6; Hsu (1963).
+    """
+
+    k: int
+    kind: str
+    order: int
+    modes: tuple
+    omega_lo: float
+    omega_hi: float
+    growth_rate_max: float
+    omega_at_max: float
+    omega_center: float
+    critical_gamma: float
+    clipped: bool = False
+
+    @property
+    def width(self) -> float:
+        """omega_hi - omega_lo (rad/s)."""
+        return self.omega_hi - self.omega_lo
+
+    def to_dict(self) -> dict:
+        """JSON-ready mapping."""
+        return {"k": int(self.k), "kind": self.kind, "order": int(self.order),
+                "modes": [m.to_dict() for m in self.modes], "omega_lo": float(self.omega_lo),
+                "omega_hi": float(self.omega_hi), "width": float(self.width),
+                "growth_rate_max": float(self.growth_rate_max),
+                "omega_at_max": float(self.omega_at_max),
+                "omega_center": float(self.omega_center),
+                "critical_gamma": float(self.critical_gamma), "clipped": bool(self.clipped)}
+
+
+@dataclass(frozen=True)
+class RegionCurve:
+    """Boundary curves of one region of harmonic k in the (Omega, gamma) plane.
+
+    Attributes
+    ----------
+    k : int
+        Circumferential wave number (dimensionless).
+    kind : str
+        Region kind (see :class:`VehicleRegion`).
+    order : int
+        j of the resonance centre (dimensionless).
+    modes : tuple of int
+        Loaded mode indices in harmonic k.
+    gamma : ndarray
+        Amplitudes (dimensionless), ascending from the critical one.
+    omega_lo, omega_hi : ndarray
+        Boundaries at each gamma (rad/s).
+
+    References
+    ----------
+    Bolotin (1964), ch. 1, sec. 6.
+    """
+
+    k: int
+    kind: str
+    order: int
+    modes: tuple
+    gamma: np.ndarray
+    omega_lo: np.ndarray
+    omega_hi: np.ndarray
+
+    def to_dict(self) -> dict:
+        """JSON-ready mapping."""
+        return {"k": int(self.k), "kind": self.kind, "order": int(self.order),
+                "modes": [int(m) for m in self.modes], "gamma": self.gamma.tolist(),
+                "omega_lo": self.omega_lo.tolist(), "omega_hi": self.omega_hi.tolist()}
+
+
+@dataclass(frozen=True)
+class VehicleRegions:
+    """Instability map of the vehicle: regions of every harmonic k_min..k_max.
+
+    Attributes
+    ----------
+    regions : tuple of VehicleRegion
+        Sorted by omega_lo, then k.
+    harmonics : tuple of HarmonicSystem
+        The periodic system of each harmonic (k ascending).
+    curves : tuple of RegionCurve
+        Boundary curves (empty unless ``boundaries=True``).
+    F0 : float
+        Steady thrust (N).
+    gamma : float
+        Pulsation amplitude (dimensionless).
+    damping_ratio : float
+        Modal damping ratio (dimensionless).
+    omega_min, omega_max : float
+        Omega range (rad/s).
+    supported_forward_end : bool
+        Thrust reacted at the nose (uniform compression) instead of inertia relief.
+    """
+
+    regions: tuple
+    harmonics: tuple
+    curves: tuple
+    F0: float
+    gamma: float
+    damping_ratio: float
+    omega_min: float
+    omega_max: float
+    supported_forward_end: bool
+
+    def harmonic(self, k: int) -> HarmonicSystem:
+        """The system of harmonic k.
+
+        Parameters
+        ----------
+        k : int
+            Circumferential wave number (dimensionless), one of those computed.
+
+        Returns
+        -------
+        HarmonicSystem
+        """
+        for h in self.harmonics:
+            if h.k == k:
+                return h
+        raise ValueError(f"k = {k!r}: not computed (k = {[h.k for h in self.harmonics]})")
+
+    def to_dict(self) -> dict:
+        """JSON-ready mapping (the matrices of each harmonic only through
+        :meth:`HarmonicSystem.to_dict`)."""
+        return {"F0": float(self.F0), "gamma": float(self.gamma),
+                "damping_ratio": float(self.damping_ratio),
+                "omega_min": float(self.omega_min), "omega_max": float(self.omega_max),
+                "supported_forward_end": bool(self.supported_forward_end),
+                "regions": [r.to_dict() for r in self.regions],
+                "harmonics": [{"k": int(h.k), "omega_unloaded": h.omega_unloaded.tolist(),
+                               "omega_loaded": h.omega_loaded.tolist(),
+                               "mode_order": [int(v) for v in h.mode_order],
+                               "mode_type": [str(v) for v in h.mode_type]}
+                              for h in self.harmonics],
+                "curves": [c.to_dict() for c in self.curves]}
+
+
+# ----------------------------------------------------------------------------- checks
+
+
+def _gamma(gamma) -> float:
+    gamma = nonnegative("gamma", gamma)
+    if gamma >= 1.0:
+        raise ValueError(f"gamma = {gamma!r}: must be in [0, 1)")
+    return gamma
+
+
+def _zeta(damping_ratio) -> float:
+    zeta = nonnegative("damping_ratio", damping_ratio)
+    if zeta >= 1.0:
+        raise ValueError(f"damping_ratio = {damping_ratio!r}: must be in [0, 1)")
+    return zeta
+
+
+def _vehicle(vehicle) -> Vehicle:
+    if not isinstance(vehicle, Vehicle):
+        raise ValueError(f"vehicle = {vehicle!r}: must be a Vehicle")
+    return vehicle
+
+
+# ----------------------------------------------------------------------------- systems
+
+
+def harmonic_system(
+    vehicle: Vehicle, k: int, *, F0: float, n_modes: int = 20, damping_ratio: float = 0.01,
+    supported_forward_end: bool = False, elements_per_segment: int | tuple | None = None,
+    order: int = DEFAULT_ORDER,
+) -> HarmonicSystem:
+    """Periodic modal system of harmonic k under T(t) = F0 (1 - gamma cos Omega t).
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        The vehicle (:class:`flexbooster.shell_of_revolution.Vehicle`).
+    k : int
+        Circumferential wave number (dimensionless), 2..200 (k = 0, 1 are not modelled here).
+    F0 : float
+        Steady thrust (N), > 0.
+    n_modes : int
+        Unloaded modes in the basis (dimensionless), 1..2000.
+    damping_ratio : float
+        Modal damping ratio zeta of the loaded modes (dimensionless), 0 <= zeta < 1.
+    supported_forward_end : bool
+        Uniform compression F0 reacted at the nose instead of inertia relief.
+    elements_per_segment, order
+        Mesh (see :func:`flexbooster.shell_of_revolution.mesh_vehicle`).
+
+    Returns
+    -------
+    HarmonicSystem
+
+    Raises
+    ------
+    ValueError
+        Bad input (naming it), or the steady thrust buckles the harmonic (a loaded
+        omega^2 <= 0): the message gives the load factor of :func:`buckling_load`.
+
+    References
+    ----------
+    Bolotin (1964), sec. 8 (modal form of the parametrically loaded system).
+    """
+    vehicle = _vehicle(vehicle)
+    k = count("k", k, 2, K_MAX)
+    F0 = positive("F0", F0)
+    n_modes = count("n_modes", n_modes, 1, 2000)
+    zeta = _zeta(damping_ratio)
+    if not isinstance(supported_forward_end, bool | np.bool_):
+        raise ValueError(f"supported_forward_end = {supported_forward_end!r}: must be a bool")
+    mesh = {"elements_per_segment": elements_per_segment, "order": order}
+    ms = modal_system(vehicle, k, n_modes, F0, supported_forward_end=supported_forward_end,
+                      **mesh)
+    # steady part K_e + K_g (T = F0); M = I (Bolotin sec. 8)
+    w2, V = np.linalg.eigh(ms.stiffness + ms.geometric)
+    if w2[0] <= 0.0:
+        lam = buckling_load(vehicle, k, F0=F0, supported_forward_end=supported_forward_end,
+                            **mesh).load_factor[0]
+        raise ValueError(f"F0 = {F0!r}: the steady thrust buckles harmonic k = {k} (load "
+                         f"factor lambda = {lam:.6g} <= 1, critical thrust {lam * F0:.6g} N; "
+                         f"loaded omega^2 = {w2[0]:.4g} 1/s^2)")
+    omega_l = np.sqrt(w2)
+    n = omega_l.size
+    labels = vehicle_modes(vehicle, k_min=k, k_max=k, n_modes=n_modes, **mesh)
+    dom = np.argmax(V**2, axis=0)  # unloaded mode dominating each loaded one
+    kg = V.T @ ms.geometric @ V
+    return HarmonicSystem(
+        k=k, F0=F0, damping_ratio=zeta, omega_unloaded=ms.omega, omega_loaded=omega_l,
+        basis=V, mass=np.eye(n),
+        damping=2.0 * zeta * np.diag(omega_l),  # modal damping of the loaded modes
+        stiffness=np.diag(w2),  # A = V^T (K_e + K_g) V
+        excitation=-0.5 * (kg + kg.T),  # B = -gamma K_g: T/F0 = 1 - gamma cos Omega t
+        mode_order=labels.order[dom].astype(int), mode_type=labels.type[dom].astype(str),
+        mode_share=(V**2)[dom, np.arange(n)])
+
+
+# ----------------------------------------------------------------------------- regions
+
+
+def _floquet_options(rtol, step_phase, max_order) -> dict:
+    opts = {"rtol": finite("rtol", rtol), "step_phase": positive("step_phase", step_phase)}
+    if max_order is not None:
+        opts["max_order"] = count("max_order", max_order, 1, 10_000)
+    return opts
+
+
+def vehicle_regions(
+    vehicle: Vehicle, *, F0: float, gamma: float, omega_min: float, omega_max: float,
+    k_max: int, k_min: int = 2, n_modes: int = 20, damping_ratio: float = 0.01,
+    supported_forward_end: bool = False, elements_per_segment: int | tuple | None = None,
+    order: int = DEFAULT_ORDER, boundaries: bool = False, gamma_max: float = 0.5,
+    n_gamma: int = 11, rtol: float = 1e-9, step_phase: float = 0.12,
+    max_order: int | None = None,
+) -> VehicleRegions:
+    """Parametric instability regions of every harmonic k_min..k_max in [omega_min, omega_max].
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        The vehicle.
+    F0 : float
+        Steady thrust (N), > 0.
+    gamma : float
+        Pulsation amplitude of T(t) = F0 (1 - gamma cos Omega t) (dimensionless), [0, 1).
+    omega_min, omega_max : float
+        Range of the pulsation frequency Omega (rad/s), 0 < omega_min < omega_max.
+    k_max, k_min : int
+        Harmonics (dimensionless), 2 <= k_min <= k_max <= 200.
+    n_modes : int
+        Unloaded modes per harmonic in the modal basis (dimensionless), 1..2000.
+    damping_ratio : float
+        Modal damping ratio of the loaded modes (dimensionless), [0, 1); default 0.01.
+    supported_forward_end : bool
+        Uniform compression F0 reacted at the nose instead of inertia relief.
+    elements_per_segment, order
+        Mesh (see :func:`flexbooster.shell_of_revolution.mesh_vehicle`).
+    boundaries : bool
+        Also trace the boundary curves in (Omega, gamma), gamma up to ``gamma_max``
+        (:func:`flexbooster.floquet.region_boundaries`; costs ``n_gamma`` searches per k).
+    gamma_max : float
+        Largest gamma of the curves (dimensionless), (0, 1).
+    n_gamma : int
+        Levels of the curves (dimensionless), 2..1000.
+    rtol, step_phase, max_order
+        Boundary tolerance (dimensionless, relative to the centre), integration step phase
+        (dimensionless) and largest resonance order j (None: by the width estimate) of
+        :func:`flexbooster.floquet.instability_regions`.
+
+    Returns
+    -------
+    VehicleRegions
+
+    Raises
+    ------
+    ValueError
+        Bad input (naming it) or buckling under the steady thrust (load factor named).
+
+    References
+    ----------
+    Bolotin (1964), ch. 1-2, sec. 6, sec. 8; Hsu (1963); ``docs/theory/floquet.md``.
+    """
+    vehicle = _vehicle(vehicle)
+    F0 = positive("F0", F0)
+    gamma = _gamma(gamma)
+    zeta = _zeta(damping_ratio)
+    lo, hi = positive("omega_min", omega_min), positive("omega_max", omega_max)
+    if lo >= hi:
+        raise ValueError(f"omega_min = {omega_min!r}: must be < omega_max = {omega_max!r}")
+    k_max = count("k_max", k_max, 2, K_MAX)
+    k_min = count("k_min", k_min, 2, k_max)
+    n_modes = count("n_modes", n_modes, 1, 2000)
+    if not isinstance(boundaries, bool | np.bool_):
+        raise ValueError(f"boundaries = {boundaries!r}: must be a bool")
+    if boundaries:
+        gmax = positive("gamma_max", gamma_max)
+        if gmax >= 1.0:
+            raise ValueError(f"gamma_max = {gamma_max!r}: must be in (0, 1)")
+        n_gamma = count("n_gamma", n_gamma, 2, 1000)
+    opts = _floquet_options(rtol, step_phase, max_order)
+    harmonics, regions, curves = [], [], []
+    for k in range(k_min, k_max + 1):  # a handful of harmonics
+        h = harmonic_system(vehicle, k, F0=F0, n_modes=n_modes, damping_ratio=zeta,
+                            supported_forward_end=supported_forward_end,
+                            elements_per_segment=elements_per_segment, order=order)
+        harmonics.append(h)
+        M, C, A, B = h.matrices(gamma)
+        Cf = C if zeta > 0.0 else None
+        found = floquet.instability_regions(M, Cf, A, B, lo, hi, **opts)
+        crit = {}
+        if found and zeta > 0.0:  # Bolotin sec. 6: the amplitude where the edges meet
+            crit = {(c.kind, c.modes, c.order): c.gamma_cr for c in floquet.critical_amplitude(
+                M, Cf, A, h.excitation, gamma_max=gamma, omega_min=lo, omega_max=hi, **opts)}
+        for r in found:
+            key = (r.kind, r.modes, r.order)
+            if zeta > 0.0 and key not in crit:
+                raise ValueError(f"gamma = {gamma!r}: k = {k}, region {key} found but its "
+                                 "critical amplitude was not (inconsistent searches)")
+            regions.append(VehicleRegion(
+                k=k, kind=r.kind, order=r.order, modes=tuple(h.mode(i) for i in r.modes),
+                omega_lo=r.omega_lo, omega_hi=r.omega_hi, growth_rate_max=r.growth_rate_max,
+                omega_at_max=r.omega_at_max, omega_center=r.omega_center,
+                critical_gamma=float(crit.get(key, 0.0)), clipped=r.clipped))
+        if boundaries:
+            for c in floquet.region_boundaries(M, Cf, A, h.excitation, gamma_max=gmax,
+                                               omega_min=lo, omega_max=hi, n_gamma=n_gamma,
+                                               **opts):
+                curves.append(RegionCurve(k=k, kind=c.kind, order=c.order, modes=c.modes,
+                                          gamma=c.gamma, omega_lo=c.omega_lo,
+                                          omega_hi=c.omega_hi))
+    regions.sort(key=lambda r: (r.omega_lo, r.k))
+    return VehicleRegions(regions=tuple(regions), harmonics=tuple(harmonics),
+                          curves=tuple(curves), F0=F0, gamma=gamma, damping_ratio=zeta,
+                          omega_min=lo, omega_max=hi,
+                          supported_forward_end=bool(supported_forward_end))

@@ -1,0 +1,336 @@
+"""Parametric instability regions of the pre-stressed shell-of-revolution vehicle.
+
+Tiers:
+
+* exact: a shear-diaphragm (SD-SD) Donnell cylinder under a uniform pulsating axial load,
+  one mode per harmonic, is one Mathieu equation f'' + w_L^2 (1 - 2 mu cos Omega t) f = 0
+  (Bolotin 1964, ch. 1): its region edges are scipy's Mathieu characteristic values; damped,
+  the threshold mu_cr = Delta / pi = 2 zeta (Bolotin sec. 6, first order);
+* independent model: Floquet monodromy of the full multi-mode system
+  (``floquet.growth_rate``) inside and outside the regions of a cylinder-cone-cylinder of the
+  default case's size;
+* invariants: gamma -> 0 (widths linear in gamma, none with damping), JSON, bad input.
+
+Closed forms used below (written out, not imported): the SD-SD Donnell cylinder, mode
+u = A cos(lam x) cos(k t), v = B sin(lam x) sin(k t), w = C sin(lam x) cos(k t),
+lam = m pi / L, has the 3x3 stiffness of Leissa (NASA SP-288, 1973, sec. 2.1-2.3, eq. 2.20)
+and mass rho h I; a uniform axial compression N (N/m) adds -N lam^2 to K_CC (Brush & Almroth
+1975, ch. 5).  With one mode per harmonic (the lowest), the one-mode system is
+q'' + (w^2 - (P(t) / P_cr) w^2) q = 0 with the Rayleigh quotient
+P_cr = 2 pi R rho h w^2 |x|^2 / (lam^2 C^2) of the vibration vector x = (A, B, C).
+"""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+from scipy.optimize import brentq
+from scipy.special import mathieu_a, mathieu_b
+
+from flexbooster import floquet
+from flexbooster.shell_of_revolution import Cone, Cylinder, Vehicle, vehicle_modes
+from flexbooster.vehicle import harmonic_system, vehicle_regions
+
+STEEL = {"E": 210e9, "nu": 0.3, "rho": 7850.0}
+# default_case.toml: E = 10.5e6 psi, rho = 2.59e-4 lbf s^2/in^4
+ALU = {"E": 72.4e9, "nu": 0.33, "rho": 2768.0}
+L_SD, R_SD, H_SD = 2.0, 1.0, 0.01
+SD_MESH = 12  # elements: SD frequencies within 1e-10 of the closed form (measured)
+
+
+def sd_vehicle() -> Vehicle:
+    return Vehicle([Cylinder(R_SD, L_SD, H_SD, **STEEL)], theory="donnell",
+                   aft_end="shear-diaphragm", fwd_end="shear-diaphragm")
+
+
+def sd_lowest_mode(k: int) -> tuple[float, float]:
+    """(omega, P_cr) of the lowest SD-SD Donnell mode of harmonic k (closed form, above):
+    omega (rad/s) over m = 1..39, P_cr (N, total thrust) its one-mode Rayleigh quotient."""
+    E, nu, rho = STEEL["E"], STEEL["nu"], STEEL["rho"]
+    a = E * H_SD / (1 - nu**2)
+    d = E * H_SD**3 / (12 * (1 - nu**2))
+    cm = np.array([[1, nu, 0], [nu, 1, 0], [0, 0, (1 - nu) / 2]])
+    best = None
+    for m in range(1, 40):
+        lam = m * np.pi / L_SD
+        mem = np.array([[-lam, 0, 0], [0, k / R_SD, 1 / R_SD], [-k / R_SD, lam, 0]])
+        ben = np.array([[0, 0, lam**2], [0, 0, k**2 / R_SD**2], [0, 0, 2 * k * lam / R_SD]])
+        K = a * mem.T @ cm @ mem + d * ben.T @ cm @ ben
+        w2, X = np.linalg.eigh(K / (rho * H_SD))
+        if best is None or w2[0] < best[0]:
+            best = (w2[0], X[:, 0], lam)
+    w2, x, lam = best
+    return float(np.sqrt(w2)), float(2 * np.pi * R_SD * rho * H_SD * w2 / (lam**2 * x[2]**2))
+
+
+def mathieu_edges(mu: float, j: int) -> tuple[float, float]:
+    """Edges theta = Omega / w_L of region j of f'' + (1 - 2 mu cos theta t) f = 0.
+
+    x = theta t / 2 gives f_xx + (a - 2 q cos 2x) f = 0 with a = 4 / theta^2, q = 4 mu / theta^2
+    (DLMF 28.2.1); region j lies between b_j(q) and a_j(q) (scipy.special.mathieu_b/_a).
+    """
+    out = [brentq(lambda th, f=f: 4 / th**2 - f(j, 4 * mu / th**2), 0.7 * 2 / j, 1.3 * 2 / j,
+                  xtol=1e-14) for f in (mathieu_b, mathieu_a)]
+    return min(out), max(out)
+
+
+# --------------------------------------------------------------------------- tier 1: Mathieu
+
+
+@pytest.mark.parametrize("k", [4, 6])
+@pytest.mark.parametrize("mu", [0.05, 0.1, 0.2])
+def test_sd_cylinder_regions_are_mathieu_regions(k, mu):
+    """SD-SD Donnell cylinder, uniform compression P0 = P_cr / 2, one mode: regions j = 1, 2
+    equal the exact Mathieu regions with mu = gamma P0 / (2 (P_cr - P0)) and
+    w_L = omega sqrt(1 - P0 / P_cr).  Source: scipy.special.mathieu_a/b (map in
+    mathieu_edges); tolerance 1e-6 (j = 1) and 1e-5 (j = 2) on Omega / w_L (measured ~4e-9)."""
+    omega, p_cr = sd_lowest_mode(k)
+    P0 = 0.5 * p_cr
+    gamma = 2 * mu * (p_cr - P0) / P0
+    w_l = omega * np.sqrt(1 - P0 / p_cr)
+    res = vehicle_regions(sd_vehicle(), F0=P0, gamma=gamma, omega_min=0.7 * w_l,
+                          omega_max=2.6 * w_l, k_min=k, k_max=k, n_modes=1, damping_ratio=0.0,
+                          supported_forward_end=True, elements_per_segment=SD_MESH)
+    np.testing.assert_allclose(res.harmonic(k).omega_loaded[0], w_l, rtol=1e-8)  # closed form
+    assert sorted(r.order for r in res.regions) == [1, 2]
+    for r in res.regions:
+        lo, hi = mathieu_edges(mu, r.order)
+        tol = 1e-6 if r.order == 1 else 1e-5
+        assert r.kind == "simple" and r.k == k and r.critical_gamma == 0.0
+        assert abs(r.omega_lo / w_l - lo) < tol and abs(r.omega_hi / w_l - hi) < tol
+        assert r.modes[0].type == "radial" and r.modes[0].order == 0  # m = 1: no sign change
+
+
+@pytest.mark.parametrize("k", [4, 6])
+def test_sd_cylinder_damped_threshold(k):
+    """Damped Mathieu threshold (Bolotin 1964 sec. 6, first order): mu_cr = Delta / pi = 2 zeta,
+    i.e. gamma_cr = 4 zeta (P_cr - P0) / P0; relative tolerance zeta (measured 1e-5).  The
+    region exists at 1.1 gamma_cr and not at 0.9 gamma_cr."""
+    zeta = 0.01
+    omega, p_cr = sd_lowest_mode(k)
+    P0 = 0.5 * p_cr
+    w_l = omega * np.sqrt(1 - P0 / p_cr)
+    g_cr = 4 * zeta * (p_cr - P0) / P0
+    kw = dict(F0=P0, omega_min=1.5 * w_l, omega_max=2.5 * w_l, k_min=k, k_max=k, n_modes=1,
+              damping_ratio=zeta, supported_forward_end=True, elements_per_segment=SD_MESH,
+              max_order=1)
+    above = vehicle_regions(sd_vehicle(), gamma=1.1 * g_cr, **kw)
+    assert len(above.regions) == 1
+    assert abs(above.regions[0].critical_gamma / g_cr - 1) < zeta
+    assert vehicle_regions(sd_vehicle(), gamma=0.9 * g_cr, **kw).regions == ()
+
+
+def test_sd_cylinder_boundary_curves_are_mathieu():
+    """Boundary curves (boundaries=True) of the principal region at gamma levels 0.1..0.3:
+    exact Mathieu edges (scipy.special), tolerance 1e-6 on Omega / w_L; tip at gamma = 0 on
+    the centre 2 w_L (undamped: Bolotin ch. 1)."""
+    k = 4
+    omega, p_cr = sd_lowest_mode(k)
+    P0 = 0.5 * p_cr
+    w_l = omega * np.sqrt(1 - P0 / p_cr)
+    res = vehicle_regions(sd_vehicle(), F0=P0, gamma=0.2, omega_min=1.5 * w_l,
+                          omega_max=2.5 * w_l, k_min=k, k_max=k, n_modes=1, damping_ratio=0.0,
+                          supported_forward_end=True, elements_per_segment=SD_MESH,
+                          boundaries=True, gamma_max=0.3, n_gamma=4, max_order=1)
+    (curve,) = res.curves
+    np.testing.assert_allclose(curve.gamma, [0.0, 0.1, 0.2, 0.3], atol=1e-15)
+    assert curve.omega_lo[0] == curve.omega_hi[0] == pytest.approx(2 * w_l, rel=1e-9)
+    for g, a, b in zip(curve.gamma[1:], curve.omega_lo[1:], curve.omega_hi[1:], strict=True):
+        lo, hi = mathieu_edges(g * P0 / (2 * (p_cr - P0)), 1)
+        assert abs(a / w_l - lo) < 1e-6 and abs(b / w_l - hi) < 1e-6
+
+
+def test_sd_modal_system_decouples_in_m():
+    """Why one mode per k is exact: for the SD-SD cylinder the modes of different m are
+    orthogonal in K_g too (sin(m pi x / L) products), so K_g in the modal basis couples only
+    the branches of the same m.  Checked: |B1_ij| < 1e-8 max|B1| between the lowest mode
+    (m = 1) and every mode of another axial order (labels from vehicle_modes)."""
+    k = 4
+    h = harmonic_system(sd_vehicle(), k, F0=1e6, n_modes=8, damping_ratio=0.0,
+                        supported_forward_end=True, elements_per_segment=SD_MESH)
+    B1 = h.excitation
+    other = h.mode_order != h.mode_order[0]
+    assert np.any(other)
+    assert np.max(np.abs(B1[0, other])) < 1e-8 * np.max(np.abs(B1))
+
+
+# --------------------------------------------------------------------------- tier 2: vehicle
+
+
+def default_size_vehicle() -> Vehicle:
+    """Cylinder-cone-cylinder of the default case's size (default_case.toml: R1 = 5.05 m,
+    42 m; R2 = 3.3 m, 18 m; h = 20 mm; aluminium); a 5 m cone joins them; free-free."""
+    return Vehicle([Cylinder(5.05, 42.0, 0.02, **ALU), Cone(5.05, 3.3, 5.0, 0.02, **ALU),
+                    Cylinder(3.3, 18.0, 0.02, **ALU)])
+
+
+F0_DEFAULT = 2.8e6  # N (default_case.toml)
+
+
+@pytest.fixture(scope="module")
+def vehicle_map():
+    """k = 3, 10 modes, Omega 10..100 rad/s, gamma = 0.05, undamped (the regions of the default
+    damping 0.01 are all suppressed at gamma = 0.05: test_default_damping_...)."""
+    return vehicle_regions(default_size_vehicle(), F0=F0_DEFAULT, gamma=0.05, omega_min=10.0,
+                           omega_max=100.0, k_min=3, k_max=3, n_modes=10, damping_ratio=0.0,
+                           max_order=2)
+
+
+def _check_against_monodromy(res, gamma, n_regions):
+    """Widest regions: floquet.growth_rate (monodromy of the full system, step phase 0.06) at
+    the reported maximum = growth_rate_max to 1e-6 relative; positive at the region's middle;
+    stable (< 1e-6 of the region's growth) halfway to the next region or one width beyond."""
+    regs = sorted(res.regions, key=lambda r: -r.width)[:n_regions]
+    assert len(regs) == n_regions
+    M, C, A, B = res.harmonic(3).matrices(gamma)
+    C = C if res.damping_ratio > 0 else None
+    edges = sorted((r.omega_lo, r.omega_hi) for r in res.regions)
+    for r in regs:
+        g = floquet.growth_rate(M, C, A, B, np.array([r.omega_at_max]))[0]
+        assert abs(g / r.growth_rate_max - 1) < 1e-6
+        i = edges.index((r.omega_lo, r.omega_hi))
+        nxt = edges[i + 1][0] if i + 1 < len(edges) else r.omega_hi + 2 * r.width
+        out = floquet.growth_rate(M, C, A, B, np.array([0.5 * (r.omega_hi + nxt)]))[0]
+        assert out < 1e-6 * r.growth_rate_max
+        mid = floquet.growth_rate(M, C, A, B, np.array([0.5 * (r.omega_lo + r.omega_hi)]))
+        assert mid[0] > 0.0
+
+
+def test_vehicle_growth_rates_against_monodromy(vehicle_map):
+    """Undamped 10-mode k = 3 system, three widest regions (simple 2, sum (2, 3), sum (0, 2)):
+    see _check_against_monodromy (tolerance 1e-6 relative)."""
+    _check_against_monodromy(vehicle_map, 0.05, 3)
+
+
+@pytest.mark.slow
+def test_vehicle_damped_growth_rate_against_monodromy():
+    """Damped (zeta = 0.002, gamma = 0.3) 10-mode k = 3 system: the region that survives (simple,
+    loaded mode 2) against the damped monodromy, tolerance 1e-6 relative; its critical gamma
+    lies in (0, 0.3) and above Bolotin's first-order estimate 4 zeta w_i^2 / |B1_ii| (damped
+    Mathieu mu_cr = 2 zeta, mu = gamma |B1_ii| / (2 w_i^2)) within a factor 1.5 (higher-order
+    and coupling terms)."""
+    res = vehicle_regions(default_size_vehicle(), F0=F0_DEFAULT, gamma=0.3, omega_min=10.0,
+                          omega_max=100.0, k_min=3, k_max=3, n_modes=10, damping_ratio=0.002,
+                          max_order=1, step_phase=0.06)
+    _check_against_monodromy(res, 0.3, 1)
+    (r,) = res.regions
+    h = res.harmonic(3)
+    i = r.modes[0].index
+    first = 4 * 0.002 * h.omega_loaded[i] ** 2 / abs(h.excitation[i, i])
+    assert 0.0 < r.critical_gamma < 0.3
+    assert abs(r.critical_gamma / first - 1) < 0.5
+
+
+def test_vehicle_labels_and_loaded_frequencies(vehicle_map):
+    """Loaded frequencies equal vehicle_modes(prestress_F0=F0) (full FE) to 1e-3 (10-mode
+    truncation; shell-of-revolution docs: 12 modes within 1e-3); every region's modes carry
+    k, the meridian order and the type of vehicle_modes."""
+    h = vehicle_map.harmonic(3)
+    full = vehicle_modes(default_size_vehicle(), k_min=3, k_max=3, n_modes=10,
+                         prestress_F0=F0_DEFAULT)
+    np.testing.assert_allclose(h.omega_loaded[:3], full.omega[:3], rtol=1e-3)
+    assert np.all(h.omega_loaded < h.omega_unloaded)  # compression softens
+    for r in vehicle_map.regions:
+        assert all(m.k == 3 and m.type in ("axial", "torsional", "radial") for m in r.modes)
+
+
+# --------------------------------------------------------------------------- tier 3
+
+
+def test_gamma_to_zero():
+    """gamma -> 0: undamped first-order simple regions shrink linearly (width ratio 2 between
+    gamma = 2e-3 and 1e-3 within 1e-2: Bolotin's first-order width gamma |B1_ii| / w_i);
+    gamma = 0 gives none; damped (zeta = 0.01) none at gamma = 1e-3."""
+    kw = dict(F0=F0_DEFAULT, omega_min=15.0, omega_max=60.0, k_min=3, k_max=3, n_modes=4,
+              max_order=1)
+    veh = default_size_vehicle()
+    a = vehicle_regions(veh, gamma=1e-3, damping_ratio=0.0, **kw)
+    b = vehicle_regions(veh, gamma=2e-3, damping_ratio=0.0, **kw)
+    wa = {(r.kind, tuple(m.index for m in r.modes)): r.width for r in a.regions}
+    wb = {(r.kind, tuple(m.index for m in r.modes)): r.width for r in b.regions}
+    simple = [key for key in wa if key[0] == "simple"]
+    assert simple
+    for key in simple:
+        assert abs(wb[key] / wa[key] - 2.0) < 1e-2
+        h = a.harmonic(3)
+        i = key[1][0]
+        first = 1e-3 * abs(h.excitation[i, i]) / h.omega_loaded[i]  # Bolotin first order
+        assert abs(wa[key] / first - 1) < 1e-2
+    assert vehicle_regions(veh, gamma=0.0, damping_ratio=0.0, **kw).regions == ()
+    assert vehicle_regions(veh, gamma=1e-3, damping_ratio=0.01, **kw).regions == ()
+
+
+def test_modal_truncation_converges():
+    """Invariant under truncation: the three first-order simple regions of k = 3 (Omega 15..50
+    rad/s, gamma = 0.05) with 10 and 14 modes per k: edges within 1e-5 relative (measured
+    1.7e-6, the loaded frequency itself moves by 1.6e-6), widths and growth rates within 1e-3
+    (measured 1.5e-4, 2e-4; 6 -> 10 modes: 4e-4)."""
+    kw = dict(F0=F0_DEFAULT, gamma=0.05, omega_min=15.0, omega_max=50.0, k_min=3, k_max=3,
+              damping_ratio=0.0, max_order=1)
+    veh = default_size_vehicle()
+    a, b = (vehicle_regions(veh, n_modes=n, **kw) for n in (10, 14))
+    ra = {r.modes[0].index: r for r in a.regions if r.kind == "simple"}
+    rb = {r.modes[0].index: r for r in b.regions if r.kind == "simple"}
+    assert sorted(ra) == sorted(rb) == [0, 1, 2]
+    for i in ra:
+        assert abs(ra[i].omega_lo / rb[i].omega_lo - 1) < 1e-5
+        assert abs(ra[i].omega_hi / rb[i].omega_hi - 1) < 1e-5
+        assert abs(ra[i].width / rb[i].width - 1) < 1e-3
+        assert abs(ra[i].growth_rate_max / rb[i].growth_rate_max - 1) < 1e-3
+
+
+def test_default_damping_suppresses_default_case_regions():
+    """Default zeta = 0.01 at gamma = 0.05: the principal region of the lowest k = 3 mode
+    (undamped growth ~ gamma B1_00 / (4 w_0) ~ 2e-3 1/s < zeta w_0 ~ 0.09 1/s) does not
+    survive (3 modes, Omega around 2 w_0)."""
+    veh = default_size_vehicle()
+    h = harmonic_system(veh, 3, F0=F0_DEFAULT, n_modes=3)
+    w0 = h.omega_loaded[0]
+    res = vehicle_regions(veh, F0=F0_DEFAULT, gamma=0.05, omega_min=1.8 * w0,
+                          omega_max=2.2 * w0, k_min=3, k_max=3, n_modes=3, max_order=1)
+    assert res.regions == () and res.damping_ratio == 0.01
+
+
+def test_json_ready(vehicle_map):
+    """to_dict() of the map and of a harmonic serialise with json (plain lists/floats)."""
+    text = json.dumps(vehicle_map.to_dict())
+    back = json.loads(text)
+    assert len(back["regions"]) == len(vehicle_map.regions)
+    json.dumps(vehicle_map.harmonic(3).to_dict())
+
+
+def test_buckling_raises_with_load_factor():
+    """F0 ten times the default on k = 2 (load factor ~6.8 at 2.8 MN): ValueError naming F0
+    and the load factor of buckling_load, not a LinAlgError."""
+    with pytest.raises(ValueError, match=r"F0 = .*buckles harmonic k = 2.*load factor"):
+        vehicle_regions(default_size_vehicle(), F0=10 * F0_DEFAULT, gamma=0.05,
+                        omega_min=5.0, omega_max=50.0, k_min=2, k_max=2, n_modes=4)
+
+
+GOOD = dict(F0=1e6, gamma=0.05, omega_min=5.0, omega_max=50.0, k_max=2, n_modes=2)
+
+
+@pytest.mark.parametrize("name, value", [
+    ("vehicle", "cyl"), ("F0", 0.0), ("F0", np.nan), ("gamma", 1.0), ("gamma", -0.1),
+    ("omega_min", -1.0), ("omega_max", np.inf), ("k_max", 1), ("k_min", 1), ("n_modes", 0),
+    ("damping_ratio", -0.01), ("damping_ratio", 1.5), ("boundaries", "yes"),
+    ("rtol", np.nan), ("max_order", 0),
+])
+def test_bad_input_names_argument(name, value):
+    """Bad input: ValueError whose message starts with the argument's name."""
+    kw = dict(GOOD)
+    veh = sd_vehicle()
+    if name == "vehicle":
+        veh = value
+    else:
+        kw[name] = value
+    with pytest.raises(ValueError, match=rf"^{name} = "):
+        vehicle_regions(veh, **kw)
+
+
+def test_bad_range_order():
+    """omega_min >= omega_max: ValueError naming omega_min."""
+    with pytest.raises(ValueError, match=r"^omega_min = "):
+        vehicle_regions(sd_vehicle(), **{**GOOD, "omega_min": 60.0})
