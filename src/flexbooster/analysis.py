@@ -147,7 +147,8 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
     n = model.truncation
     beam = beam_modes(n.N, model.mass.L, model.R1, model.E, model.rho)
     step(STAGES[1])
-    pitch = pitch_analysis(model.Omega, model.omega_psi, model.gamma)
+    pitch = pitch_analysis(model.Omega, model.omega_psi, model.gamma,
+                           damping_ratio=model.pitch_damping_ratio)
     step(STAGES[2])
     shell = natural_frequencies(model)
     action = None
@@ -203,6 +204,7 @@ def _figure_data(model, pitch, shell, action, table, params) -> charts.FigureDat
         campbell=None if table is None else charts.campbell_data(
             params=params, omega_range=model.omega_range, omega_1=model.omega_1, shell=shell,
             table=table, R=n.R, S=n.S),
+        pitch_band_chart=charts.pitch_band_chart(model),
     )
 
 
