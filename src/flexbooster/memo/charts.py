@@ -21,8 +21,8 @@ from typing import Any
 import numpy as np
 
 from ..checks import count, positive
-from .beam import free_free_eigenvalues, mode_shape
 from ..floquet import region_boundaries
+from .beam import free_free_eigenvalues, mode_shape
 from .beam_action import beam_system, modal_damping
 from .geometry import MassProperties
 from .pitch import PITCH_MAX_TONGUE, PitchResult, pitch_band_edges, transition_curves

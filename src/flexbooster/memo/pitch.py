@@ -839,19 +839,23 @@ def _mu(x: float, g: float) -> float:
 
 
 def _damped_band(x_b: float, x_a: float, g: float, zeta: float) -> tuple | None:
-    """Edges and peak of f(x) = mu(x) - zeta sqrt(x / (1 - zeta^2)) inside (x_b, x_a).
+    """Edges and growth peak of f(x) = mu(x) - zeta sqrt(x / (1 - zeta^2)) in (x_b, x_a).
 
     f > 0 is growth of the damped pitch: with c = zeta sqrt(a) the substitution
     psi = e^(-c tau_1) u turns the damped equation into Mathieu's with x = a (1 - zeta^2).
+    The growth rate in 1/s is f Omega / 2 with Omega proportional to x^(-1/2): the peak is
+    that of f / sqrt(x).
     """
     s = 1.0 / (1.0 - zeta * zeta)
 
     def f(x: float) -> float:
         return _mu(x, g) - zeta * np.sqrt(x * s)  # growth minus damping, see above
 
-    res = optimize.minimize_scalar(lambda x: -f(x), bounds=(x_b, x_a), method="bounded",
+    res = optimize.minimize_scalar(lambda x: -f(x) / np.sqrt(x), bounds=(x_b, x_a),
+                                   method="bounded",
                                    options={"xatol": 1e-10 * x_a, "maxiter": 500})
-    x_m, f_m = float(res.x), -float(res.fun)
+    x_m = float(res.x)
+    f_m = f(x_m)
     if zeta == 0.0:
         return x_b, x_a, x_m, f_m
     if not f_m > 0.0:

@@ -156,8 +156,8 @@ def make_figures(results: Results) -> dict[str, Figure]:
     import matplotlib
 
     matplotlib.use("Agg")
-    from .plotting.beam import mode_shape_plot
     from .plotting.bands import plot_band_chart
+    from .plotting.beam import mode_shape_plot
     from .plotting.patterns import nodal_patterns
     from .plotting.pitch import ince_strutt_chart
     from .plotting.shell import frequency_curves
