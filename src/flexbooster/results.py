@@ -69,7 +69,7 @@ UNITS: dict[str, str] = {
     "beam_action.Omega": "rad/s",
     "beam_action.Omega_bar, alpha_*, frequencies_*": "1 (alpha_r Omega_bar in units of omega_1)",
     "beam_action.growth_rate, max_growth_rate": "1/s",
-    "beam_action.unstable_intervals": "rad/s",
+    "beam_action.unstable_intervals, band_range": "rad/s",
     "beam_action.bands.omega_lo, omega_hi, width, omega_at_max, omega_center": "rad/s",
     "beam_action.bands.growth_rate_max": "1/s",
     "beam_action.bands.critical_gamma, *_damping_ratio": "1",

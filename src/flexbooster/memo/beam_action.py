@@ -74,6 +74,7 @@ __all__ = [
     "BAND_RTOL",
     "BAND_MAX_ORDER",
     "BAND_MAX_CANDIDATES",
+    "BAND_OMEGA_BAR_MIN",
     "BeamActionBand",
     "modal_damping",
     "beam_action_bands",
@@ -730,6 +731,11 @@ BAND_RTOL = 1e-9
 BAND_MAX_ORDER = None
 #: Cap on the resonance centres enumerated (a small omega_min / omega_1 makes many).
 BAND_MAX_CANDIDATES = 5_000_000
+#: Lower end of the pipeline's band search in units of omega_1: below Omega = omega_1 / 4 an
+#: elastic resonance has order j >= 8 (simple) or j >= 4 (combinations), far narrower than
+#: round-off at gamma < 1, while the monodromy there costs ~omega_max / Omega steps per
+#: period; the rigid-pitch tongues 2 omega_psi / j below it are the pitch analysis' bands.
+BAND_OMEGA_BAR_MIN = 0.25
 
 
 @dataclass(frozen=True)
@@ -945,6 +951,8 @@ class BeamActionResult:
     beam_damping_ratio, pitch_damping_ratio : float
         Modal damping ratios of the band search (dimensionless); the grid exponents
         (``alpha``, ``stable``, ``growth_rate``) are those of the undamped system.
+    band_range : (float, float)
+        The Omega range searched for bands (rad/s): the grid's, raised to omega_1 / 4.
     """
 
     Omega: np.ndarray
@@ -966,6 +974,7 @@ class BeamActionResult:
     bands: tuple = ()
     beam_damping_ratio: float = 0.0
     pitch_damping_ratio: float = 0.0
+    band_range: tuple = (0.0, 0.0)
 
     def unstable_intervals(self) -> list[tuple[float, float]]:
         """The bands as (omega_lo, omega_hi) (rad/s)."""
@@ -996,6 +1005,7 @@ class BeamActionResult:
             "bands": [b.to_dict() for b in self.bands],
             "beam_damping_ratio": float(self.beam_damping_ratio),
             "pitch_damping_ratio": float(self.pitch_damping_ratio),
+            "band_range": [float(v) for v in self.band_range],
         }
 
 
@@ -1023,9 +1033,10 @@ def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3) -> BeamActionR
     BeamActionResult
         Exponents on the whole grid from the monodromy matrix, reduced to the natural branch;
         ``hill_monodromy_difference`` is the largest difference of the canonical
-        representatives at the Hill points; the bands over the grid's range
-        [Omega[0], Omega[-1]] from :func:`beam_action_bands` with the model's damping
-        ratios, and the verdict from the bands.
+        representatives at the Hill points; the bands over
+        [max(Omega[0], omega_1 / 4), Omega[-1]] (:data:`BAND_OMEGA_BAR_MIN`; the range is
+        ``band_range``) from :func:`beam_action_bands` with the model's damping ratios, and
+        the verdict from the bands.
 
     References
     ----------
@@ -1050,7 +1061,8 @@ def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3) -> BeamActionR
     i = int(np.argmax(growth))
     at_max = float(Ob[i] * system.omega_1) if growth[i] > 0.0 else 0.0
     zb, zp = float(model.beam_damping_ratio), float(model.pitch_damping_ratio)
-    lo, hi = float(np.min(model.Omega)), float(np.max(model.Omega))
+    lo = max(float(np.min(model.Omega)), BAND_OMEGA_BAR_MIN * system.omega_1)
+    hi = float(np.max(model.Omega))
     bands = () if not hi > lo else beam_action_bands(system, gamma, omega_min=lo,
                                                         omega_max=hi, beam_ratio=zb,
                                                         pitch_ratio=zp)
@@ -1060,7 +1072,7 @@ def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3) -> BeamActionR
         Omega_at_max=at_max, hill_monodromy_difference=diff,
         verdict="unstable" if bands else "stable", gamma=gamma, K=system.K,
         N=system.N, S=S, R=R, p=system.p, bands=bands, beam_damping_ratio=zb,
-        pitch_damping_ratio=zp)
+        pitch_damping_ratio=zp, band_range=(lo, hi))
 
 
 @dataclass(frozen=True)

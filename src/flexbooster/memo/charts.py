@@ -23,7 +23,7 @@ import numpy as np
 from ..checks import count, positive
 from ..floquet import region_boundaries
 from .beam import free_free_eigenvalues, mode_shape
-from .beam_action import beam_system, modal_damping
+from .beam_action import BAND_OMEGA_BAR_MIN, beam_system, modal_damping
 from .geometry import MassProperties
 from .pitch import PITCH_MAX_TONGUE, PitchResult, pitch_band_edges, transition_curves
 from .shell import ShellFrequencies
@@ -385,7 +385,9 @@ def beam_action_chart(model: Any, *, n_gamma: int = BEAM_ACTION_CHART_LEVELS,
     Returns
     -------
     BandChart
-        The regions that exist at gamma_max, edges converted from Omega / omega_1 to rad/s.
+        The regions that exist at gamma_max, edges converted from Omega / omega_1 to rad/s;
+        searched above max(omega_min, omega_1 / 4) as the pipeline's bands
+        (:data:`flexbooster.memo.beam_action.BAND_OMEGA_BAR_MIN`).
 
     References
     ----------
@@ -401,8 +403,10 @@ def beam_action_chart(model: Any, *, n_gamma: int = BEAM_ACTION_CHART_LEVELS,
     n = system.Lambda.size
     C = modal_damping(system, beam_ratio=model.beam_damping_ratio,
                       pitch_ratio=model.pitch_damping_ratio)
-    curves = region_boundaries(np.eye(n), C, system.A0, -system.B, gamma_max=gamma_max,
-                               omega_min=lo / w1, omega_max=hi / w1, n_gamma=n_gamma,
+    lo_search = max(lo, BAND_OMEGA_BAR_MIN * w1)  # as the band search of the pipeline
+    curves = () if not hi > lo_search else region_boundaries(
+                               np.eye(n), C, system.A0, -system.B, gamma_max=gamma_max,
+                               omega_min=lo_search / w1, omega_max=hi / w1, n_gamma=n_gamma,
                                rtol=rtol, max_order=max_order, step_phase=step_phase,
                                max_candidates=5_000_000)
     regions = tuple(

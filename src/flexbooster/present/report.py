@@ -375,6 +375,9 @@ def _beam_action(results: Results) -> str:
         ("Hill against monodromy exponents, largest difference", ba.hill_monodromy_difference,
          "-"),
         ("stable grid points", f"{int(np.sum(ba.stable))} of {ba.stable.size}", "-"),
+        ("Omega range searched for bands (from omega_1 / 4)",
+         f"{_fmt(ba.band_range[0])} .. {_fmt(ba.band_range[1])}", "rad/s"),
+        ("instability bands", len(ba.bands), "-"),
     ]
     rows += [
         (f"alpha_{r + 1} Omega_bar at gamma -> 0 (loaded frequency)",
