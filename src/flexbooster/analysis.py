@@ -234,5 +234,5 @@ def simulate_case(case: Case, Omega: float, *, tau_max: float, n_out: int = 401,
     """
     with blas_threads(1):
         model = model_from_case(case)
-        params = excitation_parameters(model, beam_action_analysis(model))
+        params = excitation_parameters(model, beam_action_analysis(model, bands=False))
         return simulate(model, Omega, tau_max, n_out=n_out, psi0=psi0, params=params)

@@ -730,7 +730,7 @@ BAND_RTOL = 1e-9
 #: every order whose estimated width is above the tolerance (the toolkit's default).
 BAND_MAX_ORDER = None
 #: Cap on the resonance centres enumerated (a small omega_min / omega_1 makes many).
-BAND_MAX_CANDIDATES = 5_000_000
+BAND_MAX_CANDIDATES = 1_000_000
 #: Lower end of the pipeline's band search in units of omega_1: below Omega = omega_1 / 4 an
 #: elastic resonance has order j >= 8 (simple) or j >= 4 (combinations), far narrower than
 #: round-off at gamma < 1, while the monodromy there costs ~omega_max / Omega steps per
@@ -940,7 +940,7 @@ class BeamActionResult:
         check points (dimensionless).
     verdict : str
         "unstable" when an instability band exists in the range (:attr:`bands`), else
-        "stable".
+        "stable" ("not searched" when the band search was skipped).
     gamma, K, N, S, R : float, float, int, int, int
         Inputs.
     p : float
@@ -1014,7 +1014,8 @@ def _match_distance(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return np.max(np.abs(a - b), axis=-1)
 
 
-def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3) -> BeamActionResult:
+def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3,
+                         bands: bool = True) -> BeamActionResult:
     """alpha_r along the Omega grid and the beam-action verdict (pipeline entry point).
 
     Parameters
@@ -1027,6 +1028,9 @@ def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3) -> BeamActionR
         also solved and compared with the monodromy exponents, 1..len(Omega) (clipped to the
         grid size); Hill costs O((2 (N + 1)(2 S + 1))^3) per point, about 0.1-0.5 s for
         N = S = 10.
+    bands : bool
+        Search the instability bands (:func:`beam_action_bands`); without it ``bands`` is
+        empty and the verdict is "not searched".
 
     Returns
     -------
@@ -1063,15 +1067,15 @@ def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3) -> BeamActionR
     zb, zp = float(model.beam_damping_ratio), float(model.pitch_damping_ratio)
     lo = max(float(np.min(model.Omega)), BAND_OMEGA_BAR_MIN * system.omega_1)
     hi = float(np.max(model.Omega))
-    bands = () if not hi > lo else beam_action_bands(system, gamma, omega_min=lo,
-                                                        omega_max=hi, beam_ratio=zb,
-                                                        pitch_ratio=zp)
+    found = () if not (bands and hi > lo) else beam_action_bands(
+        system, gamma, omega_min=lo, omega_max=hi, beam_ratio=zb, pitch_ratio=zp)
+    verdict = ("unstable" if found else "stable") if bands else "not searched"
     return BeamActionResult(
         Omega=Ob * system.omega_1, Omega_bar=Ob, alpha=alpha_all[:, :R], frequencies=freqs[:R],
         stable=stable, growth_rate=growth, max_growth_rate=float(growth[i]),
         Omega_at_max=at_max, hill_monodromy_difference=diff,
-        verdict="unstable" if bands else "stable", gamma=gamma, K=system.K,
-        N=system.N, S=S, R=R, p=system.p, bands=bands, beam_damping_ratio=zb,
+        verdict=verdict, gamma=gamma, K=system.K,
+        N=system.N, S=S, R=R, p=system.p, bands=found, beam_damping_ratio=zb,
         pitch_damping_ratio=zp, band_range=(lo, hi))
 
 

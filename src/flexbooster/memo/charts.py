@@ -339,10 +339,8 @@ def pitch_band_chart(model: Any, *, n_gamma: int = PITCH_BAND_CHART_LEVELS,
     if w > 0.0:
         for r in range(1, PITCH_MAX_TONGUE + 1):
             top = pitch_band_edges(w, gamma_max, tongue=r, damping_ratio=zeta)
-            if top is None:
-                if r * r * 1e-14 > 1.0 or 2.0 * w / r < lo:
-                    break
-                continue
+            if top is None:  # below round-off (or the critical gamma): so are higher tongues
+                break
             if top[1] < lo:  # this and every higher tongue lie below the range
                 break
             if top[0] > hi:
