@@ -94,6 +94,16 @@ def test_titan_pitch_bands_issue_12_numbers(titan_model):
                                                                             b1.omega_hi]
 
 
+def test_pitch_bands_do_not_depend_on_the_grid(titan_model):
+    # issue 12: the bands come from the range only: 40 and 4000 grid points give identical
+    # edges and growth rates (exact equality)
+    w, g = titan_model.omega_psi, titan_model.gamma
+    lo, hi = titan_model.omega_range
+    coarse = pitch.pitch_analysis(np.linspace(lo, hi, 40), w, g).bands
+    fine = pitch.pitch_analysis(np.linspace(lo, hi, 4000), w, g).bands
+    assert coarse == fine and len(coarse) == 3
+
+
 def test_titan_pitch_band_at_gamma_0_3_issue_12():
     # issue 12: with gamma = 0.3 the first band is "~11.11-12.89 rad/s" (approximate: +-0.025)
     m = model_from_case(_titan(gamma=0.3))
