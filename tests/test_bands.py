@@ -177,6 +177,23 @@ def test_damped_pitch_critical_gamma_is_bolotin_delta_over_pi(zeta):
     assert below is None and above is not None
 
 
+def test_damped_pitch_grid_flags_agree_with_the_bands():
+    # invariant (two methods): the grid's damped stability (beta of a' = a (1 - zeta^2),
+    # unstable where Im beta > zeta sqrt(a), Magnus integration) against the band edges
+    # (Hill's determinant + brentq): a grid point is unstable iff it lies inside a band
+    # (exact on a grid that avoids the edges by > 1e-9 relative)
+    w, g, zeta = 6.0, 0.3, 0.02
+    Omega = np.linspace(3.0, 20.0, 2001)
+    res = pitch.pitch_analysis(Omega, w, g, damping_ratio=zeta)
+    assert res.bands and res.damping_ratio == zeta
+    inside = np.zeros(Omega.size, bool)
+    for b in res.bands:
+        assert np.min(np.abs(Omega - b.omega_lo)) > 1e-9 * b.omega_lo
+        inside |= (Omega > b.omega_lo) & (Omega < b.omega_hi)
+    assert np.array_equal(~res.stable, inside)
+    assert np.all(res.growth_rate[~inside] == 0.0) and np.all(res.growth_rate[inside] > 0.0)
+
+
 def test_damped_pitch_critical_gamma_agrees_with_toolkit():
     # invariant (two methods): floquet.critical_amplitude on the 1 x 1 system, gamma_rtol 1e-6
     w, zeta = 6.0, 0.01
