@@ -21,14 +21,14 @@ import argparse
 import time
 
 import numpy as np
+from flexbooster.beam import first_bending_frequency
+from flexbooster.beam_action import beam_action_system
+from flexbooster.geometry import mass_properties
 
 # the matrices of the project's default case (these import paths may move with the
 # restructuring of the package; keep them in this one block)
 import flexbooster
-from flexbooster.beam import first_bending_frequency
-from flexbooster.beam_action import beam_action_system
 from flexbooster.floquet import growth_rate, instability_regions
-from flexbooster.geometry import mass_properties
 
 
 def default_system(N: int = 10):

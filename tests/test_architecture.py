@@ -26,6 +26,7 @@ PACKAGE = Path(flexbooster.__file__).parent
 #: Layer of each top-level module or subpackage of flexbooster (docs/architecture.md).
 LAYER = {
     "errors": "input", "units": "input", "checks": "input", "case": "input",
+    "vehicle_case": "input",
     "memo": "core", "floquet": "core", "shell_of_revolution": "core", "vehicle": "core",
     "model": "model", "_threads": "pipeline",
     "results": "results", "analysis": "pipeline",

@@ -9,6 +9,9 @@ Nothing of geometry.py's closed forms is used.
 
 from __future__ import annotations
 
+import math
+import re
+
 import numpy as np
 import pint
 import pytest
@@ -138,3 +141,20 @@ def test_dimensionless_groups_values():
     assert g.mu == pytest.approx(8000 * 100 * 2500 / 2e11, rel=1e-15)  # = 0.1
     assert g.lambda1 == 5.0 and g.lambda2 == 2.5 and g.sigma == pytest.approx(1e-3, rel=1e-15)
     assert g.T0_bar == pytest.approx(1e4 / (8000 * 0.01 * 100 * 2500), rel=1e-15)  # = 0.5
+
+
+@pytest.mark.parametrize(
+    ("call", "words"),
+    [
+        (lambda: mass_properties(math.nan, 1, 1, 1, 0.01, 1), "R1 = nan"),
+        (lambda: mass_properties(-5.0, 1, 1, 1, 0.01, 1), "R1 = -5.0"),
+        (lambda: mass_properties(1, 1, 1, 1, math.inf, 1), "h = inf"),
+        (lambda: mass_properties(1, 1, 1, -1.0, 0.01, 1), "L2 = -1.0"),
+        (lambda: mass_properties(1e300, 1, 1, 1, 0.01, 1), "overflow"),
+        (lambda: dimensionless_groups(1, 1, 1, 0.01, math.nan, 1, 1, 1), "E = nan"),
+    ],
+)
+def test_bad_arguments_raise_naming_the_parameter(call, words):
+    # issue 18 item 6: no NaN returned silently, no garbage accepted
+    with pytest.raises(ValueError, match=re.escape(words)):
+        call()

@@ -5,7 +5,8 @@ Tiers:
 * exact limits / closed forms: the shear-diaphragm (SD-SD) cylinder, Sanders and Donnell,
   from the 3x3 characteristic determinant written out below from the strain-displacement
   relations (Leissa, NASA SP-288, 1973, sec. 2.1-2.3), independent of the FE code; Donnell's
-  cubic of the memo path (``flexbooster.reference.donnell.donnell_frequencies``, Leissa eqs. 2.20-2.22);
+  cubic of the memo path (``flexbooster.reference.donnell.donnell_frequencies``,
+  Leissa eqs. 2.20-2.22);
   Batdorf's buckling formula; Rayleigh's inextensional modes; exact free-free torsion;
   the Euler-Bernoulli free-free beam; the cone's torsion ODE solved by shooting;
 * literature values: the classical buckling stress E h / (R sqrt(3 (1 - nu^2)));
@@ -126,7 +127,8 @@ def test_sd_cylinder_matches_closed_form(theory, k):
 
 @pytest.mark.parametrize("k", [0, 2, 5])
 def test_donnell_equals_memo_path_cubic(k):
-    """Donnell FE = flexbooster.reference.donnell.donnell_frequencies (Leissa 2.20-2.22 cubic), m = 1..3,
+    """Donnell FE = flexbooster.reference.donnell.donnell_frequencies (Leissa 2.20-2.22),
+    m = 1..3,
     all three branches, rel. 1e-6."""
     length, radius, h = 3.0, 1.2, 0.008
     veh = Vehicle([Cylinder(radius, length, h, **STEEL)], theory="donnell", **SD)

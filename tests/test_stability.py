@@ -10,6 +10,7 @@ Omega_3 = (1 + beta/2) Omega_bar), not from the solver's coefficient table.
 
 from __future__ import annotations
 
+import re
 from types import SimpleNamespace
 
 import numpy as np
@@ -249,6 +250,7 @@ def test_no_pulsation_silences_omega_1_and_3():
     assert got.tolist() == [False, True, False]
 
 
+@pytest.mark.slow
 def test_active_flags_match_the_forcing_computed_from_its_definition():
     """The 'active' column of the default case against the resonant forcing of each root
     computed by quadrature of the forcing functions (3.0-3, 5.3-4) on the shape functions
@@ -316,6 +318,7 @@ def _labels(table):
     return out
 
 
+@pytest.mark.slow
 def test_default_case_same_roots_as_brute_force_on_sampled_curves():
     """Issue 6 acceptance on the default case: for two curves of every family (sampled with a
     fixed seed), every root against every shell frequency of its set found by a brute-force
@@ -367,3 +370,20 @@ def test_too_many_roots_is_a_clear_error_not_a_memory_crash():
     modes = small_modes()
     with pytest.raises(TooManyRootsError, match=r"exceed max_roots = 10; reduce the shell modes"):
         unstable_frequencies(modes, params, **SOLVE, max_roots=10)
+
+
+@pytest.mark.parametrize(
+    ("call", "words"),
+    [
+        (lambda: excitation_curves(2, -1), "S = -1"),
+        (lambda: excitation_curves(-1, 2), "R = -1"),
+        (lambda: excitation(excitation_curves(1, 1), np.array([1.0]), np.array([np.nan]),
+                            np.zeros((1, 1))), "beta: must be finite"),
+        (lambda: excitation(excitation_curves(1, 1), np.array([1.0, 2.0]), np.array([0.1]),
+                            np.zeros((2, 1))), "beta: shape"),
+    ],
+)
+def test_bad_arguments_raise_naming_the_parameter(call, words):
+    # issue 18 item 6: no NaN returned silently, no garbage accepted
+    with pytest.raises(ValueError, match=re.escape(words)):
+        call()

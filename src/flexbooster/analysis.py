@@ -27,15 +27,19 @@ from .memo.pitch import pitch_analysis
 from .memo.responses import SimulationResult, excitation_parameters, simulate
 from .memo.shell import natural_frequencies
 from .memo.stability import ShellModes, TooManyRootsError, unstable_frequencies
-from .model import model_from_case
+from .model import model_from_case, vehicle_from_case
 from .results import SCHEMA_VERSION, UNITS, Results
+from .shell_of_revolution.survey import VehicleSurvey, vehicle_survey
 
 __all__ = [
     "analyze",
+    "analyze_vehicle",
+    "vehicle_warnings",
     "simulate_case",
     "SCHEMA_VERSION",
     "UNITS",
     "STAGES",
+    "VEHICLE_STAGE",
     "THIN_SHELL_LIMIT",
     "MATHIEU_A_RANGE",
     "MATHIEU_Q_MAX",
@@ -50,6 +54,8 @@ STAGES = (
     "unstable thrust frequencies",
     "figure data",
 )
+#: The stage announced after :data:`STAGES` for a case with ``[vehicle]`` only.
+VEHICLE_STAGE = "vehicle modes"
 #: Thin-shell theory (Donnell, memo 2.3) is trusted for h/R up to 1/20.
 THIN_SHELL_LIMIT = 1.0 / 20.0
 #: The memo's range for the Mathieu parameters (eq. 4.2-5): 0 < a < 1, 0 < q <= 0.05.
@@ -173,6 +179,11 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
     if figures:
         step(STAGES[5])
         data = _figure_data(model, pitch, shell, action, table, params)
+    vehicle = None
+    if case.vehicle is not None:  # only a case with [vehicle]: the default run is unchanged
+        step(VEHICLE_STAGE)
+        vehicle = analyze_vehicle(case, views=figures)
+        extra += vehicle_warnings(vehicle)
     return Results(
         case=case,
         mass=model.mass,
@@ -187,6 +198,7 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
         beam_action=action,
         stability=table,
         warnings=tuple(_warnings(model, pitch.a, pitch.q) + extra),
+        vehicle=vehicle,
     )
 
 
@@ -236,3 +248,80 @@ def simulate_case(case: Case, Omega: float, *, tau_max: float, n_out: int = 401,
         model = model_from_case(case)
         params = excitation_parameters(model, beam_action_analysis(model, bands=False))
         return simulate(model, Omega, tau_max, n_out=n_out, psi0=psi0, params=params)
+
+
+def analyze_vehicle(case: Case, *, k_max: int | None = None, f_max: float | None = None,
+                    prestress: bool = True, views: bool = True) -> VehicleSurvey:
+    """The vehicle modes of a case (``flexbooster modes``; the last stage of :func:`analyze`).
+
+    Parameters
+    ----------
+    case : Case
+        The validated case; its ``[vehicle]`` table, or the memo vehicle built from
+        ``[booster]`` (:func:`flexbooster.model.vehicle_from_case`).
+    k_max : int, optional
+        Highest circumferential wave number (dimensionless), 0..200; default the case's
+        ``vehicle.k_max`` (20).
+    f_max : float, optional
+        Keep the modes up to this frequency (Hz), > 0; default the band up to 5 times the
+        lowest elastic frequency.
+    prestress : bool
+        Prestress by the case's steady thrust F0 (inertia relief).
+    views : bool
+        Compute the figure data of the mode shapes.
+
+    Returns
+    -------
+    VehicleSurvey
+
+    Raises
+    ------
+    CaseError
+        ``thrust.F0`` when the thrust prestress exceeds a buckling load of the vehicle.
+
+    References
+    ----------
+    .. [1] Tech Memo 104, Fig. 1, sec. 5.3 (the memo vehicle); D. Bushnell, Computers &
+       Structures 4, 1974 (shells of revolution); docs/theory/vehicle-case.md.
+    """
+    from .errors import CaseError
+
+    table = case.vehicle
+    k_max = (table.k_max if table is not None else 20) if k_max is None else k_max
+    source = "vehicle" if table is not None and table.segments is not None else "memo"
+    with blas_threads(1):
+        vehicle = vehicle_from_case(case)
+        try:
+            return vehicle_survey(vehicle, k_max=k_max, F0=case.F0, f_max=f_max,
+                                  prestress=prestress, views=views, source=source)
+        except ValueError as exc:
+            if "buckling" in str(exc):
+                raise CaseError("thrust.F0", case.F0, "the thrust prestress exceeds a "
+                                f"buckling load of the vehicle ({exc}); use --no-prestress "
+                                "for the unloaded modes") from None
+            raise
+
+
+def vehicle_warnings(survey: VehicleSurvey) -> list[AnalysisWarning]:
+    """The warnings of the vehicle modes (h/R > 1/20 per segment; prestress left out).
+
+    Parameters
+    ----------
+    survey : VehicleSurvey
+        From :func:`analyze_vehicle`.
+
+    Returns
+    -------
+    list of AnalysisWarning
+        Code ``thick-shell`` with field ``vehicle.segments[i]`` (or ``booster.cylinder{i+1}``
+        for the memo vehicle), and ``vehicle-prestress`` when a flat plate forced the
+        unloaded modes.
+    """
+    out = []
+    for w in survey.modes.warnings:
+        field = (f"vehicle.segments[{w.segment}]" if survey.source == "vehicle"
+                 else f"booster.cylinder{w.segment + 1}")
+        out.append(AnalysisWarning(w.code, field, w.message))
+    if "flat plate" in survey.note:
+        out.append(AnalysisWarning("vehicle-prestress", "vehicle.segments", survey.note))
+    return out

@@ -24,6 +24,7 @@ from pydantic import BaseModel, ConfigDict, StrictInt, ValidationError, field_va
 
 from .errors import CaseError
 from .units import to_si
+from .vehicle_case import VehicleTable, check_vehicle
 
 __all__ = [
     "Cylinder",
@@ -254,6 +255,9 @@ class Case(BaseModel):
     truncation : Truncation
     damping : Damping
         Optional; no damping by default.
+    vehicle : VehicleTable or None
+        The optional ``[vehicle]`` table (:mod:`flexbooster.vehicle_case`); None: the memo
+        vehicle built from ``booster`` is used by ``flexbooster modes`` only.
     """
 
     model_config = _FROZEN
@@ -262,6 +266,7 @@ class Case(BaseModel):
     thrust: Thrust
     truncation: Truncation = Truncation()
     damping: Damping = Damping()
+    vehicle: VehicleTable | None = None
 
     @property
     def F0(self) -> float:
@@ -287,11 +292,18 @@ class Case(BaseModel):
         data = self.model_dump()
         data["thrust"]["F0"] = self.F0
         data["thrust"]["T0"] = self.T0
+        if data.get("vehicle") is None:  # no [vehicle]: results.json as before
+            data.pop("vehicle", None)
         return data
 
 
 def _describe(loc: tuple) -> str:
-    return ".".join(str(part) for part in loc) if loc else "case"
+    if not loc:
+        return "case"
+    out = ""
+    for part in loc:  # list indices as [i]: vehicle.segments[1].radius_aft
+        out += f"[{part}]" if isinstance(part, int) else (f".{part}" if out else str(part))
+    return out
 
 
 def _from_validation_error(exc: ValidationError) -> CaseError:
@@ -341,6 +353,7 @@ def _cross_checks(case: Case) -> None:
             n.R,
             f"must not exceed N + 1 = {n.N + 1} (rigid rotation plus N elastic modes)",
         )
+    check_vehicle(case.vehicle, booster_radii=(b.cylinder1.radius, b.cylinder2.radius))
 
 
 def _validate(data: Mapping[str, Any]) -> Case:

@@ -1,4 +1,4 @@
-"""Command line: ``flexbooster run``, ``stability``, ``simulate``, ``init``.
+"""Command line: ``flexbooster run``, ``stability``, ``simulate``, ``modes``, ``init``.
 
 Exit codes: 0 success; 1 an unexpected internal error or a file that cannot be written;
 2 invalid input (a one-line message naming the field, the value and the rule, no traceback);
@@ -9,7 +9,9 @@ a terminal), ``--quiet`` silences everything but errors and ``--format json`` pr
 
 from __future__ import annotations
 
+import math
 import os
+import signal
 import sys
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
@@ -57,6 +59,7 @@ def cli() -> None:
       flexbooster run -q --format json > r.json   # results as JSON on standard output
       flexbooster stability --omega-min 10 --omega-max "20 Hz"
       flexbooster simulate --omega 300 --tau-max 50
+      flexbooster modes my-booster.toml --k-max 8  # vehicle modes (shell of revolution)
     """
 
 
@@ -69,13 +72,32 @@ def _load(case_file: Path | None):
 _CASE_ARG = click.argument(
     "case_file", required=False, type=click.Path(dir_okay=False, path_type=Path)
 )
+def _check_output(ctx: click.Context, param: click.Parameter, value: Path) -> Path:
+    """The output folder, checked before any analysis: not a file, under no file, writable."""
+    rule = None
+    if value.exists() and not value.is_dir():
+        rule = "is a file, not a folder"
+    else:
+        parent = value
+        while not parent.exists() and parent != parent.parent:
+            parent = parent.parent
+        if not parent.is_dir():
+            rule = f"cannot be created: {parent} is a file"
+        elif not os.access(parent, os.W_OK | os.X_OK):
+            rule = f"cannot be written: {parent} is not writable"
+    if rule:
+        raise CaseError("--output", str(value), rule)
+    return value
+
+
 _OUTPUT = click.option(
     "-o",
     "--output",
     "output",
     default="flexbooster-results",
     show_default=True,
-    type=click.Path(file_okay=False, path_type=Path),
+    type=click.Path(path_type=Path),
+    callback=_check_output,
     help="Folder for the results.",
 )
 
@@ -163,7 +185,8 @@ def run(case_file: Path | None, output: Path, no_figures: bool, quiet: bool, fmt
     from .present.summary import print_summary
 
     case = _load(case_file)
-    with _progress(len(STAGES) + len(OUTPUT_STAGES), quiet) as step:
+    n_stages = len(STAGES) + (case.vehicle is not None) + len(OUTPUT_STAGES)
+    with _progress(n_stages, quiet) as step:
         results = analyze(case, progress=step, figures=not no_figures)
         paths = write_outputs(results, output, figures=not no_figures, progress=step)
     _report(results, fmt, quiet, print_summary)
@@ -273,6 +296,75 @@ def simulate(
         click.echo(f"wrote {path}")
 
 
+def _f_max(text: str | None) -> float | None:
+    """--f-max in Hz: a bare number is Hz, a string with units is converted ("1 kHz")."""
+    from .units import to_si
+
+    if text is None:
+        return None
+    try:
+        value = float(text)
+    except ValueError:
+        value = to_si("--f-max", text, "angular_frequency") / (2.0 * math.pi)
+    if not (math.isfinite(value) and value > 0.0):
+        raise CaseError("--f-max", text, "must be a positive frequency (Hz if no unit)")
+    return value
+
+
+@cli.command(epilog=_EXIT_CODES)
+@_CASE_ARG
+@click.option("--k-max", type=int, default=None,
+              help="Highest circumferential wave number k (0..200) [default: vehicle.k_max, 20].")
+@click.option("--f-max", default=None,
+              help='Keep the modes up to this frequency, e.g. 50 or "1 kHz" (Hz if no unit) '
+                   "[default: up to 5x the lowest elastic frequency].")
+@click.option("--no-prestress", is_flag=True,
+              help="Unloaded frequencies (default: prestressed by the thrust F0, inertia relief).")
+@click.option("-o", "--output", "output", default=None, type=click.Path(path_type=Path),
+              callback=lambda ctx, param, value: None if value is None
+              else _check_output(ctx, param, value),
+              help="Also write OUTPUT/modes.json, OUTPUT/vehicle-modes.csv and the figures.")
+@_QUIET
+@click.option("--format", "fmt", type=click.Choice(["table", "json"]), default="table",
+              show_default=True,
+              help='table: one table per k; json: {"modes": [...], ...} on standard output.')
+def modes(case_file: Path | None, k_max: int | None, f_max: str | None, no_prestress: bool,
+          output: Path | None, quiet: bool, fmt: str) -> None:
+    """Natural modes of the vehicle of CASE_FILE as one shell of revolution, k = 0..K_MAX.
+
+    The vehicle is the case's [vehicle] table, or, without one, the memo's: the two cylinders
+    of [booster] joined by the memo's rigid weightless disc, with shear-diaphragm ends.  The
+    frequencies include the prestress of the steady thrust F0 (inertia relief) unless
+    --no-prestress is given; the output says which.
+
+    \b
+    Examples:
+      flexbooster modes                               # the default case's memo vehicle
+      flexbooster modes my.toml --k-max 8 --f-max 40
+      flexbooster modes my.toml --format json | python -m json.tool | head
+      flexbooster modes my.toml -o out/               # modes.json, CSV, mode-shape figures
+    """
+    from .analysis import analyze_vehicle
+
+    case = _load(case_file)
+    if k_max is not None and not 0 <= k_max <= 200:
+        raise CaseError("--k-max", k_max, "must be an integer in [0, 200]")
+    survey = analyze_vehicle(case, k_max=k_max, f_max=_f_max(f_max),
+                             prestress=not no_prestress, views=True)
+    if fmt == "json":
+        from .present.io import dumps_finite
+
+        click.echo(dumps_finite(survey.to_dict(figures=False), indent=2))
+    elif not quiet:
+        from .present.vehicle import print_vehicle_modes
+
+        print_vehicle_modes(survey, Console())
+    if output is not None:
+        from .present.vehicle import write_vehicle_files
+
+        _wrote(write_vehicle_files(survey, output), fmt, quiet)
+
+
 @cli.command(epilog=_EXIT_CODES)
 @click.argument(
     "path",
@@ -305,6 +397,8 @@ def main(argv: list[str] | None = None) -> None:
     argv : list of str, optional
         Command-line arguments (default: ``sys.argv[1:]``).
     """
+    previous = signal.getsignal(signal.SIGTERM)
+    signal.signal(signal.SIGTERM, _terminate)  # SIGTERM cleans up like Ctrl-C
     try:
         cli.main(args=argv, prog_name="flexbooster", standalone_mode=False)
     except CaseError as exc:
@@ -313,9 +407,12 @@ def main(argv: list[str] | None = None) -> None:
         _fail("interrupted", EXIT_INTERRUPTED)
     except KeyboardInterrupt:
         _fail("interrupted", EXIT_INTERRUPTED)
-    except click.ClickException as exc:
-        exc.show()
-        sys.exit(EXIT_INPUT if isinstance(exc, click.UsageError) else exc.exit_code)
+    except click.ClickException as exc:  # usage errors: one line, exit 2
+        message = " ".join(exc.format_message().split())
+        ctx = getattr(exc, "ctx", None)
+        if isinstance(exc, click.UsageError) and ctx is not None:
+            message += f" (see '{ctx.command_path} --help')"
+        _fail(message, EXIT_INPUT if isinstance(exc, click.UsageError) else exc.exit_code)
     except OSError as exc:
         _fail(f"{exc.filename or ''}: {exc.strerror or exc}", EXIT_INTERNAL)
     except Exception as exc:  # pragma: no cover - a bug; keep the traceback reachable
@@ -326,7 +423,13 @@ def main(argv: list[str] | None = None) -> None:
             "(set FLEXBOOSTER_DEBUG=1 for a traceback)",
             EXIT_INTERNAL,
         )
+    finally:
+        signal.signal(signal.SIGTERM, previous)
     sys.exit(EXIT_OK)
+
+
+def _terminate(signum: int, frame: object) -> None:
+    raise KeyboardInterrupt
 
 
 if __name__ == "__main__":  # pragma: no cover

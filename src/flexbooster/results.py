@@ -20,6 +20,7 @@ from .memo.model import BoosterModel
 from .memo.pitch import PitchResult
 from .memo.shell import ShellFrequencies
 from .memo.stability import StabilityTable
+from .shell_of_revolution.survey import VehicleSurvey
 
 if TYPE_CHECKING:
     from .case import Case
@@ -119,6 +120,8 @@ class Results:
         Unstable thrust frequencies (7.3); None if not computed.
     warnings : tuple of AnalysisWarning
         Conditions the user must know about.
+    vehicle : VehicleSurvey or None
+        The vehicle modes (shell of revolution), only for a case with ``[vehicle]``.
     """
 
     case: Case
@@ -134,6 +137,7 @@ class Results:
     beam_action: BeamActionResult | None = None
     stability: StabilityTable | None = None
     warnings: tuple[AnalysisWarning, ...] = field(default_factory=tuple)
+    vehicle: VehicleSurvey | None = None
 
     @property
     def Omega(self) -> np.ndarray:
@@ -152,7 +156,7 @@ class Results:
 
     def to_dict(self) -> dict[str, Any]:
         """What results.json holds: schema version, units, inputs and every result."""
-        return {
+        out = {
             "schema_version": SCHEMA_VERSION,
             "flexbooster_version": __version__,
             "units": dict(UNITS),
@@ -173,5 +177,8 @@ class Results:
             "warnings": [w.to_dict() for w in self.warnings],
             "figures": None if self.figures is None else self.figures.to_dict(),
         }
+        if self.vehicle is not None:  # only for a case with [vehicle] (units inside)
+            out["vehicle_modes"] = self.vehicle.to_dict()
+        return out
 
 

@@ -29,6 +29,8 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
+from ..checks import nonnegative, positive
+
 __all__ = [
     "DimensionlessGroups",
     "MassProperties",
@@ -120,9 +122,17 @@ def mass_properties(
     ----------
     Tech Memo 104, eqs. (2.2-3), (4.2-2b) and Fig. 1; reading guide, erratum E1.
     """
+    R1, L1, h, rho = (positive(n, v) for n, v in (("R1", R1), ("L1", L1), ("h", h),
+                                                   ("rho", rho)))
+    R2, L2 = nonnegative("R2", R2), nonnegative("L2", L2)  # 0: the single-cylinder limit
     m1 = 2.0 * np.pi * rho * h * R1 * (2.0 * L1)
     m2 = 2.0 * np.pi * rho * h * R2 * (2.0 * L2)
     mass = m1 + m2
+    with np.errstate(over="ignore"):
+        scale = np.float64(mass) * np.float64(R1 + R2 + L1 + L2) ** 2  # the size of I_cm
+    if not np.isfinite(scale):
+        raise ValueError(f"R1, L1, R2, L2, h, rho = {(R1, L1, R2, L2, h, rho)!r}: the mass "
+                         "properties overflow double precision")
     L = L1 + L2
     x_cm = (m1 * L1 + m2 * (2.0 * L1 + L2)) / mass  # first moment of the two shells
     d2 = x_cm
@@ -254,6 +264,10 @@ def dimensionless_groups(
     ----------
     Tech Memo 104, eqs. (3.0-1), (3.0-4) and the notation list; reading guide, erratum E3.
     """
+    for name, value in (("L", L), ("R1", R1), ("R2", R2), ("h", h), ("E", E), ("rho", rho),
+                        ("omega_1", omega_1)):
+        positive(name, value)
+    nonnegative("T0", T0)
     return DimensionlessGroups(
         mu=float(rho * L**2 * omega_1**2 / E),  # notation list (eq. 3.0-4a corrected, E3)
         lambda1=float(L / R1),  # eq. (3.0-1)

@@ -41,6 +41,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..checks import count
+
 __all__ = [
     "EPS",
     "FAMILIES",
@@ -137,6 +139,8 @@ def excitation_curves(R: int, S: int) -> ExcitationCurves:
     ----------
     Tech Memo 104, eqs. (7.2-6), (7.3-1)..(7.3-35).
     """
+    R = count("R", R, 0, None)
+    S = count("S", S, 0, None)
     rows: list[tuple[int, int, int, int, int, float, float, float]] = []
     idx = (1, 2, 3)
     for fam, (_, _, _, kind) in FAMILIES.items():
@@ -208,6 +212,11 @@ def excitation(
     Omega_bar = np.asarray(Omega_bar, dtype=float)
     beta = np.asarray(beta, dtype=float)
     alpha = np.asarray(alpha, dtype=float).reshape(Omega_bar.size, -1)
+    for name, value in (("Omega_bar", Omega_bar), ("beta", beta), ("alpha", alpha)):
+        if not np.all(np.isfinite(value)):
+            raise ValueError(f"{name}: must be finite (got {value.ravel()[:4]!r} ...)")
+    if beta.shape != Omega_bar.shape:
+        raise ValueError(f"beta: shape {beta.shape} must equal Omega_bar's {Omega_bar.shape}")
     a_r = alpha.T[np.maximum(curves.r - 1, 0)] if alpha.shape[1] else 0.0  # (C, n)
     c = curves.k0[:, None] + curves.kb[:, None] * beta[None, :] + curves.ka[:, None] * a_r
     return np.abs(c) * Omega_bar[None, :]  # (7.2-6), (7.3-*)

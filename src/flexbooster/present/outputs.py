@@ -80,6 +80,9 @@ def write_outputs(
         written.append(
             write_csv_atomic(folder / "unstable-frequencies.csv", results.stability.to_columns())
         )
+    if results.vehicle is not None:  # a case with [vehicle] only
+        written.append(write_csv_atomic(folder / "vehicle-modes.csv",
+                                        results.vehicle.to_columns()))
     svgs: dict[str, str] = {}
     if figures and results.figures is not None:
         step(OUTPUT_STAGES[1])
@@ -116,6 +119,7 @@ def _render(fig) -> tuple[str, bytes]:
     with matplotlib.rc_context({"svg.hashsalt": "flexbooster"}):
         svg = _io.StringIO()
         fig.savefig(svg, format="svg", dpi=150, metadata={"Date": None})
+    fig.set_layout_engine("none")  # laid out by the first save: keep the positions
     png = _io.BytesIO()
     fig.savefig(png, format="png", dpi=120)
     return svg.getvalue(), png.getvalue()
@@ -149,9 +153,9 @@ def make_figures(results: Results) -> dict[str, Figure]:
     -------
     dict of str to matplotlib.figure.Figure
         By file stem: ``ince-strutt``, ``beam-modes``, ``shell-frequencies-cylinder1``,
-        ``shell-frequencies-cylinder2``, ``nodal-patterns``,
-        ``pitch-band-chart`` and, when they were computed, ``beam-action-chart`` and
-        ``campbell``.
+        ``shell-frequencies-cylinder2``, ``nodal-patterns``, ``pitch-band-chart`` and,
+        when they were computed, ``beam-action-chart`` and ``campbell``; for a case with
+        ``[vehicle]`` also ``vehicle-mode-shapes`` and ``vehicle-unrolled``.
     """
     import matplotlib
 
@@ -179,4 +183,8 @@ def make_figures(results: Results) -> dict[str, Figure]:
         figs["beam-action-chart"] = plot_band_chart(data.beam_action_chart)
     if data.campbell is not None:
         figs["campbell"] = campbell_diagram(data.campbell)
+    if results.vehicle is not None:  # a case with [vehicle] only
+        from .vehicle import vehicle_figures
+
+        figs.update(vehicle_figures(results.vehicle))
     return figs

@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import html
 import math
+import os
 import re
 from collections.abc import Callable, Mapping, Sequence
 from datetime import UTC, datetime
@@ -444,6 +445,36 @@ def _unstable(results: Results) -> str:
     return head + table
 
 
+def _vehicle(results: Results, svgs: Mapping[str, str] | None) -> str:
+    """The vehicle modes (a case with [vehicle] only): settings, lowest mode per k, figures."""
+    from .vehicle import VEHICLE_FIGURES
+
+    sv = results.vehicle
+    m, v = sv.modes, sv.vehicle
+    kinds = ", ".join(type(g).__name__.lower() for g in v.segments)
+    out = [f"<p>{len(v.segments)} segments ({_e(kinds)}), "
+           f"junctions {_e(', '.join(v.junctions) or 'none')}, ends {_e(v.aft_end)} / "
+           f"{_e(v.fwd_end)}, {_e(v.theory)} theory, k = 0..{sv.k_max}; frequencies "
+           f"{_e(sv.note)}. {len(m)} modes in all (every one is in vehicle-modes.csv); the "
+           "lowest of each k:</p>"]
+    rows = []
+    for kk in np.unique(m.k):
+        idx = np.flatnonzero(m.k == kk)
+        i = int(idx[np.argmin(m.hz[idx])])
+        rows.append((kk, idx.size, m.hz[i], m.omega[i], m.type[i], m.order[i], m.segment[i]))
+    out.append(_table(("k", "modes", "lowest Hz", "rad/s", "type", "order", "segment"), rows,
+                      (True, True, True, True, False, True, True)))
+    for name, caption in VEHICLE_FIGURES.items():
+        if svgs and name in svgs:
+            svg = inline_svg(svgs[name], f"fig-{name}", caption)
+            out.append(f'<figure id="fig-{_e(name)}">{svg}'
+                       f"<figcaption>{_e(caption)}</figcaption></figure>")
+    if not svgs or "vehicle-mode-shapes" not in svgs:
+        out.append('<p class="note">The vehicle figures were not drawn (run without '
+                   "--no-figures).</p>")
+    return "".join(out)
+
+
 def _verification() -> str:
     return ("<p>Every number of this report is produced by code that the test suite checks "
             "against an independent computation (not against the memo, which prints no "
@@ -476,6 +507,14 @@ def _summary(results: Results) -> str:
     return _table(("result", "value"), rows, (False, False))
 
 
+def _source_date() -> str:
+    """", YYYY-MM-DD HH:MM:SS UTC" from SOURCE_DATE_EPOCH, or "" (no time stamp)."""
+    value = os.environ.get("SOURCE_DATE_EPOCH", "").strip()
+    if not value.isdigit():
+        return ""
+    return ", " + datetime.fromtimestamp(int(value), UTC).strftime("%Y-%m-%d %H:%M:%S UTC")
+
+
 def render_report(results: Results, svgs: Mapping[str, str] | None = None,
                   generated: str | None = None) -> str:
     """The report of an analysis as one HTML document.
@@ -488,14 +527,16 @@ def render_report(results: Results, svgs: Mapping[str, str] | None = None,
         SVG text of the figures by name (the keys of :data:`FIGURES`), as returned by
         :func:`flexbooster.outputs.figure_svgs`; missing figures are replaced by a note.
     generated : str, optional
-        Time stamp printed in the header (default: now, UTC, to the second).
+        Time stamp printed in the header; by default the time given by the environment
+        variable ``SOURCE_DATE_EPOCH`` (seconds since 1970, UTC: reproducible builds), else
+        none, so that two runs of one case write the same file.
 
     Returns
     -------
     str
         The HTML text (UTF-8, no external resource).
     """
-    generated = generated or datetime.now(UTC).strftime("%Y-%m-%d %H:%M:%S UTC")
+    stamp = f", {generated}" if generated else _source_date()
     case = results.case
     body: dict[str, Callable[[], str]] = {
         "summary": lambda: _summary(results),
@@ -511,7 +552,12 @@ def render_report(results: Results, svgs: Mapping[str, str] | None = None,
         "campbell": lambda: _figure("campbell", svgs),
         "verification": _verification,
         "warnings": lambda: _warnings(results),
+        "vehicle-modes": lambda: _vehicle(results, svgs),
     }
+    sections = SECTIONS
+    if results.vehicle is not None:  # a case with [vehicle]: before the verification summary
+        sections = (*SECTIONS[:-2], ("vehicle-modes", "Vehicle modes (shell of revolution)"),
+                    *SECTIONS[-2:])
     title = f"flexbooster report: {case.name}"
     parts = [
         "<!DOCTYPE html>",
@@ -519,14 +565,14 @@ def render_report(results: Results, svgs: Mapping[str, str] | None = None,
         '<meta name="viewport" content="width=device-width, initial-scale=1" />',
         f"<title>{_e(title)}</title><style>{_CSS}</style></head><body>",
         f"<header><h1>{_e(title)}</h1>",
-        f'<p class="note">flexbooster {_e(__version__)}, {_e(generated)}. Dynamic stability '
+        f'<p class="note">flexbooster {_e(__version__)}{_e(stamp)}. Dynamic stability '
         "of a flexible two-cylinder booster under a gimbaled, pulsating thrust (Tech Memo 104). "
         "All quantities in SI units.</p>",
         "<nav><ol>",
-        *[f'<li><a href="#{sid}">{_e(name)}</a></li>' for sid, name in SECTIONS],
+        *[f'<li><a href="#{sid}">{_e(name)}</a></li>' for sid, name in sections],
         "</ol></nav></header><main>",
     ]
-    for sid, name in SECTIONS:
+    for sid, name in sections:
         parts.append(f'<section id="{sid}"><h2>{_e(name)}</h2>{body[sid]()}</section>')
     parts.append("</main></body></html>\n")
     return "\n".join(parts)

@@ -121,6 +121,10 @@ def print_summary(results: Results, console: Console | None = None) -> None:
     _print_shell(results, console)
     _print_beam_action(results, console)
     print_stability(results, console)
+    if results.vehicle is not None:  # a case with [vehicle] only
+        from .vehicle import print_vehicle_summary
+
+        print_vehicle_summary(results.vehicle, console)
     if results.warnings:
         console.print(f"[bold yellow]Warnings ({len(results.warnings)}):[/bold yellow]")
         for w in results.warnings:

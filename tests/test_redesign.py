@@ -1,0 +1,112 @@
+"""Issue 11 acceptance: the redesign changed no number, and every figure is drawn from the
+results alone.
+
+The baselines ``tests/data/baseline/*.json.gz`` are the results.json of three cases written by
+commit 045ce06 (the code before the redesign) with the script in the docstring of
+:func:`_case`: the default case, a case with the CM in cylinder 2 and an inch-pound case, each
+with a reduced truncation (60 Omega points; M = N = 4 shell modes, N = 4 beam modes, S = 3,
+R = 3) so that the files stay small.  Every key of the baseline must be in today's results
+with the same value to 1e-12 relative (added keys, such as ``figures``, are allowed).
+"""
+
+from __future__ import annotations
+
+import gzip
+import importlib
+import inspect
+import json
+import pkgutil
+import tomllib
+from pathlib import Path
+
+import pytest
+
+import flexbooster
+from flexbooster.case import default_case_text
+
+DATA = Path(__file__).parent / "data"
+CASES = {"default": None, "cm-in-cylinder2": "cases/cm-in-cylinder2.toml",
+         "titan-inch-pound": "cases/titan-inch-pound.toml"}
+
+
+def _case(name: str):
+    """The reduced case of a baseline (as generated at commit 045ce06)::
+
+        d["thrust"]["n_omega"] = 60
+        d["truncation"] = dict(M1=4, N1=4, M2=4, N2=4, N=4, S=3, R=3)
+    """
+    path = CASES[name]
+    d = tomllib.loads(default_case_text() if path is None else (DATA / path).read_text())
+    d["thrust"]["n_omega"] = 60
+    d["truncation"] = dict(M1=4, N1=4, M2=4, N2=4, N=4, S=3, R=3)
+    return flexbooster.load_case(d)
+
+
+#: Keys that issue 12 changed on purpose: the intervals are the exact band edges (not runs of
+#: unstable grid points) and the verdicts follow from the bands (docs/theory/bands.md).
+CHANGED_BY_ISSUE_12 = {".pitch.unstable_intervals", ".pitch.verdict", ".beam_action.verdict"}
+
+
+def _diff(old, new, path=""):
+    if path in CHANGED_BY_ISSUE_12:
+        return
+    if isinstance(old, dict):
+        assert isinstance(new, dict), path
+        for key, value in old.items():
+            assert key in new, f"{path}.{key} missing"
+            yield from _diff(value, new[key], f"{path}.{key}")
+    elif isinstance(old, list):
+        assert isinstance(new, list) and len(new) == len(old), f"{path}: length"
+        for n, (x, y) in enumerate(zip(old, new, strict=True)):
+            yield from _diff(x, y, f"{path}[{n}]")
+    elif isinstance(old, bool | str) or old is None:
+        if old != new:
+            yield path, old, new
+    elif not (old == new or abs(old - new) <= 1e-12 * max(abs(old), abs(new))):
+        yield path, old, new
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", sorted(CASES))
+def test_results_equal_the_baseline_before_the_redesign(name):
+    with gzip.open(DATA / "baseline" / f"{name}.json.gz", "rt") as f:
+        old = json.load(f)
+    new = flexbooster.analyze(_case(name)).to_dict()
+    for key in ("flexbooster_version", "units"):  # metadata, not results
+        old.pop(key)
+    diffs = list(_diff(old, new))
+    assert not diffs, f"{len(diffs)} values changed, e.g. {diffs[:3]}"
+    assert set(new) - set(old) - {"flexbooster_version", "units"} == {"figures"}
+
+
+def _solver_modules():
+    for package in ("flexbooster.memo", "flexbooster.floquet"):
+        pkg = importlib.import_module(package)
+        for info in pkgutil.walk_packages(pkg.__path__, prefix=f"{package}."):
+            yield importlib.import_module(info.name)
+
+
+def test_every_figure_is_drawn_from_the_results_alone(monkeypatch):
+    """Patch every function of the numerical core to raise, then draw every figure and the
+    report from a Results computed before: nothing may call a solver."""
+    from flexbooster.present.outputs import figure_svgs
+    from flexbooster.present.report import render_report
+
+    results = flexbooster.analyze(_case("default"))
+    patched = 0
+    for module in list(_solver_modules()):
+        for name, obj in list(vars(module).items()):
+            if inspect.isfunction(obj) and obj.__module__ == module.__name__:
+
+                def boom(*args, _name=f"{module.__name__}.{name}", **kwargs):
+                    raise AssertionError(f"presentation called the solver {_name}")
+
+                monkeypatch.setattr(module, name, boom)
+                patched += 1
+    assert patched > 100  # the patch reached the core
+    svgs = figure_svgs(results)
+    assert set(svgs) == {"ince-strutt", "beam-modes", "shell-frequencies-cylinder1",
+                         "shell-frequencies-cylinder2", "nodal-patterns",
+                         "pitch-band-chart", "beam-action-chart", "campbell"}
+    html = render_report(results, svgs)
+    assert "<svg" in html

@@ -1,0 +1,486 @@
+"""Issue 14 integration: the ``[vehicle]`` case table, ``flexbooster modes``, vehicle modes in run.
+
+Tiers:
+
+* exact: unit conversions of the issue's example table (pint, rel. 1e-12); defaults; the memo
+  vehicle built from ``[booster]`` is the hand-built ``Vehicle`` (two cylinders R1, 2 L1 and
+  R2, 2 L2, Tech Memo 104 Fig. 1), and its k >= 2 frequencies are those of
+  ``shell_of_revolution.vehicle_modes`` on that Vehicle (rel. 1e-12: the same computation
+  reached through the case; the physics is tested in tests/test_shell_of_revolution.py);
+* independent model: the memo vehicle with Donnell theory, unloaded, k = 2..4 below 30 Hz
+  equals the memo path's shell frequencies (``flexbooster.memo.shell.natural_frequencies``,
+  each cylinder with shear-diaphragm edges, the Donnell cubic; rel. 1e-5);
+* invariants and interfaces: every bad field gives one CaseError line naming it; the CLI
+  ``modes`` table, JSON and files; ``run`` with a ``[vehicle]`` case adds the key, the CSV,
+  the report section and its figures; the default case's results.json gains no key.
+"""
+
+from __future__ import annotations
+
+import copy
+import csv
+import json
+import math
+import tomllib
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import pytest
+
+from flexbooster.analysis import analyze, analyze_vehicle
+from flexbooster.case import default_case, default_case_text, load_case
+from flexbooster.cli import main
+from flexbooster.errors import CaseError
+from flexbooster.model import vehicle_from_case
+from flexbooster.shell_of_revolution import Cone, Cylinder, Vehicle, vehicle_modes
+
+#: The issue's example table (issue 14, item 1), verbatim.
+ISSUE_TABLE = """
+[vehicle]
+E = "70 GPa"
+nu = 0.3
+rho = "2700 kg/m^3"
+aft_end = "free"          # free | shear-diaphragm | clamped
+fwd_end = "free"
+theory = "sanders"        # sanders | donnell
+k_max = 20                # circumferential harmonics k = 0..k_max
+[[vehicle.segments]]      # listed from the aft edge forward
+kind = "cylinder"
+radius = "1.5 m"
+length = "6 m"
+thickness = "8 mm"
+[[vehicle.segments]]
+kind = "cone"             # a conical frustum; length 0 is a flat annular plate
+radius_aft = "1.5 m"
+radius_fwd = "1.0 m"
+length = "1 m"            # along the axis
+thickness = "8 mm"
+"""
+
+#: A small, fast analysis (the vehicle stage is what is tested, not the memo stages).
+SMALL = {"n_omega": 40, "truncation": dict(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)}
+
+
+def _base() -> dict:
+    return copy.deepcopy(tomllib.loads(default_case_text()))
+
+
+def _small(data: dict) -> dict:
+    data["thrust"]["n_omega"] = SMALL["n_omega"]
+    data["truncation"] = dict(SMALL["truncation"])
+    return data
+
+
+def _with_issue_table(**changes) -> dict:
+    """The default case with the issue's [vehicle] table and F0 = 0.3 MN (2.8 MN would exceed
+    the k = 2 buckling load of this small free-free vehicle)."""
+    data = _base()
+    data["thrust"]["F0"] = "0.3 MN"
+    data.update(tomllib.loads(ISSUE_TABLE))
+    data["vehicle"].update(changes)
+    return data
+
+
+def run_cli(argv):
+    with pytest.raises(SystemExit) as info:
+        main(argv)
+    return info.value.code
+
+
+def _toml_value(value):
+    if isinstance(value, str):
+        return json.dumps(value)
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    return repr(value)
+
+
+def dump_case(data: dict) -> str:
+    """TOML text of a case mapping, with [vehicle] and [[vehicle.segments]]."""
+    lines = [f"name = {_toml_value(data.get('name', 'case'))}"]
+
+    def table(name, body):
+        lines.append(f"[{name}]")
+        subs = []
+        for key, value in body.items():
+            if isinstance(value, dict):
+                subs.append((f"{name}.{key}", value))
+            elif isinstance(value, list) and value and isinstance(value[0], dict):
+                subs.append((f"{name}.{key}", value))
+            else:
+                lines.append(f"{key} = {_toml_value(value)}")
+        for sub, value in subs:
+            if isinstance(value, dict):
+                table(sub, value)
+            else:
+                for item in value:
+                    lines.append(f"[[{sub}]]")
+                    lines.extend(f"{k} = {_toml_value(v)}" for k, v in item.items())
+
+    for name in ("booster", "thrust", "truncation", "vehicle"):
+        if name in data:
+            table(name, data[name])
+    return "\n".join(lines) + "\n"
+
+
+# --------------------------------------------------------------------------- case parsing
+
+
+def test_issue_table_units_and_defaults():
+    """The issue's table: pint conversions (70 GPa = 7e10 Pa, 8 mm = 0.008 m, rel. 1e-12),
+    segment material = the table's, one continuous junction, the ends and theory given."""
+    case = load_case(_with_issue_table())
+    veh = vehicle_from_case(case)
+    assert veh.junctions == ("continuous",)
+    assert (veh.aft_end, veh.fwd_end, veh.theory) == ("free", "free", "sanders")
+    cyl, cone = veh.segments
+    assert isinstance(cyl, Cylinder) and isinstance(cone, Cone)
+    np.testing.assert_allclose([cyl.radius, cyl.length, cyl.thickness], [1.5, 6.0, 0.008],
+                               rtol=1e-12)
+    np.testing.assert_allclose([cone.radius_aft, cone.radius_fwd, cone.length],
+                               [1.5, 1.0, 1.0], rtol=1e-12)
+    for seg in veh.segments:
+        np.testing.assert_allclose([seg.E, seg.nu, seg.rho], [70e9, 0.3, 2700.0], rtol=1e-12)
+    assert case.vehicle.k_max == 20
+
+
+def test_defaults_material_fallback_and_rigid_bulkhead():
+    """Without table material, a segment takes [booster]'s (the default case: 10.5e6 psi,
+    rel. 1e-12); a per-segment E overrides; ends default "free", k_max 20, theory sanders;
+    junction = "rigid-bulkhead" joins radii that differ (1.5 m to 1.2 m)."""
+    data = _base()
+    data["vehicle"] = {"segments": [
+        {"kind": "cylinder", "radius": "1.5 m", "length": "6 m", "thickness": "8 mm"},
+        {"kind": "cylinder", "radius": "1.2 m", "length": "3 m", "thickness": "6 mm",
+         "E": "200 GPa", "junction": "rigid-bulkhead"}]}
+    case = load_case(data)
+    veh = vehicle_from_case(case)
+    booster = case.booster
+    np.testing.assert_allclose(veh.segments[0].E, 10.5e6 * 6894.757293168361, rtol=1e-12)
+    assert veh.segments[0].rho == booster.rho and veh.segments[0].nu == booster.nu
+    assert veh.segments[1].E == pytest.approx(200e9, rel=1e-12)
+    assert veh.junctions == ("rigid-bulkhead",)
+    assert (veh.aft_end, veh.fwd_end, veh.theory, case.vehicle.k_max) == (
+        "free", "free", "sanders", 20)
+
+
+def test_memo_vehicle_from_booster():
+    """Without [vehicle]: cylinder 1 (R1, 2 L1) aft, cylinder 2 (R2, 2 L2), h, E, nu, rho of
+    [booster] (memo Fig. 1), memo-bulkhead junction, shear-diaphragm ends (the memo's end
+    bulkheads, eqs. 5.3-2/3); [vehicle] without segments overrides ends and theory."""
+    case = default_case()
+    b = case.booster
+    veh = vehicle_from_case(case)
+    expect = [(b.cylinder1.radius, 2 * b.cylinder1.half_length),
+              (b.cylinder2.radius, 2 * b.cylinder2.half_length)]
+    assert [(s.radius, s.length) for s in veh.segments] == expect
+    assert all(s.thickness == b.thickness and s.E == b.E and s.rho == b.rho
+               for s in veh.segments)
+    assert veh.junctions == ("memo-bulkhead",)
+    assert (veh.aft_end, veh.fwd_end) == ("shear-diaphragm", "shear-diaphragm")
+    data = _base()
+    data["vehicle"] = {"aft_end": "free", "theory": "donnell", "junction": "rigid-bulkhead"}
+    veh = vehicle_from_case(load_case(data))
+    assert (veh.aft_end, veh.fwd_end, veh.theory, veh.junctions) == (
+        "free", "shear-diaphragm", "donnell", ("rigid-bulkhead",))
+    data["booster"]["cylinder2"]["radius"] = data["booster"]["cylinder1"]["radius"]
+    data["vehicle"] = {"junction": "continuous"}
+    assert vehicle_from_case(load_case(data)).junctions == ("continuous",)
+
+
+def _seg(data, i, **changes):
+    data["vehicle"]["segments"][i].update(changes)
+    for key, value in list(changes.items()):
+        if value is None:
+            del data["vehicle"]["segments"][i][key]
+    return data
+
+
+BAD = [  # (change, field, words of the rule); the rule texts are those of vehicle_case.py
+    (lambda d: _seg(d, 1, radius_aft="1.4 m"), "vehicle.segments[1].radius_aft", "must equal"),
+    (lambda d: _seg(d, 0, radius=0), "vehicle.segments[0].radius", "positive"),
+    (lambda d: _seg(d, 0, radius="-1.5 m"), "vehicle.segments[0].radius", "positive"),
+    (lambda d: _seg(d, 1, radius_fwd=-1.0), "vehicle.segments[1].radius_fwd", "positive"),
+    (lambda d: _seg(d, 0, thickness="0 mm"), "vehicle.segments[0].thickness", "positive"),
+    (lambda d: _seg(d, 0, thickness="2 m"), "vehicle.segments[0].thickness", "smaller than"),
+    (lambda d: _seg(d, 1, length="-1 m"), "vehicle.segments[1].length", ">= 0"),
+    (lambda d: _seg(d, 0, length=0.0), "vehicle.segments[0].length", "must be > 0"),
+    (lambda d: _seg(d, 1, length=0.0, radius_fwd="1.5 m"), "vehicle.segments[1].radius_fwd",
+     "flat plate"),
+    (lambda d: _seg(d, 0, kind="sphere"), "vehicle.segments[0].kind", "must be one of"),
+    (lambda d: _seg(d, 1, radius="1.5 m"), "vehicle.segments[1].radius", "two radii"),
+    (lambda d: _seg(d, 0, radius_aft="1.5 m"), "vehicle.segments[0].radius_aft", "one radius"),
+    (lambda d: _seg(d, 1, radius_fwd=None), "vehicle.segments[1].radius_fwd", "missing"),
+    (lambda d: _seg(d, 0, thickness=None), "vehicle.segments[0].thickness", "missing"),
+    (lambda d: _seg(d, 0, junction="rigid-bulkhead"), "vehicle.segments[0].junction",
+     "first (aft) segment"),
+    (lambda d: _seg(d, 1, junction="welded"), "vehicle.segments[1].junction", "must be one of"),
+    (lambda d: _seg(d, 1, E="70 m"), "vehicle.segments[1].E", "wrong dimension"),
+    (lambda d: _seg(d, 1, nu=0.6), "vehicle.segments[1].nu", "(0, 0.5)"),
+    (lambda d: _seg(d, 0, colour="red"), "vehicle.segments[0].colour", "unknown key"),
+    (lambda d: d["vehicle"].update(aft_end="pinned"), "vehicle.aft_end", "must be one of"),
+    (lambda d: d["vehicle"].update(theory="flugge"), "vehicle.theory", "must be one of"),
+    (lambda d: d["vehicle"].update(k_max=201), "vehicle.k_max", "[0, 200]"),
+    (lambda d: d["vehicle"].update(k_max=2.5), "vehicle.k_max", "whole number"),
+    (lambda d: d["vehicle"].update(rho="-1 kg/m^3"), "vehicle.rho", "positive"),
+    (lambda d: d["vehicle"].update(junction="continuous"), "vehicle.junction", "only without"),
+    (lambda d: d["vehicle"].update(segments=[]), "vehicle.segments", "at least one"),
+]
+
+
+@pytest.mark.parametrize("change, field, rule", BAD, ids=[b[1] + ": " + b[2] for b in BAD])
+def test_bad_vehicle_field_is_one_line_naming_it(change, field, rule):
+    data = _with_issue_table()
+    change(data)
+    with pytest.raises(CaseError) as info:
+        load_case(data)
+    assert info.value.field == field
+    assert rule in info.value.rule
+    assert "\n" not in str(info.value) and str(info.value).startswith(field)
+
+
+@pytest.mark.parametrize("table, field, rule", [
+    ({"junction": "continuous"}, "vehicle.junction", "continuous junction needs"),
+    ({"E": "70 GPa"}, "vehicle.E", "only with [[vehicle.segments]]"),
+], ids=["continuous with R1 != R2", "material without segments"])
+def test_bad_memo_vehicle_table(table, field, rule):
+    data = _base()
+    data["vehicle"] = table
+    with pytest.raises(CaseError) as info:
+        load_case(data)
+    assert info.value.field == field and rule in info.value.rule
+
+
+def test_bad_vehicle_in_a_file_exits_2(tmp_path, capsys):
+    """The CLI prints the CaseError as one line and exits 2 (`run` and `modes`)."""
+    path = tmp_path / "bad.toml"
+    path.write_text(dump_case(_seg(_with_issue_table(), 1, radius_aft="1.4 m")))
+    for command in ("run", "modes"):
+        assert run_cli([command, str(path), "-o", str(tmp_path / "out")]) == 2
+        err = capsys.readouterr().err.strip()
+        assert err.startswith("flexbooster: error: vehicle.segments[1].radius_aft = 1.4")
+        assert "\n" not in err
+    assert not (tmp_path / "out").exists()
+
+
+# --------------------------------------------------------------------------- memo vehicle
+
+
+@pytest.mark.parametrize("prestress", [False, True], ids=["unloaded", "prestressed"])
+def test_memo_vehicle_frequencies_equal_the_package(prestress):
+    """k = 2..4 of analyze_vehicle on the default case = vehicle_modes on the hand-built
+    Vehicle (R1 = 5.05 m, 42 m; R2 = 3.30 m, 18 m; h = 20 mm; 10.5e6 psi, 0.33,
+    2.59e-4 lbf s^2/in^4 from default_case.toml), F0 = 2.8 MN or 0; rel. 1e-12."""
+    case = default_case()
+    survey = analyze_vehicle(case, k_max=4, prestress=prestress, f_max=40.0, views=False)
+    mat = dict(E=10.5e6 * 6894.757293168361, nu=0.33,
+               rho=2.59e-4 * 4.4482216152605 / 0.0254**4)
+    veh = Vehicle([Cylinder(5.05, 42.0, 0.020, **mat), Cylinder(3.30, 18.0, 0.020, **mat)],
+                  junctions=("memo-bulkhead",), aft_end="shear-diaphragm",
+                  fwd_end="shear-diaphragm")
+    ref = vehicle_modes(veh, k_min=2, k_max=4, f_max=40.0,
+                        prestress_F0=2.8e6 if prestress else 0.0)
+    got = survey.modes.k >= 2
+    np.testing.assert_array_equal(survey.modes.k[got], ref.k)
+    np.testing.assert_allclose(survey.modes.hz[got], ref.hz, rtol=1e-12)
+    assert survey.prestressed is prestress and survey.source == "memo"
+    assert ("prestressed by the thrust" if prestress else "unloaded") in survey.note
+
+
+def test_memo_vehicle_donnell_equals_memo_shell_path():
+    """Memo vehicle, [vehicle] theory = "donnell", unloaded: at k = 2, 3, 4 the modes below
+    30 Hz are the union over both cylinders of the memo path's Donnell shear-diaphragm
+    frequencies (flexbooster.memo.shell.natural_frequencies, Leissa SP-288 eqs. 2.20-2.22),
+    rel. 1e-5 (FE mesh error of the automatic mesh)."""
+    from flexbooster.memo.shell import natural_frequencies
+    from flexbooster.model import model_from_case
+
+    data = _base()
+    data["vehicle"] = {"theory": "donnell", "k_max": 4}
+    case = load_case(data)
+    survey = analyze_vehicle(case, prestress=False, f_max=30.0, views=False)
+    shell = natural_frequencies(model_from_case(case))
+    for k in (2, 3, 4):
+        fe = np.sort(survey.modes.hz[survey.modes.k == k])
+        ref = np.sort(shell.hz[shell.k == k])
+        assert fe.size >= 3 and ref[fe.size] > 30.0  # the memo truncation holds them all
+        np.testing.assert_allclose(fe, ref[:fe.size], rtol=1e-5)
+
+
+# --------------------------------------------------------------------------- command line
+
+
+@pytest.fixture
+def vehicle_case_file(tmp_path):
+    path = tmp_path / "vehicle.toml"
+    path.write_text(dump_case(_small(_with_issue_table(k_max=3))))
+    return path
+
+
+def test_modes_table_fits_80_columns(vehicle_case_file, capsys, monkeypatch):
+    monkeypatch.setenv("COLUMNS", "80")
+    assert run_cli(["modes", str(vehicle_case_file), "--f-max", "300"]) == 0
+    out = capsys.readouterr().out
+    assert "prestressed by the thrust F0 = 300000 N" in out
+    for k in range(4):
+        assert f"k = {k}:" in out
+    assert max(len(line) for line in out.splitlines()) <= 80
+    assert run_cli(["modes", str(vehicle_case_file), "--no-prestress"]) == 0
+    assert "unloaded: no thrust prestress" in capsys.readouterr().out
+
+
+def test_modes_json_and_options(vehicle_case_file, capsys):
+    """--format json: a list `modes` with k, hz, rad_s, order, type, segment; hz = rad_s /
+    2 pi (rel. 1e-12); --k-max and --f-max bound the list; the compressive prestress lowers
+    every lowest frequency of k >= 2 (loaded < unloaded)."""
+    assert run_cli(["modes", str(vehicle_case_file), "--format", "json",
+                    "--k-max", "4", "--f-max", "0.2 kHz"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    rows = data["modes"]
+    assert rows and {"k", "hz", "rad_s", "order", "type", "segment"} <= set(rows[0])
+    assert {r["k"] for r in rows} <= set(range(5)) and max(r["k"] for r in rows) == 4
+    assert all(r["hz"] <= 200.0 for r in rows)
+    np.testing.assert_allclose([r["hz"] * 2 * math.pi for r in rows],
+                               [r["rad_s"] for r in rows], rtol=1e-12)
+    assert data["prestressed"] is True and data["prestress_F0"] == pytest.approx(3e5, rel=1e-12)
+    assert run_cli(["modes", str(vehicle_case_file), "--format", "json", "--k-max", "4",
+                    "--f-max", "200", "--no-prestress"]) == 0
+    free = json.loads(capsys.readouterr().out)
+    assert free["prestressed"] is False
+    for k in range(2, 5):
+        lo = min(r["hz"] for r in rows if r["k"] == k)
+        assert lo < min(r["hz"] for r in free["modes"] if r["k"] == k)
+
+
+@pytest.mark.parametrize("args, field, rule", [
+    (["--k-max", "201"], "--k-max", "[0, 200]"),
+    (["--f-max", "-3"], "--f-max", "positive"),
+    (["--f-max", "3 m"], "--f-max", "wrong dimension"),
+], ids=["k-max too large", "f-max negative", "f-max not a frequency"])
+def test_modes_bad_options_exit_2(args, field, rule, capsys):
+    assert run_cli(["modes", *args]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.startswith(f"flexbooster: error: {field} = ") and rule in err
+
+
+def test_modes_output_onto_a_file_exits_2(tmp_path, capsys):
+    """-o naming a file is refused before any analysis (the --output rule of `run`)."""
+    path = tmp_path / "a-file"
+    path.write_text("x")
+    assert run_cli(["modes", "-o", str(path)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("flexbooster: error: --output = ") and "is a file" in err
+
+
+def test_modes_output_files(vehicle_case_file, tmp_path, capsys):
+    """-o DIR: modes.json (the JSON plus the figure data), vehicle-modes.csv (one row per
+    mode), the meridian and unrolled figures (SVG and PNG)."""
+    out = tmp_path / "modes"
+    assert run_cli(["modes", str(vehicle_case_file), "-o", str(out), "-q"]) == 0
+    assert capsys.readouterr().out == ""
+    names = {p.name for p in out.iterdir()}
+    assert {"modes.json", "vehicle-modes.csv", "vehicle-mode-shapes.svg",
+            "vehicle-mode-shapes.png", "vehicle-unrolled.svg", "vehicle-unrolled.png"} == names
+    data = json.loads((out / "modes.json").read_text())
+    with (out / "vehicle-modes.csv").open() as handle:
+        rows = list(csv.DictReader(handle))
+    assert len(rows) == len(data["modes"]) > 0
+    assert [int(r["k"]) for r in rows] == [m["k"] for m in data["modes"]]
+    fig = data["figures"]
+    assert len(fig["x_deformed"]) == len(fig["index"]) and len(fig["w"]) == len(
+        fig["unrolled_index"])
+
+
+def test_modes_of_the_default_case_memo_vehicle(capsys):
+    """No [vehicle]: `modes` analyses the memo vehicle built from [booster]."""
+    assert run_cli(["modes", "--k-max", "3", "--format", "json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["source"] == "memo"
+    assert data["vehicle"]["junctions"] == ["memo-bulkhead"]
+
+
+# --------------------------------------------------------------------------- run
+
+
+def test_run_with_vehicle_table(vehicle_case_file, tmp_path, capsys):
+    """run with [vehicle] (--no-figures: fast): results.json key vehicle_modes,
+    vehicle-modes.csv, the summary table, the report section with the table."""
+    out = tmp_path / "run"
+    assert run_cli(["run", str(vehicle_case_file), "-o", str(out), "--no-figures"]) == 0
+    text = capsys.readouterr().out
+    assert "Vehicle modes (shell of revolution)" in text and "prestressed by the thrust" in text
+    data = json.loads((out / "results.json").read_text())
+    vm = data["vehicle_modes"]
+    assert vm["source"] == "vehicle" and max(m["k"] for m in vm["modes"]) <= 3
+    assert data["case"]["vehicle"]["segments"][1]["radius_fwd"] == 1.0
+    assert (out / "vehicle-modes.csv").exists()
+    report = (out / "report.html").read_text()
+    assert 'id="vehicle-modes"' in report and 'href="#vehicle-modes"' in report
+    assert "vehicle figures were not drawn" in report
+    assert data["vehicle_modes"]["figures"] is None  # --no-figures: no figure data either
+
+
+def test_report_embeds_the_vehicle_figures(vehicle_case_file):
+    """With figures: make_figures adds vehicle-mode-shapes and vehicle-unrolled (drawn from
+    the stored views) and the report's vehicle section embeds both."""
+    from dataclasses import replace
+
+    from flexbooster.present.outputs import _render
+    from flexbooster.present.report import SECTIONS, render_report
+    from flexbooster.present.vehicle import vehicle_figures
+
+    case = load_case(vehicle_case_file)
+    results = analyze(case, beam_action=False, figures=False)
+    survey = analyze_vehicle(case, k_max=2, views=True)
+    results = replace(results, vehicle=survey)
+    svgs = {name: _render(fig)[0] for name, fig in vehicle_figures(survey).items()}
+    assert set(svgs) == {"vehicle-mode-shapes", "vehicle-unrolled"}
+    report = render_report(results, svgs)
+    assert 'id="fig-vehicle-mode-shapes"' in report and 'id="fig-vehicle-unrolled"' in report
+    assert report.index('id="vehicle-modes"') < report.index('id="verification"')
+    root = ET.fromstring(report.split("\n", 1)[1])  # strict XML (after the DOCTYPE line)
+    ids = [el.get("id") for el in root.iter() if el.get("id") is not None]
+    assert len(ids) == len(set(ids))  # the vehicle figures' ids are prefixed, no clash
+    sections = [el.get("id") for el in root.iter() if el.tag.endswith("section")]
+    assert sections.count("vehicle-modes") == 1 and len(sections) == len(SECTIONS) + 1
+
+
+def test_default_case_results_unchanged():
+    """Without [vehicle]: no vehicle stage, no vehicle_modes key, no case.vehicle key (the
+    keys of the default case's results.json as before issue 14)."""
+    data = _small(_base())
+    seen = []
+    results = analyze(load_case(data), figures=False, progress=seen.append)
+    assert results.vehicle is None and "vehicle modes" not in seen
+    out = results.to_dict()
+    assert "vehicle_modes" not in out and "vehicle" not in out["case"]
+    assert set(out) == {"schema_version", "flexbooster_version", "units", "case",
+                        "mass_properties", "frequencies", "dimensionless", "beam_modes",
+                        "pitch", "shell_frequencies", "beam_action", "stability",
+                        "warnings", "figures"}
+
+
+def test_thick_shell_warning_reaches_summary_and_results(tmp_path, capsys):
+    """h/R = 0.1 > 1/20 on segment 1: a warning (code thick-shell, field
+    vehicle.segments[1]) in results.json and in the summary; the run goes on."""
+    data = _small(_with_issue_table(k_max=2))
+    _seg(data, 1, thickness="0.1 m")
+    path = tmp_path / "thick.toml"
+    path.write_text(dump_case(data))
+    assert run_cli(["run", str(path), "-o", str(tmp_path / "out"), "--no-figures"]) == 0
+    text = capsys.readouterr().out
+    assert "thick-shell" in text and "vehicle.segments[1]" in text
+    warnings = json.loads((tmp_path / "out" / "results.json").read_text())["warnings"]
+    assert {"code": "thick-shell", "field": "vehicle.segments[1]"}.items() <= next(
+        w for w in warnings if w["code"] == "thick-shell").items()
+
+
+def test_flat_plate_leaves_out_the_prestress():
+    """A flat plate (cone of length 0) cannot carry the thrust as a membrane: the modes are
+    unloaded, and the survey says so (no error)."""
+    data = _with_issue_table(k_max=2)
+    data["vehicle"]["segments"].append({"kind": "cone", "radius_aft": "1.0 m",
+                                        "radius_fwd": "0.5 m", "length": 0,
+                                        "thickness": "8 mm"})
+    survey = analyze_vehicle(load_case(data), views=False)
+    assert survey.prestressed is False and "flat plate" in survey.note
