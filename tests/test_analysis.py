@@ -141,16 +141,27 @@ def test_same_case_in_si_and_inch_pound_units(case_dict):
     a = dict(_numbers(analyze(si).to_dict()))
     b_ = dict(_numbers(analyze(load_case(ip)).to_dict()))
     assert a.keys() == b_.keys()
+    bad = []
     for key, value in a.items():
         if key.endswith("hill_monodromy_difference"):
             continue  # an error estimate of the eigen-solvers (~1e-11), not a result
+        if ".bands[" in key and key.endswith(".width"):
+            continue  # omega_hi - omega_lo of two edges checked below (each to 1e-9 Omega_c)
         # Closed-form quantities (geometry, omega_1, a, q, beta, shell frequencies): 1e-12.
         # The beam-action exponents come from eigenvalues of non-normal Floquet matrices whose
         # own accuracy is about 1e-9 (Hill vs monodromy agree to 1e-8; docs/theory/beam-action.md),
         # and the stability roots and figure data (Campbell curves, chart) inherit it: 1e-8.
         solved = key.startswith((".beam_action.", ".stability.", ".figures."))
         rel = 1e-8 if solved else 1e-12
-        assert b_[key] == pytest.approx(value, rel=rel, abs=1e-300 if not solved else 1e-12), key
+        tol = 1e-300 if not solved else 1e-12
+        if ".bands[" in key and key.endswith("growth_rate_max"):
+            # the peak growth log|rho| / T of a band: multipliers from the monodromy
+            # eigenvalues, accurate to ~1e-10, i.e. ~1e-7 1/s at omega_1 ~ 100 rad/s
+            tol = 1e-7
+        ok = b_[key] == pytest.approx(value, rel=rel, abs=tol)
+        if not ok:
+            bad.append((key, value, b_[key]))
+    assert not bad, [(k, v, w) for k, v, w in bad][:8]
 
 
 def test_oversized_stability_table_becomes_a_warning(case_dict, monkeypatch):

@@ -32,7 +32,8 @@ def test_run_default_writes_results(tmp_path, capsys):
     assert {"ince-strutt.svg", "ince-strutt.png", "campbell.svg"} <= names
     assert {"report.html", "nodal-patterns.svg"} <= names
     report = (tmp_path / "report.html").read_text()
-    assert report.count("<svg") == 7 and 'id="unstable-frequencies"' in report
+    assert {"pitch-band-chart.svg", "beam-action-chart.svg"} <= names  # issue 12 charts
+    assert report.count("<svg") == 8 and 'id="unstable-frequencies"' in report
     assert not [n for n in names if n.endswith(".part")]  # no temporary leftovers
 
 

@@ -313,7 +313,17 @@ def test_pitch_analysis_flags_first_tongue():
     beta = complex(pitch.characteristic_exponent(1.0, 0.025, "hill"))
     assert res.growth_rate[1] == pytest.approx(beta.imag * 6.0 / 2.0, rel=1e-9)
     assert "UNSTABLE" in res.verdict
-    assert res.unstable_intervals() == [(6.0, 6.0)]
+    # the exact band over [6, 12]: lower edge (a = a_1) clipped at Omega = 6; upper edge where
+    # the path a = 36/Omega^2, q = gamma a / 2 meets b_1(q) = 1 - q - q^2/8 + q^3/64 - q^4/1536
+    # (A&S 20.2.25; the q^5 term ~ 1e-10 at q = 0.025, so 1e-9 relative)
+    (lo, hi), = res.unstable_intervals()
+    assert lo == 6.0
+    x = 1.0
+    for _ in range(50):  # fixed point of a = b_1(gamma a / 2)
+        q = gamma * x / 2.0
+        x = 1.0 - q - q**2 / 8.0 + q**3 / 64.0 - q**4 / 1536.0
+    assert hi == pytest.approx(2.0 * omega_psi / np.sqrt(x), rel=1e-9)
+    assert res.bands[0].tongue == 1 and res.bands[0].clipped
     data = json.loads(json.dumps(res.to_dict(), allow_nan=False))
     assert data["stable"] == [True, False]
     assert data["max_growth_rate"] == pytest.approx(res.growth_rate[1])

@@ -42,7 +42,14 @@ def _case(name: str):
     return flexbooster.load_case(d)
 
 
+#: Keys that issue 12 changed on purpose: the intervals are the exact band edges (not runs of
+#: unstable grid points) and the verdicts follow from the bands (docs/theory/bands.md).
+CHANGED_BY_ISSUE_12 = {".pitch.unstable_intervals", ".pitch.verdict", ".beam_action.verdict"}
+
+
 def _diff(old, new, path=""):
+    if path in CHANGED_BY_ISSUE_12:
+        return
     if isinstance(old, dict):
         assert isinstance(new, dict), path
         for key, value in old.items():
@@ -100,6 +107,6 @@ def test_every_figure_is_drawn_from_the_results_alone(monkeypatch):
     svgs = figure_svgs(results)
     assert set(svgs) == {"ince-strutt", "beam-modes", "shell-frequencies-cylinder1",
                          "shell-frequencies-cylinder2", "nodal-patterns",
-                         "beam-action-chart", "campbell"}
+                         "pitch-band-chart", "beam-action-chart", "campbell"}
     html = render_report(results, svgs)
     assert "<svg" in html

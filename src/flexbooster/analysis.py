@@ -153,7 +153,8 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
     n = model.truncation
     beam = beam_modes(n.N, model.mass.L, model.R1, model.E, model.rho)
     step(STAGES[1])
-    pitch = pitch_analysis(model.Omega, model.omega_psi, model.gamma)
+    pitch = pitch_analysis(model.Omega, model.omega_psi, model.gamma,
+                           damping_ratio=model.pitch_damping_ratio)
     step(STAGES[2])
     shell = natural_frequencies(model)
     action = None
@@ -215,6 +216,7 @@ def _figure_data(model, pitch, shell, action, table, params) -> charts.FigureDat
         campbell=None if table is None else charts.campbell_data(
             params=params, omega_range=model.omega_range, omega_1=model.omega_1, shell=shell,
             table=table, R=n.R, S=n.S),
+        pitch_band_chart=charts.pitch_band_chart(model),
     )
 
 
@@ -244,7 +246,7 @@ def simulate_case(case: Case, Omega: float, *, tau_max: float, n_out: int = 401,
     """
     with blas_threads(1):
         model = model_from_case(case)
-        params = excitation_parameters(model, beam_action_analysis(model))
+        params = excitation_parameters(model, beam_action_analysis(model, bands=False))
         return simulate(model, Omega, tau_max, n_out=n_out, psi0=psi0, params=params)
 
 

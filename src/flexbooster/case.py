@@ -31,6 +31,7 @@ __all__ = [
     "Booster",
     "Thrust",
     "Truncation",
+    "Damping",
     "Case",
     "MAX_MODES",
     "load_case",
@@ -216,6 +217,32 @@ class Truncation(BaseModel):
         return value
 
 
+class Damping(BaseModel):
+    """Optional viscous damping of the band search (table ``[damping]``; default none).
+
+    Attributes
+    ----------
+    beam_modal_ratio : float
+        Modal damping ratio zeta of the elastic beam modes, C = V diag(2 zeta omega_k) V^-1 in
+        the modal frame of the steady beam-action system, 0 <= zeta < 1.
+    pitch_ratio : float
+        Damping ratio of the rigid-body pitch, psi'' + 2 zeta omega_psi psi' + ...,
+        0 <= zeta < 1.
+    """
+
+    model_config = _FROZEN
+    beam_modal_ratio: float = 0.0
+    pitch_ratio: float = 0.0
+
+    @field_validator("beam_modal_ratio", "pitch_ratio", mode="before")
+    @classmethod
+    def _ratio(cls, value: Any, info) -> float:  # noqa: ANN001
+        result = to_si(info.field_name, value, "dimensionless")
+        if not 0.0 <= result < 1.0:
+            raise ValueError("damping ratio must lie in [0, 1)")
+        return result
+
+
 class Case(BaseModel):
     """A validated analysis case, all values in SI.
 
@@ -226,6 +253,8 @@ class Case(BaseModel):
     booster : Booster
     thrust : Thrust
     truncation : Truncation
+    damping : Damping
+        Optional; no damping by default.
     vehicle : VehicleTable or None
         The optional ``[vehicle]`` table (:mod:`flexbooster.vehicle_case`); None: the memo
         vehicle built from ``booster`` is used by ``flexbooster modes`` only.
@@ -236,6 +265,7 @@ class Case(BaseModel):
     booster: Booster
     thrust: Thrust
     truncation: Truncation = Truncation()
+    damping: Damping = Damping()
     vehicle: VehicleTable | None = None
 
     @property

@@ -53,6 +53,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..checks import count, nonnegative, positive
+from ..floquet import critical_amplitude, instability_regions
 from . import beam
 
 if TYPE_CHECKING:
@@ -70,6 +71,13 @@ __all__ = [
     "monodromy_exponents",
     "reduced_exponents",
     "natural_branch",
+    "BAND_RTOL",
+    "BAND_MAX_ORDER",
+    "BAND_MAX_CANDIDATES",
+    "BAND_OMEGA_BAR_MIN",
+    "BeamActionBand",
+    "modal_damping",
+    "beam_action_bands",
     "BeamActionResult",
     "beam_action_analysis",
     "StabilityChart",
@@ -714,6 +722,193 @@ def _multipliers(mu, Bt, Ob, gam, steps, chunk) -> np.ndarray:
 
 
 # --------------------------------------------------------------------------------------------
+# Instability bands in Omega from their boundaries (Floquet toolkit)
+# --------------------------------------------------------------------------------------------
+#: Boundary tolerance of the band search, relative to each region's centre (dimensionless).
+BAND_RTOL = 1e-9
+#: Largest resonance order j (Omega = 2 omega_i / j, (omega_i +- omega_k) / j) searched; None:
+#: every order whose estimated width is above the tolerance (the toolkit's default).
+BAND_MAX_ORDER = None
+#: Cap on the resonance centres enumerated (a small omega_min / omega_1 makes many).
+BAND_MAX_CANDIDATES = 1_000_000
+#: Lower end of the pipeline's band search in units of omega_1: below Omega = omega_1 / 4 an
+#: elastic resonance has order j >= 8 (simple) or j >= 4 (combinations), far narrower than
+#: round-off at gamma < 1, while the monodromy there costs ~omega_max / Omega steps per
+#: period; the rigid-pitch tongues 2 omega_psi / j below it are the pitch analysis' bands.
+BAND_OMEGA_BAR_MIN = 0.25
+
+
+@dataclass(frozen=True)
+class BeamActionBand:
+    """One instability band of the beam-action system in Omega (rad/s).
+
+    Attributes
+    ----------
+    omega_lo, omega_hi : float
+        Band edges (rad/s), |rho|_max = 1 there (or ends of the range, ``clipped``).
+    growth_rate_max : float
+        Largest growth rate inside (1/s).
+    omega_at_max : float
+        Omega where it occurs (rad/s).
+    kind : str
+        "simple", "sum", "difference" or "steady" (see
+        :class:`flexbooster.floquet.InstabilityRegion`).
+    modes : tuple of int
+        Steady modes involved (ascending frequency; the rigid pitch is 0 for a small thrust).
+    order : int
+        j of the resonance centre 2 omega_i / j or (omega_i +- omega_k) / j.
+    omega_center : float
+        The analytic centre (rad/s).
+    clipped : bool
+        An edge is an end of the range.
+    critical_gamma : float
+        Smallest gamma at which the band exists (dimensionless); 0 without damping.
+
+    References
+    ----------
+    Bolotin (1964), ch. 1-2, sec. 6; Hsu (1963).
+    """
+
+    omega_lo: float
+    omega_hi: float
+    growth_rate_max: float
+    omega_at_max: float
+    kind: str
+    modes: tuple
+    order: int
+    omega_center: float
+    clipped: bool = False
+    critical_gamma: float = 0.0
+
+    @property
+    def width(self) -> float:
+        """omega_hi - omega_lo (rad/s)."""
+        return self.omega_hi - self.omega_lo
+
+    def to_dict(self) -> dict:
+        """JSON-ready mapping."""
+        return {"omega_lo": float(self.omega_lo), "omega_hi": float(self.omega_hi),
+                "width": float(self.width), "growth_rate_max": float(self.growth_rate_max),
+                "omega_at_max": float(self.omega_at_max), "kind": self.kind,
+                "modes": [int(m) for m in self.modes], "order": int(self.order),
+                "omega_center": float(self.omega_center), "clipped": bool(self.clipped),
+                "critical_gamma": float(self.critical_gamma)}
+
+
+def modal_damping(system: BeamActionSystem, *, beam_ratio: float = 0.0,
+                  pitch_ratio: float = 0.0) -> np.ndarray | None:
+    """Damping matrix C of q'' + C q' + [Lambda + f(tau) B] q = 0, modal in the steady system.
+
+    Parameters
+    ----------
+    system : BeamActionSystem
+        The normalised system (time tau = omega_1 t).
+    beam_ratio : float
+        Modal damping ratio zeta of the elastic modes (dimensionless), 0 <= zeta < 1.
+    pitch_ratio : float
+        Damping ratio of the rigid-pitch mode (dimensionless), 0 <= zeta < 1.
+
+    Returns
+    -------
+    numpy.ndarray or None
+        None when both ratios are 0; else C = V diag(2 zeta_k omega_k) V^-1 (units of
+        omega_1), with A0 = Lambda + B = V diag(omega_k^2) V^-1 the steady system: each steady
+        mode k decays like exp(-zeta_k omega_k tau) and keeps its shape.  The mode whose
+        eigenvector has the largest relative q_B component (the rigid rotation, last in q)
+        gets ``pitch_ratio``, the others ``beam_ratio``.
+
+    References
+    ----------
+    Bolotin (1964), sec. 6 (damping in the equations of dynamic stability); Meirovitch,
+    *Elements of Vibration Analysis*, 2nd ed., McGraw-Hill, 1986, sec. 7.12 (modal damping).
+    """
+    zb = nonnegative("beam_ratio", beam_ratio)
+    zp = nonnegative("pitch_ratio", pitch_ratio)
+    for name, z in (("beam_ratio", zb), ("pitch_ratio", zp)):
+        if z >= 1.0:
+            raise ValueError(f"{name} = {z!r}: must satisfy 0 <= zeta < 1")
+    if zb == 0.0 and zp == 0.0:
+        return None
+    mu, V = np.linalg.eig(system.A0)
+    V = V.astype(complex)
+    rel = np.abs(V[-1, :]) / np.linalg.norm(V, axis=0)
+    zeta = np.full(mu.size, zb)
+    zeta[int(np.argmax(rel))] = zp
+    w = np.sqrt(mu.astype(complex))
+    C = (V * (2.0 * zeta * w)[None, :]) @ np.linalg.inv(V)  # C = V diag(2 zeta w) V^-1
+    return np.ascontiguousarray(C.real)
+
+
+def beam_action_bands(system: BeamActionSystem, gamma: float, *, omega_min: float,
+                      omega_max: float, beam_ratio: float = 0.0, pitch_ratio: float = 0.0,
+                      rtol: float = BAND_RTOL, max_order: int | None = BAND_MAX_ORDER,
+                      step_phase: float = 0.12) -> tuple[BeamActionBand, ...]:
+    """Every instability band of the beam-action system in [omega_min, omega_max] (rad/s).
+
+    The system q'' + C q' + [A0 - gamma cos(Omega_bar tau) B] q = 0 (A0 = Lambda + B,
+    tau = omega_1 t) is the toolkit's M q'' + C q' + (A + B_t cos Omega t) q = 0 with M = I,
+    A = A0, B_t = -gamma B and Omega in units of omega_1; the regions of
+    :func:`flexbooster.floquet.instability_regions` are converted to rad/s and 1/s here.
+
+    Parameters
+    ----------
+    system : BeamActionSystem
+        The normalised system.
+    gamma : float
+        Pulsation amplitude (dimensionless), 0 <= gamma < 1.
+    omega_min, omega_max : float
+        Omega range (rad/s), 0 < omega_min < omega_max.
+    beam_ratio, pitch_ratio : float
+        Modal damping ratios (dimensionless), see :func:`modal_damping`.
+    rtol : float
+        Edge tolerance relative to each band's centre (dimensionless).
+    max_order : int or None
+        Largest resonance order j searched (None: the toolkit's width estimate decides).
+    step_phase : float
+        Monodromy accuracy parameter (dimensionless), see
+        :func:`flexbooster.floquet.instability_regions`.
+
+    Returns
+    -------
+    tuple of BeamActionBand
+        Sorted by omega_lo; with damping each band carries its critical gamma
+        (:func:`flexbooster.floquet.critical_amplitude`, matched by kind, modes and order).
+
+    References
+    ----------
+    Bolotin (1964), ch. 1-2, sec. 6; Hsu (1963); Tech Memo 104, eqs. (4.1-10), (4.1-11).
+    """
+    gamma = nonnegative("gamma", gamma)
+    if gamma >= 1.0:
+        raise ValueError(f"gamma = {gamma!r}: must satisfy 0 <= gamma < 1")
+    lo = positive("omega_min", omega_min)
+    hi = positive("omega_max", omega_max)
+    if not lo < hi:
+        raise ValueError(f"omega_min = {lo!r}: must be < omega_max = {hi!r}")
+    n = system.Lambda.size
+    w1 = float(system.omega_1)
+    C = modal_damping(system, beam_ratio=beam_ratio, pitch_ratio=pitch_ratio)
+    opts = {"rtol": rtol, "max_order": max_order, "max_candidates": BAND_MAX_CANDIDATES,
+            "step_phase": step_phase}
+    regions = instability_regions(np.eye(n), C, system.A0, -gamma * system.B, lo / w1,
+                                  hi / w1, **opts)
+    crit: dict = {}
+    if C is not None and gamma > 0.0 and any(r.kind != "steady" for r in regions):
+        for c in critical_amplitude(np.eye(n), C, system.A0, -system.B, gamma_max=gamma,
+                                    omega_min=lo / w1, omega_max=hi / w1, **opts):
+            crit[(c.kind, c.modes, c.order)] = c.gamma_cr
+    out = []
+    for r in regions:
+        out.append(BeamActionBand(
+            omega_lo=r.omega_lo * w1, omega_hi=r.omega_hi * w1,  # Omega_bar -> rad/s
+            growth_rate_max=r.growth_rate_max * w1,  # 1/tau -> 1/s
+            omega_at_max=r.omega_at_max * w1, kind=r.kind, modes=tuple(r.modes),
+            order=int(r.order), omega_center=r.omega_center * w1, clipped=bool(r.clipped),
+            critical_gamma=float(crit.get((r.kind, tuple(r.modes), r.order), 0.0))))
+    return tuple(out)
+
+
+# --------------------------------------------------------------------------------------------
 # Pipeline result and chart
 # --------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
@@ -744,11 +939,20 @@ class BeamActionResult:
         Largest difference between the Hill and monodromy representatives at the n_hill
         check points (dimensionless).
     verdict : str
-        "stable" or "unstable" over the grid.
+        "unstable" when an instability band exists in the range (:attr:`bands`), else
+        "stable" ("not searched" when the band search was skipped).
     gamma, K, N, S, R : float, float, int, int, int
         Inputs.
     p : float
         Steady thrust as P l^2 / EI.
+    bands : tuple of BeamActionBand
+        The instability bands in the case's Omega range, from their boundaries
+        (:func:`beam_action_bands`, with the damping).
+    beam_damping_ratio, pitch_damping_ratio : float
+        Modal damping ratios of the band search (dimensionless); the grid exponents
+        (``alpha``, ``stable``, ``growth_rate``) are those of the undamped system.
+    band_range : (float, float)
+        The Omega range searched for bands (rad/s): the grid's, raised to omega_1 / 4.
     """
 
     Omega: np.ndarray
@@ -767,6 +971,14 @@ class BeamActionResult:
     S: int
     R: int
     p: float
+    bands: tuple = ()
+    beam_damping_ratio: float = 0.0
+    pitch_damping_ratio: float = 0.0
+    band_range: tuple = (0.0, 0.0)
+
+    def unstable_intervals(self) -> list[tuple[float, float]]:
+        """The bands as (omega_lo, omega_hi) (rad/s)."""
+        return [(float(b.omega_lo), float(b.omega_hi)) for b in self.bands]
 
     def to_dict(self) -> dict:
         """JSON-ready mapping (plain lists and floats, no NaN)."""
@@ -789,6 +1001,11 @@ class BeamActionResult:
             "S": int(self.S),
             "R": int(self.R),
             "p": float(self.p),
+            "unstable_intervals": [list(iv) for iv in self.unstable_intervals()],
+            "bands": [b.to_dict() for b in self.bands],
+            "beam_damping_ratio": float(self.beam_damping_ratio),
+            "pitch_damping_ratio": float(self.pitch_damping_ratio),
+            "band_range": [float(v) for v in self.band_range],
         }
 
 
@@ -797,7 +1014,8 @@ def _match_distance(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return np.max(np.abs(a - b), axis=-1)
 
 
-def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3) -> BeamActionResult:
+def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3,
+                         bands: bool = True) -> BeamActionResult:
     """alpha_r along the Omega grid and the beam-action verdict (pipeline entry point).
 
     Parameters
@@ -810,13 +1028,19 @@ def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3) -> BeamActionR
         also solved and compared with the monodromy exponents, 1..len(Omega) (clipped to the
         grid size); Hill costs O((2 (N + 1)(2 S + 1))^3) per point, about 0.1-0.5 s for
         N = S = 10.
+    bands : bool
+        Search the instability bands (:func:`beam_action_bands`); without it ``bands`` is
+        empty and the verdict is "not searched".
 
     Returns
     -------
     BeamActionResult
         Exponents on the whole grid from the monodromy matrix, reduced to the natural branch;
         ``hill_monodromy_difference`` is the largest difference of the canonical
-        representatives at the Hill points.
+        representatives at the Hill points; the bands over
+        [max(Omega[0], omega_1 / 4), Omega[-1]] (:data:`BAND_OMEGA_BAR_MIN`; the range is
+        ``band_range``) from :func:`beam_action_bands` with the model's damping ratios, and
+        the verdict from the bands.
 
     References
     ----------
@@ -840,12 +1064,19 @@ def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3) -> BeamActionR
     growth = np.where(stable, 0.0, im * Ob * system.omega_1)  # 1/s
     i = int(np.argmax(growth))
     at_max = float(Ob[i] * system.omega_1) if growth[i] > 0.0 else 0.0
+    zb, zp = float(model.beam_damping_ratio), float(model.pitch_damping_ratio)
+    lo = max(float(np.min(model.Omega)), BAND_OMEGA_BAR_MIN * system.omega_1)
+    hi = float(np.max(model.Omega))
+    found = () if not (bands and hi > lo) else beam_action_bands(
+        system, gamma, omega_min=lo, omega_max=hi, beam_ratio=zb, pitch_ratio=zp)
+    verdict = ("unstable" if found else "stable") if bands else "not searched"
     return BeamActionResult(
         Omega=Ob * system.omega_1, Omega_bar=Ob, alpha=alpha_all[:, :R], frequencies=freqs[:R],
         stable=stable, growth_rate=growth, max_growth_rate=float(growth[i]),
         Omega_at_max=at_max, hill_monodromy_difference=diff,
-        verdict="stable" if bool(stable.all()) else "unstable", gamma=gamma, K=system.K,
-        N=system.N, S=S, R=R, p=system.p)
+        verdict=verdict, gamma=gamma, K=system.K,
+        N=system.N, S=S, R=R, p=system.p, bands=found, beam_damping_ratio=zb,
+        pitch_damping_ratio=zp, band_range=(lo, hi))
 
 
 @dataclass(frozen=True)

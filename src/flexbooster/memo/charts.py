@@ -21,10 +21,11 @@ from typing import Any
 import numpy as np
 
 from ..checks import count, positive
+from ..floquet import region_boundaries
 from .beam import free_free_eigenvalues, mode_shape
-from .beam_action import StabilityChart, beam_system, stability_chart
+from .beam_action import BAND_OMEGA_BAR_MIN, beam_system, modal_damping
 from .geometry import MassProperties
-from .pitch import PitchResult, transition_curves
+from .pitch import PITCH_MAX_TONGUE, PitchResult, pitch_band_edges, transition_curves
 from .shell import ShellFrequencies
 from .stability import StabilityTable, excitation, excitation_curves
 
@@ -33,8 +34,11 @@ __all__ = [
     "INCE_STRUTT_ORDERS",
     "CAMPBELL_POINTS",
     "CAMPBELL_S_MAX",
-    "BEAM_ACTION_CHART_OMEGA_POINTS",
-    "BEAM_ACTION_CHART_GAMMA",
+    "BAND_CHART_GAMMA_MAX",
+    "PITCH_BAND_CHART_LEVELS",
+    "BEAM_ACTION_CHART_LEVELS",
+    "BEAM_ACTION_CHART_RTOL",
+    "BEAM_ACTION_CHART_MAX_ORDER",
     "BEAM_ACTION_CHART_STEP_PHASE",
     "MODE_SHAPE_POINTS",
     "MODE_SHAPE_COUNT",
@@ -42,6 +46,9 @@ __all__ = [
     "ince_strutt_data",
     "CampbellData",
     "campbell_data",
+    "RegionCurves",
+    "BandChart",
+    "pitch_band_chart",
     "beam_action_chart",
     "BeamModeShapes",
     "beam_mode_shapes",
@@ -60,12 +67,20 @@ CAMPBELL_POINTS = 600
 #: Harmonics |s| <= this of the (alpha_r + s) curves drawn in the Campbell diagram (all are
 #: solved for in the stability table).
 CAMPBELL_S_MAX = 2
-#: Omega points (logarithmic over the case's range) of the beam-action (Omega, gamma) chart.
-BEAM_ACTION_CHART_OMEGA_POINTS = 80
-#: gamma values of the beam-action chart: 30 points, uniform on [0, 0.9].
-BEAM_ACTION_CHART_GAMMA = (0.0, 0.9, 30)
-#: Phase per integration step of the chart's monodromy at the points refined near multiplier
-#: collisions (see :func:`flexbooster.memo.beam_action.stability_chart`).
+#: Largest gamma of the (Omega, gamma) band charts (pitch and beam action).
+BAND_CHART_GAMMA_MAX = 0.9
+#: gamma levels of the pitch band chart, uniform on [0, BAND_CHART_GAMMA_MAX].
+PITCH_BAND_CHART_LEVELS = 46
+#: gamma levels of the beam-action band chart (``n_gamma`` of
+#: :func:`flexbooster.floquet.region_boundaries`, the tip at gamma = 0 included).
+BEAM_ACTION_CHART_LEVELS = 4
+#: Boundary tolerance of the chart (relative): regions narrower than this are not drawn.
+BEAM_ACTION_CHART_RTOL = 1e-4
+#: Resonance orders j drawn in the beam-action chart (j = 1: Omega = 2 omega_i,
+#: omega_i +- omega_k).
+BEAM_ACTION_CHART_MAX_ORDER = 1
+#: Monodromy step parameter of the chart's boundary search (see
+#: :func:`flexbooster.floquet.instability_regions`).
 BEAM_ACTION_CHART_STEP_PHASE = 0.25
 #: Points per beam mode shape.
 MODE_SHAPE_POINTS = 400
@@ -232,35 +247,175 @@ def campbell_data(*, params: Any, omega_range: tuple[float, float], omega_1: flo
         omega_1=float(omega_1))
 
 
-def beam_action_chart(model: Any, *, n_omega: int = BEAM_ACTION_CHART_OMEGA_POINTS,
-                      gamma: tuple[float, float, int] = BEAM_ACTION_CHART_GAMMA,
-                      step_phase: float = BEAM_ACTION_CHART_STEP_PHASE) -> StabilityChart:
-    """The beam-action (Omega, gamma) chart on the named grid.
+@dataclass(frozen=True)
+class RegionCurves:
+    """The boundary curves of one instability region in the (Omega, gamma) plane.
+
+    Attributes
+    ----------
+    label : str
+        Which region: "tongue r" (pitch) or "kind modes j" (beam action).
+    gamma : numpy.ndarray
+        Shape (k,), amplitudes, ascending; the first is the tip (critical gamma).
+    omega_lo, omega_hi : numpy.ndarray
+        Shape (k,), the edges at each gamma (rad/s).
+    """
+
+    label: str
+    gamma: np.ndarray
+    omega_lo: np.ndarray
+    omega_hi: np.ndarray
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready mapping (plain lists)."""
+        return _arrays(self)
+
+
+@dataclass(frozen=True)
+class BandChart:
+    """Instability regions traced from their boundaries, in physical Omega (rad/s).
+
+    Attributes
+    ----------
+    title : str
+        What is charted.
+    regions : tuple of RegionCurves
+        The traced regions.
+    gamma_operating : float
+        The case's gamma (dimensionless), drawn as a horizontal line.
+    omega_min, omega_max : float
+        The case's Omega range (rad/s).
+    gamma_max : float
+        Top of the chart (dimensionless).
+    """
+
+    title: str
+    regions: tuple
+    gamma_operating: float
+    omega_min: float
+    omega_max: float
+    gamma_max: float
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready mapping (plain lists and floats)."""
+        return {"title": self.title, "regions": [r.to_dict() for r in self.regions],
+                "gamma_operating": float(self.gamma_operating),
+                "omega_min": float(self.omega_min), "omega_max": float(self.omega_max),
+                "gamma_max": float(self.gamma_max)}
+
+
+def pitch_band_chart(model: Any, *, n_gamma: int = PITCH_BAND_CHART_LEVELS,
+                     gamma_max: float = BAND_CHART_GAMMA_MAX) -> BandChart:
+    """The pitch tongues in the (Omega, gamma) plane, traced from the transition curves.
 
     Parameters
     ----------
     model : BoosterModel
-        The derived model (Omega range, beam-action system).
-    n_omega : int
-        Omega points, logarithmic over the model's range, 2..10000.
-    gamma : (float, float, int)
-        (first, last, count) of the uniform gamma grid, 0 <= first < last < 1.
-    step_phase : float
-        Monodromy step parameter, > 0.
+        The derived model (omega_psi in rad/s, gamma, Omega range, pitch damping ratio).
+    n_gamma : int
+        gamma levels, uniform on [0, gamma_max], 2..1000.
+    gamma_max : float
+        Largest gamma (dimensionless), 0 < gamma_max < 1.
 
     Returns
     -------
-    StabilityChart
+    BandChart
+        One region per tongue r that reaches the Omega range at gamma_max, with the edges of
+        :func:`flexbooster.memo.pitch.pitch_band_edges` at each level where the band exists.
 
     References
     ----------
-    Bolotin (1964), ch. 3; Tech Memo 104, section 4.1.
+    Tech Memo 104, eqs. (4.2-3), (4.2-4); Abramowitz & Stegun (1964) 20.2; Bolotin (1964),
+    ch. 1, sec. 6.
     """
-    n_omega = count("n_omega", n_omega, 2, 10_000)
+    n_gamma = count("n_gamma", n_gamma, 2, 1000)
+    gamma_max = positive("gamma_max", gamma_max)
+    if gamma_max >= 1.0:
+        raise ValueError(f"gamma_max = {gamma_max!r}: must be < 1")
     lo, hi = model.omega_range
-    g = np.linspace(gamma[0], gamma[1], count("gamma count", gamma[2], 1, 10_000))
-    return stability_chart(beam_system(model), np.geomspace(lo, hi, n_omega), g,
-                           step_phase=step_phase)
+    w, zeta = float(model.omega_psi), float(model.pitch_damping_ratio)
+    levels = np.linspace(0.0, gamma_max, n_gamma)
+    regions = []
+    if w > 0.0:
+        for r in range(1, PITCH_MAX_TONGUE + 1):
+            top = pitch_band_edges(w, gamma_max, tongue=r, damping_ratio=zeta)
+            if top is None:  # below round-off (or the critical gamma): so are higher tongues
+                break
+            if top[1] < lo:  # this and every higher tongue lie below the range
+                break
+            if top[0] > hi:
+                continue
+            rows = [(g, *e) for g in levels
+                    if (e := pitch_band_edges(w, float(g), tongue=r, damping_ratio=zeta))]
+            if rows:
+                g_, a_, b_ = (np.array(c) for c in zip(*rows, strict=True))
+                regions.append(RegionCurves(label=f"tongue {r}", gamma=g_, omega_lo=a_,
+                                            omega_hi=b_))
+    return BandChart(title="Rigid-body pitch: Mathieu tongues", regions=tuple(regions),
+                     gamma_operating=float(model.gamma), omega_min=lo, omega_max=hi,
+                     gamma_max=gamma_max)
+
+
+def beam_action_chart(model: Any, *, n_gamma: int = BEAM_ACTION_CHART_LEVELS,
+                      gamma_max: float = BAND_CHART_GAMMA_MAX,
+                      rtol: float = BEAM_ACTION_CHART_RTOL,
+                      max_order: int | None = BEAM_ACTION_CHART_MAX_ORDER,
+                      step_phase: float = BEAM_ACTION_CHART_STEP_PHASE) -> BandChart:
+    """The beam-action instability regions in the (Omega, gamma) plane, from their boundaries.
+
+    Parameters
+    ----------
+    model : BoosterModel
+        The derived model (Omega range in rad/s, beam-action system, damping ratios).
+    n_gamma : int
+        Amplitude levels of :func:`flexbooster.floquet.region_boundaries` (the tip at the
+        critical gamma included), 2..1000.
+    gamma_max : float
+        Largest gamma (dimensionless), 0 < gamma_max < 1.
+    rtol : float
+        Boundary tolerance relative to each centre (dimensionless); narrower regions are not
+        drawn.
+    max_order : int or None
+        Largest resonance order j drawn.
+    step_phase : float
+        Monodromy step parameter (dimensionless), > 0.
+
+    Returns
+    -------
+    BandChart
+        The regions that exist at gamma_max, edges converted from Omega / omega_1 to rad/s;
+        searched above max(omega_min, omega_1 / 4) as the pipeline's bands
+        (:data:`flexbooster.memo.beam_action.BAND_OMEGA_BAR_MIN`).
+
+    References
+    ----------
+    Bolotin (1964), ch. 1 (regions in the (Omega, mu) plane), sec. 6; Tech Memo 104, 4.1.
+    """
+    n_gamma = count("n_gamma", n_gamma, 2, 1000)
+    gamma_max = positive("gamma_max", gamma_max)
+    if gamma_max >= 1.0:
+        raise ValueError(f"gamma_max = {gamma_max!r}: must be < 1")
+    lo, hi = model.omega_range
+    system = beam_system(model)
+    w1 = float(system.omega_1)
+    n = system.Lambda.size
+    C = modal_damping(system, beam_ratio=model.beam_damping_ratio,
+                      pitch_ratio=model.pitch_damping_ratio)
+    lo_search = max(lo, BAND_OMEGA_BAR_MIN * w1)  # as the band search of the pipeline
+    curves = () if not hi > lo_search else region_boundaries(
+                               np.eye(n), C, system.A0, -system.B, gamma_max=gamma_max,
+                               omega_min=lo_search / w1, omega_max=hi / w1, n_gamma=n_gamma,
+                               rtol=rtol, max_order=max_order, step_phase=step_phase,
+                               max_candidates=5_000_000)
+    regions = tuple(
+        RegionCurves(label=f"{c.kind} {'+'.join(str(m) for m in c.modes)} j={c.order}",
+                     gamma=np.asarray(c.gamma, dtype=float),
+                     omega_lo=np.asarray(c.omega_lo) * w1,  # Omega_bar -> rad/s
+                     omega_hi=np.asarray(c.omega_hi) * w1)
+        for c in curves if c.kind != "steady")
+    return BandChart(title="Beam action: instability regions", regions=regions,
+                     gamma_operating=float(model.gamma), omega_min=lo, omega_max=hi,
+                     gamma_max=gamma_max)
 
 
 @dataclass(frozen=True)
@@ -441,17 +596,21 @@ class FigureData:
     beam_modes : BeamModeShapes
     nodal_patterns : tuple of NodalPattern
         One per cylinder.
-    beam_action_chart : StabilityChart or None
-        None when the beam action was not computed.
+    beam_action_chart : BandChart or None
+        The beam-action regions traced from their boundaries; None when the beam action was
+        not computed.
     campbell : CampbellData or None
         None when the stability table was not computed.
+    pitch_band_chart : BandChart or None
+        The pitch tongues in the (Omega, gamma) plane.
     """
 
     ince_strutt: InceStruttData
     beam_modes: BeamModeShapes
     nodal_patterns: tuple
-    beam_action_chart: StabilityChart | None = None
+    beam_action_chart: BandChart | None = None
     campbell: CampbellData | None = None
+    pitch_band_chart: BandChart | None = None
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready mapping; the grids are named in :mod:`flexbooster.memo.charts`."""
@@ -462,4 +621,6 @@ class FigureData:
             "beam_action_chart": (None if self.beam_action_chart is None
                                   else self.beam_action_chart.to_dict()),
             "campbell": None if self.campbell is None else self.campbell.to_dict(),
+            "pitch_band_chart": (None if self.pitch_band_chart is None
+                                 else self.pitch_band_chart.to_dict()),
         }

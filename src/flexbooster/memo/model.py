@@ -98,6 +98,12 @@ class BoosterModel:
     strain : float
         (1 - nu^2) T0 / (E h), the scale of the membrane strain u* of eq. (5.3-4a)
         (dimensionless).
+    beam_damping_ratio : float
+        Modal damping ratio of the elastic beam modes in the beam-action band search
+        (dimensionless), 0 <= zeta < 1.
+    pitch_damping_ratio : float
+        Damping ratio of the rigid-body pitch, psi'' + 2 zeta omega_psi psi' + ...
+        (dimensionless), 0 <= zeta < 1.
     """
 
     R1: float
@@ -120,6 +126,8 @@ class BoosterModel:
     groups: DimensionlessGroups
     shell: ShellParameters
     strain: float
+    beam_damping_ratio: float = 0.0
+    pitch_damping_ratio: float = 0.0
 
     @property
     def T0_bar(self) -> float:
@@ -157,6 +165,8 @@ def booster_model(
     K: float,
     Omega: np.ndarray,
     truncation: Truncation,
+    beam_damping_ratio: float = 0.0,
+    pitch_damping_ratio: float = 0.0,
 ) -> BoosterModel:
     """Build the derived model of a booster (memo 2.2, 3.0, 4.2).
 
@@ -184,6 +194,10 @@ def booster_model(
         Thrust frequencies of the grid (rad/s), 1-D, > 0, increasing.
     truncation : Truncation
         Mode counts.
+    beam_damping_ratio : float
+        Modal damping ratio of the elastic beam modes (dimensionless), 0 <= zeta < 1.
+    pitch_damping_ratio : float
+        Damping ratio of the rigid-body pitch (dimensionless), 0 <= zeta < 1.
 
     Returns
     -------
@@ -207,6 +221,10 @@ def booster_model(
         count(f"truncation.{name}", getattr(truncation, name), 1)
     count("truncation.S", truncation.S, 0)
     nu = finite("nu", nu)
+    for name, zeta in (("beam_damping_ratio", beam_damping_ratio),
+                       ("pitch_damping_ratio", pitch_damping_ratio)):
+        if nonnegative(name, zeta) >= 1.0:
+            raise ValueError(f"{name} = {zeta!r}: must satisfy 0 <= zeta < 1")
     mass = mass_properties(R1, L1, R2, L2, h, rho)
     omega_1 = first_bending_frequency(mass.L, R1, E, rho)  # eq. (4.2-8b)
     T0 = F0 / (2.0 * math.pi * R1)  # F0 = 2 pi R1 T0
@@ -218,4 +236,6 @@ def booster_model(
         groups=dimensionless_groups(mass.L, R1, R2, h, E, rho, omega_1, T0),
         shell=shell_parameters(R1, L1, R2, L2, h, E, nu, rho, omega_1),
         strain=(1.0 - nu**2) * T0 / (E * h),  # eq. (5.3-4a) scale
+        beam_damping_ratio=float(beam_damping_ratio),
+        pitch_damping_ratio=float(pitch_damping_ratio),
     )

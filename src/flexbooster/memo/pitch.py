@@ -48,7 +48,7 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from scipy import integrate, special
+from scipy import integrate, optimize, special
 
 __all__ = [
     "pitch_frequency",
@@ -59,6 +59,10 @@ __all__ = [
     "psi_three_term",
     "psi_numerical",
     "three_term_error",
+    "PITCH_MAX_TONGUE",
+    "PitchBand",
+    "pitch_band_edges",
+    "pitch_bands",
     "PitchResult",
     "pitch_analysis",
 ]
@@ -712,6 +716,322 @@ def three_term_error(
 
 
 # --------------------------------------------------------------------------------------------
+# Exact instability bands in Omega (the operating path crossing the transition curves)
+# --------------------------------------------------------------------------------------------
+#: Largest tongue order r searched; tongues narrower than the round-off of a_r - b_r end the
+#: search earlier (their width falls like (gamma / 8)^r).
+PITCH_MAX_TONGUE = 60
+_EPS = np.finfo(float).eps
+
+
+@dataclass(frozen=True)
+class PitchBand:
+    """One instability band of the rigid-body pitch in Omega (Mathieu tongue r, memo 4.2).
+
+    Attributes
+    ----------
+    omega_lo, omega_hi : float
+        Band edges (rad/s): where the operating path a = 4 omega_psi^2 / Omega^2,
+        q = gamma a / 2 (4.2-4) crosses a_r(q) (lower edge) and b_r(q) (upper edge); with
+        damping, where the growth rate is zero.
+    growth_rate_max : float
+        Largest amplitude growth rate of psi inside the band (1/s).
+    omega_at_max : float
+        Omega where it occurs (rad/s).
+    tongue : int
+        Order r of the Mathieu tongue (Omega ~ 2 omega_psi / r).
+    critical_gamma : float
+        Smallest gamma at which the band exists (dimensionless); 0 without damping.
+    clipped : bool
+        True when an edge is an end of the Omega range asked for.
+
+    References
+    ----------
+    Tech Memo 104, eqs. (4.2-3), (4.2-4); Abramowitz & Stegun (1964) 20.2; Bolotin (1964),
+    sec. 6 (damping).
+    """
+
+    omega_lo: float
+    omega_hi: float
+    growth_rate_max: float
+    omega_at_max: float
+    tongue: int
+    critical_gamma: float = 0.0
+    clipped: bool = False
+
+    @property
+    def width(self) -> float:
+        """omega_hi - omega_lo (rad/s)."""
+        return self.omega_hi - self.omega_lo
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready mapping (plain floats, ints and bools)."""
+        return {"omega_lo": float(self.omega_lo), "omega_hi": float(self.omega_hi),
+                "width": float(self.width), "growth_rate_max": float(self.growth_rate_max),
+                "omega_at_max": float(self.omega_at_max), "tongue": int(self.tongue),
+                "critical_gamma": float(self.critical_gamma), "clipped": bool(self.clipped)}
+
+
+def _char_value(kind: str, r: int, q: float) -> float:
+    """a_r(q) or b_r(q) (A&S 20.2) at one q >= 0."""
+    return float(transition_curves(np.array([q]), r)[f"{kind}{r}"][0])
+
+
+def _expand(f: Any, x0: float, f0: float, direction: float, step: float,
+            limit: float) -> float:
+    """First x = x0 + direction step 2^k (clipped to ``limit``) with sign f(x) != sign f0."""
+    for k in range(200):
+        x = x0 + direction * step * 2.0**k
+        x = min(x, limit) if direction > 0 else max(x, limit)
+        if np.sign(f(x)) != np.sign(f0):
+            return x
+        if x == limit:
+            break
+    raise ValueError(f"x0 = {x0!r}: no sign change of the edge function towards {limit!r} "
+                     "(tongue edge not bracketed)")
+
+
+def _tongue_edges(r: int, g: float) -> tuple[float, float] | None:
+    """(x_b, x_a): where the ray q = g x / 2 crosses b_r and a_r in the (q, a) plane.
+
+    Started at the analytic tongue position x = r^2 (Omega = 2 omega_psi / r): the midline
+    x = (a_r + b_r) / 2 is bracketed outward from there and solved (brentq); inside the tongue
+    x - a_r < 0 < x - b_r, and each edge is bracketed outward from the midline with steps of
+    the tongue's width.  None when a_r - b_r is below the round-off of the characteristic
+    values (the tongue cannot be resolved).
+    """
+
+    def mid(x: float) -> float:
+        q = 0.5 * g * x
+        return x - 0.5 * (_char_value("a", r, q) + _char_value("b", r, q))
+
+    x0 = float(r * r)
+    f0 = mid(x0)
+    if f0 == 0.0:
+        xm = x0
+    else:
+        direction = -1.0 if f0 > 0.0 else 1.0
+        limit = 0.25 * x0 if direction < 0 else 4.0 * x0 + 4.0
+        x1 = _expand(mid, x0, f0, direction, 0.01 * x0, limit)
+        xm = optimize.brentq(mid, min(x0, x1), max(x0, x1), xtol=1e-15 * x0, rtol=4 * _EPS)
+    qm = 0.5 * g * xm
+    ar, br = _char_value("a", r, qm), _char_value("b", r, qm)
+    width = ar - br
+    if not width > 64.0 * _EPS * max(xm, 1.0):
+        return None
+
+    def ha(x: float) -> float:
+        return x - _char_value("a", r, 0.5 * g * x)  # path on a_r: eq. (4.2-4), A&S 20.2
+
+    def hb(x: float) -> float:
+        return x - _char_value("b", r, 0.5 * g * x)  # path on b_r
+
+    xa_far = _expand(ha, xm, ha(xm), 1.0, width, 4.0 * xm + 4.0)
+    xb_far = _expand(hb, xm, hb(xm), -1.0, width, 0.0)
+    xa = optimize.brentq(ha, xm, xa_far, xtol=1e-15 * xm, rtol=4 * _EPS)
+    xb = optimize.brentq(hb, xb_far, xm, xtol=1e-15 * xm, rtol=4 * _EPS)
+    return xb, xa
+
+
+def _mu(x: float, g: float) -> float:
+    """Im beta of psi'' + (x - 2 q cos 2 tau_1) psi = 0 at q = g x / 2 (Hill's determinant)."""
+    return float(np.imag(characteristic_exponent(x, 0.5 * g * x, "hill")))
+
+
+def _damped_band(x_b: float, x_a: float, g: float, zeta: float) -> tuple | None:
+    """Edges and growth peak of f(x) = mu(x) - zeta sqrt(x / (1 - zeta^2)) in (x_b, x_a).
+
+    f > 0 is growth of the damped pitch: with c = zeta sqrt(a) the substitution
+    psi = e^(-c tau_1) u turns the damped equation into Mathieu's with x = a (1 - zeta^2).
+    The growth rate in 1/s is f Omega / 2 with Omega proportional to x^(-1/2): the peak is
+    that of f / sqrt(x).
+    """
+    s = 1.0 / (1.0 - zeta * zeta)
+
+    def f(x: float) -> float:
+        return _mu(x, g) - zeta * np.sqrt(x * s)  # growth minus damping, see above
+
+    res = optimize.minimize_scalar(lambda x: -f(x) / np.sqrt(x), bounds=(x_b, x_a),
+                                   method="bounded",
+                                   options={"xatol": 1e-10 * x_a, "maxiter": 500})
+    x_m = float(res.x)
+    f_m = f(x_m)
+    if zeta == 0.0:
+        return x_b, x_a, x_m, f_m
+    if not f_m > 0.0:
+        return None
+    lo = optimize.brentq(f, x_b, x_m, xtol=1e-15 * x_m, rtol=4 * _EPS)
+    hi = optimize.brentq(f, x_m, x_a, xtol=1e-15 * x_m, rtol=4 * _EPS)
+    return lo, hi, x_m, f_m
+
+
+def _critical_gamma(r: int, gamma: float, zeta: float) -> float:
+    """Smallest gamma at which tongue r of the damped pitch opens (brentq on the peak)."""
+    s = 1.0 / (1.0 - zeta * zeta)
+
+    def peak(gam: float) -> float:
+        g = gam * s
+        edges = _tongue_edges(r, g)
+        if edges is None:
+            return -zeta * np.sqrt(r * r * s)
+        res = optimize.minimize_scalar(
+            lambda x: -(_mu(x, g) - zeta * np.sqrt(x * s)), bounds=edges, method="bounded",
+            options={"xatol": 1e-10 * edges[1], "maxiter": 500})
+        return -float(res.fun)
+
+    g_lo = 1e-3 * gamma
+    while peak(g_lo) > 0.0:
+        g_lo *= 0.1
+        if g_lo < 1e-12:
+            return 0.0
+    return float(optimize.brentq(peak, g_lo, gamma, xtol=1e-10 * gamma, rtol=1e-12,
+                                 maxiter=200))
+
+
+def pitch_band_edges(omega_psi: float, gamma: float, *, tongue: int,
+                     damping_ratio: float = 0.0) -> tuple[float, float] | None:
+    """Edges (omega_lo, omega_hi) (rad/s) of Mathieu tongue r on the operating path.
+
+    Parameters
+    ----------
+    omega_psi : float
+        Rigid-body pitch frequency (rad/s), > 0.
+    gamma : float
+        Pulsation amplitude (dimensionless), 0 <= gamma < 1.
+    tongue : int
+        Tongue order r >= 1 (Omega ~ 2 omega_psi / r).
+    damping_ratio : float
+        Pitch damping ratio zeta (dimensionless), 0 <= zeta < 1.
+
+    Returns
+    -------
+    (float, float) or None
+        The band edges as in :func:`pitch_bands` (not clipped to a range); (Omega_r, Omega_r)
+        with Omega_r = 2 omega_psi sqrt(1 - zeta^2) / r at gamma = 0 without damping; None where
+        the band does not exist (below the critical gamma with damping) or is narrower than
+        round-off.
+
+    References
+    ----------
+    Tech Memo 104, eqs. (4.2-3), (4.2-4); Abramowitz & Stegun (1964) 20.2; Bolotin (1964),
+    sec. 6.
+    """
+    if not (np.isfinite(omega_psi) and omega_psi > 0.0):
+        raise ValueError(f"omega_psi = {omega_psi!r}: must be finite and > 0")
+    if not (np.isfinite(gamma) and 0.0 <= gamma < 1.0):
+        raise ValueError(f"gamma = {gamma!r}: must satisfy 0 <= gamma < 1")
+    if not (np.isfinite(damping_ratio) and 0.0 <= damping_ratio < 1.0):
+        raise ValueError(f"damping_ratio = {damping_ratio!r}: must satisfy 0 <= zeta < 1")
+    if isinstance(tongue, bool) or int(tongue) != tongue or not 1 <= tongue <= PITCH_MAX_TONGUE:
+        raise ValueError(f"tongue = {tongue!r}: must be an integer in 1..{PITCH_MAX_TONGUE}")
+    r, zeta = int(tongue), float(damping_ratio)
+    s = 1.0 - zeta * zeta
+    w = float(omega_psi)
+    if gamma == 0.0:
+        return None if zeta > 0.0 else (2.0 * w * np.sqrt(s) / r,) * 2
+    g = gamma / s
+    edges = _tongue_edges(r, g)
+    if edges is None:
+        return None
+    if zeta > 0.0:
+        band = _damped_band(edges[0], edges[1], g, zeta)
+        if band is None:
+            return None
+        edges = band[:2]
+    return (float(2.0 * w * np.sqrt(s / edges[1])), float(2.0 * w * np.sqrt(s / edges[0])))
+
+
+def pitch_bands(omega_psi: float, gamma: float, *, omega_min: float, omega_max: float,
+                damping_ratio: float = 0.0) -> tuple[PitchBand, ...]:
+    """Every instability band of the rigid-body pitch in [omega_min, omega_max], exactly.
+
+    Parameters
+    ----------
+    omega_psi : float
+        Rigid-body pitch frequency (rad/s), >= 0 (:func:`pitch_frequency`).
+    gamma : float
+        Pulsation amplitude (dimensionless), 0 <= gamma < 1.
+    omega_min, omega_max : float
+        Range of the thrust frequency Omega (rad/s), 0 < omega_min < omega_max.
+    damping_ratio : float
+        zeta of psi'' + 2 zeta omega_psi psi' + omega_psi^2 (1 - gamma cos Omega t) psi = 0
+        (dimensionless), 0 <= zeta < 1.
+
+    Returns
+    -------
+    tuple of PitchBand
+        Sorted by Omega.  Without damping the edges are the Omega where the operating path
+        a(Omega) = 4 omega_psi^2 / Omega^2, q = gamma a / 2 (4.2-4) crosses a_r(q) and b_r(q),
+        r = 1, 2, ... (every tongue the range reaches; a > 0 > a_0 so the region a < a_0 is
+        never reached), solved by brentq from the analytic positions Omega ~ 2 omega_psi / r;
+        with damping, psi = e^(-c tau_1) u (c = 2 zeta omega_psi / Omega) gives Mathieu's
+        equation for u with a' = a (1 - zeta^2), and the edges are the roots of
+        Im beta(a', q) = c inside the undamped tongue of the path (a', q).  The growth rate
+        Im beta Omega / 2 - zeta omega_psi (1/s) is maximised inside each band (bounded
+        scalar maximiser).  Tongues narrower than the round-off of a_r - b_r (about
+        1e-14 r^2) are not reported.
+
+    References
+    ----------
+    Tech Memo 104, eqs. (4.2-3), (4.2-4); Abramowitz & Stegun (1964) 20.2.21-20.2.25;
+    McLachlan (1947) ch. IV; Bolotin (1964), sec. 6 (damped Mathieu equation).
+    """
+    for name, value, low in (("omega_psi", omega_psi, 0.0), ("gamma", gamma, 0.0),
+                             ("damping_ratio", damping_ratio, 0.0)):
+        if not (np.isfinite(value) and value >= low):
+            raise ValueError(f"{name} = {value!r}: must be finite and >= 0")
+    if gamma >= 1.0:
+        raise ValueError(f"gamma = {gamma!r}: must be < 1")
+    if damping_ratio >= 1.0:
+        raise ValueError(f"damping_ratio = {damping_ratio!r}: must be < 1")
+    for name, value in (("omega_min", omega_min), ("omega_max", omega_max)):
+        if not (np.isfinite(value) and value > 0.0):
+            raise ValueError(f"{name} = {value!r}: must be finite and > 0")
+    if not omega_min < omega_max:
+        raise ValueError(f"omega_min = {omega_min!r}: must be < omega_max = {omega_max!r}")
+    if omega_psi == 0.0 or gamma == 0.0:
+        return ()  # q = 0: a = r^2 are isolated points, no band
+    zeta = float(damping_ratio)
+    s = 1.0 - zeta * zeta
+    g = gamma / s  # the path in (q, a') = (q, a (1 - zeta^2)): q = g a' / 2
+    w = float(omega_psi)
+
+    def omega(x: float) -> float:
+        return 2.0 * w * np.sqrt(s / x)  # a' = x = 4 omega_psi^2 (1 - zeta^2) / Omega^2
+
+    r_first = max(1, int(np.floor(2.0 * w / omega_max * 0.5)))
+    bands = []
+    for r in range(r_first, PITCH_MAX_TONGUE + 1):
+        edges = _tongue_edges(r, g)
+        if edges is None:
+            break  # this and every higher tongue is below round-off
+        x_b, x_a = edges
+        if omega(x_b) < omega_min:  # the whole tongue lies below the range, and higher ones
+            break
+        if omega(x_a) > omega_max:
+            continue
+        band = _damped_band(x_b, x_a, g, zeta)
+        if band is None:
+            continue
+        x_lo, x_hi, x_m, f_m = band
+        lo, hi = omega(x_hi), omega(x_lo)  # larger x is smaller Omega
+        clipped = lo < omega_min or hi > omega_max
+        lo, hi = max(lo, omega_min), min(hi, omega_max)
+        om_m = omega(x_m)
+        if not omega_min <= om_m <= omega_max:  # the peak is outside the clipped band
+            om_m = lo if om_m < lo else hi
+            x_m = 4.0 * w * w * s / om_m**2
+            f_m = _mu(x_m, g) - zeta * np.sqrt(x_m / s)
+        # growth of psi: e^((mu - c) tau_1), tau_1 = Omega t / 2, c = zeta sqrt(a)
+        growth = max(f_m, 0.0) * om_m / 2.0
+        crit = _critical_gamma(r, gamma, zeta) if zeta > 0.0 else 0.0
+        bands.append(PitchBand(omega_lo=float(lo), omega_hi=float(hi),
+                               growth_rate_max=float(growth), omega_at_max=float(om_m),
+                               tongue=r, critical_gamma=crit, clipped=bool(clipped)))
+    return tuple(sorted(bands, key=lambda b: b.omega_lo))
+
+
+# --------------------------------------------------------------------------------------------
 # Result object for the pipeline
 # --------------------------------------------------------------------------------------------
 
@@ -741,7 +1061,11 @@ class PitchResult:
     in_memo_range : numpy.ndarray of bool
         0 < a < 1 and 0 < q <= 0.05 (eq. 4.2-5).
     verdict : str
-        One-line stability verdict.
+        One-line stability verdict, from the bands.
+    bands : tuple of PitchBand
+        The exact instability bands in the range of the grid (:func:`pitch_bands`).
+    damping_ratio : float
+        zeta of the pitch damping (dimensionless).
     """
 
     Omega: np.ndarray
@@ -757,6 +1081,8 @@ class PitchResult:
     stable: np.ndarray
     in_memo_range: np.ndarray
     verdict: str
+    bands: tuple = ()
+    damping_ratio: float = 0.0
 
     @property
     def all_stable(self) -> bool:
@@ -769,18 +1095,8 @@ class PitchResult:
         return float(np.max(self.growth_rate)) if self.growth_rate.size else 0.0
 
     def unstable_intervals(self) -> list[tuple[float, float]]:
-        """Runs of consecutive unstable grid points as (Omega_first, Omega_last) (rad/s)."""
-        bad = ~self.stable
-        runs = []
-        i = 0
-        idx = np.flatnonzero(bad)
-        while i < idx.size:
-            k = i
-            while k + 1 < idx.size and idx[k + 1] == idx[k] + 1:
-                k += 1
-            runs.append((float(self.Omega[idx[i]]), float(self.Omega[idx[k]])))
-            i = k + 1
-        return runs
+        """The exact instability bands as (omega_lo, omega_hi) (rad/s), from :attr:`bands`."""
+        return [(float(b.omega_lo), float(b.omega_hi)) for b in self.bands]
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready mapping: plain lists of floats/bools, no NaN or inf."""
@@ -805,53 +1121,78 @@ class PitchResult:
             "max_growth_rate": self.max_growth_rate,
             "unstable_intervals": [list(iv) for iv in self.unstable_intervals()],
             "verdict": self.verdict,
+            "bands": [b.to_dict() for b in self.bands],
+            "damping_ratio": float(self.damping_ratio),
         }
 
 
-def pitch_analysis(Omega: Any, omega_psi: float, gamma: float) -> PitchResult:
-    """Rigid-body pitch stability over a grid of thrust frequencies.
+def pitch_analysis(Omega: Any, omega_psi: float, gamma: float, *,
+                   damping_ratio: float = 0.0) -> PitchResult:
+    """Rigid-body pitch stability over a grid of thrust frequencies, with its exact bands.
 
     Parameters
     ----------
     Omega : array_like
-        Thrust pulsation frequencies (rad/s), > 0, 1-D.
+        Thrust pulsation frequencies (rad/s), > 0, 1-D, increasing.
     omega_psi : float
         Rigid-body pitch frequency (rad/s), from :func:`pitch_frequency`.
     gamma : float
-        Pulsation amplitude (dimensionless), >= 0.
+        Pulsation amplitude (dimensionless), 0 <= gamma < 1.
+    damping_ratio : float
+        Pitch damping ratio zeta (dimensionless), 0 <= zeta < 1:
+        psi'' + 2 zeta omega_psi psi' + omega_psi^2 (1 - gamma cos Omega t) psi = 0.
 
     Returns
     -------
     PitchResult
-        a, q (4.2-4), exact and memo beta, growth rates and the verdict.
+        a, q (4.2-4), exact and memo beta, growth rates on the grid, the exact bands over
+        [Omega[0], Omega[-1]] (:func:`pitch_bands`) and the verdict from the bands.  With
+        damping the grid's beta is that of a' = a (1 - zeta^2) (psi = e^(-c tau_1) u,
+        c = zeta sqrt(a)), stable where Im beta <= c and growth (Im beta - c) Omega / 2.
 
     References
     ----------
-    Tech Memo 104, eqs. (4.2-3), (4.2-4), (4.2-5), (4.2-9).
+    Tech Memo 104, eqs. (4.2-3), (4.2-4), (4.2-5), (4.2-9); Bolotin (1964), sec. 6.
     """
     Omega = np.atleast_1d(np.asarray(Omega, dtype=float))
     if Omega.ndim != 1:
         raise ValueError(f"Omega: must be 1-D, got shape {Omega.shape}")
+    if not (np.isfinite(damping_ratio) and 0.0 <= damping_ratio < 1.0):
+        raise ValueError(f"damping_ratio = {damping_ratio!r}: must satisfy 0 <= zeta < 1")
+    zeta = float(damping_ratio)
     a, q = mathieu_parameters(Omega, omega_psi, gamma)
-    beta = characteristic_exponent(a, q, "floquet")
+    if zeta == 0.0:
+        beta = characteristic_exponent(a, q, "floquet")
+        stable = beta.imag == 0.0
+        growth = np.where(stable, 0.0, beta.imag * Omega / 2.0)  # e^(mu tau_1), tau_1 = Omega t/2
+    else:
+        beta = characteristic_exponent(a * (1.0 - zeta**2), q, "floquet")  # u of psi e^(c tau_1)
+        excess = beta.imag - zeta * np.sqrt(a)  # mu - c, c = 2 zeta omega_psi / Omega
+        stable = excess <= 0.0
+        growth = np.where(stable, 0.0, excess * Omega / 2.0)
     memo = np.zeros(a.shape, dtype=complex)
     ok = (a > 0) & (a != 1.0)
     if np.any(ok):
         memo[ok] = characteristic_exponent(a[ok], q[ok], "memo")
-    stable = beta.imag == 0.0
-    growth = np.where(stable, 0.0, beta.imag * Omega / 2.0)  # e^(mu tau_1), tau_1 = Omega t/2
     in_range = (a > 0) & (a < 1) & (q > 0) & (q <= 0.05)  # eq. (4.2-5)
-    if np.all(stable):
+    lo_om, hi_om = float(Omega.min()), float(Omega.max())
+    bands = ()
+    if hi_om > lo_om:
+        bands = pitch_bands(omega_psi, gamma, omega_min=lo_om, omega_max=hi_om,
+                            damping_ratio=zeta)
+    if not bands:
         verdict = (
-            f"rigid-body pitch stable for all {Omega.size} Omega in "
-            f"[{Omega.min():.6g}, {Omega.max():.6g}] rad/s"
+            f"rigid-body pitch stable for all Omega in [{lo_om:.6g}, {hi_om:.6g}] rad/s "
+            "(no Mathieu instability band in the range)"
         )
     else:
-        i = int(np.argmax(growth))
+        top = max(bands, key=lambda b: b.growth_rate_max)
+        spans = ", ".join(f"[{b.omega_lo:.6g}, {b.omega_hi:.6g}]" for b in bands[:4])
+        more = f" and {len(bands) - 4} more" if len(bands) > 4 else ""
         verdict = (
-            f"rigid-body pitch UNSTABLE at {int(np.sum(~stable))} of {Omega.size} Omega "
-            f"values; max growth rate {growth[i]:.6g} 1/s at Omega = {Omega[i]:.6g} "
-            f"rad/s (a = {a[i]:.6g}, q = {q[i]:.6g})"
+            f"rigid-body pitch UNSTABLE in {len(bands)} band(s) {spans}{more} rad/s; max "
+            f"growth rate {top.growth_rate_max:.6g} 1/s at Omega = {top.omega_at_max:.6g} "
+            f"rad/s (tongue {top.tongue})"
         )
     if not np.all(in_range):
         verdict += f"; {int(np.sum(~in_range))} points outside the memo range (4.2-5)"
@@ -869,4 +1210,6 @@ def pitch_analysis(Omega: Any, omega_psi: float, gamma: float) -> PitchResult:
         stable=stable,
         in_memo_range=in_range,
         verdict=verdict,
+        bands=bands,
+        damping_ratio=zeta,
     )

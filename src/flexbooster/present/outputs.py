@@ -153,15 +153,15 @@ def make_figures(results: Results) -> dict[str, Figure]:
     -------
     dict of str to matplotlib.figure.Figure
         By file stem: ``ince-strutt``, ``beam-modes``, ``shell-frequencies-cylinder1``,
-        ``shell-frequencies-cylinder2``, ``nodal-patterns`` and, when they were computed,
-        ``beam-action-chart`` and ``campbell``; for a case with ``[vehicle]`` also
-        ``vehicle-mode-shapes`` and ``vehicle-unrolled``.
+        ``shell-frequencies-cylinder2``, ``nodal-patterns``, ``pitch-band-chart`` and,
+        when they were computed, ``beam-action-chart`` and ``campbell``; for a case with
+        ``[vehicle]`` also ``vehicle-mode-shapes`` and ``vehicle-unrolled``.
     """
     import matplotlib
 
     matplotlib.use("Agg")
+    from .plotting.bands import plot_band_chart
     from .plotting.beam import mode_shape_plot
-    from .plotting.beam_action import plot_stability_chart
     from .plotting.patterns import nodal_patterns
     from .plotting.pitch import ince_strutt_chart
     from .plotting.shell import frequency_curves
@@ -177,8 +177,10 @@ def make_figures(results: Results) -> dict[str, Figure]:
     for d in (1, 2):
         figs[f"shell-frequencies-cylinder{d}"] = frequency_curves(results.shell, d)
     figs["nodal-patterns"] = nodal_patterns(data.nodal_patterns)
+    if data.pitch_band_chart is not None:
+        figs["pitch-band-chart"] = plot_band_chart(data.pitch_band_chart)
     if data.beam_action_chart is not None:
-        figs["beam-action-chart"] = plot_stability_chart(data.beam_action_chart)
+        figs["beam-action-chart"] = plot_band_chart(data.beam_action_chart)
     if data.campbell is not None:
         figs["campbell"] = campbell_diagram(data.campbell)
     if results.vehicle is not None:  # a case with [vehicle] only

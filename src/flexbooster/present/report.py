@@ -83,11 +83,19 @@ FIGURES: dict[str, tuple[str, str]] = {
         "frequency of that (j, k).  Radial displacement sin(j pi s/2) cos(k theta) (eqs. 5.3-2d, "
         "5.3-3d) positive in red, negative in blue; nodal lines black.",
     ),
+    "pitch-band-chart": (
+        "rigid-body",
+        "Instability tongues of the rigid-body pitch in the plane of the thrust frequency Omega "
+        "(Hz) and the pulsation amplitude gamma: edges where the path (4.2-4) crosses the "
+        "transition curves a_r, b_r, at 46 levels of gamma in [0, 0.9]; dashed: the case's "
+        "gamma.",
+    ),
     "beam-action-chart": (
         "beam-action",
         "Instability regions of the beam-action system (memo 4.1) in the plane of the thrust "
-        "frequency Omega/omega_1 and the pulsation amplitude gamma (monodromy exponents on a "
-        "coarse 80 x 30 grid); coloured: unstable, by growth rate; blank: stable.",
+        "frequency Omega (Hz) and the pulsation amplitude gamma, traced from their boundaries "
+        "(|rho| = 1) at gamma = 0.3, 0.6, 0.9 and the tip; first-order resonances wider than "
+        "1e-4 of their centre; dashed: the case's gamma.",
     ),
     "campbell": (
         "campbell",
@@ -344,15 +352,17 @@ def _pitch(results: Results, svgs: Mapping[str, str] | None) -> str:
         ("grid points in the memo's range 0 < a < 1, 0 < q <= 0.05",
          f"{int(np.sum(p.in_memo_range))} of {p.in_memo_range.size}", "-"),
     ]
-    intervals = p.unstable_intervals()
-    out = _verdict(p.verdict, bool(np.all(p.stable))) + _qvu(rows)
-    if intervals:
-        out += "<p>Unstable intervals of Omega (rad/s):</p>" + _table(
-            ("from (rad/s)", "to (rad/s)", "from (Hz)", "to (Hz)"),
-            [(lo, hi, _hz(lo), _hz(hi)) for lo, hi in intervals[:50]], (True,) * 4)
-        if len(intervals) > 50:
-            out += f'<p class="note">First 50 of {len(intervals)} intervals.</p>'
-    return out + _figure("ince-strutt", svgs)
+    bands = p.bands
+    out = _verdict(p.verdict, not bands) + _qvu(rows)
+    if bands:
+        out += "<p>Instability bands of Omega (exact edges):</p>" + _table(
+            ("tongue", "from (rad/s)", "to (rad/s)", "from (Hz)", "to (Hz)",
+             "max growth (1/s)", "critical gamma"),
+            [(b.tongue, b.omega_lo, b.omega_hi, _hz(b.omega_lo), _hz(b.omega_hi),
+              b.growth_rate_max, b.critical_gamma) for b in bands[:50]], (True,) * 7)
+        if len(bands) > 50:
+            out += f'<p class="note">First 50 of {len(bands)} bands.</p>'
+    return out + _figure("ince-strutt", svgs) + _figure("pitch-band-chart", svgs)
 
 
 def _beam_action(results: Results) -> str:
@@ -366,13 +376,26 @@ def _beam_action(results: Results) -> str:
         ("Hill against monodromy exponents, largest difference", ba.hill_monodromy_difference,
          "-"),
         ("stable grid points", f"{int(np.sum(ba.stable))} of {ba.stable.size}", "-"),
+        ("Omega range searched for bands (from omega_1 / 4)",
+         f"{_fmt(ba.band_range[0])} .. {_fmt(ba.band_range[1])}", "rad/s"),
+        ("instability bands", len(ba.bands), "-"),
     ]
     rows += [
         (f"alpha_{r + 1} Omega_bar at gamma -> 0 (loaded frequency)",
          float(np.real(ba.frequencies[r])), "omega_1")
         for r in range(np.size(ba.frequencies))
     ]
-    return _verdict(ba.verdict, bool(np.all(ba.stable))) + _qvu(rows)
+    out = _verdict(ba.verdict, not ba.bands) + _qvu(rows)
+    if ba.bands:
+        out += "<p>Instability bands of Omega (edges on |rho| = 1):</p>" + _table(
+            ("kind", "modes", "j", "from (rad/s)", "to (rad/s)", "max growth (1/s)",
+             "critical gamma"),
+            [(b.kind, "+".join(str(m) for m in b.modes), b.order, b.omega_lo, b.omega_hi,
+              b.growth_rate_max, b.critical_gamma) for b in ba.bands[:50]],
+            (False, False, True, True, True, True, True))
+        if len(ba.bands) > 50:
+            out += f'<p class="note">First 50 of {len(ba.bands)} bands.</p>'
+    return out
 
 
 def _shell(results: Results, svgs: Mapping[str, str] | None) -> str:

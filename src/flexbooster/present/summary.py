@@ -159,8 +159,9 @@ def _print_beam_and_pitch(results: Results, console: Console) -> None:
         ),
     ]
     rows += [
-        ("unstable interval", f"{_g(lo)} .. {_g(hi)}", "rad/s")
-        for lo, hi in p.unstable_intervals()[:5]
+        ("unstable band (exact edges)",
+         f"{_g(b.omega_lo)} .. {_g(b.omega_hi)}; growth {_g(b.growth_rate_max)} 1/s", "rad/s")
+        for b in p.bands[:5]
     ]
     console.print(_table("Rigid-body pitch (memo 4.2, Floquet exponent)", rows))
 
@@ -193,6 +194,13 @@ def _print_beam_action(results: Results, console: Console) -> None:
         ("max growth rate", _g(ba.max_growth_rate), "1/s"),
         ("steady thrust P l^2 / EI (flutter at 109.69)", _g(ba.p), "-"),
         ("Hill vs monodromy exponents, max difference", _g(ba.hill_monodromy_difference), "-"),
+        ("instability bands in the range", str(len(ba.bands)), ""),
+    ]
+    top = sorted(ba.bands, key=lambda b: -b.growth_rate_max)[:5]
+    rows += [
+        (f"band {b.kind} {'+'.join(str(m) for m in b.modes)} j={b.order}",
+         f"{_g(b.omega_lo)} .. {_g(b.omega_hi)}; growth {_g(b.growth_rate_max)} 1/s", "rad/s")
+        for b in top
     ]
     rows += [
         (

@@ -1,0 +1,62 @@
+"""Instability regions in the (Omega, gamma) plane, drawn from their traced boundaries."""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.axes import Axes
+from matplotlib.figure import Figure
+
+from ...memo.charts import BandChart
+
+__all__ = ["plot_band_chart"]
+
+
+def _axes(ax: Axes | None, figsize: tuple[float, float]) -> tuple[Figure, Axes]:
+    if ax is None:
+        fig = Figure(figsize=figsize, layout="constrained")
+        return fig, fig.add_subplot()
+    return ax.figure, ax
+
+
+def plot_band_chart(chart: BandChart, ax: Axes | None = None) -> Figure:
+    """Shade each region between its traced edges, Omega in Hz against gamma.
+
+    Parameters
+    ----------
+    chart : BandChart
+        From :func:`flexbooster.memo.charts.pitch_band_chart` or
+        :func:`flexbooster.memo.charts.beam_action_chart` (edges in rad/s, drawn in Hz).
+    ax : matplotlib.axes.Axes, optional
+        Axes to draw on; a new figure is made when None.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Regions shaded between omega_lo(gamma) and omega_hi(gamma) (the stored points joined
+        by straight lines, the tip at the critical gamma), the operating gamma as a dashed
+        horizontal line; logarithmic Omega axis over the case's range.
+
+    References
+    ----------
+    Bolotin (1964), ch. 1 (regions in the (Omega, mu) plane); Tech Memo 104, 4.1-4.2.
+    """
+    fig, ax = _axes(ax, (6.4, 4.8))
+    to_hz = 1.0 / (2.0 * np.pi)
+    for i, reg in enumerate(chart.regions):
+        x = np.concatenate([reg.omega_lo, reg.omega_hi[::-1]]) * to_hz
+        y = np.concatenate([reg.gamma, reg.gamma[::-1]])
+        ax.fill(x, y, color="C3", alpha=0.35, lw=0.6, ec="C3",
+                label="unstable" if i == 0 else None)
+    ax.axhline(chart.gamma_operating, color="C0", ls="--", lw=1.0,
+               label=f"operating gamma = {chart.gamma_operating:g}")
+    if not chart.regions:
+        ax.text(0.5, 0.5, "no instability region in the range", transform=ax.transAxes,
+                ha="center", va="center")
+    ax.set_xscale("log")
+    ax.set_xlim(chart.omega_min * to_hz, chart.omega_max * to_hz)
+    ax.set_ylim(0.0, chart.gamma_max)
+    ax.set_xlabel("thrust frequency Omega (Hz)")
+    ax.set_ylabel("gamma (pulsation amplitude)")
+    ax.set_title(chart.title)
+    ax.legend(loc="upper left", fontsize=8)
+    return fig
