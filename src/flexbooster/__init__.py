@@ -9,7 +9,7 @@ Public API::
     results.to_dict()                            # what results.json holds
 
 The top-level names are loaded lazily (PEP 562), so that importing a numerical module such as
-``flexbooster.beam`` pulls in numpy and scipy only, not the input layer (pydantic, pint).
+``flexbooster.memo.beam`` pulls in numpy and scipy only, not the input layer (pydantic, pint).
 """
 
 from importlib import import_module

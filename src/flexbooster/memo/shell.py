@@ -7,7 +7,7 @@ For each cylinder d (1 aft, 2 forward) the memo's modal equations give
 * omega_jk^{1,2,3} (6.2-15..17, D-14..D-16): j, k >= 1, the (U, V, W) system of 5.4-8.
 
 They are computed here as the eigenvalues of the generalized problems K x = omega_bar^2 M x
-(:meth:`~flexbooster.shell_coefficients.CylinderCoefficients.matrices_j0`, ``matrices_jk``),
+(:meth:`~flexbooster.memo.shell_coefficients.CylinderCoefficients.matrices_j0`, ``matrices_jk``),
 all (d, j, k) stacked into one array and solved by one batched call of ``numpy.linalg``; the
 memo's symmetric-function forms serve as tests.  Frequencies are dimensionless, in units of
 omega_1 (4.2-8b); rad/s = omega_bar omega_1 and Hz = rad/s / (2 pi).  Each is labelled axial,
@@ -232,7 +232,7 @@ def cylinder_coefficients(p: ShellParameters, d: int, M: int, N: int,
 
     References
     ----------
-    Tech Memo 104, appendix A; :mod:`flexbooster.shell_coefficients`.
+    Tech Memo 104, appendix A; :mod:`flexbooster.memo.shell_coefficients`.
     """
     _check_method(method)
     if method == "memo":

@@ -387,7 +387,7 @@ def _active(
     zero-phase shape functions select j: int sin s over the cylinder vanishes for even j, so the
     psi-dot^2 terms (families 4-6 at k = 0, 10-12 at k = 2) and the T0 gamma sin(K psi) term
     (families 8, 9 at k = 1) reach odd j only (checked against the forcing computed from its
-    definition, :func:`flexbooster.responses.secular_rates`, in the tests).
+    definition, :func:`flexbooster.memo.responses.secular_rates`, in the tests).
     """
     pulsed = gamma != 0.0
     odd_j = (j % 2) == 1

@@ -1,6 +1,7 @@
 """Writing an analysis to a folder: results.json, CSV tables, figures (SVG, PNG), report.html.
 
-A thin layer over :mod:`flexbooster.io` (atomic writes) and :mod:`flexbooster.plotting`.
+A thin layer over :mod:`flexbooster.present.io` (atomic writes) and
+:mod:`flexbooster.present.plotting`.
 """
 
 from __future__ import annotations

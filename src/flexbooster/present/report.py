@@ -26,6 +26,7 @@ import numpy as np
 from .. import __version__
 from ..results import Results
 from .io import write_text_atomic
+from .rows import frequency_rows, input_rows, mass_rows
 
 __all__ = [
     "SECTIONS",
@@ -54,7 +55,8 @@ SECTIONS: tuple[tuple[str, str], ...] = (
     ("warnings", "Warnings"),
 )
 
-#: Figure name (the file stem written by :func:`flexbooster.outputs.write_outputs`) -> section
+#: Figure name (the file stem written by
+#: :func:`flexbooster.present.outputs.write_outputs`) -> section
 #: and caption.
 FIGURES: dict[str, tuple[str, str]] = {
     "beam-modes": (
@@ -264,62 +266,15 @@ def _figure(name: str, svgs: Mapping[str, str] | None) -> str:
 
 
 def _inputs(results: Results) -> str:
-    case = results.case
-    b, t, n = case.booster, case.thrust, case.truncation
-    rows = [
-        ("cylinder 1 (aft) radius R1", b.cylinder1.radius, "m"),
-        ("cylinder 1 half-length L1", b.cylinder1.half_length, "m"),
-        ("cylinder 2 (forward) radius R2", b.cylinder2.radius, "m"),
-        ("cylinder 2 half-length L2", b.cylinder2.half_length, "m"),
-        ("shell thickness h", b.thickness, "m"),
-        ("Young's modulus E", b.E, "Pa"),
-        ("Poisson's ratio nu", b.nu, "-"),
-        ("density rho", b.rho, "kg/m^3"),
-        ("steady thrust F0", case.F0, "N"),
-        ("thrust per unit circumference T0 = F0 / (2 pi R1)", case.T0, "N/m"),
-        ("pulsation amplitude gamma, T = T0 (1 - gamma cos Omega t)", t.gamma, "-"),
-        ("gimbal gain K", t.K, "-"),
-        ("Omega grid: lowest", t.omega_min, "rad/s"),
-        ("Omega grid: highest", t.omega_max, "rad/s"),
-        ("Omega grid: points", t.n_omega, "-"),
-        ("shell modes, cylinder 1: j = 0..M1, k = 0..N1", f"{n.M1}, {n.N1}", "-"),
-        ("shell modes, cylinder 2: j = 0..M2, k = 0..N2", f"{n.M2}, {n.N2}", "-"),
-        ("beam modes N / Floquet harmonics S / exponents R", f"{n.N} / {n.S} / {n.R}", "-"),
-    ]
-    return _qvu(rows)
+    return _qvu(input_rows(results))
 
 
 def _mass(results: Results) -> str:
-    m = results.mass
-    rows = [
-        ("half-length of the booster L = L1 + L2", m.L, "m"),
-        ("mass of cylinder 1 / cylinder 2", f"{_fmt(m.m1)} / {_fmt(m.m2)}", "kg"),
-        ("total mass", m.mass, "kg"),
-        ("centre of mass from the aft edge x_cm", m.x_cm, "m"),
-        ("cylinder holding the centre of mass", m.cm_cylinder, "-"),
-        ("d1 / d2 / d3 / d4 (Fig. 1)", " / ".join(_fmt(v) for v in (m.d1, m.d2, m.d3, m.d4)),
-         "m"),
-        ("aft edge a / junction c / nose b in xi_bar = (x - x_cm)/L",
-         " / ".join(_fmt(v) for v in (m.a, m.c, m.b)), "-"),
-        ("pitch moment of inertia about the CM, I_cm (erratum E1)", m.I_cm, "kg m^2"),
-    ]
-    return _qvu(rows)
+    return _qvu(mass_rows(results))
 
 
 def _frequencies(results: Results) -> str:
-    g = results.groups
-    rows = [
-        ("first free-free bending frequency omega_1 (4.2-8b)", results.omega_1, "rad/s"),
-        ("  in Hz", _hz(results.omega_1), "Hz"),
-        ("rigid-body pitch frequency omega_psi = sqrt(F0 d2 K / I_cm)", results.omega_psi,
-         "rad/s"),
-        ("  in Hz", _hz(results.omega_psi), "Hz"),
-        ("mu = rho L^2 omega_1^2 / E", g.mu, "-"),
-        ("lambda_1 = L/R1, lambda_2 = L/R2", f"{_fmt(g.lambda1)}, {_fmt(g.lambda2)}", "-"),
-        ("sigma = h/L", g.sigma, "-"),
-        ("T0_bar = T0 / (rho h L^2 omega_1^2)", g.T0_bar, "-"),
-    ]
-    return _qvu(rows)
+    return _qvu(frequency_rows(results))
 
 
 def _beam(results: Results, svgs: Mapping[str, str] | None) -> str:
@@ -525,7 +480,7 @@ def render_report(results: Results, svgs: Mapping[str, str] | None = None,
         The analysis.
     svgs : Mapping of str to str, optional
         SVG text of the figures by name (the keys of :data:`FIGURES`), as returned by
-        :func:`flexbooster.outputs.figure_svgs`; missing figures are replaced by a note.
+        :func:`flexbooster.present.outputs.figure_svgs`; missing figures are replaced by a note.
     generated : str, optional
         Time stamp printed in the header; by default the time given by the environment
         variable ``SOURCE_DATE_EPOCH`` (seconds since 1970, UTC: reproducible builds), else

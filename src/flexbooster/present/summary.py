@@ -10,6 +10,7 @@ from rich.console import Console
 from rich.table import Table
 
 from ..results import Results
+from .rows import frequency_rows, input_rows, mass_rows
 
 __all__ = ["print_summary", "print_stability"]
 
@@ -24,7 +25,9 @@ def _table(title: str, rows: list[tuple[str, str, str]]) -> Table:
     return table
 
 
-def _g(x: float) -> str:
+def _g(x: object) -> str:
+    if isinstance(x, int):
+        return str(x)
     return f"{x:.6g}"
 
 
@@ -39,84 +42,14 @@ def print_summary(results: Results, console: Console | None = None) -> None:
         Where to print; a new console on standard output by default.
     """
     console = console or Console()
-    case, m = results.case, results.mass
-    b, t = case.booster, case.thrust
-    console.print(f"[bold]flexbooster[/bold] - {case.name}")
-    console.print(
-        _table(
-            "Input (SI)",
-            [
-                (
-                    "cylinder 1 radius R1 / half-length L1",
-                    f"{_g(b.cylinder1.radius)} / {_g(b.cylinder1.half_length)}",
-                    "m",
-                ),
-                (
-                    "cylinder 2 radius R2 / half-length L2",
-                    f"{_g(b.cylinder2.radius)} / {_g(b.cylinder2.half_length)}",
-                    "m",
-                ),
-                ("thickness h", _g(b.thickness), "m"),
-                ("E / nu / rho", f"{_g(b.E)} / {_g(b.nu)} / {_g(b.rho)}", "Pa / - / kg/m^3"),
-                (
-                    "thrust F0 (T0 per unit circumference)",
-                    f"{_g(case.F0)} ({_g(case.T0)})",
-                    "N (N/m)",
-                ),
-                ("gamma / gimbal gain K", f"{_g(t.gamma)} / {_g(t.K)}", "-"),
-                (
-                    "Omega range (points)",
-                    f"{_g(t.omega_min)} .. {_g(t.omega_max)} ({t.n_omega})",
-                    "rad/s",
-                ),
-            ],
-        )
-    )
-    console.print(
-        _table(
-            "Mass properties (memo 2.2, Fig. 1; I_cm per erratum E1)",
-            [
-                ("half-length L", _g(m.L), "m"),
-                ("masses m1 / m2 / total", f"{_g(m.m1)} / {_g(m.m2)} / {_g(m.mass)}", "kg"),
-                ("CM from aft edge x_cm (in cylinder)", f"{_g(m.x_cm)} ({m.cm_cylinder})", "m"),
-                ("d1 / d2 / d3 / d4", f"{_g(m.d1)} / {_g(m.d2)} / {_g(m.d3)} / {_g(m.d4)}", "m"),
-                ("coordinates a / c / b", f"{_g(m.a)} / {_g(m.c)} / {_g(m.b)}", "-"),
-                ("pitch inertia I_cm", _g(m.I_cm), "kg m^2"),
-            ],
-        )
-    )
-    g = results.groups
-    console.print(
-        _table(
-            "Frequencies and dimensionless groups (memo 3.0, 4.2)",
-            [
-                (
-                    "first bending frequency omega_1 (4.2-8b)",
-                    f"{_g(results.omega_1)} ({_g(results.omega_1 / (2 * np.pi))} Hz)",
-                    "rad/s",
-                ),
-                (
-                    "rigid-body pitch frequency omega_psi",
-                    f"{_g(results.omega_psi)} ({_g(results.omega_psi / (2 * np.pi))} Hz)",
-                    "rad/s",
-                ),
-                ("mu = rho L^2 omega_1^2 / E", _g(g.mu), "-"),
-                ("lambda_1 = L/R1, lambda_2 = L/R2", f"{_g(g.lambda1)}, {_g(g.lambda2)}", "-"),
-                ("sigma = h/L", _g(g.sigma), "-"),
-                ("T0_bar = T0 / (rho h L^2 omega_1^2)", _g(g.T0_bar), "-"),
-                (
-                    "Mathieu a over the Omega grid",
-                    f"{_g(results.a.min())} .. {_g(results.a.max())}",
-                    "-",
-                ),
-                (
-                    "Mathieu q over the Omega grid",
-                    f"{_g(results.q.min())} .. {_g(results.q.max())}",
-                    "-",
-                ),
-            ],
-        )
-    )
+    console.print(f"[bold]flexbooster[/bold] - {results.case.name}")
+    for title, rows in (("Input (SI)", input_rows(results)),
+                        ("Mass properties (memo 2.2, Fig. 1; I_cm per erratum E1)",
+                         mass_rows(results)),
+                        ("Frequencies and dimensionless groups (memo 3.0, 4.2)",
+                         frequency_rows(results))):
+        console.print(_table(title, [(q, v if isinstance(v, str) else _g(v), u)
+                                     for q, v, u in rows]))
     _print_beam_and_pitch(results, console)
     _print_shell(results, console)
     _print_beam_action(results, console)

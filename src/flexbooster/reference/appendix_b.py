@@ -48,7 +48,7 @@ def _geometry(props: Any) -> tuple[float, float, float, float, float, float]:
     except AttributeError as exc:
         raise ValueError(
             f"props = {props!r}: needs attributes L, d1, d2, d3, d4 "
-            "(flexbooster.geometry.MassProperties)"
+            "(flexbooster.memo.geometry.MassProperties)"
         ) from exc
     if not (np.isfinite(L) and L > 0):
         raise ValueError(f"props.L = {L!r}: must be finite and > 0")
@@ -112,7 +112,7 @@ def limit_values(props: Any, N: int, derivative: int = 0) -> LimitValues:
 
     Parameters
     ----------
-    props : flexbooster.geometry.MassProperties
+    props : flexbooster.memo.geometry.MassProperties
         Geometry: L (m) and the distances d1..d4 (m) of Fig. 1.
     N : int
         Number of modes (>= 1).
@@ -165,7 +165,7 @@ def shell_phase(
 
     Parameters
     ----------
-    props : flexbooster.geometry.MassProperties
+    props : flexbooster.memo.geometry.MassProperties
         Geometry: L (m), d1..d4 (m).
     cylinder : {1, 2}
         Cylinder 1 (xi_bar in [a, c]) or cylinder 2 (xi_bar in [c, b]).
@@ -255,7 +255,7 @@ def coefficient_integrals(
 
     Parameters
     ----------
-    props : flexbooster.geometry.MassProperties
+    props : flexbooster.memo.geometry.MassProperties
         Geometry: L (m) and d1..d4 (m) of Fig. 1.
     M : int
         Number of axial shell indices j = 1..M (>= 1).

@@ -111,7 +111,7 @@ def modal_groups(p: ShellParameters, M: tuple[int, int], Nk: tuple[int, int], N:
     Parameters
     ----------
     p : ShellParameters
-        From :func:`flexbooster.shell_coefficients.shell_parameters`.
+        From :func:`flexbooster.memo.shell_coefficients.shell_parameters`.
     M, Nk : (int, int)
         Largest axial index j and circumferential index k of cylinders 1 and 2, 1..500.
     N : int

@@ -231,7 +231,7 @@ def secular_rates(model: BoosterModel, rows: list[dict], psi0: float = 0.01,
     model : BoosterModel
         The derived model.
     rows : list of dict
-        :meth:`flexbooster.stability.StabilityTable.to_rows` (keys ``Omega_rad_s``,
+        :meth:`flexbooster.memo.stability.StabilityTable.to_rows` (keys ``Omega_rad_s``,
         ``cylinder``, ``j``, ``k``, ``branch``, ``r``).
     psi0 : float
         Initial pitch angle (rad) of the rigid-body forcing.

@@ -26,7 +26,7 @@ def plot_stability_chart(chart: StabilityChart, normalised: bool = True,
     Parameters
     ----------
     chart : StabilityChart
-        Result of :func:`flexbooster.beam_action.stability_chart`.
+        Result of :func:`flexbooster.memo.beam_action.stability_chart`.
     normalised : bool
         Plot Omega / omega_1 (True) or Omega in rad/s (False) on the horizontal axis.
     ax : matplotlib.axes.Axes, optional

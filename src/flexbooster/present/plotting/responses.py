@@ -16,7 +16,7 @@ def modal_amplitudes(result: SimulationResult, top: int = 8, ax=None) -> Figure:
     Parameters
     ----------
     result : SimulationResult
-        From :func:`flexbooster.responses.simulate`.
+        From :func:`flexbooster.memo.responses.simulate`.
     top : int
         Number of coordinates drawn (those with the largest peak |amplitude|), >= 1.
     ax : matplotlib.axes.Axes, optional
@@ -60,7 +60,7 @@ def deformed_booster(result: SimulationResult, instant: int = -1, scale: float |
     Parameters
     ----------
     result : SimulationResult
-        With snapshots (``n_snapshots >= 1`` in :func:`flexbooster.responses.simulate`).
+        With snapshots (``n_snapshots >= 1`` in :func:`flexbooster.memo.responses.simulate`).
     instant : int
         Index into the snapshots (default the last).
     scale : float, optional

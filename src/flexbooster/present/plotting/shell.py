@@ -22,7 +22,7 @@ def frequency_curves(
     Parameters
     ----------
     table : ShellFrequencies
-        From :func:`flexbooster.shell.natural_frequencies`.
+        From :func:`flexbooster.memo.shell.natural_frequencies`.
     cylinder : int
         1 (aft) or 2 (forward).
     branch : int

@@ -1,0 +1,119 @@
+"""The quantity / value / unit rows shown by both the terminal summary and the report.
+
+One definition of each row: :mod:`flexbooster.present.summary` and
+:mod:`flexbooster.present.report` format the same rows (values are numbers, integers or
+text; each presentation formats numbers its own way).
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..results import Results
+
+__all__ = ["Row", "input_rows", "mass_rows", "frequency_rows"]
+
+#: (quantity, value, unit): the value is a float, an int or text.
+Row = tuple[str, object, str]
+
+
+def input_rows(results: Results) -> list[Row]:
+    """The case's input in SI.
+
+    Parameters
+    ----------
+    results : Results
+        The analysis.
+
+    Returns
+    -------
+    list of (str, object, str)
+    """
+    case = results.case
+    b, t, n = case.booster, case.thrust, case.truncation
+    rows: list[Row] = [
+        ("cylinder 1 (aft) radius R1", b.cylinder1.radius, "m"),
+        ("cylinder 1 half-length L1", b.cylinder1.half_length, "m"),
+        ("cylinder 2 (forward) radius R2", b.cylinder2.radius, "m"),
+        ("cylinder 2 half-length L2", b.cylinder2.half_length, "m"),
+        ("shell thickness h", b.thickness, "m"),
+        ("Young's modulus E", b.E, "Pa"),
+        ("Poisson's ratio nu", b.nu, "-"),
+        ("density rho", b.rho, "kg/m^3"),
+        ("steady thrust F0", case.F0, "N"),
+        ("thrust per unit circumference T0 = F0 / (2 pi R1)", case.T0, "N/m"),
+        ("pulsation amplitude gamma, T = T0 (1 - gamma cos Omega t)", t.gamma, "-"),
+        ("gimbal gain K", t.K, "-"),
+        ("Omega grid: lowest", t.omega_min, "rad/s"),
+        ("Omega grid: highest", t.omega_max, "rad/s"),
+        ("Omega grid: points", t.n_omega, "-"),
+        ("shell modes, cylinder 1: j = 0..M1, k = 0..N1", f"{n.M1}, {n.N1}", "-"),
+        ("shell modes, cylinder 2: j = 0..M2, k = 0..N2", f"{n.M2}, {n.N2}", "-"),
+        ("beam modes N / Floquet harmonics S / exponents R", f"{n.N} / {n.S} / {n.R}", "-"),
+    ]
+    damping = getattr(case, "damping", None)
+    if damping is not None:
+        rows.append(("damping ratio: beam modes / rigid-body pitch",
+                     f"{damping.beam_modal_ratio:g} / {damping.pitch_ratio:g}", "-"))
+    return rows
+
+
+def mass_rows(results: Results) -> list[Row]:
+    """Geometry and mass properties (memo 2.2, Fig. 1; I_cm per erratum E1).
+
+    Parameters
+    ----------
+    results : Results
+        The analysis.
+
+    Returns
+    -------
+    list of (str, object, str)
+    """
+    m = results.mass
+
+    def g(x: float) -> str:
+        return f"{x:.6g}"
+
+    return [
+        ("half-length of the booster L = L1 + L2", m.L, "m"),
+        ("mass of cylinder 1 / cylinder 2", f"{g(m.m1)} / {g(m.m2)}", "kg"),
+        ("total mass", m.mass, "kg"),
+        ("centre of mass from the aft edge x_cm", m.x_cm, "m"),
+        ("cylinder holding the centre of mass", str(m.cm_cylinder), "-"),
+        ("d1 / d2 / d3 / d4 (Fig. 1)", " / ".join(g(v) for v in (m.d1, m.d2, m.d3, m.d4)), "m"),
+        ("aft edge a / junction c / nose b in xi_bar = (x - x_cm)/L",
+         " / ".join(g(v) for v in (m.a, m.c, m.b)), "-"),
+        ("pitch moment of inertia about the CM, I_cm (erratum E1)", m.I_cm, "kg m^2"),
+    ]
+
+
+def frequency_rows(results: Results) -> list[Row]:
+    """omega_1, omega_psi and the dimensionless groups (memo 3.0, 4.2).
+
+    Parameters
+    ----------
+    results : Results
+        The analysis.
+
+    Returns
+    -------
+    list of (str, object, str)
+    """
+    g = results.groups
+    two_pi = 2.0 * math.pi
+    return [
+        ("first free-free bending frequency omega_1 (4.2-8b)", results.omega_1, "rad/s"),
+        ("  in Hz", results.omega_1 / two_pi, "Hz"),
+        ("rigid-body pitch frequency omega_psi = sqrt(F0 d2 K / I_cm)", results.omega_psi,
+         "rad/s"),
+        ("  in Hz", results.omega_psi / two_pi, "Hz"),
+        ("mu = rho L^2 omega_1^2 / E", g.mu, "-"),
+        ("lambda_1 = L/R1, lambda_2 = L/R2", f"{g.lambda1:.6g}, {g.lambda2:.6g}", "-"),
+        ("sigma = h/L", g.sigma, "-"),
+        ("T0_bar = T0 / (rho h L^2 omega_1^2)", g.T0_bar, "-"),
+        ("Mathieu a over the Omega grid",
+         f"{float(results.a.min()):.6g} .. {float(results.a.max()):.6g}", "-"),
+        ("Mathieu q over the Omega grid",
+         f"{float(results.q.min()):.6g} .. {float(results.q.max()):.6g}", "-"),
+    ]
