@@ -206,8 +206,7 @@ def sweep_command(
                 batch_size=batch_size,
                 cases=cases,
             )
-    status = ds["status"].values.astype(str)
-    failed = int((status == "error").sum())
+    failed = sum(s == "error" for s in ds["status"].values.reshape(-1).tolist())
     say(
         f"{spec.n_points} points: {spec.n_points - failed} ok, {failed} failed "
         f"({ds.attrs['points_computed_this_run']} computed in this run)"

@@ -27,6 +27,11 @@ def _e(value) -> str:  # noqa: ANN001
     return html.escape(str(value), quote=True)
 
 
+def _text(values) -> np.ndarray:  # noqa: ANN001
+    """Flat array of str (object dtype) from text read back from any store (StringDType too)."""
+    return np.asarray([str(v) for v in np.asarray(values).reshape(-1).tolist()], dtype=object)
+
+
 def _fmt(value) -> str:  # noqa: ANN001
     if isinstance(value, float | np.floating):
         return "" if not np.isfinite(value) else f"{value:.6g}"
@@ -91,7 +96,7 @@ def sweep_page(ds, *, svg: str | None = None, title: str | None = None, max_rows
     if not isinstance(max_rows, int) or max_rows < 1:
         raise ValueError(f"max_rows = {max_rows!r}: must be a positive integer")
     title = title or ds.attrs.get("title", "flexbooster sweep")
-    status = np.asarray(ds["status"].values).astype(str).reshape(-1)
+    status = _text(ds["status"].values)
     n = status.size
     ok, failed = int((status == "ok").sum()), int((status == "error").sum())
     pending = n - ok - failed
@@ -132,7 +137,7 @@ def sweep_page(ds, *, svg: str | None = None, title: str | None = None, max_rows
     parts.append("<h2>Failed points</h2>")
     bad = np.flatnonzero(status == "error")[:max_rows]
     if bad.size:
-        messages = np.asarray(ds["message"].values).astype(str).reshape(-1)
+        messages = _text(ds["message"].values)
         rows = [[int(i), *_point_label(ds, int(i)), messages[i]] for i in bad]
         parts.append(_table(["point", *axes, "message"], rows, numeric={0}))
         if failed > bad.size:

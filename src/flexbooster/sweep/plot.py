@@ -153,5 +153,5 @@ def figure_svg(fig) -> str:  # noqa: ANN001
         A standalone SVG document.
     """
     buffer = io.StringIO()
-    fig.savefig(buffer, format="svg")
+    fig.savefig(buffer, format="svg", metadata={"Date": None})  # reproducible: no date
     return buffer.getvalue()

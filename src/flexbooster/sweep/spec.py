@@ -243,7 +243,10 @@ def _range(name: str, table: Mapping[str, Any]) -> tuple:
         values = [start + k * (stop - start) / (num - 1) for k in range(num - 1)] + [stop]
     else:
         lo, hi = math.log10(start), math.log10(stop)
-        values = [10.0 ** (lo + k * (hi - lo) / (num - 1)) for k in range(num - 1)] + [stop]
+        # numpy.logspace's formula, 10^(log10 start + k (log10 stop - log10 start)/(num - 1)),
+        # with exact end points
+        inner = [10.0 ** (lo + k * (hi - lo) / (num - 1)) for k in range(1, num - 1)]
+        values = [start, *inner, stop]
     return tuple(v if not unit else f"{v!r} {unit}" for v in values)
 
 

@@ -351,9 +351,7 @@ class ZarrSink(MemorySink):
                 self.group[name].vindex[where] = self.arrays[name][flat]
 
 
-def open_sink(
-    path: str | Path | None, template: xr.Dataset, *, resume: bool = False
-) -> MemorySink:
+def open_sink(path: str | Path | None, template: xr.Dataset, *, resume: bool = False) -> MemorySink:
     """The sink for an output path, chosen by its suffix.
 
     Parameters
