@@ -292,6 +292,20 @@ class NetcdfSink(MemorySink):
             tmp.unlink(missing_ok=True)
 
 
+#: Points per zarr chunk (about): a batch, consecutive points in C order, touches few chunks.
+_CHUNK_POINTS = 4096
+
+
+def _chunks(shape: tuple[int, ...], target: int = _CHUNK_POINTS) -> tuple[int, ...]:
+    """Chunk shape of about ``target`` points: whole trailing dimensions first (C order)."""
+    out, size = [], 1
+    for n in reversed(shape):
+        c = max(1, min(n, target // size))
+        out.append(c)
+        size *= c
+    return tuple(reversed(out))
+
+
 def _is_zarr_store(path: Path) -> bool:
     return (path / "zarr.json").is_file() or (path / ".zgroup").is_file()
 
@@ -330,7 +344,11 @@ class ZarrSink(MemorySink):
                 shutil.rmtree(path)
             path.parent.mkdir(parents=True, exist_ok=True)
             with _deferred_sigint():
-                template.to_zarr(path, mode="w", consolidated=True, zarr_format=2)
+                chunks = _chunks(self.shape)
+                encoding = {name: {"chunks": chunks} for name in template.data_vars}
+                template.to_zarr(
+                    path, mode="w", consolidated=True, zarr_format=2, encoding=encoding
+                )
         self.group = zarr.open_group(str(path), mode="r+")
 
     def write(self, results: Sequence[PointResult]) -> None:
