@@ -15,6 +15,9 @@ counted (their cost is printed apart):
   each): validation of every point, batching into tasks, transfer, result extraction, store.
 
 Goals (issue): speed-up 2 workers vs 1 >= 1.7; overhead per point (1 worker vs the loop) < 5 %.
+Wall times on a shared machine swing with the other users' load (printed), so the CPU time of
+the client, scheduler and worker processes is printed too: the machinery's cost in CPU seconds,
+whatever the load.
 
 Run:  OPENBLAS_NUM_THREADS=1 python benchmarks/bench_sweep.py   (about a minute)
 """
@@ -64,6 +67,14 @@ def main() -> None:
         for case in cases:
             analyze(case).to_dict()
 
+    def cpu(client=None) -> float:  # noqa: ANN001
+        """CPU seconds of this process (client and, for a LocalCluster, its scheduler) and of
+        every worker process (nannies excluded)."""
+        total = time.process_time()
+        if client is not None:
+            total += sum(client.run(time.process_time).values())
+        return total
+
     clients = {}
     with ExitStack() as stack:
         for workers in (1, 2):
@@ -85,14 +96,17 @@ def main() -> None:
                 f"{time.perf_counter() - start:.1f} s (not timed below)"
             )
         times: dict[str, list[float]] = {"loop": [], 1: [], 2: []}
+        cpus: dict[str, list[float]] = {"loop": [], 1: [], 2: []}
         for _ in range(REPEATS):  # interleaved, so that a change of machine load hits all three
-            start = time.perf_counter()
+            start, cpu0 = time.perf_counter(), cpu()
             loop()
             times["loop"].append(time.perf_counter() - start)
+            cpus["loop"].append(cpu() - cpu0)
             for workers, client in clients.items():
-                start = time.perf_counter()
+                start, cpu0 = time.perf_counter(), cpu(client)
                 ds = run_sweep(spec, client=client, cases=cases)
                 times[workers].append(time.perf_counter() - start)
+                cpus[workers].append(cpu(client) - cpu0)
                 status = ds["status"].values.reshape(-1).tolist()
                 assert status.count("ok") == n, "a benchmark point failed"
     best = {key: min(values) for key, values in times.items()}
@@ -105,8 +119,15 @@ def main() -> None:
         )
     speedup = best[1] / best[2]
     overhead = (best[1] - best["loop"]) / best["loop"]
+    cpu_best = {key: min(values) for key, values in cpus.items()}
     print(f"speed-up 2 vs 1 worker : {speedup:5.2f}  (goal >= 1.7)")
     print(f"overhead per point     : {overhead * 100:+5.1f} %  (goal < 5 %, 1 worker vs loop)")
+    for key in (1, 2):
+        extra = (cpu_best[key] - cpu_best["loop"]) / cpu_best["loop"]
+        print(
+            f"CPU time, {key} worker{'s' if key > 1 else ' '}: {cpu_best[key]:6.2f} s vs loop "
+            f"{cpu_best['loop']:6.2f} s: {extra * 100:+5.1f} % (less sensitive to machine load)"
+        )
     print(f"load average           : {' '.join(f'{x:.2f}' for x in os.getloadavg())}")
 
 

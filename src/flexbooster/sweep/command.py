@@ -71,16 +71,32 @@ class _RateColumn(ProgressColumn):
 
 
 def local_cluster_config() -> dict:
-    """Dask settings of the local cluster: the workers' statistical profiler off.
+    """Dask settings of the local cluster: profiler off, glibc's own malloc trimming.
 
     Returns
     -------
     dict
-        For ``dask.config.set``.  The profiler samples every worker thread's stack every 10 ms
-        under the GIL, which the analysis (many small numpy calls) pays for; the dashboard's
-        profile page stays empty.
+        For ``dask.config.set``.  (1) The workers' statistical profiler samples every thread's
+        stack every 10 ms under the GIL, which the analysis (many small numpy calls) pays for;
+        the dashboard's profile page stays empty.  (2) The nanny starts workers with
+        ``MALLOC_TRIM_THRESHOLD_=65536`` (to hand memory back to the OS), which makes glibc
+        shrink and regrow the heap around the analysis' many small arrays: measured +0.35 s of
+        system time per 16 points (+15 % CPU); the variable is left unset.  The one-thread BLAS
+        settings (``OPENBLAS_NUM_THREADS=1`` ...) are kept.
+
+    References
+    ----------
+    Dask distributed configuration, ``distributed.worker.profile`` and
+    ``distributed.nanny.pre-spawn-environ``; glibc manual, ``mallopt`` (M_TRIM_THRESHOLD).
     """
-    return {"distributed.worker.profile.enabled": False}
+    import dask
+
+    environ = dict(dask.config.get("distributed.nanny.pre-spawn-environ", default={}) or {})
+    environ.pop("MALLOC_TRIM_THRESHOLD_", None)
+    return {
+        "distributed.worker.profile.enabled": False,
+        "distributed.nanny.pre-spawn-environ": environ,
+    }
 
 
 def _start_client(stack: ExitStack, scheduler: str | None, workers: int | None):
@@ -257,6 +273,10 @@ def main(argv: list[str] | None = None) -> None:
     ----------
     argv : list of str, optional
         Command-line arguments (default: ``sys.argv[1:]``).
+
+    References
+    ----------
+    flexbooster README, "Command line" (exit codes).
     """
     try:
         sweep_command.main(args=argv, prog_name="flexbooster sweep", standalone_mode=False)

@@ -150,7 +150,11 @@ def figure_svg(fig) -> str:  # noqa: ANN001
     Returns
     -------
     str
-        A standalone SVG document.
+        A standalone SVG document (no date in its metadata: reproducible).
+
+    References
+    ----------
+    W3C, Scalable Vector Graphics (SVG) 1.1.
     """
     buffer = io.StringIO()
     fig.savefig(buffer, format="svg", metadata={"Date": None})  # reproducible: no date

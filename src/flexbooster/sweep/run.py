@@ -75,6 +75,10 @@ def result_variables(*, beam_action: bool = True, stability: bool = True) -> dic
     -------
     dict
         Name -> (units, description), a subset of :data:`RESULT_VARIABLES`.
+
+    References
+    ----------
+    Tech Memo 104, sections 4.1 (beam action) and 7.3 (unstable thrust frequencies).
     """
     skip = set()
     if not beam_action:
@@ -194,6 +198,10 @@ def analyze_batch(
     -------
     list of PointResult
         One per point, in order.
+
+    References
+    ----------
+    Dask distributed, ``Client.submit`` (one task per batch).
     """
     return [
         analyze_point(i, c, beam_action=beam_action, stability=stability)
@@ -328,6 +336,10 @@ def run_sweep(
         Before anything runs, for an invalid point or a store of another sweep.
     ValueError
         For a ``batch_size`` that is not a positive integer.
+
+    References
+    ----------
+    Dask distributed, ``Client.submit`` and ``as_completed``; docs/sweeps.md, "Execution".
     """
     if batch_size is not None and (
         isinstance(batch_size, bool) or not isinstance(batch_size, int) or batch_size < 1
@@ -337,7 +349,7 @@ def run_sweep(
     if len(cases) != spec.n_points:
         raise ValueError(f"cases = {len(cases)} cases: the sweep has {spec.n_points} points")
     variables = result_variables(beam_action=spec.beam_action, stability=spec.stability)
-    sink = open_sink(store, build_template(spec, cases, variables), resume=resume)
+    sink = open_sink(store, build_template(spec, cases, variables=variables), resume=resume)
     report = progress or (lambda done, failed, total: None)
     try:
         todo = sink.pending()

@@ -332,6 +332,10 @@ def make_spec(
     CaseError
         For a missing or unreadable case file, an unknown mode, bad axes, zip axes of unequal
         length, or more than :data:`MAX_POINTS` points.
+
+    References
+    ----------
+    flexbooster README, "Case files" (the base case); docs/sweeps.md (the sweep file).
     """
     raw = _base_mapping(base, base_dir)
     if mode not in MODES:
@@ -389,6 +393,10 @@ def load_sweep(source: str | Path | Mapping[str, Any]) -> SweepSpec:
     CaseError
         For a missing or malformed sweep file, an unknown key, or any rule of
         :func:`make_spec`.
+
+    References
+    ----------
+    TOML v1.0 (tomllib); docs/sweeps.md, "Sweep file".
     """
     base_dir: Path | None = None
     if isinstance(source, Mapping):
@@ -472,6 +480,10 @@ def point_cases(spec: SweepSpec) -> list:
     CaseError
         At the first invalid point: the field (``axes.<name>`` when an axis value broke the
         rule), the value and the rule, followed by the point's index and axis values.
+
+    References
+    ----------
+    flexbooster README, "Case files": the rules of :func:`flexbooster.load_case`.
     """
     from ..case import load_case
 
@@ -504,6 +516,10 @@ def si_value(case: Any, name: str) -> Any:
     -------
     float or int or str
         The value in SI (``Case.to_si_dict``: thrust F0 and T0 both present).
+
+    References
+    ----------
+    Tech Memo 104, section 2.2 (F0 = 2 pi R1 T0); flexbooster README, "Case files".
     """
     node: Any = case.to_si_dict()
     for part in name.split("."):

@@ -96,7 +96,7 @@ def _coordinate(values: Sequence) -> np.ndarray:
 
 
 def build_template(
-    spec: SweepSpec, cases: Sequence, variables: Mapping[str, tuple[str, str]]
+    spec: SweepSpec, cases: Sequence, *, variables: Mapping[str, tuple[str, str]]
 ) -> xr.Dataset:
     """The empty result dataset of a sweep: coordinates, every point ``pending``.
 
@@ -113,6 +113,11 @@ def build_template(
     -------
     xarray.Dataset
         Result variables all NaN, ``status`` ``"pending"``, ``message`` ``""``, ``computed`` 0.
+
+    References
+    ----------
+    NetCDF Climate and Forecast (CF) conventions, ``units``/``long_name`` attributes;
+    xarray data model (dimensions, coordinates).
     """
     shape, dims = spec.shape, spec.dims
     coords: dict[str, xr.Variable] = {}
@@ -390,6 +395,10 @@ def open_sink(path: str | Path | None, template: xr.Dataset, *, resume: bool = F
     ------
     CaseError
         For another suffix, a store of another sweep, or a folder that is not a zarr store.
+
+    References
+    ----------
+    netCDF-4 / HDF5 via h5netcdf; zarr storage specification, version 2.
     """
     if path is None:
         return MemorySink(template)
