@@ -386,6 +386,31 @@ def test_scheduler_from_environment_variable(scheduler_address, tmp_path, capsys
     assert code == 0 and f"scheduler {scheduler_address}" in err
 
 
+def test_failed_task_marks_its_points_and_the_rest_complete(monkeypatch):
+    # a task that raises instead of returning (what a dead worker's KilledWorker does) records
+    # its points as errors; the other tasks complete (in-process cluster, to patch the task)
+    from distributed import Client, LocalCluster
+
+    import flexbooster.sweep.run as run
+
+    original = run.analyze_batch
+
+    def crashing(indices, cases, **options):
+        if 0 in indices:
+            raise RuntimeError("worker lost")
+        return original(indices, cases, **options)
+
+    monkeypatch.setattr(run, "analyze_batch", crashing)
+    with LocalCluster(
+        n_workers=1, threads_per_worker=1, processes=False, dashboard_address=":0"
+    ) as cluster, Client(cluster) as client:
+        ds = flexbooster.sweep(
+            tiny_case(), {"thrust.K": [0.5, 1.0, 2.0]}, client, batch_size=1, stability=False
+        )
+    assert ds["status"].values.tolist() == ["error", "ok", "ok"]
+    assert ds["message"].values[0] == "task failed: RuntimeError: worker lost"
+
+
 def test_serial_sweep_is_bit_identical_to_analyze():
     base = tiny_case()
     ds = flexbooster.sweep(base, {"thrust.gamma": [0.0, 0.3], "booster.E": [GOOD_E, BAD_E]})
