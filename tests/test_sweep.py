@@ -401,9 +401,12 @@ def test_failed_task_marks_its_points_and_the_rest_complete(monkeypatch):
         return original(indices, cases, **options)
 
     monkeypatch.setattr(run, "analyze_batch", crashing)
-    with LocalCluster(
-        n_workers=1, threads_per_worker=1, processes=False, dashboard_address=":0"
-    ) as cluster, Client(cluster) as client:
+    with (
+        LocalCluster(
+            n_workers=1, threads_per_worker=1, processes=False, dashboard_address=":0"
+        ) as cluster,
+        Client(cluster) as client,
+    ):
         ds = flexbooster.sweep(
             tiny_case(), {"thrust.K": [0.5, 1.0, 2.0]}, client, batch_size=1, stability=False
         )
