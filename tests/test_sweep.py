@@ -318,6 +318,11 @@ def test_output_suffix_and_scheduler_workers_are_checked(tmp_path, capsys):
     code, err = run_main([path, "-o", str(tmp_path / "plain.zarr"), "--workers", "0"], capsys)
     assert code == 2 and "not a zarr store" in err
     assert (tmp_path / "plain.zarr" / "keep.txt").exists()  # never deleted
+    (tmp_path / "cut.zarr").mkdir()  # a store cut short while being created
+    (tmp_path / "cut.zarr" / ".zgroup").write_text("{}")
+    argv = [path, "-o", str(tmp_path / "cut.zarr"), "--workers", "0", "--resume"]
+    code, err = run_main(argv, capsys)
+    assert code == 2 and "cannot be read as a sweep store" in err
 
 
 # ---------------------------------------------------- tier 2: against serial analyze (Dask)

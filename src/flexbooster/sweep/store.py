@@ -338,8 +338,18 @@ class ZarrSink(MemorySink):
         if resume and path.exists():
             if not _is_zarr_store(path):
                 raise CaseError("--resume", str(path), "not a zarr store")
-            with xr.open_zarr(path, consolidated=True) as stored:
-                self._load(stored.load(), str(path))
+            try:
+                with xr.open_zarr(path, consolidated=True) as stored:
+                    self._load(stored.load(), str(path))
+            except CaseError:
+                raise
+            except Exception as exc:  # a store cut short while being created, or not a sweep's
+                raise CaseError(
+                    "--resume",
+                    str(path),
+                    f"cannot be read as a sweep store ({type(exc).__name__}: {exc}); "
+                    "drop --resume to start over",
+                ) from None
         else:
             if path.exists():
                 if not _is_zarr_store(path):
