@@ -419,6 +419,20 @@ def test_failed_task_marks_its_points_and_the_rest_complete(monkeypatch):
     assert ds["message"].values[0] == "task failed: RuntimeError: worker lost"
 
 
+def test_cli_runtime_failure_is_recorded_not_fatal(tmp_path, capsys):
+    # a valid point whose analysis raises: exit 0, the failure counted and shown, stored
+    path = write_sweep(
+        tmp_path, f'"booster.E" = ["{GOOD_E}", "{BAD_E}"]', extra="stability = false"
+    )
+    out = tmp_path / "f.nc"
+    code, err = run_main([path, "-o", str(out), "--workers", "0", "--no-report"], capsys)
+    assert code == 0, err
+    assert "2 points: 1 ok, 1 failed" in err
+    assert f"first failure: point 1 (booster.E = '{BAD_E}'): LinAlgError" in err
+    stored = xr.open_dataset(out, engine="h5netcdf").load()
+    assert stored["status"].values.tolist() == ["ok", "error"]
+
+
 def test_serial_sweep_is_bit_identical_to_analyze():
     base = tiny_case()
     ds = flexbooster.sweep(base, {"thrust.gamma": [0.0, 0.3], "booster.E": [GOOD_E, BAD_E]})
@@ -531,6 +545,16 @@ def test_package_is_callable_as_the_sweep_function():
     ds = package(tiny_case(), {"thrust.K": [0.5]}, stability=False, beam_action=False)
     assert set(ds.data_vars) >= {"omega_1", "pitch_max_growth_rate", "status"}
     assert "beam_action_max_growth_rate" not in ds  # stage not computed: no variable
+    # exposed lazily at top level (the lead's _LAZY entry "sweep": "sweep.run"): the first
+    # access returns the function, later ones the package, which the import binds; both work
+    code = (
+        "import flexbooster\n"
+        "flexbooster._LAZY['sweep'] = 'sweep.run'\n"
+        "first, second = flexbooster.sweep, flexbooster.sweep\n"
+        "print(first.__name__, type(second).__name__, callable(first), callable(second))"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.split() == ["sweep", "_CallableModule", "True", "True"]
 
 
 def test_figure_and_page(tmp_path):

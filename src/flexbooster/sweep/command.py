@@ -237,11 +237,20 @@ def sweep_command(
                 batch_size=batch_size,
                 cases=cases,
             )
-    failed = sum(s == "error" for s in ds["status"].values.reshape(-1).tolist())
+    status = ds["status"].values.reshape(-1).tolist()
+    failed = status.count("error")
     say(
         f"{spec.n_points} points: {spec.n_points - failed} ok, {failed} failed "
         f"({ds.attrs['points_computed_this_run']} computed in this run)"
     )
+    if failed:
+        first = status.index("error")
+        values = ", ".join(
+            f"{axis.name} = {value!r}"
+            for axis, value in zip(spec.axes, spec.point_values(first), strict=True)
+        )
+        message = ds["message"].values.reshape(-1)[first]
+        say(f"first failure: point {first} ({values}): {message}")
     written = [output]
     if not no_report:
         written += _write_report(ds, output)
