@@ -247,6 +247,21 @@ def test_hertz_axis_is_cyclic_and_T0_replaces_F0():
     assert case.F0 == pytest.approx(2.0 * math.pi * r1 * 1e5, rel=1e-15)  # F0 = 2 pi R1 T0
 
 
+def test_points_equal_cases_validated_from_the_raw_file():
+    # invariant: the base validated once (SI) then the axis set == the raw mapping validated
+    base = tiny_case()
+    axes = {"booster.thickness": ["10 mm", 0.03], "thrust.omega_max": ["300 Hz"]}
+    cases = point_cases(make_spec(base, axes))
+    raw = [
+        with_fields(base, booster__thickness=h, thrust__omega_max="300 Hz") for h in ("10 mm", 0.03)
+    ]
+    assert cases == [flexbooster.load_case(d) for d in raw]  # pydantic equality: every field
+    # a base that is incomplete on its own, completed by an axis, is valid point by point
+    del base["thrust"]["gamma"]
+    (case,) = point_cases(make_spec(base, {"thrust.gamma": [0.1]}))
+    assert case.thrust.gamma == 0.1
+
+
 @pytest.mark.parametrize(
     "axes, field, text",
     [

@@ -488,9 +488,15 @@ def point_cases(spec: SweepSpec) -> list:
     from ..case import load_case
 
     names = {axis.name for axis in spec.axes}
+    try:
+        # the base validated once, as SI numbers: a point then parses only its axis values
+        # (0.1 ms instead of 6 ms a point: pint parses every unit string); the case is the same
+        base = load_case(spec.base).model_dump(exclude_none=True)
+    except CaseError:  # the base alone is invalid (an axis may supply the field): point by point
+        base = spec.base
     cases = []
     for flat in range(spec.n_points):
-        data = copy.deepcopy(spec.base)
+        data = copy.deepcopy(base)
         values = spec.point_values(flat)
         for axis, value in zip(spec.axes, values, strict=True):
             _set_path(data, axis.name, value)
