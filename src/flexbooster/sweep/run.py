@@ -11,6 +11,7 @@ computed by the same code as a serial ``analyze(case)``, hence bit-identical to 
 
 from __future__ import annotations
 
+import inspect
 import math
 import time
 from collections import deque
@@ -139,6 +140,18 @@ def point_scalars(data: Mapping[str, Any]) -> dict[str, float]:
     return out
 
 
+def _analysis_options(analyze: Callable, *, beam_action: bool, stability: bool) -> dict:
+    """Keyword arguments of ``analyze`` for a sweep point: the stages, and no figure data.
+
+    ``figures=False`` where ``analyze`` takes it (the figure data, e.g. the beam-action
+    (Omega, gamma) chart, cost more than the point's numbers and are not stored by a sweep).
+    """
+    options = {"beam_action": beam_action, "stability": stability}
+    if "figures" in inspect.signature(analyze).parameters:
+        options["figures"] = False
+    return options
+
+
 def analyze_point(
     index: int, case: Any, *, beam_action: bool = True, stability: bool = True
 ) -> PointResult:
@@ -167,7 +180,8 @@ def analyze_point(
 
     start = time.perf_counter()
     try:
-        data = analyze(case, beam_action=beam_action, stability=stability).to_dict()
+        options = _analysis_options(analyze, beam_action=beam_action, stability=stability)
+        data = analyze(case, **options).to_dict()
         values = point_scalars(data)
         # only the stored numbers are checked (walking the whole results.json would cost
         # about a fifth of the analysis time)
