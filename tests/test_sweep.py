@@ -74,6 +74,12 @@ def serial_reference(case_data: dict, *, stability: bool = True) -> dict:
         "pitch_max_growth_rate": d["pitch"]["max_growth_rate"],
         "pitch_unstable_regions": len(d["pitch"]["unstable_intervals"]),
         "beam_action_max_growth_rate": d["beam_action"]["max_growth_rate"],
+        "beam_action_Omega_at_max": d["beam_action"]["Omega_at_max"],
+        # bands: maximal runs of unstable grid points, counted with itertools.groupby
+        "beam_action_unstable_bands": sum(
+            not stable for stable, _ in itertools.groupby(d["beam_action"]["stable"])
+        ),
+        "n_warnings": len(d["warnings"]),
         "shell_min_frequency": min(d["shell_frequencies"]["rad_s"]),
         "max_growth_rate": max(d["pitch"]["max_growth_rate"], d["beam_action"]["max_growth_rate"]),
     }

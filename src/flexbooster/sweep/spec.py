@@ -194,7 +194,7 @@ def _unravel(flat: int, shape: tuple[int, ...]) -> tuple[int, ...]:
     return tuple(reversed(index))
 
 
-def _scalar(name: str, value: Any, where: str) -> Any:
+def _scalar(value: Any, where: str) -> Any:
     if isinstance(value, bool) or not isinstance(value, int | float | str):
         raise CaseError(where, value, "must be a number or a string with units")
     if isinstance(value, float) and not math.isfinite(value):
@@ -287,7 +287,7 @@ def parse_axes(axes: Mapping[str, Any]) -> tuple[Axis, ...]:
         elif isinstance(spec, Sequence) and not isinstance(spec, str):
             if not spec:
                 raise CaseError(where, list(spec), "must hold at least one value")
-            values = tuple(_scalar(name, v, f"{where}[{i}]") for i, v in enumerate(spec))
+            values = tuple(_scalar(v, f"{where}[{i}]") for i, v in enumerate(spec))
         else:
             raise CaseError(where, spec, "must be a list of values or {start, stop, num}")
         out.append(Axis(name, values))
