@@ -24,6 +24,7 @@ _LAZY = {
     "load_case": "case",
     "Results": "analysis",
     "analyze": "analysis",
+    "sweep": "sweep.run",
 }
 
 __all__ = ["__version__", *sorted(_LAZY)]

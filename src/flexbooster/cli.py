@@ -389,6 +389,15 @@ def init(path: Path, force: bool) -> None:
     click.echo(f"wrote {path}")
 
 
+def _register_sweep() -> None:
+    from .sweep.command import sweep_command  # click and rich only; dask is loaded when it runs
+
+    cli.add_command(sweep_command, name="sweep")
+
+
+_register_sweep()
+
+
 def main(argv: list[str] | None = None) -> None:
     """Entry point of the ``flexbooster`` command.
 

@@ -1,0 +1,440 @@
+"""Running a sweep: every point is one :func:`flexbooster.analyze`, serially or on Dask.
+
+Points are validated up front (:func:`flexbooster.sweep.spec.point_cases`; an invalid point
+stops the sweep before anything runs), then analysed in batches: on a Dask cluster each task
+analyses a batch of points sized to take about :data:`TARGET_TASK_SECONDS` (the first tasks hold
+one point each, to measure; the last ones are smaller, to keep every worker busy to the end).
+An exception inside a point's analysis (or a non-finite result) is recorded in that point's
+``status``/``message`` and the sweep goes on; so is a batch whose worker died.  Each point is
+computed by the same code as a serial ``analyze(case)``, hence bit-identical to it.
+"""
+
+from __future__ import annotations
+
+import inspect
+import math
+import time
+from collections import deque
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from .spec import SweepSpec, make_spec, point_cases
+from .store import STATUS_ERROR, STATUS_OK, PointResult, build_template, open_sink
+
+__all__ = [
+    "RESULT_VARIABLES",
+    "TARGET_TASK_SECONDS",
+    "result_variables",
+    "point_scalars",
+    "analyze_point",
+    "analyze_batch",
+    "run_sweep",
+    "sweep",
+]
+
+#: Wall time one Dask task aims at (s): large enough to hide the per-task overhead
+#: (about 1 ms), small enough to stream results and balance the workers.
+TARGET_TASK_SECONDS = 0.5
+#: Tasks kept in flight per worker.
+_IN_FLIGHT_PER_WORKER = 2
+
+#: Scalar results stored per point: name -> (units, description with the memo's section).
+RESULT_VARIABLES: dict[str, tuple[str, str]] = {
+    "omega_1": ("rad/s", "first free-free bending frequency of the equivalent beam (memo 4.2-8b)"),
+    "omega_psi": ("rad/s", "rigid-body pitch frequency sqrt(F0 d2 K / I_cm) (memo 4.2)"),
+    "shell_min_frequency": ("rad/s", "lowest shell natural frequency (memo 5.4, 6.2)"),
+    "pitch_max_growth_rate": ("1/s", "largest rigid-body pitch growth rate on the Omega grid"),
+    "pitch_unstable_regions": ("1", "unstable Omega intervals of the rigid-body pitch (4.2)"),
+    "beam_action_max_growth_rate": ("1/s", "largest beam-action growth rate (memo 4.1)"),
+    "beam_action_unstable_bands": ("1", "runs of unstable Omega grid points of the beam action"),
+    "beam_action_Omega_at_max": ("rad/s", "Omega of the largest beam-action growth rate"),
+    "max_growth_rate": ("1/s", "largest of the pitch and beam-action growth rates"),
+    "stability_count": ("1", "unstable thrust frequencies (roots of memo 7.3) in the range"),
+    "stability_active": ("1", "of which with active forcing (memo 7.3)"),
+    "n_warnings": ("1", "analysis warnings of the point"),
+}
+_BEAM_ACTION_VARIABLES = {
+    "beam_action_max_growth_rate",
+    "beam_action_unstable_bands",
+    "beam_action_Omega_at_max",
+}
+_STABILITY_VARIABLES = {"stability_count", "stability_active"}
+
+
+def result_variables(*, beam_action: bool = True, stability: bool = True) -> dict:
+    """The result variables a sweep with these analysis stages stores.
+
+    Parameters
+    ----------
+    beam_action, stability : bool
+        The stages computed (see :func:`flexbooster.analyze`); stability needs beam_action.
+
+    Returns
+    -------
+    dict
+        Name -> (units, description), a subset of :data:`RESULT_VARIABLES`.
+
+    References
+    ----------
+    Tech Memo 104, sections 4.1 (beam action) and 7.3 (unstable thrust frequencies).
+    """
+    skip = set()
+    if not beam_action:
+        skip |= _BEAM_ACTION_VARIABLES | _STABILITY_VARIABLES
+    if not stability:
+        skip |= _STABILITY_VARIABLES
+    return {k: v for k, v in RESULT_VARIABLES.items() if k not in skip}
+
+
+def _runs(unstable: Sequence[bool]) -> int:
+    """Number of maximal runs of True in a sequence."""
+    flags = np.asarray(unstable, dtype=bool)
+    return int(np.count_nonzero(flags[1:] & ~flags[:-1]) + bool(flags[:1].any()))
+
+
+def point_scalars(data: Mapping[str, Any]) -> dict[str, float]:
+    """The scalar results of one analysis, read from ``Results.to_dict()`` (results.json).
+
+    The one place that maps the results.json schema to the sweep's variables: extend it when
+    the analysis grows new summary numbers (instability regions, severities).
+
+    Parameters
+    ----------
+    data : Mapping
+        ``flexbooster.analyze(case).to_dict()``.
+
+    Returns
+    -------
+    dict
+        Variable name -> float (SI: rad/s, 1/s, counts); only the stages computed.
+
+    References
+    ----------
+    Tech Memo 104: omega_1 eq. (4.2-8b), rigid-body pitch 4.2, beam action 4.1, shell
+    frequencies 5.4/6.2, unstable thrust frequencies 7.3; results.json schema, README.
+    """
+    freq, pitch = data["frequencies"], data["pitch"]
+    out = {
+        "omega_1": float(freq["omega_1"]),
+        "omega_psi": float(freq["omega_psi"]),
+        "shell_min_frequency": float(min(data["shell_frequencies"]["rad_s"])),
+        "pitch_max_growth_rate": float(pitch["max_growth_rate"]),
+        "pitch_unstable_regions": float(len(pitch["unstable_intervals"])),
+        "n_warnings": float(len(data["warnings"])),
+    }
+    growth = [out["pitch_max_growth_rate"]]
+    action = data.get("beam_action")
+    if action is not None:
+        out["beam_action_max_growth_rate"] = float(action["max_growth_rate"])
+        out["beam_action_unstable_bands"] = float(_runs([not s for s in action["stable"]]))
+        out["beam_action_Omega_at_max"] = float(action["Omega_at_max"])
+        growth.append(out["beam_action_max_growth_rate"])
+    out["max_growth_rate"] = max(growth)
+    table = data.get("stability")
+    if table is not None:
+        out["stability_count"] = float(table["count"])
+        out["stability_active"] = float(table["active"])
+    return out
+
+
+def _analysis_options(analyze: Callable, *, beam_action: bool, stability: bool) -> dict:
+    """Keyword arguments of ``analyze`` for a sweep point: the stages, and no figure data.
+
+    ``figures=False`` where ``analyze`` takes it (the figure data, e.g. the beam-action
+    (Omega, gamma) chart, cost more than the point's numbers and are not stored by a sweep).
+    """
+    options = {"beam_action": beam_action, "stability": stability}
+    if "figures" in inspect.signature(analyze).parameters:
+        options["figures"] = False
+    return options
+
+
+def analyze_point(
+    index: int, case: Any, *, beam_action: bool = True, stability: bool = True
+) -> PointResult:
+    """Analyse one point; an exception or a non-finite result becomes an ``error`` status.
+
+    Parameters
+    ----------
+    index : int
+        Flat index of the point (dimensionless).
+    case : flexbooster.Case
+        The validated case.
+    beam_action, stability : bool
+        Stages passed to :func:`flexbooster.analyze`.
+
+    Returns
+    -------
+    PointResult
+        ``ok`` with :func:`point_scalars`, or ``error`` with ``"ExceptionType: message"``
+        (also for a stored number that is not finite).
+
+    References
+    ----------
+    Tech Memo 104 (the analysis); see :func:`flexbooster.analyze`.
+    """
+    from ..analysis import analyze
+
+    start = time.perf_counter()
+    try:
+        options = _analysis_options(analyze, beam_action=beam_action, stability=stability)
+        data = analyze(case, **options).to_dict()
+        values = point_scalars(data)
+        # only the stored numbers are checked (walking the whole results.json would cost
+        # about a fifth of the analysis time)
+        bad = [name for name, value in values.items() if not math.isfinite(value)]
+        if bad:
+            raise ValueError(f"{bad[0]} = {values[bad[0]]!r}: a result must be finite")
+    except Exception as exc:  # recorded per point: one failure does not stop the sweep
+        message = f"{type(exc).__name__}: {exc}".replace("\n", " ")
+        return PointResult(index, STATUS_ERROR, message, {}, time.perf_counter() - start)
+    return PointResult(index, STATUS_OK, "", values, time.perf_counter() - start)
+
+
+def analyze_batch(
+    indices: Sequence[int], cases: Sequence[Any], *, beam_action: bool, stability: bool
+) -> list[PointResult]:
+    """Analyse a batch of points (one Dask task).
+
+    Parameters
+    ----------
+    indices : sequence of int
+        Flat indices of the points.
+    cases : sequence of flexbooster.Case
+        Their validated cases.
+    beam_action, stability : bool
+        Stages passed to :func:`flexbooster.analyze`.
+
+    Returns
+    -------
+    list of PointResult
+        One per point, in order.
+
+    References
+    ----------
+    Dask distributed, ``Client.submit`` (one task per batch).
+    """
+    return [
+        analyze_point(i, c, beam_action=beam_action, stability=stability)
+        for i, c in zip(indices, cases, strict=True)
+    ]
+
+
+def _serial(
+    todo: Sequence[int], cases: Sequence[Any], spec: SweepSpec, batch_size: int | None
+) -> Iterator[list[PointResult]]:
+    batch: list[PointResult] = []
+    last = time.perf_counter()
+    for i in todo:
+        batch.append(
+            analyze_point(i, cases[i], beam_action=spec.beam_action, stability=spec.stability)
+        )
+        full = len(batch) >= batch_size if batch_size else time.perf_counter() - last >= 1.0
+        if full:
+            yield batch
+            batch, last = [], time.perf_counter()
+    if batch:
+        yield batch
+
+
+def _n_workers(client: Any) -> int:
+    workers = client.scheduler_info().get("workers", {})
+    if workers:
+        return len(workers)
+    client.wait_for_workers(1, timeout=60)
+    return max(1, len(client.scheduler_info().get("workers", {})))
+
+
+def _distributed(
+    todo: Sequence[int],
+    cases: Sequence[Any],
+    spec: SweepSpec,
+    client: Any,
+    batch_size: int | None,
+) -> Iterator[list[PointResult]]:
+    from distributed import as_completed
+
+    n_workers = _n_workers(client)
+    queue = deque(todo)
+    measured = [0.0, 0]  # seconds, points
+    batches: dict[Any, list[int]] = {}
+
+    def take() -> list[int]:
+        if batch_size:
+            n = batch_size
+        elif measured[1] == 0:
+            n = 1  # first tasks: one point each, to measure the time per point
+        else:
+            per_point = max(measured[0] / measured[1], 1e-6)
+            n = max(1, round(TARGET_TASK_SECONDS / per_point))
+            # the tail: keep every worker busy until the end
+            n = min(n, max(1, math.ceil(len(queue) / (_IN_FLIGHT_PER_WORKER * n_workers))))
+        return [queue.popleft() for _ in range(min(n, len(queue)))]
+
+    def submit(ac: Any) -> None:
+        indices = take()
+        if indices:
+            future = client.submit(
+                analyze_batch,
+                indices,
+                [cases[i] for i in indices],
+                beam_action=spec.beam_action,
+                stability=spec.stability,
+                pure=False,
+                key=f"flexbooster-sweep-{indices[0]}-{time.monotonic_ns()}",
+            )
+            batches[future] = indices
+            ac.add(future)
+
+    ac = as_completed()
+    try:
+        for _ in range(_IN_FLIGHT_PER_WORKER * n_workers):
+            submit(ac)
+        for future in ac:
+            indices = batches.pop(future)
+            try:
+                results = future.result()
+            except Exception as exc:  # the task itself failed (a worker died): record it
+                message = f"task failed: {type(exc).__name__}: {exc}".replace("\n", " ")
+                results = [PointResult(i, STATUS_ERROR, message, {}, 0.0) for i in indices]
+            measured[0] += sum(r.seconds for r in results)
+            measured[1] += len(results)
+            submit(ac)
+            yield results
+    finally:
+        if batches:
+            client.cancel(list(batches))
+
+
+def run_sweep(
+    spec: SweepSpec,
+    *,
+    client: Any = None,
+    store: str | Path | None = None,
+    resume: bool = False,
+    progress: Callable[[int, int, int], None] | None = None,
+    batch_size: int | None = None,
+    cases: Sequence[Any] | None = None,
+) -> Any:
+    """Run a parsed sweep: validate every point, analyse the ones not stored, store the results.
+
+    Parameters
+    ----------
+    spec : SweepSpec
+        From :func:`flexbooster.sweep.spec.load_sweep` or :func:`make_spec`.
+    client : distributed.Client, optional
+        Run on this Dask cluster; None: serially in this process.
+    store : str or pathlib.Path, optional
+        ``*.nc`` or ``*.zarr`` output (zarr: streamed per batch); None: memory only.
+    resume : bool
+        Keep the points already in ``store`` (of the same sweep) and compute only the others.
+    progress : callable, optional
+        ``progress(done, failed, total)`` (points), called at the start and after each batch.
+    batch_size : int, optional
+        Points per task (dimensionless, >= 1); default: sized to about
+        :data:`TARGET_TASK_SECONDS` per task from the measured time per point.
+    cases : sequence of flexbooster.Case, optional
+        The points' validated cases if already made by :func:`point_cases`.
+
+    Returns
+    -------
+    xarray.Dataset
+        The results (layout in :mod:`flexbooster.sweep.store`).
+
+    Raises
+    ------
+    CaseError
+        Before anything runs, for an invalid point or a store of another sweep.
+    ValueError
+        For a ``batch_size`` that is not a positive integer.
+
+    References
+    ----------
+    Dask distributed, ``Client.submit`` and ``as_completed``; docs/sweeps.md, "Execution".
+    """
+    if batch_size is not None and (
+        isinstance(batch_size, bool) or not isinstance(batch_size, int) or batch_size < 1
+    ):
+        raise ValueError(f"batch_size = {batch_size!r}: must be a positive integer")
+    cases = point_cases(spec) if cases is None else list(cases)
+    if len(cases) != spec.n_points:
+        raise ValueError(f"cases = {len(cases)} cases: the sweep has {spec.n_points} points")
+    variables = result_variables(beam_action=spec.beam_action, stability=spec.stability)
+    sink = open_sink(store, build_template(spec, cases, variables=variables), resume=resume)
+    report = progress or (lambda done, failed, total: None)
+    try:
+        todo = sink.pending()
+        report(*sink.counts(), spec.n_points)
+        if client is None:
+            batches = _serial(todo, cases, spec, batch_size)
+        else:
+            batches = _distributed(todo, cases, spec, client, batch_size)
+        for results in batches:
+            sink.write(results)
+            report(*sink.counts(), spec.n_points)
+    finally:
+        sink.close()
+    ds = sink.dataset()
+    ds.attrs["points_computed_this_run"] = sink.computed_now
+    return ds
+
+
+def sweep(
+    base_case: Any,
+    axes: Mapping[str, Any],
+    client: Any = None,
+    *,
+    mode: str = "product",
+    beam_action: bool = True,
+    stability: bool = True,
+    store: str | Path | None = None,
+    resume: bool = False,
+    progress: Callable[[int, int, int], None] | None = None,
+    batch_size: int | None = None,
+) -> Any:
+    """A design sweep: analyse the base case at every point of the axes.
+
+    Parameters
+    ----------
+    base_case : flexbooster.Case or Mapping or str or pathlib.Path
+        The base case: validated, as a raw mapping (TOML values, units allowed) or a case file.
+    axes : Mapping
+        Dotted case field -> list of values (SI numbers or strings with units), or
+        ``{start, stop, num}`` with optional ``scale = "log"``.
+    client : distributed.Client, optional
+        Run on this Dask cluster; None: serially in this process.
+    mode : str
+        ``"product"`` (every combination, one dimension per axis) or ``"zip"``.
+    beam_action, stability : bool
+        Stages passed to :func:`flexbooster.analyze` for every point.
+    store : str or pathlib.Path, optional
+        ``*.nc`` or ``*.zarr`` file to write (zarr: streamed per batch).
+    resume : bool
+        Keep the points already in ``store``.
+    progress : callable, optional
+        ``progress(done, failed, total)``.
+    batch_size : int, optional
+        Points per Dask task (default: automatic, about 0.5 s per task).
+
+    Returns
+    -------
+    xarray.Dataset
+        One dimension per axis (SI coordinates with ``units``), a variable per scalar result
+        (:data:`RESULT_VARIABLES`), ``status``, ``message`` and ``computed`` per point.
+
+    Raises
+    ------
+    CaseError
+        Before anything runs, naming the axis and the point, for an invalid value.
+
+    References
+    ----------
+    Tech Memo 104 (each point's analysis); Dask distributed, ``Client.submit``/``as_completed``.
+    """
+    spec = make_spec(base_case, axes, mode=mode, beam_action=beam_action, stability=stability)
+    return run_sweep(
+        spec, client=client, store=store, resume=resume, progress=progress, batch_size=batch_size
+    )
