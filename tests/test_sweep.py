@@ -68,21 +68,21 @@ def serial_reference(case_data: dict, *, stability: bool = True) -> dict:
     if "figures" in inspect.signature(flexbooster.analyze).parameters:
         options["figures"] = False  # the figure data: not needed, and slow
     d = flexbooster.analyze(flexbooster.load_case(case_data), **options).to_dict()
+    # the bands (exact edges, issue 12), never grid samples: their count and largest growth
+    pitch, action = d["pitch"]["bands"], d["beam_action"]["bands"]
+    peak = max(action, key=lambda b: b["growth_rate_max"], default=None)
     out = {
         "omega_1": d["frequencies"]["omega_1"],
         "omega_psi": d["frequencies"]["omega_psi"],
-        "pitch_max_growth_rate": d["pitch"]["max_growth_rate"],
-        "pitch_unstable_regions": len(d["pitch"]["unstable_intervals"]),
-        "beam_action_max_growth_rate": d["beam_action"]["max_growth_rate"],
-        "beam_action_Omega_at_max": d["beam_action"]["Omega_at_max"],
-        # bands: maximal runs of unstable grid points, counted with itertools.groupby
-        "beam_action_unstable_bands": sum(
-            not stable for stable, _ in itertools.groupby(d["beam_action"]["stable"])
-        ),
+        "pitch_max_growth_rate": max((b["growth_rate_max"] for b in pitch), default=0.0),
+        "pitch_unstable_regions": len(pitch),
+        "beam_action_max_growth_rate": 0.0 if peak is None else peak["growth_rate_max"],
+        "beam_action_Omega_at_max": 0.0 if peak is None else peak["omega_at_max"],
+        "beam_action_unstable_bands": len(action),
         "n_warnings": len(d["warnings"]),
         "shell_min_frequency": min(d["shell_frequencies"]["rad_s"]),
-        "max_growth_rate": max(d["pitch"]["max_growth_rate"], d["beam_action"]["max_growth_rate"]),
     }
+    out["max_growth_rate"] = max(out["pitch_max_growth_rate"], out["beam_action_max_growth_rate"])
     if stability:
         out["stability_count"] = d["stability"]["count"]
         out["stability_active"] = d["stability"]["active"]

@@ -19,8 +19,6 @@ from collections.abc import Callable, Iterator, Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
-import numpy as np
-
 from .spec import SweepSpec, make_spec, point_cases
 from .store import STATUS_ERROR, STATUS_OK, PointResult, build_template, open_sink
 
@@ -46,10 +44,12 @@ RESULT_VARIABLES: dict[str, tuple[str, str]] = {
     "omega_1": ("rad/s", "first free-free bending frequency of the equivalent beam (memo 4.2-8b)"),
     "omega_psi": ("rad/s", "rigid-body pitch frequency sqrt(F0 d2 K / I_cm) (memo 4.2)"),
     "shell_min_frequency": ("rad/s", "lowest shell natural frequency (memo 5.4, 6.2)"),
-    "pitch_max_growth_rate": ("1/s", "largest rigid-body pitch growth rate on the Omega grid"),
-    "pitch_unstable_regions": ("1", "unstable Omega intervals of the rigid-body pitch (4.2)"),
-    "beam_action_max_growth_rate": ("1/s", "largest beam-action growth rate (memo 4.1)"),
-    "beam_action_unstable_bands": ("1", "runs of unstable Omega grid points of the beam action"),
+    "pitch_max_growth_rate": ("1/s", "largest rigid-body pitch growth rate over its bands"),
+    "pitch_unstable_regions": ("1", "instability bands of the rigid-body pitch (4.2), from "
+                                    "their edges"),
+    "beam_action_max_growth_rate": ("1/s", "largest beam-action growth rate over its bands"),
+    "beam_action_unstable_bands": ("1", "instability bands of the beam action (4.1), from "
+                                        "their edges"),
     "beam_action_Omega_at_max": ("rad/s", "Omega of the largest beam-action growth rate"),
     "max_growth_rate": ("1/s", "largest of the pitch and beam-action growth rates"),
     "stability_count": ("1", "unstable thrust frequencies (roots of memo 7.3) in the range"),
@@ -89,12 +89,6 @@ def result_variables(*, beam_action: bool = True, stability: bool = True) -> dic
     return {k: v for k, v in RESULT_VARIABLES.items() if k not in skip}
 
 
-def _runs(unstable: Sequence[bool]) -> int:
-    """Number of maximal runs of True in a sequence."""
-    flags = np.asarray(unstable, dtype=bool)
-    return int(np.count_nonzero(flags[1:] & ~flags[:-1]) + bool(flags[:1].any()))
-
-
 def point_scalars(data: Mapping[str, Any]) -> dict[str, float]:
     """The scalar results of one analysis, read from ``Results.to_dict()`` (results.json).
 
@@ -117,20 +111,23 @@ def point_scalars(data: Mapping[str, Any]) -> dict[str, float]:
     frequencies 5.4/6.2, unstable thrust frequencies 7.3; results.json schema, README.
     """
     freq, pitch = data["frequencies"], data["pitch"]
+    # instability from the bands (exact edges, issue 12), never from grid samples
     out = {
         "omega_1": float(freq["omega_1"]),
         "omega_psi": float(freq["omega_psi"]),
         "shell_min_frequency": float(min(data["shell_frequencies"]["rad_s"])),
-        "pitch_max_growth_rate": float(pitch["max_growth_rate"]),
-        "pitch_unstable_regions": float(len(pitch["unstable_intervals"])),
+        "pitch_max_growth_rate": float(max((b["growth_rate_max"] for b in pitch["bands"]),
+                                           default=0.0)),
+        "pitch_unstable_regions": float(len(pitch["bands"])),
         "n_warnings": float(len(data["warnings"])),
     }
     growth = [out["pitch_max_growth_rate"]]
     action = data.get("beam_action")
     if action is not None:
-        out["beam_action_max_growth_rate"] = float(action["max_growth_rate"])
-        out["beam_action_unstable_bands"] = float(_runs([not s for s in action["stable"]]))
-        out["beam_action_Omega_at_max"] = float(action["Omega_at_max"])
+        peak = max(action["bands"], key=lambda b: b["growth_rate_max"], default=None)
+        out["beam_action_max_growth_rate"] = 0.0 if peak is None else float(peak["growth_rate_max"])
+        out["beam_action_unstable_bands"] = float(len(action["bands"]))
+        out["beam_action_Omega_at_max"] = 0.0 if peak is None else float(peak["omega_at_max"])
         growth.append(out["beam_action_max_growth_rate"])
     out["max_growth_rate"] = max(growth)
     table = data.get("stability")
