@@ -43,8 +43,11 @@ def _case(name: str):
 
 
 #: Keys that issue 12 changed on purpose: the intervals are the exact band edges (not runs of
-#: unstable grid points) and the verdicts follow from the bands (docs/theory/bands.md).
-CHANGED_BY_ISSUE_12 = {".pitch.unstable_intervals", ".pitch.verdict", ".beam_action.verdict"}
+#: unstable grid points), the verdicts and the largest growth rates follow from the bands
+#: (docs/theory/bands.md).
+CHANGED_BY_ISSUE_12 = {".pitch.unstable_intervals", ".pitch.verdict", ".beam_action.verdict",
+                       ".pitch.max_growth_rate", ".beam_action.max_growth_rate",
+                       ".beam_action.Omega_at_max"}
 
 
 def _diff(old, new, path=""):

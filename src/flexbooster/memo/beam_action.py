@@ -932,9 +932,11 @@ class BeamActionResult:
         Shape (G,), max_r |Im alpha_r| Omega (1/s), over all N + 1 exponents; 0 where the
         point is stable (|Im alpha| <= 1e-6 is round-off).
     max_growth_rate : float
-        Largest growth rate over the grid (1/s).
+        Largest growth rate (1/s): of the bands' maxima (exact, issue 12) and of the grid
+        points (those below the band search's range); 0 when no band and no grid point is
+        unstable.
     Omega_at_max : float
-        Omega (rad/s) where it occurs; 0 when the system is stable on the whole grid.
+        Omega (rad/s) where it occurs; 0 when the system is stable.
     hill_monodromy_difference : float
         Largest difference between the Hill and monodromy representatives at the n_hill
         check points (dimensionless).
@@ -1070,10 +1072,14 @@ def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3,
     found = () if not (bands and hi > lo) else beam_action_bands(
         system, gamma, omega_min=lo, omega_max=hi, beam_ratio=zb, pitch_ratio=zp)
     verdict = ("unstable" if found else "stable") if bands else "not searched"
+    peak, at_peak = float(growth[i]), at_max
+    for band in found:  # the bands' exact maxima: a grid steps over narrow bands
+        if band.growth_rate_max > peak:
+            peak, at_peak = float(band.growth_rate_max), float(band.omega_at_max)
     return BeamActionResult(
         Omega=Ob * system.omega_1, Omega_bar=Ob, alpha=alpha_all[:, :R], frequencies=freqs[:R],
-        stable=stable, growth_rate=growth, max_growth_rate=float(growth[i]),
-        Omega_at_max=at_max, hill_monodromy_difference=diff,
+        stable=stable, growth_rate=growth, max_growth_rate=peak,
+        Omega_at_max=at_peak, hill_monodromy_difference=diff,
         verdict=verdict, gamma=gamma, K=system.K,
         N=system.N, S=S, R=R, p=system.p, bands=found, beam_damping_ratio=zb,
         pitch_damping_ratio=zp, band_range=(lo, hi))

@@ -1091,8 +1091,12 @@ class PitchResult:
 
     @property
     def max_growth_rate(self) -> float:
-        """The largest growth rate on the grid (1/s), 0 when stable everywhere."""
-        return float(np.max(self.growth_rate)) if self.growth_rate.size else 0.0
+        """The largest growth rate (1/s): of the bands' exact maxima and of the grid points.
+
+        A grid steps over narrow bands; the bands (issue 12) do not.  0 when stable.
+        """
+        grid = float(np.max(self.growth_rate)) if self.growth_rate.size else 0.0
+        return max([grid, *(float(b.growth_rate_max) for b in self.bands)])
 
     def unstable_intervals(self) -> list[tuple[float, float]]:
         """The exact instability bands as (omega_lo, omega_hi) (rad/s), from :attr:`bands`."""
