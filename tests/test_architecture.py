@@ -111,8 +111,12 @@ def test_layers_import_only_what_they_may(path):
             if mine == "present" and theirs == "core":
                 # presentation reads result types: classes and constants, never a solver
                 module = importlib.import_module(target)
+                assert names, f"{me}:{line} imports the core module {target} as a whole"
                 for n in names:
                     obj = getattr(module, n)
+                    assert not inspect.ismodule(obj), (
+                        f"{me}:{line} imports the core module {target}.{n}: import its result "
+                        "types by name")
                     assert inspect.isclass(obj) or not callable(obj), (
                         f"{me}:{line} imports the function {target}.{n}: presentation must "
                         "draw stored results, not compute them")

@@ -24,6 +24,13 @@ from pathlib import Path
 import numpy as np
 
 from .. import __version__
+from ..memo.charts import (
+    BAND_CHART_GAMMA_MAX,
+    BEAM_ACTION_CHART_LEVELS,
+    BEAM_ACTION_CHART_MAX_ORDER,
+    BEAM_ACTION_CHART_RTOL,
+    PITCH_BAND_CHART_LEVELS,
+)
 from ..results import Results
 from .io import write_text_atomic
 from .rows import frequency_rows, input_rows, mass_rows
@@ -89,15 +96,17 @@ FIGURES: dict[str, tuple[str, str]] = {
         "rigid-body",
         "Instability tongues of the rigid-body pitch in the plane of the thrust frequency Omega "
         "(Hz) and the pulsation amplitude gamma: edges where the path (4.2-4) crosses the "
-        "transition curves a_r, b_r, at 46 levels of gamma in [0, 0.9]; dashed: the case's "
-        "gamma.",
+        f"transition curves a_r, b_r, at {PITCH_BAND_CHART_LEVELS} levels of gamma in "
+        f"[0, {BAND_CHART_GAMMA_MAX:g}]; dashed: the case's gamma.",
     ),
     "beam-action-chart": (
         "beam-action",
         "Instability regions of the beam-action system (memo 4.1) in the plane of the thrust "
         "frequency Omega (Hz) and the pulsation amplitude gamma, traced from their boundaries "
-        "(|rho| = 1) at gamma = 0.3, 0.6, 0.9 and the tip; first-order resonances wider than "
-        "1e-4 of their centre; dashed: the case's gamma.",
+        f"(|rho| = 1) at {BEAM_ACTION_CHART_LEVELS - 1} levels of gamma up to "
+        f"{BAND_CHART_GAMMA_MAX:g} and the tip; resonances of order <= "
+        f"{BEAM_ACTION_CHART_MAX_ORDER} wider than {BEAM_ACTION_CHART_RTOL:g} of "
+        "their centre; dashed: the case's gamma.",
     ),
     "campbell": (
         "campbell",
