@@ -268,9 +268,9 @@ def _write_report(ds, output: Path) -> list[Path]:  # noqa: ANN001
     import matplotlib
 
     matplotlib.use("Agg")
+    from ..present.io import write_text_atomic
     from .page import sweep_page
     from .plot import figure_svg, sweep_figure
-    from .store import write_text_atomic
 
     fig = sweep_figure(ds)
     svg = figure_svg(fig)

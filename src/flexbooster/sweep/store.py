@@ -47,7 +47,6 @@ __all__ = [
     "ZarrSink",
     "build_template",
     "open_sink",
-    "write_text_atomic",
 ]
 
 #: Version of the dataset layout; a store of another layout is not resumed.
@@ -259,41 +258,6 @@ def _tmp_path(path: Path) -> Path:
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".part", dir=path.parent)
     os.close(fd)
     return Path(tmp)
-
-
-def write_text_atomic(path: str | Path, text: str) -> Path:
-    """Write UTF-8 text to ``path`` atomically: a temporary file in the same folder, renamed.
-
-    Parameters
-    ----------
-    path : str or pathlib.Path
-        Destination file; its folder is created if needed.
-    text : str
-        Content.
-
-    Returns
-    -------
-    pathlib.Path
-        The destination path.
-
-    References
-    ----------
-    POSIX ``rename`` (``os.replace``): atomic within one file system.
-    """
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    tmp = _tmp_path(path)
-    try:
-        os.chmod(tmp, 0o644)  # mkstemp makes 0600; the usual permissions of a written file
-        with open(tmp, "w", encoding="utf-8") as handle:
-            handle.write(text)
-            handle.flush()
-            os.fsync(handle.fileno())
-        with _deferred_sigint():
-            os.replace(tmp, path)
-    finally:
-        tmp.unlink(missing_ok=True)
-    return path
 
 
 class NetcdfSink(MemorySink):
