@@ -16,12 +16,13 @@ from collections.abc import Callable
 
 import numpy as np
 
+from ._parallel import TaskPool
 from ._threads import blas_threads
 from .case import Case
 from .errors import AnalysisWarning
 from .memo import charts
 from .memo.beam import beam_modes
-from .memo.beam_action import beam_action_analysis
+from .memo.beam_action import beam_action_analysis, pipeline_bands
 from .memo.model import BoosterModel
 from .memo.pitch import pitch_analysis
 from .memo.responses import SimulationResult, excitation_parameters, simulate
@@ -112,6 +113,8 @@ def analyze(
     stability: bool = True,
     progress: Callable[[str], None] | None = None,
     figures: bool = True,
+    *,
+    workers: int = 1,
 ) -> Results:
     """Run the analysis of a validated case.
 
@@ -129,6 +132,10 @@ def analyze(
     figures : bool
         Compute the data of the figures (:mod:`flexbooster.memo.charts`; the beam-action
         (Omega, gamma) chart is the costly part); ``results.figures`` is None without it.
+    workers : int
+        Processes for the independent stages (:class:`flexbooster._parallel.TaskPool`): with
+        2 or more, the beam-action chart is traced in a worker while this process computes
+        the beam action and the stability table.  The results are the same, bit for bit.
 
     Returns
     -------
@@ -142,14 +149,20 @@ def analyze(
     (:func:`flexbooster._threads.blas_threads`): multithreaded BLAS makes them slower.
     """
     with blas_threads(1):
-        return _analyze(case, beam_action, stability, figures,
-                        progress or (lambda stage: None))
+        with TaskPool(workers) as pool:
+            return _analyze(case, beam_action, stability, figures,
+                            progress or (lambda stage: None), pool)
 
 
 def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
-             step: Callable[[str], None]) -> Results:
+             step: Callable[[str], None], pool: TaskPool) -> Results:
     step(STAGES[0])
     model = model_from_case(case)
+    # the costliest figure data, independent of the stages below: started first (in a worker
+    # when the pool has one, else computed when asked for, in STAGES[5])
+    chart = (pool.submit(charts.beam_action_chart, model) if figures and beam_action
+             else None)
+    bands = pool.submit(pipeline_bands, model) if beam_action and pool.parallel else None
     n = model.truncation
     beam = beam_modes(n.N, model.mass.L, model.R1, model.E, model.rho)
     step(STAGES[1])
@@ -160,7 +173,7 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
     action = None
     if beam_action:
         step(STAGES[3])
-        action = beam_action_analysis(model)
+        action = beam_action_analysis(model, bands=True if bands is None else bands.result)
     table = None
     params = None
     extra: list[AnalysisWarning] = []
@@ -178,7 +191,9 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
     data = None
     if figures:
         step(STAGES[5])
-        data = _figure_data(model, pitch, shell, action, table, params)
+        data = _figure_data(model, pitch, shell, action, table, params,
+                            beam_action_chart=(chart.result() if chart is not None
+                                               and action is not None else None))
     vehicle = None
     if case.vehicle is not None:  # only a case with [vehicle]: the default run is unchanged
         step(VEHICLE_STAGE)
@@ -202,7 +217,8 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
     )
 
 
-def _figure_data(model, pitch, shell, action, table, params) -> charts.FigureData:
+def _figure_data(model, pitch, shell, action, table, params, *,
+                 beam_action_chart) -> charts.FigureData:
     """The data of every figure (compute -> data -> plot), on the grids of :mod:`charts`."""
     n = model.truncation
     return charts.FigureData(
@@ -212,7 +228,7 @@ def _figure_data(model, pitch, shell, action, table, params) -> charts.FigureDat
             charts.nodal_pattern_data(shell, cylinder=d, j=j, k=k, radius=R, half_length=L)
             for d, j, k, R, L in ((1, min(4, n.M1), min(3, n.N1), model.R1, model.L1),
                                   (2, min(6, n.M2), min(2, n.N2), model.R2, model.L2))),
-        beam_action_chart=charts.beam_action_chart(model) if action is not None else None,
+        beam_action_chart=beam_action_chart,
         campbell=None if table is None else charts.campbell_data(
             params=params, omega_range=model.omega_range, omega_1=model.omega_1, shell=shell,
             table=table, R=n.R, S=n.S),

@@ -47,6 +47,7 @@ References
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -78,6 +79,7 @@ __all__ = [
     "BeamActionBand",
     "modal_damping",
     "beam_action_bands",
+    "pipeline_bands",
     "BeamActionResult",
     "beam_action_analysis",
     "StabilityChart",
@@ -1016,8 +1018,42 @@ def _match_distance(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return np.max(np.abs(a - b), axis=-1)
 
 
+def _band_range(model: BoosterModel, omega_1: float) -> tuple[float, float]:
+    """The Omega range (rad/s) of the pipeline's band search: above omega_1 / 4."""
+    return (max(float(np.min(model.Omega)), BAND_OMEGA_BAR_MIN * omega_1),
+            float(np.max(model.Omega)))
+
+
+def pipeline_bands(model: BoosterModel) -> tuple[BeamActionBand, ...]:
+    """The bands :func:`beam_action_analysis` searches, on their own (a separate task).
+
+    Parameters
+    ----------
+    model : BoosterModel
+        The derived model: Omega range (rad/s), gamma, damping ratios, beam-action system.
+
+    Returns
+    -------
+    tuple of BeamActionBand
+        :func:`beam_action_bands` over [max(Omega[0], omega_1 / 4), Omega[-1]]
+        (:data:`BAND_OMEGA_BAR_MIN`) with the model's damping ratios; empty when that range
+        is empty.
+
+    References
+    ----------
+    Bolotin (1964), ch. 1-2, sec. 6; Tech Memo 104, eqs. (4.1-10), (4.1-11).
+    """
+    system = beam_system(model)
+    lo, hi = _band_range(model, float(system.omega_1))
+    if not hi > lo:
+        return ()
+    return beam_action_bands(system, float(model.gamma), omega_min=lo, omega_max=hi,
+                             beam_ratio=float(model.beam_damping_ratio),
+                             pitch_ratio=float(model.pitch_damping_ratio))
+
+
 def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3,
-                         bands: bool = True) -> BeamActionResult:
+                         bands: bool | tuple | Callable[[], tuple] = True) -> BeamActionResult:
     """alpha_r along the Omega grid and the beam-action verdict (pipeline entry point).
 
     Parameters
@@ -1030,9 +1066,11 @@ def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3,
         also solved and compared with the monodromy exponents, 1..len(Omega) (clipped to the
         grid size); Hill costs O((2 (N + 1)(2 S + 1))^3) per point, about 0.1-0.5 s for
         N = S = 10.
-    bands : bool
-        Search the instability bands (:func:`beam_action_bands`); without it ``bands`` is
-        empty and the verdict is "not searched".
+    bands : bool, tuple of BeamActionBand or callable
+        Search the instability bands (:func:`pipeline_bands`); False: ``bands`` is empty and
+        the verdict is "not searched"; a tuple, or a function of no argument returning it
+        (called after the exponents are computed): the bands :func:`pipeline_bands` returns
+        for this model, searched elsewhere (e.g. in a worker process).
 
     Returns
     -------
@@ -1067,11 +1105,12 @@ def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3,
     i = int(np.argmax(growth))
     at_max = float(Ob[i] * system.omega_1) if growth[i] > 0.0 else 0.0
     zb, zp = float(model.beam_damping_ratio), float(model.pitch_damping_ratio)
-    lo = max(float(np.min(model.Omega)), BAND_OMEGA_BAR_MIN * system.omega_1)
-    hi = float(np.max(model.Omega))
-    found = () if not (bands and hi > lo) else beam_action_bands(
-        system, gamma, omega_min=lo, omega_max=hi, beam_ratio=zb, pitch_ratio=zp)
-    verdict = ("unstable" if found else "stable") if bands else "not searched"
+    lo, hi = _band_range(model, float(system.omega_1))
+    if callable(bands):  # searched elsewhere, meanwhile
+        bands = tuple(bands())
+    searched = isinstance(bands, tuple) or bool(bands)
+    found = bands if isinstance(bands, tuple) else (pipeline_bands(model) if bands else ())
+    verdict = ("unstable" if found else "stable") if searched else "not searched"
     peak, at_peak = float(growth[i]), at_max
     for band in found:  # the bands' exact maxima: a grid steps over narrow bands
         if band.growth_rate_max > peak:

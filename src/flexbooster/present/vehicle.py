@@ -22,6 +22,7 @@ if TYPE_CHECKING:
 
 __all__ = [
     "VEHICLE_FIGURES",
+    "vehicle_figure_names",
     "print_vehicle_modes",
     "print_vehicle_summary",
     "vehicle_figures",
@@ -105,30 +106,53 @@ def print_vehicle_summary(survey: VehicleSurvey, console: Console) -> None:
     console.print(table)
 
 
-def vehicle_figures(survey: VehicleSurvey) -> dict[str, Figure]:
+def vehicle_figure_names(survey: VehicleSurvey) -> tuple[str, ...]:
+    """The names of the figures :func:`vehicle_figures` draws for these modes.
+
+    Parameters
+    ----------
+    survey : VehicleSurvey
+        The stored vehicle modes.
+
+    Returns
+    -------
+    tuple of str
+        ``vehicle-mode-shapes`` and, when modes were selected for it, ``vehicle-unrolled``;
+        empty without stored views.
+    """
+    if survey.views is None:
+        return ()
+    if survey.views.unrolled_index.size:
+        return ("vehicle-mode-shapes", "vehicle-unrolled")
+    return ("vehicle-mode-shapes",)
+
+
+def vehicle_figures(survey: VehicleSurvey, *, names=None) -> dict[str, Figure]:
     """The figures of the vehicle modes, drawn from the stored views.
 
     Parameters
     ----------
     survey : VehicleSurvey
         The stored vehicle modes; no figure without ``views``.
+    names : iterable of str, optional
+        Only these of :func:`vehicle_figure_names` (default all).
 
     Returns
     -------
     dict of str to matplotlib.figure.Figure
         ``vehicle-mode-shapes`` and, when modes were selected for it, ``vehicle-unrolled``.
     """
-    if survey.views is None:
+    available = vehicle_figure_names(survey)
+    wanted = [n for n in (available if names is None else names) if n in available]
+    if not wanted:
         return {}
     import matplotlib
 
     matplotlib.use("Agg")
     from .plotting.vehicle import meridian_shapes, unrolled_modes
 
-    figs = {"vehicle-mode-shapes": meridian_shapes(survey.views)}
-    if survey.views.unrolled_index.size:
-        figs["vehicle-unrolled"] = unrolled_modes(survey.views)
-    return figs
+    draw = {"vehicle-mode-shapes": meridian_shapes, "vehicle-unrolled": unrolled_modes}
+    return {name: draw[name](survey.views) for name in wanted}
 
 
 def write_vehicle_files(survey: VehicleSurvey, folder: str | Path, *,
