@@ -21,6 +21,7 @@ from flexbooster.errors import CaseError
 from flexbooster.floquet import critical_amplitude, instability_regions
 from flexbooster.memo import pitch
 from flexbooster.memo.beam_action import (
+    BAND_OMEGA_BAR_MIN,
     beam_action_bands,
     beam_system,
     follower_flutter_load,
@@ -220,10 +221,11 @@ def test_pitch_bands_validate_arguments(kwargs, match):
 # --------------------------------------------------------------------------------------------
 @pytest.fixture(scope="module")
 def titan_beam_bands(titan_model):
-    # the range above 200 rad/s (Omega_bar >= 1.5) keeps the test fast; the low range of the
-    # case (Omega_bar down to 0.024) costs minutes (see docs/theory/bands.md)
+    # the pipeline's band range, Omega >= omega_1 / 4 (BAND_OMEGA_BAR_MIN; 33 rad/s here);
+    # below it the monodromy's cost grows as 1 / Omega (see docs/theory/bands.md)
     system = beam_system(titan_model)
-    return system, beam_action_bands(system, titan_model.gamma, omega_min=200.0,
+    return system, beam_action_bands(system, titan_model.gamma,
+                                     omega_min=BAND_OMEGA_BAR_MIN * system.omega_1,
                                      omega_max=titan_model.omega_range[1])
 
 
