@@ -340,7 +340,7 @@ def _beam_action(results: Results) -> str:
         ("Hill against monodromy exponents, largest difference", ba.hill_monodromy_difference,
          "-"),
         ("stable grid points", f"{int(np.sum(ba.stable))} of {ba.stable.size}", "-"),
-        ("Omega range searched for bands (from omega_1 / 4)",
+        ("Omega range searched for every band (below it: the pitch tongues)",
          f"{_fmt(ba.band_range[0])} .. {_fmt(ba.band_range[1])}", "rad/s"),
         ("instability bands", len(ba.bands), "-"),
     ]
