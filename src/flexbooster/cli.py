@@ -164,9 +164,12 @@ def _wrote(paths, fmt: str, quiet: bool) -> None:
 @_CASE_ARG
 @_OUTPUT
 @click.option("--no-figures", is_flag=True, help="Do not draw the figures (faster).")
+@click.option("--no-vehicle", is_flag=True,
+              help="Skip the vehicle's parametric instability regions (shell of revolution).")
 @_QUIET
 @_FORMAT
-def run(case_file: Path | None, output: Path, no_figures: bool, quiet: bool, fmt: str) -> None:
+def run(case_file: Path | None, output: Path, no_figures: bool, no_vehicle: bool, quiet: bool,
+        fmt: str) -> None:
     """Analyse CASE_FILE (TOML; the embedded default case if omitted).
 
     Prints a summary and writes OUTPUT/results.json, the CSV tables, the figures and
@@ -178,6 +181,7 @@ def run(case_file: Path | None, output: Path, no_figures: bool, quiet: bool, fmt
     Examples:
       flexbooster run                        # default case -> flexbooster-results/report.html
       flexbooster run my.toml -o out/ --no-figures
+      flexbooster run my.toml --no-vehicle   # without the vehicle's instability regions
       flexbooster run -q --format json | python -m json.tool | head
     """
     from .analysis import STAGES, analyze
@@ -185,9 +189,9 @@ def run(case_file: Path | None, output: Path, no_figures: bool, quiet: bool, fmt
     from .present.summary import print_summary
 
     case = _load(case_file)
-    n_stages = len(STAGES) + (case.vehicle is not None) + len(OUTPUT_STAGES)
+    n_stages = len(STAGES) + (case.vehicle is not None) + (not no_vehicle) + len(OUTPUT_STAGES)
     with _progress(n_stages, quiet) as step:
-        results = analyze(case, progress=step, figures=not no_figures)
+        results = analyze(case, progress=step, figures=not no_figures, vehicle=not no_vehicle)
         paths = write_outputs(results, output, figures=not no_figures, progress=step)
     _report(results, fmt, quiet, print_summary)
     _wrote(paths, fmt, quiet)

@@ -68,7 +68,8 @@ def write_outputs(
     -------
     list of pathlib.Path
         The files written: results.json, shell-frequencies.csv, unstable-frequencies.csv (when
-        the stability table was computed), the figures and report.html (last).
+        the stability table was computed), vehicle-regions.csv (when the vehicle's regions
+        were computed), the figures and report.html (last).
     """
     from .report import write_report
 
@@ -84,6 +85,11 @@ def write_outputs(
     if results.vehicle is not None:  # a case with [vehicle] only
         written.append(write_csv_atomic(folder / "vehicle-modes.csv",
                                         results.vehicle.to_columns()))
+    if results.vehicle_regions is not None:  # the vehicle's parametric regions (issue 15)
+        from .vehicle import vehicle_region_columns
+
+        written.append(write_csv_atomic(folder / "vehicle-regions.csv",
+                                        vehicle_region_columns(results.vehicle_regions)))
     svgs: dict[str, str] = {}
     if figures and results.figures is not None:
         step(OUTPUT_STAGES[1])
@@ -156,7 +162,8 @@ def make_figures(results: Results) -> dict[str, Figure]:
         By file stem: ``ince-strutt``, ``beam-modes``, ``shell-frequencies-cylinder1``,
         ``shell-frequencies-cylinder2``, ``nodal-patterns``, ``pitch-band-chart`` and,
         when they were computed, ``beam-action-chart`` and ``campbell``; for a case with
-        ``[vehicle]`` also ``vehicle-mode-shapes`` and ``vehicle-unrolled``.
+        ``[vehicle]`` also ``vehicle-mode-shapes`` and ``vehicle-unrolled``; with the
+        vehicle's parametric regions ``vehicle-regions``.
     """
     import matplotlib
 
@@ -188,4 +195,8 @@ def make_figures(results: Results) -> dict[str, Figure]:
         from .vehicle import vehicle_figures
 
         figs.update(vehicle_figures(results.vehicle))
+    if results.vehicle_regions is not None:  # the vehicle's (Omega, gamma) chart
+        from .vehicle import vehicle_region_figures
+
+        figs.update(vehicle_region_figures(results))
     return figs
