@@ -33,7 +33,8 @@ def test_run_default_writes_results(tmp_path, capsys):
     assert {"report.html", "nodal-patterns.svg"} <= names
     report = (tmp_path / "report.html").read_text()
     assert {"pitch-band-chart.svg", "beam-action-chart.svg"} <= names  # issue 12 charts
-    assert report.count("<svg") == 8 and 'id="unstable-frequencies"' in report
+    assert {"vehicle-regions.csv", "vehicle-regions.svg"} <= names  # issue 15
+    assert report.count("<svg") == 9 and 'id="unstable-frequencies"' in report
     assert not [n for n in names if n.endswith(".part")]  # no temporary leftovers
 
 

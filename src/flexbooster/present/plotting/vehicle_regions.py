@@ -15,6 +15,7 @@ from matplotlib.figure import Figure
 
 from ...memo.charts import VEHICLE_CHART_GAMMA_MAX
 from ...vehicle import VehicleRegions
+from .bands import _axes
 
 __all__ = ["vehicle_region_chart"]
 
@@ -49,11 +50,7 @@ def vehicle_region_chart(regions: VehicleRegions, ax: Axes | None = None) -> Fig
     ----------
     Bolotin (1964), ch. 1 (regions in the (Omega, mu) plane), sec. 6 (damping).
     """
-    if ax is None:
-        fig = Figure(figsize=(6.4, 4.8), layout="constrained")
-        ax = fig.add_subplot()
-    else:
-        fig = ax.figure
+    fig, ax = _axes(ax, (6.4, 4.8))
     growth = {_key(r.k, r.kind, r.order, tuple(m.index for m in r.modes)): r.growth_rate_max
               for r in regions.regions}
     g_max = max(growth.values(), default=0.0)
