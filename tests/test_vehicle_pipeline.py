@@ -411,6 +411,22 @@ def test_report_and_summary_row_order(results):
     rates = [row[8] for row in rows]
     assert rates == sorted(rates, reverse=True) and len(rows) == len(
         results.vehicle_regions.regions)
+    m = results.memo_roots_in_regions
+    assert sum(row[10] == "no" for row in rows) == m.without_active_root.size  # explained?
+
+
+def test_region_table_marks_the_regions_no_memo_root_explains(results):
+    """Hand-made: regions 0 and 2 hold an active root, region 1 none -> yes / no / yes
+    (rows sorted by growth rate: region 1 has the largest)."""
+    from flexbooster.present.rows import vehicle_region_table
+
+    regs = _regions(_region(3, 10.0, 12.0, growth=0.1), _region(4, 20.0, 20.5, growth=0.3),
+                    _region(2, 50.0, 51.0, growth=0.2))
+    table = _table([11.0, 50.5, 20.2], [3, 2, 4], [True, True, False])
+    res = dataclasses.replace(results, vehicle_regions=regs,
+                              memo_roots_in_regions=memo_roots_in_regions(table, regs))
+    assert [(row[4], row[10]) for row in vehicle_region_table(res)] == [(4, "no"), (2, "yes"),
+                                                                        (3, "yes")]
 
 
 def test_progress_and_no_vehicle_keyword():

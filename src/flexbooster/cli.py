@@ -230,8 +230,8 @@ def stability(
     data = _load(case_file).model_dump(exclude_none=True)
     data["thrust"].update(omega_min=number(omega_min), omega_max=number(omega_max))
     case = load_case(data)
-    with _progress(len(STAGES), quiet) as step:
-        results = analyze(case, progress=step)
+    with _progress(len(STAGES), quiet) as step:  # the memo table only: no vehicle regions
+        results = analyze(case, progress=step, vehicle=False)
     _report(results, fmt, quiet, print_stability)
     path = write_csv_atomic(output / "unstable-frequencies.csv", results.stability.to_columns())
     _wrote([path], fmt, quiet)

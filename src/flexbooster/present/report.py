@@ -483,7 +483,8 @@ def _vehicle_regions(results: Results, svgs: Mapping[str, str] | None) -> str:
         out.append(f"<p>The regions by decreasing growth rate (first {min(len(rows), 50)} of "
                    f"{len(rows)}; all are in vehicle-regions.csv):</p>")
         out.append(_table(REGION_HEADER, rows[:50],
-                          (True, True, True, True, True, False, False, True, True, True)))
+                          (True, True, True, True, True, False, False, True, True, True,
+                           False)))
     m = results.memo_roots_in_regions
     if m is not None and vr.regions:
         roots = memo_root_rows(results)

@@ -133,7 +133,7 @@ def frequency_rows(results: Results) -> list[Row]:
 
 #: Columns of :func:`vehicle_region_table` (summary and report).
 REGION_HEADER = ("Omega from (rad/s)", "to (rad/s)", "from (Hz)", "to (Hz)", "k", "modes",
-                 "kind", "j", "max growth (1/s)", "critical gamma")
+                 "kind", "j", "max growth (1/s)", "critical gamma", "active memo root inside")
 #: Columns of :func:`memo_root_rows`.
 MEMO_ROOT_HEADER = ("region (k, kind, j, Omega rad/s)", "root Omega (rad/s)", "family",
                     "shell mode d, j, k, m", "forcing", "same k", "severity")
@@ -242,15 +242,25 @@ def vehicle_region_table(results: Results) -> list[tuple]:
     Returns
     -------
     list of tuple
-        Omega range (rad/s, Hz), k, modes in words, kind, j, growth rate (1/s), critical gamma.
+        Omega range (rad/s, Hz), k, modes in words, kind, j, growth rate (1/s), critical
+        gamma, and whether a memo-table root with active forcing lies inside ("no": no memo
+        resonance explains the region; "-": not compared).
     """
     vr = results.vehicle_regions
     if vr is None:
         return []
-    regions = sorted(vr.regions, key=lambda r: (-r.growth_rate_max, r.omega_lo))
-    return [(r.omega_lo, r.omega_hi, _hz(r.omega_lo), _hz(r.omega_hi), r.k,
-             region_modes_words(r), r.kind, r.order, r.growth_rate_max, r.critical_gamma)
-            for r in regions]
+    m = results.memo_roots_in_regions
+    unexplained = set() if m is None else {int(i) for i in m.without_active_root}
+    order = sorted(range(len(vr.regions)),
+                   key=lambda i: (-vr.regions[i].growth_rate_max, vr.regions[i].omega_lo))
+    rows = []
+    for i in order:
+        r = vr.regions[i]
+        memo = "-" if m is None else ("no" if i in unexplained else "yes")
+        rows.append((r.omega_lo, r.omega_hi, _hz(r.omega_lo), _hz(r.omega_hi), r.k,
+                     region_modes_words(r), r.kind, r.order, r.growth_rate_max,
+                     r.critical_gamma, memo))
+    return rows
 
 
 def memo_root_rows(results: Results) -> list[tuple]:
