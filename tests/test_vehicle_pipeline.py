@@ -139,6 +139,29 @@ def test_memo_roots_in_regions_hand_made_table(rtol, pairs, same_k, without_root
     json.dumps(m.to_dict())  # JSON-ready
 
 
+@pytest.mark.parametrize("rtol", [0.0, 1e-3])
+def test_memo_roots_in_regions_equal_a_brute_force_matrix(rtol):
+    """Invariant: the bisection over sorted roots gives the pairs of the plain
+    roots x regions comparison (random overlapping regions, ties in Omega; exact)."""
+    rng = np.random.default_rng(15)
+    lo = rng.uniform(5.0, 500.0, 40)
+    regs = _regions(*(_region(int(rng.integers(2, 6)), a, a + w)
+                      for a, w in zip(lo, rng.uniform(0.0, 20.0, 40), strict=True)))
+    Omega = np.round(rng.uniform(1.0, 520.0, 400), 1)  # rounded: repeated values
+    table = _table(Omega, rng.integers(0, 6, 400), rng.random(400) < 0.3)
+    m = memo_roots_in_regions(table, regs, rtol=rtol)
+    centre = np.array([r.omega_center for r in regs.regions])
+    a = np.array([r.omega_lo for r in regs.regions]) - rtol * centre
+    b = np.array([r.omega_hi for r in regs.regions]) + rtol * centre
+    inside = (Omega[:, None] >= a) & (Omega[:, None] <= b)
+    expected = sorted((g, Omega[r], r) for r, g in zip(*np.nonzero(inside), strict=True))
+    assert list(zip(m.region.tolist(), m.root.tolist(), strict=True)) == [
+        (g, r) for g, _, r in expected]
+    assert m.without_root.tolist() == np.flatnonzero(~inside.any(axis=0)).tolist()
+    assert m.without_active_root.tolist() == np.flatnonzero(
+        ~(inside & table.active[:, None]).any(axis=0)).tolist()
+
+
 def test_memo_roots_severity_hook_and_empty_inputs():
     """A table with a ``severity`` column (the other helper's issue): the matched roots carry
     it (exact); no region / no root: empty answers, no error."""

@@ -168,12 +168,11 @@ def analyze(
     """
     with blas_threads(1):
         return _analyze(case, beam_action, stability, figures,
-                        progress or (lambda stage: None), vehicle=vehicle)
+                        progress or (lambda stage: None), with_regions=vehicle)
 
 
 def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
-             step: Callable[[str], None], *, vehicle: bool = True) -> Results:
-    do_regions = vehicle
+             step: Callable[[str], None], *, with_regions: bool = True) -> Results:
     step(STAGES[0])
     model = model_from_case(case)
     n = model.truncation
@@ -211,7 +210,7 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
         vehicle = analyze_vehicle(case, views=figures)
         extra += vehicle_warnings(vehicle)
     regions = matches = None
-    if do_regions:
+    if with_regions:
         step(VEHICLE_REGIONS_STAGE)
         regions, skipped = _vehicle_regions_stage(case, boundaries=figures)
         extra += skipped
@@ -462,9 +461,10 @@ def memo_roots_in_regions(table: StabilityTable, regions: VehicleRegions, *,
 
     A root (memo 7.3: a thrust frequency Omega where an excitation frequency meets a shell
     frequency) falls inside a region when omega_lo - rtol Omega_c <= Omega <=
-    omega_hi + rtol Omega_c (Omega_c the region's centre).  The memo's shells and the
-    vehicle's harmonics share the circumferential wave number k: each match says whether the
-    root's shell mode has the region's k.
+    omega_hi + rtol Omega_c (Omega_c the region's centre); with the roots sorted by Omega
+    those of a region are one run, found by bisection (no roots x regions matrix).  The memo's
+    shells and the vehicle's harmonics share the circumferential wave number k: each match
+    says whether the root's shell mode has the region's k.
 
     Parameters
     ----------
@@ -499,23 +499,27 @@ def memo_roots_in_regions(table: StabilityTable, regions: VehicleRegions, *,
     hi = np.array([r.omega_hi for r in regs], dtype=float)
     pad = rtol * np.array([r.omega_center for r in regs], dtype=float)
     region_k = np.array([r.k for r in regs], dtype=int)
-    Om = np.asarray(table.Omega, dtype=float)[:, None]
-    inside = (Om >= (lo - pad)[None, :]) & (Om <= (hi + pad)[None, :])  # (roots, regions)
-    root, region = np.nonzero(inside)
-    order = np.lexsort((table.Omega[root], region))  # by region, then Omega
-    root, region = root[order], region[order]
+    Omega = np.asarray(table.Omega, dtype=float)
+    by_omega = np.argsort(Omega, kind="stable")  # the roots inside a region are a run of it
+    first = np.searchsorted(Omega[by_omega], lo - pad, side="left")
+    stop = np.searchsorted(Omega[by_omega], hi + pad, side="right")
+    n_in = np.maximum(stop - first, 0)
+    region = np.repeat(np.arange(len(regs)), n_in)  # pairs by region, then Omega
+    offset = np.arange(int(n_in.sum())) - np.repeat(np.cumsum(n_in) - n_in, n_in)
+    root = by_omega[np.repeat(first, n_in) + offset]
     active = np.asarray(table.active, dtype=bool)
-    has_active = (inside & active[:, None]).any(axis=0)
+    n_active = np.concatenate(([0], np.cumsum(active[by_omega])))
+    has_active = n_active[first + n_in] - n_active[first] > 0
+    k = np.asarray(table.k, dtype=int)
     severity = getattr(table, "severity", None)  # the severity column, where the table has it
     return MemoRootsInRegions(
-        region=region.astype(int), root=root.astype(int),
-        Omega=np.asarray(table.Omega, dtype=float)[root],
+        region=region.astype(int), root=root.astype(int), Omega=Omega[root],
         family=np.asarray(table.family, dtype=int)[root],
         cylinder=np.asarray(table.cylinder, dtype=int)[root],
-        j=np.asarray(table.j, dtype=int)[root], k=np.asarray(table.k, dtype=int)[root],
+        j=np.asarray(table.j, dtype=int)[root], k=k[root],
         branch=np.asarray(table.branch, dtype=int)[root], active=active[root],
-        same_k=np.asarray(table.k, dtype=int)[root] == region_k[region],
+        same_k=k[root] == region_k[region],
         severity=None if severity is None else tuple(np.asarray(severity)[root].tolist()),
-        without_root=np.flatnonzero(~inside.any(axis=0)).astype(int),
+        without_root=np.flatnonzero(n_in == 0).astype(int),
         without_active_root=np.flatnonzero(~has_active).astype(int),
         n_regions=len(regs), rtol=rtol)
