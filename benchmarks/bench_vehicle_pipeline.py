@@ -20,10 +20,11 @@ from __future__ import annotations
 import argparse
 import copy
 import os
-import time
 import tomllib
 
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+
+from bench_vehicle_case import best  # noqa: E402  (best of n, time.perf_counter)
 
 from flexbooster.analysis import analyze_vehicle_regions  # noqa: E402
 from flexbooster.case import default_case_text, load_case  # noqa: E402
@@ -32,15 +33,6 @@ from flexbooster.model import vehicle_from_case  # noqa: E402
 from flexbooster.vehicle import vehicle_regions  # noqa: E402
 
 __all__: list[str] = []
-
-
-def best(fn, repeats: int) -> float:
-    times = []
-    for _ in range(repeats):
-        start = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - start)
-    return min(times)
 
 
 def main() -> None:
