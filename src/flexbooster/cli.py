@@ -172,10 +172,13 @@ def _wrote(paths, fmt: str, quiet: bool) -> None:
 @_CASE_ARG
 @_OUTPUT
 @click.option("--no-figures", is_flag=True, help="Do not draw the figures (faster).")
+@click.option("--no-vehicle", is_flag=True,
+              help="Skip the vehicle's parametric instability regions (shell of revolution).")
 @_JOBS
 @_QUIET
 @_FORMAT
-def run(case_file: Path | None, output: Path, no_figures: bool, jobs: int | None, quiet: bool,
+def run(case_file: Path | None, output: Path, no_figures: bool, no_vehicle: bool,
+        jobs: int | None, quiet: bool,
         fmt: str) -> None:
     """Analyse CASE_FILE (TOML; the embedded default case if omitted).
 
@@ -188,6 +191,7 @@ def run(case_file: Path | None, output: Path, no_figures: bool, jobs: int | None
     Examples:
       flexbooster run                        # default case -> flexbooster-results/report.html
       flexbooster run my.toml -o out/ --no-figures
+      flexbooster run my.toml --no-vehicle   # without the vehicle's instability regions
       flexbooster run -q --format json | python -m json.tool | head
     """
     from ._parallel import default_workers
@@ -197,9 +201,10 @@ def run(case_file: Path | None, output: Path, no_figures: bool, jobs: int | None
 
     case = _load(case_file)
     workers = default_workers() if jobs is None else jobs
-    n_stages = len(STAGES) + (case.vehicle is not None) + len(OUTPUT_STAGES)
+    n_stages = len(STAGES) + (case.vehicle is not None) + (not no_vehicle) + len(OUTPUT_STAGES)
     with _progress(n_stages, quiet) as step:
-        results = analyze(case, progress=step, figures=not no_figures, workers=workers)
+        results = analyze(case, progress=step, figures=not no_figures, vehicle=not no_vehicle,
+                          workers=workers)
         paths = write_outputs(results, output, figures=not no_figures, progress=step,
                               workers=workers)
     _report(results, fmt, quiet, print_summary)
@@ -239,8 +244,8 @@ def stability(
     data = _load(case_file).model_dump(exclude_none=True)
     data["thrust"].update(omega_min=number(omega_min), omega_max=number(omega_max))
     case = load_case(data)
-    with _progress(len(STAGES), quiet) as step:
-        results = analyze(case, progress=step)
+    with _progress(len(STAGES), quiet) as step:  # the memo table only: no vehicle regions
+        results = analyze(case, progress=step, vehicle=False)
     _report(results, fmt, quiet, print_stability)
     path = write_csv_atomic(output / "unstable-frequencies.csv", results.stability.to_columns())
     _wrote([path], fmt, quiet)

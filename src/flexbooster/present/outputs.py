@@ -76,7 +76,8 @@ def write_outputs(
     -------
     list of pathlib.Path
         The files written: results.json, shell-frequencies.csv, unstable-frequencies.csv (when
-        the stability table was computed), the figures and report.html (last).
+        the stability table was computed), vehicle-regions.csv (when the vehicle's regions
+        were computed), the figures and report.html (last).
     """
     from .report import write_report
 
@@ -97,6 +98,11 @@ def write_outputs(
         if results.vehicle is not None:  # a case with [vehicle] only
             written.append(write_csv_atomic(folder / "vehicle-modes.csv",
                                             results.vehicle.to_columns()))
+        if results.vehicle_regions is not None:  # the vehicle's parametric regions (issue 15)
+            from .vehicle import vehicle_region_columns
+
+            written.append(write_csv_atomic(folder / "vehicle-regions.csv",
+                                            vehicle_region_columns(results.vehicle_regions)))
         svgs: dict[str, str] = {}
         if draw:
             step(OUTPUT_STAGES[1])
@@ -213,6 +219,8 @@ def figure_names(results: Results) -> tuple[str, ...]:
                        ("campbell", data.campbell)):
         if part is not None:
             names.append(name)
+    if results.vehicle_regions is not None:  # the vehicle's (Omega, gamma) chart
+        names.append("vehicle-regions")
     if results.vehicle is not None:  # a case with [vehicle] only
         from .vehicle import vehicle_figure_names
 
@@ -236,7 +244,8 @@ def make_figures(results: Results, *, names=None) -> dict[str, Figure]:
         By file stem: ``ince-strutt``, ``beam-modes``, ``shell-frequencies-cylinder1``,
         ``shell-frequencies-cylinder2``, ``nodal-patterns``, ``pitch-band-chart`` and,
         when they were computed, ``beam-action-chart`` and ``campbell``; for a case with
-        ``[vehicle]`` also ``vehicle-mode-shapes`` and ``vehicle-unrolled``.
+        ``[vehicle]`` also ``vehicle-mode-shapes`` and ``vehicle-unrolled``; with the
+        vehicle's parametric regions ``vehicle-regions``.
     """
     import matplotlib
 
@@ -247,6 +256,7 @@ def make_figures(results: Results, *, names=None) -> dict[str, Figure]:
     from .plotting.pitch import ince_strutt_chart
     from .plotting.shell import frequency_curves
     from .plotting.stability import campbell_diagram
+    from .vehicle import vehicle_region_figures
 
     data = results.figures
     if data is None:
@@ -266,6 +276,7 @@ def make_figures(results: Results, *, names=None) -> dict[str, Figure]:
         "pitch-band-chart": lambda: plot_band_chart(data.pitch_band_chart),
         "beam-action-chart": lambda: plot_band_chart(data.beam_action_chart),
         "campbell": lambda: campbell_diagram(data.campbell),
+        "vehicle-regions": lambda: vehicle_region_figures(results)["vehicle-regions"],
     }
     figs: dict[str, Figure] = {}
     vehicle = [name for name in wanted if name not in makers]
