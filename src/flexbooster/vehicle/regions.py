@@ -319,7 +319,8 @@ class VehicleRegions:
         family 3); None when not asked for.
     certificates : tuple of StabilityCertificate
         Per harmonic (as ``harmonics``): the all-Omega stability bound of
-        :func:`flexbooster.floquet.stability_certificate` at gamma (empty without damping).
+        :func:`flexbooster.floquet.stability_certificate` at gamma (never certified without
+        damping).
     """
 
     regions: tuple
@@ -579,8 +580,7 @@ def vehicle_regions(
         harmonics.append(h)
         M, C, A, B = h.matrices(gamma)
         Cf = C if zeta > 0.0 else None
-        if zeta > 0.0:
-            certs.append(floquet.stability_certificate(M, Cf, A, B))
+        certs.append(floquet.stability_certificate(M, Cf, A, B))  # none without damping
         found = floquet.instability_regions(M, Cf, A, B, lo, hi, **opts)
         crit = {}
         if found and zeta > 0.0:  # Bolotin sec. 6: the amplitude where the edges meet
