@@ -90,7 +90,8 @@ def main() -> None:
         _, t_s, _ = best_of(lambda M=M, C=C, A=A, B=B, s=sample: growth_rate(M, C, A, B, s), 1)
         t_scan += t_s * n_grid / sample.size
     print(f"scan baseline: spacing {spacing:.3e} rad/s (a third of the narrowest first-order "
-          f"region above the detection floor) -> {n_grid} points per k; extrapolated {t_scan:.3e} s")
+          f"region above the detection floor) -> {n_grid} points per k; extrapolated "
+          f"{t_scan:.3e} s")
     print(f"ratio scan / map = {t_scan / t_map:.3g}  (targets: map < 5 s, ratio >= 50)")
     t_coarse = t_scan * 4000 / n_grid
     print(f"for scale: a 4000-point scan per k (far too coarse to find the regions) would take "
