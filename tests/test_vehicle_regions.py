@@ -33,7 +33,13 @@ import flexbooster
 from flexbooster import floquet
 from flexbooster.model import vehicle_from_case
 from flexbooster.shell_of_revolution import Cone, Cylinder, Vehicle, vehicle_modes
-from flexbooster.vehicle import forced_axial, harmonic_system, vehicle_regions
+from flexbooster.vehicle import (
+    bending_system,
+    follower_flutter_thrust,
+    forced_axial,
+    harmonic_system,
+    vehicle_regions,
+)
 
 STEEL = {"E": 210e9, "nu": 0.3, "rho": 7850.0}
 # default_case.toml: E = 10.5e6 psi, rho = 2.59e-4 lbf s^2/in^4
@@ -472,3 +478,42 @@ def test_forced_axial_bad_input(name, value):
         kw[name] = value
     with pytest.raises(ValueError, match=rf"^{name} = "):
         forced_axial(veh, **kw)
+
+
+# --------------------------------------------------------------------------- k = 1 follower
+
+
+@pytest.mark.parametrize("radius, thickness, tol", [(0.02, 0.001, 2e-3), (0.05, 0.002, 1e-2)],
+                         ids=["L/R=250", "L/R=100"])
+def test_k1_follower_flutter_is_beals(radius, thickness, tol):
+    """k = 1 steady limit (gamma -> 0, zero gimbal gain, no damping): a free-free steel tube
+    (L = 5 m) under a follower end thrust flutters at Beal's 109.69 EI / l^2 (Beal 1965, the
+    Euler-Bernoulli free-free beam; EI = E pi R^3 h).  The shell differs from the beam by
+    terms ~ (R / L)^2 (shear, rotary inertia, the shell's cross-section): tolerance 2e-3 at
+    L/R = 250 (measured 7.7e-4), 1e-2 at L/R = 100 (measured 7.4e-3); 10 basis modes (2 rigid),
+    40 elements."""
+    veh = Vehicle([Cylinder(radius, 5.0, thickness, **STEEL)])
+    EI = STEEL["E"] * np.pi * radius**3 * thickness
+    T = follower_flutter_thrust(veh, thrust_max=200 * EI / 25.0, n_modes=10,
+                                elements_per_segment=40)
+    assert T / (EI / 25.0) == pytest.approx(109.69, rel=tol)
+
+
+def test_k1_bending_system_rigid_modes_and_follower_term():
+    """The k = 1 basis of a free-free tube holds the 2 rigid modes (omega = 0) and the beam's
+    first bending frequency 4.7300^2 sqrt(EI / (m L^4)) (free-free beam, READING-GUIDE sec. 6;
+    tolerance 5e-3 at L/R = 100: shell vs Euler-Bernoulli beam, measured 2.6e-3); the follower
+    term makes A non-symmetric; JSON-ready."""
+    R, L, h = 0.05, 5.0, 0.002
+    veh = Vehicle([Cylinder(R, L, h, **STEEL)])
+    bs = bending_system(veh, F0=1e3, n_modes=6, elements_per_segment=40)
+    EI = STEEL["E"] * np.pi * R**3 * h
+    m = STEEL["rho"] * 2 * np.pi * R * h
+    assert bs.n_rigid == 2 and np.all(bs.omega_unloaded[:2] == 0.0)
+    assert bs.omega_unloaded[2] == pytest.approx(4.730040745**2 * np.sqrt(EI / (m * L**4)),
+                                                 rel=5e-3)
+    M, C, A, B = bs.matrices(0.1)
+    assert np.max(np.abs(A - A.T)) > 1e-6 * np.max(np.abs(A))
+    json.dumps(bs.to_dict())
+    with pytest.raises(ValueError, match="^F0 = "):
+        bending_system(veh, F0=0.0)
