@@ -31,9 +31,11 @@ from scipy.special import mathieu_a, mathieu_b
 
 import flexbooster
 from flexbooster import floquet
+from flexbooster.memo.beam_action import uniform_beam_system
 from flexbooster.model import vehicle_from_case
 from flexbooster.shell_of_revolution import Cone, Cylinder, Vehicle, vehicle_modes
 from flexbooster.vehicle import (
+    bending_regions,
     bending_system,
     follower_flutter_thrust,
     forced_axial,
@@ -517,3 +519,41 @@ def test_k1_bending_system_rigid_modes_and_follower_term():
     json.dumps(bs.to_dict())
     with pytest.raises(ValueError, match="^F0 = "):
         bending_system(veh, F0=0.0)
+
+
+@pytest.mark.slow
+def test_k1_regions_match_the_memo_beam_action_model():
+    """Independent model: the memo's beam-action system of a uniform free-free beam
+    (flexbooster.memo.beam_action.uniform_beam_system: Euler-Bernoulli modes, rigid pitch
+    about the CM, follower thrust turned by the gimbal angle K psi; Beal 1965, memo 4.1-4.2)
+    against the shell's k = 1 system of a slender steel tube (L/R = 250), p = F0 l^2 / EI = 20,
+    K = 0.5, gamma = 0.1, undamped, Omega / omega_1 in 0.25..2.0, first-order regions wider
+    than 1e-3 (relative): the same regions (kind), edges in Omega / omega_1 within 2e-3
+    (shell vs beam; measured 2e-4 for the pitch regions, 1.4e-3 for the second mode), and the
+    rigid pitch frequency^2 = 6 F0 K / (m l) (memo 4.2-1 for the uniform beam) to 1e-3."""
+    R, L, h = 0.02, 5.0, 0.001
+    veh = Vehicle([Cylinder(R, L, h, **STEEL)])
+    EI = STEEL["E"] * np.pi * R**3 * h
+    m = STEEL["rho"] * 2 * np.pi * R * h * L
+    p, K, g = 20.0, 0.5, 0.1
+    F0 = p * EI / L**2
+    bs = bending_system(veh, F0=F0, n_modes=5, gimbal_gain=K, elements_per_segment=40,
+                        damping_ratio=0.0)
+    assert bs.stiffness[0, 0] == pytest.approx(6 * F0 * K / (m * L), rel=1e-3)
+    w1 = bs.omega_unloaded[2]
+    shell = bending_regions(veh, F0=F0, gamma=g, omega_min=0.25 * w1, omega_max=2.0 * w1,
+                            gimbal_gain=K, n_modes=5, elements_per_segment=40,
+                            damping_ratio=0.0, max_order=1)
+    beam_sys = uniform_beam_system(p, K, 3)
+    beam = floquet.instability_regions(np.eye(4), None, beam_sys.A0, -g * beam_sys.B, 0.25,
+                                       2.0, max_order=1)
+
+    def wide(regs, scale):
+        return [(r.kind, r.omega_lo / scale, r.omega_hi / scale) for r in regs
+                if r.width / scale > 1e-3 * r.omega_hi / scale]
+
+    ws, wb = wide(shell, w1), wide(beam, 1.0)
+    assert [k for k, _, _ in ws] == [k for k, _, _ in wb] and len(ws) >= 4
+    for (_, a, b), (_, c, d) in zip(ws, wb, strict=True):
+        assert (a, b) == pytest.approx((c, d), rel=2e-3)
+    assert shell[0].modes[0].type == "rigid-pitch"

@@ -10,7 +10,7 @@ T(t) = F0 (1 - gamma cos Omega t) and returns its parametric instability regions
 """
 
 from .axial import AxialResonance, ForcedAxial, forced_axial
-from .bending import BendingSystem, bending_system, follower_flutter_thrust
+from .bending import BendingSystem, bending_regions, bending_system, follower_flutter_thrust
 from .regions import (
     HarmonicSystem,
     RegionCurve,
@@ -30,6 +30,7 @@ __all__ = [
     "RegionMode",
     "VehicleRegion",
     "VehicleRegions",
+    "bending_regions",
     "bending_system",
     "follower_flutter_thrust",
     "forced_axial",

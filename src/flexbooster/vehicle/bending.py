@@ -17,9 +17,11 @@ non-symmetric (the follower term; Beal 1965, eq. 4 in Galerkin form; Bolotin 196
 follower forces).  At gamma = 0 the steady system of a free-free uniform tube flutters (two
 bending frequencies coalesce) at Beal's T = 109.69 EI / l^2.
 
-Not modelled: the gimbal control K psi (the memo's thrust deflection by the pitch attitude)
-and the parametric region search of this harmonic (its rigid modes are neutral, omega = 0,
-which the floquet toolkit counts as steady instability).
+The gimbal control turns the thrust by K psi further (psi the rigid pitch angle; Tech Memo 104
+eq. 2.2-2): the lateral force is T (beta + K psi).  The parametric regions in Omega are those
+of :func:`flexbooster.floquet.instability_regions` on this system (:func:`bending_regions`)
+with the rigid translation dropped (it does not act back on the others); with zero gimbal
+gain the rigid pitch is neutral (omega = 0), which the toolkit reports as a "steady" region.
 
 References
 ----------
@@ -37,11 +39,14 @@ import numpy as np
 import scipy.linalg
 import scipy.optimize
 
+from .. import floquet
 from ..checks import count, nonnegative, positive
 from ..shell_of_revolution import DEFAULT_ORDER, Vehicle, mesh_vehicle, system_matrices
+from ..shell_of_revolution import vehicle_modes as _vehicle_modes
 from ..shell_of_revolution.assembly import dof_map
+from .regions import RegionMode, VehicleRegion
 
-__all__ = ["BendingSystem", "bending_system", "follower_flutter_thrust"]
+__all__ = ["BendingSystem", "bending_system", "bending_regions", "follower_flutter_thrust"]
 
 
 @dataclass(frozen=True)
@@ -110,7 +115,13 @@ class BendingSystem:
 
 
 def _basis(vehicle, n_modes, supported_forward_end, elements_per_segment, order):
-    """Unloaded k = 1 basis with rigid modes: (w2, Kg per N, y, beta)."""
+    """Unloaded k = 1 basis with rigid modes: (w2, Kg per N, y, beta, psi, n_rigid).
+
+    The rigid pair of eigh (any two M-orthonormal rigid motions) is rotated into the pure
+    rotation (first) and the pure translation (second, beta = 0); psi_j is the rigid pitch
+    angle of basis vector j (beta of the rotation mode, 0 for the others: the elastic modes
+    are M-orthogonal to the rigid ones, memo 4.1.2).
+    """
     mesh = mesh_vehicle(vehicle, elements_per_segment=elements_per_segment, order=order)
     M, K, G = system_matrices(vehicle, 1, prestress_F0=1.0, mesh=mesh,
                               supported_forward_end=supported_forward_end)
@@ -119,18 +130,34 @@ def _basis(vehicle, n_modes, supported_forward_end, elements_per_segment, order)
     w2, V = scipy.linalg.eigh(K, M, subset_by_index=(0, n_modes - 1))
     rigid = np.abs(w2) <= 1e-8 * float(np.max(np.abs(w2)))
     w2 = np.where(rigid, 0.0, w2)
-    full = dof_map(vehicle, mesh, 1).expand(V.T)  # end nodes: global (u_x, v, u_r, chi)
+    dmap = dof_map(vehicle, mesh, 1)
     a0 = mesh.end_nodes[0]
-    y = 0.5 * (full[:, a0 + 2] - full[:, a0 + 1])  # lateral: rigid translation W = 1, V = -1
-    beta = -full[:, a0] / vehicle.segments[0].radius_aft  # u_x = -r beta cos(theta)
+    r_aft = vehicle.segments[0].radius_aft
+
+    def aft(vecs):  # end nodes carry global (u_x, v, u_r, chi)
+        full = dmap.expand(vecs.T)
+        # lateral y: rigid translation W = 1, V = -1; rotation: u_x = -r beta cos(theta)
+        return 0.5 * (full[:, a0 + 2] - full[:, a0 + 1]), -full[:, a0] / r_aft
+
+    y, beta = aft(V)
+    n_rigid = int(np.count_nonzero(rigid))
+    psi = np.zeros(n_modes)
+    if n_rigid == 2 and np.all(rigid[:2]):  # free-free: rotation, translation
+        b = beta[:2]
+        rot = np.array([[b[0], b[1]], [b[1], -b[0]]]) / np.hypot(b[0], b[1])  # orthogonal
+        V = V.copy()
+        V[:, :2] = V[:, :2] @ rot
+        y, beta = aft(V)
+        beta[1] = 0.0  # pure translation (round-off)
+        psi[0] = beta[0]
     kg = V.T @ G @ V
-    return w2, 0.5 * (kg + kg.T), y, beta, int(np.count_nonzero(rigid))
+    return w2, 0.5 * (kg + kg.T), y, beta, psi, n_rigid
 
 
 def bending_system(
     vehicle: Vehicle, *, F0: float, n_modes: int = 12, damping_ratio: float = 0.01,
-    supported_forward_end: bool = False, elements_per_segment: int | tuple | None = None,
-    order: int = DEFAULT_ORDER,
+    gimbal_gain: float = 0.0, supported_forward_end: bool = False,
+    elements_per_segment: int | tuple | None = None, order: int = DEFAULT_ORDER,
 ) -> BendingSystem:
     """The k = 1 periodic system with rigid modes and the follower thrust (module docstring).
 
@@ -144,6 +171,9 @@ def bending_system(
         Basis modes of k = 1, rigid ones included (dimensionless), 2..2000.
     damping_ratio : float
         Modal damping ratio of the elastic basis modes (dimensionless), [0, 1).
+    gimbal_gain : float
+        K (dimensionless), >= 0: the thrust turns by K psi from the aft tangent, psi the
+        rigid pitch angle (Tech Memo 104, eq. 2.2-2).
     supported_forward_end : bool
         Uniform compression F0 reacted at the nose instead of inertia relief.
     elements_per_segment, order
@@ -152,6 +182,8 @@ def bending_system(
     Returns
     -------
     BendingSystem
+        For a free-free vehicle the first basis mode is the rigid rotation and the second the
+        rigid translation (it does not act back on the others: its column of A and B is 0).
 
     References
     ----------
@@ -164,9 +196,12 @@ def bending_system(
     zeta = nonnegative("damping_ratio", damping_ratio)
     if zeta >= 1.0:
         raise ValueError(f"damping_ratio = {damping_ratio!r}: must be in [0, 1)")
-    w2, kg, y, beta, n_rigid = _basis(vehicle, n_modes, supported_forward_end,
-                                      elements_per_segment, order)
-    load = F0 * (kg - np.outer(y, beta))  # prestress + follower lateral force (Beal eq. 4)
+    K = nonnegative("gimbal_gain", gimbal_gain)
+    w2, kg, y, beta, psi, n_rigid = _basis(vehicle, n_modes, supported_forward_end,
+                                           elements_per_segment, order)
+    # prestress + lateral force T (beta + K psi) of the thrust turned from the aft tangent
+    # by the gimbal angle K psi (Beal eq. 4; Tech Memo 104 eq. 2.2-2)
+    load = F0 * (kg - np.outer(y, beta + K * psi))
     omega = np.sqrt(w2)
     return BendingSystem(F0=F0, damping_ratio=zeta, omega_unloaded=omega, n_rigid=n_rigid,
                          aft_lateral=y, aft_rotation=beta, mass=np.eye(n_modes),
@@ -217,8 +252,8 @@ def follower_flutter_thrust(
     rtol = positive("rtol", rtol)
     if rtol > 1e-2:
         raise ValueError(f"rtol = {rtol!r}: must be <= 1e-2")
-    w2, kg, y, beta, _ = _basis(vehicle, n_modes, supported_forward_end, elements_per_segment,
-                                order)
+    w2, kg, y, beta, _, _ = _basis(vehicle, n_modes, supported_forward_end,
+                                   elements_per_segment, order)
     load = kg - np.outer(y, beta)
 
     def excess(T):  # > 0 once a complex pair exists (flutter)
@@ -236,3 +271,94 @@ def follower_flutter_thrust(
                          f"first scan point {thrusts[0]:.6g} N (raise n_scan)")
     return float(scipy.optimize.brentq(excess, thrusts[i - 1], thrusts[i],
                                        xtol=rtol * thrusts[i], maxiter=200))
+
+
+def bending_regions(
+    vehicle: Vehicle, *, F0: float, gamma: float, omega_min: float, omega_max: float,
+    gimbal_gain: float, n_modes: int = 12, damping_ratio: float = 0.01,
+    supported_forward_end: bool = False, elements_per_segment: int | tuple | None = None,
+    order: int = DEFAULT_ORDER, **options,
+) -> tuple:
+    """Parametric instability regions of k = 1 (bending, rigid pitch, gimbaled follower thrust).
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        The vehicle.
+    F0 : float
+        Steady thrust (N), > 0.
+    gamma : float
+        Pulsation amplitude (dimensionless), [0, 1).
+    omega_min, omega_max : float
+        Omega range (rad/s), 0 < omega_min < omega_max.
+    gimbal_gain : float
+        K (dimensionless), >= 0 (0: neutral rigid pitch, reported as a "steady" region).
+    n_modes : int
+        Basis modes of k = 1, rigid ones included (dimensionless), 3..2000.
+    damping_ratio : float
+        Modal damping ratio of the elastic modes (dimensionless), [0, 1) (none on the rigid
+        pitch).
+    supported_forward_end, elements_per_segment, order
+        As :func:`bending_system`.
+    **options
+        Passed to :func:`flexbooster.floquet.instability_regions` (rtol, step_phase,
+        max_order, damping_margin, ...).
+
+    Returns
+    -------
+    tuple of VehicleRegion
+        k = 1 regions sorted by omega_lo; ``modes`` carry the basis mode dominating each steady
+        mode (type "rigid-pitch" for the rigid rotation), ``omega_loaded`` the steady
+        frequency; ``critical_gamma`` from :func:`flexbooster.floquet.critical_amplitude`
+        with damping (0 without).
+
+    References
+    ----------
+    Bolotin (1964), ch. 1-2, sec. 6; Beal (1965); Tech Memo 104, eq. 2.2-2.
+    """
+    gamma = nonnegative("gamma", gamma)
+    if gamma >= 1.0:
+        raise ValueError(f"gamma = {gamma!r}: must be in [0, 1)")
+    n_modes = count("n_modes", n_modes, 3, 2000)
+    bs = bending_system(vehicle, F0=F0, n_modes=n_modes, damping_ratio=damping_ratio,
+                        gimbal_gain=gimbal_gain, supported_forward_end=supported_forward_end,
+                        elements_per_segment=elements_per_segment, order=order)
+    keep = np.ones(n_modes, dtype=bool)
+    if bs.n_rigid == 2:
+        keep[1] = False  # the rigid translation: zero column, it does not act back
+    M, C, A, B = (x[np.ix_(keep, keep)] for x in bs.matrices(gamma))
+    Cf = C if bs.damping_ratio > 0.0 else None
+    found = floquet.instability_regions(M, Cf, A, B, omega_min, omega_max, **options)
+    crit = {}
+    if Cf is not None and any(r.kind != "steady" for r in found):
+        B1 = bs.excitation[np.ix_(keep, keep)]
+        crit = {(c.kind, c.modes, c.order): c.gamma_cr for c in floquet.critical_amplitude(
+            M, Cf, A, B1, gamma_max=gamma, omega_min=omega_min, omega_max=omega_max,
+            **options)}
+    # label each steady mode by the basis vector that dominates it
+    mu, X = np.linalg.eig(A)
+    idx = np.lexsort((mu.imag, mu.real))
+    mu, X = mu[idx], X[:, idx]
+    basis = np.nonzero(keep)[0]
+    dom = basis[np.argmax(np.abs(X), axis=0)]
+    labels = _vehicle_modes(vehicle, k_min=1, k_max=1, n_modes=max(1, n_modes - bs.n_rigid),
+                            supported_forward_end=supported_forward_end,
+                            elements_per_segment=elements_per_segment, order=order)
+
+    def mode(i):
+        j = int(dom[i])
+        rigid = j < bs.n_rigid
+        e = j - bs.n_rigid
+        return RegionMode(k=1, index=int(i), order=0 if rigid else int(labels.order[e]),
+                          type="rigid-pitch" if rigid else str(labels.type[e]),
+                          omega_loaded=float(np.sqrt(max(mu[i].real, 0.0))),
+                          share=float(np.abs(X[j == basis, i][0]) ** 2 /
+                                      np.sum(np.abs(X[:, i]) ** 2)))
+
+    out = [VehicleRegion(k=1, kind=r.kind, order=r.order, modes=tuple(mode(i) for i in r.modes),
+                         omega_lo=r.omega_lo, omega_hi=r.omega_hi,
+                         growth_rate_max=r.growth_rate_max, omega_at_max=r.omega_at_max,
+                         omega_center=r.omega_center,
+                         critical_gamma=float(crit.get((r.kind, r.modes, r.order), 0.0)),
+                         clipped=r.clipped) for r in found]
+    return tuple(sorted(out, key=lambda r: r.omega_lo))
