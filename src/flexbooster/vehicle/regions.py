@@ -200,7 +200,9 @@ class VehicleRegion:
     k : int
         Circumferential wave number (dimensionless).
     kind : str
-        "simple" (Omega near 2 omega_i / j), "sum" ((omega_i + omega_k) / j) or "difference".
+        "simple" (Omega near 2 omega_i / j), "sum" ((omega_i + omega_k) / j) or "difference";
+        "steady" (k = 1 only, :func:`.bending.bending_regions`: the steady system itself is
+        not stable, e.g. the neutral rigid pitch without gimbal gain).
     order : int
         j of the resonance centre (dimensionless; not the meridian order of the modes).
     modes : tuple of RegionMode
