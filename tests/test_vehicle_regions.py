@@ -557,3 +557,20 @@ def test_k1_regions_match_the_memo_beam_action_model():
     for (_, a, b), (_, c, d) in zip(ws, wb, strict=True):
         assert (a, b) == pytest.approx((c, d), rel=2e-3)
     assert shell[0].modes[0].type == "rigid-pitch"
+
+
+def test_k1_no_flutter_below_beal_and_bad_input():
+    """Below Beal's load (thrust_max = 100 EI / l^2 < 109.69 EI / l^2) no flutter: inf;
+    bad input raises ValueError naming the argument."""
+    R, h = 0.05, 0.002
+    veh = Vehicle([Cylinder(R, 5.0, h, **STEEL)])
+    EI = STEEL["E"] * np.pi * R**3 * h
+    assert follower_flutter_thrust(veh, thrust_max=100 * EI / 25.0, n_modes=6,
+                                   elements_per_segment=20) == np.inf
+    for name, value in (("thrust_max", -1.0), ("n_modes", 1), ("n_scan", 1), ("rtol", 0.1)):
+        kw = dict(thrust_max=1e3, n_modes=6, elements_per_segment=20)
+        kw[name] = value
+        with pytest.raises(ValueError, match=rf"^{name} = "):
+            follower_flutter_thrust(veh, **kw)
+    with pytest.raises(ValueError, match="^gimbal_gain = "):
+        bending_system(veh, F0=1.0, gimbal_gain=-1.0)
