@@ -920,7 +920,7 @@ def _key(r) -> tuple:
 
 
 def critical_amplitude(M, C, A, B1, *, gamma_max: float, omega_min: float, omega_max: float,
-                       gamma_rtol: float = 1e-6,
+                       gamma_rtol: float = 1e-6, regions: tuple | None = None,
                        **options) -> tuple[CriticalAmplitude, ...]:
     """Critical amplitude of every region that exists at gamma_max (B = gamma B1).
 
@@ -939,6 +939,9 @@ def critical_amplitude(M, C, A, B1, *, gamma_max: float, omega_min: float, omega
         Omega range (rad per time unit).
     gamma_rtol : float
         Relative tolerance on gamma_cr (dimensionless).
+    regions : tuple of InstabilityRegion, optional
+        The regions at gamma_max from :func:`instability_regions` with the same range and
+        options, if already computed (saves that search; not checked).
     **options
         Passed to :func:`instability_regions`.
 
@@ -956,7 +959,7 @@ def critical_amplitude(M, C, A, B1, *, gamma_max: float, omega_min: float, omega
     opt = _options(**options)
     B1 = np.asarray(B1, dtype=float)
     base = periodic_system(M, C, A, gmax * B1)
-    top = _search(base, lo, hi, opt)
+    top = _search(base, lo, hi, opt) if regions is None else tuple(regions)
     out = []
     for r in top:
         if r.kind == "steady":

@@ -334,7 +334,7 @@ def bending_regions(
         B1 = bs.excitation[np.ix_(keep, keep)]
         crit = {(c.kind, c.modes, c.order): c.gamma_cr for c in floquet.critical_amplitude(
             M, Cf, A, B1, gamma_max=gamma, omega_min=omega_min, omega_max=omega_max,
-            **options)}
+            regions=found, **options)}
     # label each steady mode by the basis vector that dominates it
     mu, X = np.linalg.eig(A)
     idx = np.lexsort((mu.imag, mu.real))

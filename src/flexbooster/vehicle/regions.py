@@ -587,7 +587,8 @@ def vehicle_regions(
         crit = {}
         if found and zeta > 0.0:  # Bolotin sec. 6: the amplitude where the edges meet
             crit = {(c.kind, c.modes, c.order): c.gamma_cr for c in floquet.critical_amplitude(
-                M, Cf, A, h.excitation, gamma_max=gamma, omega_min=lo, omega_max=hi, **opts)}
+                M, Cf, A, h.excitation, gamma_max=gamma, omega_min=lo, omega_max=hi,
+                regions=found, **opts)}
         for r in found:
             key = (r.kind, r.modes, r.order)
             if zeta > 0.0 and key not in crit:
