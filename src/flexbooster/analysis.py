@@ -426,7 +426,8 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
     boundaries : bool
         Also trace the boundary curves in (Omega, gamma) for the chart, at
         :data:`flexbooster.memo.charts.VEHICLE_CHART_LEVELS` levels up to
-        :data:`flexbooster.memo.charts.VEHICLE_CHART_GAMMA_MAX`.  Only the regions that exist at
+        :data:`flexbooster.memo.charts.VEHICLE_CHART_GAMMA_MAX` (or the case's gamma if larger).
+        Only the regions that exist at
         that gamma have curves (:func:`flexbooster.floquet.region_boundaries`), so the curves
         are traced only when a search at that gamma finds one.
 
@@ -461,12 +462,12 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
         vehicle = vehicle_from_case(case)
         try:
             found = vehicle_regions(vehicle, gamma=t.gamma, **settings)
-            if boundaries and vehicle_regions(vehicle, gamma=charts.VEHICLE_CHART_GAMMA_MAX,
-                                              **settings).regions:
+            top = max(charts.VEHICLE_CHART_GAMMA_MAX, t.gamma)  # the chart's largest gamma
+            if boundaries and vehicle_regions(vehicle, gamma=top, **settings).regions:
                 # region_boundaries traces the regions of gamma_max: none there, no curve
                 found = vehicle_regions(vehicle, gamma=t.gamma, boundaries=True,
-                                        gamma_max=charts.VEHICLE_CHART_GAMMA_MAX,
-                                        n_gamma=charts.VEHICLE_CHART_LEVELS, **settings)
+                                        gamma_max=top, n_gamma=charts.VEHICLE_CHART_LEVELS,
+                                        **settings)
         except ValueError as exc:
             if "buckles" in str(exc):
                 raise CaseError("thrust.F0", case.F0, "the steady thrust buckles the vehicle "

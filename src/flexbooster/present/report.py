@@ -132,7 +132,8 @@ FIGURES: dict[str, tuple[str, str]] = {
         "T = F0 (1 - gamma cos Omega t), modal damping) in the plane of the thrust frequency "
         "Omega (Hz) and the pulsation amplitude gamma, traced from their boundaries "
         f"(|rho| = 1) at {VEHICLE_CHART_LEVELS - 1} levels of gamma up to "
-        f"{VEHICLE_CHART_GAMMA_MAX:g} and the tip at the critical gamma; coloured by the largest "
+        f"{VEHICLE_CHART_GAMMA_MAX:g} (or the case's gamma if larger) and the tip at the "
+        "critical gamma; coloured by the largest "
         "growth rate at the case's gamma (dashed; dots: the regions there), grey where the "
         "region does not reach it.",
     ),

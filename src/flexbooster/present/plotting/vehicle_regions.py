@@ -77,7 +77,8 @@ def vehicle_region_chart(regions: VehicleRegions, ax: Axes | None = None) -> Fig
         fig.colorbar(cmap, ax=ax, label="largest growth rate at the case's gamma (1/s)")
     if not regions.curves and not regions.regions:
         ax.text(0.5, 0.5, f"no instability region in the range up to gamma = "
-                f"{VEHICLE_CHART_GAMMA_MAX:g}\n(damping ratio {regions.damping_ratio:g})",
+                f"{max(VEHICLE_CHART_GAMMA_MAX, gamma):g}\n(damping ratio "
+                f"{regions.damping_ratio:g})",
                 transform=ax.transAxes, ha="center", va="center", fontsize=9)
     ks = [h.k for h in regions.harmonics]
     ax.set_xscale("log")
