@@ -205,7 +205,10 @@ def forced_axial(
         raise ValueError(f"F0 = {F0!r}: the steady thrust buckles harmonic k = 0 (load "
                          f"factor lambda = {lam:.6g})")
     omega = np.sqrt(w2)
-    phi = V.T @ ms.aft_axial  # generalised force per unit axial aft load, loaded modes
+    # generalised force per unit axial aft load of the loaded modes; a mode is defined up to
+    # its sign: each is taken with phi_n >= 0 (else the sign depends on round-off, e.g. the
+    # same case in SI and in inch-pound units)
+    phi = np.abs(V.T @ ms.aft_axial)
     labels = _vehicle_modes(vehicle, k_min=0, k_max=0, n_modes=n_modes, **mesh)
     dom = np.argmax(V**2, axis=0)
     forced = phi**2 > MIN_SHARE * float(np.max(phi**2)) if np.any(phi) else np.zeros_like(
