@@ -18,6 +18,7 @@ import numpy as np
 
 from ._threads import blas_threads
 from .case import Case
+from .danger import danger_summary
 from .errors import AnalysisWarning
 from .memo import charts
 from .memo.beam import beam_modes
@@ -199,6 +200,8 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
         stability=table,
         warnings=tuple(_warnings(model, pitch.a, pitch.q) + extra),
         vehicle=vehicle,
+        danger=danger_summary(operating_range=model.omega_range, pitch=pitch,
+                              beam_action=action),
     )
 
 

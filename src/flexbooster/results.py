@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from . import __version__
+from .danger import DangerSummary
 from .errors import AnalysisWarning
 from .memo.beam import BeamModes
 from .memo.beam_action import BeamActionResult
@@ -85,6 +86,10 @@ UNITS: dict[str, str] = {
     "figures.nodal_patterns.radius, half_length": "m",
     "figures.nodal_patterns.hz": "Hz",
     "figures.ince_strutt.*, beam_modes.*": "1",
+    "danger.operating_range, danger.bands.Omega_lo, Omega_hi": "rad/s",
+    "danger.bands.Omega_lo_hz, Omega_hi_hz": "Hz",
+    "danger.bands.growth_rate": "1/s",
+    "danger.bands.severity": "1",
 }
 
 
@@ -122,6 +127,8 @@ class Results:
         Conditions the user must know about.
     vehicle : VehicleSurvey or None
         The vehicle modes (shell of revolution), only for a case with ``[vehicle]``.
+    danger : DangerSummary or None
+        One verdict per mechanism and the ranked unstable bands of Omega (the first screen).
     """
 
     case: Case
@@ -138,6 +145,7 @@ class Results:
     stability: StabilityTable | None = None
     warnings: tuple[AnalysisWarning, ...] = field(default_factory=tuple)
     vehicle: VehicleSurvey | None = None
+    danger: DangerSummary | None = None
 
     @property
     def Omega(self) -> np.ndarray:
@@ -177,6 +185,7 @@ class Results:
             "warnings": [w.to_dict() for w in self.warnings],
             "figures": None if self.figures is None else self.figures.to_dict(),
         }
+        out["danger"] = None if self.danger is None else self.danger.to_dict()
         if self.vehicle is not None:  # only for a case with [vehicle] (units inside)
             out["vehicle_modes"] = self.vehicle.to_dict()
         return out

@@ -11,7 +11,14 @@ import math
 
 from ..results import Results
 
-__all__ = ["Row", "input_rows", "mass_rows", "frequency_rows"]
+__all__ = ["Row", "input_rows", "mass_rows", "frequency_rows", "FIRST_SCREEN_BANDS",
+           "range_text", "verdict_rows", "danger_rows", "DANGER_HEADER"]
+
+#: Bands listed on the first screen (terminal and report); all are in results.json.
+FIRST_SCREEN_BANDS = 8
+#: Column headings of :func:`danger_rows`.
+DANGER_HEADER = ("#", "Omega (rad/s)", "Omega (Hz)", "growth (1/s) / severity",
+                 "in operating range", "mode", "mechanism")
 
 #: (quantity, value, unit): the value is a float, an int or text.
 Row = tuple[str, object, str]
@@ -117,3 +124,69 @@ def frequency_rows(results: Results) -> list[Row]:
         ("Mathieu q over the Omega grid",
          f"{float(results.q.min()):.6g} .. {float(results.q.max()):.6g}", "-"),
     ]
+
+
+def range_text(lo: float, hi: float) -> str:
+    """'lo-hi' with the fewest significant digits (>= 4, <= 10) that tell the edges apart.
+
+    Parameters
+    ----------
+    lo, hi : float
+        Edges (any unit).
+
+    Returns
+    -------
+    str
+    """
+    for digits in range(4, 11):
+        a, b = f"{lo:.{digits}g}", f"{hi:.{digits}g}"
+        if a != b:
+            return f"{a}-{b}"
+    return f"{lo:.10g}"
+
+
+def verdict_rows(results: Results) -> list[tuple[str, str]]:
+    """(mechanism in words, verdict) for each mechanism; "not computed" where absent.
+
+    Parameters
+    ----------
+    results : Results
+        The analysis.
+
+    Returns
+    -------
+    list of (str, str)
+    """
+    if results.danger is None:
+        return [("all mechanisms", "not computed")]
+    return [(words, verdict) for _, words, verdict in results.danger.verdicts]
+
+
+def danger_rows(results: Results, limit: int = FIRST_SCREEN_BANDS) -> list[tuple[str, ...]]:
+    """The most dangerous bands, ranked, as text cells (columns :data:`DANGER_HEADER`).
+
+    Parameters
+    ----------
+    results : Results
+        The analysis.
+    limit : int
+        Rows shown (dimensionless), >= 0.
+
+    Returns
+    -------
+    list of tuple of str
+    """
+    if results.danger is None:
+        return []
+    out = []
+    for n, b in enumerate(results.danger.bands[:limit]):
+        lo_hz, hi_hz = b.hz
+        if b.growth_rate is not None:
+            level = f"{b.growth_rate:.3g}"
+        elif b.severity is not None:
+            level = f"sev. {b.severity:.3g}"
+        else:
+            level = "-"
+        out.append((str(n + 1), range_text(b.Omega_lo, b.Omega_hi), range_text(lo_hz, hi_hz),
+                    level, "yes" if b.in_operating_range else "no", b.mode_text, b.cause_text))
+    return out

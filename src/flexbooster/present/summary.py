@@ -5,14 +5,60 @@ A thin layer: it formats a :class:`~flexbooster.analysis.Results` and computes n
 
 from __future__ import annotations
 
+import textwrap
+
 import numpy as np
+from rich import box
 from rich.console import Console
 from rich.table import Table
 
 from ..results import Results
-from .rows import frequency_rows, input_rows, mass_rows
+from .rows import (
+    danger_rows,
+    frequency_rows,
+    input_rows,
+    mass_rows,
+    verdict_rows,
+)
 
-__all__ = ["print_summary", "print_stability"]
+__all__ = ["print_summary", "print_stability", "print_first_screen", "TERMINAL_BANDS"]
+
+#: Bands listed on the terminal's first screen (the report lists more; all in results.json).
+TERMINAL_BANDS = 5
+
+
+def print_first_screen(results: Results, console: Console) -> None:
+    """The answer first: one verdict per mechanism, the ranked dangerous bands, the warnings.
+
+    Parameters
+    ----------
+    results : Results
+        The analysis.
+    console : rich.console.Console
+        Where to print.
+    """
+    verdicts = Table(title="Verdicts", title_justify="left", box=box.SIMPLE_HEAD,
+                     header_style="bold", pad_edge=False)
+    verdicts.add_column("mechanism", ratio=1)
+    verdicts.add_column("verdict", ratio=2)
+    for words, verdict in verdict_rows(results):
+        style = "red" if verdict.startswith("unstable") else (
+            "green" if verdict.startswith("stable") else "")
+        verdicts.add_row(words, f"[{style}]{verdict}[/{style}]" if style else verdict)
+    console.print(verdicts)
+    rows = danger_rows(results, TERMINAL_BANDS)
+    n_all = 0 if results.danger is None else len(results.danger.bands)
+    if rows:
+        console.print(f"[bold]Most dangerous thrust-frequency bands[/bold] ({len(rows)} of "
+                      f"{n_all}; all in results.json)")
+        console.print(_band_block(rows, console.width), highlight=False, markup=False)
+    elif n_all == 0 and results.danger is not None:
+        console.print("No unstable band in any mechanism computed.")
+    if results.warnings:
+        console.print(f"[bold yellow]Warnings ({len(results.warnings)}; details at the end):"
+                      "[/bold yellow]")
+        for w in results.warnings:
+            console.print(f"  [yellow]warning[/yellow] [{w.code}] {w.field}")
 
 
 def _table(title: str, rows: list[tuple[str, str, str]]) -> Table:
@@ -31,6 +77,30 @@ def _g(x: object) -> str:
     return f"{x:.6g}"
 
 
+def _band_block(rows: list[tuple[str, ...]], width: int) -> str:
+    """Fixed-width text of the ranked bands: numbers in columns never cut, words wrapped."""
+    heads = ("#", "Omega rad/s", "Omega Hz", "growth 1/s", "in range")
+    widths = [max(len(r[i]) for r in [*rows, heads]) for i in range(5)]
+    lead = sum(widths) + 2 * len(widths)
+    below = width - lead < 30  # a narrow terminal: the words on their own line(s)
+    indent = widths[0] + 2 if below else lead
+    text_width = max(20, width - indent - 1)
+
+    def line(cells: tuple[str, ...], text: str) -> list[str]:
+        nums = "  ".join(c.rjust(w) if i < 4 else c.ljust(w)
+                         for i, (c, w) in enumerate(zip(cells, widths, strict=True)))
+        wrapped = textwrap.wrap(text, text_width) or [""]
+        if below:
+            return [nums.rstrip()] + [" " * indent + t for t in wrapped]
+        return [f"{nums}  {wrapped[0]}".rstrip()] + [" " * indent + t for t in wrapped[1:]]
+
+    out = line(heads, "mode; mechanism")
+    out.append("-" * min(width - 1, lead + 72))
+    for r in rows:
+        out += line(r[:5], f"{r[5]}; {r[6]}")
+    return "\n".join(out)
+
+
 def print_summary(results: Results, console: Console | None = None) -> None:
     """Print the summary tables of an analysis.
 
@@ -43,6 +113,7 @@ def print_summary(results: Results, console: Console | None = None) -> None:
     """
     console = console or Console()
     console.print(f"[bold]flexbooster[/bold] - {results.case.name}")
+    print_first_screen(results, console)
     for title, rows in (("Input (SI)", input_rows(results)),
                         ("Mass properties (memo 2.2, Fig. 1; I_cm per erratum E1)",
                          mass_rows(results)),
