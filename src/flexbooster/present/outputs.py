@@ -89,6 +89,7 @@ def write_outputs(
         step(OUTPUT_STAGES[1])
         for name, fig in make_figures(results).items():
             svg, png = _render(fig)
+            svg = _svg_titles(fig, svg)
             svgs[name] = svg
             written.append(write_text_atomic(folder / f"{name}.svg", svg))
             written.append(write_bytes_atomic(folder / f"{name}.png", png))
@@ -139,7 +140,14 @@ def figure_svgs(results: Results) -> dict[str, str]:
     dict of str to str
         Figure name -> SVG document.
     """
-    return {name: _render(fig)[0] for name, fig in make_figures(results).items()}
+    return {name: _svg_titles(fig, _render(fig)[0]) for name, fig in make_figures(results).items()}
+
+
+def _svg_titles(fig, svg: str) -> str:
+    """The SVG with the figure's tooltips (the danger map's ``<title>`` per band), if any."""
+    from .plotting.danger import SVG_TITLES_ATTRIBUTE, add_svg_titles
+
+    return add_svg_titles(svg, getattr(fig, SVG_TITLES_ATTRIBUTE, {}))
 
 
 def make_figures(results: Results) -> dict[str, Figure]:
@@ -153,7 +161,7 @@ def make_figures(results: Results) -> dict[str, Figure]:
     Returns
     -------
     dict of str to matplotlib.figure.Figure
-        By file stem: ``ince-strutt``, ``beam-modes``, ``shell-frequencies-cylinder1``,
+        By file stem: ``danger-map`` (when ``results.danger`` is set), ``ince-strutt``, ``beam-modes``, ``shell-frequencies-cylinder1``,
         ``shell-frequencies-cylinder2``, ``nodal-patterns``, ``pitch-band-chart`` and,
         when they were computed, ``beam-action-chart`` and ``campbell``; for a case with
         ``[vehicle]`` also ``vehicle-mode-shapes`` and ``vehicle-unrolled``.
@@ -171,7 +179,12 @@ def make_figures(results: Results) -> dict[str, Figure]:
     data = results.figures
     if data is None:
         raise ValueError("results.figures: no figure data (the results were not made by analyze)")
-    figs: dict[str, Figure] = {
+    figs: dict[str, Figure] = {}
+    if results.danger is not None:
+        from .plotting.danger import danger_map
+
+        figs["danger-map"] = danger_map(results.danger, omega_1=results.omega_1)
+    figs |= {
         "ince-strutt": ince_strutt_chart(data.ince_strutt),
         "beam-modes": mode_shape_plot(data.beam_modes),
     }
