@@ -193,29 +193,15 @@ def run(case_file: Path | None, output: Path, no_figures: bool, quiet: bool, fmt
     _wrote(paths, fmt, quiet)
 
 
-@cli.command(epilog=_EXIT_CODES)
-@_CASE_ARG
-@click.option("--omega-min", required=True, help='Lowest Omega, e.g. 10 or "2 Hz" (rad/s bare).')
-@click.option("--omega-max", required=True, help="Highest Omega (rad/s if no unit).")
-@_OUTPUT
-@_QUIET
-@_FORMAT
-def stability(
-    case_file: Path | None, omega_min: str, omega_max: str, output: Path, quiet: bool, fmt: str
-) -> None:
-    """Unstable thrust frequencies (memo 7.3) of CASE_FILE for Omega in [OMEGA_MIN, OMEGA_MAX].
+#: Files written by ``flexbooster stability`` (names of its own: never half of a ``run``).
+STABILITY_FILES = ("stability-unstable-frequencies.csv", "stability.json")
 
-    Writes OUTPUT/unstable-frequencies.csv.
 
-    \b
-    Examples:
-      flexbooster stability --omega-min 100 --omega-max "20 Hz"
-      flexbooster stability my.toml --omega-min 5 --omega-max 500 -o out/
-    """
-    from .analysis import STAGES, analyze
+def _case_with_range(case, omega_min: str | None, omega_max: str | None):
+    """The case with --omega-min / --omega-max (when given) as its Omega range; an error
+    names the option, not the case field."""
     from .case import load_case
-    from .present.io import write_csv_atomic
-    from .present.summary import print_stability
+    from .units import to_si
 
     def number(text: str) -> float | str:
         try:
@@ -223,14 +209,67 @@ def stability(
         except ValueError:
             return text
 
-    data = _load(case_file).model_dump(exclude_none=True)
-    data["thrust"].update(omega_min=number(omega_min), omega_max=number(omega_max))
-    case = load_case(data)
+    given = {key: (opt, text) for key, opt, text in (("omega_min", "--omega-min", omega_min),
+                                                      ("omega_max", "--omega-max", omega_max))
+             if text is not None}
+    if not given:
+        return case
+    data = case.model_dump(exclude_none=True)
+    for key, (opt, text) in given.items():
+        data["thrust"][key] = to_si(opt, number(text), "angular_frequency")
+    try:
+        return load_case(data)
+    except CaseError as exc:
+        key = exc.field.removeprefix("thrust.")
+        if key in given:
+            opt, text = given[key]
+            other = "omega_max" if key == "omega_min" else "omega_min"
+            rule = exc.rule.replace(f"thrust.{other}", given.get(other, (f"thrust.{other}",))[0])
+            raise CaseError(opt, text, rule) from None
+        raise
+
+
+@cli.command(epilog=_EXIT_CODES)
+@_CASE_ARG
+@click.option("--omega-min", default=None,
+              help='Lowest Omega, e.g. 10 or "2 Hz" (rad/s bare) [default: the case\'s '
+                   "thrust.omega_min].")
+@click.option("--omega-max", default=None,
+              help="Highest Omega (rad/s if no unit) [default: the case's thrust.omega_max].")
+@_OUTPUT
+@_QUIET
+@_FORMAT
+def stability(
+    case_file: Path | None, omega_min: str | None, omega_max: str | None, output: Path,
+    quiet: bool, fmt: str
+) -> None:
+    """Unstable thrust frequencies (memo 7.3) of CASE_FILE for Omega in [OMEGA_MIN, OMEGA_MAX]
+    (the case's Omega range by default).
+
+    Writes OUTPUT/stability-unstable-frequencies.csv and OUTPUT/stability.json: names of its
+    own, so that it never replaces one half of an earlier `flexbooster run` in the same folder
+    (whose results.json and report.html keep their numbers).
+
+    \b
+    Examples:
+      flexbooster stability                      # the default case's Omega range
+      flexbooster stability --omega-min 100 --omega-max "20 Hz"
+      flexbooster stability my.toml --omega-min 5 --omega-max 500 -o out/
+    """
+    from .analysis import STAGES, analyze
+    from .present.io import write_csv_atomic, write_json_atomic
+    from .present.summary import print_stability
+
+    case = _case_with_range(_load(case_file), omega_min, omega_max)
     with _progress(len(STAGES), quiet) as step:
         results = analyze(case, progress=step)
     _report(results, fmt, quiet, print_stability)
-    path = write_csv_atomic(output / "unstable-frequencies.csv", results.stability.to_columns())
-    _wrote([path], fmt, quiet)
+    if results.stability is None:  # a resource limit: the warning says which
+        raise CaseError("truncation", "stability", "; ".join(w.message for w in results.warnings
+                                                          if w.code == "stability-skipped"))
+    paths = [write_csv_atomic(output / STABILITY_FILES[0], results.stability.to_columns()),
+             write_json_atomic(output / STABILITY_FILES[1], results.to_dict())]
+    _wrote(paths, fmt, quiet)
 
 
 @cli.command(epilog=_EXIT_CODES)

@@ -161,7 +161,8 @@ def make_figures(results: Results) -> dict[str, Figure]:
     Returns
     -------
     dict of str to matplotlib.figure.Figure
-        By file stem: ``danger-map`` (when ``results.danger`` is set), ``ince-strutt``, ``beam-modes``, ``shell-frequencies-cylinder1``,
+        By file stem: ``danger-map`` (when ``results.danger`` is set), ``ince-strutt``,
+        ``beam-modes``, ``shell-frequencies-cylinder1``,
         ``shell-frequencies-cylinder2``, ``nodal-patterns``, ``pitch-band-chart`` and,
         when they were computed, ``beam-action-chart`` and ``campbell``; for a case with
         ``[vehicle]`` also ``vehicle-mode-shapes`` and ``vehicle-unrolled``.
