@@ -10,6 +10,7 @@ import textwrap
 import numpy as np
 from rich import box
 from rich.console import Console
+from rich.markup import escape
 from rich.table import Table
 
 from ..results import Results
@@ -18,6 +19,7 @@ from .rows import (
     frequency_rows,
     input_rows,
     mass_rows,
+    range_text,
     verdict_rows,
 )
 
@@ -58,7 +60,7 @@ def print_first_screen(results: Results, console: Console) -> None:
         console.print(f"[bold yellow]Warnings ({len(results.warnings)}; details at the end):"
                       "[/bold yellow]")
         for w in results.warnings:
-            console.print(f"  [yellow]warning[/yellow] [{w.code}] {w.field}")
+            console.print(f"  [yellow]warning[/yellow] {escape(f'[{w.code}] {w.field}')}")
 
 
 def _table(title: str, rows: list[tuple[str, str, str]]) -> Table:
@@ -132,7 +134,8 @@ def print_summary(results: Results, console: Console | None = None) -> None:
     if results.warnings:
         console.print(f"[bold yellow]Warnings ({len(results.warnings)}):[/bold yellow]")
         for w in results.warnings:
-            console.print(f"  [yellow]warning[/yellow] [{w.code}] {w.field}: {w.message}")
+            console.print(f"  [yellow]warning[/yellow] "
+                          f"{escape(f'[{w.code}] {w.field}: {w.message}')}")
     else:
         console.print("No warnings.")
 
@@ -154,7 +157,7 @@ def _print_beam_and_pitch(results: Results, console: Console) -> None:
     p = results.pitch
     rows = [
         ("verdict", p.verdict, ""),
-        ("max growth rate of psi", _g(p.max_growth_rate), "1/s"),
+        ("max growth rate of psi", _g(p.max_growth_rate) if p.bands else "-", "1/s"),
         ("beta (exact) over the grid", f"{_g(p.beta_real.min())} .. {_g(p.beta_real.max())}", "-"),
         (
             "|beta memo (4.2-9, E4) - exact|, max",
@@ -162,11 +165,10 @@ def _print_beam_and_pitch(results: Results, console: Console) -> None:
             "-",
         ),
     ]
-    rows += [
-        ("unstable band (exact edges)",
-         f"{_g(b.omega_lo)} .. {_g(b.omega_hi)}; growth {_g(b.growth_rate_max)} 1/s", "rad/s")
-        for b in p.bands[:5]
-    ]
+    for b in p.bands[:5]:
+        rows += [(f"tongue {b.tongue}: Omega (exact edges)", range_text(b.omega_lo, b.omega_hi),
+                  "rad/s"),
+                 (f"tongue {b.tongue}: growth rate", _g(b.growth_rate_max), "1/s")]
     console.print(_table("Rigid-body pitch (memo 4.2, Floquet exponent)", rows))
 
 
@@ -176,13 +178,10 @@ def _print_shell(results: Results, console: Console) -> None:
     for d in (1, 2):
         mask = sh.cylinder == d
         i = int(np.flatnonzero(mask)[np.argmin(sh.hz[mask])])
-        rows.append(
-            (
-                f"cylinder {d}: lowest (j, k, m, type)",
-                f"{_g(sh.hz[i])} Hz ({sh.j[i]}, {sh.k[i]}, {sh.branch[i]}, {sh.mode_type[i]})",
-                f"{_g(sh.omega_bar[i])} omega_1",
-            )
-        )
+        rows.append((f"cylinder {d}: lowest frequency", _g(sh.hz[i]), "Hz"))
+        rows.append((f"cylinder {d}: its (j, k, m, type)",
+                     f"{sh.j[i]}, {sh.k[i]}, {sh.branch[i]}, {sh.mode_type[i]}", "-"))
+        rows.append((f"cylinder {d}: its omega_bar", _g(sh.omega_bar[i]), "omega_1"))
         rows.append((f"cylinder {d}: frequencies computed", str(int(mask.sum())), ""))
     title = f"Shell natural frequencies (memo 5.4, 6.2; method {sh.method}; all in the CSV)"
     console.print(_table(title, rows))
@@ -195,17 +194,12 @@ def _print_beam_action(results: Results, console: Console) -> None:
         return
     rows = [
         ("verdict", ba.verdict, ""),
-        ("max growth rate", _g(ba.max_growth_rate), "1/s"),
+        ("max growth rate", _g(ba.max_growth_rate) if ba.bands else "-", "1/s"),
         ("steady thrust P l^2 / EI (flutter at 109.69)", _g(ba.p), "-"),
         ("Hill vs monodromy exponents, max difference", _g(ba.hill_monodromy_difference), "-"),
         ("instability bands in the range", str(len(ba.bands)), ""),
     ]
-    top = sorted(ba.bands, key=lambda b: -b.growth_rate_max)[:5]
-    rows += [
-        (f"band {b.kind} {'+'.join(str(m) for m in b.modes)} j={b.order}",
-         f"{_g(b.omega_lo)} .. {_g(b.omega_hi)}; growth {_g(b.growth_rate_max)} 1/s", "rad/s")
-        for b in top
-    ]
+    rows.append(("the bands", "see the ranked table at the top", ""))
     rows += [
         (
             f"alpha_{r + 1} Omega_bar at gamma -> 0 (loaded frequency)",
@@ -238,22 +232,18 @@ def print_stability(results: Results, console: Console) -> None:
         ),
         title_justify="left",
         header_style="bold",
+        box=box.SIMPLE_HEAD,
+        pad_edge=False,
     )
-    for col in (
-        "Omega rad/s",
-        "Hz",
-        "Omega/omega_1",
-        "family (eq.)",
-        "d",
-        "j",
-        "k",
-        "m",
-        "i,p,r,s",
-        "shell Hz",
-    ):
-        table.add_column(col, justify="right")
+    wide = console.width >= 100  # Omega/omega_1 only where it fits (it is in the CSV)
+    cols = ["Omega rad/s", "Hz", "Omega/omega_1", "family (eq.)", "d", "j", "k", "m", "i,p,r,s",
+            "shell Hz"]
+    if not wide:
+        cols.remove("Omega/omega_1")
+    for col in cols:  # numbers never cut: columns not wrapped
+        table.add_column(col, justify="right", no_wrap=True)
     for n in np.flatnonzero(st.active)[:15]:
-        table.add_row(
+        cells = [
             _g(st.Omega[n]),
             _g(st.Omega[n] / (2 * np.pi)),
             _g(st.Omega_bar[n]),
@@ -264,5 +254,8 @@ def print_stability(results: Results, console: Console) -> None:
             str(st.branch[n]),
             f"{st.i[n]},{st.p[n]},{st.r[n]},{st.s[n]}",
             _g(st.shell_omega_bar[n] * st.omega_1 / (2 * np.pi)),
-        )
+        ]
+        if not wide:
+            del cells[2]
+        table.add_row(*cells)
     console.print(table)
