@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import re
 import subprocess
 import sys
 
@@ -297,3 +298,51 @@ def test_stability_never_replaces_half_of_a_run(tmp_path, capsys):
     # the default range is the case's: the same table as the run's (same equations, range)
     assert (after["stability-unstable-frequencies.csv"]
             == before["unstable-frequencies.csv"])
+
+
+@pytest.mark.slow
+def test_simulate_time_as_a_quantity_quiet_and_json(tmp_path, capsys):
+    # issue 17: --t-max "T s" is tau_max = omega_1 T (memo 3.0): the same time histories as
+    # --tau-max omega_1 T (to the CSV's printed digits); --quiet prints nothing; --format json
+    # prints simulation.json and nothing else on standard output
+    from flexbooster.case import default_case
+    from flexbooster.model import model_from_case
+
+    omega_1 = model_from_case(default_case()).omega_1
+    base = ["simulate", "--omega", "300", "--n-out", "11"]
+    assert run_cli([*base, "--t-max", "40 ms", "-q", "-o", str(tmp_path / "a")]) == 0
+    assert capsys.readouterr() == ("", "")
+    assert run_cli([*base, "--tau-max", repr(0.04 * omega_1), "--format", "json",
+                    "-o", str(tmp_path / "b")]) == 0
+    out, err = capsys.readouterr()
+    assert json.loads(out) == json.loads((tmp_path / "b" / "simulation.json").read_text())
+    assert "wrote" in err
+    a = (tmp_path / "a" / "time-histories.csv").read_text()
+    b = (tmp_path / "b" / "time-histories.csv").read_text()
+    assert a == b
+
+
+@pytest.mark.parametrize(
+    ("extra", "line"),
+    [
+        pytest.param([], "--t-max/--tau-max = 'neither': give exactly one: --t-max \"2 s\" "
+                     "(a time) or --tau-max 50 (tau = omega_1 t)", id="neither"),
+        pytest.param(["--t-max", "2 m"], "--t-max = '2 m': wrong dimension: expected units "
+                     "of s", id="t-max-dimension"),
+        pytest.param(["--t-max", "-1"], "--t-max = '-1': must be a positive time (s if no "
+                     "unit)", id="t-max-negative"),
+    ],
+)
+def test_simulate_time_errors(capsys, extra, line):
+    # expected lines: issue 17 (time as a quantity, the option named)
+    assert run_cli(["simulate", "--omega", "300", *extra]) == 2
+    assert capsys.readouterr().err.strip() == f"flexbooster: error: {line}"
+
+
+def test_simulate_prints_a_verdict_per_mode(tmp_path, capsys):
+    assert run_cli(["simulate", "--omega", "300", "--tau-max", "5", "--n-out", "21",
+                    "-o", str(tmp_path)]) == 0
+    out = capsys.readouterr().out
+    assert "modal coordinates growing over the window" in out
+    assert re.search(r"cylinder \d (axial|circumferential|radial) [UVW], j = \d+, k = \d+: "
+                     r"(growing|bounded) \(peak ", out)

@@ -30,6 +30,7 @@ SI_UNITS: dict[str, str] = {
     "force": "N",
     "force_per_length": "N/m",
     "angular_frequency": "rad/s",
+    "time": "s",
     "dimensionless": "",
 }
 

@@ -186,7 +186,7 @@ def make_figures(results: Results) -> dict[str, Figure]:
 
         figs["danger-map"] = danger_map(results.danger, omega_1=results.omega_1)
     figs |= {
-        "ince-strutt": ince_strutt_chart(data.ince_strutt),
+        "ince-strutt": ince_strutt_chart(data.ince_strutt, Omega=results.pitch.Omega),
         "beam-modes": mode_shape_plot(data.beam_modes),
     }
     for d in (1, 2):

@@ -128,8 +128,10 @@ FIGURES: dict[str, tuple[str, str]] = {
     ),
     "campbell": (
         "campbell",
-        "Excitation curves of memo 7.3 against the thrust frequency, shell frequencies as grey "
-        "horizontal lines; filled red: roots with active forcing, open: listed roots.",
+        "Excitation curves of memo 7.3 against the thrust frequency (Hz, logarithmic; "
+        "Omega/omega_1 on top), one colour per family; thin grey lines: the shell frequencies "
+        "on which a root with active forcing lies; red points: the roots with active forcing "
+        "(the listed roots without forcing are in unstable-frequencies.csv, not drawn).",
     ),
 }
 
