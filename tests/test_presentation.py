@@ -129,3 +129,31 @@ def test_danger_map_tooltips_and_axes(results):
     lo, hi = (v / (2 * 3.141592653589793) for v in results.danger.operating_range)
     x0, x1 = ax.get_xlim()
     assert x0 < lo and x1 > hi  # the operating range is inside the axis
+
+
+def test_us_units_beside_si(results):
+    # [output] units = "US": the inch-pound value beside SI; exact conversions
+    # (1 in = 0.0254 m, 1 lbf = 4.4482216152605 N: NIST SP 811 appendix B), 6 digits
+    from flexbooster.case import load_case
+    from flexbooster.present.rows import input_rows
+
+    data = results.case.model_dump(exclude_none=True)
+    data["output"] = {"units": "US"}
+    us = dataclasses.replace(results, case=load_case(data))
+    rows = {q: (v, u) for q, v, u in input_rows(us)}
+    assert rows["cylinder 1 (aft) radius R1"] == (f"5.05 ({5.05 / 0.0254:.6g} in)", "m")
+    assert rows["steady thrust F0"] == (f"2.8e+06 ({2.8e6 / 4.4482216152605:.6g} lbf)", "N")
+    assert rows["Poisson's ratio nu"] == (0.33, "-")  # no US unit: unchanged
+    assert "inch-pound" in render_report(us) and "inch-pound" not in render_report(results)
+    # the SI default leaves results.json's case as it was (no "output" key)
+    assert "output" not in results.case.to_si_dict()
+
+
+def test_output_units_error_line(case_dict):
+    from flexbooster.case import load_case
+    from flexbooster.errors import CaseError
+
+    case_dict["output"] = {"units": "SU"}
+    with pytest.raises(CaseError) as info:
+        load_case(case_dict)
+    assert str(info.value) == "output.units = 'SU': must be 'SI' or 'US'"

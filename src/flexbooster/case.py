@@ -17,7 +17,7 @@ import tomllib
 from collections.abc import Mapping
 from importlib import resources
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal
 
 import numpy as np
 from pydantic import BaseModel, ConfigDict, StrictInt, ValidationError, field_validator
@@ -32,6 +32,7 @@ __all__ = [
     "Thrust",
     "Truncation",
     "Damping",
+    "Output",
     "Case",
     "MAX_MODES",
     "load_case",
@@ -243,6 +244,20 @@ class Damping(BaseModel):
         return result
 
 
+class Output(BaseModel):
+    """How the summary and the report show values (``[output]``).
+
+    Attributes
+    ----------
+    units : str
+        ``"SI"`` (default): SI only; ``"US"``: the inputs and mass properties also in
+        inch-pound units (in, psi, lbf, lb, ...) beside SI.  The analysis is SI either way.
+    """
+
+    model_config = _FROZEN
+    units: Literal["SI", "US"] = "SI"
+
+
 class Case(BaseModel):
     """A validated analysis case, all values in SI.
 
@@ -258,6 +273,8 @@ class Case(BaseModel):
     vehicle : VehicleTable or None
         The optional ``[vehicle]`` table (:mod:`flexbooster.vehicle_case`); None: the memo
         vehicle built from ``booster`` is used by ``flexbooster modes`` only.
+    output : Output
+        Optional ``[output]``: ``units = "SI" | "US"`` of the summary and report.
     """
 
     model_config = _FROZEN
@@ -267,6 +284,7 @@ class Case(BaseModel):
     truncation: Truncation = Truncation()
     damping: Damping = Damping()
     vehicle: VehicleTable | None = None
+    output: Output = Output()
 
     @property
     def F0(self) -> float:
@@ -294,6 +312,8 @@ class Case(BaseModel):
         data["thrust"]["T0"] = self.T0
         if data.get("vehicle") is None:  # no [vehicle]: results.json as before
             data.pop("vehicle", None)
+        if data.get("output") == {"units": "SI"}:  # the default [output]: as before
+            data.pop("output", None)
         return data
 
 
@@ -364,7 +384,9 @@ def _from_validation_error(exc: ValidationError) -> CaseError:
     if isinstance(inner, CaseError):  # from to_si: the value once, its rule
         return CaseError(field, inner.value, inner.rule)
     message = err["msg"].removeprefix("Value error, ")
-    if kind in ("int_type", "int_from_float", "int_parsing"):
+    if kind == "literal_error":
+        message = f"must be {(err.get('ctx') or {}).get('expected', 'one of the choices')}"
+    elif kind in ("int_type", "int_from_float", "int_parsing"):
         message = "must be a whole number (integer)"
     elif kind == "model_type":
         message = "must be a table"

@@ -539,6 +539,14 @@ def _summary(results: Results) -> str:
     return _table(("result", "value"), rows, (False, False))
 
 
+def _units_note(case) -> str:
+    output = getattr(case, "output", None)
+    if output is not None and output.units == "US":
+        return ("All quantities in SI units; the inputs and mass properties also in inch-pound "
+                "units (in brackets), as the case asks ([output] units = \"US\").")
+    return "All quantities in SI units."
+
+
 def _source_date() -> str:
     """", YYYY-MM-DD HH:MM:SS UTC" from SOURCE_DATE_EPOCH, or "" (no time stamp)."""
     value = os.environ.get("SOURCE_DATE_EPOCH", "").strip()
@@ -599,7 +607,7 @@ def render_report(results: Results, svgs: Mapping[str, str] | None = None,
         f"<header><h1>{_e(title)}</h1>",
         f'<p class="note">flexbooster {_e(__version__)}{_e(stamp)}. Dynamic stability '
         "of a flexible two-cylinder booster under a gimbaled, pulsating thrust (Tech Memo 104). "
-        "All quantities in SI units.</p>",
+        f"{_units_note(case)}</p>",
         "<nav><ol>",
         *[f'<li><a href="#{sid}">{_e(name)}</a></li>' for sid, name in sections],
         "</ol></nav></header><main>",

@@ -11,8 +11,8 @@ import math
 
 from ..results import Results
 
-__all__ = ["Row", "input_rows", "mass_rows", "frequency_rows", "FIRST_SCREEN_BANDS",
-           "range_text", "verdict_rows", "danger_rows", "DANGER_HEADER"]
+__all__ = ["Row", "input_rows", "with_us_units", "mass_rows", "frequency_rows",
+           "FIRST_SCREEN_BANDS", "range_text", "verdict_rows", "danger_rows", "DANGER_HEADER"]
 
 #: Bands listed on the first screen (terminal and report); all are in results.json.
 FIRST_SCREEN_BANDS = 8
@@ -62,7 +62,36 @@ def input_rows(results: Results) -> list[Row]:
     if damping is not None:
         rows.append(("damping ratio: beam modes / rigid-body pitch",
                      f"{damping.beam_modal_ratio:g} / {damping.pitch_ratio:g}", "-"))
-    return rows
+    return with_us_units(results, rows)
+
+
+def with_us_units(results: Results, rows: list[Row]) -> list[Row]:
+    """The rows with the inch-pound value beside SI when the case asks ``[output] units =
+    "US"`` ("5.05 (198.819 in)"); unchanged otherwise or for units without a US counterpart.
+
+    Parameters
+    ----------
+    results : Results
+        The analysis (its ``case.output.units``).
+    rows : list of (str, object, str)
+        Quantity / value / SI unit rows.
+
+    Returns
+    -------
+    list of (str, object, str)
+    """
+    output = getattr(results.case, "output", None)
+    if output is None or output.units != "US":
+        return rows
+    from ..units import to_us
+
+    out: list[Row] = []
+    for quantity, value, unit in rows:
+        us = to_us(value, unit) if isinstance(value, float) else None
+        if us is not None:
+            value = f"{value:.6g} ({us[0]:.6g} {us[1]})"
+        out.append((quantity, value, unit))
+    return out
 
 
 def mass_rows(results: Results) -> list[Row]:
@@ -82,7 +111,7 @@ def mass_rows(results: Results) -> list[Row]:
     def g(x: float) -> str:
         return f"{x:.6g}"
 
-    return [
+    rows: list[Row] = [
         ("half-length of the booster L = L1 + L2", m.L, "m"),
         ("mass of cylinder 1 / cylinder 2", f"{g(m.m1)} / {g(m.m2)}", "kg"),
         ("total mass", m.mass, "kg"),
@@ -93,6 +122,7 @@ def mass_rows(results: Results) -> list[Row]:
          " / ".join(g(v) for v in (m.a, m.c, m.b)), "-"),
         ("pitch moment of inertia about the CM, I_cm (erratum E1)", m.I_cm, "kg m^2"),
     ]
+    return with_us_units(results, rows)
 
 
 def frequency_rows(results: Results) -> list[Row]:
