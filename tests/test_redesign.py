@@ -79,7 +79,8 @@ def test_results_equal_the_baseline_before_the_redesign(name):
         old.pop(key)
     diffs = list(_diff(old, new))
     assert not diffs, f"{len(diffs)} values changed, e.g. {diffs[:3]}"
-    assert set(new) - set(old) - {"flexbooster_version", "units"} == {"figures"}
+    # added keys: figures (issue 11), danger (issue 17: the ranked bands)
+    assert set(new) - set(old) - {"flexbooster_version", "units"} == {"figures", "danger"}
 
 
 def _solver_modules():
@@ -110,6 +111,7 @@ def test_every_figure_is_drawn_from_the_results_alone(monkeypatch):
     svgs = figure_svgs(results)
     assert set(svgs) == {"ince-strutt", "beam-modes", "shell-frequencies-cylinder1",
                          "shell-frequencies-cylinder2", "nodal-patterns",
-                         "pitch-band-chart", "beam-action-chart", "campbell"}
+                         "pitch-band-chart", "beam-action-chart", "campbell",
+                         "danger-map"}
     html = render_report(results, svgs)
     assert "<svg" in html
