@@ -22,7 +22,8 @@ from matplotlib.figure import Figure
 
 from ...danger import DangerBand, DangerSummary
 
-__all__ = ["danger_map", "band_tooltip", "add_svg_titles", "SVG_TITLES_ATTRIBUTE"]
+__all__ = ["danger_map", "band_tooltip", "add_svg_titles", "plain_log_ticks",
+           "SVG_TITLES_ATTRIBUTE"]
 
 #: Attribute of the figure holding {group id: tooltip text} for :func:`add_svg_titles`.
 SVG_TITLES_ATTRIBUTE = "flexbooster_svg_titles"
@@ -51,6 +52,25 @@ def band_tooltip(rank: int, band: DangerBand) -> str:
     return (f"#{rank}: Omega {band.Omega_lo:.6g}-{band.Omega_hi:.6g} rad/s "
             f"({lo_hz:.6g}-{hi_hz:.6g} Hz); {level}; {band.mode_text}; {band.cause_text}; "
             f"{where}")
+
+
+def plain_log_ticks(axis) -> None:
+    """Plain numbers ("0.5", "10", "200") on a logarithmic axis, no minor labels.
+
+    Parameters
+    ----------
+    axis : matplotlib.axis.Axis
+        E.g. ``ax.xaxis`` of an axes with a log scale.
+
+    Notes
+    -----
+    Easier to read than 10^n and faster to draw (no mathtext layout).
+    """
+    from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
+
+    axis.set_major_locator(LogLocator(base=10.0, subs=(1.0, 2.0, 5.0)))
+    axis.set_major_formatter(FuncFormatter(lambda v, _pos: f"{v:g}"))
+    axis.set_minor_formatter(NullFormatter())
 
 
 def danger_map(danger: DangerSummary, *, omega_1: float | None = None,
@@ -146,6 +166,8 @@ def danger_map(danger: DangerSummary, *, omega_1: float | None = None,
         w1_hz = omega_1 * to_hz
         sec = ax.secondary_xaxis("top", functions=(lambda f: f / w1_hz, lambda r: r * w1_hz))
         sec.set_xlabel("Omega / omega_1")
+        plain_log_ticks(sec.xaxis)
+    plain_log_ticks(ax.xaxis)
     ax.legend(loc="upper left", fontsize=8, framealpha=0.9)
     ax.set_title("Danger map: unstable thrust-frequency bands, all mechanisms", fontsize=10)
     setattr(fig, SVG_TITLES_ATTRIBUTE, titles)

@@ -7,6 +7,7 @@ from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
 
 from ...memo.charts import CampbellData
+from .danger import plain_log_ticks
 
 __all__ = ["campbell_diagram"]
 
@@ -66,8 +67,8 @@ def campbell_diagram(data: CampbellData, ax=None, *, significant=None) -> Figure
                                      label="shell frequency with a root"))
     for fam, (label, colour) in _STYLE.items():
         for n, c in enumerate(np.flatnonzero(data.family == fam)):
-            ax.plot(x, data.curves[c] * hz, color=colour, lw=0.9, alpha=0.85,
-                    label=label if n == 0 else None)
+            y = np.where(data.curves[c] > 0.0, data.curves[c], np.nan) * hz  # log axis
+            ax.plot(x, y, color=colour, lw=0.9, alpha=0.85, label=label if n == 0 else None)
     if roots_x.size:
         ax.plot(roots_x, roots_y, "o", ms=2.5, color="crimson", zorder=3,
                 label=f"root with active forcing ({roots_x.size} of {mask.size})"
@@ -80,6 +81,8 @@ def campbell_diagram(data: CampbellData, ax=None, *, significant=None) -> Figure
     ax.set_ylabel("excitation / shell frequency (Hz)")
     sec = ax.secondary_xaxis("top", functions=(lambda f: f / hz, lambda r: r * hz))
     sec.set_xlabel("Omega / omega_1")
+    for axis in (ax.xaxis, ax.yaxis, sec.xaxis):
+        plain_log_ticks(axis)
     ax.set_title("Campbell diagram: excitations (memo 7.3, family numbers) and shell modes",
                  fontsize=10)
     ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize="small",
