@@ -193,9 +193,11 @@ def make_figures(results: Results) -> dict[str, Figure]:
         figs[f"shell-frequencies-cylinder{d}"] = frequency_curves(results.shell, d)
     figs["nodal-patterns"] = nodal_patterns(data.nodal_patterns)
     if data.pitch_band_chart is not None:
-        figs["pitch-band-chart"] = plot_band_chart(data.pitch_band_chart)
+        figs["pitch-band-chart"] = plot_band_chart(data.pitch_band_chart,
+                                                   omega_1=results.omega_1)
     if data.beam_action_chart is not None:
-        figs["beam-action-chart"] = plot_band_chart(data.beam_action_chart)
+        figs["beam-action-chart"] = plot_band_chart(data.beam_action_chart,
+                                                    omega_1=results.omega_1)
     if data.campbell is not None:
         figs["campbell"] = campbell_diagram(data.campbell)
     if results.vehicle is not None:  # a case with [vehicle] only
