@@ -109,6 +109,11 @@ def test_maximum_of_nothing_is_a_dash_and_round_off_is_zero(results):
     from flexbooster.present.report import _fmt
 
     assert _fmt(ROUND_OFF / 10) == "0" and _fmt(-3e-17) == "0" and _fmt(2.5e-11) == "2.5e-11"
+    from flexbooster.present.summary import _g
+
+    assert _g(-3e-17) == "0" and _g(2.5e-11) == "2.5e-11"  # the terminal alike
+    text = _summary_text(results, 160)
+    assert re.search(r"max growth rate of psi\s+.\s+-\s", text)  # stable pitch: "-"
 
 
 @pytest.mark.slow

@@ -36,6 +36,7 @@ from .io import write_text_atomic
 from .rows import (
     DANGER_HEADER,
     FIRST_SCREEN_BANDS,
+    ROUND_OFF,
     danger_rows,
     frequency_rows,
     input_rows,
@@ -213,9 +214,6 @@ figure svg{max-height:22cm}
 @page{size:A4;margin:15mm}
 }
 """
-#: A value smaller than this in magnitude is round-off and shown as 0 (the unit's scale is
-#: SI; no quantity of the report is physically this small).
-ROUND_OFF = 1e-14
 
 
 def _fmt(x: object, digits: int = 6) -> str:

@@ -11,9 +11,12 @@ import math
 
 from ..results import Results
 
-__all__ = ["Row", "input_rows", "with_us_units", "mass_rows", "frequency_rows",
+__all__ = ["Row", "ROUND_OFF", "input_rows", "with_us_units", "mass_rows", "frequency_rows",
            "FIRST_SCREEN_BANDS", "range_text", "verdict_rows", "danger_rows", "DANGER_HEADER"]
 
+#: A value smaller than this in magnitude is round-off and shown as 0 by the summary and the
+#: report (values are SI; no quantity they show is physically this small).
+ROUND_OFF = 1e-14
 #: Bands listed on the first screen (terminal and report); all are in results.json.
 FIRST_SCREEN_BANDS = 8
 #: Column headings of :func:`danger_rows`.

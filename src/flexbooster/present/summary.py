@@ -15,6 +15,7 @@ from rich.table import Table
 
 from ..results import Results
 from .rows import (
+    ROUND_OFF,
     danger_rows,
     frequency_rows,
     input_rows,
@@ -76,6 +77,8 @@ def _table(title: str, rows: list[tuple[str, str, str]]) -> Table:
 def _g(x: object) -> str:
     if isinstance(x, int):
         return str(x)
+    if abs(x) < ROUND_OFF:  # round-off shown as 0, as in the report
+        return "0"
     return f"{x:.6g}"
 
 
