@@ -174,3 +174,19 @@ def test_default_case_top_band_is_the_beam_action_maximum(default_results):
     assert len(r.danger.bands) == len(r.pitch.bands) + len(r.beam_action.bands)
     assert json.loads(json.dumps(r.to_dict()["danger"]))["bands"][0]["mechanism"] == \
         "beam_action"
+
+
+def test_vehicle_region_adapter_describes_the_region():
+    # flexbooster.vehicle.VehicleRegion (issue 15): harmonic k, kind, order j and the loaded
+    # modes' type and meridian order in the words; the fields copied exactly
+    from flexbooster.vehicle.regions import RegionMode, VehicleRegion
+
+    modes = (RegionMode(k=2, index=0, order=1, type="radial", omega_loaded=50.0, share=0.9),
+             RegionMode(k=2, index=1, order=2, type="axial", omega_loaded=70.0, share=0.8))
+    region = VehicleRegion(k=2, kind="sum", order=1, modes=modes, omega_lo=60.0, omega_hi=61.0,
+                           growth_rate_max=0.3, omega_at_max=60.5, omega_center=60.0,
+                           critical_gamma=0.0)
+    (d,) = danger_bands(operating_range=OPERATING, vehicle_regions=[region])
+    assert (d.mechanism, d.Omega_lo, d.Omega_hi, d.growth_rate) == ("vehicle", 60.0, 61.0, 0.3)
+    assert d.mode_text == "k = 2: radial 1 + axial 2"
+    assert d.cause_text == "instability region (sum combination, order 1; vehicle model)"

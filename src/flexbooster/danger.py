@@ -12,7 +12,9 @@ Sources (each optional, ``None`` when not computed):
   parametric resonances of the gimbaled beam, memo 4.1);
 * ``vehicle_regions`` -- any sequence of objects with ``Omega_lo``, ``Omega_hi`` (rad/s) and
   ``growth_rate_max`` (1/s), optionally ``label`` / ``mode`` (text, e.g. "k = 2, modes 1+3"):
-  the instability regions of the vehicle model (issue 15);
+  the instability regions of the vehicle model (issue 15); a
+  :class:`flexbooster.vehicle.VehicleRegion` (``k``, ``kind``, ``order``, ``modes`` with
+  ``type`` and ``order``) is described from those fields;
 * ``resonance_bands`` -- any sequence of objects with ``Omega_lo``, ``Omega_hi`` (rad/s) and
   ``severity`` (dimensionless, > 0), optionally ``growth_rate_max`` (1/s) and ``label`` /
   ``family``: the resonances (secular roots) of memo 7.3 (issue 13).
@@ -183,11 +185,22 @@ def _generic(items: Sequence, source: str, mechanism: str, operating,
         if not need_severity and growth is None:
             raise ValueError(f"{source}[{n}] = {item!r}: needs growth_rate_max (1/s)")
         mode = str(_attr(item, "mode_text", "mode", "label", default="-"))
+        kind = getattr(item, "kind", None)
+        if mechanism == "vehicle" and kind is not None and hasattr(item, "k"):
+            # flexbooster.vehicle.VehicleRegion: harmonic k, loaded modes, kind and order j
+            modes = " + ".join(f"{getattr(m, 'type', 'mode')} {getattr(m, 'order', '')}".strip()
+                               for m in getattr(item, "modes", ()))
+            mode = f"k = {item.k}" + (f": {modes}" if modes else "")
+            item_cause = (f"instability region ({_KIND_WORDS.get(kind, kind)}, order "
+                          f"{getattr(item, 'order', '?')}; vehicle model)")
+        else:
+            item_cause = None
         if mechanism == "resonance":
             family = _attr(item, "family", "cause_text")
             cause = "resonance (memo 7)" + (f": {family}" if family is not None else "")
         else:
-            cause = str(_attr(item, "cause_text", default="instability region (vehicle model)"))
+            cause = item_cause or str(_attr(item, "cause_text",
+                                            default="instability region (vehicle model)"))
         out.append(DangerBand(mechanism, lo, hi, growth, severity, mode, cause,
                               _overlaps(lo, hi, operating)))
     return out
