@@ -29,7 +29,7 @@ LAYER = {
     "vehicle_case": "input",
     "memo": "core", "floquet": "core", "shell_of_revolution": "core", "vehicle": "core",
     "model": "model", "_threads": "pipeline", "_parallel": "infra",
-    "results": "results", "analysis": "pipeline",
+    "results": "results", "danger": "results", "analysis": "pipeline",
     "reference": "reference",
     "present": "present", "sweep": "sweep", "cli": "cli", "__init__": "api", "__main__": "cli",
 }

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import re
 import subprocess
 import sys
 
@@ -34,7 +35,8 @@ def test_run_default_writes_results(tmp_path, capsys):
     report = (tmp_path / "report.html").read_text()
     assert {"pitch-band-chart.svg", "beam-action-chart.svg"} <= names  # issue 12 charts
     assert {"vehicle-regions.csv", "vehicle-regions.svg"} <= names  # issue 15
-    assert report.count("<svg") == 9 and 'id="unstable-frequencies"' in report
+    # 9 figures + the danger map (issue 17)
+    assert report.count("<svg") == 10 and 'id="unstable-frequencies"' in report
     assert not [n for n in names if n.endswith(".part")]  # no temporary leftovers
 
 
@@ -103,15 +105,18 @@ def test_stability_command(tmp_path, capsys):
         == 0
     )
     assert "Unstable thrust frequencies" in capsys.readouterr().out
-    rows = list(csv.DictReader((tmp_path / "unstable-frequencies.csv").open()))
+    rows = list(csv.DictReader((tmp_path / "stability-unstable-frequencies.csv").open()))
     assert rows
     omegas = [float(r["Omega_rad_s"]) for r in rows]
     assert min(omegas) >= 100.0 and max(omegas) <= 40 * 3.141592653589793 + 1e-9
 
 
 def test_stability_command_bad_range(capsys):
+    # issue 17: the option is named as the option, not as the case field
     assert run_cli(["stability", "--omega-min", "300", "--omega-max", "100"]) == 2
-    assert "thrust.omega_min" in capsys.readouterr().err
+    err = capsys.readouterr().err.strip()
+    assert err == ("flexbooster: error: --omega-min = '300': must be smaller than "
+                   "--omega-max = 100.0 rad/s")
 
 
 def test_simulate_command(tmp_path, capsys):
@@ -205,7 +210,7 @@ def test_two_runs_write_byte_identical_files(tmp_path, case_dict, capsys):
         (["run", "--format", "xml"], "Invalid value for '--format'"),
         (["run", "--bogus"], "No such option '--bogus'"),
         (["nosuch"], "No such command 'nosuch'"),
-        (["stability", "--omega-min", "1"], "Missing option '--omega-max'"),
+        (["stability", "--omega-min"], "Option '--omega-min' requires an argument"),
     ],
 )
 def test_usage_errors_are_one_line_exit_2(capsys, args, words):
@@ -238,3 +243,107 @@ def test_sigterm_cleans_up_like_ctrl_c(tmp_path):
         pytest.skip("the run finished before SIGTERM")
     assert proc.returncode == 130 and "interrupted" in err
     assert not [p for p in tmp_path.rglob("*") if ".part" in p.name]
+
+
+def _edited_default(tmp_path, old: str, new: str):
+    """The default case file with one line edited (the error cases of issue 17)."""
+    from flexbooster.case import default_case_text
+
+    text = default_case_text()
+    assert old in text
+    path = tmp_path / "case.toml"
+    path.write_text(text.replace(old, new, 1))
+    return path
+
+
+# Expected lines: issue 17 item 5 (the value once, the option named as the option, a misspelt
+# key with a difflib suggestion, a misspelt table without dumping its contents); exact text.
+@pytest.mark.parametrize(
+    ("edit", "argv", "line"),
+    [
+        pytest.param(("radius = ", 'radius = "60 furlongz" #'), ["run", "--no-figures"],
+                     "booster.cylinder1.radius = '60 furlongz': unknown unit (furlongz)",
+                     id="value-once"),
+        pytest.param(None, ["stability", "--omega-min", "abc"],
+                     "--omega-min = 'abc': unknown unit (abc)", id="option-named"),
+        pytest.param(None, ["stability", "--omega-max", "5 m"],
+                     "--omega-max = '5 m': wrong dimension: expected units of rad/s",
+                     id="option-dimension"),
+        pytest.param(("\ngamma", "\ngama"), ["run", "--no-figures"],
+                     "thrust.gama: unknown key 'gama' (did you mean 'gamma'?)",
+                     id="misspelt-key"),
+        pytest.param(("[booster]", "[boster]"), ["run", "--no-figures"],
+                     "boster: unknown table 'boster' (did you mean 'booster'?)",
+                     id="misspelt-table"),
+    ],
+)
+def test_error_lines(tmp_path, capsys, edit, argv, line):
+    case = [] if edit is None else [str(_edited_default(tmp_path, *edit))]
+    assert run_cli([argv[0], *case, *argv[1:], "-o", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err == f"flexbooster: error: {line}"
+
+
+@pytest.mark.slow
+def test_stability_never_replaces_half_of_a_run(tmp_path, capsys):
+    # issue 17 item 5: `stability -o DIR` used to replace the CSV of a run in DIR while its
+    # results.json kept the old numbers; now it writes files of its own, on the case's range
+    from flexbooster.cli import STABILITY_FILES
+
+    assert run_cli(["run", "-q", "--no-figures", "-o", str(tmp_path)]) == 0
+    before = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
+    assert run_cli(["stability", "-q", "-o", str(tmp_path)]) == 0
+    after = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
+    assert {n: after[n] for n in before} == before  # every file of the run untouched
+    assert set(after) - set(before) == set(STABILITY_FILES)
+    # the default range is the case's: the same table as the run's (same equations, range)
+    assert (after["stability-unstable-frequencies.csv"]
+            == before["unstable-frequencies.csv"])
+
+
+@pytest.mark.slow
+def test_simulate_time_as_a_quantity_quiet_and_json(tmp_path, capsys):
+    # issue 17: --t-max "T s" is tau_max = omega_1 T (memo 3.0): the same time histories as
+    # --tau-max omega_1 T (to the CSV's printed digits); --quiet prints nothing; --format json
+    # prints simulation.json and nothing else on standard output
+    from flexbooster.case import default_case
+    from flexbooster.model import model_from_case
+
+    omega_1 = model_from_case(default_case()).omega_1
+    base = ["simulate", "--omega", "300", "--n-out", "11"]
+    assert run_cli([*base, "--t-max", "40 ms", "-q", "-o", str(tmp_path / "a")]) == 0
+    assert capsys.readouterr() == ("", "")
+    assert run_cli([*base, "--tau-max", repr(0.04 * omega_1), "--format", "json",
+                    "-o", str(tmp_path / "b")]) == 0
+    out, err = capsys.readouterr()
+    assert json.loads(out) == json.loads((tmp_path / "b" / "simulation.json").read_text())
+    assert "wrote" in err
+    a = (tmp_path / "a" / "time-histories.csv").read_text()
+    b = (tmp_path / "b" / "time-histories.csv").read_text()
+    assert a == b
+
+
+@pytest.mark.parametrize(
+    ("extra", "line"),
+    [
+        pytest.param([], "--t-max/--tau-max = 'neither': give exactly one: --t-max \"2 s\" "
+                     "(a time) or --tau-max 50 (tau = omega_1 t)", id="neither"),
+        pytest.param(["--t-max", "2 m"], "--t-max = '2 m': wrong dimension: expected units "
+                     "of s", id="t-max-dimension"),
+        pytest.param(["--t-max", "-1"], "--t-max = '-1': must be a positive time (s if no "
+                     "unit)", id="t-max-negative"),
+    ],
+)
+def test_simulate_time_errors(capsys, extra, line):
+    # expected lines: issue 17 (time as a quantity, the option named)
+    assert run_cli(["simulate", "--omega", "300", *extra]) == 2
+    assert capsys.readouterr().err.strip() == f"flexbooster: error: {line}"
+
+
+def test_simulate_prints_a_verdict_per_mode(tmp_path, capsys):
+    assert run_cli(["simulate", "--omega", "300", "--tau-max", "5", "--n-out", "21",
+                    "-o", str(tmp_path)]) == 0
+    out = capsys.readouterr().out
+    assert "modal coordinates growing over the window" in out
+    assert re.search(r"cylinder \d (axial|circumferential|radial) [UVW], j = \d+, k = \d+: "
+                     r"(growing|bounded) \(peak ", out)

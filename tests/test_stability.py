@@ -271,9 +271,13 @@ def test_active_flags_match_the_forcing_computed_from_its_definition():
             assert rate["relative"] < 1e-22, row
 
 
-def test_campbell_diagram_draws_every_root_and_shell_line():
-    """The figure's data, not its picture: one marker per root (active filled, listed open)
-    at (Omega_bar, shell frequency), and one horizontal line per shell frequency in view."""
+def test_campbell_diagram_draws_the_significant_roots_and_their_shell_lines():
+    """The figure's data, not its picture (issue 17): one marker per significant root (default:
+    active forcing) at (Omega, shell frequency) in Hz (= units of omega_1 x omega_1 / 2 pi,
+    exact to 1e-15), one horizontal line per shell frequency holding such a root; another mask
+    (a severity threshold) selects other roots; a mask of the wrong shape is refused."""
+    import pytest
+
     from flexbooster.memo.charts import campbell_data
     from flexbooster.present.plotting.stability import campbell_diagram
 
@@ -282,15 +286,21 @@ def test_campbell_diagram_draws_every_root_and_shell_line():
     shell = SimpleNamespace(omega_bar=modes.omega_bar)
     data = campbell_data(params=params, omega_range=RANGE, omega_1=OMEGA_1, shell=shell,
                          table=table, R=R, S=S, n_points=300)
-    fig = campbell_diagram(data)
-    ax = fig.axes[0]
-    lines = {line.get_label(): line for line in ax.get_lines()}
-    active, listed = lines["root, active"], lines["root, listed"]
-    assert len(active.get_xdata()) == int(table.active.sum())
-    assert len(listed.get_xdata()) == int((~table.active).sum())
-    np.testing.assert_array_equal(active.get_ydata(), table.shell_omega_bar[table.active])
-    segments = ax.collections[0].get_segments()
-    assert sorted(seg[0, 1] for seg in segments) == sorted(modes.omega_bar)
+    hz = OMEGA_1 / (2 * np.pi)
+    for mask in (None, ~data.root_active):
+        chosen = data.root_active if mask is None else mask
+        fig = campbell_diagram(data, significant=mask)
+        ax = fig.axes[0]
+        (roots,) = [line for line in ax.get_lines() if "root" in line.get_label()]
+        assert len(roots.get_xdata()) == int(chosen.sum())
+        np.testing.assert_allclose(roots.get_ydata(), data.root_shell_omega_bar[chosen] * hz,
+                                   rtol=1e-15)
+        segments = ax.collections[0].get_segments()
+        np.testing.assert_allclose(sorted(seg[0, 1] for seg in segments),
+                                   np.unique(data.root_shell_omega_bar[chosen]) * hz,
+                                   rtol=1e-15)
+    with pytest.raises(ValueError, match="significant.shape"):
+        campbell_diagram(data, significant=np.ones(3, dtype=bool))
 
 
 def _labels(table):

@@ -457,7 +457,8 @@ def test_default_case_results_unchanged():
     assert set(out) == {"schema_version", "flexbooster_version", "units", "case",
                         "mass_properties", "frequencies", "dimensionless", "beam_modes",
                         "pitch", "shell_frequencies", "beam_action", "stability",
-                        "warnings", "figures", "vehicle_regions"}  # issue 15: every case
+                        "warnings", "figures", "vehicle_regions",  # issue 15: every case
+                        "danger"}  # issue 17
 
 
 def test_thick_shell_warning_reaches_summary_and_results(tmp_path, capsys):

@@ -24,6 +24,7 @@ import numpy as np
 from ._parallel import TaskPool
 from ._threads import blas_threads
 from .case import Case
+from .danger import danger_summary
 from .errors import AnalysisWarning
 from .memo import charts
 from .memo.beam import beam_modes
@@ -252,6 +253,9 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
         vehicle=vehicle,
         vehicle_regions=regions,
         memo_roots_in_regions=matches,
+        danger=danger_summary(operating_range=model.omega_range, pitch=pitch,
+                              beam_action=action,
+                              vehicle_regions=None if regions is None else regions.regions),
     )
 
 

@@ -17,7 +17,7 @@ import tomllib
 from collections.abc import Mapping
 from importlib import resources
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal
 
 import numpy as np
 from pydantic import BaseModel, ConfigDict, StrictInt, ValidationError, field_validator
@@ -32,6 +32,7 @@ __all__ = [
     "Thrust",
     "Truncation",
     "Damping",
+    "Output",
     "Case",
     "MAX_MODES",
     "load_case",
@@ -243,6 +244,20 @@ class Damping(BaseModel):
         return result
 
 
+class Output(BaseModel):
+    """How the summary and the report show values (``[output]``).
+
+    Attributes
+    ----------
+    units : str
+        ``"SI"`` (default): SI only; ``"US"``: the inputs and mass properties also in
+        inch-pound units (in, psi, lbf, lb, ...) beside SI.  The analysis is SI either way.
+    """
+
+    model_config = _FROZEN
+    units: Literal["SI", "US"] = "SI"
+
+
 class Case(BaseModel):
     """A validated analysis case, all values in SI.
 
@@ -258,6 +273,8 @@ class Case(BaseModel):
     vehicle : VehicleTable or None
         The optional ``[vehicle]`` table (:mod:`flexbooster.vehicle_case`); None: the memo
         vehicle built from ``booster`` is used by ``flexbooster modes`` only.
+    output : Output
+        Optional ``[output]``: ``units = "SI" | "US"`` of the summary and report.
     """
 
     model_config = _FROZEN
@@ -267,6 +284,7 @@ class Case(BaseModel):
     truncation: Truncation = Truncation()
     damping: Damping = Damping()
     vehicle: VehicleTable | None = None
+    output: Output = Output()
 
     @property
     def F0(self) -> float:
@@ -294,6 +312,8 @@ class Case(BaseModel):
         data["thrust"]["T0"] = self.T0
         if data.get("vehicle") is None:  # no [vehicle]: results.json as before
             data.pop("vehicle", None)
+        if data.get("output") == {"units": "SI"}:  # the default [output]: as before
+            data.pop("output", None)
         return data
 
 
@@ -306,18 +326,67 @@ def _describe(loc: tuple) -> str:
     return out
 
 
+def _model_at(loc: tuple) -> type[BaseModel] | None:
+    """The pydantic model that holds the key at ``loc`` (None if it cannot be found)."""
+    model: type[BaseModel] | None = Case
+    for part in loc[:-1]:
+        if isinstance(part, int) or model is None:
+            continue
+        info = model.model_fields.get(str(part))
+        if info is None:
+            return None
+        model = _find_model(info.annotation)
+    return model
+
+
+def _find_model(annotation: object) -> type[BaseModel] | None:
+    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
+        return annotation
+    for arg in getattr(annotation, "__args__", ()):
+        found = _find_model(arg)
+        if found is not None:
+            return found
+    return None
+
+
+def _unknown_key(loc: tuple, value: object) -> CaseError:
+    """'unknown key 'gama' (did you mean 'gamma'?)' (difflib), a table named, not dumped."""
+    import difflib
+
+    field, key = _describe(loc), str(loc[-1])
+    model = _model_at(loc)
+    known = sorted(model.model_fields) if model is not None else []
+    what = "table" if isinstance(value, Mapping) else "key"
+    close = difflib.get_close_matches(key, known, n=1, cutoff=0.6)
+    hint = f" (did you mean '{close[0]}'?)" if close else (
+        f" (known: {', '.join(known)})" if known else "")
+    rule = f"unknown {what} '{key}'{hint}"
+    return CaseError(field, "table" if what == "table" else value, rule,
+                     message=f"{field}: {rule}")
+
+
 def _from_validation_error(exc: ValidationError) -> CaseError:
-    """The first pydantic error as a one-line CaseError (field, value, rule)."""
-    err = exc.errors(include_url=False)[0]
+    """The first pydantic error as a one-line CaseError (field, value, rule).
+
+    An unknown key comes before a missing one (a misspelt key is both), and a CaseError
+    raised inside a validator keeps its rule and the value once.
+    """
+    errors = exc.errors(include_url=False)
+    err = next((e for e in errors if e["type"] == "extra_forbidden"), errors[0])
     field = _describe(err["loc"])
     kind = err["type"]
     value = err.get("input")
     if kind == "missing":
         return CaseError(field, None, "required field is missing")
     if kind == "extra_forbidden":
-        return CaseError(field, value, "unknown key")
+        return _unknown_key(tuple(err["loc"]), value)
+    inner = (err.get("ctx") or {}).get("error")
+    if isinstance(inner, CaseError):  # from to_si: the value once, its rule
+        return CaseError(field, inner.value, inner.rule)
     message = err["msg"].removeprefix("Value error, ")
-    if kind in ("int_type", "int_from_float", "int_parsing"):
+    if kind == "literal_error":
+        message = f"must be {(err.get('ctx') or {}).get('expected', 'one of the choices')}"
+    elif kind in ("int_type", "int_from_float", "int_parsing"):
         message = "must be a whole number (integer)"
     elif kind == "model_type":
         message = "must be a table"

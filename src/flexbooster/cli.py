@@ -211,29 +211,15 @@ def run(case_file: Path | None, output: Path, no_figures: bool, no_vehicle: bool
     _wrote(paths, fmt, quiet)
 
 
-@cli.command(epilog=_EXIT_CODES)
-@_CASE_ARG
-@click.option("--omega-min", required=True, help='Lowest Omega, e.g. 10 or "2 Hz" (rad/s bare).')
-@click.option("--omega-max", required=True, help="Highest Omega (rad/s if no unit).")
-@_OUTPUT
-@_QUIET
-@_FORMAT
-def stability(
-    case_file: Path | None, omega_min: str, omega_max: str, output: Path, quiet: bool, fmt: str
-) -> None:
-    """Unstable thrust frequencies (memo 7.3) of CASE_FILE for Omega in [OMEGA_MIN, OMEGA_MAX].
+#: Files written by ``flexbooster stability`` (names of its own: never half of a ``run``).
+STABILITY_FILES = ("stability-unstable-frequencies.csv", "stability.json")
 
-    Writes OUTPUT/unstable-frequencies.csv.
 
-    \b
-    Examples:
-      flexbooster stability --omega-min 100 --omega-max "20 Hz"
-      flexbooster stability my.toml --omega-min 5 --omega-max 500 -o out/
-    """
-    from .analysis import STAGES, analyze
+def _case_with_range(case, omega_min: str | None, omega_max: str | None):
+    """The case with --omega-min / --omega-max (when given) as its Omega range; an error
+    names the option, not the case field."""
     from .case import load_case
-    from .present.io import write_csv_atomic
-    from .present.summary import print_stability
+    from .units import to_si
 
     def number(text: str) -> float | str:
         try:
@@ -241,14 +227,87 @@ def stability(
         except ValueError:
             return text
 
-    data = _load(case_file).model_dump(exclude_none=True)
-    data["thrust"].update(omega_min=number(omega_min), omega_max=number(omega_max))
-    case = load_case(data)
-    with _progress(len(STAGES), quiet) as step:  # the memo table only: no vehicle regions
-        results = analyze(case, progress=step, vehicle=False)
+    given = {key: (opt, text) for key, opt, text in (("omega_min", "--omega-min", omega_min),
+                                                      ("omega_max", "--omega-max", omega_max))
+             if text is not None}
+    if not given:
+        return case
+    data = case.model_dump(exclude_none=True)
+    for key, (opt, text) in given.items():
+        data["thrust"][key] = to_si(opt, number(text), "angular_frequency")
+    try:
+        return load_case(data)
+    except CaseError as exc:
+        key = exc.field.removeprefix("thrust.")
+        if key in given:
+            opt, text = given[key]
+            other = "omega_max" if key == "omega_min" else "omega_min"
+            rule = exc.rule.replace(f"thrust.{other}", given.get(other, (f"thrust.{other}",))[0])
+            raise CaseError(opt, text, rule) from None
+        raise
+
+
+@cli.command(epilog=_EXIT_CODES)
+@_CASE_ARG
+@click.option("--omega-min", default=None,
+              help='Lowest Omega, e.g. 10 or "2 Hz" (rad/s bare) [default: the case\'s '
+                   "thrust.omega_min].")
+@click.option("--omega-max", default=None,
+              help="Highest Omega (rad/s if no unit) [default: the case's thrust.omega_max].")
+@_OUTPUT
+@_QUIET
+@_FORMAT
+def stability(
+    case_file: Path | None, omega_min: str | None, omega_max: str | None, output: Path,
+    quiet: bool, fmt: str
+) -> None:
+    """Unstable thrust frequencies (memo 7.3) of CASE_FILE for Omega in [OMEGA_MIN, OMEGA_MAX]
+    (the case's Omega range by default).
+
+    Writes OUTPUT/stability-unstable-frequencies.csv and OUTPUT/stability.json: names of its
+    own, so that it never replaces one half of an earlier `flexbooster run` in the same folder
+    (whose results.json and report.html keep their numbers).
+
+    \b
+    Examples:
+      flexbooster stability                      # the default case's Omega range
+      flexbooster stability --omega-min 100 --omega-max "20 Hz"
+      flexbooster stability my.toml --omega-min 5 --omega-max 500 -o out/
+    """
+    from .analysis import STAGES, analyze
+    from .present.io import write_csv_atomic, write_json_atomic
+    from .present.summary import print_stability
+
+    case = _case_with_range(_load(case_file), omega_min, omega_max)
+    with _progress(len(STAGES), quiet) as step:
+        results = analyze(case, progress=step, vehicle=False)  # the memo table only
     _report(results, fmt, quiet, print_stability)
-    path = write_csv_atomic(output / "unstable-frequencies.csv", results.stability.to_columns())
-    _wrote([path], fmt, quiet)
+    if results.stability is None:  # a resource limit: the warning says which
+        raise CaseError("truncation", "stability", "; ".join(w.message for w in results.warnings
+                                                          if w.code == "stability-skipped"))
+    paths = [write_csv_atomic(output / STABILITY_FILES[0], results.stability.to_columns()),
+             write_json_atomic(output / STABILITY_FILES[1], results.to_dict())]
+    _wrote(paths, fmt, quiet)
+
+
+def _tau_max(case, t_max: str | None, tau_max: float | None) -> float:
+    """tau_max from --t-max (a time: "2 s", "500 ms"; seconds if bare) or --tau-max."""
+    from .model import model_from_case
+    from .units import to_si
+
+    if (t_max is None) == (tau_max is None):
+        raise CaseError("--t-max/--tau-max", "both" if t_max else "neither",
+                        'give exactly one: --t-max "2 s" (a time) or --tau-max 50 '
+                        "(tau = omega_1 t)")
+    if tau_max is not None:
+        return tau_max
+    try:
+        seconds = float(t_max)
+    except ValueError:
+        seconds = to_si("--t-max", t_max, "time")
+    if not (math.isfinite(seconds) and seconds > 0.0):
+        raise CaseError("--t-max", t_max, "must be a positive time (s if no unit)")
+    return seconds * model_from_case(case).omega_1  # tau = omega_1 t (memo 3.0)
 
 
 @cli.command(epilog=_EXIT_CODES)
@@ -256,29 +315,40 @@ def stability(
 @click.option(
     "--omega", required=True, help='Thrust frequency Omega, e.g. 300 or "50 Hz" (rad/s bare).'
 )
+@click.option("--t-max", default=None,
+              help='Last time, e.g. "2 s" or "500 ms" (seconds if no unit).')
 @click.option(
-    "--tau-max", required=True, type=float, help="Last dimensionless time tau = omega_1 t."
+    "--tau-max", default=None, type=float,
+    help="Or the last dimensionless time tau = omega_1 t (give one of --t-max, --tau-max)."
 )
 @click.option("--n-out", default=401, show_default=True, type=int, help="Output times.")
 @click.option(
     "--psi0", default=0.01, show_default=True, type=float, help="Initial pitch angle (rad)."
 )
 @_OUTPUT
+@_QUIET
+@click.option("--format", "fmt", type=click.Choice(["table", "json"]), default="table",
+              show_default=True,
+              help="table: a verdict per mode; json: simulation.json on standard output.")
 def simulate(
-    case_file: Path | None, omega: str, tau_max: float, n_out: int, psi0: float, output: Path
+    case_file: Path | None, omega: str, t_max: str | None, tau_max: float | None, n_out: int,
+    psi0: float, output: Path, quiet: bool, fmt: str
 ) -> None:
     """Modal time responses of CASE_FILE at one thrust frequency (memo 6.2).
 
-    Writes OUTPUT/time-histories.csv, OUTPUT/simulation.json and figures of the modal
-    amplitudes and of the deformed booster at a few instants.
+    Prints, per modal coordinate, whether it grows over the window; writes
+    OUTPUT/time-histories.csv, OUTPUT/simulation.json and figures of the modal amplitudes
+    and of the deformed booster at a few instants.
 
     \b
-    Example:
-      flexbooster simulate --omega "50 Hz" --tau-max 100 -o sim/
+    Examples:
+      flexbooster simulate --omega "50 Hz" --t-max "2 s" -o sim/
+      flexbooster simulate --omega 300 --tau-max 100 -q
+      flexbooster simulate --omega 300 --t-max 1 --format json | python -m json.tool | head
     """
     from .analysis import simulate_case
     from .memo.responses import edge_conditions
-    from .present.io import write_csv_atomic, write_json_atomic
+    from .present.io import dumps_finite, write_csv_atomic, write_json_atomic
     from .present.outputs import save_figure
     from .units import to_si
 
@@ -288,12 +358,11 @@ def simulate(
     except ValueError:
         value = omega
     Omega = to_si("--omega", value, "angular_frequency")
+    tau = _tau_max(case, t_max, tau_max)
     try:
-        res = simulate_case(case, Omega, tau_max=tau_max, n_out=n_out, psi0=psi0)
+        res = simulate_case(case, Omega, tau_max=tau, n_out=n_out, psi0=psi0)
     except ValueError as exc:
-        raise CaseError("simulate", f"--omega {omega} --tau-max {tau_max}", str(exc)) from None
-    for warning in res.warnings:
-        click.echo(f"warning: {warning}")
+        raise CaseError("simulate", f"--omega {omega} --tau-max {tau:.6g}", str(exc)) from None
     data = res.to_dict()
     data["edge_conditions"] = edge_conditions(res)
     written = [
@@ -303,15 +372,31 @@ def simulate(
     import matplotlib
 
     matplotlib.use("Agg")
-    from .present.plotting.responses import deformed_booster, modal_amplitudes
+    from .present.plotting.responses import deformed_booster, modal_amplitudes, mode_verdicts
 
     written += save_figure(modal_amplitudes(res), output / "modal-amplitudes")
     for i in range(len(res.snapshots.get("index", []))):
         written += save_figure(deformed_booster(res, instant=i), output / f"deformed-{i}")
-    peak = res.max_displacement()
-    click.echo("max displacement (m): " + ", ".join(f"{c} {v:.4g}" for c, v in peak.items()))
-    for path in written:
-        click.echo(f"wrote {path}")
+    if fmt == "json":
+        click.echo(dumps_finite(data, indent=2))
+    elif not quiet:
+        for warning in res.warnings:
+            click.echo(f"warning: {warning}")
+        click.echo(f"Omega = {Omega:.6g} rad/s ({Omega / (2 * math.pi):.6g} Hz), "
+                   f"t = 0..{res.t[-1]:.4g} s (tau = 0..{res.tau[-1]:.4g})")
+        verdicts = sorted(mode_verdicts(res), key=lambda v: -v[2])
+        largest = verdicts[0][2] if verdicts else 0.0
+        relevant = [v for v in verdicts if v[2] > 1e-9 * largest]  # not round-off
+        n_grow = sum(v[1] == "growing" for v in relevant)
+        click.echo(f"{n_grow} of {len(relevant)} modal coordinates growing over the window\n"
+                   f"({len(verdicts) - len(relevant)} below 1e-9 of the largest left out); "
+                   f"the {min(10, len(relevant))} largest:")
+        shown = relevant[:10] + [v for v in relevant[10:] if v[1] == "growing"][:3]
+        for name, verdict, peak in shown:
+            click.echo(f"  {name}: {verdict} (peak {peak:.3g} m)")
+        peak = res.max_displacement()
+        click.echo("max displacement (m): " + ", ".join(f"{c} {v:.4g}" for c, v in peak.items()))
+    _wrote(written, fmt, quiet)
 
 
 def _f_max(text: str | None) -> float | None:

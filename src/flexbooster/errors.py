@@ -25,13 +25,17 @@ class CaseError(ValueError):
         The value that was given (as the user wrote it where possible).
     rule : str
         The rule that the value breaks, in words.
+    message : str, optional
+        The whole line, where ``field = value: rule`` does not read well (an unknown key:
+        ``thrust.gama: unknown key 'gama' (did you mean 'gamma'?)``).
     """
 
-    def __init__(self, field: str, value: object, rule: str) -> None:
+    def __init__(self, field: str, value: object, rule: str, *,
+                 message: str | None = None) -> None:
         self.field = field
         self.value = value
         self.rule = rule
-        super().__init__(f"{field} = {value!r}: {rule}")
+        super().__init__(message if message is not None else f"{field} = {value!r}: {rule}")
 
 
 @dataclass(frozen=True)

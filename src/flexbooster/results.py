@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from . import __version__
+from .danger import DangerSummary
 from .errors import AnalysisWarning
 from .memo.beam import BeamModes
 from .memo.beam_action import BeamActionResult
@@ -99,6 +100,10 @@ UNITS: dict[str, str] = {
     "vehicle_regions.curves.omega_lo, omega_hi": "rad/s",
     "vehicle_regions.memo_roots.Omega": "rad/s",
     "vehicle_regions.memo_roots.rtol": "1 (relative to each region's centre)",
+    "danger.operating_range, danger.bands.Omega_lo, Omega_hi": "rad/s",
+    "danger.bands.Omega_lo_hz, Omega_hi_hz": "Hz",
+    "danger.bands.growth_rate": "1/s",
+    "danger.bands.severity": "1",
 }
 
 
@@ -142,6 +147,8 @@ class Results:
         ``analyze(..., vehicle=False)`` or when they could not be computed (see the warnings).
     memo_roots_in_regions : MemoRootsInRegions or None
         The memo-table roots inside each region; None without regions or without the table.
+    danger : DangerSummary or None
+        One verdict per mechanism and the ranked unstable bands of Omega (the first screen).
     """
 
     case: Case
@@ -160,6 +167,7 @@ class Results:
     vehicle: VehicleSurvey | None = None
     vehicle_regions: VehicleRegions | None = None
     memo_roots_in_regions: MemoRootsInRegions | None = None
+    danger: DangerSummary | None = None
 
     @property
     def Omega(self) -> np.ndarray:
@@ -199,6 +207,7 @@ class Results:
             "warnings": [w.to_dict() for w in self.warnings],
             "figures": None if self.figures is None else self.figures.to_dict(),
         }
+        out["danger"] = None if self.danger is None else self.danger.to_dict()
         if self.vehicle is not None:  # only for a case with [vehicle] (units inside)
             out["vehicle_modes"] = self.vehicle.to_dict()
         out["vehicle_regions"] = self._vehicle_regions_dict()

@@ -20,7 +20,18 @@ import pint
 
 from .errors import CaseError
 
-__all__ = ["SI_UNITS", "to_si"]
+__all__ = ["SI_UNITS", "US_UNITS", "to_si", "to_us"]
+
+#: The inch-pound unit shown beside each SI unit when ``[output] units = "US"``.
+US_UNITS: dict[str, str] = {
+    "m": "in",
+    "Pa": "psi",
+    "kg/m^3": "lb/in^3",
+    "N": "lbf",
+    "N/m": "lbf/in",
+    "kg": "lb",
+    "kg m^2": "lb*in^2",
+}
 
 #: SI unit of each kind of quantity that a case file may hold.
 SI_UNITS: dict[str, str] = {
@@ -30,6 +41,7 @@ SI_UNITS: dict[str, str] = {
     "force": "N",
     "force_per_length": "N/m",
     "angular_frequency": "rad/s",
+    "time": "s",
     "dimensionless": "",
 }
 
@@ -104,3 +116,28 @@ def to_si(field: str, value: object, kind: str) -> float:
     if not math.isfinite(result):
         raise CaseError(field, value, "must be finite")
     return result
+
+
+def to_us(value: float, si_unit: str) -> tuple[float, str] | None:
+    """A value in an SI unit of :data:`US_UNITS` converted to its inch-pound unit.
+
+    Parameters
+    ----------
+    value : float
+        The value in ``si_unit``.
+    si_unit : str
+        One of the keys of :data:`US_UNITS` ("m", "Pa", "kg/m^3", "N", "N/m", "kg",
+        "kg m^2").
+
+    Returns
+    -------
+    (float, str) or None
+        The value and the unit's name; None for a unit without an inch-pound counterpart
+        (rad/s, Hz, dimensionless).
+    """
+    us = US_UNITS.get(si_unit)
+    if us is None:
+        return None
+    ureg = _registry()
+    quantity = ureg.Quantity(float(value), si_unit.replace(" ", "*"))
+    return float(quantity.to(us).magnitude), us

@@ -123,7 +123,8 @@ def _figure_task(results: Results, name: str) -> tuple[str, bytes]:
 
     fig = make_figures(results, names=(name,))[name]
     try:
-        return _render(fig)
+        svg, png = _render(fig)
+        return _svg_titles(fig, svg), png
     finally:
         plt.close(fig)
 
@@ -196,6 +197,13 @@ def figure_svgs(results: Results) -> dict[str, str]:
     return {name: svg for name, (svg, _) in render_figures(results).items()}
 
 
+def _svg_titles(fig, svg: str) -> str:
+    """The SVG with the figure's tooltips (the danger map's ``<title>`` per band), if any."""
+    from .plotting.danger import SVG_TITLES_ATTRIBUTE, add_svg_titles
+
+    return add_svg_titles(svg, getattr(fig, SVG_TITLES_ATTRIBUTE, {}))
+
+
 def figure_names(results: Results) -> tuple[str, ...]:
     """The names (file stems) of the figures :func:`make_figures` draws for these results.
 
@@ -212,8 +220,9 @@ def figure_names(results: Results) -> tuple[str, ...]:
     data = results.figures
     if data is None:
         return ()
-    names = ["ince-strutt", "beam-modes", "shell-frequencies-cylinder1",
-             "shell-frequencies-cylinder2", "nodal-patterns"]
+    names = ["danger-map"] if results.danger is not None else []  # the answer first (#17)
+    names += ["ince-strutt", "beam-modes", "shell-frequencies-cylinder1",
+              "shell-frequencies-cylinder2", "nodal-patterns"]
     for name, part in (("pitch-band-chart", data.pitch_band_chart),
                        ("beam-action-chart", data.beam_action_chart),
                        ("campbell", data.campbell)):
@@ -241,7 +250,8 @@ def make_figures(results: Results, *, names=None) -> dict[str, Figure]:
     Returns
     -------
     dict of str to matplotlib.figure.Figure
-        By file stem: ``ince-strutt``, ``beam-modes``, ``shell-frequencies-cylinder1``,
+        By file stem: ``danger-map`` (when ``results.danger`` is set), ``ince-strutt``,
+        ``beam-modes``, ``shell-frequencies-cylinder1``,
         ``shell-frequencies-cylinder2``, ``nodal-patterns``, ``pitch-band-chart`` and,
         when they were computed, ``beam-action-chart`` and ``campbell``; for a case with
         ``[vehicle]`` also ``vehicle-mode-shapes`` and ``vehicle-unrolled``; with the
@@ -252,6 +262,7 @@ def make_figures(results: Results, *, names=None) -> dict[str, Figure]:
     matplotlib.use("Agg")
     from .plotting.bands import plot_band_chart
     from .plotting.beam import mode_shape_plot
+    from .plotting.danger import danger_map
     from .plotting.patterns import nodal_patterns
     from .plotting.pitch import ince_strutt_chart
     from .plotting.shell import frequency_curves
@@ -268,13 +279,16 @@ def make_figures(results: Results, *, names=None) -> dict[str, Figure]:
             raise ValueError(f"names = {name!r}: not a figure of these results "
                              f"({', '.join(available)})")
     makers: dict[str, Callable[[], Figure]] = {
-        "ince-strutt": lambda: ince_strutt_chart(data.ince_strutt),
+        "danger-map": lambda: danger_map(results.danger, omega_1=results.omega_1),
+        "ince-strutt": lambda: ince_strutt_chart(data.ince_strutt, Omega=results.pitch.Omega),
         "beam-modes": lambda: mode_shape_plot(data.beam_modes),
         "shell-frequencies-cylinder1": lambda: frequency_curves(results.shell, 1),
         "shell-frequencies-cylinder2": lambda: frequency_curves(results.shell, 2),
         "nodal-patterns": lambda: nodal_patterns(data.nodal_patterns),
-        "pitch-band-chart": lambda: plot_band_chart(data.pitch_band_chart),
-        "beam-action-chart": lambda: plot_band_chart(data.beam_action_chart),
+        "pitch-band-chart": lambda: plot_band_chart(data.pitch_band_chart,
+                                                    omega_1=results.omega_1),
+        "beam-action-chart": lambda: plot_band_chart(data.beam_action_chart,
+                                                     omega_1=results.omega_1),
         "campbell": lambda: campbell_diagram(data.campbell),
         "vehicle-regions": lambda: vehicle_region_figures(results)["vehicle-regions"],
     }

@@ -36,8 +36,12 @@ from ..memo.charts import (
 from ..results import Results
 from .io import write_text_atomic
 from .rows import (
+    DANGER_HEADER,
+    FIRST_SCREEN_BANDS,
     MEMO_ROOT_HEADER,
     REGION_HEADER,
+    ROUND_OFF,
+    danger_rows,
     frequency_rows,
     input_rows,
     mass_rows,
@@ -45,6 +49,7 @@ from .rows import (
     vehicle_region_rows,
     vehicle_region_table,
     vehicle_region_verdict,
+    verdict_rows,
 )
 
 __all__ = [
@@ -52,6 +57,7 @@ __all__ = [
     "FIGURES",
     "VERIFICATION",
     "MAX_UNSTABLE_ROWS",
+    "ROUND_OFF",
     "inline_svg",
     "render_report",
     "write_report",
@@ -79,6 +85,15 @@ SECTIONS: tuple[tuple[str, str], ...] = (
 #: :func:`flexbooster.present.outputs.write_outputs`) -> section
 #: and caption.
 FIGURES: dict[str, tuple[str, str]] = {
+    "danger-map": (
+        "summary",
+        "Danger map: every unstable band of the thrust frequency Omega (Hz, logarithmic) of "
+        "every mechanism computed; instability regions as bars of height and colour their "
+        "largest growth rate (1/s; bands narrower than 1.2 % of a decade drawn that wide), "
+        "the five most dangerous numbered; memo resonances (when computed) as stems by "
+        "severity on a logarithmic axis; grey: outside the operating range. Hover a band for "
+        "its values.",
+    ),
     "beam-modes": (
         "beam-modes",
         "Free-free mode shapes phi_n(zeta) of the equivalent beam (appendix C); dashed: the "
@@ -123,8 +138,10 @@ FIGURES: dict[str, tuple[str, str]] = {
     ),
     "campbell": (
         "campbell",
-        "Excitation curves of memo 7.3 against the thrust frequency, shell frequencies as grey "
-        "horizontal lines; filled red: roots with active forcing, open: listed roots.",
+        "Excitation curves of memo 7.3 against the thrust frequency (Hz, logarithmic; "
+        "Omega/omega_1 on top), one colour per family; thin grey lines: the shell frequencies "
+        "on which a root with active forcing lies; red points: the roots with active forcing "
+        "(the listed roots without forcing are in unstable-frequencies.csv, not drawn).",
     ),
     "vehicle-regions": (
         "vehicle-regions",
@@ -196,7 +213,7 @@ body{font-family:system-ui,-apple-system,"Segoe UI",Roboto,Helvetica,Arial,sans-
 margin:0 auto;max-width:1100px;padding:1em 2em;color:#1d1d1f;line-height:1.4}
 h1{font-size:1.6em;margin-bottom:0.2em}h2{border-bottom:2px solid #d0d7de;padding-bottom:0.2em;
 margin-top:1.6em}
-nav ol{columns:3;font-size:0.9em}
+nav ol{columns:5;font-size:0.82em;margin:0.3em 0}
 table{border-collapse:collapse;margin:0.6em 0;font-size:0.88em}
 th,td{border:1px solid #d0d7de;padding:0.25em 0.6em;vertical-align:top}
 th{background:#f3f5f7;text-align:left}
@@ -208,6 +225,21 @@ tr.active td{background:#fff1f0}
 figure{margin:1em 0}figcaption{font-size:0.88em;color:#57606a;max-width:60em}
 figure svg{max-width:100%;height:auto;display:block}
 svg.figure *{stroke-linejoin:round;stroke-linecap:butt}
+.first{font-size:0.95em}.first h3{margin:0.6em 0 0.2em}
+.first table{margin:0.3em 0}
+.first ul.warnings{margin:0.2em 0;padding-left:1.2em}
+@media print{
+body{max-width:none;padding:0;font-size:10pt;color:#000}
+nav{display:none}
+a{color:inherit;text-decoration:none}
+h2{break-after:avoid;page-break-after:avoid}
+section{break-inside:auto}
+table,figure,.warn{break-inside:avoid;page-break-inside:avoid}
+tr.active td{background:none;font-weight:bold}
+th{background:none}
+figure svg{max-height:22cm}
+@page{size:A4;margin:15mm}
+}
 """
 
 
@@ -225,6 +257,8 @@ def _fmt(x: object, digits: int = 6) -> str:
         return str(x)
     if not math.isfinite(value):
         return "n/a"
+    if abs(value) < ROUND_OFF:
+        return "0"
     return f"{value:.{digits}g}"
 
 
@@ -343,7 +377,7 @@ def _pitch(results: Results, svgs: Mapping[str, str] | None) -> str:
          f"{_fmt(p.beta_real.min())} .. {_fmt(p.beta_real.max())}", "-"),
         ("largest |beta memo (4.2-9, E4) - beta exact|",
          _fmt(float(np.max(np.abs(p.beta_memo_real - p.beta_real)))), "-"),
-        ("largest growth rate of psi", p.max_growth_rate, "1/s"),
+        ("largest growth rate of psi", p.max_growth_rate if p.bands else "-", "1/s"),
         ("grid points in the memo's range 0 < a < 1, 0 < q <= 0.05",
          f"{int(np.sum(p.in_memo_range))} of {p.in_memo_range.size}", "-"),
     ]
@@ -365,8 +399,8 @@ def _beam_action(results: Results) -> str:
     if ba is None:
         return '<p class="note">Not computed.</p>'
     rows = [
-        ("largest growth rate", ba.max_growth_rate, "1/s"),
-        ("Omega at the largest growth rate", ba.Omega_at_max, "rad/s"),
+        ("largest growth rate", ba.max_growth_rate if ba.bands else "-", "1/s"),
+        ("Omega at the largest growth rate", ba.Omega_at_max if ba.bands else "-", "rad/s"),
         ("steady thrust P l^2 / EI (follower flutter at 109.69)", ba.p, "-"),
         ("Hill against monodromy exponents, largest difference", ba.hill_monodromy_difference,
          "-"),
@@ -521,6 +555,34 @@ def _warnings(results: Results) -> str:
     )
 
 
+def _first_screen(results: Results, svgs: Mapping[str, str] | None) -> str:
+    """Verdicts, the ranked bands, the warnings (named) and the danger map: the answer first."""
+    out = ['<div class="first" id="first-screen"><h3>Verdicts</h3>',
+           _table(("mechanism", "verdict"), verdict_rows(results), (False, False),
+                  ["bad" if v.startswith("unstable") else "" for _, v in
+                   verdict_rows(results)])]
+    rows = danger_rows(results, FIRST_SCREEN_BANDS)
+    n_all = 0 if results.danger is None else len(results.danger.bands)
+    if rows:
+        out.append(f"<h3>Most dangerous thrust-frequency bands ({len(rows)} of {n_all}; all "
+                   "in results.json <code>danger</code>)</h3>")
+        out.append(_table(DANGER_HEADER, rows, (True, True, True, True, False, False, False)))
+    elif results.danger is not None:
+        out.append("<p>No unstable band in any mechanism computed.</p>")
+    if results.warnings:
+        out.append(f'<p><strong>Warnings ({len(results.warnings)})</strong> (details in '
+                   '<a href="#warnings">Warnings</a>):</p><ul class="warnings">')
+        out += [f"<li>[{_e(w.code)}] {_e(w.field)}: {_e(w.message)}</li>"
+                for w in results.warnings]
+        out.append("</ul>")
+    else:
+        out.append("<p>No warnings.</p>")
+    out.append("</div>")
+    if results.danger is not None:
+        out.append(_figure("danger-map", svgs))
+    return "".join(out)
+
+
 def _summary(results: Results) -> str:
     ba, st, p = results.beam_action, results.stability, results.pitch
     rows = [
@@ -534,6 +596,14 @@ def _summary(results: Results) -> str:
         ("warnings", str(len(results.warnings))),
     ]
     return _table(("result", "value"), rows, (False, False))
+
+
+def _units_note(case) -> str:
+    output = getattr(case, "output", None)
+    if output is not None and output.units == "US":
+        return ("All quantities in SI units; the inputs and mass properties also in inch-pound "
+                "units (in brackets), as the case asks ([output] units = \"US\").")
+    return "All quantities in SI units."
 
 
 def _source_date() -> str:
@@ -568,7 +638,7 @@ def render_report(results: Results, svgs: Mapping[str, str] | None = None,
     stamp = f", {generated}" if generated else _source_date()
     case = results.case
     body: dict[str, Callable[[], str]] = {
-        "summary": lambda: _summary(results),
+        "summary": lambda: _first_screen(results, svgs) + _summary(results),
         "inputs": lambda: _inputs(results),
         "mass-properties": lambda: _mass(results),
         "frequencies": lambda: _frequencies(results),
@@ -597,7 +667,7 @@ def render_report(results: Results, svgs: Mapping[str, str] | None = None,
         f"<header><h1>{_e(title)}</h1>",
         f'<p class="note">flexbooster {_e(__version__)}{_e(stamp)}. Dynamic stability '
         "of a flexible two-cylinder booster under a gimbaled, pulsating thrust (Tech Memo 104). "
-        "All quantities in SI units.</p>",
+        f"{_units_note(case)}</p>",
         "<nav><ol>",
         *[f'<li><a href="#{sid}">{_e(name)}</a></li>' for sid, name in sections],
         "</ol></nav></header><main>",

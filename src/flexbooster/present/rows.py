@@ -23,7 +23,23 @@ __all__ = [
     "vehicle_region_rows",
     "vehicle_region_table",
     "memo_root_rows",
+    "ROUND_OFF",
+    "with_us_units",
+    "FIRST_SCREEN_BANDS",
+    "range_text",
+    "verdict_rows",
+    "danger_rows",
+    "DANGER_HEADER",
 ]
+
+#: A value smaller than this in magnitude is round-off and shown as 0 by the summary and the
+#: report (values are SI; no quantity they show is physically this small).
+ROUND_OFF = 1e-14
+#: Bands listed on the first screen (terminal and report); all are in results.json.
+FIRST_SCREEN_BANDS = 8
+#: Column headings of :func:`danger_rows`.
+DANGER_HEADER = ("#", "Omega (rad/s)", "Omega (Hz)", "growth (1/s) / severity",
+                 "in operating range", "mode", "mechanism")
 
 #: (quantity, value, unit): the value is a float, an int or text.
 Row = tuple[str, object, str]
@@ -67,7 +83,36 @@ def input_rows(results: Results) -> list[Row]:
     if damping is not None:
         rows.append(("damping ratio: beam modes / rigid-body pitch",
                      f"{damping.beam_modal_ratio:g} / {damping.pitch_ratio:g}", "-"))
-    return rows
+    return with_us_units(results, rows)
+
+
+def with_us_units(results: Results, rows: list[Row]) -> list[Row]:
+    """The rows with the inch-pound value beside SI when the case asks ``[output] units =
+    "US"`` ("5.05 (198.819 in)"); unchanged otherwise or for units without a US counterpart.
+
+    Parameters
+    ----------
+    results : Results
+        The analysis (its ``case.output.units``).
+    rows : list of (str, object, str)
+        Quantity / value / SI unit rows.
+
+    Returns
+    -------
+    list of (str, object, str)
+    """
+    output = getattr(results.case, "output", None)
+    if output is None or output.units != "US":
+        return rows
+    from ..units import to_us
+
+    out: list[Row] = []
+    for quantity, value, unit in rows:
+        us = to_us(value, unit) if isinstance(value, float) else None
+        if us is not None:
+            value = f"{value:.6g} ({us[0]:.6g} {us[1]})"
+        out.append((quantity, value, unit))
+    return out
 
 
 def mass_rows(results: Results) -> list[Row]:
@@ -87,7 +132,7 @@ def mass_rows(results: Results) -> list[Row]:
     def g(x: float) -> str:
         return f"{x:.6g}"
 
-    return [
+    rows: list[Row] = [
         ("half-length of the booster L = L1 + L2", m.L, "m"),
         ("mass of cylinder 1 / cylinder 2", f"{g(m.m1)} / {g(m.m2)}", "kg"),
         ("total mass", m.mass, "kg"),
@@ -98,6 +143,7 @@ def mass_rows(results: Results) -> list[Row]:
          " / ".join(g(v) for v in (m.a, m.c, m.b)), "-"),
         ("pitch moment of inertia about the CM, I_cm (erratum E1)", m.I_cm, "kg m^2"),
     ]
+    return with_us_units(results, rows)
 
 
 def frequency_rows(results: Results) -> list[Row]:
@@ -129,6 +175,72 @@ def frequency_rows(results: Results) -> list[Row]:
         ("Mathieu q over the Omega grid",
          f"{float(results.q.min()):.6g} .. {float(results.q.max()):.6g}", "-"),
     ]
+
+
+def range_text(lo: float, hi: float) -> str:
+    """'lo-hi' with the fewest significant digits (>= 4, <= 10) that tell the edges apart.
+
+    Parameters
+    ----------
+    lo, hi : float
+        Edges (any unit).
+
+    Returns
+    -------
+    str
+    """
+    for digits in range(4, 11):
+        a, b = f"{lo:.{digits}g}", f"{hi:.{digits}g}"
+        if a != b:
+            return f"{a}-{b}"
+    return f"{lo:.10g}"
+
+
+def verdict_rows(results: Results) -> list[tuple[str, str]]:
+    """(mechanism in words, verdict) for each mechanism; "not computed" where absent.
+
+    Parameters
+    ----------
+    results : Results
+        The analysis.
+
+    Returns
+    -------
+    list of (str, str)
+    """
+    if results.danger is None:
+        return [("all mechanisms", "not computed")]
+    return [(words, verdict) for _, words, verdict in results.danger.verdicts]
+
+
+def danger_rows(results: Results, limit: int = FIRST_SCREEN_BANDS) -> list[tuple[str, ...]]:
+    """The most dangerous bands, ranked, as text cells (columns :data:`DANGER_HEADER`).
+
+    Parameters
+    ----------
+    results : Results
+        The analysis.
+    limit : int
+        Rows shown (dimensionless), >= 0.
+
+    Returns
+    -------
+    list of tuple of str
+    """
+    if results.danger is None:
+        return []
+    out = []
+    for n, b in enumerate(results.danger.bands[:limit]):
+        lo_hz, hi_hz = b.hz
+        if b.growth_rate is not None:
+            level = f"{b.growth_rate:.3g}"
+        elif b.severity is not None:
+            level = f"sev. {b.severity:.3g}"
+        else:
+            level = "-"
+        out.append((str(n + 1), range_text(b.Omega_lo, b.Omega_hi), range_text(lo_hz, hi_hz),
+                    level, "yes" if b.in_operating_range else "no", b.mode_text, b.cause_text))
+    return out
 
 
 #: Columns of :func:`vehicle_region_table` (summary and report).

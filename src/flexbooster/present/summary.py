@@ -5,14 +5,63 @@ A thin layer: it formats a :class:`~flexbooster.analysis.Results` and computes n
 
 from __future__ import annotations
 
+import textwrap
+
 import numpy as np
+from rich import box
 from rich.console import Console
+from rich.markup import escape
 from rich.table import Table
 
 from ..results import Results
-from .rows import frequency_rows, input_rows, mass_rows
+from .rows import (
+    ROUND_OFF,
+    danger_rows,
+    frequency_rows,
+    input_rows,
+    mass_rows,
+    range_text,
+    verdict_rows,
+)
 
-__all__ = ["print_summary", "print_stability"]
+__all__ = ["print_summary", "print_stability", "print_first_screen", "TERMINAL_BANDS"]
+
+#: Bands listed on the terminal's first screen (the report lists more; all in results.json).
+TERMINAL_BANDS = 5
+
+
+def print_first_screen(results: Results, console: Console) -> None:
+    """The answer first: one verdict per mechanism, the ranked dangerous bands, the warnings.
+
+    Parameters
+    ----------
+    results : Results
+        The analysis.
+    console : rich.console.Console
+        Where to print.
+    """
+    verdicts = Table(title="Verdicts", title_justify="left", box=box.SIMPLE_HEAD,
+                     header_style="bold", pad_edge=False)
+    verdicts.add_column("mechanism", ratio=1)
+    verdicts.add_column("verdict", ratio=2)
+    for words, verdict in verdict_rows(results):
+        style = "red" if verdict.startswith("unstable") else (
+            "green" if verdict.startswith("stable") else "")
+        verdicts.add_row(words, f"[{style}]{verdict}[/{style}]" if style else verdict)
+    console.print(verdicts)
+    rows = danger_rows(results, TERMINAL_BANDS)
+    n_all = 0 if results.danger is None else len(results.danger.bands)
+    if rows:
+        console.print(f"[bold]Most dangerous thrust-frequency bands[/bold] ({len(rows)} of "
+                      f"{n_all}; all in results.json)")
+        console.print(_band_block(rows, console.width), highlight=False, markup=False)
+    elif n_all == 0 and results.danger is not None:
+        console.print("No unstable band in any mechanism computed.")
+    if results.warnings:
+        console.print(f"[bold yellow]Warnings ({len(results.warnings)}; details at the end):"
+                      "[/bold yellow]")
+        for w in results.warnings:
+            console.print(f"  [yellow]warning[/yellow] {escape(f'[{w.code}] {w.field}')}")
 
 
 def _table(title: str, rows: list[tuple[str, str, str]]) -> Table:
@@ -28,7 +77,33 @@ def _table(title: str, rows: list[tuple[str, str, str]]) -> Table:
 def _g(x: object) -> str:
     if isinstance(x, int):
         return str(x)
+    if abs(x) < ROUND_OFF:  # round-off shown as 0, as in the report
+        return "0"
     return f"{x:.6g}"
+
+
+def _band_block(rows: list[tuple[str, ...]], width: int) -> str:
+    """Fixed-width text of the ranked bands: numbers in columns never cut, words wrapped."""
+    heads = ("#", "Omega rad/s", "Omega Hz", "growth 1/s", "in range")
+    widths = [max(len(r[i]) for r in [*rows, heads]) for i in range(5)]
+    lead = sum(widths) + 2 * len(widths)
+    below = width - lead < 30  # a narrow terminal: the words on their own line(s)
+    indent = widths[0] + 2 if below else lead
+    text_width = max(20, width - indent - 1)
+
+    def line(cells: tuple[str, ...], text: str) -> list[str]:
+        nums = "  ".join(c.rjust(w) if i < 4 else c.ljust(w)
+                         for i, (c, w) in enumerate(zip(cells, widths, strict=True)))
+        wrapped = textwrap.wrap(text, text_width) or [""]
+        if below:
+            return [nums.rstrip()] + [" " * indent + t for t in wrapped]
+        return [f"{nums}  {wrapped[0]}".rstrip()] + [" " * indent + t for t in wrapped[1:]]
+
+    out = line(heads, "mode; mechanism")
+    out.append("-" * min(width - 1, lead + 72))
+    for r in rows:
+        out += line(r[:5], f"{r[5]}; {r[6]}")
+    return "\n".join(out)
 
 
 def print_summary(results: Results, console: Console | None = None) -> None:
@@ -43,6 +118,7 @@ def print_summary(results: Results, console: Console | None = None) -> None:
     """
     console = console or Console()
     console.print(f"[bold]flexbooster[/bold] - {results.case.name}")
+    print_first_screen(results, console)
     for title, rows in (("Input (SI)", input_rows(results)),
                         ("Mass properties (memo 2.2, Fig. 1; I_cm per erratum E1)",
                          mass_rows(results)),
@@ -64,7 +140,8 @@ def print_summary(results: Results, console: Console | None = None) -> None:
     if results.warnings:
         console.print(f"[bold yellow]Warnings ({len(results.warnings)}):[/bold yellow]")
         for w in results.warnings:
-            console.print(f"  [yellow]warning[/yellow] [{w.code}] {w.field}: {w.message}")
+            console.print(f"  [yellow]warning[/yellow] "
+                          f"{escape(f'[{w.code}] {w.field}: {w.message}')}")
     else:
         console.print("No warnings.")
 
@@ -86,7 +163,7 @@ def _print_beam_and_pitch(results: Results, console: Console) -> None:
     p = results.pitch
     rows = [
         ("verdict", p.verdict, ""),
-        ("max growth rate of psi", _g(p.max_growth_rate), "1/s"),
+        ("max growth rate of psi", _g(p.max_growth_rate) if p.bands else "-", "1/s"),
         ("beta (exact) over the grid", f"{_g(p.beta_real.min())} .. {_g(p.beta_real.max())}", "-"),
         (
             "|beta memo (4.2-9, E4) - exact|, max",
@@ -94,11 +171,10 @@ def _print_beam_and_pitch(results: Results, console: Console) -> None:
             "-",
         ),
     ]
-    rows += [
-        ("unstable band (exact edges)",
-         f"{_g(b.omega_lo)} .. {_g(b.omega_hi)}; growth {_g(b.growth_rate_max)} 1/s", "rad/s")
-        for b in p.bands[:5]
-    ]
+    for b in p.bands[:5]:
+        rows += [(f"tongue {b.tongue}: Omega (exact edges)", range_text(b.omega_lo, b.omega_hi),
+                  "rad/s"),
+                 (f"tongue {b.tongue}: growth rate", _g(b.growth_rate_max), "1/s")]
     console.print(_table("Rigid-body pitch (memo 4.2, Floquet exponent)", rows))
 
 
@@ -108,13 +184,10 @@ def _print_shell(results: Results, console: Console) -> None:
     for d in (1, 2):
         mask = sh.cylinder == d
         i = int(np.flatnonzero(mask)[np.argmin(sh.hz[mask])])
-        rows.append(
-            (
-                f"cylinder {d}: lowest (j, k, m, type)",
-                f"{_g(sh.hz[i])} Hz ({sh.j[i]}, {sh.k[i]}, {sh.branch[i]}, {sh.mode_type[i]})",
-                f"{_g(sh.omega_bar[i])} omega_1",
-            )
-        )
+        rows.append((f"cylinder {d}: lowest frequency", _g(sh.hz[i]), "Hz"))
+        rows.append((f"cylinder {d}: its (j, k, m, type)",
+                     f"{sh.j[i]}, {sh.k[i]}, {sh.branch[i]}, {sh.mode_type[i]}", "-"))
+        rows.append((f"cylinder {d}: its omega_bar", _g(sh.omega_bar[i]), "omega_1"))
         rows.append((f"cylinder {d}: frequencies computed", str(int(mask.sum())), ""))
     title = f"Shell natural frequencies (memo 5.4, 6.2; method {sh.method}; all in the CSV)"
     console.print(_table(title, rows))
@@ -127,17 +200,12 @@ def _print_beam_action(results: Results, console: Console) -> None:
         return
     rows = [
         ("verdict", ba.verdict, ""),
-        ("max growth rate", _g(ba.max_growth_rate), "1/s"),
+        ("max growth rate", _g(ba.max_growth_rate) if ba.bands else "-", "1/s"),
         ("steady thrust P l^2 / EI (flutter at 109.69)", _g(ba.p), "-"),
         ("Hill vs monodromy exponents, max difference", _g(ba.hill_monodromy_difference), "-"),
         ("instability bands in the range", str(len(ba.bands)), ""),
     ]
-    top = sorted(ba.bands, key=lambda b: -b.growth_rate_max)[:5]
-    rows += [
-        (f"band {b.kind} {'+'.join(str(m) for m in b.modes)} j={b.order}",
-         f"{_g(b.omega_lo)} .. {_g(b.omega_hi)}; growth {_g(b.growth_rate_max)} 1/s", "rad/s")
-        for b in top
-    ]
+    rows.append(("the bands", "see the ranked table at the top", ""))
     rows += [
         (
             f"alpha_{r + 1} Omega_bar at gamma -> 0 (loaded frequency)",
@@ -170,22 +238,18 @@ def print_stability(results: Results, console: Console) -> None:
         ),
         title_justify="left",
         header_style="bold",
+        box=box.SIMPLE_HEAD,
+        pad_edge=False,
     )
-    for col in (
-        "Omega rad/s",
-        "Hz",
-        "Omega/omega_1",
-        "family (eq.)",
-        "d",
-        "j",
-        "k",
-        "m",
-        "i,p,r,s",
-        "shell Hz",
-    ):
-        table.add_column(col, justify="right")
+    wide = console.width >= 100  # Omega/omega_1 only where it fits (it is in the CSV)
+    cols = ["Omega rad/s", "Hz", "Omega/omega_1", "family (eq.)", "d", "j", "k", "m", "i,p,r,s",
+            "shell Hz"]
+    if not wide:
+        cols.remove("Omega/omega_1")
+    for col in cols:  # numbers never cut: columns not wrapped
+        table.add_column(col, justify="right", no_wrap=True)
     for n in np.flatnonzero(st.active)[:15]:
-        table.add_row(
+        cells = [
             _g(st.Omega[n]),
             _g(st.Omega[n] / (2 * np.pi)),
             _g(st.Omega_bar[n]),
@@ -196,5 +260,8 @@ def print_stability(results: Results, console: Console) -> None:
             str(st.branch[n]),
             f"{st.i[n]},{st.p[n]},{st.r[n]},{st.s[n]}",
             _g(st.shell_omega_bar[n] * st.omega_1 / (2 * np.pi)),
-        )
+        ]
+        if not wide:
+            del cells[2]
+        table.add_row(*cells)
     console.print(table)

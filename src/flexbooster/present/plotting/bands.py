@@ -18,7 +18,8 @@ def _axes(ax: Axes | None, figsize: tuple[float, float]) -> tuple[Figure, Axes]:
     return ax.figure, ax
 
 
-def plot_band_chart(chart: BandChart, ax: Axes | None = None) -> Figure:
+def plot_band_chart(chart: BandChart, ax: Axes | None = None, *,
+                    omega_1: float | None = None) -> Figure:
     """Shade each region between its traced edges, Omega in Hz against gamma.
 
     Parameters
@@ -28,6 +29,8 @@ def plot_band_chart(chart: BandChart, ax: Axes | None = None) -> Figure:
         :func:`flexbooster.memo.charts.beam_action_chart` (edges in rad/s, drawn in Hz).
     ax : matplotlib.axes.Axes, optional
         Axes to draw on; a new figure is made when None.
+    omega_1 : float, optional
+        First bending frequency (rad/s), > 0: adds a secondary axis Omega / omega_1 on top.
 
     Returns
     -------
@@ -47,8 +50,11 @@ def plot_band_chart(chart: BandChart, ax: Axes | None = None) -> Figure:
         y = np.concatenate([reg.gamma, reg.gamma[::-1]])
         ax.fill(x, y, color="C3", alpha=0.35, lw=0.6, ec="C3",
                 label="unstable" if i == 0 else None)
-    ax.axhline(chart.gamma_operating, color="C0", ls="--", lw=1.0,
+    ax.axhline(chart.gamma_operating, color="C0", ls="--", lw=1.6,
                label=f"operating gamma = {chart.gamma_operating:g}")
+    ax.annotate(f"operating gamma {chart.gamma_operating:g}", (1.0, chart.gamma_operating),
+                xycoords=("axes fraction", "data"), xytext=(-4, 3), textcoords="offset points",
+                ha="right", va="bottom", fontsize=8, color="C0")
     if not chart.regions:
         ax.text(0.5, 0.5, "no instability region in the range", transform=ax.transAxes,
                 ha="center", va="center")
@@ -58,5 +64,13 @@ def plot_band_chart(chart: BandChart, ax: Axes | None = None) -> Figure:
     ax.set_xlabel("thrust frequency Omega (Hz)")
     ax.set_ylabel("gamma (pulsation amplitude)")
     ax.set_title(chart.title)
+    from .danger import plain_log_ticks
+
+    plain_log_ticks(ax.xaxis)
+    if omega_1 is not None and omega_1 > 0:
+        w1_hz = omega_1 * to_hz
+        sec = ax.secondary_xaxis("top", functions=(lambda f: f / w1_hz, lambda r: r * w1_hz))
+        sec.set_xlabel("Omega / omega_1")
+        plain_log_ticks(sec.xaxis)
     ax.legend(loc="upper left", fontsize=8)
     return fig

@@ -18,7 +18,8 @@ def _axes(ax: Axes | None, figsize: tuple[float, float]) -> tuple[Figure, Axes]:
     return ax.figure, ax
 
 
-def ince_strutt_chart(data: InceStruttData, ax: Axes | None = None) -> Figure:
+def ince_strutt_chart(data: InceStruttData, ax: Axes | None = None, *,
+                      Omega: np.ndarray | None = None) -> Figure:
     """Ince-Strutt chart (a against q) with the booster's operating path.
 
     Parameters
@@ -28,12 +29,16 @@ def ince_strutt_chart(data: InceStruttData, ax: Axes | None = None) -> Figure:
         eq. (4.2-4), from :func:`flexbooster.memo.charts.ince_strutt_data`.
     ax : matplotlib.axes.Axes, optional
         Axes to draw on; a new figure is made when None.
+    Omega : numpy.ndarray, optional
+        Shape like ``data.a_path``: the thrust frequency (rad/s) of each point of the path
+        (``results.pitch.Omega``); labels the path in Hz at round values.
 
     Returns
     -------
     matplotlib.figure.Figure
         The unstable regions (tongue r between b_r and a_r; a < a_0) shaded from their
-        boundaries, the transition curves, and the path (unstable points in red).
+        boundaries, the transition curves, and the path (unstable points in red), labelled
+        with Omega in Hz when ``Omega`` is given.
 
     References
     ----------
@@ -63,6 +68,8 @@ def ince_strutt_chart(data: InceStruttData, ax: Axes | None = None) -> Figure:
     ax.plot(data.q_path[ok], data.a_path[ok], "o", color="C0", ms=2.5)
     if np.any(~ok):
         ax.plot(data.q_path[~ok], data.a_path[~ok], "o", color="C3", ms=3.5, label="unstable")
+    if Omega is not None and np.shape(Omega) == np.shape(data.a_path):
+        _label_path(ax, data, np.asarray(Omega, dtype=float) / (2.0 * np.pi), (a_lo, a_hi))
     ax.legend(loc="upper left", fontsize=8)
     ax.set_xlim(0.0, float(q[-1]))
     ax.set_ylim(a_lo, a_hi)
@@ -70,6 +77,29 @@ def ince_strutt_chart(data: InceStruttData, ax: Axes | None = None) -> Figure:
     ax.set_ylabel("a")
     ax.set_title(r"Ince-Strutt chart, $\psi'' + (a - 2q\cos 2\tau_1)\psi = 0$")
     return fig
+
+
+def _label_path(ax: Axes, data: InceStruttData, hz: np.ndarray,
+                a_range: tuple[float, float]) -> None:
+    """'f Hz' at the points of the path nearest to round frequencies (1-2-5 steps)."""
+    inside = (data.a_path > a_range[0]) & (data.a_path < a_range[1])
+    if not np.any(inside):
+        return
+    lo, hi = float(hz[inside].min()), float(hz[inside].max())
+    marks = [m * 10.0 ** e for e in range(-3, 6) for m in (1, 2, 5) if lo <= m * 10.0 ** e <= hi]
+    idx = np.flatnonzero(inside)
+    span_q = float(np.max(data.q)) or 1.0
+    span_a = a_range[1] - a_range[0]
+    placed: list[tuple[float, float]] = []
+    for f in marks[::-1]:  # low a (high Omega) crowd together: keep the labels apart
+        i = idx[np.argmin(np.abs(np.log(hz[idx] / f)))]
+        pos = (data.q_path[i] / span_q, data.a_path[i] / span_a)
+        if any(abs(pos[0] - p[0]) < 0.06 and abs(pos[1] - p[1]) < 0.05 for p in placed):
+            continue
+        placed.append(pos)
+        ax.annotate(f"{f:g} Hz", (data.q_path[i], data.a_path[i]), fontsize=7, color="C0",
+                    xytext=(4, -2), textcoords="offset points")
+        ax.plot([data.q_path[i]], [data.a_path[i]], "s", color="C0", ms=3)
 
 
 def beta_comparison_plot(q: np.ndarray, errors: dict, ax: Axes | None = None) -> Figure:

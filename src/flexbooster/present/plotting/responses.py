@@ -7,7 +7,57 @@ from matplotlib.figure import Figure
 
 from ...memo.responses import SimulationResult
 
-__all__ = ["modal_amplitudes", "deformed_booster"]
+__all__ = ["modal_amplitudes", "deformed_booster", "mode_names", "mode_verdicts",
+           "GROWTH_RATIO"]
+
+#: A coordinate is "growing" when its peak |amplitude| over the last third of the window
+#: exceeds this multiple of its peak over the first third (a display rule, not a stability
+#: criterion: the Floquet and secular analyses are in ``flexbooster run``).
+GROWTH_RATIO = 1.5
+_COMPONENT_WORDS = {"U": "axial", "V": "circumferential", "W": "radial"}
+
+
+def mode_names(result: SimulationResult) -> list[str]:
+    """The modal coordinates in words, e.g. "cylinder 1 radial W, j = 2, k = 0".
+
+    Parameters
+    ----------
+    result : SimulationResult
+        From :func:`flexbooster.memo.responses.simulate`.
+
+    Returns
+    -------
+    list of str
+        One per row of ``result.amplitude``.
+    """
+    return [f"cylinder {d} {_COMPONENT_WORDS.get(str(c), str(c))} {c}, j = {j}, k = {k}"
+            for c, d, j, k in zip(result.component, result.cylinder, result.j, result.k,
+                                  strict=True)]
+
+
+def mode_verdicts(result: SimulationResult) -> list[tuple[str, str, float]]:
+    """(name, "growing" or "bounded", peak |amplitude| in m) per modal coordinate.
+
+    Parameters
+    ----------
+    result : SimulationResult
+        From :func:`flexbooster.memo.responses.simulate` (at least 3 output times).
+
+    Returns
+    -------
+    list of (str, str, float)
+        "growing" when the peak over the last third of the window exceeds
+        :data:`GROWTH_RATIO` times the peak over the first third.
+    """
+    amp = np.abs(np.asarray(result.amplitude, dtype=float)) * result.params.L  # units of L -> m
+    n = amp.shape[1] if amp.ndim == 2 else 0
+    out = []
+    for name, row in zip(mode_names(result), amp, strict=True):
+        third = max(1, n // 3)
+        first, last = float(row[:third].max()), float(row[-third:].max())
+        growing = last > GROWTH_RATIO * first and last > 0.0
+        out.append((name, "growing" if growing else "bounded", float(row.max())))
+    return out
 
 
 def modal_amplitudes(result: SimulationResult, top: int = 8, ax=None) -> Figure:
@@ -25,7 +75,8 @@ def modal_amplitudes(result: SimulationResult, top: int = 8, ax=None) -> Figure:
     Returns
     -------
     matplotlib.figure.Figure
-        One line per coordinate, amplitude in millimetres against tau = omega_1 t.
+        One line per coordinate (named in words), amplitude in millimetres against the time
+        t (s), tau = omega_1 t on the top axis; the legend outside, to the right.
 
     References
     ----------
@@ -34,7 +85,7 @@ def modal_amplitudes(result: SimulationResult, top: int = 8, ax=None) -> Figure:
     if int(top) < 1:
         raise ValueError(f"top = {top!r}: must be >= 1")
     if ax is None:
-        fig = Figure(figsize=(8, 4.5))
+        fig = Figure(figsize=(9, 4.5), layout="constrained")
         ax = fig.add_subplot(1, 1, 1)
     else:
         fig = ax.figure
@@ -42,11 +93,15 @@ def modal_amplitudes(result: SimulationResult, top: int = 8, ax=None) -> Figure:
     if result.amplitude.shape[0]:
         peak = np.abs(result.amplitude).max(axis=1)
         order = np.argsort(peak)[::-1][: int(top)]
-        labels = result.labels()
+        labels = mode_names(result)
         for c in order:
-            ax.plot(result.tau, result.amplitude[c] * L * 1e3, lw=1.0, label=labels[c])
-        ax.legend(fontsize="small", ncol=2)
-    ax.set_xlabel(r"$\tau = \omega_1 t$")
+            ax.plot(result.t, result.amplitude[c] * L * 1e3, lw=1.0, label=labels[c])
+        ax.legend(fontsize="small", loc="upper left", bbox_to_anchor=(1.01, 1.0),
+                  borderaxespad=0.0)
+        sec = ax.secondary_xaxis("top", functions=(lambda t: t * result.omega_1,
+                                                   lambda tau: tau / result.omega_1))
+        sec.set_xlabel(r"$\tau = \omega_1 t$")
+    ax.set_xlabel("time t (s)")
     ax.set_ylabel("modal amplitude (mm)")
     ax.set_title(rf"$\Omega$ = {result.Omega:.4g} rad/s ({result.method})")
     ax.grid(True, alpha=0.3)
@@ -64,7 +119,9 @@ def deformed_booster(result: SimulationResult, instant: int = -1, scale: float |
     instant : int
         Index into the snapshots (default the last).
     scale : float, optional
-        Displacement magnification (default: largest displacement drawn as 5 % of L).
+        Displacement magnification (dimensionless); default a round number (1, 2 or 5 times
+        a power of ten) that draws the largest displacement as about 10 % of the smaller
+        radius.
     ax : matplotlib.axes.Axes, optional
         Where to draw; a new figure when None.
 
@@ -91,7 +148,7 @@ def deformed_booster(result: SimulationResult, instant: int = -1, scale: float |
     u, w = np.asarray(snaps["u"])[instant], np.asarray(snaps["w"])[instant]
     peak = max(np.abs(u).max(), np.abs(w).max())
     if scale is None:
-        scale = 0.05 * p.L / peak if peak > 0 else 1.0
+        scale = _round_scale(0.1 * min(result.radii) / peak) if peak > 0 else 1.0
     R = np.where(xi < p.c, result.radii[0], result.radii[1])
     x = (xi - p.a) * p.L  # from the aft edge
     for t0, sign in ((0.0, 1.0), (np.pi, -1.0)):
@@ -101,6 +158,16 @@ def deformed_booster(result: SimulationResult, instant: int = -1, scale: float |
     tau = float(result.tau[snaps["index"][instant]])
     ax.set_xlabel("x from the aft edge (m)")
     ax.set_ylabel("z (m)")
-    ax.set_title(rf"$\tau$ = {tau:.4g}, displacements x {scale:.3g}")
+    t = float(result.t[snaps["index"][instant]])
+    ax.set_title(rf"t = {t:.4g} s ($\tau$ = {tau:.4g}); displacements magnified x {scale:.3g}")
     ax.set_aspect("equal", adjustable="datalim")
     return fig
+
+
+def _round_scale(x: float) -> float:
+    """The largest of 1, 2, 5 times a power of ten not above x (x > 0)."""
+    e = np.floor(np.log10(x))
+    for m in (5.0, 2.0, 1.0):
+        if m * 10.0 ** e <= x:
+            return float(m * 10.0 ** e)
+    return float(10.0 ** e)

@@ -7,62 +7,84 @@ from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
 
 from ...memo.charts import CampbellData
+from .danger import plain_log_ticks
 
 __all__ = ["campbell_diagram"]
 
-_STYLE = {  # family -> (label, colour)
-    7: ("$\\Omega_i$", "C0"),
-    12: ("$2\\Omega_i$", "C1"),
-    8: ("$\\bar\\Omega + \\Omega_i$", "C2"),
-    9: ("$|\\bar\\Omega - \\Omega_i|$", "C3"),
-    10: ("$\\Omega_i + \\Omega_p$", "C4"),
-    11: ("$|\\Omega_i - \\Omega_p|$", "C5"),
-    13: ("$|\\alpha_r + s|\\,\\bar\\Omega$", "C7"),
-    3: ("$\\bar\\Omega$", "k"),
+_STYLE = {  # family (memo 7.4 numbering) -> (label, colour)
+    7: ("family 7: $\\Omega_i$", "C0"),
+    12: ("family 12: $2\\Omega_i$", "C1"),
+    8: ("family 8: $\\bar\\Omega + \\Omega_i$", "C2"),
+    9: ("family 9: $|\\bar\\Omega - \\Omega_i|$", "C3"),
+    10: ("family 10: $\\Omega_i + \\Omega_p$", "C4"),
+    11: ("family 11: $|\\Omega_i - \\Omega_p|$", "C5"),
+    13: ("family 13: $|\\alpha_r + s|\\,\\bar\\Omega$", "C8"),
+    3: ("family 3: $\\bar\\Omega$", "k"),
 }
 
 
-def campbell_diagram(data: CampbellData, ax=None) -> Figure:
-    """Excitation curves against Omega, shell frequencies as horizontal lines, roots marked.
+def campbell_diagram(data: CampbellData, ax=None, *, significant=None) -> Figure:
+    """Excitation curves against Omega (Hz), the shell frequencies and the significant roots.
 
     Parameters
     ----------
     data : CampbellData
-        From :func:`flexbooster.memo.charts.campbell_data`.
+        From :func:`flexbooster.memo.charts.campbell_data` (frequencies in units of
+        omega_1, drawn in Hz).
     ax : matplotlib.axes.Axes, optional
         Where to draw; a new figure when None.
+    significant : numpy.ndarray of bool, optional
+        Shape like ``data.root_active``: the roots to draw (and the shell frequencies they
+        sit on); default the roots with active forcing (a severity threshold can replace it).
 
     Returns
     -------
     matplotlib.figure.Figure
+        Logarithmic Hz axes (Omega / omega_1 on top), one colour per family of curves, the
+        shell frequencies of the significant roots as thin grey lines, the significant roots
+        as red points; the legend outside the axes, to the right.
 
     References
     ----------
     Tech Memo 104, eqs. (7.3-1)..(7.3-35).
     """
     if ax is None:
-        fig = Figure(figsize=(8.0, 6.0))
+        fig = Figure(figsize=(9.0, 5.6), layout="constrained")
         ax = fig.add_subplot()
     else:
         fig = ax.figure
-    x = data.Omega_bar
-    y_max = float(max(np.max(data.shell_omega_bar, initial=1.0), 1.0)) * 1.05
-    segments = [np.column_stack([[x[0], x[-1]], [w, w]]) for w in data.shell_omega_bar
-                if w <= y_max]
-    ax.add_collection(LineCollection(segments, colors="0.8", linewidths=0.5, zorder=0))
+    mask = data.root_active if significant is None else np.asarray(significant, dtype=bool)
+    if mask.shape != data.root_active.shape:
+        raise ValueError(f"significant.shape = {mask.shape}: must be {data.root_active.shape}")
+    hz = data.omega_1 / (2.0 * np.pi)  # units of omega_1 -> Hz
+    x = data.Omega_bar * hz
+    roots_x, roots_y = data.root_Omega_bar[mask] * hz, data.root_shell_omega_bar[mask] * hz
+    lines = np.unique(roots_y)
+    y_top = (float(roots_y.max()) if roots_y.size else float(x[-1])) * 1.3
+    y_bottom = min(float(np.min(data.shell_omega_bar, initial=1.0)) * hz, float(x[0])) / 1.3
+    segments = [np.column_stack([[x[0], x[-1]], [w, w]]) for w in lines]
+    ax.add_collection(LineCollection(segments, colors="0.85", linewidths=0.5, zorder=0,
+                                     label="shell frequency with a root"))
     for fam, (label, colour) in _STYLE.items():
         for n, c in enumerate(np.flatnonzero(data.family == fam)):
-            ax.plot(x, data.curves[c], color=colour, lw=0.8, label=label if n == 0 else None)
-    act = data.root_active
-    if act.size:
-        ax.plot(data.root_Omega_bar[act], data.root_shell_omega_bar[act], "o", ms=3,
-                color="crimson", label="root, active")
-        ax.plot(data.root_Omega_bar[~act], data.root_shell_omega_bar[~act], "o", ms=3,
-                mfc="none", color="0.4", label="root, listed")
+            y = np.where(data.curves[c] > 0.0, data.curves[c], np.nan) * hz  # log axis
+            ax.plot(x, y, color=colour, lw=0.9, alpha=0.85, label=label if n == 0 else None)
+    if roots_x.size:
+        ax.plot(roots_x, roots_y, "o", ms=2.5, color="crimson", zorder=3,
+                label=f"root with active forcing ({roots_x.size} of {mask.size})"
+                if significant is None else f"significant root ({roots_x.size})")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
     ax.set_xlim(x[0], x[-1])
-    ax.set_ylim(0.0, y_max)
-    ax.set_xlabel("thrust frequency $\\Omega/\\omega_1$")
-    ax.set_ylabel("frequency / $\\omega_1$")
-    ax.set_title("Campbell diagram: excitations (memo 7.3) and shell frequencies")
-    ax.legend(loc="upper left", fontsize="small", ncol=2)
+    ax.set_ylim(y_bottom, y_top)
+    ax.set_xlabel("thrust frequency Omega (Hz)")
+    ax.set_ylabel("excitation / shell frequency (Hz)")
+    sec = ax.secondary_xaxis("top", functions=(lambda f: f / hz, lambda r: r * hz))
+    sec.set_xlabel("Omega / omega_1")
+    for axis in (ax.xaxis, ax.yaxis, sec.xaxis):
+        plain_log_ticks(axis)
+    ax.set_title("Campbell diagram: excitations (memo 7.3, family numbers) and shell modes",
+                 fontsize=10)
+    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize="small",
+              borderaxespad=0.0)
     return fig

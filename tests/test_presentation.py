@@ -1,0 +1,164 @@
+"""The answer first (issue 17): the terminal summary and the report's first screen, the danger
+map, the number formats.
+
+The default case is analysed once (about 12 s); every check reads that analysis.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import re
+import xml.etree.ElementTree as ET
+
+import pytest
+from rich.console import Console
+
+from flexbooster.errors import AnalysisWarning
+from flexbooster.present.report import ROUND_OFF, render_report
+from flexbooster.present.rows import FIRST_SCREEN_BANDS, range_text
+from flexbooster.present.summary import TERMINAL_BANDS, print_summary
+
+
+@pytest.fixture(scope="module")
+def results():
+    from flexbooster.analysis import analyze
+    from flexbooster.case import default_case
+
+    return analyze(default_case())
+
+
+def _summary_text(results, width: int) -> str:
+    console = Console(width=width, record=True, color_system=None)
+    print_summary(results, console)
+    return console.export_text()
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("width", [80, 160])
+def test_summary_fits_without_a_cut_cell(results, width):
+    # acceptance of issue 17: at 80 columns no cell is cut (rich marks a cut with an ellipsis)
+    # and no line is wider than the terminal
+    text = _summary_text(results, width)
+    assert "\u2026" not in text and "..." not in text.replace(" .. ", "")
+    assert max(len(line) for line in text.splitlines()) <= width
+
+
+def test_first_screen_is_verdicts_then_ranked_bands(results):
+    # acceptance: the first screen (at most 40 lines of an 80-column terminal, up to the
+    # first input table) holds the verdict of every mechanism and the top bands
+    lines = _summary_text(results, 80).splitlines()
+    n_head = next(i for i, line in enumerate(lines) if line.startswith("Input (SI)"))
+    assert n_head <= 40
+    head = "\n".join(lines[:n_head])
+    for words in ("rigid-body pitch", "beam action", "vehicle parametric regions",
+                  "memo resonances", "Most dangerous thrust-frequency bands"):
+        assert words in head, words
+    assert head.index("Verdicts") < head.index("Most dangerous")
+    ranked = [line for line in lines[:n_head] if re.match(r"^\d+ ", line)]
+    assert len(ranked) == min(TERMINAL_BANDS, len(results.danger.bands))
+    # the top band's Omega range (rad/s) as the table prints it
+    top = results.danger.bands[0]
+    assert range_text(top.Omega_lo, top.Omega_hi) in ranked[0]
+    text = "\n".join(lines)
+    assert "instability region" in text and "unstable frequencies:" not in text.lower()
+
+
+@pytest.mark.parametrize(
+    ("lo", "hi", "text"),
+    [
+        pytest.param(114.67288, 114.68423, "114.67-114.68", id="4-digits-differ"),
+        pytest.param(113.482994, 113.483021, "113.48299-113.48302", id="needs-8-digits"),
+        pytest.param(2.0, 2.0, "2", id="equal-edges"),
+    ],
+)
+def test_range_text_digits(lo, hi, text):
+    # exact: the fewest significant digits (>= 4) that tell the two edges apart
+    assert range_text(lo, hi) == text
+
+
+def test_warnings_listed_on_the_first_screen(results):
+    # issue 17 item 4: the warnings are named in the summary, not only in the last section
+    w = AnalysisWarning("thin-shell", "booster.cylinder1", "h/R1 = 0.06 exceeds 1/20")
+    r = dataclasses.replace(results, warnings=(w,))
+    text = _summary_text(r, 80)
+    assert text.index("[thin-shell] booster.cylinder1") < text.index("Input (SI)")
+    html = render_report(r)
+    first = html[html.index('id="first-screen"'):html.index('id="inputs"')]
+    assert "[thin-shell] booster.cylinder1: h/R1 = 0.06 exceeds 1/20" in first
+
+
+def test_report_first_screen_and_print_css(results):
+    html = render_report(results)
+    ET.fromstring(html.split("\n", 1)[1])  # still well-formed XML (polyglot HTML5)
+    start = html.index('id="first-screen"')
+    first = html[start:html.index("</div>", start)]
+    assert first.count("<table>") == 2  # verdicts, ranked bands
+    n_rows = min(FIRST_SCREEN_BANDS, len(results.danger.bands))
+    ranked = first[first.index("Most dangerous"):]
+    assert ranked.count("<tr>") == n_rows + 1  # header + rows
+    assert "@media print" in html and "nav{display:none}" in html
+
+
+def test_maximum_of_nothing_is_a_dash_and_round_off_is_zero(results):
+    # the default case's pitch is stable: its "largest growth rate" is "-", not 0;
+    # a value below ROUND_OFF (1e-14) is printed as 0
+    html = render_report(results)
+    assert results.pitch.bands == ()
+    row = re.search(r"<td>largest growth rate of psi</td><td>([^<]*)</td>", html)
+    assert row is not None and row.group(1) == "-"
+    from flexbooster.present.report import _fmt
+
+    assert _fmt(ROUND_OFF / 10) == "0" and _fmt(-3e-17) == "0" and _fmt(2.5e-11) == "2.5e-11"
+    from flexbooster.present.summary import _g
+
+    assert _g(-3e-17) == "0" and _g(2.5e-11) == "2.5e-11"  # the terminal alike
+    text = _summary_text(results, 160)
+    assert re.search(r"max growth rate of psi\s+.\s+-\s", text)  # stable pitch: "-"
+
+
+@pytest.mark.slow
+def test_danger_map_tooltips_and_axes(results):
+    # one SVG <title> per band, no script, Omega in Hz on the x axis
+    from flexbooster.present.outputs import figure_svgs
+
+    svg = figure_svgs(results)["danger-map"]
+    titles = re.findall(r"<title>([^<]*)</title>", svg)
+    assert len(titles) == len(results.danger.bands)
+    assert titles[0].startswith("#1: Omega ") and "1/s" in titles[0]
+    assert "<script" not in svg
+    from flexbooster.present.plotting.danger import danger_map
+
+    fig = danger_map(results.danger, omega_1=results.omega_1)
+    ax = fig.axes[0]
+    assert ax.get_xlabel() == "thrust frequency Omega (Hz)" and ax.get_xscale() == "log"
+    lo, hi = (v / (2 * 3.141592653589793) for v in results.danger.operating_range)
+    x0, x1 = ax.get_xlim()
+    assert x0 < lo and x1 > hi  # the operating range is inside the axis
+
+
+def test_us_units_beside_si(results):
+    # [output] units = "US": the inch-pound value beside SI; exact conversions
+    # (1 in = 0.0254 m, 1 lbf = 4.4482216152605 N: NIST SP 811 appendix B), 6 digits
+    from flexbooster.case import load_case
+    from flexbooster.present.rows import input_rows
+
+    data = results.case.model_dump(exclude_none=True)
+    data["output"] = {"units": "US"}
+    us = dataclasses.replace(results, case=load_case(data))
+    rows = {q: (v, u) for q, v, u in input_rows(us)}
+    assert rows["cylinder 1 (aft) radius R1"] == (f"5.05 ({5.05 / 0.0254:.6g} in)", "m")
+    assert rows["steady thrust F0"] == (f"2.8e+06 ({2.8e6 / 4.4482216152605:.6g} lbf)", "N")
+    assert rows["Poisson's ratio nu"] == (0.33, "-")  # no US unit: unchanged
+    assert "inch-pound" in render_report(us) and "inch-pound" not in render_report(results)
+    # the SI default leaves results.json's case as it was (no "output" key)
+    assert "output" not in results.case.to_si_dict()
+
+
+def test_output_units_error_line(case_dict):
+    from flexbooster.case import load_case
+    from flexbooster.errors import CaseError
+
+    case_dict["output"] = {"units": "SU"}
+    with pytest.raises(CaseError) as info:
+        load_case(case_dict)
+    assert str(info.value) == "output.units = 'SU': must be 'SI' or 'US'"
