@@ -480,3 +480,19 @@ def test_cli_no_vehicle(tmp_path, capsys):
     with pytest.raises(SystemExit):
         main(["run", "--help"])
     assert "--no-vehicle" in capsys.readouterr().out
+
+
+def test_forced_axial_resonances_are_reported_from_the_results(results):
+    """The k = 0 forced resonances (the memo's family 3) in the report's rows: one row per
+    stored resonance, Omega and Hz exact (Hz = rad/s / 2 pi), the resonant amplitude '-'
+    for this undamped case (unbounded) and the report shows the table."""
+    from flexbooster.present.report import render_report
+    from flexbooster.present.rows import forced_axial_rows
+
+    fa = results.vehicle_regions.forced_axial
+    rows = forced_axial_rows(results)
+    assert len(rows) == len(fa.resonances) > 0
+    for row, r in zip(rows, fa.resonances, strict=True):
+        assert row[0] == r.omega and row[1] == pytest.approx(r.omega / (2 * np.pi), rel=1e-15)
+        assert row[3] == r.flexibility and row[4] == row[5] == "-"
+    assert "Forced (not parametric) resonances" in render_report(results, {})

@@ -38,10 +38,12 @@ from .io import write_text_atomic
 from .rows import (
     DANGER_HEADER,
     FIRST_SCREEN_BANDS,
+    FORCED_AXIAL_HEADER,
     MEMO_ROOT_HEADER,
     REGION_HEADER,
     ROUND_OFF,
     danger_rows,
+    forced_axial_rows,
     frequency_rows,
     input_rows,
     mass_rows,
@@ -534,6 +536,12 @@ def _vehicle_regions(results: Results, svgs: Mapping[str, str] | None) -> str:
     elif m is None and vr.regions:
         out.append('<p class="note">The memo table was not computed: no comparison with '
                    "its roots.</p>")
+    axial = forced_axial_rows(results)
+    if axial:
+        out.append("<p>Forced (not parametric) resonances: the k = 0 axial and breathing modes "
+                   "that the thrust pulsation gamma F0 drives directly at Omega = omega_n (the "
+                   "memo's family 3), aft-edge axial amplitude with the modal damping:</p>")
+        out.append(_table(FORCED_AXIAL_HEADER, axial, (True, True, False, True, True, True)))
     return "".join(out) + _figure("vehicle-regions", svgs)
 
 

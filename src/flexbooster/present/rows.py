@@ -22,6 +22,8 @@ __all__ = [
     "vehicle_region_verdict",
     "vehicle_region_rows",
     "vehicle_region_table",
+    "FORCED_AXIAL_HEADER",
+    "forced_axial_rows",
     "memo_root_rows",
     "ROUND_OFF",
     "with_us_units",
@@ -340,7 +342,41 @@ def vehicle_region_rows(results: Results) -> list[Row]:
     if m is not None and vr.regions:
         rows.append(("regions holding a memo-table root with active forcing",
                      f"{m.n_regions - m.without_active_root.size} of {m.n_regions}", "-"))
+    fa = getattr(vr, "forced_axial", None)
+    if fa is not None:
+        rows.append(("k = 0 axial modes forced directly by the thrust pulsation (resonances "
+                     "Omega = omega_n in the range)", len(fa.resonances), "-"))
     return rows
+
+
+#: Columns of :func:`forced_axial_rows`.
+FORCED_AXIAL_HEADER = ("Omega rad/s", "Omega Hz", "mode (k = 0)", "static flexibility m/N",
+                       "resonant amplitude m/N", "amplitude at gamma F0, m")
+
+
+def forced_axial_rows(results: Results) -> list[tuple]:
+    """The k = 0 forced resonances of the vehicle (the memo's family 3), one row each.
+
+    Parameters
+    ----------
+    results : Results
+        The analysis.
+
+    Returns
+    -------
+    list of tuple
+        Omega (rad/s, Hz), the mode in words, the aft-edge static modal flexibility
+        phi_n^2 / omega_n^2 (m/N), the resonant amplitude per unit axial aft load (m/N;
+        "-" without damping: unbounded) and that amplitude for the case's gamma F0 (m).
+    """
+    vr = results.vehicle_regions
+    fa = None if vr is None else getattr(vr, "forced_axial", None)
+    if fa is None:
+        return []
+    load = vr.gamma * vr.F0  # N, the pulsating part of the thrust
+    return [(r.omega, _hz(r.omega), f"{r.type}, order {r.order}", r.flexibility,
+             "-" if r.amplitude is None else r.amplitude,
+             "-" if r.amplitude is None else r.amplitude * load) for r in fa.resonances]
 
 
 def vehicle_region_table(results: Results) -> list[tuple]:
