@@ -16,6 +16,7 @@ from collections.abc import Callable
 
 import numpy as np
 
+from . import cost
 from ._threads import blas_threads
 from .case import Case
 from .errors import AnalysisWarning
@@ -150,6 +151,8 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
              step: Callable[[str], None]) -> Results:
     step(STAGES[0])
     model = model_from_case(case)
+    extra: list[AnalysisWarning] = _feasibility(case, model, beam_action=beam_action,
+                                                stability=stability, figures=figures)
     n = model.truncation
     beam = beam_modes(n.N, model.mass.L, model.R1, model.E, model.rho)
     step(STAGES[1])
@@ -163,7 +166,6 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
         action = beam_action_analysis(model)
     table = None
     params = None
-    extra: list[AnalysisWarning] = []
     if stability and action is not None:
         step(STAGES[4])
         modes = ShellModes(shell.cylinder, shell.j, shell.k, shell.branch, shell.omega_bar)
@@ -200,6 +202,20 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
         warnings=tuple(_warnings(model, pitch.a, pitch.q) + extra),
         vehicle=vehicle,
     )
+
+
+def _feasibility(case: Case, model: BoosterModel, **stages: bool) -> list[AnalysisWarning]:
+    """Refuse a case past its budget or past what the structure carries (issue 18), before
+    any solver runs; the warnings of the budget and of the load."""
+    cost.check_physical(model)
+    est = cost.check_case_cost(model, case.max_seconds, **stages)
+    out = cost.physical_warnings(model) + cost.capped_steps_warning(est, model)
+    if est.seconds > 0.5 * case.max_seconds:
+        out.append(AnalysisWarning("cost-estimate", "max_seconds",
+                                   f"estimated run time {est.seconds:.3g} s is over half the "
+                                   f"budget max_seconds = {case.max_seconds:g} s: "
+                                   f"{est.describe()}"))
+    return out
 
 
 def _figure_data(model, pitch, shell, action, table, params) -> charts.FigureData:

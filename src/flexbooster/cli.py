@@ -102,6 +102,29 @@ _OUTPUT = click.option(
 )
 
 
+def _check_budget(ctx: click.Context, param: click.Parameter, value: str | None) -> float | None:
+    """--max-seconds: a finite number of seconds > 0 (None: the case's max_seconds)."""
+    if value is None:
+        return None
+    try:
+        result = float(value)
+    except ValueError:
+        result = math.nan
+    if not (math.isfinite(result) and result > 0.0):
+        raise CaseError("--max-seconds", value, "must be a finite number of seconds > 0")
+    return result
+
+
+_BUDGET = click.option(
+    "--max-seconds", "max_seconds", default=None, callback=_check_budget,
+    help="Budget (s): a case whose estimated run time exceeds it is refused before it starts "
+         "[default: the case's max_seconds, 300].")
+
+
+def _with_budget(case, max_seconds: float | None):
+    return case if max_seconds is None else case.model_copy(update={"max_seconds": max_seconds})
+
+
 _QUIET = click.option(
     "-q", "--quiet", is_flag=True, help="Print nothing but errors (no summary, no progress)."
 )
@@ -164,9 +187,11 @@ def _wrote(paths, fmt: str, quiet: bool) -> None:
 @_CASE_ARG
 @_OUTPUT
 @click.option("--no-figures", is_flag=True, help="Do not draw the figures (faster).")
+@_BUDGET
 @_QUIET
 @_FORMAT
-def run(case_file: Path | None, output: Path, no_figures: bool, quiet: bool, fmt: str) -> None:
+def run(case_file: Path | None, output: Path, no_figures: bool, max_seconds: float | None,
+        quiet: bool, fmt: str) -> None:
     """Analyse CASE_FILE (TOML; the embedded default case if omitted).
 
     Prints a summary and writes OUTPUT/results.json, the CSV tables, the figures and
@@ -184,7 +209,7 @@ def run(case_file: Path | None, output: Path, no_figures: bool, quiet: bool, fmt
     from .present.outputs import OUTPUT_STAGES, write_outputs
     from .present.summary import print_summary
 
-    case = _load(case_file)
+    case = _with_budget(_load(case_file), max_seconds)
     n_stages = len(STAGES) + (case.vehicle is not None) + len(OUTPUT_STAGES)
     with _progress(n_stages, quiet) as step:
         results = analyze(case, progress=step, figures=not no_figures)
@@ -198,10 +223,12 @@ def run(case_file: Path | None, output: Path, no_figures: bool, quiet: bool, fmt
 @click.option("--omega-min", required=True, help='Lowest Omega, e.g. 10 or "2 Hz" (rad/s bare).')
 @click.option("--omega-max", required=True, help="Highest Omega (rad/s if no unit).")
 @_OUTPUT
+@_BUDGET
 @_QUIET
 @_FORMAT
 def stability(
-    case_file: Path | None, omega_min: str, omega_max: str, output: Path, quiet: bool, fmt: str
+    case_file: Path | None, omega_min: str, omega_max: str, output: Path,
+    max_seconds: float | None, quiet: bool, fmt: str
 ) -> None:
     """Unstable thrust frequencies (memo 7.3) of CASE_FILE for Omega in [OMEGA_MIN, OMEGA_MAX].
 
@@ -225,7 +252,7 @@ def stability(
 
     data = _load(case_file).model_dump(exclude_none=True)
     data["thrust"].update(omega_min=number(omega_min), omega_max=number(omega_max))
-    case = load_case(data)
+    case = _with_budget(load_case(data), max_seconds)
     with _progress(len(STAGES), quiet) as step:
         results = analyze(case, progress=step)
     _report(results, fmt, quiet, print_stability)
