@@ -150,7 +150,7 @@ def analyze(
 def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
              step: Callable[[str], None]) -> Results:
     step(STAGES[0])
-    model = model_from_case(case)
+    model = cost.derived_model(case)
     extra: list[AnalysisWarning] = _feasibility(case, model, beam_action=beam_action,
                                                 stability=stability, figures=figures)
     n = model.truncation

@@ -41,6 +41,7 @@ from .memo.pitch import MATHIEU_SCALE_MAX, PITCH_MAX_TONGUE
 
 __all__ = [
     "DEFAULT_MAX_SECONDS",
+    "derived_model",
     "CostEstimate",
     "estimate_cost",
     "check_case_cost",
@@ -201,6 +202,39 @@ def estimate_cost(model: BoosterModel, *, beam_action: bool = True, stability: b
                         capped_points=capped, capped_omega_max=capped_omega)
 
 
+def derived_model(case: Any) -> BoosterModel:
+    """:func:`flexbooster.model.model_from_case`, with a case that cannot be modelled (the
+    mass properties or omega_1 overflow, e.g. radius = 1e300 m) as a one-line ``CaseError``.
+
+    Parameters
+    ----------
+    case : Case
+        The validated case (SI).
+
+    Returns
+    -------
+    BoosterModel
+        The derived model.
+
+    Raises
+    ------
+    CaseError
+        Field ``booster``, with the core's message (which names the derived quantity).
+
+    References
+    ----------
+    Tech Memo 104, sections 2.2, 3.0, 4.2.
+    """
+    from .model import model_from_case
+
+    try:
+        with np.errstate(over="raise", invalid="raise"):
+            return model_from_case(case)
+    except (ValueError, FloatingPointError, OverflowError, ZeroDivisionError) as exc:
+        raise CaseError("booster", "(derived model)",
+                        f"the case cannot be modelled in double precision: {exc}") from None
+
+
 def check_case_cost(model: BoosterModel, max_seconds: float, **stages: bool) -> CostEstimate:
     """The cost estimate, or a ``CaseError`` when it exceeds the budget.
 
@@ -232,7 +266,7 @@ def check_case_cost(model: BoosterModel, max_seconds: float, **stages: bool) -> 
     if est.seconds > max_seconds:
         raise CaseError("max_seconds", max_seconds,
                         f"the estimated run time {est.seconds:.3g} s exceeds the budget: "
-                        f"{est.describe()}; reduce those fields or raise max_seconds "
+                        f"{est.describe()}; reduce those fields or raise the budget "
                         "(--max-seconds)")
     return est
 
@@ -261,10 +295,10 @@ def check_physical(model: BoosterModel) -> None:
     a_max = 4.0 * model.omega_psi**2 / lo**2  # eq. (4.2-4)
     if not math.sqrt(a_max * (1.0 + model.gamma)) <= MATHIEU_SCALE_MAX:
         raise CaseError("thrust.F0", model.F0,
-                        f"Mathieu a = 4 omega_psi^2/Omega^2 = {a_max:.3g} at omega_min = "
-                        f"{lo:.6g} rad/s (omega_psi = {model.omega_psi:.6g} rad/s) is beyond "
-                        f"{MATHIEU_SCALE_MAX**2:.3g}: reduce thrust.F0 or thrust.K, or raise "
-                        "thrust.omega_min")
+                        f"gives Mathieu a = 4 omega_psi^2/Omega^2 = {a_max:.3g} at the lowest "
+                        f"Omega {lo:.6g} rad/s (omega_psi = {model.omega_psi:.6g} rad/s), "
+                        f"beyond {MATHIEU_SCALE_MAX**2:.3g} (eq. 4.2-4): reduce it or the "
+                        "gimbal gain K, or raise omega_min")
     system = beam_system(model)
     mu = np.linalg.eigvals(system.A0)  # squared steady frequencies / omega_1^2, eq. (4.1-11)
     big = float(np.max(np.abs(mu)))

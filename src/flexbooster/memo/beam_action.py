@@ -231,6 +231,7 @@ def beam_action_system(omega_1: float, mass: float, L: float, d2: float, I_cm: f
     F0 = nonnegative("F0", F0)
     K = nonnegative("K", K)
     N = count("N", N, 0)
+    n_quad = None if n_quad is None else count("n_quad", n_quad, 1, 100_000)
     load = F0 / (mass * L * omega_1**2)  # eps = F0 / (M L omega_1^2)
     Lam, B = _assemble(load, K, mass * L**2 / I_cm, d2 / L, N, n_quad)
     return BeamActionSystem(Lambda=Lam, B=B, omega_1=omega_1, load=load, K=K, N=N)
@@ -437,7 +438,14 @@ def natural_branch(reduced: np.ndarray, Omega_bar: np.ndarray,
     Tech Memo 104, eqs. (4.1-10), (4.1-11); Bolotin (1964), sec. 8.
     """
     reduced = np.asarray(reduced)
-    x = np.real(frequencies)[None, :] / np.asarray(Omega_bar, dtype=float)[:, None]  # (G, n)
+    Omega_bar = np.asarray(Omega_bar, dtype=float)
+    if Omega_bar.ndim != 1 or not np.all(np.isfinite(Omega_bar)) or np.any(Omega_bar <= 0):
+        raise ValueError("Omega_bar: must be 1-D, finite and > 0 (dimensionless)")
+    if reduced.shape != (Omega_bar.size, np.size(frequencies)) or not np.all(
+            np.isfinite(reduced)):
+        raise ValueError(f"reduced: shape {reduced.shape}: must be finite, (len(Omega_bar), "
+                         "len(frequencies))")
+    x = np.real(frequencies)[None, :] / Omega_bar[:, None]  # (G, n)
     k0 = np.round(x)
     y = x - k0
     cost = np.abs(np.abs(y)[:, :, None] - reduced.real[:, None, :])  # (G, r, j)

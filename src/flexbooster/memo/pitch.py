@@ -50,6 +50,8 @@ from typing import Any
 import numpy as np
 from scipy import integrate, optimize, special
 
+from ..checks import count
+
 __all__ = [
     "pitch_frequency",
     "mathieu_parameters",
@@ -724,7 +726,7 @@ def three_term_error(
     q = np.atleast_1d(np.asarray(q, dtype=float))
     if not (np.isfinite(tau1_max) and tau1_max > 0):
         raise ValueError(f"tau1_max = {tau1_max!r}: must be finite and > 0")
-    tau = np.linspace(0.0, tau1_max, int(n_times))
+    tau = np.linspace(0.0, tau1_max, count("n_times", n_times, 2, 10**6))
     exact = psi_numerical(tau, np.full(q.shape, float(a)), q)
     betas = characteristic_exponent(float(a), q, "floquet")
     if np.any(betas.imag != 0.0):
