@@ -28,7 +28,7 @@ from .memo.pitch import pitch_analysis
 from .memo.responses import SimulationResult, excitation_parameters, simulate
 from .memo.shell import natural_frequencies
 from .memo.stability import ShellModes, TooManyRootsError, unstable_frequencies
-from .model import model_from_case, vehicle_from_case
+from .model import vehicle_from_case
 from .results import SCHEMA_VERSION, UNITS, Results
 from .shell_of_revolution.survey import VehicleSurvey, vehicle_survey
 
@@ -261,7 +261,8 @@ def simulate_case(case: Case, Omega: float, *, tau_max: float, n_out: int = 401,
         exactly resonant).
     """
     with blas_threads(1):
-        model = model_from_case(case)
+        model = cost.derived_model(case)
+        cost.check_physical(model)  # a load beyond the structure: a CaseError (issue 18)
         params = excitation_parameters(model, beam_action_analysis(model, bands=False))
         return simulate(model, Omega, tau_max, n_out=n_out, psi0=psi0, params=params)
 

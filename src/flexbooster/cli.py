@@ -439,10 +439,8 @@ def main(argv: list[str] | None = None) -> None:
         cli.main(args=argv, prog_name="flexbooster", standalone_mode=False)
     except CaseError as exc:
         _fail(str(exc), EXIT_INPUT)
-    except click.exceptions.Abort:
-        _fail("interrupted", EXIT_INTERRUPTED)
-    except KeyboardInterrupt:
-        _fail("interrupted", EXIT_INTERRUPTED)
+    except (click.exceptions.Abort, KeyboardInterrupt):
+        _interrupted()
     except click.ClickException as exc:  # usage errors: one line, exit 2
         message = " ".join(exc.format_message().split())
         ctx = getattr(exc, "ctx", None)
@@ -462,6 +460,18 @@ def main(argv: list[str] | None = None) -> None:
     finally:
         signal.signal(signal.SIGTERM, previous)
     sys.exit(EXIT_OK)
+
+
+def _interrupted() -> None:
+    """Exit 130 at once, the cleanup (``finally`` blocks) done: a plain ``sys.exit`` after a
+    KeyboardInterrupt was seen to end the process by SIGINT (status -2) now and then."""
+    click.echo("flexbooster: error: interrupted", err=True)
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.flush()
+        except (OSError, ValueError):
+            pass
+    os._exit(EXIT_INTERRUPTED)
 
 
 def _terminate(signum: int, frame: object) -> None:

@@ -56,7 +56,9 @@ DEFAULT_MAX_SECONDS = 300.0
 # Calibration (s), measured on the default case on one core (docs/theory/robustness.md).
 _C_MONODROMY = 9e-5  # per grid point and Lawson step, n <= 24 modes (numpy overhead bound)
 _C_HILL = 2e-9  # per (2 m)^3 of one Hill eigenproblem, m = n (2 S + 1)
-_C_BANDS = 1.1  # band search of the default (n = 11), scales like (n / 11)^2.5
+_C_BANDS = 5.4e-3  # band search, per resonance candidate and order j (default: 204, 1.1 s)
+_DAMPED_FACTOR = 40.0  # with damping: the critical gamma of every region (a search each)
+_BAND_RTOL = 1e-9  # flexbooster.memo.beam_action.BAND_RTOL
 _C_CHART = 2.5  # beam-action chart of the default, scales like (n / 11)^2.5
 _C_PITCH_STEP = (2e-5, 3e-7)  # per Magnus step: fixed, per grid point
 _C_TONGUE = 0.07  # pitch bands, per tongue in the range
@@ -114,6 +116,33 @@ class CostEstimate:
                 "drivers": {k: list(v) for k, v in self.drivers.items()},
                 "capped_points": int(self.capped_points),
                 "capped_omega_max": float(self.capped_omega_max)}
+
+
+def _resonance_weight(A0: np.ndarray, B: np.ndarray, lo: float, hi: float) -> float:
+    """Sum of the orders j of the resonance centres 2 w_i / j, (w_i +- w_k) / j in [lo, hi]
+    whose first-order width estimate is above the band tolerance (Bolotin sec. 3; as the
+    candidates of :func:`flexbooster.floquet.instability_regions`, without its round-off
+    floor, so an over-count); Omega in units of omega_1."""
+    mu, V = np.linalg.eig(A0)
+    w = np.sqrt(np.abs(mu.real))
+    Bt = np.abs(np.linalg.solve(V, B @ V))  # modal coupling, eq. (4.1-11)
+    wt = np.maximum(w, 0.5 * lo)
+    Z = Bt / np.outer(wt, wt)
+    zeta = min(float(np.max(Z)), 1e6)
+    zrow = np.max(np.maximum(Z, Z.T), axis=1)
+    ii, kk = np.triu_indices(w.size, 1)
+    base = np.concatenate([2.0 * w, w[ii] + w[kk], np.abs(w[kk] - w[ii])])
+    scale = np.concatenate([zrow**2, zrow[ii] * zrow[kk], zrow[ii] * zrow[kk]])
+    ok = base > 1e-12 * max(float(np.max(w)), 1e-300)
+    base, scale = base[ok], scale[ok]
+    j_lo = np.maximum(1.0, np.ceil(base / hi))
+    j_hi = np.minimum(np.floor(base / lo), 1e7)
+    if zeta < 1.0:  # est ~ scale zeta^(j - 2) >= 1e-2 rtol: the highest order kept
+        top = 2.0 + np.log(np.maximum(1e-2 * _BAND_RTOL / np.maximum(scale, 1e-300),
+                                      1e-300)) / np.log(max(zeta, 1e-300))
+        j_hi = np.minimum(j_hi, np.maximum(top, 1.0))
+    n_j = np.maximum(0.0, j_hi - j_lo + 1.0)
+    return float(np.sum(n_j * 0.5 * (j_lo + j_hi)))  # sum of j over the kept orders
 
 
 def _tongues(omega_psi: float, lo: float, hi: float, widen: float) -> int:
@@ -184,8 +213,13 @@ def estimate_cost(model: BoosterModel, *, beam_action: bool = True, stability: b
         parts["Hill determinant"] = _C_HILL * m2**3 * min(_HILL_POINTS, G)
         drivers["Hill determinant"] = ("truncation.N", "truncation.S")
         if hi > BAND_OMEGA_BAR_MIN * model.omega_1:
-            parts["beam-action bands"] = _C_BANDS * (nn / 11.0) ** 2.5
-            drivers["beam-action bands"] = ("truncation.N",)
+            lo_b = max(lo, BAND_OMEGA_BAR_MIN * model.omega_1) / model.omega_1
+            weight = _resonance_weight(system.A0, model.gamma * system.B, lo_b,
+                                       hi / model.omega_1)
+            damped = model.beam_damping_ratio > 0.0 or model.pitch_damping_ratio > 0.0
+            parts["beam-action bands"] = _C_BANDS * weight * (1.0 + _DAMPED_FACTOR * damped)
+            drivers["beam-action bands"] = ("truncation.N", "thrust.omega_min",
+                                            "damping.beam_modal_ratio", "thrust.F0")
     if beam_action and stability:
         curves = 13.0 * n.R * (2 * n.S + 1)
         parts["stability table"] = _C_STABILITY * curves * modes
