@@ -92,7 +92,7 @@ def _outcome(data: dict) -> str:
         with warnings.catch_warnings():
             warnings.simplefilter("error", RuntimeWarning)  # numpy overflow is a failure
             case = flexbooster.load_case(data)
-            res = analyze(case, figures=False)
+            res = analyze(case, figures=False, vehicle=False)  # the memo pipeline (see docs)
             dumps_finite(res.to_dict())
     except CaseError as exc:
         if "\n" in str(exc):
