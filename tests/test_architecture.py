@@ -28,7 +28,7 @@ LAYER = {
     "errors": "input", "units": "input", "checks": "input", "case": "input",
     "vehicle_case": "input",
     "memo": "core", "floquet": "core", "shell_of_revolution": "core", "vehicle": "core",
-    "model": "model", "_threads": "pipeline", "_parallel": "infra",
+    "model": "model", "cost": "model", "_threads": "pipeline", "_parallel": "infra",
     "results": "results", "danger": "results", "analysis": "pipeline",
     "reference": "reference",
     "present": "present", "sweep": "sweep", "cli": "cli", "__init__": "api", "__main__": "cli",

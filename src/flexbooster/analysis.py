@@ -21,6 +21,7 @@ from collections.abc import Callable
 
 import numpy as np
 
+from . import cost
 from ._parallel import TaskPool
 from ._threads import blas_threads
 from .case import Case
@@ -34,7 +35,7 @@ from .memo.pitch import pitch_analysis
 from .memo.responses import SimulationResult, excitation_parameters, simulate
 from .memo.shell import natural_frequencies
 from .memo.stability import ShellModes, StabilityTable, TooManyRootsError, unstable_frequencies
-from .model import model_from_case, vehicle_from_case
+from .model import vehicle_from_case
 from .results import SCHEMA_VERSION, UNITS, MemoRootsInRegions, Results
 from .shell_of_revolution.survey import VehicleSurvey, vehicle_survey
 from .vehicle import VehicleRegions, vehicle_regions
@@ -183,7 +184,9 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
              step: Callable[[str], None], pool: TaskPool, *,
              with_regions: bool = True) -> Results:
     step(STAGES[0])
-    model = model_from_case(case)
+    model = cost.derived_model(case)
+    extra: list[AnalysisWarning] = _feasibility(case, model, beam_action=beam_action,
+                                                stability=stability, figures=figures)
     # the costliest figure data, independent of the stages below: started first (in a worker
     # when the pool has one, else computed when asked for, in STAGES[5])
     chart = (pool.submit(charts.beam_action_chart, model) if figures and beam_action
@@ -205,7 +208,6 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
         action = beam_action_analysis(model, bands=True if bands is None else bands.result)
     table = None
     params = None
-    extra: list[AnalysisWarning] = []
     if stability and action is not None:
         step(STAGES[4])
         modes = ShellModes(shell.cylinder, shell.j, shell.k, shell.branch, shell.omega_bar)
@@ -259,6 +261,20 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
     )
 
 
+def _feasibility(case: Case, model: BoosterModel, **stages: bool) -> list[AnalysisWarning]:
+    """Refuse a case past its budget or past what the structure carries (issue 18), before
+    any solver runs; the warnings of the budget and of the load."""
+    cost.check_physical(model)
+    est = cost.check_case_cost(model, case.max_seconds, **stages)
+    out = cost.physical_warnings(model) + cost.capped_steps_warning(est, model)
+    if est.seconds > 0.5 * case.max_seconds:
+        out.append(AnalysisWarning("cost-estimate", "max_seconds",
+                                   f"estimated run time {est.seconds:.3g} s is over half the "
+                                   f"budget max_seconds = {case.max_seconds:g} s: "
+                                   f"{est.describe()}"))
+    return out
+
+
 def _figure_data(model, pitch, shell, action, table, params, *,
                  beam_action_chart) -> charts.FigureData:
     """The data of every figure (compute -> data -> plot), on the grids of :mod:`charts`."""
@@ -303,7 +319,8 @@ def simulate_case(case: Case, Omega: float, *, tau_max: float, n_out: int = 401,
         exactly resonant).
     """
     with blas_threads(1):
-        model = model_from_case(case)
+        model = cost.derived_model(case)
+        cost.check_physical(model)  # a load beyond the structure: a CaseError (issue 18)
         params = excitation_parameters(model, beam_action_analysis(model, bands=False))
         return simulate(model, Omega, tau_max, n_out=n_out, psi0=psi0, params=params)
 

@@ -275,16 +275,28 @@ class Case(BaseModel):
         vehicle built from ``booster`` is used by ``flexbooster modes`` only.
     output : Output
         Optional ``[output]``: ``units = "SI" | "US"`` of the summary and report.
+    max_seconds : float
+        Budget of the analysis (s), > 0, default 300: a case whose estimated run time
+        (:func:`flexbooster.cost.estimate_cost`) exceeds it is refused before it starts.
     """
 
     model_config = _FROZEN
     name: str = "case"
+    max_seconds: float = 300.0
     booster: Booster
     thrust: Thrust
     truncation: Truncation = Truncation()
     damping: Damping = Damping()
     vehicle: VehicleTable | None = None
     output: Output = Output()
+
+    @field_validator("max_seconds", mode="before")
+    @classmethod
+    def _max_seconds(cls, value: Any) -> float:
+        result = to_si("max_seconds", value, "dimensionless")  # seconds
+        if not (math.isfinite(result) and result > 0.0):
+            raise ValueError("must be a finite time > 0 (s)")
+        return result
 
     @property
     def F0(self) -> float:

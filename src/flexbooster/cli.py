@@ -102,6 +102,29 @@ _OUTPUT = click.option(
 )
 
 
+def _check_budget(ctx: click.Context, param: click.Parameter, value: str | None) -> float | None:
+    """--max-seconds: a finite number of seconds > 0 (None: the case's max_seconds)."""
+    if value is None:
+        return None
+    try:
+        result = float(value)
+    except ValueError:
+        result = math.nan
+    if not (math.isfinite(result) and result > 0.0):
+        raise CaseError("--max-seconds", value, "must be a finite number of seconds > 0")
+    return result
+
+
+_BUDGET = click.option(
+    "--max-seconds", "max_seconds", default=None, callback=_check_budget,
+    help="Budget (s): a case whose estimated run time exceeds it is refused before it starts "
+         "[default: the case's max_seconds, 300].")
+
+
+def _with_budget(case, max_seconds: float | None):
+    return case if max_seconds is None else case.model_copy(update={"max_seconds": max_seconds})
+
+
 _JOBS = click.option(
     "-j",
     "--jobs",
@@ -175,10 +198,11 @@ def _wrote(paths, fmt: str, quiet: bool) -> None:
 @click.option("--no-vehicle", is_flag=True,
               help="Skip the vehicle's parametric instability regions (shell of revolution).")
 @_JOBS
+@_BUDGET
 @_QUIET
 @_FORMAT
 def run(case_file: Path | None, output: Path, no_figures: bool, no_vehicle: bool,
-        jobs: int | None, quiet: bool,
+        jobs: int | None, max_seconds: float | None, quiet: bool,
         fmt: str) -> None:
     """Analyse CASE_FILE (TOML; the embedded default case if omitted).
 
@@ -199,7 +223,7 @@ def run(case_file: Path | None, output: Path, no_figures: bool, no_vehicle: bool
     from .present.outputs import OUTPUT_STAGES, write_outputs
     from .present.summary import print_summary
 
-    case = _load(case_file)
+    case = _with_budget(_load(case_file), max_seconds)
     workers = default_workers() if jobs is None else jobs
     n_stages = len(STAGES) + (case.vehicle is not None) + (not no_vehicle) + len(OUTPUT_STAGES)
     with _progress(n_stages, quiet) as step:
@@ -255,11 +279,12 @@ def _case_with_range(case, omega_min: str | None, omega_max: str | None):
 @click.option("--omega-max", default=None,
               help="Highest Omega (rad/s if no unit) [default: the case's thrust.omega_max].")
 @_OUTPUT
+@_BUDGET
 @_QUIET
 @_FORMAT
 def stability(
     case_file: Path | None, omega_min: str | None, omega_max: str | None, output: Path,
-    quiet: bool, fmt: str
+    max_seconds: float | None, quiet: bool, fmt: str
 ) -> None:
     """Unstable thrust frequencies (memo 7.3) of CASE_FILE for Omega in [OMEGA_MIN, OMEGA_MAX]
     (the case's Omega range by default).
@@ -278,7 +303,7 @@ def stability(
     from .present.io import write_csv_atomic, write_json_atomic
     from .present.summary import print_stability
 
-    case = _case_with_range(_load(case_file), omega_min, omega_max)
+    case = _with_budget(_case_with_range(_load(case_file), omega_min, omega_max), max_seconds)
     with _progress(len(STAGES), quiet) as step:
         results = analyze(case, progress=step, vehicle=False)  # the memo table only
     _report(results, fmt, quiet, print_stability)
@@ -515,10 +540,8 @@ def main(argv: list[str] | None = None) -> None:
         cli.main(args=argv, prog_name="flexbooster", standalone_mode=False)
     except CaseError as exc:
         _fail(str(exc), EXIT_INPUT)
-    except click.exceptions.Abort:
-        _fail("interrupted", EXIT_INTERRUPTED)
-    except KeyboardInterrupt:
-        _fail("interrupted", EXIT_INTERRUPTED)
+    except (click.exceptions.Abort, KeyboardInterrupt):
+        _interrupted()
     except click.ClickException as exc:  # usage errors: one line, exit 2
         message = " ".join(exc.format_message().split())
         ctx = getattr(exc, "ctx", None)
@@ -538,6 +561,18 @@ def main(argv: list[str] | None = None) -> None:
     finally:
         signal.signal(signal.SIGTERM, previous)
     sys.exit(EXIT_OK)
+
+
+def _interrupted() -> None:
+    """Exit 130 at once, the cleanup (``finally`` blocks) done: a plain ``sys.exit`` after a
+    KeyboardInterrupt was seen to end the process by SIGINT (status -2) now and then."""
+    click.echo("flexbooster: error: interrupted", err=True)
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.flush()
+        except (OSError, ValueError):
+            pass
+    os._exit(EXIT_INTERRUPTED)
 
 
 def _terminate(signum: int, frame: object) -> None:

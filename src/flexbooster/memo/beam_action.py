@@ -71,6 +71,8 @@ __all__ = [
     "HillResult",
     "hill_exponents",
     "monodromy_exponents",
+    "monodromy_steps",
+    "MONODROMY_MAX_STEPS",
     "reduced_exponents",
     "natural_branch",
     "BAND_RTOL",
@@ -92,6 +94,10 @@ __all__ = [
 ]
 
 _STABLE_TOL = 1e-6  # |Im alpha| below which an exponent counts as real (see docs)
+
+#: Cap on the automatic step count of :func:`monodromy_exponents` per half period (issue 18):
+#: the largest count the default case uses, so its numbers are unchanged.
+MONODROMY_MAX_STEPS = 8192
 
 
 # --------------------------------------------------------------------------------------------
@@ -232,6 +238,7 @@ def beam_action_system(omega_1: float, mass: float, L: float, d2: float, I_cm: f
     F0 = nonnegative("F0", F0)
     K = nonnegative("K", K)
     N = count("N", N, 0)
+    n_quad = None if n_quad is None else count("n_quad", n_quad, 1, 100_000)
     load = F0 / (mass * L * omega_1**2)  # eps = F0 / (M L omega_1^2)
     Lam, B = _assemble(load, K, mass * L**2 / I_cm, d2 / L, N, n_quad)
     return BeamActionSystem(Lambda=Lam, B=B, omega_1=omega_1, load=load, K=K, N=N)
@@ -401,7 +408,12 @@ def reduced_exponents(alpha: np.ndarray) -> np.ndarray:
     ----------
     Magnus & Winkler (1966), ch. 1; Tech Memo 104, eqs. (4.1-10), (4.1-11).
     """
-    f = _fold(np.asarray(alpha))
+    alpha = np.asarray(alpha)
+    if alpha.ndim == 0 or alpha.shape[-1] == 0 or alpha.shape[-1] % 2:
+        raise ValueError(f"alpha: shape {alpha.shape}: the last axis must hold 2n >= 2 exponents")
+    if not np.all(np.isfinite(alpha)):
+        raise ValueError("alpha: every exponent must be finite")
+    f = _fold(alpha)
     key = f.real + 1e-3 * f.imag
     f = np.take_along_axis(f, np.argsort(key, axis=-1), axis=-1)
     return 0.5 * (f[..., 0::2] + f[..., 1::2])
@@ -433,7 +445,14 @@ def natural_branch(reduced: np.ndarray, Omega_bar: np.ndarray,
     Tech Memo 104, eqs. (4.1-10), (4.1-11); Bolotin (1964), sec. 8.
     """
     reduced = np.asarray(reduced)
-    x = np.real(frequencies)[None, :] / np.asarray(Omega_bar, dtype=float)[:, None]  # (G, n)
+    Omega_bar = np.asarray(Omega_bar, dtype=float)
+    if Omega_bar.ndim != 1 or not np.all(np.isfinite(Omega_bar)) or np.any(Omega_bar <= 0):
+        raise ValueError("Omega_bar: must be 1-D, finite and > 0 (dimensionless)")
+    if reduced.shape != (Omega_bar.size, np.size(frequencies)) or not np.all(
+            np.isfinite(reduced)):
+        raise ValueError(f"reduced: shape {reduced.shape}: must be finite, (len(Omega_bar), "
+                         "len(frequencies))")
+    x = np.real(frequencies)[None, :] / Omega_bar[:, None]  # (G, n)
     k0 = np.round(x)
     y = x - k0
     cost = np.abs(np.abs(y)[:, :, None] - reduced.real[:, None, :])  # (G, r, j)
@@ -647,7 +666,8 @@ def _multipliers_from_half(Phi: np.ndarray) -> np.ndarray:
 
 def monodromy_exponents(system: BeamActionSystem, Omega: np.ndarray, gamma: np.ndarray,
                         n_steps: int | None = None, step_phase: float = 0.06,
-                        chunk: int = 256) -> np.ndarray:
+                        chunk: int = 256, *,
+                        max_steps: int = MONODROMY_MAX_STEPS) -> np.ndarray:
     """Floquet exponents from the monodromy matrix over one period 2 pi / Omega.
 
     The period map is built from the half period by reversibility (A(tau) is even):
@@ -673,6 +693,11 @@ def monodromy_exponents(system: BeamActionSystem, Omega: np.ndarray, gamma: np.n
         alpha (2e-9 at p = 20, gamma = 0.6 with N = 4; error ~ step_phase^4).
     chunk : int
         Grid points per batch (memory).
+    max_steps : int
+        Cap on the automatic step count per half period (dimensionless), 8..10^7: the rule
+        above needs ~1/Omega_bar steps; the default :data:`MONODROMY_MAX_STEPS` (8192, the
+        largest count of the default case) bounds the cost of a point to ~0.7 s for N = 10 and
+        keeps the error of alpha about 3e-6 at Omega_bar = 4.4e-4 (docs/theory/robustness.md).
 
     Returns
     -------
@@ -688,12 +713,47 @@ def monodromy_exponents(system: BeamActionSystem, Omega: np.ndarray, gamma: np.n
     step_phase = positive("step_phase", step_phase)
     chunk = count("chunk", chunk, 1, 10**6)
     mu, Bt = _modal(system)
+    max_steps = count("max_steps", max_steps, 8, 10**7)
     if n_steps is not None:
         steps = np.full(Ob.size, count("n_steps", n_steps, 1, 10**7))
-    else:
-        steps = _auto_steps(mu, Bt, Ob, gam, step_phase)
-    rho = _multipliers(mu, Bt, Ob, gam, steps, chunk)
+    else:  # the automatic count grows like 1 / Omega_bar: capped (bounded cost, issue 18)
+        steps = np.minimum(_auto_steps(mu, Bt, Ob, gam, step_phase), max_steps)
+    with np.errstate(over="ignore", invalid="ignore"):  # overflow is reported below
+        rho = _multipliers(mu, Bt, Ob, gam, steps, chunk)
+    if not np.all(np.isfinite(rho)):  # growth beyond the floating-point range
+        raise ValueError("Omega, gamma: the period map overflowed (a steady system far past "
+                         "divergence or flutter, or a growth rate beyond the float range)")
     return np.log(rho) / (2j * np.pi)
+
+
+def monodromy_steps(system: BeamActionSystem, Omega: np.ndarray, gamma: np.ndarray,
+                    step_phase: float = 0.06) -> np.ndarray:
+    """The automatic (uncapped) step counts per half period of :func:`monodromy_exponents`.
+
+    Parameters
+    ----------
+    system : BeamActionSystem
+        The normalised system.
+    Omega : array_like
+        Thrust pulsation frequencies (rad/s), > 0; broadcast against ``gamma``.
+    gamma : array_like
+        Pulsation amplitudes (dimensionless), 0 <= gamma < 1.
+    step_phase : float
+        Tolerance parameter of the rule (dimensionless), > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (G,) int, steps per half period before the cap :data:`MONODROMY_MAX_STEPS`
+        (the cost model of :mod:`flexbooster.cost`).
+
+    References
+    ----------
+    Lawson (1967); docs/theory/beam-action.md (the coupling-weighted step rule).
+    """
+    Ob, gam, _ = _grid(Omega, gamma, system.omega_1)
+    mu, Bt = _modal(system)
+    return _auto_steps(mu, Bt, Ob, gam, positive("step_phase", step_phase))
 
 
 def _auto_steps(mu: np.ndarray, Bt: np.ndarray, Ob: np.ndarray, gam: np.ndarray,

@@ -29,7 +29,7 @@ from dataclasses import asdict, dataclass
 
 import numpy as np
 
-from ..checks import nonnegative, positive
+from ..checks import choice, nonnegative, positive
 
 __all__ = [
     "DimensionlessGroups",
@@ -192,7 +192,7 @@ def moment_of_inertia_memo(
     ----------
     Tech Memo 104, eqs. (2.2-3) and (4.2-2b).
     """
-    divisor = {"2.2-3": 3.0, "4.2-2b": 4.0}[form]
+    divisor = {"2.2-3": 3.0, "4.2-2b": 4.0}[choice("form", form, ("2.2-3", "4.2-2b"))]
     p = mass_properties(R1, L1, R2, L2, h, rho)
     return float(
         2.0

@@ -50,6 +50,8 @@ from typing import Any
 import numpy as np
 from scipy import integrate, optimize, special
 
+from ..checks import count
+
 __all__ = [
     "pitch_frequency",
     "mathieu_parameters",
@@ -60,6 +62,7 @@ __all__ = [
     "psi_numerical",
     "three_term_error",
     "PITCH_MAX_TONGUE",
+    "MATHIEU_SCALE_MAX",
     "PitchBand",
     "pitch_band_edges",
     "pitch_bands",
@@ -68,6 +71,10 @@ __all__ = [
 ]
 
 _METHODS = ("floquet", "hill", "memo", "memo-printed")
+#: Largest sqrt(|a| + 2|q|) of the Floquet and Hill methods (a up to about 1e6): their cost
+#: grows like it (24 + 16 sqrt(a) Magnus steps, 4 sqrt(a) Hill rows), so it is bounded
+#: (issue 18); in the pipeline a = 4 omega_psi^2 / Omega^2 above it is a CaseError.
+MATHIEU_SCALE_MAX = 1000.0
 
 
 def pitch_frequency(F0: float, d2: float, K: float, I_cm: float) -> float:
@@ -168,6 +175,10 @@ def _hill_order(a: np.ndarray, q: np.ndarray) -> int:
     """
     amax = float(np.max(np.abs(a))) if a.size else 0.0
     qmax = float(np.max(q)) if q.size else 0.0
+    if np.sqrt(amax + 2.0 * qmax) > MATHIEU_SCALE_MAX:  # bounded cost (issue 18)
+        raise ValueError(f"a = {amax:.6g}, q = {qmax:.6g}: sqrt(|a| + 2|q|) exceeds "
+                         f"{MATHIEU_SCALE_MAX:g} (Hill's matrices would need more than "
+                         f"{int(8 * MATHIEU_SCALE_MAX)} rows)")
     m_needed = max(4.0 * np.sqrt(amax), 22.0 * np.sqrt(qmax))
     return int(np.ceil(m_needed / 2.0)) + 6
 
@@ -317,10 +328,15 @@ def _magnus(a: np.ndarray, q: np.ndarray, n_steps: int | None) -> tuple[np.ndarr
     """
     if n_steps is None:
         scale = float(np.max(np.sqrt(np.abs(a) + 2.0 * q))) if a.size else 0.0
+        if scale > MATHIEU_SCALE_MAX:  # 24 + 16 scale steps: bounded cost (issue 18)
+            raise ValueError(f"a = {float(np.max(np.abs(a))):.6g}, q = {float(np.max(q)):.6g}: "
+                             f"sqrt(|a| + 2|q|) = {scale:.6g} exceeds {MATHIEU_SCALE_MAX:g} "
+                             "(the Magnus integration would need more than "
+                             f"{int(24 + 16 * MATHIEU_SCALE_MAX)} steps)")
         n_steps = int(np.ceil(24.0 + 16.0 * scale))
     n_steps = int(n_steps)
-    if n_steps < 1:
-        raise ValueError(f"n_steps = {n_steps!r}: must be >= 1")
+    if not 1 <= n_steps <= 10**6:
+        raise ValueError(f"n_steps = {n_steps!r}: must be an integer in 1..1000000")
     m1, p1 = _magnus_pass(a, q, n_steps)
     m2, p2 = _magnus_pass(a, q, 2 * n_steps)
     return (16.0 * m2 - m1) / 15.0, (16.0 * p2 - p1) / 15.0
@@ -654,6 +670,12 @@ def psi_numerical(tau1: Any, a: Any, q: Any, psi0: float = 1.0) -> np.ndarray:
     )
     a, q = a.ravel(), q.ravel()
     tau1 = np.atleast_1d(np.asarray(tau1, dtype=float))
+    if not np.all(np.isfinite(tau1)):
+        raise ValueError("tau1: every time must be finite")
+    if tau1.ndim == 1 and tau1.size and tau1[-1] * np.sqrt(np.max(np.abs(a) + 2 * np.abs(q),
+                                                                  initial=0.0)) > 1e5:
+        raise ValueError(f"tau1 = {tau1[-1]!r}: tau1_max sqrt(|a| + 2|q|) must be <= 1e5 "
+                         "(about 16000 oscillations; a longer integration would not end)")
     if tau1.ndim != 1 or np.any(tau1 < 0) or np.any(np.diff(tau1) < 0):
         raise ValueError("tau1: must be a 1-D non-decreasing array of values >= 0")
     if not (np.isfinite(psi0) and psi0 != 0):
@@ -704,7 +726,7 @@ def three_term_error(
     q = np.atleast_1d(np.asarray(q, dtype=float))
     if not (np.isfinite(tau1_max) and tau1_max > 0):
         raise ValueError(f"tau1_max = {tau1_max!r}: must be finite and > 0")
-    tau = np.linspace(0.0, tau1_max, int(n_times))
+    tau = np.linspace(0.0, tau1_max, count("n_times", n_times, 2, 10**6))
     exact = psi_numerical(tau, np.full(q.shape, float(a)), q)
     betas = characteristic_exponent(float(a), q, "floquet")
     if np.any(betas.imag != 0.0):

@@ -190,6 +190,13 @@ def generalized_eigen(
     systems are not symmetric and may have complex or negative omega^2 (see
     :func:`composite_frequencies`).
     """
+    mass, stiff = np.asarray(mass, dtype=float), np.asarray(stiff, dtype=float)
+    for name, mat in (("mass", mass), ("stiff", stiff)):
+        if mat.ndim < 2 or mat.shape[-1] != mat.shape[-2] or mat.shape != mass.shape:
+            raise ValueError(f"{name}: shape {mat.shape}: must be square (..., n, n) and "
+                             "match the other matrix")
+        if not np.all(np.isfinite(mat)):
+            raise ValueError(f"{name}: every entry must be finite")
     if symmetric:
         dm = np.sqrt(np.diagonal(mass, axis1=-2, axis2=-1))
         ks = 0.5 * (stiff + np.swapaxes(stiff, -1, -2))

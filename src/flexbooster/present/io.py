@@ -8,18 +8,23 @@ run never leaves a half-written result.
 from __future__ import annotations
 
 import csv
+import hashlib
 import io
 import json
 import math
 import os
 import tempfile
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Iterator, Mapping
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
 __all__ = [
     "check_finite",
     "dumps_finite",
+    "hold_signals",
+    "locked_folder",
+    "sha256_file",
     "write_bytes_atomic",
     "write_csv_atomic",
     "write_json_atomic",
@@ -56,6 +61,76 @@ def write_bytes_atomic(path: str | Path, data: bytes) -> Path:
         Path(tmp).unlink(missing_ok=True)
         raise
     return path
+
+
+def sha256_file(path: str | Path) -> str:
+    """The SHA-256 of a file's bytes, in hex.
+
+    Parameters
+    ----------
+    path : str or pathlib.Path
+        The file.
+
+    Returns
+    -------
+    str
+        64 hex digits.
+    """
+    return hashlib.sha256(Path(path).read_bytes()).hexdigest()
+
+
+@contextmanager
+def locked_folder(folder: str | Path) -> Iterator[None]:
+    """An exclusive lock on ``folder`` (``fcntl.flock`` on ``folder/.flexbooster.lock``).
+
+    Concurrent writers of one output folder publish their sets one after the other.  Without
+    ``fcntl`` (Windows) the lock is a no-op.
+
+    Parameters
+    ----------
+    folder : str or pathlib.Path
+        The folder (it must exist).
+
+    Yields
+    ------
+    None
+    """
+    try:
+        import fcntl
+    except ImportError:  # pragma: no cover - Windows
+        yield
+        return
+    with open(Path(folder) / ".flexbooster.lock", "a") as handle:
+        fcntl.flock(handle.fileno(), fcntl.LOCK_EX)
+        try:
+            yield
+        finally:
+            fcntl.flock(handle.fileno(), fcntl.LOCK_UN)
+
+
+@contextmanager
+def hold_signals() -> Iterator[None]:
+    """Hold SIGINT and SIGTERM back (``pthread_sigmask``) for a few renames, then deliver.
+
+    In the main thread of a POSIX process only; elsewhere a no-op.
+
+    Yields
+    ------
+    None
+    """
+    import signal
+    import threading
+
+    mask = getattr(signal, "pthread_sigmask", None)
+    if mask is None or threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    held = {signal.SIGINT, signal.SIGTERM}
+    previous = mask(signal.SIG_BLOCK, held)
+    try:
+        yield
+    finally:
+        mask(signal.SIG_SETMASK, previous)
 
 
 def _umask() -> int:

@@ -7,22 +7,109 @@ A thin layer over :mod:`flexbooster.present.io` (atomic writes) and
 from __future__ import annotations
 
 import io as _io
+import json
+import os
+import shutil
+import tempfile
 from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 from .._parallel import TaskPool
 from ..results import Results
-from .io import write_bytes_atomic, write_csv_atomic, write_json_atomic, write_text_atomic
+from .io import (
+    hold_signals,
+    locked_folder,
+    sha256_file,
+    write_bytes_atomic,
+    write_csv_atomic,
+    write_json_atomic,
+    write_text_atomic,
+)
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
 __all__ = ["OUTPUT_STAGES", "write_outputs", "save_figure", "make_figures", "figure_svgs",
-           "figure_names", "render_figures"]
+           "figure_names", "render_figures", "MANIFEST", "STAGING_PREFIX", "publish_set",
+           "check_output_set"]
 
 #: The stages of :func:`write_outputs`, as passed to its ``progress`` callback.
 OUTPUT_STAGES = ("results.json and CSV", "figures", "report.html")
+#: The manifest of an output set, written last: every file of the set with its SHA-256.
+MANIFEST = "manifest.json"
+#: Prefix of the staging folder that :func:`write_outputs` makes inside the output folder.
+STAGING_PREFIX = ".flexbooster-staging-"
+
+
+def publish_set(stage: str | Path, folder: str | Path, names: list[str]) -> list[Path]:
+    """Move the files ``names`` of ``stage`` into ``folder`` as one set, the manifest last.
+
+    Parameters
+    ----------
+    stage : str or pathlib.Path
+        Staging folder on the same file system as ``folder``.
+    folder : str or pathlib.Path
+        Output folder.
+    names : list of str
+        File names of the set (in ``stage``).
+
+    Returns
+    -------
+    list of pathlib.Path
+        The paths in ``folder``, :data:`MANIFEST` last.
+    """
+    stage, folder = Path(stage), Path(folder)
+    hashes = {name: sha256_file(stage / name) for name in names}
+    manifest = {"files": hashes}
+    with locked_folder(folder), hold_signals():
+        old = _manifest_files(folder)
+        for name in names:
+            os.replace(stage / name, folder / name)
+        for name in sorted(set(old) - set(names)):  # files of the previous set only
+            (folder / name).unlink(missing_ok=True)
+        write_json_atomic(folder / MANIFEST, manifest)
+    return [folder / name for name in names] + [folder / MANIFEST]
+
+
+def _manifest_files(folder: Path) -> dict[str, str]:
+    try:
+        data = json.loads((folder / MANIFEST).read_text("utf-8"))
+        files = data["files"]
+    except (OSError, ValueError, KeyError, TypeError):
+        return {}
+    return {str(k): str(v) for k, v in files.items() if "/" not in str(k)} \
+        if isinstance(files, dict) else {}
+
+
+def check_output_set(folder: str | Path) -> dict[str, str]:
+    """Verify that ``folder`` holds one complete output set (the reader's check).
+
+    Parameters
+    ----------
+    folder : str or pathlib.Path
+        An output folder of :func:`write_outputs`.
+
+    Returns
+    -------
+    dict of str to str
+        File name -> SHA-256 of the set.
+
+    Raises
+    ------
+    ValueError
+        No manifest, or a file missing or different from the manifest (a mixed set).
+    """
+    folder = Path(folder)
+    files = _manifest_files(folder)
+    if not files:
+        raise ValueError(f"folder = {str(folder)!r}: no {MANIFEST} (not a complete output set)")
+    for name, digest in files.items():
+        path = folder / name
+        if not path.is_file() or sha256_file(path) != digest:
+            raise ValueError(f"folder = {str(folder)!r}: {name} differs from {MANIFEST} "
+                             "(a mixed or damaged output set)")
+    return files
 
 
 def save_figure(fig, path_stem: Path) -> list[Path]:
@@ -77,12 +164,32 @@ def write_outputs(
     list of pathlib.Path
         The files written: results.json, shell-frequencies.csv, unstable-frequencies.csv (when
         the stability table was computed), vehicle-regions.csv (when the vehicle's regions
-        were computed), the figures and report.html (last).
+        were computed), the figures and report.html, and last :data:`MANIFEST` (each file
+        with its SHA-256).
+
+    Notes
+    -----
+    The files are written into a staging folder inside ``folder`` and moved into place
+    together (:func:`publish_set`): under a lock, with SIGINT and SIGTERM held back, files of
+    the previous set that this one lacks removed, the manifest last.  An interrupted or a
+    concurrent run never leaves a mixed set; :func:`check_output_set` verifies one.
     """
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    stage = Path(tempfile.mkdtemp(prefix=STAGING_PREFIX, dir=folder))
+    try:  # every file into the staging folder, then the set renamed into place (issue 18)
+        staged = _write_files(results, stage, figures, progress or (lambda stage: None),
+                              workers)
+        return publish_set(stage, folder, [p.name for p in staged])
+    finally:
+        shutil.rmtree(stage, ignore_errors=True)
+
+
+def _write_files(results: Results, folder: Path, figures: bool,
+                 step: Callable[[str], None], workers: int) -> list[Path]:
+    """Every output file of :func:`write_outputs`, written into ``folder``."""
     from .report import write_report
 
-    step = progress or (lambda stage: None)
-    folder = Path(folder)
     draw = figures and results.figures is not None
     with TaskPool(workers) as pool:
         # the figures are drawn by the workers (started first) while this process writes

@@ -1,0 +1,409 @@
+"""Cost and feasibility of a case before its analysis: bounded run time, physical validity.
+
+:func:`estimate_cost` predicts the run time of :func:`flexbooster.analysis.analyze` from the
+derived model alone (no solver is run): one term per expensive kernel, each with the case
+fields that drive it.  :func:`check_case_cost` refuses (``CaseError``, exit 2 on the command
+line) a case whose estimate exceeds its budget (``max_seconds``, case field or
+``--max-seconds``).  :func:`check_physical` refuses a load at or above what the structure
+carries (divergence or flutter of the steady beam-action system, an absurd Mathieu ``a``) and
+:func:`physical_warnings` names the others (the thrust above the classical buckling load of a
+shell).  The constants are calibrated on the default case (docs/theory/robustness.md); an
+estimate is good to a factor of about 2.
+
+References
+----------
+.. [1] Tech Memo 104, eqs. (4.1-10)..(4.1-12) (beam action), (4.2-3), (4.2-4) (pitch),
+   section 7.3 (the stability table).
+.. [2] S. P. Timoshenko, J. M. Gere, *Theory of Elastic Stability*, 2nd ed., McGraw-Hill,
+   1961, eq. (11-17) (classical axial buckling stress of a cylinder).
+.. [3] V. L. Beal, AIAA J. 3 (1965) 486-494 (flutter and divergence of the steady system).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from .checks import positive
+from .errors import AnalysisWarning, CaseError
+from .memo.beam_action import (
+    BAND_OMEGA_BAR_MIN,
+    MONODROMY_MAX_STEPS,
+    beam_system,
+    monodromy_steps,
+)
+from .memo.charts import PITCH_BAND_CHART_LEVELS
+from .memo.model import BoosterModel
+from .memo.pitch import MATHIEU_SCALE_MAX, PITCH_MAX_TONGUE
+
+__all__ = [
+    "DEFAULT_MAX_SECONDS",
+    "derived_model",
+    "CostEstimate",
+    "estimate_cost",
+    "check_case_cost",
+    "check_physical",
+    "physical_warnings",
+    "capped_steps_warning",
+]
+
+#: Default budget of a run (s): a case whose estimate exceeds it is refused up front.
+DEFAULT_MAX_SECONDS = 300.0
+
+# Calibration (s), measured on the default case on one core (docs/theory/robustness.md).
+_C_MONODROMY = 9e-5  # per grid point and Lawson step, n <= 24 modes (numpy overhead bound)
+_C_HILL = 2e-9  # per (2 m)^3 of one Hill eigenproblem, m = n (2 S + 1)
+_C_BANDS = 5.4e-3  # band search, per resonance candidate and order j (default: 204, 1.1 s)
+_DAMPED_FACTOR = 40.0  # with damping: the critical gamma of every region (a search each)
+_BAND_RTOL = 1e-9  # flexbooster.memo.beam_action.BAND_RTOL
+_C_CHART = 2.5  # beam-action chart of the default, scales like (n / 11)^2.5
+_C_PITCH_STEP = (2e-5, 3e-7)  # per Magnus step: fixed, per grid point
+_C_TONGUE = 0.07  # pitch bands, per tongue in the range
+_C_TONGUE_LEVEL = 0.04  # pitch chart, per tongue and gamma level
+_C_STABILITY = 1.5e-6  # per (excitation curve x shell mode)
+_C_SHELL = 1e-4  # per shell mode
+_HILL_POINTS = 3  # beam_action_analysis n_hill
+
+
+@dataclass(frozen=True)
+class CostEstimate:
+    """Predicted run time of :func:`flexbooster.analysis.analyze` by kernel.
+
+    Attributes
+    ----------
+    seconds : float
+        Total (s).
+    parts : dict of str to float
+        Seconds by kernel.
+    drivers : dict of str to tuple of str
+        The case fields that drive each kernel.
+    capped_points : int
+        Omega grid points whose beam-action step count is capped
+        (:data:`flexbooster.memo.beam_action.MONODROMY_MAX_STEPS`).
+    capped_omega_max : float
+        The largest of those Omega (rad/s); 0 when none.
+    """
+
+    seconds: float
+    parts: dict = field(default_factory=dict)
+    drivers: dict = field(default_factory=dict)
+    capped_points: int = 0
+    capped_omega_max: float = 0.0
+
+    def describe(self, n: int = 3) -> str:
+        """The largest ``n`` parts with their fields, in one line.
+
+        Parameters
+        ----------
+        n : int
+            Number of parts named.
+
+        Returns
+        -------
+        str
+            E.g. ``"Hill determinant 2.2e+03 s (truncation.N, truncation.S); ..."``.
+        """
+        top = sorted(self.parts.items(), key=lambda kv: -kv[1])[:n]
+        return "; ".join(f"{k} {v:.3g} s ({', '.join(self.drivers[k])})" for k, v in top)
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready mapping."""
+        return {"seconds": float(self.seconds),
+                "parts": {k: float(v) for k, v in self.parts.items()},
+                "drivers": {k: list(v) for k, v in self.drivers.items()},
+                "capped_points": int(self.capped_points),
+                "capped_omega_max": float(self.capped_omega_max)}
+
+
+def _resonance_weight(A0: np.ndarray, B: np.ndarray, lo: float, hi: float) -> float:
+    """Sum of the orders j of the resonance centres 2 w_i / j, (w_i +- w_k) / j in [lo, hi]
+    whose first-order width estimate is above the band tolerance (Bolotin sec. 3; as the
+    candidates of :func:`flexbooster.floquet.instability_regions`, without its round-off
+    floor, so an over-count); Omega in units of omega_1."""
+    mu, V = np.linalg.eig(A0)
+    w = np.sqrt(np.abs(mu.real))
+    Bt = np.abs(np.linalg.solve(V, B @ V))  # modal coupling, eq. (4.1-11)
+    wt = np.maximum(w, 0.5 * lo)
+    Z = Bt / np.outer(wt, wt)
+    zeta = min(float(np.max(Z)), 1e6)
+    zrow = np.max(np.maximum(Z, Z.T), axis=1)
+    ii, kk = np.triu_indices(w.size, 1)
+    base = np.concatenate([2.0 * w, w[ii] + w[kk], np.abs(w[kk] - w[ii])])
+    scale = np.concatenate([zrow**2, zrow[ii] * zrow[kk], zrow[ii] * zrow[kk]])
+    ok = base > 1e-12 * max(float(np.max(w)), 1e-300)
+    base, scale = base[ok], scale[ok]
+    j_lo = np.maximum(1.0, np.ceil(base / hi))
+    j_hi = np.minimum(np.floor(base / lo), 1e7)
+    if zeta < 1.0:  # est ~ scale zeta^(j - 2) >= 1e-2 rtol: the highest order kept
+        top = 2.0 + np.log(np.maximum(1e-2 * _BAND_RTOL / np.maximum(scale, 1e-300),
+                                      1e-300)) / np.log(max(zeta, 1e-300))
+        j_hi = np.minimum(j_hi, np.maximum(top, 1.0))
+    n_j = np.maximum(0.0, j_hi - j_lo + 1.0)
+    return float(np.sum(n_j * 0.5 * (j_lo + j_hi)))  # sum of j over the kept orders
+
+
+def _tongues(omega_psi: float, lo: float, hi: float, widen: float) -> int:
+    """Pitch tongues r (Omega ~ 2 omega_psi / r) that reach [lo, hi] (widened), capped."""
+    if omega_psi <= 0.0:
+        return 0
+    r_hi = min(PITCH_MAX_TONGUE, math.floor(widen * 2.0 * omega_psi / lo))
+    r_lo = max(1, math.ceil(2.0 * omega_psi / (widen * hi)))
+    return max(0, r_hi - r_lo + 1)
+
+
+def estimate_cost(model: BoosterModel, *, beam_action: bool = True, stability: bool = True,
+                  figures: bool = True) -> CostEstimate:
+    """The predicted run time of the analysis of a derived model, by kernel.
+
+    Parameters
+    ----------
+    model : BoosterModel
+        The derived model (:func:`flexbooster.model.model_from_case`).
+    beam_action, stability, figures : bool
+        The stages that will run (as the arguments of :func:`flexbooster.analysis.analyze`).
+
+    Returns
+    -------
+    CostEstimate
+        Seconds by kernel: pitch Magnus pass (24 + 16 sqrt(a + 2 q) steps, a at omega_min,
+        eq. 4.2-4), pitch bands and chart (tongues in the range), shell frequencies
+        (M x N modes), beam-action monodromy (the sum of the capped step counts over the
+        grid), Hill determinant ((2 n (2 S + 1))^3 per point), band search and chart
+        (~n^2.5), stability table (curves x shell modes).
+
+    References
+    ----------
+    Tech Memo 104, eqs. (4.1-10)..(4.1-12), (4.2-3), (4.2-4), section 7.3.
+    """
+    n = model.truncation
+    Omega = np.asarray(model.Omega, dtype=float)
+    G = Omega.size
+    lo, hi = float(Omega.min()), float(Omega.max())
+    parts: dict[str, float] = {}
+    drivers: dict[str, tuple[str, ...]] = {}
+    a_max = 4.0 * model.omega_psi**2 / lo**2  # eq. (4.2-4)
+    scale = math.sqrt(a_max * (1.0 + model.gamma))
+    steps = 24.0 + 16.0 * min(scale, MATHIEU_SCALE_MAX)
+    c0, c1 = _C_PITCH_STEP
+    parts["pitch (Magnus)"] = 3.0 * steps * (c0 + c1 * G)
+    drivers["pitch (Magnus)"] = ("thrust.omega_min", "thrust.F0", "thrust.K", "thrust.n_omega")
+    t_bands = _tongues(model.omega_psi, lo, hi, 1.0)
+    parts["pitch bands"] = _C_TONGUE * t_bands
+    drivers["pitch bands"] = ("thrust.omega_min", "thrust.F0", "thrust.K")
+    modes = (n.M1 + 1) * (n.N1 + 1) + (n.M2 + 1) * (n.N2 + 1)
+    parts["shell frequencies"] = _C_SHELL * modes
+    drivers["shell frequencies"] = ("truncation.M1", "truncation.N1", "truncation.M2",
+                                    "truncation.N2")
+    capped, capped_omega = 0, 0.0
+    if beam_action:
+        nn = n.N + 1
+        system = beam_system(model)
+        raw = monodromy_steps(system, Omega, np.full(G, model.gamma))
+        over = raw > MONODROMY_MAX_STEPS
+        capped = int(np.sum(over))
+        capped_omega = float(np.max(Omega[over])) if capped else 0.0
+        work = float(np.sum(np.minimum(raw, MONODROMY_MAX_STEPS)))
+        parts["beam-action monodromy"] = _C_MONODROMY * work * max(1.0, (nn / 24.0) ** 3)
+        drivers["beam-action monodromy"] = ("thrust.omega_min", "thrust.n_omega",
+                                            "truncation.N")
+        m2 = 2.0 * nn * (2 * n.S + 1)
+        parts["Hill determinant"] = _C_HILL * m2**3 * min(_HILL_POINTS, G)
+        drivers["Hill determinant"] = ("truncation.N", "truncation.S")
+        if hi > BAND_OMEGA_BAR_MIN * model.omega_1:
+            lo_b = max(lo, BAND_OMEGA_BAR_MIN * model.omega_1) / model.omega_1
+            weight = _resonance_weight(system.A0, model.gamma * system.B, lo_b,
+                                       hi / model.omega_1)
+            damped = model.beam_damping_ratio > 0.0 or model.pitch_damping_ratio > 0.0
+            parts["beam-action bands"] = _C_BANDS * weight * (1.0 + _DAMPED_FACTOR * damped)
+            drivers["beam-action bands"] = ("truncation.N", "thrust.omega_min",
+                                            "damping.beam_modal_ratio", "thrust.F0")
+    if beam_action and stability:
+        curves = 13.0 * n.R * (2 * n.S + 1)
+        parts["stability table"] = _C_STABILITY * curves * modes
+        drivers["stability table"] = ("truncation.R", "truncation.S", "truncation.M1",
+                                      "truncation.N1", "truncation.M2", "truncation.N2")
+    if figures:
+        parts["pitch chart"] = (_C_TONGUE_LEVEL * PITCH_BAND_CHART_LEVELS
+                                * _tongues(model.omega_psi, lo, hi, 1.5))
+        drivers["pitch chart"] = ("thrust.omega_min", "thrust.F0", "thrust.K")
+        if beam_action and hi > BAND_OMEGA_BAR_MIN * model.omega_1:
+            parts["beam-action chart"] = _C_CHART * ((n.N + 1) / 11.0) ** 2.5
+            drivers["beam-action chart"] = ("truncation.N",)
+    return CostEstimate(seconds=float(sum(parts.values())), parts=parts, drivers=drivers,
+                        capped_points=capped, capped_omega_max=capped_omega)
+
+
+def derived_model(case: Any) -> BoosterModel:
+    """:func:`flexbooster.model.model_from_case`, with a case that cannot be modelled (the
+    mass properties or omega_1 overflow, e.g. radius = 1e300 m) as a one-line ``CaseError``.
+
+    Parameters
+    ----------
+    case : Case
+        The validated case (SI).
+
+    Returns
+    -------
+    BoosterModel
+        The derived model.
+
+    Raises
+    ------
+    CaseError
+        Field ``booster``, with the core's message (which names the derived quantity).
+
+    References
+    ----------
+    Tech Memo 104, sections 2.2, 3.0, 4.2.
+    """
+    from .model import model_from_case
+
+    try:
+        with np.errstate(over="raise", invalid="raise"):
+            return model_from_case(case)
+    except (ValueError, FloatingPointError, OverflowError, ZeroDivisionError) as exc:
+        raise CaseError("booster", "(derived model)",
+                        f"the case cannot be modelled in double precision: {exc}") from None
+
+
+def check_case_cost(model: BoosterModel, max_seconds: float, **stages: bool) -> CostEstimate:
+    """The cost estimate, or a ``CaseError`` when it exceeds the budget.
+
+    Parameters
+    ----------
+    model : BoosterModel
+        The derived model.
+    max_seconds : float
+        Budget (s), > 0.
+    **stages : bool
+        ``beam_action``, ``stability``, ``figures`` as for :func:`estimate_cost`.
+
+    Returns
+    -------
+    CostEstimate
+        When within the budget.
+
+    Raises
+    ------
+    CaseError
+        Field ``max_seconds``: one line with the estimate and the fields that drive it.
+
+    References
+    ----------
+    docs/theory/robustness.md (issue 18).
+    """
+    max_seconds = positive("max_seconds", max_seconds)
+    est = estimate_cost(model, **stages)
+    if est.seconds > max_seconds:
+        raise CaseError("max_seconds", max_seconds,
+                        f"the estimated run time {est.seconds:.3g} s exceeds the budget: "
+                        f"{est.describe()}; reduce those fields or raise the budget "
+                        "(--max-seconds)")
+    return est
+
+
+def check_physical(model: BoosterModel) -> None:
+    """Refuse a load at or above what the structure carries, before any solver runs.
+
+    Parameters
+    ----------
+    model : BoosterModel
+        The derived model.
+
+    Raises
+    ------
+    CaseError
+        ``thrust.F0`` when the steady beam-action system (gamma = 0) diverges (an eigenvalue
+        of A0 = Lambda + B below 0) or flutters (a complex eigenvalue), or when the Mathieu
+        parameter a = 4 omega_psi^2 / omega_min^2 (eq. 4.2-4) exceeds
+        :data:`flexbooster.memo.pitch.MATHIEU_SCALE_MAX` squared.
+
+    References
+    ----------
+    Beal (1965) (follower flutter, divergence); Tech Memo 104, eqs. (4.1-11), (4.2-4).
+    """
+    lo = float(np.min(model.Omega))
+    a_max = 4.0 * model.omega_psi**2 / lo**2  # eq. (4.2-4)
+    if not math.sqrt(a_max * (1.0 + model.gamma)) <= MATHIEU_SCALE_MAX:
+        raise CaseError("thrust.F0", model.F0,
+                        f"gives Mathieu a = 4 omega_psi^2/Omega^2 = {a_max:.3g} at the lowest "
+                        f"Omega {lo:.6g} rad/s (omega_psi = {model.omega_psi:.6g} rad/s), "
+                        f"beyond {MATHIEU_SCALE_MAX**2:.3g} (eq. 4.2-4): reduce it or the "
+                        "gimbal gain K, or raise omega_min")
+    system = beam_system(model)
+    mu = np.linalg.eigvals(system.A0)  # squared steady frequencies / omega_1^2, eq. (4.1-11)
+    big = float(np.max(np.abs(mu)))
+    tol = 1e-9 * big
+    if np.any(np.abs(mu.imag) > tol):
+        raise CaseError("thrust.F0", model.F0,
+                        "at or above the flutter load of the steady beam-action system "
+                        f"(complex eigenvalue {complex(mu[np.argmax(np.abs(mu.imag))]):.4g} "
+                        "of Lambda + B, eq. 4.1-11 with gamma = 0): the booster is unstable "
+                        "without pulsation")
+    if np.any(mu.real < -tol):
+        raise CaseError("thrust.F0", model.F0,
+                        "at or above the divergence load of the steady beam-action system "
+                        f"(eigenvalue {float(np.min(mu.real)):.4g} < 0 of Lambda + B, "
+                        "eq. 4.1-11 with gamma = 0): the booster is unstable without pulsation")
+
+
+def physical_warnings(model: BoosterModel) -> list[AnalysisWarning]:
+    """Named warnings of a load the memo's model does not see (the shells are unloaded).
+
+    Parameters
+    ----------
+    model : BoosterModel
+        The derived model.
+
+    Returns
+    -------
+    list of AnalysisWarning
+        Code ``shell-buckling`` (field ``thrust.F0``) when F0 reaches the classical axial
+        buckling load 2 pi E h^2 / sqrt(3 (1 - nu^2)) of a cylinder (the same for both: h
+        and E are common).
+
+    References
+    ----------
+    Timoshenko & Gere (1961), eq. (11-17).
+    """
+    f_cr = 2.0 * math.pi * model.E * model.h**2 / math.sqrt(3.0 * (1.0 - model.nu**2))
+    if model.F0 >= f_cr:
+        return [AnalysisWarning(
+            "shell-buckling", "thrust.F0",
+            f"F0 = {model.F0:.4g} N reaches the classical axial buckling load "
+            f"2 pi E h^2 / sqrt(3 (1 - nu^2)) = {f_cr:.4g} N of the cylinders (Timoshenko & "
+            "Gere 11-17; real shells buckle lower): the memo's shell frequencies are those "
+            "of the unloaded shells")]
+    return []
+
+
+def capped_steps_warning(estimate: CostEstimate, model: BoosterModel) -> list[AnalysisWarning]:
+    """A warning when the beam-action step count was capped at some grid points.
+
+    Parameters
+    ----------
+    estimate : CostEstimate
+        From :func:`estimate_cost`.
+    model : BoosterModel
+        The derived model.
+
+    Returns
+    -------
+    list of AnalysisWarning
+        Code ``beam-action-step-cap`` (field ``thrust.omega_min``), or empty.
+
+    References
+    ----------
+    docs/theory/robustness.md (the cap and its error).
+    """
+    if not estimate.capped_points:
+        return []
+    return [AnalysisWarning(
+        "beam-action-step-cap", "thrust.omega_min",
+        f"{estimate.capped_points} of {np.size(model.Omega)} grid points, Omega up to "
+        f"{estimate.capped_omega_max:.6g} rad/s: the beam-action step count per half "
+        f"period is capped at {MONODROMY_MAX_STEPS} (bounded cost); alpha there is accurate "
+        "to about 1e-5 instead of 1e-9")]

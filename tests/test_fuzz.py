@@ -1,0 +1,176 @@
+"""Property-based tests (hypothesis) over the documented input space of a case (issue 18).
+
+Every valid case (each field within its documented range, small truncations so that an
+example is fast) gives finite results or a documented error (a one-line ``CaseError``:
+refused budget, a load beyond the structure) within its budget, with no numpy overflow
+warning on the way; every invalid one (one field replaced by a value that breaks its rule) a
+one-line ``CaseError``.
+
+Profiles (environment variable ``FLEXBOOSTER_FUZZ``): ``ci`` (default; a bounded number of
+examples so that this file stays well under 60 s on 2 cores) and ``long`` (``make fuzz``:
+1,000 valid cases with a fixed seed; the outcomes are tallied, printed, and must show 0
+internal errors, 0 NaN and 0 cases over the budget without a warning or a refusal).
+Sources of the expectations: the rules of ``flexbooster/case.py`` and the issue's acceptance.
+"""
+
+from __future__ import annotations
+
+import collections
+import math
+import os
+import time
+import warnings
+
+import pytest
+
+hypothesis = pytest.importorskip("hypothesis")
+from hypothesis import HealthCheck, given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+import flexbooster  # noqa: E402
+from flexbooster.analysis import analyze  # noqa: E402
+from flexbooster.errors import CaseError  # noqa: E402
+from flexbooster.present.io import dumps_finite  # noqa: E402
+
+PROFILE = os.environ.get("FLEXBOOSTER_FUZZ", "ci")
+_COMMON = dict(deadline=None, derandomize=True, database=None, print_blob=False,
+               suppress_health_check=list(HealthCheck))
+settings.register_profile("ci", max_examples=12, **_COMMON)
+settings.register_profile(
+    "long", max_examples=int(os.environ.get("FLEXBOOSTER_FUZZ_EXAMPLES", "1000")), **_COMMON)
+#: Budget of each fuzzed case (s): the check "within the budget" uses it.
+BUDGET = 60.0
+VALID_EXAMPLES = settings.get_profile(PROFILE).max_examples
+INVALID_EXAMPLES = 40 if PROFILE == "ci" else VALID_EXAMPLES
+TALLY: collections.Counter = collections.Counter()
+
+
+def _log_uniform(lo: float, hi: float):
+    return st.floats(math.log10(lo), math.log10(hi)).map(lambda x: 10.0**x)
+
+
+@st.composite
+def valid_cases(draw) -> dict:
+    """A case inside the documented ranges (case.py, default_case.toml), small truncations."""
+    r1 = draw(_log_uniform(0.2, 50.0))
+    r2 = draw(_log_uniform(0.2, 50.0))
+    h = min(r1, r2) * draw(_log_uniform(1e-4, 0.5))  # 0 < h < R (h/R > 1/20 warns)
+    omega_min = draw(_log_uniform(0.05, 500.0))
+    thrust = {"gamma": draw(st.floats(0.0, 0.95)), "K": draw(st.floats(0.0, 5.0)),
+              "omega_min": omega_min,
+              "omega_max": omega_min * draw(_log_uniform(1.01, 1000.0)),
+              "n_omega": draw(st.integers(2, 12))}
+    force = draw(_log_uniform(1e2, 1e12))
+    if draw(st.booleans()):
+        thrust["F0"] = force
+    else:
+        thrust["T0"] = force / (2.0 * math.pi * r1)
+    n = draw(st.integers(1, 4))
+    return {
+        "name": "fuzz",
+        "max_seconds": BUDGET,
+        "booster": {
+            "cylinder1": {"radius": r1, "half_length": draw(_log_uniform(0.5, 100.0))},
+            "cylinder2": {"radius": r2, "half_length": draw(_log_uniform(0.5, 100.0))},
+            "thickness": h, "E": draw(_log_uniform(1e8, 1e12)),
+            "nu": draw(st.floats(0.01, 0.49)), "rho": draw(_log_uniform(10.0, 2e4)),
+        },
+        "thrust": thrust,
+        "truncation": {"M1": draw(st.integers(1, 4)), "N1": draw(st.integers(1, 4)),
+                       "M2": draw(st.integers(1, 4)), "N2": draw(st.integers(1, 4)),
+                       "N": n, "S": draw(st.integers(0, 3)),
+                       "R": draw(st.integers(1, min(n + 1, 3)))},
+        "damping": {"beam_modal_ratio": draw(st.sampled_from([0.0, 0.0, 0.01, 0.2])),
+                    "pitch_ratio": draw(st.sampled_from([0.0, 0.0, 0.02, 0.5]))},
+    }
+
+
+def _outcome(data: dict) -> str:
+    """'ok', 'documented', or the name of a failure: internal, nan, over-budget, warning."""
+    start = time.perf_counter()
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("error", RuntimeWarning)  # numpy overflow is a failure
+            case = flexbooster.load_case(data)
+            res = analyze(case, figures=False, vehicle=False)  # the memo pipeline (see docs)
+            dumps_finite(res.to_dict())
+    except CaseError as exc:
+        if "\n" in str(exc):
+            return "internal: multi-line CaseError"
+        return f"documented: {exc.field}"
+    except RuntimeWarning as exc:
+        return f"warning: {exc}"
+    except ValueError as exc:
+        if "a result must be finite" in str(exc):
+            return f"nan: {exc}"
+        return f"internal: ValueError: {exc}"
+    except Exception as exc:  # noqa: BLE001 - any other exception is an internal error
+        return f"internal: {type(exc).__name__}: {exc}"
+    elapsed = time.perf_counter() - start
+    if elapsed > BUDGET and not any(w.code == "cost-estimate" for w in res.warnings):
+        return f"over-budget: {elapsed:.1f} s"
+    return "ok"
+
+
+@settings(settings.get_profile(PROFILE))
+@given(valid_cases())
+def test_valid_case_gives_finite_results_or_a_documented_error(data):
+    outcome = _outcome(data)
+    kind = outcome.split(":")[0]
+    TALLY[kind] += 1
+    if kind == "documented":
+        FIELDS[outcome] += 1
+        return
+    if PROFILE == "long" and outcome != "ok":
+        TALLY_DETAILS.append((outcome, data))
+        return  # tallied: the report below fails the run
+    assert outcome == "ok", (outcome, data)
+
+
+TALLY_DETAILS: list = []
+FIELDS: collections.Counter = collections.Counter()
+
+_BAD_FLOATS = [math.nan, math.inf, -1.0, "xyz", "5 kg"]
+_BAD_INTS = [-1, 2.5, "ten", 10**6]
+_FLOAT_FIELDS = ["booster.cylinder1.radius", "booster.cylinder2.half_length",
+                 "booster.thickness", "booster.E", "booster.nu", "booster.rho", "thrust.gamma",
+                 "thrust.K", "thrust.omega_min", "thrust.omega_max", "max_seconds"]
+_INT_FIELDS = ["thrust.n_omega", "truncation.M1", "truncation.N2", "truncation.N",
+               "truncation.S", "truncation.R"]
+
+
+@settings(settings.get_profile(PROFILE), max_examples=INVALID_EXAMPLES)
+@given(valid_cases(), st.one_of(
+    st.tuples(st.sampled_from(_FLOAT_FIELDS), st.sampled_from(_BAD_FLOATS)),
+    st.tuples(st.sampled_from(_INT_FIELDS), st.sampled_from(_BAD_INTS))))
+def test_invalid_case_is_a_one_line_case_error(data, bad):
+    field, value = bad
+    *parents, last = field.split(".")
+    table = data
+    for key in parents:
+        table = table[key]
+    table[last] = value
+    with pytest.raises(CaseError) as info:
+        flexbooster.load_case(data)
+    message = str(info.value)
+    assert "\n" not in message and message.startswith(field), message
+
+
+def _report() -> None:
+    if PROFILE == "long" and TALLY:
+        print(f"\nfuzz ({VALID_EXAMPLES} valid cases, fixed seed): " + ", ".join(
+            f"{k} {v}" for k, v in sorted(TALLY.items())))
+        print("  documented errors by field: " + ", ".join(
+            f"{k.split(': ')[1]} {v}" for k, v in FIELDS.most_common()))
+        for outcome, data in TALLY_DETAILS[:20]:
+            print(f"  {outcome}\n    {data}")
+
+
+def test_long_profile_report():
+    """Long profile only: 0 internal errors, 0 NaN, 0 over the budget (issue 18 acceptance)."""
+    if PROFILE != "long":
+        pytest.skip("the long profile is `make fuzz`")
+    _report()
+    bad = {k: v for k, v in TALLY.items() if k not in ("ok", "documented")}
+    assert not bad, bad
+

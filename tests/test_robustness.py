@@ -1,0 +1,463 @@
+"""Issue 18: bounded cost, physical validity, output as a set, API validation, signals.
+
+Sources of the expected values: the issue's lists of bad calls and probes (each must be a
+ValueError naming the parameter, or exit 2 with one line naming the field once), the
+monodromy with 4x the steps (the cap's error), and the classical buckling load
+2 pi E h^2 / sqrt(3 (1 - nu^2)) (Timoshenko & Gere 1961, eq. 11-17).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import random
+import signal
+import subprocess
+import sys
+import time
+import warnings
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import flexbooster
+from conftest import dump_toml
+from flexbooster import cost
+from flexbooster.analysis import analyze
+from flexbooster.cli import main
+from flexbooster.errors import CaseError
+from flexbooster.memo import beam, charts, pitch, shell, stability
+from flexbooster.memo import beam_action as ba
+from flexbooster.memo import geometry as geo
+from flexbooster.memo import shell_coefficients as sc
+from flexbooster.model import model_from_case
+from flexbooster.present.outputs import MANIFEST, STAGING_PREFIX, check_output_set
+from test_case import BAD_INPUTS, _set
+
+nan, inf = math.nan, math.inf
+SRC = str(Path(flexbooster.__file__).parents[1])
+
+
+def run_cli(argv):
+    """Run the command in-process; return the exit code."""
+    with pytest.raises(SystemExit) as info:
+        main(argv)
+    return info.value.code
+
+
+@pytest.fixture
+def alarm():
+    """A call that hangs fails after 20 s instead of blocking the suite (issue 18: no hang)."""
+    def handler(signum, frame):
+        raise TimeoutError("the call did not return within 20 s")
+
+    previous = signal.signal(signal.SIGALRM, handler)
+    signal.alarm(20)
+    yield
+    signal.alarm(0)
+    signal.signal(signal.SIGALRM, previous)
+
+
+# --------------------------------------------------------------------------------------------
+# Library API: every bad call a ValueError naming the parameter (issue 18 item 6)
+# --------------------------------------------------------------------------------------------
+_G = dict(R1=5.0, L1=21.0, R2=3.3, L2=9.0, h=0.02, rho=2768.0)
+_SHELL = dict(R1=5.0, L1=21.0, R2=3.3, L2=9.0, h=0.02, E=7e10, nu=0.3, rho=2768.0,
+              omega_1=100.0)
+
+
+def _system():
+    return ba.beam_action_system(100.0, 1e5, 30.0, 20.0, 1e8, 1e6, 0.5, 3)
+
+
+def _model():
+    return model_from_case(flexbooster.default_case())
+
+
+#: (id, parameter the message must name, call).  Source: the issue's list of bad calls (the
+#: four named ones first: reduced_exponents([nan]), characteristic_exponent(1e12, 0.01),
+#: psi_numerical([0, nan]) and mass_properties(R1=nan)) and one probe per rule of each public
+#: function of memo/ (finite, sign, range, shape, empty, choice).
+BAD_CALLS = [
+    ("reduced_exponents-nan", "alpha", lambda: ba.reduced_exponents([nan])),
+    ("characteristic_exponent-1e12-hangs", "a", lambda: pitch.characteristic_exponent(1e12, .01)),
+    ("psi_numerical-nan-hangs", "tau1", lambda: pitch.psi_numerical([0, nan], 0.5, 0.01)),
+    ("mass_properties-R1-nan", "R1", lambda: geo.mass_properties(**{**_G, "R1": nan})),
+    ("mass_properties-R1-neg", "R1", lambda: geo.mass_properties(**{**_G, "R1": -5.0})),
+    ("mass_properties-h-inf", "h", lambda: geo.mass_properties(**{**_G, "h": inf})),
+    ("moment_of_inertia_memo-L1-nan", "L1",
+     lambda: geo.moment_of_inertia_memo(**{**_G, "L1": nan})),
+    ("moment_of_inertia_memo-form", "form", lambda: geo.moment_of_inertia_memo(**_G, form="x")),
+    ("dimensionless_groups-E-nan", "E",
+     lambda: geo.dimensionless_groups(L=30., R1=5., R2=3., h=.02, E=nan, rho=2768.,
+                                      omega_1=100., T0=1e5)),
+    ("free_free_eigenvalues-0", "n", lambda: beam.free_free_eigenvalues(0)),
+    ("free_free_eigenvalues-float", "n", lambda: beam.free_free_eigenvalues(2.5)),
+    ("free_free_alpha-neg", "n", lambda: beam.free_free_alpha(-1)),
+    ("first_bending_frequency-L-neg", "L",
+     lambda: beam.first_bending_frequency(-1.0, 5.0, 7e10, 2768.)),
+    ("first_bending_frequency-E-nan", "E",
+     lambda: beam.first_bending_frequency(30.0, 5.0, nan, 2768.)),
+    ("mode_shape-zeta-nan", "zeta", lambda: beam.mode_shape(1, np.array([nan]))),
+    ("mode_shape-n-0", "n", lambda: beam.mode_shape(0, np.array([0.5]))),
+    ("beam_modes-N-0", "N", lambda: beam.beam_modes(0)),
+    ("pitch_frequency-F0-nan", "F0", lambda: pitch.pitch_frequency(nan, 20., 0.5, 1e8)),
+    ("pitch_frequency-I_cm-0", "I_cm", lambda: pitch.pitch_frequency(1e6, 20., 0.5, 0.0)),
+    ("mathieu_parameters-Omega-0", "Omega",
+     lambda: pitch.mathieu_parameters(np.array([0.0]), 1.0, 0.1)),
+    ("mathieu_parameters-gamma-nan", "gamma",
+     lambda: pitch.mathieu_parameters(np.array([1.0]), 1.0, nan)),
+    ("characteristic_exponent-hill-1e12", "a",
+     lambda: pitch.characteristic_exponent(1e12, 0.01, "hill")),
+    ("characteristic_exponent-nan", "a", lambda: pitch.characteristic_exponent(nan, 0.1)),
+    ("characteristic_exponent-method", "method",
+     lambda: pitch.characteristic_exponent(0.5, 0.1, "x")),
+    ("characteristic_exponent-n_steps-0", "n_steps",
+     lambda: pitch.characteristic_exponent(0.5, 0.1, n_steps=0)),
+    ("floquet_discriminant-q-inf", "q", lambda: pitch.floquet_discriminant(0.5, inf)),
+    ("psi_numerical-too-long", "tau1", lambda: pitch.psi_numerical([0, 1e9], 0.5, 0.01)),
+    ("psi_numerical-psi0-0", "psi0", lambda: pitch.psi_numerical([0, 1.0], 0.5, .01, psi0=0.)),
+    ("psi_three_term-a-nan", "a", lambda: pitch.psi_three_term([0, 1.0], nan, 0.01)),
+    ("transition_curves-q-nan", "q", lambda: pitch.transition_curves([nan])),
+    ("transition_curves-r_max-neg", "r_max", lambda: pitch.transition_curves([0.1], r_max=-1)),
+    ("three_term_error-n_times-0", "n_times",
+     lambda: pitch.three_term_error(0.5, 0.01, n_times=0)),
+    ("pitch_band_edges-tongue-0", "tongue", lambda: pitch.pitch_band_edges(1.0, 0.1, tongue=0)),
+    ("pitch_bands-omega_psi-nan", "omega_psi",
+     lambda: pitch.pitch_bands(nan, 0.1, omega_min=1., omega_max=2.)),
+    ("pitch_analysis-Omega-nan", "Omega", lambda: pitch.pitch_analysis([nan], 1.0, 0.1)),
+    ("pitch_analysis-Omega-empty", "Omega", lambda: pitch.pitch_analysis([], 1.0, 0.1)),
+    ("pitch_analysis-gamma-1.5", "gamma", lambda: pitch.pitch_analysis([1.0, 2.0], 1.0, 1.5)),
+    ("pitch_analysis-omega_psi-nan", "omega_psi",
+     lambda: pitch.pitch_analysis([1.0, 2.0], nan, 0.1)),
+    ("beam_action_system-N-neg", "N",
+     lambda: ba.beam_action_system(100., 1e5, 30., 20., 1e8, 1e6, 0.5, -1)),
+    ("beam_action_system-omega_1-nan", "omega_1",
+     lambda: ba.beam_action_system(nan, 1e5, 30., 20., 1e8, 1e6, 0.5, 3)),
+    ("beam_action_system-n_quad-0", "n_quad",
+     lambda: ba.beam_action_system(100., 1e5, 30., 20., 1e8, 1e6, 0.5, 3, n_quad=0)),
+    ("uniform_beam_system-p-nan", "p", lambda: ba.uniform_beam_system(nan, 0.5, 3)),
+    ("uniform_beam_system-N-neg", "N", lambda: ba.uniform_beam_system(1.0, 0.5, -2)),
+    ("follower_flutter_load-n_modes-0", "n_modes", lambda: ba.follower_flutter_load(n_modes=0)),
+    ("reduced_exponents-empty", "alpha", lambda: ba.reduced_exponents([])),
+    ("natural_branch-nan", "Omega_bar",
+     lambda: ba.natural_branch(np.zeros((1, 4)), np.array([nan]), np.ones(4))),
+    ("hill_exponents-Omega-nan", "Omega", lambda: ba.hill_exponents(_system(), [nan], 0.1, 3)),
+    ("hill_exponents-S-neg", "S", lambda: ba.hill_exponents(_system(), [1.0], 0.1, -1)),
+    ("monodromy_exponents-gamma-1.5", "gamma",
+     lambda: ba.monodromy_exponents(_system(), [1.0], 1.5)),
+    ("monodromy_exponents-max_steps-0", "max_steps",
+     lambda: ba.monodromy_exponents(_system(), [1.0], 0.1, max_steps=0)),
+    ("monodromy_exponents-step_phase-0", "step_phase",
+     lambda: ba.monodromy_exponents(_system(), [1.0], 0.1, step_phase=0.0)),
+    ("monodromy_steps-Omega-neg", "Omega", lambda: ba.monodromy_steps(_system(), [-1.0], 0.1)),
+    ("modal_damping-beam_ratio-1", "beam_ratio",
+     lambda: ba.modal_damping(_system(), beam_ratio=1.0)),
+    ("beam_action_bands-gamma-nan", "gamma",
+     lambda: ba.beam_action_bands(_system(), nan, omega_min=10., omega_max=20.)),
+    ("beam_action_bands-range", "omega_min",
+     lambda: ba.beam_action_bands(_system(), 0.1, omega_min=30., omega_max=20.)),
+    ("stability_chart-step_phase-neg", "step_phase",
+     lambda: ba.stability_chart(_system(), [10.0], [0.1], step_phase=-1.0)),
+    ("shell_parameters-R1-nan", "R1", lambda: sc.shell_parameters(**{**_SHELL, "R1": nan})),
+    ("shell_parameters-nu-0.7", "nu", lambda: sc.shell_parameters(**{**_SHELL, "nu": 0.7})),
+    ("memo_coefficients-d-3", "d",
+     lambda: sc.memo_coefficients(sc.shell_parameters(**_SHELL), 3, 2, 2)),
+    ("memo_coefficients-M-0", "M",
+     lambda: sc.memo_coefficients(sc.shell_parameters(**_SHELL), 1, 0, 2)),
+    ("galerkin_coefficients-phase", "phase",
+     lambda: sc.galerkin_coefficients(sc.shell_parameters(**_SHELL), 1, 2, 2, phase="x")),
+    ("composite_frequencies-M1-0", "M1",
+     lambda: shell.composite_frequencies(5., 21., 3.3, 9., .02, 7e10, .3, 2768., 100.,
+                                         0, 2, 2, 2)),
+    ("composite_frequencies-method", "method",
+     lambda: shell.composite_frequencies(5., 21., 3.3, 9., .02, 7e10, .3, 2768., 100.,
+                                         2, 2, 2, 2, method="x")),
+    ("generalized_eigen-nan", "mass",
+     lambda: shell.generalized_eigen(np.full((2, 2), nan), np.eye(2))),
+    ("generalized_eigen-shape", "stiff", lambda: shell.generalized_eigen(np.eye(2), np.eye(3))),
+    ("nodal_lines-j-neg", "j", lambda: charts.nodal_lines(-1, 0)),
+    ("beam_mode_shapes-N-0", "N", lambda: charts.beam_mode_shapes(_model().mass, N=0)),
+    ("pitch_band_chart-n_gamma-1", "n_gamma", lambda: charts.pitch_band_chart(_model(),
+                                                                               n_gamma=1)),
+    ("excitation_curves-S-neg", "S", lambda: stability.excitation_curves(2, -1)),
+    ("check_case_cost-max_seconds-nan", "max_seconds",
+     lambda: cost.check_case_cost(_model(), nan)),
+]
+
+
+@pytest.mark.parametrize(("name", "call"), [(n, c) for _, n, c in BAD_CALLS],
+                         ids=[i for i, _, _ in BAD_CALLS])
+def test_bad_call_raises_value_error_naming_the_parameter(alarm, name, call):
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)  # no numpy overflow on the way
+        with pytest.raises(ValueError) as info:
+            call()
+    assert name in str(info.value) and "\n" not in str(info.value)
+
+
+# --------------------------------------------------------------------------------------------
+# Bounded cost (issue 18 item 1)
+# --------------------------------------------------------------------------------------------
+def _case(case_dict, **fields):
+    for dotted, value in fields.items():
+        _set(case_dict, dotted.replace("__", "."), value)
+    return flexbooster.load_case(case_dict)
+
+
+def test_estimate_grows_with_the_fields_that_drive_it(case_dict):
+    """Invariant: each kernel's estimate grows with its driving field (monodromy ~1/Omega,
+    Hill ~(N (2 S + 1))^3), and the refusal names those fields once each."""
+    def mono(omega_min):
+        case = _case(case_dict, thrust__n_omega=2, thrust__omega_min=omega_min)
+        return cost.estimate_cost(model_from_case(case)).parts["beam-action monodromy"]
+
+    assert mono(5.0) > 3.0 * mono(20.0)  # ~1/Omega above the cap
+    assert mono(0.05) == mono(0.5)  # bounded below it (MONODROMY_MAX_STEPS)
+    base = cost.estimate_cost(model_from_case(_case(case_dict)))
+    big = cost.estimate_cost(model_from_case(_case(case_dict, truncation__S=40)))
+    ratio = big.parts["Hill determinant"] / base.parts["Hill determinant"]
+    assert ratio == pytest.approx((81 / 21) ** 3, rel=1e-12)  # the cost model's own law
+    assert set(base.to_dict()) >= {"seconds", "parts", "drivers", "capped_points"}
+
+
+def test_huge_truncation_is_refused_up_front_in_one_line(case_dict, tmp_path, capsys):
+    """The issue's M = N = 100, beam N = 50, S = 50 case (9 minutes, 8 GB, no output) is
+    refused before any solver runs: exit 2, one line, estimate and driving fields."""
+    case_dict["truncation"].update(M1=100, N1=100, M2=100, N2=100, N=50, S=50)
+    path = tmp_path / "huge.toml"
+    path.write_text(dump_toml(case_dict))
+    assert run_cli(["run", str(path), "-q", "-o", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and err.count("max_seconds") == 1
+    assert "Hill determinant" in err and "truncation.S" in err
+    assert not (tmp_path / "out" / "results.json").exists()
+
+
+def test_budget_option_refuses_and_case_field_is_used(case_dict, tmp_path, capsys):
+    assert run_cli(["run", "-q", "--max-seconds", "0.5", "-o", str(tmp_path)]) == 2
+    assert "estimated run time" in capsys.readouterr().err
+    with pytest.raises(CaseError, match="max_seconds"):
+        analyze(_case(case_dict, max_seconds=0.5))
+
+
+def test_monodromy_cap_error_against_four_times_the_steps():
+    """Source: the same monodromy with 4x the steps; tolerance 1e-6 on the reduced exponents
+    (measured 1.6e-7 with a cap of 2048 at Omega_bar = 0.005, where the rule asks 2e4)."""
+    model = _model()
+    system = ba.beam_system(model, N=4)
+    Om = np.array([0.005 * system.omega_1])
+    assert ba.monodromy_steps(system, Om, model.gamma)[0] > 2048
+    capped = ba.monodromy_exponents(system, Om, model.gamma, max_steps=2048)
+    fine = ba.monodromy_exponents(system, Om, model.gamma, n_steps=8192)
+    err = np.abs(ba.reduced_exponents(capped) - ba.reduced_exponents(fine))
+    assert np.max(err) < 1e-6
+
+
+def test_low_omega_runs_bounded_with_a_warning(case_dict, alarm):
+    """The issue's omega_min = 0.05 rad/s case (39 s in the monodromy alone): capped steps,
+    finite results and the warning that names the cap."""
+    case = _case(case_dict, thrust__omega_min=0.05, thrust__n_omega=3, thrust__omega_max=50.0,
+                 truncation__N=2, truncation__S=2, truncation__R=2)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        res = analyze(case, stability=False, figures=False)
+    codes = {w.code for w in res.warnings}
+    assert "beam-action-step-cap" in codes
+    json.dumps(res.to_dict(), allow_nan=False)
+
+
+# --------------------------------------------------------------------------------------------
+# Physical validity (issue 18 item 2)
+# --------------------------------------------------------------------------------------------
+@pytest.mark.parametrize(("F0", "word"), [(1e12, "flutter"), (1e10, "divergence")],
+                         ids=["F0=1e12-flutter", "F0=1e10-divergence"])
+def test_load_beyond_the_structure_is_a_case_error(case_dict, F0, word):
+    """Source: the eigenvalues of the steady system Lambda + B (complex at 1e12 N, negative
+    at 1e10 N for the default booster): a CaseError naming thrust.F0, not a LinAlgError."""
+    with pytest.raises(CaseError) as info:
+        analyze(_case(case_dict, thrust__F0=F0), figures=False)
+    assert info.value.field == "thrust.F0" and word in str(info.value)
+
+
+def test_shell_buckling_is_a_named_warning(case_dict):
+    """Source: 2 pi E h^2 / sqrt(3 (1 - nu^2)) (Timoshenko & Gere 11-17), exact formula."""
+    model = model_from_case(_case(case_dict))
+    f_cr = 2 * math.pi * model.E * model.h**2 / math.sqrt(3 * (1 - model.nu**2))
+    assert cost.physical_warnings(model) == []
+    above = model_from_case(_case(case_dict, thrust__F0=1.01 * f_cr))
+    assert [w.code for w in cost.physical_warnings(above)] == ["shell-buckling"]
+
+
+# --------------------------------------------------------------------------------------------
+# The bad-input CLI table (issue 18: 74 probes, each exit 2, one line, the field named once)
+# --------------------------------------------------------------------------------------------
+#: Extra probes reconstructed from the issue's text (the rest is tests/test_case.py's table).
+EXTRA_PROBES = [
+    ("booster.cylinder1.radius", 1e300, "booster"),  # OverflowError before issue 18
+    ("booster.thickness", 1e-300, "thrust.F0"),  # an absurd Mathieu a
+    ("booster.rho", 1e-300, "booster"),  # omega_1 overflows
+    ("thrust.F0", 1e300, "thrust.F0"),
+    ("thrust.F0", 1e12, "thrust.F0"),
+    ("thrust.K", 1e300, "thrust.F0"),
+    ("thrust.n_omega", 10**400, "thrust.n_omega"),  # a 400-digit integer literal
+    ("thrust.gamma", nan, "thrust.gamma"),
+    ("thrust.omega_max", inf, "thrust.omega_max"),
+    ("booster.E", "1e999 Pa", "booster.E"),
+    ("max_seconds", -1.0, "max_seconds"),
+    ("max_seconds", 1e-9, "max_seconds"),
+]
+_PROBES = [(p, v, f) for p, v, f, _ in BAD_INPUTS] + EXTRA_PROBES
+
+
+@pytest.mark.parametrize(("path", "value", "field"), _PROBES,
+                         ids=[f"{p}={v!r}"[:40] for p, v, _ in _PROBES])
+def test_bad_case_probe_exit_2_one_line(case_dict, tmp_path, capsys, path, value, field):
+    _set(case_dict, path, value)
+    case = tmp_path / "bad.toml"
+    case.write_text(dump_toml(case_dict))
+    assert run_cli(["run", str(case), "-q", "--no-figures", "-o", str(tmp_path / "o")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and err.startswith("flexbooster: error: ")
+    assert err.count(field) >= 1
+    head = err.removeprefix("flexbooster: error: ").split(" = ")[0]
+    assert err.count(head + " ") + err.count(head + ":") <= 2  # the field once (plus rule)
+
+
+CLI_PROBES = [
+    (["run", "--format", "xml"], "--format"),
+    (["run", "--bogus"], "--bogus"),
+    (["run", "--max-seconds", "abc"], "--max-seconds"),
+    (["run", "--max-seconds", "nan"], "--max-seconds"),
+    (["stability", "--omega-min", "1"], "--omega-max"),
+    (["modes", "--k-max", "999"], "--k-max"),
+    (["modes", "--f-max", "-3"], "--f-max"),
+]
+
+
+@pytest.mark.parametrize(("argv", "field"), CLI_PROBES, ids=[" ".join(a) for a, _ in CLI_PROBES])
+def test_bad_option_probe_exit_2_one_line(capsys, tmp_path, argv, field):
+    assert run_cli(argv) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and err.count(field) == 1
+
+
+def test_directory_as_case_file_and_file_as_output(tmp_path, capsys):
+    afile = tmp_path / "afile"
+    afile.write_text("x")
+    for argv in (["run", str(tmp_path)], ["run", "-o", str(afile / "sub")]):
+        assert run_cli(argv) == 2
+        assert len(capsys.readouterr().err.strip().splitlines()) == 1
+
+
+# --------------------------------------------------------------------------------------------
+# Output as a set; signals (issue 18 items 1 and 4)
+# --------------------------------------------------------------------------------------------
+def _small_case(tmp_path: Path, case_dict: dict, name: str, n_omega: int = 30) -> Path:
+    d = json.loads(json.dumps(case_dict))
+    d["name"] = name
+    d["truncation"].update(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)
+    d["thrust"]["n_omega"] = n_omega
+    path = tmp_path / f"{name}.toml"
+    path.write_text(dump_toml(d))
+    return path
+
+
+def _cli(*args: str) -> subprocess.Popen:
+    env = dict(os.environ, PYTHONPATH=SRC, OPENBLAS_NUM_THREADS="1")
+    return subprocess.Popen([sys.executable, "-m", "flexbooster.cli", "run", "-q", *args],
+                            stderr=subprocess.PIPE, text=True, env=env)
+
+
+def _set_name(folder: Path) -> str:
+    """The case of the set in ``folder``: results.json and report.html must agree."""
+    check_output_set(folder)
+    name = json.loads((folder / "results.json").read_text())["case"]["name"]
+    assert name in (folder / "report.html").read_text(), "mixed set: report of another case"
+    return name
+
+
+def _no_leftovers(folder: Path) -> None:
+    names = [p.name for p in folder.rglob("*")]
+    assert not [n for n in names if n.endswith(".part") or n.startswith(STAGING_PREFIX)], names
+
+
+@pytest.mark.slow
+def test_interrupted_runs_never_leave_a_mixed_set(tmp_path, case_dict):
+    """SIGTERM and SIGINT at six moments of a run (fixed seed) over a complete previous set:
+    exit 130 (or 0 when it finished), no .part or staging folder, one whole set."""
+    out = tmp_path / "out"
+    old = _small_case(tmp_path, case_dict, "old-case")
+    new = _small_case(tmp_path, case_dict, "new-case")
+    proc = _cli(str(old), "-o", str(out))
+    assert proc.wait(timeout=120) == 0
+    rng = random.Random(18)
+    codes = []
+    for i in range(6):
+        proc = _cli(str(new), "-o", str(out))
+        time.sleep(rng.uniform(0.5, 3.5))
+        proc.send_signal(signal.SIGTERM if i % 2 else signal.SIGINT)
+        _, err = proc.communicate(timeout=60)
+        assert proc.returncode in (0, 130), err
+        codes.append(proc.returncode)
+        _no_leftovers(out)
+        assert _set_name(out) in ("old-case", "new-case")
+    assert 130 in codes  # the signals did land during runs
+
+
+@pytest.mark.slow
+def test_two_concurrent_runs_give_one_consistent_set(tmp_path, case_dict):
+    out = tmp_path / "out"
+    procs = [_cli(str(_small_case(tmp_path, case_dict, name)), "--no-figures", "-o", str(out))
+             for name in ("case-a", "case-b")]
+    for proc in procs:
+        _, err = proc.communicate(timeout=180)
+        assert proc.returncode == 0, err
+    _no_leftovers(out)
+    assert _set_name(out) in ("case-a", "case-b")
+    assert set(json.loads((out / MANIFEST).read_text())["files"]) <= {
+        p.name for p in out.iterdir()}
+
+
+@pytest.mark.slow
+def test_sigint_is_honoured_quickly_in_the_heavy_stage(tmp_path, case_dict):
+    """Ctrl-C in the beam-action stage of a heavy case (a 4000-point grid): exit 130 well
+    within the 60 s the issue saw ignored (bound 10 s on a loaded 2-core machine; measured
+    about 0.1 s)."""
+    d = json.loads(json.dumps(case_dict))
+    d["thrust"]["n_omega"] = 4000
+    path = tmp_path / "heavy.toml"
+    path.write_text(dump_toml(d))
+    proc = _cli(str(path), "--no-figures", "-o", str(tmp_path / "o"))
+    time.sleep(4.0)
+    start = time.monotonic()
+    proc.send_signal(signal.SIGINT)
+    _, err = proc.communicate(timeout=60)
+    assert proc.returncode == 130 and "interrupted" in err
+    assert time.monotonic() - start < 10.0
+
+
+#: Found by `make fuzz` (300 cases): the damped band search of flexbooster.floquet steps to a
+#: negative Omega (floquet/regions.py _damped_search -> _expand), an internal ValueError.  Not
+#: in the files of issue 18; kept here as the reproducer until the Floquet toolkit is fixed.
+_FUZZ_FLOQUET = {
+    "name": "fuzz",
+    "booster": {"cylinder1": {"radius": 1.0, "half_length": 1.0},
+                "cylinder2": {"radius": 5.5196750866515005, "half_length": 31.622776601683793},
+                "thickness": 0.0008058240568196406, "E": 6199245626.409396,
+                "nu": 0.4785762046519701, "rho": 95.51136477306004},
+    "thrust": {"gamma": 0.9155935734391277, "K": 2.997827313591703,
+               "omega_min": 31.622776601683793, "omega_max": 260.3715769640322, "n_omega": 2,
+               "T0": 45749.064572487005},
+    "truncation": {"M1": 1, "N1": 1, "M2": 1, "N2": 1, "N": 1, "S": 1, "R": 1},
+    "damping": {"beam_modal_ratio": 0.0, "pitch_ratio": 0.02},
+}
+
+
+@pytest.mark.xfail(reason="floquet damped band search reaches Omega < 0 (open; see docstring)",
+                   raises=ValueError, strict=False)
+def test_fuzz_reproducer_damped_band_search():
+    res = analyze(flexbooster.load_case(_FUZZ_FLOQUET), stability=False, figures=False)
+    json.dumps(res.to_dict(), allow_nan=False)
