@@ -25,6 +25,7 @@ from .memo.beam_action import beam_action_analysis
 from .memo.model import BoosterModel
 from .memo.pitch import pitch_analysis
 from .memo.responses import SimulationResult, excitation_parameters, simulate
+from .memo.severity import severity_analysis
 from .memo.shell import natural_frequencies
 from .memo.stability import ShellModes, TooManyRootsError, unstable_frequencies
 from .model import model_from_case, vehicle_from_case
@@ -175,6 +176,12 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
                 omega_1=model.omega_1, R=n.R, S=n.S, gamma=model.gamma, K=model.K)
         except TooManyRootsError as exc:  # a memory limit: the rest of the analysis stands
             extra.append(AnalysisWarning("stability-skipped", "truncation", str(exc)))
+    severity = None
+    if table is not None:  # issue 13: how bad each root is; active = severity_rel >= threshold
+        sv = case.severity
+        table, severity = severity_analysis(
+            model, table, params, psi0=sv.psi0, beam_amplitude=sv.beam_amplitude,
+            threshold=sv.threshold, resolution=sv.resolution)
     data = None
     if figures:
         step(STAGES[5])
@@ -199,6 +206,7 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
         stability=table,
         warnings=tuple(_warnings(model, pitch.a, pitch.q) + extra),
         vehicle=vehicle,
+        severity=severity,
     )
 
 

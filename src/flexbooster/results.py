@@ -18,6 +18,7 @@ from .memo.charts import FigureData
 from .memo.geometry import DimensionlessGroups, MassProperties
 from .memo.model import BoosterModel
 from .memo.pitch import PitchResult
+from .memo.severity import SeverityResult
 from .memo.shell import ShellFrequencies
 from .memo.stability import StabilityTable
 from .shell_of_revolution.survey import VehicleSurvey
@@ -78,6 +79,14 @@ UNITS: dict[str, str] = {
     "stability.rows.Omega_rad_s, shell_rad_s": "rad/s",
     "stability.rows.Omega_hz, shell_hz": "Hz",
     "stability.rows.Omega_over_omega1, shell_omega_bar": "1 (units of omega_1)",
+    "stability.table.severity": "m/s (growth rate of the mode's surface displacement)",
+    "stability.table.severity_rel, stability.severity.threshold, resolution": "1",
+    "stability.severity.psi0": "rad",
+    "stability.severity.beam_amplitude": "1 (units of L)",
+    "stability.severity.max_severity, bands.severity": "m/s",
+    "stability.severity.bands.Omega_lo, Omega_hi, Omega_peak": "rad/s",
+    "stability.severity.bands.Omega_*_hz": "Hz",
+    "stability.severity.bands.severity_rel": "1",
     "figures.*.Omega_bar, curves, shell_omega_bar, root_*": "1 (units of omega_1)",
     "figures.beam_action_chart.regions.omega_lo, omega_hi, omega_min, omega_max": "rad/s",
     "figures.pitch_band_chart.regions.omega_lo, omega_hi, omega_min, omega_max": "rad/s",
@@ -122,6 +131,9 @@ class Results:
         Conditions the user must know about.
     vehicle : VehicleSurvey or None
         The vehicle modes (shell of revolution), only for a case with ``[vehicle]``.
+    severity : SeverityResult or None
+        Severity of the roots of ``stability`` and their bands (issue 13); None if the table
+        was not computed.  results.json holds it as ``stability.severity``.
     """
 
     case: Case
@@ -138,6 +150,7 @@ class Results:
     stability: StabilityTable | None = None
     warnings: tuple[AnalysisWarning, ...] = field(default_factory=tuple)
     vehicle: VehicleSurvey | None = None
+    severity: SeverityResult | None = None
 
     @property
     def Omega(self) -> np.ndarray:
@@ -177,6 +190,8 @@ class Results:
             "warnings": [w.to_dict() for w in self.warnings],
             "figures": None if self.figures is None else self.figures.to_dict(),
         }
+        if out["stability"] is not None and self.severity is not None:  # issue 13
+            out["stability"]["severity"] = self.severity.to_dict()
         if self.vehicle is not None:  # only for a case with [vehicle] (units inside)
             out["vehicle_modes"] = self.vehicle.to_dict()
         return out

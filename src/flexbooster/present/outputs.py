@@ -67,8 +67,9 @@ def write_outputs(
     Returns
     -------
     list of pathlib.Path
-        The files written: results.json, shell-frequencies.csv, unstable-frequencies.csv (when
-        the stability table was computed), the figures and report.html (last).
+        The files written: results.json, shell-frequencies.csv, unstable-frequencies.csv and
+        resonance-bands.csv (when the stability table was computed), the figures and
+        report.html (last).
     """
     from .report import write_report
 
@@ -81,6 +82,9 @@ def write_outputs(
         written.append(
             write_csv_atomic(folder / "unstable-frequencies.csv", results.stability.to_columns())
         )
+    if results.severity is not None:  # issue 13: every band, most severe first
+        written.append(write_csv_atomic(folder / "resonance-bands.csv",
+                                        results.severity.band_rows()))
     if results.vehicle is not None:  # a case with [vehicle] only
         written.append(write_csv_atomic(folder / "vehicle-modes.csv",
                                         results.vehicle.to_columns()))

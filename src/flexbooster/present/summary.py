@@ -10,7 +10,7 @@ from rich.console import Console
 from rich.table import Table
 
 from ..results import Results
-from .rows import frequency_rows, input_rows, mass_rows
+from .rows import BAND_COLUMNS, band_rows, frequency_rows, input_rows, mass_rows, severity_caption
 
 __all__ = ["print_summary", "print_stability"]
 
@@ -147,7 +147,7 @@ def _print_beam_action(results: Results, console: Console) -> None:
 
 
 def print_stability(results: Results, console: Console) -> None:
-    """Print the table of unstable thrust frequencies (the first 15 active roots).
+    """Print the 10 most severe bands of unstable thrust frequencies (issue 13).
 
     Parameters
     ----------
@@ -160,38 +160,19 @@ def print_stability(results: Results, console: Console) -> None:
     if st is None:
         console.print("Unstable thrust frequencies: not computed.")
         return
+    rows = band_rows(results, 10)
     table = Table(
         title=(
-            f"Unstable thrust frequencies (memo 7.3): {len(st)} roots, {int(st.active.sum())} "
-            "with active forcing (first 15 active; all in unstable-frequencies.csv)"
+            "Unstable thrust frequencies (memo 7.3), the 10 most severe bands: "
+            f"{severity_caption(results)} All roots in unstable-frequencies.csv, all bands in "
+            "resonance-bands.csv."
         ),
         title_justify="left",
         header_style="bold",
     )
-    for col in (
-        "Omega rad/s",
-        "Hz",
-        "Omega/omega_1",
-        "family (eq.)",
-        "d",
-        "j",
-        "k",
-        "m",
-        "i,p,r,s",
-        "shell Hz",
-    ):
-        table.add_column(col, justify="right")
-    for n in np.flatnonzero(st.active)[:15]:
-        table.add_row(
-            _g(st.Omega[n]),
-            _g(st.Omega[n] / (2 * np.pi)),
-            _g(st.Omega_bar[n]),
-            f"{st.family[n]} ({st.equation[n]})",
-            str(st.cylinder[n]),
-            str(st.j[n]),
-            str(st.k[n]),
-            str(st.branch[n]),
-            f"{st.i[n]},{st.p[n]},{st.r[n]},{st.s[n]}",
-            _g(st.shell_omega_bar[n] * st.omega_1 / (2 * np.pi)),
-        )
+    for col in BAND_COLUMNS:
+        table.add_column(col, justify="left" if col in ("cause", "mode (cyl, j, k, m, type)")
+                         else "right")
+    for row in rows:
+        table.add_row(*row)
     console.print(table)
