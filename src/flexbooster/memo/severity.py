@@ -151,19 +151,22 @@ def _pitch_amplitudes(Omega: np.ndarray, beta: np.ndarray, omega_psi: float, gam
 
 def floquet_vectors(A0: np.ndarray, B: np.ndarray, mu: np.ndarray, Omega_bar: np.ndarray,
                     gamma: float, S: int, *, kappa_max: float = 1e-4,
-                    chunk: int = 2048) -> np.ndarray:
-    """Fourier vectors C^(s), s = -S..S, of the Floquet solution with exponent mu (tau units).
+                    chunk: int = 2048) -> tuple[np.ndarray, np.ndarray]:
+    """Fourier vectors C^(s), s = -S..S, of the Floquet solution with exponent near mu.
 
     Hill's recursion (mu + s Omega_bar)^2 C^(s) = A0 C^(s) - (gamma/2) B (C^(s-1) + C^(s+1)),
     truncated at |s| <= S, is solved in the modal frame of A0 (A0 = V diag(lambda) V^-1, where
     D_s = diag(lambda - (mu + s Omega_bar)^2) is diagonal and G = -(gamma/2) V^-1 B V):
 
-    * where the coupling is weak, kappa = max_s ||D_s^-1 G||_inf <= ``kappa_max`` (all points
-      away from the beam's own combination resonances), by the first-order continued fraction
-      C^(0) = e_r, C^(s) = -D_s^-1 G C^(s -+ 1) (relative error O(kappa^2));
+    * where the coupling is weak (the term the first-order fraction leaves out, D_s^-1 G
+      C^(s +- 1) outward, is at most ``kappa_max`` of C^(s) at every s: all points away from
+      the beam's own combination resonances), by the first-order continued fraction
+      C^(0) = e_r, C^(s) = -D_s^-1 G C^(s -+ 1), and the exponent refined once from the
+      s = 0 row, mu^2 = lambda_r + [G (C^(1) + C^(-1))]_r;
     * elsewhere by the exact matrix continued fraction C^(s) = R_s C^(s-1) (s > 0), C^(s) =
       L_s C^(s+1) (s < 0), R_S = -D_S^-1 G, R_s = -(D_s + G R_{s+1})^-1 G (likewise L_s),
-      C^(0) the smallest right singular vector of D_0 + G (R_1 + L_-1).
+      C^(0) the null vector of D_0 + G (R_1 + L_-1), the exponent refined by three secant
+      steps on its eigenvalue nearest zero.
 
     Parameters
     ----------
@@ -172,7 +175,8 @@ def floquet_vectors(A0: np.ndarray, B: np.ndarray, mu: np.ndarray, Omega_bar: np
     B : numpy.ndarray
         Shape (n, n), thrust matrix per unit f(tau) (dimensionless).
     mu : numpy.ndarray
-        Shape (P,), real exponents alpha Omega_bar (units of omega_1).
+        Shape (P,), real exponents alpha Omega_bar (units of omega_1): the starting values
+        (e.g. the splined alpha_r of the stability roots).
     Omega_bar : numpy.ndarray
         Shape (P,), Omega / omega_1 (dimensionless), > 0.
     gamma : float
@@ -180,23 +184,25 @@ def floquet_vectors(A0: np.ndarray, B: np.ndarray, mu: np.ndarray, Omega_bar: np
     S : int
         Harmonics s = -S..S kept, >= 0.
     kappa_max : float
-        Largest coupling kappa solved to first order (dimensionless); 0 solves every point
-        exactly.
+        Largest relative term left out by the first-order fraction (dimensionless); 0 solves
+        every point exactly.
     chunk : int
-        Points per batch of the exact solver (memory ~ chunk 2S n^2 doubles).
+        Points per batch (memory ~ chunk 2S n^2 doubles).
 
     Returns
     -------
-    numpy.ndarray
+    C : numpy.ndarray
         Shape (P, 2S + 1, n), in the physical coordinates q_1..q_N, q_B, unit Euclidean norm
         over (s, n) (the sign is arbitrary; real for a real exponent).
+    mu : numpy.ndarray
+        Shape (P,), the refined exponents (units of omega_1).
 
     References
     ----------
     Tech Memo 104, eqs. (4.1-10)..(4.1-12); Bolotin (1964) sec. 7 (Hill's determinant); Risken
     (1989) sec. 9.3 (matrix continued fractions).
     """
-    mu = np.asarray(mu, dtype=float).ravel()
+    mu = np.asarray(mu, dtype=float).ravel().copy()
     Ob = np.asarray(Omega_bar, dtype=float).ravel()
     if mu.shape != Ob.shape or not (np.all(np.isfinite(mu)) and np.all(np.isfinite(Ob))):
         raise ValueError("mu, Omega_bar: must be finite 1-D arrays of one length")
@@ -204,78 +210,106 @@ def floquet_vectors(A0: np.ndarray, B: np.ndarray, mu: np.ndarray, Omega_bar: np
         raise ValueError("Omega_bar: must be > 0")
     gamma = nonnegative("gamma", gamma)
     kappa_max = nonnegative("kappa_max", kappa_max)
+    S = int(nonnegative("S", S))
     A0 = np.asarray(A0, dtype=float)
     B = np.asarray(B, dtype=float)
     n = A0.shape[0]
     lam, V = np.linalg.eig(A0)
-    if np.all(np.abs(lam.imag) <= 1e-12 * np.abs(lam).max()) and np.all(np.isreal(V)):
-        lam, V = lam.real, V.real
-    Gm = -0.5 * gamma * np.linalg.solve(V, B @ V)  # G in the modal frame
-    if np.iscomplexobj(lam):  # a flutter-unstable steady beam: the exact solver everywhere
-        return _floquet_exact(A0, B, mu, Ob, gamma, S, chunk)
+    if not (np.all(np.abs(lam.imag) <= 1e-12 * np.abs(lam).max()) and np.all(np.isreal(V))):
+        return _floquet_exact(A0, B, mu, Ob, gamma, S, chunk)  # a flutter-unstable beam
+    lam, V = lam.real, V.real
+    GT = (-0.5 * gamma * np.linalg.solve(V, B @ V)).T  # G in the modal frame, transposed
     out = np.zeros((mu.size, 2 * S + 1, n))
     kappa = np.zeros(mu.size)
     tiny = np.finfo(float).tiny
     levels = np.arange(-S, S + 1)
-    GT = Gm.T
     for start in range(0, mu.size, chunk):
         sl = slice(start, start + chunk)
         P = mu[sl].size
-        x = mu[sl][None, :] + levels[:, None] * Ob[sl][None, :]  # (2S+1, P)
-        d = lam[None, None, :] - x[:, :, None] ** 2  # diagonals of D_s (2S+1, P, n)
-        r = np.argmin(np.abs(d[S]), axis=1)  # the natural mode: lambda_r ~ mu^2
-        inv = 1.0 / np.where(np.abs(d) > tiny, d, tiny)
-        modal = np.zeros((2 * S + 1, P, n))
-        modal[S, np.arange(P), r] = 1.0  # C^(0) = e_r to second order
-        for s in range(1, S + 1):  # first-order continued fraction, outward from s = 0
-            modal[S + s] = -inv[S + s] * (modal[S + s - 1] @ GT)
-            modal[S - s] = -inv[S - s] * (modal[S - s + 1] @ GT)
+        rows = np.arange(P)
+        r = np.argmin(np.abs(lam[None, :] - mu[sl][:, None] ** 2), axis=1)  # lambda_r ~ mu^2
+        for it in range(2):  # one refinement of the exponent (error ~ kappa^2), then the vectors
+            x = mu[sl][None, :] + levels[:, None] * Ob[sl][None, :]  # (2S+1, P)
+            d = lam[None, None, :] - x[:, :, None] ** 2  # diagonals of D_s (2S+1, P, n)
+            inv = 1.0 / np.where(d == 0.0, tiny, d)
+            modal = np.zeros((2 * S + 1, P, n))
+            modal[S, rows, r] = 1.0  # C^(0) = e_r to second order
+            for s in range(1, S + 1):  # first-order continued fraction, outward from s = 0
+                modal[S + s] = -inv[S + s] * (modal[S + s - 1] @ GT)
+                modal[S - s] = -inv[S - s] * (modal[S - s + 1] @ GT)
+            if it == 1 or S == 0:
+                break
+            mu2 = lam[r] + ((modal[S + 1] + modal[S - 1]) @ GT)[rows, r]  # s = 0 row, Hill
+            mu[sl] = np.where(mu2 > 0, np.sqrt(np.abs(mu2)), mu[sl]) * np.sign(mu[sl])
         # a-posteriori: the term left out at each s, G C^(s +- 1) (outward), relative to C^(s)
         outer = np.zeros_like(modal)
-        outer[S + 1:-1] = modal[S + 2:] @ GT
-        outer[1:S] = modal[:S - 1] @ GT
-        outer[S] = (modal[S + 1] + modal[S - 1]) @ GT if S else 0.0
-        outer[S, np.arange(P), r] = 0.0  # the resonant row: the exponent itself
+        if S:
+            outer[S + 1:-1] = modal[S + 2:] @ GT
+            outer[1:S] = modal[:S - 1] @ GT
+            outer[S] = (modal[S + 1] + modal[S - 1]) @ GT
+        outer[S, rows, r] = 0.0  # the resonant row: the exponent itself
         err = np.abs(inv * outer).max(axis=2) / np.maximum(np.abs(modal).max(axis=2), tiny)
         kappa[sl] = err.max(axis=0)
         q = np.moveaxis(modal @ V.T, 0, 1)  # back to q_1..q_N, q_B: (P, 2S+1, n)
         out[sl] = q / np.sqrt(np.sum(q**2, axis=(1, 2)))[:, None, None]
     hard = np.flatnonzero(kappa > kappa_max)
     if hard.size:
-        out[hard] = _floquet_exact(A0, B, mu[hard], Ob[hard], gamma, S, chunk)
-    return out
+        out[hard], mu[hard] = _floquet_exact(A0, B, mu[hard], Ob[hard], gamma, S, chunk)
+    return out, mu
+
+
+def _central(A0: np.ndarray, G: np.ndarray, m: np.ndarray, ob: np.ndarray,
+             S: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """R_s, L_s (s = 1..S) and the central matrix D_0 + G (R_1 + L_-1) of the exact fraction."""
+    n = A0.shape[0]
+    P = m.size
+    eye = np.eye(n)
+
+    def D(s: int) -> np.ndarray:
+        return A0[None] - ((m + s * ob) ** 2)[:, None, None] * eye[None]  # Hill (4.1-10)
+
+    R = np.zeros((P, S + 1, n, n))  # R[:, s] for s = 1..S
+    L = np.zeros((P, S + 1, n, n))  # L[:, t] for s = -t
+    Gb = np.broadcast_to(G, (P, n, n))
+    if S == 0:
+        return R, L, D(0)
+    R[:, S] = -np.linalg.solve(D(S), Gb)
+    L[:, S] = -np.linalg.solve(D(-S), Gb)
+    for s in range(S - 1, 0, -1):
+        R[:, s] = -np.linalg.solve(D(s) + G @ R[:, s + 1], Gb)
+        L[:, s] = -np.linalg.solve(D(-s) + G @ L[:, s + 1], Gb)
+    return R, L, D(0) + G @ R[:, 1] + G @ L[:, 1]
 
 
 def _floquet_exact(A0: np.ndarray, B: np.ndarray, mu: np.ndarray, Ob: np.ndarray, gamma: float,
-                   S: int, chunk: int) -> np.ndarray:
+                   S: int, chunk: int) -> tuple[np.ndarray, np.ndarray]:
     """The exact matrix continued fraction of :func:`floquet_vectors` (physical frame)."""
     n = A0.shape[0]
     G = -0.5 * gamma * B
     out = np.zeros((mu.size, 2 * S + 1, n))
-    eye = np.eye(n)
+    mu = mu.copy()
+
+    def small_eig(m: np.ndarray, ob: np.ndarray) -> np.ndarray:
+        ev = np.linalg.eigvals(_central(A0, G, m, ob, S)[2])
+        return np.take_along_axis(ev, np.argmin(np.abs(ev), axis=1)[:, None], 1)[:, 0].real
+
     for start in range(0, mu.size, chunk):
-        m = mu[start:start + chunk]
-        ob = Ob[start:start + chunk]
-        P = m.size
-
-        def D(s: int, m: np.ndarray = m, ob: np.ndarray = ob) -> np.ndarray:
-            return A0[None] - ((m + s * ob) ** 2)[:, None, None] * eye[None]  # Hill (4.1-10)
-
-        R = np.zeros((P, S + 1, n, n))  # R[:, s] for s = 1..S
-        L = np.zeros((P, S + 1, n, n))  # L[:, t] for s = -t
-        Gb = np.broadcast_to(G, (P, n, n))
-        if S > 0:
-            R[:, S] = -np.linalg.solve(D(S), Gb)
-            L[:, S] = -np.linalg.solve(D(-S), Gb)
-            for s in range(S - 1, 0, -1):
-                R[:, s] = -np.linalg.solve(D(s) + G @ R[:, s + 1], Gb)
-                L[:, s] = -np.linalg.solve(D(-s) + G @ L[:, s + 1], Gb)
-            central = D(0) + G @ R[:, 1] + G @ L[:, 1]
-        else:
-            central = D(0)
+        sl = slice(start, start + chunk)
+        ob = Ob[sl]
+        m0, m1 = mu[sl], mu[sl] * (1.0 + 1e-7)
+        f0, f1 = small_eig(m0, ob), small_eig(m1, ob)
+        for _ in range(3):  # secant on the eigenvalue nearest zero: the exact exponent
+            den = f1 - f0
+            ok = np.abs(den) > 0
+            m2 = np.where(ok, m1 - f1 * (m1 - m0) / np.where(ok, den, 1.0), m1)
+            m2 = np.where(np.abs(m2 - mu[sl]) <= 1e-3 * np.abs(mu[sl]), m2, m1)  # stay close
+            m0, f0, m1 = m1, f1, m2
+            f1 = small_eig(m1, ob)
+        mu[sl] = m1
+        R, L, central = _central(A0, G, m1, ob, S)
         _, _, vh = np.linalg.svd(central)
         c0 = vh[:, -1, :]  # smallest singular value: the Floquet vector's C^(0)
-        blk = out[start:start + chunk]
+        blk = out[sl]
         blk[:, S] = c0
         up, down = c0, c0
         for s in range(1, S + 1):
@@ -284,7 +318,7 @@ def _floquet_exact(A0: np.ndarray, B: np.ndarray, mu: np.ndarray, Ob: np.ndarray
             blk[:, S + s] = up
             blk[:, S - s] = down
         blk /= np.sqrt(np.sum(blk**2, axis=(1, 2)))[:, None, None]
-    return out
+    return out, mu
 
 
 def _mode_tables(model: BoosterModel, N: int, phase: str) -> dict:
@@ -413,10 +447,10 @@ def root_severity(model: BoosterModel, table: StabilityTable, params: Excitation
         system = beam_system(model, N)
         r = table.r[beam]
         alpha = params.alpha(ob[beam])[np.arange(r.size), r - 1]
-        Cs = floquet_vectors(system.A0, system.B, alpha * ob[beam], ob[beam], g, S)
+        Cs, mu = floquet_vectors(system.A0, system.B, alpha * ob[beam], ob[beam], g, S)
         s = table.s[beam]
         c = beam_amplitude * Cs[np.arange(r.size), s + S]  # (nbeam, N + 1), units of L
-        f = (alpha + s) * ob[beam]  # (4.1-10/11)
+        f = mu + s * ob[beam]  # (4.1-10/11), at the exponent refined at the root
         hb = h[beam]
         qb, qdd = slice(_NB, _NB + N + 1), slice(_NB + N + 1, nb)
         Gb = np.abs(np.sum(c * (hb[:, qb] - (f**2)[:, None] * hb[:, qdd]), axis=1))
