@@ -390,6 +390,8 @@ def test_arguments_are_validated(small):
         root_severity(res.model, res.stability, params, psi0=float("nan"))
     with pytest.raises(ValueError, match="beam_amplitude"):
         root_severity(res.model, res.stability, params, beam_amplitude=-1.0)
+    with pytest.raises(ValueError, match="S = 1"):
+        root_severity(res.model, res.stability, params, S=1)
     with pytest.raises(flexbooster.CaseError, match="severity.threshold"):
         d = _case_dict()
         d["severity"]["threshold"] = 2.0

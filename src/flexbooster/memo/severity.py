@@ -45,7 +45,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..checks import finite, nonnegative, positive
+from ..checks import choice, finite, nonnegative, positive
 from .beam_action import beam_system
 from .model import BoosterModel
 from .pitch import mathieu_parameters
@@ -383,6 +383,7 @@ def root_severity(model: BoosterModel, table: StabilityTable, params: Excitation
     psi0 = finite("psi0", psi0)
     beam_amplitude = nonnegative("beam_amplitude", beam_amplitude)
     threshold = nonnegative("threshold", threshold)
+    phase = choice("phase", phase, ("zero", "printed"))
     N = model.truncation.N
     S = model.truncation.S if S is None else int(nonnegative("S", S))
     n_root = len(table)
@@ -443,7 +444,10 @@ def root_severity(model: BoosterModel, table: StabilityTable, params: Excitation
 
     # the beam Floquet harmonic of the root's exponent (families 2 and 13)
     beam = (table.r >= 1) & np.isin(table.family, (2, 13)) & (beam_amplitude > 0)
-    if beam.any() and abs(table.s).max() <= S:
+    if beam.any() and np.abs(table.s[beam]).max() > S:
+        raise ValueError(f"S = {S}: must be at least the table's largest |s| = "
+                         f"{int(np.abs(table.s[beam]).max())}")
+    if beam.any():
         system = beam_system(model, N)
         r = table.r[beam]
         alpha = params.alpha(ob[beam])[np.arange(r.size), r - 1]
@@ -460,7 +464,7 @@ def root_severity(model: BoosterModel, table: StabilityTable, params: Excitation
     top = severity.max()
     rel = severity / top if top > 0 else np.zeros(n_root)
     return RootSeverity(severity=severity, severity_rel=rel, rate=rate,
-                        mode_type=tuple(_COMPONENTS[t] for t in typ), psi0=psi0,
+                        mode_type=tuple(np.asarray(_COMPONENTS)[typ].tolist()), psi0=psi0,
                         beam_amplitude=beam_amplitude, threshold=threshold)
 
 
