@@ -151,7 +151,7 @@ def _pitch_amplitudes(Omega: np.ndarray, beta: np.ndarray, omega_psi: float, gam
 
 def floquet_vectors(A0: np.ndarray, B: np.ndarray, mu: np.ndarray, Omega_bar: np.ndarray,
                     gamma: float, S: int, *, kappa_max: float = 1e-4,
-                    chunk: int = 2048) -> tuple[np.ndarray, np.ndarray]:
+                    chunk: int = 256) -> tuple[np.ndarray, np.ndarray]:
     """Fourier vectors C^(s), s = -S..S, of the Floquet solution with exponent near mu.
 
     Hill's recursion (mu + s Omega_bar)^2 C^(s) = A0 C^(s) - (gamma/2) B (C^(s-1) + C^(s+1)),
@@ -187,7 +187,7 @@ def floquet_vectors(A0: np.ndarray, B: np.ndarray, mu: np.ndarray, Omega_bar: np
         Largest relative term left out by the first-order fraction (dimensionless); 0 solves
         every point exactly.
     chunk : int
-        Points per batch (memory ~ chunk 2S n^2 doubles).
+        Points per batch (memory ~ chunk 2S n^2 doubles; small batches stay in cache).
 
     Returns
     -------
