@@ -5,8 +5,10 @@ side with ``git worktree`` into a temporary folder and run with the same Python 
 in the same session, alternating with the current code; each command is timed best of
 ``REPEATS`` (wall clock, subprocess), as a user runs it (OPENBLAS_NUM_THREADS unset: the
 library limits the BLAS threads itself since the redesign) and as ``make run`` does
-(OPENBLAS_NUM_THREADS=1).  It also
-checks that both write the same numbers (``compare_results.py``, 1e-12 relative).
+(OPENBLAS_NUM_THREADS=1).  The current code is timed with its default worker processes
+(``--jobs``: the usable CPUs) and with ``--jobs 1`` (everything in one process, as the
+baseline); CPU time is the sum over the process and its workers.  It also checks that both
+write the same numbers (``compare_results.py``, 1e-12 relative).
 
 Run from the repository root (needs git and the project's venv)::
 
@@ -61,8 +63,10 @@ def main() -> None:
                 for label, args in (("run", []), ("run --no-figures", ["--no-figures"])):
                     old = _time(base / "src", args, tmp / "old", threads)
                     new = _time(ROOT / "src", args, tmp / "new", threads)
+                    one = _time(ROOT / "src", [*args, "--jobs", "1"], tmp / "one", threads)
                     env = "unset" if threads is None else threads
                     rows.append((f"{label}, OPENBLAS_NUM_THREADS {env}", old, new))
+                    rows.append((f"{label} --jobs 1, OPENBLAS_NUM_THREADS {env}", old, one))
             same = subprocess.run([sys.executable, str(ROOT / "benchmarks/compare_results.py"),
                                    str(tmp / "old/results.json"), str(tmp / "new/results.json")],
                                   capture_output=True, text=True)

@@ -151,7 +151,10 @@ def test_same_case_in_si_and_inch_pound_units(case_dict):
         # The beam-action exponents come from eigenvalues of non-normal Floquet matrices whose
         # own accuracy is about 1e-9 (Hill vs monodromy agree to 1e-8; docs/theory/beam-action.md),
         # and the stability roots and figure data (Campbell curves, chart) inherit it: 1e-8.
-        solved = key.startswith((".beam_action.", ".stability.", ".figures."))
+        # The vehicle regions (issue 15): FE eigenvalues of the shell of revolution (~2e-9
+        # between the two unit systems) and edges refined to 1e-9 of each centre: 1e-8.
+        solved = key.startswith((".beam_action.", ".stability.", ".figures.",
+                                 ".vehicle_regions."))
         rel = 1e-8 if solved else 1e-12
         tol = 1e-300 if not solved else 1e-12
         if ".bands[" in key and key.endswith("growth_rate_max"):

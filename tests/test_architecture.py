@@ -28,7 +28,7 @@ LAYER = {
     "errors": "input", "units": "input", "checks": "input", "case": "input",
     "vehicle_case": "input",
     "memo": "core", "floquet": "core", "shell_of_revolution": "core", "vehicle": "core",
-    "model": "model", "_threads": "pipeline",
+    "model": "model", "_threads": "pipeline", "_parallel": "infra",
     "results": "results", "analysis": "pipeline",
     "reference": "reference",
     "present": "present", "sweep": "sweep", "cli": "cli", "__init__": "api", "__main__": "cli",
@@ -36,14 +36,17 @@ LAYER = {
 #: Which layers a layer may import (itself included).
 ALLOWED = {
     "input": {"input"},
+    "infra": {"infra"},
     "core": {"core", "checks"},
     "model": {"model", "core", "input"},
     "results": {"results", "core", "input"},
-    "pipeline": {"pipeline", "results", "model", "core", "input"},
+    "pipeline": {"pipeline", "infra", "results", "model", "core", "input"},
     "reference": {"reference", "core", "checks"},
-    "present": {"present", "results", "core-types", "input", "api"},
-    "sweep": {"sweep", "pipeline", "results", "model", "core", "input", "present", "api"},
-    "cli": {"cli", "sweep", "present", "pipeline", "results", "model", "core", "input", "api"},
+    "present": {"present", "infra", "results", "core-types", "input", "api"},
+    "sweep": {"sweep", "infra", "pipeline", "results", "model", "core", "input", "present",
+              "api"},
+    "cli": {"cli", "infra", "sweep", "present", "pipeline", "results", "model", "core", "input",
+            "api"},
     "api": {"api"},
 }
 CORE_THIRD_PARTY = {"numpy", "scipy"}
@@ -102,6 +105,9 @@ def test_layers_import_only_what_they_may(path):
             if mine in ("core", "checks", "reference"):
                 assert mod.split(".")[0] in CORE_THIRD_PARTY | set(sys.stdlib_module_names), (
                     f"{me}:{line} imports {mod}: the numerical core uses numpy and scipy only")
+            if mine == "infra":
+                assert mod.split(".")[0] in sys.stdlib_module_names, (
+                    f"{me}:{line} imports {mod}: infrastructure uses the standard library only")
             continue
         if mod == "flexbooster" and names == ["__version__"]:
             continue  # the version string

@@ -21,11 +21,14 @@ from flexbooster.errors import CaseError
 from flexbooster.floquet import critical_amplitude, instability_regions
 from flexbooster.memo import pitch
 from flexbooster.memo.beam_action import (
+    BAND_OMEGA_BAR_MIN,
     beam_action_bands,
     beam_system,
     follower_flutter_load,
     loaded_frequencies,
     monodromy_exponents,
+    pipeline_bands,
+    pitch_tongue_bands,
     uniform_beam_system,
 )
 from flexbooster.model import model_from_case
@@ -220,10 +223,11 @@ def test_pitch_bands_validate_arguments(kwargs, match):
 # --------------------------------------------------------------------------------------------
 @pytest.fixture(scope="module")
 def titan_beam_bands(titan_model):
-    # the range above 200 rad/s (Omega_bar >= 1.5) keeps the test fast; the low range of the
-    # case (Omega_bar down to 0.024) costs minutes (see docs/theory/bands.md)
+    # the pipeline's band range, Omega >= omega_1 / 4 (BAND_OMEGA_BAR_MIN; 33 rad/s here);
+    # below it the monodromy's cost grows as 1 / Omega (see docs/theory/bands.md)
     system = beam_system(titan_model)
-    return system, beam_action_bands(system, titan_model.gamma, omega_min=200.0,
+    return system, beam_action_bands(system, titan_model.gamma,
+                                     omega_min=BAND_OMEGA_BAR_MIN * system.omega_1,
                                      omega_max=titan_model.omega_range[1])
 
 
@@ -257,6 +261,68 @@ def test_titan_beam_action_bands_match_fine_scan(titan_beam_bands):
             continue
         for edge in (b.omega_lo, b.omega_hi):
             assert _scan_edge(stable, edge, b.width) == pytest.approx(edge, rel=1e-6)
+
+
+@pytest.fixture(scope="module")
+def titan_tongues(titan_model):
+    system = beam_system(titan_model)
+    return system, pitch_tongue_bands(system, titan_model.gamma,
+                                      omega_min=titan_model.omega_range[0],
+                                      omega_max=BAND_OMEGA_BAR_MIN * system.omega_1)
+
+
+@pytest.mark.slow
+def test_titan_coupled_pitch_tongue_against_the_monodromy(titan_tongues):
+    # below omega_1 / 4 the coupled pitch tongue (harmonic balance + Hill) against the
+    # beam-action module's own monodromy (Lawson RK4, step_phase 0.03; neither harmonic
+    # balance nor Hill): unstable just inside each edge and stable just outside (1e-7
+    # relative), and the growth rate at the maximum to 1e-6 relative
+    system, tongues = titan_tongues
+    (b,) = [t for t in tongues if t.order == 1]
+    assert (b.kind, b.modes) == ("simple", (0,))
+    assert b.omega_lo < b.omega_center < b.omega_hi
+    om = np.array([b.omega_lo * (1 - 1e-7), b.omega_lo * (1 + 1e-7),
+                   b.omega_hi * (1 - 1e-7), b.omega_hi * (1 + 1e-7), b.omega_at_max])
+    alpha = monodromy_exponents(system, om, np.full(om.size, 0.05), step_phase=0.03)
+    growth = np.max(np.abs(alpha.imag), axis=1) * om  # 1/s (Im alpha Omega, as the module)
+    assert list(growth[:4] > 1e-9) == [False, True, True, False]
+    assert b.growth_rate_max == pytest.approx(growth[4], rel=1e-6)
+    # and the uncoupled pitch tongue (memo 4.2, exact Mathieu) is 0.5 % away: coupling
+    assert b.omega_lo == pytest.approx(11.875, rel=0.01)
+
+
+def test_titan_second_pitch_tongue_is_inside_its_window(titan_tongues):
+    # tongue r = 2 near Omega = omega_p (period T): narrow (width ~ gamma^2), tip inside
+    system, tongues = titan_tongues
+    (b,) = [t for t in tongues if t.order == 2]
+    assert b.omega_lo < b.omega_center < b.omega_hi
+    assert b.width < 1e-2 * b.omega_center
+    assert 0.0 < b.growth_rate_max < [t for t in tongues if t.order == 1][0].growth_rate_max
+
+
+@pytest.mark.slow
+def test_damped_pitch_tongue_has_bolotins_critical_gamma(titan_model):
+    # Bolotin (1964) sec. 6: the principal tongue of q'' + 2 zeta w q' + w^2 (1 - gamma cos) q
+    # exists above gamma_cr = 4 zeta to first order (mu_cr = Delta / pi, 2 mu = gamma,
+    # Delta = 2 pi zeta); the coupled pitch mode is nearly the rigid one: 5 %; and the damped
+    # tongue lies inside the undamped one
+    system = beam_system(titan_model)
+    args = {"omega_min": 10.0, "omega_max": 14.0}
+    (u,) = pitch_tongue_bands(system, 0.05, **args)
+    (d,) = pitch_tongue_bands(system, 0.05, beam_ratio=0.001, pitch_ratio=0.002, **args)
+    assert u.omega_lo < d.omega_lo < d.omega_hi < u.omega_hi
+    assert d.critical_gamma == pytest.approx(4 * 0.002, rel=0.05)
+    assert d.growth_rate_max < u.growth_rate_max
+    assert pitch_tongue_bands(system, 0.9 * d.critical_gamma, beam_ratio=0.001,
+                              pitch_ratio=0.002, **args) == ()
+
+
+@pytest.mark.slow
+def test_pipeline_bands_hold_the_coupled_tongue_below_omega_1_over_4(titan_model):
+    bands = pipeline_bands(titan_model)
+    low = [b for b in bands if b.omega_hi < BAND_OMEGA_BAR_MIN * beam_system(titan_model).omega_1]
+    assert [b.order for b in low] == [2, 1]  # the two resolved tongues, by omega_lo
+    assert [b.omega_lo for b in bands] == sorted(b.omega_lo for b in bands)
 
 
 def test_beal_follower_flutter_is_the_gamma_zero_limit_of_the_regions():

@@ -15,6 +15,7 @@ import pytest
 from flexbooster.memo import beam
 from flexbooster.memo.geometry import mass_properties
 from flexbooster.reference import appendix_b
+from harness import Reference, check_reference  # noqa: E402
 
 # Geometries (R1, L1, R2, L2) in m, h = 20 mm, rho = 2768 kg/m^3:
 # the default case (Saturn-class), a short forward stage, and one with L/L2 = 7/4, for which
@@ -90,22 +91,24 @@ def test_r_integral_exact(phase, cylinder):
 # Tier 2: literature values
 # --------------------------------------------------------------------------------------------
 
-# Reading guide section 6 (= Blevins 1979, table 8-1, free-free): roots of cos cosh = 1.
-LAMBDA_REF = [4.730040745, 7.853204624, 10.99560784, 14.13716549, 17.27875966]
-# Reading guide section 6: alpha_n to 6 decimals.
-ALPHA_REF = [0.982502, 1.000777, 0.999966]
+# Reading guide section 6 (= Blevins 1979, table 8-1, free-free): roots of cos cosh = 1,
+# printed to 10 significant digits -> 1e-9 relative is the table's own resolution.
+LAMBDA_REF = Reference(
+    name="free-free beam eigenvalue lambda_n", source="Blevins (1979) table 8-1",
+    points=tuple((n,) for n in range(1, 6)),
+    expected=(4.730040745, 7.853204624, 10.99560784, 14.13716549, 17.27875966), rtol=1e-9)
+# Reading guide section 6: alpha_n to 6 decimals -> half a unit of the last digit.
+ALPHA_REF = Reference(
+    name="free-free beam alpha_n", source="reading guide section 6 (6 decimals)",
+    points=((1,), (2,), (3,)), expected=(0.982502, 1.000777, 0.999966), rtol=0.0, atol=5e-7)
 
 
-@pytest.mark.parametrize(("n", "expected"), list(enumerate(LAMBDA_REF, start=1)))
-def test_lambda_reference_values(n, expected):
-    # 10 significant digits printed -> 1e-9 relative is the table's own resolution.
-    assert beam.free_free_eigenvalues(5)[n - 1] == pytest.approx(expected, rel=1e-9)
+def test_lambda_reference_values():
+    check_reference(lambda n: beam.free_free_eigenvalues(5)[n - 1], LAMBDA_REF)
 
 
-@pytest.mark.parametrize(("n", "expected"), list(enumerate(ALPHA_REF, start=1)))
-def test_alpha_reference_values(n, expected):
-    # 6 decimals printed -> half a unit of the last digit.
-    assert beam.free_free_alpha(3)[n - 1] == pytest.approx(expected, abs=5e-7)
+def test_alpha_reference_values():
+    check_reference(lambda n: beam.free_free_alpha(3)[n - 1], ALPHA_REF)
 
 
 def test_lambda_satisfies_frequency_equation_in_high_precision():

@@ -33,7 +33,8 @@ def test_run_default_writes_results(tmp_path, capsys):
     assert {"report.html", "nodal-patterns.svg"} <= names
     report = (tmp_path / "report.html").read_text()
     assert {"pitch-band-chart.svg", "beam-action-chart.svg"} <= names  # issue 12 charts
-    assert report.count("<svg") == 8 and 'id="unstable-frequencies"' in report
+    assert {"vehicle-regions.csv", "vehicle-regions.svg"} <= names  # issue 15
+    assert report.count("<svg") == 9 and 'id="unstable-frequencies"' in report
     assert not [n for n in names if n.endswith(".part")]  # no temporary leftovers
 
 
@@ -172,14 +173,14 @@ def test_help_has_examples_and_exit_codes(capsys, argv):
 
 
 def test_progress_reports_every_stage_in_order():
-    from flexbooster.analysis import STAGES, analyze
+    from flexbooster.analysis import STAGES, VEHICLE_REGIONS_STAGE, analyze
     from flexbooster.case import default_case
 
     seen = []
     analyze(default_case(), progress=seen.append)
-    assert seen == list(STAGES)
+    assert seen == [*STAGES, VEHICLE_REGIONS_STAGE]  # the vehicle regions last (issue 15)
     seen.clear()
-    analyze(default_case(), beam_action=False, progress=seen.append)
+    analyze(default_case(), beam_action=False, progress=seen.append, vehicle=False)
     assert seen == [*STAGES[:3], STAGES[-1]]  # the skipped stages are not announced
 
 

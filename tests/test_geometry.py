@@ -17,6 +17,7 @@ import pint
 import pytest
 
 from flexbooster.memo.geometry import dimensionless_groups, mass_properties, moment_of_inertia_memo
+from harness import assert_close  # noqa: E402
 
 RTOL = 1e-12  # issue 2 acceptance: agreement to 1e-12 relative
 
@@ -55,10 +56,9 @@ def test_mass_properties_against_surface_quadrature(name):
     R1, L1, R2, L2, h, rho = BOOSTERS[name]
     p = mass_properties(R1, L1, R2, L2, h, rho)
     mass, x_cm, inertia = integrate_shells(R1, L1, R2, L2, h, rho)
-    assert p.mass == pytest.approx(mass, rel=RTOL)
-    assert p.x_cm == pytest.approx(x_cm, rel=RTOL)
-    assert p.I_cm == pytest.approx(inertia, rel=RTOL)
-    assert p.m1 + p.m2 == pytest.approx(mass, rel=RTOL)
+    assert_close([p.mass, p.x_cm, p.I_cm, p.m1 + p.m2], [mass, x_cm, inertia, mass],
+                 rtol=RTOL, source="Gauss-Legendre x trapezoid quadrature over the shells",
+                 name=f"mass, x_cm, I_cm, m1 + m2 ({name})")
 
 
 @pytest.mark.parametrize("name", BOOSTERS)

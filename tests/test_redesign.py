@@ -84,7 +84,9 @@ def test_results_equal_the_baseline_before_the_redesign(name):
         old.pop(key)
     diffs = list(_diff(old, new))
     assert not diffs, f"{len(diffs)} values changed, e.g. {diffs[:3]}"
-    assert set(new) - set(old) - {"flexbooster_version", "units"} == {"figures"}
+    # added since: the figure data (issue 11), the vehicle's parametric regions (issue 15)
+    assert set(new) - set(old) - {"flexbooster_version", "units"} == {"figures",
+                                                                       "vehicle_regions"}
 
 
 def _solver_modules():
@@ -115,6 +117,7 @@ def test_every_figure_is_drawn_from_the_results_alone(monkeypatch):
     svgs = figure_svgs(results)
     assert set(svgs) == {"ince-strutt", "beam-modes", "shell-frequencies-cylinder1",
                          "shell-frequencies-cylinder2", "nodal-patterns",
-                         "pitch-band-chart", "beam-action-chart", "campbell"}
+                         "pitch-band-chart", "beam-action-chart", "campbell",
+                         "vehicle-regions"}
     html = render_report(results, svgs)
     assert "<svg" in html

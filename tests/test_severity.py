@@ -54,7 +54,7 @@ def _case_dict(**truncation):
 def small():
     """A reduced default case (fast): 120 Omega points, M = 6, N = 4 shell modes, N = 4, S = 3."""
     case = flexbooster.load_case(_case_dict(M1=6, N1=4, M2=6, N2=4, N=4, S=3, R=3))
-    res = flexbooster.analyze(case, figures=False)
+    res = flexbooster.analyze(case, figures=False, vehicle=False)
     return res, excitation_parameters(res.model, res.beam_action)
 
 
@@ -65,7 +65,7 @@ def default():
     for S in (10, 3):
         d = _case_dict()
         d["truncation"]["S"] = S
-        out[S] = flexbooster.analyze(flexbooster.load_case(d), figures=False)
+        out[S] = flexbooster.analyze(flexbooster.load_case(d), figures=False, vehicle=False)
     return out
 
 
@@ -218,7 +218,7 @@ def test_family_3_is_the_pulsating_edge_load_of_a_free_free_bar():
     d["booster"]["nu"] = 0.01
     d["booster"]["cylinder2"] = {"radius": "5.05 m", "half_length": "0.042 m"}
     d["thrust"].update(omega_min="5 rad/s", omega_max="1500 rad/s")
-    res = flexbooster.analyze(flexbooster.load_case(d), figures=False)
+    res = flexbooster.analyze(flexbooster.load_case(d), figures=False, vehicle=False)
     st, sv, case = res.stability, res.severity.roots, res.case
     b = case.booster
     E, nu, rho, h, l1 = b.E, b.nu, b.rho, b.thickness, 2 * b.cylinder1.half_length
@@ -289,7 +289,7 @@ def test_family_13_sidebands_follow_the_floquet_harmonics():
     (rtol 1e-12) resolves (harmonics below 1e-9 of the vector are skipped)."""
     d = _case_dict(M1=4, N1=3, M2=4, N2=3, N=3, S=3, R=3)
     d["thrust"].update(gamma=0.5, F0="20 MN")
-    res = flexbooster.analyze(flexbooster.load_case(d), figures=False)
+    res = flexbooster.analyze(flexbooster.load_case(d), figures=False, vehicle=False)
     params = excitation_parameters(res.model, res.beam_action)
     st, model = res.stability, res.model
     sv = root_severity(model, st, params, S=8)  # the case's S = 3 truncates the sidebands

@@ -67,6 +67,8 @@ def serial_reference(case_data: dict, *, stability: bool = True) -> dict:
     options = {"stability": stability}
     if "figures" in inspect.signature(flexbooster.analyze).parameters:
         options["figures"] = False  # the figure data: not needed, and slow
+    if "vehicle" in inspect.signature(flexbooster.analyze).parameters:
+        options["vehicle"] = False  # the vehicle regions (issue 15): not a sweep variable
     d = flexbooster.analyze(flexbooster.load_case(case_data), **options).to_dict()
     # the bands (exact edges, issue 12), never grid samples: their count and largest growth
     pitch, action = d["pitch"]["bands"], d["beam_action"]["bands"]

@@ -457,7 +457,7 @@ def test_default_case_results_unchanged():
     assert set(out) == {"schema_version", "flexbooster_version", "units", "case",
                         "mass_properties", "frequencies", "dimensionless", "beam_modes",
                         "pitch", "shell_frequencies", "beam_action", "stability",
-                        "warnings", "figures"}
+                        "warnings", "figures", "vehicle_regions"}  # issue 15: every case
 
 
 def test_thick_shell_warning_reaches_summary_and_results(tmp_path, capsys):

@@ -29,9 +29,19 @@ import pytest
 from scipy.optimize import brentq
 from scipy.special import mathieu_a, mathieu_b
 
+import flexbooster
 from flexbooster import floquet
+from flexbooster.memo.beam_action import uniform_beam_system
+from flexbooster.model import vehicle_from_case
 from flexbooster.shell_of_revolution import Cone, Cylinder, Vehicle, vehicle_modes
-from flexbooster.vehicle import harmonic_system, vehicle_regions
+from flexbooster.vehicle import (
+    bending_regions,
+    bending_system,
+    follower_flutter_thrust,
+    forced_axial,
+    harmonic_system,
+    vehicle_regions,
+)
 
 STEEL = {"E": 210e9, "nu": 0.3, "rho": 7850.0}
 # default_case.toml: E = 10.5e6 psi, rho = 2.59e-4 lbf s^2/in^4
@@ -178,13 +188,13 @@ def vehicle_map():
                            max_order=2)
 
 
-def _check_against_monodromy(res, gamma, n_regions):
+def _check_against_monodromy(res, gamma, n_regions, k=3):
     """Widest regions: floquet.growth_rate (monodromy of the full system, step phase 0.06) at
     the reported maximum = growth_rate_max to 1e-6 relative; positive at the region's middle;
     stable (< 1e-6 of the region's growth) halfway to the next region or one width beyond."""
     regs = sorted(res.regions, key=lambda r: -r.width)[:n_regions]
     assert len(regs) == n_regions
-    M, C, A, B = res.harmonic(3).matrices(gamma)
+    M, C, A, B = res.harmonic(k).matrices(gamma)
     C = C if res.damping_ratio > 0 else None
     edges = sorted((r.omega_lo, r.omega_hi) for r in res.regions)
     for r in regs:
@@ -316,7 +326,8 @@ GOOD = dict(F0=1e6, gamma=0.05, omega_min=5.0, omega_max=50.0, k_max=2, n_modes=
     ("vehicle", "cyl"), ("F0", 0.0), ("F0", np.nan), ("gamma", 1.0), ("gamma", -0.1),
     ("omega_min", -1.0), ("omega_max", np.inf), ("k_max", 1), ("k_min", 1), ("n_modes", 0),
     ("damping_ratio", -0.01), ("damping_ratio", 1.5), ("boundaries", "yes"),
-    ("rtol", np.nan), ("max_order", 0),
+    ("rtol", np.nan), ("max_order", 0), ("damping_margin", 0.5), ("damping_margin", True),
+    ("axial", "no"),
 ])
 def test_bad_input_names_argument(name, value):
     """Bad input: ValueError whose message starts with the argument's name."""
@@ -334,3 +345,232 @@ def test_bad_range_order():
     """omega_min >= omega_max: ValueError naming omega_min."""
     with pytest.raises(ValueError, match=r"^omega_min = "):
         vehicle_regions(sd_vehicle(), **{**GOOD, "omega_min": 60.0})
+
+
+# --------------------------------------------------------------------------- the default case
+
+
+@pytest.fixture(scope="module")
+def memo_vehicle() -> Vehicle:
+    """The vehicle of the default case (the memo's two cylinders, memo bulkhead, SD ends)."""
+    return vehicle_from_case(flexbooster.default_case())
+
+
+def test_default_case_map_is_certified_stable(memo_vehicle):
+    """The deliverable of issue 15 item 4 (k <= 10, 20 modes per k, Omega 5..2000 rad/s,
+    gamma = 0.05, zeta = 0.01): every harmonic is certified stable at every Omega by the
+    weighted logarithmic norm (floquet.stability_certificate; a theorem, Desoer & Vidyasagar
+    sec. 2.8), so no region exists.  Checked independently for k = 3: the damped 20-mode
+    monodromy at 12 Omega in 20..2000 rad/s lies below the certified growth bound (< 0)."""
+    res = vehicle_regions(memo_vehicle, F0=F0_DEFAULT, gamma=0.05, omega_min=5.0,
+                          omega_max=2000.0, k_max=10, n_modes=20)
+    assert res.regions == ()
+    assert [h.k for h in res.harmonics] == list(range(2, 11))
+    assert len(res.certificates) == 9 and all(c.certified for c in res.certificates)
+    M, C, A, B = res.harmonic(3).matrices(0.05)
+    g = floquet.growth_rate(M, C, A, B, np.geomspace(20.0, 2000.0, 12))
+    assert np.all(g <= res.certificates[1].growth_bound + 1e-9)
+    json.dumps(res.to_dict())
+
+
+def test_default_vehicle_regions_against_full_monodromy(memo_vehicle):
+    """Acceptance of issue 15: the default vehicle, k = 3, the full 20-mode system, undamped
+    (the default damping leaves no region), gamma = 0.05, Omega 30..130 rad/s, first-order
+    regions: the three widest (simple 2, simple 0, simple 1) against floquet.growth_rate of the
+    full system inside (at the reported maximum, 1e-6 relative; positive at the middle) and
+    outside (halfway to the next region: < 1e-6 x growth), see _check_against_monodromy."""
+    res = vehicle_regions(memo_vehicle, F0=F0_DEFAULT, gamma=0.05, omega_min=30.0,
+                          omega_max=130.0, k_min=3, k_max=3, n_modes=20, damping_ratio=0.0,
+                          max_order=1, axial=False)
+    assert res.harmonic(3).omega_loaded.size == 20
+    _check_against_monodromy(res, 0.05, 3)
+
+
+def test_default_vehicle_gamma_to_zero_gives_no_region(memo_vehicle):
+    """gamma -> 0 on the default vehicle (20 modes): undamped gamma = 0 no region (k = 3,
+    Omega 30..130); damped (default zeta) gamma = 1e-3, k = 2..10, Omega 5..2000: none, and
+    certified with a bound ~ -zeta omega_1 (no coupling left: within 10 %)."""
+    kw = dict(F0=F0_DEFAULT, n_modes=20, axial=False)
+    assert vehicle_regions(memo_vehicle, gamma=0.0, omega_min=30.0, omega_max=130.0, k_min=3,
+                           k_max=3, damping_ratio=0.0, max_order=1, **kw).regions == ()
+    res = vehicle_regions(memo_vehicle, gamma=1e-3, omega_min=5.0, omega_max=2000.0, k_max=10,
+                          **kw)
+    assert res.regions == ()
+    for h, c in zip(res.harmonics, res.certificates, strict=True):
+        assert c.certified
+        assert abs(c.growth_bound / (-0.01 * h.omega_loaded[0]) - 1) < 0.1
+
+
+@pytest.mark.slow
+def test_damping_filter_keeps_the_regions_of_the_unfiltered_search(memo_vehicle):
+    """Invariant: the damping filter (default margin 4) against the unfiltered search
+    (damping_margin=None) where damping leaves a region: default vehicle, k = 3, 6 modes,
+    gamma = 0.5, zeta = 0.001, Omega 10..300, orders <= 2: the same regions, edges within 1e-8
+    relative and critical gamma within 1e-6 relative (the brentq tolerance)."""
+    kw = dict(F0=F0_DEFAULT, gamma=0.5, omega_min=10.0, omega_max=300.0, k_min=3, k_max=3,
+              n_modes=6, damping_ratio=0.001, max_order=2, axial=False)
+    fast = vehicle_regions(memo_vehicle, **kw)
+    full = vehicle_regions(memo_vehicle, damping_margin=None, **kw)
+    assert full.regions and len(fast.regions) == len(full.regions)
+    for a, b in zip(fast.regions, full.regions, strict=True):
+        assert (a.kind, a.order, a.modes) == (b.kind, b.order, b.modes)
+        assert (a.omega_lo, a.omega_hi) == pytest.approx((b.omega_lo, b.omega_hi), rel=1e-8)
+        assert a.critical_gamma == pytest.approx(b.critical_gamma, rel=1e-6)
+
+
+# --------------------------------------------------------------------------- k = 0 forced
+
+
+def slender_tube() -> Vehicle:
+    """Free-free steel tube R = 5 cm, L = 5 m, h = 1 mm: a rod below its ring frequency."""
+    return Vehicle([Cylinder(0.05, 5.0, 0.001, **STEEL)])
+
+
+def test_forced_axial_of_a_tube_is_the_free_free_rod():
+    """Independent model: the free-free uniform rod under a pulsating end load (Meirovitch
+    1986 sec. 5.4, 7.4): resonances at n pi c / L, c = sqrt(E / rho), with mass-normalised
+    end displacement phi_n^2 = 2 / m and the resonant amplitude per unit force
+    phi_n^2 / (2 zeta omega_n^2) = 1 / (m zeta omega_n^2).  The tube differs from the rod by
+    the Poisson coupling with its ring mode (~ nu^2 (omega / omega_ring)^2): tolerance 1e-3
+    for n = 1..3 (measured 4.5e-5, 3.6e-4, 4e-4 on omega; 1e-4..8e-4 on phi^2).  Torsional
+    k = 0 modes are not forced."""
+    zeta = 0.01
+    m = 2 * np.pi * 0.05 * 0.001 * 5.0 * STEEL["rho"]
+    c = np.sqrt(STEEL["E"] / STEEL["rho"])
+    fa = forced_axial(slender_tube(), F0=1.0, omega_min=100.0, omega_max=10_000.0,
+                      n_modes=12, damping_ratio=zeta)
+    assert [r.type for r in fa.resonances] == ["axial"] * 3
+    for n, r in enumerate(fa.resonances, start=1):
+        assert r.omega == pytest.approx(n * np.pi * c / 5.0, rel=1e-3)
+        assert r.participation**2 * m == pytest.approx(2.0, rel=1e-3)
+        assert r.amplitude * m * zeta * r.omega**2 == pytest.approx(1.0, rel=1e-3)
+    torsional = fa.omega_loaded < 0.7 * np.pi * c / 5.0  # the lowest torsional mode
+    assert np.all(np.abs(fa.participation[torsional]) < 1e-6 * np.max(np.abs(fa.participation)))
+
+
+def test_forced_axial_in_the_map_and_json(memo_vehicle):
+    """The map carries the k = 0 forced resonances (the memo's family 3): the lowest is the
+    first axial mode (order 1); the receptance at a resonance equals the resonant modal term
+    plus the off-resonant ones (the resonant term dominates: within 5 %); JSON-ready; without
+    damping the resonant amplitude is None (unbounded)."""
+    res = vehicle_regions(memo_vehicle, F0=F0_DEFAULT, gamma=0.05, omega_min=5.0,
+                          omega_max=2000.0, k_min=2, k_max=2, n_modes=20)
+    fa = res.forced_axial
+    first = fa.resonances[0]
+    assert first.type == "axial" and first.order == 1
+    assert abs(fa.receptance(first.omega)[0]) == pytest.approx(first.amplitude, rel=0.05)
+    back = json.loads(json.dumps(res.to_dict()))
+    assert back["forced_axial"]["resonances"][0]["omega"] == first.omega
+    undamped = forced_axial(memo_vehicle, F0=F0_DEFAULT, omega_min=5.0, omega_max=2000.0,
+                            damping_ratio=0.0)
+    assert all(r.amplitude is None for r in undamped.resonances)
+
+
+@pytest.mark.parametrize("name, value", [
+    ("vehicle", "tube"), ("F0", -1.0), ("omega_min", 0.0), ("n_modes", 0),
+    ("damping_ratio", 1.0),
+])
+def test_forced_axial_bad_input(name, value):
+    """Bad input: ValueError whose message starts with the argument's name."""
+    kw = dict(F0=1.0, omega_min=10.0, omega_max=1e4, n_modes=4)
+    veh = slender_tube()
+    if name == "vehicle":
+        veh = value
+    else:
+        kw[name] = value
+    with pytest.raises(ValueError, match=rf"^{name} = "):
+        forced_axial(veh, **kw)
+
+
+# --------------------------------------------------------------------------- k = 1 follower
+
+
+@pytest.mark.parametrize("radius, thickness, tol", [(0.02, 0.001, 2e-3), (0.05, 0.002, 1e-2)],
+                         ids=["L/R=250", "L/R=100"])
+def test_k1_follower_flutter_is_beals(radius, thickness, tol):
+    """k = 1 steady limit (gamma -> 0, zero gimbal gain, no damping): a free-free steel tube
+    (L = 5 m) under a follower end thrust flutters at Beal's 109.69 EI / l^2 (Beal 1965, the
+    Euler-Bernoulli free-free beam; EI = E pi R^3 h).  The shell differs from the beam by
+    terms ~ (R / L)^2 (shear, rotary inertia, the shell's cross-section): tolerance 2e-3 at
+    L/R = 250 (measured 7.7e-4), 1e-2 at L/R = 100 (measured 7.4e-3); 10 basis modes (2 rigid),
+    40 elements."""
+    veh = Vehicle([Cylinder(radius, 5.0, thickness, **STEEL)])
+    EI = STEEL["E"] * np.pi * radius**3 * thickness
+    T = follower_flutter_thrust(veh, thrust_max=200 * EI / 25.0, n_modes=10,
+                                elements_per_segment=40)
+    assert T / (EI / 25.0) == pytest.approx(109.69, rel=tol)
+
+
+def test_k1_bending_system_rigid_modes_and_follower_term():
+    """The k = 1 basis of a free-free tube holds the 2 rigid modes (omega = 0) and the beam's
+    first bending frequency 4.7300^2 sqrt(EI / (m L^4)) (free-free beam, READING-GUIDE sec. 6;
+    tolerance 5e-3 at L/R = 100: shell vs Euler-Bernoulli beam, measured 2.6e-3); the follower
+    term makes A non-symmetric; JSON-ready."""
+    R, L, h = 0.05, 5.0, 0.002
+    veh = Vehicle([Cylinder(R, L, h, **STEEL)])
+    bs = bending_system(veh, F0=1e3, n_modes=6, elements_per_segment=40)
+    EI = STEEL["E"] * np.pi * R**3 * h
+    m = STEEL["rho"] * 2 * np.pi * R * h
+    assert bs.n_rigid == 2 and np.all(bs.omega_unloaded[:2] == 0.0)
+    assert bs.omega_unloaded[2] == pytest.approx(4.730040745**2 * np.sqrt(EI / (m * L**4)),
+                                                 rel=5e-3)
+    M, C, A, B = bs.matrices(0.1)
+    assert np.max(np.abs(A - A.T)) > 1e-6 * np.max(np.abs(A))
+    json.dumps(bs.to_dict())
+    with pytest.raises(ValueError, match="^F0 = "):
+        bending_system(veh, F0=0.0)
+
+
+@pytest.mark.slow
+def test_k1_regions_match_the_memo_beam_action_model():
+    """Independent model: the memo's beam-action system of a uniform free-free beam
+    (flexbooster.memo.beam_action.uniform_beam_system: Euler-Bernoulli modes, rigid pitch
+    about the CM, follower thrust turned by the gimbal angle K psi; Beal 1965, memo 4.1-4.2)
+    against the shell's k = 1 system of a slender steel tube (L/R = 250), p = F0 l^2 / EI = 20,
+    K = 0.5, gamma = 0.1, undamped, Omega / omega_1 in 0.25..2.0, first-order regions wider
+    than 1e-3 (relative): the same regions (kind), edges in Omega / omega_1 within 2e-3
+    (shell vs beam; measured 2e-4 for the pitch regions, 1.4e-3 for the second mode), and the
+    rigid pitch frequency^2 = 6 F0 K / (m l) (memo 4.2-1 for the uniform beam) to 1e-3."""
+    R, L, h = 0.02, 5.0, 0.001
+    veh = Vehicle([Cylinder(R, L, h, **STEEL)])
+    EI = STEEL["E"] * np.pi * R**3 * h
+    m = STEEL["rho"] * 2 * np.pi * R * h * L
+    p, K, g = 20.0, 0.5, 0.1
+    F0 = p * EI / L**2
+    bs = bending_system(veh, F0=F0, n_modes=5, gimbal_gain=K, elements_per_segment=40,
+                        damping_ratio=0.0)
+    assert bs.stiffness[0, 0] == pytest.approx(6 * F0 * K / (m * L), rel=1e-3)
+    w1 = bs.omega_unloaded[2]
+    shell = bending_regions(veh, F0=F0, gamma=g, omega_min=0.25 * w1, omega_max=2.0 * w1,
+                            gimbal_gain=K, n_modes=5, elements_per_segment=40,
+                            damping_ratio=0.0, max_order=1)
+    beam_sys = uniform_beam_system(p, K, 3)
+    beam = floquet.instability_regions(np.eye(4), None, beam_sys.A0, -g * beam_sys.B, 0.25,
+                                       2.0, max_order=1)
+
+    def wide(regs, scale):
+        return [(r.kind, r.omega_lo / scale, r.omega_hi / scale) for r in regs
+                if r.width / scale > 1e-3 * r.omega_hi / scale]
+
+    ws, wb = wide(shell, w1), wide(beam, 1.0)
+    assert [k for k, _, _ in ws] == [k for k, _, _ in wb] and len(ws) >= 4
+    for (_, a, b), (_, c, d) in zip(ws, wb, strict=True):
+        assert (a, b) == pytest.approx((c, d), rel=2e-3)
+    assert shell[0].modes[0].type == "rigid-pitch"
+
+
+def test_k1_no_flutter_below_beal_and_bad_input():
+    """Below Beal's load (thrust_max = 100 EI / l^2 < 109.69 EI / l^2) no flutter: inf;
+    bad input raises ValueError naming the argument."""
+    R, h = 0.05, 0.002
+    veh = Vehicle([Cylinder(R, 5.0, h, **STEEL)])
+    EI = STEEL["E"] * np.pi * R**3 * h
+    assert follower_flutter_thrust(veh, thrust_max=100 * EI / 25.0, n_modes=6,
+                                   elements_per_segment=20) == np.inf
+    for name, value in (("thrust_max", -1.0), ("n_modes", 1), ("n_scan", 1), ("rtol", 0.1)):
+        kw = dict(thrust_max=1e3, n_modes=6, elements_per_segment=20)
+        kw[name] = value
+        with pytest.raises(ValueError, match=rf"^{name} = "):
+            follower_flutter_thrust(veh, **kw)
+    with pytest.raises(ValueError, match="^gimbal_gain = "):
+        bending_system(veh, F0=1.0, gimbal_gain=-1.0)

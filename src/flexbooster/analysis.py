@@ -8,6 +8,11 @@ the beam action (exponents alpha_r) and the unstable thrust frequencies (the 13 
 memo 7.3).  It also computes the data of every figure (:mod:`flexbooster.memo.charts`) and the
 warnings under which the analysis goes on: thin-shell limit exceeded, Mathieu parameters outside
 the memo's range (4.2-5), a stability table too large for memory.
+
+The last stage (issue 15) is the vehicle's parametric instability map: the regions of the
+shell-of-revolution vehicle (the case's ``[vehicle]`` or the memo's two cylinders) under the
+pulsating thrust (:func:`analyze_vehicle_regions`, :mod:`flexbooster.vehicle`), with the
+memo-table roots that fall inside each region (:func:`memo_roots_in_regions`).
 """
 
 from __future__ import annotations
@@ -16,31 +21,38 @@ from collections.abc import Callable
 
 import numpy as np
 
+from ._parallel import TaskPool
 from ._threads import blas_threads
 from .case import Case
 from .errors import AnalysisWarning
 from .memo import charts
 from .memo.beam import beam_modes
-from .memo.beam_action import beam_action_analysis
+from .memo.beam_action import beam_action_analysis, pipeline_bands
 from .memo.model import BoosterModel
 from .memo.pitch import pitch_analysis
 from .memo.responses import SimulationResult, excitation_parameters, simulate
 from .memo.severity import severity_analysis
 from .memo.shell import natural_frequencies
-from .memo.stability import ShellModes, TooManyRootsError, unstable_frequencies
+from .memo.stability import ShellModes, StabilityTable, TooManyRootsError, unstable_frequencies
 from .model import model_from_case, vehicle_from_case
-from .results import SCHEMA_VERSION, UNITS, Results
+from .results import SCHEMA_VERSION, UNITS, MemoRootsInRegions, Results
 from .shell_of_revolution.survey import VehicleSurvey, vehicle_survey
+from .vehicle import VehicleRegions, vehicle_regions
 
 __all__ = [
     "analyze",
     "analyze_vehicle",
     "vehicle_warnings",
+    "analyze_vehicle_regions",
+    "memo_roots_in_regions",
     "simulate_case",
     "SCHEMA_VERSION",
     "UNITS",
     "STAGES",
     "VEHICLE_STAGE",
+    "VEHICLE_REGIONS_STAGE",
+    "VEHICLE_REGIONS_K_MIN",
+    "VEHICLE_REGIONS_K_MAX",
     "THIN_SHELL_LIMIT",
     "MATHIEU_A_RANGE",
     "MATHIEU_Q_MAX",
@@ -57,6 +69,13 @@ STAGES = (
 )
 #: The stage announced after :data:`STAGES` for a case with ``[vehicle]`` only.
 VEHICLE_STAGE = "vehicle modes"
+#: The stage announced last, unless ``analyze(..., vehicle=False)``: the vehicle's parametric
+#: instability regions (every case: ``[vehicle]`` or the memo's two cylinders).
+VEHICLE_REGIONS_STAGE = "vehicle instability regions"
+#: Harmonics k of the vehicle regions: k = VEHICLE_REGIONS_K_MIN..min(vehicle.k_max,
+#: VEHICLE_REGIONS_K_MAX) (:func:`flexbooster.vehicle.vehicle_regions` models k >= 2).
+VEHICLE_REGIONS_K_MIN = 2
+VEHICLE_REGIONS_K_MAX = 10
 #: Thin-shell theory (Donnell, memo 2.3) is trusted for h/R up to 1/20.
 THIN_SHELL_LIMIT = 1.0 / 20.0
 #: The memo's range for the Mathieu parameters (eq. 4.2-5): 0 < a < 1, 0 < q <= 0.05.
@@ -113,6 +132,9 @@ def analyze(
     stability: bool = True,
     progress: Callable[[str], None] | None = None,
     figures: bool = True,
+    *,
+    workers: int = 1,
+    vehicle: bool = True,
 ) -> Results:
     """Run the analysis of a validated case.
 
@@ -130,6 +152,15 @@ def analyze(
     figures : bool
         Compute the data of the figures (:mod:`flexbooster.memo.charts`; the beam-action
         (Omega, gamma) chart is the costly part); ``results.figures`` is None without it.
+    workers : int
+        Processes for the independent stages (:class:`flexbooster._parallel.TaskPool`): with
+        2 or more, the beam-action chart is traced in a worker while this process computes
+        the beam action and the stability table.  The results are the same, bit for bit.
+    vehicle : bool
+        Compute the vehicle's parametric instability regions (:func:`analyze_vehicle_regions`,
+        with their (Omega, gamma) boundary curves when ``figures``) and the memo-table roots
+        inside them (:func:`memo_roots_in_regions`); ``results.vehicle_regions`` is None
+        without it (``flexbooster run --no-vehicle``).
 
     Returns
     -------
@@ -143,14 +174,24 @@ def analyze(
     (:func:`flexbooster._threads.blas_threads`): multithreaded BLAS makes them slower.
     """
     with blas_threads(1):
-        return _analyze(case, beam_action, stability, figures,
-                        progress or (lambda stage: None))
+        with TaskPool(workers) as pool:
+            return _analyze(case, beam_action, stability, figures,
+                            progress or (lambda stage: None), pool, with_regions=vehicle)
 
 
 def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
-             step: Callable[[str], None]) -> Results:
+             step: Callable[[str], None], pool: TaskPool, *,
+             with_regions: bool = True) -> Results:
     step(STAGES[0])
     model = model_from_case(case)
+    # the costliest figure data, independent of the stages below: started first (in a worker
+    # when the pool has one, else computed when asked for, in STAGES[5])
+    chart = (pool.submit(charts.beam_action_chart, model) if figures and beam_action
+             else None)
+    bands = pool.submit(pipeline_bands, model) if beam_action and pool.parallel else None
+    # the vehicle's regions depend on the case alone (run last when there is no worker)
+    vreg = (pool.submit(_vehicle_regions_stage, case, boundaries=figures)
+            if with_regions and pool.parallel else None)
     n = model.truncation
     beam = beam_modes(n.N, model.mass.L, model.R1, model.E, model.rho)
     step(STAGES[1])
@@ -161,7 +202,7 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
     action = None
     if beam_action:
         step(STAGES[3])
-        action = beam_action_analysis(model)
+        action = beam_action_analysis(model, bands=True if bands is None else bands.result)
     table = None
     params = None
     extra: list[AnalysisWarning] = []
@@ -185,12 +226,22 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
     data = None
     if figures:
         step(STAGES[5])
-        data = _figure_data(model, pitch, shell, action, table, params)
+        data = _figure_data(model, pitch, shell, action, table, params,
+                            beam_action_chart=(chart.result() if chart is not None
+                                               and action is not None else None))
     vehicle = None
     if case.vehicle is not None:  # only a case with [vehicle]: the default run is unchanged
         step(VEHICLE_STAGE)
         vehicle = analyze_vehicle(case, views=figures)
         extra += vehicle_warnings(vehicle)
+    regions = matches = None
+    if with_regions:
+        step(VEHICLE_REGIONS_STAGE)
+        regions, skipped = (vreg.result() if vreg is not None
+                            else _vehicle_regions_stage(case, boundaries=figures))
+        extra += skipped
+        if regions is not None and table is not None:
+            matches = memo_roots_in_regions(table, regions)
     return Results(
         case=case,
         mass=model.mass,
@@ -206,11 +257,14 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
         stability=table,
         warnings=tuple(_warnings(model, pitch.a, pitch.q) + extra),
         vehicle=vehicle,
+        vehicle_regions=regions,
+        memo_roots_in_regions=matches,
         severity=severity,
     )
 
 
-def _figure_data(model, pitch, shell, action, table, params) -> charts.FigureData:
+def _figure_data(model, pitch, shell, action, table, params, *,
+                 beam_action_chart) -> charts.FigureData:
     """The data of every figure (compute -> data -> plot), on the grids of :mod:`charts`."""
     n = model.truncation
     return charts.FigureData(
@@ -220,7 +274,7 @@ def _figure_data(model, pitch, shell, action, table, params) -> charts.FigureDat
             charts.nodal_pattern_data(shell, cylinder=d, j=j, k=k, radius=R, half_length=L)
             for d, j, k, R, L in ((1, min(4, n.M1), min(3, n.N1), model.R1, model.L1),
                                   (2, min(6, n.M2), min(2, n.N2), model.R2, model.L2))),
-        beam_action_chart=charts.beam_action_chart(model) if action is not None else None,
+        beam_action_chart=beam_action_chart,
         campbell=None if table is None else charts.campbell_data(
             params=params, omega_range=model.omega_range, omega_1=model.omega_1, shell=shell,
             table=table, R=n.R, S=n.S),
@@ -333,3 +387,167 @@ def vehicle_warnings(survey: VehicleSurvey) -> list[AnalysisWarning]:
     if "flat plate" in survey.note:
         out.append(AnalysisWarning("vehicle-prestress", "vehicle.segments", survey.note))
     return out
+
+
+def _vehicle_regions_stage(case: Case, *, boundaries: bool
+                           ) -> tuple[VehicleRegions | None, list[AnalysisWarning]]:
+    """The regions of :func:`analyze_vehicle_regions`, or None and a warning where they cannot
+    be computed (k_max < 2, or the steady thrust buckles a harmonic): the run goes on."""
+    from .errors import CaseError
+
+    table = case.vehicle
+    k_max = table.k_max if table is not None else VEHICLE_REGIONS_K_MAX
+    if k_max < VEHICLE_REGIONS_K_MIN:
+        return None, [AnalysisWarning(
+            "vehicle-regions-skipped", "vehicle.k_max",
+            f"vehicle.k_max = {k_max} < {VEHICLE_REGIONS_K_MIN}: the parametric regions are "
+            f"computed for k >= {VEHICLE_REGIONS_K_MIN} only")]
+    try:
+        return analyze_vehicle_regions(case, boundaries=boundaries), []
+    except CaseError as exc:  # the thrust buckles the vehicle: a result, not a bad input
+        return None, [AnalysisWarning("vehicle-regions-skipped", exc.field, exc.rule)]
+
+
+def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
+                            k_max: int | None = None, boundaries: bool = True
+                            ) -> VehicleRegions:
+    """The parametric instability regions of the case's vehicle (the last stage of
+    :func:`analyze`).
+
+    The vehicle is the case's ``[vehicle]`` table or the memo's two cylinders
+    (:func:`flexbooster.model.vehicle_from_case`); the thrust T(t) = F0 (1 - gamma cos Omega t)
+    is the case's (F0, gamma, the Omega range of the grid), the modal damping ratio and the
+    modes per harmonic are ``vehicle.damping_ratio`` and ``vehicle.n_modes`` (defaults
+    :data:`flexbooster.vehicle_case.REGION_DAMPING_RATIO`,
+    :data:`~flexbooster.vehicle_case.REGION_N_MODES` without a ``[vehicle]`` table).
+
+    Parameters
+    ----------
+    case : Case
+        The validated case (SI).
+    k_min : int
+        Lowest harmonic (dimensionless), >= 2 (:data:`VEHICLE_REGIONS_K_MIN`; a keyword so
+        that the range can widen when k = 0, 1 are modelled).
+    k_max : int, optional
+        Highest harmonic (dimensionless); default min(``vehicle.k_max``,
+        :data:`VEHICLE_REGIONS_K_MAX`).
+    boundaries : bool
+        Also trace the boundary curves in (Omega, gamma) for the chart, at
+        :data:`flexbooster.memo.charts.VEHICLE_CHART_LEVELS` levels up to
+        :data:`flexbooster.memo.charts.VEHICLE_CHART_GAMMA_MAX`.  Only the regions that exist at
+        that gamma have curves (:func:`flexbooster.floquet.region_boundaries`), so the curves
+        are traced only when a search at that gamma finds one.
+
+    Returns
+    -------
+    VehicleRegions
+        Regions of every harmonic k_min..k_max in the case's Omega range at its gamma.
+
+    Raises
+    ------
+    CaseError
+        ``thrust.F0`` when the steady thrust buckles a harmonic (the load factor is named);
+        ``vehicle.k_max`` when fewer than one harmonic remains.
+
+    References
+    ----------
+    .. [1] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964,
+       ch. 1-2, sec. 6, sec. 8; docs/theory/vehicle-regions.md, docs/theory/memo-vs-vehicle.md.
+    """
+    from .errors import CaseError
+    from .vehicle_case import VehicleTable
+
+    table = case.vehicle if case.vehicle is not None else VehicleTable()
+    k_max = min(table.k_max, VEHICLE_REGIONS_K_MAX) if k_max is None else k_max
+    if k_max < k_min:
+        raise CaseError("vehicle.k_max", table.k_max,
+                        f"the parametric regions need k_max >= {k_min}")
+    t = case.thrust
+    settings = dict(F0=case.F0, omega_min=t.omega_min, omega_max=t.omega_max, k_min=k_min,
+                    k_max=k_max, n_modes=table.n_modes, damping_ratio=table.damping_ratio)
+    with blas_threads(1):
+        vehicle = vehicle_from_case(case)
+        try:
+            found = vehicle_regions(vehicle, gamma=t.gamma, **settings)
+            if boundaries and vehicle_regions(vehicle, gamma=charts.VEHICLE_CHART_GAMMA_MAX,
+                                              **settings).regions:
+                # region_boundaries traces the regions of gamma_max: none there, no curve
+                found = vehicle_regions(vehicle, gamma=t.gamma, boundaries=True,
+                                        gamma_max=charts.VEHICLE_CHART_GAMMA_MAX,
+                                        n_gamma=charts.VEHICLE_CHART_LEVELS, **settings)
+        except ValueError as exc:
+            if "buckles" in str(exc):
+                raise CaseError("thrust.F0", case.F0, "the steady thrust buckles the vehicle "
+                                f"({exc}): no parametric regions") from None
+            raise
+    return found
+
+
+def memo_roots_in_regions(table: StabilityTable, regions: VehicleRegions, *,
+                          rtol: float = 0.0) -> MemoRootsInRegions:
+    """The memo-table roots that fall inside each vehicle region, and the regions with none.
+
+    A root (memo 7.3: a thrust frequency Omega where an excitation frequency meets a shell
+    frequency) falls inside a region when omega_lo - rtol Omega_c <= Omega <=
+    omega_hi + rtol Omega_c (Omega_c the region's centre); with the roots sorted by Omega
+    those of a region are one run, found by bisection (no roots x regions matrix).  The memo's
+    shells and the vehicle's harmonics share the circumferential wave number k: each match
+    says whether the root's shell mode has the region's k.
+
+    Parameters
+    ----------
+    table : StabilityTable
+        The memo's unstable thrust frequencies (Omega in rad/s).
+    regions : VehicleRegions
+        The vehicle's parametric regions (Omega in rad/s).
+    rtol : float
+        Widening of each region relative to its centre (dimensionless), >= 0.
+
+    Returns
+    -------
+    MemoRootsInRegions
+        One row per (region, root) pair inside, sorted by region then Omega; the regions
+        without any root and without an active one; the roots' ``severity`` where the table
+        has one.
+
+    References
+    ----------
+    .. [1] Tech Memo 104, sec. 7.3 (the roots); Bolotin (1964), ch. 1-2 (the regions);
+       docs/theory/memo-vs-vehicle.md.
+    """
+    from .checks import nonnegative
+
+    if not isinstance(table, StabilityTable):
+        raise ValueError(f"table = {type(table).__name__}: must be a StabilityTable")
+    if not isinstance(regions, VehicleRegions):
+        raise ValueError(f"regions = {type(regions).__name__}: must be a VehicleRegions")
+    rtol = nonnegative("rtol", rtol)
+    regs = regions.regions
+    lo = np.array([r.omega_lo for r in regs], dtype=float)
+    hi = np.array([r.omega_hi for r in regs], dtype=float)
+    pad = rtol * np.array([r.omega_center for r in regs], dtype=float)
+    region_k = np.array([r.k for r in regs], dtype=int)
+    Omega = np.asarray(table.Omega, dtype=float)
+    by_omega = np.argsort(Omega, kind="stable")  # the roots inside a region are a run of it
+    first = np.searchsorted(Omega[by_omega], lo - pad, side="left")
+    stop = np.searchsorted(Omega[by_omega], hi + pad, side="right")
+    n_in = np.maximum(stop - first, 0)
+    region = np.repeat(np.arange(len(regs)), n_in)  # pairs by region, then Omega
+    offset = np.arange(int(n_in.sum())) - np.repeat(np.cumsum(n_in) - n_in, n_in)
+    root = by_omega[np.repeat(first, n_in) + offset]
+    active = np.asarray(table.active, dtype=bool)
+    n_active = np.concatenate(([0], np.cumsum(active[by_omega])))
+    has_active = n_active[first + n_in] - n_active[first] > 0
+    k = np.asarray(table.k, dtype=int)
+    severity = getattr(table, "severity", None)  # the severity column, where the table has it
+    return MemoRootsInRegions(
+        region=region.astype(int), root=root.astype(int), Omega=Omega[root],
+        family=np.asarray(table.family, dtype=int)[root],
+        cylinder=np.asarray(table.cylinder, dtype=int)[root],
+        j=np.asarray(table.j, dtype=int)[root], k=k[root],
+        branch=np.asarray(table.branch, dtype=int)[root], active=active[root],
+        same_k=k[root] == region_k[region],
+        severity=None if severity is None else tuple(np.asarray(severity)[root].tolist()),
+        without_root=np.flatnonzero(n_in == 0).astype(int),
+        without_active_root=np.flatnonzero(~has_active).astype(int),
+        n_regions=len(regs), rtol=rtol)

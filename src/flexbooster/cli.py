@@ -102,6 +102,14 @@ _OUTPUT = click.option(
 )
 
 
+_JOBS = click.option(
+    "-j",
+    "--jobs",
+    type=click.IntRange(1, 64),
+    default=None,
+    help="Worker processes for the independent stages and the figures (default: the usable "
+    "CPUs, at most 8; 1: none). The numbers are the same for any value.",
+)
 _QUIET = click.option(
     "-q", "--quiet", is_flag=True, help="Print nothing but errors (no summary, no progress)."
 )
@@ -164,9 +172,14 @@ def _wrote(paths, fmt: str, quiet: bool) -> None:
 @_CASE_ARG
 @_OUTPUT
 @click.option("--no-figures", is_flag=True, help="Do not draw the figures (faster).")
+@click.option("--no-vehicle", is_flag=True,
+              help="Skip the vehicle's parametric instability regions (shell of revolution).")
+@_JOBS
 @_QUIET
 @_FORMAT
-def run(case_file: Path | None, output: Path, no_figures: bool, quiet: bool, fmt: str) -> None:
+def run(case_file: Path | None, output: Path, no_figures: bool, no_vehicle: bool,
+        jobs: int | None, quiet: bool,
+        fmt: str) -> None:
     """Analyse CASE_FILE (TOML; the embedded default case if omitted).
 
     Prints a summary and writes OUTPUT/results.json, the CSV tables, the figures and
@@ -178,17 +191,22 @@ def run(case_file: Path | None, output: Path, no_figures: bool, quiet: bool, fmt
     Examples:
       flexbooster run                        # default case -> flexbooster-results/report.html
       flexbooster run my.toml -o out/ --no-figures
+      flexbooster run my.toml --no-vehicle   # without the vehicle's instability regions
       flexbooster run -q --format json | python -m json.tool | head
     """
+    from ._parallel import default_workers
     from .analysis import STAGES, analyze
     from .present.outputs import OUTPUT_STAGES, write_outputs
     from .present.summary import print_summary
 
     case = _load(case_file)
-    n_stages = len(STAGES) + (case.vehicle is not None) + len(OUTPUT_STAGES)
+    workers = default_workers() if jobs is None else jobs
+    n_stages = len(STAGES) + (case.vehicle is not None) + (not no_vehicle) + len(OUTPUT_STAGES)
     with _progress(n_stages, quiet) as step:
-        results = analyze(case, progress=step, figures=not no_figures)
-        paths = write_outputs(results, output, figures=not no_figures, progress=step)
+        results = analyze(case, progress=step, figures=not no_figures, vehicle=not no_vehicle,
+                          workers=workers)
+        paths = write_outputs(results, output, figures=not no_figures, progress=step,
+                              workers=workers)
     _report(results, fmt, quiet, print_summary)
     _wrote(paths, fmt, quiet)
 
@@ -226,8 +244,8 @@ def stability(
     data = _load(case_file).model_dump(exclude_none=True)
     data["thrust"].update(omega_min=number(omega_min), omega_max=number(omega_max))
     case = load_case(data)
-    with _progress(len(STAGES), quiet) as step:
-        results = analyze(case, progress=step)
+    with _progress(len(STAGES), quiet) as step:  # the memo table only: no vehicle regions
+        results = analyze(case, progress=step, vehicle=False)
     _report(results, fmt, quiet, print_stability)
     path = write_csv_atomic(output / "unstable-frequencies.csv", results.stability.to_columns())
     _wrote([path], fmt, quiet)

@@ -22,11 +22,12 @@ from .memo.severity import SeverityResult
 from .memo.shell import ShellFrequencies
 from .memo.stability import StabilityTable
 from .shell_of_revolution.survey import VehicleSurvey
+from .vehicle import VehicleRegions
 
 if TYPE_CHECKING:
     from .case import Case
 
-__all__ = ["Results", "SCHEMA_VERSION", "UNITS"]
+__all__ = ["Results", "MemoRootsInRegions", "SCHEMA_VERSION", "UNITS"]
 
 #: Version of the layout of results.json; bumped when a key changes meaning or disappears.
 SCHEMA_VERSION = "1.0"
@@ -94,6 +95,19 @@ UNITS: dict[str, str] = {
     "figures.nodal_patterns.radius, half_length": "m",
     "figures.nodal_patterns.hz": "Hz",
     "figures.ince_strutt.*, beam_modes.*": "1",
+    "vehicle_regions.F0": "N",
+    "vehicle_regions.gamma, damping_ratio": "1",
+    "vehicle_regions.omega_min, omega_max": "rad/s",
+    "vehicle_regions.regions.omega_lo, omega_hi, width, omega_at_max, omega_center": "rad/s",
+    "vehicle_regions.regions.growth_rate_max": "1/s (amplitude e-folding rate)",
+    "vehicle_regions.regions.critical_gamma": "1",
+    "vehicle_regions.regions.modes.omega_loaded": "rad/s",
+    "vehicle_regions.regions.modes.share": "1",
+    "vehicle_regions.harmonics.omega_unloaded, omega_loaded": "rad/s",
+    "vehicle_regions.curves.gamma": "1",
+    "vehicle_regions.curves.omega_lo, omega_hi": "rad/s",
+    "vehicle_regions.memo_roots.Omega": "rad/s",
+    "vehicle_regions.memo_roots.rtol": "1 (relative to each region's centre)",
 }
 
 
@@ -131,6 +145,12 @@ class Results:
         Conditions the user must know about.
     vehicle : VehicleSurvey or None
         The vehicle modes (shell of revolution), only for a case with ``[vehicle]``.
+    vehicle_regions : VehicleRegions or None
+        The vehicle's parametric instability regions (issue 15; with the (Omega, gamma)
+        boundary curves of the chart when the figures were computed); None with
+        ``analyze(..., vehicle=False)`` or when they could not be computed (see the warnings).
+    memo_roots_in_regions : MemoRootsInRegions or None
+        The memo-table roots inside each region; None without regions or without the table.
     severity : SeverityResult or None
         Severity of the roots of ``stability`` and their bands (issue 13); None if the table
         was not computed.  results.json holds it as ``stability.severity``.
@@ -150,6 +170,8 @@ class Results:
     stability: StabilityTable | None = None
     warnings: tuple[AnalysisWarning, ...] = field(default_factory=tuple)
     vehicle: VehicleSurvey | None = None
+    vehicle_regions: VehicleRegions | None = None
+    memo_roots_in_regions: MemoRootsInRegions | None = None
     severity: SeverityResult | None = None
 
     @property
@@ -194,6 +216,88 @@ class Results:
             out["stability"]["severity"] = self.severity.to_dict()
         if self.vehicle is not None:  # only for a case with [vehicle] (units inside)
             out["vehicle_modes"] = self.vehicle.to_dict()
+        out["vehicle_regions"] = self._vehicle_regions_dict()
         return out
+
+    def _vehicle_regions_dict(self) -> dict[str, Any] | None:
+        """results.json ``vehicle_regions``: :meth:`VehicleRegions.to_dict` and ``memo_roots``."""
+        if self.vehicle_regions is None:
+            return None
+        out = self.vehicle_regions.to_dict()
+        m = self.memo_roots_in_regions
+        out["memo_roots"] = None if m is None else m.to_dict()
+        return out
+
+
+@dataclass(frozen=True)
+class MemoRootsInRegions:
+    """The memo-table roots (memo 7.3) that fall inside the vehicle's parametric regions.
+
+    One row per (region, root) pair, parallel arrays, sorted by region then Omega; made by
+    :func:`flexbooster.analysis.memo_roots_in_regions`.
+
+    Attributes
+    ----------
+    region : numpy.ndarray of int
+        Index of the region in ``VehicleRegions.regions``.
+    root : numpy.ndarray of int
+        Row of the root in the stability table.
+    Omega : numpy.ndarray
+        Thrust frequency of the root (rad/s).
+    family, cylinder, j, k, branch : numpy.ndarray of int
+        The root's family (memo 7.4) and shell mode (cylinder d, axial j, circumferential k,
+        branch m).
+    active : numpy.ndarray of bool
+        The root has active forcing (memo 7.3).
+    same_k : numpy.ndarray of bool
+        The root's shell k is the region's harmonic k.
+    severity : tuple or None
+        The root's ``severity`` where the stability table has that column; None otherwise.
+    without_root : numpy.ndarray of int
+        Regions (indices) with no root inside.
+    without_active_root : numpy.ndarray of int
+        Regions with no root of active forcing inside: no memo resonance explains them.
+    n_regions : int
+        Number of regions compared (dimensionless).
+    rtol : float
+        Widening of each region relative to its centre (dimensionless).
+
+    References
+    ----------
+    Tech Memo 104, sec. 7.3; docs/theory/memo-vs-vehicle.md.
+    """
+
+    region: np.ndarray
+    root: np.ndarray
+    Omega: np.ndarray
+    family: np.ndarray
+    cylinder: np.ndarray
+    j: np.ndarray
+    k: np.ndarray
+    branch: np.ndarray
+    active: np.ndarray
+    same_k: np.ndarray
+    severity: tuple | None
+    without_root: np.ndarray
+    without_active_root: np.ndarray
+    n_regions: int
+    rtol: float
+
+    def __len__(self) -> int:
+        return int(self.root.size)
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready mapping (one list per column)."""
+        return {
+            "count": len(self), "n_regions": int(self.n_regions), "rtol": float(self.rtol),
+            "region": self.region.tolist(), "root": self.root.tolist(),
+            "Omega": self.Omega.tolist(), "family": self.family.tolist(),
+            "cylinder": self.cylinder.tolist(), "j": self.j.tolist(), "k": self.k.tolist(),
+            "branch": self.branch.tolist(), "active": self.active.tolist(),
+            "same_k": self.same_k.tolist(),
+            "severity": None if self.severity is None else list(self.severity),
+            "without_root": self.without_root.tolist(),
+            "without_active_root": self.without_active_root.tolist(),
+        }
 
 

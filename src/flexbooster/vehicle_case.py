@@ -7,8 +7,11 @@ from the aft edge forward (issue 14); the numerical model is
 (R1, 2 L1 aft and R2, 2 L2 forward, thickness h, E, nu, rho), joined by the memo's rigid,
 weightless disc (``junction = "memo-bulkhead"``), with the memo's end bulkheads
 (``"shear-diaphragm"`` ends, Tech Memo 104 sec. 5.3 and Fig. 1); a ``[vehicle]`` table
-without segments may then change only ``junction``, ``aft_end``, ``fwd_end``, ``theory`` and
-``k_max``.
+without segments may then change only ``junction``, ``aft_end``, ``fwd_end``, ``theory``,
+``k_max`` and the settings of the parametric instability regions (issue 15): ``damping_ratio``
+(modal damping of the loaded shell modes, default :data:`REGION_DAMPING_RATIO`, 0 allowed) and
+``n_modes`` (modes per harmonic k, default :data:`REGION_N_MODES`).  A case without a
+``[vehicle]`` table takes the defaults.
 
 Every invalid field raises :class:`~flexbooster.errors.CaseError` naming it, e.g.
 ``vehicle.segments[1].radius_aft``.  This module is part of the input layer (pydantic, pint).
@@ -33,6 +36,9 @@ __all__ = [
     "MEMO_END",
     "K_MAX_LIMIT",
     "RADIUS_RTOL",
+    "REGION_DAMPING_RATIO",
+    "REGION_N_MODES",
+    "REGION_N_MODES_LIMIT",
     "VehicleSegment",
     "VehicleTable",
     "check_vehicle",
@@ -54,6 +60,13 @@ MEMO_END = "shear-diaphragm"
 K_MAX_LIMIT = 200
 #: Relative tolerance on the radii where two segments meet at a continuous junction.
 RADIUS_RTOL = 1e-6
+
+#: Default modal damping ratio of the vehicle's parametric regions (``vehicle.damping_ratio``).
+REGION_DAMPING_RATIO = 0.01
+#: Default modes per harmonic k in the regions' modal basis (``vehicle.n_modes``).
+REGION_N_MODES = 20
+#: Largest ``vehicle.n_modes`` a case may ask for.
+REGION_N_MODES_LIMIT = 500
 
 _FROZEN = ConfigDict(extra="forbid", frozen=True)
 
@@ -169,6 +182,12 @@ class VehicleTable(BaseModel):
         :data:`MEMO_JUNCTION`; ``"continuous"`` needs R1 = R2).
     segments : tuple of VehicleSegment or None
         The segments from the aft edge forward; None: the memo vehicle from ``[booster]``.
+    damping_ratio : float
+        Modal damping ratio zeta of the loaded shell modes in the parametric instability
+        regions (dimensionless), 0 <= zeta < 1, default :data:`REGION_DAMPING_RATIO`.
+    n_modes : int
+        Unloaded modes per harmonic k in the regions' modal basis (dimensionless),
+        1..:data:`REGION_N_MODES_LIMIT`, default :data:`REGION_N_MODES`.
     """
 
     model_config = _FROZEN
@@ -181,6 +200,8 @@ class VehicleTable(BaseModel):
     k_max: StrictInt = 20
     junction: str | None = None
     segments: tuple[VehicleSegment, ...] | None = None
+    damping_ratio: float = REGION_DAMPING_RATIO
+    n_modes: StrictInt = REGION_N_MODES
 
     _mat = field_validator("E", "nu", "rho", mode="before")(_material)
     _ends = field_validator("aft_end", "fwd_end", mode="before")(_one_of(VEHICLE_ENDS))
@@ -192,6 +213,21 @@ class VehicleTable(BaseModel):
     def _k_max(cls, value: int) -> int:
         if not 0 <= value <= K_MAX_LIMIT:
             raise ValueError(f"must be an integer in [0, {K_MAX_LIMIT}]")
+        return value
+
+    @field_validator("damping_ratio", mode="before")
+    @classmethod
+    def _damping_ratio(cls, value: Any) -> float:
+        result = to_si("damping_ratio", value, "dimensionless")
+        if not 0.0 <= result < 1.0:  # math.isfinite: nan fails both comparisons
+            raise ValueError("damping ratio must lie in [0, 1)")
+        return result
+
+    @field_validator("n_modes")
+    @classmethod
+    def _n_modes(cls, value: int) -> int:
+        if not 1 <= value <= REGION_N_MODES_LIMIT:
+            raise ValueError(f"must be an integer in [1, {REGION_N_MODES_LIMIT}]")
         return value
 
 

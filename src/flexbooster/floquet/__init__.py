@@ -1,11 +1,13 @@
 """Numerics of linear periodic systems M q'' + C q' + (A + B cos Omega t) q = 0.
 
 Floquet multipliers and growth rates (:mod:`.multipliers`), Hill's method and the harmonic
-balance of the periodic boundaries (:mod:`.hill`), and the instability regions in Omega with
+balance of the periodic boundaries (:mod:`.hill`), a rigorous all-Omega stability certificate
+for damped systems (:mod:`.bounds`), and the instability regions in Omega with
 their amplitude dependence (:mod:`.regions`).  Numerical core: numpy and scipy only.  Theory:
 ``docs/theory/floquet.md``.
 """
 
+from .bounds import StabilityCertificate, stability_certificate
 from .hill import converged_periodic_boundaries, hill_exponents, periodic_boundaries
 from .multipliers import (
     LinearPeriodicSystem,
@@ -18,6 +20,7 @@ from .multipliers import (
     step_counts,
 )
 from .regions import (
+    DAMPING_MARGIN,
     CriticalAmplitude,
     InstabilityRegion,
     RegionBoundary,
@@ -27,6 +30,7 @@ from .regions import (
 )
 
 __all__ = [
+    "DAMPING_MARGIN",
     "CriticalAmplitude",
     "InstabilityRegion",
     "RegionBoundary",
@@ -44,4 +48,6 @@ __all__ = [
     "periodic_system",
     "steady_frequencies",
     "step_counts",
+    "StabilityCertificate",
+    "stability_certificate",
 ]

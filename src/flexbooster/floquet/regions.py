@@ -46,6 +46,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.optimize
 
+from .bounds import _certificate
 from .multipliers import (
     _MAX_STEPS,
     LinearPeriodicSystem,
@@ -58,6 +59,7 @@ from .multipliers import (
 )
 
 __all__ = [
+    "DAMPING_MARGIN",
     "InstabilityRegion",
     "instability_regions",
     "RegionBoundary",
@@ -71,6 +73,9 @@ _GOLD = 0.5 * (np.sqrt(5.0) - 1.0)
 #: Round-off floor of the indicators (s-values are O(1), eigenvalue errors ~ eps ||S||): a
 #: maximum below it is not a region.  Detection limit: relative width ~ 2 sqrt(floor) / (pi j).
 _F_FLOOR = 1e-14
+#: Safety factor of the damping filter (see :func:`_damping_caps`): a candidate is examined
+#: when margin x its first-order growth-rate bound exceeds the decay rate of its modes.
+DAMPING_MARGIN = 4.0
 
 
 @dataclass(frozen=True)
@@ -134,10 +139,12 @@ class _Options:
     max_order: int | None
     max_candidates: int
     chunk: int
+    damping_margin: float | None = DAMPING_MARGIN
 
 
 def _options(rtol=1e-9, step_phase=0.12, max_steps=_MAX_STEPS, max_order=None,
-             max_candidates=200_000, chunk=256) -> _Options:
+             max_candidates=200_000, chunk=256,
+             damping_margin=DAMPING_MARGIN) -> _Options:
     if not (np.isfinite(rtol) and 1e-14 <= rtol <= 1e-2):
         raise ValueError(f"rtol = {rtol!r}: must be in 1e-14..1e-2")
     if max_order is not None and (not isinstance(max_order, int | np.integer)
@@ -151,8 +158,15 @@ def _options(rtol=1e-9, step_phase=0.12, max_steps=_MAX_STEPS, max_order=None,
         raise ValueError(f"chunk = {chunk!r}: must be an integer >= 1")
     if not (np.isfinite(step_phase) and step_phase > 0.0):
         raise ValueError(f"step_phase = {step_phase!r}: must be finite and > 0")
+    if damping_margin is not None and (
+            isinstance(damping_margin, bool)
+            or not isinstance(damping_margin, int | float | np.floating | np.integer)
+            or not np.isfinite(damping_margin) or damping_margin < 1.0):
+        raise ValueError(f"damping_margin = {damping_margin!r}: must be None or a finite "
+                         "number >= 1")
     return _Options(float(rtol), float(step_phase), int(max_steps), max_order,
-                    int(max_candidates), int(chunk))
+                    int(max_candidates), int(chunk),
+                    None if damping_margin is None else float(damping_margin))
 
 
 def _range(omega_min, omega_max) -> tuple[float, float]:
@@ -168,11 +182,46 @@ def _range(omega_min, omega_max) -> tuple[float, float]:
 # --------------------------------------------------------------------------------------------
 # Candidates
 # --------------------------------------------------------------------------------------------
-def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Options) -> dict:
+def _damping_caps(w, Bt, base, i0, k0, zrow, zeta, rate, margin) -> np.ndarray:
+    """Largest order j per resonance base that damping could leave unstable (0: none).
+
+    The averaged (first-order) equations of a resonant group have the coupling
+    H_ab = |Bt_ab| / (4 sqrt(w_a w_b)) (Bolotin 1964 sec. 3 for simple, Hsu 1963 for
+    combination resonances: growth |Bt_ii| / (4 w_i), sqrt(|Bt_ik Bt_ki| / (16 w_i w_k)));
+    their largest undamped growth rate is at most the largest row sum R_a = sum_b H_ab of the
+    modes involved (Gershgorin: it covers clusters of nearly equal frequencies too).  Order j
+    >= 2: growth = j x width / 4 (the width of a two-mode averaged resonance is 4 lambda / j)
+    with the path bound of the width, so lambda_j <= base zeta_i zeta_k zeta^(j-2) / 4.  With
+    modal decay rates delta, a region exists only if lambda > sqrt(delta_i delta_k) >=
+    min(delta_i, delta_k) (Bolotin sec. 6: mu_cr = Delta / pi; Hsu's combination threshold),
+    kept here when margin * lambda > min(delta_i, delta_k).  A mode without decay keeps all.
+    """
+    with np.errstate(divide="ignore", invalid="ignore"):
+        H = np.abs(Bt) / (4.0 * np.sqrt(np.outer(w, w)))
+    H = np.where(np.isfinite(H), H, np.inf)
+    R = np.sum(H, axis=1)
+    d = np.minimum(rate[i0], rate[k0])
+    lam2 = base * zrow[i0] * zrow[k0] / 4.0  # j = 2 (and the path part of j = 1)
+    lam1 = np.maximum(np.maximum(R[i0], R[k0]), lam2)
+    cap = np.where(margin * lam1 > d, 1, 0).astype(np.int64)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = d / (margin * lam2)  # j >= 2 kept while zeta^(j-2) > t
+        if zeta < 1.0:
+            L = np.where(t < 1.0, np.log(np.maximum(t, 1e-300)) / np.log(zeta), -1.0)
+            cap = np.where(t < 1.0, 1 + np.ceil(np.minimum(L, 1e9)), cap).astype(np.int64)
+        else:
+            cap = np.where(t < 1.0, np.iinfo(np.int64).max // 4, cap)
+    return np.where(d > 0.0, cap, np.iinfo(np.int64).max // 4)
+
+
+def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Options,
+                rate: np.ndarray | None = None) -> dict:
     """Analytic centres in [lo, hi] with their first-order width estimates.
 
     Returns arrays kind (0 simple, 1 sum, 2 difference), i, k, j, centre, est, gap (distance
-    to the nearest other centre of *any* candidate, kept or not).
+    to the nearest other centre of *any* enumerated candidate, kept or not).  With ``rate``
+    (modal decay rates, 1/time) and ``opt.damping_margin``, the orders that damping
+    suppresses (:func:`_damping_caps`) are not enumerated.
     """
     n = w.size
     ii, kk = np.triu_indices(n, 1)
@@ -182,8 +231,15 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
     k0 = np.concatenate([np.arange(n), kk, kk])
     ok = base > 1e-12 * max(float(np.max(w)), 1e-300)
     base, kind0, i0, k0 = base[ok], kind0[ok], i0[ok], k0[ok]
+    wt = np.maximum(w, 0.5 * lo)
+    Z = np.abs(Bt) / np.outer(wt, wt)
+    zeta = float(np.max(Z))
+    zrow = np.max(np.maximum(Z, Z.T), axis=1)
     # all orders whose centre lies in [lo / 2, 2 hi] (for the gaps), capped
     jmax_all = np.floor(base / (0.5 * lo)).astype(np.int64)
+    if rate is not None and opt.damping_margin is not None:
+        jmax_all = np.minimum(jmax_all, _damping_caps(w, Bt, base, i0, k0, zrow, zeta, rate,
+                                                      opt.damping_margin))
     jmin_all = np.maximum(1, np.ceil(base / (2.0 * hi)).astype(np.int64))
     counts = np.maximum(0, jmax_all - jmin_all + 1)
     total = int(np.sum(counts))
@@ -208,10 +264,6 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
     # order j: a product of j couplings along a path i -> ... -> k, bounded by
     # Omega_c zeta_i zeta_k zeta^(j-2) with zeta_ab = |Bt_ab| / (w~_a w~_b), w~ = max(w, lo/2)
     # (small denominators through slow modes are kept), zeta_i = max_b zeta_ib
-    wt = np.maximum(w, 0.5 * lo)
-    Z = np.abs(Bt) / np.outer(wt, wt)
-    zeta = float(np.max(Z))
-    zrow = np.max(np.maximum(Z, Z.T), axis=1)
     jf = j.astype(float)
     est = centre * zrow[i] * zrow[k] * zeta ** np.maximum(jf - 2.0, 0.0)
     first = np.where(kind == 0, np.abs(Bt[i, i]) / w[i],
@@ -531,6 +583,18 @@ def _steady_check(system: LinearPeriodicSystem):
     return not unstable, max(growth, 0.0) + 0.0, tuple(int(m) for m in np.nonzero(bad)[0])
 
 
+def _modal_decay_rates(system: LinearPeriodicSystem) -> np.ndarray | None:
+    """First-order modal decay rates delta_a = Re (V^-1 M^-1 C V)_aa / 2 (1/time unit).
+
+    Exact for modal damping C = 2 zeta diag(omega) in the modal frame (delta = zeta omega);
+    light non-proportional damping: first-order perturbation of the steady eigenvalues.
+    """
+    if system.V is None:
+        return None
+    Ct = np.linalg.solve(system.V, system.Kc @ system.V)
+    return 0.5 * np.real(np.diag(Ct))
+
+
 def _undamped_search(system, w, cand, lo, hi, opt) -> list[dict]:
     """Regions of the undamped system for the candidate table; list of plain dicts."""
     if cand["centre"].size == 0:
@@ -696,7 +760,12 @@ def _search(system: LinearPeriodicSystem, lo: float, hi: float, opt: _Options,
         raise ValueError("A = the steady matrix M^-1 A is defective (no modal frame): "
                          "instability_regions needs distinct or semisimple eigenvalues")
     w = np.sqrt(system.mu.real)
-    cand = _candidates(w, undamped.Bt, lo, hi, opt)
+    rate = None
+    if system.damped and opt.damping_margin is not None:
+        if _certificate(system).certified:  # rigorous: stable at every Omega (bounds.py)
+            return ()
+        rate = _modal_decay_rates(system)
+    cand = _candidates(w, undamped.Bt, lo, hi, opt, rate=rate)
     if select is not None:
         keep = select(cand)
         cand = {key: v[keep] for key, v in cand.items()}
@@ -711,8 +780,9 @@ def _search(system: LinearPeriodicSystem, lo: float, hi: float, opt: _Options,
 def instability_regions(M, C, A, B, omega_min: float, omega_max: float, *,
                         rtol: float = 1e-9, step_phase: float = 0.12,
                         max_steps: int = _MAX_STEPS, max_order: int | None = None,
-                        max_candidates: int = 200_000,
-                        chunk: int = 256) -> tuple[InstabilityRegion, ...]:
+                        max_candidates: int = 200_000, chunk: int = 256,
+                        damping_margin: float | None = DAMPING_MARGIN,
+                        ) -> tuple[InstabilityRegion, ...]:
     """Instability regions in Omega in [omega_min, omega_max], from the analytic candidates.
 
     Parameters
@@ -736,6 +806,13 @@ def instability_regions(M, C, A, B, omega_min: float, omega_max: float, *,
         Omega_c).
     max_candidates : int
         Cap on the number of resonance centres enumerated (ValueError beyond it).
+    damping_margin : float or None
+        With damping (dimensionless, >= 1; default 4): (a) if the rigorous certificate of
+        :func:`flexbooster.floquet.stability_certificate` holds, no region exists at any
+        Omega and none is searched; (b) otherwise a candidate is examined only when
+        ``damping_margin`` x its first-order growth-rate bound exceeds the decay rate of its
+        modes (a region below that is suppressed by damping: Bolotin sec. 6; the bound and
+        its margin in ``docs/theory/floquet.md`` sec. 4).  None: neither (every candidate).
 
     Returns
     -------
@@ -759,7 +836,8 @@ def instability_regions(M, C, A, B, omega_min: float, omega_max: float, *,
     Takahashi (1981).
     """
     lo, hi = _range(omega_min, omega_max)
-    opt = _options(rtol, step_phase, max_steps, max_order, max_candidates, chunk)
+    opt = _options(rtol, step_phase, max_steps, max_order, max_candidates, chunk,
+                   damping_margin)
     return _search(periodic_system(M, C, A, B), lo, hi, opt)
 
 
@@ -842,7 +920,7 @@ def _key(r) -> tuple:
 
 
 def critical_amplitude(M, C, A, B1, *, gamma_max: float, omega_min: float, omega_max: float,
-                       gamma_rtol: float = 1e-6,
+                       gamma_rtol: float = 1e-6, regions: tuple | None = None,
                        **options) -> tuple[CriticalAmplitude, ...]:
     """Critical amplitude of every region that exists at gamma_max (B = gamma B1).
 
@@ -861,6 +939,9 @@ def critical_amplitude(M, C, A, B1, *, gamma_max: float, omega_min: float, omega
         Omega range (rad per time unit).
     gamma_rtol : float
         Relative tolerance on gamma_cr (dimensionless).
+    regions : tuple of InstabilityRegion, optional
+        The regions at gamma_max from :func:`instability_regions` with the same range and
+        options, if already computed (saves that search; not checked).
     **options
         Passed to :func:`instability_regions`.
 
@@ -878,7 +959,7 @@ def critical_amplitude(M, C, A, B1, *, gamma_max: float, omega_min: float, omega
     opt = _options(**options)
     B1 = np.asarray(B1, dtype=float)
     base = periodic_system(M, C, A, gmax * B1)
-    top = _search(base, lo, hi, opt)
+    top = _search(base, lo, hi, opt) if regions is None else tuple(regions)
     out = []
     for r in top:
         if r.kind == "steady":

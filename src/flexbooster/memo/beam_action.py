@@ -47,13 +47,15 @@ References
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
 
 from ..checks import count, nonnegative, positive
-from ..floquet import critical_amplitude, instability_regions
+from ..floquet import critical_amplitude, instability_regions, periodic_boundaries
+from ..floquet import hill_exponents as floquet_hill_exponents
 from . import beam
 
 if TYPE_CHECKING:
@@ -75,9 +77,14 @@ __all__ = [
     "BAND_MAX_ORDER",
     "BAND_MAX_CANDIDATES",
     "BAND_OMEGA_BAR_MIN",
+    "TONGUE_MAX_HARMONICS",
+    "TONGUE_HILL_HARMONICS",
+    "TONGUE_GAMMA_RTOL",
     "BeamActionBand",
     "modal_damping",
     "beam_action_bands",
+    "pitch_tongue_bands",
+    "pipeline_bands",
     "BeamActionResult",
     "beam_action_analysis",
     "StabilityChart",
@@ -734,7 +741,8 @@ BAND_MAX_CANDIDATES = 1_000_000
 #: Lower end of the pipeline's band search in units of omega_1: below Omega = omega_1 / 4 an
 #: elastic resonance has order j >= 8 (simple) or j >= 4 (combinations), far narrower than
 #: round-off at gamma < 1, while the monodromy there costs ~omega_max / Omega steps per
-#: period; the rigid-pitch tongues 2 omega_psi / j below it are the pitch analysis' bands.
+#: period; the rigid-pitch tongues 2 omega_p / r below it are found by harmonic balance
+#: (:func:`pitch_tongue_bands`).
 BAND_OMEGA_BAR_MIN = 0.25
 
 
@@ -954,7 +962,8 @@ class BeamActionResult:
         Modal damping ratios of the band search (dimensionless); the grid exponents
         (``alpha``, ``stable``, ``growth_rate``) are those of the undamped system.
     band_range : (float, float)
-        The Omega range searched for bands (rad/s): the grid's, raised to omega_1 / 4.
+        The Omega range searched for every kind of band (rad/s): the grid's, raised to
+        omega_1 / 4; below it the rigid-pitch tongues are searched (:func:`pitch_tongue_bands`).
     """
 
     Omega: np.ndarray
@@ -1016,8 +1025,231 @@ def _match_distance(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return np.max(np.abs(a - b), axis=-1)
 
 
+#: Harmonics of the harmonic balance of the low-frequency pitch tongues: K = 4, 8, .. up to
+#: this, until two successive K give the same edges to :data:`BAND_RTOL`.
+TONGUE_MAX_HARMONICS = 24
+#: Relative tolerance of the critical gamma of a damped pitch tongue (bisection).
+TONGUE_GAMMA_RTOL = 1e-6
+#: Hill harmonics (s = -S..S) of the growth rate inside a pitch tongue (checked against S + 4
+#: at the maximum; Omega << omega_1 there, so few are needed).
+TONGUE_HILL_HARMONICS = 4
+
+
+def _pitch_mode(system: BeamActionSystem) -> int:
+    """Index (ascending frequency) of the steady mode with the largest rigid-rotation share."""
+    mu, V = np.linalg.eig(system.A0)
+    rel = np.abs(V[-1, :]) / np.linalg.norm(V, axis=0)  # as modal_damping
+    w = np.sqrt(mu.astype(complex))
+    return int(np.flatnonzero(np.argsort(w.real, kind="stable") == int(np.argmax(rel)))[0])
+
+
+def _tongue_edges(A, C, B, *, period: str, centre: float, window: tuple[float, float],
+                  rtol: float, harmonics=None) -> tuple[tuple[float, float] | None, int]:
+    """Edges of the tongue about ``centre`` from the converged T / 2T-periodic boundaries.
+
+    Within the window, roots closer than rtol * centre in pairs (double roots: regions of
+    elastic resonances of high order, narrower than the tolerance) are dropped; the tongue's
+    edges are the nearest remaining roots below and above the centre, tracked as the
+    harmonics K are raised (Bolotin 1964, sec. 4-5) until two successive K agree to
+    rtol * centre.  With ``harmonics`` = (K,) one truncation is used as it is.  Returns the
+    edges (None: no tongue) and the smaller K of the two that agree (as accurate, cheaper).
+    """
+    n = A.shape[0]
+    prev = None
+    Ks = tuple(range(4, TONGUE_MAX_HARMONICS + 1, 4)) if harmonics is None else harmonics
+    for K in Ks:
+        r = periodic_boundaries(np.eye(n), C, A, B, period=period, n_harmonics=K,
+                                omega_max=window[1])
+        r = r[r >= window[0]]
+        close = np.diff(r) <= rtol * centre
+        drop = np.zeros(r.size, dtype=bool)
+        drop[:-1] |= close
+        drop[1:] |= close
+        r = r[~drop]
+        below, above = r[r <= centre], r[r > centre]
+        if below.size == 0 or above.size == 0:
+            cur = None
+        elif prev is None:
+            cur = (float(below[-1]), float(above[0]))
+        else:  # track the edges of the previous K
+            cur = (float(r[np.argmin(np.abs(r - prev[0]))]),
+                   float(r[np.argmin(np.abs(r - prev[1]))]))
+        if len(Ks) == 1:
+            return cur, K
+        if cur is not None and prev is not None and max(abs(cur[0] - prev[0]),
+                                                        abs(cur[1] - prev[1])) <= rtol * centre:
+            return (cur if cur[1] - cur[0] > rtol * centre else None), K - 4
+        if cur is None and prev is None and K >= 8:
+            return None, K  # no tongue at two successive K: below round-off or damped out
+        prev = cur
+    raise ValueError(f"pitch tongue near Omega_bar = {centre!r}: its edges did not converge "
+                     f"with {TONGUE_MAX_HARMONICS} harmonics")
+
+
+def _hill_growth(A, C, B, om: np.ndarray, S: int) -> np.ndarray:
+    ev = floquet_hill_exponents(np.eye(A.shape[0]), C, A, B, om, n_harmonics=S)
+    return np.max(ev.real, axis=1)
+
+
+def _growth_max(A, C, B, lo: float, hi: float) -> tuple[float, float]:
+    """Largest growth rate in [lo, hi] (per unit tau) and where: Hill, golden section."""
+    S = TONGUE_HILL_HARMONICS
+    x = np.linspace(lo, hi, 9)[1:-1]
+    g = _hill_growth(A, C, B, x, S)
+    i = int(np.argmax(g))
+    a, b = (x[i - 1] if i > 0 else lo), (x[i + 1] if i < x.size - 1 else hi)
+    phi = 0.5 * (np.sqrt(5.0) - 1.0)
+    c, d = b - phi * (b - a), a + phi * (b - a)
+    gc, gd = _hill_growth(A, C, B, np.array([c, d]), S)
+    for _ in range(60):  # golden section (Press et al. 2007, sec. 10.2) to 1e-5 of the band:
+        if b - a <= 1e-5 * (hi - lo):  # the maximum is flat, the growth then exact to ~1e-10
+            break
+        if gc >= gd:
+            b, d, gd = d, c, gc
+            c = b - phi * (b - a)
+            gc = _hill_growth(A, C, B, np.array([c]), S)[0]
+        else:
+            a, c, gc = c, d, gd
+            d = a + phi * (b - a)
+            gd = _hill_growth(A, C, B, np.array([d]), S)[0]
+    x0 = c if gc >= gd else d
+    g0 = _hill_growth(A, C, B, np.array([x0]), S + 4)[0]  # the converged value at the maximum
+    return float(max(g0, 0.0)), float(x0)
+
+
+def pitch_tongue_bands(system: BeamActionSystem, gamma: float, *, omega_min: float,
+                       omega_max: float, beam_ratio: float = 0.0, pitch_ratio: float = 0.0,
+                       rtol: float = BAND_RTOL) -> tuple[BeamActionBand, ...]:
+    """The rigid-pitch tongues of the coupled beam-action system in a low Omega range.
+
+    Below omega_1 / 4 (:data:`BAND_OMEGA_BAR_MIN`) the monodromy costs ~omega_max / Omega
+    steps per period, while the only bands wider than round-off are the tongues of the rigid
+    pitch mode (coupled with the quasi-static beam), Omega near 2 omega_p / r (an elastic
+    resonance there has order j >= 8).  Their edges carry T-periodic (r even) or 2T-periodic
+    (r odd) solutions, found by harmonic balance (:func:`flexbooster.floquet.
+    periodic_boundaries`, the harmonics raised until the edges converge); the growth rate is
+    Hill's (:func:`flexbooster.floquet.hill_exponents`), maximised by golden section; with
+    damping the critical gamma is found by bisection on the tongue's existence.
+
+    Parameters
+    ----------
+    system : BeamActionSystem
+        The normalised system.
+    gamma : float
+        Pulsation amplitude (dimensionless), 0 <= gamma < 1.
+    omega_min, omega_max : float
+        The low Omega range (rad/s), 0 < omega_min < omega_max; tongues whose tip
+        2 omega_p / r lies in it are returned (edges clipped to it).
+    beam_ratio, pitch_ratio : float
+        Modal damping ratios (dimensionless), see :func:`modal_damping`.
+    rtol : float
+        Edge tolerance relative to the tip (dimensionless).
+
+    Returns
+    -------
+    tuple of BeamActionBand
+        Kind "simple", modes (p,) (the pitch mode), order r; sorted by omega_lo.
+
+    References
+    ----------
+    Bolotin (1964), ch. 1 sec. 3-5 (periodic solutions on the boundaries), ch. 2 sec. 8;
+    Magnus & Winkler (1966), ch. 2 (Hill's method); Tech Memo 104, eq. (4.1-11).
+    """
+    gamma = nonnegative("gamma", gamma)
+    if gamma >= 1.0:
+        raise ValueError(f"gamma = {gamma!r}: must satisfy 0 <= gamma < 1")
+    lo, hi = positive("omega_min", omega_min), positive("omega_max", omega_max)
+    if not lo < hi:
+        raise ValueError(f"omega_min = {lo!r}: must be < omega_max = {hi!r}")
+    rtol = positive("rtol", rtol)
+    w1 = float(system.omega_1)
+    p = _pitch_mode(system)
+    wp = complex(loaded_frequencies(system)[p])
+    if gamma == 0.0 or wp.imag != 0.0 or not wp.real > 0.0:
+        return ()  # no pulsation, or the steady system diverges / flutters (a steady band)
+    wp = wp.real
+    C = modal_damping(system, beam_ratio=beam_ratio, pitch_ratio=pitch_ratio)
+    A = system.A0
+    out = []
+    r_min = max(1, int(np.ceil(2.0 * wp * w1 / hi - 1e-12)))
+    for r in range(r_min, 64):
+        centre = 2.0 * wp / r  # tip of tongue r (Omega_bar)
+        if centre * w1 < lo:
+            break
+        window = (centre * (1.0 - 0.5 / (r + 1)), centre * (1.0 + 0.5 / r))  # to the next tips
+        period = "2T" if r % 2 else "T"
+
+        def edges(g, harmonics=None, centre=centre, window=window, period=period):
+            return _tongue_edges(A, C, -g * system.B, period=period, centre=centre,
+                                 window=window, rtol=rtol, harmonics=harmonics)
+
+        e, K = edges(gamma)
+        if e is None:
+            if r > 2:
+                break  # higher tongues are narrower still
+            continue
+        g_max, x_max = _growth_max(A, C, -gamma * system.B, *e)
+        g_cr = 0.0
+        if C is not None:  # bisection on existence (Bolotin 1964, sec. 6), K of the edges
+            a, b = 0.0, gamma
+            while b - a > TONGUE_GAMMA_RTOL * gamma:
+                mid = 0.5 * (a + b)
+                a, b = (a, mid) if edges(mid, (K,))[0] is not None else (mid, b)
+            g_cr = b
+        e_lo, e_hi = max(e[0] * w1, lo), min(e[1] * w1, hi)
+        out.append(BeamActionBand(
+            omega_lo=e_lo, omega_hi=e_hi, growth_rate_max=g_max * w1,  # 1/tau -> 1/s
+            omega_at_max=x_max * w1, kind="simple", modes=(p,), order=r,
+            omega_center=centre * w1, clipped=(e_lo > e[0] * w1 or e_hi < e[1] * w1),
+            critical_gamma=g_cr))
+    return tuple(sorted(out, key=lambda b: b.omega_lo))
+
+
+def _band_range(model: BoosterModel, omega_1: float) -> tuple[float, float]:
+    """The Omega range (rad/s) of the pipeline's band search: above omega_1 / 4."""
+    return (max(float(np.min(model.Omega)), BAND_OMEGA_BAR_MIN * omega_1),
+            float(np.max(model.Omega)))
+
+
+def pipeline_bands(model: BoosterModel) -> tuple[BeamActionBand, ...]:
+    """The bands :func:`beam_action_analysis` searches, on their own (a separate task).
+
+    Parameters
+    ----------
+    model : BoosterModel
+        The derived model: Omega range (rad/s), gamma, damping ratios, beam-action system.
+
+    Returns
+    -------
+    tuple of BeamActionBand
+        :func:`beam_action_bands` over [max(Omega[0], omega_1 / 4), Omega[-1]]
+        (:data:`BAND_OMEGA_BAR_MIN`) and, below omega_1 / 4, the rigid-pitch tongues of the
+        coupled system (:func:`pitch_tongue_bands`), with the model's damping ratios; sorted
+        by omega_lo.
+
+    References
+    ----------
+    Bolotin (1964), ch. 1-2, sec. 6; Tech Memo 104, eqs. (4.1-10), (4.1-11).
+    """
+    system = beam_system(model)
+    lo, hi = _band_range(model, float(system.omega_1))
+    gamma = float(model.gamma)
+    damping = {"beam_ratio": float(model.beam_damping_ratio),
+               "pitch_ratio": float(model.pitch_damping_ratio)}
+    found: tuple[BeamActionBand, ...] = ()
+    if hi > lo:
+        found = beam_action_bands(system, gamma, omega_min=lo, omega_max=hi, **damping)
+    low = float(np.min(model.Omega))
+    if min(lo, hi) > low:  # below omega_1 / 4: the pitch tongues by harmonic balance
+        seen = {(b.kind, b.modes, b.order) for b in found}
+        found += tuple(b for b in pitch_tongue_bands(system, gamma, omega_min=low,
+                                                     omega_max=min(lo, hi), **damping)
+                       if (b.kind, b.modes, b.order) not in seen)  # a tongue across omega_1/4
+    return tuple(sorted(found, key=lambda b: b.omega_lo))
+
+
 def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3,
-                         bands: bool = True) -> BeamActionResult:
+                         bands: bool | tuple | Callable[[], tuple] = True) -> BeamActionResult:
     """alpha_r along the Omega grid and the beam-action verdict (pipeline entry point).
 
     Parameters
@@ -1030,9 +1262,11 @@ def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3,
         also solved and compared with the monodromy exponents, 1..len(Omega) (clipped to the
         grid size); Hill costs O((2 (N + 1)(2 S + 1))^3) per point, about 0.1-0.5 s for
         N = S = 10.
-    bands : bool
-        Search the instability bands (:func:`beam_action_bands`); without it ``bands`` is
-        empty and the verdict is "not searched".
+    bands : bool, tuple of BeamActionBand or callable
+        Search the instability bands (:func:`pipeline_bands`); False: ``bands`` is empty and
+        the verdict is "not searched"; a tuple, or a function of no argument returning it
+        (called after the exponents are computed): the bands :func:`pipeline_bands` returns
+        for this model, searched elsewhere (e.g. in a worker process).
 
     Returns
     -------
@@ -1041,7 +1275,8 @@ def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3,
         ``hill_monodromy_difference`` is the largest difference of the canonical
         representatives at the Hill points; the bands over
         [max(Omega[0], omega_1 / 4), Omega[-1]] (:data:`BAND_OMEGA_BAR_MIN`; the range is
-        ``band_range``) from :func:`beam_action_bands` with the model's damping ratios, and
+        ``band_range``) from :func:`beam_action_bands` and the pitch tongues below it
+        (:func:`pipeline_bands`) with the model's damping ratios, and
         the verdict from the bands.
 
     References
@@ -1067,11 +1302,12 @@ def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3,
     i = int(np.argmax(growth))
     at_max = float(Ob[i] * system.omega_1) if growth[i] > 0.0 else 0.0
     zb, zp = float(model.beam_damping_ratio), float(model.pitch_damping_ratio)
-    lo = max(float(np.min(model.Omega)), BAND_OMEGA_BAR_MIN * system.omega_1)
-    hi = float(np.max(model.Omega))
-    found = () if not (bands and hi > lo) else beam_action_bands(
-        system, gamma, omega_min=lo, omega_max=hi, beam_ratio=zb, pitch_ratio=zp)
-    verdict = ("unstable" if found else "stable") if bands else "not searched"
+    lo, hi = _band_range(model, float(system.omega_1))
+    if callable(bands):  # searched elsewhere, meanwhile
+        bands = tuple(bands())
+    searched = isinstance(bands, tuple) or bool(bands)
+    found = bands if isinstance(bands, tuple) else (pipeline_bands(model) if bands else ())
+    verdict = ("unstable" if found else "stable") if searched else "not searched"
     peak, at_peak = float(growth[i]), at_max
     for band in found:  # the bands' exact maxima: a grid steps over narrow bands
         if band.growth_rate_max > peak:

@@ -40,6 +40,8 @@ __all__ = [
     "BEAM_ACTION_CHART_RTOL",
     "BEAM_ACTION_CHART_MAX_ORDER",
     "BEAM_ACTION_CHART_STEP_PHASE",
+    "VEHICLE_CHART_LEVELS",
+    "VEHICLE_CHART_GAMMA_MAX",
     "MODE_SHAPE_POINTS",
     "MODE_SHAPE_COUNT",
     "InceStruttData",
@@ -82,6 +84,13 @@ BEAM_ACTION_CHART_MAX_ORDER = 1
 #: Monodromy step parameter of the chart's boundary search (see
 #: :func:`flexbooster.floquet.instability_regions`).
 BEAM_ACTION_CHART_STEP_PHASE = 0.25
+#: gamma levels of the vehicle's (Omega, gamma) region chart (``n_gamma`` of
+#: :func:`flexbooster.vehicle.vehicle_regions`, the tip at the critical gamma included), up to
+#: :data:`VEHICLE_CHART_GAMMA_MAX`.
+VEHICLE_CHART_LEVELS = 4
+#: Largest gamma of the vehicle's region chart (the search cost grows with gamma; a thrust
+#: pulsating by more than half its mean is outside any engine's range).
+VEHICLE_CHART_GAMMA_MAX = 0.5
 #: Points per beam mode shape.
 MODE_SHAPE_POINTS = 400
 #: Beam modes drawn (at most the truncation N).

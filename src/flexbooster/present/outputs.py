@@ -11,13 +11,15 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from .._parallel import TaskPool
 from ..results import Results
 from .io import write_bytes_atomic, write_csv_atomic, write_json_atomic, write_text_atomic
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
-__all__ = ["OUTPUT_STAGES", "write_outputs", "save_figure", "make_figures", "figure_svgs"]
+__all__ = ["OUTPUT_STAGES", "write_outputs", "save_figure", "make_figures", "figure_svgs",
+           "figure_names", "render_figures"]
 
 #: The stages of :func:`write_outputs`, as passed to its ``progress`` callback.
 OUTPUT_STAGES = ("results.json and CSV", "figures", "report.html")
@@ -50,6 +52,8 @@ def write_outputs(
     folder: str | Path,
     figures: bool = True,
     progress: Callable[[str], None] | None = None,
+    *,
+    workers: int = 1,
 ) -> list[Path]:
     """Write every output of an analysis into ``folder``.
 
@@ -63,42 +67,91 @@ def write_outputs(
         Also draw and save the figures (SVG and PNG); the report then embeds them.
     progress : callable, optional
         Called with the name of each stage (:data:`OUTPUT_STAGES`) as it starts.
+    workers : int
+        Processes that draw the figures while this one writes results.json and the CSV
+        tables (:class:`flexbooster._parallel.TaskPool`; 1: all in this process, one after
+        the other).  The files are the same, byte for byte.
 
     Returns
     -------
     list of pathlib.Path
         The files written: results.json, shell-frequencies.csv, unstable-frequencies.csv and
-        resonance-bands.csv (when the stability table was computed), the figures and
-        report.html (last).
+        resonance-bands.csv (when the stability table was computed), vehicle-regions.csv (when
+        the vehicle's regions were computed), the figures and report.html (last).
     """
     from .report import write_report
 
     step = progress or (lambda stage: None)
     folder = Path(folder)
-    step(OUTPUT_STAGES[0])
-    written = [write_json_atomic(folder / "results.json", results.to_dict())]
-    written.append(write_csv_atomic(folder / "shell-frequencies.csv", results.shell.to_rows()))
-    if results.stability is not None:
-        written.append(
-            write_csv_atomic(folder / "unstable-frequencies.csv", results.stability.to_columns())
-        )
-    if results.severity is not None:  # issue 13: every band, most severe first
-        written.append(write_csv_atomic(folder / "resonance-bands.csv",
-                                        results.severity.band_rows()))
-    if results.vehicle is not None:  # a case with [vehicle] only
-        written.append(write_csv_atomic(folder / "vehicle-modes.csv",
-                                        results.vehicle.to_columns()))
-    svgs: dict[str, str] = {}
-    if figures and results.figures is not None:
-        step(OUTPUT_STAGES[1])
-        for name, fig in make_figures(results).items():
-            svg, png = _render(fig)
-            svgs[name] = svg
-            written.append(write_text_atomic(folder / f"{name}.svg", svg))
-            written.append(write_bytes_atomic(folder / f"{name}.png", png))
+    draw = figures and results.figures is not None
+    with TaskPool(workers) as pool:
+        # the figures are drawn by the workers (started first) while this process writes
+        jobs = {name: pool.submit(_figure_task, results, name)
+                for name in figure_names(results)} if draw and pool.parallel else {}
+        step(OUTPUT_STAGES[0])
+        written = [write_json_atomic(folder / "results.json", results.to_dict())]
+        written.append(write_csv_atomic(folder / "shell-frequencies.csv",
+                                        results.shell.to_rows()))
+        if results.stability is not None:
+            written.append(write_csv_atomic(folder / "unstable-frequencies.csv",
+                                            results.stability.to_columns()))
+        if results.severity is not None:  # issue 13: every band, most severe first
+            written.append(write_csv_atomic(folder / "resonance-bands.csv",
+                                            results.severity.band_rows()))
+        if results.vehicle is not None:  # a case with [vehicle] only
+            written.append(write_csv_atomic(folder / "vehicle-modes.csv",
+                                            results.vehicle.to_columns()))
+        if results.vehicle_regions is not None:  # the vehicle's parametric regions (issue 15)
+            from .vehicle import vehicle_region_columns
+
+            written.append(write_csv_atomic(folder / "vehicle-regions.csv",
+                                            vehicle_region_columns(results.vehicle_regions)))
+        svgs: dict[str, str] = {}
+        if draw:
+            step(OUTPUT_STAGES[1])
+            rendered = ({name: job.result() for name, job in jobs.items()} if jobs
+                        else render_figures(results))
+            for name, (svg, png) in rendered.items():
+                svgs[name] = svg
+                written.append(write_text_atomic(folder / f"{name}.svg", svg))
+                written.append(write_bytes_atomic(folder / f"{name}.png", png))
     step(OUTPUT_STAGES[2])
     written.append(write_report(results, folder / "report.html", svgs))
     return written
+
+
+def _figure_task(results: Results, name: str) -> tuple[str, bytes]:
+    """Draw and render one figure (a worker's task): SVG text and PNG bytes."""
+    import matplotlib.pyplot as plt
+
+    fig = make_figures(results, names=(name,))[name]
+    try:
+        return _render(fig)
+    finally:
+        plt.close(fig)
+
+
+def render_figures(results: Results, *, workers: int = 1) -> dict[str, tuple[str, bytes]]:
+    """SVG text and PNG bytes of every figure of :func:`make_figures`, by name.
+
+    Parameters
+    ----------
+    results : Results
+        The analysis.
+    workers : int
+        Processes drawing the figures (one figure a task), >= 1.
+
+    Returns
+    -------
+    dict of str to (str, bytes)
+        Figure name -> (SVG document, PNG bytes), in the order of :func:`figure_names`.
+    """
+    names = figure_names(results)
+    with TaskPool(workers) as pool:
+        if pool.parallel:
+            jobs = [pool.submit(_figure_task, results, name) for name in names]
+            return {name: job.result() for name, job in zip(names, jobs, strict=True)}
+    return {name: _figure_task(results, name) for name in names}
 
 
 def _render(fig) -> tuple[str, bytes]:
@@ -143,16 +196,50 @@ def figure_svgs(results: Results) -> dict[str, str]:
     dict of str to str
         Figure name -> SVG document.
     """
-    return {name: _render(fig)[0] for name, fig in make_figures(results).items()}
+    return {name: svg for name, (svg, _) in render_figures(results).items()}
 
 
-def make_figures(results: Results) -> dict[str, Figure]:
+def figure_names(results: Results) -> tuple[str, ...]:
+    """The names (file stems) of the figures :func:`make_figures` draws for these results.
+
+    Parameters
+    ----------
+    results : Results
+        The analysis.
+
+    Returns
+    -------
+    tuple of str
+        Empty when the results hold no figure data.
+    """
+    data = results.figures
+    if data is None:
+        return ()
+    names = ["ince-strutt", "beam-modes", "shell-frequencies-cylinder1",
+             "shell-frequencies-cylinder2", "nodal-patterns"]
+    for name, part in (("pitch-band-chart", data.pitch_band_chart),
+                       ("beam-action-chart", data.beam_action_chart),
+                       ("campbell", data.campbell)):
+        if part is not None:
+            names.append(name)
+    if results.vehicle_regions is not None:  # the vehicle's (Omega, gamma) chart
+        names.append("vehicle-regions")
+    if results.vehicle is not None:  # a case with [vehicle] only
+        from .vehicle import vehicle_figure_names
+
+        names += vehicle_figure_names(results.vehicle)
+    return tuple(names)
+
+
+def make_figures(results: Results, *, names=None) -> dict[str, Figure]:
     """Draw the figures of an analysis (matplotlib, Agg backend) from its stored data.
 
     Parameters
     ----------
     results : Results
         The analysis; ``results.figures`` holds every curve drawn (nothing is recomputed).
+    names : iterable of str, optional
+        Draw only these (names from :func:`figure_names`); default all.
 
     Returns
     -------
@@ -160,7 +247,8 @@ def make_figures(results: Results) -> dict[str, Figure]:
         By file stem: ``ince-strutt``, ``beam-modes``, ``shell-frequencies-cylinder1``,
         ``shell-frequencies-cylinder2``, ``nodal-patterns``, ``pitch-band-chart`` and,
         when they were computed, ``beam-action-chart`` and ``campbell``; for a case with
-        ``[vehicle]`` also ``vehicle-mode-shapes`` and ``vehicle-unrolled``.
+        ``[vehicle]`` also ``vehicle-mode-shapes`` and ``vehicle-unrolled``; with the
+        vehicle's parametric regions ``vehicle-regions``.
     """
     import matplotlib
 
@@ -171,25 +259,35 @@ def make_figures(results: Results) -> dict[str, Figure]:
     from .plotting.pitch import ince_strutt_chart
     from .plotting.shell import frequency_curves
     from .plotting.stability import campbell_diagram
+    from .vehicle import vehicle_region_figures
 
     data = results.figures
     if data is None:
         raise ValueError("results.figures: no figure data (the results were not made by analyze)")
-    figs: dict[str, Figure] = {
-        "ince-strutt": ince_strutt_chart(data.ince_strutt),
-        "beam-modes": mode_shape_plot(data.beam_modes),
+    available = figure_names(results)
+    wanted = available if names is None else tuple(names)
+    for name in wanted:
+        if name not in available:
+            raise ValueError(f"names = {name!r}: not a figure of these results "
+                             f"({', '.join(available)})")
+    makers: dict[str, Callable[[], Figure]] = {
+        "ince-strutt": lambda: ince_strutt_chart(data.ince_strutt),
+        "beam-modes": lambda: mode_shape_plot(data.beam_modes),
+        "shell-frequencies-cylinder1": lambda: frequency_curves(results.shell, 1),
+        "shell-frequencies-cylinder2": lambda: frequency_curves(results.shell, 2),
+        "nodal-patterns": lambda: nodal_patterns(data.nodal_patterns),
+        "pitch-band-chart": lambda: plot_band_chart(data.pitch_band_chart),
+        "beam-action-chart": lambda: plot_band_chart(data.beam_action_chart),
+        "campbell": lambda: campbell_diagram(data.campbell),
+        "vehicle-regions": lambda: vehicle_region_figures(results)["vehicle-regions"],
     }
-    for d in (1, 2):
-        figs[f"shell-frequencies-cylinder{d}"] = frequency_curves(results.shell, d)
-    figs["nodal-patterns"] = nodal_patterns(data.nodal_patterns)
-    if data.pitch_band_chart is not None:
-        figs["pitch-band-chart"] = plot_band_chart(data.pitch_band_chart)
-    if data.beam_action_chart is not None:
-        figs["beam-action-chart"] = plot_band_chart(data.beam_action_chart)
-    if data.campbell is not None:
-        figs["campbell"] = campbell_diagram(data.campbell)
-    if results.vehicle is not None:  # a case with [vehicle] only
+    figs: dict[str, Figure] = {}
+    vehicle = [name for name in wanted if name not in makers]
+    for name in wanted:
+        if name in makers:
+            figs[name] = makers[name]()
+    if vehicle:  # a case with [vehicle] only
         from .vehicle import vehicle_figures
 
-        figs.update(vehicle_figures(results.vehicle))
-    return figs
+        figs.update(vehicle_figures(results.vehicle, names=vehicle))
+    return {name: figs[name] for name in wanted}

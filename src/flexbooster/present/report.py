@@ -8,7 +8,7 @@ well-formed XML (polyglot HTML5), which is what the tests check with a strict pa
 
 Sections, by ``id``: ``summary``, ``inputs``, ``mass-properties``, ``frequencies``,
 ``beam-modes``, ``rigid-body``, ``beam-action``, ``shell-frequencies``, ``nodal-patterns``,
-``unstable-frequencies``, ``campbell``, ``verification``, ``warnings``.
+``unstable-frequencies``, ``campbell``, ``vehicle-regions``, ``verification``, ``warnings``.
 """
 
 from __future__ import annotations
@@ -30,10 +30,25 @@ from ..memo.charts import (
     BEAM_ACTION_CHART_MAX_ORDER,
     BEAM_ACTION_CHART_RTOL,
     PITCH_BAND_CHART_LEVELS,
+    VEHICLE_CHART_GAMMA_MAX,
+    VEHICLE_CHART_LEVELS,
 )
 from ..results import Results
 from .io import write_text_atomic
-from .rows import BAND_COLUMNS, band_rows, frequency_rows, input_rows, mass_rows, severity_caption
+from .rows import (
+    BAND_COLUMNS,
+    MEMO_ROOT_HEADER,
+    REGION_HEADER,
+    band_rows,
+    frequency_rows,
+    input_rows,
+    mass_rows,
+    memo_root_rows,
+    severity_caption,
+    vehicle_region_rows,
+    vehicle_region_table,
+    vehicle_region_verdict,
+)
 
 __all__ = [
     "SECTIONS",
@@ -58,6 +73,7 @@ SECTIONS: tuple[tuple[str, str], ...] = (
     ("nodal-patterns", "Shell nodal patterns"),
     ("unstable-frequencies", "Unstable thrust frequencies"),
     ("campbell", "Campbell diagram"),
+    ("vehicle-regions", "Vehicle parametric instability regions"),
     ("verification", "Verification summary"),
     ("warnings", "Warnings"),
 )
@@ -114,6 +130,16 @@ FIGURES: dict[str, tuple[str, str]] = {
         "horizontal lines; filled red: active roots (severity_rel at or above the threshold), "
         "open: listed roots.",
     ),
+    "vehicle-regions": (
+        "vehicle-regions",
+        "Parametric instability regions of the vehicle (shell of revolution under "
+        "T = F0 (1 - gamma cos Omega t), modal damping) in the plane of the thrust frequency "
+        "Omega (Hz) and the pulsation amplitude gamma, traced from their boundaries "
+        f"(|rho| = 1) at {VEHICLE_CHART_LEVELS - 1} levels of gamma up to "
+        f"{VEHICLE_CHART_GAMMA_MAX:g} and the tip at the critical gamma; coloured by the largest "
+        "growth rate at the case's gamma (dashed; dots: the regions there), grey where the "
+        "region does not reach it.",
+    ),
 }
 
 #: Largest number of rows of the unstable-frequency table shown (all are in the CSV).
@@ -159,6 +185,13 @@ VERIFICATION: tuple[tuple[str, str, str, str], ...] = (
      "same roots, 1e-9", "test_stability::test_same_roots_as_brute_force_scan"),
     ("root residuals", "the memo's equations 7.3 re-evaluated", "1e-9 in Omega/omega_1",
      "test_stability::test_every_root_satisfies_its_equation"),
+    ("vehicle region edges", "exact Mathieu edges (scipy mathieu_a / mathieu_b), "
+     "shear-diaphragm cylinder", "1e-6 relative",
+     "test_vehicle_regions::test_sd_cylinder_regions_are_mathieu_regions"),
+    ("vehicle region growth rates", "Floquet monodromy of the full multi-mode system",
+     "1e-6 relative", "test_vehicle_regions::test_vehicle_growth_rates_against_monodromy"),
+    ("memo roots inside the regions", "hand-made table and regions with known answers",
+     "exact", "test_vehicle_pipeline::test_memo_roots_in_regions_hand_made_table"),
 )
 
 _CSS = """
@@ -341,7 +374,7 @@ def _beam_action(results: Results) -> str:
         ("Hill against monodromy exponents, largest difference", ba.hill_monodromy_difference,
          "-"),
         ("stable grid points", f"{int(np.sum(ba.stable))} of {ba.stable.size}", "-"),
-        ("Omega range searched for bands (from omega_1 / 4)",
+        ("Omega range searched for every band (below it: the pitch tongues)",
          f"{_fmt(ba.band_range[0])} .. {_fmt(ba.band_range[1])}", "rad/s"),
         ("instability bands", len(ba.bands), "-"),
     ]
@@ -451,6 +484,39 @@ def _vehicle(results: Results, svgs: Mapping[str, str] | None) -> str:
     return "".join(out)
 
 
+def _vehicle_regions(results: Results, svgs: Mapping[str, str] | None) -> str:
+    """The vehicle's parametric regions: verdict, settings, regions by growth rate, the memo
+    roots inside them, the chart."""
+    vr = results.vehicle_regions
+    if vr is None:
+        return ('<p class="note">Not computed (run without --no-vehicle; see the '
+                "warnings).</p>")
+    verdict, stable = vehicle_region_verdict(results)
+    out = [_verdict(verdict, stable), _qvu(vehicle_region_rows(results)[1:])]
+    rows = vehicle_region_table(results)
+    if rows:
+        out.append(f"<p>The regions by decreasing growth rate (first {min(len(rows), 50)} of "
+                   f"{len(rows)}; all are in vehicle-regions.csv):</p>")
+        out.append(_table(REGION_HEADER, rows[:50],
+                          (True, True, True, True, True, False, False, True, True, True,
+                           False)))
+    m = results.memo_roots_in_regions
+    if m is not None and vr.regions:
+        roots = memo_root_rows(results)
+        out.append(f"<p>Memo-table roots (memo 7.3) inside a region: {len(roots)}, "
+                   f"{int(np.sum(m.active))} with active forcing. Regions no memo root with "
+                   f"active forcing explains: {m.without_active_root.size} of {m.n_regions}"
+                   + ("" if m.severity is not None else
+                      " (the stability table has no severity column: shown as -)") + ".</p>")
+        if roots:
+            out.append(_table(MEMO_ROOT_HEADER, roots[:MAX_UNSTABLE_ROWS],
+                              (False, True, True, False, False, False, False)))
+    elif m is None and vr.regions:
+        out.append('<p class="note">The memo table was not computed: no comparison with '
+                   "its roots.</p>")
+    return "".join(out) + _figure("vehicle-regions", svgs)
+
+
 def _verification() -> str:
     return ("<p>Every number of this report is produced by code that the test suite checks "
             "against an independent computation (not against the memo, which prints no "
@@ -478,6 +544,7 @@ def _summary(results: Results) -> str:
         ("beam action", "not computed" if ba is None else ba.verdict),
         ("unstable thrust frequencies", "not computed (see the warnings)" if st is None else
          f"{len(st)} roots, {int(np.sum(st.active))} active"),
+        ("vehicle parametric instability regions", vehicle_region_verdict(results)[0]),
         ("warnings", str(len(results.warnings))),
     ]
     return _table(("result", "value"), rows, (False, False))
@@ -526,6 +593,7 @@ def render_report(results: Results, svgs: Mapping[str, str] | None = None,
         "nodal-patterns": lambda: _figure("nodal-patterns", svgs),
         "unstable-frequencies": lambda: _unstable(results),
         "campbell": lambda: _figure("campbell", svgs),
+        "vehicle-regions": lambda: _vehicle_regions(results, svgs),
         "verification": _verification,
         "warnings": lambda: _warnings(results),
         "vehicle-modes": lambda: _vehicle(results, svgs),

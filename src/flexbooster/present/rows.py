@@ -11,8 +11,22 @@ import math
 
 from ..results import Results
 
-__all__ = ["Row", "input_rows", "mass_rows", "frequency_rows", "BAND_COLUMNS", "band_rows",
-           "severity_caption"]
+__all__ = [
+    "Row",
+    "input_rows",
+    "mass_rows",
+    "frequency_rows",
+    "REGION_HEADER",
+    "MEMO_ROOT_HEADER",
+    "region_modes_words",
+    "vehicle_region_verdict",
+    "vehicle_region_rows",
+    "vehicle_region_table",
+    "memo_root_rows",
+    "BAND_COLUMNS",
+    "band_rows",
+    "severity_caption",
+]
 
 #: (quantity, value, unit): the value is a float, an int or text.
 Row = tuple[str, object, str]
@@ -118,6 +132,167 @@ def frequency_rows(results: Results) -> list[Row]:
         ("Mathieu q over the Omega grid",
          f"{float(results.q.min()):.6g} .. {float(results.q.max()):.6g}", "-"),
     ]
+
+
+#: Columns of :func:`vehicle_region_table` (summary and report).
+REGION_HEADER = ("Omega from (rad/s)", "to (rad/s)", "from (Hz)", "to (Hz)", "k", "modes",
+                 "kind", "j", "max growth (1/s)", "critical gamma", "active memo root inside")
+#: Columns of :func:`memo_root_rows`.
+MEMO_ROOT_HEADER = ("region (k, kind, j, Omega rad/s)", "root Omega (rad/s)", "family",
+                    "shell mode d, j, k, m", "forcing", "same k", "severity")
+
+
+def region_modes_words(region) -> str:
+    """The modes of a vehicle region in words, e.g. "mode 1 (radial, order 0) + mode 2
+    (axial, order 1)" (1-based loaded-mode index within its harmonic k).
+
+    Parameters
+    ----------
+    region : VehicleRegion
+        One region of :class:`flexbooster.vehicle.VehicleRegions`.
+
+    Returns
+    -------
+    str
+    """
+    return " + ".join(f"mode {m.index + 1} ({m.type}, order {m.order})" for m in region.modes)
+
+
+def _hz(x: float) -> float:
+    return x / (2.0 * math.pi)
+
+
+def vehicle_region_verdict(results: Results) -> tuple[str, bool]:
+    """One line on the vehicle's parametric regions, and whether the vehicle is stable.
+
+    Parameters
+    ----------
+    results : Results
+        The analysis.
+
+    Returns
+    -------
+    (str, bool)
+        The verdict; True when no region reaches the Omega range (or none was computed).
+    """
+    vr = results.vehicle_regions
+    if vr is None:
+        return "not computed", True
+    where = (f"Omega in [{vr.omega_min:.6g}, {vr.omega_max:.6g}] rad/s at gamma = "
+             f"{vr.gamma:g}, damping ratio {vr.damping_ratio:g}")
+    if not vr.regions:
+        return f"stable: no parametric instability region reaches {where}", True
+    worst = max(vr.regions, key=lambda r: r.growth_rate_max)
+    n = len(vr.regions)
+    what = f"{n} parametric instability regions reach" if n > 1 else \
+        "1 parametric instability region reaches"
+    return (f"unstable: {what} {where}; worst growth rate {worst.growth_rate_max:.4g} 1/s "
+            f"(k = {worst.k}, {worst.kind}, Omega {worst.omega_lo:.6g}.."
+            f"{worst.omega_hi:.6g} rad/s)"), False
+
+
+def vehicle_region_rows(results: Results) -> list[Row]:
+    """Settings and verdict of the vehicle's parametric instability regions.
+
+    Parameters
+    ----------
+    results : Results
+        The analysis (``results.vehicle_regions`` not None).
+
+    Returns
+    -------
+    list of (str, object, str)
+    """
+    vr = results.vehicle_regions
+    verdict, _ = vehicle_region_verdict(results)
+    rows: list[Row] = [("verdict", verdict, "")]
+    if vr is None:
+        return rows
+    ks = [h.k for h in vr.harmonics]
+    n_modes = sorted({h.omega_unloaded.size for h in vr.harmonics})
+    rows += [
+        ("modal damping ratio zeta of the loaded shell modes (vehicle.damping_ratio)",
+         vr.damping_ratio, "-"),
+        ("harmonics k / modes per k (vehicle.n_modes)",
+         f"{min(ks)}..{max(ks)} / {', '.join(str(n) for n in n_modes)}" if ks else "none", "-"),
+        ("thrust load distribution", "uniform compression (forward end supported)"
+         if vr.supported_forward_end else "inertia relief (free-free vehicle)", "-"),
+        ("steady thrust F0 / pulsation amplitude gamma", f"{vr.F0:.6g} / {vr.gamma:g}", "N / -"),
+        ("regions in the Omega range", len(vr.regions), "-"),
+    ]
+    if vr.regions:
+        worst = max(vr.regions, key=lambda r: r.growth_rate_max)
+        rows.append(("largest growth rate", worst.growth_rate_max, "1/s"))
+    if vr.curves:
+        tip = min(vr.curves, key=lambda c: float(c.gamma[0]))
+        rows.append((f"lowest critical gamma of the charted regions (k = {tip.k}, {tip.kind})",
+                     float(tip.gamma[0]), "-"))
+    m = results.memo_roots_in_regions
+    if m is not None and vr.regions:
+        rows.append(("regions holding a memo-table root with active forcing",
+                     f"{m.n_regions - m.without_active_root.size} of {m.n_regions}", "-"))
+    return rows
+
+
+def vehicle_region_table(results: Results) -> list[tuple]:
+    """The vehicle regions by decreasing growth rate, one row per region (:data:`REGION_HEADER`).
+
+    Parameters
+    ----------
+    results : Results
+        The analysis.
+
+    Returns
+    -------
+    list of tuple
+        Omega range (rad/s, Hz), k, modes in words, kind, j, growth rate (1/s), critical
+        gamma, and whether a memo-table root with active forcing lies inside ("no": no memo
+        resonance explains the region; "-": not compared).
+    """
+    vr = results.vehicle_regions
+    if vr is None:
+        return []
+    m = results.memo_roots_in_regions
+    unexplained = set() if m is None else {int(i) for i in m.without_active_root}
+    order = sorted(range(len(vr.regions)),
+                   key=lambda i: (-vr.regions[i].growth_rate_max, vr.regions[i].omega_lo))
+    rows = []
+    for i in order:
+        r = vr.regions[i]
+        memo = "-" if m is None else ("no" if i in unexplained else "yes")
+        rows.append((r.omega_lo, r.omega_hi, _hz(r.omega_lo), _hz(r.omega_hi), r.k,
+                     region_modes_words(r), r.kind, r.order, r.growth_rate_max,
+                     r.critical_gamma, memo))
+    return rows
+
+
+def memo_root_rows(results: Results) -> list[tuple]:
+    """The memo-table roots inside the vehicle regions, one row per pair
+    (:data:`MEMO_ROOT_HEADER`).
+
+    Parameters
+    ----------
+    results : Results
+        The analysis.
+
+    Returns
+    -------
+    list of tuple
+        Region, root Omega (rad/s), family, shell mode, forcing, same k, severity ("-" where
+        the stability table has no severity).
+    """
+    m, vr = results.memo_roots_in_regions, results.vehicle_regions
+    if m is None or vr is None:
+        return []
+    out = []
+    for n in range(len(m)):
+        r = vr.regions[int(m.region[n])]
+        out.append((f"k = {r.k}, {r.kind}, j = {r.order}, {r.omega_lo:.6g}..{r.omega_hi:.6g}",
+                    float(m.Omega[n]), int(m.family[n]),
+                    f"{m.cylinder[n]}, {m.j[n]}, {m.k[n]}, {m.branch[n]}",
+                    "active" if m.active[n] else "listed", "yes" if m.same_k[n] else "no",
+                    "-" if m.severity is None else str(m.severity[n])))
+    return out
 
 
 #: Columns of the table of the most severe resonance bands (summary and report).

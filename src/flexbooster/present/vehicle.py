@@ -2,6 +2,9 @@
 
 A thin layer over a stored :class:`~flexbooster.shell_of_revolution.survey.VehicleSurvey`
 (``flexbooster modes``; ``Results.vehicle`` of ``flexbooster run``); it computes nothing.
+Also the vehicle's parametric instability regions (``Results.vehicle_regions``, issue 15):
+``vehicle-regions.csv`` (:func:`vehicle_region_columns`), the summary section
+(:func:`print_vehicle_regions`) and the chart (:func:`vehicle_region_figures`).
 """
 
 from __future__ import annotations
@@ -14,14 +17,30 @@ from rich.console import Console
 from rich.markup import escape
 from rich.table import Table
 
+from ..results import Results
 from ..shell_of_revolution.survey import VehicleSurvey
+from ..vehicle import VehicleRegions
 from .io import write_csv_atomic, write_json_atomic
+from .rows import (
+    MEMO_ROOT_HEADER,
+    REGION_HEADER,
+    memo_root_rows,
+    region_modes_words,
+    vehicle_region_rows,
+    vehicle_region_table,
+)
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
 __all__ = [
     "VEHICLE_FIGURES",
+    "vehicle_figure_names",
+    "VEHICLE_REGION_CSV_COLUMNS",
+    "SUMMARY_REGION_ROWS",
+    "vehicle_region_columns",
+    "print_vehicle_regions",
+    "vehicle_region_figures",
     "print_vehicle_modes",
     "print_vehicle_summary",
     "vehicle_figures",
@@ -105,30 +124,53 @@ def print_vehicle_summary(survey: VehicleSurvey, console: Console) -> None:
     console.print(table)
 
 
-def vehicle_figures(survey: VehicleSurvey) -> dict[str, Figure]:
+def vehicle_figure_names(survey: VehicleSurvey) -> tuple[str, ...]:
+    """The names of the figures :func:`vehicle_figures` draws for these modes.
+
+    Parameters
+    ----------
+    survey : VehicleSurvey
+        The stored vehicle modes.
+
+    Returns
+    -------
+    tuple of str
+        ``vehicle-mode-shapes`` and, when modes were selected for it, ``vehicle-unrolled``;
+        empty without stored views.
+    """
+    if survey.views is None:
+        return ()
+    if survey.views.unrolled_index.size:
+        return ("vehicle-mode-shapes", "vehicle-unrolled")
+    return ("vehicle-mode-shapes",)
+
+
+def vehicle_figures(survey: VehicleSurvey, *, names=None) -> dict[str, Figure]:
     """The figures of the vehicle modes, drawn from the stored views.
 
     Parameters
     ----------
     survey : VehicleSurvey
         The stored vehicle modes; no figure without ``views``.
+    names : iterable of str, optional
+        Only these of :func:`vehicle_figure_names` (default all).
 
     Returns
     -------
     dict of str to matplotlib.figure.Figure
         ``vehicle-mode-shapes`` and, when modes were selected for it, ``vehicle-unrolled``.
     """
-    if survey.views is None:
+    available = vehicle_figure_names(survey)
+    wanted = [n for n in (available if names is None else names) if n in available]
+    if not wanted:
         return {}
     import matplotlib
 
     matplotlib.use("Agg")
     from .plotting.vehicle import meridian_shapes, unrolled_modes
 
-    figs = {"vehicle-mode-shapes": meridian_shapes(survey.views)}
-    if survey.views.unrolled_index.size:
-        figs["vehicle-unrolled"] = unrolled_modes(survey.views)
-    return figs
+    draw = {"vehicle-mode-shapes": meridian_shapes, "vehicle-unrolled": unrolled_modes}
+    return {name: draw[name](survey.views) for name in wanted}
 
 
 def write_vehicle_files(survey: VehicleSurvey, folder: str | Path, *,
@@ -158,3 +200,127 @@ def write_vehicle_files(survey: VehicleSurvey, folder: str | Path, *,
         for name, fig in vehicle_figures(survey).items():
             written += save_figure(fig, folder / name)
     return written
+
+
+#: Columns of ``vehicle-regions.csv`` (one region a row, sorted by omega_lo then k).
+VEHICLE_REGION_CSV_COLUMNS = (
+    "k", "kind", "order", "modes", "mode_indices", "Omega_lo_rad_s", "Omega_hi_rad_s",
+    "Omega_lo_hz", "Omega_hi_hz", "width_rad_s", "growth_rate_max", "omega_at_max_rad_s",
+    "omega_center_rad_s", "critical_gamma", "clipped",
+)
+#: Regions listed in the terminal summary (all are in vehicle-regions.csv).
+SUMMARY_REGION_ROWS = 15
+
+
+def vehicle_region_columns(regions: VehicleRegions) -> dict[str, list]:
+    """The regions by columns (:data:`VEHICLE_REGION_CSV_COLUMNS`) for ``vehicle-regions.csv``.
+
+    Parameters
+    ----------
+    regions : VehicleRegions
+        The stored regions (rad/s).
+
+    Returns
+    -------
+    dict of str to list
+        ``growth_rate_max`` in 1/s, ``critical_gamma`` dimensionless, ``modes`` in words,
+        ``mode_indices`` the 0-based loaded-mode indices joined by "+".
+    """
+    two_pi = 2.0 * np.pi
+    rs = regions.regions
+    cols = {
+        "k": [int(r.k) for r in rs],
+        "kind": [str(r.kind) for r in rs],
+        "order": [int(r.order) for r in rs],
+        "modes": [region_modes_words(r) for r in rs],
+        "mode_indices": ["+".join(str(m.index) for m in r.modes) for r in rs],
+        "Omega_lo_rad_s": [float(r.omega_lo) for r in rs],
+        "Omega_hi_rad_s": [float(r.omega_hi) for r in rs],
+        "Omega_lo_hz": [float(r.omega_lo) / two_pi for r in rs],
+        "Omega_hi_hz": [float(r.omega_hi) / two_pi for r in rs],
+        "width_rad_s": [float(r.width) for r in rs],
+        "growth_rate_max": [float(r.growth_rate_max) for r in rs],
+        "omega_at_max_rad_s": [float(r.omega_at_max) for r in rs],
+        "omega_center_rad_s": [float(r.omega_center) for r in rs],
+        "critical_gamma": [float(r.critical_gamma) for r in rs],
+        "clipped": [bool(r.clipped) for r in rs],
+    }
+    return {name: cols[name] for name in VEHICLE_REGION_CSV_COLUMNS}
+
+
+def print_vehicle_regions(results: Results, console: Console) -> None:
+    """Print the section "Vehicle parametric instability regions" (``flexbooster run``).
+
+    Parameters
+    ----------
+    results : Results
+        The analysis (nothing is printed but "not computed" without regions).
+    console : rich.console.Console
+        Where to print.
+    """
+    if results.vehicle_regions is None:
+        console.print("Vehicle parametric instability regions: not computed.")
+        return
+    table = Table(title="Vehicle parametric instability regions (shell of revolution, "
+                  "issue 15; all in vehicle-regions.csv)", title_justify="left",
+                  header_style="bold")
+    for col in ("quantity", "value", "unit"):
+        table.add_column(col, justify="right" if col == "value" else "left")
+    for q, v, u in vehicle_region_rows(results):
+        table.add_row(escape(q), escape(v if isinstance(v, str) else _value(v)), escape(u))
+    console.print(table)
+    rows = vehicle_region_table(results)
+    if rows:
+        regions = Table(title=f"Regions by growth rate (first {min(len(rows), SUMMARY_REGION_ROWS)}"
+                        f" of {len(rows)})", title_justify="left", header_style="bold")
+        for col in REGION_HEADER:
+            regions.add_column(col, justify="left" if col in ("modes", "kind") else "right")
+        for row in rows[:SUMMARY_REGION_ROWS]:
+            regions.add_row(*(escape(_value(v)) for v in row))
+        console.print(regions)
+    roots = memo_root_rows(results)
+    m = results.memo_roots_in_regions
+    if m is not None and results.vehicle_regions.regions:
+        console.print(escape(f"Memo-table roots inside a region: {len(roots)} "
+                             f"({int(np.sum(m.active))} with active forcing); regions no "
+                             f"active memo root explains: {m.without_active_root.size} of "
+                             f"{m.n_regions}."))
+        if roots:
+            t = Table(title=f"Memo roots inside the regions (first {min(len(roots), 15)})",
+                      title_justify="left", header_style="bold")
+            for col in MEMO_ROOT_HEADER:
+                t.add_column(col)
+            for row in roots[:15]:
+                t.add_row(*(escape(_value(v)) for v in row))
+            console.print(t)
+
+
+def _value(v: object) -> str:
+    if isinstance(v, str):
+        return v
+    if isinstance(v, bool | np.bool_ | int | np.integer):
+        return str(v)
+    return _g(float(v))
+
+
+def vehicle_region_figures(results: Results) -> dict[str, Figure]:
+    """The vehicle region chart, drawn from the stored regions and curves.
+
+    Parameters
+    ----------
+    results : Results
+        The analysis; no figure without ``results.vehicle_regions``.
+
+    Returns
+    -------
+    dict of str to matplotlib.figure.Figure
+        ``vehicle-regions`` (the (Omega, gamma) chart).
+    """
+    if results.vehicle_regions is None:
+        return {}
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from .plotting.vehicle_regions import vehicle_region_chart
+
+    return {"vehicle-regions": vehicle_region_chart(results.vehicle_regions)}

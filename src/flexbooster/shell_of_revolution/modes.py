@@ -168,6 +168,10 @@ class ModalSystem:
         diag(omega^2) (1/s^2) and geometric stiffness of the thrust F0 (1/s^2).
     F0 : float
         Thrust of the prestress (N).
+    aft_axial : ndarray, shape (n,), optional
+        Axial displacement u_x at the aft edge of each (mass-normalised) basis mode (m per
+        sqrt(kg)): the generalised force of an axial ring load F at the aft edge is
+        F * aft_axial (k = 0; for k >= 1 a uniform axial load does no work on the mode).
     """
 
     k: int
@@ -176,6 +180,7 @@ class ModalSystem:
     stiffness: np.ndarray
     geometric: np.ndarray
     F0: float
+    aft_axial: np.ndarray | None = None
 
     def to_dict(self) -> dict:
         """JSON-ready mapping."""
@@ -592,8 +597,11 @@ def modal_system(
     if vals.size < n_modes:
         raise ValueError(f"n_modes = {n_modes}: the mesh has only {vals.size} modes for k = {k}")
     kg = vecs.T @ h.G @ vecs
+    # the vehicle's end nodes carry global-frame DOFs (a = u_x, v, b = u_r, chi)
+    aft = h.dmap.expand(vecs.T)[:, mesh.end_nodes[0]]
     return ModalSystem(k=k, omega=np.sqrt(np.maximum(vals, 0.0)), mass=vecs.T @ h.M @ vecs,
-                       stiffness=vecs.T @ h.K @ vecs, geometric=0.5 * (kg + kg.T), F0=F0)
+                       stiffness=vecs.T @ h.K @ vecs, geometric=0.5 * (kg + kg.T), F0=F0,
+                       aft_axial=aft)
 
 
 def buckling_load(

@@ -138,14 +138,18 @@ def point_scalars(data: Mapping[str, Any]) -> dict[str, float]:
 
 
 def _analysis_options(analyze: Callable, *, beam_action: bool, stability: bool) -> dict:
-    """Keyword arguments of ``analyze`` for a sweep point: the stages, and no figure data.
+    """Keyword arguments of ``analyze`` for a sweep point: the stages, no figure data and no
+    vehicle regions (issue 15; not stored by a sweep).
 
     ``figures=False`` where ``analyze`` takes it (the figure data, e.g. the beam-action
     (Omega, gamma) chart, cost more than the point's numbers and are not stored by a sweep).
     """
     options = {"beam_action": beam_action, "stability": stability}
-    if "figures" in inspect.signature(analyze).parameters:
+    parameters = inspect.signature(analyze).parameters
+    if "figures" in parameters:
         options["figures"] = False
+    if "vehicle" in parameters:  # the vehicle's parametric regions: not a sweep variable yet
+        options["vehicle"] = False
     return options
 
 

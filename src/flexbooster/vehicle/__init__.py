@@ -3,10 +3,14 @@
 :func:`vehicle_regions` builds, per circumferential harmonic k >= 2, the periodic modal system
 q'' + C q' + (A + B cos Omega t) q = 0 of the pre-stressed shell of revolution under
 T(t) = F0 (1 - gamma cos Omega t) and returns its parametric instability regions in Omega
-(:mod:`.regions`).  Numerical core: numpy, scipy and flexbooster core packages only.  Theory:
+(:mod:`.regions`), and for k = 0 the axial modes forced directly by the pulsation
+(:mod:`.axial`); for k = 1 the bending system with the rigid modes and the follower thrust
+(:mod:`.bending`).  Numerical core: numpy, scipy and flexbooster core packages only.  Theory:
 ``docs/theory/vehicle-regions.md``.
 """
 
+from .axial import AxialResonance, ForcedAxial, forced_axial
+from .bending import BendingSystem, bending_regions, bending_system, follower_flutter_thrust
 from .regions import (
     HarmonicSystem,
     RegionCurve,
@@ -18,11 +22,18 @@ from .regions import (
 )
 
 __all__ = [
+    "AxialResonance",
+    "BendingSystem",
+    "ForcedAxial",
     "HarmonicSystem",
     "RegionCurve",
     "RegionMode",
     "VehicleRegion",
     "VehicleRegions",
+    "bending_regions",
+    "bending_system",
+    "follower_flutter_thrust",
+    "forced_axial",
     "harmonic_system",
     "vehicle_regions",
 ]

@@ -43,6 +43,7 @@ from ..shell_of_revolution import (
     modal_system,
     vehicle_modes,
 )
+from .axial import ForcedAxial, forced_axial
 
 __all__ = [
     "RegionMode",
@@ -199,7 +200,9 @@ class VehicleRegion:
     k : int
         Circumferential wave number (dimensionless).
     kind : str
-        "simple" (Omega near 2 omega_i / j), "sum" ((omega_i + omega_k) / j) or "difference".
+        "simple" (Omega near 2 omega_i / j), "sum" ((omega_i + omega_k) / j) or "difference";
+        "steady" (k = 1 only, :func:`.bending.bending_regions`: the steady system itself is
+        not stable, e.g. the neutral rigid pitch without gimbal gain).
     order : int
         j of the resonance centre (dimensionless; not the meridian order of the modes).
     modes : tuple of RegionMode
@@ -312,6 +315,14 @@ class VehicleRegions:
         Omega range (rad/s).
     supported_forward_end : bool
         Thrust reacted at the nose (uniform compression) instead of inertia relief.
+    forced_axial : ForcedAxial or None
+        k = 0: the axial modes forced directly by the thrust pulsation, resonances
+        Omega = omega_n with their amplitude per unit gamma F0 (:mod:`.axial`; the memo's
+        family 3); None when not asked for.
+    certificates : tuple of StabilityCertificate
+        Per harmonic (as ``harmonics``): the all-Omega stability bound of
+        :func:`flexbooster.floquet.stability_certificate` at gamma (never certified without
+        damping).
     """
 
     regions: tuple
@@ -323,6 +334,8 @@ class VehicleRegions:
     omega_min: float
     omega_max: float
     supported_forward_end: bool
+    forced_axial: ForcedAxial | None = None
+    certificates: tuple = ()
 
     def harmonic(self, k: int) -> HarmonicSystem:
         """The system of harmonic k.
@@ -354,7 +367,11 @@ class VehicleRegions:
                                "mode_order": [int(v) for v in h.mode_order],
                                "mode_type": [str(v) for v in h.mode_type]}
                               for h in self.harmonics],
-                "curves": [c.to_dict() for c in self.curves]}
+                "curves": [c.to_dict() for c in self.curves],
+                "forced_axial": (None if self.forced_axial is None
+                                 else self.forced_axial.to_dict()),
+                "certificates": [dict(c.to_dict(), k=int(h.k)) for h, c in
+                                 zip(self.harmonics, self.certificates, strict=True)]}
 
 
 # ----------------------------------------------------------------------------- checks
@@ -457,8 +474,16 @@ def harmonic_system(
 # ----------------------------------------------------------------------------- regions
 
 
-def _floquet_options(rtol, step_phase, max_order) -> dict:
+def _floquet_options(rtol, step_phase, max_order, damping_margin) -> dict:
     opts = {"rtol": finite("rtol", rtol), "step_phase": positive("step_phase", step_phase)}
+    if damping_margin is not None:
+        if isinstance(damping_margin, bool):
+            raise ValueError(f"damping_margin = {damping_margin!r}: must be None or a number "
+                             ">= 1")
+        damping_margin = finite("damping_margin", damping_margin)
+        if damping_margin < 1.0:
+            raise ValueError(f"damping_margin = {damping_margin!r}: must be None or >= 1")
+    opts["damping_margin"] = damping_margin
     if max_order is not None:
         opts["max_order"] = count("max_order", max_order, 1, 10_000)
     return opts
@@ -470,7 +495,8 @@ def vehicle_regions(
     supported_forward_end: bool = False, elements_per_segment: int | tuple | None = None,
     order: int = DEFAULT_ORDER, boundaries: bool = False, gamma_max: float = 0.5,
     n_gamma: int = 11, rtol: float = 1e-9, step_phase: float = 0.12,
-    max_order: int | None = None,
+    max_order: int | None = None, damping_margin: float | None = floquet.DAMPING_MARGIN,
+    axial: bool = True,
 ) -> VehicleRegions:
     """Parametric instability regions of every harmonic k_min..k_max in [omega_min, omega_max].
 
@@ -505,6 +531,15 @@ def vehicle_regions(
         Boundary tolerance (dimensionless, relative to the centre), integration step phase
         (dimensionless) and largest resonance order j (None: by the width estimate) of
         :func:`flexbooster.floquet.instability_regions`.
+    damping_margin : float or None
+        Damping filter of :func:`flexbooster.floquet.instability_regions` (dimensionless,
+        >= 1; default 4): harmonics certified stable at every Omega by
+        :func:`flexbooster.floquet.stability_certificate` are not searched, and candidates
+        whose first-order growth bound x margin is below their modes' decay rate are not
+        examined.  None: every candidate is examined (the unfiltered search).
+    axial : bool
+        Also compute the k = 0 forced axial resonances (:func:`.axial.forced_axial`, same
+        n_modes, damping and mesh) into ``forced_axial``.
 
     Returns
     -------
@@ -536,8 +571,10 @@ def vehicle_regions(
         if gmax >= 1.0:
             raise ValueError(f"gamma_max = {gamma_max!r}: must be in (0, 1)")
         n_gamma = count("n_gamma", n_gamma, 2, 1000)
-    opts = _floquet_options(rtol, step_phase, max_order)
-    harmonics, regions, curves = [], [], []
+    opts = _floquet_options(rtol, step_phase, max_order, damping_margin)
+    if not isinstance(axial, bool | np.bool_):
+        raise ValueError(f"axial = {axial!r}: must be a bool")
+    harmonics, regions, curves, certs = [], [], [], []
     for k in range(k_min, k_max + 1):  # a handful of harmonics
         h = harmonic_system(vehicle, k, F0=F0, n_modes=n_modes, damping_ratio=zeta,
                             supported_forward_end=supported_forward_end,
@@ -545,11 +582,13 @@ def vehicle_regions(
         harmonics.append(h)
         M, C, A, B = h.matrices(gamma)
         Cf = C if zeta > 0.0 else None
+        certs.append(floquet.stability_certificate(M, Cf, A, B))  # none without damping
         found = floquet.instability_regions(M, Cf, A, B, lo, hi, **opts)
         crit = {}
         if found and zeta > 0.0:  # Bolotin sec. 6: the amplitude where the edges meet
             crit = {(c.kind, c.modes, c.order): c.gamma_cr for c in floquet.critical_amplitude(
-                M, Cf, A, h.excitation, gamma_max=gamma, omega_min=lo, omega_max=hi, **opts)}
+                M, Cf, A, h.excitation, gamma_max=gamma, omega_min=lo, omega_max=hi,
+                regions=found, **opts)}
         for r in found:
             key = (r.kind, r.modes, r.order)
             if zeta > 0.0 and key not in crit:
@@ -568,7 +607,13 @@ def vehicle_regions(
                                           gamma=c.gamma, omega_lo=c.omega_lo,
                                           omega_hi=c.omega_hi))
     regions.sort(key=lambda r: (r.omega_lo, r.k))
+    fa = None
+    if axial:
+        fa = forced_axial(vehicle, F0=F0, omega_min=lo, omega_max=hi, n_modes=n_modes,
+                          damping_ratio=zeta, supported_forward_end=supported_forward_end,
+                          elements_per_segment=elements_per_segment, order=order)
     return VehicleRegions(regions=tuple(regions), harmonics=tuple(harmonics),
                           curves=tuple(curves), F0=F0, gamma=gamma, damping_ratio=zeta,
                           omega_min=lo, omega_max=hi,
-                          supported_forward_end=bool(supported_forward_end))
+                          supported_forward_end=bool(supported_forward_end),
+                          forced_axial=fa, certificates=tuple(certs))

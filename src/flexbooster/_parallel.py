@@ -1,0 +1,166 @@
+"""Independent pieces of work in worker processes: the pipeline's and the outputs' parallelism.
+
+The costly stages of a run are independent once the derived model exists (the beam-action
+exponents, the beam-action chart's boundary tracing, the vehicle regions) and so are the
+figures once the results exist: matplotlib draws one figure on one core, and the numerical
+stages are loops of small batched numpy operations that hold the GIL between them, so
+threads do not help; processes do.  :class:`TaskPool` runs functions in ``fork``-ed worker
+processes (the parent's imports and data are inherited, nothing is re-imported) and falls back
+to running them in the calling process when one worker is asked for, when the platform has no
+``fork``, or inside a daemonic process (a Dask or multiprocessing worker may not have
+children).  Each task is a pure function of its arguments, so the numbers are the same either
+way, bit for bit (a test checks it).
+
+Interrupts: the workers ignore SIGINT (Ctrl-C reaches the whole process group; the parent
+alone decides) and are terminated when the ``with`` block is left by an exception, so Ctrl-C or
+SIGTERM in the parent stops them at once and leaves no orphan.
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+import os
+import signal
+from collections.abc import Callable
+from typing import Any
+
+__all__ = ["TaskPool", "default_workers", "MAX_WORKERS"]
+
+#: Most worker processes a pool starts (the pipeline has at most a few independent stages).
+MAX_WORKERS = 8
+
+
+def default_workers() -> int:
+    """Worker processes worth starting here: the usable CPUs, at most :data:`MAX_WORKERS`.
+
+    Returns
+    -------
+    int
+        ``len(os.sched_getaffinity(0))`` where available (the CPUs this process may run on,
+        e.g. under ``taskset`` or a container's CPU set), else ``os.cpu_count()``; at least 1.
+    """
+    try:
+        n = len(os.sched_getaffinity(0))
+    except (AttributeError, OSError):  # not Linux
+        n = os.cpu_count() or 1
+    return max(1, min(n, MAX_WORKERS))
+
+
+def _usable(workers: int) -> bool:
+    return (workers > 1 and "fork" in multiprocessing.get_all_start_methods()
+            and not multiprocessing.current_process().daemon)
+
+
+def _ignore_interrupts() -> None:  # worker initialiser: the parent handles Ctrl-C
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+
+
+class _Done:
+    """A task run in the calling process: its value (or its exception) when asked for."""
+
+    def __init__(self, fn: Callable[..., Any], args: tuple, kwargs: dict):
+        self._fn, self._args, self._kwargs = fn, args, kwargs
+
+    def result(self) -> Any:
+        fn, self._fn = self._fn, None
+        if fn is not None:  # run on first demand, once
+            self._value = fn(*self._args, **self._kwargs)
+        return self._value
+
+
+class _Async:
+    def __init__(self, handle):
+        self._handle = handle
+
+    def result(self) -> Any:
+        return self._handle.get()
+
+
+class TaskPool:
+    """Run independent functions in worker processes (a context manager).
+
+    Parameters
+    ----------
+    workers : int
+        Worker processes (dimensionless), >= 1; 1 runs every task in the calling process,
+        when its result is asked for.
+
+    Examples
+    --------
+    >>> from flexbooster._parallel import TaskPool
+    >>> with TaskPool(2) as pool:
+    ...     job = pool.submit(sum, [1, 2, 3])
+    ...     job.result()
+    6
+
+    Notes
+    -----
+    Functions and arguments must be picklable (module-level functions; dataclasses of numpy
+    arrays); results come back by pickle.  The pool is created on the first :meth:`submit`
+    (a ``with`` block with nothing submitted costs nothing).
+    """
+
+    def __init__(self, workers: int):
+        if isinstance(workers, bool) or not isinstance(workers, int) or workers < 1:
+            raise ValueError(f"workers = {workers!r}: must be an integer >= 1")
+        self.workers = min(int(workers), MAX_WORKERS)
+        self._pool = None
+
+    @property
+    def parallel(self) -> bool:
+        """Whether tasks run in worker processes (False: in the calling process)."""
+        return _usable(self.workers)
+
+    def submit(self, fn: Callable[..., Any], /, *args: Any, **kwargs: Any):
+        """Start ``fn(*args, **kwargs)``; returns an object whose ``result()`` waits for it.
+
+        Parameters
+        ----------
+        fn : callable
+            A module-level (picklable) function.
+        *args, **kwargs
+            Its arguments.
+
+        Returns
+        -------
+        object
+            With a ``result()`` method: the return value, or the task's exception raised.
+        """
+        if not self.parallel:
+            return _Done(fn, args, kwargs)
+        if self._pool is None:
+            self._pool = multiprocessing.get_context("fork").Pool(
+                self.workers, initializer=_ignore_interrupts)
+        return _Async(self._pool.apply_async(fn, args, kwargs))
+
+    def map(self, fn: Callable[[Any], Any], items) -> list:
+        """``[fn(x) for x in items]``, the items spread over the workers (in order).
+
+        Parameters
+        ----------
+        fn : callable
+            A module-level (picklable) function of one argument.
+        items : iterable
+            Its arguments.
+
+        Returns
+        -------
+        list
+            The results, in the order of ``items``.
+        """
+        jobs = [self.submit(fn, x) for x in items]
+        return [j.result() for j in jobs]
+
+    def __enter__(self) -> TaskPool:
+        return self
+
+    def __exit__(self, exc_type, exc, tb) -> None:
+        pool, self._pool = self._pool, None
+        if pool is None:
+            return
+        if exc_type is None:
+            pool.close()
+        else:  # an error or an interrupt in the parent: stop the workers now
+            pool.terminate()
+        pool.join()

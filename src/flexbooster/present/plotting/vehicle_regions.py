@@ -1,0 +1,92 @@
+"""The vehicle's Ince-Strutt chart: parametric instability regions in the (Omega, gamma) plane.
+
+Draws a stored :class:`~flexbooster.vehicle.VehicleRegions` (its boundary curves
+:class:`~flexbooster.vehicle.RegionCurve` and its regions at the case's gamma); it computes
+nothing.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.axes import Axes
+from matplotlib.cm import ScalarMappable
+from matplotlib.colors import Normalize
+from matplotlib.figure import Figure
+
+from ...memo.charts import VEHICLE_CHART_GAMMA_MAX
+from ...vehicle import VehicleRegions
+from .bands import _axes
+
+__all__ = ["vehicle_region_chart"]
+
+_TO_HZ = 1.0 / (2.0 * np.pi)
+
+
+def _key(k: int, kind: str, order: int, modes: tuple) -> tuple:
+    return int(k), str(kind), int(order), tuple(int(m) for m in modes)
+
+
+def vehicle_region_chart(regions: VehicleRegions, ax: Axes | None = None) -> Figure:
+    """Shade each region between its boundary curves, Omega in Hz against gamma.
+
+    Parameters
+    ----------
+    regions : VehicleRegions
+        The stored regions (edges in rad/s, drawn in Hz); the curves are those traced by the
+        pipeline (``boundaries=True``), empty when no region exists up to the chart's gamma.
+    ax : matplotlib.axes.Axes, optional
+        Axes to draw on; a new figure is made when None.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Regions shaded between omega_lo(gamma) and omega_hi(gamma) (the stored levels joined
+        by straight lines from the tip at the critical gamma), coloured by the largest growth
+        rate (1/s) at the case's gamma, grey where the region does not reach that gamma; the
+        case's gamma as a dashed line with the regions found there marked at their largest
+        growth rate; logarithmic Omega axis over the case's range.
+
+    References
+    ----------
+    Bolotin (1964), ch. 1 (regions in the (Omega, mu) plane), sec. 6 (damping).
+    """
+    fig, ax = _axes(ax, (6.4, 4.8))
+    growth = {_key(r.k, r.kind, r.order, tuple(m.index for m in r.modes)): r.growth_rate_max
+              for r in regions.regions}
+    g_max = max(growth.values(), default=0.0)
+    norm = Normalize(0.0, g_max if g_max > 0.0 else 1.0)
+    cmap = ScalarMappable(norm=norm, cmap="YlOrRd")
+    grey_done = False
+    for c in regions.curves:
+        x = np.concatenate([c.omega_lo, c.omega_hi[::-1]]) * _TO_HZ
+        y = np.concatenate([c.gamma, c.gamma[::-1]])
+        rate = growth.get(_key(c.k, c.kind, c.order, c.modes))
+        if rate is None:  # the region does not reach the case's gamma
+            ax.fill(x, y, color="0.7", alpha=0.5, lw=0.5, ec="0.45",
+                    label=None if grey_done else "stable at the case's gamma")
+            grey_done = True
+        else:
+            ax.fill(x, y, color=cmap.to_rgba(rate), alpha=0.85, lw=0.5, ec="C3")
+    gamma = float(regions.gamma)
+    ax.axhline(gamma, color="C0", ls="--", lw=1.0, label=f"case's gamma = {gamma:g}")
+    if regions.regions:
+        xs = np.array([r.omega_at_max for r in regions.regions]) * _TO_HZ
+        rates = np.array([r.growth_rate_max for r in regions.regions])
+        ax.scatter(xs, np.full(xs.size, gamma), c=cmap.to_rgba(rates), s=22, ec="k", lw=0.4,
+                   zorder=3, label="regions at the case's gamma")
+        fig.colorbar(cmap, ax=ax, label="largest growth rate at the case's gamma (1/s)")
+    if not regions.curves and not regions.regions:
+        ax.text(0.5, 0.5, f"no instability region in the range up to gamma = "
+                f"{VEHICLE_CHART_GAMMA_MAX:g}\n(damping ratio {regions.damping_ratio:g})",
+                transform=ax.transAxes, ha="center", va="center", fontsize=9)
+    ks = [h.k for h in regions.harmonics]
+    ax.set_xscale("log")
+    ax.set_xlim(regions.omega_min * _TO_HZ, regions.omega_max * _TO_HZ)
+    ax.set_ylim(0.0, max(VEHICLE_CHART_GAMMA_MAX, 1.1 * gamma))
+    ax.set_xlabel("thrust frequency Omega (Hz)")
+    ax.set_ylabel("gamma (pulsation amplitude)")
+    ax.set_title("Vehicle parametric instability regions"
+                 + (f" (k = {min(ks)}..{max(ks)}, damping ratio {regions.damping_ratio:g})"
+                    if ks else ""), fontsize=10)
+    ax.legend(loc="upper left", fontsize=8)
+    return fig

@@ -1,0 +1,96 @@
+"""Worker processes (flexbooster._parallel): same results as in-process, clean interrupts.
+
+Tier 3 (invariants): an analysis and its files with workers = 2 equal those with workers = 1
+bit for bit (the tasks are pure functions; the reference is the in-process run).
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+import os
+import time
+
+import pytest
+
+from flexbooster import analysis
+from flexbooster._parallel import MAX_WORKERS, TaskPool, default_workers
+from flexbooster.case import default_case, load_case
+from flexbooster.present.outputs import write_outputs
+
+PARALLEL = TaskPool(2).parallel  # False on a platform without fork
+
+
+def _pid(_: object = None) -> int:
+    return os.getpid()
+
+
+def _fail(message: str) -> None:
+    raise ZeroDivisionError(message)
+
+
+def test_default_workers_is_between_one_and_the_cap():
+    assert 1 <= default_workers() <= MAX_WORKERS
+
+
+@pytest.mark.parametrize("bad", [0, -1, 1.5, True, "2"])
+def test_bad_worker_counts_are_refused(bad):
+    with pytest.raises(ValueError, match="workers"):
+        TaskPool(bad)
+
+
+def test_one_worker_runs_in_this_process():
+    with TaskPool(1) as pool:
+        assert not pool.parallel
+        assert pool.submit(_pid).result() == os.getpid()
+        assert pool.map(abs, [-1, 2, -3]) == [1, 2, 3]
+
+
+@pytest.mark.skipif(not PARALLEL, reason="no fork on this platform")
+def test_two_workers_run_elsewhere_and_keep_the_order():
+    with TaskPool(2) as pool:
+        assert pool.parallel
+        assert os.getpid() not in pool.map(_pid, range(4))
+        assert pool.map(abs, [-5, 4, -3, 2, -1]) == [5, 4, 3, 2, 1]
+    assert not multiprocessing.active_children()
+
+
+@pytest.mark.parametrize("workers", [1, 2])
+def test_a_task_error_reaches_the_caller(workers):
+    with pytest.raises(ZeroDivisionError, match="boom"):
+        with TaskPool(workers) as pool:
+            pool.submit(_fail, "boom").result()
+    assert not multiprocessing.active_children()
+
+
+@pytest.mark.skipif(not PARALLEL, reason="no fork on this platform")
+def test_leaving_by_an_interrupt_stops_the_workers():
+    """KeyboardInterrupt in the parent (Ctrl-C) terminates the running tasks: no orphan."""
+    with pytest.raises(KeyboardInterrupt):
+        with TaskPool(2) as pool:
+            pool.submit(time.sleep, 600)
+            pool.submit(_pid).result()  # the workers are up
+            raise KeyboardInterrupt
+    assert not multiprocessing.active_children()
+
+
+@pytest.fixture(scope="module")
+def small_case():
+    data = default_case().model_dump(exclude_none=True)
+    data["thrust"]["n_omega"] = 40
+    data["truncation"].update(M1=6, N1=6, M2=6, N2=6, N=4, S=4, R=3)
+    return load_case(data)
+
+
+@pytest.mark.skipif(not PARALLEL, reason="no fork on this platform")
+def test_analysis_and_files_are_the_same_with_workers(small_case, tmp_path):
+    one = analysis.analyze(small_case, workers=1)
+    two = analysis.analyze(small_case, workers=2)
+    assert one.to_dict() == two.to_dict()
+    write_outputs(one, tmp_path / "one", workers=1)
+    write_outputs(two, tmp_path / "two", workers=2)
+    files = sorted(p.name for p in (tmp_path / "one").iterdir())
+    assert files == sorted(p.name for p in (tmp_path / "two").iterdir())
+    assert "campbell.svg" in files and "beam-action-chart.png" in files
+    for name in files:
+        one_bytes = (tmp_path / "one" / name).read_bytes()
+        assert one_bytes == (tmp_path / "two" / name).read_bytes(), name
