@@ -49,9 +49,14 @@ CHANGED_BY_ISSUE_12 = {".pitch.unstable_intervals", ".pitch.verdict", ".beam_act
                        ".pitch.max_growth_rate", ".beam_action.max_growth_rate",
                        ".beam_action.Omega_at_max"}
 
+#: Keys that issue 13 changed on purpose: "active" is severity_rel >= threshold (the secular
+#: growth rate of each root, docs/theory/severity.md), no longer the Kronecker deltas and
+#: parity alone; the table gained the columns severity and severity_rel.
+CHANGED_BY_ISSUE_13 = {".stability.active", ".stability.columns", ".stability.table.forcing"}
+
 
 def _diff(old, new, path=""):
-    if path in CHANGED_BY_ISSUE_12:
+    if path in CHANGED_BY_ISSUE_12 | CHANGED_BY_ISSUE_13:
         return
     if isinstance(old, dict):
         assert isinstance(new, dict), path

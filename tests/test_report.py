@@ -169,17 +169,25 @@ def test_inputs_and_results_shown_with_units(results, page):
 
 
 def test_unstable_table_active_first_and_capped(results, page):
+    """The 10 most severe bands first (issue 13), then the roots, most severe first, capped."""
     st = results.stability
     rows = cells(parse(page), "unstable-frequencies")[1:]
+    bands = rows[:10]  # the bands table (its header row is rows[0] of the section)
+    assert [b[0] for b in bands] == [str(n) for n in range(1, 11)]
+    top = results.severity.bands[0]
+    assert float(bands[0][1]) == pytest.approx(top.Omega_peak, rel=5e-6)
+    assert bands[0][-1] == top.cause
+    rows = rows[11:]  # after the roots' header row
     assert len(rows) == min(len(st), MAX_UNSTABLE_ROWS)
     n_active = int(st.active.sum())
     assert len(st) > MAX_UNSTABLE_ROWS  # the default case exercises the cap
     assert f"The first {MAX_UNSTABLE_ROWS} of {len(st)}" in page
     expected = ["active"] * min(n_active, len(rows)) + ["listed"] * (len(rows) - n_active)
     assert [r[-1] for r in rows] == expected
-    # the active roots, lowest Omega first, to the 6 printed digits
+    # the active roots, most severe first, to the 6 printed digits
     shown = np.array([float(r[0]) for r in rows[: min(n_active, len(rows))]])
-    np.testing.assert_allclose(shown, np.sort(st.Omega[st.active])[: shown.size], rtol=5e-6)
+    order = np.lexsort((st.Omega, -st.severity))[: shown.size]
+    np.testing.assert_allclose(shown, st.Omega[order], rtol=5e-6)
 
 
 def test_warnings_shown_and_escaped(results, svgs):

@@ -33,6 +33,7 @@ from .memo.beam_action import beam_action_analysis, pipeline_bands
 from .memo.model import BoosterModel
 from .memo.pitch import pitch_analysis
 from .memo.responses import SimulationResult, excitation_parameters, simulate
+from .memo.severity import severity_analysis
 from .memo.shell import natural_frequencies
 from .memo.stability import ShellModes, StabilityTable, TooManyRootsError, unstable_frequencies
 from .model import vehicle_from_case
@@ -219,6 +220,12 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
                 omega_1=model.omega_1, R=n.R, S=n.S, gamma=model.gamma, K=model.K)
         except TooManyRootsError as exc:  # a memory limit: the rest of the analysis stands
             extra.append(AnalysisWarning("stability-skipped", "truncation", str(exc)))
+    severity = None
+    if table is not None:  # issue 13: how bad each root is; active = severity_rel >= threshold
+        sv = case.severity
+        table, severity = severity_analysis(
+            model, table, params, psi0=sv.psi0, beam_amplitude=sv.beam_amplitude,
+            threshold=sv.threshold, resolution=sv.resolution)
     data = None
     if figures:
         step(STAGES[5])
@@ -257,7 +264,9 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
         memo_roots_in_regions=matches,
         danger=danger_summary(operating_range=model.omega_range, pitch=pitch,
                               beam_action=action,
-                              vehicle_regions=None if regions is None else regions.regions),
+                              vehicle_regions=None if regions is None else regions.regions,
+                              resonance_bands=None if severity is None else severity.bands),
+        severity=severity,
     )
 
 

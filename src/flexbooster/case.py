@@ -33,6 +33,7 @@ __all__ = [
     "Truncation",
     "Damping",
     "Output",
+    "SeverityTable",
     "Case",
     "MAX_MODES",
     "load_case",
@@ -256,6 +257,45 @@ class Output(BaseModel):
 
     model_config = _FROZEN
     units: Literal["SI", "US"] = "SI"
+class SeverityTable(BaseModel):
+    """Optional reference amplitudes and thresholds of the severity (table ``[severity]``).
+
+    The severity of a root of the stability table (issue 13, ``docs/theory/severity.md``) is
+    the secular growth rate of the resonant shell mode for these amplitudes of the free
+    motions that drive it.
+
+    Attributes
+    ----------
+    psi0 : float
+        Reference initial pitch angle psi(0) (rad), default 0.01 (as ``simulate``).
+    beam_amplitude : float
+        Reference Euclidean norm of the beam Floquet vector (units of L, dimensionless),
+        >= 0, default 1e-4 (as ``simulate``).
+    threshold : float
+        severity_rel at and above which a root is "active", 0 <= threshold <= 1, default 1e-6.
+    resolution : float
+        Relative resolution in Omega within which active roots merge into a band, in (0, 1),
+        default 0.005.
+    """
+
+    model_config = _FROZEN
+    psi0: float = 0.01
+    beam_amplitude: float = 1e-4
+    threshold: float = 1e-6
+    resolution: float = 0.005
+
+    @field_validator("psi0", "beam_amplitude", "threshold", "resolution", mode="before")
+    @classmethod
+    def _severity_value(cls, value: Any, info) -> float:  # noqa: ANN001
+        result = to_si(info.field_name, value, "dimensionless")
+        name = info.field_name
+        if name == "beam_amplitude" and result < 0.0:
+            raise ValueError("must be >= 0")
+        if name == "threshold" and not 0.0 <= result <= 1.0:
+            raise ValueError("must lie in [0, 1]")
+        if name == "resolution" and not 0.0 < result < 1.0:
+            raise ValueError("must lie in (0, 1)")
+        return result
 
 
 class Case(BaseModel):
@@ -270,6 +310,8 @@ class Case(BaseModel):
     truncation : Truncation
     damping : Damping
         Optional; no damping by default.
+    severity : SeverityTable
+        Optional reference amplitudes, threshold and band resolution of the severity.
     vehicle : VehicleTable or None
         The optional ``[vehicle]`` table (:mod:`flexbooster.vehicle_case`); None: the memo
         vehicle built from ``booster`` is used by ``flexbooster modes`` only.
@@ -297,6 +339,7 @@ class Case(BaseModel):
         if not (math.isfinite(result) and result > 0.0):
             raise ValueError("must be a finite time > 0 (s)")
         return result
+    severity: SeverityTable = SeverityTable()
 
     @property
     def F0(self) -> float:

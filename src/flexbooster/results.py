@@ -19,6 +19,7 @@ from .memo.charts import FigureData
 from .memo.geometry import DimensionlessGroups, MassProperties
 from .memo.model import BoosterModel
 from .memo.pitch import PitchResult
+from .memo.severity import SeverityResult
 from .memo.shell import ShellFrequencies
 from .memo.stability import StabilityTable
 from .shell_of_revolution.survey import VehicleSurvey
@@ -80,6 +81,14 @@ UNITS: dict[str, str] = {
     "stability.rows.Omega_rad_s, shell_rad_s": "rad/s",
     "stability.rows.Omega_hz, shell_hz": "Hz",
     "stability.rows.Omega_over_omega1, shell_omega_bar": "1 (units of omega_1)",
+    "stability.table.severity": "m/s (growth rate of the mode's surface displacement)",
+    "stability.table.severity_rel, stability.severity.threshold, resolution": "1",
+    "stability.severity.psi0": "rad",
+    "stability.severity.beam_amplitude": "1 (units of L)",
+    "stability.severity.max_severity, bands.severity": "m/s",
+    "stability.severity.bands.Omega_lo, Omega_hi, Omega_peak": "rad/s",
+    "stability.severity.bands.Omega_*_hz": "Hz",
+    "stability.severity.bands.severity_rel": "1",
     "figures.*.Omega_bar, curves, shell_omega_bar, root_*": "1 (units of omega_1)",
     "figures.beam_action_chart.regions.omega_lo, omega_hi, omega_min, omega_max": "rad/s",
     "figures.pitch_band_chart.regions.omega_lo, omega_hi, omega_min, omega_max": "rad/s",
@@ -149,6 +158,9 @@ class Results:
         The memo-table roots inside each region; None without regions or without the table.
     danger : DangerSummary or None
         One verdict per mechanism and the ranked unstable bands of Omega (the first screen).
+    severity : SeverityResult or None
+        Severity of the roots of ``stability`` and their bands (issue 13); None if the table
+        was not computed.  results.json holds it as ``stability.severity``.
     """
 
     case: Case
@@ -168,6 +180,7 @@ class Results:
     vehicle_regions: VehicleRegions | None = None
     memo_roots_in_regions: MemoRootsInRegions | None = None
     danger: DangerSummary | None = None
+    severity: SeverityResult | None = None
 
     @property
     def Omega(self) -> np.ndarray:
@@ -208,6 +221,8 @@ class Results:
             "figures": None if self.figures is None else self.figures.to_dict(),
         }
         out["danger"] = None if self.danger is None else self.danger.to_dict()
+        if out["stability"] is not None and self.severity is not None:  # issue 13
+            out["stability"]["severity"] = self.severity.to_dict()
         if self.vehicle is not None:  # only for a case with [vehicle] (units inside)
             out["vehicle_modes"] = self.vehicle.to_dict()
         out["vehicle_regions"] = self._vehicle_regions_dict()

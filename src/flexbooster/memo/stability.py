@@ -279,11 +279,18 @@ class StabilityTable:
     shell_omega_bar : numpy.ndarray
         Its natural frequency in units of omega_1.
     active : numpy.ndarray of bool
-        True where the forcing of that mode through this family is non-zero.
+        True where the forcing of that mode through this family is non-zero: structurally
+        (Kronecker deltas, parity) as solved; ``severity_rel >= threshold`` once the severity
+        is attached (:func:`flexbooster.memo.severity.with_severity`).
     residual : numpy.ndarray
         |excitation - shell frequency| at the reported root (units of omega_1).
     omega_1 : float
         The unit of the dimensionless frequencies (rad/s).
+    severity : numpy.ndarray or None
+        Secular growth rate of the mode's surface displacement at the root (m/s), issue 13
+        (:mod:`flexbooster.memo.severity`); None if not computed.
+    severity_rel : numpy.ndarray or None
+        severity over the largest severity of the table (dimensionless); None if not computed.
     """
 
     Omega: np.ndarray
@@ -303,6 +310,8 @@ class StabilityTable:
     active: np.ndarray
     residual: np.ndarray
     omega_1: float
+    severity: np.ndarray | None = None
+    severity_rel: np.ndarray | None = None
 
     def __len__(self) -> int:
         return int(self.Omega.size)
@@ -329,6 +338,9 @@ class StabilityTable:
             "shell_rad_s": (self.shell_omega_bar * self.omega_1).tolist(),
             "shell_hz": (self.shell_omega_bar * self.omega_1 / two_pi).tolist(),
             "forcing": np.where(self.active, "active", "listed").tolist(),
+            **({} if self.severity is None else {
+                "severity": self.severity.tolist(),
+                "severity_rel": self.severity_rel.tolist()}),
         }
 
     def to_rows(self) -> list[dict]:
@@ -341,7 +353,7 @@ class StabilityTable:
         return {
             "count": len(self),
             "active": int(self.active.sum()),
-            "columns": list(_COLUMNS),
+            "columns": list(_COLUMNS) + ([] if self.severity is None else list(_SEVERITY)),
             "table": self.to_columns(),
             "warnings": [],  # kept for the results.json schema 1.0; warnings are in results
         }
@@ -367,6 +379,7 @@ _COLUMNS = (
     "shell_hz",
     "forcing",
 )
+_SEVERITY = ("severity", "severity_rel")  # issue 13, when the severity is attached
 
 
 ParamsFn = Callable[[np.ndarray], tuple[np.ndarray, np.ndarray]]

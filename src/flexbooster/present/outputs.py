@@ -162,10 +162,10 @@ def write_outputs(
     Returns
     -------
     list of pathlib.Path
-        The files written: results.json, shell-frequencies.csv, unstable-frequencies.csv (when
-        the stability table was computed), vehicle-regions.csv (when the vehicle's regions
-        were computed), the figures and report.html, and last :data:`MANIFEST` (each file
-        with its SHA-256).
+        The files written: results.json, shell-frequencies.csv, unstable-frequencies.csv and
+        resonance-bands.csv (when the stability table was computed), vehicle-regions.csv
+        (when the vehicle's regions were computed), the figures and report.html, and last
+        :data:`MANIFEST` (each file with its SHA-256).
 
     Notes
     -----
@@ -202,6 +202,9 @@ def _write_files(results: Results, folder: Path, figures: bool,
         if results.stability is not None:
             written.append(write_csv_atomic(folder / "unstable-frequencies.csv",
                                             results.stability.to_columns()))
+        if results.severity is not None:  # issue 13: every band, most severe first
+            written.append(write_csv_atomic(folder / "resonance-bands.csv",
+                                            results.severity.band_rows()))
         if results.vehicle is not None:  # a case with [vehicle] only
             written.append(write_csv_atomic(folder / "vehicle-modes.csv",
                                             results.vehicle.to_columns()))

@@ -36,18 +36,21 @@ from ..memo.charts import (
 from ..results import Results
 from .io import write_text_atomic
 from .rows import (
+    BAND_COLUMNS,
     DANGER_HEADER,
     FIRST_SCREEN_BANDS,
     FORCED_AXIAL_HEADER,
     MEMO_ROOT_HEADER,
     REGION_HEADER,
     ROUND_OFF,
+    band_rows,
     danger_rows,
     forced_axial_rows,
     frequency_rows,
     input_rows,
     mass_rows,
     memo_root_rows,
+    severity_caption,
     vehicle_region_rows,
     vehicle_region_table,
     vehicle_region_verdict,
@@ -142,8 +145,8 @@ FIGURES: dict[str, tuple[str, str]] = {
         "campbell",
         "Excitation curves of memo 7.3 against the thrust frequency (Hz, logarithmic; "
         "Omega/omega_1 on top), one colour per family; thin grey lines: the shell frequencies "
-        "on which a root with active forcing lies; red points: the roots with active forcing "
-        "(the listed roots without forcing are in unstable-frequencies.csv, not drawn).",
+        "on which an active root lies; red points: the active roots (severity_rel at or above "
+        "the threshold; the other listed roots are in unstable-frequencies.csv, not drawn).",
     ),
     "vehicle-regions": (
         "vehicle-regions",
@@ -451,29 +454,40 @@ def _unstable(results: Results) -> str:
     st = results.stability
     if st is None:
         return '<p class="note">Not computed (see the warnings).</p>'
-    order = np.lexsort((st.Omega, ~np.asarray(st.active, dtype=bool)))  # active first
+    bands = band_rows(results, 10)
+    out = ""
+    if st.severity is not None:  # issue 13: the most severe bands first, then the roots
+        out = (f"<p>The 10 most severe bands of unstable thrust frequencies. "
+               f"{_e(severity_caption(results))} All bands are in resonance-bands.csv.</p>"
+               + _table(BAND_COLUMNS, bands, [False] * len(BAND_COLUMNS)))
+        order = np.lexsort((st.Omega, -st.severity))  # most severe first
+    else:
+        order = np.lexsort((st.Omega, ~np.asarray(st.active, dtype=bool)))  # active first
     shown = order[:MAX_UNSTABLE_ROWS]
     n_active = int(np.sum(st.active))
     head = (f"<p>{len(st)} roots of the equations of memo 7.3 in the Omega range, "
-            f"{n_active} with active forcing (highlighted, listed first). ")
+            f"{n_active} active (highlighted), "
+            + ("most severe first. " if st.severity is not None else "listed first. "))
     if len(st) > shown.size:
         head += f"The first {shown.size} of {len(st)} are shown; all are in "
     else:
         head += "All are shown; they are also in "
     head += "unstable-frequencies.csv.</p>"
+    sev = st.severity if st.severity is not None else np.zeros(len(st))
     rows = [
         (st.Omega[n], _hz(st.Omega[n]), st.Omega_bar[n], f"{st.family[n]} ({st.equation[n]})",
          st.cylinder[n], st.j[n], st.k[n], st.branch[n],
          f"{st.i[n]}, {st.p[n]}, {st.r[n]}, {st.s[n]}",
-         _hz(st.shell_omega_bar[n] * st.omega_1), "active" if st.active[n] else "listed")
+         _hz(st.shell_omega_bar[n] * st.omega_1), float(sev[n]),
+         "active" if st.active[n] else "listed")
         for n in shown
     ]
     table = _table(
         ("Omega (rad/s)", "Omega (Hz)", "Omega/omega_1", "family (eq.)", "d", "j", "k", "m",
-         "i, p, r, s", "shell (Hz)", "forcing"),
-        rows, (True, True, True, False, True, True, True, True, False, True, False),
+         "i, p, r, s", "shell (Hz)", "severity (m/s)", "forcing"),
+        rows, (True, True, True, False, True, True, True, True, False, True, True, False),
         ["active" if st.active[n] else "" for n in shown])
-    return head + table
+    return out + head + table
 
 
 def _vehicle(results: Results, svgs: Mapping[str, str] | None) -> str:
@@ -599,7 +613,7 @@ def _summary(results: Results) -> str:
         ("rigid-body pitch", p.verdict),
         ("beam action", "not computed" if ba is None else ba.verdict),
         ("unstable thrust frequencies", "not computed (see the warnings)" if st is None else
-         f"{len(st)} roots, {int(np.sum(st.active))} with active forcing"),
+         f"{len(st)} roots, {int(np.sum(st.active))} active"),
         ("vehicle parametric instability regions", vehicle_region_verdict(results)[0]),
         ("warnings", str(len(results.warnings))),
     ]

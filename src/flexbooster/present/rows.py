@@ -32,6 +32,9 @@ __all__ = [
     "verdict_rows",
     "danger_rows",
     "DANGER_HEADER",
+    "BAND_COLUMNS",
+    "band_rows",
+    "severity_caption",
 ]
 
 #: A value smaller than this in magnitude is round-off and shown as 0 by the summary and the
@@ -438,3 +441,64 @@ def memo_root_rows(results: Results) -> list[tuple]:
                     "active" if m.active[n] else "listed", "yes" if m.same_k[n] else "no",
                     "-" if m.severity is None else str(m.severity[n])))
     return out
+
+
+#: Columns of the table of the most severe resonance bands (summary and report).
+BAND_COLUMNS = ("#", "Omega rad/s", "Hz", "band rad/s", "severity m/s", "rel.",
+                "mode (cyl, j, k, m, type)", "family", "cause")
+
+
+def band_rows(results: Results, limit: int = 10) -> list[tuple[str, ...]]:
+    """The most severe resonance bands as text rows (:data:`BAND_COLUMNS`), most severe first.
+
+    Parameters
+    ----------
+    results : Results
+        The analysis (its stored ``severity.bands``).
+    limit : int
+        Largest number of rows.
+
+    Returns
+    -------
+    list of tuple of str
+        Empty if the severity was not computed.
+    """
+    sev = getattr(results, "severity", None)
+    if sev is None:
+        return []
+    out = []
+    for n, b in enumerate(sev.bands[:limit], start=1):
+        c, j, k, m, typ = b.modes[0]
+        more = f" +{len(b.modes) - 1}" if len(b.modes) > 1 else ""
+        fams = ",".join(str(f) for f in b.families)
+        out.append((str(n), f"{b.Omega_peak:.6g}", f"{b.Omega_peak / (2 * math.pi):.6g}",
+                    f"{b.Omega_lo:.6g}..{b.Omega_hi:.6g}", f"{b.severity:.3g}",
+                    f"{b.severity_rel:.3g}", f"{c}, {j}, {k}, {m}, {typ}{more}",
+                    f"{b.family} ({fams})" if len(b.families) > 1 else str(b.family),
+                    b.cause))
+    return out
+
+
+def severity_caption(results: Results) -> str:
+    """One sentence: what the severity is, its reference amplitudes and what "active" means.
+
+    Parameters
+    ----------
+    results : Results
+        The analysis.
+
+    Returns
+    -------
+    str
+        Empty if the severity was not computed.
+    """
+    sev = getattr(results, "severity", None)
+    st = results.stability
+    if sev is None or st is None:
+        return ""
+    r = sev.roots
+    return (f"{len(st)} roots, {int(r.active.sum())} active (severity_rel >= {r.threshold:g}); "
+            f"{len(sev.bands)} bands (active roots within {100 * sev.resolution:g} % of Omega). "
+            "Severity: secular growth rate of the resonant shell mode's surface displacement "
+            f"(m/s) for gamma = {results.case.thrust.gamma:g}, psi0 = {r.psi0:g} rad and a beam "
+            f"Floquet amplitude {r.beam_amplitude:g} L.")

@@ -15,12 +15,15 @@ from rich.table import Table
 
 from ..results import Results
 from .rows import (
+    BAND_COLUMNS,
     ROUND_OFF,
+    band_rows,
     danger_rows,
     frequency_rows,
     input_rows,
     mass_rows,
     range_text,
+    severity_caption,
     verdict_rows,
 )
 
@@ -218,7 +221,7 @@ def _print_beam_action(results: Results, console: Console) -> None:
 
 
 def print_stability(results: Results, console: Console) -> None:
-    """Print the table of unstable thrust frequencies (the first 15 active roots).
+    """Print the 10 most severe bands of unstable thrust frequencies (issue 13).
 
     Parameters
     ----------
@@ -231,37 +234,21 @@ def print_stability(results: Results, console: Console) -> None:
     if st is None:
         console.print("Unstable thrust frequencies: not computed.")
         return
+    rows = band_rows(results, 10)
     table = Table(
         title=(
-            f"Unstable thrust frequencies (memo 7.3): {len(st)} roots, {int(st.active.sum())} "
-            "with active forcing (first 15 active; all in unstable-frequencies.csv)"
+            "Unstable thrust frequencies (memo 7.3), the 10 most severe bands: "
+            f"{severity_caption(results)} All roots in unstable-frequencies.csv, all bands in "
+            "resonance-bands.csv."
         ),
         title_justify="left",
         header_style="bold",
         box=box.SIMPLE_HEAD,
         pad_edge=False,
     )
-    wide = console.width >= 100  # Omega/omega_1 only where it fits (it is in the CSV)
-    cols = ["Omega rad/s", "Hz", "Omega/omega_1", "family (eq.)", "d", "j", "k", "m", "i,p,r,s",
-            "shell Hz"]
-    if not wide:
-        cols.remove("Omega/omega_1")
-    for col in cols:  # numbers never cut: columns not wrapped
-        table.add_column(col, justify="right", no_wrap=True)
-    for n in np.flatnonzero(st.active)[:15]:
-        cells = [
-            _g(st.Omega[n]),
-            _g(st.Omega[n] / (2 * np.pi)),
-            _g(st.Omega_bar[n]),
-            f"{st.family[n]} ({st.equation[n]})",
-            str(st.cylinder[n]),
-            str(st.j[n]),
-            str(st.k[n]),
-            str(st.branch[n]),
-            f"{st.i[n]},{st.p[n]},{st.r[n]},{st.s[n]}",
-            _g(st.shell_omega_bar[n] * st.omega_1 / (2 * np.pi)),
-        ]
-        if not wide:
-            del cells[2]
-        table.add_row(*cells)
+    for col in BAND_COLUMNS:
+        table.add_column(col, justify="left" if col in ("cause", "mode (cyl, j, k, m, type)")
+                         else "right")
+    for row in rows:
+        table.add_row(*row)
     console.print(table)

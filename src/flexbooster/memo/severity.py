@@ -1,0 +1,693 @@
+"""Severity of the unstable thrust frequencies: secular growth rate of every root (memo 7.1).
+
+At a root of the stability table (:mod:`flexbooster.memo.stability`) one harmonic of the
+forcing of a shell mode has the mode's own frequency.  The normal coordinate y of that mode
+(branch m of the modal system 6.1-2..4) obeys
+
+    y'' + omega^2 y = Re sum_h g_h e^{i nu_h tau},                                  (6.2-*)
+
+and a harmonic with |nu_h| = omega makes y grow like tau (memo 7.1: the vanishing denominator of
+the closed-form response):
+
+    y ~ (|G| / (2 omega)) tau sin(omega tau + phi),   G = sum_{nu_h = omega} g_h
+                                                          + conj(sum_{nu_h = -omega} g_h).
+
+The *severity* of the root is that growth rate expressed at the shell surface in metres per
+second: |G| / (2 omega) L omega_1 max_c |Phi_c|, where Phi is the mode's eigenvector (x = Phi y,
+x = (U, V, W) in units of L, 5.2-1; the shape functions have unit maximum) and tau = omega_1 t.
+The forcing g_h is computed for every root at once from the harmonics of the free motions that
+drive the shells (:mod:`flexbooster.memo.responses`):
+
+* the thrust T = 1 - gamma cos(Omega_bar tau) (4.2-1a) through u* (5.3-4a): family 3;
+* psi = sum_i A_i cos(Omega_i tau) (4.2-6, 4.2-7) for the case's psi0: psi'' (families 1, 7),
+  K T psi (7, 8, 9), psi'^2 (4, 5, 6, 10, 11, 12);
+* the beam Floquet solution q = sum_s C^(s) e^{i (alpha_r + s) Omega_bar tau} (4.1-10..12) of
+  Euclidean norm ``beam_amplitude``: families 2 and 13.  Its Fourier vectors are computed at the
+  root's own exponent by a matrix continued fraction of Hill's block-tridiagonal recursion
+  (batched n x n solves instead of one 2n(2S+1) eigenproblem per root).
+
+The modal forcing per unit basis function comes from the quadrature of the definitions
+(:func:`flexbooster.memo.responses.modal.modal_groups`).  The roots then merge into *bands*
+(:func:`resonance_bands`).  See ``docs/theory/severity.md``.
+
+References
+----------
+.. [1] Tech Memo 104, sections 4.1, 4.2, 5.3, 5.4, 6.1, 6.2, 7.1, 7.3.
+.. [2] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, ch. 1
+   (secular terms at resonance).
+.. [3] H. Risken, *The Fokker-Planck Equation*, 2nd ed., Springer, 1989, sec. 9.3 (matrix
+   continued fractions for block-tridiagonal recursions).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..checks import choice, finite, nonnegative, positive
+from .beam_action import beam_system
+from .model import BoosterModel
+from .pitch import mathieu_parameters
+from .responses.excitation import _NB, ExcitationParameters
+from .responses.modal import _cylinder_groups, modal_basis
+from .stability import StabilityTable
+
+__all__ = [
+    "FAMILY_CAUSES",
+    "DEFAULT_THRESHOLD",
+    "DEFAULT_RESOLUTION",
+    "RootSeverity",
+    "ResonanceBand",
+    "SeverityResult",
+    "root_severity",
+    "floquet_vectors",
+    "resonance_bands",
+    "with_severity",
+    "severity_analysis",
+]
+
+#: The forcing behind each family, in words (memo 6.2, 7.3).
+FAMILY_CAUSES: dict[int, str] = {
+    1: "rigid-body pitch acceleration psi'' at Omega_i (k = 1)",
+    2: "beam bending harmonic (alpha_r + s) Omega of the Floquet motion (k = 1)",
+    3: "thrust pulsation gamma T0 cos(Omega t) at the aft edge (via u*: axial inertia, Poisson)",
+    4: "centrifugal pitch-rate term psi'^2 at 2 Omega_i (k = 0)",
+    5: "centrifugal pitch-rate term psi'^2 at Omega_i + Omega_p (k = 0)",
+    6: "centrifugal pitch-rate term psi'^2 at Omega_i - Omega_p (k = 0)",
+    7: "rigid-body pitch psi'' and gimbal side force K T0 psi at Omega_i (k = 1)",
+    8: "pulsating gimbal side force gamma K T0 psi at Omega + Omega_i (k = 1)",
+    9: "pulsating gimbal side force gamma K T0 psi at Omega - Omega_i (k = 1)",
+    10: "centrifugal pitch-rate term psi'^2 at Omega_i + Omega_p (k = 2)",
+    11: "centrifugal pitch-rate term psi'^2 at Omega_i - Omega_p (k = 2)",
+    12: "centrifugal pitch-rate term psi'^2 at 2 Omega_i (k = 2)",
+    13: "beam bending harmonic (alpha_r + s) Omega of the Floquet motion (k = 1)",
+}
+#: Default threshold of ``severity_rel`` above which a root counts as active.
+DEFAULT_THRESHOLD = 1e-6
+#: Default relative resolution in Omega within which roots merge into one band.
+DEFAULT_RESOLUTION = 0.005
+_COMPONENTS = ("axial", "torsional", "radial")  # dominant U, V, W (as memo.shell.MODE_TYPES)
+_RES_TOL = 1e-8  # |nu| = omega to this relative tolerance counts as resonant
+
+
+@dataclass(frozen=True)
+class RootSeverity:
+    """Secular growth of the resonant shell mode at every root of a stability table.
+
+    Attributes
+    ----------
+    severity : numpy.ndarray
+        Shape (n,), growth rate of the mode's largest surface displacement amplitude (m/s).
+    severity_rel : numpy.ndarray
+        Shape (n,), severity over the largest severity of the table (dimensionless).
+    rate : numpy.ndarray
+        Shape (n,), |G| / (2 omega): growth of the normal coordinate per unit tau (units of L).
+    mode_type : tuple of str
+        Per root, "axial", "torsional" or "radial": the dominant component of the mode.
+    psi0 : float
+        Reference initial pitch angle (rad).
+    beam_amplitude : float
+        Reference norm of the beam Floquet vector (units of L).
+    threshold : float
+        severity_rel at and above which a root is active (dimensionless).
+    """
+
+    severity: np.ndarray
+    severity_rel: np.ndarray
+    rate: np.ndarray
+    mode_type: tuple[str, ...]
+    psi0: float
+    beam_amplitude: float
+    threshold: float
+
+    def __len__(self) -> int:
+        return int(self.severity.size)
+
+    @property
+    def active(self) -> np.ndarray:
+        """Boolean mask: severity_rel >= threshold."""
+        return self.severity_rel >= self.threshold
+
+    def to_dict(self) -> dict:
+        """JSON-ready: the reference amplitudes and threshold (the columns are in the table)."""
+        return {
+            "psi0": float(self.psi0),
+            "beam_amplitude": float(self.beam_amplitude),
+            "threshold": float(self.threshold),
+            "max_severity": float(self.severity.max()) if self.severity.size else 0.0,
+            "active": int(self.active.sum()),
+        }
+
+
+def _pitch_amplitudes(Omega: np.ndarray, beta: np.ndarray, omega_psi: float, gamma: float,
+                      psi0: float) -> np.ndarray:
+    """A_1, A_2, A_3 of psi (4.2-7b..d), shape (n, 3), for psi(0) = psi0."""
+    a, q = mathieu_parameters(Omega, omega_psi, gamma)  # (4.2-4)
+    den1, den3 = a - (beta - 2.0) ** 2, a - (2.0 + beta) ** 2
+    A2 = psi0 / (1.0 + q * (1.0 / den3 + 1.0 / den1))  # eq. (4.2-7c)
+    return np.stack([A2 * q / den1, A2, A2 * q / den3], axis=-1)  # eqs. (4.2-7b, d)
+
+
+def floquet_vectors(A0: np.ndarray, B: np.ndarray, mu: np.ndarray, Omega_bar: np.ndarray,
+                    gamma: float, S: int, *, kappa_max: float = 1e-4,
+                    chunk: int = 256) -> tuple[np.ndarray, np.ndarray]:
+    """Fourier vectors C^(s), s = -S..S, of the Floquet solution with exponent near mu.
+
+    Hill's recursion (mu + s Omega_bar)^2 C^(s) = A0 C^(s) - (gamma/2) B (C^(s-1) + C^(s+1)),
+    truncated at |s| <= S, is solved in the modal frame of A0 (A0 = V diag(lambda) V^-1, where
+    D_s = diag(lambda - (mu + s Omega_bar)^2) is diagonal and G = -(gamma/2) V^-1 B V):
+
+    * where the coupling is weak (the term the first-order fraction leaves out, D_s^-1 G
+      C^(s +- 1) outward, is at most ``kappa_max`` of C^(s) at every s: all points away from
+      the beam's own combination resonances), by the first-order continued fraction
+      C^(0) = e_r, C^(s) = -D_s^-1 G C^(s -+ 1), and the exponent refined once from the
+      s = 0 row, mu^2 = lambda_r + [G (C^(1) + C^(-1))]_r;
+    * elsewhere by the exact matrix continued fraction C^(s) = R_s C^(s-1) (s > 0), C^(s) =
+      L_s C^(s+1) (s < 0), R_S = -D_S^-1 G, R_s = -(D_s + G R_{s+1})^-1 G (likewise L_s),
+      C^(0) the null vector of D_0 + G (R_1 + L_-1), the exponent refined by three secant
+      steps on its eigenvalue nearest zero.
+
+    Parameters
+    ----------
+    A0 : numpy.ndarray
+        Shape (n, n), steady beam-action matrix Lambda + B (dimensionless).
+    B : numpy.ndarray
+        Shape (n, n), thrust matrix per unit f(tau) (dimensionless).
+    mu : numpy.ndarray
+        Shape (P,), real exponents alpha Omega_bar (units of omega_1): the starting values
+        (e.g. the splined alpha_r of the stability roots).
+    Omega_bar : numpy.ndarray
+        Shape (P,), Omega / omega_1 (dimensionless), > 0.
+    gamma : float
+        Pulsation amplitude (dimensionless), 0 <= gamma < 1.
+    S : int
+        Harmonics s = -S..S kept, >= 0.
+    kappa_max : float
+        Largest relative term left out by the first-order fraction (dimensionless); 0 solves
+        every point exactly.
+    chunk : int
+        Points per batch (memory ~ chunk 2S n^2 doubles; small batches stay in cache).
+
+    Returns
+    -------
+    C : numpy.ndarray
+        Shape (P, 2S + 1, n), in the physical coordinates q_1..q_N, q_B, unit Euclidean norm
+        over (s, n) (the sign is arbitrary; real for a real exponent).
+    mu : numpy.ndarray
+        Shape (P,), the refined exponents (units of omega_1).
+
+    References
+    ----------
+    Tech Memo 104, eqs. (4.1-10)..(4.1-12); Bolotin (1964) sec. 7 (Hill's determinant); Risken
+    (1989) sec. 9.3 (matrix continued fractions).
+    """
+    mu = np.asarray(mu, dtype=float).ravel().copy()
+    Ob = np.asarray(Omega_bar, dtype=float).ravel()
+    if mu.shape != Ob.shape or not (np.all(np.isfinite(mu)) and np.all(np.isfinite(Ob))):
+        raise ValueError("mu, Omega_bar: must be finite 1-D arrays of one length")
+    if np.any(Ob <= 0.0):
+        raise ValueError("Omega_bar: must be > 0")
+    gamma = nonnegative("gamma", gamma)
+    kappa_max = nonnegative("kappa_max", kappa_max)
+    S = int(nonnegative("S", S))
+    A0 = np.asarray(A0, dtype=float)
+    B = np.asarray(B, dtype=float)
+    n = A0.shape[0]
+    lam, V = np.linalg.eig(A0)
+    if not (np.all(np.abs(lam.imag) <= 1e-12 * np.abs(lam).max()) and np.all(np.isreal(V))):
+        return _floquet_exact(A0, B, mu, Ob, gamma, S, chunk)  # a flutter-unstable beam
+    lam, V = lam.real, V.real
+    GT = (-0.5 * gamma * np.linalg.solve(V, B @ V)).T  # G in the modal frame, transposed
+    out = np.zeros((mu.size, 2 * S + 1, n))
+    kappa = np.zeros(mu.size)
+    tiny = np.finfo(float).tiny
+    levels = np.arange(-S, S + 1)
+    for start in range(0, mu.size, chunk):
+        sl = slice(start, start + chunk)
+        P = mu[sl].size
+        rows = np.arange(P)
+        r = np.argmin(np.abs(lam[None, :] - mu[sl][:, None] ** 2), axis=1)  # lambda_r ~ mu^2
+        for it in range(2):  # one refinement of the exponent (error ~ kappa^2), then the vectors
+            x = mu[sl][None, :] + levels[:, None] * Ob[sl][None, :]  # (2S+1, P)
+            d = lam[None, None, :] - x[:, :, None] ** 2  # diagonals of D_s (2S+1, P, n)
+            inv = 1.0 / np.where(d == 0.0, tiny, d)
+            modal = np.zeros((2 * S + 1, P, n))
+            modal[S, rows, r] = 1.0  # C^(0) = e_r to second order
+            for s in range(1, S + 1):  # first-order continued fraction, outward from s = 0
+                modal[S + s] = -inv[S + s] * (modal[S + s - 1] @ GT)
+                modal[S - s] = -inv[S - s] * (modal[S - s + 1] @ GT)
+            if it == 1 or S == 0:
+                break
+            mu2 = lam[r] + ((modal[S + 1] + modal[S - 1]) @ GT)[rows, r]  # s = 0 row, Hill
+            mu[sl] = np.where(mu2 > 0, np.sqrt(np.abs(mu2)), mu[sl]) * np.sign(mu[sl])
+        # a-posteriori: the term left out at each s, G C^(s +- 1) (outward), relative to C^(s)
+        outer = np.zeros_like(modal)
+        if S:
+            outer[S + 1:-1] = modal[S + 2:] @ GT
+            outer[1:S] = modal[:S - 1] @ GT
+            outer[S] = (modal[S + 1] + modal[S - 1]) @ GT
+        outer[S, rows, r] = 0.0  # the resonant row: the exponent itself
+        err = np.abs(inv * outer).max(axis=2) / np.maximum(np.abs(modal).max(axis=2), tiny)
+        kappa[sl] = err.max(axis=0)
+        q = np.moveaxis(modal @ V.T, 0, 1)  # back to q_1..q_N, q_B: (P, 2S+1, n)
+        out[sl] = q / np.sqrt(np.sum(q**2, axis=(1, 2)))[:, None, None]
+    hard = np.flatnonzero(kappa > kappa_max)
+    if hard.size:
+        out[hard], mu[hard] = _floquet_exact(A0, B, mu[hard], Ob[hard], gamma, S, chunk)
+    return out, mu
+
+
+def _central(A0: np.ndarray, G: np.ndarray, m: np.ndarray, ob: np.ndarray,
+             S: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """R_s, L_s (s = 1..S) and the central matrix D_0 + G (R_1 + L_-1) of the exact fraction."""
+    n = A0.shape[0]
+    P = m.size
+    eye = np.eye(n)
+
+    def D(s: int) -> np.ndarray:
+        return A0[None] - ((m + s * ob) ** 2)[:, None, None] * eye[None]  # Hill (4.1-10)
+
+    R = np.zeros((P, S + 1, n, n))  # R[:, s] for s = 1..S
+    L = np.zeros((P, S + 1, n, n))  # L[:, t] for s = -t
+    Gb = np.broadcast_to(G, (P, n, n))
+    if S == 0:
+        return R, L, D(0)
+    R[:, S] = -np.linalg.solve(D(S), Gb)
+    L[:, S] = -np.linalg.solve(D(-S), Gb)
+    for s in range(S - 1, 0, -1):
+        R[:, s] = -np.linalg.solve(D(s) + G @ R[:, s + 1], Gb)
+        L[:, s] = -np.linalg.solve(D(-s) + G @ L[:, s + 1], Gb)
+    return R, L, D(0) + G @ R[:, 1] + G @ L[:, 1]
+
+
+def _floquet_exact(A0: np.ndarray, B: np.ndarray, mu: np.ndarray, Ob: np.ndarray, gamma: float,
+                   S: int, chunk: int) -> tuple[np.ndarray, np.ndarray]:
+    """The exact matrix continued fraction of :func:`floquet_vectors` (physical frame)."""
+    n = A0.shape[0]
+    G = -0.5 * gamma * B
+    out = np.zeros((mu.size, 2 * S + 1, n))
+    mu = mu.copy()
+
+    def small_eig(m: np.ndarray, ob: np.ndarray) -> np.ndarray:
+        ev = np.linalg.eigvals(_central(A0, G, m, ob, S)[2])
+        return np.take_along_axis(ev, np.argmin(np.abs(ev), axis=1)[:, None], 1)[:, 0].real
+
+    for start in range(0, mu.size, chunk):
+        sl = slice(start, start + chunk)
+        ob = Ob[sl]
+        m0, m1 = mu[sl], mu[sl] * (1.0 + 1e-7)
+        f0, f1 = small_eig(m0, ob), small_eig(m1, ob)
+        for _ in range(3):  # secant on the eigenvalue nearest zero: the exact exponent
+            den = f1 - f0
+            ok = np.abs(den) > 0
+            m2 = np.where(ok, m1 - f1 * (m1 - m0) / np.where(ok, den, 1.0), m1)
+            m2 = np.where(np.abs(m2 - mu[sl]) <= 1e-3 * np.abs(mu[sl]), m2, m1)  # stay close
+            m0, f0, m1 = m1, f1, m2
+            f1 = small_eig(m1, ob)
+        mu[sl] = m1
+        R, L, central = _central(A0, G, m1, ob, S)
+        _, _, vh = np.linalg.svd(central)
+        c0 = vh[:, -1, :]  # smallest singular value: the Floquet vector's C^(0)
+        blk = out[sl]
+        blk[:, S] = c0
+        up, down = c0, c0
+        for s in range(1, S + 1):
+            up = np.einsum("pij,pj->pi", R[:, s], up)
+            down = np.einsum("pij,pj->pi", L[:, s], down)
+            blk[:, S + s] = up
+            blk[:, S - s] = down
+        blk /= np.sqrt(np.sum(blk**2, axis=(1, 2)))[:, None, None]
+    return out, mu
+
+
+def _mode_tables(model: BoosterModel, N: int, phase: str) -> dict:
+    """Per (cylinder, kind): omega, unit forcing of each normal coordinate and |Phi| max."""
+    tr = model.truncation
+    out = {}
+    for d, (M, Nk) in ((1, (tr.M1, tr.N1)), (2, (tr.M2, tr.N2))):
+        for g in _cylinder_groups(model.shell, d, M, Nk, N, phase):
+            omega, Phi, P = modal_basis(g)
+            h = np.einsum("nmp,bnp->nmb", P, g.forcing)  # y'' + w^2 y = sum_b h_b f_b (6.1-*)
+            scale = np.abs(Phi).max(axis=1)  # (n, m): largest of |U|, |V|, |W| per unit y
+            typ = np.abs(Phi).argmax(axis=1)
+            if g.kind == "j0":
+                typ = np.array([0, 2])[typ]  # (U, W)
+            out[(d, g.kind)] = (omega, h, scale, typ, int(Nk))
+    return out
+
+
+def root_severity(model: BoosterModel, table: StabilityTable, params: ExcitationParameters, *,
+                  psi0: float = 0.01, beam_amplitude: float = 1e-4,
+                  threshold: float = DEFAULT_THRESHOLD, S: int | None = None,
+                  phase: str = "zero") -> RootSeverity:
+    """Severity (secular growth rate at the shell surface) of every root, in one pass.
+
+    Parameters
+    ----------
+    model : BoosterModel
+        The derived model (truncation M1, N1, M2, N2, N, S; omega_1, omega_psi, gamma, K, L).
+    table : StabilityTable
+        The roots (:func:`flexbooster.memo.stability.unstable_frequencies`).
+    params : ExcitationParameters
+        beta(Omega_bar), alpha_r(Omega_bar): the parameter function the roots were solved with.
+    psi0 : float
+        Reference initial pitch angle psi(0) (rad), as :func:`simulate`'s default.
+    beam_amplitude : float
+        Reference Euclidean norm of the beam Floquet vector (units of L), >= 0.
+    threshold : float
+        severity_rel at and above which a root is active (dimensionless), >= 0.
+    S : int, optional
+        Harmonics of the beam Floquet vectors (default: the model's truncation S).
+    phase : {"zero", "printed"}
+        Shape-function phase of the modal forcing (erratum E10).
+
+    Returns
+    -------
+    RootSeverity
+
+    Notes
+    -----
+    Every harmonic of the forcing whose |frequency| equals the mode's to 1e-8 (relative) adds to
+    G, so coincident families (e.g. Omega + Omega_2 = Omega_3) add their forcing.  The pitch and
+    beam motions are independent free motions whose relative phase is undefined: their resonant
+    contributions add in magnitude (the worst phase).  Where beta or alpha_r is complex (inside a
+    pitch or beam-action instability region) their real parts are used, as in
+    :func:`flexbooster.memo.responses.make_excitation`.
+
+    References
+    ----------
+    Tech Memo 104, eqs. (4.1-10)..(4.1-12), (4.2-6), (4.2-7), (5.3-4), (6.1-2)..(6.1-4), (7.2-6),
+    section 7.1; Bolotin (1964) ch. 1.
+    """
+    psi0 = finite("psi0", psi0)
+    beam_amplitude = nonnegative("beam_amplitude", beam_amplitude)
+    threshold = nonnegative("threshold", threshold)
+    phase = choice("phase", phase, ("zero", "printed"))
+    N = model.truncation.N
+    S = model.truncation.S if S is None else int(nonnegative("S", S))
+    n_root = len(table)
+    if n_root == 0:
+        z = np.zeros(0)
+        return RootSeverity(z, z, z, (), psi0, beam_amplitude, threshold)
+    tables = _mode_tables(model, N, phase)
+    ob = table.Omega_bar
+    d, j, k, m = table.cylinder, table.j, table.k, table.branch - 1
+    nb = _NB + 2 * (N + 1)
+    h = np.zeros((n_root, nb))
+    w = np.zeros(n_root)
+    scale = np.zeros(n_root)
+    typ = np.zeros(n_root, dtype=int)
+    for (dd, kind), (omega, hg, sc, ty, Nk) in tables.items():
+        sel = (d == dd) & {"0k": (j == 0), "j0": (j >= 1) & (k == 0),
+                           "jk": (j >= 1) & (k >= 1)}[kind]
+        if not sel.any():
+            continue
+        idx = {"0k": k[sel] - 1, "j0": j[sel] - 1,
+               "jk": (j[sel] - 1) * Nk + (k[sel] - 1)}[kind]
+        h[sel] = hg[idx, m[sel]]
+        w[sel] = omega[idx, m[sel]]
+        scale[sel] = sc[idx, m[sel]]
+        typ[sel] = ty[idx, m[sel]]
+
+    # the free motions at every root: thrust, psi (4.2-6, 4.2-7), their products
+    g, K, tf, eps = model.gamma, model.K, 0.5 * model.T0_bar, model.strain
+    kt = 0.5 * K * model.T0_bar
+    beta = params.beta(ob).real  # the exact exponent (Hill), as the roots use it
+    A = _pitch_amplitudes(table.Omega, beta, model.omega_psi, g, psi0) if psi0 else \
+        np.zeros((n_root, 3))
+    W = np.stack([1.0 - beta / 2.0, beta / 2.0, 1.0 + beta / 2.0], axis=-1) * ob[:, None]
+    nus, amps, rows = [], [], []
+
+    def add(freq: np.ndarray, row: int, amp: np.ndarray) -> None:
+        nus.append(np.broadcast_to(freq, (n_root,)))
+        amps.append(np.broadcast_to(amp, (n_root,)))
+        rows.append(row)
+
+    add(ob, 0, -g * tf * np.ones(n_root))  # T0_bar T / 2, T = 1 - gamma cos (4.2-1a)
+    add(ob, 1, -g * eps * np.ones(n_root))  # eps T (5.3-4a)
+    add(ob, 2, eps * g * ob**2)  # eps T'' (5.3-4a)
+    for i in range(3):
+        Wi, Ai = W[:, i], A[:, i]
+        add(Wi, 3, -Ai * Wi**2)  # psi'' (4.2-6)
+        add(Wi, 5, kt * Ai)  # K T0_bar T psi / 2 (3.0-3b, c)
+        add(ob + Wi, 5, -0.5 * g * kt * Ai)
+        add(ob - Wi, 5, -0.5 * g * kt * Ai)
+        for p in range(3):
+            half = 0.5 * Ai * A[:, p] * Wi * W[:, p]
+            add(Wi - W[:, p], 4, half)  # psi'^2 = 1/2 sum A_i A_p W_i W_p [cos(-) - cos(+)]
+            add(Wi + W[:, p], 4, -half)
+    nu = np.stack(nus, axis=1)  # (n, H)
+    amp = np.stack(amps, axis=1)
+    res = np.abs(np.abs(nu) - w[:, None]) <= _RES_TOL * w[:, None]
+    G = np.abs(np.sum(np.where(res, amp * h[:, rows], 0.0), axis=1))  # real amplitudes
+
+    # the beam Floquet harmonic of the root's exponent (families 2 and 13)
+    beam = (table.r >= 1) & np.isin(table.family, (2, 13)) & (beam_amplitude > 0)
+    if beam.any() and np.abs(table.s[beam]).max() > S:
+        raise ValueError(f"S = {S}: must be at least the table's largest |s| = "
+                         f"{int(np.abs(table.s[beam]).max())}")
+    if beam.any():
+        system = beam_system(model, N)
+        r = table.r[beam]
+        alpha = params.alpha(ob[beam])[np.arange(r.size), r - 1]
+        Cs, mu = floquet_vectors(system.A0, system.B, alpha * ob[beam], ob[beam], g, S)
+        s = table.s[beam]
+        c = beam_amplitude * Cs[np.arange(r.size), s + S]  # (nbeam, N + 1), units of L
+        f = mu + s * ob[beam]  # (4.1-10/11), at the exponent refined at the root
+        hb = h[beam]
+        qb, qdd = slice(_NB, _NB + N + 1), slice(_NB + N + 1, nb)
+        Gb = np.abs(np.sum(c * (hb[:, qb] - (f**2)[:, None] * hb[:, qdd]), axis=1))
+        G[beam] += Gb  # independent motions: magnitudes add (see Notes)
+    rate = G / (2.0 * w)  # y ~ |G| / (2 omega) tau sin(omega tau) (7.1)
+    severity = rate * model.mass.L * model.omega_1 * scale  # m/s at the shell surface
+    top = severity.max()
+    rel = severity / top if top > 0 else np.zeros(n_root)
+    return RootSeverity(severity=severity, severity_rel=rel, rate=rate,
+                        mode_type=tuple(np.asarray(_COMPONENTS)[typ].tolist()), psi0=psi0,
+                        beam_amplitude=beam_amplitude, threshold=threshold)
+
+
+@dataclass(frozen=True)
+class ResonanceBand:
+    """Roots of the stability table within a resolution of each other in Omega.
+
+    Attributes
+    ----------
+    Omega_lo, Omega_hi : float
+        Lowest and highest root of the band (rad/s).
+    Omega_peak : float
+        The root of largest severity (rad/s).
+    severity : float
+        Largest severity of the band's roots (m/s).
+    severity_rel : float
+        That over the largest of the table (dimensionless).
+    n_roots : int
+        Active roots in the band.
+    families : tuple of int
+        Families of the band's roots (ascending).
+    modes : tuple of (int, int, int, int, str)
+        Shell modes (cylinder, j, k, branch, type) of the band's roots, most severe first.
+    family : int
+        Family of the most severe root.
+    cause : str
+        Its forcing in words (:data:`FAMILY_CAUSES`).
+    """
+
+    Omega_lo: float
+    Omega_hi: float
+    Omega_peak: float
+    severity: float
+    severity_rel: float
+    n_roots: int
+    families: tuple[int, ...]
+    modes: tuple[tuple[int, int, int, int, str], ...]
+    family: int
+    cause: str
+
+    def to_dict(self) -> dict:
+        """JSON-ready mapping (Omega in rad/s and Hz)."""
+        two_pi = 2.0 * np.pi
+        return {
+            "Omega_lo": float(self.Omega_lo), "Omega_hi": float(self.Omega_hi),
+            "Omega_peak": float(self.Omega_peak), "Omega_peak_hz": float(self.Omega_peak / two_pi),
+            "Omega_lo_hz": float(self.Omega_lo / two_pi),
+            "Omega_hi_hz": float(self.Omega_hi / two_pi),
+            "severity": float(self.severity), "severity_rel": float(self.severity_rel),
+            "n_roots": int(self.n_roots), "families": [int(f) for f in self.families],
+            "modes": [[int(a), int(b), int(c), int(e), str(t)] for a, b, c, e, t in self.modes],
+            "family": int(self.family), "cause": self.cause,
+        }
+
+
+def resonance_bands(table: StabilityTable, sev: RootSeverity, *,
+                    resolution: float = DEFAULT_RESOLUTION,
+                    half_power: np.ndarray | None = None) -> tuple[ResonanceBand, ...]:
+    """Merge the active roots into bands of Omega, most severe band first.
+
+    Parameters
+    ----------
+    table : StabilityTable
+        The roots.
+    sev : RootSeverity
+        Their severity (:func:`root_severity`); only active roots (severity_rel >= threshold)
+        form bands.
+    resolution : float
+        Relative resolution in Omega (dimensionless), > 0: consecutive active roots closer than
+        max(resolution, half_power) times Omega join one band (single linkage).
+    half_power : numpy.ndarray, optional
+        Shape (n,), relative half-power width of each root's mode (2 zeta for a damping ratio
+        zeta); the shells are undamped in the memo, so the default is 0.
+
+    Returns
+    -------
+    tuple of ResonanceBand
+        Sorted by decreasing severity.
+
+    References
+    ----------
+    Tech Memo 104, section 7.1; the half-power bandwidth 2 zeta omega: L. Meirovitch, *Elements
+    of Vibration Analysis*, 2nd ed., McGraw-Hill, 1986, sec. 3.3.
+    """
+    resolution = positive("resolution", resolution)
+    if len(sev) != len(table):
+        raise ValueError(f"sev: {len(sev)} roots, the table has {len(table)}")
+    hp = np.zeros(len(table)) if half_power is None else np.asarray(half_power, dtype=float)
+    if hp.shape != (len(table),) or not np.all(np.isfinite(hp)) or np.any(hp < 0):
+        raise ValueError("half_power: must be finite, >= 0, one value per root")
+    idx = np.flatnonzero(sev.active)
+    if idx.size == 0:
+        return ()
+    idx = idx[np.argsort(table.Omega[idx], kind="stable")]
+    Om = table.Omega[idx]
+    tol = np.maximum(resolution, hp[idx])
+    start = np.ones(idx.size, dtype=bool)
+    start[1:] = np.diff(Om) > np.maximum(tol[1:], tol[:-1]) * Om[:-1]
+    bounds = np.append(np.flatnonzero(start), idx.size)
+    bands = []
+    for a, b in zip(bounds[:-1], bounds[1:], strict=True):
+        members = idx[a:b][np.argsort(-sev.severity[idx[a:b]], kind="stable")]
+        top = members[0]
+        modes: list[tuple[int, int, int, int, str]] = []
+        for n in members:
+            key = (int(table.cylinder[n]), int(table.j[n]), int(table.k[n]),
+                   int(table.branch[n]), sev.mode_type[n])
+            if key not in modes:
+                modes.append(key)
+        bands.append(ResonanceBand(
+            Omega_lo=float(Om[a]), Omega_hi=float(Om[b - 1]), Omega_peak=float(table.Omega[top]),
+            severity=float(sev.severity[top]), severity_rel=float(sev.severity_rel[top]),
+            n_roots=int(b - a), families=tuple(sorted({int(table.family[n]) for n in members})),
+            modes=tuple(modes), family=int(table.family[top]),
+            cause=FAMILY_CAUSES[int(table.family[top])]))
+    bands.sort(key=lambda x: -x.severity)
+    return tuple(bands)
+
+
+@dataclass(frozen=True)
+class SeverityResult:
+    """The severity of a stability table: reference amplitudes, threshold and bands.
+
+    Attributes
+    ----------
+    roots : RootSeverity
+        Per-root severity (the table's ``severity`` and ``severity_rel`` columns).
+    bands : tuple of ResonanceBand
+        The active roots merged into bands, most severe first.
+    resolution : float
+        Relative resolution in Omega of the bands (dimensionless).
+    """
+
+    roots: RootSeverity
+    bands: tuple[ResonanceBand, ...]
+    resolution: float
+
+    def to_dict(self) -> dict:
+        """JSON-ready: reference amplitudes, threshold, resolution and every band."""
+        return {**self.roots.to_dict(), "resolution": float(self.resolution),
+                "causes": {str(k): v for k, v in FAMILY_CAUSES.items()},
+                "bands": [b.to_dict() for b in self.bands]}
+
+    def band_rows(self) -> list[dict]:
+        """One flat mapping per band (the rows of resonance-bands.csv), most severe first."""
+        rows = []
+        for rank, b in enumerate(self.bands, start=1):
+            d = b.to_dict()
+            top = b.modes[0]
+            rows.append({
+                "rank": rank, "Omega_lo_rad_s": d["Omega_lo"], "Omega_hi_rad_s": d["Omega_hi"],
+                "Omega_peak_rad_s": d["Omega_peak"], "Omega_peak_hz": d["Omega_peak_hz"],
+                "severity_m_s": d["severity"], "severity_rel": d["severity_rel"],
+                "n_roots": d["n_roots"], "family": d["family"],
+                "families": " ".join(str(f) for f in b.families),
+                "cylinder": top[0], "j": top[1], "k": top[2], "branch": top[3],
+                "mode_type": top[4],
+                "modes": " ".join(f"{c}/{j}/{k}/{m}" for c, j, k, m, _ in b.modes),
+                "cause": b.cause})
+        return rows
+
+
+def with_severity(table: StabilityTable, sev: RootSeverity) -> StabilityTable:
+    """The table with its severity columns and ``active = severity_rel >= threshold``.
+
+    Parameters
+    ----------
+    table : StabilityTable
+        The roots.
+    sev : RootSeverity
+        Their severity (:func:`root_severity` of this table).
+
+    Returns
+    -------
+    StabilityTable
+
+    References
+    ----------
+    Tech Memo 104, section 7.1 (issue 13: active means a forcing above the threshold).
+    """
+    from dataclasses import replace
+
+    if len(sev) != len(table):
+        raise ValueError(f"sev: {len(sev)} roots, the table has {len(table)}")
+    return replace(table, active=sev.active, severity=sev.severity,
+                   severity_rel=sev.severity_rel)
+
+
+def severity_analysis(model: BoosterModel, table: StabilityTable, params: ExcitationParameters,
+                      *, psi0: float = 0.01, beam_amplitude: float = 1e-4,
+                      threshold: float = DEFAULT_THRESHOLD,
+                      resolution: float = DEFAULT_RESOLUTION
+                      ) -> tuple[StabilityTable, SeverityResult]:
+    """Severity of every root, the table with it attached and the bands (the pipeline's call).
+
+    Parameters
+    ----------
+    model : BoosterModel
+        The derived model.
+    table : StabilityTable
+        The roots (:func:`flexbooster.memo.stability.unstable_frequencies`).
+    params : ExcitationParameters
+        The parameter function the roots were solved with.
+    psi0 : float
+        Reference initial pitch angle (rad).
+    beam_amplitude : float
+        Reference norm of the beam Floquet vector (units of L), >= 0.
+    threshold : float
+        severity_rel at and above which a root is active (dimensionless), >= 0.
+    resolution : float
+        Relative resolution of the bands in Omega (dimensionless), > 0.
+
+    Returns
+    -------
+    table : StabilityTable
+        With ``severity``, ``severity_rel`` and the new ``active``.
+    result : SeverityResult
+
+    References
+    ----------
+    Tech Memo 104, sections 6.2, 7.1, 7.3.
+    """
+    sev = root_severity(model, table, params, psi0=psi0, beam_amplitude=beam_amplitude,
+                        threshold=threshold)
+    bands = resonance_bands(table, sev, resolution=resolution)
+    return with_severity(table, sev), SeverityResult(sev, bands, float(resolution))
