@@ -22,6 +22,7 @@ from flexbooster.danger import (
 )
 from flexbooster.memo.beam_action import BeamActionBand
 from flexbooster.memo.pitch import PitchBand
+from flexbooster.memo.severity import ResonanceBand
 
 OPERATING = (10.0, 100.0)
 
@@ -108,6 +109,19 @@ def test_resonance_and_vehicle_adapters_duck_typed():
     assert v.cause_text.startswith("instability region")
     assert (r.mechanism, r.severity, r.growth_rate) == ("resonance", 5.0, None)
     assert r.cause_text == "resonance (memo 7): family 3"
+
+
+def test_resonance_band_of_the_severity_module_in_words():
+    # a ResonanceBand (memo.severity) as the danger ranking shows it: the most severe root's
+    # mode and its family's cause, Omega edges and severity copied exactly
+    band = ResonanceBand(Omega_lo=379.1, Omega_hi=379.3, Omega_peak=379.2, severity=6.4e-3,
+                         severity_rel=1.0, n_roots=2, families=(3, 7),
+                         modes=((1, 1, 0, 1, "axial"), (1, 1, 1, 1, "radial")), family=3,
+                         cause="thrust pulsation at the aft edge")
+    (d,) = danger_bands(operating_range=OPERATING, resonance_bands=[band])
+    assert (d.Omega_lo, d.Omega_hi, d.severity) == (379.1, 379.3, 6.4e-3)
+    assert d.mode_text == "cylinder 1 shell mode j = 1, k = 0, m = 1 (axial)"
+    assert d.cause_text == "resonance (memo 7): family 3: thrust pulsation at the aft edge"
 
 
 @pytest.mark.parametrize(

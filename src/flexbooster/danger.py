@@ -196,7 +196,7 @@ def _generic(items: Sequence, source: str, mechanism: str, operating,
         else:
             item_cause = None
         if mechanism == "resonance":
-            family = _attr(item, "family", "cause_text")
+            family = _attr(item, "cause_text", "family")
             cause = "resonance (memo 7)" + (f": {family}" if family is not None else "")
         else:
             cause = item_cause or str(_attr(item, "cause_text",

@@ -505,6 +505,17 @@ class ResonanceBand:
     family: int
     cause: str
 
+    @property
+    def mode_text(self) -> str:
+        """The most severe root's shell mode in words (cylinder, j, k, branch m, type)."""
+        c, j, k, m, t = self.modes[0]
+        return f"cylinder {c} shell mode j = {j}, k = {k}, m = {m} ({t})"
+
+    @property
+    def cause_text(self) -> str:
+        """The family of the most severe root and its forcing in words."""
+        return f"family {self.family}: {self.cause}"
+
     def to_dict(self) -> dict:
         """JSON-ready mapping (Omega in rad/s and Hz)."""
         two_pi = 2.0 * np.pi
