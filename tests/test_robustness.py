@@ -331,7 +331,7 @@ CLI_PROBES = [
     (["run", "--bogus"], "--bogus"),
     (["run", "--max-seconds", "abc"], "--max-seconds"),
     (["run", "--max-seconds", "nan"], "--max-seconds"),
-    (["stability", "--omega-min", "1"], "--omega-max"),
+    (["stability", "--omega-min", "3000"], "--omega-min"),  # above the case's omega_max
     (["modes", "--k-max", "999"], "--k-max"),
     (["modes", "--f-max", "-3"], "--f-max"),
 ]

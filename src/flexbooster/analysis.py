@@ -17,11 +17,12 @@ memo-table roots that fall inside each region (:func:`memo_roots_in_regions`).
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Callable
 
 import numpy as np
 
-from . import cost
+from . import cost, floquet
 from ._parallel import TaskPool
 from ._threads import blas_threads
 from .case import Case
@@ -456,7 +457,8 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
     boundaries : bool
         Also trace the boundary curves in (Omega, gamma) for the chart, at
         :data:`flexbooster.memo.charts.VEHICLE_CHART_LEVELS` levels up to
-        :data:`flexbooster.memo.charts.VEHICLE_CHART_GAMMA_MAX` (or the case's gamma if larger).
+        :data:`flexbooster.memo.charts.VEHICLE_CHART_GAMMA_MAX` as far as the stability
+        certificate allows (:func:`_chart_gamma`; at least the case's gamma).
         Only the regions that exist at
         that gamma have curves (:func:`flexbooster.floquet.region_boundaries`), so the curves
         are traced only when a search at that gamma finds one.
@@ -492,18 +494,36 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
         vehicle = vehicle_from_case(case)
         try:
             found = vehicle_regions(vehicle, gamma=t.gamma, **settings)
-            top = max(charts.VEHICLE_CHART_GAMMA_MAX, t.gamma)  # the chart's largest gamma
-            if boundaries and vehicle_regions(vehicle, gamma=top, **settings).regions:
+            top = _chart_gamma(found)
+            if boundaries and top > 0.0 and (top == t.gamma and found.regions or top > t.gamma
+                                             and vehicle_regions(vehicle, gamma=top,
+                                                                 **settings).regions):
                 # region_boundaries traces the regions of gamma_max: none there, no curve
                 found = vehicle_regions(vehicle, gamma=t.gamma, boundaries=True,
                                         gamma_max=top, n_gamma=charts.VEHICLE_CHART_LEVELS,
                                         **settings)
+            found = dataclasses.replace(found, chart_gamma_max=top if boundaries else None)
         except ValueError as exc:
             if "buckles" in str(exc):
                 raise CaseError("thrust.F0", case.F0, "the steady thrust buckles the vehicle "
                                 f"({exc}): no parametric regions") from None
             raise
     return found
+
+
+def _chart_gamma(found: VehicleRegions) -> float:
+    """Top gamma of the vehicle's (Omega, gamma) chart: the case's gamma, raised towards
+    :data:`~flexbooster.memo.charts.VEHICLE_CHART_GAMMA_MAX` only as far as every harmonic is
+    proven free of regions (the stability certificate of the excitation per unit gamma,
+    :func:`flexbooster.floquet.stability_certificate`): above that a search at the chart's
+    top can cost minutes (a thin-walled vehicle: 300 s at gamma = 0.2) for regions that do
+    not reach the operating gamma."""
+    certified = 0.0
+    if found.damping_ratio > 0.0 and found.harmonics:
+        certified = min(floquet.stability_certificate(h.mass, h.damping, h.stiffness,
+                                                      h.excitation).amplitude_factor
+                        for h in found.harmonics)  # certified for gamma below 1 / rho
+    return float(max(found.gamma, min(charts.VEHICLE_CHART_GAMMA_MAX, 0.999 * certified)))
 
 
 def memo_roots_in_regions(table: StabilityTable, regions: VehicleRegions, *,

@@ -273,12 +273,12 @@ def _render(fig) -> tuple[str, bytes]:
     from matplotlib.collections import LineCollection, QuadMesh
 
     for ax in fig.axes:  # dense meshes and line bundles as an embedded image: small, fast SVG
-        for artist in ax.collections:
-            if isinstance(artist, QuadMesh | LineCollection):
+        for artist in ax.collections:  # (not the artists with a tooltip id: they stay vector)
+            if isinstance(artist, QuadMesh | LineCollection) and artist.get_gid() is None:
                 artist.set_rasterized(True)
         many = len(ax.lines) > 40  # many curves: one embedded image
         for line in ax.lines:  # and every line with thousands of points or markers
-            if many or np.size(line.get_xdata()) > 2000:
+            if (many or np.size(line.get_xdata()) > 2000) and line.get_gid() is None:
                 line.set_rasterized(True)
     if fig.get_layout_engine() is None:
         fig.set_layout_engine("constrained")

@@ -246,9 +246,13 @@ def print_stability(results: Results, console: Console) -> None:
         box=box.SIMPLE_HEAD,
         pad_edge=False,
     )
-    for col in BAND_COLUMNS:
-        table.add_column(col, justify="left" if col in ("cause", "mode (cyl, j, k, m, type)")
-                         else "right")
+    words = ("cause", "mode (cyl, j, k, m, type)")
+    keep = [n for n, col in enumerate(BAND_COLUMNS)  # the band's range only where it fits
+            if console.width >= 120 or col != "band rad/s"]
+    for n in keep:  # numbers never cut (no wrap); the words wrap
+        col = BAND_COLUMNS[n]
+        table.add_column(col, justify="left" if col in words else "right",
+                         no_wrap=col not in words, overflow="fold")
     for row in rows:
-        table.add_row(*row)
+        table.add_row(*(row[n] for n in keep))
     console.print(table)

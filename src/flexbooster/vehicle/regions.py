@@ -323,6 +323,9 @@ class VehicleRegions:
         Per harmonic (as ``harmonics``): the all-Omega stability bound of
         :func:`flexbooster.floquet.stability_certificate` at gamma (never certified without
         damping).
+    chart_gamma_max : float or None
+        Largest gamma of the (Omega, gamma) chart the pipeline asked for (dimensionless); None
+        when not set.
     """
 
     regions: tuple
@@ -336,6 +339,7 @@ class VehicleRegions:
     supported_forward_end: bool
     forced_axial: ForcedAxial | None = None
     certificates: tuple = ()
+    chart_gamma_max: float | None = None
 
     def harmonic(self, k: int) -> HarmonicSystem:
         """The system of harmonic k.
@@ -368,6 +372,8 @@ class VehicleRegions:
                                "mode_type": [str(v) for v in h.mode_type]}
                               for h in self.harmonics],
                 "curves": [c.to_dict() for c in self.curves],
+                "chart_gamma_max": (None if self.chart_gamma_max is None
+                                    else float(self.chart_gamma_max)),
                 "forced_axial": (None if self.forced_axial is None
                                  else self.forced_axial.to_dict()),
                 "certificates": [dict(c.to_dict(), k=int(h.k)) for h, c in

@@ -26,6 +26,12 @@ def _key(k: int, kind: str, order: int, modes: tuple) -> tuple:
     return int(k), str(kind), int(order), tuple(int(m) for m in modes)
 
 
+def _top(regions) -> float:
+    """The chart's top gamma as the pipeline stored it (else the constant)."""
+    top = getattr(regions, "chart_gamma_max", None)
+    return VEHICLE_CHART_GAMMA_MAX if top is None else float(top)
+
+
 def vehicle_region_chart(regions: VehicleRegions, ax: Axes | None = None) -> Figure:
     """Shade each region between its boundary curves, Omega in Hz against gamma.
 
@@ -77,13 +83,12 @@ def vehicle_region_chart(regions: VehicleRegions, ax: Axes | None = None) -> Fig
         fig.colorbar(cmap, ax=ax, label="largest growth rate at the case's gamma (1/s)")
     if not regions.curves and not regions.regions:
         ax.text(0.5, 0.5, f"no instability region in the range up to gamma = "
-                f"{max(VEHICLE_CHART_GAMMA_MAX, gamma):g}\n(damping ratio "
-                f"{regions.damping_ratio:g})",
+                f"{_top(regions):.3g}\n(damping ratio {regions.damping_ratio:g})",
                 transform=ax.transAxes, ha="center", va="center", fontsize=9)
     ks = [h.k for h in regions.harmonics]
     ax.set_xscale("log")
     ax.set_xlim(regions.omega_min * _TO_HZ, regions.omega_max * _TO_HZ)
-    ax.set_ylim(0.0, max(VEHICLE_CHART_GAMMA_MAX, 1.1 * gamma))
+    ax.set_ylim(0.0, max(VEHICLE_CHART_GAMMA_MAX, 1.1 * gamma, _top(regions)))
     ax.set_xlabel("thrust frequency Omega (Hz)")
     ax.set_ylabel("gamma (pulsation amplitude)")
     ax.set_title("Vehicle parametric instability regions"
