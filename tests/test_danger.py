@@ -163,7 +163,7 @@ def test_verdicts_not_computed_stable_unstable():
                        resonance_bands=[SimpleNamespace(Omega_lo=50, Omega_hi=51, severity=2)])
     (r,) = [t for k, _, t in mechanism_verdicts(res, computed={"resonance": True})
             if k == "resonance"]
-    assert r == "unstable: 1 resonance (memo 7) in the operating range, largest severity 2"
+    assert r == "unstable: 1 resonance (memo 7) in the operating range, largest severity 2 m/s"
 
 
 def test_summary_to_dict_is_json():

@@ -28,6 +28,7 @@ import inspect
 import json
 import pkgutil
 import tomllib
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -249,6 +250,8 @@ def test_stage_passes_the_case_settings_and_defaults(monkeypatch, probe_finds):
 
     rec = _Recorder(probe_finds)
     monkeypatch.setattr(analysis, "vehicle_regions", rec)
+    # the chart's top gamma as far as the certificate allows (tested below): here the constant
+    monkeypatch.setattr(analysis, "_chart_gamma", lambda found: VEHICLE_CHART_GAMMA_MAX)
     case = load_case(small_case_data())
     analyze_vehicle_regions(case, boundaries=True)
     expected = dict(F0=case.F0, omega_min=5.0, omega_max=2000.0, k_min=2, k_max=10,
@@ -269,6 +272,32 @@ def test_stage_passes_the_case_settings_and_defaults(monkeypatch, probe_finds):
     rec.calls.clear()
     analyze_vehicle_regions(load_case(small_case_data(k_max=40)), k_min=3, boundaries=False)
     assert (rec.calls[0]["k_min"], rec.calls[0]["k_max"]) == (3, 10)  # min(k_max, 10)
+
+
+@pytest.mark.parametrize("path", [None, "titan-inch-pound.toml"], ids=["default", "titan"])
+def test_chart_top_gamma_is_certified_free_of_regions(path):
+    """The chart's top gamma (analysis._chart_gamma) is the case's gamma raised only as far as
+    the all-Omega stability certificate holds: a search at that gamma finds every harmonic
+    certified (floquet.stability_certificate of the scaled system, an independent call) and
+    no region; the default vehicle reaches the constant, the thin Titan shells stop below."""
+    import flexbooster.analysis as analysis
+    from flexbooster.vehicle import vehicle_regions as regions_of
+
+    data = (small_case_data() if path is None else
+            tomllib.loads((Path(__file__).parent / "data" / "cases" / path).read_text()))
+    data["vehicle"] = {"n_modes": 6, "k_max": 4}
+    case = load_case(data)
+    found = analyze_vehicle_regions(case, boundaries=False)
+    top = analysis._chart_gamma(found)
+    assert case.thrust.gamma <= top <= VEHICLE_CHART_GAMMA_MAX
+    t = case.thrust
+    at_top = regions_of(vehicle_from_case(case), F0=case.F0, gamma=top, omega_min=t.omega_min,
+                        omega_max=t.omega_max, k_min=2, k_max=4, n_modes=6, damping_ratio=0.01)
+    assert all(c.certified for c in at_top.certificates) and at_top.regions == ()
+    if path is None:
+        assert top == VEHICLE_CHART_GAMMA_MAX
+    else:
+        assert top < VEHICLE_CHART_GAMMA_MAX
 
 
 def test_stage_warns_instead_of_failing(monkeypatch):

@@ -64,7 +64,8 @@ class DangerBand:
         Largest amplitude growth rate inside the band (1/s); None where the source gives none
         (a memo resonance).
     severity : float or None
-        Severity of a resonance (dimensionless, source-defined); None for a parametric region.
+        Severity of a resonance (m/s: the secular growth rate of the resonant shell mode's
+        surface displacement, :mod:`flexbooster.memo.severity`); None for a parametric region.
     mode_text : str
         The mode(s) in words, e.g. "rigid pitch + bending 1" (bending r: the r-th loaded
         bending mode of the beam-action system, memo 4.1).
@@ -316,7 +317,7 @@ def mechanism_verdicts(bands: Sequence[DangerBand], *,
         if rates:
             text += f", largest growth rate {max(rates):.3g} 1/s"
         elif sev:
-            text += f", largest severity {max(sev):.3g}"
+            text += f", largest severity {max(sev):.3g} m/s"
         out.append((key, words, text))
     return tuple(out)
 

@@ -112,7 +112,7 @@ UNITS: dict[str, str] = {
     "danger.operating_range, danger.bands.Omega_lo, Omega_hi": "rad/s",
     "danger.bands.Omega_lo_hz, Omega_hi_hz": "Hz",
     "danger.bands.growth_rate": "1/s",
-    "danger.bands.severity": "1",
+    "danger.bands.severity": "m/s (memo resonances, issue 13)",
 }
 
 
