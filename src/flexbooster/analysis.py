@@ -157,8 +157,9 @@ def analyze(
         (Omega, gamma) chart is the costly part); ``results.figures`` is None without it.
     workers : int
         Processes for the independent stages (:class:`flexbooster._parallel.TaskPool`): with
-        2 or more, the beam-action chart is traced in a worker while this process computes
-        the beam action and the stability table.  The results are the same, bit for bit.
+        2 or more, the beam-action chart, the beam-action band search and the vehicle
+        regions run in workers while this process computes the beam-action exponents, the
+        stability table and its severity.  The results are the same, bit for bit.
     vehicle : bool
         Compute the vehicle's parametric instability regions (:func:`analyze_vehicle_regions`,
         with their (Omega, gamma) boundary curves when ``figures``) and the memo-table roots
