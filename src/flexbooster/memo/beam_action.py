@@ -613,10 +613,13 @@ def _rotation(mu: np.ndarray, t: np.ndarray) -> tuple[np.ndarray, ...]:
 
 
 def _monodromy_half(mu: np.ndarray, Bt: np.ndarray, Ob: np.ndarray, gam: np.ndarray,
-                    n_steps: int) -> np.ndarray:
+                    n_steps: np.ndarray) -> np.ndarray:
     """Fundamental matrix at T/2 in modal coordinates, Lawson RK4 with n_steps equal steps.
 
     The state is z = (eta, eta') with eta'' + diag(mu) eta = gamma cos(Omega_bar tau) Bt eta.
+    ``n_steps`` (P,) is the step count of each point, in descending order: all points advance
+    together, and a point leaves the batch (its half-period map stored) once its own count of
+    steps is done, so the loop runs max(n_steps) times whatever the spread of the counts.
     Returns shape (P, 2n, 2n).
     """
     P = Ob.size
@@ -628,16 +631,27 @@ def _monodromy_half(mu: np.ndarray, Bt: np.ndarray, Ob: np.ndarray, gam: np.ndar
     c2, s2, _ = (e.T[:, :, None] for e in _rotation(mu[None, :], 0.5 * h[:, None]))  # E(h/2)
     hh = h[None, :, None]
 
-    def force(tau, x):  # velocity slope gamma cos(Omega_bar tau) Bt eta (the position slope is 0)
-        coef = (gam * np.cos(Ob * tau))[None, :, None]
-        return coef * (Bt @ x.reshape(n, -1)).reshape(x.shape)
+    def force(tau, y):  # velocity slope gamma cos(Omega_bar tau) Bt eta (the position slope is 0)
+        coef = (gam * np.cos(Ob * tau))[None, :, None]  # gam, Ob: the current batch
+        return coef * (Bt @ y.reshape(n, -1)).reshape(y.shape)
 
     x = np.zeros((n, P, 2 * n), dtype=dtype)
     v = np.zeros((n, P, 2 * n), dtype=dtype)
     idx = np.arange(n)
     x[idx, :, idx] = 1.0
     v[idx, :, n + idx] = 1.0
-    for k in range(n_steps):  # Lawson (integrating-factor) RK4, Lawson (1967)
+    out = np.empty((P, 2 * n, 2 * n), dtype=dtype)
+    ends = np.searchsorted(-n_steps, -np.arange(int(n_steps[0]) + 1), side="left")
+    p = P  # the points still integrating: a prefix, as the counts descend
+    for k in range(int(n_steps[0])):  # Lawson (integrating-factor) RK4, Lawson (1967)
+        if ends[k] < p:  # points whose k steps are done: store them, shrink the batch
+            q = ends[k]
+            out[q:p] = np.concatenate([x[:, q:p], v[:, q:p]], axis=0).transpose(1, 0, 2)
+            p = q
+            x, v = x[:, :p], v[:, :p]
+            c1, s1, m1, c2, s2, hh = (a[:, :p] for a in (c1, s1, m1, c2, s2, hh))
+            h, gam, Ob = h[:p], gam[:p], Ob[:p]
+
         t0 = k * h
         a1 = force(t0, x)  # k1 = N(t) z
         a2 = force(t0 + 0.5 * h, c2 * x + s2 * (v + 0.5 * hh * a1))  # N E(h/2)(z + h/2 k1)
@@ -649,7 +663,8 @@ def _monodromy_half(mu: np.ndarray, Bt: np.ndarray, Ob: np.ndarray, gam: np.ndar
         # z_new = E(h) z + h/6 [E(h) k1 + 2 E(h/2)(k2 + k3) + k4]
         x = xf + hh / 6.0 * (s1 * a1 + s2 * a23)
         v = vf + hh / 6.0 * (c1 * a1 + c2 * a23 + a4)
-    return np.concatenate([x, v], axis=0).transpose(1, 0, 2)
+    out[:p] = np.concatenate([x, v], axis=0).transpose(1, 0, 2)
+    return out
 
 
 def _multipliers_from_half(Phi: np.ndarray) -> np.ndarray:
@@ -779,12 +794,11 @@ def _auto_steps(mu: np.ndarray, Bt: np.ndarray, Ob: np.ndarray, gam: np.ndarray,
 def _multipliers(mu, Bt, Ob, gam, steps, chunk) -> np.ndarray:
     n = mu.size
     rho = np.empty((Ob.size, 2 * n), dtype=complex)
-    for ns in np.unique(steps):  # groups of equal step count, each batched
-        where = np.nonzero(steps == ns)[0]
-        for start in range(0, where.size, chunk):
-            sel = where[start:start + chunk]
-            Phi = _monodromy_half(mu, Bt, Ob[sel], gam[sel], int(ns))
-            rho[sel] = _multipliers_from_half(Phi)
+    order = np.argsort(-steps, kind="stable")  # descending counts: batches of similar cost
+    for start in range(0, order.size, chunk):
+        sel = order[start:start + chunk]
+        Phi = _monodromy_half(mu, Bt, Ob[sel], gam[sel], steps[sel])
+        rho[sel] = _multipliers_from_half(Phi)
     return rho
 
 
