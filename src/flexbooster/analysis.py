@@ -30,7 +30,7 @@ from .danger import danger_summary
 from .errors import AnalysisWarning
 from .memo import charts
 from .memo.beam import beam_modes
-from .memo.beam_action import beam_action_analysis, pipeline_bands
+from .memo.beam_action import PeriodMapOverflowError, beam_action_analysis, pipeline_bands
 from .memo.model import BoosterModel
 from .memo.pitch import pitch_analysis
 from .memo.responses import SimulationResult, excitation_parameters, simulate
@@ -208,7 +208,7 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
     action = None
     if beam_action:
         step(STAGES[3])
-        action = beam_action_analysis(model, bands=True if bands is None else bands.result)
+        action = _beam_action(model, True if bands is None else bands.result)
     table = None
     params = None
     if stability and action is not None:
@@ -332,8 +332,21 @@ def simulate_case(case: Case, Omega: float, *, tau_max: float, n_out: int = 401,
     with blas_threads(1):
         model = cost.derived_model(case)
         cost.check_physical(model)  # a load beyond the structure: a CaseError (issue 18)
-        params = excitation_parameters(model, beam_action_analysis(model, bands=False))
+        params = excitation_parameters(model, _beam_action(model, False))
         return simulate(model, Omega, tau_max, n_out=n_out, psi0=psi0, params=params)
+
+
+def _beam_action(model, bands):
+    """:func:`beam_action_analysis`; a period map beyond floating point is the load's CaseError."""
+    from .errors import CaseError
+
+    try:
+        return beam_action_analysis(model, bands=bands)
+    except PeriodMapOverflowError as exc:  # issue 18: a documented one-line refusal
+        raise CaseError("thrust.F0", model.F0,
+                        f"the beam action grows beyond the floating-point range ({exc}): far "
+                        "past what the booster carries at this gamma; lower thrust.F0 or "
+                        "thrust.gamma, or raise thrust.omega_min") from exc
 
 
 def analyze_vehicle(case: Case, *, k_max: int | None = None, f_max: float | None = None,

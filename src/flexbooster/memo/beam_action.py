@@ -52,6 +52,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
+import scipy.linalg
 
 from ..checks import count, nonnegative, positive
 from ..floquet import critical_amplitude, instability_regions, periodic_boundaries
@@ -62,6 +63,7 @@ if TYPE_CHECKING:
     from .model import BoosterModel
 
 __all__ = [
+    "PeriodMapOverflowError",
     "BeamActionSystem",
     "beam_action_system",
     "beam_system",
@@ -601,6 +603,12 @@ def _modal(system: BeamActionSystem) -> tuple[np.ndarray, np.ndarray]:
     return mu, Bt
 
 
+class PeriodMapOverflowError(ValueError):
+    """The beam-action period map left the floating-point range (a growth over one period
+    beyond ~1e308, or a transition matrix singular to working precision that QZ cannot
+    resolve): the case is far past a divergence or flutter load at that Omega and gamma."""
+
+
 def _rotation(mu: np.ndarray, t: np.ndarray) -> tuple[np.ndarray, ...]:
     """cos(w t), sin(w t)/w, -w sin(w t) for w^2 = mu (exact propagator of eta'' + mu eta = 0)."""
     w = np.sqrt(mu.astype(complex)) if np.iscomplexobj(mu) or np.any(mu < 0) else np.sqrt(mu)
@@ -668,15 +676,26 @@ def _monodromy_half(mu: np.ndarray, Bt: np.ndarray, Ob: np.ndarray, gam: np.ndar
 
 
 def _multipliers_from_half(Phi: np.ndarray) -> np.ndarray:
-    """Eigenvalues of the monodromy Phi(T/2) R Phi(T/2)^-1 R, R = diag(I, -I) (reversibility)."""
+    """Eigenvalues of the monodromy Phi(T/2) R Phi(T/2)^-1 R, R = diag(I, -I) (reversibility).
+
+    Where Phi(T/2) is singular to working precision (a growth over one period near 1/eps, e.g.
+    far past a flutter load: issue 18's fuzz), the same multipliers are the eigenvalues of the
+    pencil (Phi R, R Phi) (v = R Phi u), found by the QZ algorithm without an inverse.
+    """
     n2 = Phi.shape[-1]
     n = n2 // 2
     R = np.concatenate([np.ones(n), -np.ones(n)])
     PhiR = Phi * R[None, None, :]  # Phi R
-    # Phi(T/2) R Phi(T/2)^-1 R  ~ similar to  Phi(T); use solve for Phi^-1 R
-    inv = np.linalg.solve(Phi, np.broadcast_to(np.diag(R), Phi.shape))
-    Mon = PhiR @ inv
-    return np.linalg.eigvals(Mon)
+    try:  # Phi(T/2) R Phi(T/2)^-1 R  ~ similar to  Phi(T); use solve for Phi^-1 R
+        inv = np.linalg.solve(Phi, np.broadcast_to(np.diag(R), Phi.shape))
+        rho = np.linalg.eigvals(PhiR @ inv)
+        bad = ~np.all(np.isfinite(rho) & (rho != 0.0), axis=-1)
+    except np.linalg.LinAlgError:  # some point singular: each by the pencil below
+        rho = np.zeros(Phi.shape[:-1], dtype=complex)
+        bad = np.ones(Phi.shape[0], dtype=bool)
+    for i in np.flatnonzero(bad):  # rare: QZ per point, (Phi R) u = rho (R Phi) u
+        rho[i] = scipy.linalg.eigvals(PhiR[i], R[:, None] * Phi[i])
+    return rho
 
 
 def monodromy_exponents(system: BeamActionSystem, Omega: np.ndarray, gamma: np.ndarray,
@@ -735,9 +754,12 @@ def monodromy_exponents(system: BeamActionSystem, Omega: np.ndarray, gamma: np.n
         steps = np.minimum(_auto_steps(mu, Bt, Ob, gam, step_phase), max_steps)
     with np.errstate(over="ignore", invalid="ignore"):  # overflow is reported below
         rho = _multipliers(mu, Bt, Ob, gam, steps, chunk)
-    if not np.all(np.isfinite(rho)):  # growth beyond the floating-point range
-        raise ValueError("Omega, gamma: the period map overflowed (a steady system far past "
-                         "divergence or flutter, or a growth rate beyond the float range)")
+    bad = ~np.all(np.isfinite(rho), axis=-1)
+    if np.any(bad):  # growth beyond the floating-point range
+        raise PeriodMapOverflowError(
+            f"Omega = {float(Ob[bad][0] * system.omega_1):.6g} rad/s, gamma = "
+            f"{float(gam[bad][0]):.6g}: the period map overflowed or is singular to working "
+            "precision (a growth over one thrust period beyond ~1e15)")
     return np.log(rho) / (2j * np.pi)
 
 
