@@ -84,6 +84,7 @@ __all__ = [
     "TONGUE_MAX_HARMONICS",
     "TONGUE_HILL_HARMONICS",
     "TONGUE_GAMMA_RTOL",
+    "TONGUE_RTOL_FLOOR",
     "BeamActionBand",
     "modal_damping",
     "beam_action_bands",
@@ -1124,6 +1125,11 @@ def _match_distance(a: np.ndarray, b: np.ndarray) -> np.ndarray:
 #: Harmonics of the harmonic balance of the low-frequency pitch tongues: K = 4, 8, .. up to
 #: this, until two successive K give the same edges to :data:`BAND_RTOL`.
 TONGUE_MAX_HARMONICS = 24
+#: Where round-off keeps two successive K from agreeing to :data:`BAND_RTOL` (a tongue far
+#: below the beam modes, Omega_bar ~ 1e-3, with heavy modal damping: the quadratic
+#: eigenproblem spans 1e3 in frequency, and its pitch roots wander by ~1e-8), the edges of the
+#: two successive K that agree best are used when they agree to this (relative to the centre).
+TONGUE_RTOL_FLOOR = 1e-6
 #: Relative tolerance of the critical gamma of a damped pitch tongue (bisection).
 TONGUE_GAMMA_RTOL = 1e-6
 #: Hill harmonics (s = -S..S) of the growth rate inside a pitch tongue (checked against S + 4
@@ -1147,11 +1153,13 @@ def _tongue_edges(A, C, B, *, period: str, centre: float, window: tuple[float, f
     elastic resonances of high order, narrower than the tolerance) are dropped; the tongue's
     edges are the nearest remaining roots below and above the centre, tracked as the
     harmonics K are raised (Bolotin 1964, sec. 4-5) until two successive K agree to
-    rtol * centre.  With ``harmonics`` = (K,) one truncation is used as it is.  Returns the
-    edges (None: no tongue) and the smaller K of the two that agree (as accurate, cheaper).
+    rtol * centre (or, where round-off stops that, to :data:`TONGUE_RTOL_FLOOR` at best).
+    With ``harmonics`` = (K,) one truncation is used as it is.  Returns the edges (None: no
+    tongue) and the smaller K of the two that agree (as accurate, cheaper).
     """
     n = A.shape[0]
     prev = None
+    best = (np.inf, None, 0)  # the closest agreement of two successive K (round-off floor)
     Ks = tuple(range(4, TONGUE_MAX_HARMONICS + 1, 4)) if harmonics is None else harmonics
     for K in Ks:
         r = periodic_boundaries(np.eye(n), C, A, B, period=period, n_harmonics=K,
@@ -1177,7 +1185,14 @@ def _tongue_edges(A, C, B, *, period: str, centre: float, window: tuple[float, f
             return (cur if cur[1] - cur[0] > rtol * centre else None), K - 4
         if cur is None and prev is None and K >= 8:
             return None, K  # no tongue at two successive K: below round-off or damped out
+        if cur is not None and prev is not None:
+            diff = max(abs(cur[0] - prev[0]), abs(cur[1] - prev[1]))
+            if diff < best[0]:
+                best = (diff, cur, K - 4)
         prev = cur
+    if best[0] <= TONGUE_RTOL_FLOOR * centre:  # converged to round-off, not to rtol
+        cur = best[1]
+        return (cur if cur[1] - cur[0] > TONGUE_RTOL_FLOOR * centre else None), best[2]
     raise ValueError(f"pitch tongue near Omega_bar = {centre!r}: its edges did not converge "
                      f"with {TONGUE_MAX_HARMONICS} harmonics")
 
