@@ -324,10 +324,10 @@ GOOD = dict(F0=1e6, gamma=0.05, omega_min=5.0, omega_max=50.0, k_max=2, n_modes=
 
 @pytest.mark.parametrize("name, value", [
     ("vehicle", "cyl"), ("F0", 0.0), ("F0", np.nan), ("gamma", 1.0), ("gamma", -0.1),
-    ("omega_min", -1.0), ("omega_max", np.inf), ("k_max", 1), ("k_min", 1), ("n_modes", 0),
+    ("omega_min", -1.0), ("omega_max", np.inf), ("k_max", 0), ("k_min", 0), ("n_modes", 0),
     ("damping_ratio", -0.01), ("damping_ratio", 1.5), ("boundaries", "yes"),
     ("rtol", np.nan), ("max_order", 0), ("damping_margin", 0.5), ("damping_margin", True),
-    ("axial", "no"),
+    ("axial", "no"), ("gimbal_gain", -0.5), ("gimbal_gain", np.nan),
 ])
 def test_bad_input_names_argument(name, value):
     """Bad input: ValueError whose message starts with the argument's name."""

@@ -76,8 +76,10 @@ VEHICLE_STAGE = "vehicle modes"
 #: instability regions (every case: ``[vehicle]`` or the memo's two cylinders).
 VEHICLE_REGIONS_STAGE = "vehicle instability regions"
 #: Harmonics k of the vehicle regions: k = VEHICLE_REGIONS_K_MIN..min(vehicle.k_max,
-#: VEHICLE_REGIONS_K_MAX) (:func:`flexbooster.vehicle.vehicle_regions` models k >= 2).
-VEHICLE_REGIONS_K_MIN = 2
+#: VEHICLE_REGIONS_K_MAX); k = 1 is the bending harmonic with the rigid pitch, the gimbal
+#: control and the follower thrust (:func:`flexbooster.vehicle.bending_regions`), k = 0 the
+#: forced axial resonances.
+VEHICLE_REGIONS_K_MIN = 1
 VEHICLE_REGIONS_K_MAX = 10
 #: Thin-shell theory (Donnell, memo 2.3) is trusted for h/R up to 1/20.
 THIN_SHELL_LIMIT = 1.0 / 20.0
@@ -416,7 +418,7 @@ def vehicle_warnings(survey: VehicleSurvey) -> list[AnalysisWarning]:
 def _vehicle_regions_stage(case: Case, *, boundaries: bool
                            ) -> tuple[VehicleRegions | None, list[AnalysisWarning]]:
     """The regions of :func:`analyze_vehicle_regions`, or None and a warning where they cannot
-    be computed (k_max < 2, or the steady thrust buckles a harmonic): the run goes on."""
+    be computed (k_max < 1, or the steady thrust buckles a harmonic): the run goes on."""
     from .errors import CaseError
 
     table = case.vehicle
@@ -425,7 +427,8 @@ def _vehicle_regions_stage(case: Case, *, boundaries: bool
         return None, [AnalysisWarning(
             "vehicle-regions-skipped", "vehicle.k_max",
             f"vehicle.k_max = {k_max} < {VEHICLE_REGIONS_K_MIN}: the parametric regions are "
-            f"computed for k >= {VEHICLE_REGIONS_K_MIN} only")]
+            f"computed for k >= {VEHICLE_REGIONS_K_MIN} only (k = 0 gives forced, not "
+            "parametric, resonances)")]
     try:
         return analyze_vehicle_regions(case, boundaries=boundaries), []
     except CaseError as exc:  # the thrust buckles the vehicle: a result, not a bad input
@@ -450,8 +453,8 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
     case : Case
         The validated case (SI).
     k_min : int
-        Lowest harmonic (dimensionless), >= 2 (:data:`VEHICLE_REGIONS_K_MIN`; a keyword so
-        that the range can widen when k = 0, 1 are modelled).
+        Lowest harmonic (dimensionless), >= 1 (:data:`VEHICLE_REGIONS_K_MIN`: k = 1 with the
+        case's gimbal gain ``thrust.K``, the rigid pitch and the follower thrust).
     k_max : int, optional
         Highest harmonic (dimensionless); default min(``vehicle.k_max``,
         :data:`VEHICLE_REGIONS_K_MAX`).
@@ -490,7 +493,8 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
                         f"the parametric regions need k_max >= {k_min}")
     t = case.thrust
     settings = dict(F0=case.F0, omega_min=t.omega_min, omega_max=t.omega_max, k_min=k_min,
-                    k_max=k_max, n_modes=table.n_modes, damping_ratio=table.damping_ratio)
+                    k_max=k_max, n_modes=table.n_modes, damping_ratio=table.damping_ratio,
+                    gimbal_gain=t.K)
     with blas_threads(1):
         vehicle = vehicle_from_case(case)
         try:
@@ -521,9 +525,16 @@ def _chart_gamma(found: VehicleRegions) -> float:
     not reach the operating gamma."""
     certified = 0.0
     if found.damping_ratio > 0.0 and found.harmonics:
-        certified = min(floquet.stability_certificate(h.mass, h.damping, h.stiffness,
-                                                      h.excitation).amplitude_factor
-                        for h in found.harmonics)  # certified for gamma below 1 / rho
+        # the certificate of gamma B1 has rho = gamma rho_1 (Q is linear in B): it certifies
+        # gamma' < gamma / rho = gamma * amplitude_factor; reused from the search (item 6 of
+        # issue 15), recomputed per unit gamma only where there is none (gamma = 0)
+        reuse = found.gamma > 0.0 and len(found.certificates) == len(found.harmonics)
+        certified = min(
+            found.gamma * c.amplitude_factor if reuse
+            else floquet.stability_certificate(h.mass, h.damping, h.stiffness,
+                                               h.excitation).amplitude_factor
+            for h, c in zip(found.harmonics, found.certificates if reuse
+                            else (None,) * len(found.harmonics), strict=True))
     return float(max(found.gamma, min(charts.VEHICLE_CHART_GAMMA_MAX, 0.999 * certified)))
 
 

@@ -94,8 +94,35 @@ class RegionMode:
                 "share": float(self.share)}
 
 
+class _ModalMatrices:
+    """The (M, C, A, B) of a periodic modal system with fields mass, damping, stiffness and
+    excitation (:class:`HarmonicSystem` and :class:`.bending.BendingSystem`)."""
+
+    __slots__ = ()
+
+    def matrices(self, gamma: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """(M, C, A, B) of the periodic system for pulsation amplitude gamma.
+
+        Parameters
+        ----------
+        gamma : float
+            Pulsation amplitude (dimensionless), 0 <= gamma < 1.
+
+        Returns
+        -------
+        tuple of ndarray
+            M (dimensionless), C (1/s), A (1/s^2), B = gamma B1 (1/s^2).
+
+        References
+        ----------
+        Bolotin (1964), sec. 8: B = gamma B1 for T = F0 (1 - gamma cos Omega t).
+        """
+        gamma = _gamma(gamma)
+        return self.mass, self.damping, self.stiffness, gamma * self.excitation
+
+
 @dataclass(frozen=True)
-class HarmonicSystem:
+class HarmonicSystem(_ModalMatrices):
     """Periodic modal system of one harmonic: M q'' + C q' + (A + gamma B1 cos Omega t) q = 0.
 
     Attributes
@@ -125,9 +152,19 @@ class HarmonicSystem:
     mode_share : ndarray, shape (n,)
         Its share V_ij^2 (dimensionless).
 
+    Notes
+    -----
+    k = 1 (:func:`.bending.bending_harmonic`: bending, rigid pitch, gimbaled follower thrust)
+    is written in the unloaded basis modes instead (the rigid translation dropped): A =
+    diag(omega^2) + F0 [K_g - y (beta + K psi)^T] is not diagonal and not symmetric, C =
+    2 zeta diag(omega_unloaded) (0 on the rigid pitch), ``omega_loaded`` are the square roots
+    of the real parts of the eigenvalues of A (ascending; the steady frequencies), ``basis``
+    the real parts of its unit eigenvectors, and the labels those of the basis mode that
+    dominates each steady mode (type "rigid-pitch" for the rigid rotation).
+
     References
     ----------
-    Bolotin (1964), sec. 8.
+    Bolotin (1964), sec. 8; Beal (1965), eq. 4 (k = 1).
     """
 
     k: int
@@ -143,22 +180,6 @@ class HarmonicSystem:
     mode_order: np.ndarray
     mode_type: np.ndarray
     mode_share: np.ndarray
-
-    def matrices(self, gamma: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        """(M, C, A, B) of the periodic system for pulsation amplitude gamma.
-
-        Parameters
-        ----------
-        gamma : float
-            Pulsation amplitude (dimensionless), 0 <= gamma < 1.
-
-        Returns
-        -------
-        tuple of ndarray
-            M (dimensionless), C (1/s), A (1/s^2), B = gamma B1 (1/s^2).
-        """
-        gamma = _gamma(gamma)
-        return self.mass, self.damping, self.stiffness, gamma * self.excitation
 
     def mode(self, index: int) -> RegionMode:
         """Label of loaded mode ``index`` (see :class:`RegionMode`).
@@ -326,6 +347,8 @@ class VehicleRegions:
     chart_gamma_max : float or None
         Largest gamma of the (Omega, gamma) chart the pipeline asked for (dimensionless); None
         when not set.
+    gimbal_gain : float
+        Gimbal gain K of the k = 1 harmonic (dimensionless; unused without k = 1).
     """
 
     regions: tuple
@@ -340,6 +363,7 @@ class VehicleRegions:
     forced_axial: ForcedAxial | None = None
     certificates: tuple = ()
     chart_gamma_max: float | None = None
+    gimbal_gain: float = 0.0
 
     def harmonic(self, k: int) -> HarmonicSystem:
         """The system of harmonic k.
@@ -377,7 +401,8 @@ class VehicleRegions:
                 "forced_axial": (None if self.forced_axial is None
                                  else self.forced_axial.to_dict()),
                 "certificates": [dict(c.to_dict(), k=int(h.k)) for h, c in
-                                 zip(self.harmonics, self.certificates, strict=True)]}
+                                 zip(self.harmonics, self.certificates, strict=True)],
+                "gimbal_gain": float(self.gimbal_gain)}
 
 
 # ----------------------------------------------------------------------------- checks
@@ -495,6 +520,38 @@ def _floquet_options(rtol, step_phase, max_order, damping_margin) -> dict:
     return opts
 
 
+def _harmonic_regions(h: HarmonicSystem, gamma: float, lo: float, hi: float, opts: dict,
+                      ) -> tuple[list, object]:
+    """The regions of one harmonic (VehicleRegion rows) and its stability certificate.
+
+    The certificate (Desoer & Vidyasagar sec. 2.8) is of the system at gamma, none without
+    damping; the critical gamma of each region that is not "steady" is
+    :func:`flexbooster.floquet.critical_amplitude` (Bolotin sec. 6: the amplitude where the
+    damped region's edges meet), 0 without damping.
+    """
+    M, C, A, B = h.matrices(gamma)
+    Cf = C if h.damping_ratio > 0.0 else None
+    cert = floquet.stability_certificate(M, Cf, A, B)  # none without damping
+    found = floquet.instability_regions(M, Cf, A, B, lo, hi, **opts)
+    crit = {}
+    if Cf is not None and any(r.kind != "steady" for r in found):  # Bolotin sec. 6
+        crit = {(c.kind, c.modes, c.order): c.gamma_cr for c in floquet.critical_amplitude(
+            M, Cf, A, h.excitation, gamma_max=gamma, omega_min=lo, omega_max=hi,
+            regions=found, **opts)}
+    rows = []
+    for r in found:
+        key = (r.kind, r.modes, r.order)
+        if Cf is not None and r.kind != "steady" and key not in crit:
+            raise ValueError(f"gamma = {gamma!r}: k = {h.k}, region {key} found but its "
+                             "critical amplitude was not (inconsistent searches)")
+        rows.append(VehicleRegion(
+            k=h.k, kind=r.kind, order=r.order, modes=tuple(h.mode(i) for i in r.modes),
+            omega_lo=r.omega_lo, omega_hi=r.omega_hi, growth_rate_max=r.growth_rate_max,
+            omega_at_max=r.omega_at_max, omega_center=r.omega_center,
+            critical_gamma=float(crit.get(key, 0.0)), clipped=r.clipped))
+    return rows, cert
+
+
 def vehicle_regions(
     vehicle: Vehicle, *, F0: float, gamma: float, omega_min: float, omega_max: float,
     k_max: int, k_min: int = 2, n_modes: int = 20, damping_ratio: float = 0.01,
@@ -502,7 +559,7 @@ def vehicle_regions(
     order: int = DEFAULT_ORDER, boundaries: bool = False, gamma_max: float = 0.5,
     n_gamma: int = 11, rtol: float = 1e-9, step_phase: float = 0.12,
     max_order: int | None = None, damping_margin: float | None = floquet.DAMPING_MARGIN,
-    axial: bool = True,
+    axial: bool = True, gimbal_gain: float = 0.0,
 ) -> VehicleRegions:
     """Parametric instability regions of every harmonic k_min..k_max in [omega_min, omega_max].
 
@@ -517,9 +574,13 @@ def vehicle_regions(
     omega_min, omega_max : float
         Range of the pulsation frequency Omega (rad/s), 0 < omega_min < omega_max.
     k_max, k_min : int
-        Harmonics (dimensionless), 2 <= k_min <= k_max <= 200.
+        Harmonics (dimensionless), 1 <= k_min <= k_max <= 200; k = 1 is the bending
+        harmonic with the rigid pitch, the gimbal control and the follower thrust
+        (:func:`.bending.bending_harmonic`, its regions those of
+        :func:`.bending.bending_regions`).
     n_modes : int
-        Unloaded modes per harmonic in the modal basis (dimensionless), 1..2000.
+        Unloaded modes per harmonic in the modal basis (dimensionless), 1..2000 (for k = 1
+        at least 3, rigid modes included).
     damping_ratio : float
         Modal damping ratio of the loaded modes (dimensionless), [0, 1); default 0.01.
     supported_forward_end : bool
@@ -546,6 +607,9 @@ def vehicle_regions(
     axial : bool
         Also compute the k = 0 forced axial resonances (:func:`.axial.forced_axial`, same
         n_modes, damping and mesh) into ``forced_axial``.
+    gimbal_gain : float
+        K of the gimbal control (dimensionless), >= 0: used by k = 1 only (the thrust turned
+        by K psi, psi the rigid pitch angle; Tech Memo 104 eq. 2.2-2).
 
     Returns
     -------
@@ -558,8 +622,11 @@ def vehicle_regions(
 
     References
     ----------
-    Bolotin (1964), ch. 1-2, sec. 6, sec. 8; Hsu (1963); ``docs/theory/floquet.md``.
+    Bolotin (1964), ch. 1-2, sec. 6, sec. 8; Hsu (1963); Beal (1965) (k = 1);
+    ``docs/theory/floquet.md``.
     """
+    from .bending import bending_harmonic  # k = 1 (bending.py imports this module)
+
     vehicle = _vehicle(vehicle)
     F0 = positive("F0", F0)
     gamma = _gamma(gamma)
@@ -567,9 +634,10 @@ def vehicle_regions(
     lo, hi = positive("omega_min", omega_min), positive("omega_max", omega_max)
     if lo >= hi:
         raise ValueError(f"omega_min = {omega_min!r}: must be < omega_max = {omega_max!r}")
-    k_max = count("k_max", k_max, 2, K_MAX)
-    k_min = count("k_min", k_min, 2, k_max)
+    k_max = count("k_max", k_max, 1, K_MAX)
+    k_min = count("k_min", k_min, 1, k_max)
     n_modes = count("n_modes", n_modes, 1, 2000)
+    gimbal = nonnegative("gimbal_gain", gimbal_gain)
     if not isinstance(boundaries, bool | np.bool_):
         raise ValueError(f"boundaries = {boundaries!r}: must be a bool")
     if boundaries:
@@ -581,30 +649,21 @@ def vehicle_regions(
     if not isinstance(axial, bool | np.bool_):
         raise ValueError(f"axial = {axial!r}: must be a bool")
     harmonics, regions, curves, certs = [], [], [], []
+    mesh = {"supported_forward_end": supported_forward_end,
+            "elements_per_segment": elements_per_segment, "order": order}
     for k in range(k_min, k_max + 1):  # a handful of harmonics
-        h = harmonic_system(vehicle, k, F0=F0, n_modes=n_modes, damping_ratio=zeta,
-                            supported_forward_end=supported_forward_end,
-                            elements_per_segment=elements_per_segment, order=order)
+        if k == 1:  # bending + rigid pitch + gimbaled follower thrust (Beal 1965, eq. 4)
+            h = bending_harmonic(vehicle, F0=F0, n_modes=max(n_modes, 3), damping_ratio=zeta,
+                                 gimbal_gain=gimbal, **mesh)
+        else:
+            h = harmonic_system(vehicle, k, F0=F0, n_modes=n_modes, damping_ratio=zeta,
+                                **mesh)
         harmonics.append(h)
-        M, C, A, B = h.matrices(gamma)
+        rows, cert = _harmonic_regions(h, gamma, lo, hi, opts)
+        regions += rows
+        certs.append(cert)
+        M, C, A, _ = h.matrices(gamma)
         Cf = C if zeta > 0.0 else None
-        certs.append(floquet.stability_certificate(M, Cf, A, B))  # none without damping
-        found = floquet.instability_regions(M, Cf, A, B, lo, hi, **opts)
-        crit = {}
-        if found and zeta > 0.0:  # Bolotin sec. 6: the amplitude where the edges meet
-            crit = {(c.kind, c.modes, c.order): c.gamma_cr for c in floquet.critical_amplitude(
-                M, Cf, A, h.excitation, gamma_max=gamma, omega_min=lo, omega_max=hi,
-                regions=found, **opts)}
-        for r in found:
-            key = (r.kind, r.modes, r.order)
-            if zeta > 0.0 and key not in crit:
-                raise ValueError(f"gamma = {gamma!r}: k = {k}, region {key} found but its "
-                                 "critical amplitude was not (inconsistent searches)")
-            regions.append(VehicleRegion(
-                k=k, kind=r.kind, order=r.order, modes=tuple(h.mode(i) for i in r.modes),
-                omega_lo=r.omega_lo, omega_hi=r.omega_hi, growth_rate_max=r.growth_rate_max,
-                omega_at_max=r.omega_at_max, omega_center=r.omega_center,
-                critical_gamma=float(crit.get(key, 0.0)), clipped=r.clipped))
         if boundaries:
             for c in floquet.region_boundaries(M, Cf, A, h.excitation, gamma_max=gmax,
                                                omega_min=lo, omega_max=hi, n_gamma=n_gamma,
@@ -622,4 +681,4 @@ def vehicle_regions(
                           curves=tuple(curves), F0=F0, gamma=gamma, damping_ratio=zeta,
                           omega_min=lo, omega_max=hi,
                           supported_forward_end=bool(supported_forward_end),
-                          forced_axial=fa, certificates=tuple(certs))
+                          forced_axial=fa, certificates=tuple(certs), gimbal_gain=gimbal)
