@@ -527,3 +527,22 @@ def test_forced_axial_resonances_are_reported_from_the_results(results):
         assert row[0] == r.omega and row[1] == pytest.approx(r.omega / (2 * np.pi), rel=1e-15)
         assert row[3] == r.flexibility and row[4] == row[5] == "-"
     assert "Forced (not parametric) resonances" in render_report(results, {})
+
+
+def test_pipeline_k1_rows_are_bending_regions(results):
+    """Two paths for k = 1: the pipeline's k = 1 rows (vehicle_regions with k_min = 1, the
+    case's gimbal gain thrust.K) equal flexbooster.vehicle.bending_regions called directly
+    with the case's settings (exact); they reach the CSV columns and the memo-root matching
+    (same objects)."""
+    from flexbooster.vehicle import bending_regions
+
+    case = results.case
+    t = case.thrust
+    direct = bending_regions(vehicle_from_case(case), F0=case.F0, gamma=t.gamma,
+                             omega_min=t.omega_min, omega_max=t.omega_max, gimbal_gain=t.K,
+                             n_modes=3, damping_ratio=0.0)
+    vr = results.vehicle_regions
+    k1 = tuple(r for r in vr.regions if r.k == 1)
+    assert k1 == direct and len(k1) > 0
+    assert vehicle_region_columns(vr)["k"].count(1) == len(k1)
+    assert vr.to_dict()["gimbal_gain"] == t.K
