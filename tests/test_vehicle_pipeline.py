@@ -244,7 +244,8 @@ class _Recorder:
                                                               "region-at-chart-gamma"])
 def test_stage_passes_the_case_settings_and_defaults(monkeypatch, probe_finds):
     """Without [vehicle]: damping 0.01, 20 modes, k = 1..10 (issue 15 defaults), the case's
-    F0, gamma, Omega range and gimbal gain K (for k = 1); the curves are traced only when a region exists at the chart's
+    F0, gamma, Omega range, gimbal gain K (for k = 1) and budget max_seconds; the curves are
+    traced only when a region exists at the chart's
     gamma (floquet.region_boundaries traces those only)."""
     import flexbooster.analysis as analysis
 
@@ -255,7 +256,8 @@ def test_stage_passes_the_case_settings_and_defaults(monkeypatch, probe_finds):
     case = load_case(small_case_data())
     analyze_vehicle_regions(case, boundaries=True)
     expected = dict(F0=case.F0, omega_min=5.0, omega_max=2000.0, k_min=1, k_max=10,
-                    n_modes=20, damping_ratio=0.01, gimbal_gain=case.thrust.K)
+                    n_modes=20, damping_ratio=0.01, gimbal_gain=case.thrust.K,
+                    max_seconds=case.max_seconds)
     first, probe = rec.calls[:2]
     assert first == {**expected, "gamma": 0.05}
     assert probe == {**expected, "gamma": VEHICLE_CHART_GAMMA_MAX}

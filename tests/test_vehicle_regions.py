@@ -583,8 +583,9 @@ def test_k1_in_the_map_against_the_full_bending_monodromy():
     (floquet.growth_rate, step phase 0.06) of the *full* bending_system, the rigid translation
     kept (the map drops it: a zero column, multiplier 1), at each region's reported maximum:
     growth rates agree to 1e-6 relative (measured 2e-8); the map's system is stable (< 1e-6
-    of the growth) halfway to the next region.  The regions include the rigid pitch's own (2 omega_psi, the memo's
-    pitch tongue) and its sum with the first bending mode; the map stores gimbal_gain."""
+    of the growth) halfway to the next region.  The regions include the rigid pitch's own
+    (2 omega_psi, the memo's pitch tongue) and its sum with the first bending mode; the map
+    stores gimbal_gain."""
     R, L, h = 0.05, 5.0, 0.002
     veh = Vehicle([Cylinder(R, L, h, **STEEL)])
     F0 = 20.0 * STEEL["E"] * np.pi * R**3 * h / L**2

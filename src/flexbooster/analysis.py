@@ -191,7 +191,8 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
     step(STAGES[0])
     model = cost.derived_model(case)
     extra: list[AnalysisWarning] = _feasibility(case, model, beam_action=beam_action,
-                                                stability=stability, figures=figures)
+                                                stability=stability, figures=figures,
+                                                with_regions=with_regions)
     # the costliest figure data, independent of the stages below: started first (in a worker
     # when the pool has one, else computed when asked for, in STAGES[5])
     chart = (pool.submit(charts.beam_action_chart, model) if figures and beam_action
@@ -274,11 +275,16 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
     )
 
 
-def _feasibility(case: Case, model: BoosterModel, **stages: bool) -> list[AnalysisWarning]:
+def _feasibility(case: Case, model: BoosterModel, *, with_regions: bool = True,
+                 **stages: bool) -> list[AnalysisWarning]:
     """Refuse a case past its budget or past what the structure carries (issue 18), before
     any solver runs; the warnings of the budget and of the load."""
     cost.check_physical(model)
-    est = cost.check_case_cost(model, case.max_seconds, **stages)
+    # the vehicle stages too (issue 18 item 1): modes survey, regions (lower bound with damping)
+    veh = dict(regions_k_max=VEHICLE_REGIONS_K_MAX, regions=with_regions,
+               figures=stages.get("figures", True))
+    est = cost.check_case_cost(model, case.max_seconds,
+                               vehicle=cost.estimate_vehicle_cost(case, **veh), **stages)
     out = cost.physical_warnings(model) + cost.capped_steps_warning(est, model)
     if est.seconds > 0.5 * case.max_seconds:
         out.append(AnalysisWarning("cost-estimate", "max_seconds",
@@ -430,7 +436,10 @@ def _vehicle_regions_stage(case: Case, *, boundaries: bool
             f"computed for k >= {VEHICLE_REGIONS_K_MIN} only (k = 0 gives forced, not "
             "parametric, resonances)")]
     try:
-        return analyze_vehicle_regions(case, boundaries=boundaries), []
+        found = analyze_vehicle_regions(case, boundaries=boundaries)
+        # harmonics whose search would pass the budget (issue 18): named, not searched
+        return found, [AnalysisWarning("vehicle-regions-budget", "max_seconds", why)
+                       for why in found.skipped]
     except CaseError as exc:  # the thrust buckles the vehicle: a result, not a bad input
         return None, [AnalysisWarning("vehicle-regions-skipped", exc.field, exc.rule)]
 
@@ -494,7 +503,7 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
     t = case.thrust
     settings = dict(F0=case.F0, omega_min=t.omega_min, omega_max=t.omega_max, k_min=k_min,
                     k_max=k_max, n_modes=table.n_modes, damping_ratio=table.damping_ratio,
-                    gimbal_gain=t.K)
+                    gimbal_gain=t.K, max_seconds=case.max_seconds)
     with blas_threads(1):
         vehicle = vehicle_from_case(case)
         try:
@@ -504,9 +513,14 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
                                              and vehicle_regions(vehicle, gamma=top,
                                                                  **settings).regions):
                 # region_boundaries traces the regions of gamma_max: none there, no curve
-                found = vehicle_regions(vehicle, gamma=t.gamma, boundaries=True,
-                                        gamma_max=top, n_gamma=charts.VEHICLE_CHART_LEVELS,
-                                        **settings)
+                curved = vehicle_regions(vehicle, gamma=t.gamma, boundaries=True,
+                                         gamma_max=top, n_gamma=charts.VEHICLE_CHART_LEVELS,
+                                         **settings)
+                # the regions of the search above; the curves (of the harmonics the budget
+                # allows, issue 18) from this one
+                found = dataclasses.replace(found, curves=curved.curves, skipped=found.skipped
+                                            + tuple(w for w in curved.skipped
+                                                    if w not in found.skipped))
             found = dataclasses.replace(found, chart_gamma_max=top if boundaries else None)
         except ValueError as exc:
             if "buckles" in str(exc):

@@ -291,9 +291,9 @@ def bending_regions(
     -------
     tuple of VehicleRegion
         k = 1 regions sorted by omega_lo (those of ``vehicle_regions(..., k_min=1)`` for
-        k = 1: one code path, :func:`bending_harmonic`); ``modes`` carry the basis mode dominating each steady
-        mode (type "rigid-pitch" for the rigid rotation), ``omega_loaded`` the steady
-        frequency; ``critical_gamma`` from :func:`flexbooster.floquet.critical_amplitude`
+        k = 1: one code path, :func:`bending_harmonic`); ``modes`` carry the basis mode
+        dominating each steady mode (type "rigid-pitch" for the rigid rotation),
+        ``omega_loaded`` the steady frequency; ``critical_gamma`` from :func:`flexbooster.floquet.critical_amplitude`
         with damping (0 without).
 
     References
@@ -316,7 +316,7 @@ def bending_regions(
         opts = _floquet_options(opts.get("rtol", 1e-9), opts.get("step_phase", 0.12),
                                 opts.get("max_order"),
                                 opts.get("damping_margin", floquet.DAMPING_MARGIN))
-    rows, _ = _harmonic_regions(h, gamma, omega_min, omega_max, opts)
+    rows, _, _ = _harmonic_regions(h, gamma, omega_min, omega_max, opts)
     return tuple(sorted(rows, key=lambda r: r.omega_lo))
 
 
