@@ -17,6 +17,7 @@ benchmarks/bench_vehicle_regions.py (``--cost``), not here (no timed assertions)
 
 from __future__ import annotations
 
+import dataclasses
 import tomllib
 
 import pytest
@@ -100,8 +101,6 @@ def test_harmonics_past_the_budget_are_skipped_and_named():
 def test_pipeline_warns_for_each_skipped_harmonic(monkeypatch):
     """The stage turns each skipped harmonic into a warning (code vehicle-regions-budget,
     field max_seconds) and keeps the regions it has."""
-    import dataclasses
-
     import flexbooster.analysis as analysis
 
     real = analysis.vehicle_regions
@@ -116,3 +115,21 @@ def test_pipeline_warns_for_each_skipped_harmonic(monkeypatch):
     (w,) = warnings
     assert (w.code, w.field) == ("vehicle-regions-budget", "max_seconds")
     assert "k = 2 not searched" in w.message
+
+
+def test_verdict_is_unknown_when_harmonics_were_skipped():
+    """No region found but a harmonic skipped by the budget: the verdict is not "stable"
+    (present.rows.vehicle_region_verdict reads only the stored result)."""
+    from types import SimpleNamespace
+
+    from flexbooster.present.rows import vehicle_region_verdict
+    from flexbooster.vehicle import VehicleRegions
+
+    vr = VehicleRegions(regions=(), harmonics=(), curves=(), F0=1.0, gamma=0.1,
+                        damping_ratio=0.0, omega_min=1.0, omega_max=10.0,
+                        supported_forward_end=False, skipped=("max_seconds = 1: k = 2 ...",))
+    text, stable = vehicle_region_verdict(SimpleNamespace(vehicle_regions=vr))
+    assert not stable and text.startswith("unknown: 1 harmonic(s) not searched")
+    text, stable = vehicle_region_verdict(SimpleNamespace(
+        vehicle_regions=dataclasses.replace(vr, skipped=())))
+    assert stable and text.startswith("stable:")

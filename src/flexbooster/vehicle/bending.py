@@ -293,8 +293,8 @@ def bending_regions(
         k = 1 regions sorted by omega_lo (those of ``vehicle_regions(..., k_min=1)`` for
         k = 1: one code path, :func:`bending_harmonic`); ``modes`` carry the basis mode
         dominating each steady mode (type "rigid-pitch" for the rigid rotation),
-        ``omega_loaded`` the steady frequency; ``critical_gamma`` from :func:`flexbooster.floquet.critical_amplitude`
-        with damping (0 without).
+        ``omega_loaded`` the steady frequency; ``critical_gamma`` from
+        :func:`flexbooster.floquet.critical_amplitude` with damping (0 without).
 
     References
     ----------
