@@ -70,6 +70,12 @@ def main() -> None:
           f"by k: {dict(sorted(Counter(k[active].tolist()).items()))}; active by family: "
           f"{dict(sorted(Counter(np.asarray(table.family)[active].tolist()).items()))} "
           f"({time.perf_counter() - t0:.1f} s)")
+    sh = res.shell
+    for kk in (1, 3, 10):
+        sel = np.asarray(sh.k) == kk
+        if np.any(sel):
+            low = float(np.min(sh.omega_bar[sel])) * sh.omega_1
+            print(f"memo shells, k = {kk}: lowest {low:.5g} rad/s (each cylinder alone)")
     t0 = time.perf_counter()
     damped = analyze_vehicle_regions(case, boundaries=False)
     print(f"pipeline stage (k = {VEHICLE_REGIONS_K_MIN}..{VEHICLE_REGIONS_K_MAX}, "
