@@ -336,18 +336,10 @@ def bending_harmonic(
 
     Parameters
     ----------
-    vehicle : Vehicle
-        The vehicle.
-    F0 : float
-        Steady thrust (N), > 0.
+    vehicle, F0, damping_ratio, gimbal_gain, supported_forward_end, elements_per_segment, order
+        As :func:`bending_system` (F0 in N, > 0; the ratio and K dimensionless).
     n_modes : int
         Basis modes of k = 1, rigid ones included (dimensionless), 3..2000.
-    damping_ratio : float
-        Modal damping ratio of the elastic basis modes (dimensionless), [0, 1).
-    gimbal_gain : float
-        K (dimensionless), >= 0 (Tech Memo 104, eq. 2.2-2).
-    supported_forward_end, elements_per_segment, order
-        As :func:`bending_system`.
 
     Returns
     -------
