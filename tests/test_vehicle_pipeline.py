@@ -281,7 +281,9 @@ def test_chart_top_gamma_is_certified_free_of_regions(path):
     """The chart's top gamma (analysis._chart_gamma) is the case's gamma raised only as far as
     the all-Omega stability certificate holds: a search at that gamma finds every harmonic
     certified (floquet.stability_certificate of the scaled system, an independent call) and
-    no region; the default vehicle reaches the constant, the thin Titan shells stop below."""
+    no region; the default vehicle reaches the constant, the thin Titan shells stop below.
+    The top reuses the search's certificates (scaled by gamma): checked against the
+    certificate per unit gamma."""
     import flexbooster.analysis as analysis
     from flexbooster.vehicle import vehicle_regions as regions_of
 
@@ -292,6 +294,14 @@ def test_chart_top_gamma_is_certified_free_of_regions(path):
     found = analyze_vehicle_regions(case, boundaries=False)
     top = analysis._chart_gamma(found)
     assert case.thrust.gamma <= top <= VEHICLE_CHART_GAMMA_MAX
+    # two methods agree (issue 15 item 6): the search's certificate at gamma, scaled by gamma,
+    # is the certificate of the excitation per unit gamma (Q linear in B), to 1e-9 relative
+    from flexbooster.floquet import stability_certificate
+
+    for h, c in zip(found.harmonics, found.certificates, strict=True):
+        unit = stability_certificate(h.mass, h.damping, h.stiffness, h.excitation)
+        assert found.gamma * c.amplitude_factor == pytest.approx(unit.amplitude_factor,
+                                                                 rel=1e-9)
     t = case.thrust
     at_top = regions_of(vehicle_from_case(case), F0=case.F0, gamma=top, omega_min=t.omega_min,
                         omega_max=t.omega_max, k_min=1, k_max=4, n_modes=6, damping_ratio=0.01,
