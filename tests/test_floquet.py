@@ -231,6 +231,23 @@ def test_damped_region_against_harmonic_balance():
         assert np.min(np.abs(roots - r.omega_hi)) < tol
 
 
+def test_damped_march_stays_inside_the_range():
+    # reproducer of the fuzz failure (tests/test_robustness.py _FUZZ_FLOQUET): the damped
+    # search marched 4 undamped widths below a wide region and evaluated the monodromy at
+    # Omega < 0 (ValueError).  Damped Mathieu mu = 0.8, eps = 0.01 on [1, 3]: the principal
+    # region (undamped width ~1.4) and the j = 2 region (unstable down to the range end).
+    # Expected: no error; the j = 2 region clipped at omega_min; the unclipped edges on the
+    # damped harmonic balance (quadratic eigenproblem, K = 12) to 1e-7 (step_phase 0.12)
+    sysm = mathieu(0.8, 0.01)
+    regions = instability_regions(*sysm, 1.0, 3.0)
+    assert [(r.order, r.clipped) for r in regions] == [(2, True), (1, False)]
+    assert regions[0].omega_lo == 1.0
+    roots = np.concatenate([periodic_boundaries(*sysm, period=p, n_harmonics=12)
+                            for p in ("T", "2T")])
+    for edge in (regions[0].omega_hi, regions[1].omega_lo, regions[1].omega_hi):
+        assert np.min(np.abs(roots - edge)) < 1e-7 * edge
+
+
 W1, W2 = 1.0, 2.3
 
 

@@ -658,8 +658,12 @@ def _undamped_search(system, w, cand, lo, hi, opt) -> list[dict]:
     return out
 
 
-def _damped_search(system, undamped, opt) -> list[dict]:
-    """Regions with damping, seeded by the undamped regions (see module docstring)."""
+def _damped_search(system, undamped, opt, lo, hi) -> list[dict]:
+    """Regions with damping, seeded by the undamped regions (see module docstring).
+
+    The outward marches stay inside [lo, hi], the range of the undamped seed search (> 0):
+    a march limit of 4 widths beyond a wide region could otherwise reach Omega <= 0.
+    """
     if not undamped:
         return []
     lo_u = np.array([r["lo"] for r in undamped])
@@ -684,8 +688,8 @@ def _damped_search(system, undamped, opt) -> list[dict]:
         return out
     x0, g0 = xs[hit], gs[hit]
     d0 = np.maximum(width[hit] / 16.0, 4.0 * xtol[hit])
-    lo_lim = np.array([undamped[m]["lo"] for m in hit]) - 4.0 * width[hit]
-    hi_lim = np.array([undamped[m]["hi"] for m in hit]) + 4.0 * width[hit]
+    lo_lim = np.maximum(lo_u[hit] - 4.0 * width[hit], lo)
+    hi_lim = np.minimum(hi_u[hit] + 4.0 * width[hit], hi)
     P = hit.size
     edge = _edges(lambda x, idx: G(x), np.concatenate([x0, x0]), np.concatenate([g0, g0]),
                   np.concatenate([d0, d0]), np.concatenate([-np.ones(P), np.ones(P)]),
@@ -771,7 +775,7 @@ def _search(system: LinearPeriodicSystem, lo: float, hi: float, opt: _Options,
         cand = {key: v[keep] for key, v in cand.items()}
     if system.damped:  # seeds from the undamped system, searched a little wider
         regs = _undamped_search(undamped, w, cand, 0.5 * lo, 2.0 * hi, opt)
-        regs = _damped_search(system, regs, opt)
+        regs = _damped_search(system, regs, opt, 0.5 * lo, 2.0 * hi)
     else:
         regs = _undamped_search(undamped, w, cand, lo, hi, opt)
     return _finish(system, regs, lo, hi, opt, system.damped)
