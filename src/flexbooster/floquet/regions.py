@@ -44,7 +44,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.optimize
 
 from .bounds import _certificate
 from .multipliers import (
@@ -57,6 +56,7 @@ from .multipliers import (
     periodic_system,
     step_counts,
 )
+from .narrow import narrow_search
 
 __all__ = [
     "DAMPING_MARGIN",
@@ -73,6 +73,15 @@ _GOLD = 0.5 * (np.sqrt(5.0) - 1.0)
 #: Round-off floor of the indicators (s-values are O(1), eigenvalue errors ~ eps ||S||): a
 #: maximum below it is not a region.  Detection limit: relative width ~ 2 sqrt(floor) / (pi j).
 _F_FLOOR = 1e-14
+#: Smallest relative width looked for by the harmonic-balance pair of :mod:`.narrow` (its
+#: resolution is ~1e-15 relative): candidates whose estimated width is 100 times smaller
+#: still are not examined.
+_NARROW_FLOOR = 1e-13
+#: A monodromy candidate whose indicator maximum is below -_F_SCREEN has no region (its pair
+#: of s-values stays 1e-6 apart, far beyond the integration error): not re-examined.
+_F_SCREEN = 1e-6
+#: Smallest half-window (relative to the centre) of the narrow-region search.
+_NARROW_WINDOW = 1e-3
 #: Safety factor of the damping filter (see :func:`_damping_caps`): a candidate is examined
 #: when margin x its first-order growth-rate bound exceeds the decay rate of its modes.
 DAMPING_MARGIN = 4.0
@@ -269,15 +278,18 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
     first = np.where(kind == 0, np.abs(Bt[i, i]) / w[i],
                      np.sqrt(np.abs(Bt[i, k] * Bt[k, i]) / (w[i] * w[k])))
     est = np.where(j == 1, np.maximum(first, est), est)
-    # regions narrower than the round-off floor of the indicators cannot be told from zero
+    # regions narrower than the round-off floor of the indicators cannot be told from zero by
+    # the monodromy ("mono" candidates: est above it); the narrower ones down to the floor of
+    # the harmonic-balance pair (:mod:`.narrow`, resolution linear in the width) are kept too
     floor = np.maximum(opt.rtol, 2.0 * np.sqrt(_F_FLOOR) / (np.pi * jf))
     keep = (centre >= lo * (1.0 - 1e-9)) & (centre <= hi * (1.0 + 1e-9))
     keep |= (centre + 2.0 * est >= lo) & (centre - 2.0 * est <= hi)
-    keep &= est >= 1e-2 * floor * centre
+    keep &= est >= 1e-2 * _NARROW_FLOOR * centre
     if opt.max_order is not None:
         keep &= j <= opt.max_order
+    mono = est >= 1e-2 * floor * centre
     return {"kind": kind[keep], "i": i[keep], "k": k[keep], "j": j[keep],
-            "centre": centre[keep], "est": est[keep], "gap": gap[keep]}
+            "centre": centre[keep], "est": est[keep], "gap": gap[keep], "mono": mono[keep]}
 
 
 # --------------------------------------------------------------------------------------------
@@ -345,9 +357,9 @@ def _growth_undamped(system, om, opt) -> np.ndarray:
     return np.log(_rho_max_from_sets(xp, xm)) * om / (2.0 * np.pi)  # log|rho|_max / T
 
 
-def _growth_damped(system, om, opt) -> np.ndarray:
+def _growth_damped(system, om, opt, scale=None) -> np.ndarray:
     steps = step_counts(system, om, step_phase=opt.step_phase, max_steps=opt.max_steps)
-    rho = np.linalg.eigvals(_full_maps(system, om, steps, opt.chunk))
+    rho = np.linalg.eigvals(_full_maps(system, om, steps, opt.chunk, scale))
     return np.log(np.max(np.abs(rho), axis=1)) * om / (2.0 * np.pi)  # log|rho|_max / T
 
 
@@ -595,10 +607,55 @@ def _modal_decay_rates(system: LinearPeriodicSystem) -> np.ndarray | None:
     return 0.5 * np.real(np.diag(Ct))
 
 
-def _undamped_search(system, w, cand, lo, hi, opt) -> list[dict]:
+def _undamped_search(system, w, cand, lo, hi, opt, narrow: bool = True) -> list[dict]:
     """Regions of the undamped system for the candidate table; list of plain dicts."""
     if cand["centre"].size == 0:
         return []
+    mono = cand["mono"]
+    regs, fmax = _monodromy_search(system, w, {key: v[mono] for key, v in cand.items()}, lo,
+                                   hi, opt)
+    if not narrow:
+        return regs
+    # the candidates below the monodromy floor, and those whose indicator maximum stayed
+    # between -_F_SCREEN and the round-off floor (a pair that approaches within 1e-6 in s)
+    extra = (fmax <= _F_FLOOR) & (fmax > -_F_SCREEN)
+    missed = {key: np.concatenate([v[~mono], v[mono][extra]]) for key, v in cand.items()}
+    return regs + _narrow_pass(system, missed, regs, lo, hi)
+
+
+def _narrow_pass(system, cand, regs, lo, hi) -> list[dict]:
+    """Regions narrower than the monodromy's round-off floor (:mod:`.narrow`), as dicts.
+
+    The edges are the roots of the harmonic-balance pair discriminant D(Omega) (its vertex
+    +- the half-width), the growth rate sqrt(D) / 2 at the vertex; regions inside one that
+    the monodromy search found (an overlap: the union is reported) are dropped.
+    """
+    if cand["centre"].size == 0:
+        return []
+    Oc = cand["centre"]
+    sub = dict(cand)
+    # the window: to the next centre, at least the size of the second-order frequency shifts
+    # (a pair's discriminant is its own: another centre inside does not disturb it)
+    sub["window"] = np.minimum(np.maximum(0.45 * cand["gap"], _NARROW_WINDOW * Oc),
+                               0.2 * Oc / cand["j"])
+    res = narrow_search(system.mu.real, system.Bt, sub)
+    out = []
+    for m in np.nonzero(res["found"] & res["converged"])[0]:
+        a, b = float(res["lo"][m]), float(res["hi"][m])
+        if b < lo or a > hi or any(r["lo"] <= a and b <= r["hi"] for r in regs):
+            continue
+        out.append({"lo": a, "hi": b, "kind": int(cand["kind"][m]), "i": int(cand["i"][m]),
+                    "k": int(cand["k"][m]), "j": int(cand["j"][m]), "centre": float(Oc[m]),
+                    "clipped": False, "growth": float(res["growth"][m]),
+                    "at": float(res["omega_at_max"][m])})
+    return out
+
+
+def _monodromy_search(system, w, cand, lo, hi, opt) -> tuple[list[dict], np.ndarray]:
+    """Regions found from the monodromy indicators (module docstring), and the maximum of
+    each candidate's indicator."""
+    if cand["centre"].size == 0:
+        return [], np.zeros(0)
     Oc = cand["centre"]
     xtol = opt.rtol * Oc
 
@@ -613,7 +670,7 @@ def _undamped_search(system, w, cand, lo, hi, opt) -> list[dict]:
     xs, fs = _brent_max(F, a, b, Oc, np.maximum(10.0 * xtol, 1e-15 * Oc), stop_positive=True)
     hit = np.nonzero(fs > _F_FLOOR)[0]
     if hit.size == 0:
-        return []
+        return [], fs
     sub = {key: v[hit] for key, v in cand.items()}
     x0 = xs[hit]
     f0 = fs[hit]
@@ -655,7 +712,7 @@ def _undamped_search(system, w, cand, lo, hi, opt) -> list[dict]:
         out.append({"lo": float(olo[m]), "hi": float(ohi[m]), "kind": int(sub["kind"][m]),
                     "i": int(sub["i"][m]), "k": int(sub["k"][m]), "j": int(sub["j"][m]),
                     "centre": float(sub["centre"][m]), "clipped": bool(clo[m] or chi[m])})
-    return out
+    return out, fs
 
 
 def _damped_search(system, undamped, opt, lo, hi) -> list[dict]:
@@ -725,6 +782,21 @@ def _finish(system, regions, lo, hi, opt, damped) -> tuple[InstabilityRegion, ..
         regs.append(r)
     if not regs:
         return ()
+    narrow = [r for r in regs if "growth" in r]  # from the harmonic-balance pair
+    regs = [r for r in regs if "growth" not in r]
+    out = [] if not regs else list(_finish_monodromy(system, regs, opt, damped))
+    for r in narrow:
+        modes = (r["i"],) if r["kind"] == 0 else (r["i"], r["k"])
+        out.append(InstabilityRegion(
+            omega_lo=r["lo"], omega_hi=r["hi"], growth_rate_max=r["growth"],
+            omega_at_max=r["at"], kind=_KINDS[r["kind"]], modes=modes, order=r["j"],
+            omega_center=r["centre"], clipped=r["clipped"]))
+    return tuple(sorted(out, key=lambda q: (round(q.omega_lo / quantum), q.order,
+                                            _KINDS.index(q.kind))))
+
+
+def _finish_monodromy(system, regs, opt, damped) -> tuple[InstabilityRegion, ...]:
+    """Growth-rate maxima of the monodromy regions (9 samples, then Brent)."""
     a = np.array([r["lo"] for r in regs])
     b = np.array([r["hi"] for r in regs])
     grow = _growth_damped if damped else _growth_undamped
@@ -774,7 +846,9 @@ def _search(system: LinearPeriodicSystem, lo: float, hi: float, opt: _Options,
         keep = select(cand)
         cand = {key: v[keep] for key, v in cand.items()}
     if system.damped:  # seeds from the undamped system, searched a little wider
-        regs = _undamped_search(undamped, w, cand, 0.5 * lo, 2.0 * hi, opt)
+        # regions narrower than the monodromy floor (growth ~ width) are not looked for: damping
+        # suppresses them unless the decay rate is below that growth
+        regs = _undamped_search(undamped, w, cand, 0.5 * lo, 2.0 * hi, opt, narrow=False)
         regs = _damped_search(system, regs, opt, 0.5 * lo, 2.0 * hi)
     else:
         regs = _undamped_search(undamped, w, cand, lo, hi, opt)
@@ -930,8 +1004,11 @@ def critical_amplitude(M, C, A, B1, *, gamma_max: float, omega_min: float, omega
 
     Without damping every region grows out of its candidate centre at gamma = 0.  With damping
     the largest growth rate near the region, g(gamma) = max_Omega log|rho|_max / T, is negative
-    at gamma = 0 and positive at gamma_max; its root (brentq) is the amplitude at which the two
-    boundaries meet (Bolotin 1964, sec. 6: mu_cr = Delta / pi for the damped Mathieu equation).
+    at gamma = 0 and positive at gamma_max; its root (Illinois regula falsi, all regions at
+    once, each g a Brent maximum over the region's Omega interval at gamma_max, with its own
+    monodromy accuracy: independent of the search's rtol and step_phase) is the amplitude at
+    which the two boundaries meet (Bolotin 1964, sec. 6: mu_cr = Delta / pi for the damped
+    Mathieu equation).
 
     Parameters
     ----------
@@ -942,7 +1019,10 @@ def critical_amplitude(M, C, A, B1, *, gamma_max: float, omega_min: float, omega
     omega_min, omega_max : float
         Omega range (rad per time unit).
     gamma_rtol : float
-        Relative tolerance on gamma_cr (dimensionless).
+        Tolerance on gamma_cr relative to gamma_max (dimensionless), 1e-12..1e-2; the growth
+        maxima are converged to ~1e-8 of the peak and integrated at step_phase
+        min(step_phase, 0.12) (error ~1e-8 relative on gamma_cr), so the tip is accurate to
+        about gamma_rtol + 1e-7 relative whatever the search's rtol.
     regions : tuple of InstabilityRegion, optional
         The regions at gamma_max from :func:`instability_regions` with the same range and
         options, if already computed (saves that search; not checked).
@@ -961,33 +1041,81 @@ def critical_amplitude(M, C, A, B1, *, gamma_max: float, omega_min: float, omega
     gmax = _gamma_max(gamma_max)
     lo, hi = _range(omega_min, omega_max)
     opt = _options(**options)
+    if not (np.isfinite(gamma_rtol) and 1e-12 <= gamma_rtol <= 1e-2):
+        raise ValueError(f"gamma_rtol = {gamma_rtol!r}: must be in 1e-12..1e-2")
     B1 = np.asarray(B1, dtype=float)
     base = periodic_system(M, C, A, gmax * B1)
     top = _search(base, lo, hi, opt) if regions is None else tuple(regions)
-    out = []
-    for r in top:
-        if r.kind == "steady":
-            continue
-        if not base.damped:
-            out.append(CriticalAmplitude(r.kind, r.modes, r.order, 0.0, r.omega_center))
-            continue
+    top = tuple(r for r in top if r.kind != "steady")
+    if not base.damped:
+        return tuple(CriticalAmplitude(r.kind, r.modes, r.order, 0.0, r.omega_center)
+                     for r in top)
+    if not top:
+        return ()
+    c_cr, om_cr = _tips(base, top, opt, gamma_rtol)
+    return tuple(CriticalAmplitude(r.kind, r.modes, r.order, float(c * gmax), float(o))
+                 for r, c, o in zip(top, c_cr, om_cr, strict=True))
 
-        def peak(g, r=r):
-            sys_g = periodic_system(M, C, A, g * B1)
-            regs = [q for q in _search(sys_g, lo, hi, opt, select=_selector(r)) if
-                    _key(q) == _key(r)]
-            if regs:
-                return regs[0].growth_rate_max, regs[0].omega_at_max
-            return -1.0, r.omega_center
 
-        glo = gmax * 1e-3
-        while peak(glo)[0] > 0.0 and glo > 1e-12 * gmax:
-            glo *= 0.1
-        g_cr = scipy.optimize.brentq(lambda g: peak(g)[0], glo, gmax, xtol=gamma_rtol * gmax,
-                                     maxiter=200)
-        out.append(CriticalAmplitude(r.kind, r.modes, r.order, float(g_cr),
-                                     float(peak(min(gmax, g_cr * (1 + 10 * gamma_rtol)))[1])))
-    return tuple(out)
+#: Monodromy step parameter of the tip search (:func:`_tips`), whatever the search's own.
+TIP_STEP_PHASE = 0.12
+#: Omega tolerance of the growth maximum at each amplitude, relative to the region's width at
+#: gamma_max (the growth is quadratic about its maximum: its error is ~1e-8 of the peak).
+TIP_OMEGA_XTOL = 1e-4
+
+
+def _tips(base: LinearPeriodicSystem, top, opt: _Options, gamma_rtol: float):
+    """Critical amplitude factors c (B = c B_top) and Omega of the tips, all regions at once.
+
+    g(c) = max_Omega growth(Omega, c) over each region's Omega interval at gamma_max (the
+    region at a smaller amplitude lies inside it) is increasing, g(0) = -(slowest steady decay)
+    < 0 (exact, from the steady eigenvalues) and g(1) > 0; its root c_cr is bracketed by
+    [0, 1] and found by vectorised Illinois regula falsi to gamma_rtol; each g is a
+    vectorised Brent maximum over Omega (to TIP_OMEGA_XTOL of the width, from the previous
+    maximiser), with the monodromy at TIP_STEP_PHASE: the tip does not depend on the search's
+    rtol or step_phase (Bolotin 1964, sec. 6: the two boundaries meet where the largest
+    growth rate is zero).
+    """
+    tip = _Options(rtol=opt.rtol, step_phase=min(opt.step_phase, TIP_STEP_PHASE),
+                   max_steps=opt.max_steps, max_order=opt.max_order,
+                   max_candidates=opt.max_candidates, chunk=opt.chunk,
+                   damping_margin=opt.damping_margin)
+    a = np.array([r.omega_lo for r in top])
+    b = np.array([r.omega_hi for r in top])
+    xs = np.array([r.omega_at_max for r in top])
+    xtol = np.maximum(TIP_OMEGA_XTOL * (b - a), 1e-15 * b)
+
+    def g(c, idx):
+        def f(x, sub):
+            return _growth_damped(base, x, tip, scale=c[idx][sub])
+
+        x, gx = _brent_max(f, a[idx], b[idx], xs[idx], xtol[idx])
+        xs[idx] = x
+        return gx
+
+    n = base.n
+    L0 = np.block([[np.zeros((n, n)), np.eye(n)], [-base.K0, -base.Kc]])
+    g0 = float(np.max(np.linalg.eigvals(L0).real))  # growth at c = 0 (steady), < 0
+    P = len(top)
+    every = np.arange(P)
+    g1 = g(np.ones(P), every)
+    c_in, f_in = np.ones(P), g1
+    c_out, f_out = np.zeros(P), np.full(P, g0)
+    pos = g1 > 0.0  # a region at gamma_max (always, unless given a stale table)
+    c_cr = np.ones(P)
+    if pos.any():
+        ids = np.nonzero(pos)[0]
+        c_vec = np.ones(P)
+
+        def root_f(c, act):
+            c_vec[ids[act]] = c
+            return g(c_vec, ids[act])
+
+        c_cr[ids] = _illinois(root_f, c_in[ids], f_in[ids], c_out[ids], f_out[ids],
+                              np.full(ids.size, gamma_rtol))
+        c_vec[ids] = c_cr[ids]
+        g(c_vec, ids)  # the maximiser at the tip
+    return c_cr, xs
 
 
 def _selector(r):
@@ -1041,10 +1169,10 @@ def region_boundaries(M, C, A, B1, *, gamma_max: float, omega_min: float, omega_
         raise ValueError(f"n_gamma = {n_gamma!r}: must be an integer in 2..1000")
     opt = _options(**options)
     B1 = np.asarray(B1, dtype=float)
-    crit = critical_amplitude(M, C, A, B1, gamma_max=gmax, omega_min=lo, omega_max=hi,
-                              **options)
     levels = np.linspace(0.0, gmax, n_gamma)[1:]
     found = [_search(periodic_system(M, C, A, g * B1), lo, hi, opt) for g in levels]
+    crit = critical_amplitude(M, C, A, B1, gamma_max=gmax, omega_min=lo, omega_max=hi,
+                              regions=found[-1], **options)  # levels[-1] = gamma_max
     out = []
     for c in crit:
         key = (c.kind, c.modes, c.order)
