@@ -23,6 +23,7 @@ from flexbooster.floquet import (
     critical_amplitude,
     floquet_exponents,
     floquet_multipliers,
+    golden_section_max,
     growth_rate,
     hill_exponents,
     instability_regions,
@@ -749,6 +750,30 @@ def test_damping_filter_never_drops_a_region(seed, gamma):
                                                          for r in full]
     for a, b in zip(fast, full, strict=True):
         assert (a.omega_lo, a.omega_hi) == pytest.approx((b.omega_lo, b.omega_hi), rel=1e-8)
+
+
+def test_golden_section_max_vectorised():
+    # closed form: the maxima of -(x - c)^2 + c (c = 0.3, 1.7, -2.2 in three intervals) and
+    # of sin on [0, 3] (pi / 2), each to its xtol 1e-6 (golden section keeps the maximum in
+    # the final bracket while f values differ beyond round-off, i.e. down to ~sqrt(eps) |x|)
+    c = np.array([0.3, 1.7, -2.2])
+    seen = []
+
+    def f(x, idx):
+        seen.append(idx.size)
+        return -(x - c[idx]) ** 2 + c[idx]
+
+    x, fx = golden_section_max(f, [0.0, 1.0, -3.0], [1.0, 2.5, 0.0], xtol=1e-6)
+    assert np.all(np.abs(x - c) <= 1e-6) and np.allclose(fx, c, atol=1e-12)
+    (xs,), _ = golden_section_max(lambda x, idx: np.sin(x), [0.0], [3.0], xtol=1e-6)
+    assert abs(xs - np.pi / 2) <= 1e-6
+    for kwargs, name in (({"a": [1.0], "b": [0.0], "xtol": 1e-3}, "b"),
+                         ({"a": [0.0], "b": [1.0], "xtol": 0.0}, "xtol"),
+                         ({"a": [0.0], "b": [1.0], "xtol": 1e-3, "max_iter": 0}, "max_iter")):
+        with pytest.raises(ValueError, match=name):
+            golden_section_max(f, **kwargs)
+    with pytest.raises(ValueError, match="no convergence"):
+        golden_section_max(f, [0.0], [1.0], xtol=1e-12, max_iter=3)
 
 
 def test_bad_damping_margin():

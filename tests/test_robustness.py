@@ -458,7 +458,9 @@ _FUZZ_FLOQUET = {
 }
 
 
+@pytest.mark.slow
 def test_fuzz_reproducer_damped_band_search():
-    # the case runs through and its result is JSON-ready (no Omega <= 0, no NaN)
+    # the case runs through and its result is JSON-ready (no Omega <= 0, no NaN); about 2 min
+    # on the shared machine, most of it the vehicle-regions stage at gamma = 0.92
     res = analyze(flexbooster.load_case(_FUZZ_FLOQUET), stability=False, figures=False)
     json.dumps(res.to_dict(), allow_nan=False)

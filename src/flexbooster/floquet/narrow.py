@@ -66,24 +66,49 @@ def _pair_layout(kind: np.ndarray, j: np.ndarray, L: int):
     return s_a - s_min, s_b - s_min, np.ones(kind.size), np.where(diff, 1.0, -1.0), s_min
 
 
-def _block_solve(Dg, Up, Lo, R):
-    """Solve the block-tridiagonal systems (batched): blocks Dg (B, h, n, n) on the diagonal,
-    Up[:, p] = block (p, p + 1), Lo[:, p] = block (p + 1, p); R (B, h, n, r).  Block Thomas
-    (block LU without inter-block pivoting; the diagonal blocks dominate for weak coupling).
+def _block_factor(Dg, Up, Lo):
+    """Block LU of the block-tridiagonal matrices (batched): the inverses of the pivot blocks.
+
+    Blocks Dg (B, h, n, n) on the diagonal, Up[:, p] = block (p, p + 1), Lo[:, p] = block
+    (p + 1, p).  Block Thomas (block LU without inter-block pivoting; the diagonal blocks
+    dominate for weak coupling): T = L U, U with the pivots D'_p and Up, L unit lower with
+    Lo_p D'_p^-1.  Returns the inverses D'_p^-1, (B, h, n, n).
     """
-    B, h, n, _ = Dg.shape
-    Dp = np.empty_like(Dg)
-    Rp = np.empty_like(R)
-    Dp[:, 0], Rp[:, 0] = Dg[:, 0], R[:, 0]
+    h = Dg.shape[1]
+    Di = np.empty_like(Dg)
+    Di[:, 0] = np.linalg.inv(Dg[:, 0])
     for p in range(1, h):
-        G = np.linalg.solve(Dp[:, p - 1], np.concatenate([Up[:, p - 1], Rp[:, p - 1]], -1))
-        Dp[:, p] = Dg[:, p] - Lo[:, p - 1] @ G[..., :n]
-        Rp[:, p] = R[:, p] - Lo[:, p - 1] @ G[..., n:]
+        Di[:, p] = np.linalg.inv(Dg[:, p] - Lo[:, p - 1] @ (Di[:, p - 1] @ Up[:, p - 1]))
+    return Di
+
+
+def _block_solve(Di, Up, Lo, R):
+    """T X = R with the factors of :func:`_block_factor` (R: (B, h, n, r))."""
+    h = Di.shape[1]
+    Rp = np.empty_like(R)
+    Rp[:, 0] = R[:, 0]
+    for p in range(1, h):
+        Rp[:, p] = R[:, p] - Lo[:, p - 1] @ (Di[:, p - 1] @ Rp[:, p - 1])
     X = np.empty_like(R)
-    X[:, h - 1] = np.linalg.solve(Dp[:, h - 1], Rp[:, h - 1])
+    X[:, h - 1] = Di[:, h - 1] @ Rp[:, h - 1]
     for p in range(h - 2, -1, -1):
-        X[:, p] = np.linalg.solve(Dp[:, p], Rp[:, p] - Up[:, p] @ X[:, p + 1])
+        X[:, p] = Di[:, p] @ (Rp[:, p] - Up[:, p] @ X[:, p + 1])
     return X
+
+
+def _block_solve_t(Di, Up, Lo, R):
+    """T^T Y = R with the same factors: U^T z = R forward, then L^T Y = z backward."""
+    h = Di.shape[1]
+    DiT = np.swapaxes(Di, -1, -2)
+    Z = np.empty_like(R)
+    Z[:, 0] = DiT[:, 0] @ R[:, 0]
+    for p in range(1, h):
+        Z[:, p] = DiT[:, p] @ (R[:, p] - np.swapaxes(Up[:, p - 1], -1, -2) @ Z[:, p - 1])
+    Y = np.empty_like(R)
+    Y[:, h - 1] = Z[:, h - 1]
+    for p in range(h - 2, -1, -1):  # (Lo_p D'_p^-1)^T = D'_p^-T Lo_p^T
+        Y[:, p] = Z[:, p] - DiT[:, p] @ (np.swapaxes(Lo[:, p], -1, -2) @ Y[:, p + 1])
+    return Y
 
 
 def _discriminant(mu, Bt, om, lam0, ia, ib, pa, pb, s_min, h, n_fix):
@@ -130,12 +155,12 @@ def _discriminant(mu, Bt, om, lam0, ia, ib, pa, pb, s_min, h, n_fix):
         for p_, i_ in ((pa, ia), (pb, ib)):  # P rows of the right sides: 0
             R[rows, p_, i_, :] = 0.0
             Lt[rows, p_, i_, :] = 0.0
-        X = _block_solve(Dg, Up, Lo, R)  # T_QQ^-1 T_QP
+        Di = _block_factor(Dg, Up, Lo)
+        X = _block_solve(Di, Up, Lo, R)  # T_QQ^-1 T_QP
         if symmetric:  # T = T^T: (T_PQ T_QQ^-1)^T = T_QQ^-1 T_QP
             Y = X
         else:
-            Y = _block_solve(np.swapaxes(Dg, -1, -2), np.swapaxes(Lo, -1, -2),
-                             np.swapaxes(Up, -1, -2), Lt)  # (T_PQ T_QQ^-1)^T
+            Y = _block_solve_t(Di, Up, Lo, Lt)  # (T_PQ T_QQ^-1)^T
         # S_0 = T_PP - T_PQ X, S' = T_PP' + Y^T diag(T_QQ') X  (Loewdin partitioning)
         tpp = np.zeros((B, 2, 2), dtype=complex)
         tpp[:, 0, 0] = diag[rows, pa, ia]

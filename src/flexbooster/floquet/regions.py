@@ -60,6 +60,7 @@ from .narrow import narrow_search
 
 __all__ = [
     "DAMPING_MARGIN",
+    "golden_section_max",
     "InstabilityRegion",
     "instability_regions",
     "RegionBoundary",
@@ -73,10 +74,9 @@ _GOLD = 0.5 * (np.sqrt(5.0) - 1.0)
 #: Round-off floor of the indicators (s-values are O(1), eigenvalue errors ~ eps ||S||): a
 #: maximum below it is not a region.  Detection limit: relative width ~ 2 sqrt(floor) / (pi j).
 _F_FLOOR = 1e-14
-#: Smallest relative width looked for by the harmonic-balance pair of :mod:`.narrow` (its
-#: resolution is ~1e-15 relative): candidates whose estimated width is 100 times smaller
-#: still are not examined.
-_NARROW_FLOOR = 1e-13
+#: Candidates whose estimated width is below 1e-2 x this (relative) are not examined by the
+#: harmonic-balance pair of :mod:`.narrow`: 1e-14, its reporting floor ``narrow.MIN_WIDTH``.
+_NARROW_FLOOR = 1e-12
 #: A monodromy candidate whose indicator maximum is below -_F_SCREEN has no region (its pair
 #: of s-values stays 1e-6 apart, far beyond the integration error): not re-examined.
 _F_SCREEN = 1e-6
@@ -366,13 +366,61 @@ def _growth_damped(system, om, opt, scale=None) -> np.ndarray:
 # --------------------------------------------------------------------------------------------
 # Vectorised scalar solvers
 # --------------------------------------------------------------------------------------------
+def golden_section_max(f, a, b, *, xtol, max_iter: int = 200,
+                       stop_positive: bool = False) -> tuple[np.ndarray, np.ndarray]:
+    """Maximise f on [a, b] by golden-section search, vectorised over independent intervals.
+
+    Each interval m is shrunk by the golden ratio per step, keeping the larger of its two
+    interior values, until b_m - a_m <= xtol_m (Kiefer 1953; Press et al. 2007, sec. 10.2);
+    f must be unimodal on each interval for the global maximum.
+
+    Parameters
+    ----------
+    f : callable
+        f(x, idx) -> values: x (P',) the points (unit of a, b) for the intervals idx (P',),
+        integer indices into the arrays; returns (P',) floats (any unit).
+    a, b : array_like
+        Interval ends, shape (P,), finite, a < b (unit of x).
+    xtol : array_like
+        Final interval lengths, shape (P,) or scalar, > 0 (unit of x).
+    max_iter : int
+        Cap on the steps (ValueError beyond it), >= 1.
+    stop_positive : bool
+        If True an interval stops as soon as f > 0 at one of its points.
+
+    Returns
+    -------
+    x, fx : numpy.ndarray
+        The best point of each interval and f there, shape (P,).
+
+    Raises
+    ------
+    ValueError
+        Bad arguments (naming them), or no convergence in max_iter steps.
+
+    References
+    ----------
+    J. Kiefer, "Sequential minimax search for a maximum", Proc. AMS 4 (1953) 502-506;
+    W. H. Press et al., *Numerical Recipes*, 3rd ed., Cambridge, 2007, sec. 10.2.
+    """
+    a = np.atleast_1d(np.asarray(a, dtype=float))
+    b = np.atleast_1d(np.asarray(b, dtype=float))
+    if a.ndim != 1 or a.shape != b.shape or not (np.all(np.isfinite(a))
+                                                 and np.all(np.isfinite(b))):
+        raise ValueError(f"a = {a!r}: a and b must be finite 1-D arrays of the same shape")
+    if np.any(b <= a):
+        raise ValueError(f"b = {b!r}: must be > a")
+    xtol = np.broadcast_to(np.asarray(xtol, dtype=float), a.shape)
+    if not np.all(np.isfinite(xtol)) or np.any(xtol <= 0.0):
+        raise ValueError(f"xtol = {xtol!r}: must be finite and > 0")
+    if isinstance(max_iter, bool) or not isinstance(max_iter, int | np.integer) or max_iter < 1:
+        raise ValueError(f"max_iter = {max_iter!r}: must be an integer >= 1")
+    return _golden_max(f, a, b, xtol, max_iter, stop_positive)
+
+
 def _golden_max(f, a: np.ndarray, b: np.ndarray, xtol: np.ndarray, max_iter: int = 200,
                 stop_positive: bool = False) -> tuple[np.ndarray, np.ndarray]:
-    """Maximise f (vectorised) on [a, b] by golden section to |b - a| <= xtol.
-
-    With ``stop_positive`` a point stops as soon as f > 0 somewhere (the region is found; its
-    boundaries are bracketed from there).
-    """
+    """:func:`golden_section_max` without the checks (arrays of the same shape)."""
     a, b = a.copy(), b.copy()
     x1 = b - _GOLD * (b - a)
     x2 = a + _GOLD * (b - a)
