@@ -76,10 +76,25 @@ def _block_factor(Dg, Up, Lo):
     """
     h = Dg.shape[1]
     Di = np.empty_like(Dg)
-    Di[:, 0] = np.linalg.inv(Dg[:, 0])
+    Di[:, 0] = _inv(Dg[:, 0])
     for p in range(1, h):
-        Di[:, p] = np.linalg.inv(Dg[:, p] - Lo[:, p - 1] @ (Di[:, p - 1] @ Up[:, p - 1]))
+        Di[:, p] = _inv(Dg[:, p] - Lo[:, p - 1] @ (Di[:, p - 1] @ Up[:, p - 1]))
     return Di
+
+
+def _inv(A: np.ndarray) -> np.ndarray:
+    """Batched inverse; a singular entry (a component of Q exactly resonant at lambda_0) gives
+    NaN there, so that candidate is reported as not resolved instead of failing the batch."""
+    try:
+        return np.linalg.inv(A)
+    except np.linalg.LinAlgError:
+        out = np.full_like(A, np.nan)
+        for b in range(A.shape[0]):  # rare: only after a failed batch
+            try:
+                out[b] = np.linalg.inv(A[b])
+            except np.linalg.LinAlgError:
+                pass
+        return out
 
 
 def _block_solve(Di, Up, Lo, R):

@@ -24,9 +24,11 @@ a window that holds no other candidate), and where the maximum is above the roun
 both boundaries are bracketed outward and refined on F = 0 (vectorised Illinois regula falsi)
 to the stated tolerance; if the system is still unstable beyond (an overlapping region) the
 march goes on with the whole-system indicator to the first Omega where |rho|_max = 1, so
-overlapping regions are reported as their union.  With damping, the undamped regions seed the
-search of max log|rho| > 0 from the full-period monodromy (see ``docs/theory/floquet.md`` for
-the assumptions and limits).
+overlapping regions are reported as their union.  Candidates below the round-off floor of the
+indicators (relative width ~6e-8 / j) are examined by the harmonic-balance pair discriminant of
+:mod:`.narrow`, whose resolution is linear in the width.  With damping, the undamped regions
+seed the search of max log|rho| > 0 from the full-period monodromy (see
+``docs/theory/floquet.md`` for the assumptions and limits).
 
 References
 ----------
@@ -945,8 +947,11 @@ def instability_regions(M, C, A, B, omega_min: float, omega_max: float, *,
     tuple of InstabilityRegion
         Sorted by omega_lo; every edge is a point of |rho|_max = 1 (or an end of the range,
         ``clipped``); overlapping regions come as their union, labelled by the lowest-order
-        candidate that reached it.  Regions narrower than about 6e-8 / j of their centre are
-        below the round-off floor of the indicators and not reported.  If the steady system
+        candidate that reached it.  Regions narrower than about 6e-8 / j of their centre
+        (below the round-off floor of the monodromy indicators) come from the harmonic-balance
+        pair of :mod:`flexbooster.floquet.narrow` (undamped systems; edges and growth rate
+        resolved linearly in the width) down to 1e-14 of their centre; narrower ones are not
+        reported.  If the steady system
         (B = 0) is itself unstable (complex or non-positive eigenvalues of M^-1 A, or a damped
         steady system with a growing mode) the result is one region of kind "steady" over the
         whole range.
