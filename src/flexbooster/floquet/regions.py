@@ -1111,10 +1111,10 @@ def critical_amplitude(M, C, A, B1, *, gamma_max: float, omega_min: float, omega
 
 
 #: Monodromy step parameter of the tip search (:func:`_tips`), whatever the search's own.
-TIP_STEP_PHASE = 0.12
+_TIP_STEP_PHASE = 0.12
 #: Omega tolerance of the growth maximum at each amplitude, relative to the region's width at
 #: gamma_max (the growth is quadratic about its maximum: its error is ~1e-8 of the peak).
-TIP_OMEGA_XTOL = 1e-4
+_TIP_OMEGA_XTOL = 1e-4
 
 
 def _tips(base: LinearPeriodicSystem, top, opt: _Options, gamma_rtol: float):
@@ -1124,19 +1124,19 @@ def _tips(base: LinearPeriodicSystem, top, opt: _Options, gamma_rtol: float):
     region at a smaller amplitude lies inside it) is increasing, g(0) = -(slowest steady decay)
     < 0 (exact, from the steady eigenvalues) and g(1) > 0; its root c_cr is bracketed by
     [0, 1] and found by vectorised Illinois regula falsi to gamma_rtol; each g is a
-    vectorised Brent maximum over Omega (to TIP_OMEGA_XTOL of the width, from the previous
-    maximiser), with the monodromy at TIP_STEP_PHASE: the tip does not depend on the search's
+    vectorised Brent maximum over Omega (to _TIP_OMEGA_XTOL of the width, from the previous
+    maximiser), with the monodromy at _TIP_STEP_PHASE: the tip does not depend on the search's
     rtol or step_phase (Bolotin 1964, sec. 6: the two boundaries meet where the largest
     growth rate is zero).
     """
-    tip = _Options(rtol=opt.rtol, step_phase=min(opt.step_phase, TIP_STEP_PHASE),
+    tip = _Options(rtol=opt.rtol, step_phase=min(opt.step_phase, _TIP_STEP_PHASE),
                    max_steps=opt.max_steps, max_order=opt.max_order,
                    max_candidates=opt.max_candidates, chunk=opt.chunk,
                    damping_margin=opt.damping_margin)
     a = np.array([r.omega_lo for r in top])
     b = np.array([r.omega_hi for r in top])
     xs = np.array([r.omega_at_max for r in top])
-    xtol = np.maximum(TIP_OMEGA_XTOL * (b - a), 1e-15 * b)
+    xtol = np.maximum(_TIP_OMEGA_XTOL * (b - a), 1e-15 * b)
 
     def g(c, idx):
         def f(x, sub):
