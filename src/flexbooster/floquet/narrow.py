@@ -140,7 +140,7 @@ def _discriminant(mu, Bt, om, lam0, ia, ib, pa, pb, s_min, h, n_fix):
     symmetric = bool(np.all(Bt == Bt.T))
     for _ in range(n_fix + 1):
         z = lam0[:, None] + 1j * s * om[:, None]  # lambda + i s Omega, (B, h)
-        diag = mu[None, None, :] + z[:, :, None] ** 2  # (B, h, n)
+        diag = mu[None, None, :] + z[:, :, None] ** 2  # Hill's blocks, Bolotin (1964) sec. 7-8
         dd = 2.0 * z[:, :, None] * np.ones(n)[None, None, :]  # d/d lambda of the diagonal
         Dg = np.zeros((B, h, n, n), dtype=complex)
         idx = np.arange(n)
@@ -183,7 +183,7 @@ def _discriminant(mu, Bt, om, lam0, ia, ib, pa, pb, s_min, h, n_fix):
         adj = (pa - pb == 1) | (pb - pa == 1)  # j = 1: the pair couples directly
         tpp[:, 0, 1] = np.where(adj, half[ia, ib], 0.0)
         tpp[:, 1, 0] = np.where(adj, half[ib, ia], 0.0)
-        S0 = tpp - np.einsum("bhnc,bhnd->bcd", Lt, X)
+        S0 = tpp - np.einsum("bhnc,bhnd->bcd", Lt, X)  # Loewdin (1963) partitioning
         dpp = np.zeros((B, 2, 2), dtype=complex)
         dpp[:, 0, 0] = dd[rows, pa, ia]
         dpp[:, 1, 1] = dd[rows, pb, ib]
@@ -199,7 +199,7 @@ def _discriminant(mu, Bt, om, lam0, ia, ib, pa, pb, s_min, h, n_fix):
         c = p11 - p12
         xm = -b / (2.0 * a)
         lam0 = lam0 + xm  # the pair's midpoint (fixed point; the last one is returned)
-    D = (b * b - 4.0 * a * c) / (a * a)  # (lambda_1 - lambda_2)^2 of the linearised pair
+    D = (b * b - 4.0 * a * c) / (a * a)  # (lambda_1 - lambda_2)^2, module docstring
     err = 16.0 * _EPS * (np.abs(b) ** 2 + 4.0 * np.abs(a) * (np.abs(p11) + np.abs(p12))) \
         / np.abs(a) ** 2
     return D, lam0, err
