@@ -55,7 +55,12 @@ import numpy as np
 import scipy.linalg
 
 from ..checks import count, nonnegative, positive
-from ..floquet import critical_amplitude, instability_regions, periodic_boundaries
+from ..floquet import (
+    critical_amplitude,
+    golden_section_max,
+    instability_regions,
+    periodic_boundaries,
+)
 from ..floquet import hill_exponents as floquet_hill_exponents
 from . import beam
 
@@ -1209,21 +1214,10 @@ def _growth_max(A, C, B, lo: float, hi: float) -> tuple[float, float]:
     g = _hill_growth(A, C, B, x, S)
     i = int(np.argmax(g))
     a, b = (x[i - 1] if i > 0 else lo), (x[i + 1] if i < x.size - 1 else hi)
-    phi = 0.5 * (np.sqrt(5.0) - 1.0)
-    c, d = b - phi * (b - a), a + phi * (b - a)
-    gc, gd = _hill_growth(A, C, B, np.array([c, d]), S)
-    for _ in range(60):  # golden section (Press et al. 2007, sec. 10.2) to 1e-5 of the band:
-        if b - a <= 1e-5 * (hi - lo):  # the maximum is flat, the growth then exact to ~1e-10
-            break
-        if gc >= gd:
-            b, d, gd = d, c, gc
-            c = b - phi * (b - a)
-            gc = _hill_growth(A, C, B, np.array([c]), S)[0]
-        else:
-            a, c, gc = c, d, gd
-            d = a + phi * (b - a)
-            gd = _hill_growth(A, C, B, np.array([d]), S)[0]
-    x0 = c if gc >= gd else d
+    # golden section (Press et al. 2007, sec. 10.2) to 1e-5 of the band: the maximum is flat,
+    # the growth then exact to ~1e-10
+    (x0,), _ = golden_section_max(lambda om, idx: _hill_growth(A, C, B, om, S), [a], [b],
+                                  xtol=1e-5 * (hi - lo), max_iter=60)
     g0 = _hill_growth(A, C, B, np.array([x0]), S + 4)[0]  # the converged value at the maximum
     return float(max(g0, 0.0)), float(x0)
 
