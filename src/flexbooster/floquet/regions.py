@@ -215,7 +215,7 @@ def _damping_caps(w, Bt, base, i0, k0, zrow, zeta, rate, margin) -> np.ndarray:
     lam2 = base * zrow[i0] * zrow[k0] / 4.0  # j = 2 (and the path part of j = 1)
     lam1 = np.maximum(np.maximum(R[i0], R[k0]), lam2)
     cap = np.where(margin * lam1 > d, 1, 0).astype(np.int64)
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):  # t = inf: no j >= 2
         t = d / (margin * lam2)  # j >= 2 kept while zeta^(j-2) > t
         if zeta < 1.0:
             L = np.where(t < 1.0, np.log(np.maximum(t, 1e-300)) / np.log(zeta), -1.0)

@@ -700,7 +700,8 @@ def _multipliers_from_half(Phi: np.ndarray) -> np.ndarray:
         rho = np.zeros(Phi.shape[:-1], dtype=complex)
         bad = np.ones(Phi.shape[0], dtype=bool)
     for i in np.flatnonzero(bad):  # rare: QZ per point, (Phi R) u = rho (R Phi) u
-        rho[i] = scipy.linalg.eigvals(PhiR[i], R[:, None] * Phi[i])
+        rho[i] = (scipy.linalg.eigvals(PhiR[i], R[:, None] * Phi[i])
+                  if np.all(np.isfinite(Phi[i])) else np.nan)  # overflowed: reported by caller
     return rho
 
 
