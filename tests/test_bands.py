@@ -319,11 +319,27 @@ def test_damped_pitch_tongue_has_bolotins_critical_gamma(titan_model):
 
 
 @pytest.mark.slow
+@pytest.mark.slow
 def test_pipeline_bands_hold_the_coupled_tongue_below_omega_1_over_4(titan_model):
+    # The coupled rigid-pitch tongues r = 3, 2, 1 below omega_1 / 4 (harmonic balance).  Tongue
+    # 3 lies wholly below its tip 2 omega_p / 3 (Mathieu a_3, b_3 = 9 + q^2/16 +- q^3/64, A&S
+    # 20.2.25); it was missed until the search followed the pitch-only tongue.  Independent
+    # check: the toolkit's monodromy of the full system (floquet.growth_rate) is 0 at 1e-6
+    # outside each edge, > 0 at 1e-6 inside, and equals the reported largest growth rate at
+    # omega_at_max to 1e-6 relative (measured 2e-8).
     bands = pipeline_bands(titan_model)
-    low = [b for b in bands if b.omega_hi < BAND_OMEGA_BAR_MIN * beam_system(titan_model).omega_1]
-    assert [b.order for b in low] == [2, 1]  # the two resolved tongues, by omega_lo
+    s = beam_system(titan_model)
+    w1, n = float(s.omega_1), s.A0.shape[0]
+    low = [b for b in bands if b.omega_hi < BAND_OMEGA_BAR_MIN * w1]
+    assert [b.order for b in low] == [3, 2, 1]  # the resolved tongues, by omega_lo
     assert [b.omega_lo for b in bands] == sorted(b.omega_lo for b in bands)
+    mats = (np.eye(n), None, s.A0, -titan_model.gamma * s.B)
+    for b in low:
+        pts = np.array([b.omega_lo * (1 - 1e-6), b.omega_lo * (1 + 1e-6), b.omega_at_max,
+                        b.omega_hi * (1 - 1e-6), b.omega_hi * (1 + 1e-6)]) / w1
+        g = growth_rate(*mats, pts) * w1  # 1/tau -> 1/s
+        assert g[0] < 1e-12 and g[4] < 1e-12 and g[1] > 0.0 and g[3] > 0.0
+        assert g[2] == pytest.approx(b.growth_rate_max, rel=1e-6)
 
 
 @pytest.mark.slow

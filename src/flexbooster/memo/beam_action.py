@@ -638,11 +638,11 @@ def _monodromy_half(mu: np.ndarray, Bt: np.ndarray, Ob: np.ndarray, gam: np.ndar
     """
     P = Ob.size
     n = mu.size
-    dtype = np.result_type(mu, Bt, float)
     h = (np.pi / Ob) / n_steps  # (P,) step in tau
     # layout (mode, point, column): the modal force is one GEMM Bt @ (n, P * 2n)
     c1, s1, m1 = (e.T[:, :, None] for e in _rotation(mu[None, :], h[:, None]))  # E(h)
     c2, s2, _ = (e.T[:, :, None] for e in _rotation(mu[None, :], 0.5 * h[:, None]))  # E(h/2)
+    dtype = np.result_type(mu, Bt, c1, s1, float)  # complex where a steady mu < 0 (divergence)
     hh = h[None, :, None]
 
     def force(tau, y):  # velocity slope gamma cos(Omega_bar tau) Bt eta (the position slope is 0)
@@ -1132,10 +1132,12 @@ def _match_distance(a: np.ndarray, b: np.ndarray) -> np.ndarray:
 #: this, until two successive K give the same edges to :data:`BAND_RTOL`.
 TONGUE_MAX_HARMONICS = 24
 #: Where round-off keeps two successive K from agreeing to :data:`BAND_RTOL` (a tongue far
-#: below the beam modes, Omega_bar ~ 1e-3, with heavy modal damping: the quadratic
-#: eigenproblem spans 1e3 in frequency, and its pitch roots wander by ~1e-8), the edges of the
-#: two successive K that agree best are used when they agree to this (relative to the centre).
-TONGUE_RTOL_FLOOR = 1e-6
+#: below the beam modes: the harmonic-balance eigenproblem spans omega_beam / Omega in
+#: frequency, and its pitch roots wander by ~eps (omega_beam / Omega)^2 relative: ~1e-8 at
+#: Omega_bar ~ 1e-3 with heavy modal damping, ~1e-6 at Omega_bar ~ 1e-5, two fuzz cases of
+#: issue 18), the edges of the two successive K that agree best are used when they agree to
+#: this (relative to the centre): the edges then carry that uncertainty, not BAND_RTOL.
+TONGUE_RTOL_FLOOR = 1e-4
 #: Relative tolerance of the critical gamma of a damped pitch tongue (bisection).
 TONGUE_GAMMA_RTOL = 1e-6
 #: Hill harmonics (s = -S..S) of the growth rate inside a pitch tongue (checked against S + 4
@@ -1151,8 +1153,44 @@ def _pitch_mode(system: BeamActionSystem) -> int:
     return int(np.flatnonzero(np.argsort(w.real, kind="stable") == int(np.argmax(rel)))[0])
 
 
+def _nearest_pair(r: np.ndarray, ref: tuple[float, float]) -> tuple[float, float] | None:
+    """The roots of ``r`` nearest to each edge of ``ref`` (None unless two distinct ones)."""
+    if r.size < 2:
+        return None
+    i, k = int(np.argmin(np.abs(r - ref[0]))), int(np.argmin(np.abs(r - ref[1])))
+    return (float(r[i]), float(r[k])) if i < k else None
+
+
+def _pitch_only_edges(mu_p: float, b_p: float, c_p: float, *, period: str, centre: float,
+                      window: tuple[float, float]) -> tuple[float, float] | None:
+    """Edges of tongue r of the pitch mode alone, eta'' + c eta' + (mu - b f) eta = 0.
+
+    The 1 x 1 modal equation (a damped Mathieu equation) has in the window only the two
+    edges of its tongue: the two boundary roots nearest the centre 2 omega_p / r, converged
+    in the harmonics.  For r >= 3 the tongue lies wholly below its tip at moderate gamma
+    (Mathieu: a_3, b_3 = 9 + q^2/16 +- q^3/64, A&S 20.2.25), so it guides the coupled search.
+    """
+    A, B = np.array([[mu_p]]), np.array([[-b_p]])
+    C = None if c_p == 0.0 else np.array([[c_p]])
+    prev = None
+    for K in range(4, TONGUE_MAX_HARMONICS + 1, 4):
+        r = periodic_boundaries(np.eye(1), C, A, B, period=period, n_harmonics=K,
+                                omega_max=window[1])
+        r = r[r >= window[0]]
+        cur = (None if r.size < 2 else
+               tuple(float(x) for x in np.sort(r[np.argsort(np.abs(r - centre))[:2]])))
+        if cur is not None and prev is not None and max(
+                abs(cur[0] - prev[0]), abs(cur[1] - prev[1])) <= BAND_RTOL * centre:
+            return cur
+        if cur is None and prev is None and K >= 8:
+            return None
+        prev = cur
+    return prev
+
+
 def _tongue_edges(A, C, B, *, period: str, centre: float, window: tuple[float, float],
-                  rtol: float, harmonics=None) -> tuple[tuple[float, float] | None, int]:
+                  rtol: float, harmonics=None, guess: tuple[float, float] | None = None,
+                  ) -> tuple[tuple[float, float] | None, int]:
     """Edges of the tongue about ``centre`` from the converged T / 2T-periodic boundaries.
 
     Within the window, roots closer than rtol * centre in pairs (double roots: regions of
@@ -1160,8 +1198,10 @@ def _tongue_edges(A, C, B, *, period: str, centre: float, window: tuple[float, f
     edges are the nearest remaining roots below and above the centre, tracked as the
     harmonics K are raised (Bolotin 1964, sec. 4-5) until two successive K agree to
     rtol * centre (or, where round-off stops that, to :data:`TONGUE_RTOL_FLOOR` at best).
-    With ``harmonics`` = (K,) one truncation is used as it is.  Returns the edges (None: no
-    tongue) and the smaller K of the two that agree (as accurate, cheaper).
+    With ``harmonics`` = (K,) one truncation is used as it is.  With ``guess`` (the pitch-only
+    tongue, :func:`_pitch_only_edges`) the edges are the roots nearest to it from the first K
+    on (a tongue r >= 3 does not straddle its tip).  Returns the edges (None: no tongue) and
+    the smaller K of the two that agree (as accurate, cheaper).
     """
     n = A.shape[0]
     prev = None
@@ -1177,13 +1217,14 @@ def _tongue_edges(A, C, B, *, period: str, centre: float, window: tuple[float, f
         drop[1:] |= close
         r = r[~drop]
         below, above = r[r <= centre], r[r > centre]
-        if below.size == 0 or above.size == 0:
+        if prev is not None:  # track the edges of the previous K
+            cur = _nearest_pair(r, prev)
+        elif guess is not None:  # from the pitch-only tongue
+            cur = _nearest_pair(r, guess)
+        elif below.size == 0 or above.size == 0:
             cur = None
-        elif prev is None:
+        else:
             cur = (float(below[-1]), float(above[0]))
-        else:  # track the edges of the previous K
-            cur = (float(r[np.argmin(np.abs(r - prev[0]))]),
-                   float(r[np.argmin(np.abs(r - prev[1]))]))
         if len(Ks) == 1:
             return cur, K
         if cur is not None and prev is not None and max(abs(cur[0] - prev[0]),
@@ -1197,8 +1238,8 @@ def _tongue_edges(A, C, B, *, period: str, centre: float, window: tuple[float, f
                 best = (diff, cur, K - 4)
         prev = cur
     if best[0] <= TONGUE_RTOL_FLOOR * centre:  # converged to round-off, not to rtol
-        cur = best[1]
-        return (cur if cur[1] - cur[0] > TONGUE_RTOL_FLOOR * centre else None), best[2]
+        cur = best[1]  # a tongue when it is wider than twice the wander of its edges
+        return (cur if cur[1] - cur[0] > 2.0 * max(best[0], rtol * centre) else None), best[2]
     raise ValueError(f"pitch tongue near Omega_bar = {centre!r}: its edges did not converge "
                      f"with {TONGUE_MAX_HARMONICS} harmonics")
 
@@ -1276,6 +1317,13 @@ def pitch_tongue_bands(system: BeamActionSystem, gamma: float, *, omega_min: flo
     wp = wp.real
     C = modal_damping(system, beam_ratio=beam_ratio, pitch_ratio=pitch_ratio)
     A = system.A0
+    # the pitch mode alone in the steady modal frame (the guide of each tongue's search)
+    mu, V = np.linalg.eig(A)
+    ip = int(np.argmax(np.abs(V[-1, :]) / np.linalg.norm(V, axis=0)))  # as _pitch_mode
+    Vi = np.linalg.inv(V)
+    mu_p = float(mu[ip].real)
+    b_p = float((Vi @ system.B @ V)[ip, ip].real)
+    c_p = 0.0 if C is None else float((Vi @ C @ V)[ip, ip].real)
     out = []
     r_min = max(1, int(np.ceil(2.0 * wp * w1 / hi - 1e-12)))
     for r in range(r_min, 64):
@@ -1286,8 +1334,10 @@ def pitch_tongue_bands(system: BeamActionSystem, gamma: float, *, omega_min: flo
         period = "2T" if r % 2 else "T"
 
         def edges(g, harmonics=None, centre=centre, window=window, period=period):
+            guess = _pitch_only_edges(mu_p, g * b_p, c_p, period=period, centre=centre,
+                                      window=window)
             return _tongue_edges(A, C, -g * system.B, period=period, centre=centre,
-                                 window=window, rtol=rtol, harmonics=harmonics)
+                                 window=window, rtol=rtol, harmonics=harmonics, guess=guess)
 
         e, K = edges(gamma)
         if e is None:
