@@ -43,6 +43,8 @@ BUDGET = 60.0
 VALID_EXAMPLES = settings.get_profile(PROFILE).max_examples
 INVALID_EXAMPLES = 40 if PROFILE == "ci" else VALID_EXAMPLES
 TALLY: collections.Counter = collections.Counter()
+#: Optional file that gets one line per valid case (time, outcome, case).
+LOG = os.environ.get("FLEXBOOSTER_FUZZ_LOG")
 
 
 def _log_uniform(lo: float, hi: float):
@@ -115,8 +117,12 @@ def _outcome(data: dict) -> str:
 @settings(settings.get_profile(PROFILE))
 @given(valid_cases())
 def test_valid_case_gives_finite_results_or_a_documented_error(data):
+    start = time.perf_counter()
     outcome = _outcome(data)
     kind = outcome.split(":")[0]
+    if LOG:  # one line per case (make fuzz: FLEXBOOSTER_FUZZ_LOG=/tmp/fuzz.log)
+        with open(LOG, "a") as log:
+            log.write(f"{time.perf_counter() - start:8.2f} s  {outcome[:200]}  {data}\n")
     TALLY[kind] += 1
     if kind == "documented":
         FIELDS[outcome] += 1

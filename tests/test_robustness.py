@@ -11,7 +11,6 @@ from __future__ import annotations
 import json
 import math
 import os
-import random
 import signal
 import subprocess
 import sys
@@ -25,7 +24,7 @@ import pytest
 import flexbooster
 from conftest import dump_toml
 from flexbooster import cost
-from flexbooster.analysis import analyze
+from flexbooster.analysis import STAGES, VEHICLE_REGIONS_STAGE, analyze
 from flexbooster.cli import main
 from flexbooster.errors import CaseError
 from flexbooster.memo import beam, charts, pitch, shell, stability
@@ -33,7 +32,12 @@ from flexbooster.memo import beam_action as ba
 from flexbooster.memo import geometry as geo
 from flexbooster.memo import shell_coefficients as sc
 from flexbooster.model import model_from_case
-from flexbooster.present.outputs import MANIFEST, STAGING_PREFIX, check_output_set
+from flexbooster.present.outputs import (
+    MANIFEST,
+    OUTPUT_STAGES,
+    STAGING_PREFIX,
+    check_output_set,
+)
 from test_case import BAD_INPUTS, _set
 
 nan, inf = math.nan, math.inf
@@ -367,7 +371,47 @@ def _small_case(tmp_path: Path, case_dict: dict, name: str, n_omega: int = 30) -
 
 def _cli(*args: str) -> subprocess.Popen:
     env = dict(os.environ, PYTHONPATH=SRC, OPENBLAS_NUM_THREADS="1")
-    return subprocess.Popen([sys.executable, "-m", "flexbooster.cli", "run", "-q", *args],
+    return subprocess.Popen([sys.executable, "-m", "flexbooster", "run", "-q", *args],
+                            stderr=subprocess.PIPE, text=True, env=env)
+
+
+#: A driver of ``flexbooster run`` (the real entry point, flexbooster.__main__.main) that sends
+#: itself a signal when a given progress stage starts: deterministic moments, no sleeps.
+#: ``sync``: os.kill from the main thread at the stage's start (the interrupt is raised
+#: there, before the stage's work); ``thread``: from a thread started then, so that the signal
+#: lands while the main thread works in the stage (or waits on the workers).  It prints the
+#: CLOCK_MONOTONIC time of the kill on stderr ("KILL <t>") to measure the latency.
+_DRIVER = r"""
+import contextlib, os, signal, sys, threading, time
+import flexbooster.cli as cli
+stage, sig, how = sys.argv[1], getattr(signal, sys.argv[2]), sys.argv[3]
+real = cli._progress
+
+def kill():
+    import multiprocessing
+    workers = " ".join(str(p.pid) for p in multiprocessing.active_children())
+    sys.stderr.write(f"KILL {time.monotonic()!r} {workers}\n")
+    sys.stderr.flush()
+    os.kill(os.getpid(), sig)
+
+@contextlib.contextmanager
+def progress(stages, quiet):
+    with real(stages, quiet) as step:
+        def hooked(name):
+            step(name)
+            if name == stage:
+                kill() if how == "sync" else threading.Thread(target=kill).start()
+        yield hooked
+
+cli._progress = progress
+from flexbooster.__main__ import main
+main(["run", "-q", *sys.argv[4:]])
+"""
+
+
+def _driven(stage: str, sig: str, how: str, *args: str) -> subprocess.Popen:
+    env = dict(os.environ, PYTHONPATH=SRC, OPENBLAS_NUM_THREADS="1")
+    return subprocess.Popen([sys.executable, "-c", _DRIVER, stage, sig, how, *args],
                             stderr=subprocess.PIPE, text=True, env=env)
 
 
@@ -384,27 +428,150 @@ def _no_leftovers(folder: Path) -> None:
     assert not [n for n in names if n.endswith(".part") or n.startswith(STAGING_PREFIX)], names
 
 
+def _no_orphans(pids: list[str]) -> None:
+    """The worker processes alive at the kill are gone (or dead, awaiting their reaper)."""
+    deadline = time.monotonic() + 10.0
+    for pid in map(int, pids):
+        status = Path(f"/proc/{pid}/status")
+        while time.monotonic() < deadline:
+            try:
+                state = next(line for line in status.read_text().splitlines()
+                             if line.startswith("State:"))
+            except (FileNotFoundError, ProcessLookupError):
+                break
+            if "Z" in state.split()[1]:
+                break
+            time.sleep(0.05)
+        else:
+            raise AssertionError(f"worker {pid} outlived the interrupted run")
+
+
+#: The ten moments of a run at which a signal is sent: the start of every stage of analyze
+#: (analysis.STAGES, then the vehicle regions) and of write_outputs (OUTPUT_STAGES).
+MOMENTS = (*STAGES, VEHICLE_REGIONS_STAGE, *OUTPUT_STAGES)
+#: Kill -> exit latencies (s) of the last run of test_signal_at_ten_moments, by moment.
+LATENCY: dict = {}
+
+
 @pytest.mark.slow
-def test_interrupted_runs_never_leave_a_mixed_set(tmp_path, case_dict):
-    """SIGTERM and SIGINT at six moments of a run (fixed seed) over a complete previous set:
-    exit 130 (or 0 when it finished), no .part or staging folder, one whole set."""
+def test_signal_at_ten_moments_no_part_file_never_a_mixed_set(tmp_path, case_dict):
+    """Issue 18 acceptance: SIGTERM and SIGINT (alternately) at the 10 moments above, over a
+    complete previous set, each sent by the process to itself from a thread when the stage
+    starts (the signal lands inside the stage's work).  Each run must end by exit 130 with one
+    line "interrupted" and no traceback, leave no .part file and no staging folder, and leave
+    one whole set (results.json and report.html of one case, manifest verified).  "Honoured
+    within a second in every stage" (issue 18 item 1): kill -> exit under a generous 10 s
+    bound (a loaded 2-core machine; measured 0.05-0.4 s, docs/theory/robustness.md)."""
     out = tmp_path / "out"
-    old = _small_case(tmp_path, case_dict, "old-case")
+    assert _cli(str(_small_case(tmp_path, case_dict, "old-case")), "-o", str(out)).wait(
+        timeout=120) == 0
     new = _small_case(tmp_path, case_dict, "new-case")
-    proc = _cli(str(old), "-o", str(out))
-    assert proc.wait(timeout=120) == 0
-    rng = random.Random(18)
-    codes = []
-    for i in range(6):
-        proc = _cli(str(new), "-o", str(out))
-        time.sleep(rng.uniform(0.5, 3.5))
-        proc.send_signal(signal.SIGTERM if i % 2 else signal.SIGINT)
-        _, err = proc.communicate(timeout=60)
-        assert proc.returncode in (0, 130), err
-        codes.append(proc.returncode)
+    for i, moment in enumerate(MOMENTS):
+        sig = "SIGTERM" if i % 2 else "SIGINT"
+        proc = _driven(moment, sig, "thread", str(new), "-j", "2", "-o", str(out))
+        _, err = proc.communicate(timeout=120)
+        ended = time.monotonic()
+        assert proc.returncode == 130, (moment, sig, err)
+        lines = err.strip().splitlines()
+        assert lines[0].startswith("KILL ") and lines[1:] == ["flexbooster: error: interrupted"]
+        LATENCY[moment] = ended - float(lines[0].split()[1])
+        assert LATENCY[moment] < 10.0, (moment, LATENCY[moment])
         _no_leftovers(out)
-        assert _set_name(out) in ("old-case", "new-case")
-    assert 130 in codes  # the signals did land during runs
+        _no_orphans(lines[0].split()[2:])
+        # before the report stage the new set cannot be complete; in it the signal may land
+        # during the renames (held back): then exit 130 with the new set whole
+        allowed = ("old-case",) if moment != OUTPUT_STAGES[-1] else ("old-case", "new-case")
+        assert _set_name(out) in allowed, moment
+    print("\nkill -> exit latency (s): " + ", ".join(f"{m}: {t:.2f}"
+                                                     for m, t in LATENCY.items()))
+
+
+#: ``flexbooster --version`` through the real entry point, with one import stalled: the
+#: process says "importing" when it reaches ``rich.console`` (imported by flexbooster.cli)
+#: and sleeps there, so that the signal deterministically lands while the modules load.
+_STALLED_IMPORT = r"""
+import importlib.abc, sys, time
+class Stall(importlib.abc.MetaPathFinder):
+    def find_spec(self, name, path=None, target=None):
+        if name == "rich.console":
+            sys.stderr.write("importing\n")
+            sys.stderr.flush()
+            time.sleep(60)
+        return None
+sys.meta_path.insert(0, Stall())
+from flexbooster.__main__ import main
+main(["--version"])
+"""
+
+
+@pytest.mark.parametrize("sig", [signal.SIGINT, signal.SIGTERM], ids=["SIGINT", "SIGTERM"])
+def test_signal_during_the_imports_is_one_line_exit_130(sig):
+    """Issue 18: Ctrl-C in the first second of `flexbooster run` (while click, rich, numpy
+    load) printed a traceback.  Expected: exactly one line, exit 130 (no sleep: the signal
+    is sent once the child has said it is inside the import)."""
+    env = dict(os.environ, PYTHONPATH=SRC)
+    proc = subprocess.Popen([sys.executable, "-c", _STALLED_IMPORT], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True, env=env)
+    assert proc.stderr.readline() == "importing\n"
+    proc.send_signal(sig)
+    out, err = proc.communicate(timeout=30)
+    assert proc.returncode == 130 and out == ""
+    assert err == "flexbooster: error: interrupted\n"
+
+
+#: A signal after the outcome of the command is decided: `flexbooster --version` (exit 0)
+#: whose cli.main sends itself SIGINT after returning (the bytecodes between its handlers
+#: and the exit: a KeyboardInterrupt escaping main used to end the process by SIGINT, -2),
+#: or whose atexit handler sends SIGINT and SIGTERM (during the interpreter's exit).
+_LATE_SIGNAL = r"""
+import atexit, os, signal, sys
+import flexbooster.cli as cli
+when = sys.argv[1]
+real = cli.main
+def late(argv):
+    try:
+        real(argv)
+    finally:
+        if when == "after-main":
+            os.kill(os.getpid(), signal.SIGINT)
+cli.main = late
+if when == "atexit":
+    atexit.register(lambda: (os.kill(os.getpid(), signal.SIGINT),
+                             os.kill(os.getpid(), signal.SIGTERM)))
+from flexbooster.__main__ import main
+main(["--version"])
+"""
+
+
+@pytest.mark.parametrize(("when", "code"), [("after-main", 130), ("atexit", 0)])
+def test_late_signal_never_ends_the_process_by_the_signal(when, code):
+    """Issue 18 item 3 (the status -2 once seen): a signal in the last bytecodes of main is
+    an interrupt (130, one line); one after the status is fixed is ignored (0).  Never a
+    negative status (death by the signal) and never a traceback."""
+    env = dict(os.environ, PYTHONPATH=SRC)
+    proc = subprocess.run([sys.executable, "-c", _LATE_SIGNAL, when], capture_output=True,
+                          text=True, env=env, timeout=60)
+    assert proc.returncode == code, proc
+    assert "Traceback" not in proc.stderr
+    if code == 130:
+        assert proc.stderr.endswith("flexbooster: error: interrupted\n")
+
+
+def test_interrupt_in_process_is_a_normal_exit_130(tmp_path, capsys, monkeypatch):
+    """Ctrl-C while the report is written (in-process: cli.main no longer calls os._exit,
+    which would end pytest): SystemExit(130), one line, the staging folder and every .part
+    file removed, nothing published."""
+    from flexbooster.present import report
+
+    def interrupted(*args, **kwargs):
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(report, "write_report", interrupted)
+    out = tmp_path / "out"
+    assert run_cli(["run", "-q", "--no-vehicle", "--no-figures", "-j", "1", "-o",
+                    str(out)]) == 130
+    assert capsys.readouterr().err == "flexbooster: error: interrupted\n"
+    assert [p.name for p in out.iterdir()] == []
 
 
 @pytest.mark.slow
