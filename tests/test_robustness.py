@@ -574,6 +574,31 @@ def test_interrupt_in_process_is_a_normal_exit_130(tmp_path, capsys, monkeypatch
     assert [p.name for p in out.iterdir()] == []
 
 
+def test_signal_is_held_during_the_renames_with_another_thread_alive():
+    """publish_set holds SIGINT back while it renames (issue 18: never a mixed set).  With a
+    second thread alive (the progress bar's, in a terminal) a pthread_sigmask of the main
+    thread did not: the kernel gave the signal to the other thread and the interrupt broke in.
+    Expected: the body runs to its end, then the KeyboardInterrupt is delivered."""
+    import threading
+
+    from flexbooster.present.io import hold_signals
+
+    stop = threading.Event()
+    other = threading.Thread(target=stop.wait, args=(30,), daemon=True)
+    other.start()
+    reached = []
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            with hold_signals():
+                os.kill(os.getpid(), signal.SIGINT)
+                for _ in range(20):
+                    time.sleep(0.005)  # the interrupt would be raised here
+                reached.append("end")
+    finally:
+        stop.set()
+    assert reached == ["end"]
+
+
 @pytest.mark.slow
 def test_two_concurrent_runs_give_one_consistent_set(tmp_path, case_dict):
     out = tmp_path / "out"
