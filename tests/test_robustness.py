@@ -338,14 +338,54 @@ CLI_PROBES = [
     (["stability", "--omega-min", "3000"], "--omega-min"),  # above the case's omega_max
     (["modes", "--k-max", "999"], "--k-max"),
     (["modes", "--f-max", "-3"], "--f-max"),
+    # the rest of the command-line probes ({tmp}: a folder with the files of _probe_files)
+    (["nosuch"], "nosuch"),
+    (["--bogus"], "--bogus"),
+    (["stability", "--omega-min"], "--omega-min"),  # an option without its argument
+    (["run", "--format"], "--format"),
+    (["run", "-j", "0"], "--jobs"),
+    (["run", "-j", "abc"], "--jobs"),
+    (["run", "--max-seconds", "-1"], "--max-seconds"),
+    (["run", "{tmp}/nonexistent.toml"], "case file"),
+    (["run", "{tmp}/badsyntax.toml"], "case file"),
+    (["run", "{tmp}/binary.toml"], "case file"),
+    (["run", "{tmp}/empty.toml"], "booster ="),
+    (["stability", "--omega-max", "5 kg"], "--omega-max"),
+    (["stability", "--omega-min", "-5"], "--omega-min"),
+    (["simulate"], "--omega"),
+    (["simulate", "--omega", "-1", "--tau-max", "10"], "--omega"),
+    (["simulate", "--omega", "300"], "--t-max/--tau-max"),
+    (["simulate", "--omega", "300", "--t-max", "-1"], "--t-max"),
+    (["simulate", "--omega", "300", "--tau-max", "nan"], "--tau-max"),
+    (["simulate", "--omega", "300", "--tau-max", "10", "--n-out", "1"], "--n-out"),
+    (["modes", "--k-max", "abc"], "--k-max"),
+    (["init", "{tmp}/existing"], "PATH"),
+    (["run", "-o", "{tmp}/afile"], "--output"),
 ]
+
+
+def _probe_files(folder: Path) -> None:
+    (folder / "badsyntax.toml").write_text('name = "x"\n[thrust\n')
+    (folder / "binary.toml").write_bytes(b"\xff\xfe\x00 not text")
+    (folder / "empty.toml").write_text("")
+    (folder / "existing").write_text("x")
+    (folder / "afile").write_text("x")
 
 
 @pytest.mark.parametrize(("argv", "field"), CLI_PROBES, ids=[" ".join(a) for a, _ in CLI_PROBES])
 def test_bad_option_probe_exit_2_one_line(capsys, tmp_path, argv, field):
-    assert run_cli(argv) == 2
+    _probe_files(tmp_path)
+    assert run_cli([a.replace("{tmp}", str(tmp_path)) for a in argv]) == 2
     err = capsys.readouterr().err.strip()
-    assert len(err.splitlines()) == 1 and err.count(field) == 1
+    assert len(err.splitlines()) == 1 and err.startswith("flexbooster: error: ")
+    assert err.count(field) == 1, err
+
+
+def test_the_bad_input_table_has_the_issues_74_probes():
+    """Issue 18 acceptance "74/74 one line, exit 2, field named once": the case-field probes
+    (test_case.BAD_INPUTS and EXTRA_PROBES), the command-line probes (CLI_PROBES) and the two
+    paths of test_directory_as_case_file_and_file_as_output, each a parametrized test."""
+    assert len(_PROBES) + len(CLI_PROBES) + 2 == 74
 
 
 def test_directory_as_case_file_and_file_as_output(tmp_path, capsys):

@@ -329,6 +329,17 @@ def stability(
     _wrote(paths, fmt, quiet)
 
 
+def _option_error(message: str, options: dict, given: str) -> CaseError:
+    """The CaseError of a library ``ValueError("name = value: rule")``, on the option that
+    gave ``name`` (as the user wrote it), else on the command's arguments ``given``."""
+    name, sep, rest = message.partition(" = ")
+    rule = rest.partition(": ")[2]
+    if sep and rule and name in options:
+        option, text = options[name]
+        return CaseError(option, text, rule)
+    return CaseError("simulate", given, message)
+
+
 def _tau_max(case, t_max: str | None, tau_max: float | None) -> float:
     """tau_max from --t-max (a time: "2 s", "500 ms"; seconds if bare) or --tau-max."""
     from .model import model_from_case
@@ -400,8 +411,13 @@ def simulate(
     tau = _tau_max(case, t_max, tau_max)
     try:
         res = simulate_case(case, Omega, tau_max=tau, n_out=n_out, psi0=psi0)
-    except ValueError as exc:
-        raise CaseError("simulate", f"--omega {omega} --tau-max {tau:.6g}", str(exc)) from None
+    except CaseError:
+        raise
+    except ValueError as exc:  # a library check "name = value: rule": name the option
+        raise _option_error(str(exc), {
+            "Omega": ("--omega", omega), "n_out": ("--n-out", n_out), "psi0": ("--psi0", psi0),
+            "tau_max": ("--t-max", t_max) if t_max is not None else ("--tau-max", tau_max),
+        }, f"--omega {omega} --tau-max {tau:.6g}") from None
     data = res.to_dict()
     data["edge_conditions"] = edge_conditions(res)
     written = [
