@@ -273,6 +273,21 @@ def test_low_omega_runs_bounded_with_a_warning(case_dict, alarm):
     json.dumps(res.to_dict(), allow_nan=False)
 
 
+def test_hill_continuant_does_not_overflow_at_large_a():
+    """Found by `make fuzz` (omega_min = 0.32 rad/s, gamma = 9e-5): the continuant of
+    Hill's determinant (pitch._hill) multiplied rows (1 - a/m^2) past 1e308 at a ~ 1e5, with
+    an overflow warning and a beta wrong by 0.4 (the issue's "finite results after numpy
+    overflow warnings", pitch.py).  Source: the Floquet (Magnus) method, an independent
+    integration; tolerance 1e-10 (measured 1e-13), no RuntimeWarning."""
+    a = np.array([3e5, 6.5e5])
+    q = 0.5 * 9e-5 * a  # q = gamma a / 2 (memo 4.2-4)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        hill = pitch.characteristic_exponent(a, q, method="hill")
+    floquet = pitch.characteristic_exponent(a, q, method="floquet")
+    assert np.max(np.abs(hill - floquet)) < 1e-10
+
+
 # --------------------------------------------------------------------------------------------
 # Physical validity (issue 18 item 2)
 # --------------------------------------------------------------------------------------------
