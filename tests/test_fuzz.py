@@ -18,6 +18,7 @@ from __future__ import annotations
 import collections
 import math
 import os
+import signal
 import time
 import warnings
 
@@ -40,6 +41,8 @@ settings.register_profile(
     "long", max_examples=int(os.environ.get("FLEXBOOSTER_FUZZ_EXAMPLES", "1000")), **_COMMON)
 #: Budget of each fuzzed case (s): the check "within the budget" uses it.
 BUDGET = 60.0
+#: A case is stopped after this many budgets (a hang; counted over the budget).
+HANG_FACTOR = 10
 VALID_EXAMPLES = settings.get_profile(PROFILE).max_examples
 INVALID_EXAMPLES = 40 if PROFILE == "ci" else VALID_EXAMPLES
 TALLY: collections.Counter = collections.Counter()
@@ -87,9 +90,32 @@ def valid_cases(draw) -> dict:
     }
 
 
+class _Hung(Exception):
+    pass
+
+
+def _hung(signum, frame):
+    raise _Hung
+
+
 def _outcome(data: dict) -> str:
-    """'ok', 'documented', or the name of a failure: internal, nan, over-budget, warning."""
+    """'ok', 'documented', or the name of a failure: internal, nan, over-budget, warning.
+
+    A case still running after HANG_FACTOR x BUDGET is stopped (SIGALRM, main thread) and
+    counted over the budget, so that `make fuzz` always ends."""
     start = time.perf_counter()
+    previous = signal.signal(signal.SIGALRM, _hung)
+    signal.alarm(int(HANG_FACTOR * BUDGET))
+    try:
+        return _run(data, start)
+    except _Hung:
+        return f"over-budget: stopped after {time.perf_counter() - start:.0f} s"
+    finally:
+        signal.alarm(0)
+        signal.signal(signal.SIGALRM, previous)
+
+
+def _run(data: dict, start: float) -> str:
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("error", RuntimeWarning)  # numpy overflow is a failure
@@ -106,6 +132,8 @@ def _outcome(data: dict) -> str:
         if "a result must be finite" in str(exc):
             return f"nan: {exc}"
         return f"internal: ValueError: {exc}"
+    except _Hung:
+        raise
     except Exception as exc:  # noqa: BLE001 - any other exception is an internal error
         return f"internal: {type(exc).__name__}: {exc}"
     elapsed = time.perf_counter() - start
