@@ -568,6 +568,20 @@ def test_hill_continuant_does_not_overflow_at_large_a():
     assert np.max(np.abs(hill - floquet)) < 1e-10
 
 
+def test_hill_continuant_zero_pivot_does_not_overflow():
+    """Found by the pitch-band search of a fuzz case (omega_psi = 66.18 rad/s, gamma = 0.95):
+    at this (a, q), on the edge of tongue 6, a pivot of the continuant is zero to round-off
+    and off^2 / pivot overflowed (the old floor was the smallest normal double).  Source: the
+    Floquet (Magnus) method; tolerance 1e-6 on beta (at a tongue edge beta ~ 6 - c sqrt(da):
+    a discriminant error of 1e-14 moves beta by ~1e-7; measured 1.5e-7), no RuntimeWarning."""
+    a, q = np.array([40.339860816349514]), np.array([19.169101528377368])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        hill = pitch.characteristic_exponent(a, q, method="hill")
+    floquet = pitch.characteristic_exponent(a, q, method="floquet")
+    assert np.max(np.abs(hill - floquet)) < 1e-6
+
+
 # --------------------------------------------------------------------------------------------
 # Physical validity (issue 18 item 2)
 # --------------------------------------------------------------------------------------------

@@ -289,7 +289,7 @@ def _hill(a: np.ndarray, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndar
     shape = a.shape
     a = a.ravel().astype(float)
     q = q.ravel().astype(float)
-    tiny = np.finfo(float).tiny
+    tiny = 1e-150  # pivot floor: |off * prev_off| / tiny stays far below 1e308
 
     def continuant(ms: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         # det = mantissa * 2**exponent (np.frexp after each row: exact, and no overflow at
@@ -306,7 +306,9 @@ def _hill(a: np.ndarray, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndar
                 diag, off, sgn = 1.0 - a / m**2, q / m**2, 1.0  # row m times (1 - a/m^2)
             # Hill rows: diag 1, off -q/(a - m^2), times the factor above
             piv = diag if piv is None else diag - off * prev_off / piv
-            piv = np.where(piv == 0.0, tiny, piv)
+            # a pivot of (nearly) zero: a floor keeps the next off^2 / piv finite (the product
+            # of the two, which the determinant needs, tends to -off^2 for any small floor)
+            piv = np.where(np.abs(piv) < tiny, np.where(piv < 0.0, -tiny, tiny), piv)
             det, e = np.frexp(det * piv)
             exponent += e
             count += (piv * sgn < 0.0).astype(np.int64)  # negative pivot of H - a I
