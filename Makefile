@@ -25,7 +25,7 @@ lint: $(STAMP)
 test: export OPENBLAS_NUM_THREADS = 1
 test: $(STAMP)
 	$(VENV)/bin/ruff check .
-	$(PY) -m pytest -q -rs
+	$(PY) -m pytest -q -rs -n auto --durations=15
 
 # The report in headless Chromium alone (`make test` runs it too, and .ci/run calls `make
 # browser` first so that CI does): `browser` installs Debian's chromium and chromium-driver

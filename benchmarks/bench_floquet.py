@@ -21,23 +21,19 @@ import argparse
 import time
 
 import numpy as np
-from flexbooster.beam import first_bending_frequency
-from flexbooster.beam_action import beam_action_system
-from flexbooster.geometry import mass_properties
 
-# the matrices of the project's default case (these import paths may move with the
-# restructuring of the package; keep them in this one block)
 import flexbooster
 from flexbooster.floquet import growth_rate, instability_regions
+from flexbooster.memo.beam_action import beam_system
+from flexbooster.model import model_from_case
 
 
 def default_system(N: int = 10):
+    """(M, C, A, B), Omega_bar range, omega_1 and gamma of the default case's beam action."""
     case = flexbooster.default_case()
-    b, t = case.booster, case.thrust
-    mass = mass_properties(b.cylinder1.radius, b.cylinder1.half_length, b.cylinder2.radius,
-                           b.cylinder2.half_length, b.thickness, b.rho)
-    w1 = first_bending_frequency(mass.L, b.cylinder1.radius, b.E, b.rho)
-    sys_ = beam_action_system(w1, mass.mass, mass.L, mass.d2, mass.I_cm, case.F0, t.K, N)
+    t = case.thrust
+    sys_ = beam_system(model_from_case(case), N)
+    w1 = float(sys_.omega_1)
     # normalised time tau = omega_1 t:  q'' + [A0 - gamma cos(Omega_bar tau) B] q = 0
     n = N + 1
     M, C, A = np.eye(n), None, sys_.A0
@@ -76,7 +72,10 @@ def main() -> None:
         print(f"{r.kind:>10} {str(r.modes):>8} {r.order:>2} {r.omega_lo * w1:17.9f} "
               f"{r.omega_hi * w1:17.9f} {r.width / r.omega_center:12.3e} "
               f"{r.growth_rate_max * w1:16.6e}")
-    widths = np.array([r.width for r in regions])
+    n_narrow = sum(r.width < 6e-8 / r.order * r.omega_center for r in regions)
+    print(f"{n_narrow} regions narrower than the monodromy floor 6e-8 / j (harmonic-balance pair)")
+    # the scan baseline resolves the narrowest region the monodromy search itself can see
+    widths = np.array([r.width for r in regions if r.width >= 6e-8 / r.order * r.omega_center])
     narrow = float(np.min(widths)) if widths.size else (hi - lo) / 1e4
     spacing = narrow / 3.0
     n_grid = int(np.ceil((hi - lo) / spacing)) + 1

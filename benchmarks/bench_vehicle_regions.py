@@ -1,11 +1,12 @@
 """Benchmark: flexbooster.vehicle.vehicle_regions on the default case's vehicle (issue 15).
 
 The vehicle of ``flexbooster.model.vehicle_from_case(flexbooster.default_case())`` (the memo's
-two cylinders, memo bulkhead, shear-diaphragm ends, inertia relief), F0 = 2.8 MN, k = 2..10,
-20 modes per k, Omega = 5..2000 rad/s, gamma = 0.05, damping ratio 0.01 (the default case).
-Times, in the same run,
+two cylinders, memo bulkhead, shear-diaphragm ends, inertia relief), F0 = 2.8 MN, k = 1..10
+(k = 1: bending with the gimbal gain K = 0.5 of the default case), 20 modes per k, Omega =
+5..2000 rad/s, gamma = 0.05, damping ratio 0.01 (the default case).  Times, in the same run,
 
-  1. the map ``vehicle_regions`` (the deliverable: < 5 s), with the k = 0 forced resonances;
+  1. the map ``vehicle_regions`` (the deliverable: < 5 s), with the k = 0 forced resonances,
+     and its k = 1 part alone (the cost that k = 1 adds to ``flexbooster run``);
   2. the baseline: a uniform monodromy scan (``floquet.growth_rate`` of the full damped
      20-mode system of every k) with a spacing of a third of the narrowest *first-order*
      undamped region (Bolotin's |B_ii| / omega_i and Hsu's sqrt(|B_ik B_ki| / (omega_i
@@ -14,12 +15,15 @@ Times, in the same run,
      timed on a sample of points per k and extrapolated;
   3. ``--hard``: a case where damping leaves a region (k = 3, 10 modes, Omega 10..300 rad/s,
      gamma = 0.5, zeta = 0.001) with the damping filter (default) and without
-     (``damping_margin=None``), to show what the filter alone saves.
+     (``damping_margin=None``), to show what the filter alone saves;
+  4. ``--cost``: the cost model of the searches (``flexbooster.vehicle.search_seconds`` plus
+     ``HARMONIC_BUILD_SECONDS``, issue 18) against the measured time of undamped k = 3 maps
+     with 4, 8 and 12 modes (``--cost-modes`` to change), the ratio estimate / measured.
 
 Usage::
 
     OPENBLAS_NUM_THREADS=1 PYTHONPATH=src python benchmarks/bench_vehicle_regions.py \
-        [--n-modes 20] [--k-max 10] [--repeat 3] [--sample 16] [--hard]
+        [--n-modes 20] [--k-max 10] [--repeat 3] [--sample 16] [--hard] [--cost]
 """
 
 from __future__ import annotations
@@ -32,7 +36,7 @@ import numpy as np
 import flexbooster
 from flexbooster.floquet import growth_rate
 from flexbooster.model import vehicle_from_case
-from flexbooster.vehicle import vehicle_regions
+from flexbooster.vehicle import HARMONIC_BUILD_SECONDS, search_seconds, vehicle_regions
 
 F0, GAMMA, LO, HI = 2.8e6, 0.05, 5.0, 2000.0
 
@@ -68,13 +72,18 @@ def main() -> None:
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--sample", type=int, default=16, help="scan points timed per k")
     ap.add_argument("--hard", action="store_true", help="also the filter-only case")
+    ap.add_argument("--cost", action="store_true", help="also the cost model check")
+    ap.add_argument("--cost-modes", type=int, nargs="+", default=[4, 8, 12])
     args = ap.parse_args()
     veh = vehicle_from_case(flexbooster.default_case())
-    kw = dict(F0=F0, gamma=GAMMA, omega_min=LO, omega_max=HI, k_min=2, k_max=args.k_max,
-              n_modes=args.n_modes)
+    kw = dict(F0=F0, gamma=GAMMA, omega_min=LO, omega_max=HI, k_min=1, k_max=args.k_max,
+              n_modes=args.n_modes, gimbal_gain=0.5)
     res, t_map, c_map = best_of(lambda: vehicle_regions(veh, **kw), args.repeat)
-    print(f"default case vehicle, k = 2..{args.k_max}, {args.n_modes} modes per k, "
+    print(f"default case vehicle, k = 1..{args.k_max}, {args.n_modes} modes per k, "
           f"Omega = {LO:g}..{HI:g} rad/s, gamma = {GAMMA}, zeta = 0.01")
+    _, t_k1, c_k1 = best_of(lambda: vehicle_regions(veh, **{**kw, "k_max": 1}, axial=False),
+                            args.repeat)
+    print(f"k = 1 alone (bending, gimbal gain 0.5): {t_k1:.3f} s wall, {c_k1:.3f} s CPU")
     print(f"map: {len(res.regions)} regions, {sum(c.certified for c in res.certificates)} of "
           f"{len(res.certificates)} harmonics certified stable, "
           f"{len(res.forced_axial.resonances)} k = 0 forced resonances; "
@@ -106,6 +115,14 @@ def main() -> None:
         print(f"hard case (k = 3, 10 modes, gamma = 0.5, zeta = 0.001): filter {t_f:.2f} s wall"
               f" / {c_f:.2f} s CPU, unfiltered {t_u:.2f} s / {c_u:.2f} s CPU, ratio "
               f"{t_u / t_f:.2f}; {len(fast.regions)} region(s), same as unfiltered: {same}")
+    if args.cost:
+        for n in args.cost_modes:  # a handful of sizes
+            ck = dict(F0=F0, gamma=GAMMA, omega_min=LO, omega_max=HI, k_min=3, k_max=3,
+                      n_modes=n, damping_ratio=0.0, axial=False)
+            got, t_c, _ = best_of(lambda ck=ck: vehicle_regions(veh, **ck), 1)
+            est = HARMONIC_BUILD_SECONDS + search_seconds(n, LO, HI, damped=False)
+            print(f"cost model, undamped k = 3, {n} modes: measured {t_c:.2f} s, estimated "
+                  f"{est:.2f} s, ratio {est / t_c:.2f} ({len(got.regions)} regions)")
 
 
 if __name__ == "__main__":

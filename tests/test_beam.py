@@ -404,6 +404,6 @@ def test_mode_shape_plot_marks_junction():
     np.testing.assert_array_equal(data.phi[2], beam.mode_shape(3, data.zeta))  # eq. (C-1)
     fig = mode_shape_plot(data)
     lines = fig.axes[0].get_lines()
-    assert len([ln for ln in lines if ln.get_label().startswith("$\\phi")]) == 3
+    assert len([ln for ln in lines if ln.get_label().startswith("φ")]) == 3
     junction = [ln for ln in lines if ln.get_label() == "junction"][0]
     assert junction.get_xdata()[0] == pytest.approx(2 * 21.0 / 30.0, rel=1e-14)

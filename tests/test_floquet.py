@@ -23,6 +23,7 @@ from flexbooster.floquet import (
     critical_amplitude,
     floquet_exponents,
     floquet_multipliers,
+    golden_section_max,
     growth_rate,
     hill_exponents,
     instability_regions,
@@ -231,6 +232,23 @@ def test_damped_region_against_harmonic_balance():
         assert np.min(np.abs(roots - r.omega_hi)) < tol
 
 
+def test_damped_march_stays_inside_the_range():
+    # reproducer of the fuzz failure (tests/test_robustness.py _FUZZ_FLOQUET): the damped
+    # search marched 4 undamped widths below a wide region and evaluated the monodromy at
+    # Omega < 0 (ValueError).  Damped Mathieu mu = 0.8, eps = 0.01 on [1, 3]: the principal
+    # region (undamped width ~1.4) and the j = 2 region (unstable down to the range end).
+    # Expected: no error; the j = 2 region clipped at omega_min; the unclipped edges on the
+    # damped harmonic balance (quadratic eigenproblem, K = 12) to 1e-7 (step_phase 0.12)
+    sysm = mathieu(0.8, 0.01)
+    regions = instability_regions(*sysm, 1.0, 3.0)
+    assert [(r.order, r.clipped) for r in regions] == [(2, True), (1, False)]
+    assert regions[0].omega_lo == 1.0
+    roots = np.concatenate([periodic_boundaries(*sysm, period=p, n_harmonics=12)
+                            for p in ("T", "2T")])
+    for edge in (regions[0].omega_hi, regions[1].omega_lo, regions[1].omega_hi):
+        assert np.min(np.abs(roots - edge)) < 1e-7 * edge
+
+
 W1, W2 = 1.0, 2.3
 
 
@@ -435,6 +453,96 @@ def test_narrow_combination_region_two_modes_wide_range():
     regions = instability_regions(*hsu(eps, 1.0, 1.0), 0.1, 10.0)
     (r,) = [r for r in regions if r.kind == "sum" and r.order == 1]
     assert r.width == pytest.approx(1e-4, rel=1e-3)  # Hsu first-order width, small-eps limit
+
+
+def mathieu_series_width(mu: float, r: int) -> float:
+    """Width in theta of region r of f'' + (1 - 2 mu cos theta t) f = 0 at small mu.
+
+    a_r - b_r = 2^(3 - 2r) q^r / ((r - 1)!)^2 (1 + O(q^2)) (Abramowitz & Stegun 20.2.25,
+    McLachlan 1947 sec. 2.151; checked against the exact r = 1, 2, 3 expansions 2q, q^2/2,
+    q^3/32), with a = 4 / theta^2, q = 4 mu / theta^2 = mu r^2 at theta = 2 / r and
+    d theta = theta da / (2a).
+    """
+    import math
+
+    theta, a, q = 2.0 / r, float(r * r), mu * r * r
+    return theta / (2.0 * a) * 2.0 ** (3 - 2 * r) * q**r / math.factorial(r - 1) ** 2
+
+
+@pytest.mark.parametrize("mu,r", [(1e-3, 3), (1e-3, 4), (3e-3, 4), (3e-3, 5)],
+                         ids=["r3-w1e-9", "r4-w2e-12", "r4-w1e-10", "r5-w6e-13"])
+@pytest.mark.parametrize("omega_min,omega_max", [(0.05, 60.0), (0.3, 3.0)],
+                         ids=["range-0.05-60", "range-0.3-3"])
+def test_narrow_mathieu_regions_found_below_the_monodromy_floor(mu, r, omega_min, omega_max):
+    # regions of relative width 1e-9 .. 6e-13, below the monodromy indicators' round-off floor
+    # (6e-8 / j), found with any range (no user grid) by the harmonic-balance pair of
+    # floquet/narrow.py.  Edges: scipy.special mathieu_a / mathieu_b (DLMF 28.2(v)), 1e-9
+    # relative (measured 1e-15); width: the small-q series (A&S 20.2.25), 3 % (its O(q^2)
+    # remainder: q <= 0.075; measured 2e-4); growth rate: Hill's method (S = 12) at the
+    # vertex, 1e-3 relative
+    regions = instability_regions(*mathieu(mu), omega_min, omega_max)
+    (reg,) = [q for q in regions if q.order == r]
+    assert reg.kind == "simple" and not reg.clipped
+    lo, hi = mathieu_edges(mu, r)
+    assert reg.omega_lo == pytest.approx(lo, rel=1e-9)
+    assert reg.omega_hi == pytest.approx(hi, rel=1e-9)
+    assert reg.width == pytest.approx(mathieu_series_width(mu, r), rel=0.03)
+    g = growth_rate(*mathieu(mu), [reg.omega_at_max], method="hill", n_harmonics=12)[0]
+    assert reg.growth_rate_max == pytest.approx(g, rel=1e-3)
+
+
+def test_narrow_combination_region_of_order_two():
+    # Hsu (1963) system with a full coupling b = eps [[1, 1], [1, 1]]: the sum resonance of
+    # order 2 at (w1 + w2) / 2 has a width c2 eps^2 (1 + O(eps^2)) (second order in the
+    # coupling).  c2 from the monodromy search at eps = 0.02 (width 8e-5, edges to 1e-9);
+    # at eps = 2e-4 and 2e-5 (relative widths 8e-9, 8e-11: below the monodromy floor) the
+    # region is found over [0.1, 10] with width c2 eps^2 to 1e-3 (O(eps_ref^2) remainder,
+    # measured 5e-5) and its growth rate equals Hill's (S = 12) at the vertex to 1e-3
+    def system(eps):
+        return np.eye(2), None, np.diag([W1**2, W2**2]), eps * np.ones((2, 2))
+
+    def sum2(eps):
+        (reg,) = [q for q in instability_regions(*system(eps), 0.1, 10.0)
+                  if q.kind == "sum" and q.order == 2]
+        return reg
+
+    c2 = sum2(0.02).width / 0.02**2
+    for eps in (2e-4, 2e-5):
+        reg = sum2(eps)
+        assert reg.modes == (0, 1)
+        assert reg.width / reg.omega_center < 1e-8
+        assert reg.width / eps**2 == pytest.approx(c2, rel=1e-3)
+        g = growth_rate(*system(eps), [reg.omega_at_max], method="hill", n_harmonics=12)[0]
+        assert reg.growth_rate_max == pytest.approx(g, rel=1e-3)
+
+
+def test_damped_mathieu_tip_exact_and_independent_of_search_tolerance():
+    # damped Mathieu f'' + 2 eps f' + (1 - 2 mu cos theta t) f = 0, eps = 0.01.  Reference:
+    # the exact shift f = exp(-eps t) p gives p'' + (1 - eps^2 - 2 mu cos theta t) p = 0, so
+    # the tip mu_cr is where max_theta (undamped growth of p) = eps; that growth from Hill's
+    # method (S = 12, an independent method), maximised over theta (bounded Brent, 1e-10) and
+    # solved for mu (brentq, 1e-12).  critical_amplitude (gamma_rtol 1e-8) to 1e-6 relative,
+    # and the tip of region_boundaries with the chart's coarse options (rtol 1e-4,
+    # step_phase 0.25) equal to it to 1e-6 (it used to be biased up by the search tolerance)
+    from scipy.optimize import minimize_scalar
+
+    eps = 0.01
+
+    def excess(mu):
+        res = minimize_scalar(
+            lambda th: -growth_rate(ONE, None, [[1.0 - eps**2]], [[-2.0 * mu]], [th],
+                                    method="hill", n_harmonics=12)[0],
+            bounds=(1.95, 2.05), method="bounded", options={"xatol": 1e-10})
+        return -res.fun - eps
+
+    mu_cr = brentq(excess, 0.015, 0.03, xtol=1e-12)
+    (crit,) = critical_amplitude(ONE, [[2.0 * eps]], ONE, [[-2.0]], gamma_max=3.0 * mu_cr,
+                                 omega_min=1.5, omega_max=2.5, gamma_rtol=1e-8)
+    assert crit.gamma_cr == pytest.approx(mu_cr, rel=1e-6)
+    (rb,) = region_boundaries(ONE, [[2.0 * eps]], ONE, [[-2.0]], gamma_max=3.0 * mu_cr,
+                              omega_min=1.5, omega_max=2.5, n_gamma=2, rtol=1e-4,
+                              step_phase=0.25)
+    assert rb.gamma[0] == pytest.approx(crit.gamma_cr, rel=1e-6)
 
 
 def test_growth_rate_max_inside_region():
@@ -642,6 +750,30 @@ def test_damping_filter_never_drops_a_region(seed, gamma):
                                                          for r in full]
     for a, b in zip(fast, full, strict=True):
         assert (a.omega_lo, a.omega_hi) == pytest.approx((b.omega_lo, b.omega_hi), rel=1e-8)
+
+
+def test_golden_section_max_vectorised():
+    # closed form: the maxima of -(x - c)^2 + c (c = 0.3, 1.7, -2.2 in three intervals) and
+    # of sin on [0, 3] (pi / 2), each to its xtol 1e-6 (golden section keeps the maximum in
+    # the final bracket while f values differ beyond round-off, i.e. down to ~sqrt(eps) |x|)
+    c = np.array([0.3, 1.7, -2.2])
+    seen = []
+
+    def f(x, idx):
+        seen.append(idx.size)
+        return -(x - c[idx]) ** 2 + c[idx]
+
+    x, fx = golden_section_max(f, [0.0, 1.0, -3.0], [1.0, 2.5, 0.0], xtol=1e-6)
+    assert np.all(np.abs(x - c) <= 1e-6) and np.allclose(fx, c, atol=1e-12)
+    (xs,), _ = golden_section_max(lambda x, idx: np.sin(x), [0.0], [3.0], xtol=1e-6)
+    assert abs(xs - np.pi / 2) <= 1e-6
+    for kwargs, name in (({"a": [1.0], "b": [0.0], "xtol": 1e-3}, "b"),
+                         ({"a": [0.0], "b": [1.0], "xtol": 0.0}, "xtol"),
+                         ({"a": [0.0], "b": [1.0], "xtol": 1e-3, "max_iter": 0}, "max_iter")):
+        with pytest.raises(ValueError, match=name):
+            golden_section_max(f, **kwargs)
+    with pytest.raises(ValueError, match="no convergence"):
+        golden_section_max(f, [0.0], [1.0], xtol=1e-12, max_iter=3)
 
 
 def test_bad_damping_margin():

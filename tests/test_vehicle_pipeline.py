@@ -6,7 +6,7 @@ Tiers:
   hand-made stability table and hand-made regions (which roots fall inside which region, the
   regions with none, the severity hook), tolerance: exact (integer indices, booleans);
 * interface invariants: the pipeline passes the case's settings (F0, gamma, Omega range,
-  ``vehicle.damping_ratio``, ``vehicle.n_modes``, k = 2..min(k_max, 10), defaults without a
+  ``vehicle.damping_ratio``, ``vehicle.n_modes``, k = 1..min(k_max, 10), defaults without a
   ``[vehicle]`` table) to :func:`flexbooster.vehicle.vehicle_regions` and stores its result
   unchanged (exact: the same call made directly); results.json round trip of the new keys
   (exact, JSON floats are repr round trips); vehicle-regions.csv columns against the result
@@ -243,8 +243,9 @@ class _Recorder:
 @pytest.mark.parametrize("probe_finds", [False, True], ids=["no-region-at-chart-gamma",
                                                               "region-at-chart-gamma"])
 def test_stage_passes_the_case_settings_and_defaults(monkeypatch, probe_finds):
-    """Without [vehicle]: damping 0.01, 20 modes, k = 2..10 (issue 15 defaults), the case's
-    F0, gamma and Omega range; the curves are traced only when a region exists at the chart's
+    """Without [vehicle]: damping 0.01, 20 modes, k = 1..10 (issue 15 defaults), the case's
+    F0, gamma, Omega range, gimbal gain K (for k = 1) and budget max_seconds; the curves are
+    traced only when a region exists at the chart's
     gamma (floquet.region_boundaries traces those only)."""
     import flexbooster.analysis as analysis
 
@@ -254,8 +255,9 @@ def test_stage_passes_the_case_settings_and_defaults(monkeypatch, probe_finds):
     monkeypatch.setattr(analysis, "_chart_gamma", lambda found: VEHICLE_CHART_GAMMA_MAX)
     case = load_case(small_case_data())
     analyze_vehicle_regions(case, boundaries=True)
-    expected = dict(F0=case.F0, omega_min=5.0, omega_max=2000.0, k_min=2, k_max=10,
-                    n_modes=20, damping_ratio=0.01)
+    expected = dict(F0=case.F0, omega_min=5.0, omega_max=2000.0, k_min=1, k_max=10,
+                    n_modes=20, damping_ratio=0.01, gimbal_gain=case.thrust.K,
+                    max_seconds=case.max_seconds)
     first, probe = rec.calls[:2]
     assert first == {**expected, "gamma": 0.05}
     assert probe == {**expected, "gamma": VEHICLE_CHART_GAMMA_MAX}
@@ -279,7 +281,9 @@ def test_chart_top_gamma_is_certified_free_of_regions(path):
     """The chart's top gamma (analysis._chart_gamma) is the case's gamma raised only as far as
     the all-Omega stability certificate holds: a search at that gamma finds every harmonic
     certified (floquet.stability_certificate of the scaled system, an independent call) and
-    no region; the default vehicle reaches the constant, the thin Titan shells stop below."""
+    no region; the default vehicle reaches the constant, the thin Titan shells stop below.
+    The top reuses the search's certificates (scaled by gamma): checked against the
+    certificate per unit gamma."""
     import flexbooster.analysis as analysis
     from flexbooster.vehicle import vehicle_regions as regions_of
 
@@ -290,9 +294,18 @@ def test_chart_top_gamma_is_certified_free_of_regions(path):
     found = analyze_vehicle_regions(case, boundaries=False)
     top = analysis._chart_gamma(found)
     assert case.thrust.gamma <= top <= VEHICLE_CHART_GAMMA_MAX
+    # two methods agree (issue 15 item 6): the search's certificate at gamma, scaled by gamma,
+    # is the certificate of the excitation per unit gamma (Q linear in B), to 1e-9 relative
+    from flexbooster.floquet import stability_certificate
+
+    for h, c in zip(found.harmonics, found.certificates, strict=True):
+        unit = stability_certificate(h.mass, h.damping, h.stiffness, h.excitation)
+        assert found.gamma * c.amplitude_factor == pytest.approx(unit.amplitude_factor,
+                                                                 rel=1e-9)
     t = case.thrust
     at_top = regions_of(vehicle_from_case(case), F0=case.F0, gamma=top, omega_min=t.omega_min,
-                        omega_max=t.omega_max, k_min=2, k_max=4, n_modes=6, damping_ratio=0.01)
+                        omega_max=t.omega_max, k_min=1, k_max=4, n_modes=6, damping_ratio=0.01,
+                        gimbal_gain=t.K)
     assert all(c.certified for c in at_top.certificates) and at_top.regions == ()
     if path is None:
         assert top == VEHICLE_CHART_GAMMA_MAX
@@ -301,11 +314,11 @@ def test_chart_top_gamma_is_certified_free_of_regions(path):
 
 
 def test_stage_warns_instead_of_failing(monkeypatch):
-    """k_max < 2, or a steady thrust that buckles a harmonic: a warning in the results, the
+    """k_max < 1, or a steady thrust that buckles a harmonic: a warning in the results, the
     rest of the analysis stands."""
     import flexbooster.analysis as analysis
 
-    res = analyze(load_case(small_case_data(k_max=1)), beam_action=False, figures=False)
+    res = analyze(load_case(small_case_data(k_max=0)), beam_action=False, figures=False)
     assert res.vehicle_regions is None
     (w,) = [w for w in res.warnings if w.code == "vehicle-regions-skipped"]
     assert w.field == "vehicle.k_max"
@@ -329,9 +342,10 @@ def test_pipeline_stores_the_regions_of_the_case(results):
     case = results.case
     vr = results.vehicle_regions
     direct = vehicle_regions(vehicle_from_case(case), F0=case.F0, gamma=0.3, omega_min=5.0,
-                             omega_max=2000.0, k_min=2, k_max=3, n_modes=3, damping_ratio=0.0)
+                             omega_max=2000.0, k_min=1, k_max=3, n_modes=3, damping_ratio=0.0,
+                             gimbal_gain=case.thrust.K)
     assert vr.regions == direct.regions and len(vr.regions) > 0
-    assert [h.k for h in vr.harmonics] == [2, 3]
+    assert [h.k for h in vr.harmonics] == [1, 2, 3]
     top = max(VEHICLE_CHART_GAMMA_MAX, case.thrust.gamma)  # the chart's top (the case's 0.3)
     assert vr.curves and all(c.gamma[-1] == pytest.approx(top, abs=1e-15) for c in vr.curves)
     m = results.memo_roots_in_regions
@@ -525,3 +539,22 @@ def test_forced_axial_resonances_are_reported_from_the_results(results):
         assert row[0] == r.omega and row[1] == pytest.approx(r.omega / (2 * np.pi), rel=1e-15)
         assert row[3] == r.flexibility and row[4] == row[5] == "-"
     assert "Forced (not parametric) resonances" in render_report(results, {})
+
+
+def test_pipeline_k1_rows_are_bending_regions(results):
+    """Two paths for k = 1: the pipeline's k = 1 rows (vehicle_regions with k_min = 1, the
+    case's gimbal gain thrust.K) equal flexbooster.vehicle.bending_regions called directly
+    with the case's settings (exact); they reach the CSV columns and the memo-root matching
+    (same objects)."""
+    from flexbooster.vehicle import bending_regions
+
+    case = results.case
+    t = case.thrust
+    direct = bending_regions(vehicle_from_case(case), F0=case.F0, gamma=t.gamma,
+                             omega_min=t.omega_min, omega_max=t.omega_max, gimbal_gain=t.K,
+                             n_modes=3, damping_ratio=0.0)
+    vr = results.vehicle_regions
+    k1 = tuple(r for r in vr.regions if r.k == 1)
+    assert k1 == direct and len(k1) > 0
+    assert vehicle_region_columns(vr)["k"].count(1) == len(k1)
+    assert vr.to_dict()["gimbal_gain"] == t.K

@@ -324,10 +324,10 @@ GOOD = dict(F0=1e6, gamma=0.05, omega_min=5.0, omega_max=50.0, k_max=2, n_modes=
 
 @pytest.mark.parametrize("name, value", [
     ("vehicle", "cyl"), ("F0", 0.0), ("F0", np.nan), ("gamma", 1.0), ("gamma", -0.1),
-    ("omega_min", -1.0), ("omega_max", np.inf), ("k_max", 1), ("k_min", 1), ("n_modes", 0),
+    ("omega_min", -1.0), ("omega_max", np.inf), ("k_max", 0), ("k_min", 0), ("n_modes", 0),
     ("damping_ratio", -0.01), ("damping_ratio", 1.5), ("boundaries", "yes"),
     ("rtol", np.nan), ("max_order", 0), ("damping_margin", 0.5), ("damping_margin", True),
-    ("axial", "no"),
+    ("axial", "no"), ("gimbal_gain", -0.5), ("gimbal_gain", np.nan),
 ])
 def test_bad_input_names_argument(name, value):
     """Bad input: ValueError whose message starts with the argument's name."""
@@ -416,6 +416,30 @@ def test_damping_filter_keeps_the_regions_of_the_unfiltered_search(memo_vehicle)
         assert (a.kind, a.order, a.modes) == (b.kind, b.order, b.modes)
         assert (a.omega_lo, a.omega_hi) == pytest.approx((b.omega_lo, b.omega_hi), rel=1e-8)
         assert a.critical_gamma == pytest.approx(b.critical_gamma, rel=1e-6)
+
+
+@pytest.mark.parametrize("gamma", [0.3, 0.6])
+@pytest.mark.parametrize("zeta", [5e-4, 2e-3])
+@pytest.mark.parametrize("which", ["memo", "cone"])
+def test_damping_filter_finds_every_region_of_the_unfiltered_search(memo_vehicle, which, zeta,
+                                                                     gamma):
+    """Verification of the damping filter (issue 15 leftover; it is a first-order estimate
+    with a safety factor 4, not a proof): on a grid of small damped systems that keep 0 to 8
+    regions -- the default case's vehicle (Omega 10..300 rad/s) and the cylinder-cone-cylinder
+    of the same size (10..100 rad/s), k = 3, 5 modes, orders <= 2, zeta = 5e-4 and 2e-3,
+    gamma = 0.3 and 0.6 -- floquet.instability_regions with the filter (damping_margin = 4)
+    finds exactly the regions of the unfiltered search (damping_margin = None: every
+    candidate examined): the same (kind, modes, order), edges within 1e-8 relative (measured
+    1e-13)."""
+    veh, hi = (memo_vehicle, 300.0) if which == "memo" else (default_size_vehicle(), 100.0)
+    M, C, A, B = harmonic_system(veh, 3, F0=F0_DEFAULT, n_modes=5,
+                                 damping_ratio=zeta).matrices(gamma)
+    fast = floquet.instability_regions(M, C, A, B, 10.0, hi, max_order=2)
+    full = floquet.instability_regions(M, C, A, B, 10.0, hi, max_order=2, damping_margin=None)
+    assert [(r.kind, r.modes, r.order) for r in fast] == [(r.kind, r.modes, r.order)
+                                                          for r in full]
+    for a, b in zip(fast, full, strict=True):
+        assert (a.omega_lo, a.omega_hi) == pytest.approx((b.omega_lo, b.omega_hi), rel=1e-8)
 
 
 # --------------------------------------------------------------------------- k = 0 forced
@@ -574,3 +598,40 @@ def test_k1_no_flutter_below_beal_and_bad_input():
             follower_flutter_thrust(veh, **kw)
     with pytest.raises(ValueError, match="^gimbal_gain = "):
         bending_system(veh, F0=1.0, gimbal_gain=-1.0)
+
+
+def test_k1_in_the_map_against_the_full_bending_monodromy():
+    """k = 1 in vehicle_regions (k_min = 1): a free-free steel tube (R 5 cm, L 5 m, h 2 mm,
+    20 elements), p = F0 l^2 / EI = 20, gimbal gain K = 0.5, gamma = 0.1, undamped, 5 basis
+    modes, Omega / omega_1 in 0.25..2, first order.  Independent path: the monodromy
+    (floquet.growth_rate, step phase 0.06) of the *full* bending_system, the rigid translation
+    kept (the map drops it: a zero column, multiplier 1), at each region's reported maximum:
+    growth rates agree to 1e-6 relative (measured 2e-8); the map's system is stable (< 1e-6
+    of the growth) halfway to the next region.  The regions include the rigid pitch's own
+    (2 omega_psi, the memo's pitch tongue) and its sum with the first bending mode; the map
+    stores gimbal_gain."""
+    R, L, h = 0.05, 5.0, 0.002
+    veh = Vehicle([Cylinder(R, L, h, **STEEL)])
+    F0 = 20.0 * STEEL["E"] * np.pi * R**3 * h / L**2
+    full = bending_system(veh, F0=F0, n_modes=5, gimbal_gain=0.5, elements_per_segment=20,
+                          damping_ratio=0.0)
+    w1 = full.omega_unloaded[2]
+    res = vehicle_regions(veh, F0=F0, gamma=0.1, omega_min=0.25 * w1, omega_max=2.0 * w1,
+                          k_min=1, k_max=1, n_modes=5, elements_per_segment=20,
+                          damping_ratio=0.0, max_order=1, gimbal_gain=0.5, axial=False)
+    assert [h.k for h in res.harmonics] == [1] and res.gimbal_gain == 0.5
+    assert res.harmonic(1).omega_unloaded.size == 4  # the translation dropped
+    kinds = [(r.kind, tuple(m.type for m in r.modes)) for r in res.regions]
+    assert ("simple", ("rigid-pitch",)) in kinds and ("sum", ("rigid-pitch", "bending")) in kinds
+    M, _, A, B = full.matrices(0.1)
+    at = np.array([r.omega_at_max for r in res.regions])
+    g = floquet.growth_rate(M, None, A, B, at)
+    np.testing.assert_allclose(g, [r.growth_rate_max for r in res.regions], rtol=1e-6)
+    edges = [(r.omega_lo, r.omega_hi) for r in res.regions]
+    gaps = np.array([0.5 * (a[1] + b[0]) for a, b in zip(edges, edges[1:], strict=False)])
+    # outside: the map's own (reduced) system; the full one has the translation's double
+    # multiplier 1 (a Jordan block, free drift), which round-off splits by ~1e-4
+    Mr, _, Ar, Br = res.harmonic(1).matrices(0.1)
+    out = floquet.growth_rate(Mr, None, Ar, Br, gaps)
+    assert np.all(out < 1e-6 * np.array([r.growth_rate_max for r in res.regions[:-1]]))
+    json.dumps(res.to_dict())

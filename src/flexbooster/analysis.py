@@ -31,7 +31,7 @@ from .danger import danger_summary
 from .errors import AnalysisWarning
 from .memo import charts
 from .memo.beam import beam_modes
-from .memo.beam_action import beam_action_analysis, pipeline_bands
+from .memo.beam_action import PeriodMapOverflowError, beam_action_analysis, pipeline_bands
 from .memo.model import BoosterModel
 from .memo.pitch import pitch_analysis
 from .memo.responses import SimulationResult, excitation_parameters, simulate
@@ -77,8 +77,10 @@ VEHICLE_STAGE = "vehicle modes"
 #: instability regions (every case: ``[vehicle]`` or the memo's two cylinders).
 VEHICLE_REGIONS_STAGE = "vehicle instability regions"
 #: Harmonics k of the vehicle regions: k = VEHICLE_REGIONS_K_MIN..min(vehicle.k_max,
-#: VEHICLE_REGIONS_K_MAX) (:func:`flexbooster.vehicle.vehicle_regions` models k >= 2).
-VEHICLE_REGIONS_K_MIN = 2
+#: VEHICLE_REGIONS_K_MAX); k = 1 is the bending harmonic with the rigid pitch, the gimbal
+#: control and the follower thrust (:func:`flexbooster.vehicle.bending_regions`), k = 0 the
+#: forced axial resonances.
+VEHICLE_REGIONS_K_MIN = 1
 VEHICLE_REGIONS_K_MAX = 10
 #: Thin-shell theory (Donnell, memo 2.3) is trusted for h/R up to 1/20.
 THIN_SHELL_LIMIT = 1.0 / 20.0
@@ -190,7 +192,8 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
     step(STAGES[0])
     model = cost.derived_model(case)
     extra: list[AnalysisWarning] = _feasibility(case, model, beam_action=beam_action,
-                                                stability=stability, figures=figures)
+                                                stability=stability, figures=figures,
+                                                with_regions=with_regions)
     # the costliest figure data, independent of the stages below: started first (in a worker
     # when the pool has one, else computed when asked for, in STAGES[5])
     chart = (pool.submit(charts.beam_action_chart, model) if figures and beam_action
@@ -209,7 +212,7 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
     action = None
     if beam_action:
         step(STAGES[3])
-        action = beam_action_analysis(model, bands=True if bands is None else bands.result)
+        action = _beam_action(model, True if bands is None else bands.result)
     table = None
     params = None
     if stability and action is not None:
@@ -273,11 +276,16 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
     )
 
 
-def _feasibility(case: Case, model: BoosterModel, **stages: bool) -> list[AnalysisWarning]:
+def _feasibility(case: Case, model: BoosterModel, *, with_regions: bool = True,
+                 **stages: bool) -> list[AnalysisWarning]:
     """Refuse a case past its budget or past what the structure carries (issue 18), before
     any solver runs; the warnings of the budget and of the load."""
     cost.check_physical(model)
-    est = cost.check_case_cost(model, case.max_seconds, **stages)
+    # the vehicle stages too (issue 18 item 1): modes survey, regions (lower bound with damping)
+    veh = dict(regions_k_max=VEHICLE_REGIONS_K_MAX, regions=with_regions,
+               figures=stages.get("figures", True))
+    est = cost.check_case_cost(model, case.max_seconds,
+                               vehicle=cost.estimate_vehicle_cost(case, **veh), **stages)
     out = cost.physical_warnings(model) + cost.capped_steps_warning(est, model)
     if est.seconds > 0.5 * case.max_seconds:
         out.append(AnalysisWarning("cost-estimate", "max_seconds",
@@ -337,8 +345,21 @@ def simulate_case(case: Case, Omega: float, *, tau_max: float, n_out: int = 401,
     with blas_threads(1):
         model = cost.derived_model(case)
         cost.check_physical(model)  # a load beyond the structure: a CaseError (issue 18)
-        params = excitation_parameters(model, beam_action_analysis(model, bands=False))
+        params = excitation_parameters(model, _beam_action(model, False))
         return simulate(model, Omega, tau_max, n_out=n_out, psi0=psi0, params=params)
+
+
+def _beam_action(model, bands):
+    """:func:`beam_action_analysis`; a period map beyond floating point is the load's CaseError."""
+    from .errors import CaseError
+
+    try:
+        return beam_action_analysis(model, bands=bands)
+    except PeriodMapOverflowError as exc:  # issue 18: a documented one-line refusal
+        raise CaseError("thrust.F0", model.F0,
+                        f"the beam action grows beyond the floating-point range ({exc}): far "
+                        "past what the booster carries at this gamma; lower thrust.F0 or "
+                        "thrust.gamma, or raise thrust.omega_min") from exc
 
 
 def analyze_vehicle(case: Case, *, k_max: int | None = None, f_max: float | None = None,
@@ -421,7 +442,7 @@ def vehicle_warnings(survey: VehicleSurvey) -> list[AnalysisWarning]:
 def _vehicle_regions_stage(case: Case, *, boundaries: bool
                            ) -> tuple[VehicleRegions | None, list[AnalysisWarning]]:
     """The regions of :func:`analyze_vehicle_regions`, or None and a warning where they cannot
-    be computed (k_max < 2, or the steady thrust buckles a harmonic): the run goes on."""
+    be computed (k_max < 1, or the steady thrust buckles a harmonic): the run goes on."""
     from .errors import CaseError
 
     table = case.vehicle
@@ -430,9 +451,13 @@ def _vehicle_regions_stage(case: Case, *, boundaries: bool
         return None, [AnalysisWarning(
             "vehicle-regions-skipped", "vehicle.k_max",
             f"vehicle.k_max = {k_max} < {VEHICLE_REGIONS_K_MIN}: the parametric regions are "
-            f"computed for k >= {VEHICLE_REGIONS_K_MIN} only")]
+            f"computed for k >= {VEHICLE_REGIONS_K_MIN} only (k = 0 gives forced, not "
+            "parametric, resonances)")]
     try:
-        return analyze_vehicle_regions(case, boundaries=boundaries), []
+        found = analyze_vehicle_regions(case, boundaries=boundaries)
+        # harmonics whose search would pass the budget (issue 18): named, not searched
+        return found, [AnalysisWarning("vehicle-regions-budget", "max_seconds", why)
+                       for why in found.skipped]
     except CaseError as exc:  # the thrust buckles the vehicle: a result, not a bad input
         return None, [AnalysisWarning("vehicle-regions-skipped", exc.field, exc.rule)]
 
@@ -455,8 +480,8 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
     case : Case
         The validated case (SI).
     k_min : int
-        Lowest harmonic (dimensionless), >= 2 (:data:`VEHICLE_REGIONS_K_MIN`; a keyword so
-        that the range can widen when k = 0, 1 are modelled).
+        Lowest harmonic (dimensionless), >= 1 (:data:`VEHICLE_REGIONS_K_MIN`: k = 1 with the
+        case's gimbal gain ``thrust.K``, the rigid pitch and the follower thrust).
     k_max : int, optional
         Highest harmonic (dimensionless); default min(``vehicle.k_max``,
         :data:`VEHICLE_REGIONS_K_MAX`).
@@ -495,7 +520,8 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
                         f"the parametric regions need k_max >= {k_min}")
     t = case.thrust
     settings = dict(F0=case.F0, omega_min=t.omega_min, omega_max=t.omega_max, k_min=k_min,
-                    k_max=k_max, n_modes=table.n_modes, damping_ratio=table.damping_ratio)
+                    k_max=k_max, n_modes=table.n_modes, damping_ratio=table.damping_ratio,
+                    gimbal_gain=t.K, max_seconds=case.max_seconds)
     with blas_threads(1):
         vehicle = vehicle_from_case(case)
         try:
@@ -505,9 +531,14 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
                                              and vehicle_regions(vehicle, gamma=top,
                                                                  **settings).regions):
                 # region_boundaries traces the regions of gamma_max: none there, no curve
-                found = vehicle_regions(vehicle, gamma=t.gamma, boundaries=True,
-                                        gamma_max=top, n_gamma=charts.VEHICLE_CHART_LEVELS,
-                                        **settings)
+                curved = vehicle_regions(vehicle, gamma=t.gamma, boundaries=True,
+                                         gamma_max=top, n_gamma=charts.VEHICLE_CHART_LEVELS,
+                                         **settings)
+                # the regions of the search above; the curves (of the harmonics the budget
+                # allows, issue 18) from this one
+                found = dataclasses.replace(found, curves=curved.curves, skipped=found.skipped
+                                            + tuple(w for w in curved.skipped
+                                                    if w not in found.skipped))
             found = dataclasses.replace(found, chart_gamma_max=top if boundaries else None)
         except ValueError as exc:
             if "buckles" in str(exc):
@@ -526,9 +557,16 @@ def _chart_gamma(found: VehicleRegions) -> float:
     not reach the operating gamma."""
     certified = 0.0
     if found.damping_ratio > 0.0 and found.harmonics:
-        certified = min(floquet.stability_certificate(h.mass, h.damping, h.stiffness,
-                                                      h.excitation).amplitude_factor
-                        for h in found.harmonics)  # certified for gamma below 1 / rho
+        # the certificate of gamma B1 has rho = gamma rho_1 (Q is linear in B): it certifies
+        # gamma' < gamma / rho = gamma * amplitude_factor; reused from the search (item 6 of
+        # issue 15), recomputed per unit gamma only where there is none (gamma = 0)
+        reuse = found.gamma > 0.0 and len(found.certificates) == len(found.harmonics)
+        certified = min(
+            found.gamma * c.amplitude_factor if reuse
+            else floquet.stability_certificate(h.mass, h.damping, h.stiffness,
+                                               h.excitation).amplitude_factor
+            for h, c in zip(found.harmonics, found.certificates if reuse
+                            else (None,) * len(found.harmonics), strict=True))
     return float(max(found.gamma, min(charts.VEHICLE_CHART_GAMMA_MAX, 0.999 * certified)))
 
 

@@ -48,6 +48,7 @@ __all__ = [
     "check_physical",
     "physical_warnings",
     "capped_steps_warning",
+    "estimate_vehicle_cost",
 ]
 
 #: Default budget of a run (s): a case whose estimate exceeds it is refused up front.
@@ -256,6 +257,86 @@ def estimate_cost(model: BoosterModel, *, beam_action: bool = True, stability: b
                         capped_points=capped, capped_omega_max=capped_omega)
 
 
+# Vehicle stages (issue 15 / 18): calibration on the default case's vehicle (the memo's two
+# cylinders, 263 FE DOFs), one core.  The modes survey (``[vehicle]`` only): k_max = 20 in
+# 0.38 s, 40 in 0.47 s (-> 0.3 s + 5e-3 s per harmonic); building a harmonic of the regions:
+# flexbooster.vehicle.HARMONIC_BUILD_SECONDS; its search where the certificate does not
+# cover it: flexbooster.vehicle.search_seconds.  FE work scales like the DOFs cubed (dense
+# eigensolves), floored at a third (fixed overheads).
+_C_SURVEY = (0.3, 5e-3)
+_REF_DOFS = 263.0
+
+
+def _dof_factor(vehicle) -> float:
+    from .shell_of_revolution import mesh_vehicle
+
+    return max(1.0 / 3.0, (mesh_vehicle(vehicle).n_full / _REF_DOFS) ** 3)
+
+
+def estimate_vehicle_cost(case: Any, *, regions_k_max: int = 10, regions: bool = True,
+                          figures: bool = True, certified: bool = True) -> CostEstimate:
+    """The predicted time of the vehicle stages of :func:`flexbooster.analysis.analyze`.
+
+    Parameters
+    ----------
+    case : Case
+        The validated case (SI).
+    regions_k_max : int
+        Highest harmonic of the regions (dimensionless), >= 1
+        (:data:`flexbooster.analysis.VEHICLE_REGIONS_K_MAX`): k = 1..min(vehicle.k_max, it).
+    regions : bool
+        The vehicle's parametric regions are computed (``analyze(..., vehicle=True)``).
+    figures : bool
+        With the chart's boundary curves.
+    certified : bool
+        Assume that damping certifies every harmonic stable (the lower bound: no search;
+        what the default case does); False: every harmonic searched (the upper bound).
+        Without damping every harmonic is searched either way.
+
+    Returns
+    -------
+    CostEstimate
+        Parts "vehicle modes" (``[vehicle]`` only: one FE eigenproblem per k = 0..k_max) and
+        "vehicle regions" (k = 1..min(k_max, 10): build each harmonic, search those not
+        certified, :func:`flexbooster.vehicle.search_seconds`), with the fields that drive
+        them; no solver is run (the mesh is built to count its DOFs).
+
+    References
+    ----------
+    Measured calibration (comments in this module and in flexbooster.vehicle.regions);
+    docs/theory/vehicle-regions.md, section 3d.
+    """
+    from .model import vehicle_from_case
+    from .vehicle import HARMONIC_BUILD_SECONDS, search_seconds
+    from .vehicle_case import VehicleTable
+
+    table = case.vehicle if case.vehicle is not None else VehicleTable()
+    t = case.thrust
+    parts: dict[str, float] = {}
+    drivers: dict[str, tuple[str, ...]] = {}
+    try:
+        dofs = _dof_factor(vehicle_from_case(case))
+    except ValueError:  # a vehicle the mesh refuses: the stage says why, not the estimate
+        return CostEstimate(seconds=0.0)
+    if case.vehicle is not None:  # the modes survey, k = 0..k_max
+        c0, c1 = _C_SURVEY
+        parts["vehicle modes"] = c0 + c1 * (table.k_max + 1) * dofs
+        drivers["vehicle modes"] = ("vehicle.k_max", "vehicle.segments")
+    n_k = min(table.k_max, int(regions_k_max))
+    if regions and n_k >= 1:
+        damped = table.damping_ratio > 0.0
+        searched = 0 if (damped and certified) or t.gamma == 0.0 else n_k
+        # k = 1 has the rigid modes too (at least 3 basis modes)
+        search = searched * search_seconds(max(table.n_modes, 3), t.omega_min, t.omega_max,
+                                           damped=damped, boundaries=figures)
+        parts["vehicle regions"] = n_k * HARMONIC_BUILD_SECONDS * dofs * max(
+            1.0, table.n_modes / 20.0) + search
+        drivers["vehicle regions"] = ("vehicle.n_modes", "vehicle.damping_ratio",
+                                      "vehicle.k_max", "thrust.omega_min", "thrust.omega_max",
+                                      "vehicle.segments")
+    return CostEstimate(seconds=float(sum(parts.values())), parts=parts, drivers=drivers)
+
+
 def derived_model(case: Any) -> BoosterModel:
     """:func:`flexbooster.model.model_from_case`, with a case that cannot be modelled (the
     mass properties or omega_1 overflow, e.g. radius = 1e300 m) as a one-line ``CaseError``.
@@ -289,7 +370,8 @@ def derived_model(case: Any) -> BoosterModel:
                         f"the case cannot be modelled in double precision: {exc}") from None
 
 
-def check_case_cost(model: BoosterModel, max_seconds: float, **stages: bool) -> CostEstimate:
+def check_case_cost(model: BoosterModel, max_seconds: float, *,
+                    vehicle: CostEstimate | None = None, **stages: bool) -> CostEstimate:
     """The cost estimate, or a ``CaseError`` when it exceeds the budget.
 
     Parameters
@@ -298,13 +380,15 @@ def check_case_cost(model: BoosterModel, max_seconds: float, **stages: bool) -> 
         The derived model.
     max_seconds : float
         Budget (s), > 0.
+    vehicle : CostEstimate, optional
+        The vehicle stages (:func:`estimate_vehicle_cost`), added to the memo's.
     **stages : bool
         ``beam_action``, ``stability``, ``figures`` as for :func:`estimate_cost`.
 
     Returns
     -------
     CostEstimate
-        When within the budget.
+        When within the budget (the vehicle parts included).
 
     Raises
     ------
@@ -317,6 +401,12 @@ def check_case_cost(model: BoosterModel, max_seconds: float, **stages: bool) -> 
     """
     max_seconds = positive("max_seconds", max_seconds)
     est = estimate_cost(model, **stages)
+    if vehicle is not None and vehicle.parts:
+        est = CostEstimate(seconds=est.seconds + vehicle.seconds,
+                           parts={**est.parts, **vehicle.parts},
+                           drivers={**est.drivers, **vehicle.drivers},
+                           capped_points=est.capped_points,
+                           capped_omega_max=est.capped_omega_max)
     if est.seconds > max_seconds:
         raise CaseError("max_seconds", max_seconds,
                         f"the estimated run time {est.seconds:.3g} s exceeds the budget: "

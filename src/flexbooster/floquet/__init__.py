@@ -25,6 +25,7 @@ from .regions import (
     InstabilityRegion,
     RegionBoundary,
     critical_amplitude,
+    golden_section_max,
     instability_regions,
     region_boundaries,
 )
@@ -36,6 +37,7 @@ __all__ = [
     "RegionBoundary",
     "converged_periodic_boundaries",
     "critical_amplitude",
+    "golden_section_max",
     "instability_regions",
     "region_boundaries",
     "LinearPeriodicSystem",

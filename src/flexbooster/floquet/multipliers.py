@@ -318,8 +318,10 @@ def _lawson_modal(x, v, force, n_steps, c1, s1, m1, c2, s2, hh):
 
 
 def _period_dense(system: LinearPeriodicSystem, om: np.ndarray, n_steps: int,
-                  half: bool) -> np.ndarray:
-    """Phi over one period (or half period) in (q, q'), shape (P, 2n, 2n); dense Lawson RK4."""
+                  half: bool, scale: np.ndarray | None = None) -> np.ndarray:
+    """Phi over one period (or half period) in (q, q'), shape (P, 2n, 2n); dense Lawson RK4.
+
+    With ``scale`` (P,) the amplitude of point p is scale[p] x B (a batch of amplitudes)."""
     n, P = system.n, om.size
     L0 = np.block([[np.zeros((n, n)), np.eye(n)], [-system.K0, -system.Kc]])
     h = ((1.0 if half else 2.0) * np.pi / om) / n_steps
@@ -327,10 +329,11 @@ def _period_dense(system: LinearPeriodicSystem, om: np.ndarray, n_steps: int,
     E2 = scipy.linalg.expm(L0[None] * (0.5 * h)[:, None, None])
     Kb = system.Kb
     hh = h[:, None, None]
+    amp = np.ones(P) if scale is None else np.asarray(scale, dtype=float)
 
     def force(t, z):  # N(t) z = (0, -cos(Omega t) M^-1 B q)
         out = np.zeros_like(z)
-        out[:, n:, :] = -np.cos(om * t)[:, None, None] * (Kb @ z[:, :n, :])
+        out[:, n:, :] = -(amp * np.cos(om * t))[:, None, None] * (Kb @ z[:, :n, :])
         return out
 
     z = np.broadcast_to(np.eye(2 * n), (P, 2 * n, 2 * n)).copy()
@@ -393,7 +396,7 @@ def _finite(Phi: np.ndarray, om: np.ndarray) -> np.ndarray:
 
 
 def _full_maps(system: LinearPeriodicSystem, om: np.ndarray, steps: np.ndarray,
-               chunk: int) -> np.ndarray:
+               chunk: int, scale: np.ndarray | None = None) -> np.ndarray:
     n = system.n
     out = np.empty((om.size, 2 * n, 2 * n))
     steps = _merge_steps(steps, n)
@@ -401,7 +404,8 @@ def _full_maps(system: LinearPeriodicSystem, om: np.ndarray, steps: np.ndarray,
         where = np.nonzero(steps == ns)[0]
         for start in range(0, where.size, chunk):
             sel = where[start:start + chunk]
-            out[sel] = _period_dense(system, om[sel], int(ns), False)
+            out[sel] = _period_dense(system, om[sel], int(ns), False,
+                                     None if scale is None else scale[sel])
     return _finite(out, om)
 
 

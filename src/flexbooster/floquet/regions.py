@@ -24,9 +24,11 @@ a window that holds no other candidate), and where the maximum is above the roun
 both boundaries are bracketed outward and refined on F = 0 (vectorised Illinois regula falsi)
 to the stated tolerance; if the system is still unstable beyond (an overlapping region) the
 march goes on with the whole-system indicator to the first Omega where |rho|_max = 1, so
-overlapping regions are reported as their union.  With damping, the undamped regions seed the
-search of max log|rho| > 0 from the full-period monodromy (see ``docs/theory/floquet.md`` for
-the assumptions and limits).
+overlapping regions are reported as their union.  Candidates below the round-off floor of the
+indicators (relative width ~6e-8 / j) are examined by the harmonic-balance pair discriminant of
+:mod:`.narrow`, whose resolution is linear in the width.  With damping, the undamped regions
+seed the search of max log|rho| > 0 from the full-period monodromy (see
+``docs/theory/floquet.md`` for the assumptions and limits).
 
 References
 ----------
@@ -44,7 +46,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.optimize
 
 from .bounds import _certificate
 from .multipliers import (
@@ -57,9 +58,11 @@ from .multipliers import (
     periodic_system,
     step_counts,
 )
+from .narrow import narrow_search
 
 __all__ = [
     "DAMPING_MARGIN",
+    "golden_section_max",
     "InstabilityRegion",
     "instability_regions",
     "RegionBoundary",
@@ -73,6 +76,14 @@ _GOLD = 0.5 * (np.sqrt(5.0) - 1.0)
 #: Round-off floor of the indicators (s-values are O(1), eigenvalue errors ~ eps ||S||): a
 #: maximum below it is not a region.  Detection limit: relative width ~ 2 sqrt(floor) / (pi j).
 _F_FLOOR = 1e-14
+#: Candidates whose estimated width is below 1e-2 x this (relative) are not examined by the
+#: harmonic-balance pair of :mod:`.narrow`: 1e-14, its reporting floor ``narrow.MIN_WIDTH``.
+_NARROW_FLOOR = 1e-12
+#: A monodromy candidate whose indicator maximum is below -_F_SCREEN has no region (its pair
+#: of s-values stays 1e-6 apart, far beyond the integration error): not re-examined.
+_F_SCREEN = 1e-6
+#: Smallest half-window (relative to the centre) of the narrow-region search.
+_NARROW_WINDOW = 1e-3
 #: Safety factor of the damping filter (see :func:`_damping_caps`): a candidate is examined
 #: when margin x its first-order growth-rate bound exceeds the decay rate of its modes.
 DAMPING_MARGIN = 4.0
@@ -204,7 +215,7 @@ def _damping_caps(w, Bt, base, i0, k0, zrow, zeta, rate, margin) -> np.ndarray:
     lam2 = base * zrow[i0] * zrow[k0] / 4.0  # j = 2 (and the path part of j = 1)
     lam1 = np.maximum(np.maximum(R[i0], R[k0]), lam2)
     cap = np.where(margin * lam1 > d, 1, 0).astype(np.int64)
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):  # t = inf: no j >= 2
         t = d / (margin * lam2)  # j >= 2 kept while zeta^(j-2) > t
         if zeta < 1.0:
             L = np.where(t < 1.0, np.log(np.maximum(t, 1e-300)) / np.log(zeta), -1.0)
@@ -269,15 +280,18 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
     first = np.where(kind == 0, np.abs(Bt[i, i]) / w[i],
                      np.sqrt(np.abs(Bt[i, k] * Bt[k, i]) / (w[i] * w[k])))
     est = np.where(j == 1, np.maximum(first, est), est)
-    # regions narrower than the round-off floor of the indicators cannot be told from zero
+    # regions narrower than the round-off floor of the indicators cannot be told from zero by
+    # the monodromy ("mono" candidates: est above it); the narrower ones down to the floor of
+    # the harmonic-balance pair (:mod:`.narrow`, resolution linear in the width) are kept too
     floor = np.maximum(opt.rtol, 2.0 * np.sqrt(_F_FLOOR) / (np.pi * jf))
     keep = (centre >= lo * (1.0 - 1e-9)) & (centre <= hi * (1.0 + 1e-9))
     keep |= (centre + 2.0 * est >= lo) & (centre - 2.0 * est <= hi)
-    keep &= est >= 1e-2 * floor * centre
+    keep &= est >= 1e-2 * _NARROW_FLOOR * centre
     if opt.max_order is not None:
         keep &= j <= opt.max_order
+    mono = est >= 1e-2 * floor * centre
     return {"kind": kind[keep], "i": i[keep], "k": k[keep], "j": j[keep],
-            "centre": centre[keep], "est": est[keep], "gap": gap[keep]}
+            "centre": centre[keep], "est": est[keep], "gap": gap[keep], "mono": mono[keep]}
 
 
 # --------------------------------------------------------------------------------------------
@@ -345,22 +359,70 @@ def _growth_undamped(system, om, opt) -> np.ndarray:
     return np.log(_rho_max_from_sets(xp, xm)) * om / (2.0 * np.pi)  # log|rho|_max / T
 
 
-def _growth_damped(system, om, opt) -> np.ndarray:
+def _growth_damped(system, om, opt, scale=None) -> np.ndarray:
     steps = step_counts(system, om, step_phase=opt.step_phase, max_steps=opt.max_steps)
-    rho = np.linalg.eigvals(_full_maps(system, om, steps, opt.chunk))
+    rho = np.linalg.eigvals(_full_maps(system, om, steps, opt.chunk, scale))
     return np.log(np.max(np.abs(rho), axis=1)) * om / (2.0 * np.pi)  # log|rho|_max / T
 
 
 # --------------------------------------------------------------------------------------------
 # Vectorised scalar solvers
 # --------------------------------------------------------------------------------------------
+def golden_section_max(f, a, b, *, xtol, max_iter: int = 200,
+                       stop_positive: bool = False) -> tuple[np.ndarray, np.ndarray]:
+    """Maximise f on [a, b] by golden-section search, vectorised over independent intervals.
+
+    Each interval m is shrunk by the golden ratio per step, keeping the larger of its two
+    interior values, until b_m - a_m <= xtol_m (Kiefer 1953; Press et al. 2007, sec. 10.2);
+    f must be unimodal on each interval for the global maximum.
+
+    Parameters
+    ----------
+    f : callable
+        f(x, idx) -> values: x (P',) the points (unit of a, b) for the intervals idx (P',),
+        integer indices into the arrays; returns (P',) floats (any unit).
+    a, b : array_like
+        Interval ends, shape (P,), finite, a < b (unit of x).
+    xtol : array_like
+        Final interval lengths, shape (P,) or scalar, > 0 (unit of x).
+    max_iter : int
+        Cap on the steps (ValueError beyond it), >= 1.
+    stop_positive : bool
+        If True an interval stops as soon as f > 0 at one of its points.
+
+    Returns
+    -------
+    x, fx : numpy.ndarray
+        The best point of each interval and f there, shape (P,).
+
+    Raises
+    ------
+    ValueError
+        Bad arguments (naming them), or no convergence in max_iter steps.
+
+    References
+    ----------
+    J. Kiefer, "Sequential minimax search for a maximum", Proc. AMS 4 (1953) 502-506;
+    W. H. Press et al., *Numerical Recipes*, 3rd ed., Cambridge, 2007, sec. 10.2.
+    """
+    a = np.atleast_1d(np.asarray(a, dtype=float))
+    b = np.atleast_1d(np.asarray(b, dtype=float))
+    if a.ndim != 1 or a.shape != b.shape or not (np.all(np.isfinite(a))
+                                                 and np.all(np.isfinite(b))):
+        raise ValueError(f"a = {a!r}: a and b must be finite 1-D arrays of the same shape")
+    if np.any(b <= a):
+        raise ValueError(f"b = {b!r}: must be > a")
+    xtol = np.broadcast_to(np.asarray(xtol, dtype=float), a.shape)
+    if not np.all(np.isfinite(xtol)) or np.any(xtol <= 0.0):
+        raise ValueError(f"xtol = {xtol!r}: must be finite and > 0")
+    if isinstance(max_iter, bool) or not isinstance(max_iter, int | np.integer) or max_iter < 1:
+        raise ValueError(f"max_iter = {max_iter!r}: must be an integer >= 1")
+    return _golden_max(f, a, b, xtol, max_iter, stop_positive)
+
+
 def _golden_max(f, a: np.ndarray, b: np.ndarray, xtol: np.ndarray, max_iter: int = 200,
                 stop_positive: bool = False) -> tuple[np.ndarray, np.ndarray]:
-    """Maximise f (vectorised) on [a, b] by golden section to |b - a| <= xtol.
-
-    With ``stop_positive`` a point stops as soon as f > 0 somewhere (the region is found; its
-    boundaries are bracketed from there).
-    """
+    """:func:`golden_section_max` without the checks (arrays of the same shape)."""
     a, b = a.copy(), b.copy()
     x1 = b - _GOLD * (b - a)
     x2 = a + _GOLD * (b - a)
@@ -595,10 +657,55 @@ def _modal_decay_rates(system: LinearPeriodicSystem) -> np.ndarray | None:
     return 0.5 * np.real(np.diag(Ct))
 
 
-def _undamped_search(system, w, cand, lo, hi, opt) -> list[dict]:
+def _undamped_search(system, w, cand, lo, hi, opt, narrow: bool = True) -> list[dict]:
     """Regions of the undamped system for the candidate table; list of plain dicts."""
     if cand["centre"].size == 0:
         return []
+    mono = cand["mono"]
+    regs, fmax = _monodromy_search(system, w, {key: v[mono] for key, v in cand.items()}, lo,
+                                   hi, opt)
+    if not narrow:
+        return regs
+    # the candidates below the monodromy floor, and those whose indicator maximum stayed
+    # between -_F_SCREEN and the round-off floor (a pair that approaches within 1e-6 in s)
+    extra = (fmax <= _F_FLOOR) & (fmax > -_F_SCREEN)
+    missed = {key: np.concatenate([v[~mono], v[mono][extra]]) for key, v in cand.items()}
+    return regs + _narrow_pass(system, missed, regs, lo, hi)
+
+
+def _narrow_pass(system, cand, regs, lo, hi) -> list[dict]:
+    """Regions narrower than the monodromy's round-off floor (:mod:`.narrow`), as dicts.
+
+    The edges are the roots of the harmonic-balance pair discriminant D(Omega) (its vertex
+    +- the half-width), the growth rate sqrt(D) / 2 at the vertex; regions inside one that
+    the monodromy search found (an overlap: the union is reported) are dropped.
+    """
+    if cand["centre"].size == 0:
+        return []
+    Oc = cand["centre"]
+    sub = dict(cand)
+    # the window: to the next centre, at least the size of the second-order frequency shifts
+    # (a pair's discriminant is its own: another centre inside does not disturb it)
+    sub["window"] = np.minimum(np.maximum(0.45 * cand["gap"], _NARROW_WINDOW * Oc),
+                               0.2 * Oc / cand["j"])
+    res = narrow_search(system.mu.real, system.Bt, sub)
+    out = []
+    for m in np.nonzero(res["found"] & res["converged"])[0]:
+        a, b = float(res["lo"][m]), float(res["hi"][m])
+        if b < lo or a > hi or any(r["lo"] <= a and b <= r["hi"] for r in regs):
+            continue
+        out.append({"lo": a, "hi": b, "kind": int(cand["kind"][m]), "i": int(cand["i"][m]),
+                    "k": int(cand["k"][m]), "j": int(cand["j"][m]), "centre": float(Oc[m]),
+                    "clipped": False, "growth": float(res["growth"][m]),
+                    "at": float(res["omega_at_max"][m])})
+    return out
+
+
+def _monodromy_search(system, w, cand, lo, hi, opt) -> tuple[list[dict], np.ndarray]:
+    """Regions found from the monodromy indicators (module docstring), and the maximum of
+    each candidate's indicator."""
+    if cand["centre"].size == 0:
+        return [], np.zeros(0)
     Oc = cand["centre"]
     xtol = opt.rtol * Oc
 
@@ -613,7 +720,7 @@ def _undamped_search(system, w, cand, lo, hi, opt) -> list[dict]:
     xs, fs = _brent_max(F, a, b, Oc, np.maximum(10.0 * xtol, 1e-15 * Oc), stop_positive=True)
     hit = np.nonzero(fs > _F_FLOOR)[0]
     if hit.size == 0:
-        return []
+        return [], fs
     sub = {key: v[hit] for key, v in cand.items()}
     x0 = xs[hit]
     f0 = fs[hit]
@@ -655,11 +762,15 @@ def _undamped_search(system, w, cand, lo, hi, opt) -> list[dict]:
         out.append({"lo": float(olo[m]), "hi": float(ohi[m]), "kind": int(sub["kind"][m]),
                     "i": int(sub["i"][m]), "k": int(sub["k"][m]), "j": int(sub["j"][m]),
                     "centre": float(sub["centre"][m]), "clipped": bool(clo[m] or chi[m])})
-    return out
+    return out, fs
 
 
-def _damped_search(system, undamped, opt) -> list[dict]:
-    """Regions with damping, seeded by the undamped regions (see module docstring)."""
+def _damped_search(system, undamped, opt, lo, hi) -> list[dict]:
+    """Regions with damping, seeded by the undamped regions (see module docstring).
+
+    The outward marches stay inside [lo, hi], the range of the undamped seed search (> 0):
+    a march limit of 4 widths beyond a wide region could otherwise reach Omega <= 0.
+    """
     if not undamped:
         return []
     lo_u = np.array([r["lo"] for r in undamped])
@@ -684,8 +795,8 @@ def _damped_search(system, undamped, opt) -> list[dict]:
         return out
     x0, g0 = xs[hit], gs[hit]
     d0 = np.maximum(width[hit] / 16.0, 4.0 * xtol[hit])
-    lo_lim = np.array([undamped[m]["lo"] for m in hit]) - 4.0 * width[hit]
-    hi_lim = np.array([undamped[m]["hi"] for m in hit]) + 4.0 * width[hit]
+    lo_lim = np.maximum(lo_u[hit] - 4.0 * width[hit], lo)
+    hi_lim = np.minimum(hi_u[hit] + 4.0 * width[hit], hi)
     P = hit.size
     edge = _edges(lambda x, idx: G(x), np.concatenate([x0, x0]), np.concatenate([g0, g0]),
                   np.concatenate([d0, d0]), np.concatenate([-np.ones(P), np.ones(P)]),
@@ -721,6 +832,21 @@ def _finish(system, regions, lo, hi, opt, damped) -> tuple[InstabilityRegion, ..
         regs.append(r)
     if not regs:
         return ()
+    narrow = [r for r in regs if "growth" in r]  # from the harmonic-balance pair
+    regs = [r for r in regs if "growth" not in r]
+    out = [] if not regs else list(_finish_monodromy(system, regs, opt, damped))
+    for r in narrow:
+        modes = (r["i"],) if r["kind"] == 0 else (r["i"], r["k"])
+        out.append(InstabilityRegion(
+            omega_lo=r["lo"], omega_hi=r["hi"], growth_rate_max=r["growth"],
+            omega_at_max=r["at"], kind=_KINDS[r["kind"]], modes=modes, order=r["j"],
+            omega_center=r["centre"], clipped=r["clipped"]))
+    return tuple(sorted(out, key=lambda q: (round(q.omega_lo / quantum), q.order,
+                                            _KINDS.index(q.kind))))
+
+
+def _finish_monodromy(system, regs, opt, damped) -> tuple[InstabilityRegion, ...]:
+    """Growth-rate maxima of the monodromy regions (9 samples, then Brent)."""
     a = np.array([r["lo"] for r in regs])
     b = np.array([r["hi"] for r in regs])
     grow = _growth_damped if damped else _growth_undamped
@@ -770,8 +896,10 @@ def _search(system: LinearPeriodicSystem, lo: float, hi: float, opt: _Options,
         keep = select(cand)
         cand = {key: v[keep] for key, v in cand.items()}
     if system.damped:  # seeds from the undamped system, searched a little wider
-        regs = _undamped_search(undamped, w, cand, 0.5 * lo, 2.0 * hi, opt)
-        regs = _damped_search(system, regs, opt)
+        # regions narrower than the monodromy floor (growth ~ width) are not looked for: damping
+        # suppresses them unless the decay rate is below that growth
+        regs = _undamped_search(undamped, w, cand, 0.5 * lo, 2.0 * hi, opt, narrow=False)
+        regs = _damped_search(system, regs, opt, 0.5 * lo, 2.0 * hi)
     else:
         regs = _undamped_search(undamped, w, cand, lo, hi, opt)
     return _finish(system, regs, lo, hi, opt, system.damped)
@@ -819,8 +947,11 @@ def instability_regions(M, C, A, B, omega_min: float, omega_max: float, *,
     tuple of InstabilityRegion
         Sorted by omega_lo; every edge is a point of |rho|_max = 1 (or an end of the range,
         ``clipped``); overlapping regions come as their union, labelled by the lowest-order
-        candidate that reached it.  Regions narrower than about 6e-8 / j of their centre are
-        below the round-off floor of the indicators and not reported.  If the steady system
+        candidate that reached it.  Regions narrower than about 6e-8 / j of their centre
+        (below the round-off floor of the monodromy indicators) come from the harmonic-balance
+        pair of :mod:`flexbooster.floquet.narrow` (undamped systems; edges and growth rate
+        resolved linearly in the width) down to 1e-14 of their centre; narrower ones are not
+        reported.  If the steady system
         (B = 0) is itself unstable (complex or non-positive eigenvalues of M^-1 A, or a damped
         steady system with a growing mode) the result is one region of kind "steady" over the
         whole range.
@@ -926,8 +1057,11 @@ def critical_amplitude(M, C, A, B1, *, gamma_max: float, omega_min: float, omega
 
     Without damping every region grows out of its candidate centre at gamma = 0.  With damping
     the largest growth rate near the region, g(gamma) = max_Omega log|rho|_max / T, is negative
-    at gamma = 0 and positive at gamma_max; its root (brentq) is the amplitude at which the two
-    boundaries meet (Bolotin 1964, sec. 6: mu_cr = Delta / pi for the damped Mathieu equation).
+    at gamma = 0 and positive at gamma_max; its root (Illinois regula falsi, all regions at
+    once, each g a Brent maximum over the region's Omega interval at gamma_max, with its own
+    monodromy accuracy: independent of the search's rtol and step_phase) is the amplitude at
+    which the two boundaries meet (Bolotin 1964, sec. 6: mu_cr = Delta / pi for the damped
+    Mathieu equation).
 
     Parameters
     ----------
@@ -938,7 +1072,10 @@ def critical_amplitude(M, C, A, B1, *, gamma_max: float, omega_min: float, omega
     omega_min, omega_max : float
         Omega range (rad per time unit).
     gamma_rtol : float
-        Relative tolerance on gamma_cr (dimensionless).
+        Tolerance on gamma_cr relative to gamma_max (dimensionless), 1e-12..1e-2; the growth
+        maxima are converged to ~1e-8 of the peak and integrated at step_phase
+        min(step_phase, 0.12) (error ~1e-8 relative on gamma_cr), so the tip is accurate to
+        about gamma_rtol + 1e-7 relative whatever the search's rtol.
     regions : tuple of InstabilityRegion, optional
         The regions at gamma_max from :func:`instability_regions` with the same range and
         options, if already computed (saves that search; not checked).
@@ -957,33 +1094,81 @@ def critical_amplitude(M, C, A, B1, *, gamma_max: float, omega_min: float, omega
     gmax = _gamma_max(gamma_max)
     lo, hi = _range(omega_min, omega_max)
     opt = _options(**options)
+    if not (np.isfinite(gamma_rtol) and 1e-12 <= gamma_rtol <= 1e-2):
+        raise ValueError(f"gamma_rtol = {gamma_rtol!r}: must be in 1e-12..1e-2")
     B1 = np.asarray(B1, dtype=float)
     base = periodic_system(M, C, A, gmax * B1)
     top = _search(base, lo, hi, opt) if regions is None else tuple(regions)
-    out = []
-    for r in top:
-        if r.kind == "steady":
-            continue
-        if not base.damped:
-            out.append(CriticalAmplitude(r.kind, r.modes, r.order, 0.0, r.omega_center))
-            continue
+    top = tuple(r for r in top if r.kind != "steady")
+    if not base.damped:
+        return tuple(CriticalAmplitude(r.kind, r.modes, r.order, 0.0, r.omega_center)
+                     for r in top)
+    if not top:
+        return ()
+    c_cr, om_cr = _tips(base, top, opt, gamma_rtol)
+    return tuple(CriticalAmplitude(r.kind, r.modes, r.order, float(c * gmax), float(o))
+                 for r, c, o in zip(top, c_cr, om_cr, strict=True))
 
-        def peak(g, r=r):
-            sys_g = periodic_system(M, C, A, g * B1)
-            regs = [q for q in _search(sys_g, lo, hi, opt, select=_selector(r)) if
-                    _key(q) == _key(r)]
-            if regs:
-                return regs[0].growth_rate_max, regs[0].omega_at_max
-            return -1.0, r.omega_center
 
-        glo = gmax * 1e-3
-        while peak(glo)[0] > 0.0 and glo > 1e-12 * gmax:
-            glo *= 0.1
-        g_cr = scipy.optimize.brentq(lambda g: peak(g)[0], glo, gmax, xtol=gamma_rtol * gmax,
-                                     maxiter=200)
-        out.append(CriticalAmplitude(r.kind, r.modes, r.order, float(g_cr),
-                                     float(peak(min(gmax, g_cr * (1 + 10 * gamma_rtol)))[1])))
-    return tuple(out)
+#: Monodromy step parameter of the tip search (:func:`_tips`), whatever the search's own.
+_TIP_STEP_PHASE = 0.12
+#: Omega tolerance of the growth maximum at each amplitude, relative to the region's width at
+#: gamma_max (the growth is quadratic about its maximum: its error is ~1e-8 of the peak).
+_TIP_OMEGA_XTOL = 1e-4
+
+
+def _tips(base: LinearPeriodicSystem, top, opt: _Options, gamma_rtol: float):
+    """Critical amplitude factors c (B = c B_top) and Omega of the tips, all regions at once.
+
+    g(c) = max_Omega growth(Omega, c) over each region's Omega interval at gamma_max (the
+    region at a smaller amplitude lies inside it) is increasing, g(0) = -(slowest steady decay)
+    < 0 (exact, from the steady eigenvalues) and g(1) > 0; its root c_cr is bracketed by
+    [0, 1] and found by vectorised Illinois regula falsi to gamma_rtol; each g is a
+    vectorised Brent maximum over Omega (to _TIP_OMEGA_XTOL of the width, from the previous
+    maximiser), with the monodromy at _TIP_STEP_PHASE: the tip does not depend on the search's
+    rtol or step_phase (Bolotin 1964, sec. 6: the two boundaries meet where the largest
+    growth rate is zero).
+    """
+    tip = _Options(rtol=opt.rtol, step_phase=min(opt.step_phase, _TIP_STEP_PHASE),
+                   max_steps=opt.max_steps, max_order=opt.max_order,
+                   max_candidates=opt.max_candidates, chunk=opt.chunk,
+                   damping_margin=opt.damping_margin)
+    a = np.array([r.omega_lo for r in top])
+    b = np.array([r.omega_hi for r in top])
+    xs = np.array([r.omega_at_max for r in top])
+    xtol = np.maximum(_TIP_OMEGA_XTOL * (b - a), 1e-15 * b)
+
+    def g(c, idx):
+        def f(x, sub):
+            return _growth_damped(base, x, tip, scale=c[idx][sub])
+
+        x, gx = _brent_max(f, a[idx], b[idx], xs[idx], xtol[idx])
+        xs[idx] = x
+        return gx
+
+    n = base.n
+    L0 = np.block([[np.zeros((n, n)), np.eye(n)], [-base.K0, -base.Kc]])
+    g0 = float(np.max(np.linalg.eigvals(L0).real))  # growth at c = 0 (steady), < 0
+    P = len(top)
+    every = np.arange(P)
+    g1 = g(np.ones(P), every)
+    c_in, f_in = np.ones(P), g1
+    c_out, f_out = np.zeros(P), np.full(P, g0)
+    pos = g1 > 0.0  # a region at gamma_max (always, unless given a stale table)
+    c_cr = np.ones(P)
+    if pos.any():
+        ids = np.nonzero(pos)[0]
+        c_vec = np.ones(P)
+
+        def root_f(c, act):
+            c_vec[ids[act]] = c
+            return g(c_vec, ids[act])
+
+        c_cr[ids] = _illinois(root_f, c_in[ids], f_in[ids], c_out[ids], f_out[ids],
+                              np.full(ids.size, gamma_rtol))
+        c_vec[ids] = c_cr[ids]
+        g(c_vec, ids)  # the maximiser at the tip
+    return c_cr, xs
 
 
 def _selector(r):
@@ -1037,10 +1222,10 @@ def region_boundaries(M, C, A, B1, *, gamma_max: float, omega_min: float, omega_
         raise ValueError(f"n_gamma = {n_gamma!r}: must be an integer in 2..1000")
     opt = _options(**options)
     B1 = np.asarray(B1, dtype=float)
-    crit = critical_amplitude(M, C, A, B1, gamma_max=gmax, omega_min=lo, omega_max=hi,
-                              **options)
     levels = np.linspace(0.0, gmax, n_gamma)[1:]
     found = [_search(periodic_system(M, C, A, g * B1), lo, hi, opt) for g in levels]
+    crit = critical_amplitude(M, C, A, B1, gamma_max=gmax, omega_min=lo, omega_max=hi,
+                              regions=found[-1], **options)  # levels[-1] = gamma_max
     out = []
     for c in crit:
         key = (c.kind, c.modes, c.order)

@@ -52,9 +52,15 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
+import scipy.linalg
 
 from ..checks import count, nonnegative, positive
-from ..floquet import critical_amplitude, instability_regions, periodic_boundaries
+from ..floquet import (
+    critical_amplitude,
+    golden_section_max,
+    instability_regions,
+    periodic_boundaries,
+)
 from ..floquet import hill_exponents as floquet_hill_exponents
 from . import beam
 
@@ -62,6 +68,7 @@ if TYPE_CHECKING:
     from .model import BoosterModel
 
 __all__ = [
+    "PeriodMapOverflowError",
     "BeamActionSystem",
     "beam_action_system",
     "beam_system",
@@ -82,6 +89,7 @@ __all__ = [
     "TONGUE_MAX_HARMONICS",
     "TONGUE_HILL_HARMONICS",
     "TONGUE_GAMMA_RTOL",
+    "TONGUE_RTOL_FLOOR",
     "BeamActionBand",
     "modal_damping",
     "beam_action_bands",
@@ -601,6 +609,12 @@ def _modal(system: BeamActionSystem) -> tuple[np.ndarray, np.ndarray]:
     return mu, Bt
 
 
+class PeriodMapOverflowError(ValueError):
+    """The beam-action period map left the floating-point range (a growth over one period
+    beyond ~1e308, or a transition matrix singular to working precision that QZ cannot
+    resolve): the case is far past a divergence or flutter load at that Omega and gamma."""
+
+
 def _rotation(mu: np.ndarray, t: np.ndarray) -> tuple[np.ndarray, ...]:
     """cos(w t), sin(w t)/w, -w sin(w t) for w^2 = mu (exact propagator of eta'' + mu eta = 0)."""
     w = np.sqrt(mu.astype(complex)) if np.iscomplexobj(mu) or np.any(mu < 0) else np.sqrt(mu)
@@ -613,10 +627,13 @@ def _rotation(mu: np.ndarray, t: np.ndarray) -> tuple[np.ndarray, ...]:
 
 
 def _monodromy_half(mu: np.ndarray, Bt: np.ndarray, Ob: np.ndarray, gam: np.ndarray,
-                    n_steps: int) -> np.ndarray:
+                    n_steps: np.ndarray) -> np.ndarray:
     """Fundamental matrix at T/2 in modal coordinates, Lawson RK4 with n_steps equal steps.
 
     The state is z = (eta, eta') with eta'' + diag(mu) eta = gamma cos(Omega_bar tau) Bt eta.
+    ``n_steps`` (P,) is the step count of each point, in descending order: all points advance
+    together, and a point leaves the batch (its half-period map stored) once its own count of
+    steps is done, so the loop runs max(n_steps) times whatever the spread of the counts.
     Returns shape (P, 2n, 2n).
     """
     P = Ob.size
@@ -628,16 +645,27 @@ def _monodromy_half(mu: np.ndarray, Bt: np.ndarray, Ob: np.ndarray, gam: np.ndar
     c2, s2, _ = (e.T[:, :, None] for e in _rotation(mu[None, :], 0.5 * h[:, None]))  # E(h/2)
     hh = h[None, :, None]
 
-    def force(tau, x):  # velocity slope gamma cos(Omega_bar tau) Bt eta (the position slope is 0)
-        coef = (gam * np.cos(Ob * tau))[None, :, None]
-        return coef * (Bt @ x.reshape(n, -1)).reshape(x.shape)
+    def force(tau, y):  # velocity slope gamma cos(Omega_bar tau) Bt eta (the position slope is 0)
+        coef = (gam * np.cos(Ob * tau))[None, :, None]  # gam, Ob: the current batch
+        return coef * (Bt @ y.reshape(n, -1)).reshape(y.shape)
 
     x = np.zeros((n, P, 2 * n), dtype=dtype)
     v = np.zeros((n, P, 2 * n), dtype=dtype)
     idx = np.arange(n)
     x[idx, :, idx] = 1.0
     v[idx, :, n + idx] = 1.0
-    for k in range(n_steps):  # Lawson (integrating-factor) RK4, Lawson (1967)
+    out = np.empty((P, 2 * n, 2 * n), dtype=dtype)
+    ends = np.searchsorted(-n_steps, -np.arange(int(n_steps[0]) + 1), side="left")
+    p = P  # the points still integrating: a prefix, as the counts descend
+    for k in range(int(n_steps[0])):  # Lawson (integrating-factor) RK4, Lawson (1967)
+        if ends[k] < p:  # points whose k steps are done: store them, shrink the batch
+            q = ends[k]
+            out[q:p] = np.concatenate([x[:, q:p], v[:, q:p]], axis=0).transpose(1, 0, 2)
+            p = q
+            x, v = x[:, :p], v[:, :p]
+            c1, s1, m1, c2, s2, hh = (a[:, :p] for a in (c1, s1, m1, c2, s2, hh))
+            h, gam, Ob = h[:p], gam[:p], Ob[:p]
+
         t0 = k * h
         a1 = force(t0, x)  # k1 = N(t) z
         a2 = force(t0 + 0.5 * h, c2 * x + s2 * (v + 0.5 * hh * a1))  # N E(h/2)(z + h/2 k1)
@@ -649,19 +677,32 @@ def _monodromy_half(mu: np.ndarray, Bt: np.ndarray, Ob: np.ndarray, gam: np.ndar
         # z_new = E(h) z + h/6 [E(h) k1 + 2 E(h/2)(k2 + k3) + k4]
         x = xf + hh / 6.0 * (s1 * a1 + s2 * a23)
         v = vf + hh / 6.0 * (c1 * a1 + c2 * a23 + a4)
-    return np.concatenate([x, v], axis=0).transpose(1, 0, 2)
+    out[:p] = np.concatenate([x, v], axis=0).transpose(1, 0, 2)
+    return out
 
 
 def _multipliers_from_half(Phi: np.ndarray) -> np.ndarray:
-    """Eigenvalues of the monodromy Phi(T/2) R Phi(T/2)^-1 R, R = diag(I, -I) (reversibility)."""
+    """Eigenvalues of the monodromy Phi(T/2) R Phi(T/2)^-1 R, R = diag(I, -I) (reversibility).
+
+    Where Phi(T/2) is singular to working precision (a growth over one period near 1/eps, e.g.
+    far past a flutter load: issue 18's fuzz), the same multipliers are the eigenvalues of the
+    pencil (Phi R, R Phi) (v = R Phi u), found by the QZ algorithm without an inverse.
+    """
     n2 = Phi.shape[-1]
     n = n2 // 2
     R = np.concatenate([np.ones(n), -np.ones(n)])
     PhiR = Phi * R[None, None, :]  # Phi R
-    # Phi(T/2) R Phi(T/2)^-1 R  ~ similar to  Phi(T); use solve for Phi^-1 R
-    inv = np.linalg.solve(Phi, np.broadcast_to(np.diag(R), Phi.shape))
-    Mon = PhiR @ inv
-    return np.linalg.eigvals(Mon)
+    try:  # Phi(T/2) R Phi(T/2)^-1 R  ~ similar to  Phi(T); use solve for Phi^-1 R
+        inv = np.linalg.solve(Phi, np.broadcast_to(np.diag(R), Phi.shape))
+        rho = np.linalg.eigvals(PhiR @ inv)
+        bad = ~np.all(np.isfinite(rho) & (rho != 0.0), axis=-1)
+    except np.linalg.LinAlgError:  # some point singular: each by the pencil below
+        rho = np.zeros(Phi.shape[:-1], dtype=complex)
+        bad = np.ones(Phi.shape[0], dtype=bool)
+    for i in np.flatnonzero(bad):  # rare: QZ per point, (Phi R) u = rho (R Phi) u
+        rho[i] = (scipy.linalg.eigvals(PhiR[i], R[:, None] * Phi[i])
+                  if np.all(np.isfinite(Phi[i])) else np.nan)  # overflowed: reported by caller
+    return rho
 
 
 def monodromy_exponents(system: BeamActionSystem, Omega: np.ndarray, gamma: np.ndarray,
@@ -720,9 +761,12 @@ def monodromy_exponents(system: BeamActionSystem, Omega: np.ndarray, gamma: np.n
         steps = np.minimum(_auto_steps(mu, Bt, Ob, gam, step_phase), max_steps)
     with np.errstate(over="ignore", invalid="ignore"):  # overflow is reported below
         rho = _multipliers(mu, Bt, Ob, gam, steps, chunk)
-    if not np.all(np.isfinite(rho)):  # growth beyond the floating-point range
-        raise ValueError("Omega, gamma: the period map overflowed (a steady system far past "
-                         "divergence or flutter, or a growth rate beyond the float range)")
+    bad = ~np.all(np.isfinite(rho), axis=-1)
+    if np.any(bad):  # growth beyond the floating-point range
+        raise PeriodMapOverflowError(
+            f"Omega = {float(Ob[bad][0] * system.omega_1):.6g} rad/s, gamma = "
+            f"{float(gam[bad][0]):.6g}: the period map overflowed or is singular to working "
+            "precision (a growth over one thrust period beyond ~1e15)")
     return np.log(rho) / (2j * np.pi)
 
 
@@ -779,12 +823,11 @@ def _auto_steps(mu: np.ndarray, Bt: np.ndarray, Ob: np.ndarray, gam: np.ndarray,
 def _multipliers(mu, Bt, Ob, gam, steps, chunk) -> np.ndarray:
     n = mu.size
     rho = np.empty((Ob.size, 2 * n), dtype=complex)
-    for ns in np.unique(steps):  # groups of equal step count, each batched
-        where = np.nonzero(steps == ns)[0]
-        for start in range(0, where.size, chunk):
-            sel = where[start:start + chunk]
-            Phi = _monodromy_half(mu, Bt, Ob[sel], gam[sel], int(ns))
-            rho[sel] = _multipliers_from_half(Phi)
+    order = np.argsort(-steps, kind="stable")  # descending counts: batches of similar cost
+    for start in range(0, order.size, chunk):
+        sel = order[start:start + chunk]
+        Phi = _monodromy_half(mu, Bt, Ob[sel], gam[sel], steps[sel])
+        rho[sel] = _multipliers_from_half(Phi)
     return rho
 
 
@@ -1088,6 +1131,11 @@ def _match_distance(a: np.ndarray, b: np.ndarray) -> np.ndarray:
 #: Harmonics of the harmonic balance of the low-frequency pitch tongues: K = 4, 8, .. up to
 #: this, until two successive K give the same edges to :data:`BAND_RTOL`.
 TONGUE_MAX_HARMONICS = 24
+#: Where round-off keeps two successive K from agreeing to :data:`BAND_RTOL` (a tongue far
+#: below the beam modes, Omega_bar ~ 1e-3, with heavy modal damping: the quadratic
+#: eigenproblem spans 1e3 in frequency, and its pitch roots wander by ~1e-8), the edges of the
+#: two successive K that agree best are used when they agree to this (relative to the centre).
+TONGUE_RTOL_FLOOR = 1e-6
 #: Relative tolerance of the critical gamma of a damped pitch tongue (bisection).
 TONGUE_GAMMA_RTOL = 1e-6
 #: Hill harmonics (s = -S..S) of the growth rate inside a pitch tongue (checked against S + 4
@@ -1111,11 +1159,13 @@ def _tongue_edges(A, C, B, *, period: str, centre: float, window: tuple[float, f
     elastic resonances of high order, narrower than the tolerance) are dropped; the tongue's
     edges are the nearest remaining roots below and above the centre, tracked as the
     harmonics K are raised (Bolotin 1964, sec. 4-5) until two successive K agree to
-    rtol * centre.  With ``harmonics`` = (K,) one truncation is used as it is.  Returns the
-    edges (None: no tongue) and the smaller K of the two that agree (as accurate, cheaper).
+    rtol * centre (or, where round-off stops that, to :data:`TONGUE_RTOL_FLOOR` at best).
+    With ``harmonics`` = (K,) one truncation is used as it is.  Returns the edges (None: no
+    tongue) and the smaller K of the two that agree (as accurate, cheaper).
     """
     n = A.shape[0]
     prev = None
+    best = (np.inf, None, 0)  # the closest agreement of two successive K (round-off floor)
     Ks = tuple(range(4, TONGUE_MAX_HARMONICS + 1, 4)) if harmonics is None else harmonics
     for K in Ks:
         r = periodic_boundaries(np.eye(n), C, A, B, period=period, n_harmonics=K,
@@ -1141,7 +1191,14 @@ def _tongue_edges(A, C, B, *, period: str, centre: float, window: tuple[float, f
             return (cur if cur[1] - cur[0] > rtol * centre else None), K - 4
         if cur is None and prev is None and K >= 8:
             return None, K  # no tongue at two successive K: below round-off or damped out
+        if cur is not None and prev is not None:
+            diff = max(abs(cur[0] - prev[0]), abs(cur[1] - prev[1]))
+            if diff < best[0]:
+                best = (diff, cur, K - 4)
         prev = cur
+    if best[0] <= TONGUE_RTOL_FLOOR * centre:  # converged to round-off, not to rtol
+        cur = best[1]
+        return (cur if cur[1] - cur[0] > TONGUE_RTOL_FLOOR * centre else None), best[2]
     raise ValueError(f"pitch tongue near Omega_bar = {centre!r}: its edges did not converge "
                      f"with {TONGUE_MAX_HARMONICS} harmonics")
 
@@ -1158,21 +1215,10 @@ def _growth_max(A, C, B, lo: float, hi: float) -> tuple[float, float]:
     g = _hill_growth(A, C, B, x, S)
     i = int(np.argmax(g))
     a, b = (x[i - 1] if i > 0 else lo), (x[i + 1] if i < x.size - 1 else hi)
-    phi = 0.5 * (np.sqrt(5.0) - 1.0)
-    c, d = b - phi * (b - a), a + phi * (b - a)
-    gc, gd = _hill_growth(A, C, B, np.array([c, d]), S)
-    for _ in range(60):  # golden section (Press et al. 2007, sec. 10.2) to 1e-5 of the band:
-        if b - a <= 1e-5 * (hi - lo):  # the maximum is flat, the growth then exact to ~1e-10
-            break
-        if gc >= gd:
-            b, d, gd = d, c, gc
-            c = b - phi * (b - a)
-            gc = _hill_growth(A, C, B, np.array([c]), S)[0]
-        else:
-            a, c, gc = c, d, gd
-            d = a + phi * (b - a)
-            gd = _hill_growth(A, C, B, np.array([d]), S)[0]
-    x0 = c if gc >= gd else d
+    # golden section (Press et al. 2007, sec. 10.2) to 1e-5 of the band: the maximum is flat,
+    # the growth then exact to ~1e-10
+    (x0,), _ = golden_section_max(lambda om, idx: _hill_growth(A, C, B, om, S), [a], [b],
+                                  xtol=1e-5 * (hi - lo), max_iter=60)
     g0 = _hill_growth(A, C, B, np.array([x0]), S + 4)[0]  # the converged value at the maximum
     return float(max(g0, 0.0)), float(x0)
 

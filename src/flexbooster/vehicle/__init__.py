@@ -1,6 +1,6 @@
 """Dynamic stability of the whole vehicle (shell of revolution) under the pulsating thrust.
 
-:func:`vehicle_regions` builds, per circumferential harmonic k >= 2, the periodic modal system
+:func:`vehicle_regions` builds, per circumferential harmonic k >= 1, the periodic modal system
 q'' + C q' + (A + B cos Omega t) q = 0 of the pre-stressed shell of revolution under
 T(t) = F0 (1 - gamma cos Omega t) and returns its parametric instability regions in Omega
 (:mod:`.regions`), and for k = 0 the axial modes forced directly by the pulsation
@@ -10,20 +10,30 @@ T(t) = F0 (1 - gamma cos Omega t) and returns its parametric instability regions
 """
 
 from .axial import AxialResonance, ForcedAxial, forced_axial
-from .bending import BendingSystem, bending_regions, bending_system, follower_flutter_thrust
+from .bending import (
+    BendingSystem,
+    bending_harmonic,
+    bending_regions,
+    bending_system,
+    follower_flutter_thrust,
+)
 from .regions import (
+    HARMONIC_BUILD_SECONDS,
     HarmonicSystem,
     RegionCurve,
     RegionMode,
     VehicleRegion,
     VehicleRegions,
     harmonic_system,
+    search_seconds,
     vehicle_regions,
 )
 
 __all__ = [
+    "HARMONIC_BUILD_SECONDS",
     "AxialResonance",
     "BendingSystem",
+    "bending_harmonic",
     "ForcedAxial",
     "HarmonicSystem",
     "RegionCurve",
@@ -35,5 +45,6 @@ __all__ = [
     "follower_flutter_thrust",
     "forced_axial",
     "harmonic_system",
+    "search_seconds",
     "vehicle_regions",
 ]

@@ -44,13 +44,14 @@ from ..checks import count, nonnegative, positive
 from ..shell_of_revolution import DEFAULT_ORDER, Vehicle, mesh_vehicle, system_matrices
 from ..shell_of_revolution import vehicle_modes as _vehicle_modes
 from ..shell_of_revolution.assembly import dof_map
-from .regions import RegionMode, VehicleRegion
+from .regions import HarmonicSystem, _floquet_options, _harmonic_regions, _ModalMatrices
 
-__all__ = ["BendingSystem", "bending_system", "bending_regions", "follower_flutter_thrust"]
+__all__ = ["BendingSystem", "bending_system", "bending_harmonic", "bending_regions",
+           "follower_flutter_thrust"]
 
 
 @dataclass(frozen=True)
-class BendingSystem:
+class BendingSystem(_ModalMatrices):
     """Periodic modal system of k = 1: q'' + C q' + (A + gamma B1 cos Omega t) q = 0.
 
     Attributes
@@ -85,24 +86,6 @@ class BendingSystem:
     damping: np.ndarray
     stiffness: np.ndarray
     excitation: np.ndarray
-
-    def matrices(self, gamma: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        """(M, C, A, B = gamma B1) for pulsation amplitude gamma.
-
-        Parameters
-        ----------
-        gamma : float
-            Pulsation amplitude (dimensionless), 0 <= gamma < 1.
-
-        Returns
-        -------
-        tuple of ndarray
-            M (dimensionless), C (1/s), A (1/s^2), B (1/s^2).
-        """
-        gamma = nonnegative("gamma", gamma)
-        if gamma >= 1.0:
-            raise ValueError(f"gamma = {gamma!r}: must be in [0, 1)")
-        return self.mass, self.damping, self.stiffness, gamma * self.excitation
 
     def to_dict(self) -> dict:
         """JSON-ready mapping."""
@@ -307,10 +290,11 @@ def bending_regions(
     Returns
     -------
     tuple of VehicleRegion
-        k = 1 regions sorted by omega_lo; ``modes`` carry the basis mode dominating each steady
-        mode (type "rigid-pitch" for the rigid rotation), ``omega_loaded`` the steady
-        frequency; ``critical_gamma`` from :func:`flexbooster.floquet.critical_amplitude`
-        with damping (0 without).
+        k = 1 regions sorted by omega_lo (those of ``vehicle_regions(..., k_min=1)`` for
+        k = 1: one code path, :func:`bending_harmonic`); ``modes`` carry the basis mode
+        dominating each steady mode (type "rigid-pitch" for the rigid rotation),
+        ``omega_loaded`` the steady frequency; ``critical_gamma`` from
+        :func:`flexbooster.floquet.critical_amplitude` with damping (0 without).
 
     References
     ----------
@@ -320,45 +304,79 @@ def bending_regions(
     if gamma >= 1.0:
         raise ValueError(f"gamma = {gamma!r}: must be in [0, 1)")
     n_modes = count("n_modes", n_modes, 3, 2000)
+    omega_min, omega_max = positive("omega_min", omega_min), positive("omega_max", omega_max)
+    if omega_min >= omega_max:
+        raise ValueError(f"omega_min = {omega_min!r}: must be < omega_max = {omega_max!r}")
+    h = bending_harmonic(vehicle, F0=F0, n_modes=n_modes, damping_ratio=damping_ratio,
+                         gimbal_gain=gimbal_gain, supported_forward_end=supported_forward_end,
+                         elements_per_segment=elements_per_segment, order=order)
+    opts = dict(options)
+    known = {"rtol", "step_phase", "max_order", "damping_margin"}
+    if known >= set(opts):  # the options of vehicle_regions: validated the same way
+        opts = _floquet_options(opts.get("rtol", 1e-9), opts.get("step_phase", 0.12),
+                                opts.get("max_order"),
+                                opts.get("damping_margin", floquet.DAMPING_MARGIN))
+    rows, _, _ = _harmonic_regions(h, gamma, omega_min, omega_max, opts)
+    return tuple(sorted(rows, key=lambda r: r.omega_lo))
+
+
+def bending_harmonic(
+    vehicle: Vehicle, *, F0: float, n_modes: int = 12, damping_ratio: float = 0.01,
+    gimbal_gain: float = 0.0, supported_forward_end: bool = False,
+    elements_per_segment: int | tuple | None = None, order: int = DEFAULT_ORDER,
+) -> HarmonicSystem:
+    """The k = 1 system of :func:`bending_system` as the map's harmonic k = 1.
+
+    The rigid translation of a free-free vehicle is dropped (its column of A and B is zero:
+    it is driven but does not act back); the rest is kept in the basis coordinates (see the
+    Notes of :class:`~flexbooster.vehicle.regions.HarmonicSystem`), each steady mode (an
+    eigenvector of A, ascending real part of the eigenvalue, the order of the modes of
+    :func:`flexbooster.floquet.instability_regions`) labelled by the basis mode that dominates
+    it.
+
+    Parameters
+    ----------
+    vehicle, F0, damping_ratio, gimbal_gain, supported_forward_end, elements_per_segment, order
+        As :func:`bending_system` (F0 in N, > 0; the ratio and K dimensionless).
+    n_modes : int
+        Basis modes of k = 1, rigid ones included (dimensionless), 3..2000.
+
+    Returns
+    -------
+    HarmonicSystem
+        With k = 1: ``omega_unloaded`` of the kept basis modes, ``omega_loaded`` the steady
+        frequencies sqrt(max(Re mu, 0)) of A (rad/s).
+
+    References
+    ----------
+    Beal (1965), eq. 4; Bolotin (1963), ch. 1; Bolotin (1964), sec. 8.
+    """
+    n_modes = count("n_modes", n_modes, 3, 2000)
     bs = bending_system(vehicle, F0=F0, n_modes=n_modes, damping_ratio=damping_ratio,
                         gimbal_gain=gimbal_gain, supported_forward_end=supported_forward_end,
                         elements_per_segment=elements_per_segment, order=order)
     keep = np.ones(n_modes, dtype=bool)
     if bs.n_rigid == 2:
         keep[1] = False  # the rigid translation: zero column, it does not act back
-    M, C, A, B = (x[np.ix_(keep, keep)] for x in bs.matrices(gamma))
-    Cf = C if bs.damping_ratio > 0.0 else None
-    found = floquet.instability_regions(M, Cf, A, B, omega_min, omega_max, **options)
-    crit = {}
-    if Cf is not None and any(r.kind != "steady" for r in found):
-        B1 = bs.excitation[np.ix_(keep, keep)]
-        crit = {(c.kind, c.modes, c.order): c.gamma_cr for c in floquet.critical_amplitude(
-            M, Cf, A, B1, gamma_max=gamma, omega_min=omega_min, omega_max=omega_max,
-            regions=found, **options)}
-    # label each steady mode by the basis vector that dominates it
+    M, C, A, B1 = (x[np.ix_(keep, keep)] for x in (bs.mass, bs.damping, bs.stiffness,
+                                                     bs.excitation))
+    # steady modes: eigenvectors of A, ascending real part (the toolkit's mode order)
     mu, X = np.linalg.eig(A)
     idx = np.lexsort((mu.imag, mu.real))
     mu, X = mu[idx], X[:, idx]
     basis = np.nonzero(keep)[0]
-    dom = basis[np.argmax(np.abs(X), axis=0)]
+    pos = np.argmax(np.abs(X), axis=0)  # the basis vector dominating each steady mode
+    dom = basis[pos]
     labels = _vehicle_modes(vehicle, k_min=1, k_max=1, n_modes=max(1, n_modes - bs.n_rigid),
                             supported_forward_end=supported_forward_end,
                             elements_per_segment=elements_per_segment, order=order)
-
-    def mode(i):
-        j = int(dom[i])
-        rigid = j < bs.n_rigid
-        e = j - bs.n_rigid
-        return RegionMode(k=1, index=int(i), order=0 if rigid else int(labels.order[e]),
-                          type="rigid-pitch" if rigid else str(labels.type[e]),
-                          omega_loaded=float(np.sqrt(max(mu[i].real, 0.0))),
-                          share=float(np.abs(X[j == basis, i][0]) ** 2 /
-                                      np.sum(np.abs(X[:, i]) ** 2)))
-
-    out = [VehicleRegion(k=1, kind=r.kind, order=r.order, modes=tuple(mode(i) for i in r.modes),
-                         omega_lo=r.omega_lo, omega_hi=r.omega_hi,
-                         growth_rate_max=r.growth_rate_max, omega_at_max=r.omega_at_max,
-                         omega_center=r.omega_center,
-                         critical_gamma=float(crit.get((r.kind, r.modes, r.order), 0.0)),
-                         clipped=r.clipped) for r in found]
-    return tuple(sorted(out, key=lambda r: r.omega_lo))
+    rigid = dom < bs.n_rigid
+    e = np.where(rigid, 0, dom - bs.n_rigid)
+    share = np.abs(X[pos, np.arange(pos.size)]) ** 2 / np.sum(np.abs(X) ** 2, axis=0)
+    return HarmonicSystem(
+        k=1, F0=bs.F0, damping_ratio=bs.damping_ratio, omega_unloaded=bs.omega_unloaded[keep],
+        omega_loaded=np.sqrt(np.maximum(mu.real, 0.0)), basis=np.real(X), mass=M, damping=C,
+        stiffness=A, excitation=B1,
+        mode_order=np.where(rigid, 0, labels.order[e]).astype(int),
+        mode_type=np.where(rigid, "rigid-pitch", labels.type[e].astype(str)).astype(str),
+        mode_share=share)

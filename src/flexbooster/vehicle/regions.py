@@ -53,10 +53,68 @@ __all__ = [
     "VehicleRegions",
     "harmonic_system",
     "vehicle_regions",
+    "search_seconds",
+    "HARMONIC_BUILD_SECONDS",
 ]
 
 #: Largest harmonic accepted (as :mod:`flexbooster.shell_of_revolution`).
 K_MAX = 200
+
+# Cost model of one harmonic's region search (s, one core, the shared 2-core machine).
+# Measured on the default case's vehicle (memo cylinders, 263 FE DOFs), k = 3, gamma = 0.05,
+# undamped, Omega 5..2000 rad/s: n = 4 modes 0.22 s, 8: 0.95 s, 12: 2.57 s, 20: 19.2 s
+# (-> 0.15 + 1.2e-4 n^4: 0.18, 0.64, 2.6, 19.4 s); k = 8, n = 12: 3.2 s; n = 20 over
+# Omega 5..500: 10.7 s, 100..2000: 7.9 s (-> the log-range factor: 14.7, 9.6 s).  The time
+# is in floquet's Lawson monodromies (n^3 per step) over ~n^2 candidates.
+_SEARCH_FIXED = 0.15
+_SEARCH_PER_N4 = 1.2e-4
+_SEARCH_LOG_RANGE = float(np.log(400.0))
+#: Damped but not certified: the damped search and the critical gamma (brentq over searches)
+#: of every surviving region; measured 9.1x the undamped search (k = 1 tube of the tests,
+#: 5 modes, zeta = 0.002: 19.0 s against 2.1 s).
+_DAMPED_SEARCH_FACTOR = 10.0
+#: With the chart's boundary curves (the pipeline: search, probe at the chart's top gamma,
+#: search with 4 levels): measured 4.9x (default vehicle k = 1..3, 8 modes, undamped).
+_BOUNDARY_SEARCH_FACTOR = 5.0
+#: Building one harmonic (FE modal system, labels, certificate) on the default case's mesh:
+#: k = 1..10, 20 modes, damped and certified, 0.48 s in all (s per harmonic).
+HARMONIC_BUILD_SECONDS = 0.05
+
+
+def search_seconds(n_modes: int, omega_min: float, omega_max: float, *, damped: bool,
+                   boundaries: bool = False) -> float:
+    """Estimated time of the region search of one harmonic that is not certified stable.
+
+    Parameters
+    ----------
+    n_modes : int
+        Modes of the harmonic's system (dimensionless), >= 1.
+    omega_min, omega_max : float
+        Omega range (rad/s), 0 < omega_min < omega_max.
+    damped : bool
+        Damping > 0 (the damped search and the critical gamma of each region).
+    boundaries : bool
+        The pipeline's chart curves are traced as well.
+
+    Returns
+    -------
+    float
+        Seconds on one core: (0.15 + 1.2e-4 n^4) ln(omega_max / omega_min) / ln(400), x 10
+        damped, x 5 with boundaries (calibration in the comments above; good to a factor of
+        about 2 on the vehicles measured).
+
+    References
+    ----------
+    Measured, see the module's comments; docs/theory/vehicle-regions.md, section 3d.
+    """
+    n = count("n_modes", n_modes, 1, 100_000)
+    lo, hi = positive("omega_min", omega_min), positive("omega_max", omega_max)
+    if lo >= hi:
+        raise ValueError(f"omega_min = {omega_min!r}: must be < omega_max = {omega_max!r}")
+    t = (_SEARCH_FIXED + _SEARCH_PER_N4 * float(n) ** 4) * max(
+        np.log(hi / lo) / _SEARCH_LOG_RANGE, 0.05)
+    return float(t * (_DAMPED_SEARCH_FACTOR if damped else 1.0)
+                 * (_BOUNDARY_SEARCH_FACTOR if boundaries else 1.0))
 
 
 @dataclass(frozen=True)
@@ -94,8 +152,35 @@ class RegionMode:
                 "share": float(self.share)}
 
 
+class _ModalMatrices:
+    """The (M, C, A, B) of a periodic modal system with fields mass, damping, stiffness and
+    excitation (:class:`HarmonicSystem` and :class:`.bending.BendingSystem`)."""
+
+    __slots__ = ()
+
+    def matrices(self, gamma: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """(M, C, A, B) of the periodic system for pulsation amplitude gamma.
+
+        Parameters
+        ----------
+        gamma : float
+            Pulsation amplitude (dimensionless), 0 <= gamma < 1.
+
+        Returns
+        -------
+        tuple of ndarray
+            M (dimensionless), C (1/s), A (1/s^2), B = gamma B1 (1/s^2).
+
+        References
+        ----------
+        Bolotin (1964), sec. 8: B = gamma B1 for T = F0 (1 - gamma cos Omega t).
+        """
+        gamma = _gamma(gamma)
+        return self.mass, self.damping, self.stiffness, gamma * self.excitation
+
+
 @dataclass(frozen=True)
-class HarmonicSystem:
+class HarmonicSystem(_ModalMatrices):
     """Periodic modal system of one harmonic: M q'' + C q' + (A + gamma B1 cos Omega t) q = 0.
 
     Attributes
@@ -125,9 +210,19 @@ class HarmonicSystem:
     mode_share : ndarray, shape (n,)
         Its share V_ij^2 (dimensionless).
 
+    Notes
+    -----
+    k = 1 (:func:`.bending.bending_harmonic`: bending, rigid pitch, gimbaled follower thrust)
+    is written in the unloaded basis modes instead (the rigid translation dropped): A =
+    diag(omega^2) + F0 [K_g - y (beta + K psi)^T] is not diagonal and not symmetric, C =
+    2 zeta diag(omega_unloaded) (0 on the rigid pitch), ``omega_loaded`` are the square roots
+    of the real parts of the eigenvalues of A (ascending; the steady frequencies), ``basis``
+    the real parts of its unit eigenvectors, and the labels those of the basis mode that
+    dominates each steady mode (type "rigid-pitch" for the rigid rotation).
+
     References
     ----------
-    Bolotin (1964), sec. 8.
+    Bolotin (1964), sec. 8; Beal (1965), eq. 4 (k = 1).
     """
 
     k: int
@@ -143,22 +238,6 @@ class HarmonicSystem:
     mode_order: np.ndarray
     mode_type: np.ndarray
     mode_share: np.ndarray
-
-    def matrices(self, gamma: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        """(M, C, A, B) of the periodic system for pulsation amplitude gamma.
-
-        Parameters
-        ----------
-        gamma : float
-            Pulsation amplitude (dimensionless), 0 <= gamma < 1.
-
-        Returns
-        -------
-        tuple of ndarray
-            M (dimensionless), C (1/s), A (1/s^2), B = gamma B1 (1/s^2).
-        """
-        gamma = _gamma(gamma)
-        return self.mass, self.damping, self.stiffness, gamma * self.excitation
 
     def mode(self, index: int) -> RegionMode:
         """Label of loaded mode ``index`` (see :class:`RegionMode`).
@@ -326,6 +405,12 @@ class VehicleRegions:
     chart_gamma_max : float or None
         Largest gamma of the (Omega, gamma) chart the pipeline asked for (dimensionless); None
         when not set.
+    gimbal_gain : float
+        Gimbal gain K of the k = 1 harmonic (dimensionless; unused without k = 1).
+    skipped : tuple of str
+        Harmonics not searched because their estimated search time would pass the budget
+        (``max_seconds`` of :func:`vehicle_regions`), one line each; their regions are
+        unknown.
     """
 
     regions: tuple
@@ -340,6 +425,8 @@ class VehicleRegions:
     forced_axial: ForcedAxial | None = None
     certificates: tuple = ()
     chart_gamma_max: float | None = None
+    gimbal_gain: float = 0.0
+    skipped: tuple = ()
 
     def harmonic(self, k: int) -> HarmonicSystem:
         """The system of harmonic k.
@@ -377,7 +464,9 @@ class VehicleRegions:
                 "forced_axial": (None if self.forced_axial is None
                                  else self.forced_axial.to_dict()),
                 "certificates": [dict(c.to_dict(), k=int(h.k)) for h, c in
-                                 zip(self.harmonics, self.certificates, strict=True)]}
+                                 zip(self.harmonics, self.certificates, strict=True)],
+                "gimbal_gain": float(self.gimbal_gain),
+                "skipped": [str(w) for w in self.skipped]}
 
 
 # ----------------------------------------------------------------------------- checks
@@ -495,6 +584,53 @@ def _floquet_options(rtol, step_phase, max_order, damping_margin) -> dict:
     return opts
 
 
+def _harmonic_regions(h: HarmonicSystem, gamma: float, lo: float, hi: float, opts: dict,
+                      budget: tuple | None = None) -> tuple[list, object, str | None]:
+    """The regions of one harmonic (VehicleRegion rows) and its stability certificate.
+
+    The certificate (Desoer & Vidyasagar sec. 2.8) is of the system at gamma, none without
+    damping; the critical gamma of each region that is not "steady" is
+    :func:`flexbooster.floquet.critical_amplitude` (Bolotin sec. 6: the amplitude where the
+    damped region's edges meet), 0 without damping.  ``budget`` = (max_seconds, seconds
+    estimated so far, boundaries): a harmonic that the certificate does not cover and whose
+    search (:func:`search_seconds`) would take the estimate past max_seconds is not searched:
+    no rows, and the reason (naming max_seconds and the drivers) as a third item; else None.
+    """
+    M, C, A, B = h.matrices(gamma)
+    Cf = C if h.damping_ratio > 0.0 else None
+    cert = floquet.stability_certificate(M, Cf, A, B)  # none without damping
+    if budget is not None and not cert.certified and gamma > 0.0:
+        max_s, spent, curves = budget
+        est = search_seconds(A.shape[0], lo, hi, damped=Cf is not None, boundaries=curves)
+        if spent + est > max_s:
+            return [], cert, (
+                f"max_seconds = {max_s:g}: harmonic k = {h.k} not searched"
+                + (" for the chart's boundary curves" if curves else "")
+                + f", its region search is estimated at {est:.3g} s ({A.shape[0]} modes, "
+                f"Omega {lo:.6g}..{hi:.6g} rad/s, damping ratio {h.damping_ratio:g}"
+                + ("" if Cf is None else ", not certified stable by the damping")
+                + f"; {spent:.3g} s before it): reduce vehicle.n_modes or the Omega range, "
+                "raise vehicle.damping_ratio, or raise the budget")
+    found = floquet.instability_regions(M, Cf, A, B, lo, hi, **opts)
+    crit = {}
+    if Cf is not None and any(r.kind != "steady" for r in found):  # Bolotin sec. 6
+        crit = {(c.kind, c.modes, c.order): c.gamma_cr for c in floquet.critical_amplitude(
+            M, Cf, A, h.excitation, gamma_max=gamma, omega_min=lo, omega_max=hi,
+            regions=found, **opts)}
+    rows = []
+    for r in found:
+        key = (r.kind, r.modes, r.order)
+        if Cf is not None and r.kind != "steady" and key not in crit:
+            raise ValueError(f"gamma = {gamma!r}: k = {h.k}, region {key} found but its "
+                             "critical amplitude was not (inconsistent searches)")
+        rows.append(VehicleRegion(
+            k=h.k, kind=r.kind, order=r.order, modes=tuple(h.mode(i) for i in r.modes),
+            omega_lo=r.omega_lo, omega_hi=r.omega_hi, growth_rate_max=r.growth_rate_max,
+            omega_at_max=r.omega_at_max, omega_center=r.omega_center,
+            critical_gamma=float(crit.get(key, 0.0)), clipped=r.clipped))
+    return rows, cert, None
+
+
 def vehicle_regions(
     vehicle: Vehicle, *, F0: float, gamma: float, omega_min: float, omega_max: float,
     k_max: int, k_min: int = 2, n_modes: int = 20, damping_ratio: float = 0.01,
@@ -502,7 +638,7 @@ def vehicle_regions(
     order: int = DEFAULT_ORDER, boundaries: bool = False, gamma_max: float = 0.5,
     n_gamma: int = 11, rtol: float = 1e-9, step_phase: float = 0.12,
     max_order: int | None = None, damping_margin: float | None = floquet.DAMPING_MARGIN,
-    axial: bool = True,
+    axial: bool = True, gimbal_gain: float = 0.0, max_seconds: float | None = None,
 ) -> VehicleRegions:
     """Parametric instability regions of every harmonic k_min..k_max in [omega_min, omega_max].
 
@@ -517,9 +653,13 @@ def vehicle_regions(
     omega_min, omega_max : float
         Range of the pulsation frequency Omega (rad/s), 0 < omega_min < omega_max.
     k_max, k_min : int
-        Harmonics (dimensionless), 2 <= k_min <= k_max <= 200.
+        Harmonics (dimensionless), 1 <= k_min <= k_max <= 200; k = 1 is the bending
+        harmonic with the rigid pitch, the gimbal control and the follower thrust
+        (:func:`.bending.bending_harmonic`, its regions those of
+        :func:`.bending.bending_regions`).
     n_modes : int
-        Unloaded modes per harmonic in the modal basis (dimensionless), 1..2000.
+        Unloaded modes per harmonic in the modal basis (dimensionless), 1..2000 (for k = 1
+        at least 3, rigid modes included).
     damping_ratio : float
         Modal damping ratio of the loaded modes (dimensionless), [0, 1); default 0.01.
     supported_forward_end : bool
@@ -546,6 +686,14 @@ def vehicle_regions(
     axial : bool
         Also compute the k = 0 forced axial resonances (:func:`.axial.forced_axial`, same
         n_modes, damping and mesh) into ``forced_axial``.
+    gimbal_gain : float
+        K of the gimbal control (dimensionless), >= 0: used by k = 1 only (the thrust turned
+        by K psi, psi the rigid pitch angle; Tech Memo 104 eq. 2.2-2).
+    max_seconds : float or None
+        Budget of the searches (s), > 0: before each harmonic that the stability certificate
+        does not cover, its search is estimated (:func:`search_seconds`); a harmonic that
+        would take the estimate past the budget is not searched (no regions, no curves) and
+        named in ``skipped`` with the estimate and its drivers.  None: no budget.
 
     Returns
     -------
@@ -558,8 +706,11 @@ def vehicle_regions(
 
     References
     ----------
-    Bolotin (1964), ch. 1-2, sec. 6, sec. 8; Hsu (1963); ``docs/theory/floquet.md``.
+    Bolotin (1964), ch. 1-2, sec. 6, sec. 8; Hsu (1963); Beal (1965) (k = 1);
+    ``docs/theory/floquet.md``.
     """
+    from .bending import bending_harmonic  # k = 1 (bending.py imports this module)
+
     vehicle = _vehicle(vehicle)
     F0 = positive("F0", F0)
     gamma = _gamma(gamma)
@@ -567,9 +718,12 @@ def vehicle_regions(
     lo, hi = positive("omega_min", omega_min), positive("omega_max", omega_max)
     if lo >= hi:
         raise ValueError(f"omega_min = {omega_min!r}: must be < omega_max = {omega_max!r}")
-    k_max = count("k_max", k_max, 2, K_MAX)
-    k_min = count("k_min", k_min, 2, k_max)
+    k_max = count("k_max", k_max, 1, K_MAX)
+    k_min = count("k_min", k_min, 1, k_max)
     n_modes = count("n_modes", n_modes, 1, 2000)
+    gimbal = nonnegative("gimbal_gain", gimbal_gain)
+    if max_seconds is not None:
+        max_seconds = positive("max_seconds", max_seconds)
     if not isinstance(boundaries, bool | np.bool_):
         raise ValueError(f"boundaries = {boundaries!r}: must be a bool")
     if boundaries:
@@ -580,31 +734,31 @@ def vehicle_regions(
     opts = _floquet_options(rtol, step_phase, max_order, damping_margin)
     if not isinstance(axial, bool | np.bool_):
         raise ValueError(f"axial = {axial!r}: must be a bool")
-    harmonics, regions, curves, certs = [], [], [], []
+    harmonics, regions, curves, certs, skipped = [], [], [], [], []
+    searched = 0.0
+    mesh = {"supported_forward_end": supported_forward_end,
+            "elements_per_segment": elements_per_segment, "order": order}
     for k in range(k_min, k_max + 1):  # a handful of harmonics
-        h = harmonic_system(vehicle, k, F0=F0, n_modes=n_modes, damping_ratio=zeta,
-                            supported_forward_end=supported_forward_end,
-                            elements_per_segment=elements_per_segment, order=order)
+        if k == 1:  # bending + rigid pitch + gimbaled follower thrust (Beal 1965, eq. 4)
+            h = bending_harmonic(vehicle, F0=F0, n_modes=max(n_modes, 3), damping_ratio=zeta,
+                                 gimbal_gain=gimbal, **mesh)
+        else:
+            h = harmonic_system(vehicle, k, F0=F0, n_modes=n_modes, damping_ratio=zeta,
+                                **mesh)
         harmonics.append(h)
-        M, C, A, B = h.matrices(gamma)
+        spent = HARMONIC_BUILD_SECONDS * len(harmonics) + searched
+        rows, cert, why = _harmonic_regions(h, gamma, lo, hi, opts, budget=None if max_seconds
+                                            is None else (max_seconds, spent, bool(boundaries)))
+        regions += rows
+        certs.append(cert)
+        if why is not None:
+            skipped.append(why)
+            continue
+        if not cert.certified and gamma > 0.0:  # the estimate of what was searched
+            searched += search_seconds(h.omega_loaded.size, lo, hi, damped=zeta > 0.0,
+                                       boundaries=bool(boundaries))
+        M, C, A, _ = h.matrices(gamma)
         Cf = C if zeta > 0.0 else None
-        certs.append(floquet.stability_certificate(M, Cf, A, B))  # none without damping
-        found = floquet.instability_regions(M, Cf, A, B, lo, hi, **opts)
-        crit = {}
-        if found and zeta > 0.0:  # Bolotin sec. 6: the amplitude where the edges meet
-            crit = {(c.kind, c.modes, c.order): c.gamma_cr for c in floquet.critical_amplitude(
-                M, Cf, A, h.excitation, gamma_max=gamma, omega_min=lo, omega_max=hi,
-                regions=found, **opts)}
-        for r in found:
-            key = (r.kind, r.modes, r.order)
-            if zeta > 0.0 and key not in crit:
-                raise ValueError(f"gamma = {gamma!r}: k = {k}, region {key} found but its "
-                                 "critical amplitude was not (inconsistent searches)")
-            regions.append(VehicleRegion(
-                k=k, kind=r.kind, order=r.order, modes=tuple(h.mode(i) for i in r.modes),
-                omega_lo=r.omega_lo, omega_hi=r.omega_hi, growth_rate_max=r.growth_rate_max,
-                omega_at_max=r.omega_at_max, omega_center=r.omega_center,
-                critical_gamma=float(crit.get(key, 0.0)), clipped=r.clipped))
         if boundaries:
             for c in floquet.region_boundaries(M, Cf, A, h.excitation, gamma_max=gmax,
                                                omega_min=lo, omega_max=hi, n_gamma=n_gamma,
@@ -622,4 +776,5 @@ def vehicle_regions(
                           curves=tuple(curves), F0=F0, gamma=gamma, damping_ratio=zeta,
                           omega_min=lo, omega_max=hi,
                           supported_forward_end=bool(supported_forward_end),
-                          forced_axial=fa, certificates=tuple(certs))
+                          forced_axial=fa, certificates=tuple(certs), gimbal_gain=gimbal,
+                          skipped=tuple(skipped))

@@ -64,7 +64,7 @@ def plot_band_chart(chart: BandChart, ax: Axes | None = None, *,
     ax.set_xlabel("thrust frequency Omega (Hz)")
     ax.set_ylabel("gamma (pulsation amplitude)")
     ax.set_title(chart.title)
-    from .danger import plain_log_ticks
+    from .labels import plain_log_ticks
 
     plain_log_ticks(ax.xaxis)
     if omega_1 is not None and omega_1 > 0:

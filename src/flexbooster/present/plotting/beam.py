@@ -6,6 +6,7 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
 from ...memo.charts import BeamModeShapes
+from .labels import subscript as _sub
 
 __all__ = ["mode_shape_plot"]
 
@@ -35,12 +36,12 @@ def mode_shape_plot(data: BeamModeShapes, ax: Axes | None = None) -> Figure:
     else:
         fig = ax.figure
     for n, (phi, lam) in enumerate(zip(data.phi, data.lambda_n, strict=True), start=1):
-        ax.plot(data.zeta, phi, label=rf"$\phi_{n}$, $\lambda$ = {lam:.4f}")
+        ax.plot(data.zeta, phi, label=f"{_sub('φ', n)}, λ = {lam:.4f}")
     ax.axvline(data.zeta_junction, color="0.5", ls="--", lw=0.8, label="junction")
     ax.axvline(data.zeta_cm, color="0.5", ls=":", lw=0.8, label="CM")
     ax.axhline(0.0, color="k", lw=0.5)
     ax.set_xlabel(r"$\zeta = \bar\xi - d_4/L + 1$ (aft edge 0, nose 2)")
-    ax.set_ylabel(r"$\phi_n$")
+    ax.set_ylabel("φₙ")
     ax.set_title("Free-free beam modes")
     ax.legend(fontsize=7)
     return fig

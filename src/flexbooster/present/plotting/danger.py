@@ -21,8 +21,9 @@ from matplotlib.colors import Normalize
 from matplotlib.figure import Figure
 
 from ...danger import DangerBand, DangerSummary
+from .labels import plain_log_ticks, power_log_ticks
 
-__all__ = ["danger_map", "band_tooltip", "add_svg_titles", "plain_log_ticks",
+__all__ = ["danger_map", "band_tooltip", "add_svg_titles",
            "SVG_TITLES_ATTRIBUTE"]
 
 #: Attribute of the figure holding {group id: tooltip text} for :func:`add_svg_titles`.
@@ -52,25 +53,6 @@ def band_tooltip(rank: int, band: DangerBand) -> str:
     return (f"#{rank}: Omega {band.Omega_lo:.6g}-{band.Omega_hi:.6g} rad/s "
             f"({lo_hz:.6g}-{hi_hz:.6g} Hz); {level}; {band.mode_text}; {band.cause_text}; "
             f"{where}")
-
-
-def plain_log_ticks(axis) -> None:
-    """Plain numbers ("0.5", "10", "200") on a logarithmic axis, no minor labels.
-
-    Parameters
-    ----------
-    axis : matplotlib.axis.Axis
-        E.g. ``ax.xaxis`` of an axes with a log scale.
-
-    Notes
-    -----
-    Easier to read than 10^n and faster to draw (no mathtext layout).
-    """
-    from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
-
-    axis.set_major_locator(LogLocator(base=10.0, subs=(1.0, 2.0, 5.0)))
-    axis.set_major_formatter(FuncFormatter(lambda v, _pos: f"{v:g}"))
-    axis.set_minor_formatter(NullFormatter())
 
 
 def danger_map(danger: DangerSummary, *, omega_1: float | None = None,
@@ -161,6 +143,7 @@ def danger_map(danger: DangerSummary, *, omega_1: float | None = None,
             line.set_gid(gid)
             dot.set_gid(gid + "-head")
             titles[gid] = titles[gid + "-head"] = band_tooltip(n + 1, b)
+        power_log_ticks(ax2.yaxis)
         ax2.set_ylabel("resonance severity (memo 7; log)", color="C2")
     if omega_1 is not None and omega_1 > 0:
         w1_hz = omega_1 * to_hz

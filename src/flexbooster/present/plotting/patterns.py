@@ -55,7 +55,7 @@ def nodal_pattern(data: NodalPattern, ax: Axes | None = None) -> Figure:
     ax.set_xlim(0.0, 2.0 * L)
     ax.set_ylim(0.0, 2.0 * np.pi * R)
     ax.set_xlabel(f"x from the aft edge of cylinder {data.cylinder} (m)")
-    ax.set_ylabel(r"arc $R\theta$ (m)")
+    ax.set_ylabel("arc Rθ (m)")
     title = f"cylinder {data.cylinder}: nodal pattern j = {data.j}, k = {data.k}"
     label = f" ({data.hz:.4g} Hz)" if data.hz > 0 else ""
     ax.set_title(title + label, fontsize=9)

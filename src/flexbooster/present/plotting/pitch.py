@@ -7,6 +7,7 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
 from ...memo.charts import InceStruttData
+from .labels import subscript as _sub
 
 __all__ = ["ince_strutt_chart", "beta_comparison_plot"]
 
@@ -61,7 +62,7 @@ def ince_strutt_chart(data: InceStruttData, ax: Axes | None = None, *,
         visible = (values > a_lo) & (values < a_hi)
         if np.any(visible):
             i = np.flatnonzero(visible)[-1]
-            ax.annotate(f"${name[0]}_{name[1:]}$", (q[i], values[i]), fontsize=8,
+            ax.annotate(_sub(name[0], name[1:]), (q[i], values[i]), fontsize=8,
                         xytext=(2, 2), textcoords="offset points")
     ok = data.path_stable
     ax.plot(data.q_path, data.a_path, "-", color="C0", lw=1.2, label="operating path")
@@ -75,7 +76,7 @@ def ince_strutt_chart(data: InceStruttData, ax: Axes | None = None, *,
     ax.set_ylim(a_lo, a_hi)
     ax.set_xlabel("q")
     ax.set_ylabel("a")
-    ax.set_title(r"Ince-Strutt chart, $\psi'' + (a - 2q\cos 2\tau_1)\psi = 0$")
+    ax.set_title("Ince-Strutt chart, ψ″ + (a − 2q cos 2τ₁) ψ = 0")
     return fig
 
 
@@ -130,10 +131,10 @@ def beta_comparison_plot(q: np.ndarray, errors: dict, ax: Axes | None = None) ->
     for i, (a, (corr, printed)) in enumerate(errors.items()):
         ax.loglog(q, np.maximum(corr, 1e-17), "-", color=f"C{i}", label=f"a = {a:g}, corrected")
         ax.loglog(q, printed, "--", color=f"C{i}", label=f"a = {a:g}, as printed")
-    ax.loglog(q, 0.5 * (q / q_max) ** 4 * 1e-6, ":", color="0.4", label=r"$\propto q^4$")
-    ax.loglog(q, (q / q_max) ** 2 * 1e-3, ":", color="0.7", label=r"$\propto q^2$")
+    ax.loglog(q, 0.5 * (q / q_max) ** 4 * 1e-6, ":", color="0.4", label="∝ q⁴")
+    ax.loglog(q, (q / q_max) ** 2 * 1e-3, ":", color="0.7", label="∝ q²")
     ax.set_xlabel("q")
-    ax.set_ylabel(r"$|\beta_{memo} - \beta_{exact}|$")
+    ax.set_ylabel("|β(memo) − β(exact)|")
     ax.set_title("Eq. (4.2-9) against the exact Floquet exponent")
     ax.legend(fontsize=7, ncol=2)
     return fig

@@ -100,10 +100,10 @@ def modal_amplitudes(result: SimulationResult, top: int = 8, ax=None) -> Figure:
                   borderaxespad=0.0)
         sec = ax.secondary_xaxis("top", functions=(lambda t: t * result.omega_1,
                                                    lambda tau: tau / result.omega_1))
-        sec.set_xlabel(r"$\tau = \omega_1 t$")
+        sec.set_xlabel("τ = ω₁t")
     ax.set_xlabel("time t (s)")
     ax.set_ylabel("modal amplitude (mm)")
-    ax.set_title(rf"$\Omega$ = {result.Omega:.4g} rad/s ({result.method})")
+    ax.set_title(f"Ω = {result.Omega:.4g} rad/s ({result.method})")
     ax.grid(True, alpha=0.3)
     return fig
 
@@ -159,7 +159,7 @@ def deformed_booster(result: SimulationResult, instant: int = -1, scale: float |
     ax.set_xlabel("x from the aft edge (m)")
     ax.set_ylabel("z (m)")
     t = float(result.t[snaps["index"][instant]])
-    ax.set_title(rf"t = {t:.4g} s ($\tau$ = {tau:.4g}); displacements magnified x {scale:.3g}")
+    ax.set_title(f"t = {t:.4g} s (τ = {tau:.4g}); displacements magnified x {scale:.3g}")
     ax.set_aspect("equal", adjustable="datalim")
     return fig
 

@@ -6,6 +6,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from ...memo.shell import ShellFrequencies
+from .labels import plain_log_ticks
 
 __all__ = ["frequency_curves"]
 
@@ -48,7 +49,7 @@ def frequency_curves(
     if branch not in (1, 2, 3):
         raise ValueError(f"branch = {branch!r}: must be 1, 2 or 3")
     labels = {"hz": "frequency (Hz)", "rad_s": "frequency (rad/s)",
-              "omega_bar": "$\\bar\\omega$ (units of $\\omega_1$)"}
+              "omega_bar": "ω/ω₁ (units of ω₁)"}
     if unit not in labels:
         raise ValueError(f"unit = {unit!r}: must be one of {tuple(labels)}")
     if ax is None:
@@ -63,6 +64,7 @@ def frequency_curves(
         rows = rows[np.argsort(table.k[rows])]
         ax.plot(table.k[rows], values[rows], marker="o", ms=2.5, lw=0.9, label=f"j = {j}")
     ax.set_yscale("log")
+    plain_log_ticks(ax.yaxis)
     ax.set_xlabel("circumferential wave number k")
     ax.set_ylabel(labels[unit])
     ax.set_title(f"cylinder {cylinder}, branch {branch} ({table.method})")

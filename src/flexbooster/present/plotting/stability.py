@@ -7,19 +7,19 @@ from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
 
 from ...memo.charts import CampbellData
-from .danger import plain_log_ticks
+from .labels import plain_log_ticks
 
 __all__ = ["campbell_diagram"]
 
 _STYLE = {  # family (memo 7.4 numbering) -> (label, colour)
-    7: ("family 7: $\\Omega_i$", "C0"),
-    12: ("family 12: $2\\Omega_i$", "C1"),
-    8: ("family 8: $\\bar\\Omega + \\Omega_i$", "C2"),
-    9: ("family 9: $|\\bar\\Omega - \\Omega_i|$", "C3"),
-    10: ("family 10: $\\Omega_i + \\Omega_p$", "C4"),
-    11: ("family 11: $|\\Omega_i - \\Omega_p|$", "C5"),
-    13: ("family 13: $|\\alpha_r + s|\\,\\bar\\Omega$", "C8"),
-    3: ("family 3: $\\bar\\Omega$", "k"),
+    7: ("family 7: Ωᵢ", "C0"),
+    12: ("family 12: 2Ωᵢ", "C1"),
+    8: ("family 8: Ω + Ωᵢ", "C2"),
+    9: ("family 9: |Ω − Ωᵢ|", "C3"),
+    10: ("family 10: Ωᵢ + Ωₚ", "C4"),
+    11: ("family 11: |Ωᵢ − Ωₚ|", "C5"),
+    13: ("family 13: |αᵣ + s| Ω", "C8"),
+    3: ("family 3: Ω", "k"),
 }
 
 

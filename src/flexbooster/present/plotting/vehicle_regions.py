@@ -16,6 +16,7 @@ from matplotlib.figure import Figure
 from ...memo.charts import VEHICLE_CHART_GAMMA_MAX
 from ...vehicle import VehicleRegions
 from .bands import _axes
+from .labels import plain_log_ticks
 
 __all__ = ["vehicle_region_chart"]
 
@@ -87,6 +88,7 @@ def vehicle_region_chart(regions: VehicleRegions, ax: Axes | None = None) -> Fig
                 transform=ax.transAxes, ha="center", va="center", fontsize=9)
     ks = [h.k for h in regions.harmonics]
     ax.set_xscale("log")
+    plain_log_ticks(ax.xaxis)
     ax.set_xlim(regions.omega_min * _TO_HZ, regions.omega_max * _TO_HZ)
     ax.set_ylim(0.0, max(VEHICLE_CHART_GAMMA_MAX, 1.1 * gamma, _top(regions)))
     ax.set_xlabel("thrust frequency Omega (Hz)")

@@ -1,0 +1,357 @@
+"""Narrow instability regions of q'' + (A + B cos Omega t) q = 0 with a resolution linear in width.
+
+Near a narrow region the monodromy indicators (|trace| - 2, |rho| - 1) are quadratic in the
+distance to the tip, so round-off hides regions narrower than ~sqrt(eps) of their centre.  Here
+the two Floquet exponents that collide at a candidate resonance are isolated from Hill's
+(harmonic-balance) equations of the undamped system in the modal frame,
+
+    [diag(mu) + (lambda + i s Omega)^2] eta_s + (Bt / 2) (eta_{s-1} + eta_{s+1}) = 0,
+
+s = s_min..s_max (Bolotin 1964, sec. 7-8; Magnus & Winkler 1966, ch. 2).  The two resonant
+components P = {(s_a, i), (s_b, k)} (mode i at harmonic s_a with exponent ~ +i omega_i, mode k
+at s_b with ~ -+i omega_k) are kept and the rest Q eliminated exactly (Schur complement,
+Loewdin partitioning): det S(lambda) = 0 with the 2 x 2 matrix
+S = T_PP - T_PQ T_QQ^-1 T_QP.  Linearised about the pair's midpoint lambda_0 (found by a
+few fixed-point steps), det(S_0 + x S') = a x^2 + b x + c, and the squared separation of the
+pair is
+
+    D(Omega) = (lambda_1 - lambda_2)^2 = (b^2 - 4 a c) / a^2:
+
+D > 0 inside the region (exponents lambda_0 +- sqrt(D) / 2, growth rate sqrt(D) / 2), D < 0
+outside (a pair on the imaginary axis), D = 0 on the boundaries.  D is a difference of two
+terms each known to relative eps (detuning^2 and coupling product), so its zero crossings,
+and the width, are resolved to relative eps of the width itself; D is a parabola in Omega to
+leading order (the detuning is linear in Omega), so its vertex and roots follow from three
+values by Newton steps on the parabola.  The harmonics are raised until the result converges.
+
+References
+----------
+.. [1] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, ch. 1-2
+   (sec. 7-8: Hill's determinant, matrix form).
+.. [2] W. Magnus, S. Winkler, *Hill's Equation*, Wiley, 1966, ch. 2.
+.. [3] P.-O. Loewdin, "Studies in perturbation theory IV", J. Mol. Spectrosc. 10 (1963) 12-33
+   (partitioning: the exact reduced eigenproblem of a subspace).
+.. [4] C. S. Hsu, "On the parametric excitation of a dynamic system having multiple degrees of
+   freedom", J. Appl. Mech. 30 (1963) 367-372 (combination resonances).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__: list[str] = []
+
+_EPS = np.finfo(float).eps
+#: Harmonic margins L tried on each side of the resonant pair (blocks s_min = min(s_a, s_b) - L
+#: .. max(s_a, s_b) + L); the result of L is accepted when L + 2 agrees with it.
+_MARGINS = (2, 4, 6, 8, 10, 12)
+#: Largest relative width handled here; wider regions are the monodromy search's (the
+#: linearisation about the pair's midpoint errs by ~ width / Omega relative).
+MAX_WIDTH = 1e-6
+#: Smallest relative width reported (~50 eps: below it the width is not resolved in double
+#: precision, and no Omega grid of floating-point numbers could hold a point inside).
+MIN_WIDTH = 1e-14
+
+
+def _pair_layout(kind: np.ndarray, j: np.ndarray, L: int):
+    """Block indices (p_a, p_b), signs (sig_a, sig_b) and the lowest harmonic s_min.
+
+    simple / sum: lambda + i s_a Omega = +i omega_i, lambda + i s_b Omega = -i omega_k,
+    s_a - s_b = j; difference: both +, s_b - s_a = j (omega_k > omega_i).
+    """
+    diff = kind == 2
+    s_a = np.where(diff, -(j // 2), (j + 1) // 2)
+    s_b = np.where(diff, s_a + j, s_a - j)
+    s_min = np.minimum(s_a, s_b) - L
+    return s_a - s_min, s_b - s_min, np.ones(kind.size), np.where(diff, 1.0, -1.0), s_min
+
+
+def _block_factor(Dg, Up, Lo):
+    """Block LU of the block-tridiagonal matrices (batched): the inverses of the pivot blocks.
+
+    Blocks Dg (B, h, n, n) on the diagonal, Up[:, p] = block (p, p + 1), Lo[:, p] = block
+    (p + 1, p).  Block Thomas (block LU without inter-block pivoting; the diagonal blocks
+    dominate for weak coupling): T = L U, U with the pivots D'_p and Up, L unit lower with
+    Lo_p D'_p^-1.  Returns the inverses D'_p^-1, (B, h, n, n).
+    """
+    h = Dg.shape[1]
+    Di = np.empty_like(Dg)
+    Di[:, 0] = _inv(Dg[:, 0])
+    for p in range(1, h):
+        Di[:, p] = _inv(Dg[:, p] - Lo[:, p - 1] @ (Di[:, p - 1] @ Up[:, p - 1]))
+    return Di
+
+
+def _inv(A: np.ndarray) -> np.ndarray:
+    """Batched inverse; a singular entry (a component of Q exactly resonant at lambda_0) gives
+    NaN there, so that candidate is reported as not resolved instead of failing the batch."""
+    try:
+        return np.linalg.inv(A)
+    except np.linalg.LinAlgError:
+        out = np.full_like(A, np.nan)
+        for b in range(A.shape[0]):  # rare: only after a failed batch
+            try:
+                out[b] = np.linalg.inv(A[b])
+            except np.linalg.LinAlgError:
+                pass
+        return out
+
+
+def _block_solve(Di, Up, Lo, R):
+    """T X = R with the factors of :func:`_block_factor` (R: (B, h, n, r))."""
+    h = Di.shape[1]
+    Rp = np.empty_like(R)
+    Rp[:, 0] = R[:, 0]
+    for p in range(1, h):
+        Rp[:, p] = R[:, p] - Lo[:, p - 1] @ (Di[:, p - 1] @ Rp[:, p - 1])
+    X = np.empty_like(R)
+    X[:, h - 1] = Di[:, h - 1] @ Rp[:, h - 1]
+    for p in range(h - 2, -1, -1):
+        X[:, p] = Di[:, p] @ (Rp[:, p] - Up[:, p] @ X[:, p + 1])
+    return X
+
+
+def _block_solve_t(Di, Up, Lo, R):
+    """T^T Y = R with the same factors: U^T z = R forward, then L^T Y = z backward."""
+    h = Di.shape[1]
+    DiT = np.swapaxes(Di, -1, -2)
+    Z = np.empty_like(R)
+    Z[:, 0] = DiT[:, 0] @ R[:, 0]
+    for p in range(1, h):
+        Z[:, p] = DiT[:, p] @ (R[:, p] - np.swapaxes(Up[:, p - 1], -1, -2) @ Z[:, p - 1])
+    Y = np.empty_like(R)
+    Y[:, h - 1] = Z[:, h - 1]
+    for p in range(h - 2, -1, -1):  # (Lo_p D'_p^-1)^T = D'_p^-T Lo_p^T
+        Y[:, p] = Z[:, p] - DiT[:, p] @ (np.swapaxes(Lo[:, p], -1, -2) @ Y[:, p + 1])
+    return Y
+
+
+def _discriminant(mu, Bt, om, lam0, ia, ib, pa, pb, s_min, h, n_fix):
+    """D(Omega) and the pair's midpoint for a batch (one Omega per entry).
+
+    Returns (D, lam0, err): D complex (real for the undamped system), the midpoint, and an
+    estimate of the round-off error of D.
+    """
+    B = om.size
+    n = mu.size
+    rows = np.arange(B)
+    s = s_min[:, None] + np.arange(h)[None, :]  # (B, h) absolute harmonics
+    half = 0.5 * Bt.astype(complex)
+    symmetric = bool(np.all(Bt == Bt.T))
+    for _ in range(n_fix + 1):
+        z = lam0[:, None] + 1j * s * om[:, None]  # lambda + i s Omega, (B, h)
+        diag = mu[None, None, :] + z[:, :, None] ** 2  # Hill's blocks, Bolotin (1964) sec. 7-8
+        dd = 2.0 * z[:, :, None] * np.ones(n)[None, None, :]  # d/d lambda of the diagonal
+        Dg = np.zeros((B, h, n, n), dtype=complex)
+        idx = np.arange(n)
+        Dg[:, :, idx, idx] = diag
+        Up = np.broadcast_to(half, (B, h - 1, n, n)).copy()
+        Lo = Up.copy()
+        # T~: the P rows and columns replaced by the identity (T~^-1 restricted to Q = T_QQ^-1)
+        for p_, i_ in ((pa, ia), (pb, ib)):
+            Dg[rows, p_, i_, :] = 0.0
+            Dg[rows, p_, :, i_] = 0.0
+            Dg[rows, p_, i_, i_] = 1.0
+            up = p_ < h - 1  # block (p, p + 1): row i; block (p + 1, p): column i
+            Up[rows[up], p_[up], i_[up], :] = 0.0
+            Lo[rows[up], p_[up], :, i_[up]] = 0.0
+            dn = p_ > 0  # block (p - 1, p): column i; block (p, p - 1): row i
+            Up[rows[dn], p_[dn] - 1, :, i_[dn]] = 0.0
+            Lo[rows[dn], p_[dn] - 1, i_[dn], :] = 0.0
+        # T_QP (columns of the P components, P rows zero) and T_PQ^T
+        R = np.zeros((B, h, n, 2), dtype=complex)
+        Lt = np.zeros((B, h, n, 2), dtype=complex)
+        for c, (p_, i_) in enumerate(((pa, ia), (pb, ib))):
+            for dp in (-1, 1):
+                q = p_ + dp
+                ok = (q >= 0) & (q < h)
+                R[rows[ok], q[ok], :, c] = half[:, i_[ok]].T
+                Lt[rows[ok], q[ok], :, c] = half[i_[ok], :]
+        for p_, i_ in ((pa, ia), (pb, ib)):  # P rows of the right sides: 0
+            R[rows, p_, i_, :] = 0.0
+            Lt[rows, p_, i_, :] = 0.0
+        Di = _block_factor(Dg, Up, Lo)
+        X = _block_solve(Di, Up, Lo, R)  # T_QQ^-1 T_QP
+        if symmetric:  # T = T^T: (T_PQ T_QQ^-1)^T = T_QQ^-1 T_QP
+            Y = X
+        else:
+            Y = _block_solve_t(Di, Up, Lo, Lt)  # (T_PQ T_QQ^-1)^T
+        # S_0 = T_PP - T_PQ X, S' = T_PP' + Y^T diag(T_QQ') X  (Loewdin partitioning)
+        tpp = np.zeros((B, 2, 2), dtype=complex)
+        tpp[:, 0, 0] = diag[rows, pa, ia]
+        tpp[:, 1, 1] = diag[rows, pb, ib]
+        adj = (pa - pb == 1) | (pb - pa == 1)  # j = 1: the pair couples directly
+        tpp[:, 0, 1] = np.where(adj, half[ia, ib], 0.0)
+        tpp[:, 1, 0] = np.where(adj, half[ib, ia], 0.0)
+        S0 = tpp - np.einsum("bhnc,bhnd->bcd", Lt, X)  # Loewdin (1963) partitioning
+        dpp = np.zeros((B, 2, 2), dtype=complex)
+        dpp[:, 0, 0] = dd[rows, pa, ia]
+        dpp[:, 1, 1] = dd[rows, pb, ib]
+        mask = np.ones((B, h, n))
+        mask[rows, pa, ia] = 0.0
+        mask[rows, pb, ib] = 0.0
+        S1 = dpp + np.einsum("bhnc,bhn,bhnd->bcd", Y, dd * mask, X)
+        # det(S0 + x S1) = a x^2 + b x + c
+        a = S1[:, 0, 0] * S1[:, 1, 1] - S1[:, 0, 1] * S1[:, 1, 0]
+        b = (S0[:, 0, 0] * S1[:, 1, 1] + S1[:, 0, 0] * S0[:, 1, 1]
+             - S0[:, 0, 1] * S1[:, 1, 0] - S1[:, 0, 1] * S0[:, 1, 0])
+        p11, p12 = S0[:, 0, 0] * S0[:, 1, 1], S0[:, 0, 1] * S0[:, 1, 0]
+        c = p11 - p12
+        xm = -b / (2.0 * a)
+        lam0 = lam0 + xm  # the pair's midpoint (fixed point; the last one is returned)
+    D = (b * b - 4.0 * a * c) / (a * a)  # (lambda_1 - lambda_2)^2, module docstring
+    err = 16.0 * _EPS * (np.abs(b) ** 2 + 4.0 * np.abs(a) * (np.abs(p11) + np.abs(p12))) \
+        / np.abs(a) ** 2
+    return D, lam0, err
+
+
+def _evaluate(mu, Bt, w, cand, om, L, lam0=None, n_fix=1):
+    """D at om (one per candidate entry) with harmonic margin L, from the midpoint lam0
+    (default: the midpoint of the two unperturbed exponents)."""
+    kind, i, k, j = cand["kind"], cand["i"], cand["k"], cand["j"]
+    pa, pb, sga, sgb, s_min = _pair_layout(kind, j, L)
+    h = int(np.max(j)) + 1 + 2 * L
+    if lam0 is None:
+        lam0 = 0.5j * ((sga * w[i] - (s_min + pa) * om) + (sgb * w[k] - (s_min + pb) * om))
+    return _discriminant(mu, Bt, om, lam0, i, k, pa, pb, s_min, h, n_fix)
+
+
+def _slope(cand, L):
+    """d lambda_mid / d Omega of the unperturbed pair (1j x -(s_a + s_b) / 2)."""
+    pa, pb, _, _, s_min = _pair_layout(cand["kind"], cand["j"], L)
+    return -0.5j * ((s_min + pa) + (s_min + pb))
+
+
+def narrow_search(mu: np.ndarray, Bt: np.ndarray, cand: dict, *, max_iter: int = 16) -> dict:
+    """Vertex and width of D(Omega) near each candidate (one batch per order j).
+
+    Parameters
+    ----------
+    mu : numpy.ndarray
+        Squared steady frequencies (n,), real > 0 (1 / time unit^2).
+    Bt : numpy.ndarray
+        Modal coupling V^-1 M^-1 B V (n, n) (1 / time unit^2).
+    cand : dict
+        Candidate arrays kind (0 simple, 1 sum, 2 difference), i, k (modes), j (order),
+        centre (rad per time unit), window (half-width of the search window about the
+        centre, rad per time unit).
+    max_iter : int
+        Newton steps on the parabola per harmonic margin (capped; no error when reached).
+
+    Returns
+    -------
+    dict
+        Arrays per candidate: found (bool: D > 0 at the vertex beyond its round-off, width
+        at most :data:`MAX_WIDTH` of the centre), converged (bool: the harmonic margins agree),
+        lo, hi (edges, rad per time unit), growth (sqrt(D) / 2 at the vertex, 1 / time
+        unit), omega_at_max (the vertex, rad per time unit).
+
+    References
+    ----------
+    Bolotin (1964), sec. 7-8; Loewdin (1963); module docstring.
+    """
+    w = np.sqrt(mu)
+    size = cand["centre"].size
+    out = {key: np.zeros(size) for key in ("lo", "hi", "growth", "omega_at_max")}
+    out["found"] = np.zeros(size, dtype=bool)
+    out["converged"] = np.zeros(size, dtype=bool)
+    for jj in np.unique(cand["j"]):  # a handful of orders
+        sel = np.nonzero(cand["j"] == jj)[0]
+        prev = None
+        for L in _MARGINS:  # harmonics raised until two margins agree (found ones only)
+            sub = {key: v[sel] for key, v in cand.items()}
+            Ov, hw, found, g = _vertex(mu, Bt, w, sub, L, max_iter)
+            out["lo"][sel], out["hi"][sel] = Ov - hw, Ov + hw
+            out["growth"][sel], out["omega_at_max"][sel] = g, Ov
+            out["found"][sel] = found
+            if prev is not None:
+                scale = np.maximum(hw, 1e-15 * sub["centre"])
+                tol = 4.0 * _EPS * sub["centre"]
+                conv = (np.abs(Ov - prev[0]) <= 1e-3 * scale + tol) & (
+                    np.abs(hw - prev[1]) <= 1e-2 * scale + tol) & (found == prev[2])
+                out["converged"][sel[conv]] = True
+                keep = ~conv
+            else:
+                out["converged"][sel[~found]] = True  # no pair separation: nothing to refine
+                keep = found
+            if not keep.any():
+                break
+            sel, prev = sel[keep], (Ov[keep], hw[keep], found[keep])
+    return out
+
+
+def _vertex(mu, Bt, w, sub, L, max_iter):
+    """(vertex, half-width, found, growth) of D on each candidate's window, margin L.
+
+    D is a parabola in Omega to leading order (the detuning is linear in Omega): D at
+    x0 - h, x0, x0 + h (h = min(window / 4, 1e-3 Omega_c)), then one new value per step at
+    the vertex of the parabola through the three latest points (successive parabolic
+    interpolation).  D at a point within the region's width of the vertex is D_v itself, so
+    the width sqrt(D_v / -D'') is resolved however far the first points were.  A candidate
+    stops when its step is below 1e-3 of the half-width |D_v / D''|^(1/2) (D_v < 0: the
+    closest approach of the pair, no region) or, with D_v < 0, below 1/8 of the spread of its
+    points while the half-gap exceeds that spread (no region, resolved).
+    """
+    Oc = sub["centre"]
+    win = sub["window"]
+    P = Oc.size
+    h = np.minimum(0.25 * win, 1e-3 * Oc)
+    tiny = 1e-14 * Oc
+    slope = _slope(sub, L)
+    x3 = np.stack([Oc - h, Oc, Oc + h], axis=1)  # (P, 3) the latest points
+    a3 = np.concatenate([np.arange(P)] * 3)
+    D, mid, err = _evaluate(mu, Bt, w, {key: v[a3] for key, v in sub.items()}, x3.T.ravel(),
+                            L, None, n_fix=1)
+    D3 = D.real.reshape(3, P).T
+    e3 = err.reshape(3, P).T
+    lam = mid.reshape(3, P).T[:, 1].copy()  # the pair's midpoint at x3[:, 1]
+    lam_x = Oc.copy()
+    xv = Oc.copy()
+    Dv = np.full(P, -np.inf)
+    half = np.zeros(P)
+    errv = np.zeros(P)
+    act = np.arange(P)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for _ in range(max_iter):
+            if act.size == 0:
+                break
+            X, Y = x3[act], D3[act]
+            # parabola D = c2 x^2 + c1 x + c0 through the three points (divided differences)
+            f01 = (Y[:, 1] - Y[:, 0]) / (X[:, 1] - X[:, 0])
+            f12 = (Y[:, 2] - Y[:, 1]) / (X[:, 2] - X[:, 1])
+            c2 = (f12 - f01) / (X[:, 2] - X[:, 0])
+            c1 = f01 - c2 * (X[:, 0] + X[:, 1])
+            xn = -c1 / (2.0 * c2)
+            ok = np.isfinite(xn) & (c2 < 0.0)
+            xn = np.clip(np.where(ok, xn, Oc[act]), Oc[act] - win[act], Oc[act] + win[act])
+            spread = np.max(X, axis=1) - np.min(X, axis=1)
+            near = np.min(np.abs(X - xn[:, None]), axis=1)
+            fresh = ok & (near > tiny[act])  # a new point (else: converged on a point)
+            ev = act[fresh]
+            if ev.size:
+                start = lam[ev] + slope[ev] * (xn[fresh] - lam_x[ev])
+                Dn, mn, en = _evaluate(mu, Bt, w, {key: v[ev] for key, v in sub.items()},
+                                       xn[fresh], L, start, n_fix=0)
+                rows = np.nonzero(fresh)[0]
+                far = np.argmax(np.abs(X[rows] - xn[rows, None]), axis=1)  # replaced
+                X[rows, far], Y[rows, far] = xn[rows], Dn.real
+                e = e3[act]
+                e[rows, far] = en
+                x3[act], D3[act], e3[act] = X, Y, e
+                lam[ev], lam_x[ev] = mn, xn[fresh]
+            # D at the vertex: the point nearest to it
+            at = np.argmin(np.abs(X - xn[:, None]), axis=1)
+            Dn_all = Y[np.arange(act.size), at]
+            errv[act] = e3[act][np.arange(act.size), at]  # round-off of D there
+            moved = np.abs(xn - xv[act])
+            hf = np.where(ok, np.sqrt(np.abs(Dn_all) / -np.where(ok, c2, -1.0)), 0.0)
+            xv[act] = xn
+            Dv[act] = np.where(ok, Dn_all, -np.inf)
+            half[act] = np.where(ok & (Dn_all > 0.0), hf, 0.0)
+            done = ~ok | ~fresh | (moved <= 1e-3 * np.maximum(hf, tiny[act])) | (
+                (Dn_all < 0.0) & (hf >= spread) & (moved <= 0.125 * spread))
+            act = act[~done]
+    found = (Dv > 64.0 * errv) & (2.0 * half >= MIN_WIDTH * Oc) & (
+        2.0 * half <= MAX_WIDTH * Oc)
+    growth = np.where(found, 0.5 * np.sqrt(np.maximum(Dv, 0.0)), 0.0)
+    return xv, np.where(found, half, 0.0), found, growth
