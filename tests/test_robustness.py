@@ -1019,7 +1019,7 @@ def test_fuzz_reproducer_damped_band_search():
 #: boosters): the rigid-pitch tongue search of memo/beam_action.py (pitch_tongue_bands ->
 #: _tongue_edges) raises "pitch tongue near Omega_bar = 0.0011: its edges did not converge
 #: with 24 harmonics", an internal ValueError, for a heavily damped beam (ratio 0.2) and a
-#: tongue far below omega_1 (Omega_bar ~ 1e-3..2e-5).  Owner: bands2 (the band search).
+#: tongue far below omega_1 (Omega_bar ~ 1e-3..2e-5).  Fixed by bands2 (merged into main).
 _FUZZ_TONGUE = {
     "name": "fuzz",
     "booster": {"cylinder1": {"radius": 30.38199513912317, "half_length": 0.7185839964277916},
@@ -1034,15 +1034,17 @@ _FUZZ_TONGUE = {
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(reason="beam-action pitch tongue edges do not converge (bands2; docstring)",
-                   raises=ValueError, strict=False)
 def test_fuzz_reproducer_pitch_tongue_edges():
+    """Passes since bands2's fix of the tongue search (merged into main): every band finite
+    and inside the searched range."""
     from flexbooster._threads import blas_threads
 
     model = cost.derived_model(flexbooster.load_case(_FUZZ_TONGUE))
-    with blas_threads(1):  # as in analyze (with more BLAS threads it happens not to fail)
+    with blas_threads(1):  # as in analyze (with more BLAS threads it happened not to fail)
         bands = ba.pipeline_bands(model)
-    assert all(math.isfinite(b.Omega_low) for b in bands)
+    lo, hi = model.omega_range
+    for b in bands:
+        assert lo <= b.omega_lo < b.omega_hi <= hi and math.isfinite(b.growth_rate_max)
 
 
 #: Found by `make fuzz`: F0 = 1e11 N on a short booster (omega_1 = 318 rad/s) at Omega ~ 1
@@ -1052,7 +1054,7 @@ def test_fuzz_reproducer_pitch_tongue_edges():
 #: (np.linalg.solve), at the next Omega "divide by zero encountered in log" and
 #: "alpha: every exponent must be finite"; in 4 more of the 1,000 cases the same overflow
 #: reaches np.linalg.eigvals: "Array must not contain infs or NaNs" (_multipliers_from_half,
-#: beam_action.py:664).  Owner: bands2 (memo/beam_action.py).
+#: beam_action.py:664).  Fixed by bands2 (merged into main): PeriodMapOverflowError.
 _FUZZ_MONODROMY = {
     "name": "fuzz",
     "booster": {"cylinder1": {"radius": 1.0000000002302585, "half_length": 1.0},
@@ -1066,22 +1068,23 @@ _FUZZ_MONODROMY = {
 }
 
 
-@pytest.mark.xfail(reason="monodromy singular when the growth per period exceeds 1e16 "
-                          "(bands2; docstring)", raises=(np.linalg.LinAlgError, RuntimeWarning),
-                   strict=False)
 def test_fuzz_reproducer_monodromy_singular():
+    """Since bands2's fix (merged into main) the overflow is a PeriodMapOverflowError (a
+    one-line ValueError naming Omega and gamma), no LinAlgError and no numpy warning; the
+    pipeline turns it into a CaseError on thrust.F0 (a documented refusal)."""
     model = cost.derived_model(flexbooster.load_case(_FUZZ_MONODROMY))
     system = ba.beam_system(model)
     with warnings.catch_warnings():
         warnings.simplefilter("error", RuntimeWarning)
-        alpha = ba.monodromy_exponents(system, model.Omega[1:2], model.gamma)
-    assert np.all(np.isfinite(alpha))
+        with pytest.raises(ba.PeriodMapOverflowError) as info:
+            ba.monodromy_exponents(system, model.Omega[1:2], model.gamma)
+    assert "Omega = " in str(info.value) and "\n" not in str(info.value)
 
 
 #: Found by `make fuzz` (5 of 1,000 cases, all gamma ~ 1e-157): the damping caps of the
 #: Floquet band search (floquet/regions.py _damping_caps, t = d / (margin * lam2) with
 #: lam2 ~ gamma^2 underflowing) overflow: "overflow encountered in divide" (its np.errstate
-#: ignores divide and invalid, not over).  Owner: bands2 (flexbooster.floquet).
+#: ignores divide and invalid, not over).  Fixed by bands2 (merged into main).
 _FUZZ_DAMPING_CAPS = {
     "name": "fuzz",
     "booster": {"cylinder1": {"radius": 2.4504530344854656, "half_length": 7.695536011482344},
@@ -1096,9 +1099,8 @@ _FUZZ_DAMPING_CAPS = {
 }
 
 
-@pytest.mark.xfail(reason="floquet _damping_caps overflows at gamma ~ 1e-157 (bands2; "
-                          "docstring)", raises=RuntimeWarning, strict=False)
 def test_fuzz_reproducer_damping_caps_overflow():
+    """Passes since bands2's fix (merged into main: the caps ignore the overflow)."""
     model = cost.derived_model(flexbooster.load_case(_FUZZ_DAMPING_CAPS))
     with warnings.catch_warnings():
         warnings.simplefilter("error", RuntimeWarning)
