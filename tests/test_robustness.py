@@ -1035,8 +1035,8 @@ _FUZZ_TONGUE = {
 
 @pytest.mark.slow
 @pytest.mark.skipif(os.environ.get("FLEXBOOSTER_FUZZ") != "long",
-                    reason="~15-20 s since the fix: runs with FLEXBOOSTER_FUZZ=long (make fuzz "
-                           "profile); bands2's tests cover the tongue search")
+                    reason="~15-20 s since the fix: FLEXBOOSTER_FUZZ=long pytest "
+                           "tests/test_robustness.py runs it")
 def test_fuzz_reproducer_pitch_tongue_edges():
     """Passes since bands2's fix of the tongue search (merged into main): every band finite
     and inside the searched range."""
