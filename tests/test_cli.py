@@ -133,9 +133,9 @@ def test_simulate_command(tmp_path, capsys):
 @pytest.mark.parametrize(
     ("args", "words"),
     [
-        (["--omega", "-5", "--tau-max", "5"], "Omega"),
+        (["--omega", "-5", "--tau-max", "5"], "--omega = '-5'"),  # the option, as typed
         (["--omega", "5 m", "--tau-max", "5"], "wrong dimension"),
-        (["--omega", "300", "--tau-max", "0"], "tau_max"),
+        (["--omega", "300", "--tau-max", "0"], "--tau-max = 0.0"),
     ],
 )
 def test_simulate_bad_input(capsys, args, words):

@@ -26,6 +26,7 @@ from . import cost, floquet
 from ._parallel import TaskPool
 from ._threads import blas_threads
 from .case import Case
+from .checks import count, finite, positive
 from .danger import danger_summary
 from .errors import AnalysisWarning
 from .memo import charts
@@ -337,6 +338,10 @@ def simulate_case(case: Case, Omega: float, *, tau_max: float, n_out: int = 401,
         parameter function as the stability table (so a simulation at a root of the table is
         exactly resonant).
     """
+    # the cheap argument checks of simulate first, before the beam-action analysis (issue 18)
+    Omega, tau_max, psi0 = (positive("Omega", Omega), positive("tau_max", tau_max),
+                            finite("psi0", psi0))
+    n_out = count("n_out", n_out, 2, 100_000)
     with blas_threads(1):
         model = cost.derived_model(case)
         cost.check_physical(model)  # a load beyond the structure: a CaseError (issue 18)

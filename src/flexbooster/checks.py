@@ -11,7 +11,7 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["choice", "count", "finite", "nonnegative", "positive"]
+__all__ = ["choice", "count", "finite", "finite_array", "nonnegative", "positive"]
 
 
 def finite(name: str, value: Any) -> float:
@@ -129,3 +129,44 @@ def choice(name: str, value: Any, options: tuple[str, ...]) -> str:
     if not isinstance(value, str) or value not in options:
         raise ValueError(f"{name} = {value!r}: must be one of {options}")
     return value
+
+
+def finite_array(name: str, value: Any, *, positive: bool = False,
+                 nonempty: bool = True) -> np.ndarray:
+    """``value`` as a float array of finite values (> 0 with ``positive``), in one line.
+
+    Parameters
+    ----------
+    name : str
+        Parameter name for the message.
+    value : array_like
+        The values to check (any shape).
+    positive : bool
+        Also require every value > 0.
+    nonempty : bool
+        Also require at least one value.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``np.asarray(value, dtype=float)``.
+
+    Raises
+    ------
+    ValueError
+        ``"name: must be a non-empty array of finite values > 0 (got [nan, 1.0])"``: the
+        first few values on the same line, never a multi-line array repr.
+    """
+    rule = (f"must be a{' non-empty' if nonempty else 'n'} array of finite values"
+            f"{' > 0' if positive else ''}")
+    try:
+        result = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} = {value!r:.60}: {rule}") from None
+    bad = (nonempty and result.size == 0) or not np.all(np.isfinite(result)) or (
+        positive and not np.all(result > 0.0))
+    if bad:
+        flat = result.ravel()
+        shown = ", ".join(repr(float(v)) for v in flat[:4]) + (", ..." if flat.size > 4 else "")
+        raise ValueError(f"{name}: {rule} (got [{shown}])")
+    return result

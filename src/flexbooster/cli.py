@@ -41,7 +41,21 @@ Exit codes:
   130  interrupted (Ctrl-C)"""
 
 
+class _Interrupted(Exception):
+    """A KeyboardInterrupt (Ctrl-C, or SIGTERM) carried past click, which would print an
+    empty line before its own Abort."""
+
+
+class _Group(click.Group):
+    def invoke(self, ctx: click.Context):
+        try:
+            return super().invoke(ctx)
+        except KeyboardInterrupt:
+            raise _Interrupted from None
+
+
 @click.group(
+    cls=_Group,
     context_settings={"help_option_names": ["-h", "--help"], "max_content_width": 100},
     epilog=_EXIT_CODES,
 )
@@ -315,6 +329,17 @@ def stability(
     _wrote(paths, fmt, quiet)
 
 
+def _option_error(message: str, options: dict, given: str) -> CaseError:
+    """The CaseError of a library ``ValueError("name = value: rule")``, on the option that
+    gave ``name`` (as the user wrote it), else on the command's arguments ``given``."""
+    name, sep, rest = message.partition(" = ")
+    rule = rest.partition(": ")[2]
+    if sep and rule and name in options:
+        option, text = options[name]
+        return CaseError(option, text, rule)
+    return CaseError("simulate", given, message)
+
+
 def _tau_max(case, t_max: str | None, tau_max: float | None) -> float:
     """tau_max from --t-max (a time: "2 s", "500 ms"; seconds if bare) or --tau-max."""
     from .model import model_from_case
@@ -386,8 +411,13 @@ def simulate(
     tau = _tau_max(case, t_max, tau_max)
     try:
         res = simulate_case(case, Omega, tau_max=tau, n_out=n_out, psi0=psi0)
-    except ValueError as exc:
-        raise CaseError("simulate", f"--omega {omega} --tau-max {tau:.6g}", str(exc)) from None
+    except CaseError:
+        raise
+    except ValueError as exc:  # a library check "name = value: rule": name the option
+        raise _option_error(str(exc), {
+            "Omega": ("--omega", omega), "n_out": ("--n-out", n_out), "psi0": ("--psi0", psi0),
+            "tau_max": ("--t-max", t_max) if t_max is not None else ("--tau-max", tau_max),
+        }, f"--omega {omega} --tau-max {tau:.6g}") from None
     data = res.to_dict()
     data["edge_conditions"] = edge_conditions(res)
     written = [
@@ -527,7 +557,9 @@ _register_sweep()
 
 
 def main(argv: list[str] | None = None) -> None:
-    """Entry point of the ``flexbooster`` command.
+    """The ``flexbooster`` command, in-process (the console script and ``python -m
+    flexbooster`` call it through :func:`flexbooster.__main__.main`, which also handles
+    Ctrl-C while the modules load and fixes the exit status).
 
     Parameters
     ----------
@@ -540,7 +572,7 @@ def main(argv: list[str] | None = None) -> None:
         cli.main(args=argv, prog_name="flexbooster", standalone_mode=False)
     except CaseError as exc:
         _fail(str(exc), EXIT_INPUT)
-    except (click.exceptions.Abort, KeyboardInterrupt):
+    except (_Interrupted, click.exceptions.Abort, KeyboardInterrupt):
         _interrupted()
     except click.ClickException as exc:  # usage errors: one line, exit 2
         message = " ".join(exc.format_message().split())
@@ -564,20 +596,22 @@ def main(argv: list[str] | None = None) -> None:
 
 
 def _interrupted() -> None:
-    """Exit 130 at once, the cleanup (``finally`` blocks) done: a plain ``sys.exit`` after a
-    KeyboardInterrupt was seen to end the process by SIGINT (status -2) now and then."""
+    """Exit 130 (``SystemExit``), the clean-up (``finally`` blocks) already done.
+
+    A plain exit: the status -2 once seen now and then came from a signal landing after the
+    outcome was decided (a KeyboardInterrupt escaping ``main``, or SIGINT after the
+    interpreter restored its default action at exit), which ``flexbooster.__main__`` closes by
+    ignoring SIGINT and SIGTERM once :func:`main` is done (issue 18).
+    """
     click.echo("flexbooster: error: interrupted", err=True)
-    for stream in (sys.stdout, sys.stderr):
-        try:
-            stream.flush()
-        except (OSError, ValueError):
-            pass
-    os._exit(EXIT_INTERRUPTED)
+    sys.exit(EXIT_INTERRUPTED)
 
 
 def _terminate(signum: int, frame: object) -> None:
     raise KeyboardInterrupt
 
 
-if __name__ == "__main__":  # pragma: no cover
-    main()
+if __name__ == "__main__":  # pragma: no cover - python -m flexbooster.cli: the entry point
+    from flexbooster.__main__ import main as _entry
+
+    _entry()

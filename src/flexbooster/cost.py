@@ -63,6 +63,10 @@ _BAND_RTOL = 1e-9  # flexbooster.memo.beam_action.BAND_RTOL
 _C_CHART = 2.5  # beam-action chart of the default, scales like (n / 11)^2.5
 _C_PITCH_STEP = (2e-5, 3e-7)  # per Magnus step: fixed, per grid point
 _C_TONGUE = 0.07  # pitch bands, per tongue in the range
+# pitch bands at a large pulsation: tongue r (a ~ r^2) costs ~ r^1.5 Hill rows x evaluations
+# while it is wider than round-off, r <= 110 gamma (fuzz cases of issue 18: 5.2 s at gamma
+# = 0.78 for r = 6..60, 0.83 s at 0.4, x 2.5 with pitch damping, 12 s)
+_C_TONGUE_R = (4.6e-4, 0.78, 110.0, 2.5)  # per r^1.5 at gamma_ref; r cut / gamma; damped x
 _C_TONGUE_LEVEL = 0.04  # pitch chart, per tongue and gamma level
 _C_STABILITY = 1.5e-6  # per (excitation curve x shell mode)
 _C_SHELL = 1e-4  # per shell mode
@@ -155,6 +159,22 @@ def _tongues(omega_psi: float, lo: float, hi: float, widen: float) -> int:
     return max(0, r_hi - r_lo + 1)
 
 
+def _tongue_orders(model: BoosterModel, lo: float, hi: float) -> float:
+    """The order-dependent part of the pitch-band search (s): sum of r^1.5 over the tongues
+    r in the range that are wider than round-off (r <= 110 gamma), scaled by gamma^1.5."""
+    c, g_ref, r_per_gamma, damped = _C_TONGUE_R
+    if model.omega_psi <= 0.0 or model.gamma <= 0.0:
+        return 0.0
+    r_lo = max(1, math.ceil(2.0 * model.omega_psi / hi))
+    r_hi = min(PITCH_MAX_TONGUE, math.floor(2.0 * model.omega_psi / lo),
+               math.floor(r_per_gamma * model.gamma))
+    if r_hi < r_lo:
+        return 0.0
+    orders = np.arange(r_lo, r_hi + 1, dtype=float)
+    factor = damped if model.pitch_damping_ratio > 0.0 else 1.0
+    return float(c * (model.gamma / g_ref) ** 1.5 * factor * np.sum(orders**1.5))
+
+
 def estimate_cost(model: BoosterModel, *, beam_action: bool = True, stability: bool = True,
                   figures: bool = True) -> CostEstimate:
     """The predicted run time of the analysis of a derived model, by kernel.
@@ -192,7 +212,7 @@ def estimate_cost(model: BoosterModel, *, beam_action: bool = True, stability: b
     parts["pitch (Magnus)"] = 3.0 * steps * (c0 + c1 * G)
     drivers["pitch (Magnus)"] = ("thrust.omega_min", "thrust.F0", "thrust.K", "thrust.n_omega")
     t_bands = _tongues(model.omega_psi, lo, hi, 1.0)
-    parts["pitch bands"] = _C_TONGUE * t_bands
+    parts["pitch bands"] = _C_TONGUE * t_bands + _tongue_orders(model, lo, hi)
     drivers["pitch bands"] = ("thrust.omega_min", "thrust.F0", "thrust.K")
     modes = (n.M1 + 1) * (n.N1 + 1) + (n.M2 + 1) * (n.N2 + 1)
     parts["shell frequencies"] = _C_SHELL * modes

@@ -289,10 +289,13 @@ def _hill(a: np.ndarray, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndar
     shape = a.shape
     a = a.ravel().astype(float)
     q = q.ravel().astype(float)
-    tiny = np.finfo(float).tiny
+    tiny = 1e-150  # pivot floor: |off * prev_off| / tiny stays far below 1e308
 
-    def continuant(ms: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    def continuant(ms: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        # det = mantissa * 2**exponent (np.frexp after each row: exact, and no overflow at
+        # large a, where the rows (1 - a/m^2) of small m multiply up past 1e308; issue 18)
         det = np.ones_like(a)
+        exponent = np.zeros(a.shape, dtype=np.int64)
         count = np.zeros(a.shape, dtype=np.int64)
         piv = None
         prev_off = None
@@ -303,18 +306,21 @@ def _hill(a: np.ndarray, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndar
                 diag, off, sgn = 1.0 - a / m**2, q / m**2, 1.0  # row m times (1 - a/m^2)
             # Hill rows: diag 1, off -q/(a - m^2), times the factor above
             piv = diag if piv is None else diag - off * prev_off / piv
-            piv = np.where(piv == 0.0, tiny, piv)
-            det = det * piv
+            # a pivot of (nearly) zero: a floor keeps the next off^2 / piv finite (the product
+            # of the two, which the determinant needs, tends to -off^2 for any small floor)
+            piv = np.where(np.abs(piv) < tiny, np.where(piv < 0.0, -tiny, tiny), piv)
+            det, e = np.frexp(det * piv)
+            exponent += e
             count += (piv * sgn < 0.0).astype(np.int64)  # negative pivot of H - a I
             prev_off = off
-        return det, count
+        return det, exponent, count
 
     m_even, m_odd = 2 * N, 2 * N + 1  # largest |m| kept
-    det_e, cnt_e = continuant(2 * np.arange(-N, N + 1))
-    det_o, cnt_o = continuant(2 * np.arange(-N - 1, N + 1) + 1)
+    det_e, exp_e, cnt_e = continuant(2 * np.arange(-N, N + 1))
+    det_o, exp_o, cnt_o = continuant(2 * np.arange(-N - 1, N + 1) + 1)
     kmax = _series_order(a, m_even)
-    log_e = _log_tail(a, q, m_even, kmax)
-    log_o = _log_tail(a, q, m_odd, kmax)
+    log_e = _log_tail(a, q, m_even, kmax) + exp_e * np.log(2.0)  # the tail times 2**exponent
+    log_o = _log_tail(a, q, m_odd, kmax) + exp_o * np.log(2.0)
     one_minus = 0.5 * np.pi**2 * np.exp(log_e) * det_e  # 2 sin^2(pi sqrt(a)/2) Delta_even
     one_plus = 2.0 * np.exp(log_o) * det_o  # 2 cos^2(pi sqrt(a)/2) Delta_odd
     return one_minus.reshape(shape), one_plus.reshape(shape), (cnt_e + cnt_o).reshape(shape)

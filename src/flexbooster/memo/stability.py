@@ -41,7 +41,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..checks import count
+from ..checks import count, positive
 
 __all__ = [
     "EPS",
@@ -474,6 +474,7 @@ def unstable_frequencies(
     ----------
     Tech Memo 104, section 7.3; reading guide section 5.
     """
+    omega_1 = positive("omega_1", omega_1)
     lo_W, hi_W = (float(x) for x in Omega_bar_range)
     if not 0.0 < lo_W < hi_W:
         raise ValueError(f"Omega_bar_range = {Omega_bar_range!r}: need 0 < min < max")

@@ -110,9 +110,12 @@ def locked_folder(folder: str | Path) -> Iterator[None]:
 
 @contextmanager
 def hold_signals() -> Iterator[None]:
-    """Hold SIGINT and SIGTERM back (``pthread_sigmask``) for a few renames, then deliver.
+    """Hold SIGINT and SIGTERM back for a few renames, then deliver the first one held.
 
-    In the main thread of a POSIX process only; elsewhere a no-op.
+    The Python handlers are replaced by one that only records the signal (not a thread's
+    ``pthread_sigmask``: with another thread alive, e.g. the progress bar's refresh thread,
+    the kernel hands a process-directed signal to that thread and the interrupt still breaks
+    into the renames).  In the main thread only; elsewhere a no-op.
 
     Yields
     ------
@@ -121,16 +124,25 @@ def hold_signals() -> Iterator[None]:
     import signal
     import threading
 
-    mask = getattr(signal, "pthread_sigmask", None)
-    if mask is None or threading.current_thread() is not threading.main_thread():
+    if threading.current_thread() is not threading.main_thread():
         yield
         return
-    held = {signal.SIGINT, signal.SIGTERM}
-    previous = mask(signal.SIG_BLOCK, held)
+    pending: list[int] = []
+
+    def record(signum: int, frame: object) -> None:
+        pending.append(signum)
+
+    previous = {}
+    for signum in (signal.SIGINT, signal.SIGTERM):
+        if signal.getsignal(signum) is not None:  # None: a handler not set from Python
+            previous[signum] = signal.signal(signum, record)
     try:
         yield
     finally:
-        mask(signal.SIG_SETMASK, previous)
+        for signum, handler in previous.items():
+            signal.signal(signum, handler)
+        if pending:
+            signal.raise_signal(pending[0])  # to the handler restored above
 
 
 def _umask() -> int:

@@ -314,6 +314,7 @@ def dof_map(vehicle: Vehicle, mesh: Mesh, k: int) -> DofMap:
     .. [1] Leissa 1973 sec. 1.6 (edge conditions); Tech Memo 104 Fig. 1 (bulkheads); see the
        module docstring for the bulkhead kinematics.
     """
+    k = count("k", k, 0, 200)
     segs = vehicle.segments
     radii = tuple((segs[i].radius_fwd, segs[i + 1].radius_aft) for i in range(len(segs) - 1))
     return _dof_map(vehicle.aft_end, vehicle.fwd_end, vehicle.junctions, mesh.end_nodes,
@@ -561,6 +562,7 @@ def rigid_body_fields(mesh: Mesh, k: int) -> np.ndarray:
     .. [1] Kraus 1967 ch. 2 (rigid-body displacements of a shell of revolution: zero
        Sanders strains).
     """
+    k = count("k", k, 0, 200)
     ref = reference_element(mesh.order)
     if k not in (0, 1):
         return np.zeros((0, mesh.n_full))

@@ -51,6 +51,8 @@ from functools import lru_cache
 import numpy as np
 from numpy.polynomial import legendre as leg
 
+from ..checks import count
+
 __all__ = ["ReferenceElement", "reference_element", "element_matrices", "theta_weight"]
 
 
@@ -180,7 +182,7 @@ def theta_weight(k: int) -> float:
     -------
     float
     """
-    return 2.0 * np.pi if k == 0 else np.pi
+    return 2.0 * np.pi if count("k", k, 0, None) == 0 else np.pi
 
 
 def _operators(ref: ReferenceElement, length: np.ndarray):

@@ -25,6 +25,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..checks import finite, finite_array
+
 __all__ = ["axial_force", "meridional_resultant"]
 
 
@@ -65,8 +67,13 @@ def axial_force(
     ----------
     .. [1] Brush & Almroth 1975, ch. 5; Newton's second law for the mass ahead of s.
     """
+    F0 = finite("F0", F0)
+    t = finite_array("t", t)
+    r1, sin_phi = finite_array("r1", r1), finite_array("sin_phi", sin_phi)
+    length = finite_array("length", length, positive=True)
+    rho_h = finite_array("rho_h", rho_h, positive=True)
     if supported_forward_end:
-        return np.full(t.shape, float(F0))
+        return np.full(t.shape, F0)
     elem_mass = _mass_behind(r1, sin_phi, length, rho_h, length)
     before = np.concatenate(([0.0], np.cumsum(elem_mass)[:-1]))
     total = elem_mass.sum()
@@ -97,4 +104,11 @@ def meridional_resultant(force: np.ndarray, r: np.ndarray, *, cos_phi: np.ndarra
     ----------
     .. [1] Flügge 1973, sec. 2.2.2 (axial equilibrium of a cone: 2 pi r N_s cos(phi) = -F).
     """
-    return -force / (2.0 * np.pi * r * cos_phi[:, None])  # Flügge 2.2.2
+    force, r = finite_array("force", force), finite_array("r", r, positive=True)
+    cos_phi = finite_array("cos_phi", cos_phi)
+    flat = (cos_phi == 0.0)[:, None]
+    if np.any(flat & (force != 0.0)):
+        raise ValueError("cos_phi = 0 (a flat annular plate): cannot carry a non-zero axial "
+                         "force as a membrane")
+    cos_safe = np.where(flat, 1.0, cos_phi[:, None])  # a flat plate without force: N_s = 0
+    return np.where(flat, 0.0, -force / (2.0 * np.pi * r * cos_safe))  # Flügge 2.2.2

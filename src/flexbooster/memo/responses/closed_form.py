@@ -13,6 +13,7 @@ from typing import Any
 
 import numpy as np
 
+from ...checks import finite_array
 from .excitation import Excitation, _times
 from .modal import ModalGroup, forcing_harmonics, modal_basis
 
@@ -72,12 +73,17 @@ def closed_form_0k(omega: Any, u0: Any, nu: Any, P: Any, tau: Any) -> np.ndarray
     ----------
     Tech Memo 104, eqs. (6.2-1)..(6.2-3).
     """
-    omega = np.atleast_1d(np.asarray(omega, dtype=float))
+    omega = np.atleast_1d(finite_array("omega", omega, positive=True))
     tau = _times(tau)
-    P = np.asarray(P, dtype=complex).reshape(omega.size, -1)
-    u0 = np.broadcast_to(np.asarray(u0, dtype=float), omega.shape)
+    nu = np.atleast_1d(finite_array("nu", nu, nonempty=False))
+    P = np.asarray(P, dtype=complex)
+    if P.size != omega.size * nu.size or not np.all(np.isfinite(P)):
+        raise ValueError(f"P: must be finite, shape ({omega.size}, {nu.size}) (got shape "
+                         f"{P.shape})")
+    P = P.reshape(omega.size, nu.size)
+    u0 = np.broadcast_to(finite_array("u0", u0), omega.shape)
     free = u0[:, None] * np.cos(omega[:, None] * tau)  # (u_0k) cos omega tau (6.2-3)
-    return free + _convolution(omega, np.asarray(nu, dtype=float), P, tau)
+    return free + _convolution(omega, nu, P, tau)
 
 
 def closed_form_j0(coef: dict, u0: Any, w0: Any, nu: Any, P1: Any, P2: Any,
@@ -207,13 +213,20 @@ def closed_form_jk(mass: Any, stiff: Any, x0: Any, nu: Any, Q: Any,
     ----------
     Tech Memo 104, eqs. (6.2-13)..(6.2-30).
     """
-    mass = np.asarray(mass, dtype=float).reshape(-1, 3, 3)
-    stiff = np.asarray(stiff, dtype=float).reshape(-1, 3, 3)
+    mass, stiff = finite_array("mass", mass), finite_array("stiff", stiff)
+    if mass.size % 9 or stiff.shape != mass.shape:
+        raise ValueError(f"mass, stiff: must both have shape (n, 3, 3) (got {mass.shape}, "
+                         f"{stiff.shape})")
+    mass, stiff = mass.reshape(-1, 3, 3), stiff.reshape(-1, 3, 3)
     n = mass.shape[0]
     tau = _times(tau)
-    nu = np.asarray(nu, dtype=float)
-    x0 = np.asarray(x0, dtype=float).reshape(n, 3)
-    Q = np.asarray(Q, dtype=complex).reshape(n, 3, -1)
+    nu = np.atleast_1d(finite_array("nu", nu, nonempty=False))
+    x0 = finite_array("x0", x0)
+    Q = np.asarray(Q, dtype=complex)
+    if x0.size != 3 * n or Q.size != 3 * n * nu.size or not np.all(np.isfinite(Q)):
+        raise ValueError(f"x0, Q: must be finite, shapes ({n}, 3) and ({n}, 3, {nu.size}) "
+                         f"(got {x0.shape}, {Q.shape})")
+    x0, Q = x0.reshape(n, 3), Q.reshape(n, 3, nu.size)
     om2 = np.sort(np.linalg.eigvals(np.linalg.solve(mass, stiff)).real, axis=-1)  # (6.2-16)
     detM = np.linalg.det(mass)
     Mx0 = np.einsum("nij,nj->ni", mass, x0)

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ...checks import count
+from ...checks import count, finite_array
 from ..shell_coefficients import ShellParameters
 from .modal import _beam_shapes, _edge_argument
 
@@ -80,8 +80,8 @@ def displacement_fields(result: SimulationResult, xi: Any, theta: Any,
     Tech Memo 104, eqs. (4.1-3)..(4.1-7), (5.2-1), (5.3-2)..(5.3-4).
     """
     p = result.params
-    xi = np.atleast_1d(np.asarray(xi, dtype=float))
-    theta = np.atleast_1d(np.asarray(theta, dtype=float))
+    xi = np.atleast_1d(finite_array("xi", xi))
+    theta = np.atleast_1d(finite_array("theta", theta))
     if np.any(xi < p.a - 1e-12) or np.any(xi > p.b + 1e-12):
         raise ValueError(f"xi: must lie in [a, b] = [{p.a}, {p.b}]")
     order = count("order", order, 0, 4)

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ...checks import count, positive
+from ...checks import count, finite, positive
 from ..model import BoosterModel
 from .excitation import (
     Excitation,
@@ -268,6 +268,7 @@ def secular_rates(model: BoosterModel, rows: list[dict], psi0: float = 0.01,
     """
     N = count("N", model.truncation.N if N is None else N, 0)
     S = count("S", model.truncation.S if S is None else S, 0)
+    psi0, beam_amplitude = finite("psi0", psi0), finite("beam_amplitude", beam_amplitude)
     if not rows:
         return []
     Om = np.array([float(x["Omega_rad_s"]) for x in rows])
