@@ -101,9 +101,6 @@ def _model():
 
 #: A matrix of NaN in flexbooster.floquet: its ValueError prints the whole array (several
 #: lines) instead of one line (floquet/multipliers.py _matrix: f"{name} = {a!r}").
-_MULTILINE = "floquet's matrix check prints a multi-line array repr (owner: bands2)"
-
-
 #: (id, parameter the message must name, call).  Source: the issue's list of bad calls (the
 #: four named ones first: reduced_exponents([nan]), characteristic_exponent(1e12, 0.01),
 #: psi_numerical([0, nan]) and mass_properties(R1=nan)) and one probe per rule of each public
@@ -436,14 +433,11 @@ API_CALLS = [
      lambda: fregions.critical_amplitude(_M2, _C2, _A2, _B2, gamma_max=0.5, omega_min=-1.,
                                          omega_max=5.)),
     pytest.param("periodic_boundaries-A-nan", "A",
-                 lambda: fhill.periodic_boundaries(_M2, _C2, _NAN2, _B2),
-                 marks=pytest.mark.xfail(reason=_MULTILINE, strict=False)),
+                 lambda: fhill.periodic_boundaries(_M2, _C2, _NAN2, _B2)),
     pytest.param("steady_frequencies-M-nan", "M",
-                 lambda: fmult.steady_frequencies(_NAN2, _A2),
-                 marks=pytest.mark.xfail(reason=_MULTILINE, strict=False)),
+                 lambda: fmult.steady_frequencies(_NAN2, _A2)),
     pytest.param("stability_certificate-B-nan", "B",
-                 lambda: fbounds.stability_certificate(_M2, _C2, _A2, _NAN2),
-                 marks=pytest.mark.xfail(reason=_MULTILINE, strict=False)),
+                 lambda: fbounds.stability_certificate(_M2, _C2, _A2, _NAN2)),
     ("forced_axial-F0-nan", "F0",
      lambda: vaxial.forced_axial(_vehicle(), F0=nan, omega_min=1., omega_max=10.)),
     ("forced_axial-range", "omega_max",
@@ -1111,9 +1105,13 @@ def test_fuzz_reproducer_damping_caps_overflow():
     assert isinstance(bands, tuple)
 
 
-#: Still open after the merge of bands2's fixes (run 2's failures rerun on the merged code):
-#: another rigid-pitch tongue whose edges do not converge ("pitch tongue near Omega_bar =
-#: 1.234e-05: its edges did not converge with 24 harmonics", 3 cases), owner bands2.
+#: Found by `make fuzz` (run 2, 3 cases; fixed on main by the lead): a rigid-pitch tongue at
+#: Omega_bar = 1.2e-5 whose harmonic-balance edges wander by ~3e-6 (round-off: the eigenproblem
+#: spans omega_beam / Omega ~ 1e5) and whose tongues r >= 3 lie wholly below their tips
+#: ("its edges did not converge with 24 harmonics").  Independent reference: the beam is rigid
+#: at this Omega (coupling O((Omega / omega_1)^2) ~ 1e-10), so the coupled tongues equal the
+#: rigid-pitch Mathieu tongues of memo.pitch.pitch_bands (transition curves, scipy), to the
+#: round-off floor TONGUE_RTOL_FLOOR = 1e-4 (measured <= 3e-5).
 _FUZZ_TONGUE_2 = {
     "name": "fuzz",
     "booster": {"cylinder1": {"radius": 2.925272795572987,
@@ -1130,21 +1128,29 @@ _FUZZ_TONGUE_2 = {
 }
 
 
-@pytest.mark.xfail(reason="beam-action pitch tongue edges do not converge at Omega_bar 1.2e-5 "
-                          "(bands2; docstring)", raises=ValueError, strict=False)
 def test_fuzz_reproducer_pitch_tongue_edges_after_merge():
     from flexbooster._threads import blas_threads
+    from flexbooster.memo import pitch
 
     model = cost.derived_model(flexbooster.load_case(_FUZZ_TONGUE_2))
     with blas_threads(1):
         bands = ba.pipeline_bands(model)
-    assert all(math.isfinite(b.growth_rate_max) for b in bands)
+        system = ba.beam_system(model)
+        wp = float(ba.loaded_frequencies(system)[ba._pitch_mode(system)].real) * system.omega_1
+    ref = {b.tongue: b for b in pitch.pitch_bands(wp, model.gamma, omega_min=model.Omega[0],
+                                                  omega_max=model.Omega[-1])}
+    assert [b.order for b in bands] == [6, 5, 4, 3, 2, 1]  # wider than twice the edge wander
+    for b in bands:
+        assert math.isfinite(b.growth_rate_max) and b.growth_rate_max > 0.0
+        assert b.omega_lo == pytest.approx(ref[b.order].omega_lo, rel=1e-4)
+        assert b.omega_hi == pytest.approx(ref[b.order].omega_hi, rel=1e-4)
 
 
-#: Still open after the merge: numpy's ComplexWarning "Casting complex values to real discards
-#: the imaginary part" in the beam-action monodromy (beam_action.py _monodromy_half, from
-#: _multipliers, monodromy_exponents), F0 = 1.8e9 N at Omega = 0.51 rad/s, K ~ 1e-31
-#: (2 cases), owner bands2.
+#: Found by `make fuzz` (run 3, 2 cases; fixed on main): numpy's ComplexWarning "Casting complex
+#: values to real discards the imaginary part" in the beam-action monodromy, F0 = 1.8e9 N at
+#: Omega = 0.51 rad/s (a steady mu < 0: complex rotations stored into a real array).  The
+#: period map of this case is beyond double precision: the documented PeriodMapOverflowError
+#: (a one-line thrust.F0 CaseError in the pipeline), with no warning on the way.
 _FUZZ_COMPLEX_CAST = {
     "name": "fuzz",
     "booster": {"cylinder1": {"radius": 1.0,
@@ -1161,8 +1167,6 @@ _FUZZ_COMPLEX_CAST = {
 }
 
 
-@pytest.mark.xfail(reason="ComplexWarning in the beam-action monodromy (bands2; docstring)",
-                   raises=RuntimeWarning, strict=False)
 def test_fuzz_reproducer_monodromy_complex_cast():
     model = cost.derived_model(flexbooster.load_case(_FUZZ_COMPLEX_CAST))
     system = ba.beam_system(model)

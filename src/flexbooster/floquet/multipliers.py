@@ -45,7 +45,7 @@ def _matrix(name: str, value, n: int | None) -> np.ndarray:
     try:
         a = np.asarray(value, dtype=float)
     except (TypeError, ValueError):
-        raise ValueError(f"{name} = {value!r}: must be a real square matrix") from None
+        raise ValueError(f"{name} = {_one_line(value)}: must be a real square matrix") from None
     if a.ndim == 0 and n is not None and a == 0.0:
         return np.zeros((n, n))
     if a.ndim != 2 or a.shape[0] != a.shape[1] or a.shape[0] == 0:
@@ -53,8 +53,16 @@ def _matrix(name: str, value, n: int | None) -> np.ndarray:
     if n is not None and a.shape[0] != n:
         raise ValueError(f"{name} = shape {a.shape}: must be ({n}, {n}) like M")
     if not np.all(np.isfinite(a)):
-        raise ValueError(f"{name} = {a!r}: must be finite")
+        bad = np.argwhere(~np.isfinite(a))[0]
+        raise ValueError(f"{name} = a matrix with {name}[{bad[0]}, {bad[1]}] = "
+                         f"{a[tuple(bad)]!r}: must be finite")
     return a
+
+
+def _one_line(value) -> str:
+    """repr of a value on one line, cut to 60 characters (error messages: one line)."""
+    text = " ".join(repr(value).split())
+    return text if len(text) <= 60 else text[:57] + "..."
 
 
 @dataclass(frozen=True)
