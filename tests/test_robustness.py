@@ -8,6 +8,7 @@ monodromy with 4x the steps (the cap's error), and the classical buckling load
 
 from __future__ import annotations
 
+import copy
 import functools
 import json
 import math
@@ -1177,3 +1178,49 @@ def test_fuzz_reproducer_monodromy_complex_cast():
         except ba.PeriodMapOverflowError:
             return  # a documented refusal would do
     assert np.all(np.isfinite(alpha))
+
+
+#: Found by `make fuzz` (run 3; fixed on main): two cases of one booster family whose band
+#: search raised "boundary refinement: no convergence in 200 iterations" (an indicator at
+#: round-off made the Illinois steps stagnate; the refinement now bisects after 100 steps) or
+#: warned "invalid value encountered in divide" (floquet/narrow.py, a degenerate pair, left
+#: unresolved).  Expected: the bands, finite, inside the range, no numpy warning.
+_FUZZ_BAND_FAMILY = {
+    "name": "fuzz", "max_seconds": 60.0,
+    "booster": {"cylinder1": {"radius": 0.8980151915743234, "half_length": 7.1137617806233875},
+                "cylinder2": {"radius": 10.284566596236784, "half_length": 1.0},
+                "thickness": 0.021183693702444117, "E": 234914692.39445078,
+                "nu": 0.21354898513162032, "rho": 3090.0172524341997},
+    "thrust": {"gamma": 0.5861595299963237, "K": 1.964513842976071e-48, "omega_min": 1.0,
+               "omega_max": 79.28955139017945, "n_omega": 4, "F0": 4952.066644173183},
+    "truncation": {"M1": 4, "N1": 4, "M2": 4, "N2": 2, "N": 4, "S": 2, "R": 3},
+    "damping": {"beam_modal_ratio": 0.0, "pitch_ratio": 0.0},
+}
+
+
+@pytest.mark.parametrize("change", [
+    {},  # narrow.py divide warning
+    {"booster": {"cylinder2": {"half_length": 7.1137617806233875},
+                 "thickness": 8.980151915743235e-05},
+     "thrust": {"omega_min": 10.284566596236784, "omega_max": 815.4586716580395}},  # Illinois
+], ids=["narrow-degenerate-pair", "refinement-stagnation"])
+def test_fuzz_reproducer_band_refinement(change):
+    from flexbooster._threads import blas_threads
+
+    data = copy.deepcopy(_FUZZ_BAND_FAMILY)
+    for table, values in change.items():
+        for key, value in values.items():
+            if isinstance(value, dict):
+                data[table][key].update(value)
+            else:
+                data[table][key] = value
+    model = cost.derived_model(flexbooster.load_case(data))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        with blas_threads(1):
+            bands = ba.pipeline_bands(model)
+    lo, hi = float(model.Omega[0]), float(model.Omega[-1])
+    assert bands
+    for b in bands:
+        assert all(math.isfinite(v) for v in (b.omega_lo, b.omega_hi, b.growth_rate_max))
+        assert lo <= b.omega_lo <= b.omega_hi <= hi and b.growth_rate_max > 0.0

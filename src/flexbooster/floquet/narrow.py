@@ -197,11 +197,13 @@ def _discriminant(mu, Bt, om, lam0, ia, ib, pa, pb, s_min, h, n_fix):
              - S0[:, 0, 1] * S1[:, 1, 0] - S1[:, 0, 1] * S0[:, 1, 0])
         p11, p12 = S0[:, 0, 0] * S0[:, 1, 1], S0[:, 0, 1] * S0[:, 1, 0]
         c = p11 - p12
-        xm = -b / (2.0 * a)
+        with np.errstate(divide="ignore", invalid="ignore"):  # a = 0: NaN, left unresolved
+            xm = -b / (2.0 * a)
         lam0 = lam0 + xm  # the pair's midpoint (fixed point; the last one is returned)
-    D = (b * b - 4.0 * a * c) / (a * a)  # (lambda_1 - lambda_2)^2, module docstring
-    err = 16.0 * _EPS * (np.abs(b) ** 2 + 4.0 * np.abs(a) * (np.abs(p11) + np.abs(p12))) \
-        / np.abs(a) ** 2
+    with np.errstate(divide="ignore", invalid="ignore"):
+        D = (b * b - 4.0 * a * c) / (a * a)  # (lambda_1 - lambda_2)^2, module docstring
+        err = 16.0 * _EPS * (np.abs(b) ** 2 + 4.0 * np.abs(a) * (np.abs(p11) + np.abs(p12))) \
+            / np.abs(a) ** 2
     return D, lam0, err
 
 

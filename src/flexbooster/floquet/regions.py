@@ -521,12 +521,15 @@ def _illinois(f, x_in: np.ndarray, f_in: np.ndarray, x_out: np.ndarray, f_out: n
     """
     a, fa, b, fb = x_in.copy(), f_in.copy(), x_out.copy(), f_out.copy()
     last = np.zeros(a.size, dtype=int)  # which end moved last (+1 a, -1 b)
-    for _ in range(max_iter):
+    for it in range(max_iter):
         act = np.nonzero(np.abs(b - a) > xtol)[0]
         if act.size == 0:
             return 0.5 * (a + b)
         A_, FA, B_, FB = a[act], fa[act], b[act], fb[act]
-        x = np.where(FA != FB, B_ - FB * (B_ - A_) / (FB - FA), 0.5 * (A_ + B_))
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+            x = np.where(FA != FB, B_ - FB * (B_ - A_) / (FB - FA), 0.5 * (A_ + B_))
+        if it >= max_iter // 2:  # stagnating (an indicator at round-off): bisect, which
+            x = 0.5 * (A_ + B_)  # halves the bracket each step (2^-100: converged surely)
         lo_, hi_ = np.minimum(A_, B_), np.maximum(A_, B_)
         x = np.where((x > lo_) & (x < hi_), x, 0.5 * (A_ + B_))
         # keep the new point at least xtol/2 inside so that the bracket always shrinks
