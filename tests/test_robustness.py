@@ -1224,3 +1224,42 @@ def test_fuzz_reproducer_band_refinement(change):
     for b in bands:
         assert all(math.isfinite(v) for v in (b.omega_lo, b.omega_hi, b.growth_rate_max))
         assert lo <= b.omega_lo <= b.omega_hi <= hi and b.growth_rate_max > 0.0
+
+
+#: Found by `make fuzz` (run 3, 3 cases; fixed on main): a pitch tongue at Omega_bar = 1.7e-6
+#: (beam modes 6e5 above it), where the coupled harmonic balance wanders by ~1e-4 (round-off
+#: ~eps (omega_beam / Omega)^2) and never converges; the tongue is then the pitch mode's own
+#: (its coupling to the beam is far below round-off there).  Reference: the rigid-pitch Mathieu
+#: tongues of memo.pitch.pitch_bands (an independent model: the memo's rigid pitch), to 1e-3
+#: (measured 2e-4: the models differ by the beam's quasi-static share of the pitch stiffness).
+_FUZZ_TONGUE_3 = {
+    "name": "fuzz", "max_seconds": 60.0,
+    "booster": {"cylinder1": {"radius": 25.62498546701117, "half_length": 1.0},
+                "cylinder2": {"radius": 1.523817479332318, "half_length": 1.0},
+                "thickness": 0.48187339730666806, "E": 21663004911.774452,
+                "nu": 0.13285961197478602, "rho": 10.0},
+    "thrust": {"gamma": 0.6018728869494888, "K": 4.798387400155345,
+               "omega_min": 1.000000002302585, "omega_max": 40.08261322246499, "n_omega": 6,
+               "F0": 375499.55846025405},
+    "truncation": {"M1": 3, "N1": 1, "M2": 1, "N2": 1, "N": 4, "S": 0, "R": 2},
+    "damping": {"beam_modal_ratio": 0.0, "pitch_ratio": 0.0},
+}
+
+
+def test_fuzz_reproducer_pitch_tongue_far_below_the_beam():
+    from flexbooster._threads import blas_threads
+    from flexbooster.memo import pitch
+
+    model = cost.derived_model(flexbooster.load_case(_FUZZ_TONGUE_3))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        with blas_threads(1):
+            bands = ba.pipeline_bands(model)
+    system = ba.beam_system(model)
+    wp = float(ba.loaded_frequencies(system)[ba._pitch_mode(system)].real) * system.omega_1
+    ref = {b.tongue: b for b in pitch.pitch_bands(wp, model.gamma, omega_min=model.Omega[0],
+                                                  omega_max=model.Omega[-1])}
+    assert [b.order for b in bands] == [3, 2, 1]
+    for b in bands:
+        assert b.omega_lo == pytest.approx(ref[b.order].omega_lo, rel=1e-3)
+        assert b.omega_hi == pytest.approx(ref[b.order].omega_hi, rel=1e-3)

@@ -1336,8 +1336,16 @@ def pitch_tongue_bands(system: BeamActionSystem, gamma: float, *, omega_min: flo
         def edges(g, harmonics=None, centre=centre, window=window, period=period):
             guess = _pitch_only_edges(mu_p, g * b_p, c_p, period=period, centre=centre,
                                       window=window)
-            return _tongue_edges(A, C, -g * system.B, period=period, centre=centre,
-                                 window=window, rtol=rtol, harmonics=harmonics, guess=guess)
+            if harmonics == (0,):
+                return guess, 0
+            try:
+                return _tongue_edges(A, C, -g * system.B, period=period, centre=centre,
+                                     window=window, rtol=rtol, harmonics=harmonics,
+                                     guess=guess)
+            except ValueError:  # round-off beyond TONGUE_RTOL_FLOOR (Omega_bar ~ 1e-6: the
+                if guess is None:  # beam modes 1e6 above): the pitch mode alone, whose
+                    raise  # coupling to them is O((Omega / omega_beam)^2), below round-off
+                return guess, 0
 
         e, K = edges(gamma)
         if e is None:
