@@ -655,11 +655,12 @@ def _monodromy_half(mu: np.ndarray, Bt: np.ndarray, Ob: np.ndarray, gam: np.ndar
     x[idx, :, idx] = 1.0
     v[idx, :, n + idx] = 1.0
     out = np.empty((P, 2 * n, 2 * n), dtype=dtype)
-    ends = np.searchsorted(-n_steps, -np.arange(int(n_steps[0]) + 1), side="left")
     p = P  # the points still integrating: a prefix, as the counts descend
     for k in range(int(n_steps[0])):  # Lawson (integrating-factor) RK4, Lawson (1967)
-        if ends[k] < p:  # points whose k steps are done: store them, shrink the batch
-            q = ends[k]
+        q = p
+        while q > 0 and n_steps[q - 1] <= k:  # points whose k steps are done
+            q -= 1
+        if q < p:  # store them, shrink the batch
             out[q:p] = np.concatenate([x[:, q:p], v[:, q:p]], axis=0).transpose(1, 0, 2)
             p = q
             x, v = x[:, :p], v[:, :p]
@@ -906,6 +907,12 @@ class BeamActionBand:
                 "critical_gamma": float(self.critical_gamma)}
 
 
+def _pitch_column(V: np.ndarray) -> int:
+    """Column of the steady eigenvectors V with the largest relative q_B (rigid rotation,
+    last in q) component: the rigid-pitch mode."""
+    return int(np.argmax(np.abs(V[-1, :]) / np.linalg.norm(V, axis=0)))
+
+
 def modal_damping(system: BeamActionSystem, *, beam_ratio: float = 0.0,
                   pitch_ratio: float = 0.0) -> np.ndarray | None:
     """Damping matrix C of q'' + C q' + [Lambda + f(tau) B] q = 0, modal in the steady system.
@@ -942,9 +949,8 @@ def modal_damping(system: BeamActionSystem, *, beam_ratio: float = 0.0,
         return None
     mu, V = np.linalg.eig(system.A0)
     V = V.astype(complex)
-    rel = np.abs(V[-1, :]) / np.linalg.norm(V, axis=0)
     zeta = np.full(mu.size, zb)
-    zeta[int(np.argmax(rel))] = zp
+    zeta[_pitch_column(V)] = zp
     w = np.sqrt(mu.astype(complex))
     C = (V * (2.0 * zeta * w)[None, :]) @ np.linalg.inv(V)  # C = V diag(2 zeta w) V^-1
     return np.ascontiguousarray(C.real)
@@ -1148,9 +1154,8 @@ TONGUE_HILL_HARMONICS = 4
 def _pitch_mode(system: BeamActionSystem) -> int:
     """Index (ascending frequency) of the steady mode with the largest rigid-rotation share."""
     mu, V = np.linalg.eig(system.A0)
-    rel = np.abs(V[-1, :]) / np.linalg.norm(V, axis=0)  # as modal_damping
     w = np.sqrt(mu.astype(complex))
-    return int(np.flatnonzero(np.argsort(w.real, kind="stable") == int(np.argmax(rel)))[0])
+    return int(np.flatnonzero(np.argsort(w.real, kind="stable") == _pitch_column(V))[0])
 
 
 def _nearest_pair(r: np.ndarray, ref: tuple[float, float]) -> tuple[float, float] | None:
@@ -1319,7 +1324,7 @@ def pitch_tongue_bands(system: BeamActionSystem, gamma: float, *, omega_min: flo
     A = system.A0
     # the pitch mode alone in the steady modal frame (the guide of each tongue's search)
     mu, V = np.linalg.eig(A)
-    ip = int(np.argmax(np.abs(V[-1, :]) / np.linalg.norm(V, axis=0)))  # as _pitch_mode
+    ip = _pitch_column(V)
     Vi = np.linalg.inv(V)
     mu_p = float(mu[ip].real)
     b_p = float((Vi @ system.B @ V)[ip, ip].real)
