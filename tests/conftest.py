@@ -3,12 +3,29 @@
 from __future__ import annotations
 
 import copy
+import signal
 import tomllib
 
 import matplotlib
 import pytest
 
 matplotlib.use("Agg")
+
+
+@pytest.fixture(autouse=True, scope="session")
+def _sigint_raises_keyboard_interrupt():
+    """Ctrl-C's usual action in the test process and the commands it starts.
+
+    A non-interactive shell starts a background job (``make test &``, ``nohup``) with SIGINT
+    ignored (POSIX), Python then installs no KeyboardInterrupt handler, and the ignore is
+    inherited by every ``flexbooster`` the tests start: the tests that interrupt a run (issue
+    18) then saw exit 0 instead of 130.  The flexbooster command itself is right to keep an
+    inherited ignore (a background job must not die by the terminal's Ctrl-C); the tests need
+    the interactive disposition, which a child started from here inherits as SIG_DFL.
+    """
+    if signal.getsignal(signal.SIGINT) == signal.SIG_IGN:
+        signal.signal(signal.SIGINT, signal.default_int_handler)
+    yield
 
 
 @pytest.fixture
