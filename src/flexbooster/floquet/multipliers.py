@@ -276,8 +276,14 @@ def _rotation(mu: np.ndarray, t: np.ndarray) -> tuple[np.ndarray, ...]:
     return np.cos(wt), sn, -mu * sn
 
 
-def _half_modal(system: LinearPeriodicSystem, om: np.ndarray, n_steps: int) -> np.ndarray:
-    """Phi(T/2) in modal coordinates (eta, eta'), shape (P, 2n, 2n); Lawson RK4."""
+def _half_modal(system: LinearPeriodicSystem, om: np.ndarray, n_steps: np.ndarray) -> np.ndarray:
+    """Phi(T/2) in modal coordinates (eta, eta'), shape (P, 2n, 2n); Lawson RK4.
+
+    ``n_steps`` (P,) is each point's own step count, in descending order: all points advance
+    together and a point leaves the batch (its map stored) once its own count is done, so
+    the loop runs max(n_steps) times whatever the spread of the counts (the batch of
+    descending step counts of :mod:`flexbooster.memo.beam_action`).
+    """
     mu, Bt = system.mu, system.Bt
     real = np.all(mu.imag == 0.0) and np.isrealobj(Bt) and np.all(mu.real > 0.0)
     if real:
@@ -286,14 +292,6 @@ def _half_modal(system: LinearPeriodicSystem, om: np.ndarray, n_steps: int) -> n
     h = (np.pi / om) / n_steps
     c1, s1, m1 = (e.T[:, :, None] for e in _rotation(mu[None, :], h[:, None]))  # E(h)
     c2, s2, _ = (e.T[:, :, None] for e in _rotation(mu[None, :], 0.5 * h[:, None]))  # E(h/2)
-    hh = h[None, :, None]
-
-    # -cos(Omega t) at t = k h, (k + 1/2) h for k = 0..2 n_steps (the stage times)
-    ncos = -np.cos(om[None, :] * (0.5 * h[None, :]) * np.arange(2 * n_steps + 1)[:, None])
-
-    def force(m, x):  # eta'' = -mu eta - cos(Omega t) Bt eta at t = m h / 2
-        return ncos[m][None, :, None] * (Bt @ x.reshape(n, -1)).reshape(x.shape)
-
     dtype = complex if not real else float
     x = np.zeros((n, P, 2 * n), dtype=dtype)
     v = np.zeros((n, P, 2 * n), dtype=dtype)
@@ -301,28 +299,72 @@ def _half_modal(system: LinearPeriodicSystem, om: np.ndarray, n_steps: int) -> n
     x[idx, :, idx] = 1.0
     v[idx, :, n + idx] = 1.0
     with np.errstate(over="ignore", invalid="ignore"):  # overflow is reported by _finite
-        x, v = _lawson_modal(x, v, force, n_steps, c1, s1, m1, c2, s2, hh)
+        x, v = _lawson_modal(x, v, Bt, om * (0.5 * h), n_steps, c1, s1, m1, c2, s2,
+                             h[None, :, None])
     return np.concatenate([x, v], axis=0).transpose(1, 0, 2)
 
 
-def _lawson_modal(x, v, force, n_steps, c1, s1, m1, c2, s2, hh):
-    """The Lawson RK4 loop of :func:`_half_modal` (returns the final x, v)."""
-    hs2h, hs2 = 0.5 * hh * s2, hh * s2
+def _lawson_modal(x, v, Bt, phase, n_steps, c1, s1, m1, c2, s2, hh):
+    """The Lawson RK4 loop of :func:`_half_modal` (returns the final x, v of every point).
+
+    eta'' = -mu eta - cos(Omega t) Bt eta; ``phase`` (P,) is Omega h / 2, the stage times
+    are t = m h / 2.  The points are a prefix of the batch that shrinks as their (descending)
+    step counts are done.  The force of stage i is f_i Bt y (f_i = -cos(Omega t_i) per
+    point): the products Bt y are kept and f_i goes into the (mode, point) coefficients, and
+    the state is updated in place (the loop is bound by passes over (n, P, 2n) arrays).
+    """
+    out_x, out_v = np.empty_like(x), np.empty_like(v)
     h6 = hh / 6.0
-    h6s1, h6s2, h6c1, h6c2 = h6 * s1, 2.0 * h6 * s2, h6 * c1, 2.0 * h6 * c2
-    for k in range(n_steps):  # Lawson (1967) integrating-factor RK4
-        a1 = force(2 * k, x)  # k1 = N(t) z
-        p3 = c2 * x + s2 * v  # E(h/2) z (position part)
-        a2 = force(2 * k + 1, p3 + hs2h * a1)  # N E(h/2)(z + h/2 k1)
-        a3 = force(2 * k + 1, p3)  # N [E(h/2) z + h/2 k2] (k2 has no position part)
-        xf = c1 * x + s1 * v  # E(h) z
-        vf = m1 * x + c1 * v
-        a4 = force(2 * k + 2, xf + hs2 * a3)  # N [E(h) z + h E(h/2) k3]
-        a23 = a2 + a3
+    coef = [c1, s1, m1, c2, s2, 0.5 * hh * s2, hh * s2, h6, h6 * s1, 2.0 * h6 * s2, h6 * c1,
+            2.0 * h6 * c2]
+    p = x.shape[1]  # the points still integrating
+    buf = ()
+    for k in range(int(n_steps[0]) if p else 0):  # Lawson (1967) integrating-factor RK4
+        q = p
+        while q > 0 and n_steps[q - 1] <= k:  # points whose own steps are done
+            q -= 1
+        if q < p:  # store them, shrink the batch
+            out_x[:, q:p], out_v[:, q:p] = x[:, q:p], v[:, q:p]
+            p = q
+            x, v = np.ascontiguousarray(x[:, :p]), np.ascontiguousarray(v[:, :p])
+            phase, coef, buf = phase[:p], [a[:, :p] for a in coef], ()
+        if not buf:
+            buf = tuple(np.empty_like(x) for _ in range(7))
+        c1, s1, m1, c2, s2, hs2h, hs2, h6, h6s1, h6s2, h6c1, h6c2 = coef
+        g1, g2, g3, p3, xf, vf, t = buf
+        # -cos(Omega t) at the stage times t = k h, (k + 1/2) h, (k + 1) h
+        f0, f1, f2 = (-np.cos(phase * m)[None, :, None] for m in (2 * k, 2 * k + 1, 2 * k + 2))
+        _gemm(Bt, x, g1)  # k1 = N(t) z = f0 g1
+        np.multiply(c2, x, out=p3)  # E(h/2) z (position part)
+        p3 += np.multiply(s2, v, out=t)
+        np.multiply(hs2h * f0, g1, out=t)
+        t += p3
+        _gemm(Bt, t, g2)  # k2 = N E(h/2)(z + h/2 k1) = f1 g2
+        _gemm(Bt, p3, g3)  # k3 = N [E(h/2) z + h/2 k2] = f1 g3 (k2 has no position part)
+        np.multiply(c1, x, out=xf)  # E(h) z
+        xf += np.multiply(s1, v, out=t)
+        np.multiply(m1, x, out=vf)
+        vf += np.multiply(c1, v, out=t)
+        np.multiply(hs2 * f1, g3, out=t)
+        t += xf
+        _gemm(Bt, t, p3)  # k4 = N [E(h) z + h E(h/2) k3] = f2 p3
+        g2 += g3
         # z_new = E(h) z + h/6 [E(h) k1 + 2 E(h/2)(k2 + k3) + k4]   (Lawson 1967)
-        x = xf + h6s1 * a1 + h6s2 * a23
-        v = vf + h6c1 * a1 + h6c2 * a23 + h6 * a4
-    return x, v
+        np.multiply(h6s1 * f0, g1, out=x)
+        x += xf
+        x += np.multiply(h6s2 * f1, g2, out=t)
+        np.multiply(h6c1 * f0, g1, out=v)
+        v += vf
+        v += np.multiply(h6c2 * f1, g2, out=t)
+        v += np.multiply(h6 * f2, p3, out=t)
+    out_x[:, :p], out_v[:, :p] = x, v
+    return out_x, out_v
+
+
+def _gemm(Bt: np.ndarray, y: np.ndarray, out: np.ndarray) -> None:
+    """out = Bt y over the mode axis of (n, P, 2n) arrays: one GEMM Bt @ (n, P 2n)."""
+    n = Bt.shape[0]
+    np.matmul(Bt, y.reshape(n, -1), out=out.reshape(n, -1))
 
 
 def _period_dense(system: LinearPeriodicSystem, om: np.ndarray, n_steps: int,
@@ -379,18 +421,22 @@ def _merge_steps(steps: np.ndarray, n: int) -> np.ndarray:
 
 def _half_maps(system: LinearPeriodicSystem, om: np.ndarray, steps: np.ndarray,
                chunk: int) -> np.ndarray:
-    """Phi(T/2) (modal frame if available), batched by equal step counts."""
+    """Phi(T/2) (modal frame if available); modal kernel: batches of descending step counts
+    (each point with its own count), dense kernel: batched by equal step counts."""
     n = system.n
     out = np.empty((om.size, 2 * n, 2 * n), dtype=complex)
+    if system.Bt is not None:
+        order = np.argsort(-steps, kind="stable")
+        for start in range(0, order.size, chunk):
+            sel = order[start:start + chunk]
+            out[sel] = _half_modal(system, om[sel], steps[sel])
+        return _finite(out, om)
     steps = _merge_steps(steps, n)
     for ns in np.unique(steps):
         where = np.nonzero(steps == ns)[0]
         for start in range(0, where.size, chunk):
             sel = where[start:start + chunk]
-            if system.Bt is not None:
-                out[sel] = _half_modal(system, om[sel], int(ns))
-            else:
-                out[sel] = _period_dense(system, om[sel], int(ns), True)
+            out[sel] = _period_dense(system, om[sel], int(ns), True)
     return _finite(out, om)
 
 
@@ -440,11 +486,22 @@ def _s_values_from_half(Phi: np.ndarray) -> np.ndarray:
 def _s_sets_from_half(Phi: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """s, s - 2 and s + 2 from the half-period map, the shifted ones without cancellation.
 
+    Returns (s, s - 2, s + 2), each (P, n), each set in its own order: the eigenvalues of
+    the matrices of :func:`_s_matrices`.
+    """
+    S, Xp, Xm = _s_matrices(Phi)
+    return np.linalg.eigvals(S), np.linalg.eigvals(Xp), np.linalg.eigvals(Xm)
+
+
+def _s_matrices(Phi: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """2 U_11, 2 (U_11 - I), 2 (U_11 + I) from the half-period map, the last two without
+    cancellation: the matrices whose eigenvalues are s, s - 2 and s + 2.
+
     With P = Phi(T/2)^-1: U - I = Phi (R - I) P and U + I = Phi (R + I) P, so
     s - 2 = eig(-4 Phi_12 P_21) and s + 2 = eig(4 Phi_11 P_11): near rho = +1 (-1) the
     small eigenvalue is a product of small factors, accurate relative to itself in the modal
     frame of a weakly coupled system, where 2 U_11 - 2 I would lose it to cancellation.
-    Returns (s, s - 2, s + 2), each (P, n), each set in its own order.
+    Each (P, n, n).
     """
     n = Phi.shape[-1] // 2
     if np.iscomplexobj(Phi) and not np.any(Phi.imag):
@@ -453,7 +510,7 @@ def _s_sets_from_half(Phi: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarr
     Xm = 4.0 * Phi[:, :n, :n] @ Pinv[:, :n, :n]  # 2 (U_11 + I)
     Xp = -4.0 * Phi[:, :n, n:] @ Pinv[:, n:, :n]  # 2 (U_11 - I)
     S = 0.5 * (Xp + Xm)  # 2 U_11
-    return np.linalg.eigvals(S), np.linalg.eigvals(Xp), np.linalg.eigvals(Xm)
+    return S, Xp, Xm
 
 
 def _rho_max_from_sets(xp: np.ndarray, xm: np.ndarray) -> np.ndarray:

@@ -126,23 +126,29 @@ def _block_solve_t(Di, Up, Lo, R):
     return Y
 
 
-def _discriminant(mu, Bt, om, lam0, ia, ib, pa, pb, s_min, h, n_fix):
+def _discriminant(mu, Bt, om, nu0, ia, ib, pa, pb, s_min, h, n_fix):
     """D(Omega) and the pair's midpoint for a batch (one Omega per entry).
 
-    Returns (D, lam0, err): D complex (real for the undamped system), the midpoint, and an
-    estimate of the round-off error of D.
+    The exponents are written lambda = i nu: Hill's blocks at lambda = i nu are
+    diag(mu) - (nu + s Omega)^2 with the derivative -2 (nu + s Omega) in nu, real for the
+    undamped system with a real modal frame (Bolotin 1964, sec. 7-8), so the batch is solved
+    in real arithmetic.  With det(S_0 + y S') = a y^2 + b y + c (y = nu - nu0, S' = dS/dnu)
+    the pair's roots are nu_1, nu_2 and D = (lambda_1 - lambda_2)^2 = -(nu_1 - nu_2)^2 =
+    -(b^2 - 4 a c) / a^2.  Returns (D, nu0, err): D (real for a real frame), the midpoint
+    nu0 (one fixed-point step per pass) and an estimate of the round-off error of D.
     """
     B = om.size
     n = mu.size
     rows = np.arange(B)
     s = s_min[:, None] + np.arange(h)[None, :]  # (B, h) absolute harmonics
-    half = 0.5 * Bt.astype(complex)
+    dtype = np.result_type(Bt, nu0, float)
+    half = 0.5 * Bt.astype(dtype)
     symmetric = bool(np.all(Bt == Bt.T))
     for _ in range(n_fix + 1):
-        z = lam0[:, None] + 1j * s * om[:, None]  # lambda + i s Omega, (B, h)
-        diag = mu[None, None, :] + z[:, :, None] ** 2  # Hill's blocks, Bolotin (1964) sec. 7-8
-        dd = 2.0 * z[:, :, None] * np.ones(n)[None, None, :]  # d/d lambda of the diagonal
-        Dg = np.zeros((B, h, n, n), dtype=complex)
+        z = nu0[:, None] + s * om[:, None]  # nu + s Omega, (B, h)
+        diag = mu[None, None, :] - z[:, :, None] ** 2  # Hill's blocks, Bolotin (1964) sec. 7-8
+        dd = -2.0 * z[:, :, None] * np.ones(n)[None, None, :]  # d/d nu of the diagonal
+        Dg = np.zeros((B, h, n, n), dtype=dtype)
         idx = np.arange(n)
         Dg[:, :, idx, idx] = diag
         Up = np.broadcast_to(half, (B, h - 1, n, n)).copy()
@@ -159,8 +165,8 @@ def _discriminant(mu, Bt, om, lam0, ia, ib, pa, pb, s_min, h, n_fix):
             Up[rows[dn], p_[dn] - 1, :, i_[dn]] = 0.0
             Lo[rows[dn], p_[dn] - 1, i_[dn], :] = 0.0
         # T_QP (columns of the P components, P rows zero) and T_PQ^T
-        R = np.zeros((B, h, n, 2), dtype=complex)
-        Lt = np.zeros((B, h, n, 2), dtype=complex)
+        R = np.zeros((B, h, n, 2), dtype=dtype)
+        Lt = np.zeros((B, h, n, 2), dtype=dtype)
         for c, (p_, i_) in enumerate(((pa, ia), (pb, ib))):
             for dp in (-1, 1):
                 q = p_ + dp
@@ -177,51 +183,51 @@ def _discriminant(mu, Bt, om, lam0, ia, ib, pa, pb, s_min, h, n_fix):
         else:
             Y = _block_solve_t(Di, Up, Lo, Lt)  # (T_PQ T_QQ^-1)^T
         # S_0 = T_PP - T_PQ X, S' = T_PP' + Y^T diag(T_QQ') X  (Loewdin partitioning)
-        tpp = np.zeros((B, 2, 2), dtype=complex)
+        tpp = np.zeros((B, 2, 2), dtype=dtype)
         tpp[:, 0, 0] = diag[rows, pa, ia]
         tpp[:, 1, 1] = diag[rows, pb, ib]
         adj = (pa - pb == 1) | (pb - pa == 1)  # j = 1: the pair couples directly
         tpp[:, 0, 1] = np.where(adj, half[ia, ib], 0.0)
         tpp[:, 1, 0] = np.where(adj, half[ib, ia], 0.0)
         S0 = tpp - np.einsum("bhnc,bhnd->bcd", Lt, X)  # Loewdin (1963) partitioning
-        dpp = np.zeros((B, 2, 2), dtype=complex)
+        dpp = np.zeros((B, 2, 2), dtype=dtype)
         dpp[:, 0, 0] = dd[rows, pa, ia]
         dpp[:, 1, 1] = dd[rows, pb, ib]
         mask = np.ones((B, h, n))
         mask[rows, pa, ia] = 0.0
         mask[rows, pb, ib] = 0.0
         S1 = dpp + np.einsum("bhnc,bhn,bhnd->bcd", Y, dd * mask, X)
-        # det(S0 + x S1) = a x^2 + b x + c
+        # det(S0 + y S1) = a y^2 + b y + c
         a = S1[:, 0, 0] * S1[:, 1, 1] - S1[:, 0, 1] * S1[:, 1, 0]
         b = (S0[:, 0, 0] * S1[:, 1, 1] + S1[:, 0, 0] * S0[:, 1, 1]
              - S0[:, 0, 1] * S1[:, 1, 0] - S1[:, 0, 1] * S0[:, 1, 0])
         p11, p12 = S0[:, 0, 0] * S0[:, 1, 1], S0[:, 0, 1] * S0[:, 1, 0]
         c = p11 - p12
         with np.errstate(divide="ignore", invalid="ignore"):  # a = 0: NaN, left unresolved
-            xm = -b / (2.0 * a)
-        lam0 = lam0 + xm  # the pair's midpoint (fixed point; the last one is returned)
+            ym = -b / (2.0 * a)
+        nu0 = nu0 + ym  # the pair's midpoint (fixed point; the last one is returned)
     with np.errstate(divide="ignore", invalid="ignore"):
-        D = (b * b - 4.0 * a * c) / (a * a)  # (lambda_1 - lambda_2)^2, module docstring
+        D = -(b * b - 4.0 * a * c) / (a * a)  # (lambda_1 - lambda_2)^2, module docstring
         err = 16.0 * _EPS * (np.abs(b) ** 2 + 4.0 * np.abs(a) * (np.abs(p11) + np.abs(p12))) \
             / np.abs(a) ** 2
-    return D, lam0, err
+    return D, nu0, err
 
 
-def _evaluate(mu, Bt, w, cand, om, L, lam0=None, n_fix=1):
-    """D at om (one per candidate entry) with harmonic margin L, from the midpoint lam0
-    (default: the midpoint of the two unperturbed exponents)."""
+def _evaluate(mu, Bt, w, cand, om, L, nu0=None, n_fix=1):
+    """D at om (one per candidate entry) with harmonic margin L, from the midpoint nu0
+    (lambda = i nu; default: the midpoint of the two unperturbed exponents)."""
     kind, i, k, j = cand["kind"], cand["i"], cand["k"], cand["j"]
     pa, pb, sga, sgb, s_min = _pair_layout(kind, j, L)
     h = int(np.max(j)) + 1 + 2 * L
-    if lam0 is None:
-        lam0 = 0.5j * ((sga * w[i] - (s_min + pa) * om) + (sgb * w[k] - (s_min + pb) * om))
-    return _discriminant(mu, Bt, om, lam0, i, k, pa, pb, s_min, h, n_fix)
+    if nu0 is None:
+        nu0 = 0.5 * ((sga * w[i] - (s_min + pa) * om) + (sgb * w[k] - (s_min + pb) * om))
+    return _discriminant(mu, Bt, om, nu0, i, k, pa, pb, s_min, h, n_fix)
 
 
 def _slope(cand, L):
-    """d lambda_mid / d Omega of the unperturbed pair (1j x -(s_a + s_b) / 2)."""
+    """d nu_mid / d Omega of the unperturbed pair (lambda = i nu): -(s_a + s_b) / 2."""
     pa, pb, _, _, s_min = _pair_layout(cand["kind"], cand["j"], L)
-    return -0.5j * ((s_min + pa) + (s_min + pb))
+    return -0.5 * ((s_min + pa) + (s_min + pb))
 
 
 def narrow_search(mu: np.ndarray, Bt: np.ndarray, cand: dict, *, max_iter: int = 16) -> dict:
@@ -301,13 +307,17 @@ def _vertex(mu, Bt, w, sub, L, max_iter):
     tiny = 1e-14 * Oc
     slope = _slope(sub, L)
     x3 = np.stack([Oc - h, Oc, Oc + h], axis=1)  # (P, 3) the latest points
-    a3 = np.concatenate([np.arange(P)] * 3)
-    D, mid, err = _evaluate(mu, Bt, w, {key: v[a3] for key, v in sub.items()}, x3.T.ravel(),
-                            L, None, n_fix=1)
-    D3 = D.real.reshape(3, P).T
-    e3 = err.reshape(3, P).T
-    lam = mid.reshape(3, P).T[:, 1].copy()  # the pair's midpoint at x3[:, 1]
-    lam_x = Oc.copy()
+    # the centre from the unperturbed midpoint (two fixed-point passes), the sides from the
+    # centre's midpoint moved along the unperturbed slope (one pass, as the later points)
+    Dc, nu, ec = _evaluate(mu, Bt, w, sub, Oc, L, None, n_fix=1)  # nu: lambda = i nu
+    nu = np.where(np.isfinite(nu), nu, 0.0)  # a degenerate pair (a = 0): D NaN, unresolved
+    a2 = np.concatenate([np.arange(P)] * 2)
+    Ds, _, es = _evaluate(mu, Bt, w, {key: v[a2] for key, v in sub.items()},
+                          np.concatenate([Oc - h, Oc + h]), L,
+                          np.concatenate([nu - slope * h, nu + slope * h]), n_fix=0)
+    D3 = np.stack([Ds[:P].real, Dc.real, Ds[P:].real], axis=1)
+    e3 = np.stack([es[:P], ec, es[P:]], axis=1)
+    nu_x = Oc.copy()
     xv = Oc.copy()
     Dv = np.full(P, -np.inf)
     half = np.zeros(P)
@@ -331,7 +341,7 @@ def _vertex(mu, Bt, w, sub, L, max_iter):
             fresh = ok & (near > tiny[act])  # a new point (else: converged on a point)
             ev = act[fresh]
             if ev.size:
-                start = lam[ev] + slope[ev] * (xn[fresh] - lam_x[ev])
+                start = nu[ev] + slope[ev] * (xn[fresh] - nu_x[ev])
                 Dn, mn, en = _evaluate(mu, Bt, w, {key: v[ev] for key, v in sub.items()},
                                        xn[fresh], L, start, n_fix=0)
                 rows = np.nonzero(fresh)[0]
@@ -340,7 +350,7 @@ def _vertex(mu, Bt, w, sub, L, max_iter):
                 e = e3[act]
                 e[rows, far] = en
                 x3[act], D3[act], e3[act] = X, Y, e
-                lam[ev], lam_x[ev] = mn, xn[fresh]
+                nu[ev], nu_x[ev] = mn, xn[fresh]
             # D at the vertex: the point nearest to it
             at = np.argmin(np.abs(X - xn[:, None]), axis=1)
             Dn_all = Y[np.arange(act.size), at]

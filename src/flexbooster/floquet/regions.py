@@ -54,6 +54,7 @@ from .multipliers import (
     _full_maps,
     _half_maps,
     _rho_max_from_sets,
+    _s_matrices,
     _s_sets_from_half,
     periodic_system,
     step_counts,
@@ -299,39 +300,53 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
 # --------------------------------------------------------------------------------------------
 def _s_values(system: LinearPeriodicSystem, om: np.ndarray, opt: _Options) -> tuple:
     """(s, s - 2, s + 2) at om (see :func:`.multipliers._s_sets_from_half`)."""
+    return _s_sets_from_half(_half_maps_at(system, om, opt))
+
+
+def _half_maps_at(system: LinearPeriodicSystem, om: np.ndarray, opt: _Options) -> np.ndarray:
+    """Phi(T/2) at om with the search's step counts."""
     steps = step_counts(system, om, step_phase=opt.step_phase, max_steps=opt.max_steps)
-    return _s_sets_from_half(_half_maps(system, om, steps, opt.chunk))
+    return _half_maps(system, om, steps, opt.chunk)
 
 
 def _indicator(system, w, cand, om, opt) -> np.ndarray:
-    """F per candidate at om (same length as the candidate arrays)."""
-    s, xp, xm = _s_values(system, om, opt)
+    """F per candidate at om (same length as the candidate arrays).
+
+    Each point needs one eigenvalue set: s (combination), s - 2 (simple, j even) or s + 2
+    (simple, j odd), so only that matrix of :func:`.multipliers._s_matrices` is decomposed.
+    """
+    mats = _s_matrices(_half_maps_at(system, om, opt))
     P = om.size
     rows = np.arange(P)
+    simple = cand["kind"] == 0
     sig = np.where(cand["j"] % 2 == 0, 1.0, -1.0)
+    which = np.where(simple, np.where(sig > 0.0, 1, 2), 0)  # S, Xp (s - 2) or Xm (s + 2)
+    ev = np.empty((P, mats[0].shape[-1]), dtype=complex)
+    for m, mat in enumerate(mats):
+        sel = np.nonzero(which == m)[0]
+        if sel.size:
+            ev[sel] = np.linalg.eigvals(mat[sel])
     # the s of each mode is tracked from its gamma -> 0 value 2 cos(2 pi omega / Omega)
     p_i = 2.0 * np.cos(2.0 * np.pi * w[cand["i"]] / om)
     p_k = 2.0 * np.cos(2.0 * np.pi * w[cand["k"]] / om)
-    d_i = np.abs(s - p_i[:, None])
-    first = np.argmin(d_i, axis=1)
     # simple: F = (-1)^j Re s_i - 2 > 0 where s_i is real beyond +-2 (rho = +-1 at F = 0),
     # taken from the shifted set s -+ 2 (no cancellation); a complex s_i belongs to a
     # combination pair: F <= -|Im s_i| there
-    x = np.where((sig > 0.0)[:, None], xp, xm)  # s - 2 sigma
-    near = np.argmin(np.abs(x + 2.0 * sig[:, None] - p_i[:, None]), axis=1)
-    x_i = x[rows, near]
+    near = np.argmin(np.abs(ev + 2.0 * sig[:, None] - p_i[:, None]), axis=1)
+    x_i = ev[rows, near]  # s - 2 sigma
     f_simple = sig * x_i.real  # sigma (s - 2 sigma) = sigma s - 2
     f_simple = np.where(x_i.imag == 0.0, f_simple, np.minimum(f_simple, -np.abs(x_i.imag)))
-    if s.shape[1] >= 2:
+    if ev.shape[1] >= 2:
         # combination: the s nearest to each prediction; F = -Re (s_a - s_b)^2 > 0 where the
         # pair is complex (left |rho| = 1), 0 where it collides on |rho| = 1
-        d_k = np.abs(s - p_k[:, None])
+        first = np.argmin(np.abs(ev - p_i[:, None]), axis=1)
+        d_k = np.abs(ev - p_k[:, None])
         d_k[rows, first] = np.inf
         second = np.argmin(d_k, axis=1)
-        f_comb = -((s[rows, first] - s[rows, second]) ** 2).real
+        f_comb = -((ev[rows, first] - ev[rows, second]) ** 2).real
     else:
         f_comb = np.full(P, -1.0)
-    return np.where(cand["kind"] == 0, f_simple, f_comb)
+    return np.where(simple, f_simple, f_comb)
 
 
 def _unstable_indicator(system, om, opt) -> np.ndarray:
@@ -355,8 +370,9 @@ def _unstable_indicator(system, om, opt) -> np.ndarray:
 
 
 def _growth_undamped(system, om, opt) -> np.ndarray:
-    _, xp, xm = _s_values(system, om, opt)
-    return np.log(_rho_max_from_sets(xp, xm)) * om / (2.0 * np.pi)  # log|rho|_max / T
+    _, Xp, Xm = _s_matrices(_half_maps_at(system, om, opt))
+    rho = _rho_max_from_sets(np.linalg.eigvals(Xp), np.linalg.eigvals(Xm))
+    return np.log(rho) * om / (2.0 * np.pi)  # log|rho|_max / T
 
 
 def _growth_damped(system, om, opt, scale=None) -> np.ndarray:
