@@ -242,6 +242,28 @@ def test_monodromy_against_solve_ivp_full_period(Omega_bar):
     np.testing.assert_allclose(got, ref, rtol=0, atol=1e-8)
 
 
+def test_hill_check_given_or_computed_elsewhere_is_the_one_computed_here():
+    """beam_action_analysis(hill=...): the Hill check computed in a worker (flexbooster run)
+    must give the same hill_monodromy_difference as the check computed inside, bit for bit
+    (a pure function of the model), and a check of another set of points is refused."""
+    from flexbooster.case import default_case, load_case
+    from flexbooster.memo.beam_action import beam_action_analysis, hill_check
+    from flexbooster.model import model_from_case
+
+    data = default_case().model_dump(exclude_none=True)
+    data["thrust"]["n_omega"] = 30
+    data["truncation"].update(N=4, S=4)
+    model = model_from_case(load_case(data))
+    inside = beam_action_analysis(model, bands=False)
+    given = beam_action_analysis(model, bands=False, hill=hill_check(model))
+    later = beam_action_analysis(model, bands=False, hill=lambda: hill_check(model))
+    assert inside.hill_monodromy_difference == given.hill_monodromy_difference
+    assert inside.hill_monodromy_difference == later.hill_monodromy_difference
+    assert inside.hill_monodromy_difference < 1e-8  # the check itself: Hill vs monodromy
+    with pytest.raises(ValueError, match="hill: 2 points"):
+        beam_action_analysis(model, bands=False, hill=hill_check(model, n_hill=2))
+
+
 def test_hill_converges_with_harmonics():
     # Hill's truncation: S = 8 and S = 16 agree to 1e-10 at moderate gamma (Fourier coefficients
     # of the Floquet solutions decay geometrically; Bolotin 1964, sec. 7).

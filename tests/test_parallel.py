@@ -73,6 +73,49 @@ def test_leaving_by_an_interrupt_stops_the_workers():
     assert not multiprocessing.active_children()
 
 
+def _logged(log: str, label: str, seconds: float) -> None:
+    """A task that records its start and end (CLOCK_MONOTONIC: one clock for all processes)."""
+    start = time.monotonic()
+    time.sleep(seconds)
+    with open(log, "a") as handle:
+        handle.write(f"{label} {start!r} {time.monotonic()!r}\n")
+
+
+def _events(log) -> dict:
+    rows = [line.split() for line in open(log)]
+    return {label: (float(a), float(b)) for label, a, b in rows}
+
+
+@pytest.mark.skipif(not PARALLEL, reason="no fork on this platform")
+def test_a_task_for_idle_workers_waits_until_one_is_idle(tmp_path):
+    """submit_when_idle: with 2 workers and 3 tasks, the held-back task may start only when a
+    worker has nothing left to take: after the second task has ended (the third keeps the
+    other worker), never before; and it runs (the tasks after it are not delayed either)."""
+    log = str(tmp_path / "log")
+    with TaskPool(2) as pool:
+        pool.submit_when_idle(_logged, log, "idle", 0.0)
+        jobs = [pool.submit(_logged, log, f"t{i}", 0.3) for i in range(3)]
+        [job.result() for job in jobs]
+        time.sleep(0.5)  # the held-back task, sent from the pool's result thread
+        late = pool.submit(_logged, log, "late", 0.0)
+        late.result()
+    events = _events(log)
+    second_end = sorted(end for label, (_, end) in events.items() if label.startswith("t"))[1]
+    assert set(events) == {"t0", "t1", "t2", "idle", "late"}
+    assert events["idle"][0] >= second_end
+
+
+@pytest.mark.parametrize("workers", [1, 2])
+def test_a_task_for_idle_workers_is_dropped_when_none_becomes_idle(tmp_path, workers):
+    """Nothing else submitted (no worker ever finished a task), or no worker process at
+    all: the held-back task does not run, and leaving the block does not wait for it."""
+    log = tmp_path / "log"
+    with TaskPool(workers) as pool:
+        pool.submit_when_idle(_logged, str(log), "idle", 0.0)
+    assert not log.exists()
+    assert not multiprocessing.active_children()
+
+
 @pytest.fixture(scope="module")
 def small_case():
     data = default_case().model_dump(exclude_none=True)
@@ -94,3 +137,25 @@ def test_analysis_and_files_are_the_same_with_workers(small_case, tmp_path):
     for name in files:
         one_bytes = (tmp_path / "one" / name).read_bytes()
         assert one_bytes == (tmp_path / "two" / name).read_bytes(), name
+
+
+@pytest.mark.skipif(not PARALLEL, reason="no fork on this platform")
+def test_one_pool_shared_by_the_analysis_and_the_files(small_case, tmp_path):
+    """flexbooster run's arrangement: one TaskPool for analyze and write_outputs (the
+    figures drawn by workers forked before the results existed, which reach them by pickle),
+    matplotlib prepared in the idle workers: the same results and byte-identical files as
+    everything in one process."""
+    from flexbooster.present.outputs import prepare_figures
+
+    one = analysis.analyze(small_case, workers=1)
+    write_outputs(one, tmp_path / "one", workers=1)
+    with TaskPool(2) as pool:
+        for _ in range(pool.workers):
+            pool.submit_when_idle(prepare_figures)
+        shared = analysis.analyze(small_case, workers=pool)
+        write_outputs(shared, tmp_path / "shared", workers=pool)
+        assert pool.parallel
+    assert one.to_dict() == shared.to_dict()
+    for path in sorted((tmp_path / "one").iterdir()):
+        assert path.read_bytes() == (tmp_path / "shared" / path.name).read_bytes(), path.name
+    assert not multiprocessing.active_children()

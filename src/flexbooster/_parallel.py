@@ -21,10 +21,12 @@ from __future__ import annotations
 import multiprocessing
 import os
 import signal
-from collections.abc import Callable
+import threading
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from typing import Any
 
-__all__ = ["TaskPool", "default_workers", "MAX_WORKERS"]
+__all__ = ["TaskPool", "default_workers", "using_pool", "MAX_WORKERS"]
 
 #: Most worker processes a pool starts (the pipeline has at most a few independent stages).
 MAX_WORKERS = 8
@@ -106,6 +108,9 @@ class TaskPool:
             raise ValueError(f"workers = {workers!r}: must be an integer >= 1")
         self.workers = min(int(workers), MAX_WORKERS)
         self._pool = None
+        self._lock = threading.Lock()  # the pool's result thread runs the callbacks
+        self._running = 0  # tasks sent to the workers and not finished
+        self._idle: list[tuple[Callable[..., Any], tuple, dict]] = []
 
     @property
     def parallel(self) -> bool:
@@ -129,10 +134,43 @@ class TaskPool:
         """
         if not self.parallel:
             return _Done(fn, args, kwargs)
+        with self._lock:
+            return _Async(self._send(fn, args, kwargs))
+
+    def submit_when_idle(self, fn: Callable[..., Any], /, *args: Any, **kwargs: Any) -> None:
+        """Run ``fn(*args, **kwargs)`` in a worker that has finished a task and has no other.
+
+        For preparation off the critical path (e.g. importing what later tasks need while the
+        workers would wait for the parent): the task is held back until a worker finishes a
+        task while fewer are running than there are workers, so it never delays a task
+        submitted before or after it that could run then.  Its result is dropped; one still
+        held back when the ``with`` block ends is not run, nor is any without worker
+        processes.
+
+        Parameters
+        ----------
+        fn : callable
+            A module-level (picklable) function.
+        *args, **kwargs
+            Its arguments.
+        """
+        if self.parallel:
+            with self._lock:
+                self._idle.append((fn, args, kwargs))
+
+    def _send(self, fn, args, kwargs):  # with the lock held
         if self._pool is None:
             self._pool = multiprocessing.get_context("fork").Pool(
                 self.workers, initializer=_ignore_interrupts)
-        return _Async(self._pool.apply_async(fn, args, kwargs))
+        self._running += 1
+        return self._pool.apply_async(fn, args, kwargs, callback=self._finished,
+                                      error_callback=self._finished)
+
+    def _finished(self, _: object) -> None:  # in the pool's result thread
+        with self._lock:
+            self._running -= 1
+            if self._idle and self._running < self.workers and self._pool is not None:
+                self._send(*self._idle.pop(0))  # a worker has nothing to do
 
     def map(self, fn: Callable[[Any], Any], items) -> list:
         """``[fn(x) for x in items]``, the items spread over the workers (in order).
@@ -156,7 +194,9 @@ class TaskPool:
         return self
 
     def __exit__(self, exc_type, exc, tb) -> None:
-        pool, self._pool = self._pool, None
+        with self._lock:
+            self._idle.clear()
+            pool, self._pool = self._pool, None
         if pool is None:
             return
         if exc_type is None:
@@ -164,3 +204,24 @@ class TaskPool:
         else:  # an error or an interrupt in the parent: stop the workers now
             pool.terminate()
         pool.join()
+
+
+@contextmanager
+def using_pool(workers: int | TaskPool) -> Iterator[TaskPool]:
+    """The pool to run a stage's tasks in: ``workers`` itself when it is a :class:`TaskPool`
+    (one pool shared by several stages, closed by its owner), else a new one for the block.
+
+    Parameters
+    ----------
+    workers : int or TaskPool
+        Worker processes (dimensionless, >= 1), or a pool opened by the caller.
+
+    Yields
+    ------
+    TaskPool
+    """
+    if isinstance(workers, TaskPool):
+        yield workers
+    else:
+        with TaskPool(workers) as pool:
+            yield pool

@@ -23,7 +23,7 @@ from collections.abc import Callable
 import numpy as np
 
 from . import cost, floquet
-from ._parallel import TaskPool
+from ._parallel import TaskPool, using_pool
 from ._threads import blas_threads
 from .case import Case
 from .checks import count, finite, positive
@@ -31,7 +31,12 @@ from .danger import danger_summary
 from .errors import AnalysisWarning
 from .memo import charts
 from .memo.beam import beam_modes
-from .memo.beam_action import PeriodMapOverflowError, beam_action_analysis, pipeline_bands
+from .memo.beam_action import (
+    PeriodMapOverflowError,
+    beam_action_analysis,
+    hill_check,
+    pipeline_bands,
+)
 from .memo.model import BoosterModel
 from .memo.pitch import pitch_analysis
 from .memo.responses import SimulationResult, excitation_parameters, simulate
@@ -139,7 +144,7 @@ def analyze(
     progress: Callable[[str], None] | None = None,
     figures: bool = True,
     *,
-    workers: int = 1,
+    workers: int | TaskPool = 1,
     vehicle: bool = True,
 ) -> Results:
     """Run the analysis of a validated case.
@@ -158,9 +163,11 @@ def analyze(
     figures : bool
         Compute the data of the figures (:mod:`flexbooster.memo.charts`; the beam-action
         (Omega, gamma) chart is the costly part); ``results.figures`` is None without it.
-    workers : int
-        Processes for the independent stages (:class:`flexbooster._parallel.TaskPool`): with
-        2 or more, the beam-action chart, the beam-action band search and the vehicle
+    workers : int or TaskPool
+        Processes for the independent stages (:class:`flexbooster._parallel.TaskPool`, or
+        an open pool to share with the stages after this one, e.g. the figures of
+        :func:`flexbooster.present.outputs.write_outputs`): with 2 or more, the beam-action
+        chart, the beam-action band search, the Hill check of the exponents and the vehicle
         regions run in workers while this process computes the beam-action exponents, the
         stability table and its severity.  The results are the same, bit for bit.
     vehicle : bool
@@ -181,7 +188,7 @@ def analyze(
     (:func:`flexbooster._threads.blas_threads`): multithreaded BLAS makes them slower.
     """
     with blas_threads(1):
-        with TaskPool(workers) as pool:
+        with using_pool(workers) as pool:
             return _analyze(case, beam_action, stability, figures,
                             progress or (lambda stage: None), pool, with_regions=vehicle)
 
@@ -199,6 +206,7 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
     chart = (pool.submit(charts.beam_action_chart, model) if figures and beam_action
              else None)
     bands = pool.submit(pipeline_bands, model) if beam_action and pool.parallel else None
+    hill = pool.submit(hill_check, model) if beam_action and pool.parallel else None
     # the vehicle's regions depend on the case alone (run last when there is no worker)
     vreg = (pool.submit(_vehicle_regions_stage, case, boundaries=figures)
             if with_regions and pool.parallel else None)
@@ -212,7 +220,8 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
     action = None
     if beam_action:
         step(STAGES[3])
-        action = _beam_action(model, True if bands is None else bands.result)
+        action = _beam_action(model, True if bands is None else bands.result,
+                              None if hill is None else hill.result)
     table = None
     params = None
     if stability and action is not None:
@@ -349,12 +358,12 @@ def simulate_case(case: Case, Omega: float, *, tau_max: float, n_out: int = 401,
         return simulate(model, Omega, tau_max, n_out=n_out, psi0=psi0, params=params)
 
 
-def _beam_action(model, bands):
+def _beam_action(model, bands, hill=None):
     """:func:`beam_action_analysis`; a period map beyond floating point is the load's CaseError."""
     from .errors import CaseError
 
     try:
-        return beam_action_analysis(model, bands=bands)
+        return beam_action_analysis(model, bands=bands, hill=hill)
     except PeriodMapOverflowError as exc:  # issue 18: a documented one-line refusal
         raise CaseError("thrust.F0", model.F0,
                         f"the beam action grows beyond the floating-point range ({exc}): far "

@@ -232,19 +232,24 @@ def run(case_file: Path | None, output: Path, no_figures: bool, no_vehicle: bool
       flexbooster run my.toml --no-vehicle   # without the vehicle's instability regions
       flexbooster run -q --format json | python -m json.tool | head
     """
-    from ._parallel import default_workers
+    from ._parallel import TaskPool, default_workers
     from .analysis import STAGES, analyze
-    from .present.outputs import OUTPUT_STAGES, write_outputs
+    from .present.outputs import OUTPUT_STAGES, prepare_figures, write_outputs
     from .present.summary import print_summary
 
     case = _with_budget(_load(case_file), max_seconds)
-    workers = default_workers() if jobs is None else jobs
     n_stages = len(STAGES) + (case.vehicle is not None) + (not no_vehicle) + len(OUTPUT_STAGES)
-    with _progress(n_stages, quiet) as step:
+    # one pool for the analysis and the figures: the workers the analysis leaves idle while
+    # this process finishes the stability table import matplotlib for the figures meanwhile
+    with _progress(n_stages, quiet) as step, \
+            TaskPool(default_workers() if jobs is None else jobs) as pool:
+        if not no_figures:
+            for _ in range(pool.workers):
+                pool.submit_when_idle(prepare_figures)
         results = analyze(case, progress=step, figures=not no_figures, vehicle=not no_vehicle,
-                          workers=workers)
+                          workers=pool)
         paths = write_outputs(results, output, figures=not no_figures, progress=step,
-                              workers=workers)
+                              workers=pool)
     _report(results, fmt, quiet, print_summary)
     _wrote(paths, fmt, quiet)
 

@@ -77,6 +77,7 @@ __all__ = [
     "loaded_frequencies",
     "HillResult",
     "hill_exponents",
+    "hill_check",
     "monodromy_exponents",
     "monodromy_steps",
     "MONODROMY_MAX_STEPS",
@@ -1417,8 +1418,42 @@ def pipeline_bands(model: BoosterModel) -> tuple[BeamActionBand, ...]:
     return tuple(sorted(found, key=lambda b: b.omega_lo))
 
 
+def hill_check(model: BoosterModel, *, n_hill: int = 3) -> HillResult:
+    """Hill's exponents at ``n_hill`` points of the Omega grid: the independent check of the
+    monodromy exponents in :func:`beam_action_analysis`, on its own (a separate task).
+
+    Parameters
+    ----------
+    model : BoosterModel
+        The derived model: Omega grid (rad/s), gamma, truncation N and S.
+    n_hill : int
+        Grid points (evenly spread, ends included), 1..len(Omega) (clipped to the grid size).
+
+    Returns
+    -------
+    HillResult
+        :func:`hill_exponents` with S = ``model.truncation.S`` at those points.
+
+    References
+    ----------
+    Bolotin (1964), sec. 7 (Hill's infinite determinant); Tech Memo 104, eqs. (4.1-10), (4.1-11).
+    """
+    system = beam_system(model)
+    Ob, gam, _ = _grid(model.Omega, float(model.gamma), system.omega_1)
+    pick = _hill_points(Ob.size, n_hill)
+    return hill_exponents(system, Ob[pick] * system.omega_1, gam[pick], model.truncation.S)
+
+
+def _hill_points(n_grid: int, n_hill: int) -> np.ndarray:
+    """Indices of the n_hill grid points of the Hill check (evenly spread, ends included)."""
+    n_hill = min(count("n_hill", n_hill, 1, None), n_grid)
+    return np.unique(np.round(np.linspace(0, n_grid - 1, n_hill)).astype(int))
+
+
 def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3,
-                         bands: bool | tuple | Callable[[], tuple] = True) -> BeamActionResult:
+                         bands: bool | tuple | Callable[[], tuple] = True,
+                         hill: HillResult | Callable[[], HillResult] | None = None,
+                         ) -> BeamActionResult:
     """alpha_r along the Omega grid and the beam-action verdict (pipeline entry point).
 
     Parameters
@@ -1436,6 +1471,10 @@ def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3,
         the verdict is "not searched"; a tuple, or a function of no argument returning it
         (called after the exponents are computed): the bands :func:`pipeline_bands` returns
         for this model, searched elsewhere (e.g. in a worker process).
+    hill : HillResult or callable, optional
+        :func:`hill_check` of this model with this ``n_hill``, or a function of no argument
+        returning it (called after the exponents are computed: the check computed
+        elsewhere, e.g. in a worker process); default: computed here.
 
     Returns
     -------
@@ -1457,10 +1496,15 @@ def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3,
     R = count("R", model.truncation.R, 1, N + 1)
     gamma = float(model.gamma)
     Ob, gam, _ = _grid(model.Omega, gamma, system.omega_1)
-    n_hill = min(count("n_hill", n_hill, 1, None), Ob.size)
+    pick = _hill_points(Ob.size, n_hill)
     red_m = reduced_exponents(monodromy_exponents(system, Ob * system.omega_1, gam))
-    pick = np.unique(np.round(np.linspace(0, Ob.size - 1, n_hill)).astype(int))
-    hill = hill_exponents(system, Ob[pick] * system.omega_1, gam[pick], S)
+    if hill is None:
+        hill = hill_exponents(system, Ob[pick] * system.omega_1, gam[pick], S)
+    elif callable(hill):  # computed elsewhere, meanwhile
+        hill = hill()
+    if hill.alpha.shape[0] != pick.size:
+        raise ValueError(f"hill: {hill.alpha.shape[0]} points, not the {pick.size} of "
+                         f"n_hill = {n_hill} on this model's grid")
     diff = float(np.max(_match_distance(reduced_exponents(hill.alpha), red_m[pick])))
     freqs = loaded_frequencies(system)
     alpha_all = natural_branch(red_m, Ob, freqs)

@@ -15,7 +15,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from .._parallel import TaskPool
+from .._parallel import TaskPool, using_pool
 from ..results import Results
 from .io import (
     hold_signals,
@@ -31,8 +31,8 @@ if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
 __all__ = ["OUTPUT_STAGES", "write_outputs", "save_figure", "make_figures", "figure_svgs",
-           "figure_names", "render_figures", "MANIFEST", "STAGING_PREFIX", "publish_set",
-           "check_output_set"]
+           "figure_names", "render_figures", "prepare_figures", "MANIFEST", "STAGING_PREFIX",
+           "publish_set", "check_output_set"]
 
 #: The stages of :func:`write_outputs`, as passed to its ``progress`` callback.
 OUTPUT_STAGES = ("results.json and CSV", "figures", "report.html")
@@ -140,7 +140,7 @@ def write_outputs(
     figures: bool = True,
     progress: Callable[[str], None] | None = None,
     *,
-    workers: int = 1,
+    workers: int | TaskPool = 1,
 ) -> list[Path]:
     """Write every output of an analysis into ``folder``.
 
@@ -154,10 +154,11 @@ def write_outputs(
         Also draw and save the figures (SVG and PNG); the report then embeds them.
     progress : callable, optional
         Called with the name of each stage (:data:`OUTPUT_STAGES`) as it starts.
-    workers : int
+    workers : int or TaskPool
         Processes that draw the figures while this one writes results.json and the CSV
-        tables (:class:`flexbooster._parallel.TaskPool`; 1: all in this process, one after
-        the other).  The files are the same, byte for byte.
+        tables (:class:`flexbooster._parallel.TaskPool`, or an open pool, e.g. the one the
+        analysis used; 1: all in this process, one after the other).  The files are the
+        same, byte for byte.
 
     Returns
     -------
@@ -186,12 +187,12 @@ def write_outputs(
 
 
 def _write_files(results: Results, folder: Path, figures: bool,
-                 step: Callable[[str], None], workers: int) -> list[Path]:
+                 step: Callable[[str], None], workers: int | TaskPool) -> list[Path]:
     """Every output file of :func:`write_outputs`, written into ``folder``."""
     from .report import write_report
 
     draw = figures and results.figures is not None
-    with TaskPool(workers) as pool:
+    with using_pool(workers) as pool:
         # the figures are drawn by the workers (started first) while this process writes
         jobs = {name: pool.submit(_figure_task, results, name)
                 for name in figure_names(results)} if draw and pool.parallel else {}
@@ -225,6 +226,18 @@ def _write_files(results: Results, folder: Path, figures: bool,
     step(OUTPUT_STAGES[2])
     written.append(write_report(results, folder / "report.html", svgs))
     return written
+
+
+def prepare_figures() -> None:
+    """Import matplotlib, pyplot and the SVG backend (about 0.3 s of CPU in a fresh process),
+    so that a worker process that draws figures later starts at once: a task for
+    :meth:`flexbooster._parallel.TaskPool.submit_when_idle` while the analysis keeps the
+    parent busy (``flexbooster run``)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.backends.backend_svg  # noqa: F401 - the import is the preparation
+    import matplotlib.pyplot  # noqa: F401
 
 
 def _figure_task(results: Results, name: str) -> tuple[str, bytes]:
