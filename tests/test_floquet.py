@@ -252,6 +252,36 @@ def test_damped_march_stays_inside_the_range():
 W1, W2 = 1.0, 2.3
 
 
+def test_damped_region_wider_than_its_undamped_seed_is_marched_to_its_edges():
+    # a sum region of two modes with very unequal damping (C = diag(2 d1, 2 d2), d1 << d2:
+    # like the vehicle's nearly undamped rigid pitch against a damped bending mode) is much
+    # wider with damping than without: first-order averaging (Hsu 1963) gives the half-width
+    # (d1 + d2) sqrt(L / (d1 d2) - 1), L = eps^2 b12 b21 / (16 w1 w2): 0.0653 here against
+    # the undamped half-width 0.0066 (the search used to stop its march 4 undamped widths
+    # out, at Omega = 3.2407 where the growth rate is still +5.2e-6, and report that as an
+    # edge).  Checks: each edge is a |rho|_max = 1 point of an independent monodromy
+    # (solve_ivp DOP853, rtol 1e-12): growth < 0 just outside and > 0 just inside, at
+    # +-1e-6 relative; the half-width within 1e-2 of Hsu's first order (measured 6e-4); the
+    # growth rate at the reported maximum to 1e-6 relative (measured 3e-7)
+    eps, d1, d2 = 0.02, 2.5e-5, 0.01
+    M, _, A, B = hsu(eps, 1.0, 1.0)
+    C = np.diag([2.0 * d1, 2.0 * d2])
+    (r,) = instability_regions(M, C, A, B, 2.5, 4.0, max_order=1)
+    assert (r.kind, r.modes, r.clipped) == ("sum", (0, 1), False)
+
+    def growth(x):
+        rho = np.linalg.eigvals(ivp_monodromy(M, C, A, B, x))
+        return np.log(np.max(np.abs(rho))) * x / (2.0 * np.pi)
+
+    for edge, inward in ((r.omega_lo, 1.0), (r.omega_hi, -1.0)):
+        assert growth(edge * (1.0 - inward * 1e-6)) < 0.0 < growth(edge * (1.0 + inward * 1e-6))
+    lam = eps**2 / (16.0 * W1 * W2)
+    half = (d1 + d2) * np.sqrt(lam / (d1 * d2) - 1.0)
+    assert r.width / 2.0 == pytest.approx(half, rel=1e-2)
+    assert r.width > 9.0 * eps / np.sqrt(W1 * W2)  # past the former march limit
+    assert r.growth_rate_max == pytest.approx(growth(r.omega_at_max), rel=1e-6)
+
+
 def hsu(eps: float, b12: float, b21: float):
     """q'' + diag(w1^2, w2^2) q + eps cos(theta t) b q = 0, b with zero diagonal (Hsu 1963)."""
     return np.eye(2), None, np.diag([W1**2, W2**2]), eps * np.array([[0.0, b12], [b21, 0.0]])

@@ -771,8 +771,10 @@ def _monodromy_search(system, w, cand, lo, hi, opt) -> tuple[list[dict], np.ndar
 def _damped_search(system, undamped, opt, lo, hi) -> list[dict]:
     """Regions with damping, seeded by the undamped regions (see module docstring).
 
-    The outward marches stay inside [lo, hi], the range of the undamped seed search (> 0):
-    a march limit of 4 widths beyond a wide region could otherwise reach Omega <= 0.
+    The outward marches go on to the ends of [lo, hi], the range of the undamped seed search
+    (> 0), whatever the seed's width: a damped region may be much wider than its undamped seed
+    (Hsu 1963; docs/theory/floquet.md, sec. 4).  An edge is a point of log|rho|_max = 0 or an
+    end of that range (then ``clipped``).
     """
     if not undamped:
         return []
@@ -798,17 +800,21 @@ def _damped_search(system, undamped, opt, lo, hi) -> list[dict]:
         return out
     x0, g0 = xs[hit], gs[hit]
     d0 = np.maximum(width[hit] / 16.0, 4.0 * xtol[hit])
-    lo_lim = np.maximum(lo_u[hit] - 4.0 * width[hit], lo)
-    hi_lim = np.minimum(hi_u[hit] + 4.0 * width[hit], hi)
     P = hit.size
-    edge = _edges(lambda x, idx: G(x), np.concatenate([x0, x0]), np.concatenate([g0, g0]),
-                  np.concatenate([d0, d0]), np.concatenate([-np.ones(P), np.ones(P)]),
-                  np.concatenate([lo_lim, hi_lim]), np.concatenate([xtol[hit], xtol[hit]]),
-                  np.concatenate([0.5 * width[hit], 0.5 * width[hit]]))[0]
-    bounds = (edge[:P], edge[P:])
+    # the marches go on to the ends of the (widened) range: a damped region may be much wider
+    # than its undamped seed (a combination region with a nearly undamped mode: the threshold
+    # detuning grows like sqrt(lambda^2 / (delta_i delta_k)), Hsu 1963), and an edge is either
+    # a point of log|rho|_max = 0 or an end of the range (clipped)
+    edge, clip = _edges(lambda x, idx: G(x), np.concatenate([x0, x0]),
+                        np.concatenate([g0, g0]), np.concatenate([d0, d0]),
+                        np.concatenate([-np.ones(P), np.ones(P)]),
+                        np.concatenate([np.full(P, lo), np.full(P, hi)]),
+                        np.concatenate([xtol[hit], xtol[hit]]),
+                        np.concatenate([0.5 * width[hit], 0.5 * width[hit]]))
     for m_, m in enumerate(hit):
         r = dict(undamped[m])
-        r["lo"], r["hi"] = float(bounds[0][m_]), float(bounds[1][m_])
+        r["lo"], r["hi"] = float(edge[m_]), float(edge[P + m_])
+        r["clipped"] = bool(r["clipped"] or clip[m_] or clip[P + m_])
         out.append(r)
     return out
 
