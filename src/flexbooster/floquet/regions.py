@@ -514,17 +514,18 @@ def _brent_max(f, a: np.ndarray, b: np.ndarray, x0: np.ndarray, xtol: np.ndarray
 
 
 def _illinois(f, x_in: np.ndarray, f_in: np.ndarray, x_out: np.ndarray, f_out: np.ndarray,
-              xtol: np.ndarray, max_iter: int = 200) -> np.ndarray:
+              xtol: np.ndarray, max_iter: int = 200, bracket: bool = False):
     """Root of f between x_in (f > 0) and x_out (f <= 0), Illinois regula falsi, vectorised.
 
-    f(x, idx) evaluates the points idx only.
+    f(x, idx) evaluates the points idx only.  Returns the midpoints of the final brackets, or
+    with ``bracket`` the brackets themselves (x_in, f_in, x_out, f_out; f_in > 0 >= f_out).
     """
     a, fa, b, fb = x_in.copy(), f_in.copy(), x_out.copy(), f_out.copy()
     last = np.zeros(a.size, dtype=int)  # which end moved last (+1 a, -1 b)
     for it in range(max_iter):
         act = np.nonzero(np.abs(b - a) > xtol)[0]
         if act.size == 0:
-            return 0.5 * (a + b)
+            return (a, fa, b, fb) if bracket else 0.5 * (a + b)
         A_, FA, B_, FB = a[act], fa[act], b[act], fb[act]
         with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
             x = np.where(FA != FB, B_ - FB * (B_ - A_) / (FB - FA), 0.5 * (A_ + B_))
@@ -632,6 +633,45 @@ def _edges(f, x0: np.ndarray, f0: np.ndarray, d0: np.ndarray, direction,
     return root, clip
 
 
+#: Seeds of the damped search (:func:`_seed_edges`): each undamped edge to this fraction of
+#: the region's width (the damped search samples the seed interval and marches out from its
+#: damped maximum, so the seed's edges need not be |rho| = 1 points to rtol).
+_SEED_WIDTH_FRACTION = 1e-3
+
+
+def _seed_edges(f, x0: np.ndarray, f0: np.ndarray, d0: np.ndarray, limit: np.ndarray,
+                xtol: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Both edges of each region about x0 (f(x0) > 0) to a fraction of its width.
+
+    Entries 0..P-1 march down, P..2P-1 up (as in :func:`_edges`, without its gap check and
+    without the continuation through overlapping regions).  After the bracketing march each
+    round refines every bracket by Illinois to max(xtol, _SEED_WIDTH_FRACTION x W_in,
+    1e-2 x bracket), W_in = the distance between the two inner points (a lower bound of the
+    width: both are inside the region), until every bracket is below max(xtol,
+    _SEED_WIDTH_FRACTION x W_in): the edges are then known to that fraction of the width
+    whatever the region's size, at a fraction of the evaluations of the refinement to rtol.
+    Returns (edges, clipped).
+    """
+    P = x0.size
+    direction = np.concatenate([-np.ones(P), np.ones(P)])
+    X0, F0, D0 = (np.concatenate([v, v]) for v in (x0, f0, d0))
+    xi, fi, xo, fo, clip = _expand(f, X0, D0, direction, limit)
+    fi = np.where(np.isinf(fi), F0, fi)
+    XT = np.concatenate([xtol, xtol])
+    for _ in range(40):  # each round cuts the brackets by 100 at least
+        w_in = np.abs(xi[P:] - xi[:P])
+        goal = np.maximum(XT, _SEED_WIDTH_FRACTION * np.concatenate([w_in, w_in]))
+        act = np.nonzero(~clip & (np.abs(xo - xi) > goal))[0]
+        if act.size == 0:
+            break
+        tol = np.maximum(goal[act], 1e-2 * np.abs(xo - xi)[act])
+        xi[act], fi[act], xo[act], fo[act] = _illinois(
+            lambda x, a, act=act: f(x, act[a]), xi[act], fi[act], xo[act], fo[act], tol,
+            bracket=True)
+    edge = np.where(clip, limit, 0.5 * (xi + xo))
+    return edge, clip
+
+
 # --------------------------------------------------------------------------------------------
 # The search
 # --------------------------------------------------------------------------------------------
@@ -660,14 +700,18 @@ def _modal_decay_rates(system: LinearPeriodicSystem) -> np.ndarray | None:
     return 0.5 * np.real(np.diag(Ct))
 
 
-def _undamped_search(system, w, cand, lo, hi, opt, narrow: bool = True) -> list[dict]:
-    """Regions of the undamped system for the candidate table; list of plain dicts."""
+def _undamped_search(system, w, cand, lo, hi, opt, narrow: bool = True,
+                     seeds: bool = False) -> list[dict]:
+    """Regions of the undamped system for the candidate table; list of plain dicts.
+
+    ``seeds``: the seeds of the damped search (no narrow pass; each region's own edges to a
+    fraction of its width, :func:`_seed_edges`, instead of |rho|_max = 1 to rtol)."""
     if cand["centre"].size == 0:
         return []
     mono = cand["mono"]
     regs, fmax = _monodromy_search(system, w, {key: v[mono] for key, v in cand.items()}, lo,
-                                   hi, opt)
-    if not narrow:
+                                   hi, opt, seeds=seeds)
+    if not narrow or seeds:
         return regs
     # the candidates below the monodromy floor, and those whose indicator maximum stayed
     # between -_F_SCREEN and the round-off floor (a pair that approaches within 1e-6 in s)
@@ -704,9 +748,10 @@ def _narrow_pass(system, cand, regs, lo, hi) -> list[dict]:
     return out
 
 
-def _monodromy_search(system, w, cand, lo, hi, opt) -> tuple[list[dict], np.ndarray]:
+def _monodromy_search(system, w, cand, lo, hi, opt,
+                      seeds: bool = False) -> tuple[list[dict], np.ndarray]:
     """Regions found from the monodromy indicators (module docstring), and the maximum of
-    each candidate's indicator."""
+    each candidate's indicator (``seeds``: the edges by :func:`_seed_edges`)."""
     if cand["centre"].size == 0:
         return [], np.zeros(0)
     Oc = cand["centre"]
@@ -739,6 +784,18 @@ def _monodromy_search(system, w, cand, lo, hi, opt) -> tuple[list[dict], np.ndar
     out = []
     # both edges in one batch: entries 0..P-1 go down, P..2P-1 go up
     P = hit.size
+    if seeds:  # the damped search's seeds: each edge to a fraction of the width
+        edge, clip = _seed_edges(lambda x, idx: Fo(x, idx % P), x0, f0, d0,
+                                 np.concatenate([np.full(P, lo), np.full(P, hi)]), xtol[hit])
+        for m in range(P):
+            a, b = max(float(edge[m]), lo), min(float(edge[P + m]), hi)
+            if b - a <= xtol[hit][m]:
+                continue
+            out.append({"lo": a, "hi": b, "kind": int(sub["kind"][m]), "i": int(sub["i"][m]),
+                        "k": int(sub["k"][m]), "j": int(sub["j"][m]),
+                        "centre": float(sub["centre"][m]),
+                        "clipped": bool(clip[m] or clip[P + m])})
+        return out, fs
     direction = np.concatenate([-np.ones(P), np.ones(P)])
     limit = np.concatenate([np.full(P, lo), np.full(P, hi)])
     X0, F0, D0 = (np.concatenate([v, v]) for v in (x0, f0, d0))
@@ -907,7 +964,8 @@ def _search(system: LinearPeriodicSystem, lo: float, hi: float, opt: _Options,
     if system.damped:  # seeds from the undamped system, searched a little wider
         # regions narrower than the monodromy floor (growth ~ width) are not looked for: damping
         # suppresses them unless the decay rate is below that growth
-        regs = _undamped_search(undamped, w, cand, 0.5 * lo, 2.0 * hi, opt, narrow=False)
+        regs = _undamped_search(undamped, w, cand, 0.5 * lo, 2.0 * hi, opt, narrow=False,
+                                seeds=True)
         regs = _damped_search(system, regs, opt, 0.5 * lo, 2.0 * hi)
     else:
         regs = _undamped_search(undamped, w, cand, lo, hi, opt)
