@@ -14,7 +14,6 @@ import sys
 
 import numpy as np
 import pytest
-from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 from scipy.special import mathieu_a, mathieu_b
 
@@ -36,6 +35,7 @@ from flexbooster.floquet import (
 )
 from flexbooster.floquet.multipliers import periodic_system
 from flexbooster.floquet.regions import _candidates, _modal_decay_rates, _options
+from harness import ivp_growth_rate, ivp_monodromy
 
 ONE = [[1.0]]
 
@@ -57,22 +57,6 @@ def mathieu_edges(mu: float, r: int, qfac: float = 4.0) -> tuple[float, float]:
 def mathieu(mu: float, eps: float = 0.0):
     """(M, C, A, B) of f'' + 2 eps f' + (1 - 2 mu cos theta t) f = 0."""
     return ONE, [[2.0 * eps]], ONE, [[-2.0 * mu]]
-
-
-def ivp_monodromy(M, C, A, B, Omega: float) -> np.ndarray:
-    """Independent monodromy: scipy solve_ivp (DOP853, rtol 1e-12) over one period."""
-    M, C, A, B = (np.atleast_2d(np.asarray(x, dtype=float)) for x in (M, C, A, B))
-    n = M.shape[0]
-    Mi = np.linalg.inv(M)
-
-    def rhs(t, z):
-        q, v = z[:n], z[n:]
-        return np.concatenate([v, -Mi @ (C @ v + (A + B * np.cos(Omega * t)) @ q)])
-
-    T = 2.0 * np.pi / Omega
-    cols = [solve_ivp(rhs, (0.0, T), e, method="DOP853", rtol=1e-12, atol=1e-14).y[:, -1]
-            for e in np.eye(2 * n)]
-    return np.array(cols).T
 
 
 def random_system(n: int, seed: int, damped: bool, scale: float = 0.4):
@@ -270,8 +254,7 @@ def test_damped_region_wider_than_its_undamped_seed_is_marched_to_its_edges():
     assert (r.kind, r.modes, r.clipped) == ("sum", (0, 1), False)
 
     def growth(x):
-        rho = np.linalg.eigvals(ivp_monodromy(M, C, A, B, x))
-        return np.log(np.max(np.abs(rho))) * x / (2.0 * np.pi)
+        return ivp_growth_rate(M, C, A, B, x)
 
     for edge, inward in ((r.omega_lo, 1.0), (r.omega_hi, -1.0)):
         assert growth(edge * (1.0 - inward * 1e-6)) < 0.0 < growth(edge * (1.0 + inward * 1e-6))
@@ -546,17 +529,13 @@ def test_narrow_combination_region_of_order_two():
         assert reg.growth_rate_max == pytest.approx(g, rel=1e-3)
 
 
-def test_damped_mathieu_tip_exact_and_independent_of_search_tolerance():
-    # damped Mathieu f'' + 2 eps f' + (1 - 2 mu cos theta t) f = 0, eps = 0.01.  Reference:
-    # the exact shift f = exp(-eps t) p gives p'' + (1 - eps^2 - 2 mu cos theta t) p = 0, so
-    # the tip mu_cr is where max_theta (undamped growth of p) = eps; that growth from Hill's
-    # method (S = 12, an independent method), maximised over theta (bounded Brent, 1e-10) and
-    # solved for mu (brentq, 1e-12).  critical_amplitude (gamma_rtol 1e-8) to 1e-6 relative,
-    # and the tip of region_boundaries with the chart's coarse options (rtol 1e-4,
-    # step_phase 0.25) equal to it to 1e-6 (it used to be biased up by the search tolerance)
+def _damped_mathieu_tip(eps: float) -> float:
+    """mu_cr of f'' + 2 eps f' + (1 - 2 mu cos theta t) f = 0, principal region.  The exact
+    shift f = exp(-eps t) p gives p'' + (1 - eps^2 - 2 mu cos theta t) p = 0, so the tip is
+    where max_theta (undamped growth of p) = eps; that growth from Hill's method (S = 12, an
+    independent method), maximised over theta (bounded Brent, 1e-10), solved for mu (brentq,
+    1e-12)."""
     from scipy.optimize import minimize_scalar
-
-    eps = 0.01
 
     def excess(mu):
         res = minimize_scalar(
@@ -565,7 +544,16 @@ def test_damped_mathieu_tip_exact_and_independent_of_search_tolerance():
             bounds=(1.95, 2.05), method="bounded", options={"xatol": 1e-10})
         return -res.fun - eps
 
-    mu_cr = brentq(excess, 0.015, 0.03, xtol=1e-12)
+    return brentq(excess, 1.5 * eps, 3.0 * eps, xtol=1e-12)
+
+
+def test_damped_mathieu_tip_exact_and_independent_of_search_tolerance():
+    # damped Mathieu, eps = 0.01, tip mu_cr from the exact shift and Hill's method
+    # (_damped_mathieu_tip).  critical_amplitude (gamma_rtol 1e-8) to 1e-6 relative,
+    # and the tip of region_boundaries with the chart's coarse options (rtol 1e-4,
+    # step_phase 0.25) equal to it to 1e-6 (it used to be biased up by the search tolerance)
+    eps = 0.01
+    mu_cr = _damped_mathieu_tip(eps)
     (crit,) = critical_amplitude(ONE, [[2.0 * eps]], ONE, [[-2.0]], gamma_max=3.0 * mu_cr,
                                  omega_min=1.5, omega_max=2.5, gamma_rtol=1e-8)
     assert crit.gamma_cr == pytest.approx(mu_cr, rel=1e-6)
@@ -573,6 +561,21 @@ def test_damped_mathieu_tip_exact_and_independent_of_search_tolerance():
                               omega_min=1.5, omega_max=2.5, n_gamma=2, rtol=1e-4,
                               step_phase=0.25)
     assert rb.gamma[0] == pytest.approx(crit.gamma_cr, rel=1e-6)
+
+
+def test_damped_mathieu_tip_far_below_gamma_max():
+    # damped Mathieu, eps = 0.01, gamma_max = 40 mu_cr: the principal region at gamma_max
+    # spans 1.5..2.5 with its growth maximum far from the tip; below the tip's neighbourhood
+    # the growth is flat (-eps) outside the narrow undamped region of the smaller amplitude.
+    # The tip search used to start each growth maximum from the previous maximiser, converged
+    # on that plateau and returned 2.1 mu_cr; now it starts from the best of the previous
+    # maximiser, the candidate centre and 5 samples.  Reference: _damped_mathieu_tip (exact
+    # shift + Hill); tolerance 1e-6 relative (gamma_rtol 1e-8)
+    eps = 0.01
+    mu_cr = _damped_mathieu_tip(eps)
+    (crit,) = critical_amplitude(ONE, [[2.0 * eps]], ONE, [[-2.0]], gamma_max=40.0 * mu_cr,
+                                 omega_min=1.5, omega_max=2.5, max_order=1, gamma_rtol=1e-8)
+    assert crit.gamma_cr == pytest.approx(mu_cr, rel=1e-6)
 
 
 def test_growth_rate_max_inside_region():

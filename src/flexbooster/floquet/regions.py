@@ -1182,6 +1182,9 @@ _TIP_STEP_PHASE = 0.12
 #: Omega tolerance of the growth maximum at each amplitude, relative to the region's width at
 #: gamma_max (the growth is quadratic about its maximum: its error is ~1e-8 of the peak).
 _TIP_OMEGA_XTOL = 1e-4
+#: Samples across each region's Omega interval (ends included) besides the previous maximiser
+#: and the candidate centre, before each Brent maximum of the tip search.
+_TIP_SAMPLES = 5
 
 
 def _tips(base: LinearPeriodicSystem, top, opt: _Options, gamma_rtol: float):
@@ -1203,13 +1206,25 @@ def _tips(base: LinearPeriodicSystem, top, opt: _Options, gamma_rtol: float):
     a = np.array([r.omega_lo for r in top])
     b = np.array([r.omega_hi for r in top])
     xs = np.array([r.omega_at_max for r in top])
+    centre = np.clip(np.array([r.omega_center for r in top]), a, b)
     xtol = np.maximum(_TIP_OMEGA_XTOL * (b - a), 1e-15 * b)
+    grid = np.linspace(0.0, 1.0, _TIP_SAMPLES)
 
     def g(c, idx):
         def f(x, sub):
             return _growth_damped(base, x, tip, scale=c[idx][sub])
 
-        x, gx = _brent_max(f, a[idx], b[idx], xs[idx], xtol[idx])
+        # the start: the best of the previous maximiser, the candidate centre and a few
+        # samples.  Outside the undamped region of amplitude c the growth is flat (the
+        # modes' own decay); Brent started there converges on the plateau and misses a
+        # narrow peak near the tip (the region at a small c is a narrow interval about the
+        # centre: the first-order width is linear in c, its shift quadratic)
+        starts = np.column_stack([xs[idx], centre[idx],
+                                  a[idx, None] + (b - a)[idx, None] * grid[None, :]])
+        m = starts.shape[1]
+        fs = f(starts.ravel(), np.repeat(np.arange(idx.size), m)).reshape(starts.shape)
+        x0 = starts[np.arange(idx.size), np.argmax(fs, axis=1)]
+        x, gx = _brent_max(f, a[idx], b[idx], x0, xtol[idx])
         xs[idx] = x
         return gx
 
