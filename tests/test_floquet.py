@@ -29,6 +29,7 @@ from flexbooster.floquet import (
     monodromy,
     periodic_boundaries,
     region_boundaries,
+    search_work,
     stability_certificate,
     steady_frequencies,
     step_counts,
@@ -720,6 +721,30 @@ def test_numerical_core_imports_numpy_and_scipy_only():
 # --------------------------------------------------------------------------------------------
 # The damping shortcuts of the region search (issue 15): certificate and candidate filter
 # --------------------------------------------------------------------------------------------
+def test_search_work_is_what_the_search_integrates():
+    # the cost model's input, known before the search: a steady instability (A < 0) or a
+    # certified damped system (Mathieu mu = 0.002 < eps sqrt(1 - eps^2) / 2, eps = 0.01) costs
+    # nothing; the undamped Mathieu equation on [1.5, 2.5] has one candidate, Omega = 2 (2 w / j
+    # for j = 1 only), integrated at the half-period step count of step_counts at 2, and the
+    # search finds exactly that region; damped but not certified (mu = 0.1) the same candidate
+    # with the damped full-period count as well
+    assert search_work(ONE, None, [[-1.0]], [[0.1]], 1.5, 2.5).steady
+    cert = search_work(*mathieu(0.002, 0.01), 1.5, 2.5)
+    assert cert.certified and cert.n_candidates == 0 and cert.undamped_steps == 0
+    w = search_work(*mathieu(0.1), 1.5, 2.5)
+    assert (w.n, w.steady, w.certified, w.n_candidates, w.n_narrow, w.damped_steps) == (
+        1, False, False, 1, 0, 0)
+    und = periodic_system(*mathieu(0.1))
+    assert w.undamped_steps == step_counts(und, [2.0], step_phase=0.12)[0]
+    (r,) = instability_regions(*mathieu(0.1), 1.5, 2.5)
+    assert (r.kind, r.order, r.omega_center) == ("simple", 1, 2.0)
+    d = search_work(*mathieu(0.1, 0.01), 1.5, 2.5)
+    assert (d.n_candidates, d.undamped_steps) == (1, w.undamped_steps)
+    assert d.damped_steps == step_counts(periodic_system(*mathieu(0.1, 0.01)), [2.0],
+                                         step_phase=0.12)[0]
+    assert json.dumps(d.to_dict())
+
+
 def test_certificate_of_damped_mathieu_closed_form():
     # f'' + 2 eps f' + (1 - 2 mu cos) f: in the steady eigenbasis |G_ij| = |b| / (2 w_d) for
     # all four entries (b = 2 mu, w_d = sqrt(1 - eps^2)), so rho = 2 mu / (w_d eps) and, with

@@ -69,6 +69,8 @@ __all__ = [
     "region_boundaries",
     "CriticalAmplitude",
     "critical_amplitude",
+    "SearchWork",
+    "search_work",
 ]
 
 _KINDS = ("simple", "sum", "difference")
@@ -1039,6 +1041,120 @@ def instability_regions(M, C, A, B, omega_min: float, omega_max: float, *,
     return _search(periodic_system(M, C, A, B), lo, hi, opt)
 
 
+@dataclass(frozen=True)
+class SearchWork:
+    """What :func:`instability_regions` will integrate, known before it runs (a cost model).
+
+    Attributes
+    ----------
+    n : int
+        Degrees of freedom (dimensionless).
+    steady : bool
+        The steady system is unstable: the search returns one "steady" region at once.
+    certified : bool
+        Damped and certified stable at every Omega (:func:`stability_certificate`): no search.
+    n_candidates : int
+        Candidates examined with the monodromy (after the damping filter; dimensionless).
+    n_narrow : int
+        Candidates left to the harmonic-balance pair of :mod:`.narrow` (undamped only;
+        dimensionless).
+    undamped_steps : int
+        Sum over the monodromy candidates of the undamped half-period step count at the
+        centre (:func:`.multipliers.step_counts`; dimensionless): one undamped evaluation of
+        every candidate (the undamped search, or the seeds of the damped one).  Each step
+        costs ~n^3 (the modal Lawson kernel).
+    damped_steps : int
+        The same with the damped full-period step count (0 without damping): one damped
+        evaluation of every candidate (an upper bound: only the seeds that hold an undamped
+        region are searched with damping).
+
+    References
+    ----------
+    Cost model of :func:`.multipliers.step_counts` (Lawson 1967; docs/theory/floquet.md).
+    """
+
+    n: int
+    steady: bool
+    certified: bool
+    n_candidates: int
+    n_narrow: int
+    undamped_steps: int
+    damped_steps: int
+
+    def to_dict(self) -> dict:
+        """JSON-ready mapping."""
+        return {"n": int(self.n), "steady": bool(self.steady),
+                "certified": bool(self.certified), "n_candidates": int(self.n_candidates),
+                "n_narrow": int(self.n_narrow), "undamped_steps": int(self.undamped_steps),
+                "damped_steps": int(self.damped_steps)}
+
+
+def search_work(M, C, A, B, omega_min: float, omega_max: float, **options) -> SearchWork:
+    """The candidates and step counts of :func:`instability_regions`, without integrating.
+
+    The same steps as the search up to its first monodromy: the steady check, the
+    certificate and the damping filter (damped), the candidate table; then the step count of
+    :func:`.multipliers.step_counts` at each candidate centre.  The time of the search is
+    about a number of evaluations per candidate times these steps (calibrated by the caller,
+    e.g. :func:`flexbooster.vehicle.harmonic_search_seconds`).
+
+    Parameters
+    ----------
+    M, C, A, B : array_like
+        The system (see :func:`instability_regions`).
+    omega_min, omega_max : float
+        Range of Omega (rad per time unit of the matrices), 0 < omega_min < omega_max.
+    **options
+        As :func:`instability_regions` (rtol, step_phase, max_steps, max_order,
+        max_candidates, chunk, damping_margin).
+
+    Returns
+    -------
+    SearchWork
+
+    Raises
+    ------
+    ValueError
+        As :func:`instability_regions` (bad input, too many candidates, a step count over the
+        cap).
+
+    References
+    ----------
+    Bolotin (1964), ch. 1-2 (the candidate centres); Lawson (1967) (the step counts).
+    """
+    lo, hi = _range(omega_min, omega_max)
+    opt = _options(**options)
+    system = periodic_system(M, C, A, B)
+    none = dict(n=system.n, steady=False, certified=False, n_candidates=0, n_narrow=0,
+                undamped_steps=0, damped_steps=0)
+    if not _steady_check(system)[0]:
+        return SearchWork(**{**none, "steady": True})
+    if system.Bt is None:
+        raise ValueError("A = the steady matrix M^-1 A is defective (no modal frame): "
+                         "instability_regions needs distinct or semisimple eigenvalues")
+    undamped = system if not system.damped else LinearPeriodicSystem(
+        K0=system.K0, Kc=np.zeros_like(system.Kc), Kb=system.Kb, damped=False, mu=system.mu,
+        V=system.V, Bt=system.Bt)
+    rate = None
+    if system.damped and opt.damping_margin is not None:
+        if _certificate(system).certified:  # as _search: no region at any Omega
+            return SearchWork(**{**none, "certified": True})
+        rate = _modal_decay_rates(system)
+    cand = _candidates(np.sqrt(system.mu.real), undamped.Bt, lo, hi, opt, rate=rate)
+    mono = cand["mono"]
+    centres = cand["centre"][mono]
+    steps_u = steps_d = 0
+    if centres.size:
+        steps_u = int(np.sum(step_counts(undamped, centres, step_phase=opt.step_phase,
+                                         max_steps=opt.max_steps)))
+        if system.damped:
+            steps_d = int(np.sum(step_counts(system, centres, step_phase=opt.step_phase,
+                                             max_steps=opt.max_steps)))
+    return SearchWork(**{**none, "n_candidates": int(centres.size),
+                         "n_narrow": 0 if system.damped else int(np.count_nonzero(~mono)),
+                         "undamped_steps": steps_u, "damped_steps": steps_d})
+
+
 # --------------------------------------------------------------------------------------------
 # Amplitude dependence
 # --------------------------------------------------------------------------------------------
@@ -1266,7 +1382,8 @@ def _selector(r):
 
 
 def region_boundaries(M, C, A, B1, *, gamma_max: float, omega_min: float, omega_max: float,
-                      n_gamma: int = 21, **options) -> tuple[RegionBoundary, ...]:
+                      n_gamma: int = 21, regions: tuple | None = None,
+                      **options) -> tuple[RegionBoundary, ...]:
     """Boundary curves omega_lo(gamma), omega_hi(gamma) of every region (B = gamma B1).
 
     At each of ``n_gamma`` amplitudes in (0, gamma_max] the boundaries are solved from the
@@ -1285,6 +1402,9 @@ def region_boundaries(M, C, A, B1, *, gamma_max: float, omega_min: float, omega_
         Omega range (rad per time unit).
     n_gamma : int
         Number of amplitude levels, 2..1000.
+    regions : tuple of InstabilityRegion, optional
+        The regions at gamma_max from :func:`instability_regions` with the same range and
+        options, if already computed (saves that level's search; not checked).
     **options
         Passed to :func:`instability_regions`.
 
@@ -1305,7 +1425,9 @@ def region_boundaries(M, C, A, B1, *, gamma_max: float, omega_min: float, omega_
     opt = _options(**options)
     B1 = np.asarray(B1, dtype=float)
     levels = np.linspace(0.0, gmax, n_gamma)[1:]
-    found = [_search(periodic_system(M, C, A, g * B1), lo, hi, opt) for g in levels]
+    found = [_search(periodic_system(M, C, A, g * B1), lo, hi, opt) for g in levels[:-1]]
+    found.append(_search(periodic_system(M, C, A, levels[-1] * B1), lo, hi, opt)
+                 if regions is None else tuple(regions))  # levels[-1] = gamma_max
     crit = critical_amplitude(M, C, A, B1, gamma_max=gmax, omega_min=lo, omega_max=hi,
                               regions=found[-1], **options)  # levels[-1] = gamma_max
     out = []
