@@ -40,6 +40,7 @@ from flexbooster.vehicle import (
     follower_flutter_thrust,
     forced_axial,
     harmonic_system,
+    region_curves,
     vehicle_regions,
 )
 
@@ -635,3 +636,39 @@ def test_k1_in_the_map_against_the_full_bending_monodromy():
     out = floquet.growth_rate(Mr, None, Ar, Br, gaps)
     assert np.all(out < 1e-6 * np.array([r.growth_rate_max for r in res.regions[:-1]]))
     json.dumps(res.to_dict())
+
+
+# --------------------------------------------------------------------------- chart curves
+
+
+def test_region_curves_reuse_the_map_and_equal_fresh_boundaries(memo_vehicle):
+    """region_curves traces from the stored harmonic systems: at the map's own gamma it reuses
+    the map's rows as the top level and skips the harmonics without a region; its curves
+    equal floquet.region_boundaries of each harmonic searched afresh (every level, the top
+    included), to 1e-12 relative.  Default vehicle, undamped, 3 modes, k = 2..3, gamma = 0.3,
+    4 levels.  Above the map's gamma it traces every harmonic the certificate does not cover
+    (none when damped and certified: the default damping at gamma = 0.05); a budget too small
+    for any harmonic names each one and traces none."""
+    kw = dict(F0=2.8e6, omega_min=5.0, omega_max=2000.0, k_min=2, k_max=3, n_modes=3,
+              axial=False)
+    found = vehicle_regions(memo_vehicle, gamma=0.3, damping_ratio=0.0, **kw)
+    curves, skipped = region_curves(found, gamma_max=0.3, n_gamma=4)
+    assert skipped == () and {c.k for c in curves} == {2, 3}
+    for h in found.harmonics:
+        M, _, A, _ = h.matrices(0.3)
+        fresh = floquet.region_boundaries(M, None, A, h.excitation, gamma_max=0.3,
+                                          omega_min=5.0, omega_max=2000.0, n_gamma=4)
+        mine = [c for c in curves if c.k == h.k]
+        assert [(c.kind, c.order, tuple(c.modes)) for c in mine] == [
+            (c.kind, c.order, tuple(c.modes)) for c in fresh]
+        for a, b in zip(mine, fresh, strict=True):
+            for x, y in ((a.gamma, b.gamma), (a.omega_lo, b.omega_lo),
+                         (a.omega_hi, b.omega_hi)):
+                np.testing.assert_allclose(x, y, rtol=1e-12)
+    none, why = region_curves(found, gamma_max=0.3, n_gamma=4, max_seconds=1e-9)
+    assert none == () and [w.split(" not searched")[0] for w in why] == [
+        "max_seconds = 1e-09: harmonic k = 2", "max_seconds = 1e-09: harmonic k = 3"]
+    damped = vehicle_regions(memo_vehicle, gamma=0.05, damping_ratio=0.01, **kw)
+    assert region_curves(damped, gamma_max=0.1, n_gamma=4) == ((), ())
+    with pytest.raises(ValueError, match="^gamma_max = "):
+        region_curves(found, gamma_max=0.0)
