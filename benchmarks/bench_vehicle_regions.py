@@ -1,7 +1,7 @@
 """Benchmark: flexbooster.vehicle.vehicle_regions on the default case's vehicle (issue 15).
 
 The vehicle of ``flexbooster.model.vehicle_from_case(flexbooster.default_case())`` (the memo's
-two cylinders, memo bulkhead, shear-diaphragm ends, inertia relief), F0 = 2.8 MN, k = 1..10
+two cylinders, memo bulkhead, shear-diaphragm ends, inertia relief), F0 = 2.8 MN, k = 1..20
 (k = 1: bending with the gimbal gain K = 0.5 of the default case), 20 modes per k, Omega =
 5..2000 rad/s, gamma = 0.05, damping ratio 0.01 (the default case).  Times, in the same run,
 
@@ -16,29 +16,90 @@ two cylinders, memo bulkhead, shear-diaphragm ends, inertia relief), F0 = 2.8 MN
   3. ``--hard``: a case where damping leaves a region (k = 3, 10 modes, Omega 10..300 rad/s,
      gamma = 0.5, zeta = 0.001) with the damping filter (default) and without
      (``damping_margin=None``), to show what the filter alone saves;
-  4. ``--cost``: the cost model of the searches (``flexbooster.vehicle.search_seconds`` plus
-     ``HARMONIC_BUILD_SECONDS``, issue 18) against the measured time of undamped k = 3 maps
-     with 4, 8 and 12 modes (``--cost-modes`` to change), the ratio estimate / measured.
+  4. ``--cost``: the per-harmonic cost model (``flexbooster.vehicle.harmonic_search_seconds``
+     of ``floquet.search_work``, issue 18) and the up-front one (``search_seconds``) against
+     the measured search of undamped k = 3 maps with 4, 8 and 12 modes (``--cost-modes``),
+     and of the damped harmonics that are not certified: the README example's k = 2 and the
+     free-free default vehicle's k = 1 (20 modes); the ratio estimate / measured.
+
+  5. ``--leftovers`` (issue 15 leftovers, branch vk2): the pipeline's stage
+     ``analysis.analyze_vehicle_regions(case, boundaries=True)`` (what ``flexbooster run``
+     runs, no budget) on the default case, the README's ``[vehicle]`` example and the default
+     vehicle with free ends, k = 1..10 and k = 1..20, against the same run's baseline: the
+     previous stage (a second full map with ``boundaries=True`` for the chart's curves, the
+     damped seeds refined to rtol: ``floquet.regions._monodromy_search(seeds=False)``); the
+     regions of both must be equal (kind, modes, order; edges to 1e-6 relative).  ``--run``
+     adds ``flexbooster run -j 1`` of the default case and of the README example (wall, CPU
+     of the child).
 
 Usage::
 
     OPENBLAS_NUM_THREADS=1 PYTHONPATH=src python benchmarks/bench_vehicle_regions.py \
-        [--n-modes 20] [--k-max 10] [--repeat 3] [--sample 16] [--hard] [--cost]
+        [--n-modes 20] [--k-max 20] [--repeat 3] [--sample 16] [--hard] [--cost] \
+        [--leftovers] [--run]
 """
 
 from __future__ import annotations
 
 import argparse
+import dataclasses
+import resource
+import subprocess
+import sys
+import tempfile
 import time
+import tomllib
+from pathlib import Path
 
 import numpy as np
 
 import flexbooster
+from flexbooster import floquet
+from flexbooster.analysis import analyze_vehicle_regions
+from flexbooster.case import default_case_text, load_case
 from flexbooster.floquet import growth_rate
+from flexbooster.floquet import regions as floquet_regions
 from flexbooster.model import vehicle_from_case
-from flexbooster.vehicle import HARMONIC_BUILD_SECONDS, search_seconds, vehicle_regions
+from flexbooster.vehicle import (
+    bending_harmonic,
+    harmonic_search_seconds,
+    harmonic_system,
+    search_seconds,
+    vehicle_regions,
+)
+from flexbooster.vehicle.regions import _floquet_options, _harmonic_regions
 
 F0, GAMMA, LO, HI = 2.8e6, 0.05, 5.0, 2000.0
+
+#: The README's ``[vehicle]`` example (appended to the default case).
+README_VEHICLE = """
+[vehicle]
+E = "70 GPa"
+nu = 0.3
+rho = "2700 kg/m^3"
+aft_end = "free"
+fwd_end = "free"
+theory = "sanders"
+k_max = 20
+[[vehicle.segments]]
+kind = "cylinder"
+radius = "1.5 m"
+length = "6 m"
+thickness = "16 mm"
+[[vehicle.segments]]
+kind = "cone"
+radius_aft = "1.5 m"
+radius_fwd = "1.0 m"
+length = "1 m"
+thickness = "16 mm"
+junction = "continuous"
+"""
+#: The default vehicle with free ends.
+FREE_ENDS = """
+[vehicle]
+aft_end = "free"
+fwd_end = "free"
+"""
 
 
 def best_of(fn, repeat: int):
@@ -68,19 +129,24 @@ def first_order_widths(h, gamma: float) -> np.ndarray:
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--n-modes", type=int, default=20)
-    ap.add_argument("--k-max", type=int, default=10)
+    ap.add_argument("--k-max", type=int, default=20)
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--sample", type=int, default=16, help="scan points timed per k")
     ap.add_argument("--hard", action="store_true", help="also the filter-only case")
     ap.add_argument("--cost", action="store_true", help="also the cost model check")
     ap.add_argument("--cost-modes", type=int, nargs="+", default=[4, 8, 12])
+    ap.add_argument("--leftovers", action="store_true", help="the pipeline stage, vk2")
+    ap.add_argument("--run", action="store_true", help="flexbooster run of two cases")
     args = ap.parse_args()
+    print(f"load average {Path('/proc/loadavg').read_text().split()[:3]} at start")
     veh = vehicle_from_case(flexbooster.default_case())
     kw = dict(F0=F0, gamma=GAMMA, omega_min=LO, omega_max=HI, k_min=1, k_max=args.k_max,
               n_modes=args.n_modes, gimbal_gain=0.5)
     res, t_map, c_map = best_of(lambda: vehicle_regions(veh, **kw), args.repeat)
     print(f"default case vehicle, k = 1..{args.k_max}, {args.n_modes} modes per k, "
           f"Omega = {LO:g}..{HI:g} rad/s, gamma = {GAMMA}, zeta = 0.01")
+    _, t_10, c_10 = best_of(lambda: vehicle_regions(veh, **{**kw, "k_max": 10}), args.repeat)
+    print(f"k = 1..10 (the former cap), same run: {t_10:.3f} s wall, {c_10:.3f} s CPU")
     _, t_k1, c_k1 = best_of(lambda: vehicle_regions(veh, **{**kw, "k_max": 1}, axial=False),
                             args.repeat)
     print(f"k = 1 alone (bending, gimbal gain 0.5): {t_k1:.3f} s wall, {c_k1:.3f} s CPU")
@@ -116,13 +182,118 @@ def main() -> None:
               f" / {c_f:.2f} s CPU, unfiltered {t_u:.2f} s / {c_u:.2f} s CPU, ratio "
               f"{t_u / t_f:.2f}; {len(fast.regions)} region(s), same as unfiltered: {same}")
     if args.cost:
-        for n in args.cost_modes:  # a handful of sizes
-            ck = dict(F0=F0, gamma=GAMMA, omega_min=LO, omega_max=HI, k_min=3, k_max=3,
-                      n_modes=n, damping_ratio=0.0, axial=False)
-            got, t_c, _ = best_of(lambda ck=ck: vehicle_regions(veh, **ck), 1)
-            est = HARMONIC_BUILD_SECONDS + search_seconds(n, LO, HI, damped=False)
-            print(f"cost model, undamped k = 3, {n} modes: measured {t_c:.2f} s, estimated "
-                  f"{est:.2f} s, ratio {est / t_c:.2f} ({len(got.regions)} regions)")
+        cost_check(args.cost_modes)
+    if args.leftovers:
+        leftovers(args.repeat)
+    if args.run:
+        cli_runs()
+
+
+def _case(text: str):
+    return load_case(tomllib.loads(text))
+
+
+def cost_check(modes) -> None:
+    """Estimate / measured CPU time of single harmonics' searches (item 4 of the docstring)."""
+    opts = _floquet_options(1e-9, 0.12, None, floquet.DAMPING_MARGIN)
+    memo = vehicle_from_case(flexbooster.default_case())
+    cases = [(f"default vehicle, k = 3, {n} modes, undamped", memo, 3, n, 0.0) for n in modes]
+    cases += [("README example, k = 2, 20 modes, zeta = 0.01",
+               vehicle_from_case(_case(default_case_text() + README_VEHICLE)), 2, 20, 0.01),
+              ("free-free default vehicle, k = 1, 20 modes, zeta = 0.01",
+               vehicle_from_case(_case(default_case_text() + FREE_ENDS)), 1, 20, 0.01)]
+    for name, veh, k, n, zeta in cases:  # a handful of harmonics
+        h = (bending_harmonic(veh, F0=F0, n_modes=n, damping_ratio=zeta, gimbal_gain=0.5)
+             if k == 1 else harmonic_system(veh, k, F0=F0, n_modes=n, damping_ratio=zeta))
+        M, C, A, B = h.matrices(GAMMA)
+        work = floquet.search_work(M, C if zeta > 0 else None, A, B, LO, HI, **opts)
+        (rows, *_), _, cpu = best_of(lambda h=h: _harmonic_regions(h, GAMMA, LO, HI, opts), 1)
+        est = harmonic_search_seconds(work)
+        up = search_seconds(A.shape[0], LO, HI, damped=zeta > 0)
+        print(f"cost model, {name}: measured {cpu:.2f} s CPU ({len(rows)} regions, "
+              f"{work.n_candidates} candidates); per harmonic {est:.2f} s (ratio "
+              f"{est / cpu:.2f}); up front {up:.2f} s (ratio {up / cpu:.2f})")
+
+
+def _previous_stage(case):
+    """The stage before vk2 (same numerics otherwise): the map, then the chart's curves by a
+    second full map with boundaries=True up to the chart's gamma; the damped seeds refined to
+    rtol (seeds=False); no budget."""
+    from flexbooster.analysis import _chart_gamma
+    from flexbooster.memo import charts
+    from flexbooster.vehicle_case import VehicleTable
+
+    table = case.vehicle if case.vehicle is not None else VehicleTable()
+    t = case.thrust
+    settings = dict(F0=case.F0, omega_min=t.omega_min, omega_max=t.omega_max, k_min=1,
+                    k_max=table.k_max, n_modes=table.n_modes,
+                    damping_ratio=table.damping_ratio, gimbal_gain=t.K)
+    real = floquet_regions._monodromy_search
+
+    def no_seeds(*a, seeds=False, **k):
+        return real(*a, seeds=False, **k)
+
+    floquet_regions._monodromy_search = no_seeds
+    try:
+        veh = vehicle_from_case(case)
+        found = vehicle_regions(veh, gamma=t.gamma, **settings)
+        top = _chart_gamma(found)
+        if top > 0.0 and (top == t.gamma and found.regions or top > t.gamma and
+                          vehicle_regions(veh, gamma=top, **settings).regions):
+            curved = vehicle_regions(veh, gamma=t.gamma, boundaries=True, gamma_max=top,
+                                     n_gamma=charts.VEHICLE_CHART_LEVELS, **settings)
+            found = dataclasses.replace(found, curves=curved.curves)
+        return found
+    finally:
+        floquet_regions._monodromy_search = real
+
+
+def _same_regions(a, b) -> bool:
+    key = [(r.k, r.kind, r.order, tuple(m.index for m in r.modes)) for r in a.regions]
+    if key != [(r.k, r.kind, r.order, tuple(m.index for m in r.modes)) for r in b.regions]:
+        return False
+    return all(abs(x.omega_lo - y.omega_lo) <= 1e-6 * y.omega_center
+               and abs(x.omega_hi - y.omega_hi) <= 1e-6 * y.omega_center
+               for x, y in zip(a.regions, b.regions, strict=True))
+
+
+def leftovers(repeat: int) -> None:
+    """Item 5 of the docstring: the stage, now and before, k = 1..10 and 1..20."""
+    cases = {"default case": default_case_text(),
+             "README [vehicle] example": default_case_text() + README_VEHICLE,
+             "default vehicle, free ends": default_case_text() + FREE_ENDS}
+    for name, text in cases.items():  # three cases
+        for k_max in (10, 20):
+            # no budget (max_seconds 1e9): the work itself; the vehicle table's k_max
+            body = ("max_seconds = 1e9\n" + text).replace("k_max = 20", f"k_max = {k_max}")
+            if "k_max =" not in body.split("[vehicle]")[-1]:
+                body += ("" if "[vehicle]" in body else "\n[vehicle]\n") + f"k_max = {k_max}\n"
+            case = _case(body)
+            now, t_now, c_now = best_of(
+                lambda case=case: analyze_vehicle_regions(case, boundaries=True), repeat)
+            old, t_old, c_old = best_of(lambda case=case: _previous_stage(case), 1)
+            print(f"{name}, k = 1..{k_max}: stage {t_now:.2f} s wall / {c_now:.2f} s CPU "
+                  f"(best of {repeat}; {len(now.regions)} regions, {len(now.curves)} curves, "
+                  f"skipped {len(now.skipped)}); previous stage {t_old:.2f} s / {c_old:.2f} s "
+                  f"CPU ({len(old.curves)} curves); CPU ratio {c_old / c_now:.2f}; same "
+                  f"regions: {_same_regions(now, old)}", flush=True)
+
+
+def cli_runs() -> None:
+    """flexbooster run -j 1 of the default case and of the README example (wall, child CPU)."""
+    for name, text in (("default case", default_case_text()),
+                       ("README [vehicle] example", default_case_text() + README_VEHICLE)):
+        with tempfile.TemporaryDirectory() as tmp:
+            path = Path(tmp) / "case.toml"
+            path.write_text(text)
+            before = resource.getrusage(resource.RUSAGE_CHILDREN)
+            t0 = time.perf_counter()
+            subprocess.run([sys.executable, "-m", "flexbooster", "run", str(path), "-q",
+                            "-j", "1", "-o", str(Path(tmp) / "out")], check=True)
+            wall = time.perf_counter() - t0
+            after = resource.getrusage(resource.RUSAGE_CHILDREN)
+            cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+            print(f"flexbooster run -j 1, {name}: {wall:.1f} s wall, {cpu:.1f} s CPU")
 
 
 if __name__ == "__main__":

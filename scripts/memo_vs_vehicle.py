@@ -22,7 +22,6 @@ import numpy as np
 
 from flexbooster import default_case
 from flexbooster.analysis import (
-    VEHICLE_REGIONS_K_MAX,
     VEHICLE_REGIONS_K_MIN,
     analyze,
     analyze_vehicle_regions,
@@ -56,6 +55,8 @@ def main() -> None:
     """Print the tables."""
     ap = argparse.ArgumentParser()
     ap.add_argument("--n-modes", type=int, default=20)
+    ap.add_argument("--k-max", type=int, default=10,
+                    help="highest harmonic of the damping sweep (the pipeline: vehicle.k_max)")
     ap.add_argument("--zetas", type=float, nargs="*", default=[1e-4, 3e-4, 1e-3])
     args = ap.parse_args()
     case = default_case()
@@ -78,7 +79,7 @@ def main() -> None:
             print(f"memo shells, k = {kk}: lowest {low:.5g} rad/s (each cylinder alone)")
     t0 = time.perf_counter()
     damped = analyze_vehicle_regions(case, boundaries=False)
-    print(f"pipeline stage (k = {VEHICLE_REGIONS_K_MIN}..{VEHICLE_REGIONS_K_MAX}, "
+    print(f"pipeline stage (k = {VEHICLE_REGIONS_K_MIN}..{damped.harmonics[-1].k}, "
           f"{damped.harmonics[-1].omega_loaded.size} modes, zeta = {damped.damping_ratio:g}): "
           f"{_regions_line(damped)}; certified {sum(c.certified for c in damped.certificates)}"
           f" of {len(damped.certificates)} ({time.perf_counter() - t0:.1f} s)")
@@ -90,7 +91,7 @@ def main() -> None:
               f"{damped.gamma * c.amplitude_factor:.3g}")
     v = vehicle_from_case(case)
     kw = dict(F0=case.F0, gamma=t.gamma, omega_min=t.omega_min, omega_max=t.omega_max,
-              k_min=VEHICLE_REGIONS_K_MIN, k_max=VEHICLE_REGIONS_K_MAX, n_modes=args.n_modes,
+              k_min=VEHICLE_REGIONS_K_MIN, k_max=args.k_max, n_modes=args.n_modes,
               gimbal_gain=t.K, axial=False)
     sweep = {}
     for zeta in [0.0, *args.zetas]:

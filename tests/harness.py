@@ -17,7 +17,8 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["Reference", "assert_close", "check_reference", "assert_mpmath_equal"]
+__all__ = ["Reference", "assert_close", "check_reference", "assert_mpmath_equal",
+           "ivp_monodromy", "ivp_growth_rate"]
 
 
 @dataclass(frozen=True)
@@ -132,3 +133,28 @@ def assert_mpmath_equal(func: Callable[..., Any], mpfunc: Callable[..., Any],
     check_reference(func, Reference(name=name, source=f"mpmath at {dps} digits",
                                     points=tuple(points), expected=expected, rtol=rtol,
                                     atol=atol))
+
+
+def ivp_monodromy(M, C, A, B, Omega: float) -> np.ndarray:
+    """Independent monodromy of M q'' + C q' + (A + B cos Omega t) q = 0: scipy solve_ivp
+    (DOP853, rtol 1e-12, atol 1e-14) over one period, column by column (C may be 0)."""
+    from scipy.integrate import solve_ivp
+
+    M, C, A, B = (np.atleast_2d(np.asarray(x, dtype=float)) for x in (M, C, A, B))
+    n = M.shape[0]
+    Mi = np.linalg.inv(M)
+
+    def rhs(t, z):
+        q, v = z[:n], z[n:]
+        return np.concatenate([v, -Mi @ (C @ v + (A + B * np.cos(Omega * t)) @ q)])
+
+    T = 2.0 * np.pi / Omega
+    cols = [solve_ivp(rhs, (0.0, T), e, method="DOP853", rtol=1e-12, atol=1e-14).y[:, -1]
+            for e in np.eye(2 * n)]
+    return np.array(cols).T
+
+
+def ivp_growth_rate(M, C, A, B, Omega: float) -> float:
+    """log|rho|_max / T (1/time unit) from :func:`ivp_monodromy`."""
+    rho = np.linalg.eigvals(ivp_monodromy(M, C, A, B, Omega))
+    return float(np.log(np.max(np.abs(rho))) * Omega / (2.0 * np.pi))

@@ -14,7 +14,6 @@ import sys
 
 import numpy as np
 import pytest
-from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 from scipy.special import mathieu_a, mathieu_b
 
@@ -30,12 +29,14 @@ from flexbooster.floquet import (
     monodromy,
     periodic_boundaries,
     region_boundaries,
+    search_work,
     stability_certificate,
     steady_frequencies,
     step_counts,
 )
 from flexbooster.floquet.multipliers import periodic_system
 from flexbooster.floquet.regions import _candidates, _modal_decay_rates, _options
+from harness import ivp_growth_rate, ivp_monodromy
 
 ONE = [[1.0]]
 
@@ -57,22 +58,6 @@ def mathieu_edges(mu: float, r: int, qfac: float = 4.0) -> tuple[float, float]:
 def mathieu(mu: float, eps: float = 0.0):
     """(M, C, A, B) of f'' + 2 eps f' + (1 - 2 mu cos theta t) f = 0."""
     return ONE, [[2.0 * eps]], ONE, [[-2.0 * mu]]
-
-
-def ivp_monodromy(M, C, A, B, Omega: float) -> np.ndarray:
-    """Independent monodromy: scipy solve_ivp (DOP853, rtol 1e-12) over one period."""
-    M, C, A, B = (np.atleast_2d(np.asarray(x, dtype=float)) for x in (M, C, A, B))
-    n = M.shape[0]
-    Mi = np.linalg.inv(M)
-
-    def rhs(t, z):
-        q, v = z[:n], z[n:]
-        return np.concatenate([v, -Mi @ (C @ v + (A + B * np.cos(Omega * t)) @ q)])
-
-    T = 2.0 * np.pi / Omega
-    cols = [solve_ivp(rhs, (0.0, T), e, method="DOP853", rtol=1e-12, atol=1e-14).y[:, -1]
-            for e in np.eye(2 * n)]
-    return np.array(cols).T
 
 
 def random_system(n: int, seed: int, damped: bool, scale: float = 0.4):
@@ -267,6 +252,35 @@ def test_damped_march_stays_inside_the_range():
 
 
 W1, W2 = 1.0, 2.3
+
+
+def test_damped_region_wider_than_its_undamped_seed_is_marched_to_its_edges():
+    # a sum region of two modes with very unequal damping (C = diag(2 d1, 2 d2), d1 << d2:
+    # like the vehicle's nearly undamped rigid pitch against a damped bending mode) is much
+    # wider with damping than without: first-order averaging (Hsu 1963) gives the half-width
+    # (d1 + d2) sqrt(L / (d1 d2) - 1), L = eps^2 b12 b21 / (16 w1 w2): 0.0653 here against
+    # the undamped half-width 0.0066 (the search used to stop its march 4 undamped widths
+    # out, at Omega = 3.2407 where the growth rate is still +5.2e-6, and report that as an
+    # edge).  Checks: each edge is a |rho|_max = 1 point of an independent monodromy
+    # (solve_ivp DOP853, rtol 1e-12): growth < 0 just outside and > 0 just inside, at
+    # +-1e-6 relative; the half-width within 1e-2 of Hsu's first order (measured 6e-4); the
+    # growth rate at the reported maximum to 1e-6 relative (measured 3e-7)
+    eps, d1, d2 = 0.02, 2.5e-5, 0.01
+    M, _, A, B = hsu(eps, 1.0, 1.0)
+    C = np.diag([2.0 * d1, 2.0 * d2])
+    (r,) = instability_regions(M, C, A, B, 2.5, 4.0, max_order=1)
+    assert (r.kind, r.modes, r.clipped) == ("sum", (0, 1), False)
+
+    def growth(x):
+        return ivp_growth_rate(M, C, A, B, x)
+
+    for edge, inward in ((r.omega_lo, 1.0), (r.omega_hi, -1.0)):
+        assert growth(edge * (1.0 - inward * 1e-6)) < 0.0 < growth(edge * (1.0 + inward * 1e-6))
+    lam = eps**2 / (16.0 * W1 * W2)
+    half = (d1 + d2) * np.sqrt(lam / (d1 * d2) - 1.0)
+    assert r.width / 2.0 == pytest.approx(half, rel=1e-2)
+    assert r.width > 9.0 * eps / np.sqrt(W1 * W2)  # past the former march limit
+    assert r.growth_rate_max == pytest.approx(growth(r.omega_at_max), rel=1e-6)
 
 
 def hsu(eps: float, b12: float, b21: float):
@@ -533,17 +547,13 @@ def test_narrow_combination_region_of_order_two():
         assert reg.growth_rate_max == pytest.approx(g, rel=1e-3)
 
 
-def test_damped_mathieu_tip_exact_and_independent_of_search_tolerance():
-    # damped Mathieu f'' + 2 eps f' + (1 - 2 mu cos theta t) f = 0, eps = 0.01.  Reference:
-    # the exact shift f = exp(-eps t) p gives p'' + (1 - eps^2 - 2 mu cos theta t) p = 0, so
-    # the tip mu_cr is where max_theta (undamped growth of p) = eps; that growth from Hill's
-    # method (S = 12, an independent method), maximised over theta (bounded Brent, 1e-10) and
-    # solved for mu (brentq, 1e-12).  critical_amplitude (gamma_rtol 1e-8) to 1e-6 relative,
-    # and the tip of region_boundaries with the chart's coarse options (rtol 1e-4,
-    # step_phase 0.25) equal to it to 1e-6 (it used to be biased up by the search tolerance)
+def _damped_mathieu_tip(eps: float) -> float:
+    """mu_cr of f'' + 2 eps f' + (1 - 2 mu cos theta t) f = 0, principal region.  The exact
+    shift f = exp(-eps t) p gives p'' + (1 - eps^2 - 2 mu cos theta t) p = 0, so the tip is
+    where max_theta (undamped growth of p) = eps; that growth from Hill's method (S = 12, an
+    independent method), maximised over theta (bounded Brent, 1e-10), solved for mu (brentq,
+    1e-12)."""
     from scipy.optimize import minimize_scalar
-
-    eps = 0.01
 
     def excess(mu):
         res = minimize_scalar(
@@ -552,7 +562,16 @@ def test_damped_mathieu_tip_exact_and_independent_of_search_tolerance():
             bounds=(1.95, 2.05), method="bounded", options={"xatol": 1e-10})
         return -res.fun - eps
 
-    mu_cr = brentq(excess, 0.015, 0.03, xtol=1e-12)
+    return brentq(excess, 1.5 * eps, 3.0 * eps, xtol=1e-12)
+
+
+def test_damped_mathieu_tip_exact_and_independent_of_search_tolerance():
+    # damped Mathieu, eps = 0.01, tip mu_cr from the exact shift and Hill's method
+    # (_damped_mathieu_tip).  critical_amplitude (gamma_rtol 1e-8) to 1e-6 relative,
+    # and the tip of region_boundaries with the chart's coarse options (rtol 1e-4,
+    # step_phase 0.25) equal to it to 1e-6 (it used to be biased up by the search tolerance)
+    eps = 0.01
+    mu_cr = _damped_mathieu_tip(eps)
     (crit,) = critical_amplitude(ONE, [[2.0 * eps]], ONE, [[-2.0]], gamma_max=3.0 * mu_cr,
                                  omega_min=1.5, omega_max=2.5, gamma_rtol=1e-8)
     assert crit.gamma_cr == pytest.approx(mu_cr, rel=1e-6)
@@ -560,6 +579,21 @@ def test_damped_mathieu_tip_exact_and_independent_of_search_tolerance():
                               omega_min=1.5, omega_max=2.5, n_gamma=2, rtol=1e-4,
                               step_phase=0.25)
     assert rb.gamma[0] == pytest.approx(crit.gamma_cr, rel=1e-6)
+
+
+def test_damped_mathieu_tip_far_below_gamma_max():
+    # damped Mathieu, eps = 0.01, gamma_max = 40 mu_cr: the principal region at gamma_max
+    # spans 1.5..2.5 with its growth maximum far from the tip; below the tip's neighbourhood
+    # the growth is flat (-eps) outside the narrow undamped region of the smaller amplitude.
+    # The tip search used to start each growth maximum from the previous maximiser, converged
+    # on that plateau and returned 2.1 mu_cr; now it starts from the best of the previous
+    # maximiser, the candidate centre and 5 samples.  Reference: _damped_mathieu_tip (exact
+    # shift + Hill); tolerance 1e-6 relative (gamma_rtol 1e-8)
+    eps = 0.01
+    mu_cr = _damped_mathieu_tip(eps)
+    (crit,) = critical_amplitude(ONE, [[2.0 * eps]], ONE, [[-2.0]], gamma_max=40.0 * mu_cr,
+                                 omega_min=1.5, omega_max=2.5, max_order=1, gamma_rtol=1e-8)
+    assert crit.gamma_cr == pytest.approx(mu_cr, rel=1e-6)
 
 
 def test_growth_rate_max_inside_region():
@@ -704,6 +738,30 @@ def test_numerical_core_imports_numpy_and_scipy_only():
 # --------------------------------------------------------------------------------------------
 # The damping shortcuts of the region search (issue 15): certificate and candidate filter
 # --------------------------------------------------------------------------------------------
+def test_search_work_is_what_the_search_integrates():
+    # the cost model's input, known before the search: a steady instability (A < 0) or a
+    # certified damped system (Mathieu mu = 0.002 < eps sqrt(1 - eps^2) / 2, eps = 0.01) costs
+    # nothing; the undamped Mathieu equation on [1.5, 2.5] has one candidate, Omega = 2 (2 w / j
+    # for j = 1 only), integrated at the half-period step count of step_counts at 2, and the
+    # search finds exactly that region; damped but not certified (mu = 0.1) the same candidate
+    # with the damped full-period count as well
+    assert search_work(ONE, None, [[-1.0]], [[0.1]], 1.5, 2.5).steady
+    cert = search_work(*mathieu(0.002, 0.01), 1.5, 2.5)
+    assert cert.certified and cert.n_candidates == 0 and cert.undamped_steps == 0
+    w = search_work(*mathieu(0.1), 1.5, 2.5)
+    assert (w.n, w.steady, w.certified, w.n_candidates, w.n_narrow, w.damped_steps) == (
+        1, False, False, 1, 0, 0)
+    und = periodic_system(*mathieu(0.1))
+    assert w.undamped_steps == step_counts(und, [2.0], step_phase=0.12)[0]
+    (r,) = instability_regions(*mathieu(0.1), 1.5, 2.5)
+    assert (r.kind, r.order, r.omega_center) == ("simple", 1, 2.0)
+    d = search_work(*mathieu(0.1, 0.01), 1.5, 2.5)
+    assert (d.n_candidates, d.undamped_steps) == (1, w.undamped_steps)
+    assert d.damped_steps == step_counts(periodic_system(*mathieu(0.1, 0.01)), [2.0],
+                                         step_phase=0.12)[0]
+    assert json.dumps(d.to_dict())
+
+
 def test_certificate_of_damped_mathieu_closed_form():
     # f'' + 2 eps f' + (1 - 2 mu cos) f: in the steady eigenbasis |G_ij| = |b| / (2 w_d) for
     # all four entries (b = 2 mu, w_d = sqrt(1 - eps^2)), so rho = 2 mu / (w_d eps) and, with

@@ -23,12 +23,16 @@ import tomllib
 import pytest
 
 import flexbooster
-from flexbooster import cost
-from flexbooster.analysis import VEHICLE_REGIONS_K_MAX, _vehicle_regions_stage, analyze
+from flexbooster import cost, floquet
+from flexbooster.analysis import _vehicle_regions_stage, analyze
 from flexbooster.case import default_case_text, load_case
 from flexbooster.errors import CaseError
 from flexbooster.model import vehicle_from_case
-from flexbooster.vehicle import vehicle_regions
+from flexbooster.vehicle import (
+    HARMONIC_BUILD_SECONDS,
+    harmonic_search_seconds,
+    vehicle_regions,
+)
 
 
 def _case(**vehicle):
@@ -39,7 +43,7 @@ def _case(**vehicle):
 
 
 def test_big_undamped_vehicle_case_is_refused_up_front():
-    """k_max = 40, n_modes = 40, undamped: the regions (k = 1..10, each searched: no
+    """k_max = 40, n_modes = 40, undamped: the regions (k = 1..40, each searched: no
     certificate without damping) are estimated at thousands of seconds, over the default
     budget of 300 s: analyze refuses before any solver runs (CaseError on max_seconds) and the
     message has the estimate and the driving fields (vehicle.n_modes, vehicle.damping_ratio,
@@ -54,7 +58,7 @@ def test_big_undamped_vehicle_case_is_refused_up_front():
     for name in ("vehicle.n_modes", "vehicle.damping_ratio", "vehicle.k_max",
                  "thrust.omega_min"):
         assert name in msg
-    est = cost.estimate_vehicle_cost(case, regions_k_max=VEHICLE_REGIONS_K_MAX)
+    est = cost.estimate_vehicle_cost(case)
     assert est.parts["vehicle regions"] > case.max_seconds
     # without the vehicle regions (--no-vehicle) the same case fits
     assert cost.estimate_vehicle_cost(case, regions=False).seconds < case.max_seconds
@@ -63,37 +67,45 @@ def test_big_undamped_vehicle_case_is_refused_up_front():
 @pytest.mark.parametrize("vehicle", [{}, {"k_max": 40, "n_modes": 40}],
                          ids=["default", "damped-40-modes"])
 def test_default_and_damped_cases_are_not_refused(vehicle):
-    """The default case (no [vehicle]: k = 1..10, 20 modes, zeta = 0.01) and a damped
-    40-mode [vehicle] case fit the budget: with damping the estimate is the certified lower
-    bound (building each harmonic; measured 0.5 s and 1.1 s on one core), the budget is then
-    enforced per harmonic (next test)."""
+    """The default case (no [vehicle]: k = 1..20, 20 modes, zeta = 0.01) and a damped
+    40-mode [vehicle] case (k = 1..40) fit the budget: with damping the estimate is the
+    certified lower bound (building each harmonic), the budget is then enforced per harmonic
+    (next test)."""
     case = _case(**vehicle)
     model = cost.derived_model(case)
     est = cost.check_case_cost(model, case.max_seconds, vehicle=cost.estimate_vehicle_cost(
-        case, regions_k_max=VEHICLE_REGIONS_K_MAX), beam_action=True, stability=True,
+        case), beam_action=True, stability=True,
         figures=True)
     assert est.parts["vehicle regions"] < 5.0 and est.seconds < case.max_seconds
-    upper = cost.estimate_vehicle_cost(case, regions_k_max=VEHICLE_REGIONS_K_MAX,
-                                       certified=False)
+    upper = cost.estimate_vehicle_cost(case, certified=False)
     assert upper.parts["vehicle regions"] > est.parts["vehicle regions"]
 
 
 def test_harmonics_past_the_budget_are_skipped_and_named():
     """The default vehicle, undamped, 3 modes, k = 1..3, gamma = 0.3 (regions in every k):
-    with max_seconds = 0.25 s the model (0.05 s per harmonic built, ~0.16 s per 3-mode
-    search) admits k = 1 only; k = 2, 3 are named in ``skipped`` (not searched, no rows) and
-    k = 1's rows equal those of the run without a budget (exact)."""
+    with a budget between the running estimate after k = 1 (one build and k = 1's search) and
+    the one k = 2 or k = 3 would add (each harmonic's estimate from
+    floquet.search_work, its candidates and step counts), k = 1 is searched and k = 2, 3 are
+    named in ``skipped`` (not searched, no rows); k = 1's rows equal those of the run without
+    a budget (exact)."""
     veh = vehicle_from_case(flexbooster.default_case())
     kw = dict(F0=2.8e6, gamma=0.3, omega_min=5.0, omega_max=2000.0, k_min=1, k_max=3,
               n_modes=3, damping_ratio=0.0, gimbal_gain=0.5, axial=False)
     free = vehicle_regions(veh, **kw)
-    capped = vehicle_regions(veh, max_seconds=0.25, **kw)
+    est = []
+    for h in free.harmonics:
+        M, _, A, B = h.matrices(0.3)
+        est.append(harmonic_search_seconds(floquet.search_work(M, None, A, B, 5.0, 2000.0)))
+    build = HARMONIC_BUILD_SECONDS
+    budget = 2.0 * build + est[0] + 0.5 * min(est[1], est[2])
+    capped = vehicle_regions(veh, max_seconds=budget, **kw)
     assert {r.k for r in free.regions} == {1, 2, 3} and free.skipped == ()
     assert [w.split(" not searched")[0] for w in capped.skipped] == [
-        "max_seconds = 0.25: harmonic k = 2", "max_seconds = 0.25: harmonic k = 3"]
+        f"max_seconds = {budget:g}: harmonic k = 2", f"max_seconds = {budget:g}: harmonic k = 3"]
     assert all("vehicle.n_modes" in w and "estimated at" in w for w in capped.skipped)
     assert capped.regions == tuple(r for r in free.regions if r.k == 1)
     assert capped.to_dict()["skipped"] == list(capped.skipped)
+    assert capped.estimated_seconds == pytest.approx(3 * build + est[0], rel=1e-12)
     with pytest.raises(ValueError, match="^max_seconds = "):
         vehicle_regions(veh, max_seconds=0.0, **kw)
 

@@ -48,7 +48,13 @@ from flexbooster.model import vehicle_from_case
 from flexbooster.present.io import dumps_finite
 from flexbooster.present.vehicle import VEHICLE_REGION_CSV_COLUMNS, vehicle_region_columns
 from flexbooster.results import MemoRootsInRegions
-from flexbooster.vehicle import RegionMode, VehicleRegion, VehicleRegions, vehicle_regions
+from flexbooster.vehicle import (
+    RegionCurve,
+    RegionMode,
+    VehicleRegion,
+    VehicleRegions,
+    vehicle_regions,
+)
 
 #: The small memo analysis of the tests (the vehicle stage is what is tested).
 SMALL_TRUNCATION = dict(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)
@@ -226,54 +232,62 @@ def test_region_fields_and_defaults():
 
 
 class _Recorder:
-    """Stands in for vehicle_regions: records the calls, returns empty regions (or, at the
-    chart's gamma, one region so that the curves are asked for)."""
+    """Stands in for vehicle_regions and region_curves: records the calls, returns empty
+    regions (a running estimate of 1.5 s) and, for the curves, one curve and one skipped
+    harmonic."""
 
-    def __init__(self, probe_finds: bool):
+    def __init__(self):
         self.calls = []
-        self.probe_finds = probe_finds
+        self.curve_calls = []
 
     def __call__(self, vehicle, **kw):
         self.calls.append(kw)
-        found = (_region(2, 10.0, 11.0),) if (self.probe_finds and not kw.get("boundaries")
-                                               and kw["gamma"] == VEHICLE_CHART_GAMMA_MAX) else ()
-        return dataclasses.replace(_regions(*found), gamma=kw["gamma"])
+        return dataclasses.replace(_regions(), gamma=kw["gamma"], estimated_seconds=1.5)
+
+    def curves(self, found, **kw):
+        self.curve_calls.append((found, kw))
+        curve = RegionCurve(k=2, kind="simple", order=1, modes=(0,), gamma=np.array([0.1]),
+                            omega_lo=np.array([10.0]), omega_hi=np.array([11.0]))
+        return (curve,), ("max_seconds = 1: harmonic k = 3 not searched for the chart",)
 
 
-@pytest.mark.parametrize("probe_finds", [False, True], ids=["no-region-at-chart-gamma",
-                                                              "region-at-chart-gamma"])
-def test_stage_passes_the_case_settings_and_defaults(monkeypatch, probe_finds):
-    """Without [vehicle]: damping 0.01, 20 modes, k = 1..10 (issue 15 defaults), the case's
-    F0, gamma, Omega range, gimbal gain K (for k = 1) and budget max_seconds; the curves are
-    traced only when a region exists at the chart's
-    gamma (floquet.region_boundaries traces those only)."""
+def test_stage_passes_the_case_settings_and_defaults(monkeypatch):
+    """Without [vehicle]: damping 0.01, 20 modes, k = 1..20 (issue 15 defaults, vehicle.k_max
+    of the memo vehicle), the case's F0, gamma, Omega range, gimbal gain K (for k = 1) and
+    budget max_seconds in one search; the chart's curves from the stored map
+    (vehicle.region_curves) up to the chart's gamma with the chart's levels, in the budget
+    the map left (max_seconds - its running estimate); their curves and skipped harmonics
+    reach the result; a [vehicle] k_max is passed as it is (no cap at 10 any more)."""
     import flexbooster.analysis as analysis
 
-    rec = _Recorder(probe_finds)
+    rec = _Recorder()
     monkeypatch.setattr(analysis, "vehicle_regions", rec)
+    monkeypatch.setattr(analysis, "region_curves", rec.curves)
     # the chart's top gamma as far as the certificate allows (tested below): here the constant
     monkeypatch.setattr(analysis, "_chart_gamma", lambda found: VEHICLE_CHART_GAMMA_MAX)
     case = load_case(small_case_data())
-    analyze_vehicle_regions(case, boundaries=True)
-    expected = dict(F0=case.F0, omega_min=5.0, omega_max=2000.0, k_min=1, k_max=10,
+    found = analyze_vehicle_regions(case, boundaries=True)
+    expected = dict(F0=case.F0, omega_min=5.0, omega_max=2000.0, k_min=1, k_max=20,
                     n_modes=20, damping_ratio=0.01, gimbal_gain=case.thrust.K,
                     max_seconds=case.max_seconds)
-    first, probe = rec.calls[:2]
+    (first,) = rec.calls
     assert first == {**expected, "gamma": 0.05}
-    assert probe == {**expected, "gamma": VEHICLE_CHART_GAMMA_MAX}
-    if probe_finds:
-        assert rec.calls[2] == {**expected, "gamma": 0.05, "boundaries": True,
-                                "gamma_max": VEHICLE_CHART_GAMMA_MAX,
-                                "n_gamma": VEHICLE_CHART_LEVELS}
-    assert len(rec.calls) == 2 + probe_finds
+    ((mapped, kw),) = rec.curve_calls
+    assert mapped.gamma == 0.05
+    assert kw == {"gamma_max": VEHICLE_CHART_GAMMA_MAX, "n_gamma": VEHICLE_CHART_LEVELS,
+                  "max_seconds": case.max_seconds - 1.5}
+    assert [c.k for c in found.curves] == [2] and found.chart_gamma_max == VEHICLE_CHART_GAMMA_MAX
+    assert found.skipped == ("max_seconds = 1: harmonic k = 3 not searched for the chart",)
     rec.calls.clear()
+    rec.curve_calls.clear()
     analyze_vehicle_regions(load_case(small_case_data(k_max=4, n_modes=5, damping_ratio=0.2)),
                             boundaries=False)
     (only,) = rec.calls
     assert (only["k_max"], only["n_modes"], only["damping_ratio"]) == (4, 5, 0.2)
+    assert rec.curve_calls == []
     rec.calls.clear()
     analyze_vehicle_regions(load_case(small_case_data(k_max=40)), k_min=3, boundaries=False)
-    assert (rec.calls[0]["k_min"], rec.calls[0]["k_max"]) == (3, 10)  # min(k_max, 10)
+    assert (rec.calls[0]["k_min"], rec.calls[0]["k_max"]) == (3, 40)
 
 
 @pytest.mark.parametrize("path", [None, "titan-inch-pound.toml"], ids=["default", "titan"])

@@ -40,6 +40,7 @@ from flexbooster.vehicle import (
     follower_flutter_thrust,
     forced_axial,
     harmonic_system,
+    region_curves,
     vehicle_regions,
 )
 
@@ -635,3 +636,126 @@ def test_k1_in_the_map_against_the_full_bending_monodromy():
     out = floquet.growth_rate(Mr, None, Ar, Br, gaps)
     assert np.all(out < 1e-6 * np.array([r.growth_rate_max for r in res.regions[:-1]]))
     json.dumps(res.to_dict())
+
+
+# --------------------------------------------------------------------------- k = 1, damped
+
+
+def _cone_vehicle() -> Vehicle:
+    """A free-free steel cylinder-cone-cylinder (R 0.5 m / 0.35 m, 4 m + 1 m cone + 3 m,
+    h 4 / 4 / 3 mm) with a continuous cone junction and a rigid bulkhead at the second."""
+    return Vehicle([Cylinder(0.5, 4.0, 0.004, **STEEL), Cone(0.5, 0.35, 1.0, 0.004, **STEEL),
+                    Cylinder(0.35, 3.0, 0.003, **STEEL)],
+                   junctions=["continuous", "rigid-bulkhead"])
+
+
+def _tube_vehicle() -> Vehicle:
+    return Vehicle([Cylinder(0.05, 5.0, 0.002, **STEEL)])
+
+
+#: (vehicle, F0 (N), basis modes, elements per segment, step_phase): the tube of the
+#: undamped k = 1 test at p = F0 l^2 / EI = 20; the cone vehicle at 2e5 N.
+K1_DAMPED = {
+    "tube": (_tube_vehicle, 20.0 * STEEL["E"] * np.pi * 0.05**3 * 0.002 / 25.0, 5, 20, 0.06),
+    "cone-junction": (_cone_vehicle, 2e5, 6, 8, 0.03),
+}
+
+
+def _edge_is_a_zero(growth, edge: float, inward: float, peak: float) -> bool:
+    """An edge to 1e-6 relative: the reference growth changes sign across edge (1 -+ 1e-6)
+    (a steep edge), or it is zero at the edge to 1e-6 of the region's peak growth (a flat
+    edge, where the growth stays within round-off of 0 over more than 1e-6 of Omega)."""
+    out, inside = (growth(edge * (1.0 - inward * 1e-6)), growth(edge * (1.0 + inward * 1e-6)))
+    return (out <= 0.0 < inside) or abs(growth(edge)) <= 1e-6 * peak
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("which", sorted(K1_DAMPED))
+def test_k1_damped_regions_against_an_independent_monodromy(which):
+    """The damped k = 1 search (zeta = 0.01 on the elastic modes, none on the rigid pitch),
+    K = 0.5, gamma = 0.1, Omega / omega_1 in 0.25..2, first order, on a uniform free-free
+    tube and on a free-free cylinder-cone-cylinder with a rigid bulkhead.  Independent
+    reference: the monodromy by scipy solve_ivp (DOP853, rtol 1e-12; tests/harness.py) of the
+    full bending_system (the rigid translation kept) for the growth rates, of the map's system
+    at the edges; for the critical gamma a bounded scipy maximisation over Omega of the
+    toolkit's monodromy at a fixed 1024 steps per period (converged to ~3e-8 in the growth).
+    Checks: at least one region with the rigid pitch (damped sum regions of the nearly
+    undamped pitch are many times wider than undamped: the march to the range ends); growth
+    at each reported maximum to 1e-6 relative (measured: tube 7e-8, 3e-8; cone 8e-7); each
+    edge a zero of the reference growth to 1e-6 (sign change across +-1e-6 relative, or
+    |growth| <= 1e-6 of the peak where the edge is flat: the cone's upper edge); each region
+    absent at 0.999 gamma_cr and present at 1.001 gamma_cr (maximal growth over Omega < 0
+    and > 0).  At the default step_phase 0.12 the damped kernel's step count is coarser
+    (docs/theory/vehicle-regions.md, sec. 5): the tube's rigid-pitch edges then err by
+    1.1e-6 and its growth by 1.8e-6 relative, the cone's growth by 1.4e-5 at 0.06."""
+    from scipy.optimize import minimize_scalar
+
+    from harness import ivp_growth_rate
+
+    make, F0, n_modes, eps, step_phase = K1_DAMPED[which]
+    veh = make()
+    kw = dict(F0=F0, n_modes=n_modes, gimbal_gain=0.5, elements_per_segment=eps,
+              damping_ratio=0.01)
+    full = bending_system(veh, **kw)
+    w1 = full.omega_unloaded[2]
+    res = vehicle_regions(veh, gamma=0.1, omega_min=0.25 * w1, omega_max=2.0 * w1, k_min=1,
+                          k_max=1, max_order=1, axial=False, step_phase=step_phase, **kw)
+    assert not res.certificates[0].certified  # the rigid pitch is undamped
+    assert any(m.type == "rigid-pitch" for r in res.regions for m in r.modes)
+    Mf, Cf, Af, Bf = full.matrices(0.1)
+    h = res.harmonic(1)
+    M, C, A, B = h.matrices(0.1)
+    for r in res.regions:
+        peak = ivp_growth_rate(Mf, Cf, Af, Bf, r.omega_at_max)
+        assert r.growth_rate_max == pytest.approx(peak, rel=1e-6)
+        for edge, inward in ((r.omega_lo, 1.0), (r.omega_hi, -1.0)):
+            assert _edge_is_a_zero(lambda x: ivp_growth_rate(M, C, A, B, x), edge, inward,
+                                   peak), (r.kind, edge)
+
+        def max_growth(gamma, r=r):  # scipy's bounded Brent over the region at gamma = 0.1
+            B1 = h.excitation * gamma
+            best = minimize_scalar(
+                lambda x: -floquet.growth_rate(M, C, A, B1, [x], n_steps=1024)[0],
+                bounds=(r.omega_lo, r.omega_hi), method="bounded",
+                options={"xatol": 1e-9 * r.omega_hi})
+            return -best.fun
+
+        assert r.critical_gamma > 0.0
+        assert max_growth(0.999 * r.critical_gamma) < 0.0 < max_growth(1.001 * r.critical_gamma)
+    json.dumps(res.to_dict())
+
+
+# --------------------------------------------------------------------------- chart curves
+
+
+def test_region_curves_reuse_the_map_and_equal_fresh_boundaries(memo_vehicle):
+    """region_curves traces from the stored harmonic systems: at the map's own gamma it reuses
+    the map's rows as the top level and skips the harmonics without a region; its curves
+    equal floquet.region_boundaries of each harmonic searched afresh (every level, the top
+    included), to 1e-12 relative.  Default vehicle, undamped, 3 modes, k = 2..3, gamma = 0.3,
+    4 levels.  Above the map's gamma it traces every harmonic the certificate does not cover
+    (none when damped and certified: the default damping at gamma = 0.05); a budget too small
+    for any harmonic names each one and traces none."""
+    kw = dict(F0=2.8e6, omega_min=5.0, omega_max=2000.0, k_min=2, k_max=3, n_modes=3,
+              axial=False)
+    found = vehicle_regions(memo_vehicle, gamma=0.3, damping_ratio=0.0, **kw)
+    curves, skipped = region_curves(found, gamma_max=0.3, n_gamma=4)
+    assert skipped == () and {c.k for c in curves} == {2, 3}
+    for h in found.harmonics:
+        M, _, A, _ = h.matrices(0.3)
+        fresh = floquet.region_boundaries(M, None, A, h.excitation, gamma_max=0.3,
+                                          omega_min=5.0, omega_max=2000.0, n_gamma=4)
+        mine = [c for c in curves if c.k == h.k]
+        assert [(c.kind, c.order, tuple(c.modes)) for c in mine] == [
+            (c.kind, c.order, tuple(c.modes)) for c in fresh]
+        for a, b in zip(mine, fresh, strict=True):
+            for x, y in ((a.gamma, b.gamma), (a.omega_lo, b.omega_lo),
+                         (a.omega_hi, b.omega_hi)):
+                np.testing.assert_allclose(x, y, rtol=1e-12)
+    none, why = region_curves(found, gamma_max=0.3, n_gamma=4, max_seconds=1e-9)
+    assert none == () and [w.split(" not searched")[0] for w in why] == [
+        "max_seconds = 1e-09: harmonic k = 2", "max_seconds = 1e-09: harmonic k = 3"]
+    damped = vehicle_regions(memo_vehicle, gamma=0.05, damping_ratio=0.01, **kw)
+    assert region_curves(damped, gamma_max=0.1, n_gamma=4) == ((), ())
+    with pytest.raises(ValueError, match="^gamma_max = "):
+        region_curves(found, gamma_max=0.0)

@@ -46,7 +46,7 @@ from .memo.stability import ShellModes, StabilityTable, TooManyRootsError, unsta
 from .model import vehicle_from_case
 from .results import SCHEMA_VERSION, UNITS, MemoRootsInRegions, Results
 from .shell_of_revolution.survey import VehicleSurvey, vehicle_survey
-from .vehicle import VehicleRegions, vehicle_regions
+from .vehicle import VehicleRegions, region_curves, vehicle_regions
 
 __all__ = [
     "analyze",
@@ -61,7 +61,6 @@ __all__ = [
     "VEHICLE_STAGE",
     "VEHICLE_REGIONS_STAGE",
     "VEHICLE_REGIONS_K_MIN",
-    "VEHICLE_REGIONS_K_MAX",
     "THIN_SHELL_LIMIT",
     "MATHIEU_A_RANGE",
     "MATHIEU_Q_MAX",
@@ -81,12 +80,11 @@ VEHICLE_STAGE = "vehicle modes"
 #: The stage announced last, unless ``analyze(..., vehicle=False)``: the vehicle's parametric
 #: instability regions (every case: ``[vehicle]`` or the memo's two cylinders).
 VEHICLE_REGIONS_STAGE = "vehicle instability regions"
-#: Harmonics k of the vehicle regions: k = VEHICLE_REGIONS_K_MIN..min(vehicle.k_max,
-#: VEHICLE_REGIONS_K_MAX); k = 1 is the bending harmonic with the rigid pitch, the gimbal
-#: control and the follower thrust (:func:`flexbooster.vehicle.bending_regions`), k = 0 the
-#: forced axial resonances.
+#: Harmonics k of the vehicle regions: k = VEHICLE_REGIONS_K_MIN..vehicle.k_max (default 20,
+#: also for the memo vehicle of a case without ``[vehicle]``); k = 1 is the bending harmonic
+#: with the rigid pitch, the gimbal control and the follower thrust
+#: (:func:`flexbooster.vehicle.bending_regions`), k = 0 the forced axial resonances.
 VEHICLE_REGIONS_K_MIN = 1
-VEHICLE_REGIONS_K_MAX = 10
 #: Thin-shell theory (Donnell, memo 2.3) is trusted for h/R up to 1/20.
 THIN_SHELL_LIMIT = 1.0 / 20.0
 #: The memo's range for the Mathieu parameters (eq. 4.2-5): 0 < a < 1, 0 < q <= 0.05.
@@ -291,8 +289,7 @@ def _feasibility(case: Case, model: BoosterModel, *, with_regions: bool = True,
     any solver runs; the warnings of the budget and of the load."""
     cost.check_physical(model)
     # the vehicle stages too (issue 18 item 1): modes survey, regions (lower bound with damping)
-    veh = dict(regions_k_max=VEHICLE_REGIONS_K_MAX, regions=with_regions,
-               figures=stages.get("figures", True))
+    veh = dict(regions=with_regions, figures=stages.get("figures", True))
     est = cost.check_case_cost(model, case.max_seconds,
                                vehicle=cost.estimate_vehicle_cost(case, **veh), **stages)
     out = cost.physical_warnings(model) + cost.capped_steps_warning(est, model)
@@ -453,9 +450,9 @@ def _vehicle_regions_stage(case: Case, *, boundaries: bool
     """The regions of :func:`analyze_vehicle_regions`, or None and a warning where they cannot
     be computed (k_max < 1, or the steady thrust buckles a harmonic): the run goes on."""
     from .errors import CaseError
+    from .vehicle_case import VehicleTable
 
-    table = case.vehicle
-    k_max = table.k_max if table is not None else VEHICLE_REGIONS_K_MAX
+    k_max = (case.vehicle if case.vehicle is not None else VehicleTable()).k_max
     if k_max < VEHICLE_REGIONS_K_MIN:
         return None, [AnalysisWarning(
             "vehicle-regions-skipped", "vehicle.k_max",
@@ -492,16 +489,16 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
         Lowest harmonic (dimensionless), >= 1 (:data:`VEHICLE_REGIONS_K_MIN`: k = 1 with the
         case's gimbal gain ``thrust.K``, the rigid pitch and the follower thrust).
     k_max : int, optional
-        Highest harmonic (dimensionless); default min(``vehicle.k_max``,
-        :data:`VEHICLE_REGIONS_K_MAX`).
+        Highest harmonic (dimensionless); default ``vehicle.k_max`` (20 without a
+        ``[vehicle]`` table).
     boundaries : bool
         Also trace the boundary curves in (Omega, gamma) for the chart, at
         :data:`flexbooster.memo.charts.VEHICLE_CHART_LEVELS` levels up to
         :data:`flexbooster.memo.charts.VEHICLE_CHART_GAMMA_MAX` as far as the stability
         certificate allows (:func:`_chart_gamma`; at least the case's gamma).
-        Only the regions that exist at
-        that gamma have curves (:func:`flexbooster.floquet.region_boundaries`), so the curves
-        are traced only when a search at that gamma finds one.
+        Only the regions that exist at that gamma have curves
+        (:func:`flexbooster.vehicle.region_curves`: the harmonics with a region there, from
+        their stored systems, in the budget the searches left).
 
     Returns
     -------
@@ -523,7 +520,7 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
     from .vehicle_case import VehicleTable
 
     table = case.vehicle if case.vehicle is not None else VehicleTable()
-    k_max = min(table.k_max, VEHICLE_REGIONS_K_MAX) if k_max is None else k_max
+    k_max = table.k_max if k_max is None else k_max
     if k_max < k_min:
         raise CaseError("vehicle.k_max", table.k_max,
                         f"the parametric regions need k_max >= {k_min}")
@@ -536,18 +533,14 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
         try:
             found = vehicle_regions(vehicle, gamma=t.gamma, **settings)
             top = _chart_gamma(found)
-            if boundaries and top > 0.0 and (top == t.gamma and found.regions or top > t.gamma
-                                             and vehicle_regions(vehicle, gamma=top,
-                                                                 **settings).regions):
-                # region_boundaries traces the regions of gamma_max: none there, no curve
-                curved = vehicle_regions(vehicle, gamma=t.gamma, boundaries=True,
-                                         gamma_max=top, n_gamma=charts.VEHICLE_CHART_LEVELS,
-                                         **settings)
-                # the regions of the search above; the curves (of the harmonics the budget
-                # allows, issue 18) from this one
-                found = dataclasses.replace(found, curves=curved.curves, skipped=found.skipped
-                                            + tuple(w for w in curved.skipped
-                                                    if w not in found.skipped))
+            if boundaries and top > 0.0:
+                # the harmonics that can have a region at the chart's top (above the case's
+                # gamma every harmonic is certified: none), in the budget the map left
+                curves, skipped = region_curves(
+                    found, gamma_max=top, n_gamma=charts.VEHICLE_CHART_LEVELS,
+                    max_seconds=max(case.max_seconds - found.estimated_seconds, 1e-9))
+                found = dataclasses.replace(found, curves=curves,
+                                            skipped=found.skipped + skipped)
             found = dataclasses.replace(found, chart_gamma_max=top if boundaries else None)
         except ValueError as exc:
             if "buckles" in str(exc):

@@ -273,17 +273,18 @@ def _dof_factor(vehicle) -> float:
     return max(1.0 / 3.0, (mesh_vehicle(vehicle).n_full / _REF_DOFS) ** 3)
 
 
-def estimate_vehicle_cost(case: Any, *, regions_k_max: int = 10, regions: bool = True,
-                          figures: bool = True, certified: bool = True) -> CostEstimate:
+def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
+                          regions: bool = True, figures: bool = True,
+                          certified: bool = True) -> CostEstimate:
     """The predicted time of the vehicle stages of :func:`flexbooster.analysis.analyze`.
 
     Parameters
     ----------
     case : Case
         The validated case (SI).
-    regions_k_max : int
-        Highest harmonic of the regions (dimensionless), >= 1
-        (:data:`flexbooster.analysis.VEHICLE_REGIONS_K_MAX`): k = 1..min(vehicle.k_max, it).
+    regions_k_max : int, optional
+        Highest harmonic of the regions (dimensionless), >= 1: k = 1..min(vehicle.k_max, it);
+        default ``vehicle.k_max`` (20 without a ``[vehicle]`` table), as the pipeline.
     regions : bool
         The vehicle's parametric regions are computed (``analyze(..., vehicle=True)``).
     figures : bool
@@ -297,9 +298,9 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int = 10, regions: bool =
     -------
     CostEstimate
         Parts "vehicle modes" (``[vehicle]`` only: one FE eigenproblem per k = 0..k_max) and
-        "vehicle regions" (k = 1..min(k_max, 10): build each harmonic, search those not
-        certified, :func:`flexbooster.vehicle.search_seconds`), with the fields that drive
-        them; no solver is run (the mesh is built to count its DOFs).
+        "vehicle regions" (k = 1..k_max: build each harmonic, search those not certified,
+        :func:`flexbooster.vehicle.search_seconds`), with the fields that drive them; no
+        solver is run (the mesh is built to count its DOFs).
 
     References
     ----------
@@ -322,7 +323,7 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int = 10, regions: bool =
         c0, c1 = _C_SURVEY
         parts["vehicle modes"] = c0 + c1 * (table.k_max + 1) * dofs
         drivers["vehicle modes"] = ("vehicle.k_max", "vehicle.segments")
-    n_k = min(table.k_max, int(regions_k_max))
+    n_k = table.k_max if regions_k_max is None else min(table.k_max, int(regions_k_max))
     if regions and n_k >= 1:
         damped = table.damping_ratio > 0.0
         searched = 0 if (damped and certified) or t.gamma == 0.0 else n_k

@@ -24,10 +24,12 @@ from .regions import (
     CriticalAmplitude,
     InstabilityRegion,
     RegionBoundary,
+    SearchWork,
     critical_amplitude,
     golden_section_max,
     instability_regions,
     region_boundaries,
+    search_work,
 )
 
 __all__ = [
@@ -40,6 +42,8 @@ __all__ = [
     "golden_section_max",
     "instability_regions",
     "region_boundaries",
+    "SearchWork",
+    "search_work",
     "LinearPeriodicSystem",
     "floquet_exponents",
     "floquet_multipliers",

@@ -70,6 +70,8 @@ __all__ = [
     "region_boundaries",
     "CriticalAmplitude",
     "critical_amplitude",
+    "SearchWork",
+    "search_work",
 ]
 
 _KINDS = ("simple", "sum", "difference")
@@ -530,17 +532,18 @@ def _brent_max(f, a: np.ndarray, b: np.ndarray, x0: np.ndarray, xtol: np.ndarray
 
 
 def _illinois(f, x_in: np.ndarray, f_in: np.ndarray, x_out: np.ndarray, f_out: np.ndarray,
-              xtol: np.ndarray, max_iter: int = 200) -> np.ndarray:
+              xtol: np.ndarray, max_iter: int = 200, bracket: bool = False):
     """Root of f between x_in (f > 0) and x_out (f <= 0), Illinois regula falsi, vectorised.
 
-    f(x, idx) evaluates the points idx only.
+    f(x, idx) evaluates the points idx only.  Returns the midpoints of the final brackets, or
+    with ``bracket`` the brackets themselves (x_in, f_in, x_out, f_out; f_in > 0 >= f_out).
     """
     a, fa, b, fb = x_in.copy(), f_in.copy(), x_out.copy(), f_out.copy()
     last = np.zeros(a.size, dtype=int)  # which end moved last (+1 a, -1 b)
     for it in range(max_iter):
         act = np.nonzero(np.abs(b - a) > xtol)[0]
         if act.size == 0:
-            return 0.5 * (a + b)
+            return (a, fa, b, fb) if bracket else 0.5 * (a + b)
         A_, FA, B_, FB = a[act], fa[act], b[act], fb[act]
         with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
             x = np.where(FA != FB, B_ - FB * (B_ - A_) / (FB - FA), 0.5 * (A_ + B_))
@@ -648,6 +651,45 @@ def _edges(f, x0: np.ndarray, f0: np.ndarray, d0: np.ndarray, direction,
     return root, clip
 
 
+#: Seeds of the damped search (:func:`_seed_edges`): each undamped edge to this fraction of
+#: the region's width (the damped search samples the seed interval and marches out from its
+#: damped maximum, so the seed's edges need not be |rho| = 1 points to rtol).
+_SEED_WIDTH_FRACTION = 1e-3
+
+
+def _seed_edges(f, x0: np.ndarray, f0: np.ndarray, d0: np.ndarray, limit: np.ndarray,
+                xtol: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Both edges of each region about x0 (f(x0) > 0) to a fraction of its width.
+
+    Entries 0..P-1 march down, P..2P-1 up (as in :func:`_edges`, without its gap check and
+    without the continuation through overlapping regions).  After the bracketing march each
+    round refines every bracket by Illinois to max(xtol, _SEED_WIDTH_FRACTION x W_in,
+    1e-2 x bracket), W_in = the distance between the two inner points (a lower bound of the
+    width: both are inside the region), until every bracket is below max(xtol,
+    _SEED_WIDTH_FRACTION x W_in): the edges are then known to that fraction of the width
+    whatever the region's size, at a fraction of the evaluations of the refinement to rtol.
+    Returns (edges, clipped).
+    """
+    P = x0.size
+    direction = np.concatenate([-np.ones(P), np.ones(P)])
+    X0, F0, D0 = (np.concatenate([v, v]) for v in (x0, f0, d0))
+    xi, fi, xo, fo, clip = _expand(f, X0, D0, direction, limit)
+    fi = np.where(np.isinf(fi), F0, fi)
+    XT = np.concatenate([xtol, xtol])
+    for _ in range(40):  # each round cuts the brackets by 100 at least
+        w_in = np.abs(xi[P:] - xi[:P])
+        goal = np.maximum(XT, _SEED_WIDTH_FRACTION * np.concatenate([w_in, w_in]))
+        act = np.nonzero(~clip & (np.abs(xo - xi) > goal))[0]
+        if act.size == 0:
+            break
+        tol = np.maximum(goal[act], 1e-2 * np.abs(xo - xi)[act])
+        xi[act], fi[act], xo[act], fo[act] = _illinois(
+            lambda x, a, act=act: f(x, act[a]), xi[act], fi[act], xo[act], fo[act], tol,
+            bracket=True)
+    edge = np.where(clip, limit, 0.5 * (xi + xo))
+    return edge, clip
+
+
 # --------------------------------------------------------------------------------------------
 # The search
 # --------------------------------------------------------------------------------------------
@@ -676,14 +718,18 @@ def _modal_decay_rates(system: LinearPeriodicSystem) -> np.ndarray | None:
     return 0.5 * np.real(np.diag(Ct))
 
 
-def _undamped_search(system, w, cand, lo, hi, opt, narrow: bool = True) -> list[dict]:
-    """Regions of the undamped system for the candidate table; list of plain dicts."""
+def _undamped_search(system, w, cand, lo, hi, opt, narrow: bool = True,
+                     seeds: bool = False) -> list[dict]:
+    """Regions of the undamped system for the candidate table; list of plain dicts.
+
+    ``seeds``: the seeds of the damped search (no narrow pass; each region's own edges to a
+    fraction of its width, :func:`_seed_edges`, instead of |rho|_max = 1 to rtol)."""
     if cand["centre"].size == 0:
         return []
     mono = cand["mono"]
     regs, fmax = _monodromy_search(system, w, {key: v[mono] for key, v in cand.items()}, lo,
-                                   hi, opt)
-    if not narrow:
+                                   hi, opt, seeds=seeds)
+    if not narrow or seeds:
         return regs
     # the candidates below the monodromy floor, and those whose indicator maximum stayed
     # between -_F_SCREEN and the round-off floor (a pair that approaches within 1e-6 in s)
@@ -720,9 +766,10 @@ def _narrow_pass(system, cand, regs, lo, hi) -> list[dict]:
     return out
 
 
-def _monodromy_search(system, w, cand, lo, hi, opt) -> tuple[list[dict], np.ndarray]:
+def _monodromy_search(system, w, cand, lo, hi, opt,
+                      seeds: bool = False) -> tuple[list[dict], np.ndarray]:
     """Regions found from the monodromy indicators (module docstring), and the maximum of
-    each candidate's indicator."""
+    each candidate's indicator (``seeds``: the edges by :func:`_seed_edges`)."""
     if cand["centre"].size == 0:
         return [], np.zeros(0)
     Oc = cand["centre"]
@@ -755,6 +802,18 @@ def _monodromy_search(system, w, cand, lo, hi, opt) -> tuple[list[dict], np.ndar
     out = []
     # both edges in one batch: entries 0..P-1 go down, P..2P-1 go up
     P = hit.size
+    if seeds:  # the damped search's seeds: each edge to a fraction of the width
+        edge, clip = _seed_edges(lambda x, idx: Fo(x, idx % P), x0, f0, d0,
+                                 np.concatenate([np.full(P, lo), np.full(P, hi)]), xtol[hit])
+        for m in range(P):
+            a, b = max(float(edge[m]), lo), min(float(edge[P + m]), hi)
+            if b - a <= xtol[hit][m]:
+                continue
+            out.append({"lo": a, "hi": b, "kind": int(sub["kind"][m]), "i": int(sub["i"][m]),
+                        "k": int(sub["k"][m]), "j": int(sub["j"][m]),
+                        "centre": float(sub["centre"][m]),
+                        "clipped": bool(clip[m] or clip[P + m])})
+        return out, fs
     direction = np.concatenate([-np.ones(P), np.ones(P)])
     limit = np.concatenate([np.full(P, lo), np.full(P, hi)])
     X0, F0, D0 = (np.concatenate([v, v]) for v in (x0, f0, d0))
@@ -787,8 +846,10 @@ def _monodromy_search(system, w, cand, lo, hi, opt) -> tuple[list[dict], np.ndar
 def _damped_search(system, undamped, opt, lo, hi) -> list[dict]:
     """Regions with damping, seeded by the undamped regions (see module docstring).
 
-    The outward marches stay inside [lo, hi], the range of the undamped seed search (> 0):
-    a march limit of 4 widths beyond a wide region could otherwise reach Omega <= 0.
+    The outward marches go on to the ends of [lo, hi], the range of the undamped seed search
+    (> 0), whatever the seed's width: a damped region may be much wider than its undamped seed
+    (Hsu 1963; docs/theory/floquet.md, sec. 4).  An edge is a point of log|rho|_max = 0 or an
+    end of that range (then ``clipped``).
     """
     if not undamped:
         return []
@@ -814,17 +875,21 @@ def _damped_search(system, undamped, opt, lo, hi) -> list[dict]:
         return out
     x0, g0 = xs[hit], gs[hit]
     d0 = np.maximum(width[hit] / 16.0, 4.0 * xtol[hit])
-    lo_lim = np.maximum(lo_u[hit] - 4.0 * width[hit], lo)
-    hi_lim = np.minimum(hi_u[hit] + 4.0 * width[hit], hi)
     P = hit.size
-    edge = _edges(lambda x, idx: G(x), np.concatenate([x0, x0]), np.concatenate([g0, g0]),
-                  np.concatenate([d0, d0]), np.concatenate([-np.ones(P), np.ones(P)]),
-                  np.concatenate([lo_lim, hi_lim]), np.concatenate([xtol[hit], xtol[hit]]),
-                  np.concatenate([0.5 * width[hit], 0.5 * width[hit]]))[0]
-    bounds = (edge[:P], edge[P:])
+    # the marches go on to the ends of the (widened) range: a damped region may be much wider
+    # than its undamped seed (a combination region with a nearly undamped mode: the threshold
+    # detuning grows like sqrt(lambda^2 / (delta_i delta_k)), Hsu 1963), and an edge is either
+    # a point of log|rho|_max = 0 or an end of the range (clipped)
+    edge, clip = _edges(lambda x, idx: G(x), np.concatenate([x0, x0]),
+                        np.concatenate([g0, g0]), np.concatenate([d0, d0]),
+                        np.concatenate([-np.ones(P), np.ones(P)]),
+                        np.concatenate([np.full(P, lo), np.full(P, hi)]),
+                        np.concatenate([xtol[hit], xtol[hit]]),
+                        np.concatenate([0.5 * width[hit], 0.5 * width[hit]]))
     for m_, m in enumerate(hit):
         r = dict(undamped[m])
-        r["lo"], r["hi"] = float(bounds[0][m_]), float(bounds[1][m_])
+        r["lo"], r["hi"] = float(edge[m_]), float(edge[P + m_])
+        r["clipped"] = bool(r["clipped"] or clip[m_] or clip[P + m_])
         out.append(r)
     return out
 
@@ -917,7 +982,8 @@ def _search(system: LinearPeriodicSystem, lo: float, hi: float, opt: _Options,
     if system.damped:  # seeds from the undamped system, searched a little wider
         # regions narrower than the monodromy floor (growth ~ width) are not looked for: damping
         # suppresses them unless the decay rate is below that growth
-        regs = _undamped_search(undamped, w, cand, 0.5 * lo, 2.0 * hi, opt, narrow=False)
+        regs = _undamped_search(undamped, w, cand, 0.5 * lo, 2.0 * hi, opt, narrow=False,
+                                seeds=True)
         regs = _damped_search(system, regs, opt, 0.5 * lo, 2.0 * hi)
     else:
         regs = _undamped_search(undamped, w, cand, lo, hi, opt)
@@ -989,6 +1055,120 @@ def instability_regions(M, C, A, B, omega_min: float, omega_max: float, *,
     opt = _options(rtol, step_phase, max_steps, max_order, max_candidates, chunk,
                    damping_margin)
     return _search(periodic_system(M, C, A, B), lo, hi, opt)
+
+
+@dataclass(frozen=True)
+class SearchWork:
+    """What :func:`instability_regions` will integrate, known before it runs (a cost model).
+
+    Attributes
+    ----------
+    n : int
+        Degrees of freedom (dimensionless).
+    steady : bool
+        The steady system is unstable: the search returns one "steady" region at once.
+    certified : bool
+        Damped and certified stable at every Omega (:func:`stability_certificate`): no search.
+    n_candidates : int
+        Candidates examined with the monodromy (after the damping filter; dimensionless).
+    n_narrow : int
+        Candidates left to the harmonic-balance pair of :mod:`.narrow` (undamped only;
+        dimensionless).
+    undamped_steps : int
+        Sum over the monodromy candidates of the undamped half-period step count at the
+        centre (:func:`.multipliers.step_counts`; dimensionless): one undamped evaluation of
+        every candidate (the undamped search, or the seeds of the damped one).  Each step
+        costs ~n^3 (the modal Lawson kernel).
+    damped_steps : int
+        The same with the damped full-period step count (0 without damping): one damped
+        evaluation of every candidate (an upper bound: only the seeds that hold an undamped
+        region are searched with damping).
+
+    References
+    ----------
+    Cost model of :func:`.multipliers.step_counts` (Lawson 1967; docs/theory/floquet.md).
+    """
+
+    n: int
+    steady: bool
+    certified: bool
+    n_candidates: int
+    n_narrow: int
+    undamped_steps: int
+    damped_steps: int
+
+    def to_dict(self) -> dict:
+        """JSON-ready mapping."""
+        return {"n": int(self.n), "steady": bool(self.steady),
+                "certified": bool(self.certified), "n_candidates": int(self.n_candidates),
+                "n_narrow": int(self.n_narrow), "undamped_steps": int(self.undamped_steps),
+                "damped_steps": int(self.damped_steps)}
+
+
+def search_work(M, C, A, B, omega_min: float, omega_max: float, **options) -> SearchWork:
+    """The candidates and step counts of :func:`instability_regions`, without integrating.
+
+    The same steps as the search up to its first monodromy: the steady check, the
+    certificate and the damping filter (damped), the candidate table; then the step count of
+    :func:`.multipliers.step_counts` at each candidate centre.  The time of the search is
+    about a number of evaluations per candidate times these steps (calibrated by the caller,
+    e.g. :func:`flexbooster.vehicle.harmonic_search_seconds`).
+
+    Parameters
+    ----------
+    M, C, A, B : array_like
+        The system (see :func:`instability_regions`).
+    omega_min, omega_max : float
+        Range of Omega (rad per time unit of the matrices), 0 < omega_min < omega_max.
+    **options
+        As :func:`instability_regions` (rtol, step_phase, max_steps, max_order,
+        max_candidates, chunk, damping_margin).
+
+    Returns
+    -------
+    SearchWork
+
+    Raises
+    ------
+    ValueError
+        As :func:`instability_regions` (bad input, too many candidates, a step count over the
+        cap).
+
+    References
+    ----------
+    Bolotin (1964), ch. 1-2 (the candidate centres); Lawson (1967) (the step counts).
+    """
+    lo, hi = _range(omega_min, omega_max)
+    opt = _options(**options)
+    system = periodic_system(M, C, A, B)
+    none = dict(n=system.n, steady=False, certified=False, n_candidates=0, n_narrow=0,
+                undamped_steps=0, damped_steps=0)
+    if not _steady_check(system)[0]:
+        return SearchWork(**{**none, "steady": True})
+    if system.Bt is None:
+        raise ValueError("A = the steady matrix M^-1 A is defective (no modal frame): "
+                         "instability_regions needs distinct or semisimple eigenvalues")
+    undamped = system if not system.damped else LinearPeriodicSystem(
+        K0=system.K0, Kc=np.zeros_like(system.Kc), Kb=system.Kb, damped=False, mu=system.mu,
+        V=system.V, Bt=system.Bt)
+    rate = None
+    if system.damped and opt.damping_margin is not None:
+        if _certificate(system).certified:  # as _search: no region at any Omega
+            return SearchWork(**{**none, "certified": True})
+        rate = _modal_decay_rates(system)
+    cand = _candidates(np.sqrt(system.mu.real), undamped.Bt, lo, hi, opt, rate=rate)
+    mono = cand["mono"]
+    centres = cand["centre"][mono]
+    steps_u = steps_d = 0
+    if centres.size:
+        steps_u = int(np.sum(step_counts(undamped, centres, step_phase=opt.step_phase,
+                                         max_steps=opt.max_steps)))
+        if system.damped:
+            steps_d = int(np.sum(step_counts(system, centres, step_phase=opt.step_phase,
+                                             max_steps=opt.max_steps)))
+    return SearchWork(**{**none, "n_candidates": int(centres.size),
+                         "n_narrow": 0 if system.damped else int(np.count_nonzero(~mono)),
+                         "undamped_steps": steps_u, "damped_steps": steps_d})
 
 
 # --------------------------------------------------------------------------------------------
@@ -1134,6 +1314,9 @@ _TIP_STEP_PHASE = 0.12
 #: Omega tolerance of the growth maximum at each amplitude, relative to the region's width at
 #: gamma_max (the growth is quadratic about its maximum: its error is ~1e-8 of the peak).
 _TIP_OMEGA_XTOL = 1e-4
+#: Samples across each region's Omega interval (ends included) besides the previous maximiser
+#: and the candidate centre, before each Brent maximum of the tip search.
+_TIP_SAMPLES = 5
 
 
 def _tips(base: LinearPeriodicSystem, top, opt: _Options, gamma_rtol: float):
@@ -1155,13 +1338,25 @@ def _tips(base: LinearPeriodicSystem, top, opt: _Options, gamma_rtol: float):
     a = np.array([r.omega_lo for r in top])
     b = np.array([r.omega_hi for r in top])
     xs = np.array([r.omega_at_max for r in top])
+    centre = np.clip(np.array([r.omega_center for r in top]), a, b)
     xtol = np.maximum(_TIP_OMEGA_XTOL * (b - a), 1e-15 * b)
+    grid = np.linspace(0.0, 1.0, _TIP_SAMPLES)
 
     def g(c, idx):
         def f(x, sub):
             return _growth_damped(base, x, tip, scale=c[idx][sub])
 
-        x, gx = _brent_max(f, a[idx], b[idx], xs[idx], xtol[idx])
+        # the start: the best of the previous maximiser, the candidate centre and a few
+        # samples.  Outside the undamped region of amplitude c the growth is flat (the
+        # modes' own decay); Brent started there converges on the plateau and misses a
+        # narrow peak near the tip (the region at a small c is a narrow interval about the
+        # centre: the first-order width is linear in c, its shift quadratic)
+        starts = np.column_stack([xs[idx], centre[idx],
+                                  a[idx, None] + (b - a)[idx, None] * grid[None, :]])
+        m = starts.shape[1]
+        fs = f(starts.ravel(), np.repeat(np.arange(idx.size), m)).reshape(starts.shape)
+        x0 = starts[np.arange(idx.size), np.argmax(fs, axis=1)]
+        x, gx = _brent_max(f, a[idx], b[idx], x0, xtol[idx])
         xs[idx] = x
         return gx
 
@@ -1203,7 +1398,8 @@ def _selector(r):
 
 
 def region_boundaries(M, C, A, B1, *, gamma_max: float, omega_min: float, omega_max: float,
-                      n_gamma: int = 21, **options) -> tuple[RegionBoundary, ...]:
+                      n_gamma: int = 21, regions: tuple | None = None,
+                      **options) -> tuple[RegionBoundary, ...]:
     """Boundary curves omega_lo(gamma), omega_hi(gamma) of every region (B = gamma B1).
 
     At each of ``n_gamma`` amplitudes in (0, gamma_max] the boundaries are solved from the
@@ -1222,6 +1418,9 @@ def region_boundaries(M, C, A, B1, *, gamma_max: float, omega_min: float, omega_
         Omega range (rad per time unit).
     n_gamma : int
         Number of amplitude levels, 2..1000.
+    regions : tuple of InstabilityRegion, optional
+        The regions at gamma_max from :func:`instability_regions` with the same range and
+        options, if already computed (saves that level's search; not checked).
     **options
         Passed to :func:`instability_regions`.
 
@@ -1242,7 +1441,9 @@ def region_boundaries(M, C, A, B1, *, gamma_max: float, omega_min: float, omega_
     opt = _options(**options)
     B1 = np.asarray(B1, dtype=float)
     levels = np.linspace(0.0, gmax, n_gamma)[1:]
-    found = [_search(periodic_system(M, C, A, g * B1), lo, hi, opt) for g in levels]
+    found = [_search(periodic_system(M, C, A, g * B1), lo, hi, opt) for g in levels[:-1]]
+    found.append(_search(periodic_system(M, C, A, levels[-1] * B1), lo, hi, opt)
+                 if regions is None else tuple(regions))  # levels[-1] = gamma_max
     crit = critical_amplitude(M, C, A, B1, gamma_max=gmax, omega_min=lo, omega_max=hi,
                               regions=found[-1], **options)  # levels[-1] = gamma_max
     out = []

@@ -24,7 +24,9 @@ from .regions import (
     RegionMode,
     VehicleRegion,
     VehicleRegions,
+    harmonic_search_seconds,
     harmonic_system,
+    region_curves,
     search_seconds,
     vehicle_regions,
 )
@@ -44,7 +46,9 @@ __all__ = [
     "bending_system",
     "follower_flutter_thrust",
     "forced_axial",
+    "harmonic_search_seconds",
     "harmonic_system",
+    "region_curves",
     "search_seconds",
     "vehicle_regions",
 ]

@@ -316,7 +316,7 @@ def bending_regions(
         opts = _floquet_options(opts.get("rtol", 1e-9), opts.get("step_phase", 0.12),
                                 opts.get("max_order"),
                                 opts.get("damping_margin", floquet.DAMPING_MARGIN))
-    rows, _, _ = _harmonic_regions(h, gamma, omega_min, omega_max, opts)
+    rows = _harmonic_regions(h, gamma, omega_min, omega_max, opts)[0]
     return tuple(sorted(rows, key=lambda r: r.omega_lo))
 
 

@@ -30,6 +30,7 @@ References
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
@@ -53,7 +54,9 @@ __all__ = [
     "VehicleRegions",
     "harmonic_system",
     "vehicle_regions",
+    "region_curves",
     "search_seconds",
+    "harmonic_search_seconds",
     "HARMONIC_BUILD_SECONDS",
 ]
 
@@ -61,24 +64,33 @@ __all__ = [
 K_MAX = 200
 
 # Cost model of one harmonic's region search (s, one core, the shared 2-core machine).
-# Measured on the default case's vehicle (memo cylinders, 263 FE DOFs), k = 3, gamma = 0.05,
-# undamped, Omega 5..2000 rad/s: n = 4 modes 0.22 s, 8: 0.95 s, 12: 2.57 s, 20: 19.2 s
-# (-> 0.15 + 1.2e-4 n^4: 0.18, 0.64, 2.6, 19.4 s); k = 8, n = 12: 3.2 s; n = 20 over
-# Omega 5..500: 10.7 s, 100..2000: 7.9 s (-> the log-range factor: 14.7, 9.6 s).  The time
-# is in floquet's Lawson monodromies (n^3 per step) over ~n^2 candidates.
-_SEARCH_FIXED = 0.15
-_SEARCH_PER_N4 = 1.2e-4
+# Up front (search_seconds, no FE solved): measured 2026-12-02 on the default case's vehicle
+# (memo cylinders, 263 FE DOFs), k = 3, gamma = 0.05, undamped, Omega 5..2000 rad/s:
+# n = 4 modes 0.11 s, 8: 0.53 s, 12: 1.43 s, 20: 9.6 s (-> 0.1 + 6e-5 n^4: 0.12, 0.35, 1.34,
+# 9.7 s); n = 20 over Omega 5..500: 8.0 s (-> the log-range factor: 7.5 s).  It does not see
+# the frequencies: the README's [vehicle] example (a short stiff vehicle, modes up to
+# 4000 rad/s against Omega_min = 5), k = 2, 8 modes, undamped, took 6.3 s against 0.35 s.
+_SEARCH_FIXED = 0.1
+_SEARCH_PER_N4 = 6e-5
 _SEARCH_LOG_RANGE = float(np.log(400.0))
-#: Damped but not certified: the damped search and the critical gamma (brentq over searches)
-#: of every surviving region; measured 9.1x the undamped search (k = 1 tube of the tests,
-#: 5 modes, zeta = 0.002: 19.0 s against 2.1 s).
-_DAMPED_SEARCH_FACTOR = 10.0
-#: With the chart's boundary curves (the pipeline: search, probe at the chart's top gamma,
-#: search with 4 levels): measured 4.9x (default vehicle k = 1..3, 8 modes, undamped).
-_BOUNDARY_SEARCH_FACTOR = 5.0
+# Per harmonic (harmonic_search_seconds, from floquet.search_work once the harmonic is
+# built): the undamped search costs ~1.64e-4 s per candidate step plus ~3.1e-8 s per
+# candidate step x n^3 (fit to the undamped runs above and to the README example, k = 2,
+# n = 8: 6.3 s, estimated 6.3 s; the free-free default vehicle, k = 1, n = 7: 0.32 s,
+# estimated 0.28 s; default vehicle k = 8, n = 12: 1.75 s, estimated 2.7 s).
+_STEP_SECONDS = 1.64e-4
+_STEP_N3_SECONDS = 3.1e-8
+#: Damped but not certified: the undamped seeds, the damped search of those that hold an
+#: undamped region and the critical gamma (tip search) of every damped region: measured 1.5-3.3x
+#: the undamped estimate of the same candidates (README example k = 2, 20 modes: 4.4 s;
+#: free-free default vehicle k = 1, 19 modes: 2.9 s; default vehicle k = 3, 10 modes,
+#: gamma = 0.5, zeta = 0.001: 0.66 s).
+_DAMPED_SEARCH_FACTOR = 3.0
+#: Up front, with the chart's curves: the search and 3 more levels (the tips are cheap).
+_BOUNDARY_SEARCH_FACTOR = 4.0
 #: Building one harmonic (FE modal system, labels, certificate) on the default case's mesh:
-#: k = 1..10, 20 modes, damped and certified, 0.48 s in all (s per harmonic).
-HARMONIC_BUILD_SECONDS = 0.05
+#: k = 1..20, 20 modes, damped and certified, 0.02 s per harmonic (measured 2026-12-02).
+HARMONIC_BUILD_SECONDS = 0.02
 
 
 def search_seconds(n_modes: int, omega_min: float, omega_max: float, *, damped: bool,
@@ -99,9 +111,11 @@ def search_seconds(n_modes: int, omega_min: float, omega_max: float, *, damped: 
     Returns
     -------
     float
-        Seconds on one core: (0.15 + 1.2e-4 n^4) ln(omega_max / omega_min) / ln(400), x 10
-        damped, x 5 with boundaries (calibration in the comments above; good to a factor of
-        about 2 on the vehicles measured).
+        Seconds on one core: (0.1 + 6e-5 n^4) ln(omega_max / omega_min) / ln(400), x 3
+        damped, x 4 with boundaries (the chart's 3 levels and the tips; calibration in the
+        comments above: good to a factor of about 2 on the memo vehicle, optimistic by up to
+        ~20 on a short stiff vehicle whose frequencies are far above omega_min, which
+        :func:`harmonic_search_seconds` sees).
 
     References
     ----------
@@ -115,6 +129,42 @@ def search_seconds(n_modes: int, omega_min: float, omega_max: float, *, damped: 
         np.log(hi / lo) / _SEARCH_LOG_RANGE, 0.05)
     return float(t * (_DAMPED_SEARCH_FACTOR if damped else 1.0)
                  * (_BOUNDARY_SEARCH_FACTOR if boundaries else 1.0))
+
+
+def harmonic_search_seconds(work: floquet.SearchWork, *, levels: int = 1) -> float:
+    """Estimated time of one harmonic's region search from what it will integrate.
+
+    Parameters
+    ----------
+    work : flexbooster.floquet.SearchWork
+        From :func:`flexbooster.floquet.search_work` on the harmonic's system (candidates
+        after the certificate and the damping filter, their step counts).
+    levels : int
+        Searches of the same cost (dimensionless), >= 1: 1 for the map, the number of
+        amplitude levels for the chart's curves.
+
+    Returns
+    -------
+    float
+        Seconds on one core: 0 for a certified or steadily unstable system; else
+        levels x (1.64e-4 + 3.1e-8 n^3) x the candidates' undamped step count, x 3 with
+        damping (the seeds, the damped search of the survivors and their critical gamma).
+        Calibration in this module's comments (within a factor of about 2 on the vehicles
+        measured).
+
+    References
+    ----------
+    Measured, see the module's comments; docs/theory/vehicle-regions.md, section 3d.
+    """
+    if not isinstance(work, floquet.SearchWork):
+        raise ValueError(f"work = {type(work).__name__}: must be a floquet.SearchWork")
+    levels = count("levels", levels, 1, 100_000)
+    if work.steady or work.certified:
+        return 0.0
+    per_step = _STEP_SECONDS + _STEP_N3_SECONDS * float(work.n) ** 3
+    damped = work.damped_steps > 0
+    return float(levels * per_step * work.undamped_steps
+                 * (_DAMPED_SEARCH_FACTOR if damped else 1.0))
 
 
 @dataclass(frozen=True)
@@ -411,6 +461,10 @@ class VehicleRegions:
         Harmonics not searched because their estimated search time would pass the budget
         (``max_seconds`` of :func:`vehicle_regions`), one line each; their regions are
         unknown.
+    estimated_seconds : float
+        The cost model's estimate of the work done (s, one core): the harmonics built and
+        searched (:data:`HARMONIC_BUILD_SECONDS`, :func:`harmonic_search_seconds`; the
+        searches only when a budget was given), without the curves.
     """
 
     regions: tuple
@@ -427,6 +481,7 @@ class VehicleRegions:
     chart_gamma_max: float | None = None
     gimbal_gain: float = 0.0
     skipped: tuple = ()
+    estimated_seconds: float = 0.0
 
     def harmonic(self, k: int) -> HarmonicSystem:
         """The system of harmonic k.
@@ -466,7 +521,8 @@ class VehicleRegions:
                 "certificates": [dict(c.to_dict(), k=int(h.k)) for h, c in
                                  zip(self.harmonics, self.certificates, strict=True)],
                 "gimbal_gain": float(self.gimbal_gain),
-                "skipped": [str(w) for w in self.skipped]}
+                "skipped": [str(w) for w in self.skipped],
+                "estimated_seconds": float(self.estimated_seconds)}
 
 
 # ----------------------------------------------------------------------------- checks
@@ -585,32 +641,35 @@ def _floquet_options(rtol, step_phase, max_order, damping_margin) -> dict:
 
 
 def _harmonic_regions(h: HarmonicSystem, gamma: float, lo: float, hi: float, opts: dict,
-                      budget: tuple | None = None) -> tuple[list, object, str | None]:
-    """The regions of one harmonic (VehicleRegion rows) and its stability certificate.
+                      budget: tuple | None = None) -> tuple[list, object, str | None, float]:
+    """The regions of one harmonic (VehicleRegion rows), its certificate, and the budget.
 
     The certificate (Desoer & Vidyasagar sec. 2.8) is of the system at gamma, none without
     damping; the critical gamma of each region that is not "steady" is
     :func:`flexbooster.floquet.critical_amplitude` (Bolotin sec. 6: the amplitude where the
     damped region's edges meet), 0 without damping.  ``budget`` = (max_seconds, seconds
-    estimated so far, boundaries): a harmonic that the certificate does not cover and whose
-    search (:func:`search_seconds`) would take the estimate past max_seconds is not searched:
-    no rows, and the reason (naming max_seconds and the drivers) as a third item; else None.
+    estimated so far): a harmonic whose search (:func:`harmonic_search_seconds` of
+    :func:`flexbooster.floquet.search_work`) would take the estimate past max_seconds is not
+    searched: no rows, and the reason (naming max_seconds and the drivers) as the third item
+    (else None).  The fourth item is the estimate of what was searched (s; 0 without budget).
     """
     M, C, A, B = h.matrices(gamma)
     Cf = C if h.damping_ratio > 0.0 else None
     cert = floquet.stability_certificate(M, Cf, A, B)  # none without damping
+    est = 0.0
     if budget is not None and not cert.certified and gamma > 0.0:
-        max_s, spent, curves = budget
-        est = search_seconds(A.shape[0], lo, hi, damped=Cf is not None, boundaries=curves)
+        max_s, spent = budget
+        work = floquet.search_work(M, Cf, A, B, lo, hi, **opts)
+        est = harmonic_search_seconds(work)
         if spent + est > max_s:
             return [], cert, (
-                f"max_seconds = {max_s:g}: harmonic k = {h.k} not searched"
-                + (" for the chart's boundary curves" if curves else "")
-                + f", its region search is estimated at {est:.3g} s ({A.shape[0]} modes, "
-                f"Omega {lo:.6g}..{hi:.6g} rad/s, damping ratio {h.damping_ratio:g}"
-                + ("" if Cf is None else ", not certified stable by the damping")
+                f"max_seconds = {max_s:g}: harmonic k = {h.k} not searched, its region search "
+                f"is estimated at {est:.3g} s ({A.shape[0]} modes, {work.n_candidates} "
+                f"candidates, Omega {lo:.6g}..{hi:.6g} rad/s, damping ratio "
+                f"{h.damping_ratio:g}" + ("" if Cf is None else ", not certified stable by "
+                                           "the damping")
                 + f"; {spent:.3g} s before it): reduce vehicle.n_modes or the Omega range, "
-                "raise vehicle.damping_ratio, or raise the budget")
+                "raise vehicle.damping_ratio, or raise the budget"), 0.0
     found = floquet.instability_regions(M, Cf, A, B, lo, hi, **opts)
     crit = {}
     if Cf is not None and any(r.kind != "steady" for r in found):  # Bolotin sec. 6
@@ -628,7 +687,99 @@ def _harmonic_regions(h: HarmonicSystem, gamma: float, lo: float, hi: float, opt
             omega_lo=r.omega_lo, omega_hi=r.omega_hi, growth_rate_max=r.growth_rate_max,
             omega_at_max=r.omega_at_max, omega_center=r.omega_center,
             critical_gamma=float(crit.get(key, 0.0)), clipped=r.clipped))
-    return rows, cert, None
+    return rows, cert, None, est
+
+
+def _instability_region(r: VehicleRegion) -> floquet.InstabilityRegion:
+    """The toolkit's region of a row (for :func:`flexbooster.floquet.region_boundaries`)."""
+    return floquet.InstabilityRegion(
+        omega_lo=r.omega_lo, omega_hi=r.omega_hi, growth_rate_max=r.growth_rate_max,
+        omega_at_max=r.omega_at_max, kind=r.kind, modes=tuple(m.index for m in r.modes),
+        order=r.order, omega_center=r.omega_center, clipped=r.clipped)
+
+
+def region_curves(
+    found: VehicleRegions, *, gamma_max: float, n_gamma: int = 11, rtol: float = 1e-9,
+    step_phase: float = 0.12, max_order: int | None = None,
+    damping_margin: float | None = floquet.DAMPING_MARGIN, max_seconds: float | None = None,
+) -> tuple[tuple, tuple]:
+    """Boundary curves in (Omega, gamma) of the regions of a map, up to gamma_max.
+
+    Only the harmonics that can have a region at gamma_max are traced
+    (:func:`flexbooster.floquet.region_boundaries` on the stored harmonic systems, no FE
+    solved again): with gamma_max equal to the map's gamma, those with a region other than
+    "steady" in ``found`` (whose rows are reused as the top level); otherwise those that the
+    stability certificate at gamma_max does not cover.
+
+    Parameters
+    ----------
+    found : VehicleRegions
+        The map (:func:`vehicle_regions`).
+    gamma_max : float
+        Largest gamma of the curves (dimensionless), (0, 1).
+    n_gamma : int
+        Levels of the curves (dimensionless), 2..1000.
+    rtol, step_phase, max_order, damping_margin
+        As :func:`vehicle_regions` (the options the map was searched with).
+    max_seconds : float or None
+        Budget of the curves (s), > 0: a harmonic whose curves (:func:`harmonic_search_seconds`
+        with n_gamma - 1 levels) would take the estimate past it is not traced and named.
+
+    Returns
+    -------
+    tuple
+        (curves, skipped): tuple of RegionCurve (k ascending) and the harmonics the budget
+        left out, one line each.
+
+    References
+    ----------
+    Bolotin (1964), ch. 1 (the regions in the (Omega, mu) plane), sec. 6.
+    """
+    if not isinstance(found, VehicleRegions):
+        raise ValueError(f"found = {type(found).__name__}: must be a VehicleRegions")
+    gmax = _gamma(gamma_max)
+    if gmax <= 0.0:
+        raise ValueError(f"gamma_max = {gamma_max!r}: must be in (0, 1)")
+    n_gamma = count("n_gamma", n_gamma, 2, 1000)
+    if max_seconds is not None:
+        max_seconds = positive("max_seconds", max_seconds)
+    opts = _floquet_options(rtol, step_phase, max_order, damping_margin)
+    lo, hi = found.omega_min, found.omega_max
+    curves, skipped = [], []
+    spent = 0.0
+    for h in found.harmonics:
+        M, C, A, _ = h.matrices(gmax)
+        Cf = C if h.damping_ratio > 0.0 else None
+        top = None
+        if gmax == found.gamma:  # the map's rows are the top level
+            rows = [r for r in found.regions if r.k == h.k]
+            if not any(r.kind != "steady" for r in rows):
+                continue
+            top = tuple(_instability_region(r) for r in rows)
+        if max_seconds is not None:
+            work = floquet.search_work(M, Cf, A, gmax * h.excitation, lo, hi, **opts)
+            if work.steady or work.certified:
+                continue  # no curve: a steady region or none at gamma_max
+            est = harmonic_search_seconds(work, levels=n_gamma - (1 if top else 0))
+            if spent + est > max_seconds:
+                skipped.append(
+                    f"max_seconds = {max_seconds:g}: harmonic k = {h.k} not searched for the "
+                    f"chart's boundary curves, estimated at {est:.3g} s ({A.shape[0]} modes, "
+                    f"{work.n_candidates} candidates, {n_gamma} levels up to gamma = "
+                    f"{gmax:g}; {spent:.3g} s before it): reduce vehicle.n_modes or the "
+                    "Omega range, raise vehicle.damping_ratio, or raise the budget")
+                continue
+            spent += est
+        elif top is None and floquet.stability_certificate(
+                M, Cf, A, gmax * h.excitation).certified:
+            continue  # no region at gamma_max: nothing to trace
+        for c in floquet.region_boundaries(M, Cf, A, h.excitation, gamma_max=gmax,
+                                           omega_min=lo, omega_max=hi, n_gamma=n_gamma,
+                                           regions=top, **opts):
+            curves.append(RegionCurve(k=h.k, kind=c.kind, order=c.order, modes=c.modes,
+                                      gamma=c.gamma, omega_lo=c.omega_lo,
+                                      omega_hi=c.omega_hi))
+    return tuple(curves), tuple(skipped)
 
 
 def vehicle_regions(
@@ -668,7 +819,8 @@ def vehicle_regions(
         Mesh (see :func:`flexbooster.shell_of_revolution.mesh_vehicle`).
     boundaries : bool
         Also trace the boundary curves in (Omega, gamma), gamma up to ``gamma_max``
-        (:func:`flexbooster.floquet.region_boundaries`; costs ``n_gamma`` searches per k).
+        (:func:`region_curves`: :func:`flexbooster.floquet.region_boundaries` on the
+        harmonics that can have a region at gamma_max; ``n_gamma`` searches each).
     gamma_max : float
         Largest gamma of the curves (dimensionless), (0, 1).
     n_gamma : int
@@ -691,9 +843,11 @@ def vehicle_regions(
         by K psi, psi the rigid pitch angle; Tech Memo 104 eq. 2.2-2).
     max_seconds : float or None
         Budget of the searches (s), > 0: before each harmonic that the stability certificate
-        does not cover, its search is estimated (:func:`search_seconds`); a harmonic that
-        would take the estimate past the budget is not searched (no regions, no curves) and
-        named in ``skipped`` with the estimate and its drivers.  None: no budget.
+        does not cover, its search is estimated (:func:`harmonic_search_seconds` of
+        :func:`flexbooster.floquet.search_work`: its candidates and their step counts); a
+        harmonic that would take the running estimate (builds and searches so far) past the
+        budget is not searched (no regions, no curves) and named in ``skipped`` with the
+        estimate and its drivers; the curves get what the searches left.  None: no budget.
 
     Returns
     -------
@@ -734,11 +888,11 @@ def vehicle_regions(
     opts = _floquet_options(rtol, step_phase, max_order, damping_margin)
     if not isinstance(axial, bool | np.bool_):
         raise ValueError(f"axial = {axial!r}: must be a bool")
-    harmonics, regions, curves, certs, skipped = [], [], [], [], []
+    harmonics, regions, certs, skipped = [], [], [], []
     searched = 0.0
     mesh = {"supported_forward_end": supported_forward_end,
             "elements_per_segment": elements_per_segment, "order": order}
-    for k in range(k_min, k_max + 1):  # a handful of harmonics
+    for k in range(k_min, k_max + 1):  # up to 200 harmonics, each a small search or none
         if k == 1:  # bending + rigid pitch + gimbaled follower thrust (Beal 1965, eq. 4)
             h = bending_harmonic(vehicle, F0=F0, n_modes=max(n_modes, 3), damping_ratio=zeta,
                                  gimbal_gain=gimbal, **mesh)
@@ -747,34 +901,31 @@ def vehicle_regions(
                                 **mesh)
         harmonics.append(h)
         spent = HARMONIC_BUILD_SECONDS * len(harmonics) + searched
-        rows, cert, why = _harmonic_regions(h, gamma, lo, hi, opts, budget=None if max_seconds
-                                            is None else (max_seconds, spent, bool(boundaries)))
+        rows, cert, why, est = _harmonic_regions(
+            h, gamma, lo, hi, opts, budget=None if max_seconds is None else (max_seconds,
+                                                                             spent))
         regions += rows
         certs.append(cert)
+        searched += est
         if why is not None:
             skipped.append(why)
-            continue
-        if not cert.certified and gamma > 0.0:  # the estimate of what was searched
-            searched += search_seconds(h.omega_loaded.size, lo, hi, damped=zeta > 0.0,
-                                       boundaries=bool(boundaries))
-        M, C, A, _ = h.matrices(gamma)
-        Cf = C if zeta > 0.0 else None
-        if boundaries:
-            for c in floquet.region_boundaries(M, Cf, A, h.excitation, gamma_max=gmax,
-                                               omega_min=lo, omega_max=hi, n_gamma=n_gamma,
-                                               **opts):
-                curves.append(RegionCurve(k=k, kind=c.kind, order=c.order, modes=c.modes,
-                                          gamma=c.gamma, omega_lo=c.omega_lo,
-                                          omega_hi=c.omega_hi))
     regions.sort(key=lambda r: (r.omega_lo, r.k))
     fa = None
     if axial:
         fa = forced_axial(vehicle, F0=F0, omega_min=lo, omega_max=hi, n_modes=n_modes,
                           damping_ratio=zeta, supported_forward_end=supported_forward_end,
                           elements_per_segment=elements_per_segment, order=order)
-    return VehicleRegions(regions=tuple(regions), harmonics=tuple(harmonics),
-                          curves=tuple(curves), F0=F0, gamma=gamma, damping_ratio=zeta,
-                          omega_min=lo, omega_max=hi,
-                          supported_forward_end=bool(supported_forward_end),
-                          forced_axial=fa, certificates=tuple(certs), gimbal_gain=gimbal,
-                          skipped=tuple(skipped))
+    found = VehicleRegions(regions=tuple(regions), harmonics=tuple(harmonics), curves=(),
+                           F0=F0, gamma=gamma, damping_ratio=zeta, omega_min=lo, omega_max=hi,
+                           supported_forward_end=bool(supported_forward_end),
+                           forced_axial=fa, certificates=tuple(certs), gimbal_gain=gimbal,
+                           skipped=tuple(skipped),
+                           estimated_seconds=HARMONIC_BUILD_SECONDS * len(harmonics) + searched)
+    if boundaries:  # the harmonics that can have a region at gamma_max, in the budget left
+        spent = found.estimated_seconds
+        curves, why = region_curves(
+            found, gamma_max=gmax, n_gamma=n_gamma, rtol=rtol, step_phase=step_phase,
+            max_order=max_order, damping_margin=damping_margin,
+            max_seconds=None if max_seconds is None else max(max_seconds - spent, 1e-9))
+        found = dataclasses.replace(found, curves=curves, skipped=found.skipped + why)
+    return found
