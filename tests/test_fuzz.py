@@ -167,7 +167,7 @@ def test_valid_case_gives_finite_results_or_a_documented_error(data):
 TALLY_DETAILS: list = []
 FIELDS: collections.Counter = collections.Counter()
 
-_BAD_FLOATS = [math.nan, math.inf, -1.0, "xyz", "5 kg"]
+_BAD_FLOATS = [math.nan, math.inf, -1.0, "xyz", "5 kg", 10**400]  # 10**400: a 400-digit TOML int
 _BAD_INTS = [-1, 2.5, "ten", 10**6]
 _FLOAT_FIELDS = ["booster.cylinder1.radius", "booster.cylinder2.half_length",
                  "booster.thickness", "booster.E", "booster.nu", "booster.rho", "thrust.gamma",

@@ -269,6 +269,13 @@ API_CALLS = [
     ("checks.finite_array-positive", "x", lambda: checks.finite_array("x", [1, 0],
                                                                       positive=True)),
     ("units.to_si-nan", "f", lambda: units.to_si("f", nan, "length")),
+    ("units.to_si-kind", "kind", lambda: units.to_si("f", 1.0, "lenght")),
+    ("units.to_si-huge-int", "f", lambda: units.to_si("f", 10**400, "length")),
+    ("units.to_us-nan", "value", lambda: units.to_us(nan, "m")),  # returned (nan, 'in')
+    ("units.to_us-inf", "value", lambda: units.to_us(inf, "Pa")),
+    ("units.to_us-str", "value", lambda: units.to_us("abc", "m")),
+    ("units.to_us-overflow", "value", lambda: units.to_us(1e308, "m")),  # was (inf, 'in')
+    ("units.to_us-unit", "si_unit", lambda: units.to_us(1.0, ["m"])),
     ("simulate_case-Omega-nan", "Omega",
      lambda: analysis.simulate_case(flexbooster.default_case(), nan, tau_max=10.0)),
     ("simulate_case-n_out-1", "n_out",
