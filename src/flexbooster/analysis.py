@@ -141,6 +141,7 @@ def analyze(
     *,
     workers: int = 1,
     vehicle: bool = True,
+    on_estimate: Callable[[cost.CostEstimate, float], None] | None = None,
 ) -> Results:
     """Run the analysis of a validated case.
 
@@ -168,6 +169,11 @@ def analyze(
         with their (Omega, gamma) boundary curves when ``figures``) and the memo-table roots
         inside them (:func:`memo_roots_in_regions`); ``results.vehicle_regions`` is None
         without it (``flexbooster run --no-vehicle``).
+    on_estimate : callable, optional
+        Called once, before any solver runs, with the cost estimate of the stages that will
+        run (:class:`flexbooster.cost.CostEstimate`, memo and vehicle stages) and the budget
+        ``case.max_seconds`` (s), e.g. to show the estimate in a progress bar; a case over
+        its budget is refused (``CaseError`` on ``max_seconds``) before the call.
 
     Returns
     -------
@@ -183,17 +189,19 @@ def analyze(
     with blas_threads(1):
         with TaskPool(workers) as pool:
             return _analyze(case, beam_action, stability, figures,
-                            progress or (lambda stage: None), pool, with_regions=vehicle)
+                            progress or (lambda stage: None), pool, with_regions=vehicle,
+                            on_estimate=on_estimate)
 
 
 def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
              step: Callable[[str], None], pool: TaskPool, *,
-             with_regions: bool = True) -> Results:
+             with_regions: bool = True, on_estimate=None) -> Results:
     step(STAGES[0])
     model = cost.derived_model(case)
-    extra: list[AnalysisWarning] = _feasibility(case, model, beam_action=beam_action,
-                                                stability=stability, figures=figures,
-                                                with_regions=with_regions)
+    est, extra = _feasibility(case, model, beam_action=beam_action, stability=stability,
+                              figures=figures, with_regions=with_regions)
+    if on_estimate is not None:
+        on_estimate(est, case.max_seconds)
     # the costliest figure data, independent of the stages below: started first (in a worker
     # when the pool has one, else computed when asked for, in STAGES[5])
     chart = (pool.submit(charts.beam_action_chart, model) if figures and beam_action
@@ -277,9 +285,9 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
 
 
 def _feasibility(case: Case, model: BoosterModel, *, with_regions: bool = True,
-                 **stages: bool) -> list[AnalysisWarning]:
+                 **stages: bool) -> tuple[cost.CostEstimate, list[AnalysisWarning]]:
     """Refuse a case past its budget or past what the structure carries (issue 18), before
-    any solver runs; the warnings of the budget and of the load."""
+    any solver runs; the estimate, and the warnings of the budget and of the load."""
     cost.check_physical(model)
     # the vehicle stages too (issue 18 item 1): modes survey, regions (lower bound with damping)
     veh = dict(regions_k_max=VEHICLE_REGIONS_K_MAX, regions=with_regions,
@@ -292,7 +300,7 @@ def _feasibility(case: Case, model: BoosterModel, *, with_regions: bool = True,
                                    f"estimated run time {est.seconds:.3g} s is over half the "
                                    f"budget max_seconds = {case.max_seconds:g} s: "
                                    f"{est.describe()}"))
-    return out
+    return est, out
 
 
 def _figure_data(model, pitch, shell, action, table, params, *,
