@@ -509,6 +509,76 @@ def test_estimate_grows_with_the_fields_that_drive_it(case_dict):
     assert set(base.to_dict()) >= {"seconds", "parts", "drivers", "capped_points"}
 
 
+def _tongue_case(case_dict, **fields):
+    """The default booster with its Omega range below omega_1 / 4 (113.5 rad/s / 4): the
+    rigid-pitch tongues r = 1..4 (tips 2.39 / r rad/s) are searched by harmonic balance."""
+    base = dict(thrust__omega_min=0.5, thrust__omega_max=20.0, thrust__n_omega=4,
+                thrust__gamma=0.5, truncation__N=4)
+    return model_from_case(_case(case_dict, **{**base, **fields}))
+
+
+def test_tongue_estimate_grows_with_the_fields_that_drive_it(case_dict):
+    """Invariants of the pitch-tongue term (cost.TONGUE_PART, issue 18): none above
+    omega_1 / 4 or without pulsation; more with more beam modes (eigenproblems of order
+    ~ (N + 1) K) and with pitch damping (the critical gamma's bisection); named fields."""
+    import copy as _copy
+
+    def part(**fields):
+        est = cost.estimate_cost(_tongue_case(_copy.deepcopy(case_dict), **fields))
+        return est.parts.get(cost.TONGUE_PART, 0.0), est
+
+    base, est = part()
+    assert base > 0.0 and "truncation.N" in est.drivers[cost.TONGUE_PART]
+    assert part(thrust__gamma=0.0)[0] == 0.0
+    assert part(thrust__omega_min=30.0, thrust__omega_max=60.0)[0] == 0.0  # above 28.4 rad/s
+    assert part(truncation__N=8)[0] > 2.0 * base
+    assert part(damping={"pitch_ratio": 0.02})[0] > base  # fewer tongues, each bisected
+
+
+def test_tongue_search_cap_stops_and_names_the_tongues_left():
+    """The cap of the pitch-tongue search (pipeline_band_search, max_seconds: its own modelled
+    time, deterministic): with max_seconds = 1 the fuzz case of six tongues (r = 1..6, 0.9 s)
+    stops before r = 4; the tongues searched are exactly those of the uncapped search, the
+    rest named in one line (max_seconds, the first order left, its Omega)."""
+    from flexbooster._threads import blas_threads
+
+    model = cost.derived_model(flexbooster.load_case(_FUZZ_TONGUE_2))
+    with blas_threads(1):
+        free = ba.pipeline_band_search(model)
+        capped = ba.pipeline_band_search(model, max_seconds=1.0)
+    assert [b.order for b in free.bands] == [6, 5, 4, 3, 2, 1] and free.skipped == ()
+    (why,) = capped.skipped
+    assert why.startswith("max_seconds = 1: the rigid-pitch tongues r >= 4 (Omega <= ")
+    assert "\n" not in why and "truncation.N" in why
+    assert capped.bands == tuple(b for b in free.bands if b.order < 4)
+    with pytest.raises(ValueError, match="^max_seconds = "):
+        ba.pipeline_band_search(model, max_seconds=0.0)
+
+
+def test_capped_tongue_search_is_a_warning_and_no_stable_verdict(monkeypatch, case_dict):
+    """The pipeline turns each skipped part of the band search into a warning (code
+    beam-action-tongue-budget, field max_seconds), passes its cap (the budget less the other
+    stages' estimate), and with no band found the verdict is not "stable"."""
+    seen = {}
+
+    def search(model, max_seconds=None):
+        seen["cap"] = max_seconds
+        return ba.BandSearch(bands=(), skipped=("max_seconds = 9: the tongues r >= 1 ...",))
+
+    monkeypatch.setattr(analysis, "pipeline_band_search", search)
+    case_dict["truncation"].update(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)
+    case_dict["thrust"].update(omega_min=0.5, omega_max=20.0, n_omega=4)
+    case = flexbooster.load_case(case_dict)
+    res = analyze(case, figures=False, vehicle=False)
+    (w,) = [w for w in res.warnings if w.code == "beam-action-tongue-budget"]
+    assert w.field == "max_seconds" and w.message.startswith("max_seconds = 9")
+    assert res.beam_action.verdict.startswith("unknown: max_seconds = 9")
+    assert res.to_dict()["beam_action"]["skipped"] == ["max_seconds = 9: the tongues r >= 1 ..."]
+    est = cost.estimate_cost(model_from_case(case), figures=False)
+    assert seen["cap"] == pytest.approx(
+        case.max_seconds - (est.seconds - est.parts[cost.TONGUE_PART]), rel=1e-12)
+
+
 def test_huge_truncation_is_refused_up_front_in_one_line(case_dict, tmp_path, capsys):
     """The issue's M = N = 100, beam N = 50, S = 50 case (9 minutes, 8 GB, no output) is
     refused before any solver runs: exit 2, one line, estimate and driving fields."""

@@ -31,7 +31,12 @@ from .danger import danger_summary
 from .errors import AnalysisWarning
 from .memo import charts
 from .memo.beam import beam_modes
-from .memo.beam_action import PeriodMapOverflowError, beam_action_analysis, pipeline_bands
+from .memo.beam_action import (
+    BandSearch,
+    PeriodMapOverflowError,
+    beam_action_analysis,
+    pipeline_band_search,
+)
 from .memo.model import BoosterModel
 from .memo.pitch import pitch_analysis
 from .memo.responses import SimulationResult, excitation_parameters, simulate
@@ -206,7 +211,10 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
     # when the pool has one, else computed when asked for, in STAGES[5])
     chart = (pool.submit(charts.beam_action_chart, model) if figures and beam_action
              else None)
-    bands = pool.submit(pipeline_bands, model) if beam_action and pool.parallel else None
+    # the band search's cap: the budget less the other stages' estimate (issue 18)
+    cap = case.max_seconds - (est.seconds - est.parts.get(cost.TONGUE_PART, 0.0))
+    search = (pool.submit(pipeline_band_search, model, max_seconds=cap)
+              if beam_action and pool.parallel else None)
     # the vehicle's regions depend on the case alone (run last when there is no worker)
     vreg = (pool.submit(_vehicle_regions_stage, case, boundaries=figures)
             if with_regions and pool.parallel else None)
@@ -220,7 +228,10 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
     action = None
     if beam_action:
         step(STAGES[3])
-        action = _beam_action(model, True if bands is None else bands.result)
+        action = _beam_action(model, search.result if search is not None else
+                              lambda: pipeline_band_search(model, max_seconds=cap))
+        extra += [AnalysisWarning("beam-action-tongue-budget", "max_seconds", why)
+                  for why in action.skipped]
     table = None
     params = None
     if stability and action is not None:
@@ -357,7 +368,7 @@ def simulate_case(case: Case, Omega: float, *, tau_max: float, n_out: int = 401,
         return simulate(model, Omega, tau_max, n_out=n_out, psi0=psi0, params=params)
 
 
-def _beam_action(model, bands):
+def _beam_action(model, bands: bool | BandSearch | Callable[[], BandSearch]):
     """:func:`beam_action_analysis`; a period map beyond floating point is the load's CaseError."""
     from .errors import CaseError
 

@@ -34,6 +34,7 @@ from .memo.beam_action import (
     MONODROMY_MAX_STEPS,
     beam_system,
     monodromy_steps,
+    tongue_search_seconds,
 )
 from .memo.charts import PITCH_BAND_CHART_LEVELS
 from .memo.model import BoosterModel
@@ -49,7 +50,12 @@ __all__ = [
     "physical_warnings",
     "capped_steps_warning",
     "estimate_vehicle_cost",
+    "TONGUE_PART",
 ]
+
+#: Name of the part of :func:`estimate_cost` for the rigid-pitch tongue search below
+#: omega_1 / 4 (:func:`flexbooster.memo.beam_action.pitch_tongue_bands`).
+TONGUE_PART = "beam-action pitch tongues"
 
 #: Default budget of a run (s): a case whose estimate exceeds it is refused up front.
 DEFAULT_MAX_SECONDS = 300.0
@@ -193,7 +199,9 @@ def estimate_cost(model: BoosterModel, *, beam_action: bool = True, stability: b
         eq. 4.2-4), pitch bands and chart (tongues in the range), shell frequencies
         (M x N modes), beam-action monodromy (the sum of the capped step counts over the
         grid), Hill determinant ((2 n (2 S + 1))^3 per point), band search and chart
-        (~n^2.5), stability table (curves x shell modes).
+        (~n^2.5), the rigid-pitch tongues below omega_1 / 4 (:data:`TONGUE_PART`,
+        :func:`flexbooster.memo.beam_action.tongue_search_seconds`), stability table
+        (curves x shell modes).
 
     References
     ----------
@@ -241,6 +249,13 @@ def estimate_cost(model: BoosterModel, *, beam_action: bool = True, stability: b
             parts["beam-action bands"] = _C_BANDS * weight * (1.0 + _DAMPED_FACTOR * damped)
             drivers["beam-action bands"] = ("truncation.N", "thrust.omega_min",
                                             "damping.beam_modal_ratio", "thrust.F0")
+        low_hi = min(hi, BAND_OMEGA_BAR_MIN * model.omega_1)
+        if low_hi > lo:  # below omega_1 / 4: the rigid-pitch tongues (harmonic balance)
+            parts[TONGUE_PART] = tongue_search_seconds(
+                system, model.gamma, omega_min=lo, omega_max=low_hi,
+                beam_ratio=model.beam_damping_ratio, pitch_ratio=model.pitch_damping_ratio)
+            drivers[TONGUE_PART] = ("thrust.omega_min", "thrust.gamma", "truncation.N",
+                                    "damping.pitch_ratio", "damping.beam_modal_ratio")
     if beam_action and stability:
         curves = 13.0 * n.R * (2 * n.S + 1)
         parts["stability table"] = _C_STABILITY * curves * modes
