@@ -17,6 +17,7 @@ import signal
 import subprocess
 import sys
 import time
+import types
 import warnings
 from pathlib import Path
 
@@ -1327,3 +1328,95 @@ def test_fuzz_reproducer_pitch_tongues_far_below_the_beam(data, orders, rtol):
         assert math.isfinite(b.growth_rate_max) and b.growth_rate_max > 0.0
         assert b.omega_lo == pytest.approx(ref[b.order].omega_lo, rel=rtol)
         assert b.omega_hi == pytest.approx(ref[b.order].omega_hi, rel=rtol)
+
+
+# --------------------------------------------------------------------------------------------
+# Fuzz reproducers of the vehicle stages (issue 18 leftovers: the fuzz now draws [vehicle]
+# tables and runs the vehicle's regions in one case of five)
+# --------------------------------------------------------------------------------------------
+_FUZZ_VEHICLE_BASE = {
+    "name": "fuzz", "max_seconds": 20.0,
+    "booster": {"cylinder1": {"radius": 1.0, "half_length": 1.0},
+                "cylinder2": {"radius": 1.0, "half_length": 1.0},
+                "thickness": 0.0001, "E": 1e8, "nu": 0.01, "rho": 10.0},
+    "thrust": {"gamma": 0.0, "K": 0.0, "omega_min": 1.0, "omega_max": 1.01, "n_omega": 2,
+               "T0": 15.915494309189533},
+    "truncation": {"M1": 1, "N1": 1, "M2": 1, "N2": 1, "N": 1, "S": 0, "R": 1},
+}
+
+
+def test_fuzz_reproducer_vehicle_modes_all_buckled():
+    """Found by the fuzz: a 0.1 mm cone (one segment, k = 0 only) under F0 = 100 N: every
+    omega^2 of the band's first harmonic is negative, so the band bound was never set and
+    vehicle_modes compared with None (TypeError, exit 1).  Expected: the documented buckling
+    refusal (the library's ValueError naming prestress_F0; analyze's CaseError thrust.F0)."""
+    from flexbooster.shell_of_revolution import vehicle_modes
+
+    data = copy.deepcopy(_FUZZ_VEHICLE_BASE)
+    data["vehicle"] = {"k_max": 0, "n_modes": 1, "damping_ratio": 0.0, "segments": [
+        {"kind": "cone", "radius_aft": 1.0, "radius_fwd": 1.0, "length": 1.0,
+         "thickness": 0.0001}]}
+    case = flexbooster.load_case(data)
+    with pytest.raises(ValueError, match=r"^prestress_F0 = 100\.0: k = 0 has a non-positive"):
+        vehicle_modes(vehicle_from_case(case), k_max=0, prestress_F0=case.F0)
+    with pytest.raises(CaseError) as info:
+        analyze(case, figures=False, vehicle=False)
+    assert info.value.field == "thrust.F0" and "buckling" in str(info.value)
+
+
+def test_fuzz_reproducer_vehicle_n_modes_above_the_mesh_dofs():
+    """Found by the fuzz (6 cases): vehicle.n_modes = 333 (valid: 1..500) on a small memo
+    vehicle whose mesh has 99 DOFs at k = 1 and 97 at k >= 2: "n_modes = 333: the mesh has
+    only 99 DOFs for k = 1" (exit 1).  Now every mode of a harmonic is used (97), with a
+    vehicle-modes-clipped warning; the regions' harmonics hold exactly those 97 modes (and
+    k = 1 its 97 elastic-and-rigid ones), the results are finite."""
+    data = copy.deepcopy(_FUZZ_VEHICLE_BASE)
+    data["booster"].update(thickness=0.0794, E=1e10, nu=0.233)
+    data["thrust"] = {"gamma": 0.889, "K": 4.17, "omega_min": 434.3, "omega_max": 167538.0,
+                      "n_omega": 7, "F0": 155.15}
+    data["damping"] = {"pitch_ratio": 0.02}
+    data["vehicle"] = {"k_max": 3, "n_modes": 333, "damping_ratio": 0.001,
+                       "aft_end": "clamped", "fwd_end": "hinged", "junction": "rigid-bulkhead"}
+    case = flexbooster.load_case(data)
+    assert cost.region_modes(case, k_max=3) == (97, 97)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        res = analyze(case, figures=False)
+    (w,) = [w for w in res.warnings if w.code == "vehicle-modes-clipped"]
+    assert w.field == "vehicle.n_modes" and "333" in w.message and "97 modes" in w.message
+    assert [h.omega_loaded.size for h in res.vehicle_regions.harmonics] == [97, 97, 97]
+    json.dumps(res.to_dict(), allow_nan=False)
+
+
+_FUZZ_CANDIDATES = {
+    "name": "fuzz",
+    "booster": {"cylinder1": {"radius": 28.44842919443165, "half_length": 1.3954288775018648},
+                "cylinder2": {"radius": 47.13013587898876, "half_length": 3.1557674301688827},
+                "thickness": 0.048771811768155295, "E": 20447356474.064217,
+                "nu": 0.32332789317528776, "rho": 226.8960928016897},
+    "thrust": {"gamma": 0.9439478472914494, "K": 3.5018139758102595,
+               "omega_min": 3.7423594778010467, "omega_max": 5.617245733771596,
+               "n_omega": 11, "F0": 146800443.25106373},
+    "truncation": {"M1": 1, "N1": 1, "M2": 1, "N2": 1, "N": 2, "S": 0, "R": 1},
+}
+
+
+def test_fuzz_reproducer_vehicle_regions_past_the_candidate_limit():
+    """Found by the vehicle fuzz: the memo vehicle of two wide short cylinders (20 modes up to
+    6,350 rad/s) over Omega = 3.7..5.6 rad/s has 257,595-321,616 resonance candidates per
+    harmonic, past the Floquet toolkit's 200,000: its ValueError ended the run (exit 1).  Now
+    the toolkit raises TooManyCandidatesError and each harmonic is named as not searched
+    (vehicle-regions-skipped, field thrust.omega_min); the verdict is not "stable"."""
+    from flexbooster.floquet import TooManyCandidatesError
+    from flexbooster.present.rows import vehicle_region_verdict
+
+    assert issubclass(TooManyCandidatesError, ValueError)
+    case = flexbooster.load_case(_FUZZ_CANDIDATES)
+    found, warns = analysis._vehicle_regions_stage(case, boundaries=False)
+    assert len(warns) == 10 and found.regions == ()
+    for k, w in enumerate(warns, start=1):
+        assert (w.code, w.field) == ("vehicle-regions-skipped", "thrust.omega_min")
+        assert f"harmonic k = {k} not searched" in w.message and "candidates" in w.message
+        assert "\n" not in w.message
+    text, stable = vehicle_region_verdict(types.SimpleNamespace(vehicle_regions=found))
+    assert not stable and text.startswith("unknown")

@@ -216,7 +216,9 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
     search = (pool.submit(pipeline_band_search, model, max_seconds=cap)
               if beam_action and pool.parallel else None)
     # the vehicle's regions depend on the case alone (run last when there is no worker)
-    vreg = (pool.submit(_vehicle_regions_stage, case, boundaries=figures)
+    # their budget: the case's less the other stages' estimate
+    vbudget = case.max_seconds - (est.seconds - est.parts.get("vehicle regions", 0.0))
+    vreg = (pool.submit(_vehicle_regions_stage, case, boundaries=figures, max_seconds=vbudget)
             if with_regions and pool.parallel else None)
     n = model.truncation
     beam = beam_modes(n.N, model.mass.L, model.R1, model.E, model.rho)
@@ -266,7 +268,8 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
     if with_regions:
         step(VEHICLE_REGIONS_STAGE)
         regions, skipped = (vreg.result() if vreg is not None
-                            else _vehicle_regions_stage(case, boundaries=figures))
+                            else _vehicle_regions_stage(case, boundaries=figures,
+                                                        max_seconds=vbudget))
         extra += skipped
         if regions is not None and table is not None:
             matches = memo_roots_in_regions(table, regions)
@@ -458,10 +461,12 @@ def vehicle_warnings(survey: VehicleSurvey) -> list[AnalysisWarning]:
     return out
 
 
-def _vehicle_regions_stage(case: Case, *, boundaries: bool
+def _vehicle_regions_stage(case: Case, *, boundaries: bool, max_seconds: float | None = None
                            ) -> tuple[VehicleRegions | None, list[AnalysisWarning]]:
     """The regions of :func:`analyze_vehicle_regions`, or None and a warning where they cannot
-    be computed (k_max < 1, or the steady thrust buckles a harmonic): the run goes on."""
+    be computed (k_max < 1, or the steady thrust buckles a harmonic): the run goes on.  Each
+    harmonic left out is a warning: ``vehicle-regions-budget`` (field max_seconds) past the
+    budget, ``vehicle-regions-skipped`` (thrust.omega_min) past the candidate limit."""
     from .errors import CaseError
 
     table = case.vehicle
@@ -473,17 +478,28 @@ def _vehicle_regions_stage(case: Case, *, boundaries: bool
             f"computed for k >= {VEHICLE_REGIONS_K_MIN} only (k = 0 gives forced, not "
             "parametric, resonances)")]
     try:
-        found = analyze_vehicle_regions(case, boundaries=boundaries)
+        found = analyze_vehicle_regions(case, boundaries=boundaries, max_seconds=max_seconds)
+        used, dofs = cost.region_modes(case, k_max=min(k_max, VEHICLE_REGIONS_K_MAX))
+        clipped = [] if table is None or used == table.n_modes else [AnalysisWarning(
+            "vehicle-modes-clipped", "vehicle.n_modes",
+            f"vehicle.n_modes = {table.n_modes}: more than the {dofs} DOFs of the vehicle's "
+            f"mesh in a harmonic: {used} modes per harmonic (all of them) are used")]
+        left = ("" if max_seconds is None or max_seconds == case.max_seconds else
+                f" [what the other stages' estimate left of max_seconds = "
+                f"{case.max_seconds:g} s]")
         # harmonics whose search would pass the budget (issue 18): named, not searched
-        return found, [AnalysisWarning("vehicle-regions-budget", "max_seconds", why)
-                       for why in found.skipped]
+        return found, clipped + [
+            AnalysisWarning("vehicle-regions-budget", "max_seconds", why + left)
+            if why.startswith("max_seconds") else
+            AnalysisWarning("vehicle-regions-skipped", why.split(" = ", 1)[0], why)
+            for why in found.skipped]
     except CaseError as exc:  # the thrust buckles the vehicle: a result, not a bad input
         return None, [AnalysisWarning("vehicle-regions-skipped", exc.field, exc.rule)]
 
 
 def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
-                            k_max: int | None = None, boundaries: bool = True
-                            ) -> VehicleRegions:
+                            k_max: int | None = None, boundaries: bool = True,
+                            max_seconds: float | None = None) -> VehicleRegions:
     """The parametric instability regions of the case's vehicle (the last stage of
     :func:`analyze`).
 
@@ -512,6 +528,11 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
         Only the regions that exist at
         that gamma have curves (:func:`flexbooster.floquet.region_boundaries`), so the curves
         are traced only when a search at that gamma finds one.
+    max_seconds : float, optional
+        Budget of the searches (s), > 0; default ``case.max_seconds``.  The chart's passes
+        (a probe at its top gamma, the curves) get what the search before them left
+        (:func:`flexbooster.vehicle.search_seconds` of the harmonics it searched); a harmonic
+        whose search would pass it is named in ``skipped``.
 
     Returns
     -------
@@ -538,21 +559,29 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
         raise CaseError("vehicle.k_max", table.k_max,
                         f"the parametric regions need k_max >= {k_min}")
     t = case.thrust
+    budget = case.max_seconds if max_seconds is None else positive("max_seconds", max_seconds)
+    vehicle = vehicle_from_case(case)
+    # at most the DOFs of a harmonic's mesh (a vehicle.n_modes up to 500 is valid input)
+    n_modes = cost.region_modes(case, vehicle, k_max=k_max)[0]
     settings = dict(F0=case.F0, omega_min=t.omega_min, omega_max=t.omega_max, k_min=k_min,
-                    k_max=k_max, n_modes=table.n_modes, damping_ratio=table.damping_ratio,
-                    gimbal_gain=t.K, max_seconds=case.max_seconds)
+                    k_max=k_max, n_modes=n_modes, damping_ratio=table.damping_ratio,
+                    gimbal_gain=t.K)
+    left = [budget]  # what the searches so far left of the budget (issue 18)
+
+    def search(**kw) -> VehicleRegions:
+        out = vehicle_regions(vehicle, max_seconds=max(left[0], 1e-9), **settings, **kw)
+        left[0] -= _searched_seconds(out, boundaries=kw.get("boundaries", False))
+        return out
+
     with blas_threads(1):
-        vehicle = vehicle_from_case(case)
         try:
-            found = vehicle_regions(vehicle, gamma=t.gamma, **settings)
+            found = search(gamma=t.gamma)
             top = _chart_gamma(found)
             if boundaries and top > 0.0 and (top == t.gamma and found.regions or top > t.gamma
-                                             and vehicle_regions(vehicle, gamma=top,
-                                                                 **settings).regions):
+                                             and search(gamma=top).regions):
                 # region_boundaries traces the regions of gamma_max: none there, no curve
-                curved = vehicle_regions(vehicle, gamma=t.gamma, boundaries=True,
-                                         gamma_max=top, n_gamma=charts.VEHICLE_CHART_LEVELS,
-                                         **settings)
+                curved = search(gamma=t.gamma, boundaries=True, gamma_max=top,
+                                n_gamma=charts.VEHICLE_CHART_LEVELS)
                 # the regions of the search above; the curves (of the harmonics the budget
                 # allows, issue 18) from this one
                 found = dataclasses.replace(found, curves=curved.curves, skipped=found.skipped
@@ -565,6 +594,24 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
                                 f"({exc}): no parametric regions") from None
             raise
     return found
+
+
+def _searched_seconds(found: VehicleRegions, *, boundaries: bool) -> float:
+    """The estimated time of the harmonics a :func:`flexbooster.vehicle.vehicle_regions` call
+    searched (not certified stable, not skipped: :func:`flexbooster.vehicle.search_seconds`)
+    and built (:data:`flexbooster.vehicle.HARMONIC_BUILD_SECONDS` each, on the default mesh)."""
+    from .vehicle import HARMONIC_BUILD_SECONDS, search_seconds
+
+    skipped = {int(w.split("harmonic k = ")[1].split()[0]) for w in found.skipped
+               if "harmonic k = " in w}
+    seconds = HARMONIC_BUILD_SECONDS * len(found.harmonics)
+    if found.gamma > 0.0:
+        for h, c in zip(found.harmonics, found.certificates, strict=False):
+            if not c.certified and h.k not in skipped:
+                seconds += search_seconds(h.omega_loaded.size, found.omega_min,
+                                          found.omega_max, damped=found.damping_ratio > 0.0,
+                                          boundaries=boundaries)
+    return seconds
 
 
 def _chart_gamma(found: VehicleRegions) -> float:

@@ -50,6 +50,7 @@ __all__ = [
     "physical_warnings",
     "capped_steps_warning",
     "estimate_vehicle_cost",
+    "region_modes",
     "TONGUE_PART",
 ]
 
@@ -288,6 +289,37 @@ def _dof_factor(vehicle) -> float:
     return max(1.0 / 3.0, (mesh_vehicle(vehicle).n_full / _REF_DOFS) ** 3)
 
 
+def region_modes(case: Any, vehicle: Any = None, *, k_max: int = 10) -> tuple[int, int]:
+    """The modes per harmonic of the vehicle's regions: ``vehicle.n_modes``, at most the DOFs
+    of the vehicle's mesh in a harmonic k = 1..k_max (a basis cannot hold more).
+
+    Parameters
+    ----------
+    case : Case
+        The validated case.
+    vehicle : Vehicle, optional
+        Its vehicle (:func:`flexbooster.model.vehicle_from_case`), when already built.
+    k_max : int
+        Highest harmonic of the regions (dimensionless), >= 1.
+
+    Returns
+    -------
+    (int, int)
+        The modes used and the smallest DOF count of the harmonics (the mesh of
+        :func:`flexbooster.shell_of_revolution.mesh_vehicle`, its constraints per k).
+    """
+    from .model import vehicle_from_case
+    from .shell_of_revolution import mesh_vehicle
+    from .shell_of_revolution.assembly import dof_map
+    from .vehicle_case import REGION_N_MODES
+
+    wanted = case.vehicle.n_modes if case.vehicle is not None else REGION_N_MODES
+    vehicle = vehicle_from_case(case) if vehicle is None else vehicle
+    mesh = mesh_vehicle(vehicle)
+    dofs = min(dof_map(vehicle, mesh, k).n for k in range(1, max(1, int(k_max)) + 1))
+    return min(wanted, dofs), dofs
+
+
 def estimate_vehicle_cost(case: Any, *, regions_k_max: int = 10, regions: bool = True,
                           figures: bool = True, certified: bool = True) -> CostEstimate:
     """The predicted time of the vehicle stages of :func:`flexbooster.analysis.analyze`.
@@ -330,7 +362,9 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int = 10, regions: bool =
     parts: dict[str, float] = {}
     drivers: dict[str, tuple[str, ...]] = {}
     try:
-        dofs = _dof_factor(vehicle_from_case(case))
+        vehicle = vehicle_from_case(case)
+        dofs = _dof_factor(vehicle)
+        n_modes = region_modes(case, vehicle, k_max=min(table.k_max, regions_k_max))[0]
     except ValueError:  # a vehicle the mesh refuses: the stage says why, not the estimate
         return CostEstimate(seconds=0.0)
     if case.vehicle is not None:  # the modes survey, k = 0..k_max
@@ -342,10 +376,10 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int = 10, regions: bool =
         damped = table.damping_ratio > 0.0
         searched = 0 if (damped and certified) or t.gamma == 0.0 else n_k
         # k = 1 has the rigid modes too (at least 3 basis modes)
-        search = searched * search_seconds(max(table.n_modes, 3), t.omega_min, t.omega_max,
+        search = searched * search_seconds(max(n_modes, 3), t.omega_min, t.omega_max,
                                            damped=damped, boundaries=figures)
         parts["vehicle regions"] = n_k * HARMONIC_BUILD_SECONDS * dofs * max(
-            1.0, table.n_modes / 20.0) + search
+            1.0, n_modes / 20.0) + search
         drivers["vehicle regions"] = ("vehicle.n_modes", "vehicle.damping_ratio",
                                       "vehicle.k_max", "thrust.omega_min", "thrust.omega_max",
                                       "vehicle.segments")

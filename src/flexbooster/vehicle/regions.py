@@ -409,8 +409,9 @@ class VehicleRegions:
         Gimbal gain K of the k = 1 harmonic (dimensionless; unused without k = 1).
     skipped : tuple of str
         Harmonics not searched because their estimated search time would pass the budget
-        (``max_seconds`` of :func:`vehicle_regions`), one line each; their regions are
-        unknown.
+        (``max_seconds`` of :func:`vehicle_regions`) or their resonance candidates the
+        toolkit's limit (the line starts with ``thrust.omega_min``), one line each; their
+        regions are unknown.
     """
 
     regions: tuple
@@ -595,6 +596,8 @@ def _harmonic_regions(h: HarmonicSystem, gamma: float, lo: float, hi: float, opt
     estimated so far, boundaries): a harmonic that the certificate does not cover and whose
     search (:func:`search_seconds`) would take the estimate past max_seconds is not searched:
     no rows, and the reason (naming max_seconds and the drivers) as a third item; else None.
+    A search past the toolkit's candidate limit (:class:`flexbooster.floquet.
+    TooManyCandidatesError`) is not searched either, the reason naming thrust.omega_min.
     """
     M, C, A, B = h.matrices(gamma)
     Cf = C if h.damping_ratio > 0.0 else None
@@ -611,12 +614,18 @@ def _harmonic_regions(h: HarmonicSystem, gamma: float, lo: float, hi: float, opt
                 + ("" if Cf is None else ", not certified stable by the damping")
                 + f"; {spent:.3g} s before it): reduce vehicle.n_modes or the Omega range, "
                 "raise vehicle.damping_ratio, or raise the budget")
-    found = floquet.instability_regions(M, Cf, A, B, lo, hi, **opts)
-    crit = {}
-    if Cf is not None and any(r.kind != "steady" for r in found):  # Bolotin sec. 6
-        crit = {(c.kind, c.modes, c.order): c.gamma_cr for c in floquet.critical_amplitude(
-            M, Cf, A, h.excitation, gamma_max=gamma, omega_min=lo, omega_max=hi,
-            regions=found, **opts)}
+    try:
+        found = floquet.instability_regions(M, Cf, A, B, lo, hi, **opts)
+        crit = {}
+        if Cf is not None and any(r.kind != "steady" for r in found):  # Bolotin sec. 6
+            crit = {(c.kind, c.modes, c.order): c.gamma_cr for c in floquet.critical_amplitude(
+                M, Cf, A, h.excitation, gamma_max=gamma, omega_min=lo, omega_max=hi,
+                regions=found, **opts)}
+    except floquet.TooManyCandidatesError as exc:  # a resource limit (issue 18): named
+        return [], cert, (f"thrust.omega_min = {lo:.6g}: harmonic k = {h.k} not searched, "
+                          f"{str(exc).split(': ', 1)[-1]} ({A.shape[0]} modes up to "
+                          f"{float(np.max(h.omega_loaded)):.6g} rad/s); raise thrust.omega_min "
+                          "or reduce vehicle.n_modes")
     rows = []
     for r in found:
         key = (r.kind, r.modes, r.order)
