@@ -1388,6 +1388,33 @@ def test_fuzz_reproducer_vehicle_n_modes_above_the_mesh_dofs():
     json.dumps(res.to_dict(), allow_nan=False)
 
 
+def test_fuzz_reproducer_vehicle_n_modes_above_the_axial_modes():
+    """Found by the fuzz (run 4): n_modes = 176 on a 3-segment free-free vehicle whose mesh has
+    140 DOFs at k = 0 but 138 modes once its 2 rigid motions are left out: the first clip (to
+    the DOFs) asked the forced axial modes for 140 ("the mesh has only 138 modes for k = 0").
+    Now 138 per harmonic, the forced axial resonances computed, a vehicle-modes-clipped
+    warning."""
+    case = flexbooster.load_case({
+        "name": "fuzz", "max_seconds": 20.0,
+        "booster": {"cylinder1": {"radius": 8.45, "half_length": 35.9},
+                    "cylinder2": {"radius": 12.6, "half_length": 1.0}, "thickness": 0.845,
+                    "E": 6.28e9, "nu": 0.319, "rho": 5279.0},
+        "thrust": {"gamma": 0.0, "K": 0.626, "omega_min": 2.38, "omega_max": 1307.0,
+                   "n_omega": 9, "T0": 165876.0},
+        "truncation": {"M1": 3, "N1": 3, "M2": 2, "N2": 1, "N": 2, "S": 3, "R": 3},
+        "damping": {"beam_modal_ratio": 0.01},
+        "vehicle": {"k_max": 4, "n_modes": 176, "damping_ratio": 0.1, "segments": [
+            {"kind": "cylinder", "radius": 8.45, "length": 49.4, "thickness": 0.845},
+            {"kind": "cone", "radius_aft": 8.45, "radius_fwd": 2.74, "length": 1.0,
+             "thickness": 0.274},
+            {"kind": "cone", "radius_aft": 2.74, "radius_fwd": 2.7400001, "length": 1.0,
+             "thickness": 0.274}]}})
+    assert cost.region_modes(case, k_max=4) == (138, 138)
+    res = analyze(case, figures=False)
+    assert res.vehicle_regions.forced_axial is not None
+    assert "vehicle-modes-clipped" in {w.code for w in res.warnings}
+
+
 _FUZZ_CANDIDATES = {
     "name": "fuzz",
     "booster": {"cylinder1": {"radius": 28.44842919443165, "half_length": 1.3954288775018648},

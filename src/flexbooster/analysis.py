@@ -482,8 +482,8 @@ def _vehicle_regions_stage(case: Case, *, boundaries: bool, max_seconds: float |
         used, dofs = cost.region_modes(case, k_max=min(k_max, VEHICLE_REGIONS_K_MAX))
         clipped = [] if table is None or used == table.n_modes else [AnalysisWarning(
             "vehicle-modes-clipped", "vehicle.n_modes",
-            f"vehicle.n_modes = {table.n_modes}: more than the {dofs} DOFs of the vehicle's "
-            f"mesh in a harmonic: {used} modes per harmonic (all of them) are used")]
+            f"vehicle.n_modes = {table.n_modes}: more than the {dofs} modes the vehicle's "
+            f"mesh has in a harmonic: {used} modes per harmonic (all of them) are used")]
         left = ("" if max_seconds is None or max_seconds == case.max_seconds else
                 f" [what the other stages' estimate left of max_seconds = "
                 f"{case.max_seconds:g} s]")

@@ -291,7 +291,8 @@ def _dof_factor(vehicle) -> float:
 
 def region_modes(case: Any, vehicle: Any = None, *, k_max: int = 10) -> tuple[int, int]:
     """The modes per harmonic of the vehicle's regions: ``vehicle.n_modes``, at most the DOFs
-    of the vehicle's mesh in a harmonic k = 1..k_max (a basis cannot hold more).
+    of the vehicle's mesh in a harmonic k = 0..k_max (a basis cannot hold more; k = 0, the
+    forced axial modes, less its rigid motions).
 
     Parameters
     ----------
@@ -305,7 +306,7 @@ def region_modes(case: Any, vehicle: Any = None, *, k_max: int = 10) -> tuple[in
     Returns
     -------
     (int, int)
-        The modes used and the smallest DOF count of the harmonics (the mesh of
+        The modes used and the smallest mode count of the harmonics (the mesh of
         :func:`flexbooster.shell_of_revolution.mesh_vehicle`, its constraints per k).
     """
     from .model import vehicle_from_case
@@ -316,7 +317,10 @@ def region_modes(case: Any, vehicle: Any = None, *, k_max: int = 10) -> tuple[in
     wanted = case.vehicle.n_modes if case.vehicle is not None else REGION_N_MODES
     vehicle = vehicle_from_case(case) if vehicle is None else vehicle
     mesh = mesh_vehicle(vehicle)
-    dofs = min(dof_map(vehicle, mesh, k).n for k in range(1, max(1, int(k_max)) + 1))
+    # k = 0 (the forced axial modes) loses its rigid motions (axial translation, torsion: at
+    # most 2) to the modal basis; k = 1 keeps them (the bending basis); k >= 2 has none
+    dofs = min(dof_map(vehicle, mesh, k).n - (2 if k == 0 else 0)
+               for k in range(0, min(max(1, int(k_max)), 2) + 1))  # k >= 2: one class
     return min(wanted, dofs), dofs
 
 
