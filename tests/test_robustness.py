@@ -411,6 +411,12 @@ API_CALLS = [
                                step_phase=0.0)),
     ("pitch_tongue_bands-gamma-nan", "gamma",
      lambda: ba.pitch_tongue_bands(_system(), nan, omega_min=1., omega_max=10.)),
+    ("tongue_search_seconds-gamma-nan", "gamma",
+     lambda: ba.tongue_search_seconds(_system(), nan, omega_min=1., omega_max=10.)),
+    ("tongue_search_seconds-range", "omega_min",
+     lambda: ba.tongue_search_seconds(_system(), 0.1, omega_min=10., omega_max=1.)),
+    ("pipeline_band_search-max_seconds-neg", "max_seconds",
+     lambda: ba.pipeline_band_search(_model(), max_seconds=-1.0)),
     ("beam_action_analysis-n_hill-0", "n_hill",
      lambda: ba.beam_action_analysis(_model(), n_hill=0, bands=False)),
     # flexbooster.floquet (owner: bands2) and flexbooster.vehicle (owner: vk1)
