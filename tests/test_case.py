@@ -8,7 +8,7 @@ import pytest
 
 from flexbooster.case import MAX_MODES, default_case, default_case_text, load_case
 from flexbooster.errors import CaseError
-from flexbooster.units import to_si
+from flexbooster.units import to_si, to_us
 
 # Exact unit definitions: 1 in = 0.0254 m (international inch, 1959); 1 lbf = 4.4482216152605 N
 # (NIST SP 811, appendix B); 1 psi = 1 lbf/in^2.
@@ -52,6 +52,8 @@ def test_unit_conversion(value, kind, expected):
         ([1, 2], "length", "must be a number"),
         (float("nan"), "length", "must be finite"),
         (float("inf"), "pressure", "must be finite"),
+        (10**400, "length", "must be finite"),  # a 400-digit TOML integer: OverflowError
+        ("1e400 m", "length", "must be finite"),
     ],
 )
 def test_unit_errors_name_field_value_rule(value, kind, rule):
@@ -60,6 +62,28 @@ def test_unit_errors_name_field_value_rule(value, kind, rule):
     assert info.value.field == "booster.x"
     assert rule in info.value.rule
     assert "booster.x" in str(info.value)
+
+
+@pytest.mark.parametrize(("value", "unit", "expected"), [
+    (0.0254, "m", (1.0, "in")), (PSI, "Pa", (1.0, "psi")), (LBF, "N", (1.0, "lbf")),
+    (-2.0 * INCH, "m", (-2.0, "in")), (3.0, "rad/s", None)])
+def test_to_us_against_exact_definitions(value, unit, expected):
+    got = to_us(value, unit)
+    if expected is None:
+        assert got is None
+    else:
+        assert got[1] == expected[1] and got[0] == pytest.approx(expected[0], rel=1e-14)
+
+
+@pytest.mark.parametrize(("value", "unit", "rule"), [
+    (float("nan"), "m", "value = nan: must be finite"),  # returned (nan, 'in') before
+    (float("inf"), "N", "value = inf: must be finite"),
+    (1e308, "m", "beyond the float range"),  # 3.9e309 in: returned (inf, 'in') before
+    (1.0, ["m"], "si_unit = ['m']: must be a string")])
+def test_to_us_rejects_non_finite_values_in_one_line(value, unit, rule):
+    with pytest.raises(ValueError) as info:
+        to_us(value, unit)
+    assert rule in str(info.value) and "\n" not in str(info.value)
 
 
 def test_default_case_is_valid_and_documented():

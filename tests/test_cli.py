@@ -189,6 +189,50 @@ def test_progress_reports_every_stage_in_order():
     assert seen == [*STAGES[:3], STAGES[-1]]  # the skipped stages are not announced
 
 
+def _bar_text(monkeypatch, tmp_path, case_dict, *options):
+    """Run ``flexbooster run`` in-process with its progress bar drawn on a forced terminal;
+    return what the bar printed (ANSI codes removed) and the results.json written."""
+    import io
+
+    import flexbooster.cli as cli
+
+    buf = io.StringIO()
+    real = cli.Console
+    monkeypatch.setattr(cli, "Console", lambda stderr=False, **kw: real(
+        file=buf, force_terminal=True, width=250) if stderr else real(**kw))
+    tmp_path.mkdir()
+    path = tmp_path / "small.toml"
+    path.write_text(dump_toml(case_dict))
+    out = tmp_path / "out"
+    assert run_cli(["run", str(path), "--no-figures", "--no-vehicle", "-j", "1", "-o",
+                    str(out), *options]) == 0
+    return (re.sub(r"\x1b\[[0-9;?]*[A-Za-z]", "", buf.getvalue()),
+            json.loads((out / "results.json").read_text()))
+
+
+def test_progress_bar_shows_the_estimate_and_flags_half_the_budget(monkeypatch, tmp_path,
+                                                                   case_dict, capsys):
+    """Issue 18: the bar shows the run's estimated time (cost.estimate_cost of the stages
+    run, computed here independently); over half the budget it says so, and the results have
+    the cost-estimate warning."""
+    import flexbooster
+    from flexbooster.cost import estimate_cost
+    from flexbooster.model import model_from_case
+
+    case_dict["truncation"].update(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)
+    case_dict["thrust"]["n_omega"] = 40
+    seconds = estimate_cost(model_from_case(flexbooster.load_case(case_dict)),
+                            figures=False).seconds
+    text, data = _bar_text(monkeypatch, tmp_path / "a", case_dict)
+    assert f"est. {seconds:.3g} s" in text and "budget" not in text
+    assert "cost-estimate" not in {w["code"] for w in data["warnings"]}
+    budget = 1.5 * seconds  # the estimate is between half the budget and the budget
+    text, data = _bar_text(monkeypatch, tmp_path / "b", case_dict, "--max-seconds",
+                           str(budget))
+    assert f"est. {seconds:.3g} s of the {budget:g} s budget" in text
+    assert "cost-estimate" in {w["code"] for w in data["warnings"]}
+
+
 def test_two_runs_write_byte_identical_files(tmp_path, case_dict, capsys):
     """Determinism (issue 18 item 5): no time stamp in report.html (unless SOURCE_DATE_EPOCH),
     no date in the SVG metadata, fixed SVG ids: two runs of one case give the same bytes."""

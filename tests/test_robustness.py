@@ -17,6 +17,7 @@ import signal
 import subprocess
 import sys
 import time
+import types
 import warnings
 from pathlib import Path
 
@@ -269,6 +270,13 @@ API_CALLS = [
     ("checks.finite_array-positive", "x", lambda: checks.finite_array("x", [1, 0],
                                                                       positive=True)),
     ("units.to_si-nan", "f", lambda: units.to_si("f", nan, "length")),
+    ("units.to_si-kind", "kind", lambda: units.to_si("f", 1.0, "lenght")),
+    ("units.to_si-huge-int", "f", lambda: units.to_si("f", 10**400, "length")),
+    ("units.to_us-nan", "value", lambda: units.to_us(nan, "m")),  # returned (nan, 'in')
+    ("units.to_us-inf", "value", lambda: units.to_us(inf, "Pa")),
+    ("units.to_us-str", "value", lambda: units.to_us("abc", "m")),
+    ("units.to_us-overflow", "value", lambda: units.to_us(1e308, "m")),  # was (inf, 'in')
+    ("units.to_us-unit", "si_unit", lambda: units.to_us(1.0, ["m"])),
     ("simulate_case-Omega-nan", "Omega",
      lambda: analysis.simulate_case(flexbooster.default_case(), nan, tau_max=10.0)),
     ("simulate_case-n_out-1", "n_out",
@@ -403,6 +411,12 @@ API_CALLS = [
                                step_phase=0.0)),
     ("pitch_tongue_bands-gamma-nan", "gamma",
      lambda: ba.pitch_tongue_bands(_system(), nan, omega_min=1., omega_max=10.)),
+    ("tongue_search_seconds-gamma-nan", "gamma",
+     lambda: ba.tongue_search_seconds(_system(), nan, omega_min=1., omega_max=10.)),
+    ("tongue_search_seconds-range", "omega_min",
+     lambda: ba.tongue_search_seconds(_system(), 0.1, omega_min=10., omega_max=1.)),
+    ("pipeline_band_search-max_seconds-neg", "max_seconds",
+     lambda: ba.pipeline_band_search(_model(), max_seconds=-1.0)),
     ("beam_action_analysis-n_hill-0", "n_hill",
      lambda: ba.beam_action_analysis(_model(), n_hill=0, bands=False)),
     # flexbooster.floquet (owner: bands2) and flexbooster.vehicle (owner: vk1)
@@ -500,6 +514,76 @@ def test_estimate_grows_with_the_fields_that_drive_it(case_dict):
     ratio = big.parts["Hill determinant"] / base.parts["Hill determinant"]
     assert ratio == pytest.approx((81 / 21) ** 3, rel=1e-12)  # the cost model's own law
     assert set(base.to_dict()) >= {"seconds", "parts", "drivers", "capped_points"}
+
+
+def _tongue_case(case_dict, **fields):
+    """The default booster with its Omega range below omega_1 / 4 (113.5 rad/s / 4): the
+    rigid-pitch tongues r = 1..4 (tips 2.39 / r rad/s) are searched by harmonic balance."""
+    base = dict(thrust__omega_min=0.5, thrust__omega_max=20.0, thrust__n_omega=4,
+                thrust__gamma=0.5, truncation__N=4)
+    return model_from_case(_case(case_dict, **{**base, **fields}))
+
+
+def test_tongue_estimate_grows_with_the_fields_that_drive_it(case_dict):
+    """Invariants of the pitch-tongue term (cost.TONGUE_PART, issue 18): none above
+    omega_1 / 4 or without pulsation; more with more beam modes (eigenproblems of order
+    ~ (N + 1) K) and with pitch damping (the critical gamma's bisection); named fields."""
+    import copy as _copy
+
+    def part(**fields):
+        est = cost.estimate_cost(_tongue_case(_copy.deepcopy(case_dict), **fields))
+        return est.parts.get(cost.TONGUE_PART, 0.0), est
+
+    base, est = part()
+    assert base > 0.0 and "truncation.N" in est.drivers[cost.TONGUE_PART]
+    assert part(thrust__gamma=0.0)[0] == 0.0
+    assert part(thrust__omega_min=30.0, thrust__omega_max=60.0)[0] == 0.0  # above 28.4 rad/s
+    assert part(truncation__N=8)[0] > 2.0 * base
+    assert part(damping={"pitch_ratio": 0.02})[0] > base  # fewer tongues, each bisected
+
+
+def test_tongue_search_cap_stops_and_names_the_tongues_left():
+    """The cap of the pitch-tongue search (pipeline_band_search, max_seconds: its own modelled
+    time, deterministic): with max_seconds = 1 the fuzz case of six tongues (r = 1..6, 0.9 s)
+    stops before r = 4; the tongues searched are exactly those of the uncapped search, the
+    rest named in one line (max_seconds, the first order left, its Omega)."""
+    from flexbooster._threads import blas_threads
+
+    model = cost.derived_model(flexbooster.load_case(_FUZZ_TONGUE_2))
+    with blas_threads(1):
+        free = ba.pipeline_band_search(model)
+        capped = ba.pipeline_band_search(model, max_seconds=1.0)
+    assert [b.order for b in free.bands] == [6, 5, 4, 3, 2, 1] and free.skipped == ()
+    (why,) = capped.skipped
+    assert why.startswith("max_seconds = 1: the rigid-pitch tongues r >= 4 (Omega <= ")
+    assert "\n" not in why and "truncation.N" in why
+    assert capped.bands == tuple(b for b in free.bands if b.order < 4)
+    with pytest.raises(ValueError, match="^max_seconds = "):
+        ba.pipeline_band_search(model, max_seconds=0.0)
+
+
+def test_capped_tongue_search_is_a_warning_and_no_stable_verdict(monkeypatch, case_dict):
+    """The pipeline turns each skipped part of the band search into a warning (code
+    beam-action-tongue-budget, field max_seconds), passes its cap (the budget less the other
+    stages' estimate), and with no band found the verdict is not "stable"."""
+    seen = {}
+
+    def search(model, max_seconds=None):
+        seen["cap"] = max_seconds
+        return ba.BandSearch(bands=(), skipped=("max_seconds = 9: the tongues r >= 1 ...",))
+
+    monkeypatch.setattr(analysis, "pipeline_band_search", search)
+    case_dict["truncation"].update(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)
+    case_dict["thrust"].update(omega_min=0.5, omega_max=20.0, n_omega=4)
+    case = flexbooster.load_case(case_dict)
+    res = analyze(case, figures=False, vehicle=False)
+    (w,) = [w for w in res.warnings if w.code == "beam-action-tongue-budget"]
+    assert w.field == "max_seconds" and w.message.startswith("max_seconds = 9")
+    assert res.beam_action.verdict.startswith("unknown: max_seconds = 9")
+    assert res.to_dict()["beam_action"]["skipped"] == ["max_seconds = 9: the tongues r >= 1 ..."]
+    est = cost.estimate_cost(model_from_case(case), figures=False)
+    assert seen["cap"] == pytest.approx(
+        case.max_seconds - (est.seconds - est.parts[cost.TONGUE_PART]), rel=1e-12)
 
 
 def test_huge_truncation_is_refused_up_front_in_one_line(case_dict, tmp_path, capsys):
@@ -1250,3 +1334,122 @@ def test_fuzz_reproducer_pitch_tongues_far_below_the_beam(data, orders, rtol):
         assert math.isfinite(b.growth_rate_max) and b.growth_rate_max > 0.0
         assert b.omega_lo == pytest.approx(ref[b.order].omega_lo, rel=rtol)
         assert b.omega_hi == pytest.approx(ref[b.order].omega_hi, rel=rtol)
+
+
+# --------------------------------------------------------------------------------------------
+# Fuzz reproducers of the vehicle stages (issue 18 leftovers: the fuzz now draws [vehicle]
+# tables and runs the vehicle's regions in one case of five)
+# --------------------------------------------------------------------------------------------
+_FUZZ_VEHICLE_BASE = {
+    "name": "fuzz", "max_seconds": 20.0,
+    "booster": {"cylinder1": {"radius": 1.0, "half_length": 1.0},
+                "cylinder2": {"radius": 1.0, "half_length": 1.0},
+                "thickness": 0.0001, "E": 1e8, "nu": 0.01, "rho": 10.0},
+    "thrust": {"gamma": 0.0, "K": 0.0, "omega_min": 1.0, "omega_max": 1.01, "n_omega": 2,
+               "T0": 15.915494309189533},
+    "truncation": {"M1": 1, "N1": 1, "M2": 1, "N2": 1, "N": 1, "S": 0, "R": 1},
+}
+
+
+def test_fuzz_reproducer_vehicle_modes_all_buckled():
+    """Found by the fuzz: a 0.1 mm cone (one segment, k = 0 only) under F0 = 100 N: every
+    omega^2 of the band's first harmonic is negative, so the band bound was never set and
+    vehicle_modes compared with None (TypeError, exit 1).  Expected: the documented buckling
+    refusal (the library's ValueError naming prestress_F0; analyze's CaseError thrust.F0)."""
+    from flexbooster.shell_of_revolution import vehicle_modes
+
+    data = copy.deepcopy(_FUZZ_VEHICLE_BASE)
+    data["vehicle"] = {"k_max": 0, "n_modes": 1, "damping_ratio": 0.0, "segments": [
+        {"kind": "cone", "radius_aft": 1.0, "radius_fwd": 1.0, "length": 1.0,
+         "thickness": 0.0001}]}
+    case = flexbooster.load_case(data)
+    with pytest.raises(ValueError, match=r"^prestress_F0 = 100\.0: k = 0 has a non-positive"):
+        vehicle_modes(vehicle_from_case(case), k_max=0, prestress_F0=case.F0)
+    with pytest.raises(CaseError) as info:
+        analyze(case, figures=False, vehicle=False)
+    assert info.value.field == "thrust.F0" and "buckling" in str(info.value)
+
+
+def test_fuzz_reproducer_vehicle_n_modes_above_the_mesh_dofs():
+    """Found by the fuzz (6 cases): vehicle.n_modes = 333 (valid: 1..500) on a small memo
+    vehicle whose mesh has 99 DOFs at k = 1 and 97 at k >= 2: "n_modes = 333: the mesh has
+    only 99 DOFs for k = 1" (exit 1).  Now every mode of a harmonic is used (97), with a
+    vehicle-modes-clipped warning; the regions' harmonics hold exactly those 97 modes (and
+    k = 1 its 97 elastic-and-rigid ones), the results are finite."""
+    data = copy.deepcopy(_FUZZ_VEHICLE_BASE)
+    data["booster"].update(thickness=0.0794, E=1e10, nu=0.233)
+    data["thrust"] = {"gamma": 0.889, "K": 4.17, "omega_min": 434.3, "omega_max": 167538.0,
+                      "n_omega": 7, "F0": 155.15}
+    data["damping"] = {"pitch_ratio": 0.02}
+    data["vehicle"] = {"k_max": 3, "n_modes": 333, "damping_ratio": 0.001,
+                       "aft_end": "clamped", "fwd_end": "hinged", "junction": "rigid-bulkhead"}
+    case = flexbooster.load_case(data)
+    assert cost.region_modes(case, k_max=3) == (97, 97)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        res = analyze(case, figures=False)
+    (w,) = [w for w in res.warnings if w.code == "vehicle-modes-clipped"]
+    assert w.field == "vehicle.n_modes" and "333" in w.message and "97 modes" in w.message
+    assert [h.omega_loaded.size for h in res.vehicle_regions.harmonics] == [97, 97, 97]
+    json.dumps(res.to_dict(), allow_nan=False)
+
+
+def test_fuzz_reproducer_vehicle_n_modes_above_the_axial_modes():
+    """Found by the fuzz (run 4): n_modes = 176 on a 3-segment free-free vehicle whose mesh has
+    140 DOFs at k = 0 but 138 modes once its 2 rigid motions are left out: the first clip (to
+    the DOFs) asked the forced axial modes for 140 ("the mesh has only 138 modes for k = 0").
+    Now 138 per harmonic, the forced axial resonances computed, a vehicle-modes-clipped
+    warning."""
+    case = flexbooster.load_case({
+        "name": "fuzz", "max_seconds": 20.0,
+        "booster": {"cylinder1": {"radius": 8.45, "half_length": 35.9},
+                    "cylinder2": {"radius": 12.6, "half_length": 1.0}, "thickness": 0.845,
+                    "E": 6.28e9, "nu": 0.319, "rho": 5279.0},
+        "thrust": {"gamma": 0.0, "K": 0.626, "omega_min": 2.38, "omega_max": 1307.0,
+                   "n_omega": 9, "T0": 165876.0},
+        "truncation": {"M1": 3, "N1": 3, "M2": 2, "N2": 1, "N": 2, "S": 3, "R": 3},
+        "damping": {"beam_modal_ratio": 0.01},
+        "vehicle": {"k_max": 4, "n_modes": 176, "damping_ratio": 0.1, "segments": [
+            {"kind": "cylinder", "radius": 8.45, "length": 49.4, "thickness": 0.845},
+            {"kind": "cone", "radius_aft": 8.45, "radius_fwd": 2.74, "length": 1.0,
+             "thickness": 0.274},
+            {"kind": "cone", "radius_aft": 2.74, "radius_fwd": 2.7400001, "length": 1.0,
+             "thickness": 0.274}]}})
+    assert cost.region_modes(case, k_max=4) == (138, 138)
+    res = analyze(case, figures=False)
+    assert res.vehicle_regions.forced_axial is not None
+    assert "vehicle-modes-clipped" in {w.code for w in res.warnings}
+
+
+_FUZZ_CANDIDATES = {
+    "name": "fuzz",
+    "booster": {"cylinder1": {"radius": 28.44842919443165, "half_length": 1.3954288775018648},
+                "cylinder2": {"radius": 47.13013587898876, "half_length": 3.1557674301688827},
+                "thickness": 0.048771811768155295, "E": 20447356474.064217,
+                "nu": 0.32332789317528776, "rho": 226.8960928016897},
+    "thrust": {"gamma": 0.9439478472914494, "K": 3.5018139758102595,
+               "omega_min": 3.7423594778010467, "omega_max": 5.617245733771596,
+               "n_omega": 11, "F0": 146800443.25106373},
+    "truncation": {"M1": 1, "N1": 1, "M2": 1, "N2": 1, "N": 2, "S": 0, "R": 1},
+}
+
+
+def test_fuzz_reproducer_vehicle_regions_past_the_candidate_limit():
+    """Found by the vehicle fuzz: the memo vehicle of two wide short cylinders (20 modes up to
+    6,350 rad/s) over Omega = 3.7..5.6 rad/s has 257,595-321,616 resonance candidates per
+    harmonic, past the Floquet toolkit's 200,000: its ValueError ended the run (exit 1).  Now
+    the toolkit raises TooManyCandidatesError and each harmonic is named as not searched
+    (vehicle-regions-skipped, field thrust.omega_min); the verdict is not "stable"."""
+    from flexbooster.floquet import TooManyCandidatesError
+    from flexbooster.present.rows import vehicle_region_verdict
+
+    assert issubclass(TooManyCandidatesError, ValueError)
+    case = flexbooster.load_case(_FUZZ_CANDIDATES)
+    found, warns = analysis._vehicle_regions_stage(case, boundaries=False)
+    assert len(warns) == 10 and found.regions == ()
+    for k, w in enumerate(warns, start=1):
+        assert (w.code, w.field) == ("vehicle-regions-skipped", "thrust.omega_min")
+        assert f"harmonic k = {k} not searched" in w.message and "candidates" in w.message
+        assert "\n" not in w.message
+    text, stable = vehicle_region_verdict(types.SimpleNamespace(vehicle_regions=found))
+    assert not stable and text.startswith("unknown")

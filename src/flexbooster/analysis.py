@@ -32,10 +32,11 @@ from .errors import AnalysisWarning
 from .memo import charts
 from .memo.beam import beam_modes
 from .memo.beam_action import (
+    BandSearch,
     PeriodMapOverflowError,
     beam_action_analysis,
     hill_check,
-    pipeline_bands,
+    pipeline_band_search,
 )
 from .memo.model import BoosterModel
 from .memo.pitch import pitch_analysis
@@ -144,6 +145,7 @@ def analyze(
     *,
     workers: int | TaskPool = 1,
     vehicle: bool = True,
+    on_estimate: Callable[[cost.CostEstimate, float], None] | None = None,
 ) -> Results:
     """Run the analysis of a validated case.
 
@@ -173,6 +175,11 @@ def analyze(
         with their (Omega, gamma) boundary curves when ``figures``) and the memo-table roots
         inside them (:func:`memo_roots_in_regions`); ``results.vehicle_regions`` is None
         without it (``flexbooster run --no-vehicle``).
+    on_estimate : callable, optional
+        Called once, before any solver runs, with the cost estimate of the stages that will
+        run (:class:`flexbooster.cost.CostEstimate`, memo and vehicle stages) and the budget
+        ``case.max_seconds`` (s), e.g. to show the estimate in a progress bar; a case over
+        its budget is refused (``CaseError`` on ``max_seconds``) before the call.
 
     Returns
     -------
@@ -188,25 +195,32 @@ def analyze(
     with blas_threads(1):
         with using_pool(workers) as pool:
             return _analyze(case, beam_action, stability, figures,
-                            progress or (lambda stage: None), pool, with_regions=vehicle)
+                            progress or (lambda stage: None), pool, with_regions=vehicle,
+                            on_estimate=on_estimate)
 
 
 def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
              step: Callable[[str], None], pool: TaskPool, *,
-             with_regions: bool = True) -> Results:
+             with_regions: bool = True, on_estimate=None) -> Results:
     step(STAGES[0])
     model = cost.derived_model(case)
-    extra: list[AnalysisWarning] = _feasibility(case, model, beam_action=beam_action,
-                                                stability=stability, figures=figures,
-                                                with_regions=with_regions)
+    est, extra = _feasibility(case, model, beam_action=beam_action, stability=stability,
+                              figures=figures, with_regions=with_regions)
+    if on_estimate is not None:
+        on_estimate(est, case.max_seconds)
     # the costliest figure data, independent of the stages below: started first (in a worker
     # when the pool has one, else computed when asked for, in STAGES[5])
     chart = (pool.submit(charts.beam_action_chart, model) if figures and beam_action
              else None)
-    bands = pool.submit(pipeline_bands, model) if beam_action and pool.parallel else None
+    # the band search's cap: the budget less the other stages' estimate (issue 18)
+    cap = case.max_seconds - (est.seconds - est.parts.get(cost.TONGUE_PART, 0.0))
+    search = (pool.submit(pipeline_band_search, model, max_seconds=cap)
+              if beam_action and pool.parallel else None)
     hill = pool.submit(hill_check, model) if beam_action and pool.parallel else None
     # the vehicle's regions depend on the case alone (run last when there is no worker)
-    vreg = (pool.submit(_vehicle_regions_stage, case, boundaries=figures)
+    # their budget: the case's less the other stages' estimate
+    vbudget = case.max_seconds - (est.seconds - est.parts.get("vehicle regions", 0.0))
+    vreg = (pool.submit(_vehicle_regions_stage, case, boundaries=figures, max_seconds=vbudget)
             if with_regions and pool.parallel else None)
     n = model.truncation
     beam = beam_modes(n.N, model.mass.L, model.R1, model.E, model.rho)
@@ -218,8 +232,11 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
     action = None
     if beam_action:
         step(STAGES[3])
-        action = _beam_action(model, True if bands is None else bands.result,
+        action = _beam_action(model, search.result if search is not None else
+                              lambda: pipeline_band_search(model, max_seconds=cap),
                               None if hill is None else hill.result)
+        extra += [AnalysisWarning("beam-action-tongue-budget", "max_seconds", why)
+                  for why in action.skipped]
     table = None
     params = None
     if stability and action is not None:
@@ -254,7 +271,8 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
     if with_regions:
         step(VEHICLE_REGIONS_STAGE)
         regions, skipped = (vreg.result() if vreg is not None
-                            else _vehicle_regions_stage(case, boundaries=figures))
+                            else _vehicle_regions_stage(case, boundaries=figures,
+                                                        max_seconds=vbudget))
         extra += skipped
         if regions is not None and table is not None:
             matches = memo_roots_in_regions(table, regions)
@@ -284,9 +302,9 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
 
 
 def _feasibility(case: Case, model: BoosterModel, *, with_regions: bool = True,
-                 **stages: bool) -> list[AnalysisWarning]:
+                 **stages: bool) -> tuple[cost.CostEstimate, list[AnalysisWarning]]:
     """Refuse a case past its budget or past what the structure carries (issue 18), before
-    any solver runs; the warnings of the budget and of the load."""
+    any solver runs; the estimate, and the warnings of the budget and of the load."""
     cost.check_physical(model)
     # the vehicle stages too (issue 18 item 1): modes survey, regions (lower bound with damping)
     veh = dict(regions=with_regions, figures=stages.get("figures", True))
@@ -298,7 +316,7 @@ def _feasibility(case: Case, model: BoosterModel, *, with_regions: bool = True,
                                    f"estimated run time {est.seconds:.3g} s is over half the "
                                    f"budget max_seconds = {case.max_seconds:g} s: "
                                    f"{est.describe()}"))
-    return out
+    return est, out
 
 
 def _figure_data(model, pitch, shell, action, table, params, *,
@@ -355,7 +373,7 @@ def simulate_case(case: Case, Omega: float, *, tau_max: float, n_out: int = 401,
         return simulate(model, Omega, tau_max, n_out=n_out, psi0=psi0, params=params)
 
 
-def _beam_action(model, bands, hill=None):
+def _beam_action(model, bands: bool | BandSearch | Callable[[], BandSearch], hill=None):
     """:func:`beam_action_analysis`; a period map beyond floating point is the load's CaseError."""
     from .errors import CaseError
 
@@ -445,14 +463,17 @@ def vehicle_warnings(survey: VehicleSurvey) -> list[AnalysisWarning]:
     return out
 
 
-def _vehicle_regions_stage(case: Case, *, boundaries: bool
+def _vehicle_regions_stage(case: Case, *, boundaries: bool, max_seconds: float | None = None
                            ) -> tuple[VehicleRegions | None, list[AnalysisWarning]]:
     """The regions of :func:`analyze_vehicle_regions`, or None and a warning where they cannot
-    be computed (k_max < 1, or the steady thrust buckles a harmonic): the run goes on."""
+    be computed (k_max < 1, or the steady thrust buckles a harmonic): the run goes on.  Each
+    harmonic left out is a warning: ``vehicle-regions-budget`` (field max_seconds) past the
+    budget, ``vehicle-regions-skipped`` (thrust.omega_min) past the candidate limit."""
     from .errors import CaseError
     from .vehicle_case import VehicleTable
 
-    k_max = (case.vehicle if case.vehicle is not None else VehicleTable()).k_max
+    table = case.vehicle
+    k_max = (table if table is not None else VehicleTable()).k_max
     if k_max < VEHICLE_REGIONS_K_MIN:
         return None, [AnalysisWarning(
             "vehicle-regions-skipped", "vehicle.k_max",
@@ -460,17 +481,28 @@ def _vehicle_regions_stage(case: Case, *, boundaries: bool
             f"computed for k >= {VEHICLE_REGIONS_K_MIN} only (k = 0 gives forced, not "
             "parametric, resonances)")]
     try:
-        found = analyze_vehicle_regions(case, boundaries=boundaries)
+        found = analyze_vehicle_regions(case, boundaries=boundaries, max_seconds=max_seconds)
+        used, dofs = cost.region_modes(case, k_max=k_max)
+        clipped = [] if table is None or used == table.n_modes else [AnalysisWarning(
+            "vehicle-modes-clipped", "vehicle.n_modes",
+            f"vehicle.n_modes = {table.n_modes}: more than the {dofs} modes the vehicle's "
+            f"mesh has in a harmonic: {used} modes per harmonic (all of them) are used")]
+        left = ("" if max_seconds is None or max_seconds == case.max_seconds else
+                f" [what the other stages' estimate left of max_seconds = "
+                f"{case.max_seconds:g} s]")
         # harmonics whose search would pass the budget (issue 18): named, not searched
-        return found, [AnalysisWarning("vehicle-regions-budget", "max_seconds", why)
-                       for why in found.skipped]
+        return found, clipped + [
+            AnalysisWarning("vehicle-regions-budget", "max_seconds", why + left)
+            if why.startswith("max_seconds") else
+            AnalysisWarning("vehicle-regions-skipped", why.split(" = ", 1)[0], why)
+            for why in found.skipped]
     except CaseError as exc:  # the thrust buckles the vehicle: a result, not a bad input
         return None, [AnalysisWarning("vehicle-regions-skipped", exc.field, exc.rule)]
 
 
 def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
-                            k_max: int | None = None, boundaries: bool = True
-                            ) -> VehicleRegions:
+                            k_max: int | None = None, boundaries: bool = True,
+                            max_seconds: float | None = None) -> VehicleRegions:
     """The parametric instability regions of the case's vehicle (the last stage of
     :func:`analyze`).
 
@@ -499,6 +531,10 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
         Only the regions that exist at that gamma have curves
         (:func:`flexbooster.vehicle.region_curves`: the harmonics with a region there, from
         their stored systems, in the budget the searches left).
+    max_seconds : float, optional
+        Budget of the searches (s), > 0; default ``case.max_seconds``.  The chart's curves
+        get what the map left of it (``VehicleRegions.estimated_seconds``); a harmonic whose
+        search would pass it is named in ``skipped``.
 
     Returns
     -------
@@ -525,20 +561,23 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
         raise CaseError("vehicle.k_max", table.k_max,
                         f"the parametric regions need k_max >= {k_min}")
     t = case.thrust
+    budget = case.max_seconds if max_seconds is None else positive("max_seconds", max_seconds)
+    vehicle = vehicle_from_case(case)
+    # at most the DOFs of a harmonic's mesh (a vehicle.n_modes up to 500 is valid input)
+    n_modes = cost.region_modes(case, vehicle, k_max=k_max)[0]
     settings = dict(F0=case.F0, omega_min=t.omega_min, omega_max=t.omega_max, k_min=k_min,
-                    k_max=k_max, n_modes=table.n_modes, damping_ratio=table.damping_ratio,
-                    gimbal_gain=t.K, max_seconds=case.max_seconds)
+                    k_max=k_max, n_modes=n_modes, damping_ratio=table.damping_ratio,
+                    gimbal_gain=t.K)
     with blas_threads(1):
-        vehicle = vehicle_from_case(case)
         try:
-            found = vehicle_regions(vehicle, gamma=t.gamma, **settings)
+            found = vehicle_regions(vehicle, gamma=t.gamma, max_seconds=budget, **settings)
             top = _chart_gamma(found)
             if boundaries and top > 0.0:
                 # the harmonics that can have a region at the chart's top (above the case's
                 # gamma every harmonic is certified: none), in the budget the map left
                 curves, skipped = region_curves(
                     found, gamma_max=top, n_gamma=charts.VEHICLE_CHART_LEVELS,
-                    max_seconds=max(case.max_seconds - found.estimated_seconds, 1e-9))
+                    max_seconds=max(budget - found.estimated_seconds, 1e-9))
                 found = dataclasses.replace(found, curves=curves,
                                             skipped=found.skipped + skipped)
             found = dataclasses.replace(found, chart_gamma_max=top if boundaries else None)

@@ -160,9 +160,22 @@ _FORMAT = click.option(
 )
 
 
+def _estimate_text(seconds: float, max_seconds: float) -> str:
+    """The progress bar's estimate column (issue 18): ``est. 7.5 s``, or over half the budget
+    ``est. 200 s of the 300 s budget`` (in yellow; the run also has a ``cost-estimate``
+    warning)."""
+    if seconds > 0.5 * max_seconds:
+        return f"[yellow]est. {seconds:.3g} s of the {max_seconds:g} s budget[/]"
+    return f"est. {seconds:.3g} s"
+
+
 @contextmanager
 def _progress(stages: int, quiet: bool) -> Iterator[Callable[[str], None]]:
-    """A rich progress bar on standard error (a terminal only), advanced once per stage."""
+    """A rich progress bar on standard error (a terminal only), advanced once per stage.
+
+    The step function it yields has an ``estimate(estimate, max_seconds)`` attribute, for
+    :func:`flexbooster.analysis.analyze`'s ``on_estimate``: the bar then shows the run's
+    estimated time beside the elapsed one."""
     from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
     console = Console(stderr=True)
@@ -171,12 +184,13 @@ def _progress(stages: int, quiet: bool) -> Iterator[Callable[[str], None]]:
         BarColumn(),
         TextColumn("{task.completed}/{task.total}"),
         TimeElapsedColumn(),
+        TextColumn("{task.fields[estimate]}"),
         console=console,
         transient=True,
         disable=quiet or not console.is_terminal,
     )
     with bar:
-        task = bar.add_task("starting", total=stages)
+        task = bar.add_task("starting", total=stages, estimate="")
         started = [False]
 
         def step(stage: str) -> None:
@@ -185,6 +199,10 @@ def _progress(stages: int, quiet: bool) -> Iterator[Callable[[str], None]]:
             started[0] = True
             bar.update(task, description=stage)
 
+        def estimate(est, max_seconds: float) -> None:
+            bar.update(task, estimate=_estimate_text(est.seconds, max_seconds))
+
+        step.estimate = estimate  # type: ignore[attr-defined]
         yield step
         bar.update(task, completed=stages)
 
@@ -247,7 +265,7 @@ def run(case_file: Path | None, output: Path, no_figures: bool, no_vehicle: bool
             for _ in range(pool.workers):
                 pool.submit_when_idle(prepare_figures)
         results = analyze(case, progress=step, figures=not no_figures, vehicle=not no_vehicle,
-                          workers=pool)
+                          workers=pool, on_estimate=getattr(step, "estimate", None))
         paths = write_outputs(results, output, figures=not no_figures, progress=step,
                               workers=pool)
     _report(results, fmt, quiet, print_summary)
@@ -324,7 +342,8 @@ def stability(
 
     case = _with_budget(_case_with_range(_load(case_file), omega_min, omega_max), max_seconds)
     with _progress(len(STAGES), quiet) as step:
-        results = analyze(case, progress=step, vehicle=False)  # the memo table only
+        results = analyze(case, progress=step, vehicle=False,  # the memo table only
+                          on_estimate=getattr(step, "estimate", None))
     _report(results, fmt, quiet, print_stability)
     if results.stability is None:  # a resource limit: the warning says which
         raise CaseError("truncation", "stability", "; ".join(w.message for w in results.warnings

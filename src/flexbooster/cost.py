@@ -34,6 +34,7 @@ from .memo.beam_action import (
     MONODROMY_MAX_STEPS,
     beam_system,
     monodromy_steps,
+    tongue_search_seconds,
 )
 from .memo.charts import PITCH_BAND_CHART_LEVELS
 from .memo.model import BoosterModel
@@ -49,7 +50,13 @@ __all__ = [
     "physical_warnings",
     "capped_steps_warning",
     "estimate_vehicle_cost",
+    "region_modes",
+    "TONGUE_PART",
 ]
+
+#: Name of the part of :func:`estimate_cost` for the rigid-pitch tongue search below
+#: omega_1 / 4 (:func:`flexbooster.memo.beam_action.pitch_tongue_bands`).
+TONGUE_PART = "beam-action pitch tongues"
 
 #: Default budget of a run (s): a case whose estimate exceeds it is refused up front.
 DEFAULT_MAX_SECONDS = 300.0
@@ -193,7 +200,9 @@ def estimate_cost(model: BoosterModel, *, beam_action: bool = True, stability: b
         eq. 4.2-4), pitch bands and chart (tongues in the range), shell frequencies
         (M x N modes), beam-action monodromy (the sum of the capped step counts over the
         grid), Hill determinant ((2 n (2 S + 1))^3 per point), band search and chart
-        (~n^2.5), stability table (curves x shell modes).
+        (~n^2.5), the rigid-pitch tongues below omega_1 / 4 (:data:`TONGUE_PART`,
+        :func:`flexbooster.memo.beam_action.tongue_search_seconds`), stability table
+        (curves x shell modes).
 
     References
     ----------
@@ -241,6 +250,13 @@ def estimate_cost(model: BoosterModel, *, beam_action: bool = True, stability: b
             parts["beam-action bands"] = _C_BANDS * weight * (1.0 + _DAMPED_FACTOR * damped)
             drivers["beam-action bands"] = ("truncation.N", "thrust.omega_min",
                                             "damping.beam_modal_ratio", "thrust.F0")
+        low_hi = min(hi, BAND_OMEGA_BAR_MIN * model.omega_1)
+        if low_hi > lo:  # below omega_1 / 4: the rigid-pitch tongues (harmonic balance)
+            parts[TONGUE_PART] = tongue_search_seconds(
+                system, model.gamma, omega_min=lo, omega_max=low_hi,
+                beam_ratio=model.beam_damping_ratio, pitch_ratio=model.pitch_damping_ratio)
+            drivers[TONGUE_PART] = ("thrust.omega_min", "thrust.gamma", "truncation.N",
+                                    "damping.pitch_ratio", "damping.beam_modal_ratio")
     if beam_action and stability:
         curves = 13.0 * n.R * (2 * n.S + 1)
         parts["stability table"] = _C_STABILITY * curves * modes
@@ -271,6 +287,41 @@ def _dof_factor(vehicle) -> float:
     from .shell_of_revolution import mesh_vehicle
 
     return max(1.0 / 3.0, (mesh_vehicle(vehicle).n_full / _REF_DOFS) ** 3)
+
+
+def region_modes(case: Any, vehicle: Any = None, *, k_max: int = 10) -> tuple[int, int]:
+    """The modes per harmonic of the vehicle's regions: ``vehicle.n_modes``, at most the DOFs
+    of the vehicle's mesh in a harmonic k = 0..k_max (a basis cannot hold more; k = 0, the
+    forced axial modes, less its rigid motions).
+
+    Parameters
+    ----------
+    case : Case
+        The validated case.
+    vehicle : Vehicle, optional
+        Its vehicle (:func:`flexbooster.model.vehicle_from_case`), when already built.
+    k_max : int
+        Highest harmonic of the regions (dimensionless), >= 1.
+
+    Returns
+    -------
+    (int, int)
+        The modes used and the smallest mode count of the harmonics (the mesh of
+        :func:`flexbooster.shell_of_revolution.mesh_vehicle`, its constraints per k).
+    """
+    from .model import vehicle_from_case
+    from .shell_of_revolution import mesh_vehicle
+    from .shell_of_revolution.assembly import dof_map
+    from .vehicle_case import REGION_N_MODES
+
+    wanted = case.vehicle.n_modes if case.vehicle is not None else REGION_N_MODES
+    vehicle = vehicle_from_case(case) if vehicle is None else vehicle
+    mesh = mesh_vehicle(vehicle)
+    # k = 0 (the forced axial modes) loses its rigid motions (axial translation, torsion: at
+    # most 2) to the modal basis; k = 1 keeps them (the bending basis); k >= 2 has none
+    dofs = min(dof_map(vehicle, mesh, k).n - (2 if k == 0 else 0)
+               for k in range(0, min(max(1, int(k_max)), 2) + 1))  # k >= 2: one class
+    return min(wanted, dofs), dofs
 
 
 def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
@@ -315,23 +366,25 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
     t = case.thrust
     parts: dict[str, float] = {}
     drivers: dict[str, tuple[str, ...]] = {}
+    n_k = table.k_max if regions_k_max is None else min(table.k_max, int(regions_k_max))
     try:
-        dofs = _dof_factor(vehicle_from_case(case))
+        vehicle = vehicle_from_case(case)
+        dofs = _dof_factor(vehicle)
+        n_modes = region_modes(case, vehicle, k_max=max(n_k, 1))[0]
     except ValueError:  # a vehicle the mesh refuses: the stage says why, not the estimate
         return CostEstimate(seconds=0.0)
     if case.vehicle is not None:  # the modes survey, k = 0..k_max
         c0, c1 = _C_SURVEY
         parts["vehicle modes"] = c0 + c1 * (table.k_max + 1) * dofs
         drivers["vehicle modes"] = ("vehicle.k_max", "vehicle.segments")
-    n_k = table.k_max if regions_k_max is None else min(table.k_max, int(regions_k_max))
     if regions and n_k >= 1:
         damped = table.damping_ratio > 0.0
         searched = 0 if (damped and certified) or t.gamma == 0.0 else n_k
         # k = 1 has the rigid modes too (at least 3 basis modes)
-        search = searched * search_seconds(max(table.n_modes, 3), t.omega_min, t.omega_max,
+        search = searched * search_seconds(max(n_modes, 3), t.omega_min, t.omega_max,
                                            damped=damped, boundaries=figures)
         parts["vehicle regions"] = n_k * HARMONIC_BUILD_SECONDS * dofs * max(
-            1.0, table.n_modes / 20.0) + search
+            1.0, n_modes / 20.0) + search
         drivers["vehicle regions"] = ("vehicle.n_modes", "vehicle.damping_ratio",
                                       "vehicle.k_max", "thrust.omega_min", "thrust.omega_max",
                                       "vehicle.segments")

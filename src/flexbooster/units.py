@@ -18,6 +18,7 @@ from functools import lru_cache
 
 import pint
 
+from .checks import choice, finite
 from .errors import CaseError
 
 __all__ = ["SI_UNITS", "US_UNITS", "to_si", "to_us"]
@@ -82,15 +83,20 @@ def to_si(field: str, value: object, kind: str) -> float:
     ------
     CaseError
         For a boolean, an unparsable string, an unknown unit, a unit of the wrong dimension,
-        or a value that is not finite.
+        or a value that is not finite (NaN, inf, or an integer beyond the float range).
+    ValueError
+        ``kind`` not one of :data:`SI_UNITS` (a programming error, not bad input).
     """
-    target = SI_UNITS[kind]
+    target = SI_UNITS[choice("kind", kind, tuple(SI_UNITS))]
     if isinstance(value, bool):
         raise CaseError(
             field, value, f"must be a number or a string with units of {target or 'nothing'}"
         )
     if isinstance(value, int | float):
-        result = float(value)
+        try:
+            result = float(value)
+        except OverflowError:  # an integer literal of hundreds of digits (TOML allows it)
+            raise CaseError(field, value, "must be finite (beyond the float range)") from None
     elif isinstance(value, str):
         ureg = _registry()
         try:
@@ -106,6 +112,8 @@ def to_si(field: str, value: object, kind: str) -> float:
         scale = 2.0 * math.pi if (kind == "angular_frequency" and _is_hertz(quantity)) else 1.0
         try:
             result = float(quantity.to(target).magnitude) * scale
+        except OverflowError:
+            raise CaseError(field, value, "must be finite (beyond the float range)") from None
         except pint.errors.DimensionalityError:
             expected = f"units of {target}" if target else "no units"
             raise CaseError(field, value, f"wrong dimension: expected {expected}") from None
@@ -134,10 +142,22 @@ def to_us(value: float, si_unit: str) -> tuple[float, str] | None:
     (float, str) or None
         The value and the unit's name; None for a unit without an inch-pound counterpart
         (rad/s, Hz, dimensionless).
+
+    Raises
+    ------
+    ValueError
+        ``value`` not a finite number, or its conversion beyond the float range (1e308 m in
+        inches); ``si_unit`` not a string.
     """
+    value = finite("value", value)
+    if not isinstance(si_unit, str):
+        raise ValueError(f"si_unit = {si_unit!r}: must be a string (a unit such as 'm')")
     us = US_UNITS.get(si_unit)
     if us is None:
         return None
     ureg = _registry()
-    quantity = ureg.Quantity(float(value), si_unit.replace(" ", "*"))
-    return float(quantity.to(us).magnitude), us
+    quantity = ureg.Quantity(value, si_unit.replace(" ", "*"))
+    result = float(quantity.to(us).magnitude)
+    if not math.isfinite(result):
+        raise ValueError(f"value = {value!r}: {si_unit} -> {us} is beyond the float range")
+    return result, us

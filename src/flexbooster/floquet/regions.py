@@ -63,6 +63,7 @@ from .narrow import narrow_search
 
 __all__ = [
     "DAMPING_MARGIN",
+    "TooManyCandidatesError",
     "golden_section_max",
     "InstabilityRegion",
     "instability_regions",
@@ -75,6 +76,12 @@ __all__ = [
 ]
 
 _KINDS = ("simple", "sum", "difference")
+
+
+class TooManyCandidatesError(ValueError):
+    """The resonance candidates 2 omega_i / j, (omega_i +- omega_k) / j in the Omega range
+    exceed ``max_candidates``: omega_min too small for the frequencies (one line, naming
+    omega_min); a search past a resource limit, not a wrong argument."""
 _GOLD = 0.5 * (np.sqrt(5.0) - 1.0)
 #: Round-off floor of the indicators (s-values are O(1), eigenvalue errors ~ eps ||S||): a
 #: maximum below it is not a region.  Detection limit: relative width ~ 2 sqrt(floor) / (pi j).
@@ -258,9 +265,9 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
     counts = np.maximum(0, jmax_all - jmin_all + 1)
     total = int(np.sum(counts))
     if total > opt.max_candidates:
-        raise ValueError(f"omega_min = {lo!r}: {total} resonance candidates, more than "
-                         f"max_candidates = {opt.max_candidates} (omega_min too small for the "
-                         "frequencies)")
+        raise TooManyCandidatesError(
+            f"omega_min = {lo!r}: {total} resonance candidates, more than max_candidates = "
+            f"{opt.max_candidates} (omega_min too small for the frequencies)")
     rep = np.repeat(np.arange(base.size), counts)
     offs = np.arange(total) - np.repeat(np.cumsum(counts) - counts, counts)
     j = jmin_all[rep] + offs

@@ -47,6 +47,7 @@ References
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
@@ -95,6 +96,10 @@ __all__ = [
     "modal_damping",
     "beam_action_bands",
     "pitch_tongue_bands",
+    "TONGUE_QZ_SECONDS",
+    "tongue_search_seconds",
+    "BandSearch",
+    "pipeline_band_search",
     "pipeline_bands",
     "BeamActionResult",
     "beam_action_analysis",
@@ -1074,6 +1079,8 @@ class BeamActionResult:
     band_range : (float, float)
         The Omega range searched for every kind of band (rad/s): the grid's, raised to
         omega_1 / 4; below it the rigid-pitch tongues are searched (:func:`pitch_tongue_bands`).
+    skipped : tuple of str
+        The parts of the range not searched (:class:`BandSearch`), one line each.
     """
 
     Omega: np.ndarray
@@ -1096,6 +1103,7 @@ class BeamActionResult:
     beam_damping_ratio: float = 0.0
     pitch_damping_ratio: float = 0.0
     band_range: tuple = (0.0, 0.0)
+    skipped: tuple = ()
 
     def unstable_intervals(self) -> list[tuple[float, float]]:
         """The bands as (omega_lo, omega_hi) (rad/s)."""
@@ -1127,6 +1135,7 @@ class BeamActionResult:
             "beam_damping_ratio": float(self.beam_damping_ratio),
             "pitch_damping_ratio": float(self.pitch_damping_ratio),
             "band_range": [float(v) for v in self.band_range],
+            "skipped": [str(w) for w in self.skipped],
         }
 
 
@@ -1150,6 +1159,50 @@ TONGUE_GAMMA_RTOL = 1e-6
 #: Hill harmonics (s = -S..S) of the growth rate inside a pitch tongue (checked against S + 4
 #: at the maximum; Omega << omega_1 there, so few are needed).
 TONGUE_HILL_HARMONICS = 4
+
+# Cost model of the pitch-tongue search (issue 18; one core, OPENBLAS_NUM_THREADS=1), measured
+# on 310 fuzz-like boosters (N = 1..4, 2..5 modes) and the default booster at N = 6 and 10
+# (benchmarks/bench_cost.py): the harmonic-balance eigenproblems (scipy's QZ, order m = n h,
+# 2 n h with damping, h = 2 K or 2 K + 1 harmonic blocks) cost TONGUE_QZ_SECONDS m^3 plus a
+# fixed _TONGUE_CALL each; the growth maximum of a tongue (~31 Hill eigenproblems of order 18 n
+# and one of 34 n) _TONGUE_GROWTH[0] + _TONGUE_GROWTH[1] x their m^3; the pitch-only guide
+# (1 x 1 harmonic balance) _TONGUE_GUIDE per use.  With damping the critical gamma is a
+# bisection of _TONGUE_BISECTIONS steps, each one eigenproblem at the tongue's converged K.
+#: Seconds per m^3 of one generalised eigenproblem of order m in the pitch-tongue search.
+TONGUE_QZ_SECONDS = 1.2e-8
+_TONGUE_CALL = 4e-4
+_TONGUE_GROWTH = (0.1, 3e-9)
+_TONGUE_GUIDE = 3.5e-3
+_TONGUE_BISECTIONS = int(math.ceil(math.log2(1.0 / TONGUE_GAMMA_RTOL)))
+#: Tongues far below their neighbours' reach: without pitch damping the search is modelled to
+#: stop after tongue r = 11 at the latest (the highest found over the calibration cases: 10),
+#: or once the tongue's relative width (Mathieu, small q, A&S 20.2.25) is below 1e-6.
+_TONGUE_R_MODEL = 11
+_TONGUE_WIDTH_MODEL = 1e-6
+#: Below this Omega_bar the harmonic balance meets its round-off floor (TONGUE_RTOL_FLOOR):
+#: every K is tried (undamped) or one K more converges (damped).
+_TONGUE_FLOOR_OMEGA_BAR = 3e-3
+
+
+def _qz_seconds(n: int, K: int, period: str, damped: bool) -> float:
+    """Modelled time of one harmonic-balance eigenproblem (n modes, K harmonics)."""
+    m = n * (2 * K if period == "2T" else 2 * K + 1) * (2 if damped else 1)
+    return TONGUE_QZ_SECONDS * float(m) ** 3 + _TONGUE_CALL
+
+
+def _growth_seconds(n: int) -> float:
+    """Modelled time of :func:`_growth_max` (n modes, S = TONGUE_HILL_HARMONICS)."""
+    c0, c1 = _TONGUE_GROWTH
+    m = 2 * n * (2 * TONGUE_HILL_HARMONICS + 1)
+    return c0 + c1 * (31.0 * m**3 + (2 * n * (2 * TONGUE_HILL_HARMONICS + 9)) ** 3)
+
+
+class _Spend:
+    """Modelled seconds of a tongue search so far (from the sizes of the eigenproblems it
+    solved: deterministic, unlike a clock)."""
+
+    def __init__(self) -> None:
+        self.seconds = 0.0
 
 
 def _pitch_mode(system: BeamActionSystem) -> int:
@@ -1196,7 +1249,7 @@ def _pitch_only_edges(mu_p: float, b_p: float, c_p: float, *, period: str, centr
 
 def _tongue_edges(A, C, B, *, period: str, centre: float, window: tuple[float, float],
                   rtol: float, harmonics=None, guess: tuple[float, float] | None = None,
-                  ) -> tuple[tuple[float, float] | None, int]:
+                  spend: _Spend | None = None) -> tuple[tuple[float, float] | None, int]:
     """Edges of the tongue about ``centre`` from the converged T / 2T-periodic boundaries.
 
     Within the window, roots closer than rtol * centre in pairs (double roots: regions of
@@ -1207,7 +1260,8 @@ def _tongue_edges(A, C, B, *, period: str, centre: float, window: tuple[float, f
     With ``harmonics`` = (K,) one truncation is used as it is.  With ``guess`` (the pitch-only
     tongue, :func:`_pitch_only_edges`) the edges are the roots nearest to it from the first K
     on (a tongue r >= 3 does not straddle its tip).  Returns the edges (None: no tongue) and
-    the smaller K of the two that agree (as accurate, cheaper).
+    the smaller K of the two that agree (as accurate, cheaper).  ``spend`` is charged the
+    modelled time of each eigenproblem.
     """
     n = A.shape[0]
     prev = None
@@ -1216,6 +1270,8 @@ def _tongue_edges(A, C, B, *, period: str, centre: float, window: tuple[float, f
     for K in Ks:
         r = periodic_boundaries(np.eye(n), C, A, B, period=period, n_harmonics=K,
                                 omega_max=window[1])
+        if spend is not None:
+            spend.seconds += _qz_seconds(n, K, period, C is not None)
         r = r[r >= window[0]]
         close = np.diff(r) <= rtol * centre
         drop = np.zeros(r.size, dtype=bool)
@@ -1308,38 +1364,77 @@ def pitch_tongue_bands(system: BeamActionSystem, gamma: float, *, omega_min: flo
     Bolotin (1964), ch. 1 sec. 3-5 (periodic solutions on the boundaries), ch. 2 sec. 8;
     Magnus & Winkler (1966), ch. 2 (Hill's method); Tech Memo 104, eq. (4.1-11).
     """
+    gamma, lo, hi = _tongue_arguments(gamma, omega_min, omega_max)
+    rtol = positive("rtol", rtol)
+    return _tongue_search(system, gamma, lo, hi, beam_ratio=beam_ratio,
+                          pitch_ratio=pitch_ratio, rtol=rtol)[0]
+
+
+def _tongue_arguments(gamma, omega_min, omega_max) -> tuple[float, float, float]:
     gamma = nonnegative("gamma", gamma)
     if gamma >= 1.0:
         raise ValueError(f"gamma = {gamma!r}: must satisfy 0 <= gamma < 1")
     lo, hi = positive("omega_min", omega_min), positive("omega_max", omega_max)
     if not lo < hi:
         raise ValueError(f"omega_min = {lo!r}: must be < omega_max = {hi!r}")
-    rtol = positive("rtol", rtol)
+    return gamma, lo, hi
+
+
+def _pitch_guide(system: BeamActionSystem, C: np.ndarray | None) -> tuple[float, float, float]:
+    """(mu_p, b_p, c_p): the pitch mode alone in the steady modal frame."""
+    mu, V = np.linalg.eig(system.A0)
+    ip = _pitch_column(V)
+    Vi = np.linalg.inv(V)
+    return (float(mu[ip].real), float((Vi @ system.B @ V)[ip, ip].real),
+            0.0 if C is None else float((Vi @ C @ V)[ip, ip].real))
+
+
+def _tongue_search(system: BeamActionSystem, gamma: float, lo: float, hi: float, *,
+                   beam_ratio: float, pitch_ratio: float, rtol: float = BAND_RTOL,
+                   max_seconds: float | None = None
+                   ) -> tuple[tuple[BeamActionBand, ...], str | None]:
+    """:func:`pitch_tongue_bands` (validated arguments) with a cap: before the growth maximum
+    and the critical gamma of a tongue, and before each next tongue, the modelled time spent
+    (:class:`_Spend`) plus the modelled time of that step is compared with ``max_seconds``;
+    past it the search stops.  Returns the bands and None, or the bands found so far and the
+    reason the rest was not searched (one line, naming max_seconds and the tongues left)."""
     w1 = float(system.omega_1)
     p = _pitch_mode(system)
     wp = complex(loaded_frequencies(system)[p])
     if gamma == 0.0 or wp.imag != 0.0 or not wp.real > 0.0:
-        return ()  # no pulsation, or the steady system diverges / flutters (a steady band)
+        return (), None  # no pulsation, or the steady system diverges / flutters
     wp = wp.real
     C = modal_damping(system, beam_ratio=beam_ratio, pitch_ratio=pitch_ratio)
     A = system.A0
+    n = A.shape[0]
     # the pitch mode alone in the steady modal frame (the guide of each tongue's search)
-    mu, V = np.linalg.eig(A)
-    ip = _pitch_column(V)
-    Vi = np.linalg.inv(V)
-    mu_p = float(mu[ip].real)
-    b_p = float((Vi @ system.B @ V)[ip, ip].real)
-    c_p = 0.0 if C is None else float((Vi @ C @ V)[ip, ip].real)
+    mu_p, b_p, c_p = _pitch_guide(system, C)
+    spend = _Spend()
     out = []
     r_min = max(1, int(np.ceil(2.0 * wp * w1 / hi - 1e-12)))
+
+    def stop(r: int, step: float) -> str | None:
+        if max_seconds is None or spend.seconds + step <= max_seconds:
+            return None
+        return (f"max_seconds = {max_seconds:.3g}: the rigid-pitch tongues r >= {r} (Omega <= "
+                f"{2.0 * wp * w1 / r:.6g} rad/s, below omega_1 / 4) not searched, their "
+                f"search past its share of the budget ({spend.seconds:.3g} s modelled so far, "
+                f"{n} modes); raise thrust.omega_min, reduce truncation.N, or raise the budget")
+
     for r in range(r_min, 64):
         centre = 2.0 * wp / r  # tip of tongue r (Omega_bar)
         if centre * w1 < lo:
             break
         window = (centre * (1.0 - 0.5 / (r + 1)), centre * (1.0 + 0.5 / r))  # to the next tips
         period = "2T" if r % 2 else "T"
+        K_model = _model_harmonics(r, centre, C is not None)
+        why = stop(r, sum(_qz_seconds(n, K, period, C is not None)
+                          for K in range(4, K_model + 5, 4)) + _TONGUE_GUIDE)
+        if why is not None:
+            return tuple(sorted(out, key=lambda b: b.omega_lo)), why
 
         def edges(g, harmonics=None, centre=centre, window=window, period=period):
+            spend.seconds += _TONGUE_GUIDE
             guess = _pitch_only_edges(mu_p, g * b_p, c_p, period=period, centre=centre,
                                       window=window)
             if harmonics == (0,):
@@ -1347,7 +1442,7 @@ def pitch_tongue_bands(system: BeamActionSystem, gamma: float, *, omega_min: flo
             try:
                 return _tongue_edges(A, C, -g * system.B, period=period, centre=centre,
                                      window=window, rtol=rtol, harmonics=harmonics,
-                                     guess=guess)
+                                     guess=guess, spend=spend)
             except ValueError:  # round-off beyond TONGUE_RTOL_FLOOR (Omega_bar ~ 1e-6: the
                 if guess is None:  # beam modes 1e6 above): the pitch mode alone, whose
                     raise  # coupling to them is O((Omega / omega_beam)^2), below round-off
@@ -1358,7 +1453,13 @@ def pitch_tongue_bands(system: BeamActionSystem, gamma: float, *, omega_min: flo
             if r > 2:
                 break  # higher tongues are narrower still
             continue
+        rest = _growth_seconds(n) + (0.0 if C is None else _TONGUE_BISECTIONS * (
+            _TONGUE_GUIDE + (_qz_seconds(n, K, period, True) if K else 0.0)))
+        why = stop(r, rest)
+        if why is not None:
+            return tuple(sorted(out, key=lambda b: b.omega_lo)), why
         g_max, x_max = _growth_max(A, C, -gamma * system.B, *e)
+        spend.seconds += _growth_seconds(n)
         g_cr = 0.0
         if C is not None:  # bisection on existence (Bolotin 1964, sec. 6), K of the edges
             a, b = 0.0, gamma
@@ -1372,7 +1473,107 @@ def pitch_tongue_bands(system: BeamActionSystem, gamma: float, *, omega_min: flo
             omega_at_max=x_max * w1, kind="simple", modes=(p,), order=r,
             omega_center=centre * w1, clipped=(e_lo > e[0] * w1 or e_hi < e[1] * w1),
             critical_gamma=g_cr))
-    return tuple(sorted(out, key=lambda b: b.omega_lo))
+    return tuple(sorted(out, key=lambda b: b.omega_lo)), None
+
+
+def _model_harmonics(r: int, centre: float, damped: bool) -> int:
+    """The harmonics K at which the edges of tongue r are modelled to converge (the search
+    raises K by 4 until two agree): 4 for r <= 2, 8 for r <= 6, ..., one step more below
+    :data:`_TONGUE_FLOOR_OMEGA_BAR` with damping, up to TONGUE_MAX_HARMONICS - 4."""
+    K = 4 * math.ceil((r + 2) / 4)
+    if damped and centre < _TONGUE_FLOOR_OMEGA_BAR:
+        K += 4
+    return min(K, TONGUE_MAX_HARMONICS - 4)
+
+
+def _mathieu_log_width(theta: float, r: int) -> float:
+    """log of the relative width (in a) of Mathieu tongue r at q = theta r^2, small-q
+    leading term 2 q^r / (4^(r-1) ((r-1)!)^2) / r^2 (A&S 20.2.25 and its higher analogues)."""
+    q = theta * r * r
+    if not q > 0.0:
+        return -math.inf
+    return (math.log(2.0) + r * math.log(q) - (r - 1) * math.log(4.0)
+            - 2.0 * math.lgamma(r) - 2.0 * math.log(r))
+
+
+def tongue_search_seconds(system: BeamActionSystem, gamma: float, *, omega_min: float,
+                          omega_max: float, beam_ratio: float = 0.0,
+                          pitch_ratio: float = 0.0) -> float:
+    """Estimated time of :func:`pitch_tongue_bands` (no eigenproblem of the search is solved).
+
+    The tongues r whose tip 2 omega_p / r lies in the range are counted while they exist:
+    with pitch damping while the undamped relative width of the pitch-only Mathieu tongue
+    (q = gamma b_p r^2 / (2 mu_p) in the steady modal frame) exceeds 4 zeta_p, the damping
+    ratio of the pitch mode (damped Mathieu: the growth rate at the centre of the tongue,
+    Delta a / (4 r), must exceed the decay zeta r); without it while the width exceeds 1e-6
+    and r <= 11 (the search stops earlier where round-off leaves it empty; the highest found
+    over the calibration cases is 10); for r >= 3 while the tongue's drift below its tip,
+    ~theta^2 / 4 relative (theta = q / r^2), stays inside the search window, r theta^2 <= 2.
+    Each costs its edges (K = 4..K_r + 4, :func:`_model_harmonics`), its growth maximum and,
+    with damping, the bisection of its critical gamma at K_r; the tongue that ends the search
+    costs its edges.  The converged K is not known before the search (round-off far below
+    the beam can take it to 20): the search itself is capped (:func:`pipeline_band_search`).
+
+    Parameters
+    ----------
+    system : BeamActionSystem
+        The normalised system.
+    gamma : float
+        Pulsation amplitude (dimensionless), 0 <= gamma < 1.
+    omega_min, omega_max : float
+        The low Omega range (rad/s), 0 < omega_min < omega_max.
+    beam_ratio, pitch_ratio : float
+        Modal damping ratios (dimensionless), see :func:`modal_damping`.
+
+    Returns
+    -------
+    float
+        Seconds on one core (calibration: the comments above :data:`TONGUE_QZ_SECONDS`;
+        estimate against measured time in benchmarks/bench_cost.py).
+
+    References
+    ----------
+    M. Abramowitz, I. A. Stegun, *Handbook of Mathematical Functions*, 1964, 20.2.25;
+    Bolotin (1964), sec. 6 (damped regions).
+    """
+    gamma, lo, hi = _tongue_arguments(gamma, omega_min, omega_max)
+    C = modal_damping(system, beam_ratio=beam_ratio, pitch_ratio=pitch_ratio)
+    w1 = float(system.omega_1)
+    wp = complex(loaded_frequencies(system)[_pitch_mode(system)])
+    if gamma == 0.0 or wp.imag != 0.0 or not wp.real > 0.0:
+        return 0.0
+    wp = wp.real
+    n = system.A0.shape[0]
+    mu_p, b_p, c_p = _pitch_guide(system, C)
+    theta = gamma * abs(b_p) / (2.0 * mu_p)
+    zeta = abs(c_p) / (2.0 * math.sqrt(mu_p)) if pitch_ratio > 0.0 else 0.0
+    damped = C is not None
+    seconds = 0.0
+    r_min = max(1, int(np.ceil(2.0 * wp * w1 / hi - 1e-12)))
+    for r in range(r_min, 64):
+        centre = 2.0 * wp / r
+        if centre * w1 < lo:
+            break
+        period = "2T" if r % 2 else "T"
+        K = _model_harmonics(r, centre, damped)
+        log_w = _mathieu_log_width(theta, r)
+        exists = (log_w > math.log(4.0 * zeta) if zeta > 0.0 else
+                  log_w > math.log(_TONGUE_WIDTH_MODEL) and r <= _TONGUE_R_MODEL)
+        # a tongue r >= 3 drifts below its tip by ~theta^2 / 4 (Mathieu: a_r ~ r^2 + q^2 /
+        # (2 (r^2 - 1))): out of the search window (0.5 / (r + 1) below the tip) past 2/theta^2
+        exists = exists and (r <= 2 or r * theta**2 <= 2.0)
+        if not exists:  # its edges (K = 4, 8) end the search, or (r <= 2) go on
+            seconds += _TONGUE_GUIDE + sum(_qz_seconds(n, k, period, damped) for k in (4, 8))
+            if r > 2:
+                break
+            continue
+        Ks = (range(4, TONGUE_MAX_HARMONICS + 1, 4)
+              if not damped and centre < _TONGUE_FLOOR_OMEGA_BAR else range(4, K + 5, 4))
+        seconds += _TONGUE_GUIDE + sum(_qz_seconds(n, k, period, damped) for k in Ks)
+        seconds += _growth_seconds(n)
+        if damped:
+            seconds += _TONGUE_BISECTIONS * (_TONGUE_GUIDE + _qz_seconds(n, K, period, True))
+    return float(seconds)
 
 
 def _band_range(model: BoosterModel, omega_1: float) -> tuple[float, float]:
@@ -1381,17 +1582,39 @@ def _band_range(model: BoosterModel, omega_1: float) -> tuple[float, float]:
             float(np.max(model.Omega)))
 
 
-def pipeline_bands(model: BoosterModel) -> tuple[BeamActionBand, ...]:
+@dataclass(frozen=True)
+class BandSearch:
+    """The pipeline's band search (:func:`pipeline_band_search`).
+
+    Attributes
+    ----------
+    bands : tuple of BeamActionBand
+        Sorted by omega_lo.
+    skipped : tuple of str
+        Why part of the range was not searched (the pitch-tongue search past its share of the
+        budget, ``max_seconds``), one line each; empty when all of it was.
+    """
+
+    bands: tuple = ()
+    skipped: tuple = ()
+
+
+def pipeline_band_search(model: BoosterModel, *,
+                         max_seconds: float | None = None) -> BandSearch:
     """The bands :func:`beam_action_analysis` searches, on their own (a separate task).
 
     Parameters
     ----------
     model : BoosterModel
         The derived model: Omega range (rad/s), gamma, damping ratios, beam-action system.
+    max_seconds : float, optional
+        Cap (s, > 0) of the rigid-pitch tongue search below omega_1 / 4, in its own modelled
+        time (:func:`tongue_search_seconds`; deterministic): the tongues past it are not
+        searched and named in ``skipped``.  None: no cap.
 
     Returns
     -------
-    tuple of BeamActionBand
+    BandSearch
         :func:`beam_action_bands` over [max(Omega[0], omega_1 / 4), Omega[-1]]
         (:data:`BAND_OMEGA_BAR_MIN`) and, below omega_1 / 4, the rigid-pitch tongues of the
         coupled system (:func:`pitch_tongue_bands`), with the model's damping ratios; sorted
@@ -1401,21 +1624,46 @@ def pipeline_bands(model: BoosterModel) -> tuple[BeamActionBand, ...]:
     ----------
     Bolotin (1964), ch. 1-2, sec. 6; Tech Memo 104, eqs. (4.1-10), (4.1-11).
     """
+    if max_seconds is not None:
+        max_seconds = positive("max_seconds", max_seconds)
     system = beam_system(model)
     lo, hi = _band_range(model, float(system.omega_1))
     gamma = float(model.gamma)
     damping = {"beam_ratio": float(model.beam_damping_ratio),
                "pitch_ratio": float(model.pitch_damping_ratio)}
     found: tuple[BeamActionBand, ...] = ()
+    skipped: tuple[str, ...] = ()
     if hi > lo:
         found = beam_action_bands(system, gamma, omega_min=lo, omega_max=hi, **damping)
     low = float(np.min(model.Omega))
     if min(lo, hi) > low:  # below omega_1 / 4: the pitch tongues by harmonic balance
         seen = {(b.kind, b.modes, b.order) for b in found}
-        found += tuple(b for b in pitch_tongue_bands(system, gamma, omega_min=low,
-                                                     omega_max=min(lo, hi), **damping)
+        tongues, why = _tongue_search(system, *_tongue_arguments(gamma, low, min(lo, hi)),
+                                      max_seconds=max_seconds, **damping)
+        found += tuple(b for b in tongues
                        if (b.kind, b.modes, b.order) not in seen)  # a tongue across omega_1/4
-    return tuple(sorted(found, key=lambda b: b.omega_lo))
+        skipped = () if why is None else (why,)
+    return BandSearch(bands=tuple(sorted(found, key=lambda b: b.omega_lo)), skipped=skipped)
+
+
+def pipeline_bands(model: BoosterModel) -> tuple[BeamActionBand, ...]:
+    """:func:`pipeline_band_search` without a cap: its bands.
+
+    Parameters
+    ----------
+    model : BoosterModel
+        The derived model.
+
+    Returns
+    -------
+    tuple of BeamActionBand
+        Sorted by omega_lo.
+
+    References
+    ----------
+    Bolotin (1964), ch. 1-2, sec. 6; Tech Memo 104, eqs. (4.1-10), (4.1-11).
+    """
+    return pipeline_band_search(model).bands
 
 
 def hill_check(model: BoosterModel, *, n_hill: int = 3) -> HillResult:
@@ -1451,7 +1699,8 @@ def _hill_points(n_grid: int, n_hill: int) -> np.ndarray:
 
 
 def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3,
-                         bands: bool | tuple | Callable[[], tuple] = True,
+                         bands: bool | tuple | BandSearch | Callable[[], tuple | BandSearch]
+                         = True,
                          hill: HillResult | Callable[[], HillResult] | None = None,
                          ) -> BeamActionResult:
     """alpha_r along the Omega grid and the beam-action verdict (pipeline entry point).
@@ -1466,11 +1715,12 @@ def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3,
         also solved and compared with the monodromy exponents, 1..len(Omega) (clipped to the
         grid size); Hill costs O((2 (N + 1)(2 S + 1))^3) per point, about 0.1-0.5 s for
         N = S = 10.
-    bands : bool, tuple of BeamActionBand or callable
+    bands : bool, tuple of BeamActionBand, BandSearch or callable
         Search the instability bands (:func:`pipeline_bands`); False: ``bands`` is empty and
-        the verdict is "not searched"; a tuple, or a function of no argument returning it
-        (called after the exponents are computed): the bands :func:`pipeline_bands` returns
-        for this model, searched elsewhere (e.g. in a worker process).
+        the verdict is "not searched"; a tuple or a :class:`BandSearch`, or a function of no
+        argument returning one (called after the exponents are computed): the bands
+        :func:`pipeline_band_search` returns for this model, searched elsewhere (e.g. in a
+        worker process, with a cap: its ``skipped`` are the result's).
     hill : HillResult or callable, optional
         :func:`hill_check` of this model with this ``n_hill``, or a function of no argument
         returning it (called after the exponents are computed: the check computed
@@ -1517,10 +1767,16 @@ def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3,
     zb, zp = float(model.beam_damping_ratio), float(model.pitch_damping_ratio)
     lo, hi = _band_range(model, float(system.omega_1))
     if callable(bands):  # searched elsewhere, meanwhile
-        bands = tuple(bands())
+        bands = bands()
+    skipped: tuple = ()
+    if isinstance(bands, BandSearch):
+        bands, skipped = tuple(bands.bands), tuple(bands.skipped)
     searched = isinstance(bands, tuple) or bool(bands)
-    found = bands if isinstance(bands, tuple) else (pipeline_bands(model) if bands else ())
+    found = tuple(bands) if isinstance(bands, tuple) else (
+        pipeline_bands(model) if bands else ())
     verdict = ("unstable" if found else "stable") if searched else "not searched"
+    if skipped and not found:  # part of the range not searched: no verdict of stability
+        verdict = "unknown: " + "; ".join(skipped)
     peak, at_peak = float(growth[i]), at_max
     for band in found:  # the bands' exact maxima: a grid steps over narrow bands
         if band.growth_rate_max > peak:
@@ -1531,7 +1787,7 @@ def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3,
         Omega_at_max=at_peak, hill_monodromy_difference=diff,
         verdict=verdict, gamma=gamma, K=system.K,
         N=system.N, S=S, R=R, p=system.p, bands=found, beam_damping_ratio=zb,
-        pitch_damping_ratio=zp, band_range=(lo, hi))
+        pitch_damping_ratio=zp, band_range=(lo, hi), skipped=skipped)
 
 
 @dataclass(frozen=True)

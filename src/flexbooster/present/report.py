@@ -419,7 +419,7 @@ def _beam_action(results: Results) -> str:
          float(np.real(ba.frequencies[r])), "omega_1")
         for r in range(np.size(ba.frequencies))
     ]
-    out = _verdict(ba.verdict, not ba.bands) + _qvu(rows)
+    out = _verdict(ba.verdict, not ba.bands and not getattr(ba, "skipped", ())) + _qvu(rows)
     if ba.bands:
         out += "<p>Instability bands of Omega (edges on |rho| = 1):</p>" + _table(
             ("kind", "modes", "j", "from (rad/s)", "to (rad/s)", "max growth (1/s)",

@@ -113,7 +113,10 @@ def with_us_units(results: Results, rows: list[Row]) -> list[Row]:
 
     out: list[Row] = []
     for quantity, value, unit in rows:
-        us = to_us(value, unit) if isinstance(value, float) else None
+        try:  # a value whose inch-pound figure is beyond the float range: SI alone
+            us = to_us(value, unit) if isinstance(value, float) else None
+        except ValueError:
+            us = None
         if us is not None:
             value = f"{value:.6g} ({us[0]:.6g} {us[1]})"
         out.append((quantity, value, unit))

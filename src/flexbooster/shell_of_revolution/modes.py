@@ -523,8 +523,8 @@ def _modes_on_mesh(vehicle: Vehicle, mesh: Mesh, *, k_min: int, k_max: int,
     s_pts = None
     for kk in sorted(results):
         h, vals, vecs = results[kk]
-        if band:
-            keep = vals <= w2_bound
+        if band and w2_bound is not None:  # None: no harmonic has a positive omega^2 (the
+            keep = vals <= w2_bound  # prestress buckles them all: the check below says so)
             vals, vecs = vals[keep], vecs[:, keep]
         if np.any(vals <= 0):
             raise ValueError(f"prestress_F0 = {F0!r}: k = {kk} has a non-positive omega^2 "

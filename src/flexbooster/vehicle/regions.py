@@ -459,8 +459,9 @@ class VehicleRegions:
         Gimbal gain K of the k = 1 harmonic (dimensionless; unused without k = 1).
     skipped : tuple of str
         Harmonics not searched because their estimated search time would pass the budget
-        (``max_seconds`` of :func:`vehicle_regions`), one line each; their regions are
-        unknown.
+        (``max_seconds`` of :func:`vehicle_regions`) or their resonance candidates the
+        toolkit's limit (the line starts with ``thrust.omega_min``), one line each; their
+        regions are unknown.
     estimated_seconds : float
         The cost model's estimate of the work done (s, one core): the harmonics built and
         searched (:data:`HARMONIC_BUILD_SECONDS`, :func:`harmonic_search_seconds`; the
@@ -651,7 +652,10 @@ def _harmonic_regions(h: HarmonicSystem, gamma: float, lo: float, hi: float, opt
     estimated so far): a harmonic whose search (:func:`harmonic_search_seconds` of
     :func:`flexbooster.floquet.search_work`) would take the estimate past max_seconds is not
     searched: no rows, and the reason (naming max_seconds and the drivers) as the third item
-    (else None).  The fourth item is the estimate of what was searched (s; 0 without budget).
+    (else None).  A search past the toolkit's candidate limit
+    (:class:`flexbooster.floquet.TooManyCandidatesError`) is not searched either, the reason
+    naming thrust.omega_min.  The fourth item is the estimate of what was searched (s; 0
+    without budget).
     """
     M, C, A, B = h.matrices(gamma)
     Cf = C if h.damping_ratio > 0.0 else None
@@ -670,12 +674,18 @@ def _harmonic_regions(h: HarmonicSystem, gamma: float, lo: float, hi: float, opt
                                            "the damping")
                 + f"; {spent:.3g} s before it): reduce vehicle.n_modes or the Omega range, "
                 "raise vehicle.damping_ratio, or raise the budget"), 0.0
-    found = floquet.instability_regions(M, Cf, A, B, lo, hi, **opts)
-    crit = {}
-    if Cf is not None and any(r.kind != "steady" for r in found):  # Bolotin sec. 6
-        crit = {(c.kind, c.modes, c.order): c.gamma_cr for c in floquet.critical_amplitude(
-            M, Cf, A, h.excitation, gamma_max=gamma, omega_min=lo, omega_max=hi,
-            regions=found, **opts)}
+    try:
+        found = floquet.instability_regions(M, Cf, A, B, lo, hi, **opts)
+        crit = {}
+        if Cf is not None and any(r.kind != "steady" for r in found):  # Bolotin sec. 6
+            crit = {(c.kind, c.modes, c.order): c.gamma_cr for c in floquet.critical_amplitude(
+                M, Cf, A, h.excitation, gamma_max=gamma, omega_min=lo, omega_max=hi,
+                regions=found, **opts)}
+    except floquet.TooManyCandidatesError as exc:  # a resource limit (issue 18): named
+        return [], cert, (f"thrust.omega_min = {lo:.6g}: harmonic k = {h.k} not searched, "
+                          f"{str(exc).split(': ', 1)[-1]} ({A.shape[0]} modes up to "
+                          f"{float(np.max(h.omega_loaded)):.6g} rad/s); raise thrust.omega_min "
+                          "or reduce vehicle.n_modes"), est
     rows = []
     for r in found:
         key = (r.kind, r.modes, r.order)
