@@ -661,20 +661,20 @@ def _harmonic_regions(h: HarmonicSystem, gamma: float, lo: float, hi: float, opt
     Cf = C if h.damping_ratio > 0.0 else None
     cert = floquet.stability_certificate(M, Cf, A, B)  # none without damping
     est = 0.0
-    if budget is not None and not cert.certified and gamma > 0.0:
-        max_s, spent = budget
-        work = floquet.search_work(M, Cf, A, B, lo, hi, **opts)
-        est = harmonic_search_seconds(work)
-        if spent + est > max_s:
-            return [], cert, (
-                f"max_seconds = {max_s:g}: harmonic k = {h.k} not searched, its region search "
-                f"is estimated at {est:.3g} s ({A.shape[0]} modes, {work.n_candidates} "
-                f"candidates, Omega {lo:.6g}..{hi:.6g} rad/s, damping ratio "
-                f"{h.damping_ratio:g}" + ("" if Cf is None else ", not certified stable by "
-                                           "the damping")
-                + f"; {spent:.3g} s before it): reduce vehicle.n_modes or the Omega range, "
-                "raise vehicle.damping_ratio, or raise the budget"), 0.0
-    try:
+    try:  # the candidates are enumerated by search_work and by the search itself
+        if budget is not None and not cert.certified and gamma > 0.0:
+            max_s, spent = budget
+            work = floquet.search_work(M, Cf, A, B, lo, hi, **opts)
+            est = harmonic_search_seconds(work)
+            if spent + est > max_s:
+                return [], cert, (
+                    f"max_seconds = {max_s:g}: harmonic k = {h.k} not searched, its region "
+                    f"search is estimated at {est:.3g} s ({A.shape[0]} modes, "
+                    f"{work.n_candidates} candidates, Omega {lo:.6g}..{hi:.6g} rad/s, damping "
+                    f"ratio {h.damping_ratio:g}" + ("" if Cf is None else ", not certified "
+                                                    "stable by the damping")
+                    + f"; {spent:.3g} s before it): reduce vehicle.n_modes or the Omega "
+                    "range, raise vehicle.damping_ratio, or raise the budget"), 0.0
         found = floquet.instability_regions(M, Cf, A, B, lo, hi, **opts)
         crit = {}
         if Cf is not None and any(r.kind != "steady" for r in found):  # Bolotin sec. 6
@@ -682,10 +682,7 @@ def _harmonic_regions(h: HarmonicSystem, gamma: float, lo: float, hi: float, opt
                 M, Cf, A, h.excitation, gamma_max=gamma, omega_min=lo, omega_max=hi,
                 regions=found, **opts)}
     except floquet.TooManyCandidatesError as exc:  # a resource limit (issue 18): named
-        return [], cert, (f"thrust.omega_min = {lo:.6g}: harmonic k = {h.k} not searched, "
-                          f"{str(exc).split(': ', 1)[-1]} ({A.shape[0]} modes up to "
-                          f"{float(np.max(h.omega_loaded)):.6g} rad/s); raise thrust.omega_min "
-                          "or reduce vehicle.n_modes"), est
+        return [], cert, _too_many_candidates(h, lo, exc), est
     rows = []
     for r in found:
         key = (r.kind, r.modes, r.order)
@@ -698,6 +695,15 @@ def _harmonic_regions(h: HarmonicSystem, gamma: float, lo: float, hi: float, opt
             omega_at_max=r.omega_at_max, omega_center=r.omega_center,
             critical_gamma=float(crit.get(key, 0.0)), clipped=r.clipped))
     return rows, cert, None, est
+
+
+def _too_many_candidates(h: HarmonicSystem, lo: float, exc: Exception,
+                         what: str = "not searched") -> str:
+    """The one line naming a harmonic past the toolkit's candidate limit (issue 18)."""
+    return (f"thrust.omega_min = {lo:.6g}: harmonic k = {h.k} {what}, "
+            f"{str(exc).split(': ', 1)[-1]} ({h.omega_loaded.size} modes up to "
+            f"{float(np.max(h.omega_loaded)):.6g} rad/s); raise thrust.omega_min or reduce "
+            "vehicle.n_modes")
 
 
 def _instability_region(r: VehicleRegion) -> floquet.InstabilityRegion:
@@ -767,7 +773,11 @@ def region_curves(
                 continue
             top = tuple(_instability_region(r) for r in rows)
         if max_seconds is not None:
-            work = floquet.search_work(M, Cf, A, gmax * h.excitation, lo, hi, **opts)
+            try:
+                work = floquet.search_work(M, Cf, A, gmax * h.excitation, lo, hi, **opts)
+            except floquet.TooManyCandidatesError as exc:
+                skipped.append(_too_many_candidates(h, lo, exc, "not traced for the chart"))
+                continue
             if work.steady or work.certified:
                 continue  # no curve: a steady region or none at gamma_max
             est = harmonic_search_seconds(work, levels=n_gamma - (1 if top else 0))
