@@ -1453,3 +1453,36 @@ def test_fuzz_reproducer_vehicle_regions_past_the_candidate_limit():
         assert "\n" not in w.message
     text, stable = vehicle_region_verdict(types.SimpleNamespace(vehicle_regions=found))
     assert not stable and text.startswith("unknown")
+
+
+def test_fuzz_reproducer_vehicle_regions_of_a_flat_plate():
+    """Found by the fuzz (run 6, the merged vehicle stages): a [vehicle] whose first segment
+    is a flat annular plate (a cone of length 0) ended the run with the shell model's
+    "a flat annular plate cannot carry the axial force as a membrane" (exit 1) in the k = 1
+    basis of the regions.  The modes survey goes on unloaded (vehicle-prestress warning);
+    the regions, which need that prestress, are now skipped with a one-line warning naming
+    vehicle.segments, and the rest of the analysis stands."""
+    case = flexbooster.load_case({
+        "name": "fuzz", "max_seconds": 20.0,
+        "booster": {"cylinder1": {"radius": 1.0, "half_length": 1.0125},
+                    "cylinder2": {"radius": 23.89, "half_length": 0.822}, "thickness": 0.0794,
+                    "E": 6.38e11, "nu": 0.0167, "rho": 126.0},
+        "thrust": {"gamma": 0.126, "K": 1.97, "omega_min": 1.0, "omega_max": 957.0,
+                   "n_omega": 12, "T0": 1.539e8},
+        "truncation": {"M1": 4, "N1": 4, "M2": 3, "N2": 3, "N": 3, "S": 1, "R": 2},
+        "vehicle": {"k_max": 10, "n_modes": 5, "damping_ratio": 0.0, "theory": "donnell",
+                    "aft_end": "free", "fwd_end": "hinged", "segments": [
+                        {"kind": "cone", "radius_aft": 1.0, "radius_fwd": 3.0, "length": 0.0,
+                         "thickness": 0.0794},
+                        {"kind": "cone", "radius_aft": 3.0, "radius_fwd": 3.117,
+                         "length": 2.32, "thickness": 0.238},
+                        {"kind": "cone", "radius_aft": 1.0, "radius_fwd": 1.139,
+                         "length": 10.88, "thickness": 0.0794, "junction": "memo-bulkhead"}]}})
+    res = analyze(case, figures=False)
+    assert res.vehicle_regions is None and res.vehicle is not None
+    skipped = [w for w in res.warnings if w.code == "vehicle-regions-skipped"]
+    assert len(skipped) == 1 and skipped[0].field == "vehicle.segments"
+    assert "flat annular plate" in skipped[0].message and "\n" not in skipped[0].message
+    assert "vehicle-prestress" in {w.code for w in res.warnings}
+    with pytest.raises(CaseError, match="vehicle.segments"):
+        analysis.analyze_vehicle_regions(case, boundaries=False)

@@ -46,7 +46,7 @@ from .memo.shell import natural_frequencies
 from .memo.stability import ShellModes, StabilityTable, TooManyRootsError, unstable_frequencies
 from .model import vehicle_from_case
 from .results import SCHEMA_VERSION, UNITS, MemoRootsInRegions, Results
-from .shell_of_revolution.survey import VehicleSurvey, vehicle_survey
+from .shell_of_revolution.survey import VehicleSurvey, has_flat_plate, vehicle_survey
 from .vehicle import VehicleRegions, region_curves, vehicle_regions
 
 __all__ = [
@@ -545,7 +545,8 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
     ------
     CaseError
         ``thrust.F0`` when the steady thrust buckles a harmonic (the load factor is named);
-        ``vehicle.k_max`` when fewer than one harmonic remains.
+        ``vehicle.k_max`` when fewer than one harmonic remains; ``vehicle.segments`` when a
+        segment is a flat plate (no membrane prestress).
 
     References
     ----------
@@ -563,6 +564,11 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
     t = case.thrust
     budget = case.max_seconds if max_seconds is None else positive("max_seconds", max_seconds)
     vehicle = vehicle_from_case(case)
+    if has_flat_plate(vehicle):  # the modes survey goes on unloaded; the regions cannot
+        raise CaseError("vehicle.segments", "a cone of length 0",
+                        "a flat annular plate cannot carry the thrust as a membrane, so the "
+                        "prestress the parametric regions need is not defined: no regions "
+                        "(give the plate an axial length: a cone)")
     # at most the DOFs of a harmonic's mesh (a vehicle.n_modes up to 500 is valid input)
     n_modes = cost.region_modes(case, vehicle, k_max=k_max)[0]
     settings = dict(F0=case.F0, omega_min=t.omega_min, omega_max=t.omega_max, k_min=k_min,
