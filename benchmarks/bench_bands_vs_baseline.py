@@ -14,9 +14,14 @@ process), in this tree and in commit ``BASELINE`` (checked out side by side with
    baseline's tips come from brentq over gamma of full region searches (biased upward by the
    chart's rtol 1e-4), the new ones from ``floquet.regions._tips``.
 
+``--baseline REV`` compares with another commit (branch damped1: main 308388d, before the fix
+of the damped step counts; the damped chart is the work the fix changes, the band search is
+undamped).
+
 Usage (repository root)::
 
-    OPENBLAS_NUM_THREADS=1 python benchmarks/bench_bands_vs_baseline.py [--repeat 2]
+    OPENBLAS_NUM_THREADS=1 python benchmarks/bench_bands_vs_baseline.py [--repeat 2] \
+        [--baseline REV]
 """
 
 from __future__ import annotations
@@ -79,18 +84,19 @@ def _run(src: Path, repeat: int) -> dict:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=1)
+    parser.add_argument("--baseline", default=BASELINE, help="commit to compare with")
     args = parser.parse_args()
     new = _run(ROOT / "src", args.repeat)
     with tempfile.TemporaryDirectory() as tmp:
         base = Path(tmp) / "baseline"
         subprocess.run(["git", "-C", str(ROOT), "worktree", "add", "-q", "--detach", str(base),
-                        BASELINE], check=True)
+                        args.baseline], check=True)
         try:
             old = _run(base / "src", args.repeat)
         finally:
             subprocess.run(["git", "-C", str(ROOT), "worktree", "remove", "--force", str(base)],
                            check=True)
-    print(f"default case, best of {args.repeat}, baseline {BASELINE}:")
+    print(f"default case, best of {args.repeat}, baseline {args.baseline}:")
     print(f"1. band search: new {new['bands']} bands, {new['band_wall']:.3f} s wall "
           f"({new['band_cpu']:.3f} s CPU); baseline {old['bands']} bands, "
           f"{old['band_wall']:.3f} s wall ({old['band_cpu']:.3f} s CPU)")

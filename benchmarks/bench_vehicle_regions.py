@@ -31,12 +31,17 @@ two cylinders, memo bulkhead, shear-diaphragm ends, inertia relief), F0 = 2.8 MN
      regions of both must be equal (kind, modes, order; edges to 1e-6 relative).  ``--run``
      adds ``flexbooster run -j 1`` of the default case and of the README example (wall, CPU
      of the child).
+  6. ``--damped-counts`` (branch damped1): the same stage on the same three cases, k = 1..20,
+     and the ``--hard`` case, against the same run's baseline: the damped step counts of
+     main before the fix of ``floquet.multipliers._rates`` (:func:`_previous_rates`, a copy
+     of main 308388d's function patched in); the time and how far the regions moved (edges
+     and growth rates, relative).
 
 Usage::
 
     OPENBLAS_NUM_THREADS=1 PYTHONPATH=src python benchmarks/bench_vehicle_regions.py \
         [--n-modes 20] [--k-max 20] [--repeat 3] [--sample 16] [--hard] [--cost] \
-        [--leftovers] [--run]
+        [--leftovers] [--run] [--damped-counts]
 """
 
 from __future__ import annotations
@@ -137,6 +142,8 @@ def main() -> None:
     ap.add_argument("--cost-modes", type=int, nargs="+", default=[4, 8, 12])
     ap.add_argument("--leftovers", action="store_true", help="the pipeline stage, vk2")
     ap.add_argument("--run", action="store_true", help="flexbooster run of two cases")
+    ap.add_argument("--damped-counts", action="store_true",
+                    help="the damped step counts against main's (branch damped1)")
     args = ap.parse_args()
     print(f"load average {Path('/proc/loadavg').read_text().split()[:3]} at start")
     veh = vehicle_from_case(flexbooster.default_case())
@@ -187,6 +194,8 @@ def main() -> None:
         leftovers(args.repeat)
     if args.run:
         cli_runs()
+    if args.damped_counts:
+        damped_counts(args.repeat)
 
 
 def _case(text: str):
@@ -294,6 +303,77 @@ def cli_runs() -> None:
             after = resource.getrusage(resource.RUSAGE_CHILDREN)
             cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
             print(f"flexbooster run -j 1, {name}: {wall:.1f} s wall, {cpu:.1f} s CPU")
+
+
+def _previous_rates(system):
+    """``floquet.multipliers._rates`` of main 308388d (before branch damped1): the damped
+    frame's |G_jk| (1/time, columns of W of unit norm in (q, q')), which ``step_counts`` then
+    divides by max(w_j, Omega / 2): a dimensionless "rate", ~(2 omega)^(1/4) fewer steps."""
+    if not system.damped and system.Bt is not None:
+        return np.abs(np.sqrt(system.mu)), np.abs(system.Bt)
+    n = system.n
+    L0 = np.block([[np.zeros((n, n)), np.eye(n)], [-system.K0, -system.Kc]])
+    lam, W = np.linalg.eig(L0)
+    Nmat = np.block([[np.zeros((n, n)), np.zeros((n, n))], [-system.Kb, np.zeros((n, n))]])
+    if np.linalg.cond(W) < 1e8:
+        G = np.abs(np.linalg.solve(W, Nmat @ W))
+    else:
+        G = np.full((2 * n, 2 * n), np.max(np.abs(Nmat)))
+    return np.abs(lam), G
+
+
+def _with_previous_counts(fn):
+    """fn() with main's damped step counts (:func:`_previous_rates` patched in)."""
+    from flexbooster.floquet import multipliers
+
+    real = multipliers._rates
+    multipliers._rates = _previous_rates
+    try:
+        return fn()
+    finally:
+        multipliers._rates = real
+
+
+def _moved(now, old) -> str:
+    """How far the regions moved: same keys, largest relative change of edges and growth."""
+    key = [(r.k, r.kind, r.order, tuple(m.index for m in r.modes)) for r in now.regions]
+    if key != [(r.k, r.kind, r.order, tuple(m.index for m in r.modes)) for r in old.regions]:
+        return f"regions differ: {len(now.regions)} now, {len(old.regions)} before"
+    if not now.regions:
+        return "same (no region)"
+    edge = max(max(abs(x.omega_lo / y.omega_lo - 1), abs(x.omega_hi / y.omega_hi - 1))
+               for x, y in zip(now.regions, old.regions, strict=True))
+    grow = max(abs(x.growth_rate_max / y.growth_rate_max - 1)
+               for x, y in zip(now.regions, old.regions, strict=True))
+    gcr = max(abs(x.critical_gamma - y.critical_gamma) / max(y.critical_gamma, 1e-300)
+              for x, y in zip(now.regions, old.regions, strict=True))
+    return (f"same {len(key)} regions; edges moved <= {edge:.1e}, growth rates <= {grow:.1e}, "
+            f"critical gamma <= {gcr:.1e} relative")
+
+
+def damped_counts(repeat: int) -> None:
+    """Item 6 of the docstring: the stage and the hard case, now and with main's counts."""
+    cases = {"default case": default_case_text(),
+             "README [vehicle] example": default_case_text() + README_VEHICLE,
+             "default vehicle, free ends": default_case_text() + FREE_ENDS}
+    for name, text in cases.items():  # three cases
+        case = _case("max_seconds = 1e9\n" + text)  # no budget: the work itself
+        now, t_now, c_now = best_of(
+            lambda case=case: analyze_vehicle_regions(case, boundaries=True), repeat)
+        old, t_old, c_old = best_of(lambda case=case: _with_previous_counts(
+            lambda: analyze_vehicle_regions(case, boundaries=True)), repeat)
+        print(f"{name}, k = 1..20, stage: {t_now:.2f} s wall / {c_now:.2f} s CPU; main's "
+              f"damped counts {t_old:.2f} s / {c_old:.2f} s CPU; CPU ratio now / main "
+              f"{c_now / c_old:.2f}; {_moved(now, old)}", flush=True)
+    veh = vehicle_from_case(flexbooster.default_case())
+    hk = dict(F0=F0, gamma=0.5, omega_min=10.0, omega_max=300.0, k_min=3, k_max=3,
+              n_modes=10, damping_ratio=0.001, axial=False)
+    now, t_now, c_now = best_of(lambda: vehicle_regions(veh, **hk), repeat)
+    old, t_old, c_old = best_of(lambda: _with_previous_counts(
+        lambda: vehicle_regions(veh, **hk)), repeat)
+    print(f"hard case (k = 3, 10 modes, gamma = 0.5, zeta = 0.001): {t_now:.2f} s wall / "
+          f"{c_now:.2f} s CPU; main's damped counts {t_old:.2f} s / {c_old:.2f} s CPU; CPU "
+          f"ratio now / main {c_now / c_old:.2f}; {_moved(now, old)}", flush=True)
 
 
 if __name__ == "__main__":

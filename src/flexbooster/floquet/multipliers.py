@@ -200,18 +200,43 @@ def _omega(Omega) -> np.ndarray:
 
 
 def _rates(system: LinearPeriodicSystem) -> tuple[np.ndarray, np.ndarray]:
-    """Frequencies w_j >= 0 of the steady frame and coupling magnitudes |G_jk| (cost model)."""
+    """Steady frequencies and coupling magnitudes of the cost model of :func:`step_counts`.
+
+    Without damping (modal frame available): w_j = |omega_j| and b_jk = |B~_jk|,
+    B~ = V^-1 M^-1 B V.  With damping (or an ill-conditioned V) they come from the damped
+    first-order frame z = W y, y' = (Lambda + cos(Omega t) G) y with G = W^-1 N W,
+    N = [[0, 0], [-M^-1 B, 0]]: w_j = |lambda_j| and b_jk = 2 |lambda_j| |G_jk|, the columns of
+    W scaled to a unit q-part like those of V.  Without damping that frame has
+    lambda_j = +-i omega_j and G_jk = -B~_jk / (2 lambda_j), so b = |B~| there: damped and
+    undamped systems get the same count per unit time as C -> 0 (derivation with units:
+    docs/theory/floquet.md sec. 2, "Cost model and cap").  A defective steady operator
+    (cond W > 1e8) gets b_jk = max |M^-1 B|.
+
+    Parameters
+    ----------
+    system : LinearPeriodicSystem
+        From :func:`periodic_system`.
+
+    Returns
+    -------
+    w : numpy.ndarray
+        Shape (m,), steady frequencies (rad per time unit of the matrices), m = n undamped,
+        2n damped.
+    b : numpy.ndarray
+        Shape (m, m), coupling magnitudes (time unit^-2), row j the mode driven.
+    """
     if not system.damped and system.Bt is not None:
         return np.abs(np.sqrt(system.mu)), np.abs(system.Bt)
     n = system.n
     L0 = np.block([[np.zeros((n, n)), np.eye(n)], [-system.K0, -system.Kc]])
     lam, W = np.linalg.eig(L0)
+    w = np.abs(lam)
+    if np.linalg.cond(W) >= 1e8:  # defective steady operator: the largest entry of M^-1 B
+        return w, np.full((2 * n, 2 * n), np.max(np.abs(system.Kb)))
+    W = W / np.linalg.norm(W[:n], axis=0)  # unit q-part of each column, like V's columns
     Nmat = np.block([[np.zeros((n, n)), np.zeros((n, n))], [-system.Kb, np.zeros((n, n))]])
-    if np.linalg.cond(W) < 1e8:
-        G = np.abs(np.linalg.solve(W, Nmat @ W))
-    else:
-        G = np.full((2 * n, 2 * n), np.max(np.abs(Nmat)))
-    return np.abs(lam), G
+    G = np.abs(np.linalg.solve(W, Nmat @ W))  # |G_jk| (1/time)
+    return w, 2.0 * w[:, None] * G  # b_jk = 2 |lambda_j| |G_jk| -> |B~_jk| as C -> 0
 
 
 def step_counts(system: LinearPeriodicSystem, Omega, *, step_phase: float = 0.06,
@@ -219,9 +244,11 @@ def step_counts(system: LinearPeriodicSystem, Omega, *, step_phase: float = 0.06
     """Steps per integrated interval (half period if C = 0, else one period): the cost model.
 
     In the steady frame the term coupling modes j, k oscillates at nu_jk = w_j + w_k + Omega
-    with rate g_jk = |G_jk| / max(w_j, Omega / 2); a fourth-order step errs by about
-    g (h nu)^4 / nu, so h max_jk nu_jk^(3/4) g_jk^(1/4) <= step_phase.  The count grows like
-    1 / Omega as Omega -> 0 (the period grows): it is capped.
+    with rate g_jk = b_jk / max(w_j, Omega / 2) (1/time; w, b from the modal frame without
+    damping, from the damped first-order frame with it, the same as C -> 0: see
+    :func:`_rates`); a fourth-order step errs by about g (h nu)^4 / nu, so
+    h max_jk nu_jk^(3/4) g_jk^(1/4) <= step_phase (dimensionless, independent of the time
+    unit).  The count grows like 1 / Omega as Omega -> 0 (the period grows): it is capped.
 
     Parameters
     ----------
@@ -230,7 +257,8 @@ def step_counts(system: LinearPeriodicSystem, Omega, *, step_phase: float = 0.06
     Omega : array_like
         Pulsation frequencies (rad per time unit of the matrices), > 0.
     step_phase : float
-        Tolerance parameter (rad), > 0; error on the exponents ~ step_phase^4 (1e-9 at 0.06).
+        Tolerance parameter (rad), > 0; error on the exponents ~ step_phase^4 (about 1e-9 of
+        the largest steady frequency at 0.06, damped or not).
     max_steps : int
         Cap; exceeding it raises.
 
@@ -252,10 +280,10 @@ def step_counts(system: LinearPeriodicSystem, Omega, *, step_phase: float = 0.06
     om = _omega(Omega)
     if not (np.isfinite(step_phase) and step_phase > 0.0):
         raise ValueError(f"step_phase = {step_phase!r}: must be finite and > 0")
-    w, G = _rates(system)
+    w, b = _rates(system)
     interval = (2.0 if system.damped else 1.0) * np.pi / om  # full or half period
     nu = w[:, None] + w[None, :] + om[:, None, None]
-    g = G[None] / np.maximum(w[None, :, None], 0.5 * om[:, None, None])
+    g = b[None] / np.maximum(w[None, :, None], 0.5 * om[:, None, None])
     rate = np.max(nu**0.75 * g**0.25, axis=(1, 2))
     steps = np.maximum(8.0, np.ceil(interval * rate / step_phase))
     steps = np.ceil(2.0 ** (np.ceil(2.0 * np.log2(steps)) / 2.0))  # 2^(k/2): few batches
