@@ -1486,3 +1486,34 @@ def test_fuzz_reproducer_vehicle_regions_of_a_flat_plate():
     assert "vehicle-prestress" in {w.code for w in res.warnings}
     with pytest.raises(CaseError, match="vehicle.segments"):
         analysis.analyze_vehicle_regions(case, boundaries=False)
+
+
+def test_fuzz_reproducer_vehicle_regions_past_the_step_limit():
+    """Found by the fuzz (run 8, after the damped step counts were fixed: a damped monodromy
+    now takes about 5 times the steps it took): harmonic k = 19 of a 37-mode vehicle (up to
+    21,000 rad/s) at Omega = 1.15 rad/s needs 370,728 steps per period, past the toolkit's
+    max_steps = 200,000: its ValueError ended the run (exit 1).  Now
+    floquet.StepLimitError, and the harmonic is named as not searched (vehicle-regions-
+    skipped, field thrust.omega_min, one line), like a harmonic past the candidate limit."""
+    from flexbooster.floquet import StepLimitError
+
+    assert issubclass(StepLimitError, ValueError)
+    case = flexbooster.load_case({
+        "name": "fuzz", "max_seconds": 20.0,
+        "booster": {"cylinder1": {"radius": 27.007642697630487, "half_length": 1.0},
+                    "cylinder2": {"radius": 1.987751681068438, "half_length": 1.0},
+                    "thickness": 0.4245637120574288, "E": 697719596.8563334,
+                    "nu": 0.2321362982983677, "rho": 252.09343551531046},
+        "thrust": {"gamma": 0.5145247219221243, "K": 3.812612563831604,
+                   "omega_min": 1.2530159911033738, "omega_max": 907.9807723031281,
+                   "n_omega": 8, "F0": 697719596.8563334},
+        "truncation": {"M1": 4, "N1": 1, "M2": 3, "N2": 4, "N": 4, "S": 1, "R": 2},
+        "damping": {"pitch_ratio": 0.02},
+        "vehicle": {"k_max": 50, "n_modes": 37, "damping_ratio": 0.001, "theory": "donnell",
+                    "fwd_end": "hinged", "junction": "rigid-bulkhead"}})
+    found, warns = analysis._vehicle_regions_stage(case, boundaries=False, max_seconds=20.0)
+    steps = [w for w in warns if "max_steps" in w.message]
+    assert len(steps) == 1 and (steps[0].code, steps[0].field) == (
+        "vehicle-regions-skipped", "thrust.omega_min")
+    assert "harmonic k = 19 not searched" in steps[0].message and "\n" not in steps[0].message
+    assert found is not None and len(warns) == 50  # every other harmonic: over the budget

@@ -11,6 +11,7 @@ from .bounds import StabilityCertificate, stability_certificate
 from .hill import converged_periodic_boundaries, hill_exponents, periodic_boundaries
 from .multipliers import (
     LinearPeriodicSystem,
+    StepLimitError,
     floquet_exponents,
     floquet_multipliers,
     growth_rate,
@@ -47,6 +48,7 @@ __all__ = [
     "SearchWork",
     "search_work",
     "LinearPeriodicSystem",
+    "StepLimitError",
     "floquet_exponents",
     "floquet_multipliers",
     "growth_rate",

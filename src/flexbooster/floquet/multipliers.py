@@ -32,6 +32,7 @@ __all__ = [
     "periodic_system",
     "steady_frequencies",
     "step_counts",
+    "StepLimitError",
     "monodromy",
     "floquet_multipliers",
     "floquet_exponents",
@@ -39,6 +40,12 @@ __all__ = [
 ]
 
 _MAX_STEPS = 200_000  # default cap on steps per integrated period (half period when C = 0)
+
+
+class StepLimitError(ValueError):
+    """A monodromy would need more integration steps than ``max_steps`` (Omega too small for
+    the frequencies of the system, one line naming Omega): a computation past a resource
+    limit, not a wrong argument."""
 
 
 def _matrix(name: str, value, n: int | None) -> np.ndarray:
@@ -270,8 +277,9 @@ def step_counts(system: LinearPeriodicSystem, Omega, *, step_phase: float = 0.06
 
     Raises
     ------
-    ValueError
-        If a count would exceed max_steps (the message gives the estimate and the Omega).
+    StepLimitError
+        If a count would exceed max_steps (a ValueError; the message gives the estimate and
+        the Omega).
 
     References
     ----------
@@ -289,9 +297,9 @@ def step_counts(system: LinearPeriodicSystem, Omega, *, step_phase: float = 0.06
     steps = np.ceil(2.0 ** (np.ceil(2.0 * np.log2(steps)) / 2.0))  # 2^(k/2): few batches
     worst = int(np.argmax(steps))
     if steps[worst] > max_steps:
-        raise ValueError(f"Omega = {om[worst]!r}: needs about {int(steps[worst])} steps per "
-                         f"period, more than max_steps = {max_steps} (Omega too small for the "
-                         "frequencies of the system)")
+        raise StepLimitError(f"Omega = {float(om[worst]):.6g}: needs about {int(steps[worst])} "
+                             f"steps per period, more than max_steps = {max_steps} (Omega too "
+                             "small for the frequencies of the system)")
     return steps.astype(int)
 
 

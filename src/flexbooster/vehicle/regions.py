@@ -686,8 +686,8 @@ def _harmonic_regions(h: HarmonicSystem, gamma: float, lo: float, hi: float, opt
             crit = {(c.kind, c.modes, c.order): c.gamma_cr for c in floquet.critical_amplitude(
                 M, Cf, A, h.excitation, gamma_max=gamma, omega_min=lo, omega_max=hi,
                 regions=found, **opts)}
-    except floquet.TooManyCandidatesError as exc:  # a resource limit (issue 18): named
-        return [], cert, _too_many_candidates(h, lo, exc), est
+    except (floquet.TooManyCandidatesError, floquet.StepLimitError) as exc:
+        return [], cert, _past_a_limit(h, lo, exc), est  # a resource limit (issue 18): named
     rows = []
     for r in found:
         key = (r.kind, r.modes, r.order)
@@ -702,13 +702,17 @@ def _harmonic_regions(h: HarmonicSystem, gamma: float, lo: float, hi: float, opt
     return rows, cert, None, est
 
 
-def _too_many_candidates(h: HarmonicSystem, lo: float, exc: Exception,
-                         what: str = "not searched") -> str:
-    """The one line naming a harmonic past the toolkit's candidate limit (issue 18)."""
-    return (f"thrust.omega_min = {lo:.6g}: harmonic k = {h.k} {what}, "
-            f"{str(exc).split(': ', 1)[-1]} ({h.omega_loaded.size} modes up to "
-            f"{float(np.max(h.omega_loaded)):.6g} rad/s); raise thrust.omega_min or reduce "
-            "vehicle.n_modes")
+def _past_a_limit(h: HarmonicSystem, lo: float, exc: Exception,
+                  what: str = "not searched") -> str:
+    """The one line naming a harmonic past a limit of the toolkit (issue 18): its resonance
+    candidates (:class:`flexbooster.floquet.TooManyCandidatesError`) or the integration steps
+    of a monodromy (:class:`flexbooster.floquet.StepLimitError`), both growing as omega_min
+    falls below the harmonic's frequencies."""
+    why = (str(exc).split(": ", 1)[-1] if isinstance(exc, floquet.TooManyCandidatesError)
+           else str(exc))
+    return (f"thrust.omega_min = {lo:.6g}: harmonic k = {h.k} {what}, {why} "
+            f"({h.omega_loaded.size} modes up to {float(np.max(h.omega_loaded)):.6g} rad/s); "
+            "raise thrust.omega_min or reduce vehicle.n_modes")
 
 
 def _instability_region(r: VehicleRegion) -> floquet.InstabilityRegion:
@@ -780,8 +784,8 @@ def region_curves(
         if max_seconds is not None:
             try:
                 work = floquet.search_work(M, Cf, A, gmax * h.excitation, lo, hi, **opts)
-            except floquet.TooManyCandidatesError as exc:
-                skipped.append(_too_many_candidates(h, lo, exc, "not traced for the chart"))
+            except (floquet.TooManyCandidatesError, floquet.StepLimitError) as exc:
+                skipped.append(_past_a_limit(h, lo, exc, "not traced for the chart"))
                 continue
             if work.steady or work.certified:
                 continue  # no curve: a steady region or none at gamma_max
@@ -798,9 +802,14 @@ def region_curves(
         elif top is None and floquet.stability_certificate(
                 M, Cf, A, gmax * h.excitation).certified:
             continue  # no region at gamma_max: nothing to trace
-        for c in floquet.region_boundaries(M, Cf, A, h.excitation, gamma_max=gmax,
-                                           omega_min=lo, omega_max=hi, n_gamma=n_gamma,
-                                           regions=top, **opts):
+        try:
+            traced = floquet.region_boundaries(M, Cf, A, h.excitation, gamma_max=gmax,
+                                               omega_min=lo, omega_max=hi, n_gamma=n_gamma,
+                                               regions=top, **opts)
+        except (floquet.TooManyCandidatesError, floquet.StepLimitError) as exc:
+            skipped.append(_past_a_limit(h, lo, exc, "not traced for the chart"))
+            continue
+        for c in traced:
             curves.append(RegionCurve(k=h.k, kind=c.kind, order=c.order, modes=c.modes,
                                       gamma=c.gamma, omega_lo=c.omega_lo,
                                       omega_hi=c.omega_hi))
