@@ -232,9 +232,11 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
     action = None
     if beam_action:
         step(STAGES[3])
+        # a worker's bands are waited for once the exponents are done; in this process they
+        # are searched first, so that a search past the toolkit's limits is refused at once
         action = _beam_action(model, search.result if search is not None else
-                              lambda: pipeline_band_search(model, max_seconds=cap),
-                              None if hill is None else hill.result)
+                              pipeline_band_search, None if hill is None else hill.result,
+                              max_seconds=cap)
         extra += [AnalysisWarning("beam-action-tongue-budget", "max_seconds", why)
                   for why in action.skipped]
     table = None
@@ -373,17 +375,30 @@ def simulate_case(case: Case, Omega: float, *, tau_max: float, n_out: int = 401,
         return simulate(model, Omega, tau_max, n_out=n_out, psi0=psi0, params=params)
 
 
-def _beam_action(model, bands: bool | BandSearch | Callable[[], BandSearch], hill=None):
-    """:func:`beam_action_analysis`; a period map beyond floating point is the load's CaseError."""
+def _beam_action(model, bands: bool | BandSearch | Callable[..., BandSearch], hill=None, *,
+                 max_seconds: float | None = None):
+    """:func:`beam_action_analysis` with the refusals of issue 18 as one-line CaseErrors: a
+    period map beyond floating point is the load's; a band search past the toolkit's limits
+    (resonance candidates, monodromy steps: a truncation far beyond what the budget allows,
+    e.g. N = 150 with ``--max-seconds 1e9``) the truncation's.  ``bands`` is
+    :func:`pipeline_band_search` itself (run here first, with ``max_seconds``), a worker's
+    result to wait for, or as :func:`beam_action_analysis` takes it."""
     from .errors import CaseError
 
     try:
+        if bands is pipeline_band_search:
+            bands = pipeline_band_search(model, max_seconds=max_seconds)
         return beam_action_analysis(model, bands=bands, hill=hill)
     except PeriodMapOverflowError as exc:  # issue 18: a documented one-line refusal
         raise CaseError("thrust.F0", model.F0,
                         f"the beam action grows beyond the floating-point range ({exc}): far "
                         "past what the booster carries at this gamma; lower thrust.F0 or "
                         "thrust.gamma, or raise thrust.omega_min") from exc
+    except (floquet.TooManyCandidatesError, floquet.StepLimitError) as exc:
+        # the highest beam mode against Omega >= omega_1 / 4: only a huge truncation
+        raise CaseError("truncation.N", model.truncation.N,
+                        f"the beam-action band search is past a limit of the Floquet toolkit "
+                        f"({exc}): reduce truncation.N") from exc
 
 
 def analyze_vehicle(case: Case, *, k_max: int | None = None, f_max: float | None = None,
