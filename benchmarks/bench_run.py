@@ -12,11 +12,14 @@ write the same numbers (``compare_results.py``, 1e-12 relative).
 
 Run from the repository root (needs git and the project's venv)::
 
-    .venv/bin/python benchmarks/bench_run.py
+    .venv/bin/python benchmarks/bench_run.py [--baseline REV]
+
+``--baseline REV`` times another commit instead of ``BASELINE`` (e.g. main before a change).
 """
 
 from __future__ import annotations
 
+import argparse
 import os
 import resource
 import subprocess
@@ -52,11 +55,14 @@ def _time(src: Path, args: list[str], out: Path, threads: str | None) -> tuple[f
 
 
 def main() -> None:
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--baseline", default=BASELINE, help="commit to compare with")
+    baseline = ap.parse_args().baseline
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
         base = tmp / "baseline"
         subprocess.run(["git", "-C", str(ROOT), "worktree", "add", "-q", "--detach", str(base),
-                        BASELINE], check=True)
+                        baseline], check=True)
         try:
             rows = []
             for threads in (None, "1"):
@@ -73,8 +79,8 @@ def main() -> None:
         finally:
             subprocess.run(["git", "-C", str(ROOT), "worktree", "remove", "--force", str(base)],
                            check=False)
-    print(f"flexbooster run, default case, best of {REPEATS}, baseline {BASELINE}: "
-          "wall s (CPU s)")
+    print(f"flexbooster run, default case, best of {REPEATS}, baseline {baseline}: "
+          f"wall s (CPU s), load average {os.getloadavg()[0]:.2f}")
     for label, (old, old_cpu), (new, new_cpu) in rows:
         print(f"  {label:42s} baseline {old:6.2f} ({old_cpu:5.2f})   now {new:6.2f} "
               f"({new_cpu:5.2f})   speed-up {old / new:4.1f}x wall, {old_cpu / new_cpu:4.1f}x CPU")
