@@ -234,9 +234,8 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
         step(STAGES[3])
         # a worker's bands are waited for once the exponents are done; in this process they
         # are searched first, so that a search past the toolkit's limits is refused at once
-        action = _beam_action(model, search.result if search is not None else
-                              pipeline_band_search, None if hill is None else hill.result,
-                              max_seconds=cap)
+        action = _beam_action(model, None if search is None else search.result,
+                              None if hill is None else hill.result, max_seconds=cap)
         extra += [AnalysisWarning("beam-action-tongue-budget", "max_seconds", why)
                   for why in action.skipped]
     table = None
@@ -375,18 +374,19 @@ def simulate_case(case: Case, Omega: float, *, tau_max: float, n_out: int = 401,
         return simulate(model, Omega, tau_max, n_out=n_out, psi0=psi0, params=params)
 
 
-def _beam_action(model, bands: bool | BandSearch | Callable[..., BandSearch], hill=None, *,
-                 max_seconds: float | None = None):
+def _beam_action(model, bands: bool | BandSearch | Callable[[], BandSearch] | None,
+                 hill=None, *, max_seconds: float | None = None):
     """:func:`beam_action_analysis` with the refusals of issue 18 as one-line CaseErrors: a
     period map beyond floating point is the load's; a band search past the toolkit's limits
     (resonance candidates, monodromy steps: a truncation far beyond what the budget allows,
-    e.g. N = 150 with ``--max-seconds 1e9``) the truncation's.  ``bands`` is
-    :func:`pipeline_band_search` itself (run here first, with ``max_seconds``), a worker's
-    result to wait for, or as :func:`beam_action_analysis` takes it."""
+    e.g. N = 150 with ``--max-seconds 1e9``) the truncation's.  ``bands`` None: searched
+    here first (:func:`pipeline_band_search` with ``max_seconds``); else as
+    :func:`beam_action_analysis` takes it (e.g. a worker's result, waited for after the
+    exponents)."""
     from .errors import CaseError
 
     try:
-        if bands is pipeline_band_search:
+        if bands is None:
             bands = pipeline_band_search(model, max_seconds=max_seconds)
         return beam_action_analysis(model, bands=bands, hill=hill)
     except PeriodMapOverflowError as exc:  # issue 18: a documented one-line refusal
