@@ -15,6 +15,7 @@ import pytest
 
 from flexbooster.danger import (
     MECHANISMS,
+    STEADY_CAUSE,
     DangerBand,
     danger_bands,
     danger_summary,
@@ -164,6 +165,24 @@ def test_verdicts_not_computed_stable_unstable():
     (r,) = [t for k, _, t in mechanism_verdicts(res, computed={"resonance": True})
             if k == "resonance"]
     assert r == "unstable: 1 resonance (memo 7) in the operating range, largest severity 2 m/s"
+
+
+def test_a_steady_region_is_named_unstable_without_pulsation():
+    """A "steady" region (the system under the steady thrust alone is unstable: Beal's
+    follower flutter, or the slow growth of a gimballed rigid pitch with damped elastic modes,
+    the README's [vehicle] example at 9.9e-7 1/s) is not a parametric region: its cause says
+    so, and the verdict names it with its e-folding time 1 / growth (exact)."""
+    bands = danger_bands(operating_range=OPERATING, beam_action=SimpleNamespace(
+        bands=(_ba(OPERATING[0], OPERATING[1], 2.0e-3, kind="steady", modes=(0,), order=0),
+               _ba(30.0, 31.0, 0.5))))
+    steady = [b for b in bands if b.cause_text.startswith(STEADY_CAUSE)]
+    assert len(steady) == 1 and "gamma = 0" in steady[0].cause_text
+    assert "instability region" not in steady[0].cause_text
+    (text,) = [t for k, _, t in mechanism_verdicts(bands, computed={"beam_action": True})
+               if k == "beam_action"]
+    assert text == ("unstable: 2 instability regions in the operating range, largest growth "
+                    "rate 0.5 1/s (1 of them unstable without pulsation: growth rate 0.002 "
+                    "1/s, e-folding time 500 s)")
 
 
 def test_summary_to_dict_is_json():

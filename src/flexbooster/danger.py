@@ -30,8 +30,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
-__all__ = ["DangerBand", "DangerSummary", "MECHANISMS", "danger_bands", "danger_summary",
-           "mechanism_verdicts"]
+__all__ = ["DangerBand", "DangerSummary", "MECHANISMS", "STEADY_CAUSE", "danger_bands",
+           "danger_summary", "mechanism_verdicts"]
 
 #: The mechanisms, in the order of the verdict lines: (key, words).
 MECHANISMS: tuple[tuple[str, str], ...] = (
@@ -47,6 +47,17 @@ _KIND_WORDS = {
     "difference": "difference combination",
     "steady": "steady thrust",
 }
+#: The cause of a "steady" region: the system under the steady thrust alone (gamma = 0) is
+#: unstable (flutter or divergence: Beal 1965 for the follower thrust; with the gimbal loop and
+#: damping also a slow growth of the rigid pitch), over the whole range; not parametric.
+STEADY_CAUSE = "unstable without pulsation"
+
+
+def _region_cause(kind: str, order: object, model: str = "") -> str:
+    """The cause in words of an instability region of ``kind`` and ``order`` (j)."""
+    if kind == "steady":
+        return f"{STEADY_CAUSE} (the steady thrust alone, gamma = 0{model})"
+    return f"instability region ({_KIND_WORDS.get(kind, kind)}, order {order}{model})"
 
 
 @dataclass(frozen=True)
@@ -164,11 +175,10 @@ def _beam_action_bands(beam_action, operating) -> list[DangerBand]:
     out = []
     for b in beam_action.bands:
         modes = " + ".join(_mode_name(int(m)) for m in b.modes)
-        kind = _KIND_WORDS.get(b.kind, b.kind)
         # centres 2 omega_i / j or (omega_i +- omega_k) / j (Bolotin 1964, ch. 2; Hsu 1963)
         out.append(DangerBand("beam_action", float(b.omega_lo), float(b.omega_hi),
                               float(b.growth_rate_max), None, modes,
-                              f"instability region ({kind}, order {b.order})",
+                              _region_cause(b.kind, b.order),
                               _overlaps(b.omega_lo, b.omega_hi, operating)))
     return out
 
@@ -192,8 +202,7 @@ def _generic(items: Sequence, source: str, mechanism: str, operating,
             modes = " + ".join(f"{getattr(m, 'type', 'mode')} {getattr(m, 'order', '')}".strip()
                                for m in getattr(item, "modes", ()))
             mode = f"k = {item.k}" + (f": {modes}" if modes else "")
-            item_cause = (f"instability region ({_KIND_WORDS.get(kind, kind)}, order "
-                          f"{getattr(item, 'order', '?')}; vehicle model)")
+            item_cause = _region_cause(kind, getattr(item, "order", "?"), "; vehicle model")
         else:
             item_cause = None
         if mechanism == "resonance":
@@ -318,6 +327,11 @@ def mechanism_verdicts(bands: Sequence[DangerBand], *,
             text += f", largest growth rate {max(rates):.3g} 1/s"
         elif sev:
             text += f", largest severity {max(sev):.3g} m/s"
+        steady = [b for b in mine if b.cause_text.startswith(STEADY_CAUSE)]
+        if steady:  # not parametric: the steady system itself (its growth, e-folding time)
+            g = max(b.growth_rate or 0.0 for b in steady)
+            text += (f" ({len(steady)} of them {STEADY_CAUSE}: growth rate {g:.3g} 1/s"
+                     + (f", e-folding time {1.0 / g:.3g} s)" if g > 0.0 else ")"))
         out.append((key, words, text))
     return tuple(out)
 
