@@ -39,6 +39,10 @@ ROOT = Path(__file__).resolve().parents[1]
 def _time(src: Path, args: list[str], out: Path, threads: str | None) -> tuple[float, float]:
     env = dict(os.environ, PYTHONPATH=str(src))
     env.pop("OPENBLAS_NUM_THREADS", None)
+    # byte-compiled modules cached as an installed package has them (some shells export
+    # PYTHONDONTWRITEBYTECODE=1, which makes every run compile every module from source);
+    # the first of the repeats writes the cache
+    env.pop("PYTHONDONTWRITEBYTECODE", None)
     if threads is not None:
         env["OPENBLAS_NUM_THREADS"] = threads
     cmd = [sys.executable, "-c", "from flexbooster.cli import main; main()", "run", *args,
