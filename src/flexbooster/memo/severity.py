@@ -240,19 +240,19 @@ def floquet_vectors(A0: np.ndarray, B: np.ndarray, mu: np.ndarray, Omega_bar: np
         rows = np.arange(P)
         r = np.argmin(np.abs(lam[None, :] - mu[sl][:, None] ** 2), axis=1)  # lambda_r ~ mu^2
         if S:  # one refinement of the exponent (error ~ kappa^2) from the levels s = -1, 0, 1
-            inv = _inverse_diagonals(lam, mu[sl], Ob[sl], np.arange(-1, 2), tiny)
+            ninv = _negative_inverse_diagonals(lam, mu[sl], Ob[sl], np.arange(-1, 2), tiny)
             e_r = np.zeros((P, n))
             e_r[rows, r] = 1.0  # C^(0) = e_r to second order
             g0 = e_r @ GT
-            c1, c_1 = -inv[2] * g0, -inv[0] * g0  # C^(1), C^(-1): first-order fraction
+            c1, c_1 = ninv[2] * g0, ninv[0] * g0  # C^(1), C^(-1): first-order fraction
             mu2 = lam[r] + ((c1 + c_1) @ GT)[rows, r]  # s = 0 row, Hill
             mu[sl] = np.where(mu2 > 0, np.sqrt(np.abs(mu2)), mu[sl]) * np.sign(mu[sl])
-        inv = _inverse_diagonals(lam, mu[sl], Ob[sl], levels, tiny)
+        ninv = _negative_inverse_diagonals(lam, mu[sl], Ob[sl], levels, tiny)
         modal = np.zeros((2 * S + 1, P, n))
         modal[S, rows, r] = 1.0  # C^(0) = e_r to second order
         for k in range(1, S + 1):  # first-order continued fraction, outward from s = 0
-            modal[S + k] = -inv[S + k] * (modal[S + k - 1] @ GT)
-            modal[S - k] = -inv[S - k] * (modal[S - k + 1] @ GT)
+            np.multiply(ninv[S + k], modal[S + k - 1] @ GT, out=modal[S + k])
+            np.multiply(ninv[S - k], modal[S - k + 1] @ GT, out=modal[S - k])
         # a-posteriori: the term left out at each s, G C^(s +- 1) (outward), relative to C^(s)
         outer = np.zeros_like(modal)
         if S:
@@ -260,7 +260,7 @@ def floquet_vectors(A0: np.ndarray, B: np.ndarray, mu: np.ndarray, Omega_bar: np
             outer[1:S] = modal[:S - 1] @ GT
             outer[S] = (modal[S + 1] + modal[S - 1]) @ GT
         outer[S, rows, r] = 0.0  # the resonant row: the exponent itself
-        np.multiply(inv, outer, out=outer)
+        np.multiply(ninv, outer, out=outer)  # its sign is lost in |.| below
         err = _abs_max_last(outer) / np.maximum(_abs_max_last(modal), tiny)
         kappa[sl] = err.max(axis=0)
         q = modal @ V.T  # back to q_1..q_N, q_B: (2S+1, P, n)
@@ -277,13 +277,17 @@ def floquet_vectors(A0: np.ndarray, B: np.ndarray, mu: np.ndarray, Omega_bar: np
     return out, mu
 
 
-def _inverse_diagonals(lam: np.ndarray, mu: np.ndarray, Ob: np.ndarray, levels: np.ndarray,
-                       tiny: float) -> np.ndarray:
-    """1 / diag(D_s), D_s = diag(lambda - (mu + s Omega_bar)^2) (Hill 4.1-10, modal frame),
-    shape (len(levels), P, n); an exact zero is replaced by ``tiny``."""
+def _negative_inverse_diagonals(lam: np.ndarray, mu: np.ndarray, Ob: np.ndarray,
+                                levels: np.ndarray, tiny: float) -> np.ndarray:
+    """-1 / diag(D_s), D_s = diag(lambda - (mu + s Omega_bar)^2) (Hill 4.1-10, modal frame),
+    shape (len(levels), P, n); an exact zero of D_s is replaced by ``tiny``."""
     x = mu[None, :] + levels[:, None] * Ob[None, :]  # (levels, P)
     d = lam[None, None, :] - x[:, :, None] ** 2
-    return 1.0 / np.where(d == 0.0, tiny, d)
+    zero = d == 0.0
+    if zero.any():
+        d[zero] = tiny
+    np.divide(1.0, d, out=d)
+    return np.negative(d, out=d)
 
 
 def _abs_max_last(X: np.ndarray) -> np.ndarray:
@@ -474,10 +478,16 @@ def root_severity(model: BoosterModel, table: StabilityTable, params: Excitation
             half = 0.5 * Ai * A[:, p] * Wi * W[:, p]
             add(Wi - W[:, p], 4, half)  # psi'^2 = 1/2 sum A_i A_p W_i W_p [cos(-) - cos(+)]
             add(Wi + W[:, p], 4, -half)
-    nu = np.stack(nus, axis=1)  # (n, H)
-    amp = np.stack(amps, axis=1)
-    res = np.abs(np.abs(nu) - w[:, None]) <= _RES_TOL * w[:, None]
-    G = np.abs(np.sum(np.where(res, amp * h[:, rows], 0.0), axis=1))  # real amplitudes
+    # built harmonic by harmonic (H, n), in place; summed per root in the (n, H) layout
+    nu = np.stack(nus)  # (H, n)
+    res = np.abs(nu, out=nu)
+    res -= w
+    np.abs(res, out=res)
+    res = res <= _RES_TOL * w
+    forcing = np.stack(amps)
+    forcing *= h.T[rows]
+    np.copyto(forcing, 0.0, where=~res)
+    G = np.abs(np.sum(np.ascontiguousarray(forcing.T), axis=1))  # real amplitudes
 
     # the beam Floquet harmonic of the root's exponent (families 2 and 13)
     beam = (table.r >= 1) & np.isin(table.family, (2, 13)) & (beam_amplitude > 0)
