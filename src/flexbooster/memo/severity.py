@@ -280,14 +280,15 @@ def floquet_vectors(A0: np.ndarray, B: np.ndarray, mu: np.ndarray, Omega_bar: np
 def _negative_inverse_diagonals(lam: np.ndarray, mu: np.ndarray, Ob: np.ndarray,
                                 levels: np.ndarray, tiny: float) -> np.ndarray:
     """-1 / diag(D_s), D_s = diag(lambda - (mu + s Omega_bar)^2) (Hill 4.1-10, modal frame),
-    shape (len(levels), P, n); an exact zero of D_s is replaced by ``tiny``."""
+    shape (len(levels), P, n); an exact zero of D_s is replaced by ``tiny``.  Computed as
+    1 / (x^2 - lambda): rounding to nearest is symmetric in sign, so a - b = -(b - a) and
+    1 / -d = -(1 / d) exactly."""
     x = mu[None, :] + levels[:, None] * Ob[None, :]  # (levels, P)
-    d = lam[None, None, :] - x[:, :, None] ** 2
-    zero = d == 0.0
+    neg_d = x[:, :, None] ** 2 - lam[None, None, :]
+    zero = neg_d == 0.0
     if zero.any():
-        d[zero] = tiny
-    np.divide(1.0, d, out=d)
-    return np.negative(d, out=d)
+        neg_d[zero] = -tiny
+    return np.divide(1.0, neg_d, out=neg_d)
 
 
 def _abs_max_last(X: np.ndarray) -> np.ndarray:
