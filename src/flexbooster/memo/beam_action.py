@@ -704,8 +704,8 @@ def _monodromy_half(mu: np.ndarray, Bt: np.ndarray, Ob: np.ndarray, gam: np.ndar
         a2, a3 = a23[:, 0], a23[:, 1]
         g = np.empty((n, p * 2 * n), dtype=dtype)
         g23 = np.empty((n, 2 * p * 2 * n), dtype=dtype)
-        g3, g23_4, y23_2, t_2 = g.reshape(shape), g23.reshape(y23.shape), y23.reshape(n, -1), \
-            t.reshape(n, -1)
+        g3, g23_4 = g.reshape(shape), g23.reshape(y23.shape)  # views: GEMM out, force in
+        y23_2, t_2 = y23.reshape(n, -1), t.reshape(n, -1)
         for i in range(k_end - k):
             dot(Bt, x.reshape(n, -1), out=g)
             mul(f0[i], g3, out=a1)  # k1 = N(t) z
