@@ -7,6 +7,7 @@ from matplotlib.figure import Figure
 
 from ...memo.charts import BeamModeShapes
 from .labels import subscript as _sub
+from .layout import new_axes
 
 __all__ = ["mode_shape_plot"]
 
@@ -30,11 +31,7 @@ def mode_shape_plot(data: BeamModeShapes, ax: Axes | None = None) -> Figure:
     ----------
     Tech Memo 104, eqs. (4.1-2), (C-1), (C-6)..(C-9).
     """
-    if ax is None:
-        fig = Figure(figsize=(6.4, 3.6), layout="constrained")
-        ax = fig.add_subplot()
-    else:
-        fig = ax.figure
+    fig, ax = new_axes(ax, (6.4, 3.6))
     for n, (phi, lam) in enumerate(zip(data.phi, data.lambda_n, strict=True), start=1):
         ax.plot(data.zeta, phi, label=f"{_sub('φ', n)}, λ = {lam:.4f}")
     ax.axvline(data.zeta_junction, color="0.5", ls="--", lw=0.8, label="junction")

@@ -7,6 +7,7 @@ from matplotlib.figure import Figure
 
 from ...memo.shell import ShellFrequencies
 from .labels import plain_log_ticks
+from .layout import new_axes
 
 __all__ = ["frequency_curves"]
 
@@ -52,11 +53,7 @@ def frequency_curves(
               "omega_bar": "ω/ω₁ (units of ω₁)"}
     if unit not in labels:
         raise ValueError(f"unit = {unit!r}: must be one of {tuple(labels)}")
-    if ax is None:
-        fig = Figure(figsize=(7.0, 5.0))
-        ax = fig.add_subplot()
-    else:
-        fig = ax.figure
+    fig, ax = new_axes(ax, (7.0, 5.0))
     values = getattr(table, unit)
     sel = (table.cylinder == cylinder) & (table.branch == branch) & (table.j >= 1)
     for j in np.unique(table.j[sel]):
