@@ -38,6 +38,8 @@ __all__ = ["OUTPUT_STAGES", "write_outputs", "save_figure", "make_figures", "fig
 OUTPUT_STAGES = ("results.json and CSV", "figures", "report.html")
 #: The manifest of an output set, written last: every file of the set with its SHA-256.
 MANIFEST = "manifest.json"
+#: Resolution of the PNG files (dots per inch).
+_PNG_DPI = 120
 #: Prefix of the staging folder that :func:`write_outputs` makes inside the output folder.
 STAGING_PREFIX = ".flexbooster-staging-"
 
@@ -298,12 +300,12 @@ def _render(fig) -> tuple[str, bytes]:
         for line in ax.lines:  # and every line with thousands of points or markers
             if (many or np.size(line.get_xdata()) > 2000) and line.get_gid() is None:
                 line.set_rasterized(True)
-    lay_out_once(fig)
+    lay_out_once(fig, dpi=_PNG_DPI)  # measured by the renderer that draws the PNG
     with matplotlib.rc_context({"svg.hashsalt": "flexbooster"}):
         svg = _io.StringIO()
         fig.savefig(svg, format="svg", dpi=150, metadata={"Date": None})
     png = _io.BytesIO()
-    fig.savefig(png, format="png", dpi=120)
+    fig.savefig(png, format="png", dpi=_PNG_DPI)
     return svg.getvalue(), png.getvalue()
 
 

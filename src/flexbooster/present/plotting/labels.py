@@ -9,8 +9,6 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
 __all__ = ["subscript", "superscript", "plain_log_ticks", "power_log_ticks"]
 
 _SUB = str.maketrans("0123456789+-aeijklmnoprstuvx", "₀₁₂₃₄₅₆₇₈₉₊₋ₐₑᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ")
@@ -53,24 +51,30 @@ def superscript(text: object) -> str:
     return str(text).translate(_SUP)
 
 
-def plain_log_ticks(axis) -> None:
+def plain_log_ticks(axis, *, minor_marks: bool = True) -> None:
     """Plain numbers ("0.5", "10", "200") on a logarithmic axis, no minor labels.
 
     Parameters
     ----------
     axis : matplotlib.axis.Axis
         E.g. ``ax.xaxis`` of an axes with a log scale.
+    minor_marks : bool
+        Draw the minor ticks as one artist of tick marks
+        (:class:`~flexbooster.present.plotting.ticks.MinorTickMarks`, no tick objects); False:
+        matplotlib's minor ticks (needed for grid lines at the minor ticks).
 
     Notes
     -----
-    Easier to read than 10^n and faster to draw (no mathtext layout).
+    Easier to read than 10^n and faster to draw (no mathtext layout).  Only the ticks in the
+    view are made (:func:`~flexbooster.present.plotting.ticks.in_view_log_locator`).
     """
-    from matplotlib.ticker import FuncFormatter, NullFormatter
+    from matplotlib.ticker import FuncFormatter
 
-    axis.set_major_locator(_in_view_log_locator(subs=(1.0, 2.0, 5.0)))
-    axis.set_minor_locator(_in_view_log_locator(subs="auto"))
+    from .ticks import in_view_log_locator, log_minor_ticks
+
+    axis.set_major_locator(in_view_log_locator(subs=(1.0, 2.0, 5.0)))
     axis.set_major_formatter(FuncFormatter(lambda v, _pos: f"{v:g}"))
-    axis.set_minor_formatter(NullFormatter())
+    log_minor_ticks(axis, marks=minor_marks)
 
 
 def power_log_ticks(axis) -> None:
@@ -80,8 +84,14 @@ def power_log_ticks(axis) -> None:
     ----------
     axis : matplotlib.axis.Axis
         E.g. ``ax2.yaxis`` of an axes with a log scale.
+
+    Notes
+    -----
+    The minor ticks are drawn as in :func:`plain_log_ticks`.
     """
-    from matplotlib.ticker import FuncFormatter, NullFormatter
+    from matplotlib.ticker import FuncFormatter
+
+    from .ticks import in_view_log_locator, log_minor_ticks
 
     def label(v, _pos):
         if not (v > 0.0 and math.isfinite(v)):
@@ -89,35 +99,6 @@ def power_log_ticks(axis) -> None:
         e = math.log10(v)
         return f"10{superscript(round(e))}" if abs(e - round(e)) < 1e-9 else ""
 
-    axis.set_major_locator(_in_view_log_locator(subs=(1.0,)))
-    axis.set_minor_locator(_in_view_log_locator(subs="auto"))
+    axis.set_major_locator(in_view_log_locator(subs=(1.0,)))
     axis.set_major_formatter(FuncFormatter(label))
-    axis.set_minor_formatter(NullFormatter())
-
-
-#: Relative margin (of the axis' span in decades) within which a tick beyond the view is kept;
-#: matplotlib draws the ticks within 1e-10 of the span (``_interval_contains_close``).
-_VIEW_MARGIN = 1e-9
-
-
-def _in_view_log_locator(subs):
-    """matplotlib's ``LogLocator(base=10, subs=subs)`` returning only the ticks in the view.
-
-    ``LogLocator`` returns a decade more on each side, which the axis then makes tick objects
-    for, updates at every draw and does not draw: about a third of the ticks of a log axis.
-    The ticks drawn are the same.
-    """
-    from matplotlib.ticker import LogLocator
-
-    class InViewLogLocator(LogLocator):
-        def __call__(self):
-            locs = np.asarray(super().__call__(), dtype=float)
-            lo, hi = sorted(self.axis.get_view_interval())
-            if not (lo > 0.0 and np.isfinite(hi)) or locs.size == 0:
-                return locs
-            span = max(math.log10(hi / lo), 1.0) * _VIEW_MARGIN
-            with np.errstate(divide="ignore", invalid="ignore"):
-                e = np.log10(locs)
-            return locs[(e >= math.log10(lo) - span) & (e <= math.log10(hi) + span)]
-
-    return InViewLogLocator(base=10.0, subs=subs)
+    log_minor_ticks(axis)

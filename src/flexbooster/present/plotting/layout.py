@@ -101,7 +101,7 @@ def axes_with_colorbar(ax: Axes | None, figsize: tuple[float, float], *,
     return fig, ax, cax
 
 
-def lay_out_once(fig: Figure) -> None:
+def lay_out_once(fig: Figure, dpi: float | None = None) -> None:
     """Lay ``fig`` out once and remove its layout engine (the axes keep their places).
 
     Parameters
@@ -110,26 +110,62 @@ def lay_out_once(fig: Figure) -> None:
         A figure of this package (a tight layout engine), or any figure: one without an engine
         gets the package's tight layout, one with another engine (e.g. constrained layout) is
         laid out by it.
+    dpi : float, optional
+        Resolution (dots per inch) at which the figure will be saved as PNG: the figure's
+        ``dpi`` is set to it and the layout measured with the Agg renderer that the PNG's save
+        then reuses, with the text sizes measured here (matplotlib caches them per renderer).
 
     Notes
     -----
-    After the layout each title with text is placed once as matplotlib places it at every draw
-    (above the tick labels of a secondary or top axis) and kept there, so that the saves do not
-    measure the axes again for it.  Positions are fractions of the figure and of the axes, the
-    same at the SVG's and the PNG's resolution.
+    The tight layout measures each axes as drawn, which places its title (above the tick
+    labels of a secondary or top axis) and its axis labels (beside the tick labels), then moves
+    the axes.  Those places are kept, as the same distances (in pixels) from the moved axes'
+    edges, so that the saves do not measure the axes again for them at every draw
+    (matplotlib's ``Axis.set_label_coords``; a title given its height).  Positions are
+    fractions of the axes, the same at the SVG's and the PNG's resolution.  An axes that the
+    engine does not measure (not in a grid of subplots; a secondary axis) keeps the automatic
+    placement, and so does every axes of a figure with another engine.
     """
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
     engine = fig.get_layout_engine()
     if engine is None:
         engine = _engine()
-    renderer = FigureCanvasAgg(fig).get_renderer()
+    if dpi is not None:
+        fig.dpi = dpi
+    FigureCanvasAgg(fig)
+    measured = [ax for ax in fig.axes if ax.get_subplotspec() is not None]
+    before = {ax: ax.get_window_extent().frozen() for ax in measured}  # pixels
     engine.execute(fig)
     fig.set_layout_engine(None)
-    for ax in fig.axes:
-        place = getattr(ax, "_update_title_position", None)  # private: skip if it is gone
-        if place is None or not hasattr(ax, "_autotitlepos"):
-            continue
-        if any(t.get_text() for t in (ax.title, ax._left_title, ax._right_title)):
-            place(renderer)
+    if isinstance(engine, TightLayoutEngine):
+        for ax in measured:
+            _keep_label_places(ax, before[ax])
+
+
+def _keep_label_places(ax: Axes, before) -> None:
+    """Fix the title and axis labels of ``ax`` at their distances from its edges, as placed
+    by the layout's measuring pass when the axes had the extent ``before`` (pixels)."""
+    after = ax.get_window_extent()
+    if before.width <= 0 or before.height <= 0 or after.width <= 0 or after.height <= 0:
+        return
+    titles = [t for t in (ax.title, getattr(ax, "_left_title", None),
+                          getattr(ax, "_right_title", None)) if t is not None]
+    if hasattr(ax, "_autotitlepos") and ax._autotitlepos:  # private: skip if it is gone
+        for title in titles:  # y is a fraction of the axes' height, the pad in points
+            title.set_y(1.0 + (title.get_position()[1] - 1.0) * before.height / after.height)
         ax._autotitlepos = False
+    for axis, pos in ((ax.xaxis, ax.xaxis.get_label_position()),
+                      (ax.yaxis, ax.yaxis.get_label_position())):
+        label = axis.label
+        if not (label.get_visible() and label.get_text()):
+            continue
+        x, y = label.get_position()  # one coordinate a fraction, the other one in pixels
+        if pos == "bottom":
+            axis.set_label_coords(x, (y - before.y0) / after.height)
+        elif pos == "top":
+            axis.set_label_coords(x, 1.0 + (y - before.y1) / after.height)
+        elif pos == "left":
+            axis.set_label_coords((x - before.x0) / after.width, y)
+        elif pos == "right":
+            axis.set_label_coords(1.0 + (x - before.x1) / after.width, y)

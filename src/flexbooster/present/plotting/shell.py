@@ -61,7 +61,7 @@ def frequency_curves(
         rows = rows[np.argsort(table.k[rows])]
         ax.plot(table.k[rows], values[rows], marker="o", ms=2.5, lw=0.9, label=f"j = {j}")
     ax.set_yscale("log")
-    plain_log_ticks(ax.yaxis)
+    plain_log_ticks(ax.yaxis, minor_marks=False)  # the grid lines at the minor ticks too
     ax.set_xlabel("circumferential wave number k")
     ax.set_ylabel(labels[unit])
     ax.set_title(f"cylinder {cylinder}, branch {branch} ({table.method})")

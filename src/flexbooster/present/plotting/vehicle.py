@@ -80,5 +80,7 @@ def unrolled_modes(views: ModeShapeViews) -> Figure:
         ax.set_xlabel("theta (deg)", fontsize=8)
         ax.set_ylabel("meridian s from aft edge (m)", fontsize=8)
         ax.tick_params(labelsize=7)
-    fig.suptitle("Vehicle modes on the unrolled surface: normal displacement w", fontsize=10)
+    title = "Vehicle modes on the unrolled surface: normal displacement w"
+    # one panel is narrower than the title: two lines (else its ends are cut off)
+    fig.suptitle(title if n > 1 else title.replace(": ", ":\n"), fontsize=10)
     return fig
