@@ -37,7 +37,8 @@ def mode_shape_plot(data: BeamModeShapes, ax: Axes | None = None) -> Figure:
     ax.axvline(data.zeta_junction, color="0.5", ls="--", lw=0.8, label="junction")
     ax.axvline(data.zeta_cm, color="0.5", ls=":", lw=0.8, label="CM")
     ax.axhline(0.0, color="k", lw=0.5)
-    ax.set_xlabel(r"$\zeta = \bar\xi - d_4/L + 1$ (aft edge 0, nose 2)")
+    # plain text, no mathtext (labels.py): ξ with a combining macron, d with subscript 4
+    ax.set_xlabel(f"ζ = ξ\u0304 − {_sub('d', 4)}/L + 1 (aft edge 0, nose 2)")
     ax.set_ylabel("φₙ")
     ax.set_title("Free-free beam modes")
     ax.legend(fontsize=7)
