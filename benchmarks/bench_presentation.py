@@ -8,15 +8,33 @@ renderer (``present.outputs._render``):
   2. the danger map, and the ranking itself (``danger_summary``) on the default case's bands.
 Also prints the SVG sizes.
 
+``--figures`` instead times the CPU of drawing and saving (SVG + PNG) every figure of the
+default case, as ``flexbooster run`` does it (``present.outputs._figure_task``), now against
+``--baseline REV`` (default ``main``) checked out side by side with ``git worktree``: each
+code analyses the case once (pickled, not timed), then, alternating, best of ``--repeat``:
+
+* one process drawing the figures one after the other (``prepare_figures`` first, untimed: the
+  first figure still pays matplotlib's warm-up);
+* each figure in a fresh process of its own (after ``prepare_figures``), as a worker of
+  ``flexbooster run`` draws its first figure: the sum is what ten workers would spend.
+
 Usage::
 
     OPENBLAS_NUM_THREADS=1 PYTHONPATH=src python benchmarks/bench_presentation.py [--repeat 3]
+    OPENBLAS_NUM_THREADS=1 .venv/bin/python benchmarks/bench_presentation.py --figures \
+        [--baseline main] [--repeat 3]
 """
 
 from __future__ import annotations
 
 import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
 import time
+from pathlib import Path
 
 import matplotlib
 
@@ -62,10 +80,97 @@ def _best(fn, repeat: int) -> tuple[float, object]:
     return best, out
 
 
+ROOT = Path(__file__).resolve().parents[1]
+#: Run by each code (PYTHONPATH=its src): "analyse PATH" pickles the default case's results;
+#: "draw PATH [NAMES]" prints the CPU seconds of _figure_task for each figure (JSON).
+_CHILD = r"""
+import json, pickle, sys, time
+mode, path = sys.argv[1], sys.argv[2]
+if mode == "analyse":
+    from flexbooster.analysis import analyze
+    from flexbooster.case import default_case
+    with open(path, "wb") as f:
+        pickle.dump(analyze(default_case(), workers=1), f)
+    raise SystemExit
+with open(path, "rb") as f:
+    results = pickle.load(f)
+from flexbooster.present import outputs
+t = time.process_time()
+outputs.prepare_figures()
+prepare = time.process_time() - t
+names = sys.argv[3].split(",") if len(sys.argv) > 3 else list(outputs.figure_names(results))
+cpu = {}
+for name in names:
+    t = time.process_time()
+    outputs._figure_task(results, name)
+    cpu[name] = time.process_time() - t
+print(json.dumps({"prepare": prepare, "cpu": cpu}))
+"""
+
+
+def _child(src: Path, *args: str) -> dict:
+    env = dict(os.environ, PYTHONPATH=str(src), OPENBLAS_NUM_THREADS="1")
+    env.pop("PYTHONDONTWRITEBYTECODE", None)  # byte-compiled modules, as installed
+    out = subprocess.run([sys.executable, "-c", _CHILD, *args], env=env, check=True,
+                         capture_output=True, text=True).stdout
+    return json.loads(out) if out.strip() else {}
+
+
+def _best(into: dict, cpu: dict) -> None:
+    for name, t in cpu.items():
+        into[name] = min(into.get(name, float("inf")), t)
+
+
+def figures_against(baseline: str, repeat: int) -> None:
+    """Print the figures' CPU now and at ``baseline`` (one process; a fresh one per figure)."""
+    with tempfile.TemporaryDirectory() as tmp:
+        tmp = Path(tmp)
+        base = tmp / "baseline"
+        subprocess.run(["git", "-C", str(ROOT), "worktree", "add", "-q", "--detach", str(base),
+                        baseline], check=True)
+        try:
+            codes = {"baseline": base / "src", "now": ROOT / "src"}
+            for label, src in codes.items():
+                _child(src, "analyse", str(tmp / f"{label}.pkl"))
+            warm = {label: {} for label in codes}
+            fresh = {label: {} for label in codes}
+            prepare = dict.fromkeys(codes, float("inf"))
+            for _ in range(repeat):
+                for label, src in codes.items():  # alternating
+                    pkl = str(tmp / f"{label}.pkl")
+                    run = _child(src, "draw", pkl)
+                    _best(warm[label], run["cpu"])
+                    prepare[label] = min(prepare[label], run["prepare"])
+                    for name in run["cpu"]:
+                        _best(fresh[label], _child(src, "draw", pkl, name)["cpu"])
+        finally:
+            subprocess.run(["git", "-C", str(ROOT), "worktree", "remove", "--force", str(base)],
+                           check=False)
+    print(f"figures of the default case, CPU s of _figure_task (SVG + PNG), best of {repeat}, "
+          f"baseline {baseline}, load average {os.getloadavg()[0]:.2f}")
+    print(f"  {'figure':30s} {'one process':>22s} {'fresh process each':>26s}")
+    print(f"  {'':30s} {'baseline':>10s} {'now':>10s}   {'baseline':>10s} {'now':>10s}")
+    for name in warm["baseline"]:
+        print(f"  {name:30s} {warm['baseline'][name]:10.3f} {warm['now'].get(name, 0):10.3f}"
+              f"   {fresh['baseline'][name]:10.3f} {fresh['now'].get(name, 0):10.3f}")
+    for title, data in (("one process", warm), ("fresh process each", fresh)):
+        old, new = sum(data["baseline"].values()), sum(data["now"].values())
+        print(f"  total, {title:22s} baseline {old:6.3f}   now {new:6.3f}   "
+              f"now / baseline {new / old:5.3f} ({1 - new / old:.0%} less)")
+    print(f"  prepare_figures (import matplotlib): baseline {prepare['baseline']:.3f}   "
+          f"now {prepare['now']:.3f}")
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("--figures", action="store_true",
+                        help="the CPU of every figure now against --baseline")
+    parser.add_argument("--baseline", default="main", help="commit for --figures")
     args = parser.parse_args()
+    if args.figures:
+        figures_against(args.baseline, args.repeat)
+        return
     results = analyze(default_case())
     data = results.figures.campbell
     print(f"default case: {data.root_active.size} roots, {int(data.root_active.sum())} active, "

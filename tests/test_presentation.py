@@ -116,6 +116,54 @@ def test_maximum_of_nothing_is_a_dash_and_round_off_is_zero(results):
     assert re.search(r"max growth rate of psi\s+.\s+-\s", text)  # stable pitch: "-"
 
 
+def _drawn_tick_labels(axis) -> list:
+    """The visible tick labels of ``axis`` at a tick in its view (those matplotlib draws)."""
+    lo, hi = sorted(axis.get_transform().transform(axis.get_view_interval()))
+    tol = 1e-9 * (hi - lo)
+    labels = []
+    for tick in axis.get_major_ticks(len(axis.get_majorticklocs())):
+        at = float(axis.get_transform().transform([tick.get_loc()])[0])
+        if lo - tol <= at <= hi + tol:
+            labels += [t for t in (tick.label1, tick.label2) if t.get_visible() and t.get_text()]
+    return labels
+
+
+@pytest.mark.slow
+def test_figures_laid_out_once_keep_every_text_inside_and_apart(results):
+    # the figures are laid out once (present.plotting.layout.lay_out_once) and their titles
+    # and axis labels kept where that pass placed them: as drawn for the PNG, every text lies
+    # inside the figure, no axis label or title overlaps a tick label of its axes, and the
+    # figure has no layout engine left (the saves do not lay it out again)
+    from matplotlib.text import Text
+
+    from flexbooster.present.outputs import _render, figure_names, make_figures
+
+    for name in figure_names(results):
+        fig = make_figures(results, names=(name,))[name]
+        _render(fig)
+        assert fig.get_layout_engine() is None, name
+        renderer = fig.canvas.get_renderer()  # the PNG's (Agg, 120 dpi)
+        page = fig.bbox.padded(1.0)  # one pixel of rounding
+        axes = [a for ax in fig.axes for a in (ax, *ax.child_axes)]
+        ticks = {id(ax): [t for axis in (ax.xaxis, ax.yaxis) for t in _drawn_tick_labels(axis)]
+                 for ax in axes}
+        other = [t for t in fig.findobj(Text) if t.get_visible() and t.get_text().strip()
+                 and not any(t in a.xaxis.get_ticklabels(which="both")
+                             or t in a.yaxis.get_ticklabels(which="both") for a in axes)]
+        for text in [*other, *(t for labels in ticks.values() for t in labels)]:
+            box = text.get_window_extent(renderer)
+            assert (box.x0 >= page.x0 and box.y0 >= page.y0 and box.x1 <= page.x1
+                    and box.y1 <= page.y1), (name, text.get_text())
+        assert any(ticks.values()), name
+        for ax in fig.axes:
+            parts = [ax, *ax.child_axes]
+            boxes = [t.get_window_extent(renderer) for a in parts for t in ticks[id(a)]]
+            for label in (t for a in parts for t in (a.xaxis.label, a.yaxis.label, a.title)
+                          if t.get_visible() and t.get_text()):
+                box = label.get_window_extent(renderer).shrunk(0.98, 0.98)
+                assert not any(box.overlaps(b) for b in boxes), (name, label.get_text())
+
+
 @pytest.mark.slow
 def test_danger_map_tooltips_and_axes(results):
     # one SVG <title> per band, no script, Omega in Hz on the x axis

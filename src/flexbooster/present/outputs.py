@@ -38,6 +38,8 @@ __all__ = ["OUTPUT_STAGES", "write_outputs", "save_figure", "make_figures", "fig
 OUTPUT_STAGES = ("results.json and CSV", "figures", "report.html")
 #: The manifest of an output set, written last: every file of the set with its SHA-256.
 MANIFEST = "manifest.json"
+#: Resolution of the PNG files (dots per inch).
+_PNG_DPI = 120
 #: Prefix of the staging folder that :func:`write_outputs` makes inside the output folder.
 STAGING_PREFIX = ".flexbooster-staging-"
 
@@ -290,12 +292,17 @@ def render_figures(results: Results, *, workers: int = 1) -> dict[str, tuple[str
 def _render(fig) -> tuple[str, bytes]:
     """SVG text (reproducible ids) and PNG bytes of a figure.
 
-    The figure is laid out once by matplotlib's constrained layout (set here when the figure
-    has no layout engine) instead of ``bbox_inches="tight"``, which draws every figure twice.
+    The figure is laid out once (:func:`flexbooster.present.plotting.layout.lay_out_once`: its
+    layout engine, the package's tight layout for a figure without one, run once, the titles
+    fixed, the engine removed) instead of at each save (matplotlib lays a figure with a layout
+    engine out, and draws it without output, before every save), then drawn once for each
+    file.
     """
     import matplotlib
     import numpy as np
     from matplotlib.collections import LineCollection, QuadMesh
+
+    from .plotting.layout import lay_out_once
 
     for ax in fig.axes:  # dense meshes and line bundles as an embedded image: small, fast SVG
         for artist in ax.collections:  # (not the artists with a tooltip id: they stay vector)
@@ -305,14 +312,12 @@ def _render(fig) -> tuple[str, bytes]:
         for line in ax.lines:  # and every line with thousands of points or markers
             if (many or np.size(line.get_xdata()) > 2000) and line.get_gid() is None:
                 line.set_rasterized(True)
-    if fig.get_layout_engine() is None:
-        fig.set_layout_engine("constrained")
+    lay_out_once(fig, dpi=_PNG_DPI)  # measured by the renderer that draws the PNG
     with matplotlib.rc_context({"svg.hashsalt": "flexbooster"}):
         svg = _io.StringIO()
         fig.savefig(svg, format="svg", dpi=150, metadata={"Date": None})
-    fig.set_layout_engine("none")  # laid out by the first save: keep the positions
     png = _io.BytesIO()
-    fig.savefig(png, format="png", dpi=120)
+    fig.savefig(png, format="png", dpi=_PNG_DPI)
     return svg.getvalue(), png.getvalue()
 
 

@@ -7,15 +7,9 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
 from ...memo.charts import BandChart
+from .layout import new_axes
 
 __all__ = ["plot_band_chart"]
-
-
-def _axes(ax: Axes | None, figsize: tuple[float, float]) -> tuple[Figure, Axes]:
-    if ax is None:
-        fig = Figure(figsize=figsize, layout="constrained")
-        return fig, fig.add_subplot()
-    return ax.figure, ax
 
 
 def plot_band_chart(chart: BandChart, ax: Axes | None = None, *,
@@ -43,7 +37,7 @@ def plot_band_chart(chart: BandChart, ax: Axes | None = None, *,
     ----------
     Bolotin (1964), ch. 1 (regions in the (Omega, mu) plane); Tech Memo 104, 4.1-4.2.
     """
-    fig, ax = _axes(ax, (6.4, 4.8))
+    fig, ax = new_axes(ax, (6.4, 4.8))
     to_hz = 1.0 / (2.0 * np.pi)
     for i, reg in enumerate(chart.regions):
         x = np.concatenate([reg.omega_lo, reg.omega_hi[::-1]]) * to_hz

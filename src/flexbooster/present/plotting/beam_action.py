@@ -8,15 +8,9 @@ from matplotlib.colors import LogNorm
 from matplotlib.figure import Figure
 
 from ...memo.beam_action import StabilityChart
+from .layout import axes_with_colorbar
 
 __all__ = ["plot_stability_chart"]
-
-
-def _axes(ax: Axes | None, figsize: tuple[float, float]) -> tuple[Figure, Axes]:
-    if ax is None:
-        fig = Figure(figsize=figsize, layout="constrained")
-        return fig, fig.add_subplot()
-    return ax.figure, ax
 
 
 def plot_stability_chart(chart: StabilityChart, normalised: bool = True,
@@ -42,16 +36,16 @@ def plot_stability_chart(chart: StabilityChart, normalised: bool = True,
     ----------
     Bolotin (1964), ch. 3 (instability regions); Tech Memo 104, section 4.1.
     """
-    fig, ax = _axes(ax, (6.4, 4.8))
     x = chart.Omega / chart.omega_1 if normalised else chart.Omega
     growth = np.where(chart.stable, np.nan, chart.growth_rate)
     finite = growth[np.isfinite(growth)]
+    fig, ax, cax = axes_with_colorbar(ax, (6.4, 4.8), colorbar=bool(finite.size))
     if finite.size:
         lo = max(float(finite.min()), 1e-12)
         hi = max(float(finite.max()), lo * 10.0)
         mesh = ax.pcolormesh(x, chart.gamma, np.ma.masked_invalid(growth), shading="nearest",
                              norm=LogNorm(vmin=lo, vmax=hi), cmap="magma_r")
-        fig.colorbar(mesh, ax=ax, label="growth rate max |Im alpha| Omega (1/s)")
+        fig.colorbar(mesh, ax=ax, cax=cax, label="growth rate max |Im alpha| Omega (1/s)")
     else:
         ax.text(0.5, 0.5, f"stable at all {chart.stable.size} grid points", transform=ax.transAxes,
                 ha="center", va="center")

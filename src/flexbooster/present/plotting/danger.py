@@ -17,11 +17,15 @@ import numpy as np
 from matplotlib import colormaps
 from matplotlib.axes import Axes
 from matplotlib.cm import ScalarMappable
+from matplotlib.collections import PolyCollection
 from matplotlib.colors import Normalize
 from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
+from matplotlib.patches import Rectangle
 
 from ...danger import DangerBand, DangerSummary
 from .labels import plain_log_ticks, power_log_ticks
+from .layout import axes_with_colorbar
 
 __all__ = ["danger_map", "band_tooltip", "add_svg_titles",
            "SVG_TITLES_ATTRIBUTE"]
@@ -81,14 +85,12 @@ def danger_map(danger: DangerSummary, *, omega_1: float | None = None,
     ----------
     Tech Memo 104, secs. 4.1, 4.2, 7.3; Bolotin (1964), ch. 1-2.
     """
-    if ax is None:
-        fig = Figure(figsize=(9.0, 4.2), layout="constrained")
-        ax = fig.add_subplot()
-    else:
-        fig = ax.figure
+    bands = danger.bands
+    regions = [(n, b) for n, b in enumerate(bands) if b.growth_rate is not None]
+    stems = [(n, b) for n, b in enumerate(bands) if b.growth_rate is None]
+    fig, ax, cax = axes_with_colorbar(ax, (9.0, 4.2), colorbar=bool(regions))
     to_hz = 1.0 / (2.0 * math.pi)
     op_lo, op_hi = (v * to_hz for v in danger.operating_range)
-    bands = danger.bands
     lo_all = min([op_lo] + [b.hz[0] for b in bands if b.hz[0] > 0])
     hi_all = max([op_hi] + [b.hz[1] for b in bands])
     x_lo, x_hi = lo_all / 1.15, hi_all * 1.15
@@ -99,29 +101,34 @@ def danger_map(danger: DangerSummary, *, omega_1: float | None = None,
     ax.axvline(op_lo, color="0.4", lw=1.0, ls="--")
     ax.axvline(op_hi, color="0.4", lw=1.0, ls="--", label="operating range (edges)")
     titles: dict[str, str] = {}
-    regions = [(n, b) for n, b in enumerate(bands) if b.growth_rate is not None]
-    stems = [(n, b) for n, b in enumerate(bands) if b.growth_rate is None]
     g_max = max((b.growth_rate for _, b in regions), default=1.0) or 1.0
     norm = Normalize(0.0, g_max)
     cmap = colormaps["plasma_r"]
     factor = 10.0 ** _MIN_DECADES
+    shade = []  # each region's edges and colour, shaded faintly over the full height
     for n, b in regions:
         lo, hi = b.hz
         centre = math.sqrt(max(lo, 1e-300) * hi)
         if hi / max(lo, 1e-300) < factor:  # narrower than the eye sees: widen about the centre
             lo, hi = centre / math.sqrt(factor), centre * math.sqrt(factor)
-        patch = ax.bar(centre, b.growth_rate, width=hi - lo, bottom=0.0,
-                       color=cmap(norm(b.growth_rate)), lw=0)[0]
-        ax.axvspan(lo, hi, color=cmap(norm(b.growth_rate)), alpha=0.18, lw=0)
+        colour = cmap(norm(b.growth_rate))
         gid = f"danger-band-{n + 1}"
-        patch.set_gid(gid)
+        # the bar of ax.bar(centre, growth_rate, width=hi - lo): one patch, its own group
+        ax.add_patch(Rectangle((centre - 0.5 * (hi - lo), 0.0), hi - lo, b.growth_rate,
+                               facecolor=colour, lw=0, gid=gid))
+        shade.append(((lo, hi), colour))
         titles[gid] = band_tooltip(n + 1, b)
         if n < 5:
             ax.annotate(str(n + 1), (centre, b.growth_rate), xytext=(0, 3),
                         textcoords="offset points", ha="center", fontsize=8)
+    if shade:  # as ax.axvspan(lo, hi) each, in one artist under the bars
+        ax.add_collection(PolyCollection(
+            [[(lo, 0.0), (lo, 1.0), (hi, 1.0), (hi, 0.0)] for (lo, hi), _ in shade],
+            facecolors=[c for _, c in shade], alpha=0.18, lw=0, zorder=0.9,
+            transform=ax.get_xaxis_transform()), autolim=False)
     if regions:
         ax.set_ylim(0.0, g_max * 1.15)
-        fig.colorbar(ScalarMappable(norm=norm, cmap=cmap), ax=ax, pad=0.01,
+        fig.colorbar(ScalarMappable(norm=norm, cmap=cmap), ax=ax, cax=cax, pad=0.01,
                      label="growth rate (1/s)")
     else:
         ax.set_ylim(0.0, 1.0)
@@ -137,12 +144,12 @@ def danger_map(danger: DangerSummary, *, omega_1: float | None = None,
         ax2.set_ylim(sev_lo / 3.0, float(np.max(sev)) * 3.0)
         for (n, b), s in zip(stems, sev, strict=True):
             x = math.sqrt(max(b.hz[0], 1e-300) * b.hz[1])
-            line = ax2.vlines(x, sev_lo / 3.0, s, color="C2", lw=1.2)
-            dot = ax2.plot([x], [s], "o", color="C2", ms=4)[0]
             gid = f"danger-band-{n + 1}"
-            line.set_gid(gid)
-            dot.set_gid(gid + "-head")
-            titles[gid] = titles[gid + "-head"] = band_tooltip(n + 1, b)
+            # the stem and its head (a dot at the severity) in one line, one group
+            ax2.add_line(Line2D([x, x], [sev_lo / 3.0, s], color="C2", lw=1.2,
+                                solid_capstyle="butt", marker="o", ms=4, markevery=[1],
+                                gid=gid))
+            titles[gid] = band_tooltip(n + 1, b)
         power_log_ticks(ax2.yaxis)
         ax2.set_ylabel("resonance severity (memo 7; log)", color="C2")
     if omega_1 is not None and omega_1 > 0:

@@ -7,6 +7,8 @@ fraction of mathtext's parse and layout (about 1 s of CPU over the figures of a 
 
 from __future__ import annotations
 
+import math
+
 __all__ = ["subscript", "superscript", "plain_log_ticks", "power_log_ticks"]
 
 _SUB = str.maketrans("0123456789+-aeijklmnoprstuvx", "₀₁₂₃₄₅₆₇₈₉₊₋ₐₑᵢⱼₖₗₘₙₒₚᵣₛₜᵤᵥₓ")
@@ -49,23 +51,30 @@ def superscript(text: object) -> str:
     return str(text).translate(_SUP)
 
 
-def plain_log_ticks(axis) -> None:
+def plain_log_ticks(axis, *, minor_marks: bool = True) -> None:
     """Plain numbers ("0.5", "10", "200") on a logarithmic axis, no minor labels.
 
     Parameters
     ----------
     axis : matplotlib.axis.Axis
         E.g. ``ax.xaxis`` of an axes with a log scale.
+    minor_marks : bool
+        Draw the minor ticks as one artist of tick marks
+        (:class:`~flexbooster.present.plotting.ticks.MinorTickMarks`, no tick objects); False:
+        matplotlib's minor ticks (needed for grid lines at the minor ticks).
 
     Notes
     -----
-    Easier to read than 10^n and faster to draw (no mathtext layout).
+    Easier to read than 10^n and faster to draw (no mathtext layout).  Only the ticks in the
+    view are made (:func:`~flexbooster.present.plotting.ticks.in_view_log_locator`).
     """
-    from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
+    from matplotlib.ticker import FuncFormatter
 
-    axis.set_major_locator(LogLocator(base=10.0, subs=(1.0, 2.0, 5.0)))
+    from .ticks import in_view_log_locator, log_minor_ticks
+
+    axis.set_major_locator(in_view_log_locator(subs=(1.0, 2.0, 5.0)))
     axis.set_major_formatter(FuncFormatter(lambda v, _pos: f"{v:g}"))
-    axis.set_minor_formatter(NullFormatter())
+    log_minor_ticks(axis, marks=minor_marks)
 
 
 def power_log_ticks(axis) -> None:
@@ -75,10 +84,14 @@ def power_log_ticks(axis) -> None:
     ----------
     axis : matplotlib.axis.Axis
         E.g. ``ax2.yaxis`` of an axes with a log scale.
-    """
-    import math
 
-    from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
+    Notes
+    -----
+    The minor ticks are drawn as in :func:`plain_log_ticks`.
+    """
+    from matplotlib.ticker import FuncFormatter
+
+    from .ticks import in_view_log_locator, log_minor_ticks
 
     def label(v, _pos):
         if not (v > 0.0 and math.isfinite(v)):
@@ -86,6 +99,6 @@ def power_log_ticks(axis) -> None:
         e = math.log10(v)
         return f"10{superscript(round(e))}" if abs(e - round(e)) < 1e-9 else ""
 
-    axis.set_major_locator(LogLocator(base=10.0))
+    axis.set_major_locator(in_view_log_locator(subs=(1.0,)))
     axis.set_major_formatter(FuncFormatter(label))
-    axis.set_minor_formatter(NullFormatter())
+    log_minor_ticks(axis)

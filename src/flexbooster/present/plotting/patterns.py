@@ -16,6 +16,7 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 
 from ...memo.charts import NodalPattern
+from .layout import new_axes, new_figure
 
 __all__ = ["nodal_pattern", "nodal_patterns"]
 
@@ -39,11 +40,7 @@ def nodal_pattern(data: NodalPattern, ax: Axes | None = None) -> Figure:
     ----------
     Tech Memo 104, eqs. (5.3-2d), (5.3-3d), Fig. 4.
     """
-    if ax is None:
-        fig = Figure(figsize=(6.4, 3.4), layout="constrained")
-        ax = fig.add_subplot()
-    else:
-        fig = ax.figure
+    fig, ax = new_axes(ax, (6.4, 3.4))
     R, L = data.radius, data.half_length
     theta_edges = np.concatenate(([0.0], data.theta_nodes, [2.0 * np.pi]))
     ax.pcolormesh(data.s_nodes * L, theta_edges * R, data.sign, shading="flat",
@@ -78,7 +75,7 @@ def nodal_patterns(patterns: tuple[NodalPattern, ...] | list[NodalPattern]) -> F
     ----------
     Tech Memo 104, Fig. 4, eqs. (5.3-2d), (5.3-3d).
     """
-    fig = Figure(figsize=(7.0, 3.0 * len(patterns)), layout="constrained")
+    fig = new_figure((7.0, 3.0 * len(patterns)))
     axes = np.atleast_1d(fig.subplots(len(patterns), 1))
     for data, ax in zip(patterns, axes, strict=True):
         nodal_pattern(data, ax=ax)

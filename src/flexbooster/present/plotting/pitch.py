@@ -8,15 +8,9 @@ from matplotlib.figure import Figure
 
 from ...memo.charts import InceStruttData
 from .labels import subscript as _sub
+from .layout import new_axes
 
 __all__ = ["ince_strutt_chart", "beta_comparison_plot"]
-
-
-def _axes(ax: Axes | None, figsize: tuple[float, float]) -> tuple[Figure, Axes]:
-    if ax is None:
-        fig = Figure(figsize=figsize, layout="constrained")
-        return fig, fig.add_subplot()
-    return ax.figure, ax
 
 
 def ince_strutt_chart(data: InceStruttData, ax: Axes | None = None, *,
@@ -45,7 +39,7 @@ def ince_strutt_chart(data: InceStruttData, ax: Axes | None = None, *,
     ----------
     Abramowitz & Stegun (1964), fig. 20.1; Tech Memo 104, eqs. (4.2-3)..(4.2-5).
     """
-    fig, ax = _axes(ax, (6.4, 4.8))
+    fig, ax = new_axes(ax, (6.4, 4.8))
     q, curves = data.q, data.curves
     a_lo = min(-0.2, float(np.min(data.a_path)) - 0.1)
     a_hi = max(1.5, float(np.max(data.a_path)) * 1.1)
@@ -125,7 +119,7 @@ def beta_comparison_plot(q: np.ndarray, errors: dict, ax: Axes | None = None) ->
     ----------
     Tech Memo 104, eq. (4.2-9); reading guide erratum E4; A&S (1964) 20.3.15.
     """
-    fig, ax = _axes(ax, (5.6, 4.2))
+    fig, ax = new_axes(ax, (5.6, 4.2))
     q = np.asarray(q, dtype=float)
     q_max = float(q.max())
     for i, (a, (corr, printed)) in enumerate(errors.items()):

@@ -6,6 +6,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from ...memo.responses import SimulationResult
+from .layout import new_axes
 
 __all__ = ["modal_amplitudes", "deformed_booster", "mode_names", "mode_verdicts",
            "GROWTH_RATIO"]
@@ -84,11 +85,7 @@ def modal_amplitudes(result: SimulationResult, top: int = 8, ax=None) -> Figure:
     """
     if int(top) < 1:
         raise ValueError(f"top = {top!r}: must be >= 1")
-    if ax is None:
-        fig = Figure(figsize=(9, 4.5), layout="constrained")
-        ax = fig.add_subplot(1, 1, 1)
-    else:
-        fig = ax.figure
+    fig, ax = new_axes(ax, (9, 4.5))
     L = result.params.L
     if result.amplitude.shape[0]:
         peak = np.abs(result.amplitude).max(axis=1)
@@ -138,11 +135,7 @@ def deformed_booster(result: SimulationResult, instant: int = -1, scale: float |
     snaps = result.snapshots
     if not snaps or len(snaps["index"]) == 0:
         raise ValueError("result: has no snapshots (simulate with n_snapshots >= 1)")
-    if ax is None:
-        fig = Figure(figsize=(9, 3.5))
-        ax = fig.add_subplot(1, 1, 1)
-    else:
-        fig = ax.figure
+    fig, ax = new_axes(ax, (9, 3.5))
     p = result.params
     xi, th = np.asarray(snaps["xi"]), np.asarray(snaps["theta"])
     u, w = np.asarray(snaps["u"])[instant], np.asarray(snaps["w"])[instant]

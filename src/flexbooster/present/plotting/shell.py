@@ -7,6 +7,7 @@ from matplotlib.figure import Figure
 
 from ...memo.shell import ShellFrequencies
 from .labels import plain_log_ticks
+from .layout import new_axes
 
 __all__ = ["frequency_curves"]
 
@@ -52,11 +53,7 @@ def frequency_curves(
               "omega_bar": "ω/ω₁ (units of ω₁)"}
     if unit not in labels:
         raise ValueError(f"unit = {unit!r}: must be one of {tuple(labels)}")
-    if ax is None:
-        fig = Figure(figsize=(7.0, 5.0))
-        ax = fig.add_subplot()
-    else:
-        fig = ax.figure
+    fig, ax = new_axes(ax, (7.0, 5.0))
     values = getattr(table, unit)
     sel = (table.cylinder == cylinder) & (table.branch == branch) & (table.j >= 1)
     for j in np.unique(table.j[sel]):
@@ -64,7 +61,7 @@ def frequency_curves(
         rows = rows[np.argsort(table.k[rows])]
         ax.plot(table.k[rows], values[rows], marker="o", ms=2.5, lw=0.9, label=f"j = {j}")
     ax.set_yscale("log")
-    plain_log_ticks(ax.yaxis)
+    plain_log_ticks(ax.yaxis, minor_marks=False)  # the grid lines at the minor ticks too
     ax.set_xlabel("circumferential wave number k")
     ax.set_ylabel(labels[unit])
     ax.set_title(f"cylinder {cylinder}, branch {branch} ({table.method})")

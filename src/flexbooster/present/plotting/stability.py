@@ -8,6 +8,7 @@ from matplotlib.figure import Figure
 
 from ...memo.charts import CampbellData
 from .labels import plain_log_ticks
+from .layout import new_axes
 
 __all__ = ["campbell_diagram"]
 
@@ -48,11 +49,7 @@ def campbell_diagram(data: CampbellData, ax=None, *, significant=None) -> Figure
     ----------
     Tech Memo 104, eqs. (7.3-1)..(7.3-35).
     """
-    if ax is None:
-        fig = Figure(figsize=(9.0, 5.6), layout="constrained")
-        ax = fig.add_subplot()
-    else:
-        fig = ax.figure
+    fig, ax = new_axes(ax, (9.0, 5.6))
     mask = data.root_active if significant is None else np.asarray(significant, dtype=bool)
     if mask.shape != data.root_active.shape:
         raise ValueError(f"significant.shape = {mask.shape}: must be {data.root_active.shape}")

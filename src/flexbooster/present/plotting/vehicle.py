@@ -12,6 +12,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from ...shell_of_revolution.survey import ModeShapeViews
+from .layout import new_figure
 
 __all__ = ["meridian_shapes", "unrolled_modes"]
 
@@ -36,7 +37,7 @@ def meridian_shapes(views: ModeShapeViews) -> Figure:
     ks = [int(k) for k in views.harmonics]
     ncol = min(2, max(1, len(ks)))
     nrow = max(1, math.ceil(len(ks) / ncol))
-    fig = Figure(figsize=(5.0 * ncol, 2.6 * nrow))
+    fig = new_figure((5.0 * ncol, 2.6 * nrow))
     for n, kk in enumerate(ks):
         ax = fig.add_subplot(nrow, ncol, n + 1)
         ax.plot(views.x, views.r, "--", color="0.6", lw=1.0, label="undeformed")
@@ -68,7 +69,7 @@ def unrolled_modes(views: ModeShapeViews) -> Figure:
         One panel per mode, red w > 0, blue w < 0, theta in degrees across, s along.
     """
     n = max(1, views.unrolled_index.size)
-    fig = Figure(figsize=(3.2 * n, 3.6))
+    fig = new_figure((3.2 * n, 3.6))
     for j in range(views.unrolled_index.size):
         ax = fig.add_subplot(1, n, j + 1)
         field = views.w[j]
@@ -79,5 +80,7 @@ def unrolled_modes(views: ModeShapeViews) -> Figure:
         ax.set_xlabel("theta (deg)", fontsize=8)
         ax.set_ylabel("meridian s from aft edge (m)", fontsize=8)
         ax.tick_params(labelsize=7)
-    fig.suptitle("Vehicle modes on the unrolled surface: normal displacement w", fontsize=10)
+    title = "Vehicle modes on the unrolled surface: normal displacement w"
+    # one panel is narrower than the title: two lines (else its ends are cut off)
+    fig.suptitle(title if n > 1 else title.replace(": ", ":\n"), fontsize=10)
     return fig

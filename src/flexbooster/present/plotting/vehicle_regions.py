@@ -15,8 +15,8 @@ from matplotlib.figure import Figure
 
 from ...memo.charts import VEHICLE_CHART_GAMMA_MAX
 from ...vehicle import VehicleRegions
-from .bands import _axes
 from .labels import plain_log_ticks
+from .layout import axes_with_colorbar
 
 __all__ = ["vehicle_region_chart"]
 
@@ -57,7 +57,7 @@ def vehicle_region_chart(regions: VehicleRegions, ax: Axes | None = None) -> Fig
     ----------
     Bolotin (1964), ch. 1 (regions in the (Omega, mu) plane), sec. 6 (damping).
     """
-    fig, ax = _axes(ax, (6.4, 4.8))
+    fig, ax, cax = axes_with_colorbar(ax, (6.4, 4.8), colorbar=bool(regions.regions))
     growth = {_key(r.k, r.kind, r.order, tuple(m.index for m in r.modes)): r.growth_rate_max
               for r in regions.regions}
     g_max = max(growth.values(), default=0.0)
@@ -81,7 +81,7 @@ def vehicle_region_chart(regions: VehicleRegions, ax: Axes | None = None) -> Fig
         rates = np.array([r.growth_rate_max for r in regions.regions])
         ax.scatter(xs, np.full(xs.size, gamma), c=cmap.to_rgba(rates), s=22, ec="k", lw=0.4,
                    zorder=3, label="regions at the case's gamma")
-        fig.colorbar(cmap, ax=ax, label="largest growth rate at the case's gamma (1/s)")
+        fig.colorbar(cmap, ax=ax, cax=cax, label="largest growth rate at the case's gamma (1/s)")
     if not regions.curves and not regions.regions:
         ax.text(0.5, 0.5, f"no instability region in the range up to gamma = "
                 f"{_top(regions):.3g}\n(damping ratio {regions.damping_ratio:g})",

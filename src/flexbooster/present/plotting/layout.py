@@ -1,0 +1,171 @@
+"""The figures' layout: made once per figure, before the SVG and the PNG are drawn.
+
+Every figure of this package is made by :func:`new_figure` with a tight layout engine
+(matplotlib's ``tight_layout``: the axes fitted to their labels in one measuring pass), and its
+colour bar, if any, in a column of its own (:func:`axes_with_colorbar`), so that the engine
+places it beside every label of the axes (a twin axis' labels too).  A figure saved directly
+(``fig.savefig``) is laid out by that engine as usual.
+
+:func:`lay_out_once` (used by :func:`flexbooster.present.outputs._render`) runs the engine once,
+fixes the titles where matplotlib placed them and removes the engine: the SVG and the PNG are
+then drawn once each, without the layout pass and the title placement that each save would
+otherwise repeat (about half of the CPU of the figures of a default run; benchmarks/README.md,
+``bench_presentation.py``).
+"""
+
+from __future__ import annotations
+
+from matplotlib.axes import Axes
+from matplotlib.figure import Figure
+from matplotlib.layout_engine import TightLayoutEngine
+
+__all__ = ["new_figure", "new_axes", "axes_with_colorbar", "lay_out_once",
+           "LAYOUT_PAD", "SUBPLOT_PAD", "COLORBAR_WIDTH"]
+
+#: Space between the labels and the figure's edge, in units of the font size (matplotlib's
+#: default 1.08 is a wide frame; this is about the 3 pt of constrained layout).
+LAYOUT_PAD = 0.3
+#: Space between the labels of neighbouring axes (and an axes and its colour bar), in units of
+#: the font size.
+SUBPLOT_PAD = 1.0
+#: Width of a colour bar as a fraction of the width of its axes (matplotlib's colour bar of
+#: aspect 20 beside an axes about as high as a third of its width).
+COLORBAR_WIDTH = 0.025
+
+
+def _engine() -> TightLayoutEngine:
+    # rect=None: one measuring pass (the default rect, the whole figure, makes a second one
+    # that only respects that rect)
+    return TightLayoutEngine(pad=LAYOUT_PAD, h_pad=SUBPLOT_PAD, w_pad=SUBPLOT_PAD, rect=None)
+
+
+def new_figure(figsize: tuple[float, float]) -> Figure:
+    """A figure of ``figsize`` inches with the package's tight layout engine.
+
+    Parameters
+    ----------
+    figsize : tuple of float
+        Width and height (in).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    return Figure(figsize=figsize, layout=_engine())
+
+
+def new_axes(ax: Axes | None, figsize: tuple[float, float]) -> tuple[Figure, Axes]:
+    """``ax`` and its figure, or a new figure (:func:`new_figure`) with one axes.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes or None
+        Axes to draw on; a new figure is made when None.
+    figsize : tuple of float
+        Size of the new figure (in).
+
+    Returns
+    -------
+    tuple of (matplotlib.figure.Figure, matplotlib.axes.Axes)
+    """
+    if ax is None:
+        fig = new_figure(figsize)
+        return fig, fig.add_subplot()
+    return ax.figure, ax
+
+
+def axes_with_colorbar(ax: Axes | None, figsize: tuple[float, float], *,
+                       colorbar: bool = True) -> tuple[Figure, Axes, Axes | None]:
+    """Axes and, for a new figure, the axes of its colour bar in a column to the right.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes or None
+        Axes to draw on; a new figure is made when None.
+    figsize : tuple of float
+        Size of the new figure (in).
+    colorbar : bool
+        False: no colour bar (the new figure has the axes alone).
+
+    Returns
+    -------
+    tuple of (matplotlib.figure.Figure, matplotlib.axes.Axes, matplotlib.axes.Axes or None)
+        The figure, the axes and the colour bar's axes (``Figure.colorbar(..., cax=cax)``);
+        None for a given ``ax`` (then ``Figure.colorbar(..., ax=ax)`` takes the space from it)
+        or without a colour bar.
+    """
+    if ax is not None or not colorbar:
+        return (*new_axes(ax, figsize), None)
+    fig = new_figure(figsize)
+    ax, cax = fig.subplots(1, 2, width_ratios=(1.0, COLORBAR_WIDTH))
+    return fig, ax, cax
+
+
+def lay_out_once(fig: Figure, dpi: float | None = None) -> None:
+    """Lay ``fig`` out once and remove its layout engine (the axes keep their places).
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+        A figure of this package (a tight layout engine), or any figure: one without an engine
+        gets the package's tight layout, one with another engine (e.g. constrained layout) is
+        laid out by it.
+    dpi : float, optional
+        Resolution (dots per inch) at which the figure will be saved as PNG: the figure's
+        ``dpi`` is set to it and the layout measured with the Agg renderer that the PNG's save
+        then reuses, with the text sizes measured here (matplotlib caches them per renderer).
+
+    Notes
+    -----
+    The tight layout measures each axes as drawn, which places its title (above the tick
+    labels of a secondary or top axis) and its axis labels (beside the tick labels), then moves
+    the axes.  Those places are kept, as the same distances (in pixels) from the moved axes'
+    edges, so that the saves do not measure the axes again for them at every draw
+    (matplotlib's ``Axis.set_label_coords``; a title given its height).  Positions are
+    fractions of the axes, the same at the SVG's and the PNG's resolution.  An axes that the
+    engine does not measure (not in a grid of subplots; a secondary axis) keeps the automatic
+    placement, and so does every axes of a figure with another engine.
+    """
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    engine = fig.get_layout_engine()
+    if engine is None:
+        engine = _engine()
+    if dpi is not None:
+        fig.dpi = dpi
+    FigureCanvasAgg(fig)
+    measured = [ax for ax in fig.axes if ax.get_subplotspec() is not None]
+    before = {ax: ax.get_window_extent().frozen() for ax in measured}  # pixels
+    engine.execute(fig)
+    fig.set_layout_engine(None)
+    if isinstance(engine, TightLayoutEngine):
+        for ax in measured:
+            _keep_label_places(ax, before[ax])
+
+
+def _keep_label_places(ax: Axes, before) -> None:
+    """Fix the title and axis labels of ``ax`` at their distances from its edges, as placed
+    by the layout's measuring pass when the axes had the extent ``before`` (pixels)."""
+    after = ax.get_window_extent()
+    if before.width <= 0 or before.height <= 0 or after.width <= 0 or after.height <= 0:
+        return
+    titles = [t for t in (ax.title, getattr(ax, "_left_title", None),
+                          getattr(ax, "_right_title", None)) if t is not None]
+    if hasattr(ax, "_autotitlepos") and ax._autotitlepos:  # private: skip if it is gone
+        for title in titles:  # y is a fraction of the axes' height, the pad in points
+            title.set_y(1.0 + (title.get_position()[1] - 1.0) * before.height / after.height)
+        ax._autotitlepos = False
+    for axis, pos in ((ax.xaxis, ax.xaxis.get_label_position()),
+                      (ax.yaxis, ax.yaxis.get_label_position())):
+        label = axis.label
+        if not (label.get_visible() and label.get_text()):
+            continue
+        x, y = label.get_position()  # one coordinate a fraction, the other one in pixels
+        if pos == "bottom":
+            axis.set_label_coords(x, (y - before.y0) / after.height)
+        elif pos == "top":
+            axis.set_label_coords(x, 1.0 + (y - before.y1) / after.height)
+        elif pos == "left":
+            axis.set_label_coords((x - before.x0) / after.width, y)
+        elif pos == "right":
+            axis.set_label_coords(1.0 + (x - before.x1) / after.width, y)
