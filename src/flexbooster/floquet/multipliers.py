@@ -40,6 +40,9 @@ __all__ = [
 ]
 
 _MAX_STEPS = 200_000  # default cap on steps per integrated period (half period when C = 0)
+#: Bytes of the work arrays of one block of points of the modal Lawson march (1 MiB: within
+#: the L2 cache of one core of current x86 and ARM processors, 1-2 MiB).
+_MODAL_BLOCK_BYTES = 1 << 20
 
 
 class StepLimitError(ValueError):
@@ -468,8 +471,11 @@ def _half_maps(system: LinearPeriodicSystem, om: np.ndarray, steps: np.ndarray,
     out = np.empty((om.size, 2 * n, 2 * n), dtype=complex)
     if system.Bt is not None:
         order = np.argsort(-steps, kind="stable")
-        for start in range(0, order.size, chunk):
-            sel = order[start:start + chunk]
+        # blocks of points whose work arrays (10 of n x 2n per point, 8 bytes each) stay in
+        # a core's cache: a step of 256 points at n = 11 takes 15 % longer per point
+        block = max(1, min(chunk, _MODAL_BLOCK_BYTES // (160 * n * n)))
+        for start in range(0, order.size, block):
+            sel = order[start:start + block]
             out[sel] = _half_modal(system, om[sel], steps[sel])
         return _finite(out, om)
     steps = _merge_steps(steps, n)
