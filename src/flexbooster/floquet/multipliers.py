@@ -366,7 +366,13 @@ def _lawson_modal(z, Bt, phase, n_steps, c1, s1, m1, c2, s2, hh):
     force = f[k2 + np.array([0, 0, 0, 1, 1, 1, 2])][:, :, None, :, None]
     cf = np.stack(np.broadcast_arrays(0.5 * hh * s2, h6 * s1, h6 * c1, hh * s2,
                                       2.0 * h6 * s2, 2.0 * h6 * c2, h6))
-    cm1, sc1 = np.stack([c1, m1]), np.stack([s1, c1])  # E(h) = [[c1, s1], [m1, c1]]
+    # the steady propagators E(h/2) (position row) and E(h) = [[c1, s1], [m1, c1]] over the
+    # 2n columns: a product of equal shapes is a single loop, a broadcast one a loop per
+    # (mode, point)
+    full = (z.shape[1], z.shape[2], z.shape[3])
+    c2, s2 = np.broadcast_to(c2, full).copy(), np.broadcast_to(s2, full).copy()
+    cm1 = np.broadcast_to(np.stack([c1, m1]), z.shape).copy()
+    sc1 = np.broadcast_to(np.stack([s1, c1]), z.shape).copy()
     bufs = None
     for k in range(steps):  # Lawson (1967) integrating-factor RK4
         q = p
@@ -377,7 +383,8 @@ def _lawson_modal(z, Bt, phase, n_steps, c1, s1, m1, c2, s2, hh):
             p = q
             z = np.ascontiguousarray(z[:, :, :p])
             force, cf, cm1, sc1 = (a[..., :p, :] for a in (force, cf, cm1, sc1))
-            c2, s2 = c2[:, :p], s2[:, :p]
+            c2, s2 = np.ascontiguousarray(c2[:, :p]), np.ascontiguousarray(s2[:, :p])
+            cm1, sc1 = np.ascontiguousarray(cm1), np.ascontiguousarray(sc1)
             bufs = None
         if bufs is None:  # views of the work arrays of this batch (they are updated in place)
             a = np.empty(cf.shape, dtype=np.result_type(cf, force))
@@ -471,9 +478,9 @@ def _half_maps(system: LinearPeriodicSystem, om: np.ndarray, steps: np.ndarray,
     out = np.empty((om.size, 2 * n, 2 * n), dtype=complex)
     if system.Bt is not None:
         order = np.argsort(-steps, kind="stable")
-        # blocks of points whose work arrays (10 of n x 2n per point, 8 bytes each) stay in
+        # blocks of points whose work arrays (16 of n x 2n per point, 8 bytes each) stay in
         # a core's cache: a step of 256 points at n = 11 takes 15 % longer per point
-        block = max(1, min(chunk, _MODAL_BLOCK_BYTES // (160 * n * n)))
+        block = max(1, min(chunk, _MODAL_BLOCK_BYTES // (256 * n * n)))
         for start in range(0, order.size, block):
             sel = order[start:start + block]
             out[sel] = _half_modal(system, om[sel], steps[sel])
