@@ -351,8 +351,11 @@ def _lawson_modal(z, Bt, phase, n_steps, c1, s1, m1, c2, s2, hh):
     of stage i is f_i Bt y (f_i = -cos(Omega t_i) per point): the products Bt y are kept and
     f_i goes into the (mode, point) coefficients.  The loop is bound by the number of array
     operations per step, so eta and eta' are updated together where their coefficients
-    differ only (E(h) z, the final sum), k2 and k3 are one GEMM, the cosines of every step
-    are taken at once and the seven coefficient-force products of a step are one product.
+    differ only (E(h) z, the final sum), k2 and k3 are one matmul call, the cosines of every
+    step are taken at once and the seven coefficient-force products of a step are one
+    product; the step-independent coefficients are stored over the 2n columns.  Each
+    operation is the one of the step written out (same operands, same order): the results do
+    not depend on this arrangement, nor on the batch a point is in.
     """
     out = np.empty_like(z)
     n, p = z.shape[1], z.shape[2]  # p: the points still integrating
@@ -382,9 +385,8 @@ def _lawson_modal(z, Bt, phase, n_steps, c1, s1, m1, c2, s2, hh):
             out[:, :, q:p] = z[:, :, q:p]
             p = q
             z = np.ascontiguousarray(z[:, :, :p])
-            force, cf, cm1, sc1 = (a[..., :p, :] for a in (force, cf, cm1, sc1))
-            c2, s2 = np.ascontiguousarray(c2[:, :p]), np.ascontiguousarray(s2[:, :p])
-            cm1, sc1 = np.ascontiguousarray(cm1), np.ascontiguousarray(sc1)
+            force, cf = force[..., :p, :], cf[..., :p, :]
+            c2, s2, cm1, sc1 = (np.ascontiguousarray(a[..., :p, :]) for a in (c2, s2, cm1, sc1))
             bufs = None
         if bufs is None:  # views of the work arrays of this batch (they are updated in place)
             a = np.empty(cf.shape, dtype=np.result_type(cf, force))
