@@ -183,3 +183,26 @@ def test_oversized_stability_table_becomes_a_warning(case_dict, monkeypatch):
     assert res.stability is None
     codes = [w["code"] for w in res.to_dict()["warnings"]]
     assert codes == ["stability-skipped"]
+
+
+def test_harmonics_left_out_are_one_warning_per_kind():
+    """A case over its budget can leave out dozens of harmonics: one warning per (code,
+    field) names them all as ranges and quotes the first reason; a single one stays as it
+    is (analysis._merged_warnings)."""
+    from flexbooster.analysis import _merged_warnings
+    from flexbooster.errors import AnalysisWarning
+
+    def budget(k):
+        return AnalysisWarning("vehicle-regions-budget", "max_seconds",
+                               f"max_seconds = 1: harmonic k = {k} not searched, estimated at 2 s")
+
+    limit = AnalysisWarning("vehicle-regions-skipped", "thrust.omega_min",
+                            "thrust.omega_min = 1: harmonic k = 19 not searched, max_steps")
+    merged = _merged_warnings([budget(k) for k in (2, 3, 4, 7, 9, 10)] + [limit])
+    assert merged[1] == limit
+    assert (merged[0].code, merged[0].field) == ("vehicle-regions-budget", "max_seconds")
+    assert merged[0].message == (
+        "6 harmonics left out (k = 2-4, 7, 9-10); the first, max_seconds = 1: harmonic k = 2 "
+        "not searched, estimated at 2 s; each one's reason is in vehicle_regions.skipped of "
+        "results.json")
+    assert _merged_warnings([budget(5)]) == [budget(5)]

@@ -242,6 +242,30 @@ def test_monodromy_against_solve_ivp_full_period(Omega_bar):
     np.testing.assert_allclose(got, ref, rtol=0, atol=1e-8)
 
 
+@pytest.mark.parametrize("mu", [np.array([0.05, 0.9, 6.7, 27.2]),  # stable steady modes
+                                np.array([-0.3, 1.0, 4.0])])  # one divergent: complex march
+def test_monodromy_march_of_a_batch_is_that_of_each_point_alone(mu, monkeypatch):
+    """The Lawson march advances a batch of points with different step counts together, one
+    segment of steps at a time (the force coefficients of a segment computed at once); each
+    point's half-period map must be the one of the point marched alone, for any segment
+    length, to round-off (1e-13 of the largest entry)."""
+    rng = np.random.default_rng(7)
+    n = mu.size
+    Bt = rng.standard_normal((n, n))
+    Ob = np.array([0.3, 0.7, 1.1, 2.9, 4.0])
+    gam = np.array([0.6, 0.2, 0.5, 0.4, 0.1])
+    steps = np.array([40, 40, 17, 9, 3])  # descending, as _multipliers orders them
+    batch = beam_action._monodromy_half(mu, Bt, Ob, gam, steps)
+    alone = np.concatenate([beam_action._monodromy_half(mu, Bt, Ob[i:i + 1], gam[i:i + 1],
+                                                        steps[i:i + 1]) for i in range(5)])
+    monkeypatch.setattr(beam_action, "_SEGMENT_STEPS", 4)  # segments cut inside each count
+    short = beam_action._monodromy_half(mu, Bt, Ob, gam, steps)
+    assert np.iscomplexobj(batch) == bool(np.any(mu < 0))
+    scale = np.abs(alone).max()
+    np.testing.assert_allclose(batch, alone, rtol=0, atol=1e-13 * scale)
+    np.testing.assert_allclose(short, alone, rtol=0, atol=1e-13 * scale)
+
+
 def test_hill_check_given_or_computed_elsewhere_is_the_one_computed_here():
     """beam_action_analysis(hill=...): the Hill check computed in a worker (flexbooster run)
     must give the same hill_monodromy_difference as the check computed inside, bit for bit

@@ -140,6 +140,21 @@ def test_analysis_and_files_are_the_same_with_workers(small_case, tmp_path):
 
 
 @pytest.mark.skipif(not PARALLEL, reason="no fork on this platform")
+def test_files_without_figures_are_the_same_with_workers(small_case, tmp_path):
+    """``run --no-figures``: the workers are free, and one writes the stability table's CSV
+    while this process writes results.json: the same bytes as one process writing both."""
+    results = analysis.analyze(small_case, workers=1, figures=False)
+    write_outputs(results, tmp_path / "one", figures=False, workers=1)
+    write_outputs(results, tmp_path / "two", figures=False, workers=2)
+    files = sorted(p.name for p in (tmp_path / "one").iterdir())
+    assert "unstable-frequencies.csv" in files
+    assert files == sorted(p.name for p in (tmp_path / "two").iterdir())
+    for name in files:
+        assert (tmp_path / "one" / name).read_bytes() == (tmp_path / "two" / name).read_bytes()
+    assert not multiprocessing.active_children()
+
+
+@pytest.mark.skipif(not PARALLEL, reason="no fork on this platform")
 def test_one_pool_shared_by_the_analysis_and_the_files(small_case, tmp_path):
     """flexbooster run's arrangement: one TaskPool for analyze and write_outputs (the
     figures drawn by workers forked before the results existed, which reach them by pickle),

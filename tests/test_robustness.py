@@ -1439,18 +1439,21 @@ def test_fuzz_reproducer_vehicle_regions_past_the_candidate_limit():
     6,350 rad/s) over Omega = 3.7..5.6 rad/s has 257,595-321,616 resonance candidates per
     harmonic, past the Floquet toolkit's 200,000: its ValueError ended the run (exit 1).  Now
     the toolkit raises TooManyCandidatesError and each harmonic is named as not searched
-    (vehicle-regions-skipped, field thrust.omega_min); the verdict is not "stable"."""
+    (vehicle-regions-skipped, field thrust.omega_min: one warning naming all 20, the reason
+    of each in ``skipped``); the verdict is not "stable"."""
     from flexbooster.floquet import TooManyCandidatesError
     from flexbooster.present.rows import vehicle_region_verdict
 
     assert issubclass(TooManyCandidatesError, ValueError)
     case = flexbooster.load_case(_FUZZ_CANDIDATES)
     found, warns = analysis._vehicle_regions_stage(case, boundaries=False)
-    assert len(warns) == 20 and found.regions == ()  # k = 1..20 (the memo vehicle's k_max)
-    for k, w in enumerate(warns, start=1):
-        assert (w.code, w.field) == ("vehicle-regions-skipped", "thrust.omega_min")
-        assert f"harmonic k = {k} not searched" in w.message and "candidates" in w.message
-        assert "\n" not in w.message
+    assert len(found.skipped) == 20 and found.regions == ()  # k = 1..20 (memo vehicle)
+    for k, why in enumerate(found.skipped, start=1):
+        assert f"harmonic k = {k} not searched" in why and "candidates" in why
+    (w,) = warns  # merged: one line for the 20, not 20 warnings burying the others
+    assert (w.code, w.field) == ("vehicle-regions-skipped", "thrust.omega_min")
+    assert w.message.startswith("20 harmonics left out (k = 1-20); the first, ")
+    assert "harmonic k = 1 not searched" in w.message and "\n" not in w.message
     text, stable = vehicle_region_verdict(types.SimpleNamespace(vehicle_regions=found))
     assert not stable and text.startswith("unknown")
 
@@ -1516,7 +1519,10 @@ def test_fuzz_reproducer_vehicle_regions_past_the_step_limit():
     assert len(steps) == 1 and (steps[0].code, steps[0].field) == (
         "vehicle-regions-skipped", "thrust.omega_min")
     assert "harmonic k = 19 not searched" in steps[0].message and "\n" not in steps[0].message
-    assert found is not None and len(warns) == 50  # every other harmonic: over the budget
+    # every other harmonic is over the budget: 49 named in one warning (not 49 warnings)
+    assert found is not None and len(found.skipped) == 50 and len(warns) == 2
+    (budget,) = [w for w in warns if w.code == "vehicle-regions-budget"]
+    assert budget.message.startswith("49 harmonics left out (k = 1-18, 20-50); the first, ")
 
 
 def test_a_truncation_past_the_band_search_limits_is_a_case_error():

@@ -21,7 +21,7 @@ from scipy.integrate import solve_ivp
 
 import flexbooster
 from flexbooster.case import default_case_text
-from flexbooster.memo.beam_action import beam_system, hill_exponents
+from flexbooster.memo.beam_action import beam_system, hill_exponents, loaded_frequencies
 from flexbooster.memo.responses import (
     excitation_parameters,
     make_excitation,
@@ -342,6 +342,26 @@ def test_floquet_vectors_against_hill_eigenvectors(small):
                                         res.model.gamma, 3, kappa_max=kappa)
             assert_close(np.abs(C), ref, rtol=0, atol=1e-6, source="Hill eigenvectors (4.1-12)")
             assert_close(mu_got, mu, rtol=1e-9, source="Hill exponents (from mu (1 + 1e-6))")
+
+
+def test_floquet_vectors_of_one_harmonic_per_point_are_those_of_the_full_solution(small):
+    """floquet_vectors(s=...) (what root_severity asks for: C^(s) of each root only) returns
+    the rows C[p, s_p + S] of the full solution, bit for bit, on both paths (first order and
+    exact), and refuses a harmonic beyond S."""
+    res, _ = small
+    system = beam_system(res.model, 4)
+    ob = np.array([20.0, 150.0, 700.0, 1900.0, 2400.0]) / res.omega_1
+    mu = loaded_frequencies(system).real[[0, 1, 2, 1, 0]] * (1 + 1e-6)  # alpha Omega_bar
+    s = np.array([0, -3, 2, 3, -1])
+    for kappa in (1e-4, 0.0):
+        C, mu_full = floquet_vectors(system.A0, system.B, mu, ob, res.model.gamma, 3,
+                                     kappa_max=kappa)
+        Cs, mu_s = floquet_vectors(system.A0, system.B, mu, ob, res.model.gamma, 3,
+                                   kappa_max=kappa, s=s)
+        np.testing.assert_array_equal(Cs, C[np.arange(s.size), s + 3])
+        np.testing.assert_array_equal(mu_s, mu_full)
+    with pytest.raises(ValueError, match="s: must be integers"):
+        floquet_vectors(system.A0, system.B, mu, ob, res.model.gamma, 2, s=s)
 
 
 def test_exact_limits_and_scalings(small):

@@ -18,6 +18,7 @@ memo-table roots that fall inside each region (:func:`memo_roots_in_regions`).
 from __future__ import annotations
 
 import dataclasses
+import re
 from collections.abc import Callable
 
 import numpy as np
@@ -481,9 +482,10 @@ def vehicle_warnings(survey: VehicleSurvey) -> list[AnalysisWarning]:
 def _vehicle_regions_stage(case: Case, *, boundaries: bool, max_seconds: float | None = None
                            ) -> tuple[VehicleRegions | None, list[AnalysisWarning]]:
     """The regions of :func:`analyze_vehicle_regions`, or None and a warning where they cannot
-    be computed (k_max < 1, or the steady thrust buckles a harmonic): the run goes on.  Each
-    harmonic left out is a warning: ``vehicle-regions-budget`` (field max_seconds) past the
-    budget, ``vehicle-regions-skipped`` (thrust.omega_min) past the candidate limit."""
+    be computed (k_max < 1, or the steady thrust buckles a harmonic): the run goes on.  The
+    harmonics left out are warnings, one per kind (:func:`_merged_warnings`):
+    ``vehicle-regions-budget`` (field max_seconds) past the budget,
+    ``vehicle-regions-skipped`` (thrust.omega_min) past the candidate or step limit."""
     from .errors import CaseError
     from .vehicle_case import VehicleTable
 
@@ -506,13 +508,45 @@ def _vehicle_regions_stage(case: Case, *, boundaries: bool, max_seconds: float |
                 f" [what the other stages' estimate left of max_seconds = "
                 f"{case.max_seconds:g} s]")
         # harmonics whose search would pass the budget (issue 18): named, not searched
-        return found, clipped + [
+        return found, clipped + _merged_warnings([
             AnalysisWarning("vehicle-regions-budget", "max_seconds", why + left)
             if why.startswith("max_seconds") else
             AnalysisWarning("vehicle-regions-skipped", why.split(" = ", 1)[0], why)
-            for why in found.skipped]
+            for why in found.skipped])
     except CaseError as exc:  # the thrust buckles the vehicle: a result, not a bad input
         return None, [AnalysisWarning("vehicle-regions-skipped", exc.field, exc.rule)]
+
+
+def _merged_warnings(warnings: list[AnalysisWarning]) -> list[AnalysisWarning]:
+    """One warning per (code, field) for the harmonics left out of the vehicle regions: a
+    case over its budget can leave out dozens, and a warning each would bury the others in
+    the summary.  The merged warning names every harmonic (k = 2-9, 12) and quotes the first
+    one's reason; each reason stays in ``VehicleRegions.skipped`` (results.json)."""
+    groups: dict[tuple[str, str], list[AnalysisWarning]] = {}
+    for w in warnings:
+        groups.setdefault((w.code, w.field), []).append(w)
+    out = []
+    for (code, field), ws in groups.items():
+        ks = [int(m.group(1)) for w in ws if (m := re.search(r"harmonic k = (\d+)", w.message))]
+        if len(ws) == 1 or len(ks) != len(ws):  # one, or not all naming a harmonic: as they are
+            out += ws
+            continue
+        out.append(AnalysisWarning(code, field, (
+            f"{len(ws)} harmonics left out (k = {_ranges(sorted(ks))}); the first, "
+            f"{ws[0].message}; each one's reason is in vehicle_regions.skipped of "
+            "results.json")))
+    return out
+
+
+def _ranges(ks: list[int]) -> str:
+    """Sorted integers as ranges: [2, 3, 4, 7, 9, 10] -> "2-4, 7, 9-10"."""
+    runs: list[list[int]] = []
+    for k in ks:
+        if runs and k == runs[-1][1] + 1:
+            runs[-1][1] = k
+        else:
+            runs.append([k, k])
+    return ", ".join(f"{a}" if a == b else f"{a}-{b}" for a, b in runs)
 
 
 def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,

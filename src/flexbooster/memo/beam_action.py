@@ -632,6 +632,11 @@ def _rotation(mu: np.ndarray, t: np.ndarray) -> tuple[np.ndarray, ...]:
     return c, sn, -mu * sn
 
 
+#: Most steps whose force coefficients :func:`_monodromy_half` computes at once (memory: three
+#: arrays of this many steps times the batch's points).
+_SEGMENT_STEPS = 1024
+
+
 def _monodromy_half(mu: np.ndarray, Bt: np.ndarray, Ob: np.ndarray, gam: np.ndarray,
                     n_steps: np.ndarray) -> np.ndarray:
     """Fundamental matrix at T/2 in modal coordinates, Lawson RK4 with n_steps equal steps.
@@ -640,6 +645,12 @@ def _monodromy_half(mu: np.ndarray, Bt: np.ndarray, Ob: np.ndarray, gam: np.ndar
     ``n_steps`` (P,) is the step count of each point, in descending order: all points advance
     together, and a point leaves the batch (its half-period map stored) once its own count of
     steps is done, so the loop runs max(n_steps) times whatever the spread of the counts.
+    Between two departures (a segment of steps with a fixed batch) the force coefficients
+    gamma cos(Omega_bar tau) of every step are computed at once, and each step runs on
+    preallocated buffers with the per-point factors spread to the state's shape: the same
+    floating-point operations on the same operands as the step written term by term, in
+    fewer and cheaper numpy calls (the cost at the few points of small Omega_bar that need
+    thousands of steps is the calls, not the flops).
     Returns shape (P, 2n, 2n).
     """
     P = Ob.size
@@ -650,41 +661,89 @@ def _monodromy_half(mu: np.ndarray, Bt: np.ndarray, Ob: np.ndarray, gam: np.ndar
     c2, s2, _ = (e.T[:, :, None] for e in _rotation(mu[None, :], 0.5 * h[:, None]))  # E(h/2)
     dtype = np.result_type(mu, Bt, c1, s1, float)  # complex where a steady mu < 0 (divergence)
     hh = h[None, :, None]
-
-    def force(tau, y):  # velocity slope gamma cos(Omega_bar tau) Bt eta (the position slope is 0)
-        coef = (gam * np.cos(Ob * tau))[None, :, None]  # gam, Ob: the current batch
-        return coef * (Bt @ y.reshape(n, -1)).reshape(y.shape)
-
-    x = np.zeros((n, P, 2 * n), dtype=dtype)
+    # E(h), E(h/2), h/2, h E(h/2) and h/6 per point, spread to the state's shape (n, P, 2n)
+    factors = [np.broadcast_to(a, (n, P, 1)) for a in (c1, s1, m1, c2, s2, 0.5 * hh, hh * s2,
+                                                     hh / 6.0)]
+    x = np.zeros((n, P, 2 * n), dtype=dtype)  # eta and eta' of the 2n fundamental solutions
     v = np.zeros((n, P, 2 * n), dtype=dtype)
     idx = np.arange(n)
     x[idx, :, idx] = 1.0
     v[idx, :, n + idx] = 1.0
     out = np.empty((P, 2 * n, 2 * n), dtype=dtype)
+    mul, add, dot = np.multiply, np.add, np.dot
     p = P  # the points still integrating: a prefix, as the counts descend
-    for k in range(int(n_steps[0])):  # Lawson (integrating-factor) RK4, Lawson (1967)
+    k = 0
+    while True:  # Lawson (integrating-factor) RK4, Lawson (1967), one segment at a time
         q = p
         while q > 0 and n_steps[q - 1] <= k:  # points whose k steps are done
             q -= 1
         if q < p:  # store them, shrink the batch
             out[q:p] = np.concatenate([x[:, q:p], v[:, q:p]], axis=0).transpose(1, 0, 2)
             p = q
-            x, v = x[:, :p], v[:, :p]
-            c1, s1, m1, c2, s2, hh = (a[:, :p] for a in (c1, s1, m1, c2, s2, hh))
+            if p == 0:
+                break
             h, gam, Ob = h[:p], gam[:p], Ob[:p]
-
-        t0 = k * h
-        a1 = force(t0, x)  # k1 = N(t) z
-        a2 = force(t0 + 0.5 * h, c2 * x + s2 * (v + 0.5 * hh * a1))  # N E(h/2)(z + h/2 k1)
-        a3 = force(t0 + 0.5 * h, c2 * x + s2 * v)  # N [E(h/2) z + h/2 k2]: position part
-        xf = c1 * x + s1 * v  # E(h) z
-        vf = m1 * x + c1 * v
-        a4 = force(t0 + h, xf + hh * s2 * a3)  # N [E(h) z + h E(h/2) k3]
-        a23 = 2.0 * (a2 + a3)
-        # z_new = E(h) z + h/6 [E(h) k1 + 2 E(h/2)(k2 + k3) + k4]
-        x = xf + hh / 6.0 * (s1 * a1 + s2 * a23)
-        v = vf + hh / 6.0 * (c1 * a1 + c2 * a23 + a4)
-    out[:p] = np.concatenate([x, v], axis=0).transpose(1, 0, 2)
+        shape = (n, p, 2 * n)
+        C1, S1, M1, C2, S2, HALF, HS2, SIXTH = (
+            np.ascontiguousarray(np.broadcast_to(a[:, :p], shape)) for a in factors)
+        k_end = min(int(n_steps[p - 1]), k + _SEGMENT_STEPS)  # the next departure
+        # gamma cos(Omega_bar tau) at t0 = k h, t0 + h/2, t0 + h of every step of the segment
+        t0 = np.arange(k, k_end)[:, None] * h[None, :]
+        f0, f_half, f1 = (gam * np.cos(Ob * tau) for tau in (t0, t0 + 0.5 * h, t0 + h))
+        if p > 1:  # per point; one point: numpy scalars (the same values, a cheaper call)
+            f0, f1 = f0[:, None, :, None], f1[:, None, :, None]
+            f_half = f_half[:, None, None, :, None]
+        else:
+            f0, f_half, f1 = f0.ravel(), f_half.ravel(), f1.ravel()
+        x, v = np.ascontiguousarray(x[:, :p]), np.ascontiguousarray(v[:, :p])
+        x_new, v_new, a1, a4, cx2, t, xf, vf, k23, u, w = (
+            np.empty(shape, dtype=dtype) for _ in range(11))
+        y23 = np.empty((n, 2, p, 2 * n), dtype=dtype)  # the stages k2, k3 in one GEMM
+        y2, y3 = y23[:, 0], y23[:, 1]
+        a23 = np.empty_like(y23)
+        a2, a3 = a23[:, 0], a23[:, 1]
+        g = np.empty((n, p * 2 * n), dtype=dtype)
+        g23 = np.empty((n, 2 * p * 2 * n), dtype=dtype)
+        g3, g23_4 = g.reshape(shape), g23.reshape(y23.shape)  # views: GEMM out, force in
+        y23_2, t_2 = y23.reshape(n, -1), t.reshape(n, -1)
+        for i in range(k_end - k):
+            dot(Bt, x.reshape(n, -1), out=g)
+            mul(f0[i], g3, out=a1)  # k1 = N(t) z
+            mul(C2, x, out=cx2)
+            mul(S2, v, out=t)
+            add(cx2, t, out=y3)  # E(h/2) z: position part
+            mul(HALF, a1, out=t)
+            add(v, t, out=t)
+            mul(S2, t, out=t)
+            add(cx2, t, out=y2)  # E(h/2)(z + h/2 k1): position part
+            dot(Bt, y23_2, out=g23)
+            mul(f_half[i], g23_4, out=a23)  # k2, k3 = N [E(h/2) z + h/2 k2]
+            mul(C1, x, out=xf)  # E(h) z
+            mul(S1, v, out=t)
+            add(xf, t, out=xf)
+            mul(M1, x, out=vf)
+            mul(C1, v, out=t)
+            add(vf, t, out=vf)
+            mul(HS2, a3, out=t)
+            add(xf, t, out=t)  # E(h) z + h E(h/2) k3: position part
+            dot(Bt, t_2, out=g)
+            mul(f1[i], g3, out=a4)  # k4
+            add(a2, a3, out=k23)
+            mul(2.0, k23, out=k23)
+            # z_new = E(h) z + h/6 [E(h) k1 + 2 E(h/2)(k2 + k3) + k4]
+            mul(S1, a1, out=u)
+            mul(S2, k23, out=t)
+            add(u, t, out=u)
+            mul(SIXTH, u, out=u)
+            add(xf, u, out=x_new)
+            mul(C1, a1, out=w)
+            mul(C2, k23, out=t)
+            add(w, t, out=w)
+            add(w, a4, out=w)
+            mul(SIXTH, w, out=w)
+            add(vf, w, out=v_new)
+            x, x_new, v, v_new = x_new, x, v_new, v
+        k = k_end
     return out
 
 

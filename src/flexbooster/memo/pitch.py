@@ -45,6 +45,7 @@ References
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 from typing import Any
 
 import numpy as np
@@ -208,6 +209,7 @@ def _chain_series(m0: int, factors: tuple[tuple[int, int], ...], kmax: int) -> n
     return np.sum(total, axis=1)
 
 
+@lru_cache(maxsize=64)  # a function of (m0, kmax) alone: few pairs per run, ~1 ms each
 def _tail_coefficients(m0: int, kmax: int) -> dict[str, np.ndarray]:
     """Power series in a of the tails of the Hill continuant beyond |m| = m0 - 2.
 
@@ -226,12 +228,15 @@ def _tail_coefficients(m0: int, kmax: int) -> dict[str, np.ndarray]:
     link[0] = 0.25 * (
         special.zeta(2.0, ml / 2.0) / 4.0 + special.zeta(2.0, ml / 2.0 + 1.0) / 4.0 - 1.0 / ml
     )
-    return {
+    out = {
         "diag": diag,
         "link": link,
         "sq": _chain_series(ml, ((0, 2), (1, 2)), kmax),
         "adj": _chain_series(ml, ((0, 1), (1, 2), (2, 1)), kmax),
     }
+    for c in out.values():  # shared by every call (cached): read-only
+        c.setflags(write=False)
+    return out
 
 
 def _series_order(a: np.ndarray, m0: int) -> int:
@@ -246,7 +251,8 @@ def _series(coef: np.ndarray, a: np.ndarray) -> np.ndarray:
     """Horner evaluation of sum_k coef_k a^k."""
     out = np.full(a.shape, coef[-1])
     for kk in range(coef.size - 2, -1, -1):
-        out = out * a + coef[kk]
+        out *= a
+        out += coef[kk]
     return out
 
 
@@ -290,6 +296,8 @@ def _hill(a: np.ndarray, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndar
     a = a.ravel().astype(float)
     q = q.ravel().astype(float)
     tiny = 1e-150  # pivot floor: |off * prev_off| / tiny stays far below 1e308
+    e_buf = np.empty(a.shape, dtype=np.intc)  # np.frexp's exponents
+    neg = np.empty(a.shape, dtype=bool)
 
     def continuant(ms: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         # det = mantissa * 2**exponent (np.frexp after each row: exact, and no overflow at
@@ -299,19 +307,28 @@ def _hill(a: np.ndarray, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndar
         count = np.zeros(a.shape, dtype=np.int64)
         piv = None
         prev_off = None
+        rows = {}  # rows m and -m are the same: computed once
         for m in ms:
             if m == 0:
-                diag, off, sgn = a, -q, -1.0  # row 0 of Delta times a: [-q, a, -q]
+                diag, off = a, -q  # row 0 of Delta times a: [-q, a, -q]
+            elif abs(m) in rows:
+                diag, off = rows.pop(abs(m))
             else:
-                diag, off, sgn = 1.0 - a / m**2, q / m**2, 1.0  # row m times (1 - a/m^2)
+                diag, off = 1.0 - a / m**2, q / m**2  # row m times (1 - a/m^2)
+                if -m in ms:
+                    rows[abs(m)] = diag, off
             # Hill rows: diag 1, off -q/(a - m^2), times the factor above
             piv = diag if piv is None else diag - off * prev_off / piv
             # a pivot of (nearly) zero: a floor keeps the next off^2 / piv finite (the product
             # of the two, which the determinant needs, tends to -off^2 for any small floor)
-            piv = np.where(np.abs(piv) < tiny, np.where(piv < 0.0, -tiny, tiny), piv)
-            det, e = np.frexp(det * piv)
+            small = np.abs(piv) < tiny
+            if small.any():
+                piv = np.where(small, np.where(piv < 0.0, -tiny, tiny), piv)
+            det, e = np.frexp(det * piv, out=(det, e_buf))
             exponent += e
-            count += (piv * sgn < 0.0).astype(np.int64)  # negative pivot of H - a I
+            # negative pivot of H - a I (row 0 was multiplied by a: there a positive one)
+            np.add(count, np.greater(piv, 0.0, out=neg) if m == 0 else
+                   np.less(piv, 0.0, out=neg), out=count)
             prev_off = off
         return det, exponent, count
 

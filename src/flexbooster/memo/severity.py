@@ -151,7 +151,8 @@ def _pitch_amplitudes(Omega: np.ndarray, beta: np.ndarray, omega_psi: float, gam
 
 def floquet_vectors(A0: np.ndarray, B: np.ndarray, mu: np.ndarray, Omega_bar: np.ndarray,
                     gamma: float, S: int, *, kappa_max: float = 1e-4,
-                    chunk: int = 256) -> tuple[np.ndarray, np.ndarray]:
+                    chunk: int = 256, s: np.ndarray | None = None
+                    ) -> tuple[np.ndarray, np.ndarray]:
     """Fourier vectors C^(s), s = -S..S, of the Floquet solution with exponent near mu.
 
     Hill's recursion (mu + s Omega_bar)^2 C^(s) = A0 C^(s) - (gamma/2) B (C^(s-1) + C^(s+1)),
@@ -188,12 +189,16 @@ def floquet_vectors(A0: np.ndarray, B: np.ndarray, mu: np.ndarray, Omega_bar: np
         every point exactly.
     chunk : int
         Points per batch (memory ~ chunk 2S n^2 doubles; small batches stay in cache).
+    s : numpy.ndarray of int, optional
+        Shape (P,), one harmonic per point, |s| <= S: only C^(s) of each point is returned
+        (the same numbers as ``C[arange(P), s + S]`` of the full result, without storing the
+        other 2S harmonics of every point).
 
     Returns
     -------
     C : numpy.ndarray
         Shape (P, 2S + 1, n), in the physical coordinates q_1..q_N, q_B, unit Euclidean norm
-        over (s, n) (the sign is arbitrary; real for a real exponent).
+        over (s, n) (the sign is arbitrary; real for a real exponent); shape (P, n) with ``s``.
     mu : numpy.ndarray
         Shape (P,), the refined exponents (units of omega_1).
 
@@ -211,15 +216,21 @@ def floquet_vectors(A0: np.ndarray, B: np.ndarray, mu: np.ndarray, Omega_bar: np
     gamma = nonnegative("gamma", gamma)
     kappa_max = nonnegative("kappa_max", kappa_max)
     S = int(nonnegative("S", S))
+    if s is not None:
+        s = np.asarray(s).ravel()
+        if (s.shape != mu.shape or not np.issubdtype(s.dtype, np.integer)
+                or (s.size and np.abs(s).max() > S)):
+            raise ValueError(f"s: must be integers with |s| <= S = {S}, one per point")
     A0 = np.asarray(A0, dtype=float)
     B = np.asarray(B, dtype=float)
     n = A0.shape[0]
     lam, V = np.linalg.eig(A0)
     if not (np.all(np.abs(lam.imag) <= 1e-12 * np.abs(lam).max()) and np.all(np.isreal(V))):
-        return _floquet_exact(A0, B, mu, Ob, gamma, S, chunk)  # a flutter-unstable beam
+        C, mu = _floquet_exact(A0, B, mu, Ob, gamma, S, chunk)  # a flutter-unstable beam
+        return (C, mu) if s is None else (C[np.arange(mu.size), s + S], mu)
     lam, V = lam.real, V.real
     GT = (-0.5 * gamma * np.linalg.solve(V, B @ V)).T  # G in the modal frame, transposed
-    out = np.zeros((mu.size, 2 * S + 1, n))
+    out = np.zeros((mu.size, 2 * S + 1, n) if s is None else (mu.size, n))
     kappa = np.zeros(mu.size)
     tiny = np.finfo(float).tiny
     levels = np.arange(-S, S + 1)
@@ -228,19 +239,20 @@ def floquet_vectors(A0: np.ndarray, B: np.ndarray, mu: np.ndarray, Omega_bar: np
         P = mu[sl].size
         rows = np.arange(P)
         r = np.argmin(np.abs(lam[None, :] - mu[sl][:, None] ** 2), axis=1)  # lambda_r ~ mu^2
-        for it in range(2):  # one refinement of the exponent (error ~ kappa^2), then the vectors
-            x = mu[sl][None, :] + levels[:, None] * Ob[sl][None, :]  # (2S+1, P)
-            d = lam[None, None, :] - x[:, :, None] ** 2  # diagonals of D_s (2S+1, P, n)
-            inv = 1.0 / np.where(d == 0.0, tiny, d)
-            modal = np.zeros((2 * S + 1, P, n))
-            modal[S, rows, r] = 1.0  # C^(0) = e_r to second order
-            for s in range(1, S + 1):  # first-order continued fraction, outward from s = 0
-                modal[S + s] = -inv[S + s] * (modal[S + s - 1] @ GT)
-                modal[S - s] = -inv[S - s] * (modal[S - s + 1] @ GT)
-            if it == 1 or S == 0:
-                break
-            mu2 = lam[r] + ((modal[S + 1] + modal[S - 1]) @ GT)[rows, r]  # s = 0 row, Hill
+        if S:  # one refinement of the exponent (error ~ kappa^2) from the levels s = -1, 0, 1
+            ninv = _negative_inverse_diagonals(lam, mu[sl], Ob[sl], np.arange(-1, 2), tiny)
+            e_r = np.zeros((P, n))
+            e_r[rows, r] = 1.0  # C^(0) = e_r to second order
+            g0 = e_r @ GT
+            c1, c_1 = ninv[2] * g0, ninv[0] * g0  # C^(1), C^(-1): first-order fraction
+            mu2 = lam[r] + ((c1 + c_1) @ GT)[rows, r]  # s = 0 row, Hill
             mu[sl] = np.where(mu2 > 0, np.sqrt(np.abs(mu2)), mu[sl]) * np.sign(mu[sl])
+        ninv = _negative_inverse_diagonals(lam, mu[sl], Ob[sl], levels, tiny)
+        modal = np.zeros((2 * S + 1, P, n))
+        modal[S, rows, r] = 1.0  # C^(0) = e_r to second order
+        for k in range(1, S + 1):  # first-order continued fraction, outward from s = 0
+            np.multiply(ninv[S + k], modal[S + k - 1] @ GT, out=modal[S + k])
+            np.multiply(ninv[S - k], modal[S - k + 1] @ GT, out=modal[S - k])
         # a-posteriori: the term left out at each s, G C^(s +- 1) (outward), relative to C^(s)
         outer = np.zeros_like(modal)
         if S:
@@ -248,14 +260,44 @@ def floquet_vectors(A0: np.ndarray, B: np.ndarray, mu: np.ndarray, Omega_bar: np
             outer[1:S] = modal[:S - 1] @ GT
             outer[S] = (modal[S + 1] + modal[S - 1]) @ GT
         outer[S, rows, r] = 0.0  # the resonant row: the exponent itself
-        err = np.abs(inv * outer).max(axis=2) / np.maximum(np.abs(modal).max(axis=2), tiny)
+        np.multiply(ninv, outer, out=outer)  # its sign is lost in |.| below
+        err = _abs_max_last(outer) / np.maximum(_abs_max_last(modal), tiny)
         kappa[sl] = err.max(axis=0)
-        q = np.moveaxis(modal @ V.T, 0, 1)  # back to q_1..q_N, q_B: (P, 2S+1, n)
-        out[sl] = q / np.sqrt(np.sum(q**2, axis=(1, 2)))[:, None, None]
+        q = modal @ V.T  # back to q_1..q_N, q_B: (2S+1, P, n)
+        # the norm over (s, n): the same sum (order included) as over axes (1, 2) of (P, 2S+1, n)
+        norm = np.sqrt(np.add.reduce(q**2, axis=(0, 2)))
+        if s is None:
+            out[sl] = np.moveaxis(q, 0, 1) / norm[:, None, None]
+        else:
+            out[sl] = q[s[sl] + S, rows] / norm[:, None]
     hard = np.flatnonzero(kappa > kappa_max)
     if hard.size:
-        out[hard], mu[hard] = _floquet_exact(A0, B, mu[hard], Ob[hard], gamma, S, chunk)
+        C, mu[hard] = _floquet_exact(A0, B, mu[hard], Ob[hard], gamma, S, chunk)
+        out[hard] = C if s is None else C[np.arange(hard.size), s[hard] + S]
     return out, mu
+
+
+def _negative_inverse_diagonals(lam: np.ndarray, mu: np.ndarray, Ob: np.ndarray,
+                                levels: np.ndarray, tiny: float) -> np.ndarray:
+    """-1 / diag(D_s), D_s = diag(lambda - (mu + s Omega_bar)^2) (Hill 4.1-10, modal frame),
+    shape (len(levels), P, n); an exact zero of D_s is replaced by ``tiny``.  Computed as
+    1 / (x^2 - lambda): rounding to nearest is symmetric in sign, so a - b = -(b - a) and
+    1 / -d = -(1 / d) exactly."""
+    x = mu[None, :] + levels[:, None] * Ob[None, :]  # (levels, P)
+    neg_d = x[:, :, None] ** 2 - lam[None, None, :]
+    zero = neg_d == 0.0
+    if zero.any():
+        neg_d[zero] = -tiny
+    return np.divide(1.0, neg_d, out=neg_d)
+
+
+def _abs_max_last(X: np.ndarray) -> np.ndarray:
+    """max |X| over the last axis (NaN propagates, as in ``np.abs(X).max(axis=-1)``): a running
+    np.maximum over the columns, several times faster than a reduction along a short axis."""
+    out = np.abs(X[..., 0])
+    for j in range(1, X.shape[-1]):
+        np.maximum(out, np.abs(X[..., j]), out=out)
+    return out
 
 
 def _central(A0: np.ndarray, G: np.ndarray, m: np.ndarray, ob: np.ndarray,
@@ -437,10 +479,16 @@ def root_severity(model: BoosterModel, table: StabilityTable, params: Excitation
             half = 0.5 * Ai * A[:, p] * Wi * W[:, p]
             add(Wi - W[:, p], 4, half)  # psi'^2 = 1/2 sum A_i A_p W_i W_p [cos(-) - cos(+)]
             add(Wi + W[:, p], 4, -half)
-    nu = np.stack(nus, axis=1)  # (n, H)
-    amp = np.stack(amps, axis=1)
-    res = np.abs(np.abs(nu) - w[:, None]) <= _RES_TOL * w[:, None]
-    G = np.abs(np.sum(np.where(res, amp * h[:, rows], 0.0), axis=1))  # real amplitudes
+    # built harmonic by harmonic (H, n), in place; summed per root in the (n, H) layout
+    nu = np.stack(nus)  # (H, n)
+    res = np.abs(nu, out=nu)
+    res -= w
+    np.abs(res, out=res)
+    res = res <= _RES_TOL * w
+    forcing = np.stack(amps)
+    forcing *= h.T[rows]
+    np.copyto(forcing, 0.0, where=~res)
+    G = np.abs(np.sum(np.ascontiguousarray(forcing.T), axis=1))  # real amplitudes
 
     # the beam Floquet harmonic of the root's exponent (families 2 and 13)
     beam = (table.r >= 1) & np.isin(table.family, (2, 13)) & (beam_amplitude > 0)
@@ -451,9 +499,9 @@ def root_severity(model: BoosterModel, table: StabilityTable, params: Excitation
         system = beam_system(model, N)
         r = table.r[beam]
         alpha = params.alpha(ob[beam])[np.arange(r.size), r - 1]
-        Cs, mu = floquet_vectors(system.A0, system.B, alpha * ob[beam], ob[beam], g, S)
         s = table.s[beam]
-        c = beam_amplitude * Cs[np.arange(r.size), s + S]  # (nbeam, N + 1), units of L
+        Cs, mu = floquet_vectors(system.A0, system.B, alpha * ob[beam], ob[beam], g, S, s=s)
+        c = beam_amplitude * Cs  # C^(s) of each root: (nbeam, N + 1), units of L
         f = mu + s * ob[beam]  # (4.1-10/11), at the exponent refined at the root
         hb = h[beam]
         qb, qdd = slice(_NB, _NB + N + 1), slice(_NB + N + 1, nb)

@@ -196,13 +196,20 @@ def _write_files(results: Results, folder: Path, figures: bool,
         # the figures are drawn by the workers (started first) while this process writes
         jobs = {name: pool.submit(_figure_task, results, name)
                 for name in figure_names(results)} if draw and pool.parallel else {}
+        # without figures the workers are free: the stability table's CSV (the largest file,
+        # tens of thousands of rows) is written by one of them while this process writes
+        # results.json (the same bytes either way)
+        table_csv = (pool.submit(_write_table_csv, results.stability,
+                                 folder / "unstable-frequencies.csv")
+                     if results.stability is not None and not jobs and pool.parallel else None)
         step(OUTPUT_STAGES[0])
         written = [write_json_atomic(folder / "results.json", results.to_dict())]
         written.append(write_csv_atomic(folder / "shell-frequencies.csv",
                                         results.shell.to_rows()))
         if results.stability is not None:
-            written.append(write_csv_atomic(folder / "unstable-frequencies.csv",
-                                            results.stability.to_columns()))
+            written.append(table_csv.result() if table_csv is not None else
+                           _write_table_csv(results.stability,
+                                            folder / "unstable-frequencies.csv"))
         if results.severity is not None:  # issue 13: every band, most severe first
             written.append(write_csv_atomic(folder / "resonance-bands.csv",
                                             results.severity.band_rows()))
@@ -226,6 +233,11 @@ def _write_files(results: Results, folder: Path, figures: bool,
     step(OUTPUT_STAGES[2])
     written.append(write_report(results, folder / "report.html", svgs))
     return written
+
+
+def _write_table_csv(table, path: Path) -> Path:
+    """The stability table's CSV (a worker's task when the workers are free)."""
+    return write_csv_atomic(path, table.to_columns())
 
 
 def prepare_figures() -> None:
