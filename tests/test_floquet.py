@@ -34,7 +34,7 @@ from flexbooster.floquet import (
     steady_frequencies,
     step_counts,
 )
-from flexbooster.floquet.multipliers import periodic_system
+from flexbooster.floquet.multipliers import _half_maps, periodic_system
 from flexbooster.floquet.regions import _candidates, _modal_decay_rates, _options
 from harness import ivp_growth_rate, ivp_monodromy
 
@@ -120,6 +120,24 @@ def test_harmonic_balance_raised_until_converged(period, r):
     lo, hi = mathieu_edges(0.2, r)
     assert 8 <= K <= 64
     assert np.min(np.abs(roots - lo)) < 1e-9 and np.min(np.abs(roots - hi)) < 1e-9
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_half_period_map_does_not_depend_on_the_batch(seed):
+    # a point's Phi(T/2) is the same to the last bit whether it is integrated alone or in a
+    # batch of points with other step counts (blocks, shrinking batch, one matmul per stage):
+    # the searches rely on it to give the same regions however they group their points;
+    # undamped 4 DOF, real and complex modal frames (seed 1: A with negative eigenvalues)
+    M, _, A, B = random_system(4, seed, damped=False)
+    if seed == 1:
+        A = A - 6.0 * np.eye(4)
+    system = periodic_system(M, None, A, B)
+    om = np.random.default_rng(seed).uniform(0.5, 6.0, 70)
+    steps = step_counts(system, om)
+    with np.errstate(all="ignore"):
+        batch = _half_maps(system, om, steps, 256)
+        alone = [_half_maps(system, om[i:i + 1], steps[i:i + 1], 256) for i in range(om.size)]
+    assert np.array_equal(batch, np.concatenate(alone), equal_nan=True)
 
 
 def test_steady_propagator_exact():

@@ -33,6 +33,7 @@ from flexbooster.shell_of_revolution import (
     ShellWarning,
     Vehicle,
     buckling_load,
+    labelled_modal_system,
     mesh_vehicle,
     modal_system,
     system_matrices,
@@ -418,6 +419,23 @@ def test_modal_system_truncation():
         w2 = sla.eigvalsh(ms.stiffness + ms.geometric, ms.mass)
         errs.append(abs(np.sqrt(w2[0]) / full.omega[0] - 1))
     assert errs[1] < 1e-3 and errs[1] <= errs[0]
+
+
+def test_labelled_modal_system_is_modal_system_with_vehicle_modes_labels():
+    """labelled_modal_system solves the unloaded eigenproblem once for both: its system is
+    modal_system's and its labels are those vehicle_modes gives the basis modes, exactly
+    (k = 0 with supported ends and k = 3 with inertia relief, prestressed)."""
+    veh = Vehicle([Cylinder(1.0, 3.0, 0.01, **STEEL), Cone(1.0, 0.7, 1.0, 0.008, **STEEL)],
+                  aft_end="clamped")
+    for k, supported in ((0, True), (3, False)):
+        ms, labels = labelled_modal_system(veh, k, 8, 1e5, supported_forward_end=supported)
+        ref = modal_system(veh, k, 8, 1e5, supported_forward_end=supported)
+        for name in ("omega", "mass", "stiffness", "geometric", "aft_axial"):
+            np.testing.assert_array_equal(getattr(ms, name), getattr(ref, name))
+        modes = vehicle_modes(veh, k_min=k, k_max=k, n_modes=8)
+        order, kind = labels()
+        np.testing.assert_array_equal(order, modes.order)
+        np.testing.assert_array_equal(kind, modes.type)
 
 
 # --------------------------------------------------------------------------- memo path

@@ -33,6 +33,7 @@ References
 
 from __future__ import annotations
 
+from collections import OrderedDict
 from dataclasses import dataclass
 
 import numpy as np
@@ -87,18 +88,37 @@ _NONE = StabilityCertificate(rho=np.inf, growth_bound=np.inf, certified=False,
                              amplitude_factor=0.0)
 
 
+#: Certificates of the latest systems, by their matrices (a search asks for the certificate
+#: of the system it is given, and the vehicle's harmonics ask for it before their search and
+#: in the search's cost estimate: three times for one system).
+_RECENT: OrderedDict = OrderedDict()
+_RECENT_SIZE = 16
+
+
 def _certificate(system: LinearPeriodicSystem) -> StabilityCertificate:
+    key = (system.K0.shape, system.K0.tobytes(), system.Kc.tobytes(), system.Kb.tobytes())
+    cert = _RECENT.get(key)
+    if cert is None:
+        cert = _RECENT[key] = _compute_certificate(system)
+        while len(_RECENT) > _RECENT_SIZE:
+            _RECENT.popitem(last=False)
+    return cert
+
+
+def _compute_certificate(system: LinearPeriodicSystem) -> StabilityCertificate:
     n = system.n
     L0 = np.block([[np.zeros((n, n)), np.eye(n)], [-system.K0, -system.Kc]])
     lam, W = np.linalg.eig(L0)
     delta = -lam.real  # decay rates of the steady modes
-    if np.any(delta <= 0.0) or np.linalg.cond(W) > _MAX_COND:
+    if np.any(delta <= 0.0):
+        return _NONE
+    cond = float(np.linalg.cond(W))
+    if cond > _MAX_COND:
         return _NONE
     if not np.any(system.Kb):  # steady and damped: decays at the slowest steady rate
         return StabilityCertificate(rho=0.0, growth_bound=-float(np.min(delta)),
                                     certified=True, amplitude_factor=np.inf)
     N = np.block([[np.zeros((n, n)), np.zeros((n, n))], [-system.Kb, np.zeros((n, n))]])
-    cond = float(np.linalg.cond(W))
     G = np.abs(np.linalg.solve(W, N @ W))  # |W^-1 N W|
     G = G + 16.0 * cond * np.finfo(float).eps * float(np.max(G))  # round-off of G
     Q = G / delta[:, None]  # diag(1 / delta) |G|

@@ -616,8 +616,9 @@ def _edges(f, x0: np.ndarray, f0: np.ndarray, d0: np.ndarray, direction,
     adjacent regions; so points between x0 and the refined root are evaluated (8, or 64 when
     the distance exceeds 4 ``scale``, the expected half-width) and, if one of them has f <= 0,
     the root is searched again between it and its inner neighbour (up to ``max_rounds``
-    times).  Gaps narrower than the check spacing can still be missed (the region is then
-    reported too wide, never lost).  Returns (root, clipped).
+    times; a round checks the entries whose root the last one moved, the others' check
+    points and values are unchanged).  Gaps narrower than the check spacing can still be
+    missed (the region is then reported too wide, never lost).  Returns (root, clipped).
     """
     xi, fi, xo, fo, clip = _expand(f, x0, d0, direction, limit)
     fi = np.where(np.isinf(fi), f0, fi)
@@ -629,11 +630,12 @@ def _edges(f, x0: np.ndarray, f0: np.ndarray, d0: np.ndarray, direction,
     idx = np.nonzero(~clip)[0]
     if idx.size:
         root[idx] = refine(idx, xi[idx], fi[idx], xo[idx], fo[idx])
+    check = np.ones(root.size, dtype=bool)  # entries whose root is new: the others passed
     for _ in range(max_rounds):
         redo_all = []
         for n_check, sel in ((8, np.abs(root - x0) <= 4.0 * scale),
                              (64, np.abs(root - x0) > 4.0 * scale)):
-            ids = np.nonzero(sel)[0]
+            ids = np.nonzero(sel & check)[0]
             if ids.size == 0:
                 continue
             frac = np.arange(1, n_check + 1) / (n_check + 1.0)
@@ -652,9 +654,11 @@ def _edges(f, x0: np.ndarray, f0: np.ndarray, d0: np.ndarray, direction,
             redo_all.append((ids[bad], a, fa, b, fb))
         if not redo_all:
             return root, clip
+        check[:] = False
         for redo, a, fa, b, fb in redo_all:
             root[redo] = refine(redo, a, fa, b, fb)
             clip[redo] = False
+            check[redo] = True
     return root, clip
 
 

@@ -7,6 +7,7 @@ then:
   optionally under the thrust prestress;
 * :func:`system_matrices` - M, K_e, K_g of one harmonic;
 * :func:`modal_system` - the same reduced to the first unloaded modes;
+  :func:`labelled_modal_system` also gives their labels (one eigensolution for both);
 * :func:`buckling_load` - linear buckling load factors of one harmonic.
 
 Theory, tests and limitations: ``docs/theory/shell-of-revolution.md``.
@@ -36,6 +37,7 @@ from .modes import (
     ModalSystem,
     VehicleModes,
     buckling_load,
+    labelled_modal_system,
     modal_system,
     vehicle_modes,
 )
@@ -56,6 +58,7 @@ __all__ = [
     "Vehicle",
     "VehicleModes",
     "buckling_load",
+    "labelled_modal_system",
     "mesh_vehicle",
     "modal_system",
     "system_matrices",

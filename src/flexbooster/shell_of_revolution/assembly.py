@@ -40,7 +40,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..checks import count
-from .elements import ReferenceElement, element_matrices, reference_element
+from .elements import ReferenceElement, einsum, element_matrices, reference_element
 from .geometry import Cylinder, Vehicle
 from .prestress import axial_force, meridional_resultant
 
@@ -462,8 +462,7 @@ def element_set(vehicle: Vehicle, mesh: Mesh, k: int, *, prestress_F0: float = 0
     T = _transform(mesh)
     out = []
     for mat in (m, ke, kg):
-        out.append(None if mat is None else np.einsum("eia,eij,ejb->eab", T, mat, T,
-                                                       optimize=True))
+        out.append(None if mat is None else einsum("eia,eij,ejb->eab", T, mat, T))
     return tuple(out)
 
 

@@ -56,6 +56,20 @@ from ..checks import count
 __all__ = ["ReferenceElement", "reference_element", "element_matrices", "theta_weight"]
 
 
+@lru_cache(maxsize=64)
+def _path(subscripts: str, *shapes: tuple) -> list:
+    """The contraction order ``np.einsum(..., optimize=True)`` chooses: it depends on the
+    subscripts and the shapes only, so it is found once per mesh size and harmonic class."""
+    return np.einsum_path(subscripts, *(np.empty(s) for s in shapes), optimize=True)[0]
+
+
+def einsum(subscripts: str, *operands: np.ndarray) -> np.ndarray:
+    """``np.einsum(subscripts, *operands, optimize=True)``, the contraction order cached (the
+    same contractions in the same order: the same result)."""
+    return np.einsum(subscripts, *operands,
+                     optimize=_path(subscripts, *(np.shape(a) for a in operands)))
+
+
 @dataclass(frozen=True)
 class ReferenceElement:
     """Shape functions of order p on xi in [-1, 1] at the Gauss points (read-only arrays).
@@ -280,12 +294,11 @@ def element_matrices(
         mat[:, off + 2, off + 2] = 0.5 * (1.0 - nu) * val
     wt = theta_weight(k)
     dvol = wt * ref.weight[None, :] * jac * r  # (e, g): theta weight * r ds
-    stiff = np.einsum("egia,eij,egjb,eg->eab", strains, mat, strains, dvol, optimize=True)
+    stiff = einsum("egia,eij,egjb,eg->eab", strains, mat, strains, dvol)
     disp = np.stack([U, V, W], axis=2)
-    mass = np.einsum("egia,egib,eg->eab", disp, disp, (rho * thickness)[:, None] * dvol,
-                     optimize=True)
+    mass = einsum("egia,egib,eg->eab", disp, disp, (rho * thickness)[:, None] * dvol)
     geo = None
     if ns0 is not None:
         rot = np.stack([-dW, c * phi_n], axis=2)  # beta_s and Phi (Sanders; Brush & Almroth ch. 5)
-        geo = np.einsum("egia,egib,eg->eab", rot, rot, ns0 * dvol, optimize=True)
+        geo = einsum("egia,egib,eg->eab", rot, rot, ns0 * dvol)
     return mass, stiff, geo

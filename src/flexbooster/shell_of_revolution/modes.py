@@ -22,6 +22,7 @@ References
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -49,6 +50,7 @@ __all__ = [
     "BucklingLoad",
     "vehicle_modes",
     "modal_system",
+    "labelled_modal_system",
     "buckling_load",
 ]
 
@@ -58,6 +60,9 @@ MODE_TYPES = ("axial", "torsional", "breathing", "bending", "radial")
 BAND_FACTOR = 5.0
 #: Largest harmonic accepted.
 K_MAX = 200
+#: Shape samples per element of the labels of :func:`labelled_modal_system` (the default
+#: ``points_per_element`` of :func:`vehicle_modes`, whose labels it reproduces).
+_LABEL_POINTS = 9
 
 
 @dataclass(frozen=True)
@@ -526,9 +531,7 @@ def _modes_on_mesh(vehicle: Vehicle, mesh: Mesh, *, k_min: int, k_max: int,
         if band and w2_bound is not None:  # None: no harmonic has a positive omega^2 (the
             keep = vals <= w2_bound  # prestress buckles them all: the check below says so)
             vals, vecs = vals[keep], vecs[:, keep]
-        if np.any(vals <= 0):
-            raise ValueError(f"prestress_F0 = {F0!r}: k = {kk} has a non-positive omega^2 "
-                             f"({vals.min():.4g} 1/s^2): the prestress exceeds a buckling load")
+        _check_positive(vals, F0, kk)
         if vals.size == 0:
             continue
         share, seg, ordr, names, sh = _labels(mesh, h, vecs, kk, points_per_element)
@@ -545,15 +548,25 @@ def _modes_on_mesh(vehicle: Vehicle, mesh: Mesh, *, k_min: int, k_max: int,
         cat = [np.zeros(0, int), np.zeros(0), np.zeros(0, int), np.zeros(0, str),
                np.zeros(0, int), np.zeros((0, 3)), np.zeros((0, 3, s_pts.size))]
     omega = cat[1]
-    for arr in (omega, cat[5], cat[6]):
-        if not np.all(np.isfinite(arr)):
-            raise ValueError("vehicle_modes: non-finite result (mesh or input out of range)")
+    _check_finite(omega, cat[5], cat[6])
     return VehicleModes(k=cat[0].astype(int), omega=omega, hz=omega / (2.0 * np.pi),
                         order=cat[2].astype(int), type=cat[3].astype(str),
                         segment=cat[4].astype(int), kinetic_share=cat[5], s=s_pts, x=x_pts,
                         r=r_pts, shapes=cat[6], rigid_modes=rigid, prestress_F0=F0,
                         theory=vehicle.theory, elements_per_segment=mesh.elements_per_segment,
                         element_order=mesh.order, warnings=vehicle.warnings)
+
+
+def _check_positive(vals: np.ndarray, F0: float, k: int) -> None:
+    if np.any(vals <= 0):
+        raise ValueError(f"prestress_F0 = {F0!r}: k = {k} has a non-positive omega^2 "
+                         f"({vals.min():.4g} 1/s^2): the prestress exceeds a buckling load")
+
+
+def _check_finite(*arrays: np.ndarray) -> None:
+    for arr in arrays:
+        if not np.all(np.isfinite(arr)):
+            raise ValueError("vehicle_modes: non-finite result (mesh or input out of range)")
 
 
 def modal_system(
@@ -588,6 +601,38 @@ def modal_system(
     .. [1] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, 1964, sec. 8 (modal
        reduction of parametrically loaded systems).
     """
+    return labelled_modal_system(vehicle, k, n_modes, F0,
+                                 supported_forward_end=supported_forward_end,
+                                 elements_per_segment=elements_per_segment, order=order)[0]
+
+
+def labelled_modal_system(
+    vehicle: Vehicle, k: int, n_modes: int, F0: float, *,
+    supported_forward_end: bool = False, elements_per_segment: int | tuple | None = None,
+    order: int = DEFAULT_ORDER,
+) -> tuple[ModalSystem, Callable[[], tuple[np.ndarray, np.ndarray]]]:
+    """:func:`modal_system` and the labels of its basis modes (mode order and type).
+
+    Parameters
+    ----------
+    vehicle, k, n_modes, F0, supported_forward_end, elements_per_segment, order
+        As :func:`modal_system`.
+
+    Returns
+    -------
+    ModalSystem
+        As :func:`modal_system` returns it.
+    labels : callable
+        labels() -> (order, type), each shape (n,): the labels of the basis modes, those
+        that ``vehicle_modes(vehicle, k_min=k, k_max=k, n_modes=n_modes,
+        elements_per_segment=..., order=...)`` gives (the same unloaded eigenproblem, solved
+        once), with its errors; called when needed (after the caller's own checks).
+
+    References
+    ----------
+    .. [1] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, 1964, sec. 8 (modal
+       reduction of parametrically loaded systems).
+    """
     _, F0 = _check_common(vehicle, 0, F0)
     k = count("k", k, 0, K_MAX)
     n_modes = count("n_modes", n_modes, 1, 2000)
@@ -599,9 +644,20 @@ def modal_system(
     kg = vecs.T @ h.G @ vecs
     # the vehicle's end nodes carry global-frame DOFs (a = u_x, v, b = u_r, chi)
     aft = h.dmap.expand(vecs.T)[:, mesh.end_nodes[0]]
-    return ModalSystem(k=k, omega=np.sqrt(np.maximum(vals, 0.0)), mass=vecs.T @ h.M @ vecs,
-                       stiffness=vecs.T @ h.K @ vecs, geometric=0.5 * (kg + kg.T), F0=F0,
-                       aft_axial=aft)
+    ms = ModalSystem(k=k, omega=np.sqrt(np.maximum(vals, 0.0)), mass=vecs.T @ h.M @ vecs,
+                     stiffness=vecs.T @ h.K @ vecs, geometric=0.5 * (kg + kg.T), F0=F0,
+                     aft_axial=aft)
+
+    def labels() -> tuple[np.ndarray, np.ndarray]:
+        # vehicle_modes solves K_e x = omega^2 M x (F0 = 0) on the same mesh: h.M, h.K and
+        # the element K_e are those of the prestressed harmonic (K_g apart), so are its
+        # eigenpairs (vals, vecs)
+        _check_positive(vals, 0.0, k)
+        share, _, ordr, names, sh = _labels(mesh, h, vecs, k, _LABEL_POINTS)
+        _check_finite(np.sqrt(vals), share, sh)
+        return ordr, names
+
+    return ms, labels
 
 
 def buckling_load(

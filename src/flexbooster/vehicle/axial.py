@@ -30,8 +30,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..checks import count, nonnegative, positive
-from ..shell_of_revolution import DEFAULT_ORDER, Vehicle, buckling_load, modal_system
-from ..shell_of_revolution import vehicle_modes as _vehicle_modes
+from ..shell_of_revolution import DEFAULT_ORDER, Vehicle, buckling_load, labelled_modal_system
 
 __all__ = ["AxialResonance", "ForcedAxial", "forced_axial"]
 
@@ -196,8 +195,8 @@ def forced_axial(
     if zeta >= 1.0:
         raise ValueError(f"damping_ratio = {damping_ratio!r}: must be in [0, 1)")
     mesh = {"elements_per_segment": elements_per_segment, "order": order}
-    ms = modal_system(vehicle, 0, n_modes, F0, supported_forward_end=supported_forward_end,
-                      **mesh)
+    ms, labels = labelled_modal_system(vehicle, 0, n_modes, F0,
+                                       supported_forward_end=supported_forward_end, **mesh)
     w2, V = np.linalg.eigh(ms.stiffness + ms.geometric)  # loaded modes (Bolotin sec. 8)
     if w2[0] <= 0.0:
         lam = buckling_load(vehicle, 0, F0=F0, supported_forward_end=supported_forward_end,
@@ -209,7 +208,7 @@ def forced_axial(
     # its sign: each is taken with phi_n >= 0 (else the sign depends on round-off, e.g. the
     # same case in SI and in inch-pound units)
     phi = np.abs(V.T @ ms.aft_axial)
-    labels = _vehicle_modes(vehicle, k_min=0, k_max=0, n_modes=n_modes, **mesh)
+    mode_order, mode_type = labels()  # as vehicle_modes(k_min=0, k_max=0, n_modes) labels
     dom = np.argmax(V**2, axis=0)
     forced = phi**2 > MIN_SHARE * float(np.max(phi**2)) if np.any(phi) else np.zeros_like(
         phi, dtype=bool)
@@ -217,7 +216,7 @@ def forced_axial(
     for n in np.nonzero(forced & (omega >= lo) & (omega <= hi))[0]:  # a few modes
         flex = float(phi[n] ** 2 / w2[n])
         res.append(AxialResonance(
-            index=int(n), order=int(labels.order[dom[n]]), type=str(labels.type[dom[n]]),
+            index=int(n), order=int(mode_order[dom[n]]), type=str(mode_type[dom[n]]),
             omega=float(omega[n]), participation=float(phi[n]), flexibility=flex,
             amplitude=flex / (2.0 * zeta) if zeta > 0.0 else None))  # 1/(2 zeta) x static
     return ForcedAxial(resonances=tuple(res), omega_loaded=omega, participation=phi, F0=F0,

@@ -41,8 +41,7 @@ from ..shell_of_revolution import (
     DEFAULT_ORDER,
     Vehicle,
     buckling_load,
-    modal_system,
-    vehicle_modes,
+    labelled_modal_system,
 )
 from .axial import ForcedAxial, forced_axial
 
@@ -603,8 +602,8 @@ def harmonic_system(
     if not isinstance(supported_forward_end, bool | np.bool_):
         raise ValueError(f"supported_forward_end = {supported_forward_end!r}: must be a bool")
     mesh = {"elements_per_segment": elements_per_segment, "order": order}
-    ms = modal_system(vehicle, k, n_modes, F0, supported_forward_end=supported_forward_end,
-                      **mesh)
+    ms, labels = labelled_modal_system(vehicle, k, n_modes, F0,
+                                       supported_forward_end=supported_forward_end, **mesh)
     # steady part K_e + K_g (T = F0); M = I (Bolotin sec. 8)
     w2, V = np.linalg.eigh(ms.stiffness + ms.geometric)
     if w2[0] <= 0.0:
@@ -615,7 +614,7 @@ def harmonic_system(
                          f"loaded omega^2 = {w2[0]:.4g} 1/s^2)")
     omega_l = np.sqrt(w2)
     n = omega_l.size
-    labels = vehicle_modes(vehicle, k_min=k, k_max=k, n_modes=n_modes, **mesh)
+    mode_order, mode_type = labels()  # as vehicle_modes(k_min=k, k_max=k, n_modes) labels
     dom = np.argmax(V**2, axis=0)  # unloaded mode dominating each loaded one
     kg = V.T @ ms.geometric @ V
     return HarmonicSystem(
@@ -624,7 +623,7 @@ def harmonic_system(
         damping=2.0 * zeta * np.diag(omega_l),  # modal damping of the loaded modes
         stiffness=np.diag(w2),  # A = V^T (K_e + K_g) V
         excitation=-0.5 * (kg + kg.T),  # B = -gamma K_g: T/F0 = 1 - gamma cos Omega t
-        mode_order=labels.order[dom].astype(int), mode_type=labels.type[dom].astype(str),
+        mode_order=mode_order[dom].astype(int), mode_type=mode_type[dom].astype(str),
         mode_share=(V**2)[dom, np.arange(n)])
 
 
