@@ -33,7 +33,6 @@ References
 
 from __future__ import annotations
 
-from collections import OrderedDict
 from dataclasses import dataclass
 
 import numpy as np
@@ -88,24 +87,7 @@ _NONE = StabilityCertificate(rho=np.inf, growth_bound=np.inf, certified=False,
                              amplitude_factor=0.0)
 
 
-#: Certificates of the latest systems, by their matrices (a search asks for the certificate
-#: of the system it is given, and the vehicle's harmonics ask for it before their search and
-#: in the search's cost estimate: three times for one system).
-_RECENT: OrderedDict = OrderedDict()
-_RECENT_SIZE = 16
-
-
 def _certificate(system: LinearPeriodicSystem) -> StabilityCertificate:
-    key = (system.K0.shape, system.K0.tobytes(), system.Kc.tobytes(), system.Kb.tobytes())
-    cert = _RECENT.get(key)
-    if cert is None:
-        cert = _RECENT[key] = _compute_certificate(system)
-        while len(_RECENT) > _RECENT_SIZE:
-            _RECENT.popitem(last=False)
-    return cert
-
-
-def _compute_certificate(system: LinearPeriodicSystem) -> StabilityCertificate:
     n = system.n
     L0 = np.block([[np.zeros((n, n)), np.eye(n)], [-system.K0, -system.Kc]])
     lam, W = np.linalg.eig(L0)
