@@ -6,9 +6,11 @@ A thin layer over :mod:`flexbooster.present.io` (atomic writes) and
 
 from __future__ import annotations
 
+import dataclasses
 import io as _io
 import json
 import os
+import pickle
 import shutil
 import tempfile
 from collections.abc import Callable
@@ -196,8 +198,19 @@ def _write_files(results: Results, folder: Path, figures: bool,
     draw = figures and results.figures is not None
     with using_pool(workers) as pool:
         # the figures are drawn by the workers (started first) while this process writes
-        jobs = {name: pool.submit(_figure_task, results, name)
-                for name in figure_names(results)} if draw and pool.parallel else {}
+        # the workers read the results from one file in the staging folder (not published),
+        # without the stability table and its severities (7 of 9 MB: the figures draw from
+        # results.figures, which holds the Campbell diagram's roots); a task is then a name,
+        # which the pool sends at once: a task carrying megabytes waits for this process to
+        # release the GIL, which the JSON and CSV encoders below hold for tenths of a second
+        jobs = {}
+        if draw and pool.parallel:
+            view = folder / ".figure-results.pickle"
+            view.write_bytes(pickle.dumps(
+                dataclasses.replace(results, stability=None, severity=None),
+                protocol=pickle.HIGHEST_PROTOCOL))
+            jobs = {name: pool.submit(_figure_files_task, view, folder, name)
+                    for name in figure_names(results)}
         # without figures the workers are free: the stability table's CSV (the largest file,
         # tens of thousands of rows) is written by one of them while this process writes
         # results.json (the same bytes either way)
@@ -226,12 +239,16 @@ def _write_files(results: Results, folder: Path, figures: bool,
         svgs: dict[str, str] = {}
         if draw:
             step(OUTPUT_STAGES[1])
-            rendered = ({name: job.result() for name, job in jobs.items()} if jobs
-                        else render_figures(results))
-            for name, (svg, png) in rendered.items():
-                svgs[name] = svg
-                written.append(write_text_atomic(folder / f"{name}.svg", svg))
-                written.append(write_bytes_atomic(folder / f"{name}.png", png))
+            if jobs:  # the workers wrote the files: only their names come back
+                for name, job in jobs.items():
+                    svg_path, png_path = job.result()
+                    svgs[name] = svg_path.read_text("utf-8")
+                    written += [svg_path, png_path]
+            else:
+                for name, (svg, png) in render_figures(results).items():
+                    svgs[name] = svg
+                    written.append(write_text_atomic(folder / f"{name}.svg", svg))
+                    written.append(write_bytes_atomic(folder / f"{name}.png", png))
     step(OUTPUT_STAGES[2])
     written.append(write_report(results, folder / "report.html", svgs))
     return written
@@ -252,6 +269,16 @@ def prepare_figures() -> None:
     matplotlib.use("Agg")
     import matplotlib.backends.backend_svg  # noqa: F401 - the import is the preparation
     import matplotlib.pyplot  # noqa: F401
+
+
+def _figure_files_task(path: Path, folder: Path, name: str) -> tuple[Path, Path]:
+    """:func:`_figure_task` on the results that :func:`_write_files` pickled to ``path``, the
+    SVG and PNG written into ``folder`` by the worker (a worker's task): what comes back is
+    two paths, not the images, which would wait in the result pipe while this process holds
+    the GIL in the JSON and CSV encoders."""
+    svg, png = _figure_task(pickle.loads(Path(path).read_bytes()), name)
+    return (write_text_atomic(folder / f"{name}.svg", svg),
+            write_bytes_atomic(folder / f"{name}.png", png))
 
 
 def _figure_task(results: Results, name: str) -> tuple[str, bytes]:
