@@ -49,7 +49,7 @@ from functools import lru_cache
 from typing import Any
 
 import numpy as np
-from scipy import integrate, optimize, special
+from scipy import optimize, special
 
 from ..checks import count
 
@@ -713,6 +713,8 @@ def psi_numerical(tau1: Any, a: Any, q: Any, psi0: float = 1.0) -> np.ndarray:
     if t_end == 0.0:
         out = np.full((m, tau1.size), float(psi0))
     else:
+        from scipy import integrate  # only here: its import is a tenth of a run's imports
+
         sol = integrate.solve_ivp(
             rhs, (0.0, t_end), y0, method="DOP853", t_eval=tau1, rtol=1e-12, atol=1e-14 * abs(psi0)
         )

@@ -12,7 +12,6 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
-from scipy import integrate as sp_integrate
 from scipy.special import roots_legendre
 
 from .excitation import Excitation, _times
@@ -96,6 +95,8 @@ def integrate(group: ModalGroup, ex: Excitation, tau: Any, x0: Any = None,
     y0 = np.concatenate([x0.ravel(), np.zeros(m)])
     if tau[-1] == 0.0:
         return np.repeat(x0[:, :, None], tau.size, axis=2)
+    from scipy import integrate as sp_integrate  # only here: a tenth of a run's imports
+
     sol = sp_integrate.solve_ivp(rhs, (0.0, float(tau[-1])), y0, method=method, t_eval=tau,
                                  rtol=rtol, atol=atol)
     if not sol.success:
