@@ -197,8 +197,8 @@ def _write_files(results: Results, folder: Path, figures: bool,
 
     draw = figures and results.figures is not None
     with using_pool(workers) as pool:
-        # the figures are drawn by the workers (started first) while this process writes
-        # the workers read the results from one file in the staging folder (not published),
+        # the figures are drawn by the workers (started first) while this process writes;
+        # they read the results from one file in the staging folder (not published),
         # without the stability table and its severities (7 of 9 MB: the figures draw from
         # results.figures, which holds the Campbell diagram's roots); a task is then a name,
         # which the pool sends at once: a task carrying megabytes waits for this process to
