@@ -34,6 +34,8 @@ import sys
 import tempfile
 from pathlib import Path
 
+from baseline_checkout import baseline_checkout
+
 __all__ = ["BASELINE", "main"]
 
 #: main at the start of this work (before the new tip search).
@@ -88,14 +90,8 @@ def main() -> None:
     args = parser.parse_args()
     new = _run(ROOT / "src", args.repeat)
     with tempfile.TemporaryDirectory() as tmp:
-        base = Path(tmp) / "baseline"
-        subprocess.run(["git", "-C", str(ROOT), "worktree", "add", "-q", "--detach", str(base),
-                        args.baseline], check=True)
-        try:
+        with baseline_checkout(args.baseline, Path(tmp) / "baseline") as base:
             old = _run(base / "src", args.repeat)
-        finally:
-            subprocess.run(["git", "-C", str(ROOT), "worktree", "remove", "--force", str(base)],
-                           check=True)
     print(f"default case, best of {args.repeat}, baseline {args.baseline}:")
     print(f"1. band search: new {new['bands']} bands, {new['band_wall']:.3f} s wall "
           f"({new['band_cpu']:.3f} s CPU); baseline {old['bands']} bands, "

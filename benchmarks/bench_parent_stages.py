@@ -32,6 +32,8 @@ import sys
 import tempfile
 from pathlib import Path
 
+from baseline_checkout import baseline_checkout
+
 __all__ = ["STAGES", "main"]
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -109,10 +111,7 @@ def main() -> None:
     args = ap.parse_args()
     load = os.getloadavg()
     with tempfile.TemporaryDirectory() as tmp:
-        base = Path(tmp) / "baseline"
-        subprocess.run(["git", "-C", str(ROOT), "worktree", "add", "-q", "--detach", str(base),
-                        args.baseline], check=True)
-        try:
+        with baseline_checkout(args.baseline, Path(tmp) / "baseline") as base:
             old: dict = {}
             new: dict = {}
             for _ in range(args.rounds):  # alternating: the same load on both
@@ -120,9 +119,6 @@ def main() -> None:
                     for name, (t, digest) in _run(src, args.repeats).items():
                         prev = best.get(name, (float("inf"), digest))
                         best[name] = (min(prev[0], t), digest)
-        finally:
-            subprocess.run(["git", "-C", str(ROOT), "worktree", "remove", "--force", str(base)],
-                           check=True)
     print(f"parent-process stages, default case: {args.baseline} against this tree, CPU "
           f"seconds, best of {args.rounds} x {args.repeats}; load average "
           f"{load[0]:.2f} {load[1]:.2f} {load[2]:.2f}")

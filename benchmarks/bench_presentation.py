@@ -37,6 +37,7 @@ import time
 from pathlib import Path
 
 import matplotlib
+from baseline_checkout import baseline_checkout
 
 matplotlib.use("Agg")
 
@@ -125,10 +126,7 @@ def figures_against(baseline: str, repeat: int) -> None:
     """Print the figures' CPU now and at ``baseline`` (one process; a fresh one per figure)."""
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
-        base = tmp / "baseline"
-        subprocess.run(["git", "-C", str(ROOT), "worktree", "add", "-q", "--detach", str(base),
-                        baseline], check=True)
-        try:
+        with baseline_checkout(baseline, tmp / "baseline") as base:
             codes = {"baseline": base / "src", "now": ROOT / "src"}
             for label, src in codes.items():
                 _child(src, "analyse", str(tmp / f"{label}.pkl"))
@@ -143,9 +141,6 @@ def figures_against(baseline: str, repeat: int) -> None:
                     prepare[label] = min(prepare[label], run["prepare"])
                     for name in run["cpu"]:
                         _best(fresh[label], _child(src, "draw", pkl, name)["cpu"])
-        finally:
-            subprocess.run(["git", "-C", str(ROOT), "worktree", "remove", "--force", str(base)],
-                           check=False)
     print(f"figures of the default case, CPU s of _figure_task (SVG + PNG), best of {repeat}, "
           f"baseline {baseline}, load average {os.getloadavg()[0]:.2f}")
     print(f"  {'figure':30s} {'one process':>22s} {'fresh process each':>26s}")

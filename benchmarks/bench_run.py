@@ -28,6 +28,8 @@ import tempfile
 import time
 from pathlib import Path
 
+from baseline_checkout import baseline_checkout
+
 __all__ = ["BASELINE", "main"]
 
 #: The last commit before the redesign of issue 11.
@@ -64,10 +66,7 @@ def main() -> None:
     baseline = ap.parse_args().baseline
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
-        base = tmp / "baseline"
-        subprocess.run(["git", "-C", str(ROOT), "worktree", "add", "-q", "--detach", str(base),
-                        baseline], check=True)
-        try:
+        with baseline_checkout(baseline, tmp / "baseline") as base:
             rows = []
             for threads in (None, "1"):
                 for label, args in (("run", []), ("run --no-figures", ["--no-figures"])):
@@ -80,9 +79,6 @@ def main() -> None:
             same = subprocess.run([sys.executable, str(ROOT / "benchmarks/compare_results.py"),
                                    str(tmp / "old/results.json"), str(tmp / "new/results.json")],
                                   capture_output=True, text=True)
-        finally:
-            subprocess.run(["git", "-C", str(ROOT), "worktree", "remove", "--force", str(base)],
-                           check=False)
     print(f"flexbooster run, default case, best of {REPEATS}, baseline {baseline}: "
           f"wall s (CPU s), load average {os.getloadavg()[0]:.2f}")
     for label, (old, old_cpu), (new, new_cpu) in rows:

@@ -34,6 +34,8 @@ import sys
 import tempfile
 from pathlib import Path
 
+from baseline_checkout import baseline_checkout
+
 __all__ = ["STAGES", "main"]
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -84,18 +86,12 @@ def main() -> None:
                          "fresh memory) instead of the second")
     args = ap.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
-        base = Path(tmp) / "baseline"
-        subprocess.run(["git", "-C", str(ROOT), "worktree", "add", "-q", "--detach", str(base),
-                        args.baseline], check=True)
-        try:
+        with baseline_checkout(args.baseline, Path(tmp) / "baseline") as base:
             times: dict = {(s, c): [] for s in STAGES for c in ("old", "new")}
             for _ in range(args.repeat):  # alternating, so that the load hits both alike
                 for stage in STAGES:
                     times[stage, "old"].append(_cpu(base / "src", stage, args.cold))
                     times[stage, "new"].append(_cpu(ROOT / "src", stage, args.cold))
-        finally:
-            subprocess.run(["git", "-C", str(ROOT), "worktree", "remove", "--force", str(base)],
-                           check=False)
     print(f"worker stages of flexbooster run (default case), CPU s of the "
           f"{'first' if args.cold else 'second'} call, best / median of {args.repeat}, "
           f"baseline {args.baseline}, load average {os.getloadavg()[0]:.2f}")
