@@ -156,6 +156,31 @@ def test_core_imports_numpy_and_scipy_only_at_run_time(module):
     assert out.stdout.strip() == "", f"{module} pulls in {out.stdout.strip()}"
 
 
+def test_default_analysis_imports_neither_dask_nor_scipy_optimize():
+    # a sixth and a fifth of a run's start (issue 11): scipy.optimize (with scipy.interpolate)
+    # is imported only where a root is solved (a pitch tongue in the range, a flutter
+    # thrust), and pint without dask (flexbooster.units._pint); dask still imports afterwards
+    code = (
+        "import sys, tomllib\n"
+        "from flexbooster import analysis, case\n"
+        "d = tomllib.loads(case.default_case_text())\n"
+        "d['thrust']['n_omega'] = 60\n"
+        "d['truncation'] = dict(M1=4, N1=4, M2=4, N2=4, N=4, S=3, R=3)\n"
+        "analysis.analyze(case.load_case(d), workers=1)\n"
+        "print(sorted(m for m in ('dask', 'scipy.optimize', 'scipy.interpolate')\n"
+        "             if m in sys.modules))\n"
+        "import dask, pint\n"
+        "print(dask.__name__, case.load_case(d).booster.E)\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True)
+    listed, after = out.stdout.strip().splitlines()
+    assert listed == "[]"
+    name, E = after.split()
+    assert name == "dask"
+    assert abs(float(E) / (10.5e6 * 6894.757293168361) - 1.0) < 1e-12  # psi in Pa (NIST SP 811)
+
+
 def test_core_packages_exist():
     assert {"flexbooster.memo.geometry", "flexbooster.memo.beam",
             "flexbooster.memo.pitch"} <= set(CORE_MODULES)

@@ -288,6 +288,27 @@ def test_hill_check_given_or_computed_elsewhere_is_the_one_computed_here():
         beam_action_analysis(model, bands=False, hill=hill_check(model, n_hill=2))
 
 
+def test_exponents_computed_first_are_the_ones_computed_inside():
+    """beam_action_analysis(exponents=...): the exponents computed before the bands (flexbooster
+    run computes the stability table from them while the workers search the bands) give the
+    result computed inside, bit for bit (a pure function of the model); exponents of another
+    grid are refused."""
+    from flexbooster.memo.beam_action import beam_action_analysis, beam_action_exponents
+
+    model = _model(np.linspace(10.0, 600.0, 12), N=4, S=4, R=3)
+    inside = beam_action_analysis(model, bands=False)
+    first = beam_action_exponents(model)
+    given = beam_action_analysis(model, bands=False, exponents=first)
+    assert np.array_equal(first.alpha, inside.alpha)
+    assert np.array_equal(first.Omega_bar, inside.Omega_bar)
+    for name in ("alpha", "growth_rate", "stable", "frequencies"):
+        assert np.array_equal(getattr(given, name), getattr(inside, name)), name
+    assert given.hill_monodromy_difference == inside.hill_monodromy_difference
+    other = beam_action_exponents(_model(np.linspace(10.0, 600.0, 8), N=4, S=4, R=3))
+    with pytest.raises(ValueError, match="exponents: shape"):
+        beam_action_analysis(model, bands=False, exponents=other)
+
+
 def test_hill_converges_with_harmonics():
     # Hill's truncation: S = 8 and S = 16 agree to 1e-10 at moderate gamma (Fourier coefficients
     # of the Floquet solutions decay geometrically; Bolotin 1964, sec. 7).

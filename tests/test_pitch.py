@@ -220,6 +220,34 @@ def test_tongue_structure_from_scipy_curves(r, q):
     assert band.imag == 0 and r < band.real < r + 1
 
 
+@pytest.mark.parametrize("r", [1, 2, 3, 5])
+@pytest.mark.parametrize("gamma", [0.05, 0.4, 0.9])
+@pytest.mark.parametrize("zeta", [0.0, 0.02])
+def test_tongue_omega_bound_is_above_every_band_edge(r, gamma, zeta):
+    # Weyl's inequality (Kato 1966, V.4.3): |b_r(q) - r^2| <= 2|q|, so the upper edge of
+    # tongue r on the operating path lies below 2 omega_psi sqrt((1 - zeta^2)(1 + g)) / r;
+    # the edges are those solved from scipy-checked transition curves (pitch_band_edges)
+    w = 3.7
+    bound = pitch.pitch_tongue_omega_bound(w, gamma, tongue=r, damping_ratio=zeta)
+    edges = pitch.pitch_band_edges(w, gamma, tongue=r, damping_ratio=zeta)
+    if edges is not None:
+        assert edges[0] < edges[1] <= bound
+    b_r = special.mathieu_b(r, 0.5 * gamma * r * r)  # b_r near the tongue's tip (q ~ g r^2 / 2)
+    assert b_r >= r * r - gamma * r * r  # the inequality itself at one point, from scipy
+
+
+def test_tongues_below_the_range_are_not_solved(monkeypatch):
+    # the default booster's pitch (omega_psi = 1.2 rad/s, gamma = 0.05) against Omega >= 5 rad/s:
+    # 2 omega_psi sqrt(1 + gamma) = 2.46 rad/s < 5 rad/s, so every
+    # tongue lies below the range by the bound, and no edge is solved (no root finder: the
+    # run does not import scipy.optimize)
+    def refused(*args):
+        raise AssertionError("a tongue edge was solved")
+
+    monkeypatch.setattr(pitch, "_tongue_edges", refused)
+    assert pitch.pitch_bands(1.2, 0.05, omega_min=5.0, omega_max=2000.0) == ()
+
+
 # --------------------------------------------------------------------------------------------
 # Tier 3: invariants, methods agree
 # --------------------------------------------------------------------------------------------

@@ -438,3 +438,30 @@ def test_family_counts_in_test_case(table):
                 if a.strip():
                     fams[int(a.strip().split("(")[0])] += 1
     assert set(fams) == set(range(1, 14))
+
+
+@pytest.mark.parametrize("n", [2, 3, 4, 5, 9, 60])
+def test_cubic_spline_reproduces_cubics_and_agrees_with_scipy(n):
+    # Exact limit: not-a-knot splines reproduce polynomials of degree <= 3 (de Boor 2001,
+    # ch. IV; with 3 knots the spline is the parabola, with 2 the line, so the degree is
+    # limited there), to 1e-12 relative.  Independent implementation:
+    # scipy.interpolate.CubicSpline (the same system), to 1e-13 relative.
+    from scipy.interpolate import CubicSpline
+
+    from flexbooster.memo.responses.excitation import cubic_spline
+
+    rng = np.random.default_rng(n)
+    x = np.sort(rng.uniform(0.05, 20.0, n))
+    xi = np.concatenate([x, rng.uniform(x[0], x[-1], 200), [x[0] - 0.5, x[-1] + 0.5]])
+    degree = min(3, n - 1)
+    coef = rng.normal(size=(degree + 1, 4))
+    y = np.stack([np.polyval(c, x) for c in coef.T], axis=1)
+    exact = np.stack([np.polyval(c, xi) for c in coef.T], axis=1)
+    got = cubic_spline(x, y)(xi)
+    scale = np.abs(exact).max()
+    np.testing.assert_allclose(got, exact, rtol=0, atol=1e-12 * scale)
+    y = rng.normal(size=(n, 4))  # arbitrary data
+    reference = CubicSpline(x, y, axis=0)(xi)
+    np.testing.assert_allclose(cubic_spline(x, y)(xi), reference, rtol=0,
+                               atol=1e-13 * np.abs(reference).max())
+

@@ -270,7 +270,7 @@ def test_bad_vehicle_in_a_file_exits_2(tmp_path, capsys):
 def test_memo_vehicle_frequencies_equal_the_package(prestress):
     """k = 2..4 of analyze_vehicle on the default case = vehicle_modes on the hand-built
     Vehicle (R1 = 5.05 m, 42 m; R2 = 3.30 m, 18 m; h = 20 mm; 10.5e6 psi, 0.33,
-    2.59e-4 lbf s^2/in^4 from default_case.toml), F0 = 2.8 MN or 0; rel. 1e-12."""
+    2.59e-4 lbf s^2/in^4 from default_case.toml), F0 = 2.8 MN or 0; rel. 1e-9."""
     case = default_case()
     survey = analyze_vehicle(case, k_max=4, prestress=prestress, f_max=40.0, views=False)
     mat = dict(E=10.5e6 * 6894.757293168361, nu=0.33,
@@ -282,7 +282,10 @@ def test_memo_vehicle_frequencies_equal_the_package(prestress):
                         prestress_F0=2.8e6 if prestress else 0.0)
     got = survey.modes.k >= 2
     np.testing.assert_array_equal(survey.modes.k[got], ref.k)
-    np.testing.assert_allclose(survey.modes.hz[got], ref.hz, rtol=1e-12)
+    # 1e-9: the generalised eigen-solve of the FE model (hundreds of dofs) has a relative
+    # round-off of eps ||K|| / lambda for its low modes, which the BLAS/LAPACK kernels of the CPU
+    # move (measured 4e-11 at 38 Hz on an AMD EPYC, the inputs equal to 3 ulp: pint's psi)
+    np.testing.assert_allclose(survey.modes.hz[got], ref.hz, rtol=1e-9)
     assert survey.prestressed is prestress and survey.source == "memo"
     assert ("prestressed by the thrust" if prestress else "unloaded") in survey.note
 

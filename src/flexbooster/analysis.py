@@ -20,6 +20,7 @@ from __future__ import annotations
 import dataclasses
 import re
 from collections.abc import Callable
+from contextlib import contextmanager
 
 import numpy as np
 
@@ -34,8 +35,10 @@ from .memo import charts
 from .memo.beam import beam_modes
 from .memo.beam_action import (
     BandSearch,
+    BeamActionExponents,
     PeriodMapOverflowError,
     beam_action_analysis,
+    beam_action_exponents,
     hill_check,
     pipeline_band_search,
 )
@@ -230,34 +233,42 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
                            damping_ratio=model.pitch_damping_ratio)
     step(STAGES[2])
     shell = natural_frequencies(model)
-    action = None
+    action = exponents = None
     if beam_action:
         step(STAGES[3])
-        # a worker's bands are waited for once the exponents are done; in this process they
-        # are searched first, so that a search past the toolkit's limits is refused at once
-        action = _beam_action(model, None if search is None else search.result,
-                              None if hill is None else hill.result, max_seconds=cap)
-        extra += [AnalysisWarning("beam-action-tongue-budget", "max_seconds", why)
-                  for why in action.skipped]
+        if search is None:  # in this process the bands are searched first, so that a
+            # search past the toolkit's limits is refused at once
+            action = _beam_action(model, None, max_seconds=cap)
+        else:  # the workers' bands and Hill check are waited for after the table and its
+            # severity, which need the exponents alone
+            with _beam_action_refusals(model):
+                exponents = beam_action_exponents(model)
     table = None
     params = None
-    if stability and action is not None:
+    skipped_table = []
+    if stability and beam_action:
         step(STAGES[4])
         modes = ShellModes(shell.cylinder, shell.j, shell.k, shell.branch, shell.omega_bar)
-        params = excitation_parameters(model, action)
+        params = excitation_parameters(model, action if exponents is None else exponents)
         lo, hi = model.omega_range
         try:
             table = unstable_frequencies(
                 modes, params, Omega_bar_range=(lo / model.omega_1, hi / model.omega_1),
                 omega_1=model.omega_1, R=n.R, S=n.S, gamma=model.gamma, K=model.K)
         except TooManyRootsError as exc:  # a memory limit: the rest of the analysis stands
-            extra.append(AnalysisWarning("stability-skipped", "truncation", str(exc)))
+            skipped_table.append(AnalysisWarning("stability-skipped", "truncation", str(exc)))
     severity = None
     if table is not None:  # issue 13: how bad each root is; active = severity_rel >= threshold
         sv = case.severity
         table, severity = severity_analysis(
             model, table, params, psi0=sv.psi0, beam_amplitude=sv.beam_amplitude,
             threshold=sv.threshold, resolution=sv.resolution)
+    if exponents is not None:
+        action = _beam_action(model, search.result, hill.result, exponents=exponents)
+    if action is not None:
+        extra += [AnalysisWarning("beam-action-tongue-budget", "max_seconds", why)
+                  for why in action.skipped]
+    extra += skipped_table
     data = None
     if figures:
         step(STAGES[5])
@@ -375,21 +386,16 @@ def simulate_case(case: Case, Omega: float, *, tau_max: float, n_out: int = 401,
         return simulate(model, Omega, tau_max, n_out=n_out, psi0=psi0, params=params)
 
 
-def _beam_action(model, bands: bool | BandSearch | Callable[[], BandSearch] | None,
-                 hill=None, *, max_seconds: float | None = None):
-    """:func:`beam_action_analysis` with the refusals of issue 18 as one-line CaseErrors: a
-    period map beyond floating point is the load's; a band search past the toolkit's limits
-    (resonance candidates, monodromy steps: a truncation far beyond what the budget allows,
-    e.g. N = 150 with ``--max-seconds 1e9``) the truncation's.  ``bands`` None: searched
-    here first (:func:`pipeline_band_search` with ``max_seconds``); else as
-    :func:`beam_action_analysis` takes it (e.g. a worker's result, waited for after the
-    exponents)."""
+@contextmanager
+def _beam_action_refusals(model):
+    """The refusals of issue 18 in the beam action as one-line CaseErrors: a period map
+    beyond floating point is the load's; a band search past the toolkit's limits (resonance
+    candidates, monodromy steps: a truncation far beyond what the budget allows, e.g.
+    N = 150 with ``--max-seconds 1e9``) the truncation's."""
     from .errors import CaseError
 
     try:
-        if bands is None:
-            bands = pipeline_band_search(model, max_seconds=max_seconds)
-        return beam_action_analysis(model, bands=bands, hill=hill)
+        yield
     except PeriodMapOverflowError as exc:  # issue 18: a documented one-line refusal
         raise CaseError("thrust.F0", model.F0,
                         f"the beam action grows beyond the floating-point range ({exc}): far "
@@ -400,6 +406,19 @@ def _beam_action(model, bands: bool | BandSearch | Callable[[], BandSearch] | No
         raise CaseError("truncation.N", model.truncation.N,
                         f"the beam-action band search is past a limit of the Floquet toolkit "
                         f"({exc}): reduce truncation.N") from exc
+
+
+def _beam_action(model, bands: bool | BandSearch | Callable[[], BandSearch] | None,
+                 hill=None, *, max_seconds: float | None = None,
+                 exponents: BeamActionExponents | None = None):
+    """:func:`beam_action_analysis` with the refusals of :func:`_beam_action_refusals`.
+    ``bands`` None: searched here first (:func:`pipeline_band_search` with
+    ``max_seconds``); else as :func:`beam_action_analysis` takes it (e.g. a worker's result,
+    waited for after the exponents), as are ``hill`` and ``exponents``."""
+    with _beam_action_refusals(model):
+        if bands is None:
+            bands = pipeline_band_search(model, max_seconds=max_seconds)
+        return beam_action_analysis(model, bands=bands, hill=hill, exponents=exponents)
 
 
 def analyze_vehicle(case: Case, *, k_max: int | None = None, f_max: float | None = None,

@@ -102,6 +102,8 @@ __all__ = [
     "pipeline_band_search",
     "pipeline_bands",
     "BeamActionResult",
+    "BeamActionExponents",
+    "beam_action_exponents",
     "beam_action_analysis",
     "StabilityChart",
     "stability_chart",
@@ -1757,10 +1759,67 @@ def _hill_points(n_grid: int, n_hill: int) -> np.ndarray:
     return np.unique(np.round(np.linspace(0, n_grid - 1, n_hill)).astype(int))
 
 
+@dataclass(frozen=True)
+class BeamActionExponents:
+    """The beam-action exponents on the Omega grid: the first part of the beam action.
+
+    What the stability table needs (:func:`flexbooster.memo.responses.excitation_parameters`),
+    before the bands and the Hill check of :func:`beam_action_analysis` complete it.
+
+    Attributes
+    ----------
+    Omega_bar : numpy.ndarray
+        Shape (G,), Omega / omega_1 (dimensionless), the grid as in
+        :attr:`BeamActionResult.Omega_bar`.
+    alpha : numpy.ndarray
+        Shape (G, R), the exponents alpha_r on the natural branch (dimensionless), as in
+        :attr:`BeamActionResult.alpha`.
+    reduced : numpy.ndarray
+        Shape (G, N + 1), every exponent of the monodromy matrix reduced to its canonical
+        representative (:func:`reduced_exponents`; dimensionless).
+    frequencies : numpy.ndarray
+        Shape (N + 1,), the loaded-beam frequencies (units of omega_1).
+    """
+
+    Omega_bar: np.ndarray
+    alpha: np.ndarray
+    reduced: np.ndarray
+    frequencies: np.ndarray
+
+
+def beam_action_exponents(model: BoosterModel) -> BeamActionExponents:
+    """alpha_r along the Omega grid from the monodromy matrix (no bands, no Hill check).
+
+    Parameters
+    ----------
+    model : BoosterModel
+        The derived model: its Omega grid (rad/s), omega_1, mass properties, F0 (N), gamma, K
+        and truncation N (elastic modes), R (exponents reported).
+
+    Returns
+    -------
+    BeamActionExponents
+        The exponents that :func:`beam_action_analysis` reports, bit for bit (it computes
+        them so when not given them).
+
+    References
+    ----------
+    Tech Memo 104, eqs. (4.1-10)..(4.1-12); Bolotin (1964).
+    """
+    system = beam_system(model)
+    R = count("R", model.truncation.R, 1, system.N + 1)
+    Ob, gam, _ = _grid(model.Omega, float(model.gamma), system.omega_1)
+    red_m = reduced_exponents(monodromy_exponents(system, Ob * system.omega_1, gam))
+    freqs = loaded_frequencies(system)
+    return BeamActionExponents(Omega_bar=Ob, alpha=natural_branch(red_m, Ob, freqs)[:, :R],
+                               reduced=red_m, frequencies=freqs)
+
+
 def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3,
                          bands: bool | tuple | BandSearch | Callable[[], tuple | BandSearch]
                          = True,
                          hill: HillResult | Callable[[], HillResult] | None = None,
+                         exponents: BeamActionExponents | None = None,
                          ) -> BeamActionResult:
     """alpha_r along the Omega grid and the beam-action verdict (pipeline entry point).
 
@@ -1784,6 +1843,9 @@ def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3,
         :func:`hill_check` of this model with this ``n_hill``, or a function of no argument
         returning it (called after the exponents are computed: the check computed
         elsewhere, e.g. in a worker process); default: computed here.
+    exponents : BeamActionExponents, optional
+        :func:`beam_action_exponents` of this model, computed before (e.g. for the stability
+        table while the bands are searched elsewhere); default: computed here.
 
     Returns
     -------
@@ -1806,7 +1868,12 @@ def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3,
     gamma = float(model.gamma)
     Ob, gam, _ = _grid(model.Omega, gamma, system.omega_1)
     pick = _hill_points(Ob.size, n_hill)
-    red_m = reduced_exponents(monodromy_exponents(system, Ob * system.omega_1, gam))
+    if exponents is None:
+        exponents = beam_action_exponents(model)
+    elif exponents.alpha.shape != (Ob.size, R):
+        raise ValueError(f"exponents: shape {exponents.alpha.shape}, not the {(Ob.size, R)} "
+                         "of this model's grid and truncation.R")
+    red_m, freqs = exponents.reduced, exponents.frequencies
     if hill is None:
         hill = hill_exponents(system, Ob[pick] * system.omega_1, gam[pick], S)
     elif callable(hill):  # computed elsewhere, meanwhile
@@ -1815,8 +1882,6 @@ def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3,
         raise ValueError(f"hill: {hill.alpha.shape[0]} points, not the {pick.size} of "
                          f"n_hill = {n_hill} on this model's grid")
     diff = float(np.max(_match_distance(reduced_exponents(hill.alpha), red_m[pick])))
-    freqs = loaded_frequencies(system)
-    alpha_all = natural_branch(red_m, Ob, freqs)
     im = np.max(red_m.imag, axis=1)
     stable = im <= _STABLE_TOL
     # below the stability tolerance Im alpha is round-off: report a growth rate of 0 there
@@ -1841,7 +1906,7 @@ def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3,
         if band.growth_rate_max > peak:
             peak, at_peak = float(band.growth_rate_max), float(band.omega_at_max)
     return BeamActionResult(
-        Omega=Ob * system.omega_1, Omega_bar=Ob, alpha=alpha_all[:, :R], frequencies=freqs[:R],
+        Omega=Ob * system.omega_1, Omega_bar=Ob, alpha=exponents.alpha, frequencies=freqs[:R],
         stable=stable, growth_rate=growth, max_growth_rate=peak,
         Omega_at_max=at_peak, hill_monodromy_difference=diff,
         verdict=verdict, gamma=gamma, K=system.K,

@@ -25,7 +25,13 @@ from ..floquet import region_boundaries
 from .beam import free_free_eigenvalues, mode_shape
 from .beam_action import BAND_OMEGA_BAR_MIN, beam_system, modal_damping
 from .geometry import MassProperties
-from .pitch import PITCH_MAX_TONGUE, PitchResult, pitch_band_edges, transition_curves
+from .pitch import (
+    PITCH_MAX_TONGUE,
+    PitchResult,
+    pitch_band_edges,
+    pitch_tongue_omega_bound,
+    transition_curves,
+)
 from .shell import ShellFrequencies
 from .stability import StabilityTable, excitation, excitation_curves
 
@@ -349,6 +355,8 @@ def pitch_band_chart(model: Any, *, n_gamma: int = PITCH_BAND_CHART_LEVELS,
     regions = []
     if w > 0.0:
         for r in range(1, PITCH_MAX_TONGUE + 1):
+            if pitch_tongue_omega_bound(w, gamma_max, tongue=r, damping_ratio=zeta) < lo:
+                break  # this and every higher tongue lie below the range (no solve)
             top = pitch_band_edges(w, gamma_max, tongue=r, damping_ratio=zeta)
             if top is None:  # below round-off (or the critical gamma): so are higher tongues
                 break

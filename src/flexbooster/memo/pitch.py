@@ -49,7 +49,7 @@ from functools import lru_cache
 from typing import Any
 
 import numpy as np
-from scipy import optimize, special
+from scipy import special
 
 from ..checks import count
 
@@ -66,6 +66,7 @@ __all__ = [
     "MATHIEU_SCALE_MAX",
     "PitchBand",
     "pitch_band_edges",
+    "pitch_tongue_omega_bound",
     "pitch_bands",
     "PitchResult",
     "pitch_analysis",
@@ -847,6 +848,7 @@ def _tongue_edges(r: int, g: float) -> tuple[float, float] | None:
     the tongue's width.  None when a_r - b_r is below the round-off of the characteristic
     values (the tongue cannot be resolved).
     """
+    from scipy import optimize  # here: its import is a sixth of a run's (unused by most)
 
     def mid(x: float) -> float:
         q = 0.5 * g * x
@@ -893,6 +895,7 @@ def _damped_band(x_b: float, x_a: float, g: float, zeta: float) -> tuple | None:
     The growth rate in 1/s is f Omega / 2 with Omega proportional to x^(-1/2): the peak is
     that of f / sqrt(x).
     """
+    from scipy import optimize  # here: its import is a sixth of a run's (unused by most)
     s = 1.0 / (1.0 - zeta * zeta)
 
     def f(x: float) -> float:
@@ -914,6 +917,7 @@ def _damped_band(x_b: float, x_a: float, g: float, zeta: float) -> tuple | None:
 
 def _critical_gamma(r: int, gamma: float, zeta: float) -> float:
     """Smallest gamma at which tongue r of the damped pitch opens (brentq on the peak)."""
+    from scipy import optimize  # here: its import is a sixth of a run's (unused by most)
     s = 1.0 / (1.0 - zeta * zeta)
 
     def peak(gam: float) -> float:
@@ -933,6 +937,45 @@ def _critical_gamma(r: int, gamma: float, zeta: float) -> float:
             return 0.0
     return float(optimize.brentq(peak, g_lo, gamma, xtol=1e-10 * gamma, rtol=1e-12,
                                  maxiter=200))
+
+
+def pitch_tongue_omega_bound(omega_psi: float, gamma: float, *, tongue: int,
+                             damping_ratio: float = 0.0) -> float:
+    """An upper bound (rad/s) on the thrust frequencies of Mathieu tongue r, without a solve.
+
+    Parameters
+    ----------
+    omega_psi : float
+        Rigid-body pitch frequency (rad/s), >= 0.
+    gamma : float
+        Pulsation amplitude (dimensionless), 0 <= gamma < 1.
+    tongue : int
+        Tongue order r >= 1.
+    damping_ratio : float
+        Pitch damping ratio zeta (dimensionless), 0 <= zeta < 1.
+
+    Returns
+    -------
+    float
+        2 omega_psi sqrt((1 - zeta^2) (1 + g)) / r with g = gamma / (1 - zeta^2): every band
+        edge of :func:`pitch_band_edges` (damped or not) at this gamma is at or below it, and
+        so is every higher tongue's.
+
+    Notes
+    -----
+    ``|a_r(q) - r^2|`` and ``|b_r(q) - r^2|`` are at most ``2|q|``: the term ``2 q cos 2 tau``
+    of Mathieu's operator has norm ``2|q|``, and Weyl's inequality bounds the shift of each
+    eigenvalue of a self-adjoint operator by the norm of the perturbation, in each parity class
+    apart [1]_.  On the path ``q = g x / 2`` the tongue therefore starts at
+    ``x_b >= r^2 / (1 + g)``, i.e. ``Omega = 2 omega_psi sqrt((1 - zeta^2) / x) <=`` the bound;
+    the damped band lies inside the undamped tongue.
+
+    References
+    ----------
+    .. [1] T. Kato, *Perturbation Theory for Linear Operators*, Springer, 1966, V.4.3.
+    """
+    s = 1.0 - damping_ratio * damping_ratio
+    return float(2.0 * omega_psi * np.sqrt(s * (1.0 + gamma / s)) / tongue)
 
 
 def pitch_band_edges(omega_psi: float, gamma: float, *, tongue: int,
@@ -1049,6 +1092,10 @@ def pitch_bands(omega_psi: float, gamma: float, *, omega_min: float, omega_max: 
     r_first = max(1, int(np.floor(2.0 * w / omega_max * 0.5)))
     bands = []
     for r in range(r_first, PITCH_MAX_TONGUE + 1):
+        # a tongue wholly below omega_min by this bound (and every higher one) ends the search
+        # before an edge is solved
+        if pitch_tongue_omega_bound(w, gamma, tongue=r, damping_ratio=zeta) < omega_min:
+            break
         edges = _tongue_edges(r, g)
         if edges is None:
             break  # this and every higher tongue is below round-off

@@ -21,6 +21,7 @@ from typing import Any
 
 __all__ = [
     "check_finite",
+    "csv_text",
     "dumps_finite",
     "hold_signals",
     "locked_folder",
@@ -190,6 +191,53 @@ def check_finite(data: Any, where: str = "results") -> None:
             check_finite(value, f"{where}[{i}]")
 
 
+#: Shortest list whose floats :func:`_float_texts` formats once per distinct value.
+_REPEATED_MIN = 1024
+#: Most distinct values, as a fraction of the list, for which that is faster (measured:
+#: 42,000 floats with 1.5 % distinct values take 0.010 s against 0.045 s; with 12 %, no gain).
+_REPEATED_FRACTION = 1 / 32
+
+
+def _float_texts(values: list) -> list[str] | None:
+    """The text of each float of a long list of floats with few distinct values.
+
+    ``repr`` of each distinct value once (the text that ``json`` and ``csv`` write: the
+    shortest round-trip repr), then looked up: a table of tens of thousands of roots holds a
+    few hundred shell frequencies, and the formatting of floats is most of the time spent in
+    writing results.  Zeros are formatted one by one (0.0 == -0.0 as keys).  None (the
+    encoders format the list themselves) for a short list, one that holds anything but
+    floats, or one with more distinct values than :data:`_REPEATED_FRACTION`.
+    """
+    n = len(values)
+    if n < _REPEATED_MIN or type(values[0]) is not float:
+        return None
+    if 2 * len(set(values[:_REPEATED_MIN])) > _REPEATED_MIN:  # mostly distinct: at once
+        return None
+    if set(map(type, values)) != {float}:
+        return None
+    distinct = set(values)
+    if len(distinct) > _REPEATED_FRACTION * n:
+        return None
+    texts = {value: repr(value) for value in distinct}
+    return [texts[value] if value else repr(value) for value in values]
+
+
+def _compact_json(data: Any) -> str:
+    """``json.dumps(data, allow_nan=False, separators=(",", ":"))``, the same text: mappings
+    with string keys are encoded entry by entry so that long lists of repeated floats are
+    formatted by :func:`_float_texts` (a ValueError for NaN or infinity, as json's)."""
+    if type(data) is dict and all(type(key) is str for key in data):
+        return "{" + ",".join(f"{json.dumps(key)}:{_compact_json(value)}"
+                              for key, value in data.items()) + "}"
+    if type(data) is list:
+        texts = _float_texts(data)
+        if texts is not None:
+            if not all(map(math.isfinite, set(data))):
+                raise ValueError("Out of range float values are not JSON compliant")
+            return "[" + ",".join(texts) + "]"
+    return json.dumps(data, allow_nan=False, separators=(",", ":"))
+
+
 def dumps_finite(data: Any, **kwargs: Any) -> str:
     """``json.dumps`` that refuses NaN and infinity, naming the first offending path.
 
@@ -213,6 +261,8 @@ def dumps_finite(data: Any, **kwargs: Any) -> str:
         then) names the value.
     """
     try:
+        if kwargs == {"separators": (",", ":")}:  # compact, as results.json is written
+            return _compact_json(data)
         return json.dumps(data, allow_nan=False, **kwargs)
     except ValueError:
         check_finite(data)
@@ -238,6 +288,43 @@ def write_json_atomic(path: str | Path, data: Mapping[str, Any]) -> Path:
     return write_text_atomic(path, dumps_finite(data, separators=(",", ":")) + "\n")
 
 
+def csv_text(table: Iterable[Mapping[str, Any]] | Mapping[str, list], *,
+             header: bool = True) -> str:
+    """A table as CSV text (the text of :func:`write_csv_atomic`).
+
+    Parameters
+    ----------
+    table : Mapping of str to list, or iterable of Mapping
+        By columns (name -> values, all of one length: the fast form) or by rows (mappings
+        with the same keys; the keys of the first row are the header).
+    header : bool
+        Start with the names of the columns; without it, the rows alone: the texts of
+        consecutive slices of the rows joined are the text of the whole, byte for byte.
+
+    Returns
+    -------
+    str
+        One line per row, ``\\n``-terminated; numbers as ``str`` writes them.
+    """
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    if isinstance(table, Mapping):
+        if table:
+            if header:
+                writer.writerow(list(table))
+            # the same text as the numbers themselves (csv writes str(x), repr for floats)
+            writer.writerows(zip(*(_float_texts(column) or column
+                                   for column in table.values()), strict=True))
+    else:
+        rows = list(table)
+        if rows:
+            names = list(rows[0])
+            if header:
+                writer.writerow(names)
+            writer.writerows([row[n] for n in names] for row in rows)
+    return buffer.getvalue()
+
+
 def write_csv_atomic(path: str | Path,
                      table: Iterable[Mapping[str, Any]] | Mapping[str, list]) -> Path:
     """Write a table as CSV atomically.
@@ -255,16 +342,4 @@ def write_csv_atomic(path: str | Path,
     pathlib.Path
         The destination path.
     """
-    buffer = io.StringIO()
-    writer = csv.writer(buffer, lineterminator="\n")
-    if isinstance(table, Mapping):
-        if table:
-            writer.writerow(list(table))
-            writer.writerows(zip(*table.values(), strict=True))
-    else:
-        rows = list(table)
-        if rows:
-            names = list(rows[0])
-            writer.writerow(names)
-            writer.writerows([row[n] for n in names] for row in rows)
-    return write_text_atomic(path, buffer.getvalue())
+    return write_text_atomic(path, csv_text(table))

@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING
 from .._parallel import TaskPool, using_pool
 from ..results import Results
 from .io import (
+    csv_text,
     hold_signals,
     locked_folder,
     sha256_file,
@@ -211,20 +212,26 @@ def _write_files(results: Results, folder: Path, figures: bool,
                 protocol=pickle.HIGHEST_PROTOCOL))
             jobs = {name: pool.submit(_figure_files_task, view, folder, name)
                     for name in figure_names(results)}
-        # without figures the workers are free: the stability table's CSV (the largest file,
-        # tens of thousands of rows) is written by one of them while this process writes
-        # results.json (the same bytes either way)
-        table_csv = (pool.submit(_write_table_csv, results.stability,
-                                 folder / "unstable-frequencies.csv")
-                     if results.stability is not None and not jobs and pool.parallel else None)
+        # without figures the workers are free: they format the stability table's CSV (the
+        # largest file, tens of thousands of rows), a slice of the rows each, the table read
+        # from one file in the staging folder, while this process writes results.json (the
+        # same bytes either way)
+        table_parts = []
+        if results.stability is not None and not jobs and pool.parallel:
+            source = folder / ".stability-table.pickle"
+            source.write_bytes(pickle.dumps(results.stability,
+                                            protocol=pickle.HIGHEST_PROTOCOL))
+            table_parts = [pool.submit(_table_csv_part, source, part, pool.workers)
+                           for part in range(pool.workers)]
         step(OUTPUT_STAGES[0])
         written = [write_json_atomic(folder / "results.json", results.to_dict())]
         written.append(write_csv_atomic(folder / "shell-frequencies.csv",
                                         results.shell.to_rows()))
         if results.stability is not None:
-            written.append(table_csv.result() if table_csv is not None else
-                           _write_table_csv(results.stability,
-                                            folder / "unstable-frequencies.csv"))
+            path = folder / "unstable-frequencies.csv"
+            written.append(write_text_atomic(path, "".join(p.result() for p in table_parts))
+                           if table_parts else
+                           write_csv_atomic(path, results.stability.to_columns()))
         if results.severity is not None:  # issue 13: every band, most severe first
             written.append(write_csv_atomic(folder / "resonance-bands.csv",
                                             results.severity.band_rows()))
@@ -254,9 +261,14 @@ def _write_files(results: Results, folder: Path, figures: bool,
     return written
 
 
-def _write_table_csv(table, path: Path) -> Path:
-    """The stability table's CSV (a worker's task when the workers are free)."""
-    return write_csv_atomic(path, table.to_columns())
+def _table_csv_part(path: Path, part: int, parts: int) -> str:
+    """Rows ``part`` of ``parts`` (consecutive slices; the header with the first) of the CSV
+    text of the stability table pickled to ``path`` (a worker's task)."""
+    columns = pickle.loads(Path(path).read_bytes()).to_columns()
+    n = len(next(iter(columns.values())))
+    lo, hi = n * part // parts, n * (part + 1) // parts
+    return csv_text({name: values[lo:hi] for name, values in columns.items()},
+                    header=part == 0)
 
 
 def prepare_figures() -> None:

@@ -37,7 +37,6 @@ from dataclasses import dataclass
 
 import numpy as np
 import scipy.linalg
-import scipy.optimize
 
 from .. import floquet
 from ..checks import count, nonnegative, positive
@@ -252,6 +251,8 @@ def follower_flutter_thrust(
     if i == 0:
         raise ValueError(f"thrust_max = {thrust_max!r}: the system already flutters at the "
                          f"first scan point {thrusts[0]:.6g} N (raise n_scan)")
+    import scipy.optimize  # here: its import is a sixth of a run's (unused by most)
+
     return float(scipy.optimize.brentq(excess, thrusts[i - 1], thrusts[i],
                                        xtol=rtol * thrusts[i], maxiter=200))
 

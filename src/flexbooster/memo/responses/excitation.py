@@ -13,9 +13,11 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+import scipy.linalg
 
 from ...checks import count, finite, positive
 from ..beam_action import (
+    BeamActionExponents,
     BeamActionResult,
     beam_system,
     hill_exponents,
@@ -272,7 +274,8 @@ class ExcitationParameters:
         return self.beta(Omega_bar).real, self.alpha(Omega_bar)
 
 
-def excitation_parameters(model: BoosterModel, beam_action: BeamActionResult
+def excitation_parameters(model: BoosterModel,
+                          beam_action: BeamActionResult | BeamActionExponents
                           ) -> ExcitationParameters:
     """The parameter function beta(Omega_bar), alpha_r(Omega_bar) of a booster.
 
@@ -280,8 +283,9 @@ def excitation_parameters(model: BoosterModel, beam_action: BeamActionResult
     ----------
     model : BoosterModel
         The derived model (omega_psi, gamma, omega_1).
-    beam_action : BeamActionResult
-        Beam-action exponents on the case's Omega grid (natural branch).
+    beam_action : BeamActionResult or BeamActionExponents
+        Beam-action exponents on the case's Omega grid (natural branch): its ``Omega_bar``
+        and ``alpha`` alone are used.
 
     Returns
     -------
@@ -294,15 +298,116 @@ def excitation_parameters(model: BoosterModel, beam_action: BeamActionResult
     ----------
     Tech Memo 104, eqs. (4.1-10), (4.1-11), (4.2-4), (4.2-9).
     """
-    from scipy.interpolate import CubicSpline
-
     x = beam_action.Omega_bar
     order = np.argsort(x)
     y = (beam_action.alpha.real * x[:, None])[order]
     return ExcitationParameters(
         omega_psi=float(model.omega_psi), gamma=float(model.gamma),
         omega_1=float(model.omega_1), Omega_bar=x[order], alpha_Omega=y,
-        _spline=CubicSpline(x[order], y, axis=0))
+        _spline=cubic_spline(x[order], y))
+
+
+@dataclass(frozen=True)
+class CubicSplineData:
+    """A piecewise cubic y(x) = sum_k c[k, i] (x - x_i)^(3 - k) on [x_i, x_(i+1)].
+
+    Attributes
+    ----------
+    x : numpy.ndarray
+        Shape (n,), the breakpoints, increasing (the unit of the abscissa).
+    c : numpy.ndarray
+        Shape (4, n - 1, m), the coefficients, highest power first (the unit of y per unit
+        of x to the power).
+    """
+
+    x: np.ndarray
+    c: np.ndarray
+
+    def __call__(self, xi: np.ndarray) -> np.ndarray:
+        """The spline at ``xi``, shape (k,) (the unit of x); returns shape (k, m).
+
+        The first and last pieces extend beyond the breakpoints.  The operations are those of
+        scipy's ``PPoly`` (powers of s = x - x_i by repeated products, summed from the
+        constant term), so the values are the same, bit for bit.
+        """
+        i = np.clip(np.searchsorted(self.x, xi, side="right") - 1, 0, self.x.size - 2)
+        s = (xi - self.x[i])[:, None]
+        c = self.c[:, i]
+        value = 0.0 + c[3]
+        power = s
+        value = value + c[2] * power
+        power = power * s
+        value = value + c[1] * power
+        power = power * s
+        return value + c[0] * power
+
+
+def cubic_spline(x: np.ndarray, y: np.ndarray) -> CubicSplineData:
+    """The cubic spline interpolant of y(x) with not-a-knot ends.
+
+    Parameters
+    ----------
+    x : numpy.ndarray
+        Shape (n,), n >= 2, strictly increasing, finite (any unit).
+    y : numpy.ndarray
+        Shape (n, m), finite (any unit).
+
+    Returns
+    -------
+    CubicSplineData
+        Callable on an array of abscissae.
+
+    Notes
+    -----
+    The slopes s_i at the knots solve the tridiagonal system of C2 continuity with the
+    not-a-knot end conditions (de Boor [1]_, ch. IV: the third derivative continuous at x_1 and
+    x_(n-2)), by ``scipy.linalg.solve_banded``; the pieces are the cubic Hermite polynomials of
+    (y_i, s_i).  With three knots both conditions are one, and the spline is the parabola
+    through them; with two, the line.  These are the systems and the arithmetic of
+    ``scipy.interpolate.CubicSpline`` (a test checks that the values agree), without the
+    import of ``scipy.interpolate``, which imports ``scipy.optimize``: together a sixth of a
+    run's start.
+
+    References
+    ----------
+    .. [1] C. de Boor, *A Practical Guide to Splines*, revised ed., Springer, 2001, ch. IV.
+    """
+    x = np.asarray(x, dtype=float)
+    y = np.asarray(y, dtype=float)
+    n = x.size
+    dx = np.diff(x)
+    dxr = dx[:, None]
+    slope = np.diff(y, axis=0) / dxr
+    if n == 2:  # the line
+        s = np.concatenate((slope, slope))
+    elif n == 3:  # the parabola: s_0 + s_1 = 2 slope_0, s_1 + s_2 = 2 slope_1, C2 at x_1
+        dense = np.array([[1.0, 1.0, 0.0],
+                          [dx[1], 2 * (dx[0] + dx[1]), dx[0]],
+                          [0.0, 1.0, 1.0]])
+        rhs = np.stack((2 * slope[0], 3 * (dxr[0] * slope[1] + dxr[1] * slope[0]),
+                        2 * slope[1]))
+        s = scipy.linalg.solve(dense, rhs, overwrite_a=True, overwrite_b=True,
+                               check_finite=False)
+    else:
+        band = np.zeros((3, n))  # the tridiagonal matrix by diagonals (solve_banded's layout)
+        rhs = np.empty(y.shape)
+        band[1, 1:-1] = 2 * (dx[:-1] + dx[1:])  # C2 continuity at the interior knots
+        band[0, 2:] = dx[:-1]
+        band[-1, :-2] = dx[1:]
+        rhs[1:-1] = 3 * (dxr[1:] * slope[:-1] + dxr[:-1] * slope[1:])
+        d = x[2] - x[0]  # not-a-knot at x_1
+        band[1, 0] = dx[1]
+        band[0, 1] = d
+        rhs[0] = ((dxr[0] + 2 * d) * dxr[1] * slope[0] + dxr[0] ** 2 * slope[1]) / d
+        d = x[-1] - x[-3]  # and at x_(n-2)
+        band[1, -1] = dx[-2]
+        band[-1, -2] = d
+        rhs[-1] = (dxr[-1] ** 2 * slope[-2] + (2 * d + dxr[-1]) * dxr[-2] * slope[-1]) / d
+        s = scipy.linalg.solve_banded((1, 1), band, rhs, overwrite_ab=True, overwrite_b=True,
+                                      check_finite=False)
+    t = (s[:-1] + s[1:] - 2 * slope) / dxr  # the Hermite cubic of each piece
+    return CubicSplineData(x=x, c=np.stack((t / dxr, (slope - s[:-1]) / dxr - t, s[:-1],
+                                            y[:-1])))
 
 
 def _beam_exponents(model: BoosterModel, x: np.ndarray, N: int, S: int) -> tuple:
