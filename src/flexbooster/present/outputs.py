@@ -272,15 +272,16 @@ def _table_csv_part(path: Path, part: int, parts: int) -> str:
 
 
 def prepare_figures() -> None:
-    """Import matplotlib, pyplot and the SVG backend (about 0.3 s of CPU in a fresh process),
-    so that a worker process that draws figures later starts at once: a task for
+    """Import matplotlib and its Agg (PNG) and SVG backends (about 0.3 s of CPU in a fresh
+    process), so that a worker process that draws figures later starts at once: a task for
     :meth:`flexbooster._parallel.TaskPool.submit_when_idle` while the analysis keeps the
-    parent busy (``flexbooster run``)."""
+    parent busy (``flexbooster run``).  Not pyplot: the figures are plain
+    ``matplotlib.figure.Figure`` objects, which pyplot does not hold."""
     import matplotlib
 
     matplotlib.use("Agg")
-    import matplotlib.backends.backend_svg  # noqa: F401 - the import is the preparation
-    import matplotlib.pyplot  # noqa: F401
+    import matplotlib.backends.backend_agg  # noqa: F401 - the import is the preparation
+    import matplotlib.backends.backend_svg  # noqa: F401
 
 
 def _figure_files_task(path: Path, folder: Path, name: str) -> tuple[Path, Path]:
@@ -294,15 +295,11 @@ def _figure_files_task(path: Path, folder: Path, name: str) -> tuple[Path, Path]
 
 
 def _figure_task(results: Results, name: str) -> tuple[str, bytes]:
-    """Draw and render one figure (a worker's task): SVG text and PNG bytes."""
-    import matplotlib.pyplot as plt
-
+    """Draw and render one figure (a worker's task): SVG text and PNG bytes (the figure is not
+    pyplot's: nothing to close)."""
     fig = make_figures(results, names=(name,))[name]
-    try:
-        svg, png = _render(fig)
-        return _svg_titles(fig, svg), png
-    finally:
-        plt.close(fig)
+    svg, png = _render(fig)
+    return _svg_titles(fig, svg), png
 
 
 def render_figures(results: Results, *, workers: int = 1) -> dict[str, tuple[str, bytes]]:
