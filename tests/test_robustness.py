@@ -419,6 +419,13 @@ API_CALLS = [
      lambda: ba.pipeline_band_search(_model(), max_seconds=-1.0)),
     ("beam_action_analysis-n_hill-0", "n_hill",
      lambda: ba.beam_action_analysis(_model(), n_hill=0, bands=False)),
+    ("pitch_tongue_omega_bound-tongue-0", "tongue",
+     lambda: pitch.pitch_tongue_omega_bound(1.0, 0.1, tongue=0)),
+    ("pitch_tongue_omega_bound-gamma-nan", "gamma",
+     lambda: pitch.pitch_tongue_omega_bound(1.0, nan, tongue=1)),
+    ("cubic_spline-x-not-increasing", "x",
+     lambda: responses.excitation.cubic_spline(np.array([0.0, 2.0, 1.0, 3.0]),
+                                               np.zeros((4, 1)))),
     # flexbooster.floquet (owner: bands2) and flexbooster.vehicle (owner: vk1)
     ("periodic_boundaries-period", "period",
      lambda: fhill.periodic_boundaries(_M2, _C2, _A2, _B2, period="x")),

@@ -1870,9 +1870,9 @@ def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3,
     pick = _hill_points(Ob.size, n_hill)
     if exponents is None:
         exponents = beam_action_exponents(model)
-    elif exponents.alpha.shape != (Ob.size, R):
-        raise ValueError(f"exponents: shape {exponents.alpha.shape}, not the {(Ob.size, R)} "
-                         "of this model's grid and truncation.R")
+    elif exponents.alpha.shape != (Ob.size, R) or not np.array_equal(exponents.Omega_bar, Ob):
+        raise ValueError(f"exponents: shape {exponents.alpha.shape} on another grid, not the "
+                         f"{(Ob.size, R)} of this model's grid and truncation.R")
     red_m, freqs = exponents.reduced, exponents.frequencies
     if hill is None:
         hill = hill_exponents(system, Ob[pick] * system.omega_1, gam[pick], S)

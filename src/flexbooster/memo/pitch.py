@@ -974,6 +974,14 @@ def pitch_tongue_omega_bound(omega_psi: float, gamma: float, *, tongue: int,
     ----------
     .. [1] T. Kato, *Perturbation Theory for Linear Operators*, Springer, 1966, V.4.3.
     """
+    for name, value in (("omega_psi", omega_psi), ("gamma", gamma),
+                        ("damping_ratio", damping_ratio)):
+        if not (np.isfinite(value) and value >= 0.0):
+            raise ValueError(f"{name} = {value!r}: must be finite and >= 0")
+    if not (gamma < 1.0 and damping_ratio < 1.0):
+        raise ValueError(f"gamma = {gamma!r}, damping_ratio = {damping_ratio!r}: must be < 1")
+    if isinstance(tongue, bool) or int(tongue) != tongue or tongue < 1:
+        raise ValueError(f"tongue = {tongue!r}: must be an integer >= 1")
     s = 1.0 - damping_ratio * damping_ratio
     return float(2.0 * omega_psi * np.sqrt(s * (1.0 + gamma / s)) / tongue)
 

@@ -376,6 +376,10 @@ def cubic_spline(x: np.ndarray, y: np.ndarray) -> CubicSplineData:
     y = np.asarray(y, dtype=float)
     n = x.size
     dx = np.diff(x)
+    if (x.ndim != 1 or n < 2 or y.ndim != 2 or y.shape[0] != n
+            or not (np.all(np.isfinite(x)) and np.all(np.isfinite(y)) and np.all(dx > 0))):
+        raise ValueError("x, y: x must be 1-D, finite, strictly increasing, n >= 2; y finite, "
+                         "shape (n, m)")
     dxr = dx[:, None]
     slope = np.diff(y, axis=0) / dxr
     if n == 2:  # the line
