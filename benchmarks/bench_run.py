@@ -4,12 +4,13 @@ The baseline is commit ``BASELINE`` (the last commit before the redesign), check
 side with ``git worktree`` into a temporary folder and run with the same Python and packages
 in the same session, alternating with the current code (``REPEATS`` rounds, each running
 every code once, so that a slow spell of the machine falls on all alike; best and median of
-the wall clock, subprocess), as a user runs it (OPENBLAS_NUM_THREADS unset: the
-library limits the BLAS threads itself since the redesign) and as ``make run`` does
-(OPENBLAS_NUM_THREADS=1).  The current code is timed with its default worker processes
-(``--jobs``: the usable CPUs) and with ``--jobs 1`` (everything in one process, as the
-baseline); CPU time is the sum over the process and its workers.  It also checks that both
-write the same numbers (``compare_results.py``, 1e-12 relative).
+the wall clock, subprocess, the summary printed to a pipe), as a user runs it
+(OPENBLAS_NUM_THREADS unset: the library limits the BLAS threads itself since the redesign)
+and as ``make run`` does (OPENBLAS_NUM_THREADS=1); the speed-up is given as best over best,
+median over median and the median of each round's ratio.  The current code is timed with its
+default worker processes (``--jobs``: the usable CPUs) and with ``--jobs 1`` (everything in
+one process, as the baseline); CPU time is the sum over the process and its workers.  It also
+checks that both write the same numbers (``compare_results.py``, 1e-12 relative).
 
 Run from the repository root (needs git and the project's venv)::
 
@@ -50,11 +51,13 @@ def _run_once(src: Path, args: list[str], out: Path, threads: str | None) -> tup
     env.pop("PYTHONDONTWRITEBYTECODE", None)
     if threads is not None:
         env["OPENBLAS_NUM_THREADS"] = threads
+    # the summary printed, as `make run` prints it (to a pipe here: no progress bar); the
+    # measurements of sessions 1-7 used -q, which skips it in both codes
     cmd = [sys.executable, "-c", "from flexbooster.cli import main; main()", "run", *args,
-           "-q", "-o", str(out)]
+           "-o", str(out)]
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
-    subprocess.run(cmd, env=env, check=True, cwd=out.parent)
+    subprocess.run(cmd, env=env, check=True, cwd=out.parent, stdout=subprocess.DEVNULL)
     wall = time.perf_counter() - start
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     return wall, after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime
@@ -100,9 +103,12 @@ def main() -> None:
         (ow, oc), (nw, nc) = (min(x[0] for x in old), min(x[1] for x in old)), \
             (min(x[0] for x in new), min(x[1] for x in new))
         om, nm = statistics.median(x[0] for x in old), statistics.median(x[0] for x in new)
+        # each round's own ratio (the two codes run back to back), then their median: a slow
+        # spell of the machine that spans a round cancels
+        paired = statistics.median(o[0] / n[0] for o, n in zip(old, new, strict=True))
         print(f"  {label:50s} baseline {ow:6.2f} / {om:6.2f} ({oc:5.2f})   now {nw:6.2f} / "
               f"{nm:6.2f} ({nc:5.2f})   speed-up {ow / nw:4.1f}x best, {om / nm:4.1f}x median, "
-              f"{oc / nc:4.1f}x CPU")
+              f"{paired:4.1f}x per round, {oc / nc:4.1f}x CPU")
     print(same.stdout.strip())
 
 

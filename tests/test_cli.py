@@ -391,3 +391,92 @@ def test_simulate_prints_a_verdict_per_mode(tmp_path, capsys):
     assert "modal coordinates growing over the window" in out
     assert re.search(r"cylinder \d (axial|circumferential|radial) [UVW], j = \d+, k = \d+: "
                      r"(growing|bounded) \(peak ", out)
+
+
+@pytest.mark.parametrize("colour", [False, True])
+def test_summary_rendered_early_is_the_summary_printed(monkeypatch, capsys, colour):
+    """``run`` renders its summary while the workers are busy and prints it after the
+    progress bar: the same text as rich printing it directly (the reference), with the
+    colours of a terminal too."""
+    from rich.console import Console
+
+    from flexbooster.analysis import analyze
+    from flexbooster.case import default_case, load_case
+    from flexbooster.cli import _rendered
+    from flexbooster.present.summary import print_summary
+
+    data = default_case().model_dump(exclude_none=True)
+    data["thrust"]["n_omega"] = 40
+    data["truncation"].update(M1=6, N1=6, M2=6, N2=6, N=4, S=4, R=3)
+    results = analyze(load_case(data), figures=False, vehicle=False)
+    monkeypatch.setenv("COLUMNS", "100")
+    if colour:
+        monkeypatch.setenv("FORCE_COLOR", "1")
+    print_summary(results, Console())
+    direct = capsys.readouterr().out
+    _rendered(results, "table", False, print_summary)()
+    assert capsys.readouterr().out == direct
+    assert ("\x1b[" in direct) is colour and "Verdicts" in direct
+
+
+_BLAS_PROBE = """
+import os, sys
+from flexbooster import cli
+try:
+    cli.main(["--version"])
+except SystemExit:
+    pass
+import numpy, threadpoolctl
+blas = [i["num_threads"] for i in threadpoolctl.threadpool_info() if i["user_api"] == "blas"]
+print(max(blas), os.environ.get("OPENBLAS_NUM_THREADS"), os.environ.get("MKL_NUM_THREADS"))
+"""
+
+
+@pytest.mark.parametrize("user, expected", [
+    ({}, ["1", "1", "1"]),  # none chosen: one BLAS thread, set before numpy loads its BLAS
+    ({"OPENBLAS_NUM_THREADS": "3"}, [None, "3", "None"]),  # the user's choice stands, no other
+])
+def test_the_command_runs_one_blas_thread_unless_the_user_chose(user, expected):
+    """The command's process sets one BLAS thread before numpy loads (the reference: the
+    BLAS library's own count, threadpoolctl), unless a thread variable is set."""
+    import os
+
+    env = {k: v for k, v in os.environ.items()
+           if k not in ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "OMP_NUM_THREADS")}
+    done = subprocess.run([sys.executable, "-c", _BLAS_PROBE], env={**env, **user},
+                          capture_output=True, text=True, timeout=120, check=True)
+    threads, *variables = done.stdout.split("\n")[-2].split()
+    assert variables == expected[1:]
+    if expected[0] is not None:  # (the user's count: OpenBLAS caps it at the CPUs)
+        assert threads == expected[0]
+
+
+_INTERRUPTED_EXEC = """
+import flexbooster.__main__ as entry
+import flexbooster.cli as cli
+
+
+def interrupted(argv=None):  # Ctrl-C inside scipy's exec("from numpy import *") at its import
+    exec("raise KeyboardInterrupt")
+
+
+cli.main = interrupted
+entry.main([])
+"""
+
+
+def test_an_interrupt_inside_a_library_exec_still_exits_130(tmp_path):
+    """CPython marks a KeyboardInterrupt that leaves ``exec`` of a string as unhandled and,
+    under ``python -m``, kills the process with SIGINT at exit (status -2) although the
+    command caught it: test_sigterm_cleans_up_like_ctrl_c met it about 1 run in 5 when the
+    signal landed in scipy's import.  The reference: an interrupted run's status (130) and
+    its one line."""
+    import os
+
+    (tmp_path / "interrupted_exec.py").write_text(_INTERRUPTED_EXEC)
+    path = os.pathsep.join(p for p in (str(tmp_path), os.environ.get("PYTHONPATH")) if p)
+    done = subprocess.run([sys.executable, "-m", "interrupted_exec"],
+                          env={**os.environ, "PYTHONPATH": path}, capture_output=True,
+                          text=True, timeout=120)
+    assert done.returncode == 130
+    assert done.stderr.strip() == "flexbooster: error: interrupted"

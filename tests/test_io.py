@@ -91,3 +91,60 @@ def test_csv_text_is_csv_module_text_and_slices_join_to_the_whole():
     parts = [fio.csv_text({k: v[lo:hi] for k, v in table.items()}, header=lo == 0)
              for lo, hi in zip(cuts[:-1], cuts[1:], strict=True)]
     assert "".join(parts) == whole
+
+
+def _reference_csv(table, header=True):
+    """The reference CSV text: csv.writer on the values themselves (standard library)."""
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    if header:
+        writer.writerow(list(table))
+    writer.writerows(zip(*table.values(), strict=True))
+    return buffer.getvalue()
+
+
+#: Strings that csv quotes (a comma, a quote, line breaks) or json escapes (a quote, a
+#: backslash, non-ASCII, control characters), and the empty string.
+_AWKWARD = ["a,b", 'say "x"', "", "two\nlines", "cr\r\nlf", "ünïcode", "back\\slash", "\t tab",
+            " lead", "plain"]
+
+
+@pytest.mark.parametrize("table", [
+    _repeated_table(),
+    {**_repeated_table(n=1300), "awkward": (_AWKWARD * 130)},
+    {"x": [0.5, -0.0, 1e-300, 2.0 ** 70], "n": [3, -4, 2 ** 70, 0], "s": _AWKWARD[:4]},
+    # mixed and other types: the encoders format them (the same path as before)
+    {"mixed": [1, 2.5, "x", None], "flag": [True, False, True, None]},
+    {"only": ["", "x", "a,b"]},  # one column: csv quotes an empty field there
+    {"empty": [], "also": []},
+], ids=["stability-like", "awkward-strings", "short", "mixed", "one-column", "no-rows"])
+def test_table_texts_are_the_csv_and_json_texts_and_slices_join(table):
+    # the references: csv.writer on the values and json.dumps of each column
+    texts = fio.table_texts(table)
+    assert texts.csv == _reference_csv(table) == fio.csv_text(table)
+    for name, column in table.items():
+        assert f"[{texts.json_items[name]}]" == json.dumps(column, separators=(",", ":"))
+    n = len(next(iter(table.values())))
+    cuts = sorted({0, min(1, n), n // 3, n // 2, n})
+    parts = [fio.table_texts({k: v[lo:hi] for k, v in table.items()}, header=lo == 0)
+             for lo, hi in zip(cuts[:-1], cuts[1:], strict=True)] or [texts]
+    assert fio.TableTexts.join(parts) == texts
+
+
+@pytest.mark.parametrize("bad", [float("nan"), float("inf")])
+def test_table_texts_refuse_what_json_refuses_and_csv_text_writes_it(bad):
+    table = _repeated_table()
+    table["Omega"][17] = bad
+    with pytest.raises(ValueError, match="not JSON compliant"):
+        fio.table_texts(table)
+    assert fio.csv_text(table) == _reference_csv(table)  # csv writes 'nan' / 'inf' as it is
+
+
+def test_json_text_is_written_as_it_is():
+    # the reference: json.dumps of the same document with the values themselves
+    column = [0.1, 2.0, -3.5]
+    document = {"a": {"table": {"x": fio.JSONText(json.dumps(column, separators=(",", ":")))}},
+                "b": [1.5] * 3}
+    expected = json.dumps({"a": {"table": {"x": column}}, "b": [1.5] * 3},
+                          separators=(",", ":"))
+    assert fio.dumps_finite(document, separators=(",", ":")) == expected

@@ -174,3 +174,43 @@ def test_one_pool_shared_by_the_analysis_and_the_files(small_case, tmp_path):
     for path in sorted((tmp_path / "one").iterdir()):
         assert path.read_bytes() == (tmp_path / "shared" / path.name).read_bytes(), path.name
     assert not multiprocessing.active_children()
+
+
+@pytest.mark.parametrize("workers, figures", [(1, False), (2, False), (2, True)])
+def test_while_waiting_is_called_once_before_the_set_is_published(small_case, tmp_path,
+                                                                  workers, figures):
+    """write_outputs calls ``while_waiting`` (``flexbooster run`` renders its summary then)
+    exactly once, while the files are still in the staging folder and before the report."""
+    results = analysis.analyze(small_case, workers=1, figures=figures, vehicle=False)
+    out = tmp_path / "out"
+    seen = []
+
+    def meanwhile():
+        staged = [p.name for p in out.glob(".flexbooster-staging-*/*")]
+        seen.append(("report.html" in staged, (out / "results.json").exists()))
+
+    write_outputs(results, out, figures=figures, workers=workers, while_waiting=meanwhile)
+    assert seen == [(False, False)]
+    assert (out / "report.html").exists()
+
+
+@pytest.mark.parametrize("workers", [1, 2])
+def test_a_nan_in_the_stability_table_is_named_and_nothing_is_published(small_case, tmp_path,
+                                                                       workers):
+    """The stability table's texts are formatted by the workers (or this process): a NaN is
+    refused with its path in results.json, as dumps_finite names it, and no file of the set
+    is published (the reference: the walk of check_finite, tests/test_io.py)."""
+    import dataclasses
+
+    import numpy as np
+
+    results = analysis.analyze(small_case, workers=1, figures=False, vehicle=False)
+    severity = results.stability.severity.copy()
+    severity[3] = np.nan
+    bad = dataclasses.replace(
+        results, stability=dataclasses.replace(results.stability, severity=severity))
+    out = tmp_path / "out"
+    with pytest.raises(ValueError, match=r"results\.stability\.table\.severity\[3\] = nan"):
+        write_outputs(bad, out, figures=False, workers=workers)
+    assert list(out.iterdir()) == []
+    assert not multiprocessing.active_children()

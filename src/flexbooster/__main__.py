@@ -14,8 +14,10 @@ interpreter exit (atexit handlers, flushed streams).  Without that, a signal tha
 the outcome is decided -- in the last bytecodes of ``main`` or after the interpreter has
 restored the default SIGINT action during its finalisation -- ends the process *by* the
 signal (status -2 or -15 instead of 0 or 130), which ``os._exit(130)`` used to paper over for
-the interrupted path only.  The one window left is Python's own start-up, before this module
-runs (a few tens of milliseconds).
+the interrupted path only; and an interrupt that left a library's ``exec`` of a string (scipy's,
+while it is imported) made the interpreter end by SIGINT too (:func:`_forget_interrupted_exec`).
+The one window left is Python's own start-up, before this module runs (a few tens of
+milliseconds).
 """
 
 import signal
@@ -41,6 +43,21 @@ def _finishing() -> None:
     """
     for signum in (signal.SIGINT, signal.SIGTERM):
         signal.signal(signum, signal.SIG_IGN)
+
+
+def _forget_interrupted_exec() -> None:
+    """Clear CPython's note of an interrupt that left ``exec`` of a string.
+
+    CPython marks a KeyboardInterrupt that propagates out of ``exec()`` or ``eval()`` of a
+    *string* as unhandled, and at exit kills the process with SIGINT (status -2) even when
+    the interrupt was caught further up; the next ``exec`` of a string clears the mark (the
+    interpreter's ``run_eval_code_obj``, CPython 3.11-3.13).  scipy's array-API layer runs
+    ``exec("from numpy import *")`` while it is imported, so Ctrl-C or SIGTERM during that part
+    of the start ended with -2 instead of 130 (about 1 run in 5 with SIGTERM sent 0.3-0.8 s
+    after the start; tests/test_cli.py).  Run once the outcome is decided and the signals
+    ignored.
+    """
+    exec("")  # noqa: S102 - the empty string: the point is the interpreter's bookkeeping
 
 
 def main(argv: list[str] | None = None) -> None:
@@ -74,6 +91,7 @@ def main(argv: list[str] | None = None) -> None:
         _finishing()
         code = EXIT_INTERRUPTED
         print(INTERRUPTED_MESSAGE, file=sys.stderr)
+    _forget_interrupted_exec()
     sys.exit(code)
 
 

@@ -207,14 +207,36 @@ def _progress(stages: int, quiet: bool) -> Iterator[Callable[[str], None]]:
         bar.update(task, completed=stages)
 
 
-def _report(results, fmt: str, quiet: bool, printer: Callable) -> None:
-    """The summary (table) or the JSON document (json) on standard output."""
+def _rendered(results, fmt: str, quiet: bool, printer: Callable) -> Callable[[], None]:
+    """The summary (table: ``printer(results, console)``) or the JSON document (json),
+    rendered now; the function returned prints it on standard output (the same text as
+    printing it then: rich's console captured, its file and broken-pipe handling kept), so
+    that ``run`` renders it while its workers are busy."""
     if fmt == "json":
         from .present.io import dumps_finite
 
-        click.echo(dumps_finite(results.to_dict(), indent=2))
-    elif not quiet:
-        printer(results, Console())
+        document = dumps_finite(results.to_dict(), indent=2)
+        return lambda: click.echo(document)
+    if quiet:
+        return lambda: None
+    console = Console()
+    with console.capture() as capture:
+        printer(results, console)
+    text = capture.get()
+
+    def show() -> None:
+        try:
+            console.file.write(text)
+            console.file.flush()
+        except BrokenPipeError:  # as rich's own print: standard output closed (| head)
+            console.on_broken_pipe()
+
+    return show
+
+
+def _report(results, fmt: str, quiet: bool, printer: Callable) -> None:
+    """The summary (table) or the JSON document (json) on standard output."""
+    _rendered(results, fmt, quiet, printer)()
 
 
 def _wrote(paths, fmt: str, quiet: bool) -> None:
@@ -266,9 +288,13 @@ def run(case_file: Path | None, output: Path, no_figures: bool, no_vehicle: bool
                 pool.submit_when_idle(prepare_figures)
         results = analyze(case, progress=step, figures=not no_figures, vehicle=not no_vehicle,
                           workers=pool, on_estimate=getattr(step, "estimate", None))
+        # the summary is rendered while the workers format the table or draw the figures
+        # (printed below, after the progress bar, as before)
+        shows = []
         paths = write_outputs(results, output, figures=not no_figures, progress=step,
-                              workers=pool)
-    _report(results, fmt, quiet, print_summary)
+                              workers=pool, while_waiting=lambda: shows.append(
+                                  _rendered(results, fmt, quiet, print_summary)))
+    shows[0]()
     _wrote(paths, fmt, quiet)
 
 
@@ -580,6 +606,28 @@ def _register_sweep() -> None:
 _register_sweep()
 
 
+#: The BLAS libraries' thread-count variables that the command sets to one when the user has
+#: set none of them: read once, when numpy loads its BLAS.
+_BLAS_THREAD_VARIABLES = ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "OMP_NUM_THREADS")
+
+
+def _one_blas_thread() -> None:
+    """One BLAS thread for the command's process and the processes it starts, unless the
+    user chose (any of :data:`_BLAS_THREAD_VARIABLES` set) or numpy is loaded already (the
+    command called in a process that has it: nothing to gain).
+
+    Every solver of the analysis runs with one BLAS thread anyway
+    (:func:`flexbooster._threads.blas_threads`), in worker processes of its own (``--jobs``):
+    a BLAS thread pool only costs CPU, which the workers need (``run --no-figures`` on two
+    cores used about 0.8 s more CPU and 6-13 % more wall time with OPENBLAS_NUM_THREADS unset
+    than with 1 before this: benchmarks/README.md, session 8); this is what ``make run``
+    sets.
+    """
+    if "numpy" not in sys.modules and not any(os.environ.get(v) for v in _BLAS_THREAD_VARIABLES):
+        for name in _BLAS_THREAD_VARIABLES:
+            os.environ[name] = "1"
+
+
 def main(argv: list[str] | None = None) -> None:
     """The ``flexbooster`` command, in-process (the console script and ``python -m
     flexbooster`` call it through :func:`flexbooster.__main__.main`, which also handles
@@ -590,6 +638,7 @@ def main(argv: list[str] | None = None) -> None:
     argv : list of str, optional
         Command-line arguments (default: ``sys.argv[1:]``).
     """
+    _one_blas_thread()
     previous = signal.getsignal(signal.SIGTERM)
     signal.signal(signal.SIGTERM, _terminate)  # SIGTERM cleans up like Ctrl-C
     try:

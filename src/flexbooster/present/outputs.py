@@ -20,10 +20,13 @@ from typing import TYPE_CHECKING
 from .._parallel import TaskPool, using_pool
 from ..results import Results
 from .io import (
-    csv_text,
+    JSONText,
+    TableTexts,
+    check_finite,
     hold_signals,
     locked_folder,
     sha256_file,
+    table_texts,
     write_bytes_atomic,
     write_csv_atomic,
     write_json_atomic,
@@ -146,6 +149,7 @@ def write_outputs(
     progress: Callable[[str], None] | None = None,
     *,
     workers: int | TaskPool = 1,
+    while_waiting: Callable[[], None] | None = None,
 ) -> list[Path]:
     """Write every output of an analysis into ``folder``.
 
@@ -164,6 +168,11 @@ def write_outputs(
         tables (:class:`flexbooster._parallel.TaskPool`, or an open pool, e.g. the one the
         analysis used; 1: all in this process, one after the other).  The files are the
         same, byte for byte.
+    while_waiting : callable, optional
+        Called once, without arguments, in this process while the workers format the
+        stability table or draw the figures (after this process's own share of the files),
+        or before the report without workers: e.g. ``flexbooster run`` renders its summary
+        then.
 
     Returns
     -------
@@ -185,14 +194,15 @@ def write_outputs(
     stage = Path(tempfile.mkdtemp(prefix=STAGING_PREFIX, dir=folder))
     try:  # every file into the staging folder, then the set renamed into place (issue 18)
         staged = _write_files(results, stage, figures, progress or (lambda stage: None),
-                              workers)
+                              workers, while_waiting or (lambda: None))
         return publish_set(stage, folder, [p.name for p in staged])
     finally:
         shutil.rmtree(stage, ignore_errors=True)
 
 
 def _write_files(results: Results, folder: Path, figures: bool,
-                 step: Callable[[str], None], workers: int | TaskPool) -> list[Path]:
+                 step: Callable[[str], None], workers: int | TaskPool,
+                 while_waiting: Callable[[], None]) -> list[Path]:
     """Every output file of :func:`write_outputs`, written into ``folder``."""
     from .report import write_report
 
@@ -212,41 +222,50 @@ def _write_files(results: Results, folder: Path, figures: bool,
                 protocol=pickle.HIGHEST_PROTOCOL))
             jobs = {name: pool.submit(_figure_files_task, view, folder, name)
                     for name in figure_names(results)}
-        # without figures the workers are free: they format the stability table's CSV (the
-        # largest file, tens of thousands of rows), a slice of the rows each, the table read
-        # from one file in the staging folder, while this process writes results.json (the
-        # same bytes either way)
+        # without figures the workers are free: they format the stability table (the
+        # largest part of results.json and the largest CSV, tens of thousands of rows), a
+        # slice of the rows each, the table read from one file in the staging folder, while
+        # this process formats the rest (the same bytes either way)
         table_parts = []
         if results.stability is not None and not jobs and pool.parallel:
             source = folder / ".stability-table.pickle"
             source.write_bytes(pickle.dumps(results.stability,
                                             protocol=pickle.HIGHEST_PROTOCOL))
-            table_parts = [pool.submit(_table_csv_part, source, part, pool.workers)
+            table_parts = [pool.submit(_table_texts_part, source, part, pool.workers)
                            for part in range(pool.workers)]
         step(OUTPUT_STAGES[0])
-        written = [write_json_atomic(folder / "results.json", results.to_dict())]
-        written.append(write_csv_atomic(folder / "shell-frequencies.csv",
-                                        results.shell.to_rows()))
-        if results.stability is not None:
-            path = folder / "unstable-frequencies.csv"
-            written.append(write_text_atomic(path, "".join(p.result() for p in table_parts))
-                           if table_parts else
-                           write_csv_atomic(path, results.stability.to_columns()))
+        document = results.to_dict()
+        csvs = [("shell-frequencies.csv", results.shell.to_rows())]
         if results.severity is not None:  # issue 13: every band, most severe first
-            written.append(write_csv_atomic(folder / "resonance-bands.csv",
-                                            results.severity.band_rows()))
+            csvs.append(("resonance-bands.csv", results.severity.band_rows()))
         if results.vehicle is not None:  # a case with [vehicle] only
-            written.append(write_csv_atomic(folder / "vehicle-modes.csv",
-                                            results.vehicle.to_columns()))
+            csvs.append(("vehicle-modes.csv", results.vehicle.to_columns()))
         if results.vehicle_regions is not None:  # the vehicle's parametric regions (issue 15)
             from .vehicle import vehicle_region_columns
 
-            written.append(write_csv_atomic(folder / "vehicle-regions.csv",
-                                            vehicle_region_columns(results.vehicle_regions)))
+            csvs.append(("vehicle-regions.csv", vehicle_region_columns(results.vehicle_regions)))
+        table = None
+        if table_parts:
+            while_waiting()  # this process's turn while the workers format the table
+        if results.stability is not None:  # one text of each value for the JSON and the CSV
+            try:
+                table = (TableTexts.join(part.result() for part in table_parts) if table_parts
+                         else table_texts(document["stability"]["table"]))
+            except ValueError:  # a NaN: named with its path, as dumps_finite names it
+                check_finite(document)
+                raise
+            document["stability"]["table"] = {name: JSONText(f"[{items}]")
+                                              for name, items in table.json_items.items()}
+        written = [write_json_atomic(folder / "results.json", document)]
+        written.append(write_csv_atomic(folder / csvs[0][0], csvs[0][1]))
+        if table is not None:
+            written.append(write_text_atomic(folder / "unstable-frequencies.csv", table.csv))
+        written += [write_csv_atomic(folder / name, rows) for name, rows in csvs[1:]]
         svgs: dict[str, str] = {}
         if draw:
             step(OUTPUT_STAGES[1])
             if jobs:  # the workers wrote the files: only their names come back
+                while_waiting()  # this process's turn while the workers draw
                 for name, job in jobs.items():
                     svg_path, png_path = job.result()
                     svgs[name] = svg_path.read_text("utf-8")
@@ -256,19 +275,22 @@ def _write_files(results: Results, folder: Path, figures: bool,
                     svgs[name] = svg
                     written.append(write_text_atomic(folder / f"{name}.svg", svg))
                     written.append(write_bytes_atomic(folder / f"{name}.png", png))
+    if not (table_parts or jobs):  # without workers: once this process wrote the rest
+        while_waiting()
     step(OUTPUT_STAGES[2])
     written.append(write_report(results, folder / "report.html", svgs))
     return written
 
 
-def _table_csv_part(path: Path, part: int, parts: int) -> str:
-    """Rows ``part`` of ``parts`` (consecutive slices; the header with the first) of the CSV
-    text of the stability table pickled to ``path`` (a worker's task)."""
+def _table_texts_part(path: Path, part: int, parts: int) -> TableTexts:
+    """Rows ``part`` of ``parts`` (consecutive slices; the CSV header with the first) of the
+    texts (:func:`flexbooster.present.io.table_texts`) of the stability table pickled to
+    ``path`` (a worker's task)."""
     columns = pickle.loads(Path(path).read_bytes()).to_columns()
     n = len(next(iter(columns.values())))
     lo, hi = n * part // parts, n * (part + 1) // parts
-    return csv_text({name: values[lo:hi] for name, values in columns.items()},
-                    header=part == 0)
+    return table_texts({name: values[lo:hi] for name, values in columns.items()},
+                       header=part == 0)
 
 
 def prepare_figures() -> None:
