@@ -480,3 +480,19 @@ def test_an_interrupt_inside_a_library_exec_still_exits_130(tmp_path):
                           text=True, timeout=120)
     assert done.returncode == 130
     assert done.stderr.strip() == "flexbooster: error: interrupted"
+
+
+def test_a_fault_of_the_summary_loses_no_result(tmp_path, capsys, monkeypatch):
+    """The summary is rendered while the files are being written: an error in it (a bug) is
+    the internal error it was (exit 1, one line), raised once the files are published."""
+    import flexbooster.present.summary as summary
+
+    def broken(results, console):
+        raise RuntimeError("summary fault")
+
+    monkeypatch.setattr(summary, "print_summary", broken)
+    assert run_cli(["run", "--no-figures", "-o", str(tmp_path)]) == 1
+    err = capsys.readouterr().err
+    assert "internal error: RuntimeError: summary fault" in err
+    assert json.loads((tmp_path / "results.json").read_text())["stability"]["count"] > 0
+    assert (tmp_path / "manifest.json").exists()

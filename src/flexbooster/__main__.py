@@ -49,13 +49,13 @@ def _forget_interrupted_exec() -> None:
     """Clear CPython's note of an interrupt that left ``exec`` of a string.
 
     CPython marks a KeyboardInterrupt that propagates out of ``exec()`` or ``eval()`` of a
-    *string* as unhandled, and at exit kills the process with SIGINT (status -2) even when
-    the interrupt was caught further up; the next ``exec`` of a string clears the mark (the
-    interpreter's ``run_eval_code_obj``, CPython 3.11-3.13).  scipy's array-API layer runs
-    ``exec("from numpy import *")`` while it is imported, so Ctrl-C or SIGTERM during that part
-    of the start ended with -2 instead of 130 (about 1 run in 5 with SIGTERM sent 0.3-0.8 s
-    after the start; tests/test_cli.py).  Run once the outcome is decided and the signals
-    ignored.
+    *string* as unhandled, and under ``python -m`` kills the process with SIGINT at exit
+    (status -2) even when the interrupt was caught further up; the next ``exec`` of a string
+    clears the mark (``run_eval_code_obj`` in CPython's pythonrun.c; measured with 3.11).
+    scipy's array-API layer runs ``exec`` on a string (a star import of numpy) while it is
+    imported, so Ctrl-C or SIGTERM in that part of the start ended with -2 instead of 130 (5
+    of 39 runs with SIGTERM sent 0.3-5 s after the start; tests/test_cli.py).  Run once the
+    outcome is decided and the signals ignored.
     """
     exec("")  # noqa: S102 - the empty string: the point is the interpreter's bookkeeping
 

@@ -290,10 +290,18 @@ def run(case_file: Path | None, output: Path, no_figures: bool, no_vehicle: bool
                           workers=pool, on_estimate=getattr(step, "estimate", None))
         # the summary is rendered while the workers format the table or draw the figures
         # (printed below, after the progress bar, as before)
-        shows = []
+        shows: list = []
+
+        def render() -> None:
+            try:
+                shows.append(_rendered(results, fmt, quiet, print_summary))
+            except Exception as exc:  # noqa: BLE001 - raised once the files are written
+                shows.append(exc)
+
         paths = write_outputs(results, output, figures=not no_figures, progress=step,
-                              workers=pool, while_waiting=lambda: shows.append(
-                                  _rendered(results, fmt, quiet, print_summary)))
+                              workers=pool, while_waiting=render)
+    if isinstance(shows[0], Exception):  # a fault of the summary loses no result
+        raise shows[0]
     shows[0]()
     _wrote(paths, fmt, quiet)
 
