@@ -256,6 +256,26 @@ def test_inline_svg_prefixes_ids_and_references():
         inline_svg("<html></html>", "p", "x")
 
 
+def test_inline_svg_of_every_figure_keeps_each_reference_resolved(svgs):
+    """On the real figures (matplotlib's SVG: thousands of ids, glyph uses, clip paths): every
+    id of the document, and nothing else, comes out prefixed, and every reference
+    (xlink:href="#...", url(#...)) names an id of the result (the XML parsed independently of
+    the text replacements)."""
+    xlink = "{http://www.w3.org/1999/xlink}href"
+    for name, svg in svgs.items():
+        before = ET.fromstring(svg.encode("utf-8"))
+        after = ET.fromstring(inline_svg(svg, f"fig-{name}", name))
+        ids = {el.get("id") for el in before.iter()} - {None}
+        new_ids = {el.get("id") for el in after.iter()} - {None}
+        assert ids and new_ids == {f"fig-{name}-{i}" for i in ids}, name
+        refs = [el.get(xlink)[1:] for el in after.iter()
+                if (el.get(xlink) or "").startswith("#")]  # not the embedded images' data:
+        refs += [m for el in after.iter() for v in el.attrib.values()
+                 for m in re.findall(r"url\(#([^)]+)\)", v)]
+        assert refs, name
+        assert set(refs) <= new_ids, name
+
+
 # ----------------------------------------------------------------------------------------------
 # Nodal patterns (memo Fig. 4)
 # ----------------------------------------------------------------------------------------------

@@ -202,7 +202,7 @@ _REPEATED_MIN = 1024
 _REPEATED_FRACTION = 1 / 32
 
 
-def _float_texts(values: list) -> list[str] | None:
+def _float_texts(values: list, *, for_json: bool = False) -> list[str] | None:
     """The text of each float of a long list of floats with few distinct values.
 
     ``repr`` of each distinct value once (the text that ``json`` and ``csv`` write: the
@@ -210,7 +210,8 @@ def _float_texts(values: list) -> list[str] | None:
     few hundred shell frequencies, and the formatting of floats is most of the time spent in
     writing results.  Zeros are formatted one by one (0.0 == -0.0 as keys).  None (the
     encoders format the list themselves) for a short list, one that holds anything but
-    floats, or one with more distinct values than :data:`_REPEATED_FRACTION`.
+    floats, or one with more distinct values than :data:`_REPEATED_FRACTION`.  With
+    ``for_json``, a NaN or an infinity among the values is a ValueError (as json's).
     """
     n = len(values)
     if n < _REPEATED_MIN or type(values[0]) is not float:
@@ -222,8 +223,17 @@ def _float_texts(values: list) -> list[str] | None:
     distinct = set(values)
     if len(distinct) > _REPEATED_FRACTION * n:
         return None
+    if for_json:
+        _refuse_non_finite(distinct)
     texts = {value: repr(value) for value in distinct}
     return [texts[value] if value else repr(value) for value in values]
+
+
+def _refuse_non_finite(values) -> None:
+    """A ValueError, as json's ``allow_nan=False``, if a float of ``values`` is NaN or
+    infinite (each distinct value is checked: pass a set)."""
+    if not all(map(math.isfinite, values)):
+        raise ValueError("Out of range float values are not JSON compliant")
 
 
 @dataclass(frozen=True)
@@ -253,10 +263,8 @@ def _compact_json(data: Any) -> str:
         return "{" + ",".join(f"{json.dumps(key)}:{_compact_json(value)}"
                               for key, value in data.items()) + "}"
     if type(data) is list:
-        texts = _float_texts(data)
+        texts = _float_texts(data, for_json=True)
         if texts is not None:
-            if not all(map(math.isfinite, set(data))):
-                raise ValueError("Out of range float values are not JSON compliant")
             return "[" + ",".join(texts) + "]"
     return json.dumps(data, allow_nan=False, separators=(",", ":"))
 
@@ -327,9 +335,11 @@ def _cell_texts(values: list, with_json: bool) -> tuple[list[str], list[str]] | 
     csv quotes them, as json escapes them.  A number's text never needs quoting in CSV."""
     kinds = set(map(type, values))
     if kinds == {float}:
-        texts = _float_texts(values) or list(map(float.__repr__, values))
-        if with_json and not all(map(math.isfinite, set(values))):
-            raise ValueError("Out of range float values are not JSON compliant")
+        texts = _float_texts(values, for_json=with_json)
+        if texts is None:
+            if with_json:
+                _refuse_non_finite(set(values))
+            texts = list(map(float.__repr__, values))
         return texts, texts
     if kinds == {int}:
         distinct = {value: int.__repr__(value) for value in set(values)}

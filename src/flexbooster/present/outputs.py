@@ -46,6 +46,12 @@ OUTPUT_STAGES = ("results.json and CSV", "figures", "report.html")
 MANIFEST = "manifest.json"
 #: Resolution of the PNG files (dots per inch).
 _PNG_DPI = 120
+
+#: The figures that cost the most to draw, sent to the workers first (longest first: the last
+#: figure to finish is then a short one, and the workers end together).  CPU s per figure,
+#: benchmarks/README.md session 9: the danger map 0.7-1.0 and the Campbell diagram 0.6-0.8
+#: on the default case; every other figure 0.25-0.55 (the README's vehicle case too).
+_COSTLIEST_FIGURES = ("danger-map", "campbell")
 #: Prefix of the staging folder that :func:`write_outputs` makes inside the output folder.
 STAGING_PREFIX = ".flexbooster-staging-"
 
@@ -220,8 +226,10 @@ def _write_files(results: Results, folder: Path, figures: bool,
             view.write_bytes(pickle.dumps(
                 dataclasses.replace(results, stability=None, severity=None),
                 protocol=pickle.HIGHEST_PROTOCOL))
+            names = figure_names(results)
             jobs = {name: pool.submit(_figure_files_task, view, folder, name)
-                    for name in figure_names(results)}
+                    for name in sorted(names, key=lambda name: name not in _COSTLIEST_FIGURES)}
+            jobs = {name: jobs[name] for name in names}  # the files in their usual order
         # without figures the workers are free: they format the stability table (the
         # largest part of results.json and the largest CSV, tens of thousands of rows), a
         # slice of the rows each, the table read from one file in the staging folder, while
