@@ -52,6 +52,7 @@ _PNG_DPI = 120
 #: benchmarks/README.md session 9: the danger map 0.7-1.0 and the Campbell diagram 0.6-0.8
 #: on the default case; every other figure 0.25-0.55 (the README's vehicle case too).
 _COSTLIEST_FIGURES = ("danger-map", "campbell")
+
 #: Prefix of the staging folder that :func:`write_outputs` makes inside the output folder.
 STAGING_PREFIX = ".flexbooster-staging-"
 
