@@ -251,6 +251,10 @@ def test_inline_svg_prefixes_ids_and_references():
     assert out.startswith("<svg") and "<metadata" not in out and "<style" not in out
     assert {el.get("id") for el in root.iter()} - {None} == {"fig-a-c1", "fig-a-g1"}
     assert 'url(#fig-a-c1)' in out and 'xlink:href="#fig-a-g1"' in out
+    wrapped = inline_svg('<svg xmlns="http://www.w3.org/2000/svg">'
+                         '<g\nid="a"/><g\tid="b"/><g grid="c"/></svg>', "p", "x")
+    assert {el.get("id") for el in ET.fromstring(wrapped).iter()} - {None} == {"p-a", "p-b"}
+    assert 'grid="c"' in wrapped
     assert root.get("aria-label") == 'A & "B"' and root.get("role") == "img"
     with pytest.raises(ValueError, match="svg"):
         inline_svg("<html></html>", "p", "x")

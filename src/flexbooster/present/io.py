@@ -231,7 +231,7 @@ def _float_texts(values: list, *, for_json: bool = False) -> list[str] | None:
 
 def _refuse_non_finite(values) -> None:
     """A ValueError, as json's ``allow_nan=False``, if a float of ``values`` is NaN or
-    infinite (each distinct value is checked: pass a set)."""
+    infinite (the distinct values where they are at hand: a column of repeated floats)."""
     if not all(map(math.isfinite, values)):
         raise ValueError("Out of range float values are not JSON compliant")
 
@@ -337,8 +337,8 @@ def _cell_texts(values: list, with_json: bool) -> tuple[list[str], list[str]] | 
     if kinds == {float}:
         texts = _float_texts(values, for_json=with_json)
         if texts is None:
-            if with_json:
-                _refuse_non_finite(set(values))
+            if with_json:  # mostly distinct values: checked as they are
+                _refuse_non_finite(values)
             texts = list(map(float.__repr__, values))
         return texts, texts
     if kinds == {int}:
