@@ -78,16 +78,26 @@ def test_warning_reaches_summary_and_results(case_dict, tmp_path, capsys):
     assert codes == ["thin-shell"]
 
 
-def test_real_process_no_traceback(tmp_path):
-    """The installed entry point, as a user runs it: exit 2 and no traceback."""
+def test_real_process_no_traceback(tmp_path, case_dict):
+    """The installed entry point, as a user runs it: exit 2 and no traceback; one line, the
+    same with ``-j 1`` (the case then loads in this process) as with workers (it loads in a
+    child forked at the start, whose failure makes this process load it again:
+    flexbooster._parallel.beside)."""
     bad = tmp_path / "bad.toml"
-    bad.write_text("[booster]\nE = '1 furlong'\n")
-    proc = subprocess.run(
-        [sys.executable, "-m", "flexbooster.cli", "run", str(bad)], capture_output=True, text=True
-    )
-    assert proc.returncode == 2
-    assert "Traceback" not in proc.stderr
-    assert proc.stderr.startswith("flexbooster: error:")
+    case_dict["booster"]["E"] = "1 furlong"
+    bad.write_text(dump_toml(case_dict))
+    errors = []
+    for jobs in ("2", "1"):
+        proc = subprocess.run(
+            [sys.executable, "-m", "flexbooster.cli", "run", str(bad), "-j", jobs],
+            capture_output=True, text=True
+        )
+        assert proc.returncode == 2
+        assert "Traceback" not in proc.stderr
+        assert proc.stderr.startswith("flexbooster: error:")
+        assert len(proc.stderr.splitlines()) == 1 and "booster.E = '1 furlong'" in proc.stderr
+        errors.append(proc.stderr)
+    assert errors[0] == errors[1]
 
 
 def test_version(capsys):

@@ -55,6 +55,16 @@ def test_two_workers_run_elsewhere_and_keep_the_order():
 
 
 @pytest.mark.parametrize("workers", [1, 2])
+def test_share_computes_the_first_item_here_and_keeps_the_order(workers):
+    with TaskPool(workers) as pool:
+        pids = pool.share(_pid, range(5))
+        assert pool.share(abs, [-4, 3, -2]) == [4, 3, 2] and pool.share(abs, []) == []
+    assert pids[0] == os.getpid()
+    assert all((pid != os.getpid()) == pool.parallel for pid in pids[1:])
+    assert not multiprocessing.active_children()
+
+
+@pytest.mark.parametrize("workers", [1, 2])
 def test_a_task_error_reaches_the_caller(workers):
     with pytest.raises(ZeroDivisionError, match="boom"):
         with TaskPool(workers) as pool:
@@ -214,3 +224,98 @@ def test_a_nan_in_the_stability_table_is_named_and_nothing_is_published(small_ca
         write_outputs(bad, out, figures=False, workers=workers)
     assert list(out.iterdir()) == []
     assert not multiprocessing.active_children()
+
+
+# --------------------------------------------------------------------------------------------
+# beside: one call in a child forked at a command's start (flexbooster run: the case loaded
+# while the parent imports the analysis).  A child is forked only in a process with one thread
+# (pytest-xdist's workers have more), so each check runs in a fresh interpreter.
+# --------------------------------------------------------------------------------------------
+_BESIDE_PRELUDE = """
+import os, signal, sys, threading, warnings
+from flexbooster._parallel import beside
+here = os.getpid()
+def pid():
+    return os.getpid()
+def in_child(action):
+    if os.getpid() != here:
+        action()
+    return os.getpid()
+"""
+
+
+def _fresh(code: str) -> str:
+    """Standard output of ``code`` (after the prelude) run by a fresh interpreter."""
+    import subprocess
+    import sys
+
+    done = subprocess.run([sys.executable, "-c", _BESIDE_PRELUDE + code], capture_output=True,
+                          text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    return done.stdout
+
+
+@pytest.mark.skipif(not PARALLEL, reason="no fork on this platform")
+def test_beside_computes_in_a_child_and_gives_its_value_once():
+    out = _fresh("job = beside(pid)\n"
+                 "print(job.result() != here, job.result() == job.result())")
+    assert out.split() == ["True", "True"]
+
+
+@pytest.mark.skipif(not PARALLEL, reason="no fork on this platform")
+def test_beside_loads_the_default_case_in_a_child_equal_to_this_process_load():
+    """The use in ``flexbooster run``: the child's Case (pickled back) equals the one loaded
+    here, and the child gave it (no warning, no error on the way)."""
+    out = _fresh("from flexbooster.case import default_case\n"
+                 "job = beside(lambda: (os.getpid(), default_case()))\n"
+                 "child, case = job.result()\n"
+                 "print(child != here, case == default_case(), 'pint' in sys.modules)")
+    assert out.split() == ["True", "True", "True"]
+
+
+@pytest.mark.skipif(not PARALLEL, reason="no fork on this platform")
+@pytest.mark.parametrize("action", [
+    "lambda: 1 / 0",  # an exception
+    "lambda: os.kill(os.getpid(), signal.SIGKILL)",  # the child killed
+    "lambda: sys.exit(0)",  # the child leaves without a value
+], ids=["error", "killed", "no-value"])
+def test_beside_computes_here_what_the_child_did_not_give(action):
+    out = _fresh(f"print(beside(in_child, {action}).result() == here)")
+    assert out.strip() == "True"
+
+
+@pytest.mark.skipif(not PARALLEL, reason="no fork on this platform")
+def test_beside_computes_here_a_value_that_does_not_pickle():
+    out = _fresh("print(beside(lambda: threading if os.getpid() != here else here).result()"
+                 " == here)")
+    assert out.strip() == "True"
+
+
+@pytest.mark.skipif(not PARALLEL, reason="no fork on this platform")
+def test_beside_leaves_a_warning_to_this_process():
+    """A warning in the child is not printed there: the call is made again here, where the
+    warning is shown once (as without the child)."""
+    out = _fresh("def warn():\n"
+                 "    warnings.warn('shown here')\n"
+                 "    return os.getpid()\n"
+                 "with warnings.catch_warnings(record=True) as seen:\n"
+                 "    warnings.simplefilter('always')\n"
+                 "    value = beside(warn).result()\n"
+                 "print(value == here, [str(w.message) for w in seen])")
+    assert out.strip() == "True ['shown here']"
+
+
+def test_beside_raises_here_the_error_of_the_call():
+    out = _fresh("try:\n"
+                 "    beside(lambda: 1 / 0).result()\n"
+                 "except ZeroDivisionError as exc:\n"
+                 "    print('raised', exc)")
+    assert out.strip() == "raised division by zero"
+
+
+def test_beside_forks_no_child_beside_other_threads():
+    """Another thread might hold a lock that a forked child would wait for forever."""
+    out = _fresh("import time\n"
+                 "threading.Thread(target=time.sleep, args=(2,), daemon=True).start()\n"
+                 "print(beside(pid).result() == here)")
+    assert out.strip() == "True"

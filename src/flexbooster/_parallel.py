@@ -20,13 +20,15 @@ from __future__ import annotations
 
 import multiprocessing
 import os
+import pickle
 import signal
 import threading
+import warnings
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import Any
 
-__all__ = ["TaskPool", "default_workers", "using_pool", "MAX_WORKERS"]
+__all__ = ["TaskPool", "default_workers", "using_pool", "beside", "MAX_WORKERS"]
 
 #: Most worker processes a pool starts (the pipeline has at most a few independent stages).
 MAX_WORKERS = 8
@@ -190,6 +192,26 @@ class TaskPool:
         jobs = [self.submit(fn, x) for x in items]
         return [j.result() for j in jobs]
 
+    def share(self, fn: Callable[[Any], Any], items) -> list:
+        """``[fn(x) for x in items]``: the first item computed in this process while the
+        workers compute the others (all of them here without workers).
+
+        Parameters
+        ----------
+        fn : callable
+            A module-level (picklable) function of one argument.
+        items : sequence
+            Its arguments; the first one for this process.
+
+        Returns
+        -------
+        list
+            The results, in the order of ``items``.
+        """
+        items = list(items)
+        jobs = [self.submit(fn, x) for x in items[1:]]
+        return [fn(items[0]), *(j.result() for j in jobs)] if items else []
+
     def __enter__(self) -> TaskPool:
         return self
 
@@ -225,3 +247,80 @@ def using_pool(workers: int | TaskPool) -> Iterator[TaskPool]:
     else:
         with TaskPool(workers) as pool:
             yield pool
+
+
+class _Beside:
+    """``fn(*args)`` in a forked child process; :meth:`result` reads its value back, or calls
+    ``fn(*args)`` in this process where the child could not give one."""
+
+    def __init__(self, fn: Callable[..., Any], args: tuple):
+        self._fn, self._args = fn, args
+        self._pid = self._fd = None
+        if not _usable(2) or threading.active_count() > 1:
+            return
+        read, write = os.pipe()
+        pid = os.fork()
+        if pid == 0:  # the child: the value pickled into the pipe, or an exit status of 1
+            status = 1
+            try:
+                os.close(read)  # Ctrl-C or SIGTERM ends it (its handlers are the parent's)
+                with warnings.catch_warnings(record=True) as caught:  # the filters as here
+                    data = pickle.dumps(fn(*args), protocol=pickle.HIGHEST_PROTOCOL)
+                if not caught:  # a warning is the parent's to show: it computes it again
+                    view = memoryview(data)
+                    while view:
+                        view = view[os.write(write, view):]
+                    status = 0
+            except BaseException:  # noqa: BLE001, S110 - any failure: the parent computes it
+                pass
+            finally:
+                os._exit(status)  # no atexit handlers, no flush of the parent's buffers
+        os.close(write)
+        self._pid, self._fd = pid, read
+
+    def result(self) -> Any:
+        pid, self._pid = self._pid, None
+        fn, self._fn = self._fn, None
+        if fn is None:  # asked for again
+            return self._value
+        data = b""
+        if pid is not None:
+            try:
+                with os.fdopen(self._fd, "rb") as pipe:
+                    data = pipe.read()
+            except BaseException:  # an interrupt here: the child goes too
+                os.kill(pid, signal.SIGKILL)
+                raise
+            finally:
+                _, status = os.waitpid(pid, 0)
+            data = data if status == 0 else b""
+        self._value = pickle.loads(data) if data else fn(*self._args)
+        return self._value
+
+
+def beside(fn: Callable[..., Any], /, *args: Any) -> _Beside:
+    """Start ``fn(*args)`` in a child process forked now, while this process goes on.
+
+    For work at the start of a command that needs few modules, while this process imports the
+    many that the rest needs (``flexbooster run``: the case file read and validated, pint
+    imported, while this process imports numpy, scipy and the analysis): on two cores the
+    second one is otherwise idle then.
+
+    Parameters
+    ----------
+    fn : callable
+        A function of ``args`` whose value pickles; pure (it runs once, here or there).
+    *args
+        Its arguments.
+
+    Returns
+    -------
+    object
+        With a ``result()`` method: the child's value.  Where there is no child (no ``fork``,
+        a daemonic process, a process with other threads, one of which might hold a lock that
+        the child would wait for) or it gave no value (an exception, a warning, a signal),
+        ``result()`` calls ``fn(*args)`` in this process, so that an error or a warning is
+        raised or shown here, as without the child.
+    """
+    return _Beside(fn, args)
+

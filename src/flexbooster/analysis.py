@@ -260,9 +260,12 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
     severity = None
     if table is not None:  # issue 13: how bad each root is; active = severity_rel >= threshold
         sv = case.severity
+        # the beam roots' Floquet vectors in slices: one here, one in each worker (free by
+        # now without figures: the bands, the Hill check and the vehicle's regions are done)
         table, severity = severity_analysis(
             model, table, params, psi0=sv.psi0, beam_amplitude=sv.beam_amplitude,
-            threshold=sv.threshold, resolution=sv.resolution)
+            threshold=sv.threshold, resolution=sv.resolution, mapper=pool.share,
+            parts=1 + pool.workers * pool.parallel)
     if exponents is not None:
         action = _beam_action(model, search.result, hill.result, exponents=exponents)
     if action is not None:

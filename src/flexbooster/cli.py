@@ -83,6 +83,10 @@ def _load(case_file: Path | None):
     return default_case() if case_file is None else load_case(case_file)
 
 
+def _load_with_budget(case_file: Path | None, max_seconds: float | None):
+    return _with_budget(_load(case_file), max_seconds)
+
+
 _CASE_ARG = click.argument(
     "case_file", required=False, type=click.Path(dir_okay=False, path_type=Path)
 )
@@ -272,17 +276,23 @@ def run(case_file: Path | None, output: Path, no_figures: bool, no_vehicle: bool
       flexbooster run my.toml --no-vehicle   # without the vehicle's instability regions
       flexbooster run -q --format json | python -m json.tool | head
     """
-    from ._parallel import TaskPool, default_workers
+    from ._parallel import TaskPool, beside, default_workers
+
+    workers = default_workers() if jobs is None else jobs
+    # the case read and validated (pint: 0.2 s) by a second process while this one imports
+    # the analysis (numpy, scipy: 0.8 s, on one core)
+    loading = (beside(_load_with_budget, case_file, max_seconds) if workers > 1
+               else None)
     from .analysis import STAGES, analyze
     from .present.outputs import OUTPUT_STAGES, prepare_figures, write_outputs
     from .present.summary import print_summary
 
-    case = _with_budget(_load(case_file), max_seconds)
+    case = (loading.result() if loading is not None
+            else _load_with_budget(case_file, max_seconds))
     n_stages = len(STAGES) + (case.vehicle is not None) + (not no_vehicle) + len(OUTPUT_STAGES)
     # one pool for the analysis and the figures: the workers the analysis leaves idle while
     # this process finishes the stability table import matplotlib for the figures meanwhile
-    with _progress(n_stages, quiet) as step, \
-            TaskPool(default_workers() if jobs is None else jobs) as pool:
+    with _progress(n_stages, quiet) as step, TaskPool(workers) as pool:
         if not no_figures:
             for _ in range(pool.workers):
                 pool.submit_when_idle(prepare_figures)
