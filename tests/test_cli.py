@@ -82,22 +82,24 @@ def test_real_process_no_traceback(tmp_path, case_dict):
     """The installed entry point, as a user runs it: exit 2 and no traceback; one line, the
     same with ``-j 1`` (the case then loads in this process) as with workers (it loads in a
     child forked at the start, whose failure makes this process load it again:
-    flexbooster._parallel.beside)."""
+    flexbooster._parallel.beside), and read from a pipe (which could not be read twice: it
+    loads in this process)."""
     bad = tmp_path / "bad.toml"
     case_dict["booster"]["E"] = "1 furlong"
     bad.write_text(dump_toml(case_dict))
     errors = []
-    for jobs in ("2", "1"):
+    for path, jobs, piped in ((bad, "2", None), (bad, "1", None),
+                              ("/dev/stdin", "2", bad.read_text())):
         proc = subprocess.run(
-            [sys.executable, "-m", "flexbooster.cli", "run", str(bad), "-j", jobs],
-            capture_output=True, text=True
+            [sys.executable, "-m", "flexbooster.cli", "run", str(path), "-j", jobs],
+            capture_output=True, text=True, input=piped
         )
         assert proc.returncode == 2
         assert "Traceback" not in proc.stderr
         assert proc.stderr.startswith("flexbooster: error:")
         assert len(proc.stderr.splitlines()) == 1 and "booster.E = '1 furlong'" in proc.stderr
         errors.append(proc.stderr)
-    assert errors[0] == errors[1]
+    assert errors[0] == errors[1] == errors[2]
 
 
 def test_version(capsys):

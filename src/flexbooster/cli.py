@@ -280,9 +280,10 @@ def run(case_file: Path | None, output: Path, no_figures: bool, no_vehicle: bool
 
     workers = default_workers() if jobs is None else jobs
     # the case read and validated (pint: 0.2 s) by a second process while this one imports
-    # the analysis (numpy, scipy: 0.8 s, on one core)
-    loading = (beside(_load_with_budget, case_file, max_seconds) if workers > 1
-               else None)
+    # the analysis (numpy, scipy: 0.8 s, on one core); not from a pipe (e.g. /dev/stdin),
+    # which this process could not read again where the child fails
+    loading = (beside(_load_with_budget, case_file, max_seconds)
+               if workers > 1 and (case_file is None or case_file.is_file()) else None)
     from .analysis import STAGES, analyze
     from .present.outputs import OUTPUT_STAGES, prepare_figures, write_outputs
     from .present.summary import print_summary
