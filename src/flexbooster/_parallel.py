@@ -323,4 +323,3 @@ def beside(fn: Callable[..., Any], /, *args: Any) -> _Beside:
         raised or shown here, as without the child.
     """
     return _Beside(fn, args)
-
