@@ -309,7 +309,8 @@ def beside(fn: Callable[..., Any], /, *args: Any) -> _Beside:
     Parameters
     ----------
     fn : callable
-        A function of ``args`` whose value pickles; pure (it runs once, here or there).
+        A function of ``args`` whose value pickles; pure: it may run twice (in the child,
+        then here where the child gave no value).
     *args
         Its arguments.
 
