@@ -265,7 +265,7 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
         table, severity = severity_analysis(
             model, table, params, psi0=sv.psi0, beam_amplitude=sv.beam_amplitude,
             threshold=sv.threshold, resolution=sv.resolution, mapper=pool.share,
-            parts=1 + pool.workers * pool.parallel)
+            parts=1 + (pool.workers if pool.parallel else 0))
     if exponents is not None:
         action = _beam_action(model, search.result, hill.result, exponents=exponents)
     if action is not None:
