@@ -1217,18 +1217,34 @@ TONGUE_MAX_HARMONICS = 24
 TONGUE_RTOL_FLOOR = 1e-4
 #: Relative tolerance of the critical gamma of a damped pitch tongue (bisection).
 TONGUE_GAMMA_RTOL = 1e-6
-#: Hill harmonics (s = -S..S) of the growth rate inside a pitch tongue (checked against S + 4
-#: at the maximum; Omega << omega_1 there, so few are needed).
+#: Hill harmonics (s = -S..S) of the growth rate inside the pitch tongues r <= 4 (checked
+#: against S + 4 at the maximum); tongue r needs more as r grows: :func:`_tongue_hill_harmonics`.
 TONGUE_HILL_HARMONICS = 4
+
+
+def _tongue_hill_harmonics(r: int) -> int:
+    """Hill harmonics S of the growth rate inside pitch tongue r: max(4, 2 r - 4).
+
+    Tongue r arises at order r in gamma, and Hill's truncated determinant resolves it only
+    with enough harmonics: with fewer, the growth rate is round-off (~1e-8 1/s) however
+    unstable the tongue.  Measured on the coupled system of the fuzz case _FUZZ_TONGUE_2
+    (tests/test_robustness.py), against the rigid-pitch Mathieu tongues of
+    :func:`flexbooster.memo.pitch.pitch_bands`: r = 1..4 converge at S = 4, r = 5..9 first
+    at S = 6, 6, 10, 8, 12 (S = 4 gave 1e-8 1/s where the tongue grows at 1e-3 to 4e-6 1/s);
+    2 r - 4 covers them, and the value at the maximum is taken at S + 4.
+    """
+    return max(TONGUE_HILL_HARMONICS, 2 * r - 4)
 
 # Cost model of the pitch-tongue search (issue 18; one core, OPENBLAS_NUM_THREADS=1), measured
 # on 310 fuzz-like boosters (N = 1..4, 2..5 modes) and the default booster at N = 6 and 10
 # (benchmarks/bench_cost.py): the harmonic-balance eigenproblems (scipy's QZ, order m = n h,
 # 2 n h with damping, h = 2 K or 2 K + 1 harmonic blocks) cost TONGUE_QZ_SECONDS m^3 plus a
-# fixed _TONGUE_CALL each; the growth maximum of a tongue (~31 Hill eigenproblems of order 18 n
-# and one of 34 n) _TONGUE_GROWTH[0] + _TONGUE_GROWTH[1] x their m^3; the pitch-only guide
-# (1 x 1 harmonic balance) _TONGUE_GUIDE per use.  With damping the critical gamma is a
-# bisection of _TONGUE_BISECTIONS steps, each one eigenproblem at the tongue's converged K.
+# fixed _TONGUE_CALL each; the growth maximum of a tongue (~31 Hill eigenproblems of order
+# 2 n (2 S + 1) and one of 2 n (2 S + 9), S = 4 when calibrated, S_r of tongue r since session
+# 11: _tongue_hill_harmonics) _TONGUE_GROWTH[0] + _TONGUE_GROWTH[1] x their m^3; the
+# pitch-only guide (1 x 1 harmonic balance) _TONGUE_GUIDE per use.  With damping the critical
+# gamma is a bisection of _TONGUE_BISECTIONS steps, each one eigenproblem at the tongue's
+# converged K.
 #: Seconds per m^3 of one generalised eigenproblem of order m in the pitch-tongue search.
 TONGUE_QZ_SECONDS = 1.2e-8
 _TONGUE_CALL = 4e-4
@@ -1251,11 +1267,11 @@ def _qz_seconds(n: int, K: int, period: str, damped: bool) -> float:
     return TONGUE_QZ_SECONDS * float(m) ** 3 + _TONGUE_CALL
 
 
-def _growth_seconds(n: int) -> float:
-    """Modelled time of :func:`_growth_max` (n modes, S = TONGUE_HILL_HARMONICS)."""
+def _growth_seconds(n: int, S: int = TONGUE_HILL_HARMONICS) -> float:
+    """Modelled time of :func:`_growth_max` (n modes, S Hill harmonics)."""
     c0, c1 = _TONGUE_GROWTH
-    m = 2 * n * (2 * TONGUE_HILL_HARMONICS + 1)
-    return c0 + c1 * (31.0 * m**3 + (2 * n * (2 * TONGUE_HILL_HARMONICS + 9)) ** 3)
+    m = 2 * n * (2 * S + 1)
+    return c0 + c1 * (31.0 * m**3 + (2 * n * (2 * S + 9)) ** 3)
 
 
 class _Spend:
@@ -1359,6 +1375,9 @@ def _tongue_edges(A, C, B, *, period: str, centre: float, window: tuple[float, f
             diff = max(abs(cur[0] - prev[0]), abs(cur[1] - prev[1]))
             if diff < best[0]:
                 best = (diff, cur, K - 4)
+            elif best[0] <= TONGUE_RTOL_FLOOR * centre and centre < _TONGUE_FLOOR_OMEGA_BAR:
+                break  # worse after reaching the floor, far below the beam: round-off now
+                # grows with K, and a later close agreement would be by chance (keep the best)
         prev = cur
     if best[0] <= TONGUE_RTOL_FLOOR * centre:  # converged to round-off, not to rtol
         cur = best[1]  # a tongue when it is wider than twice the wander of its edges
@@ -1372,9 +1391,10 @@ def _hill_growth(A, C, B, om: np.ndarray, S: int) -> np.ndarray:
     return np.max(ev.real, axis=1)
 
 
-def _growth_max(A, C, B, lo: float, hi: float) -> tuple[float, float]:
-    """Largest growth rate in [lo, hi] (per unit tau) and where: Hill, golden section."""
-    S = TONGUE_HILL_HARMONICS
+def _growth_max(A, C, B, lo: float, hi: float, S: int = TONGUE_HILL_HARMONICS
+                ) -> tuple[float, float]:
+    """Largest growth rate in [lo, hi] (per unit tau) and where: Hill with S harmonics,
+    golden section; the value at the maximum with S + 4."""
     x = np.linspace(lo, hi, 9)[1:-1]
     g = _hill_growth(A, C, B, x, S)
     i = int(np.argmax(g))
@@ -1514,13 +1534,14 @@ def _tongue_search(system: BeamActionSystem, gamma: float, lo: float, hi: float,
             if r > 2:
                 break  # higher tongues are narrower still
             continue
-        rest = _growth_seconds(n) + (0.0 if C is None else _TONGUE_BISECTIONS * (
+        S = _tongue_hill_harmonics(r)
+        rest = _growth_seconds(n, S) + (0.0 if C is None else _TONGUE_BISECTIONS * (
             _TONGUE_GUIDE + (_qz_seconds(n, K, period, True) if K else 0.0)))
         why = stop(r, rest)
         if why is not None:
             return tuple(sorted(out, key=lambda b: b.omega_lo)), why
-        g_max, x_max = _growth_max(A, C, -gamma * system.B, *e)
-        spend.seconds += _growth_seconds(n)
+        g_max, x_max = _growth_max(A, C, -gamma * system.B, *e, S=S)
+        spend.seconds += _growth_seconds(n, S)
         g_cr = 0.0
         if C is not None:  # bisection on existence (Bolotin 1964, sec. 6), K of the edges
             a, b = 0.0, gamma
@@ -1631,7 +1652,7 @@ def tongue_search_seconds(system: BeamActionSystem, gamma: float, *, omega_min: 
         Ks = (range(4, TONGUE_MAX_HARMONICS + 1, 4)
               if not damped and centre < _TONGUE_FLOOR_OMEGA_BAR else range(4, K + 5, 4))
         seconds += _TONGUE_GUIDE + sum(_qz_seconds(n, k, period, damped) for k in Ks)
-        seconds += _growth_seconds(n)
+        seconds += _growth_seconds(n, _tongue_hill_harmonics(r))
         if damped:
             seconds += _TONGUE_BISECTIONS * (_TONGUE_GUIDE + _qz_seconds(n, K, period, True))
     return float(seconds)
