@@ -1381,8 +1381,9 @@ def test_tongue_growth_harmonics_resolve_high_order_tongues(r):
     growth rate (memo.pitch.pitch_bands: an independent model, the memo's rigid pitch) to
     1e-3, also for r = 8, 9, which the coupled edge search does not reach.  With S = 4 (the
     rule before session 11) the maximum of the tongues r >= 5 is sought on round-off (1e-8
-    1/s) and their growth, taken with S + 4 = 8 wherever that search ended, misses by 2 % to
-    100 %."""
+    1/s) and their growth is taken with S + 4 = 8 wherever that search ended: 2-30 % off for
+    r = 5, 6, 8 here (by chance: it depends on where the search ends), round-off for r = 7, 9,
+    which S = 8 does not resolve either (checked)."""
     from flexbooster._threads import blas_threads
     from flexbooster.memo import pitch
 
@@ -1398,8 +1399,8 @@ def test_tongue_growth_harmonics_resolve_high_order_tongues(r):
                               S=ba._tongue_hill_harmonics(r))
         g4, _ = ba._growth_max(system.A0, None, B, ref.omega_lo / w1, ref.omega_hi / w1)
     assert g * w1 == pytest.approx(ref.growth_rate_max, rel=1e-3)
-    if r >= 5:  # the failure the rule mends
-        assert g4 * w1 != pytest.approx(ref.growth_rate_max, rel=1e-3)
+    if r in (7, 9):  # the failure the rule mends, where it does not depend on chance
+        assert g4 * w1 < 1e-2 * ref.growth_rate_max
 
 
 # --------------------------------------------------------------------------------------------
