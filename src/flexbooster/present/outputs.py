@@ -8,10 +8,14 @@ from __future__ import annotations
 
 import io as _io
 import json
+import multiprocessing
 import os
 import shutil
+import signal
 import tempfile
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from concurrent.futures import ProcessPoolExecutor
+from contextlib import contextmanager
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -179,36 +183,47 @@ def write_outputs(
 
 def _write_files(results: Results, folder: Path, figures: bool,
                  step: Callable[[str], None]) -> list[Path]:
-    """Every output file of :func:`write_outputs`, written into ``folder``."""
+    """Every output file of :func:`write_outputs`, written into ``folder``; the figures are
+    drawn by other processes meanwhile (:func:`_drawn`)."""
     from .report import write_report
 
-    step(OUTPUT_STAGES[0])
-    written = [write_json_atomic(folder / "results.json", results.to_dict()),
-               write_csv_atomic(folder / "shell-frequencies.csv", results.shell.to_rows())]
-    if results.stability is not None:
-        written.append(write_csv_atomic(folder / "unstable-frequencies.csv",
-                                        results.stability.to_columns()))
-    if results.severity is not None:  # every band, most severe first
-        written.append(write_csv_atomic(folder / "resonance-bands.csv",
-                                        results.severity.band_rows()))
-    if results.vehicle is not None:  # a case with [vehicle] only
-        written.append(write_csv_atomic(folder / "vehicle-modes.csv",
-                                        results.vehicle.to_columns()))
-    if results.vehicle_regions is not None:
-        from .vehicle import vehicle_region_columns
+    names = figure_names(results) if figures else ()
+    with _drawn(results, names, _usable_cpus()) as drawn:
+        step(OUTPUT_STAGES[0])
+        written = [write_json_atomic(folder / "results.json", results.to_dict()),
+                   write_csv_atomic(folder / "shell-frequencies.csv", results.shell.to_rows())]
+        if results.stability is not None:
+            written.append(write_csv_atomic(folder / "unstable-frequencies.csv",
+                                            results.stability.to_columns()))
+        if results.severity is not None:  # every band, most severe first
+            written.append(write_csv_atomic(folder / "resonance-bands.csv",
+                                            results.severity.band_rows()))
+        if results.vehicle is not None:  # a case with [vehicle] only
+            written.append(write_csv_atomic(folder / "vehicle-modes.csv",
+                                            results.vehicle.to_columns()))
+        if results.vehicle_regions is not None:
+            from .vehicle import vehicle_region_columns
 
-        written.append(write_csv_atomic(folder / "vehicle-regions.csv",
-                                        vehicle_region_columns(results.vehicle_regions)))
-    svgs: dict[str, str] = {}
-    if figures and results.figures is not None:
-        step(OUTPUT_STAGES[1])
-        for name, (svg, png) in render_figures(results).items():
-            svgs[name] = svg
-            written.append(write_text_atomic(folder / f"{name}.svg", svg))
-            written.append(write_bytes_atomic(folder / f"{name}.png", png))
+            written.append(write_csv_atomic(folder / "vehicle-regions.csv",
+                                            vehicle_region_columns(results.vehicle_regions)))
+        svgs: dict[str, str] = {}
+        if names:
+            step(OUTPUT_STAGES[1])
+            for name, (svg, png) in zip(names, drawn, strict=True):
+                svgs[name] = svg
+                written.append(write_text_atomic(folder / f"{name}.svg", svg))
+                written.append(write_bytes_atomic(folder / f"{name}.png", png))
     step(OUTPUT_STAGES[2])
     written.append(write_report(results, folder / "report.html", svgs))
     return written
+
+
+def _usable_cpus() -> int:
+    """The CPUs this process may run on (``os.sched_getaffinity``, else ``os.cpu_count``)."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except (AttributeError, OSError):  # not Linux
+        return os.cpu_count() or 1
 
 
 def _figure_files(results: Results, name: str) -> tuple[str, bytes]:
@@ -218,20 +233,62 @@ def _figure_files(results: Results, name: str) -> tuple[str, bytes]:
     return _svg_titles(fig, svg), png
 
 
-def render_figures(results: Results) -> dict[str, tuple[str, bytes]]:
+#: The results whose figures a drawing process draws (set by :func:`_adopt` as it starts).
+_ADOPTED: list[Results] = []
+
+
+def _adopt(results: Results) -> None:
+    """Start of a drawing process: its results (inherited by ``fork``, not pickled); the
+    parent alone handles Ctrl-C and SIGTERM."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    _ADOPTED[:] = [results]
+
+
+def _adopted_figure_files(name: str) -> tuple[str, bytes]:
+    return _figure_files(_ADOPTED[0], name)
+
+
+@contextmanager
+def _drawn(results: Results, names: tuple[str, ...],
+           processes: int) -> Iterator[Iterator[tuple[str, bytes]]]:
+    """The figures ``names`` as (SVG, PNG), in order: a ``concurrent.futures`` map over up to
+    ``processes`` forked processes, started on entry; without ``fork``, in a daemonic process
+    or with one process, drawn here as the iterator is read.  The bytes are the same."""
+    processes = min(processes, len(names))
+    if (processes < 2 or "fork" not in multiprocessing.get_all_start_methods()
+            or multiprocessing.current_process().daemon):
+        yield (_figure_files(results, name) for name in names)
+        return
+    pool = ProcessPoolExecutor(processes, mp_context=multiprocessing.get_context("fork"),
+                               initializer=_adopt, initargs=(results,))
+    try:
+        yield pool.map(_adopted_figure_files, names)
+    except BaseException:  # an error or Ctrl-C here: no figure is waited for
+        pool.shutdown(wait=False, cancel_futures=True)
+        raise
+    pool.shutdown()
+
+
+def render_figures(results: Results, *, processes: int = 1) -> dict[str, tuple[str, bytes]]:
     """SVG text and PNG bytes of every figure of :func:`make_figures`, by name.
 
     Parameters
     ----------
     results : Results
         The analysis.
+    processes : int
+        Processes that draw the figures (>= 1; 1: this one), as :func:`write_outputs` does
+        with the usable CPUs; the bytes are the same.
 
     Returns
     -------
     dict of str to (str, bytes)
         Figure name -> (SVG document, PNG bytes), in the order of :func:`figure_names`.
     """
-    return {name: _figure_files(results, name) for name in figure_names(results)}
+    names = figure_names(results)
+    with _drawn(results, names, processes) as drawn:
+        return dict(zip(names, drawn, strict=True))
 
 
 def _render(fig) -> tuple[str, bytes]:
