@@ -85,40 +85,24 @@ def _range_text(Omega: np.ndarray, mask: np.ndarray) -> str:
 
 
 def _warnings(model: BoosterModel, a: np.ndarray, q: np.ndarray) -> list[AnalysisWarning]:
-    out = []
-    Omega, omega_psi = model.Omega, model.omega_psi
-    for d, radius in ((1, model.R1), (2, model.R2)):
-        ratio = model.h / radius
-        if ratio > THIN_SHELL_LIMIT:
-            out.append(
-                AnalysisWarning(
-                    "thin-shell",
-                    f"booster.cylinder{d}",
-                    f"h/R{d} = {ratio:.4g} exceeds 1/20: thin-shell (Donnell) theory of memo 2.3 "
-                    "is not reliable",
-                )
-            )
+    """Thin-shell limit exceeded; Mathieu a, q outside the memo's range (eq. 4.2-5)."""
+    out = [AnalysisWarning("thin-shell", f"booster.cylinder{d}",
+                           f"h/R{d} = {model.h / radius:.4g} exceeds 1/20: thin-shell (Donnell) "
+                           "theory of memo 2.3 is not reliable")
+           for d, radius in ((1, model.R1), (2, model.R2)) if model.h / radius > THIN_SHELL_LIMIT]
     bad_a = ~((a > MATHIEU_A_RANGE[0]) & (a < MATHIEU_A_RANGE[1]))
     if bad_a.any():
-        out.append(
-            AnalysisWarning(
-                "mathieu-a-range",
-                "thrust",
-                f"Mathieu a outside the memo's range 0 < a < 1 (eq. 4.2-5) at "
-                f"{_range_text(Omega, bad_a)}; a = 4 omega_psi^2/Omega^2 with "
-                f"omega_psi = {omega_psi:.6g} rad/s",
-            )
-        )
+        out.append(AnalysisWarning(
+            "mathieu-a-range", "thrust",
+            f"Mathieu a outside the memo's range 0 < a < 1 (eq. 4.2-5) at "
+            f"{_range_text(model.Omega, bad_a)}; a = 4 omega_psi^2/Omega^2 with "
+            f"omega_psi = {model.omega_psi:.6g} rad/s"))
     bad_q = ~((q > 0.0) & (q <= MATHIEU_Q_MAX))
     if bad_q.any():
-        out.append(
-            AnalysisWarning(
-                "mathieu-q-range",
-                "thrust",
-                f"Mathieu q outside the memo's range 0 < q <= 0.05 (eq. 4.2-5) at "
-                f"{_range_text(Omega, bad_q)}; q = gamma a / 2",
-            )
-        )
+        out.append(AnalysisWarning(
+            "mathieu-q-range", "thrust",
+            f"Mathieu q outside the memo's range 0 < q <= 0.05 (eq. 4.2-5) at "
+            f"{_range_text(model.Omega, bad_q)}; q = gamma a / 2"))
     return out
 
 

@@ -417,7 +417,7 @@ def check_case_cost(model: BoosterModel, max_seconds: float, *,
 
     References
     ----------
-    docs/theory/robustness.md (issue 18).
+    docs/theory/robustness.md.
     """
     max_seconds = positive("max_seconds", max_seconds)
     est = estimate_cost(model, **stages)

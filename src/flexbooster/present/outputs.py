@@ -362,7 +362,7 @@ def figure_names(results: Results) -> tuple[str, ...]:
     data = results.figures
     if data is None:
         return ()
-    names = ["danger-map"] if results.danger is not None else []  # the answer first (#17)
+    names = ["danger-map"] if results.danger is not None else []  # the answer first
     names += ["ince-strutt", "beam-modes", "shell-frequencies-cylinder1",
               "shell-frequencies-cylinder2", "nodal-patterns"]
     for name, part in (("pitch-band-chart", data.pitch_band_chart),
