@@ -1493,13 +1493,13 @@ def test_fuzz_reproducer_vehicle_regions_of_a_flat_plate():
 
 
 def test_a_truncation_past_the_band_search_limits_is_a_case_error():
-    """truncation.N = 150 with the budget lifted (max_seconds = 1e9; the estimate refuses it
-    otherwise): the beam-action band search has 9e8 resonance candidates above omega_1 / 4,
-    past the Floquet toolkit's limit.  A one-line CaseError naming truncation.N (exit 2), not
-    the toolkit's TooManyCandidatesError (exit 1)."""
+    """truncation.N = 30 with the budget lifted (max_seconds = 1e9): the beam-action band
+    search has 1.7e6 resonance candidates above omega_1 / 4, past the Floquet toolkit's limit
+    of 200,000.  A one-line CaseError naming truncation.N (exit 2), not the toolkit's
+    TooManyCandidatesError (exit 1)."""
     data = flexbooster.default_case().model_dump(exclude_none=True)
-    data["truncation"].update(N=150, M1=2, N1=2, M2=2, N2=2, S=1, R=2)
+    data["truncation"].update(N=30, M1=2, N1=2, M2=2, N2=2, S=1, R=2)
     data["thrust"]["n_omega"] = 4
     data["max_seconds"] = 1e9
-    with pytest.raises(CaseError, match=r"^truncation\.N = 150: the beam-action band search"):
+    with pytest.raises(CaseError, match=r"^truncation\.N = 30: the beam-action band search"):
         analyze(flexbooster.load_case(data), figures=False, vehicle=False)
