@@ -33,7 +33,6 @@ from flexbooster.case import default_case_text  # noqa: E402
 from flexbooster.cost import (  # noqa: E402
     TONGUE_PART,
     check_physical,
-    derived_model,
     estimate_cost,
 )
 from flexbooster.errors import CaseError  # noqa: E402
@@ -102,7 +101,7 @@ def tongues(spread: int) -> None:
         d = tomllib.loads(default_case_text())
         for key, value in {**_LOW, **update}.items():
             d.setdefault(key, {}).update(value)
-        model = derived_model(flexbooster.load_case(d))
+        model = model_from_case(flexbooster.load_case(d))
         est = estimate_cost(model, figures=False).parts.get(TONGUE_PART, 0.0)
         measured = _tongue_time(model)
         print(f"{name:<44} {est:10.2f} {measured:10.2f} {est / measured:6.2f}")
@@ -112,7 +111,7 @@ def tongues(spread: int) -> None:
     rows = []
     while len(rows) < spread:
         try:
-            model = derived_model(flexbooster.load_case(_fuzz_like(rng)))
+            model = model_from_case(flexbooster.load_case(_fuzz_like(rng)))
             check_physical(model)
         except CaseError:
             continue

@@ -9,14 +9,14 @@ renderer (``present.outputs._render``):
 Also prints the SVG sizes.
 
 ``--figures`` instead times the CPU of drawing and saving (SVG + PNG) every figure of the
-default case, as ``flexbooster run`` does it (``present.outputs._figure_task``), now against
+default case, as ``flexbooster run`` does it (``present.outputs._figure_files``), now against
 ``--baseline REV`` (default ``main``) checked out side by side with ``git worktree``: each
 code analyses the case once (pickled, not timed), then, alternating, best of ``--repeat``:
 
-* one process drawing the figures one after the other (``prepare_figures`` first, untimed: the
-  first figure still pays matplotlib's warm-up);
-* each figure in a fresh process of its own (after ``prepare_figures``), as a worker of
-  ``flexbooster run`` draws its first figure: the sum is what ten workers would spend.
+* one process drawing the figures one after the other (matplotlib imported first, untimed:
+  the first figure still pays matplotlib's warm-up);
+* each figure in a fresh process of its own (after the import), as a drawing process of
+  ``flexbooster run`` draws its first figure.
 
 Usage::
 
@@ -83,7 +83,7 @@ def _best(fn, repeat: int) -> tuple[float, object]:
 
 ROOT = Path(__file__).resolve().parents[1]
 #: Run by each code (PYTHONPATH=its src): "analyse PATH" pickles the default case's results;
-#: "draw PATH [NAMES]" prints the CPU seconds of _figure_task for each figure (JSON).
+#: "draw PATH [NAMES]" prints the CPU seconds of drawing each figure (JSON).
 _CHILD = r"""
 import json, pickle, sys, time
 mode, path = sys.argv[1], sys.argv[2]
@@ -91,19 +91,22 @@ if mode == "analyse":
     from flexbooster.analysis import analyze
     from flexbooster.case import default_case
     with open(path, "wb") as f:
-        pickle.dump(analyze(default_case(), workers=1), f)
+        pickle.dump(analyze(default_case()), f)
     raise SystemExit
 with open(path, "rb") as f:
     results = pickle.load(f)
 from flexbooster.present import outputs
+draw = getattr(outputs, "_figure_files", None) or outputs._figure_task  # now, or before
 t = time.process_time()
-outputs.prepare_figures()
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.backends.backend_agg, matplotlib.backends.backend_svg
 prepare = time.process_time() - t
 names = sys.argv[3].split(",") if len(sys.argv) > 3 else list(outputs.figure_names(results))
 cpu = {}
 for name in names:
     t = time.process_time()
-    outputs._figure_task(results, name)
+    draw(results, name)
     cpu[name] = time.process_time() - t
 print(json.dumps({"prepare": prepare, "cpu": cpu}))
 """
@@ -141,7 +144,7 @@ def figures_against(baseline: str, repeat: int) -> None:
                     prepare[label] = min(prepare[label], run["prepare"])
                     for name in run["cpu"]:
                         _best(fresh[label], _child(src, "draw", pkl, name)["cpu"])
-    print(f"figures of the default case, CPU s of _figure_task (SVG + PNG), best of {repeat}, "
+    print(f"figures of the default case, CPU s of drawing each (SVG + PNG), best of {repeat}, "
           f"baseline {baseline}, load average {os.getloadavg()[0]:.2f}")
     print(f"  {'figure':30s} {'one process':>22s} {'fresh process each':>26s}")
     print(f"  {'':30s} {'baseline':>10s} {'now':>10s}   {'baseline':>10s} {'now':>10s}")
@@ -152,7 +155,7 @@ def figures_against(baseline: str, repeat: int) -> None:
         old, new = sum(data["baseline"].values()), sum(data["now"].values())
         print(f"  total, {title:22s} baseline {old:6.3f}   now {new:6.3f}   "
               f"now / baseline {new / old:5.3f} ({1 - new / old:.0%} less)")
-    print(f"  prepare_figures (import matplotlib): baseline {prepare['baseline']:.3f}   "
+    print(f"  import matplotlib: baseline {prepare['baseline']:.3f}   "
           f"now {prepare['now']:.3f}")
 
 

@@ -27,8 +27,9 @@ PACKAGE = Path(flexbooster.__file__).parent
 LAYER = {
     "errors": "input", "units": "input", "checks": "input", "case": "input",
     "vehicle_case": "input",
-    "memo": "core", "floquet": "core", "bands": "core", "shell_of_revolution": "core", "vehicle": "core",
-    "model": "model", "cost": "model", "_threads": "pipeline", "_parallel": "infra",
+    "memo": "core", "floquet": "core", "bands": "core", "shell_of_revolution": "core",
+    "vehicle": "core",
+    "model": "model", "cost": "model", "_threads": "pipeline",
     "results": "results", "danger": "results", "analysis": "pipeline",
     "reference": "reference",
     "present": "present", "sweep": "sweep", "cli": "cli", "__init__": "api", "__main__": "cli",
@@ -166,7 +167,7 @@ def test_default_analysis_imports_neither_dask_nor_scipy_optimize():
         "d = tomllib.loads(case.default_case_text())\n"
         "d['thrust']['n_omega'] = 60\n"
         "d['truncation'] = dict(M1=4, N1=4, M2=4, N2=4, N=4, S=3, R=3)\n"
-        "analysis.analyze(case.load_case(d), workers=1)\n"
+        "analysis.analyze(case.load_case(d))\n"
         "print(sorted(m for m in ('dask', 'scipy.optimize', 'scipy.interpolate')\n"
         "             if m in sys.modules))\n"
         "import dask, pint\n"

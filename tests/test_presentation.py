@@ -165,6 +165,17 @@ def test_figures_laid_out_once_keep_every_text_inside_and_apart(results):
 
 
 @pytest.mark.slow
+def test_figures_drawn_in_processes_are_the_figures_drawn_here(results):
+    # write_outputs draws the figures by a concurrent.futures map over processes: the same
+    # SVG and PNG bytes as one process drawing them one after the other (the reference)
+    from flexbooster.present.outputs import figure_names, render_figures
+
+    here = render_figures(results, processes=1)
+    assert list(here) == list(figure_names(results)) and len(here) == 10
+    assert render_figures(results, processes=2) == here
+
+
+@pytest.mark.slow
 def test_danger_map_tooltips_and_axes(results):
     # one SVG <title> per band, no script, Omega in Hz on the x axis
     from flexbooster.present.outputs import figure_svgs

@@ -557,7 +557,7 @@ def test_tongue_search_cap_stops_and_names_the_tongues_left():
     left, its Omega)."""
     from flexbooster._threads import blas_threads
 
-    model = cost.derived_model(flexbooster.load_case(_FUZZ_TONGUE_2))
+    model = model_from_case(flexbooster.load_case(_FUZZ_TONGUE_2))
     with blas_threads(1):
         free = ba.pipeline_band_search(model)
         capped = ba.pipeline_band_search(model, max_seconds=0.5)
@@ -569,30 +569,6 @@ def test_tongue_search_cap_stops_and_names_the_tongues_left():
     assert capped.bands == tuple(b for b in free.bands if b.order < 4)
     with pytest.raises(ValueError, match="^max_seconds = "):
         ba.pipeline_band_search(model, max_seconds=0.0)
-
-
-def test_capped_tongue_search_is_a_warning_and_no_stable_verdict(monkeypatch, case_dict):
-    """The pipeline turns each skipped part of the band search into a warning (code
-    beam-action-tongue-budget, field max_seconds), passes its cap (the budget less the other
-    stages' estimate), and with no band found the verdict is not "stable"."""
-    seen = {}
-
-    def search(model, max_seconds=None):
-        seen["cap"] = max_seconds
-        return ba.BandSearch(bands=(), skipped=("max_seconds = 9: the tongues r >= 1 ...",))
-
-    monkeypatch.setattr(analysis, "pipeline_band_search", search)
-    case_dict["truncation"].update(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)
-    case_dict["thrust"].update(omega_min=0.5, omega_max=20.0, n_omega=4)
-    case = flexbooster.load_case(case_dict)
-    res = analyze(case, figures=False, vehicle=False)
-    (w,) = [w for w in res.warnings if w.code == "beam-action-tongue-budget"]
-    assert w.field == "max_seconds" and w.message.startswith("max_seconds = 9")
-    assert res.beam_action.verdict.startswith("unknown: max_seconds = 9")
-    assert res.to_dict()["beam_action"]["skipped"] == ["max_seconds = 9: the tongues r >= 1 ..."]
-    est = cost.estimate_cost(model_from_case(case), figures=False)
-    assert seen["cap"] == pytest.approx(
-        case.max_seconds - (est.seconds - est.parts[cost.TONGUE_PART]), rel=1e-12)
 
 
 def test_huge_truncation_is_refused_up_front_in_one_line(case_dict, tmp_path, capsys):
@@ -741,8 +717,8 @@ CLI_PROBES = [
     (["--bogus"], "--bogus"),
     (["stability", "--omega-min"], "--omega-min"),  # an option without its argument
     (["run", "--format"], "--format"),
-    (["run", "-j", "0"], "--jobs"),
-    (["run", "-j", "abc"], "--jobs"),
+    (["run", "--jobs", "2"], "--jobs"),  # no such option: one line, exit 2
+    (["run", "--max-seconds", "inf"], "--max-seconds"),
     (["run", "--max-seconds", "-1"], "--max-seconds"),
     (["run", "{tmp}/nonexistent.toml"], "case file"),
     (["run", "{tmp}/badsyntax.toml"], "case file"),
@@ -817,19 +793,14 @@ def _cli(*args: str) -> subprocess.Popen:
 #: itself a signal when a given progress stage starts: deterministic moments, no sleeps.
 #: ``sync``: os.kill from the main thread at the stage's start (the interrupt is raised
 #: there, before the stage's work); ``thread``: from a thread started then, so that the signal
-#: lands while the main thread works in the stage (or waits on the workers).  It prints the
-#: CLOCK_MONOTONIC time of the kill on stderr ("KILL <t>") to measure the latency.
+#: lands while the main thread works in the stage.
 _DRIVER = r"""
-import contextlib, os, signal, sys, threading, time
+import contextlib, os, signal, sys, threading
 import flexbooster.cli as cli
 stage, sig, how = sys.argv[1], getattr(signal, sys.argv[2]), sys.argv[3]
 real = cli._progress
 
 def kill():
-    import multiprocessing
-    workers = " ".join(str(p.pid) for p in multiprocessing.active_children())
-    sys.stderr.write(f"KILL {time.monotonic()!r} {workers}\n")
-    sys.stderr.flush()
     os.kill(os.getpid(), sig)
 
 @contextlib.contextmanager
@@ -866,62 +837,33 @@ def _no_leftovers(folder: Path) -> None:
     assert not [n for n in names if n.endswith(".part") or n.startswith(STAGING_PREFIX)], names
 
 
-def _no_orphans(pids: list[str]) -> None:
-    """The worker processes alive at the kill are gone (or dead, awaiting their reaper)."""
-    deadline = time.monotonic() + 10.0
-    for pid in map(int, pids):
-        status = Path(f"/proc/{pid}/status")
-        while time.monotonic() < deadline:
-            try:
-                state = next(line for line in status.read_text().splitlines()
-                             if line.startswith("State:"))
-            except (FileNotFoundError, ProcessLookupError):
-                break
-            if "Z" in state.split()[1]:
-                break
-            time.sleep(0.05)
-        else:
-            raise AssertionError(f"worker {pid} outlived the interrupted run")
-
-
 #: The ten moments of a run at which a signal is sent: the start of every stage of analyze
 #: (analysis.STAGES, then the vehicle regions) and of write_outputs (OUTPUT_STAGES).
 MOMENTS = (*STAGES, VEHICLE_REGIONS_STAGE, *OUTPUT_STAGES)
-#: Kill -> exit latencies (s) of the last run of test_signal_at_ten_moments, by moment.
-LATENCY: dict = {}
 
 
 @pytest.mark.slow
 def test_signal_at_ten_moments_no_part_file_never_a_mixed_set(tmp_path, case_dict):
-    """Issue 18 acceptance: SIGTERM and SIGINT (alternately) at the 10 moments above, over a
-    complete previous set, each sent by the process to itself from a thread when the stage
-    starts (the signal lands inside the stage's work).  Each run must end by exit 130 with one
-    line "interrupted" and no traceback, leave no .part file and no staging folder, and leave
-    one whole set (results.json and report.html of one case, manifest verified).  "Honoured
-    within a second in every stage" (issue 18 item 1): kill -> exit under a generous 10 s
-    bound (a loaded 2-core machine; measured 0.05-0.4 s, docs/theory/robustness.md)."""
+    """SIGTERM and SIGINT (alternately) at the 10 moments above, over a complete previous set,
+    each sent by the process to itself from a thread when the stage starts (the signal lands
+    inside the stage's work).  Each run must end by exit 130 with one line "interrupted" and
+    no traceback, leave no .part file and no staging folder, and leave one whole set
+    (results.json and report.html of one case, manifest verified)."""
     out = tmp_path / "out"
     assert _cli(str(_small_case(tmp_path, case_dict, "old-case")), "-o", str(out)).wait(
-        timeout=120) == 0
+        timeout=300) == 0
     new = _small_case(tmp_path, case_dict, "new-case")
     for i, moment in enumerate(MOMENTS):
         sig = "SIGTERM" if i % 2 else "SIGINT"
-        proc = _driven(moment, sig, "thread", str(new), "-j", "2", "-o", str(out))
-        _, err = proc.communicate(timeout=120)
-        ended = time.monotonic()
+        proc = _driven(moment, sig, "thread", str(new), "-o", str(out))
+        _, err = proc.communicate(timeout=300)
         assert proc.returncode == 130, (moment, sig, err)
-        lines = err.strip().splitlines()
-        assert lines[0].startswith("KILL ") and lines[1:] == ["flexbooster: error: interrupted"]
-        LATENCY[moment] = ended - float(lines[0].split()[1])
-        assert LATENCY[moment] < 10.0, (moment, LATENCY[moment])
+        assert err == "flexbooster: error: interrupted\n", (moment, err)
         _no_leftovers(out)
-        _no_orphans(lines[0].split()[2:])
         # before the report stage the new set cannot be complete; in it the signal may land
         # during the renames (held back): then exit 130 with the new set whole
         allowed = ("old-case",) if moment != OUTPUT_STAGES[-1] else ("old-case", "new-case")
         assert _set_name(out) in allowed, moment
-    print("\nkill -> exit latency (s): " + ", ".join(f"{m}: {t:.2f}"
-                                                     for m, t in LATENCY.items()))
 
 
 #: ``flexbooster --version`` through the real entry point, with one import stalled: the
@@ -995,21 +937,33 @@ def test_late_signal_never_ends_the_process_by_the_signal(when, code):
         assert proc.stderr.endswith("flexbooster: error: interrupted\n")
 
 
-def test_interrupt_in_process_is_a_normal_exit_130(tmp_path, capsys, monkeypatch):
-    """Ctrl-C while the report is written (in-process: cli.main no longer calls os._exit,
-    which would end pytest): SystemExit(130), one line, the staging folder and every .part
-    file removed, nothing published."""
-    from flexbooster.present import report
-
-    def interrupted(*args, **kwargs):
-        raise KeyboardInterrupt
-
-    monkeypatch.setattr(report, "write_report", interrupted)
+def test_interrupt_at_each_file_of_the_set_keeps_the_previous_set(tmp_path, case_dict,
+                                                                  capsys, monkeypatch):
+    """Ctrl-C while the n-th file of the new set is being written (a KeyboardInterrupt from
+    its fsync: the temporary file exists, half the set is staged), for every n, in-process
+    over a complete previous set: exit 130 and one line, no .part file and no staging folder,
+    the previous set whole (manifest verified) and nothing of the new one."""
     out = tmp_path / "out"
-    assert run_cli(["run", "-q", "--no-vehicle", "--no-figures", "-j", "1", "-o",
-                    str(out)]) == 130
-    assert capsys.readouterr().err == "flexbooster: error: interrupted\n"
-    assert [p.name for p in out.iterdir()] == []
+    args = ["run", "-q", "--no-vehicle", "--no-figures", "-o", str(out)]
+    assert run_cli([*args, str(_small_case(tmp_path, case_dict, "old-case"))]) == 0
+    old = check_output_set(out)
+    new = str(_small_case(tmp_path, case_dict, "new-case"))
+    real = os.fsync
+    for n in range(1, len(old) + 1):  # the set's files less the manifest, and the report
+        calls = []
+
+        def fsync(fd, n=n, calls=calls):
+            calls.append(fd)
+            if len(calls) == n:
+                raise KeyboardInterrupt
+            real(fd)
+
+        monkeypatch.setattr(os, "fsync", fsync)
+        assert run_cli([*args, new]) == 130, n
+        monkeypatch.setattr(os, "fsync", real)
+        assert capsys.readouterr().err == "flexbooster: error: interrupted\n"
+        _no_leftovers(out)
+        assert check_output_set(out) == old and _set_name(out) == "old-case"
 
 
 def test_signal_is_held_during_the_renames_with_another_thread_alive():
@@ -1049,26 +1003,6 @@ def test_two_concurrent_runs_give_one_consistent_set(tmp_path, case_dict):
     assert _set_name(out) in ("case-a", "case-b")
     assert set(json.loads((out / MANIFEST).read_text())["files"]) <= {
         p.name for p in out.iterdir()}
-
-
-@pytest.mark.slow
-def test_sigint_is_honoured_quickly_in_the_heavy_stage(tmp_path, case_dict):
-    """Ctrl-C in the beam-action stage of a heavy case (a 20,000-point grid: 4,000 points,
-    the first size chosen, finished within the 4 s wait once the stages got faster): exit 130
-    well within the 60 s the issue saw ignored (bound 10 s on a loaded 2-core machine;
-    measured about 0.1 s)."""
-    d = json.loads(json.dumps(case_dict))
-    d["thrust"]["n_omega"] = 20_000
-    path = tmp_path / "heavy.toml"
-    path.write_text(dump_toml(d))
-    proc = _cli(str(path), "--no-figures", "-o", str(tmp_path / "o"))
-    time.sleep(4.0)
-    assert proc.poll() is None, "the heavy case ended before the interrupt: make it heavier"
-    start = time.monotonic()
-    proc.send_signal(signal.SIGINT)
-    _, err = proc.communicate(timeout=60)
-    assert proc.returncode == 130 and "interrupted" in err
-    assert time.monotonic() - start < 10.0
 
 
 #: Found by `make fuzz` (300 cases): the damped band search of flexbooster.floquet stepped to
@@ -1132,7 +1066,7 @@ def test_fuzz_reproducer_pitch_tongue_edges():
     and inside the searched range."""
     from flexbooster._threads import blas_threads
 
-    model = cost.derived_model(flexbooster.load_case(_FUZZ_TONGUE))
+    model = model_from_case(flexbooster.load_case(_FUZZ_TONGUE))
     with blas_threads(1):  # as in analyze (with more BLAS threads it happened not to fail)
         bands = ba.pipeline_bands(model)
     lo, hi = model.omega_range
@@ -1165,7 +1099,7 @@ def test_fuzz_reproducer_monodromy_singular():
     """Since bands2's fix (merged into main) the overflow is a PeriodMapOverflowError (a
     one-line ValueError naming Omega and gamma), no LinAlgError and no numpy warning; the
     pipeline turns it into a CaseError on thrust.F0 (a documented refusal)."""
-    model = cost.derived_model(flexbooster.load_case(_FUZZ_MONODROMY))
+    model = model_from_case(flexbooster.load_case(_FUZZ_MONODROMY))
     system = ba.beam_system(model)
     with warnings.catch_warnings():
         warnings.simplefilter("error", RuntimeWarning)
@@ -1194,7 +1128,7 @@ _FUZZ_DAMPING_CAPS = {
 
 def test_fuzz_reproducer_damping_caps_overflow():
     """Passes since bands2's fix (merged into main: the caps ignore the overflow)."""
-    model = cost.derived_model(flexbooster.load_case(_FUZZ_DAMPING_CAPS))
+    model = model_from_case(flexbooster.load_case(_FUZZ_DAMPING_CAPS))
     with warnings.catch_warnings():
         warnings.simplefilter("error", RuntimeWarning)
         bands = ba.pipeline_bands(model)
@@ -1246,7 +1180,7 @@ _FUZZ_COMPLEX_CAST = {
 
 
 def test_fuzz_reproducer_monodromy_complex_cast():
-    model = cost.derived_model(flexbooster.load_case(_FUZZ_COMPLEX_CAST))
+    model = model_from_case(flexbooster.load_case(_FUZZ_COMPLEX_CAST))
     system = ba.beam_system(model)
     with warnings.catch_warnings():
         warnings.simplefilter("error", RuntimeWarning)  # numpy's ComplexWarning is one
@@ -1291,7 +1225,7 @@ def test_fuzz_reproducer_band_refinement(change):
                 data[table][key].update(value)
             else:
                 data[table][key] = value
-    model = cost.derived_model(flexbooster.load_case(data))
+    model = model_from_case(flexbooster.load_case(data))
     with warnings.catch_warnings():
         warnings.simplefilter("error", RuntimeWarning)
         with blas_threads(1):
@@ -1349,7 +1283,7 @@ def test_fuzz_reproducer_pitch_tongues_far_below_the_beam(data, orders, exact, r
     from flexbooster._threads import blas_threads
     from flexbooster.memo import pitch
 
-    model = cost.derived_model(flexbooster.load_case(data))
+    model = model_from_case(flexbooster.load_case(data))
     with warnings.catch_warnings():
         warnings.simplefilter("error", RuntimeWarning)
         with blas_threads(1):
@@ -1387,7 +1321,7 @@ def test_tongue_growth_harmonics_resolve_high_order_tongues(r):
     from flexbooster._threads import blas_threads
     from flexbooster.memo import pitch
 
-    model = cost.derived_model(flexbooster.load_case(_FUZZ_TONGUE_2))
+    model = model_from_case(flexbooster.load_case(_FUZZ_TONGUE_2))
     system = ba.beam_system(model)
     w1 = float(system.omega_1)
     wp = float(ba.loaded_frequencies(system)[ba._pitch_mode(system)].real) * w1
@@ -1558,49 +1492,14 @@ def test_fuzz_reproducer_vehicle_regions_of_a_flat_plate():
         analysis.analyze_vehicle_regions(case, boundaries=False)
 
 
-def test_fuzz_reproducer_vehicle_regions_past_the_step_limit():
-    """Found by the fuzz (run 8, after the damped step counts were fixed: a damped monodromy
-    now takes about 5 times the steps it took): harmonic k = 19 of a 37-mode vehicle (up to
-    21,000 rad/s) at Omega = 1.15 rad/s needs 370,728 steps per period, past the toolkit's
-    max_steps = 200,000: its ValueError ended the run (exit 1).  Now
-    floquet.StepLimitError, and the harmonic is named as not searched (vehicle-regions-
-    skipped, field thrust.omega_min, one line), like a harmonic past the candidate limit."""
-    from flexbooster.floquet import StepLimitError
-
-    assert issubclass(StepLimitError, ValueError)
-    case = flexbooster.load_case({
-        "name": "fuzz", "max_seconds": 20.0,
-        "booster": {"cylinder1": {"radius": 27.007642697630487, "half_length": 1.0},
-                    "cylinder2": {"radius": 1.987751681068438, "half_length": 1.0},
-                    "thickness": 0.4245637120574288, "E": 697719596.8563334,
-                    "nu": 0.2321362982983677, "rho": 252.09343551531046},
-        "thrust": {"gamma": 0.5145247219221243, "K": 3.812612563831604,
-                   "omega_min": 1.2530159911033738, "omega_max": 907.9807723031281,
-                   "n_omega": 8, "F0": 697719596.8563334},
-        "truncation": {"M1": 4, "N1": 1, "M2": 3, "N2": 4, "N": 4, "S": 1, "R": 2},
-        "damping": {"pitch_ratio": 0.02},
-        "vehicle": {"k_max": 50, "n_modes": 37, "damping_ratio": 0.001, "theory": "donnell",
-                    "fwd_end": "hinged", "junction": "rigid-bulkhead"}})
-    found, warns = analysis._vehicle_regions_stage(case, boundaries=False, max_seconds=20.0)
-    steps = [w for w in warns if "max_steps" in w.message]
-    assert len(steps) == 1 and (steps[0].code, steps[0].field) == (
-        "vehicle-regions-skipped", "thrust.omega_min")
-    assert "harmonic k = 19 not searched" in steps[0].message and "\n" not in steps[0].message
-    # every other harmonic is over the budget: 49 named in one warning (not 49 warnings)
-    assert found is not None and len(found.skipped) == 50 and len(warns) == 2
-    (budget,) = [w for w in warns if w.code == "vehicle-regions-budget"]
-    assert budget.message.startswith("49 harmonics left out (k = 1-18, 20-50); the first, ")
-
-
 def test_a_truncation_past_the_band_search_limits_is_a_case_error():
-    """truncation.N = 150 with the budget lifted (max_seconds = 1e9; the estimate refuses it
-    otherwise): the beam-action band search has 9e8 resonance candidates above omega_1 / 4,
-    past the Floquet toolkit's limit.  A one-line CaseError naming truncation.N (exit 2), not
-    the toolkit's TooManyCandidatesError (exit 1); in one process the band search runs
-    before the exponents of the grid, so the refusal comes at once."""
+    """truncation.N = 30 with the budget lifted (max_seconds = 1e9): the beam-action band
+    search has 1.7e6 resonance candidates above omega_1 / 4, past the Floquet toolkit's limit
+    of 200,000.  A one-line CaseError naming truncation.N (exit 2), not the toolkit's
+    TooManyCandidatesError (exit 1)."""
     data = flexbooster.default_case().model_dump(exclude_none=True)
-    data["truncation"].update(N=150, M1=2, N1=2, M2=2, N2=2, S=1, R=2)
+    data["truncation"].update(N=30, M1=2, N1=2, M2=2, N2=2, S=1, R=2)
     data["thrust"]["n_omega"] = 4
     data["max_seconds"] = 1e9
-    with pytest.raises(CaseError, match=r"^truncation\.N = 150: the beam-action band search"):
+    with pytest.raises(CaseError, match=r"^truncation\.N = 30: the beam-action band search"):
         analyze(flexbooster.load_case(data), figures=False, vehicle=False)

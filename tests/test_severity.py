@@ -364,60 +364,6 @@ def test_floquet_vectors_of_one_harmonic_per_point_are_those_of_the_full_solutio
         floquet_vectors(system.A0, system.B, mu, ob, res.model.gamma, 2, s=s)
 
 
-@pytest.mark.parametrize("parts", [2, 3, 4, 7])
-def test_floquet_vectors_in_parts_are_those_of_one_call(small, parts):
-    """What the pipeline's workers compute (root_severity's ``mapper``, ``parts``): consecutive
-    slices of whole batches of floquet_vectors, joined, equal one call bit for bit (its points
-    are independent); 1,000 points (the first-order path; the exact one: the next test)."""
-    from flexbooster.memo.severity import _CHUNK, _floquet_vectors_in_parts
-
-    res, _ = small
-    system = beam_system(res.model, 4)
-    rng = np.random.default_rng(7)
-    n = 1000
-    ob = rng.uniform(20.0, 2400.0, n) / res.omega_1
-    mu = loaded_frequencies(system).real[rng.integers(0, 5, n)] * (1 + 1e-6)
-    s = rng.integers(-3, 4, n)
-    args = (system.A0, system.B, mu, ob, res.model.gamma, 3, s)
-    slices = []
-
-    def mapper(fn, items):
-        slices.extend(item[2].size for item in items)
-        return [fn(item) for item in items]
-
-    C1, mu1 = floquet_vectors(*args[:6], s=s)
-    C, m = _floquet_vectors_in_parts(*args, mapper=mapper, parts=parts)
-    np.testing.assert_array_equal(C, C1)
-    np.testing.assert_array_equal(m, mu1)
-    assert sum(slices) == n and len(slices) == min(parts, -(-n // _CHUNK))
-    assert all(size % _CHUNK == 0 for size in slices[:-1])
-
-
-def test_root_severity_in_parts_is_the_same_and_parts_are_checked(small):
-    res, params = small
-    st, model = res.stability, res.model
-    one = root_severity(model, st, params)
-    three = root_severity(model, st, params, parts=3,
-                          mapper=lambda fn, items: [fn(item) for item in items])
-    np.testing.assert_array_equal(three.severity, one.severity)
-    for bad in (0, 1.5, True):
-        with pytest.raises(ValueError, match="parts"):
-            root_severity(model, st, params, parts=bad)
-
-
-@pytest.mark.slow
-def test_default_severity_in_parts_is_the_same(default):
-    """The default case's beam roots (S = 10: 39,202, 8 of them on the exact path of
-    floquet_vectors) in 3 and 5 slices, as the pipeline computes them with 2 and 4 workers:
-    the severities equal one call's bit for bit."""
-    res = default[10]
-    params = excitation_parameters(res.model, res.beam_action)
-    for parts in (3, 5):
-        sev = root_severity(res.model, res.stability, params, parts=parts,
-                            mapper=lambda fn, items: [fn(item) for item in items])
-        np.testing.assert_array_equal(sev.severity, res.severity.roots.severity)
-
-
 def test_exact_limits_and_scalings(small):
     """Exact structure (memo 6.2): family 3 is linear in gamma and 0 at gamma = 0; the pitch
     terms psi'' (family 7) scale like psi0, psi'^2 (family 4) like psi0^2, the beam terms

@@ -27,7 +27,7 @@ from flexbooster import cost, floquet
 from flexbooster.analysis import _vehicle_regions_stage, analyze
 from flexbooster.case import default_case_text, load_case
 from flexbooster.errors import CaseError
-from flexbooster.model import vehicle_from_case
+from flexbooster.model import model_from_case, vehicle_from_case
 from flexbooster.vehicle import (
     HARMONIC_BUILD_SECONDS,
     harmonic_search_seconds,
@@ -72,7 +72,7 @@ def test_default_and_damped_cases_are_not_refused(vehicle):
     certified lower bound (building each harmonic), the budget is then enforced per harmonic
     (next test)."""
     case = _case(**vehicle)
-    model = cost.derived_model(case)
+    model = model_from_case(case)
     est = cost.check_case_cost(model, case.max_seconds, vehicle=cost.estimate_vehicle_cost(
         case), beam_action=True, stability=True,
         figures=True)
@@ -111,22 +111,21 @@ def test_harmonics_past_the_budget_are_skipped_and_named():
 
 
 def test_pipeline_warns_for_each_skipped_harmonic(monkeypatch):
-    """The stage turns each skipped harmonic into a warning (code vehicle-regions-budget,
-    field max_seconds) and keeps the regions it has."""
+    """The stage turns each harmonic a limit left out into a warning (code
+    vehicle-regions-skipped, the field the reason names) and keeps the regions it has."""
     import flexbooster.analysis as analysis
 
     real = analysis.vehicle_regions
+    why = "thrust.omega_min = 1: harmonic k = 2 not searched, past the candidate limit"
 
-    def budgeted(vehicle, **kw):
-        return dataclasses.replace(real(vehicle, **{**kw, "k_max": 1}),
-                                   skipped=("max_seconds = 1: harmonic k = 2 not searched",))
+    def limited(vehicle, **kw):
+        return dataclasses.replace(real(vehicle, **{**kw, "k_max": 1}), skipped=(why,))
 
-    monkeypatch.setattr(analysis, "vehicle_regions", budgeted)
+    monkeypatch.setattr(analysis, "vehicle_regions", limited)
     found, warnings = _vehicle_regions_stage(_case(k_max=2, n_modes=3), boundaries=False)
     assert found is not None
     (w,) = warnings
-    assert (w.code, w.field) == ("vehicle-regions-budget", "max_seconds")
-    assert "k = 2 not searched" in w.message
+    assert (w.code, w.field, w.message) == ("vehicle-regions-skipped", "thrust.omega_min", why)
 
 
 def test_verdict_is_unknown_when_harmonics_were_skipped():

@@ -248,16 +248,15 @@ class _Recorder:
         self.curve_calls.append((found, kw))
         curve = RegionCurve(k=2, kind="simple", order=1, modes=(0,), gamma=np.array([0.1]),
                             omega_lo=np.array([10.0]), omega_hi=np.array([11.0]))
-        return (curve,), ("max_seconds = 1: harmonic k = 3 not searched for the chart",)
+        return (curve,), ("thrust.omega_min = 1: harmonic k = 3 not traced for the chart",)
 
 
 def test_stage_passes_the_case_settings_and_defaults(monkeypatch):
-    """Without [vehicle]: damping 0.01, 20 modes, k = 1..20 (issue 15 defaults, vehicle.k_max
-    of the memo vehicle), the case's F0, gamma, Omega range, gimbal gain K (for k = 1) and
-    budget max_seconds in one search; the chart's curves from the stored map
-    (vehicle.region_curves) up to the chart's gamma with the chart's levels, in the budget
-    the map left (max_seconds - its running estimate); their curves and skipped harmonics
-    reach the result; a [vehicle] k_max is passed as it is (no cap at 10 any more)."""
+    """Without [vehicle]: damping 0.01, 20 modes, k = 1..20 (the defaults, vehicle.k_max
+    of the memo vehicle), the case's F0, gamma, Omega range and gimbal gain K (for k = 1) in
+    one search, no budget; the chart's curves from the stored map (vehicle.region_curves) up
+    to the chart's gamma with the chart's levels; their curves and skipped harmonics reach
+    the result; a [vehicle] k_max is passed as it is."""
     import flexbooster.analysis as analysis
 
     rec = _Recorder()
@@ -268,16 +267,14 @@ def test_stage_passes_the_case_settings_and_defaults(monkeypatch):
     case = load_case(small_case_data())
     found = analyze_vehicle_regions(case, boundaries=True)
     expected = dict(F0=case.F0, omega_min=5.0, omega_max=2000.0, k_min=1, k_max=20,
-                    n_modes=20, damping_ratio=0.01, gimbal_gain=case.thrust.K,
-                    max_seconds=case.max_seconds)
+                    n_modes=20, damping_ratio=0.01, gimbal_gain=case.thrust.K)
     (first,) = rec.calls
     assert first == {**expected, "gamma": 0.05}
     ((mapped, kw),) = rec.curve_calls
     assert mapped.gamma == 0.05
-    assert kw == {"gamma_max": VEHICLE_CHART_GAMMA_MAX, "n_gamma": VEHICLE_CHART_LEVELS,
-                  "max_seconds": case.max_seconds - 1.5}
+    assert kw == {"gamma_max": VEHICLE_CHART_GAMMA_MAX, "n_gamma": VEHICLE_CHART_LEVELS}
     assert [c.k for c in found.curves] == [2] and found.chart_gamma_max == VEHICLE_CHART_GAMMA_MAX
-    assert found.skipped == ("max_seconds = 1: harmonic k = 3 not searched for the chart",)
+    assert found.skipped == ("thrust.omega_min = 1: harmonic k = 3 not traced for the chart",)
     rec.calls.clear()
     rec.curve_calls.clear()
     analyze_vehicle_regions(load_case(small_case_data(k_max=4, n_modes=5, damping_ratio=0.2)),

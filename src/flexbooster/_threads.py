@@ -1,10 +1,5 @@
-"""BLAS thread limits around the small batched eigen-solves (threadpoolctl).
-
-Multithreaded OpenBLAS makes the many small eigenproblems of the pipeline 2-100x slower (the
-threads spin and contend): measured 6.0 s instead of 2.5 s for the default case with
-OPENBLAS_NUM_THREADS unset (issue 11).  :func:`analyze` therefore runs with one BLAS thread;
-the user's setting is restored afterwards.
-"""
+"""BLAS thread limit around the analysis (threadpoolctl): its many small batched eigenproblems
+run fastest with one BLAS thread; the user's setting is restored afterwards."""
 
 from __future__ import annotations
 

@@ -1,18 +1,10 @@
 """The analysis pipeline: a validated case in, a :class:`~flexbooster.results.Results` out.
 
-This is the layer that strings the numerical stages together in the memo's order (reading
-guide section 1), each from the one derived model (:class:`flexbooster.memo.model.BoosterModel`)
-built once from the case: the equivalent beam (omega_1 and the free-free modes), the rigid-body
-pitch (Mathieu a, q and the exponent beta along the Omega grid), the shell natural frequencies,
-the beam action (exponents alpha_r) and the unstable thrust frequencies (the 13 families of
-memo 7.3).  It also computes the data of every figure (:mod:`flexbooster.memo.charts`) and the
-warnings under which the analysis goes on: thin-shell limit exceeded, Mathieu parameters outside
-the memo's range (4.2-5), a stability table too large for memory.
-
-The last stage (issue 15) is the vehicle's parametric instability map: the regions of the
-shell-of-revolution vehicle (the case's ``[vehicle]`` or the memo's two cylinders) under the
-pulsating thrust (:func:`analyze_vehicle_regions`, :mod:`flexbooster.vehicle`), with the
-memo-table roots that fall inside each region (:func:`memo_roots_in_regions`).
+A plain sequence of stages in the memo's order, each from the one model built from the case
+(:func:`flexbooster.model.model_from_case`): beam modes, rigid-body pitch, shell frequencies,
+beam action, unstable thrust frequencies (memo 7.3) and their severity, figure data, then the
+vehicle's modes and parametric instability regions (:mod:`flexbooster.vehicle`) with the
+memo-table roots inside each region; and the warnings under which the analysis goes on.
 """
 
 from __future__ import annotations
@@ -20,12 +12,10 @@ from __future__ import annotations
 import dataclasses
 import re
 from collections.abc import Callable
-from contextlib import contextmanager
 
 import numpy as np
 
 from . import cost, floquet
-from ._parallel import TaskPool, using_pool
 from ._threads import blas_threads
 from .case import Case
 from .checks import count, finite, positive
@@ -33,22 +23,14 @@ from .danger import danger_summary
 from .errors import AnalysisWarning
 from .memo import charts
 from .memo.beam import beam_modes
-from .memo.beam_action import (
-    BandSearch,
-    BeamActionExponents,
-    PeriodMapOverflowError,
-    beam_action_analysis,
-    beam_action_exponents,
-    hill_check,
-    pipeline_band_search,
-)
+from .memo.beam_action import PeriodMapOverflowError, beam_action_analysis
 from .memo.model import BoosterModel
 from .memo.pitch import pitch_analysis
 from .memo.responses import SimulationResult, excitation_parameters, simulate
 from .memo.severity import severity_analysis
 from .memo.shell import natural_frequencies
 from .memo.stability import ShellModes, StabilityTable, TooManyRootsError, unstable_frequencies
-from .model import vehicle_from_case
+from .model import model_from_case, vehicle_from_case
 from .results import SCHEMA_VERSION, UNITS, MemoRootsInRegions, Results
 from .shell_of_revolution.survey import VehicleSurvey, has_flat_plate, vehicle_survey
 from .vehicle import VehicleRegions, region_curves, vehicle_regions
@@ -103,40 +85,24 @@ def _range_text(Omega: np.ndarray, mask: np.ndarray) -> str:
 
 
 def _warnings(model: BoosterModel, a: np.ndarray, q: np.ndarray) -> list[AnalysisWarning]:
-    out = []
-    Omega, omega_psi = model.Omega, model.omega_psi
-    for d, radius in ((1, model.R1), (2, model.R2)):
-        ratio = model.h / radius
-        if ratio > THIN_SHELL_LIMIT:
-            out.append(
-                AnalysisWarning(
-                    "thin-shell",
-                    f"booster.cylinder{d}",
-                    f"h/R{d} = {ratio:.4g} exceeds 1/20: thin-shell (Donnell) theory of memo 2.3 "
-                    "is not reliable",
-                )
-            )
+    """Thin-shell limit exceeded; Mathieu a, q outside the memo's range (eq. 4.2-5)."""
+    out = [AnalysisWarning("thin-shell", f"booster.cylinder{d}",
+                           f"h/R{d} = {model.h / radius:.4g} exceeds 1/20: thin-shell (Donnell) "
+                           "theory of memo 2.3 is not reliable")
+           for d, radius in ((1, model.R1), (2, model.R2)) if model.h / radius > THIN_SHELL_LIMIT]
     bad_a = ~((a > MATHIEU_A_RANGE[0]) & (a < MATHIEU_A_RANGE[1]))
     if bad_a.any():
-        out.append(
-            AnalysisWarning(
-                "mathieu-a-range",
-                "thrust",
-                f"Mathieu a outside the memo's range 0 < a < 1 (eq. 4.2-5) at "
-                f"{_range_text(Omega, bad_a)}; a = 4 omega_psi^2/Omega^2 with "
-                f"omega_psi = {omega_psi:.6g} rad/s",
-            )
-        )
+        out.append(AnalysisWarning(
+            "mathieu-a-range", "thrust",
+            f"Mathieu a outside the memo's range 0 < a < 1 (eq. 4.2-5) at "
+            f"{_range_text(model.Omega, bad_a)}; a = 4 omega_psi^2/Omega^2 with "
+            f"omega_psi = {model.omega_psi:.6g} rad/s"))
     bad_q = ~((q > 0.0) & (q <= MATHIEU_Q_MAX))
     if bad_q.any():
-        out.append(
-            AnalysisWarning(
-                "mathieu-q-range",
-                "thrust",
-                f"Mathieu q outside the memo's range 0 < q <= 0.05 (eq. 4.2-5) at "
-                f"{_range_text(Omega, bad_q)}; q = gamma a / 2",
-            )
-        )
+        out.append(AnalysisWarning(
+            "mathieu-q-range", "thrust",
+            f"Mathieu q outside the memo's range 0 < q <= 0.05 (eq. 4.2-5) at "
+            f"{_range_text(model.Omega, bad_q)}; q = gamma a / 2"))
     return out
 
 
@@ -147,151 +113,79 @@ def analyze(
     progress: Callable[[str], None] | None = None,
     figures: bool = True,
     *,
-    workers: int | TaskPool = 1,
     vehicle: bool = True,
     on_estimate: Callable[[cost.CostEstimate, float], None] | None = None,
 ) -> Results:
-    """Run the analysis of a validated case.
+    """Run the analysis of a validated case: the stages of :data:`STAGES` in order.
 
     Parameters
     ----------
     case : Case
         From :func:`flexbooster.load_case` or :func:`flexbooster.default_case`.
     beam_action : bool
-        Compute the beam-action exponents alpha_r (memo 4.1; the slowest stage).
+        Compute the beam action (memo 4.1); ``stability`` needs it.
     stability : bool
-        Compute the table of unstable thrust frequencies (memo 7.3); needs ``beam_action``.
+        Compute the unstable thrust frequencies (memo 7.3) and their severity.
     progress : callable, optional
-        Called with the name of each stage (:data:`STAGES`) as it starts, e.g. to drive a
-        progress bar; stages that are not computed are skipped.
+        Called with the name of each stage as it starts.
     figures : bool
-        Compute the data of the figures (:mod:`flexbooster.memo.charts`; the beam-action
-        (Omega, gamma) chart is the costly part); ``results.figures`` is None without it.
-    workers : int or TaskPool
-        Processes for the independent stages (:class:`flexbooster._parallel.TaskPool`, or
-        an open pool to share with the stages after this one, e.g. the figures of
-        :func:`flexbooster.present.outputs.write_outputs`): with 2 or more, the beam-action
-        chart, the beam-action band search, the Hill check of the exponents and the vehicle
-        regions run in workers while this process computes the beam-action exponents, the
-        stability table and its severity.  The results are the same, bit for bit.
+        Compute the data of the figures (``results.figures``; None without).
     vehicle : bool
-        Compute the vehicle's parametric instability regions (:func:`analyze_vehicle_regions`,
-        with their (Omega, gamma) boundary curves when ``figures``) and the memo-table roots
-        inside them (:func:`memo_roots_in_regions`); ``results.vehicle_regions`` is None
-        without it (``flexbooster run --no-vehicle``).
+        Compute the vehicle's parametric instability regions (:func:`analyze_vehicle_regions`)
+        and the memo-table roots inside them.
     on_estimate : callable, optional
-        Called once, before any solver runs, with the cost estimate of the stages that will
-        run (:class:`flexbooster.cost.CostEstimate`, memo and vehicle stages) and the budget
-        ``case.max_seconds`` (s), e.g. to show the estimate in a progress bar; a case over
-        its budget is refused (``CaseError`` on ``max_seconds``) before the call.
+        Called once before any solver runs with the cost estimate and ``case.max_seconds``
+        (s); a case over its budget is refused before (``CaseError`` on ``max_seconds``).
 
     Returns
     -------
     Results
-        Mass properties, omega_1, beam modes, rigid-body pitch, shell frequencies, beam action,
-        the unstable thrust frequencies, the data of every figure and the warnings.
-
-    Notes
-    -----
-    The small batched eigen-solves run with one BLAS thread
-    (:func:`flexbooster._threads.blas_threads`): multithreaded BLAS makes them slower.
     """
-    with blas_threads(1):
-        with using_pool(workers) as pool:
-            return _analyze(case, beam_action, stability, figures,
-                            progress or (lambda stage: None), pool, with_regions=vehicle,
-                            on_estimate=on_estimate)
-
-
-def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
-             step: Callable[[str], None], pool: TaskPool, *,
-             with_regions: bool = True, on_estimate=None) -> Results:
-    step(STAGES[0])
-    model = cost.derived_model(case)
-    est, extra = _feasibility(case, model, beam_action=beam_action, stability=stability,
-                              figures=figures, with_regions=with_regions)
-    if on_estimate is not None:
-        on_estimate(est, case.max_seconds)
-    # the costliest figure data, independent of the stages below: started first (in a worker
-    # when the pool has one, else computed when asked for, in STAGES[5])
-    chart = (pool.submit(charts.beam_action_chart, model) if figures and beam_action
-             else None)
-    # the band search's cap: the budget less the other stages' estimate (issue 18)
-    cap = case.max_seconds - (est.seconds - est.parts.get(cost.TONGUE_PART, 0.0))
-    search = (pool.submit(pipeline_band_search, model, max_seconds=cap)
-              if beam_action and pool.parallel else None)
-    hill = pool.submit(hill_check, model) if beam_action and pool.parallel else None
-    # the vehicle's regions depend on the case alone (run last when there is no worker)
-    # their budget: the case's less the other stages' estimate
-    vbudget = case.max_seconds - (est.seconds - est.parts.get("vehicle regions", 0.0))
-    vreg = (pool.submit(_vehicle_regions_stage, case, boundaries=figures, max_seconds=vbudget)
-            if with_regions and pool.parallel else None)
-    n = model.truncation
-    beam = beam_modes(n.N, model.mass.L, model.R1, model.E, model.rho)
-    step(STAGES[1])
-    pitch = pitch_analysis(model.Omega, model.omega_psi, model.gamma,
-                           damping_ratio=model.pitch_damping_ratio)
-    step(STAGES[2])
-    shell = natural_frequencies(model)
-    action = exponents = None
-    if beam_action:
-        step(STAGES[3])
-        if search is None:  # in this process the bands are searched first, so that a
-            # search past the toolkit's limits is refused at once
-            action = _beam_action(model, None, max_seconds=cap)
-        else:  # the workers' bands and Hill check are waited for after the table and its
-            # severity, which need the exponents alone
-            with _beam_action_refusals(model):
-                exponents = beam_action_exponents(model)
-    table = None
-    params = None
-    skipped_table = []
-    if stability and beam_action:
-        step(STAGES[4])
-        modes = ShellModes(shell.cylinder, shell.j, shell.k, shell.branch, shell.omega_bar)
-        params = excitation_parameters(model, action if exponents is None else exponents)
-        lo, hi = model.omega_range
-        try:
-            table = unstable_frequencies(
-                modes, params, Omega_bar_range=(lo / model.omega_1, hi / model.omega_1),
-                omega_1=model.omega_1, R=n.R, S=n.S, gamma=model.gamma, K=model.K)
-        except TooManyRootsError as exc:  # a memory limit: the rest of the analysis stands
-            skipped_table.append(AnalysisWarning("stability-skipped", "truncation", str(exc)))
-    severity = None
-    if table is not None:  # issue 13: how bad each root is; active = severity_rel >= threshold
-        sv = case.severity
-        # the beam roots' Floquet vectors in slices: one here, one in each worker (free by
-        # now without figures: the bands, the Hill check and the vehicle's regions are done)
-        table, severity = severity_analysis(
-            model, table, params, psi0=sv.psi0, beam_amplitude=sv.beam_amplitude,
-            threshold=sv.threshold, resolution=sv.resolution, mapper=pool.share,
-            parts=1 + (pool.workers if pool.parallel else 0))
-    if exponents is not None:
-        action = _beam_action(model, search.result, hill.result, exponents=exponents)
-    if action is not None:
-        extra += [AnalysisWarning("beam-action-tongue-budget", "max_seconds", why)
-                  for why in action.skipped]
-    extra += skipped_table
-    data = None
-    if figures:
-        step(STAGES[5])
-        data = _figure_data(model, pitch, shell, action, table, params,
-                            beam_action_chart=(chart.result() if chart is not None
-                                               and action is not None else None))
-    vehicle = None
-    if case.vehicle is not None:  # only a case with [vehicle]: the default run is unchanged
-        step(VEHICLE_STAGE)
-        vehicle = analyze_vehicle(case, views=figures)
-        extra += vehicle_warnings(vehicle)
-    regions = matches = None
-    if with_regions:
-        step(VEHICLE_REGIONS_STAGE)
-        regions, skipped = (vreg.result() if vreg is not None
-                            else _vehicle_regions_stage(case, boundaries=figures,
-                                                        max_seconds=vbudget))
-        extra += skipped
-        if regions is not None and table is not None:
-            matches = memo_roots_in_regions(table, regions)
+    step = progress or (lambda stage: None)
+    with blas_threads(1):  # many small eigenproblems: one BLAS thread is the fastest
+        step(STAGES[0])
+        model = model_from_case(case)
+        est, extra = _feasibility(case, model, beam_action=beam_action, stability=stability,
+                                  figures=figures, with_regions=vehicle)
+        if on_estimate is not None:
+            on_estimate(est, case.max_seconds)
+        n = model.truncation
+        beam = beam_modes(n.N, model.mass.L, model.R1, model.E, model.rho)
+        step(STAGES[1])
+        pitch = pitch_analysis(model.Omega, model.omega_psi, model.gamma,
+                               damping_ratio=model.pitch_damping_ratio)
+        step(STAGES[2])
+        shell = natural_frequencies(model)
+        action = table = params = severity = None
+        if beam_action:
+            step(STAGES[3])
+            action = _beam_action(model)
+        if stability and beam_action:
+            step(STAGES[4])
+            params = excitation_parameters(model, action)
+            table, skipped = _stability_table(model, shell, params)
+            extra += skipped
+        if table is not None:  # how bad each root is; active = severity_rel >= threshold
+            sv = case.severity
+            table, severity = severity_analysis(
+                model, table, params, psi0=sv.psi0, beam_amplitude=sv.beam_amplitude,
+                threshold=sv.threshold, resolution=sv.resolution)
+        data = None
+        if figures:
+            step(STAGES[5])
+            data = _figure_data(model, pitch, shell, action, table, params)
+        survey = None
+        if case.vehicle is not None:  # only a case with [vehicle]
+            step(VEHICLE_STAGE)
+            survey = analyze_vehicle(case, views=figures)
+            extra += vehicle_warnings(survey)
+        regions = matches = None
+        if vehicle:
+            step(VEHICLE_REGIONS_STAGE)
+            regions, skipped = _vehicle_regions_stage(case, boundaries=figures)
+            extra += skipped
+            if regions is not None and table is not None:
+                matches = memo_roots_in_regions(table, regions)
     return Results(
         case=case,
         mass=model.mass,
@@ -306,7 +200,7 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
         beam_action=action,
         stability=table,
         warnings=tuple(_warnings(model, pitch.a, pitch.q) + extra),
-        vehicle=vehicle,
+        vehicle=survey,
         vehicle_regions=regions,
         memo_roots_in_regions=matches,
         danger=danger_summary(operating_range=model.omega_range, pitch=pitch,
@@ -317,12 +211,27 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
     )
 
 
+def _stability_table(model: BoosterModel, shell, params
+                     ) -> tuple[StabilityTable | None, list[AnalysisWarning]]:
+    """The unstable thrust frequencies (memo 7.3), or None and a warning where the table is
+    past its memory limit (the rest of the analysis stands)."""
+    n = model.truncation
+    modes = ShellModes(shell.cylinder, shell.j, shell.k, shell.branch, shell.omega_bar)
+    lo, hi = model.omega_range
+    try:
+        return unstable_frequencies(
+            modes, params, Omega_bar_range=(lo / model.omega_1, hi / model.omega_1),
+            omega_1=model.omega_1, R=n.R, S=n.S, gamma=model.gamma, K=model.K), []
+    except TooManyRootsError as exc:
+        return None, [AnalysisWarning("stability-skipped", "truncation", str(exc))]
+
+
 def _feasibility(case: Case, model: BoosterModel, *, with_regions: bool = True,
                  **stages: bool) -> tuple[cost.CostEstimate, list[AnalysisWarning]]:
-    """Refuse a case past its budget or past what the structure carries (issue 18), before
-    any solver runs; the estimate, and the warnings of the budget and of the load."""
+    """Refuse a case past its budget or past what the structure carries, before any solver
+    runs; the estimate, and the warnings of the budget and of the load."""
     cost.check_physical(model)
-    # the vehicle stages too (issue 18 item 1): modes survey, regions (lower bound with damping)
+    # the vehicle stages too: modes survey, regions (lower bound with damping)
     veh = dict(regions=with_regions, figures=stages.get("figures", True))
     est = cost.check_case_cost(model, case.max_seconds,
                                vehicle=cost.estimate_vehicle_cost(case, **veh), **stages)
@@ -335,8 +244,7 @@ def _feasibility(case: Case, model: BoosterModel, *, with_regions: bool = True,
     return est, out
 
 
-def _figure_data(model, pitch, shell, action, table, params, *,
-                 beam_action_chart) -> charts.FigureData:
+def _figure_data(model, pitch, shell, action, table, params) -> charts.FigureData:
     """The data of every figure (compute -> data -> plot), on the grids of :mod:`charts`."""
     n = model.truncation
     return charts.FigureData(
@@ -346,7 +254,7 @@ def _figure_data(model, pitch, shell, action, table, params, *,
             charts.nodal_pattern_data(shell, cylinder=d, j=j, k=k, radius=R, half_length=L)
             for d, j, k, R, L in ((1, min(4, n.M1), min(3, n.N1), model.R1, model.L1),
                                   (2, min(6, n.M2), min(2, n.N2), model.R2, model.L2))),
-        beam_action_chart=beam_action_chart,
+        beam_action_chart=None if action is None else charts.beam_action_chart(model),
         campbell=None if table is None else charts.campbell_data(
             params=params, omega_range=model.omega_range, omega_1=model.omega_1, shell=shell,
             table=table, R=n.R, S=n.S),
@@ -378,50 +286,34 @@ def simulate_case(case: Case, Omega: float, *, tau_max: float, n_out: int = 401,
         parameter function as the stability table (so a simulation at a root of the table is
         exactly resonant).
     """
-    # the cheap argument checks of simulate first, before the beam-action analysis (issue 18)
+    # the cheap argument checks of simulate first, before the beam-action analysis
     Omega, tau_max, psi0 = (positive("Omega", Omega), positive("tau_max", tau_max),
                             finite("psi0", psi0))
     n_out = count("n_out", n_out, 2, 100_000)
     with blas_threads(1):
-        model = cost.derived_model(case)
-        cost.check_physical(model)  # a load beyond the structure: a CaseError (issue 18)
-        params = excitation_parameters(model, _beam_action(model, False))
+        model = model_from_case(case)
+        cost.check_physical(model)  # a load beyond the structure: a CaseError
+        params = excitation_parameters(model, _beam_action(model))
         return simulate(model, Omega, tau_max, n_out=n_out, psi0=psi0, params=params)
 
 
-@contextmanager
-def _beam_action_refusals(model):
-    """The refusals of issue 18 in the beam action as one-line CaseErrors: a period map
-    beyond floating point is the load's; a band search past the toolkit's limits (resonance
-    candidates, monodromy steps: a truncation far beyond what the budget allows, e.g.
-    N = 150 with ``--max-seconds 1e9``) the truncation's."""
+def _beam_action(model: BoosterModel):
+    """:func:`beam_action_analysis`, its refusals as one-line CaseErrors: a period map beyond
+    floating point is the load's; a band search past the Floquet toolkit's limits (resonance
+    candidates, monodromy steps: a huge truncation) the truncation's."""
     from .errors import CaseError
 
     try:
-        yield
-    except PeriodMapOverflowError as exc:  # issue 18: a documented one-line refusal
+        return beam_action_analysis(model)
+    except PeriodMapOverflowError as exc:
         raise CaseError("thrust.F0", model.F0,
                         f"the beam action grows beyond the floating-point range ({exc}): far "
                         "past what the booster carries at this gamma; lower thrust.F0 or "
                         "thrust.gamma, or raise thrust.omega_min") from exc
     except (floquet.TooManyCandidatesError, floquet.StepLimitError) as exc:
-        # the highest beam mode against Omega >= omega_1 / 4: only a huge truncation
         raise CaseError("truncation.N", model.truncation.N,
                         f"the beam-action band search is past a limit of the Floquet toolkit "
                         f"({exc}): reduce truncation.N") from exc
-
-
-def _beam_action(model, bands: bool | BandSearch | Callable[[], BandSearch] | None,
-                 hill=None, *, max_seconds: float | None = None,
-                 exponents: BeamActionExponents | None = None):
-    """:func:`beam_action_analysis` with the refusals of :func:`_beam_action_refusals`.
-    ``bands`` None: searched here first (:func:`pipeline_band_search` with
-    ``max_seconds``); else as :func:`beam_action_analysis` takes it (e.g. a worker's result,
-    waited for after the exponents), as are ``hill`` and ``exponents``."""
-    with _beam_action_refusals(model):
-        if bands is None:
-            bands = pipeline_band_search(model, max_seconds=max_seconds)
-        return beam_action_analysis(model, bands=bands, hill=hill, exponents=exponents)
 
 
 def analyze_vehicle(case: Case, *, k_max: int | None = None, f_max: float | None = None,
@@ -501,13 +393,12 @@ def vehicle_warnings(survey: VehicleSurvey) -> list[AnalysisWarning]:
     return out
 
 
-def _vehicle_regions_stage(case: Case, *, boundaries: bool, max_seconds: float | None = None
+def _vehicle_regions_stage(case: Case, *, boundaries: bool
                            ) -> tuple[VehicleRegions | None, list[AnalysisWarning]]:
     """The regions of :func:`analyze_vehicle_regions`, or None and a warning where they cannot
     be computed (k_max < 1, or the steady thrust buckles a harmonic): the run goes on.  The
-    harmonics left out are warnings, one per kind (:func:`_merged_warnings`):
-    ``vehicle-regions-budget`` (field max_seconds) past the budget,
-    ``vehicle-regions-skipped`` (thrust.omega_min) past the candidate or step limit."""
+    harmonics a limit left out are ``vehicle-regions-skipped`` warnings, merged per field
+    (:func:`_merged_warnings`)."""
     from .errors import CaseError
     from .vehicle_case import VehicleTable
 
@@ -520,19 +411,13 @@ def _vehicle_regions_stage(case: Case, *, boundaries: bool, max_seconds: float |
             f"computed for k >= {VEHICLE_REGIONS_K_MIN} only (k = 0 gives forced, not "
             "parametric, resonances)")]
     try:
-        found = analyze_vehicle_regions(case, boundaries=boundaries, max_seconds=max_seconds)
+        found = analyze_vehicle_regions(case, boundaries=boundaries)
         used, dofs = cost.region_modes(case, k_max=k_max)
         clipped = [] if table is None or used == table.n_modes else [AnalysisWarning(
             "vehicle-modes-clipped", "vehicle.n_modes",
             f"vehicle.n_modes = {table.n_modes}: more than the {dofs} modes the vehicle's "
             f"mesh has in a harmonic: {used} modes per harmonic (all of them) are used")]
-        left = ("" if max_seconds is None or max_seconds == case.max_seconds else
-                f" [what the other stages' estimate left of max_seconds = "
-                f"{case.max_seconds:g} s]")
-        # harmonics whose search would pass the budget (issue 18): named, not searched
         return found, clipped + _merged_warnings([
-            AnalysisWarning("vehicle-regions-budget", "max_seconds", why + left)
-            if why.startswith("max_seconds") else
             AnalysisWarning("vehicle-regions-skipped", why.split(" = ", 1)[0], why)
             for why in found.skipped])
     except CaseError as exc:  # the thrust buckles the vehicle: a result, not a bad input
@@ -540,10 +425,9 @@ def _vehicle_regions_stage(case: Case, *, boundaries: bool, max_seconds: float |
 
 
 def _merged_warnings(warnings: list[AnalysisWarning]) -> list[AnalysisWarning]:
-    """One warning per (code, field) for the harmonics left out of the vehicle regions: a
-    case over its budget can leave out dozens, and a warning each would bury the others in
-    the summary.  The merged warning names every harmonic (k = 2-9, 12) and quotes the first
-    one's reason; each reason stays in ``VehicleRegions.skipped`` (results.json)."""
+    """One warning per (code, field) for the harmonics left out of the vehicle regions (a low
+    omega_min can leave out dozens): it names every harmonic (k = 2-9, 12) and quotes the
+    first one's reason; each reason stays in ``VehicleRegions.skipped`` (results.json)."""
     groups: dict[tuple[str, str], list[AnalysisWarning]] = {}
     for w in warnings:
         groups.setdefault((w.code, w.field), []).append(w)
@@ -572,8 +456,8 @@ def _ranges(ks: list[int]) -> str:
 
 
 def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
-                            k_max: int | None = None, boundaries: bool = True,
-                            max_seconds: float | None = None) -> VehicleRegions:
+                            k_max: int | None = None, boundaries: bool = True
+                            ) -> VehicleRegions:
     """The parametric instability regions of the case's vehicle (the last stage of
     :func:`analyze`).
 
@@ -598,14 +482,8 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
         Also trace the boundary curves in (Omega, gamma) for the chart, at
         :data:`flexbooster.memo.charts.VEHICLE_CHART_LEVELS` levels up to
         :data:`flexbooster.memo.charts.VEHICLE_CHART_GAMMA_MAX` as far as the stability
-        certificate allows (:func:`_chart_gamma`; at least the case's gamma).
-        Only the regions that exist at that gamma have curves
-        (:func:`flexbooster.vehicle.region_curves`: the harmonics with a region there, from
-        their stored systems, in the budget the searches left).
-    max_seconds : float, optional
-        Budget of the searches (s), > 0; default ``case.max_seconds``.  The chart's curves
-        get what the map left of it (``VehicleRegions.estimated_seconds``); a harmonic whose
-        search would pass it is named in ``skipped``.
+        certificate allows (:func:`_chart_gamma`; at least the case's gamma), for the
+        harmonics with a region there (:func:`flexbooster.vehicle.region_curves`).
 
     Returns
     -------
@@ -633,7 +511,6 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
         raise CaseError("vehicle.k_max", table.k_max,
                         f"the parametric regions need k_max >= {k_min}")
     t = case.thrust
-    budget = case.max_seconds if max_seconds is None else positive("max_seconds", max_seconds)
     vehicle = vehicle_from_case(case)
     if has_flat_plate(vehicle):  # the modes survey goes on unloaded; the regions cannot
         raise CaseError("vehicle.segments", "a cone of length 0",
@@ -647,14 +524,11 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
                     gimbal_gain=t.K)
     with blas_threads(1):
         try:
-            found = vehicle_regions(vehicle, gamma=t.gamma, max_seconds=budget, **settings)
+            found = vehicle_regions(vehicle, gamma=t.gamma, **settings)
             top = _chart_gamma(found)
             if boundaries and top > 0.0:
-                # the harmonics that can have a region at the chart's top (above the case's
-                # gamma every harmonic is certified: none), in the budget the map left
-                curves, skipped = region_curves(
-                    found, gamma_max=top, n_gamma=charts.VEHICLE_CHART_LEVELS,
-                    max_seconds=max(budget - found.estimated_seconds, 1e-9))
+                curves, skipped = region_curves(found, gamma_max=top,
+                                                n_gamma=charts.VEHICLE_CHART_LEVELS)
                 found = dataclasses.replace(found, curves=curves,
                                             skipped=found.skipped + skipped)
             found = dataclasses.replace(found, chart_gamma_max=top if boundaries else None)
@@ -676,8 +550,8 @@ def _chart_gamma(found: VehicleRegions) -> float:
     certified = 0.0
     if found.damping_ratio > 0.0 and found.harmonics:
         # the certificate of gamma B1 has rho = gamma rho_1 (Q is linear in B): it certifies
-        # gamma' < gamma / rho = gamma * amplitude_factor; reused from the search (item 6 of
-        # issue 15), recomputed per unit gamma only where there is none (gamma = 0)
+        # gamma' < gamma / rho = gamma * amplitude_factor; reused from the search, recomputed
+        # per unit gamma only where there is none (gamma = 0)
         reuse = found.gamma > 0.0 and len(found.certificates) == len(found.harmonics)
         certified = min(
             found.gamma * c.amplitude_factor if reuse

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import math
 import os
-import signal
 import sys
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
@@ -83,10 +82,6 @@ def _load(case_file: Path | None):
     return default_case() if case_file is None else load_case(case_file)
 
 
-def _load_with_budget(case_file: Path | None, max_seconds: float | None):
-    return _with_budget(_load(case_file), max_seconds)
-
-
 _CASE_ARG = click.argument(
     "case_file", required=False, type=click.Path(dir_okay=False, path_type=Path)
 )
@@ -143,14 +138,6 @@ def _with_budget(case, max_seconds: float | None):
     return case if max_seconds is None else case.model_copy(update={"max_seconds": max_seconds})
 
 
-_JOBS = click.option(
-    "-j",
-    "--jobs",
-    type=click.IntRange(1, 64),
-    default=None,
-    help="Worker processes for the independent stages and the figures (default: the usable "
-    "CPUs, at most 8; 1: none). The numbers are the same for any value.",
-)
 _QUIET = click.option(
     "-q", "--quiet", is_flag=True, help="Print nothing but errors (no summary, no progress)."
 )
@@ -165,7 +152,7 @@ _FORMAT = click.option(
 
 
 def _estimate_text(seconds: float, max_seconds: float) -> str:
-    """The progress bar's estimate column (issue 18): ``est. 7.5 s``, or over half the budget
+    """The progress bar's estimate column: ``est. 7.5 s``, or over half the budget
     ``est. 200 s of the 300 s budget`` (in yellow; the run also has a ``cost-estimate``
     warning)."""
     if seconds > 0.5 * max_seconds:
@@ -211,36 +198,15 @@ def _progress(stages: int, quiet: bool) -> Iterator[Callable[[str], None]]:
         bar.update(task, completed=stages)
 
 
-def _rendered(results, fmt: str, quiet: bool, printer: Callable) -> Callable[[], None]:
-    """The summary (table: ``printer(results, console)``) or the JSON document (json),
-    rendered now; the function returned prints it on standard output (the same text as
-    printing it then: rich's console captured, its file and broken-pipe handling kept), so
-    that ``run`` renders it while its workers are busy."""
+def _report(results, fmt: str, quiet: bool, printer: Callable) -> None:
+    """The summary (table: ``printer(results, console)``) or the JSON document (json) on
+    standard output."""
     if fmt == "json":
         from .present.io import dumps_finite
 
-        document = dumps_finite(results.to_dict(), indent=2)
-        return lambda: click.echo(document)
-    if quiet:
-        return lambda: None
-    console = Console()
-    with console.capture() as capture:
-        printer(results, console)
-    text = capture.get()
-
-    def show() -> None:
-        try:
-            console.file.write(text)
-            console.file.flush()
-        except BrokenPipeError:  # as rich's own print: standard output closed (| head)
-            console.on_broken_pipe()
-
-    return show
-
-
-def _report(results, fmt: str, quiet: bool, printer: Callable) -> None:
-    """The summary (table) or the JSON document (json) on standard output."""
-    _rendered(results, fmt, quiet, printer)()
+        click.echo(dumps_finite(results.to_dict(), indent=2))
+    elif not quiet:
+        printer(results, Console())
 
 
 def _wrote(paths, fmt: str, quiet: bool) -> None:
@@ -255,13 +221,11 @@ def _wrote(paths, fmt: str, quiet: bool) -> None:
 @click.option("--no-figures", is_flag=True, help="Do not draw the figures (faster).")
 @click.option("--no-vehicle", is_flag=True,
               help="Skip the vehicle's parametric instability regions (shell of revolution).")
-@_JOBS
 @_BUDGET
 @_QUIET
 @_FORMAT
 def run(case_file: Path | None, output: Path, no_figures: bool, no_vehicle: bool,
-        jobs: int | None, max_seconds: float | None, quiet: bool,
-        fmt: str) -> None:
+        max_seconds: float | None, quiet: bool, fmt: str) -> None:
     """Analyse CASE_FILE (TOML; the embedded default case if omitted).
 
     Prints a summary and writes OUTPUT/results.json, the CSV tables, the figures and
@@ -276,44 +240,17 @@ def run(case_file: Path | None, output: Path, no_figures: bool, no_vehicle: bool
       flexbooster run my.toml --no-vehicle   # without the vehicle's instability regions
       flexbooster run -q --format json | python -m json.tool | head
     """
-    from ._parallel import TaskPool, beside, default_workers
-
-    workers = default_workers() if jobs is None else jobs
-    # the case read and validated (pint: 0.2 s) by a second process while this one imports
-    # the analysis (numpy, scipy: 0.8 s, on one core); not from a pipe (e.g. /dev/stdin),
-    # which this process could not read again where the child fails
-    loading = (beside(_load_with_budget, case_file, max_seconds)
-               if workers > 1 and (case_file is None or case_file.is_file()) else None)
     from .analysis import STAGES, analyze
-    from .present.outputs import OUTPUT_STAGES, prepare_figures, write_outputs
+    from .present.outputs import OUTPUT_STAGES, write_outputs
     from .present.summary import print_summary
 
-    case = (loading.result() if loading is not None
-            else _load_with_budget(case_file, max_seconds))
+    case = _with_budget(_load(case_file), max_seconds)
     n_stages = len(STAGES) + (case.vehicle is not None) + (not no_vehicle) + len(OUTPUT_STAGES)
-    # one pool for the analysis and the figures: the workers the analysis leaves idle while
-    # this process finishes the stability table import matplotlib for the figures meanwhile
-    with _progress(n_stages, quiet) as step, TaskPool(workers) as pool:
-        if not no_figures:
-            for _ in range(pool.workers):
-                pool.submit_when_idle(prepare_figures)
+    with _progress(n_stages, quiet) as step:
         results = analyze(case, progress=step, figures=not no_figures, vehicle=not no_vehicle,
-                          workers=pool, on_estimate=getattr(step, "estimate", None))
-        # the summary is rendered while the workers format the table or draw the figures
-        # (printed below, after the progress bar, as before)
-        shows: list = []
-
-        def render() -> None:
-            try:
-                shows.append(_rendered(results, fmt, quiet, print_summary))
-            except Exception as exc:  # noqa: BLE001 - raised once the files are written
-                shows.append(exc)
-
-        paths = write_outputs(results, output, figures=not no_figures, progress=step,
-                              workers=pool, while_waiting=render)
-    if isinstance(shows[0], Exception):  # a fault of the summary loses no result
-        raise shows[0]
-    shows[0]()
+                          on_estimate=getattr(step, "estimate", None))
+        paths = write_outputs(results, output, figures=not no_figures, progress=step)
+    _report(results, fmt, quiet, print_summary)
     _wrote(paths, fmt, quiet)
 
 
@@ -631,26 +568,17 @@ _BLAS_THREAD_VARIABLES = ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "OMP_NUM_TH
 
 
 def _one_blas_thread() -> None:
-    """One BLAS thread for the command's process and the processes it starts, unless the
-    user chose (any of :data:`_BLAS_THREAD_VARIABLES` set) or numpy is loaded already (the
-    command called in a process that has it: nothing to gain).
-
-    Every solver of the analysis runs with one BLAS thread anyway
-    (:func:`flexbooster._threads.blas_threads`), in worker processes of its own (``--jobs``):
-    a BLAS thread pool only costs CPU, which the workers need (``run --no-figures`` on two
-    cores used about 0.8 s more CPU and 6-13 % more wall time with OPENBLAS_NUM_THREADS unset
-    than with 1 before this: benchmarks/README.md, session 8); this is what ``make run``
-    sets.
-    """
+    """One BLAS thread for the command's process, as the analysis runs anyway
+    (:func:`flexbooster._threads.blas_threads`), unless the user chose (any of
+    :data:`_BLAS_THREAD_VARIABLES` set) or numpy is loaded already."""
     if "numpy" not in sys.modules and not any(os.environ.get(v) for v in _BLAS_THREAD_VARIABLES):
         for name in _BLAS_THREAD_VARIABLES:
             os.environ[name] = "1"
 
 
 def main(argv: list[str] | None = None) -> None:
-    """The ``flexbooster`` command, in-process (the console script and ``python -m
-    flexbooster`` call it through :func:`flexbooster.__main__.main`, which also handles
-    Ctrl-C while the modules load and fixes the exit status).
+    """The ``flexbooster`` command, in-process (the console script calls it through
+    :func:`flexbooster.__main__.main`, which also handles Ctrl-C while the modules load).
 
     Parameters
     ----------
@@ -658,14 +586,12 @@ def main(argv: list[str] | None = None) -> None:
         Command-line arguments (default: ``sys.argv[1:]``).
     """
     _one_blas_thread()
-    previous = signal.getsignal(signal.SIGTERM)
-    signal.signal(signal.SIGTERM, _terminate)  # SIGTERM cleans up like Ctrl-C
     try:
         cli.main(args=argv, prog_name="flexbooster", standalone_mode=False)
     except CaseError as exc:
         _fail(str(exc), EXIT_INPUT)
     except (_Interrupted, click.exceptions.Abort, KeyboardInterrupt):
-        _interrupted()
+        _fail("interrupted", EXIT_INTERRUPTED)
     except click.ClickException as exc:  # usage errors: one line, exit 2
         message = " ".join(exc.format_message().split())
         ctx = getattr(exc, "ctx", None)
@@ -682,28 +608,4 @@ def main(argv: list[str] | None = None) -> None:
             "(set FLEXBOOSTER_DEBUG=1 for a traceback)",
             EXIT_INTERNAL,
         )
-    finally:
-        signal.signal(signal.SIGTERM, previous)
     sys.exit(EXIT_OK)
-
-
-def _interrupted() -> None:
-    """Exit 130 (``SystemExit``), the clean-up (``finally`` blocks) already done.
-
-    A plain exit: the status -2 once seen now and then came from a signal landing after the
-    outcome was decided (a KeyboardInterrupt escaping ``main``, or SIGINT after the
-    interpreter restored its default action at exit), which ``flexbooster.__main__`` closes by
-    ignoring SIGINT and SIGTERM once :func:`main` is done (issue 18).
-    """
-    click.echo("flexbooster: error: interrupted", err=True)
-    sys.exit(EXIT_INTERRUPTED)
-
-
-def _terminate(signum: int, frame: object) -> None:
-    raise KeyboardInterrupt
-
-
-if __name__ == "__main__":  # pragma: no cover - python -m flexbooster.cli: the entry point
-    from flexbooster.__main__ import main as _entry
-
-    _entry()

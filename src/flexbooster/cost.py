@@ -42,7 +42,6 @@ from .memo.pitch import MATHIEU_SCALE_MAX, PITCH_MAX_TONGUE
 
 __all__ = [
     "DEFAULT_MAX_SECONDS",
-    "derived_model",
     "CostEstimate",
     "estimate_cost",
     "check_case_cost",
@@ -391,39 +390,6 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
     return CostEstimate(seconds=float(sum(parts.values())), parts=parts, drivers=drivers)
 
 
-def derived_model(case: Any) -> BoosterModel:
-    """:func:`flexbooster.model.model_from_case`, with a case that cannot be modelled (the
-    mass properties or omega_1 overflow, e.g. radius = 1e300 m) as a one-line ``CaseError``.
-
-    Parameters
-    ----------
-    case : Case
-        The validated case (SI).
-
-    Returns
-    -------
-    BoosterModel
-        The derived model.
-
-    Raises
-    ------
-    CaseError
-        Field ``booster``, with the core's message (which names the derived quantity).
-
-    References
-    ----------
-    Tech Memo 104, sections 2.2, 3.0, 4.2.
-    """
-    from .model import model_from_case
-
-    try:
-        with np.errstate(over="raise", invalid="raise"):
-            return model_from_case(case)
-    except (ValueError, FloatingPointError, OverflowError, ZeroDivisionError) as exc:
-        raise CaseError("booster", "(derived model)",
-                        f"the case cannot be modelled in double precision: {exc}") from None
-
-
 def check_case_cost(model: BoosterModel, max_seconds: float, *,
                     vehicle: CostEstimate | None = None, **stages: bool) -> CostEstimate:
     """The cost estimate, or a ``CaseError`` when it exceeds the budget.
@@ -451,7 +417,7 @@ def check_case_cost(model: BoosterModel, max_seconds: float, *,
 
     References
     ----------
-    docs/theory/robustness.md (issue 18).
+    docs/theory/robustness.md.
     """
     max_seconds = positive("max_seconds", max_seconds)
     est = estimate_cost(model, **stages)

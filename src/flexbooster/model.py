@@ -10,6 +10,9 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+import numpy as np
+
+from .errors import CaseError
 from .memo.model import BoosterModel, Truncation, booster_model
 from .shell_of_revolution.geometry import Cone, Cylinder, Vehicle
 
@@ -32,16 +35,27 @@ def model_from_case(case: Case) -> BoosterModel:
     BoosterModel
         Mass properties, omega_1, omega_psi, shell parameters, T0_bar, thrust, truncation and
         the Omega grid (rad/s).
+
+    Raises
+    ------
+    CaseError
+        Field ``booster`` when a derived quantity overflows double precision (e.g. a radius
+        of 1e300 m), with the message naming it.
     """
     b, t, n = case.booster, case.thrust, case.truncation
-    return booster_model(
-        R1=b.cylinder1.radius, L1=b.cylinder1.half_length, R2=b.cylinder2.radius,
-        L2=b.cylinder2.half_length, h=b.thickness, E=b.E, nu=b.nu, rho=b.rho, F0=case.F0,
-        gamma=t.gamma, K=t.K, Omega=case.omega_grid(),
-        truncation=Truncation(M1=n.M1, N1=n.N1, M2=n.M2, N2=n.N2, N=n.N, S=n.S, R=n.R),
-        beam_damping_ratio=case.damping.beam_modal_ratio,
-        pitch_damping_ratio=case.damping.pitch_ratio,
-    )
+    try:
+        with np.errstate(over="raise", invalid="raise"):
+            return booster_model(
+                R1=b.cylinder1.radius, L1=b.cylinder1.half_length, R2=b.cylinder2.radius,
+                L2=b.cylinder2.half_length, h=b.thickness, E=b.E, nu=b.nu, rho=b.rho,
+                F0=case.F0, gamma=t.gamma, K=t.K, Omega=case.omega_grid(),
+                truncation=Truncation(M1=n.M1, N1=n.N1, M2=n.M2, N2=n.N2, N=n.N, S=n.S, R=n.R),
+                beam_damping_ratio=case.damping.beam_modal_ratio,
+                pitch_damping_ratio=case.damping.pitch_ratio,
+            )
+    except (ValueError, FloatingPointError, OverflowError, ZeroDivisionError) as exc:
+        raise CaseError("booster", "(derived model)",
+                        f"the case cannot be modelled in double precision: {exc}") from None
 
 
 def vehicle_from_case(case: Case) -> Vehicle:

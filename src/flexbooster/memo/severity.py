@@ -41,13 +41,11 @@ References
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any
 
 import numpy as np
 
-from ..checks import choice, count, finite, nonnegative, positive
+from ..checks import choice, finite, nonnegative, positive
 from .beam_action import beam_system
 from .model import BoosterModel
 from .pitch import mathieu_parameters
@@ -385,8 +383,7 @@ def _mode_tables(model: BoosterModel, N: int, phase: str) -> dict:
 def root_severity(model: BoosterModel, table: StabilityTable, params: ExcitationParameters, *,
                   psi0: float = 0.01, beam_amplitude: float = 1e-4,
                   threshold: float = DEFAULT_THRESHOLD, S: int | None = None,
-                  phase: str = "zero", mapper: Callable[..., list] | None = None,
-                  parts: int = 1) -> RootSeverity:
+                  phase: str = "zero") -> RootSeverity:
     """Severity (secular growth rate at the shell surface) of every root, in one pass.
 
     Parameters
@@ -407,15 +404,6 @@ def root_severity(model: BoosterModel, table: StabilityTable, params: Excitation
         Harmonics of the beam Floquet vectors (default: the model's truncation S).
     phase : {"zero", "printed"}
         Shape-function phase of the modal forcing (erratum E10).
-    mapper : callable, optional
-        A map-like callable, ``mapper(fn, items) -> list`` as ``[fn(x) for x in items]``,
-        that computes the beam roots' Floquet vectors (:func:`floquet_vectors`, the costly
-        part) in ``parts`` slices, e.g. over worker processes (the pipeline's
-        :meth:`flexbooster._parallel.TaskPool.share`); default: all at once, here.  The
-        numbers are the same bit for bit (each slice is a whole number of
-        :func:`floquet_vectors`' batches, and its points are independent).
-    parts : int
-        Slices of the beam roots for ``mapper``, >= 1.
 
     Returns
     -------
@@ -439,7 +427,6 @@ def root_severity(model: BoosterModel, table: StabilityTable, params: Excitation
     beam_amplitude = nonnegative("beam_amplitude", beam_amplitude)
     threshold = nonnegative("threshold", threshold)
     phase = choice("phase", phase, ("zero", "printed"))
-    parts = count("parts", parts, 1, None)
     N = model.truncation.N
     S = model.truncation.S if S is None else int(nonnegative("S", S))
     n_root = len(table)
@@ -514,8 +501,7 @@ def root_severity(model: BoosterModel, table: StabilityTable, params: Excitation
         r = table.r[beam]
         alpha = params.alpha(ob[beam])[np.arange(r.size), r - 1]
         s = table.s[beam]
-        Cs, mu = _floquet_vectors_in_parts(system.A0, system.B, alpha * ob[beam], ob[beam],
-                                           g, S, s, mapper=mapper, parts=parts)
+        Cs, mu = floquet_vectors(system.A0, system.B, alpha * ob[beam], ob[beam], g, S, s=s)
         c = beam_amplitude * Cs  # C^(s) of each root: (nbeam, N + 1), units of L
         f = mu + s * ob[beam]  # (4.1-10/11), at the exponent refined at the root
         hb = h[beam]
@@ -529,27 +515,6 @@ def root_severity(model: BoosterModel, table: StabilityTable, params: Excitation
     return RootSeverity(severity=severity, severity_rel=rel, rate=rate,
                         mode_type=tuple(np.asarray(_COMPONENTS)[typ].tolist()), psi0=psi0,
                         beam_amplitude=beam_amplitude, threshold=threshold)
-
-
-def _floquet_vectors_in_parts(A0: np.ndarray, B: np.ndarray, mu: np.ndarray, Ob: np.ndarray,
-                              gamma: float, S: int, s: np.ndarray, *,
-                              mapper: Callable[..., list] | None, parts: int
-                              ) -> tuple[np.ndarray, np.ndarray]:
-    """:func:`floquet_vectors` (one harmonic ``s`` per point) in ``parts`` consecutive slices
-    of whole batches, computed by ``mapper`` and joined: the same numbers as in one call."""
-    batches = -(-mu.size // _CHUNK)
-    edges = sorted({min(_CHUNK * (batches * i // parts), mu.size) for i in range(parts + 1)})
-    if mapper is None or len(edges) <= 2:
-        return floquet_vectors(A0, B, mu, Ob, gamma, S, s=s)
-    pieces = mapper(_floquet_vectors_part, [(A0, B, mu[a:b], Ob[a:b], gamma, S, s[a:b])
-                                            for a, b in zip(edges[:-1], edges[1:], strict=True)])
-    return (np.concatenate([C for C, _ in pieces]), np.concatenate([m for _, m in pieces]))
-
-
-def _floquet_vectors_part(args: tuple[Any, ...]) -> tuple[np.ndarray, np.ndarray]:
-    """One slice of :func:`_floquet_vectors_in_parts` (a worker's task)."""
-    A0, B, mu, Ob, gamma, S, s = args
-    return floquet_vectors(A0, B, mu, Ob, gamma, S, s=s)
 
 
 @dataclass(frozen=True)
@@ -751,8 +716,7 @@ def with_severity(table: StabilityTable, sev: RootSeverity) -> StabilityTable:
 def severity_analysis(model: BoosterModel, table: StabilityTable, params: ExcitationParameters,
                       *, psi0: float = 0.01, beam_amplitude: float = 1e-4,
                       threshold: float = DEFAULT_THRESHOLD,
-                      resolution: float = DEFAULT_RESOLUTION,
-                      mapper: Callable[..., list] | None = None, parts: int = 1
+                      resolution: float = DEFAULT_RESOLUTION
                       ) -> tuple[StabilityTable, SeverityResult]:
     """Severity of every root, the table with it attached and the bands (the pipeline's call).
 
@@ -772,10 +736,6 @@ def severity_analysis(model: BoosterModel, table: StabilityTable, params: Excita
         severity_rel at and above which a root is active (dimensionless), >= 0.
     resolution : float
         Relative resolution of the bands in Omega (dimensionless), > 0.
-    mapper : callable, optional
-        Map-like callable for the beam roots' Floquet vectors (:func:`root_severity`).
-    parts : int
-        Slices of the beam roots for ``mapper``, >= 1.
 
     Returns
     -------
@@ -788,6 +748,6 @@ def severity_analysis(model: BoosterModel, table: StabilityTable, params: Excita
     Tech Memo 104, sections 6.2, 7.1, 7.3.
     """
     sev = root_severity(model, table, params, psi0=psi0, beam_amplitude=beam_amplitude,
-                        threshold=threshold, mapper=mapper, parts=parts)
+                        threshold=threshold)
     bands = resonance_bands(table, sev, resolution=resolution)
     return with_severity(table, sev), SeverityResult(sev, bands, float(resolution))

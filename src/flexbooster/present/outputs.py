@@ -6,27 +6,24 @@ A thin layer over :mod:`flexbooster.present.io` (atomic writes) and
 
 from __future__ import annotations
 
-import dataclasses
 import io as _io
 import json
+import multiprocessing
 import os
-import pickle
 import shutil
+import signal
 import tempfile
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from concurrent.futures import ProcessPoolExecutor
+from contextlib import contextmanager
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from .._parallel import TaskPool, using_pool
 from ..results import Results
 from .io import (
-    JSONText,
-    TableTexts,
-    check_finite,
     hold_signals,
     locked_folder,
     sha256_file,
-    table_texts,
     write_bytes_atomic,
     write_csv_atomic,
     write_json_atomic,
@@ -37,8 +34,8 @@ if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
 __all__ = ["OUTPUT_STAGES", "write_outputs", "save_figure", "make_figures", "figure_svgs",
-           "figure_names", "render_figures", "prepare_figures", "MANIFEST", "STAGING_PREFIX",
-           "publish_set", "check_output_set"]
+           "figure_names", "render_figures", "MANIFEST", "STAGING_PREFIX", "publish_set",
+           "check_output_set"]
 
 #: The stages of :func:`write_outputs`, as passed to its ``progress`` callback.
 OUTPUT_STAGES = ("results.json and CSV", "figures", "report.html")
@@ -46,12 +43,6 @@ OUTPUT_STAGES = ("results.json and CSV", "figures", "report.html")
 MANIFEST = "manifest.json"
 #: Resolution of the PNG files (dots per inch).
 _PNG_DPI = 120
-
-#: The figures that cost the most to draw, sent to the workers first (longest first: the last
-#: figure to finish is then a short one, and the workers end together).  CPU s per figure,
-#: benchmarks/README.md session 9: the danger map 0.7-1.0 and the Campbell diagram 0.6-0.8
-#: on the default case; every other figure 0.25-0.55 (the README's vehicle case too).
-_COSTLIEST_FIGURES = ("danger-map", "campbell")
 
 #: Prefix of the staging folder that :func:`write_outputs` makes inside the output folder.
 STAGING_PREFIX = ".flexbooster-staging-"
@@ -154,11 +145,8 @@ def write_outputs(
     folder: str | Path,
     figures: bool = True,
     progress: Callable[[str], None] | None = None,
-    *,
-    workers: int | TaskPool = 1,
-    while_waiting: Callable[[], None] | None = None,
 ) -> list[Path]:
-    """Write every output of an analysis into ``folder``.
+    """Write every output of an analysis into ``folder`` as one set.
 
     Parameters
     ----------
@@ -170,178 +158,128 @@ def write_outputs(
         Also draw and save the figures (SVG and PNG); the report then embeds them.
     progress : callable, optional
         Called with the name of each stage (:data:`OUTPUT_STAGES`) as it starts.
-    workers : int or TaskPool
-        Processes that draw the figures while this one writes results.json and the CSV
-        tables (:class:`flexbooster._parallel.TaskPool`, or an open pool, e.g. the one the
-        analysis used; 1: all in this process, one after the other).  The files are the
-        same, byte for byte.
-    while_waiting : callable, optional
-        Called once, without arguments, in this process while the workers format the
-        stability table or draw the figures (after this process's own share of the files),
-        or before the report without workers: e.g. ``flexbooster run`` renders its summary
-        then.
 
     Returns
     -------
     list of pathlib.Path
-        The files written: results.json, shell-frequencies.csv, unstable-frequencies.csv and
-        resonance-bands.csv (when the stability table was computed), vehicle-regions.csv
-        (when the vehicle's regions were computed), the figures and report.html, and last
+        The files written: results.json, the CSV tables, the figures, report.html and last
         :data:`MANIFEST` (each file with its SHA-256).
 
     Notes
     -----
     The files are written into a staging folder inside ``folder`` and moved into place
-    together (:func:`publish_set`): under a lock, with SIGINT and SIGTERM held back, files of
-    the previous set that this one lacks removed, the manifest last.  An interrupted or a
-    concurrent run never leaves a mixed set; :func:`check_output_set` verifies one.
+    together (:func:`publish_set`), so an interrupted or a concurrent run never leaves a mixed
+    set; :func:`check_output_set` verifies one.
     """
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
     stage = Path(tempfile.mkdtemp(prefix=STAGING_PREFIX, dir=folder))
-    try:  # every file into the staging folder, then the set renamed into place (issue 18)
-        staged = _write_files(results, stage, figures, progress or (lambda stage: None),
-                              workers, while_waiting or (lambda: None))
+    try:
+        staged = _write_files(results, stage, figures, progress or (lambda stage: None))
         return publish_set(stage, folder, [p.name for p in staged])
     finally:
         shutil.rmtree(stage, ignore_errors=True)
 
 
 def _write_files(results: Results, folder: Path, figures: bool,
-                 step: Callable[[str], None], workers: int | TaskPool,
-                 while_waiting: Callable[[], None]) -> list[Path]:
-    """Every output file of :func:`write_outputs`, written into ``folder``."""
+                 step: Callable[[str], None]) -> list[Path]:
+    """Every output file of :func:`write_outputs`, written into ``folder``; the figures are
+    drawn by other processes meanwhile (:func:`_drawn`)."""
     from .report import write_report
 
-    draw = figures and results.figures is not None
-    with using_pool(workers) as pool:
-        # the figures are drawn by the workers (started first) while this process writes;
-        # they read the results from one file in the staging folder (not published),
-        # without the stability table and its severities (7 of 9 MB: the figures draw from
-        # results.figures, which holds the Campbell diagram's roots); a task is then a name,
-        # which the pool sends at once: a task carrying megabytes waits for this process to
-        # release the GIL, which the JSON and CSV encoders below hold for tenths of a second
-        jobs = {}
-        if draw and pool.parallel:
-            view = folder / ".figure-results.pickle"
-            view.write_bytes(pickle.dumps(
-                dataclasses.replace(results, stability=None, severity=None),
-                protocol=pickle.HIGHEST_PROTOCOL))
-            names = figure_names(results)
-            jobs = {name: pool.submit(_figure_files_task, view, folder, name)
-                    for name in sorted(names, key=lambda name: name not in _COSTLIEST_FIGURES)}
-            jobs = {name: jobs[name] for name in names}  # the files in their usual order
-        # without figures the workers are free: they format the stability table (the
-        # largest part of results.json and the largest CSV, tens of thousands of rows), a
-        # slice of the rows each, the table read from one file in the staging folder, while
-        # this process formats the rest (the same bytes either way)
-        table_parts = []
-        if results.stability is not None and not jobs and pool.parallel:
-            source = folder / ".stability-table.pickle"
-            source.write_bytes(pickle.dumps(results.stability,
-                                            protocol=pickle.HIGHEST_PROTOCOL))
-            table_parts = [pool.submit(_table_texts_part, source, part, pool.workers)
-                           for part in range(pool.workers)]
+    names = figure_names(results) if figures else ()
+    with _drawn(results, names, _usable_cpus()) as drawn:
         step(OUTPUT_STAGES[0])
-        document = results.to_dict()
-        csvs = [("shell-frequencies.csv", results.shell.to_rows())]
-        if results.severity is not None:  # issue 13: every band, most severe first
-            csvs.append(("resonance-bands.csv", results.severity.band_rows()))
+        written = [write_json_atomic(folder / "results.json", results.to_dict()),
+                   write_csv_atomic(folder / "shell-frequencies.csv", results.shell.to_rows())]
+        if results.stability is not None:
+            written.append(write_csv_atomic(folder / "unstable-frequencies.csv",
+                                            results.stability.to_columns()))
+        if results.severity is not None:  # every band, most severe first
+            written.append(write_csv_atomic(folder / "resonance-bands.csv",
+                                            results.severity.band_rows()))
         if results.vehicle is not None:  # a case with [vehicle] only
-            csvs.append(("vehicle-modes.csv", results.vehicle.to_columns()))
-        if results.vehicle_regions is not None:  # the vehicle's parametric regions (issue 15)
+            written.append(write_csv_atomic(folder / "vehicle-modes.csv",
+                                            results.vehicle.to_columns()))
+        if results.vehicle_regions is not None:
             from .vehicle import vehicle_region_columns
 
-            csvs.append(("vehicle-regions.csv", vehicle_region_columns(results.vehicle_regions)))
-        table = None
-        if table_parts:
-            while_waiting()  # this process's turn while the workers format the table
-        if results.stability is not None:  # one text of each value for the JSON and the CSV
-            try:
-                table = (TableTexts.join(part.result() for part in table_parts) if table_parts
-                         else table_texts(document["stability"]["table"]))
-            except ValueError:  # a NaN: named with its path, as dumps_finite names it
-                check_finite(document)
-                raise
-            document["stability"]["table"] = {name: JSONText(f"[{items}]")
-                                              for name, items in table.json_items.items()}
-        written = [write_json_atomic(folder / "results.json", document)]
-        written.append(write_csv_atomic(folder / csvs[0][0], csvs[0][1]))
-        if table is not None:
-            written.append(write_text_atomic(folder / "unstable-frequencies.csv", table.csv))
-        written += [write_csv_atomic(folder / name, rows) for name, rows in csvs[1:]]
+            written.append(write_csv_atomic(folder / "vehicle-regions.csv",
+                                            vehicle_region_columns(results.vehicle_regions)))
         svgs: dict[str, str] = {}
-        if draw:
+        if names:
             step(OUTPUT_STAGES[1])
-            if jobs:  # the workers wrote the files: only their names come back
-                while_waiting()  # this process's turn while the workers draw
-                for name, job in jobs.items():
-                    svg_path, png_path = job.result()
-                    svgs[name] = svg_path.read_text("utf-8")
-                    written += [svg_path, png_path]
-            else:
-                for name, (svg, png) in render_figures(results).items():
-                    svgs[name] = svg
-                    written.append(write_text_atomic(folder / f"{name}.svg", svg))
-                    written.append(write_bytes_atomic(folder / f"{name}.png", png))
-    if not (table_parts or jobs):  # without workers: once this process wrote the rest
-        while_waiting()
+            for name, (svg, png) in zip(names, drawn, strict=True):
+                svgs[name] = svg
+                written.append(write_text_atomic(folder / f"{name}.svg", svg))
+                written.append(write_bytes_atomic(folder / f"{name}.png", png))
     step(OUTPUT_STAGES[2])
     written.append(write_report(results, folder / "report.html", svgs))
     return written
 
 
-def _table_texts_part(path: Path, part: int, parts: int) -> TableTexts:
-    """Rows ``part`` of ``parts`` (consecutive slices; the CSV header with the first) of the
-    texts (:func:`flexbooster.present.io.table_texts`) of the stability table pickled to
-    ``path`` (a worker's task)."""
-    columns = pickle.loads(Path(path).read_bytes()).to_columns()
-    n = len(next(iter(columns.values())))
-    lo, hi = n * part // parts, n * (part + 1) // parts
-    return table_texts({name: values[lo:hi] for name, values in columns.items()},
-                       header=part == 0)
+def _usable_cpus() -> int:
+    """The CPUs this process may run on (``os.sched_getaffinity``, else ``os.cpu_count``)."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except (AttributeError, OSError):  # not Linux
+        return os.cpu_count() or 1
 
 
-def prepare_figures() -> None:
-    """Import matplotlib and its Agg (PNG) and SVG backends (about 0.3 s of CPU in a fresh
-    process), so that a worker process that draws figures later starts at once: a task for
-    :meth:`flexbooster._parallel.TaskPool.submit_when_idle` while the analysis keeps the
-    parent busy (``flexbooster run``).  Not pyplot: the figures are plain
-    ``matplotlib.figure.Figure`` objects, which pyplot does not hold."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.backends.backend_agg  # noqa: F401 - the import is the preparation
-    import matplotlib.backends.backend_svg  # noqa: F401
-
-
-def _figure_files_task(path: Path, folder: Path, name: str) -> tuple[Path, Path]:
-    """:func:`_figure_task` on the results that :func:`_write_files` pickled to ``path``, the
-    SVG and PNG written into ``folder`` by the worker (a worker's task): what comes back is
-    two paths, not the images, which would wait in the result pipe while this process holds
-    the GIL in the JSON and CSV encoders."""
-    svg, png = _figure_task(pickle.loads(Path(path).read_bytes()), name)
-    return (write_text_atomic(folder / f"{name}.svg", svg),
-            write_bytes_atomic(folder / f"{name}.png", png))
-
-
-def _figure_task(results: Results, name: str) -> tuple[str, bytes]:
-    """Draw and render one figure (a worker's task): SVG text and PNG bytes (the figure is not
-    pyplot's: nothing to close)."""
+def _figure_files(results: Results, name: str) -> tuple[str, bytes]:
+    """Draw and render one figure: SVG text (with its tooltips) and PNG bytes."""
     fig = make_figures(results, names=(name,))[name]
     svg, png = _render(fig)
     return _svg_titles(fig, svg), png
 
 
-def render_figures(results: Results, *, workers: int = 1) -> dict[str, tuple[str, bytes]]:
+#: The results whose figures a drawing process draws (set by :func:`_adopt` as it starts).
+_ADOPTED: list[Results] = []
+
+
+def _adopt(results: Results) -> None:
+    """Start of a drawing process: its results (inherited by ``fork``, not pickled); the
+    parent alone handles Ctrl-C and SIGTERM."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    _ADOPTED[:] = [results]
+
+
+def _adopted_figure_files(name: str) -> tuple[str, bytes]:
+    return _figure_files(_ADOPTED[0], name)
+
+
+@contextmanager
+def _drawn(results: Results, names: tuple[str, ...],
+           processes: int) -> Iterator[Iterator[tuple[str, bytes]]]:
+    """The figures ``names`` as (SVG, PNG), in order: a ``concurrent.futures`` map over up to
+    ``processes`` forked processes, started on entry; without ``fork``, in a daemonic process
+    or with one process, drawn here as the iterator is read.  The bytes are the same."""
+    processes = min(processes, len(names))
+    if (processes < 2 or "fork" not in multiprocessing.get_all_start_methods()
+            or multiprocessing.current_process().daemon):
+        yield (_figure_files(results, name) for name in names)
+        return
+    pool = ProcessPoolExecutor(processes, mp_context=multiprocessing.get_context("fork"),
+                               initializer=_adopt, initargs=(results,))
+    try:
+        yield pool.map(_adopted_figure_files, names)
+    except BaseException:  # an error or Ctrl-C here: no figure is waited for
+        pool.shutdown(wait=False, cancel_futures=True)
+        raise
+    pool.shutdown()
+
+
+def render_figures(results: Results, *, processes: int = 1) -> dict[str, tuple[str, bytes]]:
     """SVG text and PNG bytes of every figure of :func:`make_figures`, by name.
 
     Parameters
     ----------
     results : Results
         The analysis.
-    workers : int
-        Processes drawing the figures (one figure a task), >= 1.
+    processes : int
+        Processes that draw the figures (>= 1; 1: this one), as :func:`write_outputs` does
+        with the usable CPUs; the bytes are the same.
 
     Returns
     -------
@@ -349,11 +287,8 @@ def render_figures(results: Results, *, workers: int = 1) -> dict[str, tuple[str
         Figure name -> (SVG document, PNG bytes), in the order of :func:`figure_names`.
     """
     names = figure_names(results)
-    with TaskPool(workers) as pool:
-        if pool.parallel:
-            jobs = [pool.submit(_figure_task, results, name) for name in names]
-            return {name: job.result() for name, job in zip(names, jobs, strict=True)}
-    return {name: _figure_task(results, name) for name in names}
+    with _drawn(results, names, processes) as drawn:
+        return dict(zip(names, drawn, strict=True))
 
 
 def _render(fig) -> tuple[str, bytes]:
@@ -427,7 +362,7 @@ def figure_names(results: Results) -> tuple[str, ...]:
     data = results.figures
     if data is None:
         return ()
-    names = ["danger-map"] if results.danger is not None else []  # the answer first (#17)
+    names = ["danger-map"] if results.danger is not None else []  # the answer first
     names += ["ince-strutt", "beam-modes", "shell-frequencies-cylinder1",
               "shell-frequencies-cylinder2", "nodal-patterns"]
     for name, part in (("pitch-band-chart", data.pitch_band_chart),
