@@ -22,12 +22,14 @@ exact as Omega -> 0 (the full model's static inertia-relief solution), and for a
 with Phi its modes the classical Phi q + (G - Phi Lambda^-1 Phi^T) F.  The non-symmetric
 reduced system is solved for many Omega at once through the complex Schur form of its
 companion matrix (backward stable also for the free rigid modes' Jordan blocks).  Internal
-loads at a node: the element nodal forces (K_e + K_g - Omega^2 M) x_e of the element ahead
-(at the nose: minus those of the element behind), in global components: the axial force
-N = -f_x and the moment M = r f_x - f_chi about the lateral axis; the shear S = f_r - f_v
-less P0 beta, the lateral component of the steady axial load P0(x) (inertia relief) carried
-by the section tilted by beta = -U_x / r, so that S is normal to the section (the stress
-resultant; a rigid pitch carries none).
+loads at a node: force summation with the consistent mass, the loads that the part ahead of
+the node receives from the part behind, r^T sum_e (K_e + K_g - Omega^2 M)_e x_e over the
+elements ahead, r its rigid motions: the axial force N (tension > 0), the moment M about the
+node (M = E I w'' for a beam) and the shear S (S = dM/dx statically) less P0 beta, the
+lateral component of the steady axial load P0(x) (inertia relief) carried by the section
+tilted by beta = -U_x / r: S is normal to the section (the stress resultant; a rigid pitch
+carries none).  The modal damping forces count as internal (as material damping): the loads
+are those that accelerate the part ahead, exact at the aft edge for any number of modes.
 
 References
 ----------
@@ -36,6 +38,8 @@ References
 .. [2] R. R. Craig, A. J. Kurdila, *Fundamentals of Structural Dynamics*, 2nd ed., Wiley,
    2006 (residual flexibility, inertia relief of free-free structures).
 .. [3] G. H. Golub, C. F. Van Loan, *Matrix Computations*, 4th ed., 2013, sec. 7.1 (Schur).
+.. [4] V. L. Beal, AIAA J. 3 (1965) 486-494, eq. 4 (follower thrust); Tech Memo 104,
+   eq. 2.2-2 (gimbal).
 """
 
 from __future__ import annotations
@@ -46,10 +50,16 @@ import numpy as np
 import scipy.linalg as sla
 
 from ..shell_of_revolution import Cone, Cylinder, Vehicle
-from ..shell_of_revolution.assembly import assemble, dof_map, element_set
+from ..shell_of_revolution.assembly import (
+    assemble,
+    dof_map,
+    element_set,
+    rigid_body_fields,
+)
 from ..shell_of_revolution.prestress import axial_force
 
-__all__ = ["ROWS", "ModalModel", "cut_vehicle", "modal_model", "mesh_nodes"]
+__all__ = ["ROWS", "FullModel", "ModalModel", "cut_vehicle", "full_model", "mesh_nodes",
+           "modal_model"]
 
 #: Default basis: every mode below MODE_CUTOFF times the highest Omega (at least MIN_MODES).
 MODE_CUTOFF, MIN_MODES = 4.0, 4
@@ -243,23 +253,26 @@ def _node_displacements(mesh, dmap, keep, elem, end) -> np.ndarray:
     return np.einsum("pji,cpi->pjc", _to_global(mesh.frame[elem, end]), full[:, dofs])
 
 
-def _node_loads(k, mesh, dmap, keep, elem, end, r, mats, Y) -> np.ndarray:
-    """Internal loads (p, len(ROWS[k]) - 1, c) of reduced vectors Y (n_kept, c) from the
-    element nodal forces mats[e] Y_e of the element ahead of each node (the nose: minus the
-    end force of the element behind), in global components (f_ux, f_v, f_ur, f_chi)."""
+def _node_loads(k, mesh, dmap, keep, x, mats, Y) -> np.ndarray:
+    """Internal loads (p, len(ROWS[k]) - 1, c) of reduced vectors Y (n_kept, c) by force
+    summation over the part ahead of each node: the rigid motions r of that part (k = 0: the
+    axial translation; k = 1: the lateral translation, the rotation about the node) times
+    the sum of its element forces mats[e] Y_e over its free DOFs (a support's reaction is
+    not a load of the part); 0 at the nose (nothing ahead)."""
     full = dmap.expand(_embed(keep, Y).T)  # (c, n_full)
-    f = np.einsum("pid,cpd->pic", mats[elem[:, None], 4 * end[:, None] + np.arange(4)],
-                  full[:, mesh.dofs[elem]])
-    sign = np.where(end == 0, 1.0, -1.0)[:, None, None]
-    g = np.einsum("pji,pic->pjc", _to_global(mesh.frame[elem, end]), sign * f)
+    f = np.einsum("eij,cej->eic", mats, full[:, mesh.dofs])  # element forces (e, nd, c)
+    free = dmap.index[mesh.dofs] >= 0
+    rigid = rigid_body_fields(mesh, k)[:1 + k][:, mesh.dofs] * free  # (k + 1, e, nd)
+    part = np.einsum("fei,eic->fec", rigid, f)[:, ::-1].cumsum(axis=1)[:, ::-1]  # e' >= e
+    part = np.concatenate([part, np.zeros_like(part[:, :1])], axis=1)  # (k + 1, p, c)
     if k == 0:
-        return -g[:, :1]  # N = -f_ux (tension > 0)
-    return np.stack([g[:, 2] - g[:, 1], r[:, None] * g[:, 0] - g[:, 3]], axis=1)  # S, M
+        return -part[0][:, None]  # N = -F_x on the part ahead (tension > 0)
+    return np.stack([part[0], x[:, None] * part[0] - part[1]], axis=1)  # S, M = -M(x)
 
 
 def _embed(keep, Y):
     """Vectors of the kept reduced DOFs (k = 0: no torsion) as vectors of all of them."""
-    out = np.zeros((keep.size,) + Y.shape[1:])
+    out = np.zeros((keep.size,) + Y.shape[1:], dtype=Y.dtype)
     out[keep] = Y
     return out
 
@@ -313,12 +326,52 @@ def _condense(KL, M, Phi, F, static: bool):
     return Psi, xr, Phi.T @ KL @ Psi, Phi.T @ (F - KL @ xr)
 
 
-def modal_model(
+@dataclass(frozen=True)
+class FullModel:
+    """The finite-element model of one harmonic: M X'' + K_L X = F (module docstring).
+
+    Attributes
+    ----------
+    k : int
+        Harmonic.
+    mass, stiffness : ndarray, shape (n, n)
+        M (kg) and K_L (N/m; non-symmetric for k = 1) on the kept DOFs (k = 0: no torsion).
+    load : ndarray, shape (n,)
+        F per newton of Delta F.
+    basis, omega2 : ndarray
+        Phi (n, m), M-normalised (the rigid modes first), and omega^2 (1/s^2, 0 if rigid).
+    n_rigid : int
+        Rigid basis modes.
+    """
+
+    k: int
+    mass: np.ndarray
+    stiffness: np.ndarray
+    load: np.ndarray
+    basis: np.ndarray
+    omega2: np.ndarray
+    n_rigid: int
+    parts: tuple = field(repr=False, compare=False)
+
+    def node_rows(self, Y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Node rows (p, len(ROWS[k]), c) of vectors Y (n, c): the row at Omega is
+        (stiffness part - Omega^2 mass part), the first row the displacement."""
+        mesh, dmap, keep, mats, (elem, end, x, r), D, P0 = self.parts
+        k, disp = self.k, D[:, 0] if self.k == 0 else 0.5 * (D[:, 2] - D[:, 1])  # u_x or y
+        stiff = np.concatenate([(disp @ Y)[:, None], _node_loads(
+            k, mesh, dmap, keep, x, mats[1] + mats[2], Y)], axis=1)
+        mass = np.concatenate([np.zeros_like(stiff[:, :1]), _node_loads(
+            k, mesh, dmap, keep, x, mats[0], Y)], axis=1)
+        if k == 1:  # shear normal to the section: less the steady load P0 tilted by beta
+            stiff[:, 1] += (P0 / r)[:, None] * (D[:, 0] @ Y)  # beta = -U_x / r
+        return stiff, mass
+
+
+def full_model(
     vehicle: Vehicle, mesh, k: int, *, F0: float, share: float, n_modes: int | None,
-    omega_max: float, gimbal_gain: float, damping_ratio: float, pitch_damping_ratio: float,
-    supported_forward_end: bool, static_correction: bool,
-) -> ModalModel:
-    """The reduced model of harmonic k (0 or 1) per newton of the thrust oscillation.
+    omega_max: float, gimbal_gain: float, supported_forward_end: bool,
+) -> FullModel:
+    """The finite-element model of harmonic k (0 or 1) per newton of the thrust oscillation.
 
     Parameters
     ----------
@@ -334,28 +387,29 @@ def modal_model(
         Elastic basis modes (dimensionless); None: all below 4 omega_max (at least 4).
     omega_max : float
         Highest Omega (rad/s).
-    gimbal_gain, damping_ratio, pitch_damping_ratio : float
-        K, zeta, zeta_psi (dimensionless).
-    supported_forward_end, static_correction : bool
-        Prestress reacted at the nose; the static correction of the truncated modes.
+    gimbal_gain : float
+        K (dimensionless).
+    supported_forward_end : bool
+        Prestress reacted at the nose.
 
     Returns
     -------
-    ModalModel
+    FullModel
 
     References
     ----------
-    Meirovitch (1986), ch. 7; Craig & Kurdila (2006) (module docstring).
+    Beal (1965), eq. 4 and Tech Memo 104, eq. 2.2-2 (the follower and gimbal terms, as
+    :func:`.bending_system`).
     """
     dmap = dof_map(vehicle, mesh, k)
     mats = element_set(vehicle, mesh, k, prestress_F0=F0,
                        supported_forward_end=supported_forward_end, geometric=True)
     keep = _axisymmetric(mesh, dmap, k)
     M, Ke, Kg = (assemble(mesh, dmap, a)[np.ix_(keep, keep)] for a in mats)
-    elem, end, x, r = mesh_nodes(mesh)
-    D = _node_displacements(mesh, dmap, keep, elem, end)
-    disp = D[:, 0] if k == 0 else 0.5 * (D[:, 2] - D[:, 1])  # u_x; y = (W - V) / 2
-    F = share * disp[0]  # generalised force of a unit load at the aft edge
+    nodes = mesh_nodes(mesh)
+    r = nodes[3]
+    D = _node_displacements(mesh, dmap, keep, nodes[0], nodes[1])
+    F = share * (D[0, 0] if k == 0 else 0.5 * (D[0, 2] - D[0, 1]))  # unit aft-edge load
     KL = Ke + Kg
     w2, Phi, n_rigid = _basis(KL if k == 0 else Ke, M, n_modes, omega_max)
     if np.any(w2[n_rigid:] <= 0.0):
@@ -369,28 +423,54 @@ def modal_model(
             Phi = Phi.copy()
             Phi[:, :2] = Phi[:, :2] @ (np.array([[b[0], b[1]], [b[1], -b[0]]]) / h)
             psi = h * (M @ Phi[:, 0])  # rigid pitch angle of a displacement
-        KL = KL - F0 * np.outer(disp[0], beta + gimbal_gain * psi)  # Beal eq. 4, memo 2.2-2
+        y = 0.5 * (D[0, 2] - D[0, 1])
+        KL = KL - F0 * np.outer(y, beta + gimbal_gain * psi)  # Beal eq. 4, memo eq. 2.2-2
     w2[:n_rigid] = 0.0
-    Psi, xr, A, f = _condense(KL, M, Phi, F, static_correction)
-    omega = np.sqrt(w2)
+    tilt = axial_force(np.column_stack([np.zeros(mesh.n_elements), mesh.length]), F0,
+                       r1=mesh.r1, sin_phi=mesh.sin_phi, length=mesh.length,
+                       rho_h=mesh.rho * mesh.thickness,
+                       supported_forward_end=supported_forward_end)
+    P0 = np.append(tilt[:, 0], tilt[-1, 1])  # steady axial load at each node (N, > 0)
+    return FullModel(k=k, mass=M, stiffness=KL, load=F, basis=Phi, omega2=w2,
+                     n_rigid=n_rigid, parts=(mesh, dmap, keep, mats, nodes, D, P0))
+
+
+def modal_model(
+    vehicle: Vehicle, mesh, k: int, *, F0: float, share: float, n_modes: int | None,
+    omega_max: float, gimbal_gain: float, damping_ratio: float, pitch_damping_ratio: float,
+    supported_forward_end: bool, static_correction: bool,
+) -> ModalModel:
+    """The reduced model of harmonic k (0 or 1) per newton of the thrust oscillation.
+
+    Parameters
+    ----------
+    vehicle, mesh, k, F0, share, n_modes, omega_max, gimbal_gain, supported_forward_end
+        As :func:`full_model`.
+    damping_ratio, pitch_damping_ratio : float
+        zeta, zeta_psi (dimensionless).
+    static_correction : bool
+        The static correction of the truncated modes (False: mode displacement).
+
+    Returns
+    -------
+    ModalModel
+
+    References
+    ----------
+    Meirovitch (1986), ch. 7; Craig & Kurdila (2006) (module docstring).
+    """
+    fm = full_model(vehicle, mesh, k, F0=F0, share=share, n_modes=n_modes,
+                    omega_max=omega_max, gimbal_gain=gimbal_gain,
+                    supported_forward_end=supported_forward_end)
+    Psi, xr, A, f = _condense(fm.stiffness, fm.mass, fm.basis, fm.load, static_correction)
+    omega = np.sqrt(fm.omega2)
     damp = 2.0 * damping_ratio * omega
-    free = np.arange(omega.size) < n_rigid
-    if k == 1 and n_rigid == 2 and gimbal_gain > 0.0:  # the gimbaled pitch: an oscillator
+    free = np.arange(omega.size) < fm.n_rigid
+    if k == 1 and fm.n_rigid == 2 and gimbal_gain > 0.0:  # the gimbaled pitch: an oscillator
         free[0] = False
         damp[0] = 2.0 * pitch_damping_ratio * np.sqrt(max(A[0, 0], 0.0))
-    Y = np.column_stack([Psi, xr])
-    stiff = np.concatenate([(disp @ Y)[:, None], _node_loads(
-        k, mesh, dmap, keep, elem, end, r, mats[1] + mats[2], Y)], axis=1)
-    mass = np.concatenate([np.zeros_like(stiff[:, :1]), _node_loads(
-        k, mesh, dmap, keep, elem, end, r, mats[0], Y)], axis=1)
-    if k == 1:  # shear normal to the section: less the steady load P0 tilted by beta
-        tilt = axial_force(np.column_stack([np.zeros(mesh.n_elements), mesh.length]), F0,
-                           r1=mesh.r1, sin_phi=mesh.sin_phi, length=mesh.length,
-                           rho_h=mesh.rho * mesh.thickness,
-                           supported_forward_end=supported_forward_end)
-        P0 = np.append(tilt[:, 0], tilt[-1, 1])  # at each node (N, compression > 0)
-        stiff[:, 1] += (P0 / r)[:, None] * (D[:, 0] @ Y)  # - P0 beta, beta = -U_x / r
-    return ModalModel(k=k, omega_modes=omega, n_rigid=n_rigid, free=free, stiffness=A,
-                      damping=np.diag(damp), load=f, node_x=x, rows=ROWS[k],
+    stiff, mass = fm.node_rows(np.column_stack([Psi, xr]))
+    return ModalModel(k=k, omega_modes=omega, n_rigid=fm.n_rigid, free=free, stiffness=A,
+                      damping=np.diag(damp), load=f, node_x=fm.parts[4][2], rows=ROWS[k],
                       stiffness_map=stiff[..., :-1], mass_map=mass[..., :-1],
                       static_stiffness=stiff[..., -1], static_mass=mass[..., -1])
