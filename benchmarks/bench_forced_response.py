@@ -62,7 +62,7 @@ def baseline(res):
                         supported_forward_end=False)
         MPhi = fm.mass @ fm.basis
         C = MPhi @ model.damping @ MPhi.T  # the same modal damping, truncated modes none
-        poles = model.poles()
+        poles = model.poles()[0]
         up = poles[poles.imag > 0.0]
         steps = np.arange(-CLUSTER, CLUSTER + 1) / CLUSTER_DENSITY
         pts = (up.imag[:, None] + np.abs(up.real)[:, None] * steps).ravel()

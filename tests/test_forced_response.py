@@ -503,8 +503,9 @@ def test_spectrum_lines_are_checked():
 
 def test_an_undamped_resonance_in_the_range_is_refused():
     """zeta = 0 with the first axial mode (1592 rad/s) in the range: unbounded, refused
-    naming damping_ratio; out of the range: finite.  The gimbaled pitch (17 rad/s) without
-    pitch damping: refused naming pitch_damping_ratio."""
+    naming damping_ratio; out of the range: finite.  The gimbaled pitch (1.6 rad/s) without
+    pitch damping: refused naming pitch_damping_ratio; a bending mode with zeta = 1e-7 (below
+    the 1e-6 that counts as damped): naming damping_ratio."""
     kw = {"F0": 1e3, "amplitude": 0.1, "damping_ratio": 0.0, "harmonics": (0,)}
     with pytest.raises(ValueError, match=r"^damping_ratio = 0\.0: the k = 0 mode at 159"):
         forced_response(rod(), Omega=np.linspace(1000.0, 2000.0, 11), **kw)
@@ -513,6 +514,9 @@ def test_an_undamped_resonance_in_the_range_is_refused():
     with pytest.raises(ValueError, match=r"^pitch_damping_ratio = 0\.0: the k = 1 mode at 1\."):
         forced_response(tube(), F0=3e2, amplitude=0.1, Omega=np.linspace(0.5, 4.0, 8),
                         misalignment=0.1, gimbal_gain=0.5, harmonics=(1,))
+    with pytest.raises(ValueError, match=r"^damping_ratio = 1e-07: the k = 1 mode at 80\."):
+        forced_response(tube(), F0=1.0, amplitude=0.1, Omega=[40.0, 150.0], misalignment=0.1,
+                        damping_ratio=1e-7, harmonics=(1,))  # an effective ratio < 1e-6
     spec = ThrustSpectrum([1000.0, 1591.8792155], [0.01, 0.01])  # a line on the resonance
     with pytest.raises(ValueError, match=r"^damping_ratio = 0\.0: .* on a line"):
         forced_response(rod(), F0=1e3, amplitude=spec, damping_ratio=0.0, harmonics=(0,))

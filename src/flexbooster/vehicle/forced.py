@@ -122,7 +122,8 @@ class ForcedPeak:
     value : float
         Peak amplitude (unit).
     omega : float
-        Omega where it occurs (rad/s); spectrum: the line contributing most.
+        Omega where it occurs (rad/s); spectrum: the line contributing most; a harmonic not
+        forced (k = 1 without misalignment): value 0 at the lowest Omega.
     """
 
     k: int
@@ -261,13 +262,14 @@ class ForcedResponse:
 
 
 def _stations(vehicle: Vehicle, stations) -> list:
-    """The automatic stations (edges, junctions) and the caller's, aft to forward."""
-    out, x = [Station("aft-edge", 0.0, "edge")], 0.0
+    """(Station, junction index or None) of the edges, junctions and the caller's stations,
+    aft to forward (an automatic station first where they coincide)."""
+    out, x = [(Station("aft-edge", 0.0, "edge"), None)], 0.0
     for i, seg in enumerate(vehicle.segments[:-1]):
         x += seg.length
-        out.append(Station(f"junction-{i + 1}", x, "junction"))
-    out.append(Station("forward-edge", vehicle.total_length, "edge"))
-    names = {s.name for s in out}
+        out.append((Station(f"junction-{i + 1}", x, "junction"), i + 1))
+    out.append((Station("forward-edge", vehicle.total_length, "edge"), None))
+    names = {s.name for s, _ in out}
     for j, item in enumerate(stations):
         if not isinstance(item, tuple | list) or len(item) != 2:
             raise ValueError(f"stations[{j}] = {item!r}: must be a (name, station_m) pair")
@@ -280,19 +282,36 @@ def _stations(vehicle: Vehicle, stations) -> list:
             raise ValueError(f"stations[{j}].station_m = {xs!r}: must be in [0, "
                              f"{vehicle.total_length!r}] m (the vehicle's length)")
         names.add(name)
-        out.append(Station(name, xs, "user"))
-    return sorted(out, key=lambda s: s.x)  # stable: an automatic station first
+        out.append((Station(name, xs, "user"), None))
+    return sorted(out, key=lambda item: item[0].x)
 
 
-def _undamped(model: ModalModel, om: np.ndarray, spectrum: bool) -> complex | None:
-    """A pole lambda that is not damped (Re lambda >= -UNDAMPED_RTOL |lambda|: undamped or
-    growing) with Im lambda in the Omega range (sweep) or on a line (spectrum)."""
-    poles = model.poles()
-    up = poles[(poles.imag > 0.0) & (poles.real >= -UNDAMPED_RTOL * np.abs(poles))]
-    for lam in up:
+def _omega(amplitude, Omega) -> tuple[np.ndarray, np.ndarray, str]:
+    """(Omega, gamma of each, combination) of a sweep (gamma, grid) or a spectrum."""
+    if isinstance(amplitude, ThrustSpectrum):
+        if Omega is not None:
+            raise ValueError("Omega: must be None with a spectrum (its lines are the Omega)")
+        return amplitude.frequency, amplitude.amplitude, "spectrum"
+    gamma = nonnegative("amplitude", amplitude)
+    if gamma >= 1.0:
+        raise ValueError(f"amplitude = {amplitude!r}: must be in [0, 1)")
+    om = finite_array("Omega", Omega if Omega is not None else [], positive=True).ravel()
+    if om.size > 100_000 or np.any(np.diff(om) <= 0.0):
+        raise ValueError("Omega: must be strictly increasing, at most 100000 points")
+    return om, np.full(om.size, gamma), "sweep"
+
+
+def _undamped(model: ModalModel, om: np.ndarray, spectrum: bool) -> tuple | None:
+    """(lambda, dominant basis mode) of a pole that is not damped (Re lambda >=
+    -UNDAMPED_RTOL |lambda|: undamped or growing) with Im lambda in the Omega range (sweep)
+    or on a line (spectrum)."""
+    poles, mode = model.poles()
+    for lam, j in zip(poles, mode, strict=True):
         c = lam.imag
+        if c <= 0.0 or lam.real < -UNDAMPED_RTOL * abs(lam):
+            continue
         if (np.any(np.abs(om - c) <= UNDAMPED_RTOL * c) if spectrum else om[0] <= c <= om[-1]):
-            return complex(lam)
+            return complex(lam), int(j)
     return None
 
 
@@ -329,7 +348,7 @@ def _peaks(model: ModalModel, om, scale, objectives, spectrum: bool):
     if spectrum:  # sup_t |sum_j X_j cos(Omega_j t + phi_j)| = sum_j |X_j| (incommensurate)
         mag = magnitude(om, scale)
         return mag.sum(axis=0), om[np.argmax(mag, axis=0)]
-    poles = model.poles()
+    poles = model.poles()[0]
     up = poles[poles.imag > 0.0]
     steps = np.arange(-CLUSTER, CLUSTER + 1) / CLUSTER_DENSITY
     pts = (up.imag[:, None] + np.abs(up.real)[:, None] * steps).ravel()
@@ -343,6 +362,35 @@ def _peaks(model: ModalModel, om, scale, objectives, spectrum: bool):
     better = val * scale[0] > best
     value = np.where(better, val * scale[0], best).reshape(i.shape)
     return value, np.where(better, at, grid[i].ravel()).reshape(i.shape)
+
+
+def _harmonic(model: ModalModel, om, scale, spectrum: bool, stations, at):
+    """(node rows (n, p, rows), peaks at the stations, envelopes) of one harmonic; scale:
+    Delta F of each Omega (N), 0 for a harmonic not forced."""
+    k = model.k
+    objectives = [("displacement", 0, 0), ("acceleration", 0, 2)] + [
+        (q, i, 0) for i, q in enumerate(ROWS[k]) if i > 0]
+    p = model.node_x.size
+    if not np.any(scale):  # not forced: zero, its peaks at the lowest Omega
+        vals = np.zeros((om.size, p, len(ROWS[k])), dtype=complex)
+        value, where = np.zeros((p, len(objectives))), np.full((p, len(objectives)), om[0])
+    else:
+        vals = model.response(om) * scale[:, None, None]
+        value, where = _peaks(model, om, scale, objectives, spectrum)
+    peaks, envelopes = [], []
+    for j, (q, row, _) in enumerate(objectives):
+        peaks += [ForcedPeak(k=k, station=s.name, station_m=s.x, quantity=q, unit=UNITS[q],
+                             value=float(value[a, j]), omega=float(where[a, j]))
+                  for s, a in zip(stations, at, strict=True)]
+        if q in ROWS[k][1:]:  # an internal load: its envelope along the vehicle
+            n = int(np.argmax(value[:, j]))
+            w = float(where[n, j])
+            line = np.nonzero(om == w)[0]  # a spectrum's line (sweep: gamma is constant)
+            worst = model.response([w])[0, :, row] * scale[line[0] if line.size else 0]
+            envelopes.append(LoadEnvelope(k=k, quantity=q, unit=UNITS[q], x=model.node_x,
+                                          peak=value[:, j], peak_omega=where[:, j],
+                                          worst_omega=w, at_worst=worst))
+    return vals, peaks, envelopes
 
 
 def forced_response(
@@ -362,8 +410,10 @@ def forced_response(
     F0 : float
         Steady thrust (N), > 0.
     amplitude : float or ThrustSpectrum
-        gamma (fraction of F0), [0, 1), swept over ``Omega``; or the spectrum's lines (then
-        ``Omega`` is None).
+        gamma (fraction of F0), [0, 1), swept over ``Omega``: the peaks are the maxima over
+        [min Omega, max Omega]; or the spectrum's lines (then ``Omega`` is None): the
+        response is the sum over the lines, the peaks the sum of the lines' amplitudes (the
+        supremum of a sum of sinusoids of incommensurate frequencies).
     Omega : array_like
         Strictly increasing Omega grid (rad/s), > 0, 1..100000 points (sweep only).
     damping_ratio, pitch_damping_ratio : float
@@ -419,34 +469,22 @@ def forced_response(
     harmonics = tuple(sorted(int(k) for k in harmonics))
     if n_modes is not None:
         n_modes = count("n_modes", n_modes, 1, 2000)
-    if isinstance(amplitude, ThrustSpectrum):
-        if Omega is not None:
-            raise ValueError("Omega: must be None with a spectrum (its lines are the Omega)")
-        om, gam, combination = amplitude.frequency, amplitude.amplitude, "spectrum"
-    else:
-        gamma = nonnegative("amplitude", amplitude)
-        if gamma >= 1.0:
-            raise ValueError(f"amplitude = {amplitude!r}: must be in [0, 1)")
-        om = finite_array("Omega", Omega if Omega is not None else [], positive=True).ravel()
-        if om.size > 100_000 or np.any(np.diff(om) <= 0.0):
-            raise ValueError("Omega: must be strictly increasing, at most 100000 points")
-        gam, combination = np.full(om.size, gamma), "sweep"
-    spectrum = combination == "spectrum"
-    rows_s = _stations(vehicle, stations)
+    om, gam, combination = _omega(amplitude, Omega)
+    listed = _stations(vehicle, stations)
     counts = elements_per_segment
     if counts is not None and not isinstance(counts, tuple | list):
         counts = (counts,) * len(vehicle.segments)
-    cut, counts, starts = cut_vehicle(vehicle, [s.x for s in rows_s if s.kind == "user"],
+    cut, counts, starts = cut_vehicle(vehicle, [s.x for s, _ in listed if s.kind == "user"],
                                       counts)
     mesh = mesh_vehicle(cut, elements_per_segment=counts, order=order, refinement=refinement)
     x_nodes = mesh_nodes(mesh)[2]
-    first = np.concatenate(([0], np.cumsum(mesh.elements_per_segment)))  # node of a segment
+    first = np.concatenate(([0], np.cumsum(mesh.elements_per_segment)))  # a segment's node
     tol = 1e-9 * vehicle.total_length
-    at = np.array([first[starts[int(s.name.split("-")[1])]] if s.kind == "junction" else
-                   x_nodes.size - 1 if s.name == "forward-edge" else
-                   int(np.argmax(np.abs(x_nodes - s.x) <= tol)) for s in rows_s])
+    at = np.array([first[starts[j]] if j is not None else x_nodes.size - 1
+                   if s.name == "forward-edge" else int(np.argmax(np.abs(x_nodes - s.x) <= tol))
+                   for s, j in listed])
+    rows_s = [s for s, _ in listed]
     share = {0: math.cos(delta), 1: math.sin(delta)}
-    scale = gam * F0  # Delta F of each Omega (N)
     shape = (len(harmonics), len(rows_s), om.size)
     out = {q: np.zeros(shape, dtype=complex) for q in QUANTITIES}
     peaks, envelopes, models = [], [], []
@@ -457,40 +495,23 @@ def forced_response(
                             supported_forward_end=supported_forward_end,
                             static_correction=static_correction)
         models.append(model)
-        objectives = [("displacement", 0, 0), ("acceleration", 0, 2)] + [
-            (q, i, 0) for i, q in enumerate(ROWS[k]) if i > 0]
-        p = x_nodes.size
-        if share[k] == 0.0:  # not forced
-            vals = np.zeros((om.size, p, len(ROWS[k])), dtype=complex)
-            value, where = np.zeros((p, len(objectives))), np.full((p, len(objectives)), om[0])
-        else:
-            hit = _undamped(model, om, spectrum)
-            if hit is not None:
-                name, val = ("pitch_damping_ratio", zpsi) if k == 1 and zeta > 0.0 else (
+        if share[k] != 0.0:
+            hit = _undamped(model, om, combination == "spectrum")
+            if hit is not None:  # the rigid pitch, or an elastic mode
+                hit, j = hit
+                name, val = ("pitch_damping_ratio", zpsi) if j < model.n_rigid else (
                     "damping_ratio", zeta)
-                where_ = "on a line" if spectrum else "in the Omega range"
+                place = "on a line" if combination == "spectrum" else "in the Omega range"
                 raise ValueError(f"{name} = {val!r}: the k = {k} mode at {hit.imag:.6g} rad/s "
-                                 f"{where_} is not damped (growth rate {hit.real:.3g} 1/s): "
+                                 f"{place} is not damped (growth rate {hit.real:.3g} 1/s): "
                                  "no bounded steady response")
-            vals = model.response(om) * scale[:, None, None]
-            value, where = _peaks(model, om, scale, objectives, spectrum)
-        disp = vals[:, at, 0].T
-        out["displacement"][ik], out["acceleration"][ik] = disp, -(om**2) * disp
-        for i, q in enumerate(ROWS[k][1:], start=1):
+        vals, found, loads = _harmonic(model, om, gam * F0 * (share[k] != 0.0),
+                                       combination == "spectrum", rows_s, at)
+        for i, q in enumerate(ROWS[k]):
             out[q][ik] = vals[:, at, i].T
-        for j, (q, _, _) in enumerate(objectives):
-            peaks += [ForcedPeak(k=k, station=s.name, station_m=s.x, quantity=q, unit=UNITS[q],
-                                 value=float(value[a, j]), omega=float(where[a, j]))
-                      for s, a in zip(rows_s, at, strict=True)]
-            if j >= 2:
-                n = int(np.argmax(value[:, j]))
-                w = float(where[n, j])
-                line = np.nonzero(om == w)[0]
-                s_w = scale[line[0]] if line.size else scale[0]
-                worst = model.response([w])[0, :, objectives[j][1]] * s_w * (share[k] != 0.0)
-                envelopes.append(LoadEnvelope(k=k, quantity=q, unit=UNITS[q], x=x_nodes,
-                                              peak=value[:, j], peak_omega=where[:, j],
-                                              worst_omega=w, at_worst=worst))
+        out["acceleration"][ik] = -(om**2) * out["displacement"][ik]
+        peaks += found
+        envelopes += loads
     arrays = list(out.values()) + [p.value for p in peaks] + [e.at_worst for e in envelopes]
     if not all(np.all(np.isfinite(a)) for a in arrays):
         raise ValueError(f"Omega = {om[0]!r}: the response is not finite (the rigid-body "

@@ -151,12 +151,14 @@ class ModalModel:
             "jn,nj->n", y, wm[node, row]) + self.static_stiffness[node, row]
             - w2 * self.static_mass[node, row])
 
-    def poles(self) -> np.ndarray:
-        """Eigenvalues of the restrained coordinates (free rigid ones left out; 1/s)."""
-        keep = ~self.free  # a free rigid mode is a Jordan block at 0: left out
-        m = int(np.count_nonzero(keep))
+    def poles(self) -> tuple[np.ndarray, np.ndarray]:
+        """Eigenvalues (1/s) of the restrained coordinates (the free rigid ones, Jordan
+        blocks at 0, left out) and the basis mode dominating each."""
+        keep = np.nonzero(~self.free)[0]
+        m = keep.size
         A, C = (x[np.ix_(keep, keep)] for x in (self.stiffness, self.damping))
-        return np.linalg.eigvals(np.block([[np.zeros((m, m)), np.eye(m)], [-A, -C]]))
+        lam, vec = np.linalg.eig(np.block([[np.zeros((m, m)), np.eye(m)], [-A, -C]]))
+        return lam, keep[np.argmax(np.abs(vec[:m]), axis=0)]
 
     def to_dict(self) -> dict:
         """JSON-ready mapping."""
