@@ -442,6 +442,9 @@ def test_stations_and_cut_segments():
     for q in ("displacement", "acceleration"):
         a, b = getattr(plain, q)[:, [0, -1]], getattr(cut, q)[:, [0, -1]]
         assert np.max(np.abs(a - b)) <= 1e-5 * np.max(np.abs(a))
+    # element counts per segment are shared by its pieces in proportion to their lengths
+    res = forced_response(v, elements_per_segment=(4, 2), stations=[("tank", 3.0)], **kw)
+    np.testing.assert_allclose(res.models[0].node_x, [0, 1.5, 3, 4.5, 6, 6.5, 7], atol=1e-12)
     # envelopes: one per internal load, every mesh node, x non-decreasing
     assert [(e.k, e.quantity) for e in cut.envelopes] == [
         (0, "axial_force"), (1, "shear_force"), (1, "bending_moment")]
