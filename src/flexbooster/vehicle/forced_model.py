@@ -344,6 +344,10 @@ class FullModel:
         Phi (n, m), M-normalised (the rigid modes first), and omega^2 (1/s^2, 0 if rigid).
     n_rigid : int
         Rigid basis modes.
+    parts : tuple
+        What :meth:`node_rows` needs: mesh, DOF map, kept DOFs, element matrices (M, K_e,
+        K_g), nodes (:func:`mesh_nodes`), node displacement functionals, steady axial load
+        P0 at the nodes (N).
     """
 
     k: int
