@@ -17,6 +17,7 @@ from .bending import (
     bending_system,
     follower_flutter_thrust,
 )
+from .forced import ForcedPeak, ForcedResponse, LoadEnvelope, ThrustSpectrum, forced_response
 from .regions import (
     HARMONIC_BUILD_SECONDS,
     HarmonicSystem,
@@ -46,6 +47,7 @@ __all__ = [
     "bending_system",
     "follower_flutter_thrust",
     "forced_axial",
+    "ForcedPeak", "ForcedResponse", "LoadEnvelope", "ThrustSpectrum", "forced_response",
     "harmonic_search_seconds",
     "harmonic_system",
     "region_curves",

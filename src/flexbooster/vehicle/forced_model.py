@@ -1,0 +1,482 @@
+"""Reduced model of one harmonic for the forced response (:mod:`.forced`).
+
+Per harmonic k the finite-element model of :mod:`flexbooster.shell_of_revolution` under the
+steady thrust F0, loaded at the aft edge by F cos(Omega t) (k = 0 axial, k = 1 lateral), is
+
+    M X'' + C X' + K_L X = F cos(Omega t),   K_L = K_e + K_g(F0) (+ K_f for k = 1),
+
+K_f = -F0 y (beta + K psi)^T the follower thrust turned by the gimbal (aft-edge lateral
+displacement y = (W - V) / 2, rotation beta = -U_x / r, rigid pitch angle psi; as
+:func:`.bending_system`).  k = 0 is the axisymmetric (u, w) part: the torsion (v) is
+decoupled from it and not forced.  Basis Phi: k = 0 the loaded modes (K_e + K_g, M), k = 1 the
+unloaded modes (K_e, M) with the rigid ones (the free-free pair turned into the rotation, then
+the translation), mass-normalised; modal damping 2 zeta omega on the elastic modes, 2 zeta_psi
+omega_psi on the gimbaled rigid pitch.  The truncated modes respond statically (mode
+acceleration; residual flexibility with inertia relief): with G_c the flexibility of K_L on the
+M-orthogonal complement of Phi (the bordered system [[K_L, M Phi], [Phi^T M, 0]]),
+
+    X = Psi q + G_c F,   Psi = Phi - G_c K_L Phi,
+    (Phi^T K_L Psi - Omega^2 I + i Omega C) q = Phi^T (F - K_L G_c F),
+
+exact as Omega -> 0 (the full model's static inertia-relief solution), and for a symmetric K_L
+with Phi its modes the classical Phi q + (G - Phi Lambda^-1 Phi^T) F.  The non-symmetric
+reduced system is solved for many Omega at once through the complex Schur form of its
+companion matrix (backward stable also for the free rigid modes' Jordan blocks).  Internal
+loads at a node: force summation with the consistent mass, the loads that the part ahead of
+the node receives from the part behind, r^T sum_e (K_e + K_g - Omega^2 M)_e x_e over the
+elements ahead, r its rigid motions: the axial force N (tension > 0), the moment M about the
+node (M = E I w'' for a beam) and the shear S (S = dM/dx statically) less P0 beta, the
+lateral component of the steady axial load P0(x) (inertia relief) carried by the section
+tilted by beta = -U_x / r: S is normal to the section (the stress resultant; a rigid pitch
+carries none).  The modal damping forces count as internal (as material damping): the loads
+are those that accelerate the part ahead, exact at the aft edge for any number of modes.
+
+References
+----------
+.. [1] L. Meirovitch, *Elements of Vibration Analysis*, 2nd ed., McGraw-Hill, 1986, ch. 7
+   (modal superposition, mode-acceleration method).
+.. [2] R. R. Craig, A. J. Kurdila, *Fundamentals of Structural Dynamics*, 2nd ed., Wiley,
+   2006 (residual flexibility, inertia relief of free-free structures).
+.. [3] G. H. Golub, C. F. Van Loan, *Matrix Computations*, 4th ed., 2013, sec. 7.1 (Schur).
+.. [4] V. L. Beal, AIAA J. 3 (1965) 486-494, eq. 4 (follower thrust); Tech Memo 104,
+   eq. 2.2-2 (gimbal).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import scipy.linalg as sla
+
+from ..shell_of_revolution import Cone, Cylinder, Vehicle
+from ..shell_of_revolution.assembly import (
+    assemble,
+    dof_map,
+    element_set,
+    rigid_body_fields,
+)
+from ..shell_of_revolution.prestress import axial_force
+
+__all__ = ["ROWS", "FullModel", "ModalModel", "cut_vehicle", "full_model", "mesh_nodes",
+           "modal_model"]
+
+#: Default basis: every mode below MODE_CUTOFF times the highest Omega (at least MIN_MODES).
+MODE_CUTOFF, MIN_MODES = 4.0, 4
+#: A basis mode is rigid if omega^2 <= RIGID_RTOL x the third one (k <= 1: at most two).
+RIGID_RTOL = 1e-6
+#: Node rows of each harmonic (the acceleration is -Omega^2 times the displacement).
+ROWS = {0: ("displacement", "axial_force"), 1: ("displacement", "shear_force",
+                                                  "bending_moment")}
+
+
+@dataclass(frozen=True)
+class ModalModel:
+    """Reduced model of one harmonic: (A - Omega^2 I + i Omega C) q = f per newton of Delta F.
+
+    Attributes
+    ----------
+    k : int
+        Harmonic.
+    omega_modes : ndarray, shape (m,)
+        Basis frequencies (rad/s; 0 for the rigid modes, the first ``n_rigid``).
+    n_rigid : int
+        Rigid basis modes (k = 1 free-free: the rotation, then the translation).
+    free : ndarray of bool, shape (m,)
+        The free rigid modes (no stiffness: translation; the pitch without gimbal gain).
+    stiffness, damping : ndarray, shape (m, m)
+        A (1/s^2, non-symmetric for k = 1) and C (1/s) of the module docstring.
+    load : ndarray, shape (m,)
+        f per newton of Delta F (1/sqrt(kg)).
+    node_x : ndarray, shape (p,)
+        Axial distance of the mesh nodes from the aft edge (m).
+    rows : tuple of str
+        Quantities of the node rows (:data:`ROWS`).
+    stiffness_map, mass_map : ndarray, shape (p, len(rows), m)
+        Node row = (stiffness_map - Omega^2 mass_map) q + static_stiffness - Omega^2
+        static_mass (row units per newton).
+    static_stiffness, static_mass : ndarray, shape (p, len(rows))
+        The residual (static) part of the rows.
+    """
+
+    k: int
+    omega_modes: np.ndarray
+    n_rigid: int
+    free: np.ndarray
+    stiffness: np.ndarray
+    damping: np.ndarray
+    load: np.ndarray
+    node_x: np.ndarray
+    rows: tuple
+    stiffness_map: np.ndarray
+    mass_map: np.ndarray
+    static_stiffness: np.ndarray
+    static_mass: np.ndarray
+    schur: tuple = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        m = self.load.size
+        S = np.block([[np.zeros((m, m)), np.eye(m)], [-self.stiffness, -self.damping]])
+        T, Z = sla.schur(S, output="complex")  # S = Z T Z^H (Golub & Van Loan sec. 7.1)
+        g = Z.conj().T @ np.concatenate([np.zeros(m), self.load])
+        object.__setattr__(self, "schur", (T, g, self.stiffness_map @ Z[:m],
+                                           self.mass_map @ Z[:m]))
+
+    def _states(self, Omega: np.ndarray) -> np.ndarray:
+        """Schur coordinates y of (i Omega_j - T) y_j = g, by back substitution: (2m, n)."""
+        T, g = self.schur[:2]
+        s = 1j * Omega
+        y = np.empty((T.shape[0], s.size), dtype=complex)
+        for i in range(T.shape[0] - 1, -1, -1):
+            y[i] = (g[i] + T[i, i + 1:] @ y[i + 1:]) / (s - T[i, i])
+        return y
+
+    def response(self, Omega) -> np.ndarray:
+        """Node rows per newton of Delta F at each Omega (rad/s, > 0): (n, p, len(rows))."""
+        om = np.atleast_1d(np.asarray(Omega, dtype=float))
+        wk, wm = self.schur[2:]
+        y = self._states(om)
+        w2 = om[:, None, None] ** 2
+        shape = (om.size,) + wk.shape[:2]
+        return ((wk.reshape(-1, y.shape[0]) @ y).T.reshape(shape) - w2 * (
+            wm.reshape(-1, y.shape[0]) @ y).T.reshape(shape)
+            + self.static_stiffness - w2 * self.static_mass)
+
+    def pointwise(self, Omega: np.ndarray, node: np.ndarray, row: np.ndarray) -> np.ndarray:
+        """Row ``row[j]`` of node ``node[j]`` at ``Omega[j]`` per newton (complex, (n,))."""
+        wk, wm = self.schur[2:]
+        y = self._states(Omega)
+        w2 = Omega**2
+        return (np.einsum("jn,nj->n", y, wk[node, row]) - w2 * np.einsum(
+            "jn,nj->n", y, wm[node, row]) + self.static_stiffness[node, row]
+            - w2 * self.static_mass[node, row])
+
+    def poles(self) -> tuple[np.ndarray, np.ndarray]:
+        """Eigenvalues (1/s) of the restrained coordinates (the free rigid ones, Jordan
+        blocks at 0, left out) and the basis mode dominating each."""
+        keep = np.nonzero(~self.free)[0]
+        m = keep.size
+        A, C = (x[np.ix_(keep, keep)] for x in (self.stiffness, self.damping))
+        lam, vec = np.linalg.eig(np.block([[np.zeros((m, m)), np.eye(m)], [-A, -C]]))
+        return lam, keep[np.argmax(np.abs(vec[:m]), axis=0)]
+
+    def to_dict(self) -> dict:
+        """JSON-ready mapping."""
+        return {"k": self.k, "omega_modes": self.omega_modes.tolist(),
+                "n_rigid": self.n_rigid, "free": self.free.tolist(),
+                "stiffness": self.stiffness.tolist(),
+                "damping": self.damping.tolist(), "load": self.load.tolist(),
+                "node_x": self.node_x.tolist(), "rows": list(self.rows),
+                "stiffness_map": self.stiffness_map.tolist(),
+                "mass_map": self.mass_map.tolist(),
+                "static_stiffness": self.static_stiffness.tolist(),
+                "static_mass": self.static_mass.tolist()}
+
+
+def cut_vehicle(vehicle: Vehicle, xs: list, counts) -> tuple[Vehicle, tuple | None, tuple]:
+    """The vehicle cut into more segments at the axial stations xs inside segments.
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        The vehicle.
+    xs : list of float
+        Axial distances from the aft edge (m); those inside a segment cut it ("continuous").
+    counts : tuple of int or None
+        Elements of each segment (None: the automatic mesh).
+
+    Returns
+    -------
+    tuple
+        The cut vehicle, the element counts of its segments (an original count shared in
+        proportion to length; None) and the index of the first piece of every segment.
+    """
+    tol = 1e-9 * vehicle.total_length
+    segs, juncs, pieces, starts, x0 = [], [], [], [], 0.0
+    for i, seg in enumerate(vehicle.segments):
+        L = seg.length
+        edges = [0.0] + sorted({x - x0 for x in xs if x0 + tol < x < x0 + L - tol}) + [L]
+        starts.append(len(segs))
+        for a, b in zip(edges[:-1], edges[1:], strict=True):
+            mat = {"E": seg.E, "nu": seg.nu, "rho": seg.rho}
+            if len(edges) == 2:
+                piece = seg
+            elif isinstance(seg, Cylinder):
+                piece = Cylinder(seg.radius, b - a, seg.thickness, **mat)
+            else:
+                r = [seg.radius_aft + (seg.radius_fwd - seg.radius_aft) * t / L for t in (a, b)]
+                piece = Cone(r[0], r[1], b - a, seg.thickness, **mat)
+            if segs:
+                juncs.append(vehicle.junctions[i - 1] if a == 0.0 else "continuous")
+            segs.append(piece)
+            if counts is not None:
+                pieces.append(counts[i] if L == 0.0 else max(1, round(counts[i] * (b - a) / L)))
+        x0 += L
+    cut = Vehicle(segments=tuple(segs), junctions=tuple(juncs), aft_end=vehicle.aft_end,
+                  fwd_end=vehicle.fwd_end, theory=vehicle.theory)
+    return cut, None if counts is None else tuple(pieces), tuple(starts)
+
+
+def mesh_nodes(mesh):
+    """Nodes of a mesh: each element's aft node, then the nose.
+
+    Parameters
+    ----------
+    mesh : Mesh
+        The mesh (:func:`flexbooster.shell_of_revolution.mesh_vehicle`).
+
+    Returns
+    -------
+    elem, end, x, r : ndarray
+        Element and end (0 aft, 1 forward) of each node, its axial distance from the aft
+        edge and radius (m).
+    """
+    ne = mesh.n_elements
+    elem = np.append(np.arange(ne), ne - 1)
+    end = np.append(np.zeros(ne, dtype=int), 1)
+    x = np.append(mesh.x1, mesh.x1[-1] + mesh.length[-1] * mesh.cos_phi[-1])
+    r = np.append(mesh.r1, mesh.r1[-1] + mesh.length[-1] * mesh.sin_phi[-1])
+    return elem, end, x, r
+
+
+def _to_global(frame: np.ndarray) -> np.ndarray:
+    """Node frame (a, v, b, chi) -> global (u_x, v, u_r, chi), shape (p, 4, 4)."""
+    c, s = np.cos(frame), np.sin(frame)
+    W = np.zeros((frame.size, 4, 4))
+    W[:, 0, 0], W[:, 0, 2], W[:, 2, 0], W[:, 2, 2] = c, -s, s, c  # u_x = a c - b s, ...
+    W[:, 1, 1] = W[:, 3, 3] = 1.0
+    return W
+
+
+def _node_displacements(mesh, dmap, keep, elem, end) -> np.ndarray:
+    """Functionals (p, 4, n_kept) of the global (u_x, v, u_r, chi) at the nodes."""
+    full = dmap.expand(_embed(keep, np.eye(int(np.count_nonzero(keep)))).T)  # (n_kept, n_full)
+    dofs = mesh.dofs[elem[:, None], 4 * end[:, None] + np.arange(4)]
+    return np.einsum("pji,cpi->pjc", _to_global(mesh.frame[elem, end]), full[:, dofs])
+
+
+def _node_loads(k, mesh, dmap, keep, x, mats, Y) -> np.ndarray:
+    """Internal loads (p, len(ROWS[k]) - 1, c) of reduced vectors Y (n_kept, c) by force
+    summation over the part ahead of each node: the rigid motions r of that part (k = 0: the
+    axial translation; k = 1: the lateral translation, the rotation about the node) times
+    the sum of its element forces mats[e] Y_e over its free DOFs (a support's reaction is
+    not a load of the part); 0 at the nose (nothing ahead)."""
+    full = dmap.expand(_embed(keep, Y).T)  # (c, n_full)
+    f = np.einsum("eij,cej->eic", mats, full[:, mesh.dofs])  # element forces (e, nd, c)
+    free = dmap.index[mesh.dofs] >= 0
+    rigid = rigid_body_fields(mesh, k)[:1 + k][:, mesh.dofs] * free  # (k + 1, e, nd)
+    part = np.einsum("fei,eic->fec", rigid, f)[:, ::-1].cumsum(axis=1)[:, ::-1]  # e' >= e
+    part = np.concatenate([part, np.zeros_like(part[:, :1])], axis=1)  # (k + 1, p, c)
+    if k == 0:
+        return -part[0][:, None]  # N = -F_x on the part ahead (tension > 0)
+    return np.stack([part[0], x[:, None] * part[0] - part[1]], axis=1)  # S, M = -M(x)
+
+
+def _embed(keep, Y):
+    """Vectors of the kept reduced DOFs (k = 0: no torsion) as vectors of all of them."""
+    out = np.zeros((keep.size,) + Y.shape[1:], dtype=Y.dtype)
+    out[keep] = Y
+    return out
+
+
+def _axisymmetric(mesh, dmap, k: int) -> np.ndarray:
+    """Mask of the reduced DOFs kept: k = 0 all but the torsional v; k >= 1 all."""
+    keep = np.ones(dmap.n, dtype=bool)
+    if k == 0:  # element DOFs: end 1 (u, v, w, w'), end 2, interior u (p - 1), interior v
+        p = mesh.order
+        pos = np.concatenate(([1, 5], 8 + (p - 1) + np.arange(p - 1)))
+        idx = dmap.index[mesh.dofs[:, pos].ravel()]
+        keep[idx[idx >= 0]] = False
+    return keep
+
+
+def _basis(K, M, n_modes, omega_max):
+    """Lowest eigenpairs (omega^2, M-normalised vectors) of K x = omega^2 M x and the number
+    of rigid ones: n_modes elastic ones, or all below MODE_CUTOFF omega_max (>= MIN_MODES)."""
+    n = K.shape[0]
+    scale = 1.0 / np.sqrt(np.diag(M))  # unit mass diagonal: a better-conditioned reduction
+    A, B = K * np.outer(scale, scale), M * np.outer(scale, scale)
+    want = None if n_modes is None else min(n, n_modes + 2)
+    if want is None:
+        w2, V = sla.eigh(A, B, subset_by_value=(-np.inf, (MODE_CUTOFF * omega_max) ** 2),
+                         driver="gvx")
+        if w2.size < MIN_MODES + 2:
+            want = min(n, MIN_MODES + 2)
+    if want is not None:
+        w2, V = sla.eigh(A, B, subset_by_index=(0, want - 1), driver="gvx")
+    n_rigid = int(np.count_nonzero(np.abs(w2) <= RIGID_RTOL * abs(w2[min(2, w2.size - 1)])))
+    if n_modes is not None:
+        if w2.size - n_rigid < n_modes:
+            raise ValueError(f"n_modes = {n_modes}: the mesh has only {w2.size - n_rigid} "
+                             "elastic modes in this harmonic")
+        w2, V = w2[:n_rigid + n_modes], V[:, :n_rigid + n_modes]
+    return w2, V * scale[:, None], n_rigid
+
+
+def _condense(KL, M, Phi, F, static: bool):
+    """(Psi, G_c F, A, f) of the module docstring (static=False: Phi, 0, Phi^T K_L Phi,
+    Phi^T F, the mode-displacement method)."""
+    if not static:
+        return Phi, np.zeros(F.size), Phi.T @ KL @ Phi, Phi.T @ F
+    n, m = Phi.shape
+    MPhi = M @ Phi
+    s = np.max(np.abs(KL)) / np.max(np.abs(MPhi))  # rows of comparable size
+    bordered = np.block([[KL, s * MPhi], [s * MPhi.T, np.zeros((m, m))]])
+    rhs = np.vstack([np.column_stack([F, KL @ Phi]), np.zeros((m, m + 1))])
+    sol = sla.solve(bordered, rhs, check_finite=False)[:n]  # Craig & Kurdila: inertia relief
+    xr, Psi = sol[:, 0], Phi - sol[:, 1:]
+    return Psi, xr, Phi.T @ KL @ Psi, Phi.T @ (F - KL @ xr)
+
+
+@dataclass(frozen=True)
+class FullModel:
+    """The finite-element model of one harmonic: M X'' + K_L X = F (module docstring).
+
+    Attributes
+    ----------
+    k : int
+        Harmonic.
+    mass, stiffness : ndarray, shape (n, n)
+        M (kg) and K_L (N/m; non-symmetric for k = 1) on the kept DOFs (k = 0: no torsion).
+    load : ndarray, shape (n,)
+        F per newton of Delta F.
+    basis, omega2 : ndarray
+        Phi (n, m), M-normalised (the rigid modes first), and omega^2 (1/s^2, 0 if rigid).
+    n_rigid : int
+        Rigid basis modes.
+    parts : tuple
+        What :meth:`node_rows` needs: mesh, DOF map, kept DOFs, element matrices (M, K_e,
+        K_g), nodes (:func:`mesh_nodes`), node displacement functionals, steady axial load
+        P0 at the nodes (N).
+    """
+
+    k: int
+    mass: np.ndarray
+    stiffness: np.ndarray
+    load: np.ndarray
+    basis: np.ndarray
+    omega2: np.ndarray
+    n_rigid: int
+    parts: tuple = field(repr=False, compare=False)
+
+    def node_rows(self, Y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Node rows (p, len(ROWS[k]), c) of vectors Y (n, c): the row at Omega is
+        (stiffness part - Omega^2 mass part), the first row the displacement."""
+        mesh, dmap, keep, mats, (elem, end, x, r), D, P0 = self.parts
+        k, disp = self.k, D[:, 0] if self.k == 0 else 0.5 * (D[:, 2] - D[:, 1])  # u_x or y
+        stiff = np.concatenate([(disp @ Y)[:, None], _node_loads(
+            k, mesh, dmap, keep, x, mats[1] + mats[2], Y)], axis=1)
+        mass = np.concatenate([np.zeros_like(stiff[:, :1]), _node_loads(
+            k, mesh, dmap, keep, x, mats[0], Y)], axis=1)
+        if k == 1:  # shear normal to the section: less the steady load P0 tilted by beta
+            stiff[:, 1] += (P0 / r)[:, None] * (D[:, 0] @ Y)  # beta = -U_x / r
+        return stiff, mass
+
+
+def full_model(
+    vehicle: Vehicle, mesh, k: int, *, F0: float, share: float, n_modes: int | None,
+    omega_max: float, gimbal_gain: float, supported_forward_end: bool,
+) -> FullModel:
+    """The finite-element model of harmonic k (0 or 1) per newton of the thrust oscillation.
+
+    Parameters
+    ----------
+    vehicle, mesh : Vehicle, Mesh
+        The vehicle and its mesh (:func:`flexbooster.shell_of_revolution.mesh_vehicle`).
+    k : int
+        0 (axial) or 1 (lateral).
+    F0 : float
+        Steady thrust (N): prestress, follower and gimbal terms.
+    share : float
+        Load of this harmonic per newton of Delta F: cos(delta) (k = 0), sin(delta) (k = 1).
+    n_modes : int or None
+        Elastic basis modes (dimensionless); None: all below 4 omega_max (at least 4).
+    omega_max : float
+        Highest Omega (rad/s).
+    gimbal_gain : float
+        K (dimensionless).
+    supported_forward_end : bool
+        Prestress reacted at the nose.
+
+    Returns
+    -------
+    FullModel
+
+    References
+    ----------
+    Beal (1965), eq. 4 and Tech Memo 104, eq. 2.2-2 (the follower and gimbal terms, as
+    :func:`.bending_system`).
+    """
+    dmap = dof_map(vehicle, mesh, k)
+    mats = element_set(vehicle, mesh, k, prestress_F0=F0,
+                       supported_forward_end=supported_forward_end, geometric=True)
+    keep = _axisymmetric(mesh, dmap, k)
+    M, Ke, Kg = (assemble(mesh, dmap, a)[np.ix_(keep, keep)] for a in mats)
+    nodes = mesh_nodes(mesh)
+    r = nodes[3]
+    D = _node_displacements(mesh, dmap, keep, nodes[0], nodes[1])
+    F = share * (D[0, 0] if k == 0 else 0.5 * (D[0, 2] - D[0, 1]))  # unit aft-edge load
+    KL = Ke + Kg
+    w2, Phi, n_rigid = _basis(KL if k == 0 else Ke, M, n_modes, omega_max)
+    if np.any(w2[n_rigid:] <= 0.0):
+        raise ValueError(f"F0 = {F0!r}: the steady thrust buckles harmonic k = {k}")
+    if k == 1:
+        beta = -D[0, 0] / r[0]  # aft cross-section rotation, beta = -U_x / r
+        psi = np.zeros(beta.size)
+        if n_rigid == 2:  # rigid pair -> rotation (beta != 0), translation (beta = 0)
+            b = beta @ Phi[:, :2]
+            h = float(np.hypot(b[0], b[1]))
+            Phi = Phi.copy()
+            Phi[:, :2] = Phi[:, :2] @ (np.array([[b[0], b[1]], [b[1], -b[0]]]) / h)
+            psi = h * (M @ Phi[:, 0])  # rigid pitch angle of a displacement
+        y = 0.5 * (D[0, 2] - D[0, 1])
+        KL = KL - F0 * np.outer(y, beta + gimbal_gain * psi)  # Beal eq. 4, memo eq. 2.2-2
+    w2[:n_rigid] = 0.0
+    tilt = axial_force(np.column_stack([np.zeros(mesh.n_elements), mesh.length]), F0,
+                       r1=mesh.r1, sin_phi=mesh.sin_phi, length=mesh.length,
+                       rho_h=mesh.rho * mesh.thickness,
+                       supported_forward_end=supported_forward_end)
+    P0 = np.append(tilt[:, 0], tilt[-1, 1])  # steady axial load at each node (N, > 0)
+    return FullModel(k=k, mass=M, stiffness=KL, load=F, basis=Phi, omega2=w2,
+                     n_rigid=n_rigid, parts=(mesh, dmap, keep, mats, nodes, D, P0))
+
+
+def modal_model(
+    vehicle: Vehicle, mesh, k: int, *, F0: float, share: float, n_modes: int | None,
+    omega_max: float, gimbal_gain: float, damping_ratio: float, pitch_damping_ratio: float,
+    supported_forward_end: bool, static_correction: bool,
+) -> ModalModel:
+    """The reduced model of harmonic k (0 or 1) per newton of the thrust oscillation.
+
+    Parameters
+    ----------
+    vehicle, mesh, k, F0, share, n_modes, omega_max, gimbal_gain, supported_forward_end
+        As :func:`full_model`.
+    damping_ratio, pitch_damping_ratio : float
+        zeta, zeta_psi (dimensionless).
+    static_correction : bool
+        The static correction of the truncated modes (False: mode displacement).
+
+    Returns
+    -------
+    ModalModel
+
+    References
+    ----------
+    Meirovitch (1986), ch. 7; Craig & Kurdila (2006) (module docstring).
+    """
+    fm = full_model(vehicle, mesh, k, F0=F0, share=share, n_modes=n_modes,
+                    omega_max=omega_max, gimbal_gain=gimbal_gain,
+                    supported_forward_end=supported_forward_end)
+    Psi, xr, A, f = _condense(fm.stiffness, fm.mass, fm.basis, fm.load, static_correction)
+    omega = np.sqrt(fm.omega2)
+    damp = 2.0 * damping_ratio * omega
+    free = np.arange(omega.size) < fm.n_rigid
+    if k == 1 and fm.n_rigid == 2 and gimbal_gain > 0.0:  # the gimbaled pitch: an oscillator
+        free[0] = False
+        damp[0] = 2.0 * pitch_damping_ratio * np.sqrt(max(A[0, 0], 0.0))
+    stiff, mass = fm.node_rows(np.column_stack([Psi, xr]))
+    return ModalModel(k=k, omega_modes=omega, n_rigid=fm.n_rigid, free=free, stiffness=A,
+                      damping=np.diag(damp), load=f, node_x=fm.parts[4][2], rows=ROWS[k],
+                      stiffness_map=stiff[..., :-1], mass_map=mass[..., :-1],
+                      static_stiffness=stiff[..., -1], static_mass=mass[..., -1])
