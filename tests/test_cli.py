@@ -285,18 +285,35 @@ def test_output_that_is_a_file_is_refused_before_the_analysis(tmp_path, capsys, 
     assert len(err.splitlines()) == 1 and err.count("--output") == 1 and str(target) in err
 
 
+#: ``flexbooster run`` (flexbooster.cli.main) whose analysis says "analysing" on stderr as it
+#: starts and then waits for a signal: the signal lands at a known moment, never after the run.
+_WAITS_IN_THE_ANALYSIS = r"""
+import signal, sys
+import flexbooster.analysis as analysis
+import flexbooster.cli as cli
+
+def analyze(*args, **kwargs):
+    sys.stderr.write("analysing\n")
+    sys.stderr.flush()
+    while True:
+        signal.pause()
+
+analysis.analyze = analyze
+if hasattr(cli, "analyze"):
+    cli.analyze = analyze
+cli.main(sys.argv[1:])
+"""
+
+
 def test_sigterm_cleans_up_like_ctrl_c(tmp_path):
     """SIGTERM during a run: exit 130, no temporary .part file left behind."""
     import signal
-    import time
 
-    proc = subprocess.Popen([sys.executable, "-m", "flexbooster.cli", "run", "-q", "-o",
+    proc = subprocess.Popen([sys.executable, "-c", _WAITS_IN_THE_ANALYSIS, "run", "-q", "-o",
                              str(tmp_path)], stderr=subprocess.PIPE, text=True)
-    time.sleep(3.0)
+    assert proc.stderr.readline() == "analysing\n"
     proc.send_signal(signal.SIGTERM)
-    _, err = proc.communicate(timeout=60)
-    if proc.returncode == 0:  # finished before the signal (a very fast machine): nothing to test
-        pytest.skip("the run finished before SIGTERM")
+    _, err = proc.communicate(timeout=600)  # a hang guard, not a measurement
     assert proc.returncode == 130 and "interrupted" in err
     assert not [p for p in tmp_path.rglob("*") if ".part" in p.name]
 
