@@ -28,6 +28,16 @@ def _sigint_raises_keyboard_interrupt():
     yield
 
 
+@pytest.fixture(scope="session")
+def default_results():
+    """``analyze(default_case())``, computed once per test process and shared by every test
+    that reads the full analysis of the default case (figures' data and vehicle regions
+    included).  Read it, never modify it: the next test sees the same object."""
+    from flexbooster import analyze, default_case
+
+    return analyze(default_case())
+
+
 @pytest.fixture
 def case_dict() -> dict:
     """The embedded default case as a fresh, mutable mapping."""

@@ -20,11 +20,8 @@ from flexbooster.present.summary import TERMINAL_BANDS, print_summary
 
 
 @pytest.fixture(scope="module")
-def results():
-    from flexbooster.analysis import analyze
-    from flexbooster.case import default_case
-
-    return analyze(default_case())
+def results(default_results):
+    return default_results
 
 
 def _summary_text(results, width: int) -> str:

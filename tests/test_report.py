@@ -16,8 +16,6 @@ import xml.etree.ElementTree as ET
 import numpy as np
 import pytest
 
-from flexbooster.analysis import analyze
-from flexbooster.case import default_case
 from flexbooster.errors import AnalysisWarning
 from flexbooster.memo.charts import nodal_lines, nodal_pattern_data
 from flexbooster.present.outputs import figure_svgs
@@ -37,8 +35,8 @@ SVG = "{http://www.w3.org/2000/svg}"
 
 
 @pytest.fixture(scope="module")
-def results():
-    return analyze(default_case())
+def results(default_results):
+    return default_results
 
 
 @pytest.fixture(scope="module")
