@@ -46,6 +46,17 @@ def case_dict() -> dict:
     return copy.deepcopy(tomllib.loads(default_case_text()))
 
 
+@pytest.fixture
+def small_case_file(case_dict, tmp_path):
+    """The default case with a small truncation and 40 Omega points, as a case file: every
+    stage of a run in about a second, for tests whose evidence needs no full truncation."""
+    case_dict["truncation"].update(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)
+    case_dict["thrust"]["n_omega"] = 40
+    path = tmp_path / "small.toml"
+    path.write_text(dump_toml(case_dict))
+    return path
+
+
 def dump_toml(data: dict, prefix: str = "") -> str:
     """A minimal TOML writer for test cases: scalars first, then sub-tables."""
     import json

@@ -76,7 +76,8 @@ def test_default_case_in_memo_range_without_warnings(default_results):
     ("changes", "codes"),
     [
         ({"thrust": {"K": 0.0}}, {"mathieu-a-range", "mathieu-q-range"}),
-        ({"thrust": {"omega_min": "1 rad/s"}}, {"mathieu-a-range", "mathieu-q-range"}),
+        pytest.param({"thrust": {"omega_min": "1 rad/s"}}, {"mathieu-a-range", "mathieu-q-range"},
+                     marks=pytest.mark.slow),  # the beam action down to 1 rad/s
         ({"thrust": {"gamma": 0.0}}, {"mathieu-q-range"}),
         ({"booster": {"thickness": "0.3 m"}}, {"thin-shell"}),
     ],
@@ -181,6 +182,7 @@ def test_same_case_in_si_and_inch_pound_units(case_dict, default_results):
     assert not bad, bad[:8]
 
 
+@pytest.mark.slow
 def test_oversized_stability_table_becomes_a_warning(case_dict, monkeypatch):
     """A truncation whose table would not fit in memory: the analysis goes on without the table
     and says so (warning in the results), instead of crashing."""

@@ -778,6 +778,7 @@ def test_bad_range(lo, hi, name):
         instability_regions(*mathieu(0.1), lo, hi)
 
 
+@pytest.mark.slow
 def test_overflow_raises_instead_of_inf():
     # a violently unstable point: the monodromy would overflow; ValueError, never inf / NaN
     for C in (None, [[0.01]]):

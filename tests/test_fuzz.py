@@ -209,6 +209,7 @@ def _run(data: dict, start: float, regions: bool = False) -> str:
     return "ok"
 
 
+@pytest.mark.slow
 @settings(settings.get_profile(PROFILE))
 @given(valid_cases())
 def test_valid_case_gives_finite_results_or_a_documented_error(data):

@@ -134,6 +134,7 @@ def small_case():
     return load_case(data)
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(not PARALLEL, reason="no fork on this platform")
 def test_analysis_and_files_are_the_same_with_workers(small_case, tmp_path):
     one = analysis.analyze(small_case, workers=1)
@@ -149,6 +150,7 @@ def test_analysis_and_files_are_the_same_with_workers(small_case, tmp_path):
         assert one_bytes == (tmp_path / "two" / name).read_bytes(), name
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(not PARALLEL, reason="no fork on this platform")
 def test_files_without_figures_are_the_same_with_workers(small_case, tmp_path):
     """``run --no-figures``: the workers are free, and one writes the stability table's CSV
@@ -164,6 +166,7 @@ def test_files_without_figures_are_the_same_with_workers(small_case, tmp_path):
     assert not multiprocessing.active_children()
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(not PARALLEL, reason="no fork on this platform")
 def test_one_pool_shared_by_the_analysis_and_the_files(small_case, tmp_path):
     """flexbooster run's arrangement: one TaskPool for analyze and write_outputs (the
@@ -186,6 +189,7 @@ def test_one_pool_shared_by_the_analysis_and_the_files(small_case, tmp_path):
     assert not multiprocessing.active_children()
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("workers, figures", [(1, False), (2, False), (2, True)])
 def test_while_waiting_is_called_once_before_the_set_is_published(small_case, tmp_path,
                                                                   workers, figures):

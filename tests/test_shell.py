@@ -297,6 +297,7 @@ def test_omega_0k_formula():
         assert set(f.mode_type[sel]) == {"axial"}
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("method", METHODS)
 def test_mode_counts_up_to_200(method):
     # No overflow, NaN or negative squared frequency for 200 modes per index (acceptance);

@@ -353,6 +353,7 @@ def test_output_suffix_and_scheduler_workers_are_checked(tmp_path, capsys):
 # ---------------------------------------------------- tier 2: against serial analyze (Dask)
 
 
+@pytest.mark.slow
 def test_local_cluster_matches_serial_and_records_failures(local_client, tmp_path):
     base = tiny_case()
     # SOFT_E: a soft booster with strong beam-action bands (non-zero growth rates)
@@ -383,6 +384,7 @@ def test_local_cluster_matches_serial_and_records_failures(local_client, tmp_pat
     assert stored.attrs["sweep_fingerprint"] == ds.attrs["sweep_fingerprint"]
 
 
+@pytest.mark.slow
 def test_dask_scheduler_subprocess_via_cli(scheduler_address, tmp_path, capsys):
     base = tiny_case()
     path = write_sweep(
@@ -409,6 +411,7 @@ def test_dask_scheduler_subprocess_via_cli(scheduler_address, tmp_path, capsys):
     assert (tmp_path / "sweep.svg").exists() and (tmp_path / "sweep.html").exists()
 
 
+@pytest.mark.slow
 def test_scheduler_from_environment_variable(scheduler_address, tmp_path, capsys, monkeypatch):
     monkeypatch.setenv("DASK_SCHEDULER_ADDRESS", scheduler_address)
     path = write_sweep(tmp_path, '"thrust.K" = [0.5]', extra="stability = false")
@@ -416,6 +419,7 @@ def test_scheduler_from_environment_variable(scheduler_address, tmp_path, capsys
     assert code == 0 and f"scheduler {scheduler_address}" in err
 
 
+@pytest.mark.slow
 def test_failed_task_marks_its_points_and_the_rest_complete(monkeypatch):
     # a task that raises instead of returning (what a dead worker's KilledWorker does) records
     # its points as errors; the other tasks complete (in-process cluster, to patch the task)
