@@ -46,6 +46,15 @@ def case_dict() -> dict:
     return copy.deepcopy(tomllib.loads(default_case_text()))
 
 
+@pytest.fixture(scope="session")
+def default_svgs(default_results):
+    """The SVG of every figure of :func:`default_results` (``figure_svgs``), drawn once per
+    test process: the report's and the figures' tests read the same drawings."""
+    from flexbooster.present.outputs import figure_svgs
+
+    return figure_svgs(default_results)
+
+
 @pytest.fixture
 def small_case_file(case_dict, tmp_path):
     """The default case with a small truncation and 40 Omega points, as a case file: every

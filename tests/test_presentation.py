@@ -162,11 +162,9 @@ def test_figures_laid_out_once_keep_every_text_inside_and_apart(results):
 
 
 @pytest.mark.slow
-def test_danger_map_tooltips_and_axes(results):
+def test_danger_map_tooltips_and_axes(results, default_svgs):
     # one SVG <title> per band, no script, Omega in Hz on the x axis
-    from flexbooster.present.outputs import figure_svgs
-
-    svg = figure_svgs(results)["danger-map"]
+    svg = default_svgs["danger-map"]
     titles = re.findall(r"<title>([^<]*)</title>", svg)
     # one tooltip per band (a resonance's stem and its head carry the same one)
     assert len(set(titles)) == len(results.danger.bands)

@@ -18,7 +18,6 @@ import pytest
 
 from flexbooster.errors import AnalysisWarning
 from flexbooster.memo.charts import nodal_lines, nodal_pattern_data
-from flexbooster.present.outputs import figure_svgs
 from flexbooster.present.plotting.patterns import nodal_pattern, nodal_patterns
 from flexbooster.present.report import (
     FIGURES,
@@ -40,8 +39,8 @@ def results(default_results):
 
 
 @pytest.fixture(scope="module")
-def svgs(results):
-    return figure_svgs(results)
+def svgs(default_svgs):
+    return default_svgs
 
 
 @pytest.fixture(scope="module")
