@@ -369,15 +369,16 @@ def test_error_lines(tmp_path, capsys, edit, argv, line):
 
 
 @pytest.mark.slow
-def test_stability_never_replaces_half_of_a_run(tmp_path, capsys):
+def test_stability_never_replaces_half_of_a_run(tmp_path, capsys, small_case_file):
     # issue 17 item 5: `stability -o DIR` used to replace the CSV of a run in DIR while its
     # results.json kept the old numbers; now it writes files of its own, on the case's range
     from flexbooster.cli import STABILITY_FILES
 
-    assert run_cli(["run", "-q", "--no-figures", "-o", str(tmp_path)]) == 0
-    before = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
-    assert run_cli(["stability", "-q", "-o", str(tmp_path)]) == 0
-    after = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
+    out = tmp_path / "out"
+    assert run_cli(["run", str(small_case_file), "-q", "--no-figures", "-o", str(out)]) == 0
+    before = {p.name: p.read_bytes() for p in out.iterdir()}
+    assert run_cli(["stability", str(small_case_file), "-q", "-o", str(out)]) == 0
+    after = {p.name: p.read_bytes() for p in out.iterdir()}
     assert {n: after[n] for n in before} == before  # every file of the run untouched
     assert set(after) - set(before) == set(STABILITY_FILES)
     # the default range is the case's: the same table as the run's (same equations, range)
