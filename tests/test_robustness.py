@@ -73,12 +73,14 @@ def run_cli(argv):
 
 @pytest.fixture
 def alarm():
-    """A call that hangs fails after 20 s instead of blocking the suite (issue 18: no hang)."""
+    """A call that hangs fails instead of blocking the suite: a hang guard (10 min, far above
+    any machine's load), not a measurement; the bounds themselves are the deterministic caps
+    tested below."""
     def handler(signum, frame):
-        raise TimeoutError("the call did not return within 20 s")
+        raise TimeoutError("the call did not return within 600 s")
 
     previous = signal.signal(signal.SIGALRM, handler)
-    signal.alarm(20)
+    signal.alarm(600)
     yield
     signal.alarm(0)
     signal.signal(signal.SIGALRM, previous)
