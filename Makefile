@@ -5,7 +5,7 @@ PY     := $(VENV)/bin/python
 STAMP  := $(VENV)/.installed
 OUT    ?= flexbooster-results
 
-.PHONY: run test lint bench clean venv test-browser browser fuzz
+.PHONY: run test test-fast lint bench clean venv test-browser browser fuzz
 
 venv: $(STAMP)
 
@@ -22,10 +22,17 @@ run: $(STAMP)
 lint: $(STAMP)
 	$(VENV)/bin/ruff check .
 
+# The whole suite (what CI runs); `test-fast` leaves out the tests marked slow (the edit loop).
+# Both in parallel on every CPU; worksteal: an idle worker takes tests queued for a busy one.
 test: export OPENBLAS_NUM_THREADS = 1
 test: $(STAMP)
 	$(VENV)/bin/ruff check .
-	$(PY) -m pytest -q -rs -n auto --durations=15
+	$(PY) -m pytest -q -rs -n auto --dist worksteal --durations=15
+
+test-fast: export OPENBLAS_NUM_THREADS = 1
+test-fast: $(STAMP)
+	$(VENV)/bin/ruff check .
+	$(PY) -m pytest -q -rs -n auto --dist worksteal -m "not slow" --durations=10
 
 # The report in headless Chromium alone (`make test` runs it too, and .ci/run calls `make
 # browser` first so that CI does): `browser` installs Debian's chromium and chromium-driver
@@ -52,12 +59,12 @@ test-browser: export OPENBLAS_NUM_THREADS = 1
 test-browser: browser
 	$(PY) -m pytest -q -rs tests/test_browser.py tests/test_report.py
 
-# The long property-based fuzz of issue 18 (hypothesis, fixed seed): 1,000 valid cases over the
+# The long property-based fuzz (hypothesis, fixed seed): 1,000 valid cases over the
 # documented input space through the API and 1,000 invalid ones; prints the counts (ok,
 # documented errors, internal errors, NaN, over the budget) and fails unless the last three
 # are 0.  `make test` runs the same file with a bounded number of examples.  A third of the
 # valid cases have a [vehicle] table, one in five runs the vehicle's regions (budget 20 s).
-# About 6-7 min on 2 shared cores (run 5; the draws of runs 1-3 took 17-42 min);
+# About 6-9 min on 2 shared cores;
 # FLEXBOOSTER_FUZZ_EXAMPLES=200 for a shorter run, FLEXBOOSTER_FUZZ_LOG=FILE for one line per
 # case (time, outcome, regions, case); the budget is each case's CPU time.
 fuzz: export OPENBLAS_NUM_THREADS = 1

@@ -28,12 +28,42 @@ def _sigint_raises_keyboard_interrupt():
     yield
 
 
+@pytest.fixture(scope="session")
+def default_results():
+    """``analyze(default_case())``, computed once per test process and shared by every test
+    that reads the full analysis of the default case (figures' data and vehicle regions
+    included).  Read it, never modify it: the next test sees the same object."""
+    from flexbooster import analyze, default_case
+
+    return analyze(default_case())
+
+
 @pytest.fixture
 def case_dict() -> dict:
     """The embedded default case as a fresh, mutable mapping."""
     from flexbooster.case import default_case_text
 
     return copy.deepcopy(tomllib.loads(default_case_text()))
+
+
+@pytest.fixture(scope="session")
+def default_svgs(default_results):
+    """The SVG of every figure of :func:`default_results` (``figure_svgs``), drawn once per
+    test process: the report's and the figures' tests read the same drawings."""
+    from flexbooster.present.outputs import figure_svgs
+
+    return figure_svgs(default_results)
+
+
+@pytest.fixture
+def small_case_file(case_dict, tmp_path):
+    """The default case with a small truncation and 40 Omega points, as a case file: every
+    stage of a run in about a second, for tests whose evidence needs no full truncation."""
+    case_dict["truncation"].update(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)
+    case_dict["thrust"]["n_omega"] = 40
+    path = tmp_path / "small.toml"
+    path.write_text(dump_toml(case_dict))
+    return path
 
 
 def dump_toml(data: dict, prefix: str = "") -> str:

@@ -426,13 +426,6 @@ def test_beam_damping_shrinks_regions_and_sets_critical_gamma():
 # --------------------------------------------------------------------------------------------
 # Pipeline
 # --------------------------------------------------------------------------------------------
-@pytest.fixture(scope="module")
-def default_results():
-    from flexbooster.analysis import analyze
-
-    return analyze(default_case())
-
-
 @pytest.mark.slow
 def test_results_json_holds_the_bands(default_results):
     # the verdicts follow from the bands (issue 12): beam action "unstable" iff a band exists;

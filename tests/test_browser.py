@@ -14,8 +14,6 @@ import shutil
 
 import pytest
 
-from flexbooster.analysis import analyze
-from flexbooster.case import default_case
 from flexbooster.present.outputs import write_outputs
 from flexbooster.present.report import FIGURES, SECTIONS
 
@@ -46,9 +44,9 @@ pytestmark = pytest.mark.skipif(_skip_reason() is not None, reason=str(_skip_rea
 
 
 @pytest.fixture(scope="module")
-def report(tmp_path_factory):
+def report(tmp_path_factory, default_results):
     folder = tmp_path_factory.mktemp("report")
-    write_outputs(analyze(default_case()), folder)
+    write_outputs(default_results, folder)
     return folder / "report.html"
 
 

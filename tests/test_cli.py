@@ -21,6 +21,7 @@ def run_cli(argv):
     return info.value.code
 
 
+@pytest.mark.slow
 def test_run_default_writes_results(tmp_path, capsys):
     assert run_cli(["run", "-o", str(tmp_path)]) == 0
     out = capsys.readouterr().out
@@ -40,6 +41,7 @@ def test_run_default_writes_results(tmp_path, capsys):
     assert not [n for n in names if n.endswith(".part")]  # no temporary leftovers
 
 
+@pytest.mark.slow
 def test_init_then_run(tmp_path, capsys):
     path = tmp_path / "my.toml"
     assert run_cli(["init", str(path)]) == 0
@@ -70,6 +72,8 @@ def test_not_toml_exit_code_2(tmp_path, capsys):
 
 def test_warning_reaches_summary_and_results(case_dict, tmp_path, capsys):
     case_dict["booster"]["thickness"] = "0.2 m"  # h/R2 = 0.2/3.3 > 1/20
+    case_dict["truncation"].update(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)  # a second's run
+    case_dict["thrust"]["n_omega"] = 40
     case_file = tmp_path / "thick.toml"
     case_file.write_text(dump_toml(case_dict))
     assert run_cli(["run", str(case_file), "-o", str(tmp_path), "--no-figures"]) == 0
@@ -78,6 +82,7 @@ def test_warning_reaches_summary_and_results(case_dict, tmp_path, capsys):
     assert codes == ["thin-shell"]
 
 
+@pytest.mark.slow
 def test_real_process_no_traceback(tmp_path, case_dict):
     """The installed entry point, as a user runs it: exit 2, one line and no traceback, the
     same for a case read from a file and from a pipe."""
@@ -101,6 +106,7 @@ def test_version(capsys):
     assert "0.1.0" in capsys.readouterr().out
 
 
+@pytest.mark.slow
 def test_stability_command(tmp_path, capsys):
     """`flexbooster stability` on a narrow range: its table equals the rows of the full run
     that fall in that range (the same equations on the same shell frequencies)."""
@@ -125,6 +131,7 @@ def test_stability_command_bad_range(capsys):
                    "--omega-max = 100.0 rad/s")
 
 
+@pytest.mark.slow
 def test_simulate_command(tmp_path, capsys):
     code = run_cli(
         ["simulate", "--omega", "300", "--tau-max", "5", "--n-out", "21", "-o", str(tmp_path)]
@@ -150,22 +157,24 @@ def test_simulate_bad_input(capsys, args, words):
     assert words in err and "Traceback" not in err
 
 
-def test_format_json_is_results_json(tmp_path, capsys):
+def test_format_json_is_results_json(tmp_path, capsys, small_case_file):
     """--format json prints exactly what results.json holds, and nothing else, on stdout."""
-    code = run_cli(["run", "--format", "json", "--no-figures", "-o", str(tmp_path)])
+    code = run_cli(["run", str(small_case_file), "--format", "json", "--no-figures", "-o",
+                    str(tmp_path / "out")])
     assert code == 0
     out, err = capsys.readouterr()
     printed = json.loads(out)  # the whole of stdout is one JSON document
-    assert printed == json.loads((tmp_path / "results.json").read_text())
+    assert printed == json.loads((tmp_path / "out" / "results.json").read_text())
     assert "wrote" in err and "wrote" not in out
 
 
-def test_quiet_prints_nothing(tmp_path, capsys):
-    assert run_cli(["run", "-q", "--no-figures", "-o", str(tmp_path)]) == 0
+def test_quiet_prints_nothing(tmp_path, capsys, small_case_file):
+    out = tmp_path / "out"
+    assert run_cli(["run", str(small_case_file), "-q", "--no-figures", "-o", str(out)]) == 0
     assert capsys.readouterr() == ("", "")
-    assert (tmp_path / "report.html").exists()  # the work is still done
-    assert run_cli(["stability", "-q", "--omega-min", "100", "--omega-max", "150",
-                    "-o", str(tmp_path)]) == 0
+    assert (out / "report.html").exists()  # the work is still done
+    assert run_cli(["stability", str(small_case_file), "-q", "--omega-min", "100",
+                    "--omega-max", "150", "-o", str(out)]) == 0
     assert capsys.readouterr() == ("", "")
 
 
@@ -183,15 +192,16 @@ def test_help_has_examples_and_exit_codes(capsys, argv):
     assert "Exit codes" in out and "130" in out
 
 
-def test_progress_reports_every_stage_in_order():
+def test_progress_reports_every_stage_in_order(small_case_file):
     from flexbooster.analysis import STAGES, VEHICLE_REGIONS_STAGE, analyze
-    from flexbooster.case import default_case
+    from flexbooster.case import load_case
 
     seen = []
-    analyze(default_case(), progress=seen.append)
+    analyze(load_case(small_case_file), progress=seen.append)
     assert seen == [*STAGES, VEHICLE_REGIONS_STAGE]  # the vehicle regions last (issue 15)
     seen.clear()
-    analyze(default_case(), beam_action=False, progress=seen.append, vehicle=False)
+    analyze(load_case(small_case_file), beam_action=False, progress=seen.append,
+            vehicle=False)
     assert seen == [*STAGES[:3], STAGES[-1]]  # the skipped stages are not announced
 
 
@@ -239,6 +249,7 @@ def test_progress_bar_shows_the_estimate_and_flags_half_the_budget(monkeypatch, 
     assert "cost-estimate" in {w["code"] for w in data["warnings"]}
 
 
+@pytest.mark.slow
 def test_two_runs_write_byte_identical_files(tmp_path, case_dict, capsys):
     """Determinism (issue 18 item 5): no time stamp in report.html (unless SOURCE_DATE_EPOCH),
     no date in the SVG metadata, fixed SVG ids: two runs of one case give the same bytes."""
@@ -319,15 +330,16 @@ def test_error_lines(tmp_path, capsys, edit, argv, line):
 
 
 @pytest.mark.slow
-def test_stability_never_replaces_half_of_a_run(tmp_path, capsys):
+def test_stability_never_replaces_half_of_a_run(tmp_path, capsys, small_case_file):
     # issue 17 item 5: `stability -o DIR` used to replace the CSV of a run in DIR while its
     # results.json kept the old numbers; now it writes files of its own, on the case's range
     from flexbooster.cli import STABILITY_FILES
 
-    assert run_cli(["run", "-q", "--no-figures", "-o", str(tmp_path)]) == 0
-    before = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
-    assert run_cli(["stability", "-q", "-o", str(tmp_path)]) == 0
-    after = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
+    out = tmp_path / "out"
+    assert run_cli(["run", str(small_case_file), "-q", "--no-figures", "-o", str(out)]) == 0
+    before = {p.name: p.read_bytes() for p in out.iterdir()}
+    assert run_cli(["stability", str(small_case_file), "-q", "-o", str(out)]) == 0
+    after = {p.name: p.read_bytes() for p in out.iterdir()}
     assert {n: after[n] for n in before} == before  # every file of the run untouched
     assert set(after) - set(before) == set(STABILITY_FILES)
     # the default range is the case's: the same table as the run's (same equations, range)
@@ -374,6 +386,7 @@ def test_simulate_time_errors(capsys, extra, line):
     assert capsys.readouterr().err.strip() == f"flexbooster: error: {line}"
 
 
+@pytest.mark.slow
 def test_simulate_prints_a_verdict_per_mode(tmp_path, capsys):
     assert run_cli(["simulate", "--omega", "300", "--tau-max", "5", "--n-out", "21",
                     "-o", str(tmp_path)]) == 0
@@ -415,7 +428,7 @@ def test_the_command_runs_one_blas_thread_unless_the_user_chose(user, expected):
         assert threads == expected[0]
 
 
-def test_a_fault_of_the_summary_loses_no_result(tmp_path, capsys, monkeypatch):
+def test_a_fault_of_the_summary_loses_no_result(tmp_path, capsys, monkeypatch, small_case_file):
     """The summary is printed once the files are published: an error in it (a bug) is an
     internal error (exit 1, one line) and the set stays whole."""
     import flexbooster.present.summary as summary
@@ -424,8 +437,9 @@ def test_a_fault_of_the_summary_loses_no_result(tmp_path, capsys, monkeypatch):
         raise RuntimeError("summary fault")
 
     monkeypatch.setattr(summary, "print_summary", broken)
-    assert run_cli(["run", "--no-figures", "-o", str(tmp_path)]) == 1
+    out = tmp_path / "out"
+    assert run_cli(["run", str(small_case_file), "--no-figures", "-o", str(out)]) == 1
     err = capsys.readouterr().err
     assert "internal error: RuntimeError: summary fault" in err
-    assert json.loads((tmp_path / "results.json").read_text())["stability"]["count"] > 0
-    assert (tmp_path / "manifest.json").exists()
+    assert json.loads((out / "results.json").read_text())["stability"]["count"] > 0
+    assert (out / "manifest.json").exists()

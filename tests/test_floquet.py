@@ -11,6 +11,7 @@ from __future__ import annotations
 import json
 import subprocess
 import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -267,35 +268,26 @@ def test_damped_step_counts_do_not_depend_on_the_time_unit():
         assert np.all(np.abs(damped - 2 * undamped) <= 1), (damped, undamped)
 
 
-def three_modes(zeta: float):
-    """3 DOF with steady frequencies 3, 40, 250 (rad/s), non-symmetric B (gamma = 0.05 of
-    w_i w_k in the modal frame), non-proportional damping of ratio ~zeta (0: none), M != I."""
-    rng = np.random.default_rng(0)
-    wn = np.array([3.0, 40.0, 250.0])
-    Q, _ = np.linalg.qr(rng.standard_normal((3, 3)))
-    X = rng.standard_normal((3, 3))
-    M = np.eye(3) + 0.1 * X @ X.T / 3.0
-    T = np.linalg.cholesky(M) @ Q  # M^-1 A = T^-T diag(wn^2) T^T: frequencies wn exactly
-    A = T @ np.diag(wn**2) @ T.T
-    Cm = np.diag(2.0 * wn) + np.sqrt(np.outer(wn, wn)) * rng.uniform(-0.5, 0.5, (3, 3))
-    B = 0.05 * T @ (np.outer(wn, wn) * rng.standard_normal((3, 3))) @ T.T
-    return M, (zeta * T @ Cm @ T.T if zeta else None), A, B
+#: A 3-DOF system (steady frequencies 3, 40, 250 rad/s, M != I, non-symmetric B, damping of
+#: ratio ~zeta or none) and its multipliers from the monodromy of solve_ivp (DOP853, rtol
+#: 1e-12), stored by tests/data/make_floquet_reference.py, which names the system and method.
+THREE_MODES = json.loads((Path(__file__).parent / "data" / "floquet_three_modes.json")
+                         .read_text())["systems"]
 
 
-@pytest.mark.parametrize("zeta", [0.0, 0.01])
-def test_multimode_exponents_against_solve_ivp_damped_as_undamped(zeta):
-    # three_modes (frequencies 3, 40, 250 rad/s) at Omega = 4 (156 steps of the fast mode per
-    # period), 43 (sum of modes 1, 2), 80 (2 w2), 250, 500 (2 w3) rad/s, default step_phase
-    # 0.06: every exponent against the independent monodromy of solve_ivp (DOP853, rtol
-    # 1e-12), |d lambda| <= 5e-9 Omega for the damped system (zeta = 0.01) as for the
-    # undamped one (measured: 3.4e-9 Omega at Omega = 4 for both, <= 1e-10 Omega above 40;
-    # before the fix of the damped cost model 2e-6 Omega at Omega = 4, damped)
-    M, C, A, B = three_modes(zeta)
-    for om in (4.0, 43.0, 80.0, 250.0, 500.0):
-        rho = floquet_multipliers(M, C, A, B, [om])[0]
-        ref = np.linalg.eigvals(ivp_monodromy(M, np.zeros((3, 3)) if C is None else C, A, B,
-                                              om))
-        assert _exponent_distance(rho, ref, om) <= 5e-9 * om, om
+@pytest.mark.parametrize("stored", THREE_MODES, ids=lambda system: f"zeta={system['zeta']}")
+def test_multimode_exponents_against_solve_ivp_damped_as_undamped(stored):
+    # THREE_MODES at Omega = 4 (156 steps of the fast mode per period), 43 (sum of modes 1,
+    # 2), 80 (2 w2), 250, 500 (2 w3) rad/s, default step_phase 0.06: every exponent against
+    # the independent monodromy of solve_ivp (DOP853, rtol 1e-12, stored), |d lambda| <=
+    # 5e-9 Omega for the damped system (zeta = 0.01) as for the undamped one (measured:
+    # 3.4e-9 Omega at Omega = 4 for both, <= 1e-10 Omega above 40)
+    M, C, A, B = (None if stored[x] is None else np.array(stored[x]) for x in "MCAB")
+    assert len(stored["multipliers"]) == 5
+    for om, ref in stored["multipliers"].items():
+        rho = floquet_multipliers(M, C, A, B, [float(om)])[0]
+        ref = np.array([complex(*z) for z in ref])
+        assert _exponent_distance(rho, ref, float(om)) <= 5e-9 * float(om), om
 
 
 @pytest.mark.parametrize("eps", [0.005, 0.01])
@@ -786,6 +778,7 @@ def test_bad_range(lo, hi, name):
         instability_regions(*mathieu(0.1), lo, hi)
 
 
+@pytest.mark.slow
 def test_overflow_raises_instead_of_inf():
     # a violently unstable point: the monodromy would overflow; ValueError, never inf / NaN
     for C in (None, [[0.01]]):

@@ -2,12 +2,13 @@
 
 Every valid case (each field within its documented range, small truncations so that an
 example is fast) gives finite results or a documented error (a one-line ``CaseError``:
-refused budget, a load beyond the structure) within its budget, with no numpy overflow
-warning on the way; every invalid one (one field replaced by a value that breaks its rule) a
-one-line ``CaseError``.  About a third of the valid cases have a ``[vehicle]`` table (the
-memo vehicle's settings, or segments: cylinders and cones), so the vehicle modes run; one in
-five runs the vehicle's parametric regions too (``analyze(..., vehicle=True)``) under a
-smaller budget (:data:`REGIONS_BUDGET`), the stage whose cost the budget must bound.
+refused budget, a load beyond the structure), with no numpy overflow warning on the way
+(and, in the long profile only, within its budget of CPU time); every invalid one (one field
+replaced by a value that breaks its rule) a one-line ``CaseError``.  About a third of the
+valid cases have a ``[vehicle]`` table (the memo vehicle's settings, or segments: cylinders
+and cones), so the vehicle modes run; one in five runs the vehicle's parametric regions too
+(``analyze(..., vehicle=True)``) under a smaller budget (:data:`REGIONS_BUDGET`), the stage
+whose cost the budget must bound.
 
 Profiles (environment variable ``FLEXBOOSTER_FUZZ``): ``ci`` (default; a bounded number of
 examples so that this file stays well under 60 s on 2 cores) and ``long`` (``make fuzz``:
@@ -200,12 +201,15 @@ def _run(data: dict, start: float, regions: bool = False) -> str:
         raise
     except Exception as exc:  # noqa: BLE001 - any other exception is an internal error
         return f"internal: {type(exc).__name__}: {exc}"
+    if PROFILE != "long":  # the CPU time is a measurement of the cost model: `make fuzz` only
+        return "ok"
     elapsed = time.process_time() - start  # CPU time: a loaded machine does not count
     if elapsed > case.max_seconds and not any(w.code in BUDGET_WARNINGS for w in res.warnings):
         return f"over-budget: {elapsed:.1f} s CPU"
     return "ok"
 
 
+@pytest.mark.slow
 @settings(settings.get_profile(PROFILE))
 @given(valid_cases())
 def test_valid_case_gives_finite_results_or_a_documented_error(data):

@@ -1,14 +1,15 @@
 """Tests of flexbooster.memo.pitch: Mathieu parameters, characteristic exponent, psi(tau).
 
 Tiers: exact limits (q = 0, symmetry), literature values (scipy/A&S characteristic values,
-an independent 50-digit mpmath Taylor-series monodromy), invariants and methods agreeing
-(Floquet vs Hill, O(q^4) of the corrected memo formula, O(q^2) of the three-term psi, growth
-rate against direct integration).
+an independent 50-digit mpmath Taylor-series monodromy, stored in tests/data), invariants and
+methods agreeing (Floquet vs Hill, O(q^4) of the corrected memo formula, O(q^2) of the
+three-term psi, growth rate against direct integration).
 """
 
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -17,96 +18,22 @@ from scipy import integrate, special
 from flexbooster.memo import pitch
 from harness import assert_close  # noqa: E402
 
-mpmath = pytest.importorskip("mpmath")
+DATA = Path(__file__).parent / "data"
 
 
 # --------------------------------------------------------------------------------------------
 # Independent references
 # --------------------------------------------------------------------------------------------
 
-
-def mp_discriminant(a: float, q: float, dps: int = 50) -> float:
-    """y1(pi) for y'' + (a - 2q cos 2t) y = 0, y(0) = 1, y'(0) = 0: Taylor series about 0.
-
-    c_(k+2) (k+2)(k+1) = -a c_k + 2q sum_m (-4)^m / (2m)! c_(k-2m), summed at t = pi with
-    mpmath at ``dps`` digits until the terms fall below 10^-(dps-5) (entire function).
-    """
-    with mpmath.workdps(dps):
-        a_, q_ = mpmath.mpf(a), mpmath.mpf(q)
-        cosc = []  # Taylor coefficients of cos 2t (even powers only)
-        c = [mpmath.mpf(1), mpmath.mpf(0)]
-        t = mpmath.pi
-        total = c[0]
-        tk = mpmath.mpf(1)
-        k = 0
-        small = mpmath.mpf(10) ** (-(dps - 5))
-        quiet = 0
-        while quiet < 8:
-            m_max = k // 2
-            while len(cosc) <= m_max:
-                m = len(cosc)
-                cosc.append((-4) ** m / mpmath.factorial(2 * m))
-            conv = mpmath.fsum(cosc[m] * c[k - 2 * m] for m in range(m_max + 1))
-            c.append((-a_ * c[k] + 2 * q_ * conv) / ((k + 2) * (k + 1)))
-            k += 1
-            tk *= t
-            term = c[k] * tk
-            total += term
-            quiet = quiet + 1 if abs(term) < small * max(1, abs(total)) else 0
-        return float(total)
-
-
-def scipy_count(a: float, q: float) -> int:
-    """Number of characteristic values a_0, b_1, a_1, b_2, ... below a (scipy.special)."""
-    n = 0
-    for r in range(0, 30):
-        n += int(special.mathieu_a(r, q) < a)
-        if r >= 1:
-            n += int(special.mathieu_b(r, q) < a)
-    return n
-
-
-def reference_beta(a: float, q: float) -> complex:
-    """beta from the mpmath discriminant and the scipy band index (stable band r: count 2r+1)."""
-    D = mp_discriminant(a, q)
-    count = scipy_count(a, q)
-    if abs(D) <= 1.0:
-        r = (count - 1) // 2
-        return complex(r + np.arccos((-1) ** r * D) / np.pi)
-    return complex(count // 2, np.arccosh(abs(D)) / np.pi)
-
-
-# (a, q): memo range, first-tongue interior, a < a_0, higher tongues and stable bands.
-EXPONENT_POINTS = [
-    (0.2, 0.01),
-    (0.5, 0.03),
-    (0.9, 0.05),
-    (0.99, 0.05),
-    (1.0, 0.05),
-    (1.04, 0.05),
-    (0.1, 0.5),
-    (0.5, 1.0),
-    (2.0, 0.5),
-    (3.0, 1.0),
-    (4.1, 2.0),
-    (-0.2, 0.1),
-    (-1.0, 1.0),
-    (6.0, 2.0),
-    (9.2, 3.0),
-    (10.0, 5.0),
-    (16.2, 4.0),
-    (20.0, 5.0),
-    (25.0, 3.0),
-    (2.5, 7.0),
-    (40.0, 20.0),
-    (0.7, 0.0),
-    (-0.3, 0.0),
-]
-
-
-@pytest.fixture(scope="module")
-def references():
-    return {pt: (mp_discriminant(*pt), reference_beta(*pt)) for pt in EXPONENT_POINTS}
+#: (a, q) -> (y1(pi), beta): the discriminant by a 50-digit mpmath Taylor series and the
+#: exponent with its band index from scipy's characteristic values, independent of both
+#: methods (tests/data/make_mathieu_reference.py: memo range, first-tongue interior, a < a_0,
+#: higher tongues and stable bands, q = 0; no point within 1e-4 of a transition curve).
+REFERENCES = {
+    (p["a"], p["q"]): (p["discriminant"], complex(*p["beta"]))
+    for p in json.loads((DATA / "mathieu_reference.json").read_text())["points"]
+}
+EXPONENT_POINTS = list(REFERENCES)
 
 
 # --------------------------------------------------------------------------------------------
@@ -181,21 +108,21 @@ def test_small_q_characteristic_values():
     np.testing.assert_allclose(curves["b1"], 1 - q - q**2 / 8 + q**3 / 64, atol=1e-7)
 
 
-def test_reference_points_cover_both_regions(references):
+def test_reference_points_cover_both_regions():
     # The acceptance asks for points inside and outside the tongues: at least 8 of each.
-    imag = np.array([ref[1].imag for ref in references.values()])
+    imag = np.array([ref[1].imag for ref in REFERENCES.values()])
     assert np.sum(imag > 0) >= 8 and np.sum(imag == 0) >= 8
 
 
 @pytest.mark.parametrize("method", ["floquet", "hill"])
 @pytest.mark.parametrize("point", EXPONENT_POINTS)
-def test_exponent_against_mpmath(point, method, references):
+def test_exponent_against_mpmath(point, method):
     # Reference: 50-digit mpmath Taylor series of y1(pi) (independent of both methods), band
-    # index from scipy's characteristic values.  cos(pi beta) to 1e-11 relative, beta to 1e-8
-    # (no point lies within 1e-4 of a transition curve, where beta has a square-root
-    # singularity, so 1e-11 in cos(pi beta) is < 1e-8 in beta).
+    # index from scipy's characteristic values (REFERENCES, stored).  cos(pi beta) to 1e-11
+    # relative, beta to 1e-8 (no point lies within 1e-4 of a transition curve, where beta
+    # has a square-root singularity, so 1e-11 in cos(pi beta) is < 1e-8 in beta).
     a, q = point
-    D_ref, beta_ref = references[point]
+    D_ref, beta_ref = REFERENCES[point]
     D = float(pitch.floquet_discriminant(a, q, method))
     assert abs(D - D_ref) <= 1e-11 * max(1.0, abs(D_ref))
     beta = complex(pitch.characteristic_exponent(a, q, method))

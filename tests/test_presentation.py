@@ -20,11 +20,8 @@ from flexbooster.present.summary import TERMINAL_BANDS, print_summary
 
 
 @pytest.fixture(scope="module")
-def results():
-    from flexbooster.analysis import analyze
-    from flexbooster.case import default_case
-
-    return analyze(default_case())
+def results(default_results):
+    return default_results
 
 
 def _summary_text(results, width: int) -> str:
@@ -165,6 +162,7 @@ def test_figures_laid_out_once_keep_every_text_inside_and_apart(results):
 
 
 @pytest.mark.slow
+@pytest.mark.slow
 def test_figures_drawn_in_processes_are_the_figures_drawn_here(results):
     # write_outputs draws the figures by a concurrent.futures map over processes: the same
     # SVG and PNG bytes as one process drawing them one after the other (the reference)
@@ -175,12 +173,9 @@ def test_figures_drawn_in_processes_are_the_figures_drawn_here(results):
     assert render_figures(results, processes=2) == here
 
 
-@pytest.mark.slow
-def test_danger_map_tooltips_and_axes(results):
+def test_danger_map_tooltips_and_axes(results, default_svgs):
     # one SVG <title> per band, no script, Omega in Hz on the x axis
-    from flexbooster.present.outputs import figure_svgs
-
-    svg = figure_svgs(results)["danger-map"]
+    svg = default_svgs["danger-map"]
     titles = re.findall(r"<title>([^<]*)</title>", svg)
     # one tooltip per band (a resonance's stem and its head carry the same one)
     assert len(set(titles)) == len(results.danger.bands)

@@ -110,6 +110,7 @@ def _solver_modules():
             yield importlib.import_module(info.name)
 
 
+@pytest.mark.slow
 def test_every_figure_is_drawn_from_the_results_alone(monkeypatch):
     """Patch every function of the numerical core to raise, then draw every figure and the
     report from a Results computed before: nothing may call a solver."""

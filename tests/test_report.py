@@ -16,11 +16,8 @@ import xml.etree.ElementTree as ET
 import numpy as np
 import pytest
 
-from flexbooster.analysis import analyze
-from flexbooster.case import default_case
 from flexbooster.errors import AnalysisWarning
 from flexbooster.memo.charts import nodal_lines, nodal_pattern_data
-from flexbooster.present.outputs import figure_svgs
 from flexbooster.present.plotting.patterns import nodal_pattern, nodal_patterns
 from flexbooster.present.report import (
     FIGURES,
@@ -37,13 +34,13 @@ SVG = "{http://www.w3.org/2000/svg}"
 
 
 @pytest.fixture(scope="module")
-def results():
-    return analyze(default_case())
+def results(default_results):
+    return default_results
 
 
 @pytest.fixture(scope="module")
-def svgs(results):
-    return figure_svgs(results)
+def svgs(default_svgs):
+    return default_svgs
 
 
 @pytest.fixture(scope="module")

@@ -37,16 +37,18 @@ def small_case(**thrust):
     return model_from_case(load_case(d))
 
 
-# Strong pulsation and gimbal gain so that every forcing term is well above round-off
-# (q = gamma a / 2 up to 0.02: the Omega_1, Omega_3 terms of psi are not negligible).
-STRONG = small_case(gamma=0.4, K=4.0)
+@pytest.fixture(scope="module")
+def strong_model():
+    """Strong pulsation and gimbal gain so that every forcing term is well above round-off
+    (q = gamma a / 2 up to 0.02: the Omega_1, Omega_3 terms of psi are not negligible)."""
+    return small_case(gamma=0.4, K=4.0)
 
 
 @pytest.fixture(scope="module")
-def strong():
-    ex = r.make_excitation(STRONG, 300.0, psi0=0.01, beam_amplitude=1e-4)
-    groups = r.modal_groups(STRONG.shell, (2, 2), (3, 3), ex.N)
-    return STRONG, ex, groups
+def strong(strong_model):
+    ex = r.make_excitation(strong_model, 300.0, psi0=0.01, beam_amplitude=1e-4)
+    groups = r.modal_groups(strong_model.shell, (2, 2), (3, 3), ex.N)
+    return strong_model, ex, groups
 
 
 # --------------------------------------------------------------------------------------------
@@ -256,16 +258,18 @@ def test_printed_phase_has_no_normal_coordinates():
 # --------------------------------------------------------------------------------------------
 NB, SB, RB = 2, 2, 2
 TAU_MAX = 3000.0
-#: The pipeline's parameter function of the strong case (beta by Hill, alpha_r splined from the
-#: beam action on the case's Omega grid): the roots and the forcing below both use it.
-PARAMS = r.excitation_parameters(STRONG, beam_action_analysis(STRONG))
+@pytest.fixture(scope="module")
+def params(strong_model):
+    """The pipeline's parameter function of the strong case (beta by Hill, alpha_r splined from
+    the beam action on the case's Omega grid): the roots and the forcing below both use it."""
+    return r.excitation_parameters(strong_model, beam_action_analysis(strong_model))
 
 
 @pytest.fixture(scope="module")
-def table():
+def table(strong_model, params):
     """Stability table of the small strong case (all 13 families have active roots)."""
     rows = []
-    for g in r.modal_groups(STRONG.shell, (2, 2), (3, 3), NB):
+    for g in r.modal_groups(strong_model.shell, (2, 2), (3, 3), NB):
         om = r.modal_basis(g)[0]
         rows += [(g.cylinder, g.j[i], g.k[i], m + 1, om[i, m])
                  for i in range(len(g)) for m in range(om.shape[1])]
@@ -273,13 +277,14 @@ def table():
     modes = ShellModes(c[:, 0].astype(int), c[:, 1].astype(int), c[:, 2].astype(int),
                        c[:, 3].astype(int), c[:, 4])
 
-    w1 = STRONG.omega_1
-    return unstable_frequencies(modes, PARAMS, Omega_bar_range=(8.0 / w1, 2000.0 / w1),
-                                omega_1=w1, R=RB, S=SB, gamma=STRONG.gamma, K=STRONG.K,
+    w1 = strong_model.omega_1
+    return unstable_frequencies(modes, params, Omega_bar_range=(8.0 / w1, 2000.0 / w1),
+                                omega_1=w1, R=RB, S=SB, gamma=strong_model.gamma,
+                                K=strong_model.K,
                                 n_scan=801).to_rows()
 
 
-def _pick(rows, family):
+def _pick(rows, family, model, params):
     """Active roots of a family (as first family, else as a coincident one), best isolated.
 
     Score: the resonant forcing amplitude over the leakage of the other harmonics into the
@@ -296,10 +301,9 @@ def _pick(rows, family):
     for x in cand[:40]:
         psi0, bamp = (0.0, 1e-4) if family in (2, 13) else (0.01, 0.0)
         key = (x["cylinder"], x["j"], x["k"], x["branch"])
-        nu, gh, w = r.modal_forcing_spectrum(STRONG, x["Omega_rad_s"], *key, psi0=psi0,
+        nu, gh, w = r.modal_forcing_spectrum(model, x["Omega_rad_s"], *key, psi0=psi0,
                                              beam_amplitude=bamp, beam_mode=max(x["r"], 1),
-                                             params=PARAMS,
-                                             N=NB, S=SB)
+                                             params=params, N=NB, S=SB)
         res = np.abs(np.abs(nu) - w) < 1e-8 * w
         pred = np.abs(gh[res].sum()) / 2
         if pred <= 1e-9 * np.abs(gh).max():
@@ -315,14 +319,14 @@ def _pick(rows, family):
 
 
 @pytest.mark.parametrize("family", range(1, 14))
-def test_secular_growth_at_a_root_bounded_away(table, family):
+def test_secular_growth_at_a_root_bounded_away(strong_model, params, table, family):
     """At an active root the integrated normal coordinate has a secular term (Z drifts at the
     rate the harmonic decomposition predicts, 1e-3); in the root-free gap next to it the
     drift is < 1e-5 of that.  Where the secular term dominates (visibility > 1) the amplitude
     visibly grows like tau (last/first quarter > 2.5) and stays bounded away (< 1.5).
 
     Only the forcing of the family is switched on (psi terms, or the beam for 2 and 13)."""
-    vis, x, key, psi0, bamp = _pick(table, family)
+    vis, x, key, psi0, bamp = _pick(table, family, strong_model, params)
     om = x["Omega_rad_s"]
     same = np.sort([y["Omega_rad_s"] for y in table
                     if (y["cylinder"], y["j"], y["k"], y["branch"]) == key])
@@ -331,9 +335,9 @@ def test_secular_growth_at_a_root_bounded_away(table, family):
     gap = int(np.argmax(np.diff(pts)))
     away = 0.5 * (pts[gap] + pts[gap + 1])  # midpoint of the widest root-free gap
     kw = dict(tau_max=TAU_MAX, psi0=psi0, beam_amplitude=bamp, beam_mode=max(x["r"], 1),
-              N=NB, S=SB, params=PARAMS)
-    at = r.secular_growth(STRONG, om, *key, **kw)
-    off = r.secular_growth(STRONG, away, *key, **kw)
+              N=NB, S=SB, params=params)
+    at = r.secular_growth(strong_model, om, *key, **kw)
+    off = r.secular_growth(strong_model, away, *key, **kw)
     assert at.predicted_slope > 0
     assert at.slope == pytest.approx(at.predicted_slope, rel=1e-3)  # observed <= 1.1e-4
     assert off.predicted_slope == 0.0
@@ -361,14 +365,14 @@ def test_simulate_long_time_many_modes_no_nan():
     assert all(np.isfinite(v) for v in res.max_displacement().values())
 
 
-def test_simulate_at_exact_resonance_grows_without_overflow(table):
+def test_simulate_at_exact_resonance_grows_without_overflow(strong_model, params, table):
     """At a root simulate (resonance-safe closed form) equals the Duhamel integration and
     grows like tau, with no division by zero."""
-    vis, x, key, psi0, bamp = _pick(table, 3)
-    res = r.simulate(STRONG, x["Omega_rad_s"], 400.0, n_out=201, psi0=psi0,
-                     beam_amplitude=bamp, n_snapshots=0, params=PARAMS)
-    num = r.simulate(STRONG, x["Omega_rad_s"], 400.0, n_out=201, psi0=psi0,
-                     beam_amplitude=bamp, n_snapshots=0, method="duhamel", params=PARAMS)
+    vis, x, key, psi0, bamp = _pick(table, 3, strong_model, params)
+    res = r.simulate(strong_model, x["Omega_rad_s"], 400.0, n_out=201, psi0=psi0,
+                     beam_amplitude=bamp, n_snapshots=0, params=params)
+    num = r.simulate(strong_model, x["Omega_rad_s"], 400.0, n_out=201, psi0=psi0,
+                     beam_amplitude=bamp, n_snapshots=0, method="duhamel", params=params)
     np.testing.assert_allclose(res.amplitude, num.amplitude, rtol=0,
                                atol=1e-8 * np.abs(num.amplitude).max())
     c = np.flatnonzero((res.cylinder == key[0]) & (res.j == key[1]) & (res.k == key[2]))
@@ -406,7 +410,7 @@ def test_plots():
     assert len(fig.axes[0].lines) == 4  # two outlines, undeformed and deformed
 
 
-def test_structural_zeros_of_the_zero_phase_projections(strong, table):
+def test_structural_zeros_of_the_zero_phase_projections(strong, params, table):
     """int cos s = 0 (j >= 1) and int sin s = 0 (even j) over a zero-phase cylinder (exact:
     int_0^{j pi} cos = 0, int_0^{j pi} sin = 1 - (-1)^j): the F1 thrust term never reaches
     U_j0 and psi'^2 never reaches k = 2 modes of even j; secular_rates finds exactly those
@@ -421,7 +425,7 @@ def test_structural_zeros_of_the_zero_phase_projections(strong, table):
             odd = k2 & (g.j % 2 == 1)
             assert np.abs(g.forcing[4][even]).max() < 1e-14 * np.abs(g.forcing[4][odd]).max()
     rows = [x for x in table if x["forcing"] == "active" and x["family"] in (10, 11, 12)]
-    rates = r.secular_rates(STRONG, rows, N=NB, S=SB, params=PARAMS)
+    rates = r.secular_rates(strong[0], rows, N=NB, S=SB, params=params)
     for x, y in zip(rows, rates, strict=True):
         assert y["forced"] == (x["j"] % 2 == 1), (x, y)
         if not y["forced"]:

@@ -73,12 +73,14 @@ def run_cli(argv):
 
 @pytest.fixture
 def alarm():
-    """A call that hangs fails after 20 s instead of blocking the suite (issue 18: no hang)."""
+    """A call that hangs fails instead of blocking the suite: a hang guard (10 min, far above
+    any machine's load), not a measurement; the bounds themselves are the deterministic caps
+    tested below."""
     def handler(signum, frame):
-        raise TimeoutError("the call did not return within 20 s")
+        raise TimeoutError("the call did not return within 600 s")
 
     previous = signal.signal(signal.SIGALRM, handler)
-    signal.alarm(20)
+    signal.alarm(600)
     yield
     signal.alarm(0)
     signal.signal(signal.SIGALRM, previous)
@@ -549,6 +551,7 @@ def test_tongue_estimate_grows_with_the_fields_that_drive_it(case_dict):
     assert part(damping={"pitch_ratio": 0.02})[0] > base  # fewer tongues, each bisected
 
 
+@pytest.mark.slow
 def test_tongue_search_cap_stops_and_names_the_tongues_left():
     """The cap of the pitch-tongue search (pipeline_band_search, max_seconds: its own modelled
     time, deterministic): with max_seconds = 0.5 the fuzz case of six tongues (r = 1..6)
@@ -604,6 +607,7 @@ def test_monodromy_cap_error_against_four_times_the_steps():
     assert np.max(err) < 1e-6
 
 
+@pytest.mark.slow
 def test_low_omega_runs_bounded_with_a_warning(case_dict, alarm):
     """The issue's omega_min = 0.05 rad/s case (39 s in the monodromy alone): capped steps,
     finite results and the warning that names the cap."""
@@ -617,6 +621,7 @@ def test_low_omega_runs_bounded_with_a_warning(case_dict, alarm):
     json.dumps(res.to_dict(), allow_nan=False)
 
 
+@pytest.mark.slow
 def test_hill_continuant_does_not_overflow_at_large_a():
     """Found by `make fuzz` (omega_min = 0.32 rad/s, gamma = 9e-5): the continuant of
     Hill's determinant (pitch._hill) multiplied rows (1 - a/m^2) past 1e308 at a ~ 1e5, with
@@ -1209,6 +1214,7 @@ _FUZZ_BAND_FAMILY = {
 }
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("change", [
     {},  # narrow.py divide warning
     {"booster": {"cylinder2": {"half_length": 7.1137617806233875},
@@ -1268,6 +1274,7 @@ def _orders_beyond_floor(found: list[int], orders: list[int]) -> bool:
         r > max(orders) for r in found[:len(found) - len(orders)])
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("data, orders, exact, rtol", [
     # edges to 1e-4 and widths to 25 % for r <= 6 (1e-3 .. 6e-5 of Omega wide), at the
     # coupled search's round-off floor (the edges of successive harmonic truncations agree to
@@ -1308,6 +1315,7 @@ def test_fuzz_reproducer_pitch_tongues_far_below_the_beam(data, orders, exact, r
             assert b.omega_hi <= ref[b.order].omega_hi * (1 + rtol)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("r", [3, 5, 6, 7, 8, 9])
 def test_tongue_growth_harmonics_resolve_high_order_tongues(r):
     """The growth maximum of tongue r with its Hill harmonics (max(4, 2 r - 4)) inside the
@@ -1459,6 +1467,7 @@ def test_fuzz_reproducer_vehicle_regions_past_the_candidate_limit():
     assert not stable and text.startswith("unknown")
 
 
+@pytest.mark.slow
 def test_fuzz_reproducer_vehicle_regions_of_a_flat_plate():
     """Found by the fuzz (run 6, the merged vehicle stages): a [vehicle] whose first segment
     is a flat annular plate (a cone of length 0) ended the run with the shell model's

@@ -9,6 +9,7 @@ eigenvalues, mode counts up to 200, output formats, bad input).
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import matplotlib
 import mpmath
@@ -47,6 +48,9 @@ E, NU, RHO = 72.39e9, 0.33, 2768.0
 SINGLE = [(5.05, 21.0, 0.02), (3.3, 9.0, 0.02), (1.0, 2.0, 0.01), (2.0, 30.0, 0.003),
           (0.5, 0.4, 0.02)]
 DEFAULT = (5.05, 21.0, 3.3, 9.0, 0.02)  # R1, L1, R2, L2, h of the default case
+#: Donnell's determinant expanded by sympy and its roots by mpmath at 30 digits (the script
+#: tests/data/make_donnell_reference.py, which names the method and the points).
+DONNELL = json.loads((Path(__file__).parent / "data" / "donnell_reference.json").read_text())
 
 
 def omega1(L, R1):
@@ -139,16 +143,23 @@ def test_donnell_long_wave_limits_n0():
 
 
 def test_donnell_cubic_is_determinant_expansion():
-    # Leissa eqs. 2.21-2.22 are the expansion of Donnell's 3x3 determinant (eq. 2.20):
-    # checked symbolically (sympy, exact).
-    import sympy as sp
+    # Leissa eqs. 2.21-2.22 are the expansion of Donnell's 3x3 determinant (eq. 2.20): the
+    # expansion by sympy with exact rationals (DONNELL["cubic"], stored) evaluated exactly
+    # (fractions) at 200 points, lam, k, nu in (0.05, 2), (0, 1), (0, 0.5), n = 0..8, against
+    # donnell_cubic in floating point: 1e-13 relative (sums of like-signed terms, no
+    # cancellation; a wrong coefficient misses by O(1)).
+    from fractions import Fraction
 
-    lam, n, k, nu, D = sp.symbols("lam n k nu Delta")
-    C = sp.Matrix([[lam**2 + (1 - nu) / 2 * n**2, -(1 + nu) / 2 * lam * n, nu * lam],
-                   [-(1 + nu) / 2 * lam * n, (1 - nu) / 2 * lam**2 + n**2, -n],
-                   [nu * lam, -n, 1 + k * (lam**2 + n**2) ** 2]])
-    K2, K1, K0 = donnell_cubic(lam, n, k, nu)
-    assert sp.simplify(-(C - D * sp.eye(3)).det() - (D**3 + K2 * D**2 + K1 * D + K0)) == 0
+    rng = np.random.default_rng(2021)
+    points = np.column_stack([rng.uniform(0.05, 2, 200), rng.integers(0, 9, 200),
+                              rng.uniform(0, 1, 200), rng.uniform(0, 0.5, 200)])
+    for lam, n, k, nu in points:
+        got = donnell_cubic(lam, n, k, nu)
+        x = [Fraction(v) for v in (lam, n, k, nu)]
+        for name, value in zip(("K2", "K1", "K0"), got, strict=True):
+            want = float(sum(Fraction(c) * x[0] ** e[0] * x[1] ** e[1] * x[2] ** e[2]
+                             * x[3] ** e[3] for e, c in DONNELL["cubic"][name]))
+            assert value == pytest.approx(want, rel=1e-13), (name, lam, n, k, nu)
 
 
 # --- D-IV limiting cases ------------------------------------------------------------------
@@ -286,6 +297,7 @@ def test_omega_0k_formula():
         assert set(f.mode_type[sel]) == {"axial"}
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("method", METHODS)
 def test_mode_counts_up_to_200(method):
     # No overflow, NaN or negative squared frequency for 200 modes per index (acceptance);
@@ -389,19 +401,13 @@ def test_donnell_bad_input(kwargs, word):
 @pytest.mark.parametrize(("length", "R", "h"), [(1e4 * np.pi, 1.0, 0.01), (60.0, 2.0, 0.003),
                                                 (0.8, 0.5, 0.02), (42.0, 5.05, 0.02)])
 def test_donnell_roots_against_mpmath(length, R, h):
-    # The cubic's three roots against mpmath.polyroots at 30 digits (coefficients in mpmath
-    # from the same inputs): 1e-12 relative for every root, including bending and long-wave
-    # roots 1e-8 of the largest.
-    mpmath.mp.dps = 30
-    m, n = np.meshgrid(np.arange(1, 7), np.arange(0, 7), indexing="ij")
+    # The cubic's three roots against the eigenvalues of Donnell's matrix (Leissa eq. 2.20) by
+    # mpmath.eigsy at 30 digits (DONNELL["roots"], stored; m = 1..6, n = 0..6): 1e-12
+    # relative for every root, including bending and long-wave roots 1e-8 of the largest.
+    assert DONNELL["material"] == {"E": E, "nu": NU, "rho": RHO}
+    rows = [r for r in DONNELL["roots"] if (r["length"], r["R"], r["h"]) == (length, R, h)]
+    assert len(rows) == 42
+    m = np.array([r["m"] for r in rows])
+    n = np.array([r["n"] for r in rows])
     got = donnell_frequencies(length, R, h, E, NU, RHO, m, n)
-    for (i, q), mm in np.ndenumerate(m):
-        lam_l = mm * mpmath.pi * R / mpmath.mpf(length)
-        K2, K1, K0 = donnell_cubic(lam_l, mpmath.mpf(int(n[i, q])),
-                                   mpmath.mpf(h) ** 2 / (12 * mpmath.mpf(R) ** 2), mpmath.mpf(NU))
-        roots = sorted(mpmath.re(x) for x in mpmath.polyroots([1, K2, K1, K0], maxsteps=200,
-                                                              extraprec=60))
-        want = [float(mpmath.sqrt(x * E / (RHO * (1 - mpmath.mpf(NU) ** 2) * R**2))
-                      / (2 * mpmath.pi)) for x in roots]
-        np.testing.assert_allclose(got[i, q], want, rtol=1e-12)
-    mpmath.mp.dps = 15
+    np.testing.assert_allclose(got, [r["hz"] for r in rows], rtol=1e-12)

@@ -251,17 +251,16 @@ def test_no_pulsation_silences_omega_1_and_3():
 
 
 @pytest.mark.slow
-def test_active_flags_match_the_forcing_computed_from_its_definition():
+def test_active_flags_match_the_forcing_computed_from_its_definition(default_results):
     """The 'active' column of the default case against the resonant forcing of each root
     computed by quadrature of the forcing functions (3.0-3, 5.3-4) on the shape functions
     (responses.secular_rates): active roots have a relative forcing above 1e-17, the others
     below 1e-22 (round-off). Families 2 and 13 (beam harmonics, one Hill solve per root) are
     left out here; their selection is delta_1k only.  (The pipeline's table replaces this
     structural flag by severity_rel >= threshold, issue 13: tests/test_severity.py.)"""
-    from flexbooster import analyze, default_case
     from flexbooster.memo.responses import excitation_parameters, secular_rates
 
-    res = analyze(default_case(), figures=False)
+    res = default_results
     n, (lo, hi) = res.model.truncation, res.model.omega_range
     modes = ShellModes(res.shell.cylinder, res.shell.j, res.shell.k, res.shell.branch,
                        res.shell.omega_bar)
@@ -336,17 +335,16 @@ def _labels(table):
 
 
 @pytest.mark.slow
-def test_default_case_same_roots_as_brute_force_on_sampled_curves():
+def test_default_case_same_roots_as_brute_force_on_sampled_curves(default_results):
     """Issue 6 acceptance on the default case: for two curves of every family (sampled with a
     fixed seed), every root against every shell frequency of its set found by a brute-force
     scan -- the equation sampled on a grid ten times finer than the solver's, scipy brentq on each
     sign change -- is in the table (its own row or merged into a coinciding family's), and the
     table has no other root of those curves."""
-    from flexbooster import analyze, default_case
     from flexbooster.memo.responses import excitation_parameters
 
-    case = default_case()
-    res = analyze(case)
+    res = default_results
+    case = res.case
     t, n = case.thrust, case.truncation
     prm = excitation_parameters(res.model, res.beam_action)
     modes = ShellModes(

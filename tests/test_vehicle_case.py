@@ -436,7 +436,9 @@ def test_report_embeds_the_vehicle_figures(vehicle_case_file):
     from flexbooster.present.vehicle import vehicle_figures
 
     case = load_case(vehicle_case_file)
-    results = analyze(case, beam_action=False, figures=False)
+    # the report's other sections need an analysis, not the vehicle's regions (their damped
+    # search of this table is the costly stage): vehicle=False
+    results = analyze(case, beam_action=False, figures=False, vehicle=False)
     survey = analyze_vehicle(case, k_max=2, views=True)
     results = replace(results, vehicle=survey)
     svgs = {name: _render(fig)[0] for name, fig in vehicle_figures(survey).items()}

@@ -419,6 +419,7 @@ def test_damping_filter_keeps_the_regions_of_the_unfiltered_search(memo_vehicle)
         assert a.critical_gamma == pytest.approx(b.critical_gamma, rel=1e-6)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("gamma", [0.3, 0.6])
 @pytest.mark.parametrize("zeta", [5e-4, 2e-3])
 @pytest.mark.parametrize("which", ["memo", "cone"])
@@ -601,6 +602,7 @@ def test_k1_no_flutter_below_beal_and_bad_input():
         bending_system(veh, F0=1.0, gimbal_gain=-1.0)
 
 
+@pytest.mark.slow
 def test_k1_in_the_map_against_the_full_bending_monodromy():
     """k = 1 in vehicle_regions (k_min = 1): a free-free steel tube (R 5 cm, L 5 m, h 2 mm,
     20 elements), p = F0 l^2 / EI = 20, gimbal gain K = 0.5, gamma = 0.1, undamped, 5 basis
@@ -730,6 +732,7 @@ def test_k1_damped_regions_against_an_independent_monodromy(which):
 # --------------------------------------------------------------------------- chart curves
 
 
+@pytest.mark.slow
 def test_region_curves_reuse_the_map_and_equal_fresh_boundaries(memo_vehicle):
     """region_curves traces from the stored harmonic systems: at the map's own gamma it reuses
     the map's rows as the top level and skips the harmonics without a region; its curves
