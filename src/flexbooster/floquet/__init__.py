@@ -20,6 +20,13 @@ from .multipliers import (
     steady_frequencies,
     step_counts,
 )
+from .optimize import (
+    NoConvergenceError,
+    brent_max,
+    expand_bracket,
+    golden_section_max,
+    illinois_root,
+)
 from .regions import (
     DAMPING_MARGIN,
     CriticalAmplitude,
@@ -28,7 +35,6 @@ from .regions import (
     SearchWork,
     TooManyCandidatesError,
     critical_amplitude,
-    golden_section_max,
     instability_regions,
     region_boundaries,
     search_work,
@@ -42,7 +48,11 @@ __all__ = [
     "TooManyCandidatesError",
     "converged_periodic_boundaries",
     "critical_amplitude",
+    "NoConvergenceError",
+    "brent_max",
+    "expand_bracket",
     "golden_section_max",
+    "illinois_root",
     "instability_regions",
     "region_boundaries",
     "SearchWork",

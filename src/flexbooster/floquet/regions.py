@@ -60,11 +60,11 @@ from .multipliers import (
     step_counts,
 )
 from .narrow import narrow_search
+from .optimize import brent_max, expand_bracket, golden_section_max, illinois_root
 
 __all__ = [
     "DAMPING_MARGIN",
     "TooManyCandidatesError",
-    "golden_section_max",
     "InstabilityRegion",
     "instability_regions",
     "RegionBoundary",
@@ -82,7 +82,6 @@ class TooManyCandidatesError(ValueError):
     """The resonance candidates 2 omega_i / j, (omega_i +- omega_k) / j in the Omega range
     exceed ``max_candidates``: omega_min too small for the frequencies (one line, naming
     omega_min); a search past a resource limit, not a wrong argument."""
-_GOLD = 0.5 * (np.sqrt(5.0) - 1.0)
 #: Round-off floor of the indicators (s-values are O(1), eigenvalue errors ~ eps ||S||): a
 #: maximum below it is not a region.  Detection limit: relative width ~ 2 sqrt(floor) / (pi j).
 _F_FLOOR = 1e-14
@@ -390,223 +389,6 @@ def _growth_damped(system, om, opt, scale=None) -> np.ndarray:
     return np.log(np.max(np.abs(rho), axis=1)) * om / (2.0 * np.pi)  # log|rho|_max / T
 
 
-# --------------------------------------------------------------------------------------------
-# Vectorised scalar solvers
-# --------------------------------------------------------------------------------------------
-def golden_section_max(f, a, b, *, xtol, max_iter: int = 200,
-                       stop_positive: bool = False) -> tuple[np.ndarray, np.ndarray]:
-    """Maximise f on [a, b] by golden-section search, vectorised over independent intervals.
-
-    Each interval m is shrunk by the golden ratio per step, keeping the larger of its two
-    interior values, until b_m - a_m <= xtol_m (Kiefer 1953; Press et al. 2007, sec. 10.2);
-    f must be unimodal on each interval for the global maximum.
-
-    Parameters
-    ----------
-    f : callable
-        f(x, idx) -> values: x (P',) the points (unit of a, b) for the intervals idx (P',),
-        integer indices into the arrays; returns (P',) floats (any unit).
-    a, b : array_like
-        Interval ends, shape (P,), finite, a < b (unit of x).
-    xtol : array_like
-        Final interval lengths, shape (P,) or scalar, > 0 (unit of x).
-    max_iter : int
-        Cap on the steps (ValueError beyond it), >= 1.
-    stop_positive : bool
-        If True an interval stops as soon as f > 0 at one of its points.
-
-    Returns
-    -------
-    x, fx : numpy.ndarray
-        The best point of each interval and f there, shape (P,).
-
-    Raises
-    ------
-    ValueError
-        Bad arguments (naming them), or no convergence in max_iter steps.
-
-    References
-    ----------
-    J. Kiefer, "Sequential minimax search for a maximum", Proc. AMS 4 (1953) 502-506;
-    W. H. Press et al., *Numerical Recipes*, 3rd ed., Cambridge, 2007, sec. 10.2.
-    """
-    a = np.atleast_1d(np.asarray(a, dtype=float))
-    b = np.atleast_1d(np.asarray(b, dtype=float))
-    if a.ndim != 1 or a.shape != b.shape or not (np.all(np.isfinite(a))
-                                                 and np.all(np.isfinite(b))):
-        raise ValueError(f"a = {a!r}: a and b must be finite 1-D arrays of the same shape")
-    if np.any(b <= a):
-        raise ValueError(f"b = {b!r}: must be > a")
-    xtol = np.broadcast_to(np.asarray(xtol, dtype=float), a.shape)
-    if not np.all(np.isfinite(xtol)) or np.any(xtol <= 0.0):
-        raise ValueError(f"xtol = {xtol!r}: must be finite and > 0")
-    if isinstance(max_iter, bool) or not isinstance(max_iter, int | np.integer) or max_iter < 1:
-        raise ValueError(f"max_iter = {max_iter!r}: must be an integer >= 1")
-    return _golden_max(f, a, b, xtol, max_iter, stop_positive)
-
-
-def _golden_max(f, a: np.ndarray, b: np.ndarray, xtol: np.ndarray, max_iter: int = 200,
-                stop_positive: bool = False) -> tuple[np.ndarray, np.ndarray]:
-    """:func:`golden_section_max` without the checks (arrays of the same shape)."""
-    a, b = a.copy(), b.copy()
-    x1 = b - _GOLD * (b - a)
-    x2 = a + _GOLD * (b - a)
-    every = np.arange(a.size)
-    f1, f2 = f(x1, every), f(x2, every)
-    for _ in range(max_iter):
-        done = b - a <= xtol
-        if stop_positive:
-            done |= (f1 > 0.0) | (f2 > 0.0)
-        if np.all(done):
-            break
-        right = f2 > f1  # max in [x1, b]
-        act = np.nonzero(~done)[0]
-        r_ = right[act]
-        a[act] = np.where(r_, x1[act], a[act])
-        b[act] = np.where(r_, b[act], x2[act])
-        xn = np.where(r_, a[act] + _GOLD * (b[act] - a[act]), b[act] - _GOLD * (b[act] - a[act]))
-        fn = f(xn, act)
-        x1[act], f1[act], x2[act], f2[act] = (
-            np.where(r_, x2[act], xn), np.where(r_, f2[act], fn),
-            np.where(r_, xn, x1[act]), np.where(r_, fn, f1[act]))
-    else:
-        raise ValueError(f"golden section: no convergence in {max_iter} iterations")
-    best = f1 >= f2
-    return np.where(best, x1, x2), np.where(best, f1, f2)
-
-
-def _brent_max(f, a: np.ndarray, b: np.ndarray, x0: np.ndarray, xtol: np.ndarray,
-               max_iter: int = 200, stop_positive: bool = False) -> tuple[np.ndarray, np.ndarray]:
-    """Maximise f on [a, b] from x0: Brent's golden section + parabolic steps, vectorised.
-
-    f(x, idx) evaluates the points idx only.  Parabolic steps converge superlinearly on the
-    smooth indicators (they are nearly quadratic near a candidate), golden steps guarantee
-    convergence.  With ``stop_positive`` a point stops as soon as f > floor somewhere.
-    (Brent 1973, ch. 5, procedure localmin, for -f.)
-    """
-    cgold = 0.5 * (3.0 - np.sqrt(5.0))
-    a, b = a.copy(), b.copy()
-    x = np.clip(x0, a, b)
-    fx = -f(x, np.arange(x.size))
-    w, v, fw, fv = x.copy(), x.copy(), fx.copy(), fx.copy()
-    d = np.zeros(x.size)
-    e = np.zeros(x.size)
-    done = np.zeros(x.size, dtype=bool)
-    for _ in range(max_iter):
-        xm = 0.5 * (a + b)
-        tol1 = 1.5e-8 * np.abs(x) + xtol / 3.0
-        tol2 = 2.0 * tol1
-        done |= np.abs(x - xm) <= tol2 - 0.5 * (b - a)
-        if stop_positive:
-            done |= -fx > _F_FLOOR
-        act = np.nonzero(~done)[0]
-        if act.size == 0:
-            return x, -fx
-        X, W, V, FX, FW, FV = x[act], w[act], v[act], fx[act], fw[act], fv[act]
-        A_, B_, D, E, T1, T2, XM = a[act], b[act], d[act], e[act], tol1[act], tol2[act], xm[act]
-        r = (X - W) * (FX - FV)
-        q = (X - V) * (FX - FW)
-        p = (X - V) * q - (X - W) * r
-        q = 2.0 * (q - r)
-        p = np.where(q > 0.0, -p, p)
-        q = np.abs(q)
-        try_par = np.abs(E) > T1
-        with np.errstate(divide="ignore", invalid="ignore"):
-            par = try_par & (np.abs(p) < np.abs(0.5 * q * E)) & (p > q * (A_ - X)) & (
-                p < q * (B_ - X))
-            dpar = np.where(par, p / np.where(q == 0.0, 1.0, q), 0.0)
-        upar = X + dpar
-        near_end = ((upar - A_) < T2) | ((B_ - upar) < T2)
-        dpar = np.where(near_end, np.where(XM - X >= 0.0, T1, -T1), dpar)
-        egold = np.where(X >= XM, A_ - X, B_ - X)
-        E_new = np.where(par, D, egold)  # e <- d (parabolic) or the golden interval
-        D_new = np.where(par, dpar, cgold * egold)
-        U = X + np.where(np.abs(D_new) >= T1, D_new, np.where(D_new >= 0.0, T1, -T1))
-        FU = -f(U, act)
-        better = FU <= FX
-        a[act] = np.where(better, np.where(U >= X, X, A_), np.where(U < X, U, A_))
-        b[act] = np.where(better, np.where(U >= X, B_, X), np.where(U < X, B_, U))
-        c1 = ~better & ((FU <= FW) | (W == X))
-        c2 = ~better & ~c1 & ((FU <= FV) | (V == X) | (V == W))
-        v[act] = np.where(better | c1, W, np.where(c2, U, V))
-        fv[act] = np.where(better | c1, FW, np.where(c2, FU, FV))
-        w[act] = np.where(better, X, np.where(c1, U, W))
-        fw[act] = np.where(better, FX, np.where(c1, FU, FW))
-        x[act] = np.where(better, U, X)
-        fx[act] = np.where(better, FU, FX)
-        d[act], e[act] = D_new, E_new
-    raise ValueError(f"maximiser: no convergence in {max_iter} iterations")
-
-
-def _illinois(f, x_in: np.ndarray, f_in: np.ndarray, x_out: np.ndarray, f_out: np.ndarray,
-              xtol: np.ndarray, max_iter: int = 200, bracket: bool = False):
-    """Root of f between x_in (f > 0) and x_out (f <= 0), Illinois regula falsi, vectorised.
-
-    f(x, idx) evaluates the points idx only.  Returns the midpoints of the final brackets, or
-    with ``bracket`` the brackets themselves (x_in, f_in, x_out, f_out; f_in > 0 >= f_out).
-    """
-    a, fa, b, fb = x_in.copy(), f_in.copy(), x_out.copy(), f_out.copy()
-    last = np.zeros(a.size, dtype=int)  # which end moved last (+1 a, -1 b)
-    for it in range(max_iter):
-        act = np.nonzero(np.abs(b - a) > xtol)[0]
-        if act.size == 0:
-            return (a, fa, b, fb) if bracket else 0.5 * (a + b)
-        A_, FA, B_, FB = a[act], fa[act], b[act], fb[act]
-        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-            x = np.where(FA != FB, B_ - FB * (B_ - A_) / (FB - FA), 0.5 * (A_ + B_))
-        if it >= max_iter // 2:  # stagnating (an indicator at round-off): bisect, which
-            x = 0.5 * (A_ + B_)  # halves the bracket each step (2^-100: converged surely)
-        lo_, hi_ = np.minimum(A_, B_), np.maximum(A_, B_)
-        x = np.where((x > lo_) & (x < hi_), x, 0.5 * (A_ + B_))
-        # keep the new point at least xtol/2 inside so that the bracket always shrinks
-        tol = 0.5 * xtol[act]
-        x = np.clip(x, lo_ + tol, hi_ - tol)
-        fx = f(x, act)
-        pos = fx > 0.0
-        # Illinois: halve the value at the end that stays twice in a row
-        fb[act] = np.where(pos & (last[act] == 1), 0.5 * FB, FB)
-        fa[act] = np.where(~pos & (last[act] == -1), 0.5 * FA, FA)
-        a[act] = np.where(pos, x, A_)
-        fa[act] = np.where(pos, fx, fa[act])
-        b[act] = np.where(pos, B_, x)
-        fb[act] = np.where(pos, fb[act], fx)
-        last[act] = np.where(pos, 1, -1)
-    raise ValueError(f"boundary refinement: no convergence in {max_iter} iterations")
-
-
-def _expand(f, x0: np.ndarray, d0: np.ndarray, direction, limit: np.ndarray,
-            max_iter: int = 80) -> tuple[np.ndarray, ...]:
-    """March from x0 (f > 0) by d0 * 3^m until f <= 0 or the range end; vectorised.
-
-    Returns (x_in, f_in, x_out, f_out, clipped).
-    """
-    x_in = x0.copy()
-    f_in = np.full(x0.size, np.inf)
-    x_out = x0.copy()
-    f_out = np.zeros(x0.size)
-    clipped = np.zeros(x0.size, dtype=bool)
-    open_ = np.ones(x0.size, dtype=bool)
-    d = d0.copy()
-    for _ in range(max_iter):
-        if not open_.any():
-            return x_in, f_in, x_out, f_out, clipped
-        x = x0 + direction * d
-        past = direction * (x - limit) >= 0.0
-        x = np.where(past, limit, x)
-        idx = np.nonzero(open_)[0]
-        fx = f(x[idx], idx)
-        inside = fx > 0.0
-        out_i, in_i = idx[~inside], idx[inside]
-        x_out[out_i], f_out[out_i] = x[out_i], fx[~inside]
-        x_in[in_i], f_in[in_i] = x[in_i], fx[inside]
-        open_[out_i] = False
-        hit = in_i[past[in_i]]
-        clipped[hit] = True
-        open_[hit] = False
-        d = d * 3.0
-    raise ValueError(f"boundary bracketing: no sign change in {max_iter} expansions")
-
-
 def _edges(f, x0: np.ndarray, f0: np.ndarray, d0: np.ndarray, direction,
            limit: np.ndarray, xtol: np.ndarray, scale: np.ndarray,
            max_rounds: int = 6) -> tuple[np.ndarray, np.ndarray]:
@@ -620,12 +402,11 @@ def _edges(f, x0: np.ndarray, f0: np.ndarray, d0: np.ndarray, direction,
     points and values are unchanged).  Gaps narrower than the check spacing can still be
     missed (the region is then reported too wide, never lost).  Returns (root, clipped).
     """
-    xi, fi, xo, fo, clip = _expand(f, x0, d0, direction, limit)
-    fi = np.where(np.isinf(fi), f0, fi)
+    xi, fi, xo, fo, clip = expand_bracket(f, x0, f0, d0, direction, limit)
     root = np.where(clip, limit, xo)
 
     def refine(idx, a, fa, b, fb):
-        return _illinois(lambda x, act: f(x, idx[act]), a, fa, b, fb, xtol[idx])
+        return illinois_root(lambda x, act: f(x, idx[act]), a, fa, b, fb, xtol[idx])
 
     idx = np.nonzero(~clip)[0]
     if idx.size:
@@ -684,8 +465,7 @@ def _seed_edges(f, x0: np.ndarray, f0: np.ndarray, d0: np.ndarray, limit: np.nda
     P = x0.size
     direction = np.concatenate([-np.ones(P), np.ones(P)])
     X0, F0, D0 = (np.concatenate([v, v]) for v in (x0, f0, d0))
-    xi, fi, xo, fo, clip = _expand(f, X0, D0, direction, limit)
-    fi = np.where(np.isinf(fi), F0, fi)
+    xi, fi, xo, fo, clip = expand_bracket(f, X0, F0, D0, direction, limit)
     XT = np.concatenate([xtol, xtol])
     for _ in range(40):  # each round cuts the brackets by 100 at least
         w_in = np.abs(xi[P:] - xi[:P])
@@ -694,7 +474,7 @@ def _seed_edges(f, x0: np.ndarray, f0: np.ndarray, d0: np.ndarray, limit: np.nda
         if act.size == 0:
             break
         tol = np.maximum(goal[act], 1e-2 * np.abs(xo - xi)[act])
-        xi[act], fi[act], xo[act], fo[act] = _illinois(
+        xi[act], fi[act], xo[act], fo[act] = illinois_root(
             lambda x, a, act=act: f(x, act[a]), xi[act], fi[act], xo[act], fo[act], tol,
             bracket=True)
     edge = np.where(clip, limit, 0.5 * (xi + xo))
@@ -794,7 +574,7 @@ def _monodromy_search(system, w, cand, lo, hi, opt,
     delta = np.maximum(0.45 * cand["gap"], np.minimum(2.0 * cand["est"], 0.2 * Oc / cand["j"]))
     a = np.maximum(Oc - delta, 0.5 * Oc)
     b = Oc + delta
-    xs, fs = _brent_max(F, a, b, Oc, np.maximum(10.0 * xtol, 1e-15 * Oc), stop_positive=True)
+    xs, fs = brent_max(F, a, b, Oc, np.maximum(10.0 * xtol, 1e-15 * Oc), stop_above=_F_FLOOR)
     hit = np.nonzero(fs > _F_FLOOR)[0]
     if hit.size == 0:
         return [], fs
@@ -879,7 +659,8 @@ def _damped_search(system, undamped, opt, lo, hi) -> list[dict]:
     def G(x, idx=None):
         return _growth_damped(system, x, opt)
 
-    xs, gs = _golden_max(G, a, b, np.maximum(10.0 * xtol, 1e-15 * hi_u), stop_positive=True)
+    xs, gs = golden_section_max(G, a, b, xtol=np.maximum(10.0 * xtol, 1e-15 * hi_u),
+                                stop_above=0.0)
     hit = np.nonzero(gs > 0.0)[0]
     out = []
     if hit.size == 0:
@@ -956,7 +737,7 @@ def _finish_monodromy(system, regs, opt, damped) -> tuple[InstabilityRegion, ...
     rows = np.arange(a.size)
     a2 = grid[rows, np.maximum(best - 1, 0)]
     b2 = grid[rows, np.minimum(best + 1, nsamp - 1)]
-    xm, gm = _brent_max(G, a2, b2, grid[rows, best], np.maximum(1e-4 * (b2 - a2), 1e-15 * b2))
+    xm, gm = brent_max(G, a2, b2, grid[rows, best], np.maximum(1e-4 * (b2 - a2), 1e-15 * b2))
     out = []
     for m, r in enumerate(regs):
         modes = (r["i"],) if r["kind"] == 0 else (r["i"], r["k"])
@@ -1367,7 +1148,7 @@ def _tips(base: LinearPeriodicSystem, top, opt: _Options, gamma_rtol: float):
         m = starts.shape[1]
         fs = f(starts.ravel(), np.repeat(np.arange(idx.size), m)).reshape(starts.shape)
         x0 = starts[np.arange(idx.size), np.argmax(fs, axis=1)]
-        x, gx = _brent_max(f, a[idx], b[idx], x0, xtol[idx])
+        x, gx = brent_max(f, a[idx], b[idx], x0, xtol[idx])
         xs[idx] = x
         return gx
 
@@ -1389,7 +1170,7 @@ def _tips(base: LinearPeriodicSystem, top, opt: _Options, gamma_rtol: float):
             c_vec[ids[act]] = c
             return g(c_vec, ids[act])
 
-        c_cr[ids] = _illinois(root_f, c_in[ids], f_in[ids], c_out[ids], f_out[ids],
+        c_cr[ids] = illinois_root(root_f, c_in[ids], f_in[ids], c_out[ids], f_out[ids],
                               np.full(ids.size, gamma_rtol))
         c_vec[ids] = c_cr[ids]
         g(c_vec, ids)  # the maximiser at the tip
