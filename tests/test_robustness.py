@@ -32,6 +32,7 @@ from flexbooster.cli import main
 from flexbooster.errors import CaseError
 from flexbooster.floquet import bounds as fbounds
 from flexbooster.floquet import hill as fhill
+from flexbooster.floquet import mathieu
 from flexbooster.floquet import multipliers as fmult
 from flexbooster.floquet import regions as fregions
 from flexbooster.memo import beam, charts, pitch, responses, severity, shell, stability
@@ -109,7 +110,7 @@ def _model():
 #: function of memo/ (finite, sign, range, shape, empty, choice).
 BAD_CALLS = [
     ("reduced_exponents-nan", "alpha", lambda: ba.reduced_exponents([nan])),
-    ("characteristic_exponent-1e12-hangs", "a", lambda: pitch.characteristic_exponent(1e12, .01)),
+    ("characteristic_exponent-1e12-hangs", "a", lambda: mathieu.characteristic_exponent(1e12, .01)),
     ("psi_numerical-nan-hangs", "tau1", lambda: pitch.psi_numerical([0, nan], 0.5, 0.01)),
     ("mass_properties-R1-nan", "R1", lambda: geo.mass_properties(**{**_G, "R1": nan})),
     ("mass_properties-R1-neg", "R1", lambda: geo.mass_properties(**{**_G, "R1": -5.0})),
@@ -137,18 +138,18 @@ BAD_CALLS = [
     ("mathieu_parameters-gamma-nan", "gamma",
      lambda: pitch.mathieu_parameters(np.array([1.0]), 1.0, nan)),
     ("characteristic_exponent-hill-1e12", "a",
-     lambda: pitch.characteristic_exponent(1e12, 0.01, "hill")),
-    ("characteristic_exponent-nan", "a", lambda: pitch.characteristic_exponent(nan, 0.1)),
+     lambda: mathieu.characteristic_exponent(1e12, 0.01, "hill")),
+    ("characteristic_exponent-nan", "a", lambda: mathieu.characteristic_exponent(nan, 0.1)),
     ("characteristic_exponent-method", "method",
-     lambda: pitch.characteristic_exponent(0.5, 0.1, "x")),
+     lambda: mathieu.characteristic_exponent(0.5, 0.1, "x")),
     ("characteristic_exponent-n_steps-0", "n_steps",
-     lambda: pitch.characteristic_exponent(0.5, 0.1, n_steps=0)),
-    ("floquet_discriminant-q-inf", "q", lambda: pitch.floquet_discriminant(0.5, inf)),
+     lambda: mathieu.characteristic_exponent(0.5, 0.1, n_steps=0)),
+    ("floquet_discriminant-q-inf", "q", lambda: mathieu.floquet_discriminant(0.5, inf)),
     ("psi_numerical-too-long", "tau1", lambda: pitch.psi_numerical([0, 1e9], 0.5, 0.01)),
     ("psi_numerical-psi0-0", "psi0", lambda: pitch.psi_numerical([0, 1.0], 0.5, .01, psi0=0.)),
     ("psi_three_term-a-nan", "a", lambda: pitch.psi_three_term([0, 1.0], nan, 0.01)),
-    ("transition_curves-q-nan", "q", lambda: pitch.transition_curves([nan])),
-    ("transition_curves-r_max-neg", "r_max", lambda: pitch.transition_curves([0.1], r_max=-1)),
+    ("transition_curves-q-nan", "q", lambda: mathieu.transition_curves([nan])),
+    ("transition_curves-r_max-neg", "r_max", lambda: mathieu.transition_curves([0.1], r_max=-1)),
     ("three_term_error-n_times-0", "n_times",
      lambda: pitch.three_term_error(0.5, 0.01, n_times=0)),
     ("pitch_band_edges-tongue-0", "tongue", lambda: pitch.pitch_band_edges(1.0, 0.1, tongue=0)),
@@ -651,8 +652,8 @@ def test_hill_continuant_does_not_overflow_at_large_a():
     q = 0.5 * 9e-5 * a  # q = gamma a / 2 (memo 4.2-4)
     with warnings.catch_warnings():
         warnings.simplefilter("error", RuntimeWarning)
-        hill = pitch.characteristic_exponent(a, q, method="hill")
-    floquet = pitch.characteristic_exponent(a, q, method="floquet")
+        hill = mathieu.characteristic_exponent(a, q, method="hill")
+    floquet = mathieu.characteristic_exponent(a, q, method="floquet")
     assert np.max(np.abs(hill - floquet)) < 1e-10
 
 
@@ -665,8 +666,8 @@ def test_hill_continuant_zero_pivot_does_not_overflow():
     a, q = np.array([40.339860816349514]), np.array([19.169101528377368])
     with warnings.catch_warnings():
         warnings.simplefilter("error", RuntimeWarning)
-        hill = pitch.characteristic_exponent(a, q, method="hill")
-    floquet = pitch.characteristic_exponent(a, q, method="floquet")
+        hill = mathieu.characteristic_exponent(a, q, method="hill")
+    floquet = mathieu.characteristic_exponent(a, q, method="floquet")
     assert np.max(np.abs(hill - floquet)) < 1e-6
 
 

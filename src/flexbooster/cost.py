@@ -29,6 +29,7 @@ import numpy as np
 
 from .checks import positive
 from .errors import AnalysisWarning, CaseError
+from .floquet import MATHIEU_SCALE_MAX
 from .memo.beam_action import (
     BAND_OMEGA_BAR_MIN,
     MONODROMY_MAX_STEPS,
@@ -38,7 +39,7 @@ from .memo.beam_action import (
 )
 from .memo.charts import PITCH_BAND_CHART_LEVELS
 from .memo.model import BoosterModel
-from .memo.pitch import MATHIEU_SCALE_MAX, PITCH_MAX_TONGUE
+from .memo.pitch import PITCH_MAX_TONGUE
 
 __all__ = [
     "DEFAULT_MAX_SECONDS",
@@ -483,7 +484,7 @@ def check_physical(model: BoosterModel) -> None:
         ``thrust.F0`` when the steady beam-action system (gamma = 0) diverges (an eigenvalue
         of A0 = Lambda + B below 0) or flutters (a complex eigenvalue), or when the Mathieu
         parameter a = 4 omega_psi^2 / omega_min^2 (eq. 4.2-4) exceeds
-        :data:`flexbooster.memo.pitch.MATHIEU_SCALE_MAX` squared.
+        :data:`flexbooster.floquet.MATHIEU_SCALE_MAX` squared.
 
     References
     ----------

@@ -3,12 +3,24 @@
 Floquet multipliers and growth rates (:mod:`.multipliers`), Hill's method and the harmonic
 balance of the periodic boundaries (:mod:`.hill`), a rigorous all-Omega stability certificate
 for damped systems (:mod:`.bounds`), and the instability regions in Omega with
-their amplitude dependence (:mod:`.regions`).  Numerical core: numpy and scipy only.  Theory:
-``docs/theory/floquet.md``.
+their amplitude dependence (:mod:`.regions`), Mathieu's equation (:mod:`.mathieu`) and the
+vectorised scalar solvers they share (:mod:`.optimize`).  Numerical core: numpy and scipy
+only.  Theory: ``docs/theory/floquet.md``.
 """
 
 from .bounds import StabilityCertificate, stability_certificate
 from .hill import converged_periodic_boundaries, hill_exponents, periodic_boundaries
+from .mathieu import (
+    MATHIEU_SCALE_MAX,
+    beta_from_discriminants,
+    characteristic_exponent,
+    characteristic_value,
+    damped_tongue,
+    floquet_discriminant,
+    tongue_critical_gamma,
+    tongue_edges,
+    transition_curves,
+)
 from .multipliers import (
     LinearPeriodicSystem,
     StepLimitError,
@@ -41,6 +53,15 @@ from .regions import (
 )
 
 __all__ = [
+    "MATHIEU_SCALE_MAX",
+    "beta_from_discriminants",
+    "characteristic_exponent",
+    "characteristic_value",
+    "damped_tongue",
+    "floquet_discriminant",
+    "tongue_critical_gamma",
+    "tongue_edges",
+    "transition_curves",
     "DAMPING_MARGIN",
     "CriticalAmplitude",
     "InstabilityRegion",

@@ -21,17 +21,11 @@ from typing import Any
 import numpy as np
 
 from ..checks import count, positive
-from ..floquet import region_boundaries
+from ..floquet import region_boundaries, transition_curves
 from .beam import free_free_eigenvalues, mode_shape
 from .beam_action import BAND_OMEGA_BAR_MIN, beam_system, modal_damping
 from .geometry import MassProperties
-from .pitch import (
-    PITCH_MAX_TONGUE,
-    PitchResult,
-    pitch_band_edges,
-    pitch_tongue_omega_bound,
-    transition_curves,
-)
+from .pitch import PITCH_MAX_TONGUE, PitchResult, pitch_band_edges, pitch_tongue_omega_bound
 from .shell import ShellFrequencies
 from .stability import StabilityTable, excitation, excitation_curves
 

@@ -16,6 +16,7 @@ import numpy as np
 import scipy.linalg
 
 from ...checks import count, finite, positive
+from ...floquet import characteristic_exponent
 from ..beam_action import (
     BeamActionExponents,
     BeamActionResult,
@@ -26,7 +27,7 @@ from ..beam_action import (
     reduced_exponents,
 )
 from ..model import BoosterModel
-from ..pitch import characteristic_exponent, mathieu_parameters
+from ..pitch import mathieu_parameters
 
 __all__ = [
     "BASIS",
