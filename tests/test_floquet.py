@@ -34,7 +34,7 @@ from flexbooster.floquet import (
     steady_frequencies,
     step_counts,
 )
-from flexbooster.floquet.multipliers import _half_maps, periodic_system
+from flexbooster.floquet.multipliers import half_period_maps, periodic_system
 from flexbooster.floquet.regions import _candidates, _modal_decay_rates, _options
 from harness import ivp_growth_rate, ivp_monodromy
 
@@ -135,8 +135,8 @@ def test_half_period_map_does_not_depend_on_the_batch(seed):
     om = np.random.default_rng(seed).uniform(0.5, 6.0, 70)
     steps = step_counts(system, om)
     with np.errstate(all="ignore"):
-        batch = _half_maps(system, om, steps, 256)
-        alone = [_half_maps(system, om[i:i + 1], steps[i:i + 1], 256) for i in range(om.size)]
+        batch = half_period_maps(system, om, steps)
+        alone = [half_period_maps(system, om[i:i + 1], steps[i:i + 1]) for i in range(om.size)]
     assert np.array_equal(batch, np.concatenate(alone), equal_nan=True)
 
 

@@ -251,6 +251,24 @@ def test_tongues_below_the_range_are_not_solved(monkeypatch):
     assert pitch.pitch_bands(1.2, 0.05, omega_min=5.0, omega_max=2000.0) == ()
 
 
+def test_tongues_past_the_order_limit_are_a_gap_not_a_stable_verdict():
+    # omega_psi = 1 rad/s, gamma = 0.9 over Omega in [0.02, 0.03] rad/s: the tongues with
+    # tips 2 / r in the range have r = 67..100; every tongue r <= PITCH_MAX_TONGUE = 60 lies
+    # above it, so the search ends at its order limit with no band: the result holds one
+    # SearchGap from r = 61 on, and the verdict is "not fully searched".
+    res = pitch.pitch_analysis(np.linspace(0.02, 0.03, 5), 1.0, 0.9)
+    assert res.bands == ()
+    (gap,) = res.gaps
+    assert (gap.stage, gap.limit, gap.order) == ("pitch", "PITCH_MAX_TONGUE",
+                                                 pitch.PITCH_MAX_TONGUE + 1)
+    assert gap.Omega_lo == 0.02 and gap.Omega_hi == 0.03
+    assert res.verdict.startswith("rigid-body pitch not fully searched: the Mathieu tongues")
+    assert "stable" not in res.verdict
+    assert res.to_dict()["gaps"] == [gap.to_dict()]
+    # the same search without the limit in its way: no gap
+    assert pitch.pitch_analysis(np.linspace(0.5, 3.0, 5), 1.0, 0.9).gaps == ()
+
+
 # --------------------------------------------------------------------------------------------
 # Tier 3: invariants, methods agree
 # --------------------------------------------------------------------------------------------

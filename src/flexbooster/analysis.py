@@ -33,15 +33,7 @@ from .danger import danger_summary
 from .errors import AnalysisWarning
 from .memo import charts
 from .memo.beam import beam_modes
-from .memo.beam_action import (
-    BandSearch,
-    BeamActionExponents,
-    PeriodMapOverflowError,
-    beam_action_analysis,
-    beam_action_exponents,
-    hill_check,
-    pipeline_band_search,
-)
+from .memo.beam_action import PeriodMapOverflowError, beam_action_analysis
 from .memo.model import BoosterModel
 from .memo.pitch import pitch_analysis
 from .memo.responses import SimulationResult, excitation_parameters, simulate
@@ -216,11 +208,6 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
     # when the pool has one, else computed when asked for, in STAGES[5])
     chart = (pool.submit(charts.beam_action_chart, model) if figures and beam_action
              else None)
-    # the band search's cap: the budget less the other stages' estimate (issue 18)
-    cap = case.max_seconds - (est.seconds - est.parts.get(cost.TONGUE_PART, 0.0))
-    search = (pool.submit(pipeline_band_search, model, max_seconds=cap)
-              if beam_action and pool.parallel else None)
-    hill = pool.submit(hill_check, model) if beam_action and pool.parallel else None
     # the vehicle's regions depend on the case alone (run last when there is no worker)
     # their budget: the case's less the other stages' estimate
     vbudget = case.max_seconds - (est.seconds - est.parts.get("vehicle regions", 0.0))
@@ -233,23 +220,17 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
                            damping_ratio=model.pitch_damping_ratio)
     step(STAGES[2])
     shell = natural_frequencies(model)
-    action = exponents = None
+    action = None
     if beam_action:
         step(STAGES[3])
-        if search is None:  # in this process the bands are searched first, so that a
-            # search past the toolkit's limits is refused at once
-            action = _beam_action(model, None, max_seconds=cap)
-        else:  # the workers' bands and Hill check are waited for after the table and its
-            # severity, which need the exponents alone
-            with _beam_action_refusals(model):
-                exponents = beam_action_exponents(model)
+        action = _beam_action(model)
     table = None
     params = None
     skipped_table = []
     if stability and beam_action:
         step(STAGES[4])
         modes = ShellModes(shell.cylinder, shell.j, shell.k, shell.branch, shell.omega_bar)
-        params = excitation_parameters(model, action if exponents is None else exponents)
+        params = excitation_parameters(model, action)
         lo, hi = model.omega_range
         try:
             table = unstable_frequencies(
@@ -266,11 +247,9 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
             model, table, params, psi0=sv.psi0, beam_amplitude=sv.beam_amplitude,
             threshold=sv.threshold, resolution=sv.resolution, mapper=pool.share,
             parts=1 + (pool.workers if pool.parallel else 0))
-    if exponents is not None:
-        action = _beam_action(model, search.result, hill.result, exponents=exponents)
     if action is not None:
-        extra += [AnalysisWarning("beam-action-tongue-budget", "max_seconds", why)
-                  for why in action.skipped]
+        extra += [AnalysisWarning("beam-action-not-fully-searched", gap.limit, gap.reason)
+                  for gap in action.gaps]
     extra += skipped_table
     data = None
     if figures:
@@ -385,7 +364,7 @@ def simulate_case(case: Case, Omega: float, *, tau_max: float, n_out: int = 401,
     with blas_threads(1):
         model = cost.derived_model(case)
         cost.check_physical(model)  # a load beyond the structure: a CaseError (issue 18)
-        params = excitation_parameters(model, _beam_action(model, False))
+        params = excitation_parameters(model, _beam_action(model))
         return simulate(model, Omega, tau_max, n_out=n_out, psi0=psi0, params=params)
 
 
@@ -411,17 +390,10 @@ def _beam_action_refusals(model):
                         f"({exc}): reduce truncation.N") from exc
 
 
-def _beam_action(model, bands: bool | BandSearch | Callable[[], BandSearch] | None,
-                 hill=None, *, max_seconds: float | None = None,
-                 exponents: BeamActionExponents | None = None):
-    """:func:`beam_action_analysis` with the refusals of :func:`_beam_action_refusals`.
-    ``bands`` None: searched here first (:func:`pipeline_band_search` with
-    ``max_seconds``); else as :func:`beam_action_analysis` takes it (e.g. a worker's result,
-    waited for after the exponents), as are ``hill`` and ``exponents``."""
+def _beam_action(model):
+    """:func:`beam_action_analysis` with the refusals of :func:`_beam_action_refusals`."""
     with _beam_action_refusals(model):
-        if bands is None:
-            bands = pipeline_band_search(model, max_seconds=max_seconds)
-        return beam_action_analysis(model, bands=bands, hill=hill, exponents=exponents)
+        return beam_action_analysis(model)
 
 
 def analyze_vehicle(case: Case, *, k_max: int | None = None, f_max: float | None = None,

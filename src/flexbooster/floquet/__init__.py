@@ -9,7 +9,13 @@ only.  Theory: ``docs/theory/floquet.md``.
 """
 
 from .bounds import StabilityCertificate, stability_certificate
-from .hill import converged_periodic_boundaries, hill_exponents, periodic_boundaries
+from .hill import (
+    HillModes,
+    converged_periodic_boundaries,
+    hill_exponents,
+    hill_modes,
+    periodic_boundaries,
+)
 from .mathieu import (
     MATHIEU_SCALE_MAX,
     beta_from_discriminants,
@@ -22,7 +28,9 @@ from .mathieu import (
     transition_curves,
 )
 from .multipliers import (
+    MAX_STEPS,
     LinearPeriodicSystem,
+    PeriodMapOverflowError,
     StepLimitError,
     floquet_exponents,
     floquet_multipliers,
@@ -80,10 +88,14 @@ __all__ = [
     "search_work",
     "LinearPeriodicSystem",
     "StepLimitError",
+    "MAX_STEPS",
+    "PeriodMapOverflowError",
     "floquet_exponents",
     "floquet_multipliers",
     "growth_rate",
     "hill_exponents",
+    "HillModes",
+    "hill_modes",
     "monodromy",
     "periodic_boundaries",
     "periodic_system",

@@ -16,12 +16,15 @@ References
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 import scipy.linalg
 
-from .multipliers import LinearPeriodicSystem, _omega, periodic_system
+from .multipliers import LinearPeriodicSystem, as_omega, periodic_system
 
-__all__ = ["hill_exponents", "periodic_boundaries", "converged_periodic_boundaries"]
+__all__ = ["HillModes", "hill_exponents", "hill_modes", "periodic_boundaries",
+           "converged_periodic_boundaries"]
 
 
 def _system(M, C, A, B) -> LinearPeriodicSystem:
@@ -35,7 +38,86 @@ def _harmonics(name: str, value, low: int = 0, high: int = 200) -> int:
     return int(value)
 
 
-def hill_exponents(M, C, A, B, Omega, *, n_harmonics: int = 8, chunk: int = 8) -> np.ndarray:
+@dataclass(frozen=True)
+class HillModes:
+    """Floquet exponents with their Fourier vectors from Hill's truncated determinant.
+
+    Attributes
+    ----------
+    exponents : numpy.ndarray
+        Shape (P, k), complex exponents lambda (1 / time unit of the matrices).
+    vectors : numpy.ndarray
+        Shape (P, k, 2S + 1, n), the Fourier vectors c_s (s = -S..S) of
+        q = exp(lambda t) sum_s c_s exp(i s Omega t), unit Euclidean norm.
+    centroid : numpy.ndarray
+        Shape (P, k), the harmonic centroid sum_s s |c_s|^2 of each vector.
+    """
+
+    exponents: np.ndarray
+    vectors: np.ndarray
+    centroid: np.ndarray
+
+
+def _spectra(system: LinearPeriodicSystem, om: np.ndarray, S: int, chunk: int,
+             amplitude: np.ndarray | None, real_form: bool):
+    """Per chunk of points: (slice, lambda (P, 2m), c-parts (P, 2S + 1, n, 2m), centroids).
+
+    With y_s = (lambda + i s Omega) c_s the Hill equations are the 2m = 2n(2S + 1) eigenproblem
+    lambda [c; y] = [[-D, I], [-M^-1 H, -D - M^-1 C]] [c; y], D = diag(i s Omega), H the Hill
+    matrix (Bolotin 1964, eq. (7.4)).  With ``real_form`` an undamped system is solved in the
+    real form mu [c; y'] = [[-D', I], [M^-1 H, -D']] [c; y'] (lambda = i mu,
+    D' = diag(s Omega), y = i y'): a third of the work of the complex one.
+    """
+    n = system.n
+    h = 2 * S + 1
+    m = n * h
+    s = np.arange(-S, S + 1)
+    K0 = np.kron(np.eye(h), system.K0)  # blocks coupling s and s +- 1 below
+    Kb = np.kron(np.eye(h, k=1) + np.eye(h, k=-1), 0.5 * system.Kb)
+    Cm = np.kron(np.eye(h), system.Kc)
+    idx = np.arange(m)
+    for start in range(0, om.size, chunk):
+        sl = slice(start, start + chunk)
+        ob = om[sl]
+        P = ob.size
+        Hm = K0[None] + (Kb[None] if amplitude is None else amplitude[sl, None, None] * Kb[None])
+        D = np.repeat(s, n)[None, :] * ob[:, None]  # (P, m)
+        real = real_form and not system.damped
+        if not real:
+            Mat = np.zeros((P, 2 * m, 2 * m), dtype=complex)
+            Mat[:, m:, :m] = -Hm
+            Mat[:, m:, m:] = -Cm[None]
+            D = 1j * D
+        else:
+            Mat = np.zeros((P, 2 * m, 2 * m))
+            Mat[:, m:, :m] = Hm
+        Mat[:, idx, idx] = -D
+        Mat[:, idx, m + idx] = 1.0
+        Mat[:, m + idx, m + idx] -= D
+        lam, vec = np.linalg.eig(Mat)
+        if real:
+            lam = 1j * lam
+        C = vec[:, :m, :].reshape(P, h, n, 2 * m)
+        w = np.sum(np.abs(C) ** 2, axis=2)  # (P, h, 2m)
+        cen = np.einsum("s,psk->pk", s.astype(float), w / np.sum(w, axis=1, keepdims=True))
+        yield sl, lam, C, cen
+
+
+def _hill_arguments(M, C, A, B, Omega, n_harmonics, chunk, amplitude):
+    system = _system(M, C, A, B)
+    om = as_omega(Omega)
+    S = _harmonics("n_harmonics", n_harmonics, 0, 500)
+    if not isinstance(chunk, int | np.integer) or chunk < 1:
+        raise ValueError(f"chunk = {chunk!r}: must be an integer >= 1")
+    if amplitude is not None:
+        amplitude = np.broadcast_to(np.asarray(amplitude, dtype=float), om.shape)
+        if not np.all(np.isfinite(amplitude)):
+            raise ValueError(f"amplitude = {amplitude!r}: must be finite")
+    return system, om, S, amplitude
+
+
+def hill_exponents(M, C, A, B, Omega, *, n_harmonics: int = 8, chunk: int = 8,
+                   amplitude=None, real_form: bool = False) -> np.ndarray:
     """Characteristic exponents by Hill's determinant truncated at s = -S..S.
 
     With q = exp(lambda t) sum_s c_s exp(i s Omega t) the equation becomes, for each s,
@@ -43,65 +125,43 @@ def hill_exponents(M, C, A, B, Omega, *, n_harmonics: int = 8, chunk: int = 8) -
         M (lambda + i s Omega)^2 c_s + C (lambda + i s Omega) c_s + A c_s
             + (B / 2) (c_{s-1} + c_{s+1}) = 0,
 
-    linearised with y_s = (lambda + i s Omega) c_s into the 2n(2S + 1) eigenproblem
-    lambda [c; y] = [[-D, I], [-M^-1 H, -D - M^-1 C]] [c; y], D = diag(i s Omega).  Of its
-    eigenvalues (each repeated modulo i Omega) the 2n whose Fourier vectors are most central
-    (smallest |sum_s s |c_s|^2|) are returned.
+    an eigenproblem of order 2n(2S + 1) in lambda.  Of its eigenvalues (each repeated modulo
+    i Omega) the 2n distinct ones whose Fourier vectors are most central (smallest
+    |sum_s s |c_s|^2|) are returned.
 
     Parameters
     ----------
     M, C, A, B : array_like
-        The system (see :func:`flexbooster.floquet.multipliers.periodic_system`).
+        The system (see :func:`flexbooster.floquet.periodic_system`).
     Omega : array_like
         Pulsation frequencies, shape (P,) (rad per time unit of the matrices), > 0.
     n_harmonics : int
-        S, harmonics s = -S..S, 0..200.
+        S, harmonics s = -S..S, 0..500.
     chunk : int
         Points per batched eigen-solve (memory).
+    amplitude : array_like, optional
+        Shape (P,): point p has the excitation amplitude[p] B (default 1).
+    real_form : bool
+        Solve an undamped system in its real form (lambda = i mu): a third of the work, the
+        same exponents to round-off.
 
     Returns
     -------
     numpy.ndarray
         Shape (P, 2n), complex exponents lambda (1 / time unit); max Re lambda is the growth
-        rate.  Truncation error falls fast with S when Omega is not small against the
-        frequencies (Hill's method is the cheap one for few modes and Omega ~ omega).
+        rate.  The truncation error falls fast with S when Omega is not small against the
+        frequencies.
 
     References
     ----------
     Bolotin (1964), sec. 7-8; Magnus & Winkler (1966), ch. 2.
     """
-    system = _system(M, C, A, B)
-    om = _omega(Omega)
-    S = _harmonics("n_harmonics", n_harmonics)
-    if not isinstance(chunk, int | np.integer) or chunk < 1:
-        raise ValueError(f"chunk = {chunk!r}: must be an integer >= 1")
-    n = system.n
-    h = 2 * S + 1
-    m = n * h
-    if 2 * m > 4000:
-        raise ValueError(f"n_harmonics = {S}: the Hill matrix would be {2 * m} x {2 * m} "
-                         "(> 4000) for this system: use the monodromy")
-    s = np.arange(-S, S + 1)
-    Hm = np.kron(np.eye(h), system.K0) + np.kron(
-        np.eye(h, k=1) + np.eye(h, k=-1), 0.5 * system.Kb)  # M^-1 H, Hill matrix
-    Cm = np.kron(np.eye(h), system.Kc)
-    out = []
-    for start in range(0, om.size, chunk):
-        ob = om[start:start + chunk]
-        P = ob.size
-        D = 1j * np.repeat(s, n)[None, :] * ob[:, None]  # (P, m)
-        Mat = np.zeros((P, 2 * m, 2 * m), dtype=complex)
-        idx = np.arange(m)
-        Mat[:, idx, idx] = -D
-        Mat[:, idx, m + idx] = 1.0
-        Mat[:, m:, :m] = -Hm[None]  # Bolotin (1964) eq. (7.4) in first-order form
-        Mat[:, m:, m:] = -Cm[None]
-        Mat[:, m + idx, m + idx] -= D
-        lam, vec = np.linalg.eig(Mat)
-        w = np.sum(np.abs(vec[:, :m, :].reshape(P, h, n, 2 * m)) ** 2, axis=2)
-        cen = np.einsum("s,psk->pk", s.astype(float), w / np.sum(w, axis=1, keepdims=True))
-        out.append(_distinct_central(lam, cen, ob, 2 * n))
-    return np.concatenate(out)
+    system, om, S, amplitude = _hill_arguments(M, C, A, B, Omega, n_harmonics, chunk,
+                                               amplitude)
+    out = np.empty((om.size, 2 * system.n), dtype=complex)
+    for sl, lam, _, cen in _spectra(system, om, S, chunk, amplitude, real_form):
+        out[sl] = _distinct_central(lam, cen, om[sl], 2 * system.n)
+    return out
 
 
 def _distinct_central(lam: np.ndarray, cen: np.ndarray, om: np.ndarray,
@@ -127,6 +187,41 @@ def _distinct_central(lam: np.ndarray, cen: np.ndarray, om: np.ndarray,
     rank = np.where(dup, np.inf, np.arange(top)[None, :].astype(float))
     pick = np.argsort(rank, axis=1, kind="stable")[:, :count]
     return np.take_along_axis(lam, pick, axis=1)
+
+
+def hill_modes(M, C, A, B, Omega, *, n_harmonics: int = 8, chunk: int = 8,
+               amplitude=None, real_form: bool = False) -> HillModes:
+    """The 2n exponents of Hill's determinant whose Fourier vectors are most central, with them.
+
+    Parameters
+    ----------
+    M, C, A, B, Omega, n_harmonics, chunk, amplitude, real_form
+        As :func:`hill_exponents`.
+
+    Returns
+    -------
+    HillModes
+        k = 2n exponents per point, the eigenvalues whose vectors have the smallest
+        |centroid| (not shifted, copies modulo i Omega not removed).
+
+    References
+    ----------
+    Bolotin (1964), sec. 7-8; Magnus & Winkler (1966), ch. 2.
+    """
+    system, om, S, amplitude = _hill_arguments(M, C, A, B, Omega, n_harmonics, chunk,
+                                               amplitude)
+    k = 2 * system.n
+    lams, vecs, cents = [], [], []
+    for _, lam, Cv, cen in _spectra(system, om, S, chunk, amplitude, real_form):
+        P = lam.shape[0]
+        sel = np.argsort(np.abs(cen), axis=1, kind="stable")[:, :k]
+        vec = np.take_along_axis(Cv, sel[:, None, None, :], axis=3)
+        vec = vec / np.linalg.norm(vec.reshape(P, -1, k), axis=1)[:, None, None, :]
+        lams.append(np.take_along_axis(lam, sel, axis=1))
+        vecs.append(np.moveaxis(vec, 3, 1))
+        cents.append(np.take_along_axis(cen, sel, axis=1))
+    return HillModes(exponents=np.concatenate(lams), vectors=np.concatenate(vecs),
+                     centroid=np.concatenate(cents))
 
 
 def periodic_boundaries(M, C, A, B, *, period: str = "2T", n_harmonics: int = 8,

@@ -47,16 +47,16 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .bounds import _certificate
+from .bounds import stability_certificate
 from .multipliers import (
-    _MAX_STEPS,
+    MAX_STEPS,
     LinearPeriodicSystem,
-    _full_maps,
-    _half_maps,
-    _rho_max_from_sets,
-    _s_matrices,
-    _s_sets_from_half,
+    half_period_maps,
+    largest_multiplier,
+    period_maps,
     periodic_system,
+    s_matrices,
+    s_value_sets,
     step_counts,
 )
 from .narrow import narrow_search
@@ -162,7 +162,7 @@ class _Options:
     damping_margin: float | None = DAMPING_MARGIN
 
 
-def _options(rtol=1e-9, step_phase=0.12, max_steps=_MAX_STEPS, max_order=None,
+def _options(rtol=1e-9, step_phase=0.12, max_steps=MAX_STEPS, max_order=None,
              max_candidates=200_000, chunk=256,
              damping_margin=DAMPING_MARGIN) -> _Options:
     if not (np.isfinite(rtol) and 1e-14 <= rtol <= 1e-2):
@@ -307,23 +307,23 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
 # Indicators (vectorised over candidates)
 # --------------------------------------------------------------------------------------------
 def _s_values(system: LinearPeriodicSystem, om: np.ndarray, opt: _Options) -> tuple:
-    """(s, s - 2, s + 2) at om (see :func:`.multipliers._s_sets_from_half`)."""
-    return _s_sets_from_half(_half_maps_at(system, om, opt))
+    """(s, s - 2, s + 2) at om (see :func:`.multipliers.s_value_sets`)."""
+    return s_value_sets(_half_maps_at(system, om, opt))
 
 
 def _half_maps_at(system: LinearPeriodicSystem, om: np.ndarray, opt: _Options) -> np.ndarray:
     """Phi(T/2) at om with the search's step counts."""
     steps = step_counts(system, om, step_phase=opt.step_phase, max_steps=opt.max_steps)
-    return _half_maps(system, om, steps, opt.chunk)
+    return half_period_maps(system, om, steps, chunk=opt.chunk)
 
 
 def _indicator(system, w, cand, om, opt) -> np.ndarray:
     """F per candidate at om (same length as the candidate arrays).
 
     Each point needs one eigenvalue set: s (combination), s - 2 (simple, j even) or s + 2
-    (simple, j odd), so only that matrix of :func:`.multipliers._s_matrices` is decomposed.
+    (simple, j odd), so only that matrix of :func:`.multipliers.s_matrices` is decomposed.
     """
-    mats = _s_matrices(_half_maps_at(system, om, opt))
+    mats = s_matrices(_half_maps_at(system, om, opt))
     P = om.size
     rows = np.arange(P)
     simple = cand["kind"] == 0
@@ -378,14 +378,15 @@ def _unstable_indicator(system, om, opt) -> np.ndarray:
 
 
 def _growth_undamped(system, om, opt) -> np.ndarray:
-    _, Xp, Xm = _s_matrices(_half_maps_at(system, om, opt))
-    rho = _rho_max_from_sets(np.linalg.eigvals(Xp), np.linalg.eigvals(Xm))
+    _, Xp, Xm = s_matrices(_half_maps_at(system, om, opt))
+    rho = largest_multiplier(np.linalg.eigvals(Xp), np.linalg.eigvals(Xm))
     return np.log(rho) * om / (2.0 * np.pi)  # log|rho|_max / T
 
 
-def _growth_damped(system, om, opt, scale=None) -> np.ndarray:
+def _growth_damped(system, om, opt, amplitude=None) -> np.ndarray:
     steps = step_counts(system, om, step_phase=opt.step_phase, max_steps=opt.max_steps)
-    rho = np.linalg.eigvals(_full_maps(system, om, steps, opt.chunk, scale))
+    rho = np.linalg.eigvals(period_maps(system, om, steps, chunk=opt.chunk,
+                                        amplitude=amplitude))
     return np.log(np.max(np.abs(rho), axis=1)) * om / (2.0 * np.pi)  # log|rho|_max / T
 
 
@@ -764,7 +765,7 @@ def _search(system: LinearPeriodicSystem, lo: float, hi: float, opt: _Options,
     w = np.sqrt(system.mu.real)
     rate = None
     if system.damped and opt.damping_margin is not None:
-        if _certificate(system).certified:  # rigorous: stable at every Omega (bounds.py)
+        if stability_certificate(system, None, None, None).certified:  # stable at every Omega
             return ()
         rate = _modal_decay_rates(system)
     cand = _candidates(w, undamped.Bt, lo, hi, opt, rate=rate)
@@ -784,7 +785,7 @@ def _search(system: LinearPeriodicSystem, lo: float, hi: float, opt: _Options,
 
 def instability_regions(M, C, A, B, omega_min: float, omega_max: float, *,
                         rtol: float = 1e-9, step_phase: float = 0.12,
-                        max_steps: int = _MAX_STEPS, max_order: int | None = None,
+                        max_steps: int = MAX_STEPS, max_order: int | None = None,
                         max_candidates: int = 200_000, chunk: int = 256,
                         damping_margin: float | None = DAMPING_MARGIN,
                         ) -> tuple[InstabilityRegion, ...]:
@@ -945,7 +946,7 @@ def search_work(M, C, A, B, omega_min: float, omega_max: float, **options) -> Se
         V=system.V, Bt=system.Bt)
     rate = None
     if system.damped and opt.damping_margin is not None:
-        if _certificate(system).certified:  # as _search: no region at any Omega
+        if stability_certificate(system, None, None, None).certified:  # as _search: none
             return SearchWork(**{**none, "certified": True})
         rate = _modal_decay_rates(system)
     cand = _candidates(np.sqrt(system.mu.real), undamped.Bt, lo, hi, opt, rate=rate)
@@ -1136,7 +1137,7 @@ def _tips(base: LinearPeriodicSystem, top, opt: _Options, gamma_rtol: float):
 
     def g(c, idx):
         def f(x, sub):
-            return _growth_damped(base, x, tip, scale=c[idx][sub])
+            return _growth_damped(base, x, tip, amplitude=c[idx][sub])
 
         # the start: the best of the previous maximiser, the candidate centre and a few
         # samples.  Outside the undamped region of amplitude c the growth is flat (the

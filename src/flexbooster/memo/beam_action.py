@@ -47,20 +47,24 @@ References
 
 from __future__ import annotations
 
-import math
-from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
-import scipy.linalg
 
+from ..bands import SearchGap, gaps_text
 from ..checks import count, nonnegative, positive
 from ..floquet import (
+    LinearPeriodicSystem,
+    PeriodMapOverflowError,
     critical_amplitude,
+    floquet_multipliers,
     golden_section_max,
+    hill_modes,
     instability_regions,
     periodic_boundaries,
+    periodic_system,
+    step_counts,
 )
 from ..floquet import hill_exponents as floquet_hill_exponents
 from . import beam
@@ -78,7 +82,6 @@ __all__ = [
     "loaded_frequencies",
     "HillResult",
     "hill_exponents",
-    "hill_check",
     "monodromy_exponents",
     "monodromy_steps",
     "MONODROMY_MAX_STEPS",
@@ -92,18 +95,18 @@ __all__ = [
     "TONGUE_HILL_HARMONICS",
     "TONGUE_GAMMA_RTOL",
     "TONGUE_RTOL_FLOOR",
+    "TONGUE_FLOOR_OMEGA_BAR",
+    "TONGUE_MAX_ORDER",
+    "TongueEdgesError",
+    "tongue_hill_harmonics",
+    "pitch_mode",
+    "pitch_guide",
     "BeamActionBand",
     "modal_damping",
     "beam_action_bands",
     "pitch_tongue_bands",
-    "TONGUE_QZ_SECONDS",
-    "tongue_search_seconds",
-    "BandSearch",
-    "pipeline_band_search",
     "pipeline_bands",
     "BeamActionResult",
-    "BeamActionExponents",
-    "beam_action_exponents",
     "beam_action_analysis",
     "StabilityChart",
     "stability_chart",
@@ -538,12 +541,8 @@ def hill_exponents(system: BeamActionSystem, Omega: np.ndarray, gamma: np.ndarra
     """Floquet exponents by Hill's infinite determinant truncated at s = -S..S.
 
     Substituting (4.1-10/11) into q'' + [A0 - gamma cos(Omega_bar tau) B] q = 0 gives, with
-    mu = alpha Omega_bar,
-
-        (mu + s Omega_bar)^2 C^(s) = A0 C^(s) - (gamma / 2) B (C^(s-1) + C^(s+1)),
-
-    a quadratic eigenproblem, linearised with Y = (mu + D) C into the 2n(2S+1) eigenproblem
-    mu [C; Y] = [[-D, I], [H, -D]] [C; Y] (D = diag(s Omega_bar), H the Hill matrix).
+    mu = alpha Omega_bar, (mu + s Omega_bar)^2 C^(s) = A0 C^(s) - (gamma / 2) B (C^(s-1) +
+    C^(s+1)) (:func:`flexbooster.floquet.hill_modes`).
 
     Parameters
     ----------
@@ -570,277 +569,26 @@ def hill_exponents(system: BeamActionSystem, Omega: np.ndarray, gamma: np.ndarra
     S = count("S", S, 0)
     chunk = count("chunk", chunk, 1, 10**6)
     Ob, gam, _ = _grid(Omega, gamma, system.omega_1)
-    n = system.N + 1
-    h = 2 * S + 1
-    m = n * h
-    s = np.arange(-S, S + 1)
-    A0, B = system.A0, system.B
-    H0 = np.kron(np.eye(h), A0)  # diagonal blocks A0
-    Hoff = np.kron(np.eye(h, k=1) + np.eye(h, k=-1), B)  # blocks coupling s and s +- 1
-    alphas, Cs, cents = [], [], []
-    for start in range(0, Ob.size, chunk):
-        ob = Ob[start:start + chunk]
-        g = gam[start:start + chunk]
-        P = ob.size
-        Dg = np.repeat(s, n)[None, :] * ob[:, None]  # (P, m)
-        Mat = np.zeros((P, 2 * m, 2 * m))
-        idx = np.arange(m)
-        Mat[:, idx, idx] = -Dg
-        Mat[:, idx, m + idx] = 1.0
-        Mat[:, m:, :m] = H0[None] - 0.5 * g[:, None, None] * Hoff[None]  # eq. (4.1-10/11)
-        Mat[:, m + idx, m + idx] = -Dg
-        mu, vec = np.linalg.eig(Mat)
-        C = vec[:, :m, :].reshape(P, h, n, 2 * m)
-        w = np.sum(np.abs(C) ** 2, axis=2)  # (P, h, 2m)
-        w = w / np.sum(w, axis=1, keepdims=True)
-        cen = np.einsum("s,psk->pk", s.astype(float), w)
-        sel = np.argsort(np.abs(cen), axis=1, kind="stable")[:, : 2 * n]
-        mu_sel = np.take_along_axis(mu, sel, axis=1)
-        C_sel = np.take_along_axis(C, sel[:, None, None, :], axis=3)
-        C_sel = C_sel / np.linalg.norm(C_sel.reshape(P, m, 2 * n), axis=1)[:, None, None, :]
-        alphas.append(mu_sel / ob[:, None])  # alpha = mu / Omega_bar
-        Cs.append(np.moveaxis(C_sel, 3, 1))
-        cents.append(np.take_along_axis(cen, sel, axis=1))
-    return HillResult(alpha=np.concatenate(alphas), C=np.concatenate(Cs),
-                      centroid=np.concatenate(cents))
+    modes = hill_modes(_unit_system(system), None, None, None, Ob, n_harmonics=S, chunk=chunk,
+                       amplitude=gam, real_form=True)
+    return HillResult(alpha=(-1j * modes.exponents) / Ob[:, None], C=modes.vectors,
+                      centroid=modes.centroid)  # alpha = mu / Omega_bar, lambda = i mu
+
+
+def _unit_system(system: BeamActionSystem) -> LinearPeriodicSystem:
+    """q'' + (A0 - cos(Omega_bar tau) B) q = 0, the toolkit's system of unit amplitude."""
+    return periodic_system(np.eye(system.N + 1), None, system.A0, -system.B)
 
 
 # --------------------------------------------------------------------------------------------
 # Monodromy matrix
 # --------------------------------------------------------------------------------------------
-def _modal(system: BeamActionSystem) -> tuple[np.ndarray, np.ndarray]:
-    """Squared frequencies mu_j of A0 and B in the modal frame V^-1 B V (real if possible)."""
-    mu, V = np.linalg.eig(system.A0)
-    if np.all(np.abs(mu.imag) <= 1e-14 * np.max(np.abs(mu))) and np.all(np.isreal(V)):
-        mu, V = mu.real, V.real
-    Bt = np.linalg.solve(V, system.B @ V)
-    return mu, Bt
-
-
-class PeriodMapOverflowError(ValueError):
-    """The beam-action period map left the floating-point range (a growth over one period
-    beyond ~1e308, or a transition matrix singular to working precision that QZ cannot
-    resolve): the case is far past a divergence or flutter load at that Omega and gamma."""
-
-
-def _rotation(mu: np.ndarray, t: np.ndarray) -> tuple[np.ndarray, ...]:
-    """cos(w t), sin(w t)/w, -w sin(w t) for w^2 = mu (exact propagator of eta'' + mu eta = 0)."""
-    w = np.sqrt(mu.astype(complex)) if np.iscomplexobj(mu) or np.any(mu < 0) else np.sqrt(mu)
-    wt = w * t
-    c = np.cos(wt)
-    small = np.abs(wt) < 1e-4
-    safe = np.where(small, 1.0, w)
-    sn = np.where(small, t * (1.0 - wt**2 / 6.0), np.sin(wt) / safe)
-    return c, sn, -mu * sn
-
-
-#: Most steps whose force coefficients :func:`_monodromy_half` computes at once (memory: three
-#: arrays of this many steps times the batch's points).
-_SEGMENT_STEPS = 1024
-
-
-def _monodromy_half(mu: np.ndarray, Bt: np.ndarray, Ob: np.ndarray, gam: np.ndarray,
-                    n_steps: np.ndarray) -> np.ndarray:
-    """Fundamental matrix at T/2 in modal coordinates, Lawson RK4 with n_steps equal steps.
-
-    The state is z = (eta, eta') with eta'' + diag(mu) eta = gamma cos(Omega_bar tau) Bt eta.
-    ``n_steps`` (P,) is the step count of each point, in descending order: all points advance
-    together, and a point leaves the batch (its half-period map stored) once its own count of
-    steps is done, so the loop runs max(n_steps) times whatever the spread of the counts.
-    Between two departures (a segment of steps with a fixed batch) the force coefficients
-    gamma cos(Omega_bar tau) of every step are computed at once, and each step runs on
-    preallocated buffers with the per-point factors spread to the state's shape: the same
-    floating-point operations on the same operands as the step written term by term, in
-    fewer and cheaper numpy calls (the cost at the few points of small Omega_bar that need
-    thousands of steps is the calls, not the flops).
-    Returns shape (P, 2n, 2n).
-    """
-    P = Ob.size
-    n = mu.size
-    h = (np.pi / Ob) / n_steps  # (P,) step in tau
-    # layout (mode, point, column): the modal force is one GEMM Bt @ (n, P * 2n)
-    c1, s1, m1 = (e.T[:, :, None] for e in _rotation(mu[None, :], h[:, None]))  # E(h)
-    c2, s2, _ = (e.T[:, :, None] for e in _rotation(mu[None, :], 0.5 * h[:, None]))  # E(h/2)
-    dtype = np.result_type(mu, Bt, c1, s1, float)  # complex where a steady mu < 0 (divergence)
-    hh = h[None, :, None]
-    # E(h), E(h/2), h/2, h E(h/2) and h/6 per point, spread to the state's shape (n, P, 2n)
-    factors = [np.broadcast_to(a, (n, P, 1)) for a in (c1, s1, m1, c2, s2, 0.5 * hh, hh * s2,
-                                                     hh / 6.0)]
-    x = np.zeros((n, P, 2 * n), dtype=dtype)  # eta and eta' of the 2n fundamental solutions
-    v = np.zeros((n, P, 2 * n), dtype=dtype)
-    idx = np.arange(n)
-    x[idx, :, idx] = 1.0
-    v[idx, :, n + idx] = 1.0
-    out = np.empty((P, 2 * n, 2 * n), dtype=dtype)
-    mul, add, dot = np.multiply, np.add, np.dot
-    p = P  # the points still integrating: a prefix, as the counts descend
-    k = 0
-    while True:  # Lawson (integrating-factor) RK4, Lawson (1967), one segment at a time
-        q = p
-        while q > 0 and n_steps[q - 1] <= k:  # points whose k steps are done
-            q -= 1
-        if q < p:  # store them, shrink the batch
-            out[q:p] = np.concatenate([x[:, q:p], v[:, q:p]], axis=0).transpose(1, 0, 2)
-            p = q
-            if p == 0:
-                break
-            h, gam, Ob = h[:p], gam[:p], Ob[:p]
-        shape = (n, p, 2 * n)
-        C1, S1, M1, C2, S2, HALF, HS2, SIXTH = (
-            np.ascontiguousarray(np.broadcast_to(a[:, :p], shape)) for a in factors)
-        k_end = min(int(n_steps[p - 1]), k + _SEGMENT_STEPS)  # the next departure
-        # gamma cos(Omega_bar tau) at t0 = k h, t0 + h/2, t0 + h of every step of the segment
-        t0 = np.arange(k, k_end)[:, None] * h[None, :]
-        f0, f_half, f1 = (gam * np.cos(Ob * tau) for tau in (t0, t0 + 0.5 * h, t0 + h))
-        if p > 1:  # per point; one point: numpy scalars (the same values, a cheaper call)
-            f0, f1 = f0[:, None, :, None], f1[:, None, :, None]
-            f_half = f_half[:, None, None, :, None]
-        else:
-            f0, f_half, f1 = f0.ravel(), f_half.ravel(), f1.ravel()
-        x, v = np.ascontiguousarray(x[:, :p]), np.ascontiguousarray(v[:, :p])
-        x_new, v_new, a1, a4, cx2, t, xf, vf, k23, u, w = (
-            np.empty(shape, dtype=dtype) for _ in range(11))
-        y23 = np.empty((n, 2, p, 2 * n), dtype=dtype)  # the stages k2, k3 in one GEMM
-        y2, y3 = y23[:, 0], y23[:, 1]
-        a23 = np.empty_like(y23)
-        a2, a3 = a23[:, 0], a23[:, 1]
-        g = np.empty((n, p * 2 * n), dtype=dtype)
-        g23 = np.empty((n, 2 * p * 2 * n), dtype=dtype)
-        g3, g23_4 = g.reshape(shape), g23.reshape(y23.shape)  # views: GEMM out, force in
-        y23_2, t_2 = y23.reshape(n, -1), t.reshape(n, -1)
-        for i in range(k_end - k):
-            dot(Bt, x.reshape(n, -1), out=g)
-            mul(f0[i], g3, out=a1)  # k1 = N(t) z
-            mul(C2, x, out=cx2)
-            mul(S2, v, out=t)
-            add(cx2, t, out=y3)  # E(h/2) z: position part
-            mul(HALF, a1, out=t)
-            add(v, t, out=t)
-            mul(S2, t, out=t)
-            add(cx2, t, out=y2)  # E(h/2)(z + h/2 k1): position part
-            dot(Bt, y23_2, out=g23)
-            mul(f_half[i], g23_4, out=a23)  # k2, k3 = N [E(h/2) z + h/2 k2]
-            mul(C1, x, out=xf)  # E(h) z
-            mul(S1, v, out=t)
-            add(xf, t, out=xf)
-            mul(M1, x, out=vf)
-            mul(C1, v, out=t)
-            add(vf, t, out=vf)
-            mul(HS2, a3, out=t)
-            add(xf, t, out=t)  # E(h) z + h E(h/2) k3: position part
-            dot(Bt, t_2, out=g)
-            mul(f1[i], g3, out=a4)  # k4
-            add(a2, a3, out=k23)
-            mul(2.0, k23, out=k23)
-            # z_new = E(h) z + h/6 [E(h) k1 + 2 E(h/2)(k2 + k3) + k4]
-            mul(S1, a1, out=u)
-            mul(S2, k23, out=t)
-            add(u, t, out=u)
-            mul(SIXTH, u, out=u)
-            add(xf, u, out=x_new)
-            mul(C1, a1, out=w)
-            mul(C2, k23, out=t)
-            add(w, t, out=w)
-            add(w, a4, out=w)
-            mul(SIXTH, w, out=w)
-            add(vf, w, out=v_new)
-            x, x_new, v, v_new = x_new, x, v_new, v
-        k = k_end
-    return out
-
-
-def _multipliers_from_half(Phi: np.ndarray) -> np.ndarray:
-    """Eigenvalues of the monodromy Phi(T/2) R Phi(T/2)^-1 R, R = diag(I, -I) (reversibility).
-
-    Where Phi(T/2) is singular to working precision (a growth over one period near 1/eps, e.g.
-    far past a flutter load: issue 18's fuzz), the same multipliers are the eigenvalues of the
-    pencil (Phi R, R Phi) (v = R Phi u), found by the QZ algorithm without an inverse.
-    """
-    n2 = Phi.shape[-1]
-    n = n2 // 2
-    R = np.concatenate([np.ones(n), -np.ones(n)])
-    PhiR = Phi * R[None, None, :]  # Phi R
-    try:  # Phi(T/2) R Phi(T/2)^-1 R  ~ similar to  Phi(T); use solve for Phi^-1 R
-        inv = np.linalg.solve(Phi, np.broadcast_to(np.diag(R), Phi.shape))
-        rho = np.linalg.eigvals(PhiR @ inv)
-        bad = ~np.all(np.isfinite(rho) & (rho != 0.0), axis=-1)
-    except np.linalg.LinAlgError:  # some point singular: each by the pencil below
-        rho = np.zeros(Phi.shape[:-1], dtype=complex)
-        bad = np.ones(Phi.shape[0], dtype=bool)
-    for i in np.flatnonzero(bad):  # rare: QZ per point, (Phi R) u = rho (R Phi) u
-        rho[i] = (scipy.linalg.eigvals(PhiR[i], R[:, None] * Phi[i])
-                  if np.all(np.isfinite(Phi[i])) else np.nan)  # overflowed: reported by caller
-    return rho
-
-
-def monodromy_exponents(system: BeamActionSystem, Omega: np.ndarray, gamma: np.ndarray,
-                        n_steps: int | None = None, step_phase: float = 0.06,
-                        chunk: int = 256, *,
-                        max_steps: int = MONODROMY_MAX_STEPS) -> np.ndarray:
-    """Floquet exponents from the monodromy matrix over one period 2 pi / Omega.
-
-    The period map is built from the half period by reversibility (A(tau) is even):
-    Phi(T) ~ Phi(T/2) R Phi(T/2)^-1 R with R = diag(I, -I); the half period is integrated by
-    Lawson's fourth-order integrating-factor Runge-Kutta method in the modal frame of the steady
-    system, where the unperturbed motion is propagated exactly.
-
-    Parameters
-    ----------
-    system : BeamActionSystem
-        The normalised system.
-    Omega : array_like
-        Thrust pulsation frequencies (rad/s), > 0; broadcast against ``gamma``.
-    gamma : array_like
-        Pulsation amplitudes (dimensionless), 0 <= gamma < 1.
-    n_steps : int, optional
-        Steps per half period for every point; by default chosen per point by the
-        coupling-weighted rule h max_jk nu_jk^(3/4) g_jk^(1/4) <= step_phase (see the theory
-        notes): the steady motion is propagated exactly, so weakly coupled fast modes cost
-        little.
-    step_phase : float
-        Tolerance parameter of the automatic rule, > 0; the default 0.06 gives about 1e-9 on
-        alpha (2e-9 at p = 20, gamma = 0.6 with N = 4; error ~ step_phase^4).
-    chunk : int
-        Grid points per batch (memory).
-    max_steps : int
-        Cap on the automatic step count per half period (dimensionless), 8..10^7: the rule
-        above needs ~1/Omega_bar steps; the default :data:`MONODROMY_MAX_STEPS` (8192, the
-        largest count of the default case) bounds the cost of a point to ~0.7 s for N = 10 and
-        keeps the error of alpha about 3e-6 at Omega_bar = 4.4e-4 (docs/theory/robustness.md).
-
-    Returns
-    -------
-    numpy.ndarray
-        Shape (G, 2n) complex exponents alpha = log(rho) / (2 pi i), Re alpha in (-1/2, 1/2],
-        rho the Floquet multipliers (flattened grid).
-
-    References
-    ----------
-    Bolotin (1964), sec. 2-3; Lawson (1967); Tech Memo 104, eqs. (4.1-10), (4.1-11).
-    """
-    Ob, gam, _ = _grid(Omega, gamma, system.omega_1)
-    step_phase = positive("step_phase", step_phase)
-    chunk = count("chunk", chunk, 1, 10**6)
-    mu, Bt = _modal(system)
-    max_steps = count("max_steps", max_steps, 8, 10**7)
-    if n_steps is not None:
-        steps = np.full(Ob.size, count("n_steps", n_steps, 1, 10**7))
-    else:  # the automatic count grows like 1 / Omega_bar: capped (bounded cost, issue 18)
-        steps = np.minimum(_auto_steps(mu, Bt, Ob, gam, step_phase), max_steps)
-    with np.errstate(over="ignore", invalid="ignore"):  # overflow is reported below
-        rho = _multipliers(mu, Bt, Ob, gam, steps, chunk)
-    bad = ~np.all(np.isfinite(rho), axis=-1)
-    if np.any(bad):  # growth beyond the floating-point range
-        raise PeriodMapOverflowError(
-            f"Omega = {float(Ob[bad][0] * system.omega_1):.6g} rad/s, gamma = "
-            f"{float(gam[bad][0]):.6g}: the period map overflowed or is singular to working "
-            "precision (a growth over one thrust period beyond ~1e15)")
-    return np.log(rho) / (2j * np.pi)
-
-
 def monodromy_steps(system: BeamActionSystem, Omega: np.ndarray, gamma: np.ndarray,
-                    step_phase: float = 0.06) -> np.ndarray:
-    """The automatic (uncapped) step counts per half period of :func:`monodromy_exponents`.
+                    step_phase: float = 0.06, *, max_steps: int | None = None) -> np.ndarray:
+    """Steps per half period of :func:`monodromy_exponents` at each point.
+
+    The coupling-weighted rule of :func:`flexbooster.floquet.step_counts` (error ~
+    step_phase^4 on alpha), rounded up to 2^(k/4).
 
     Parameters
     ----------
@@ -852,51 +600,83 @@ def monodromy_steps(system: BeamActionSystem, Omega: np.ndarray, gamma: np.ndarr
         Pulsation amplitudes (dimensionless), 0 <= gamma < 1.
     step_phase : float
         Tolerance parameter of the rule (dimensionless), > 0.
+    max_steps : int, optional
+        Cap of the counts (default none: the counts of the rule).
 
     Returns
     -------
     numpy.ndarray
-        Shape (G,) int, steps per half period before the cap :data:`MONODROMY_MAX_STEPS`
-        (the cost model of :mod:`flexbooster.cost`).
+        Shape (G,) int.
 
     References
     ----------
     Lawson (1967); docs/theory/beam-action.md (the coupling-weighted step rule).
     """
     Ob, gam, _ = _grid(Omega, gamma, system.omega_1)
-    mu, Bt = _modal(system)
-    return _auto_steps(mu, Bt, Ob, gam, positive("step_phase", step_phase))
+    return step_counts(_unit_system(system), Ob, step_phase=positive("step_phase", step_phase),
+                       amplitude=gam, levels_per_octave=4, clip=True,
+                       max_steps=np.iinfo(np.int64).max if max_steps is None else max_steps)
 
 
-def _auto_steps(mu: np.ndarray, Bt: np.ndarray, Ob: np.ndarray, gam: np.ndarray,
-                step_phase: float) -> np.ndarray:
-    """Steps per half period from the coupling-weighted phase of the interaction terms.
+def monodromy_exponents(system: BeamActionSystem, Omega: np.ndarray, gamma: np.ndarray,
+                        n_steps: int | None = None, step_phase: float = 0.06,
+                        chunk: int = 256, *,
+                        max_steps: int = MONODROMY_MAX_STEPS) -> np.ndarray:
+    """Floquet exponents from the monodromy matrix over one period 2 pi / Omega.
 
-    In the modal interaction frame the term coupling modes j and k oscillates at
-    nu_jk = |omega_j| + |omega_k| + Omega_bar with rate g_jk = gamma |Bt_jk| / max(|omega_j|,
-    Omega_bar / 2); the error of a fourth-order step on it is about g (h nu)^4 / nu, so the step
-    satisfies h max_jk nu_jk^(3/4) g_jk^(1/4) <= step_phase (calibrated in the tests: 1e-8 on
-    alpha with the default 0.06).  Counts are rounded up to 2^(k/4) so that points can be
-    batched in few groups.
+    :func:`flexbooster.floquet.floquet_multipliers` of q'' + [A0 - gamma cos(Omega_bar tau) B]
+    q = 0: the half period by Lawson's integrating-factor RK4 in the modal frame of the
+    steady system, the period map by reversibility.
+
+    Parameters
+    ----------
+    system : BeamActionSystem
+        The normalised system.
+    Omega : array_like
+        Thrust pulsation frequencies (rad/s), > 0; broadcast against ``gamma``.
+    gamma : array_like
+        Pulsation amplitudes (dimensionless), 0 <= gamma < 1.
+    n_steps : int, optional
+        Steps per half period for every point (default :func:`monodromy_steps`).
+    step_phase : float
+        Tolerance parameter of the automatic rule, > 0; 0.06 gives about 1e-9 on alpha.
+    chunk : int
+        Grid points per batch (memory).
+    max_steps : int
+        Cap on the automatic step count per half period, 8..10^7: the rule needs
+        ~1/Omega_bar steps; :data:`MONODROMY_MAX_STEPS` keeps alpha to about 3e-6 at
+        Omega_bar = 4.4e-4 (docs/theory/robustness.md).
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (G, 2n) complex exponents alpha = log(rho) / (2 pi i), Re alpha in (-1/2, 1/2],
+        rho the Floquet multipliers (flattened grid).
+
+    Raises
+    ------
+    flexbooster.floquet.PeriodMapOverflowError
+        Where the period map overflows (naming Omega in rad/s and gamma).
+
+    References
+    ----------
+    Bolotin (1964), sec. 2-3; Lawson (1967); Tech Memo 104, eqs. (4.1-10), (4.1-11).
     """
-    w = np.abs(np.sqrt(mu.astype(complex)))
-    nu = w[:, None] + w[None, :] + Ob[:, None, None]  # (P, n, n)
-    g = gam[:, None, None] * np.abs(Bt)[None] / np.maximum(w[None, :, None],
-                                                            0.5 * Ob[:, None, None])
-    rate = np.max(nu**0.75 * g**0.25, axis=(1, 2))
-    steps = np.maximum(8.0, np.ceil((np.pi / Ob) * rate / step_phase))
-    return np.ceil(2.0 ** (np.ceil(4.0 * np.log2(steps)) / 4.0)).astype(int)
-
-
-def _multipliers(mu, Bt, Ob, gam, steps, chunk) -> np.ndarray:
-    n = mu.size
-    rho = np.empty((Ob.size, 2 * n), dtype=complex)
-    order = np.argsort(-steps, kind="stable")  # descending counts: batches of similar cost
-    for start in range(0, order.size, chunk):
-        sel = order[start:start + chunk]
-        Phi = _monodromy_half(mu, Bt, Ob[sel], gam[sel], steps[sel])
-        rho[sel] = _multipliers_from_half(Phi)
-    return rho
+    Ob, gam, _ = _grid(Omega, gamma, system.omega_1)
+    chunk = count("chunk", chunk, 1, 10**6)
+    max_steps = count("max_steps", max_steps, 8, 10**7)
+    steps = (monodromy_steps(system, Omega, gamma, step_phase, max_steps=max_steps)
+             if n_steps is None else count("n_steps", n_steps, 1, 10**7))
+    try:
+        rho = floquet_multipliers(_unit_system(system), None, None, None, Ob, n_steps=steps,
+                                  max_steps=10**7, chunk=chunk, amplitude=gam)
+    except PeriodMapOverflowError as exc:
+        i = int(np.argmin(np.abs(Ob - exc.Omega)))
+        raise PeriodMapOverflowError(
+            f"Omega = {float(Ob[i] * system.omega_1):.6g} rad/s, gamma = {float(gam[i]):.6g}: "
+            "the period map overflowed or is singular to working precision (a growth over one "
+            "thrust period beyond ~1e15)", exc.Omega) from None
+    return np.log(rho) / (2j * np.pi)
 
 
 # --------------------------------------------------------------------------------------------
@@ -1116,7 +896,7 @@ class BeamActionResult:
         Shape (G,), max_r |Im alpha_r| Omega (1/s), over all N + 1 exponents; 0 where the
         point is stable (|Im alpha| <= 1e-6 is round-off).
     max_growth_rate : float
-        Largest growth rate (1/s): of the bands' maxima (exact, issue 12) and of the grid
+        Largest growth rate (1/s): of the bands' maxima (exact) and of the grid
         points (those below the band search's range); 0 when no band and no grid point is
         unstable.
     Omega_at_max : float
@@ -1126,7 +906,8 @@ class BeamActionResult:
         check points (dimensionless).
     verdict : str
         "unstable" when an instability band exists in the range (:attr:`bands`), else
-        "stable" ("not searched" when the band search was skipped).
+        "stable", or "not fully searched: ..." when a limit of the search left part of it
+        out (:attr:`gaps`).
     gamma, K, N, S, R : float, float, int, int, int
         Inputs.
     p : float
@@ -1140,8 +921,8 @@ class BeamActionResult:
     band_range : (float, float)
         The Omega range searched for every kind of band (rad/s): the grid's, raised to
         omega_1 / 4; below it the rigid-pitch tongues are searched (:func:`pitch_tongue_bands`).
-    skipped : tuple of str
-        The parts of the range not searched (:class:`BandSearch`), one line each.
+    gaps : tuple of SearchGap
+        What the limits of the tongue search left out.
     """
 
     Omega: np.ndarray
@@ -1164,7 +945,7 @@ class BeamActionResult:
     beam_damping_ratio: float = 0.0
     pitch_damping_ratio: float = 0.0
     band_range: tuple = (0.0, 0.0)
-    skipped: tuple = ()
+    gaps: tuple = ()
 
     def unstable_intervals(self) -> list[tuple[float, float]]:
         """The bands as (omega_lo, omega_hi) (rad/s)."""
@@ -1196,7 +977,7 @@ class BeamActionResult:
             "beam_damping_ratio": float(self.beam_damping_ratio),
             "pitch_damping_ratio": float(self.pitch_damping_ratio),
             "band_range": [float(v) for v in self.band_range],
-            "skipped": [str(w) for w in self.skipped],
+            "gaps": [g.to_dict() for g in self.gaps],
         }
 
 
@@ -1211,82 +992,55 @@ TONGUE_MAX_HARMONICS = 24
 #: Where round-off keeps two successive K from agreeing to :data:`BAND_RTOL` (a tongue far
 #: below the beam modes: the harmonic-balance eigenproblem spans omega_beam / Omega in
 #: frequency, and its pitch roots wander by ~eps (omega_beam / Omega)^2 relative: ~1e-8 at
-#: Omega_bar ~ 1e-3 with heavy modal damping, ~1e-6 at Omega_bar ~ 1e-5, two fuzz cases of
-#: issue 18), the edges of the two successive K that agree best are used when they agree to
-#: this (relative to the centre): the edges then carry that uncertainty, not BAND_RTOL.
+#: Omega_bar ~ 1e-3 with heavy modal damping, ~1e-6 at Omega_bar ~ 1e-5), the edges of the
+#: two successive K that agree best are used when they agree to this (relative to the
+#: centre): the edges then carry that uncertainty, not BAND_RTOL.
 TONGUE_RTOL_FLOOR = 1e-4
+#: Below this Omega_bar the harmonic balance meets that round-off floor.
+TONGUE_FLOOR_OMEGA_BAR = 3e-3
 #: Relative tolerance of the critical gamma of a damped pitch tongue (bisection).
 TONGUE_GAMMA_RTOL = 1e-6
 #: Hill harmonics (s = -S..S) of the growth rate inside the pitch tongues r <= 4 (checked
-#: against S + 4 at the maximum); tongue r needs more as r grows: :func:`_tongue_hill_harmonics`.
+#: against S + 4 at the maximum); tongue r needs more as r grows: :func:`tongue_hill_harmonics`.
 TONGUE_HILL_HARMONICS = 4
+#: Highest rigid-pitch tongue order r searched below omega_1 / 4.
+TONGUE_MAX_ORDER = 63
 
 
-def _tongue_hill_harmonics(r: int) -> int:
+class TongueEdgesError(ValueError):
+    """The edges of a pitch tongue did not converge within :data:`TONGUE_MAX_HARMONICS`."""
+
+
+def tongue_hill_harmonics(r: int) -> int:
     """Hill harmonics S of the growth rate inside pitch tongue r: max(4, 2 r - 4).
 
     Tongue r arises at order r in gamma, and Hill's truncated determinant resolves it only
-    with enough harmonics: with fewer, the growth rate is round-off (~1e-8 1/s) however
-    unstable the tongue.  Measured on the coupled system of the fuzz case _FUZZ_TONGUE_2
-    (tests/test_robustness.py), against the rigid-pitch Mathieu tongues of
-    :func:`flexbooster.memo.pitch.pitch_bands`: r = 1..4 converge at S = 4, r = 5..9 first
-    at S = 6, 6, 10, 8, 12 (S = 4 gave 1e-8 1/s where the tongue grows at 1e-3 to 4e-6 1/s);
-    2 r - 4 covers them, and the value at the maximum is taken at S + 4.
+    with enough harmonics (with fewer the growth rate is round-off, ~1e-8 1/s): against the
+    rigid-pitch Mathieu tongues of :func:`flexbooster.memo.pitch.pitch_bands`, r = 1..4
+    converge at S = 4, r = 5..9 first at S = 6, 6, 10, 8, 12; the value at the maximum is
+    taken at S + 4.
     """
     return max(TONGUE_HILL_HARMONICS, 2 * r - 4)
 
-# Cost model of the pitch-tongue search (issue 18; one core, OPENBLAS_NUM_THREADS=1), measured
-# on 310 fuzz-like boosters (N = 1..4, 2..5 modes) and the default booster at N = 6 and 10
-# (benchmarks/bench_cost.py): the harmonic-balance eigenproblems (scipy's QZ, order m = n h,
-# 2 n h with damping, h = 2 K or 2 K + 1 harmonic blocks) cost TONGUE_QZ_SECONDS m^3 plus a
-# fixed _TONGUE_CALL each; the growth maximum of a tongue (~31 Hill eigenproblems of order
-# 2 n (2 S + 1) and one of 2 n (2 S + 9), S = 4 when calibrated, S_r of tongue r since session
-# 11: _tongue_hill_harmonics) _TONGUE_GROWTH[0] + _TONGUE_GROWTH[1] x their m^3; the
-# pitch-only guide (1 x 1 harmonic balance) _TONGUE_GUIDE per use.  With damping the critical
-# gamma is a bisection of _TONGUE_BISECTIONS steps, each one eigenproblem at the tongue's
-# converged K.
-#: Seconds per m^3 of one generalised eigenproblem of order m in the pitch-tongue search.
-TONGUE_QZ_SECONDS = 1.2e-8
-_TONGUE_CALL = 4e-4
-_TONGUE_GROWTH = (0.1, 3e-9)
-_TONGUE_GUIDE = 3.5e-3
-_TONGUE_BISECTIONS = int(math.ceil(math.log2(1.0 / TONGUE_GAMMA_RTOL)))
-#: Tongues far below their neighbours' reach: without pitch damping the search is modelled to
-#: stop after tongue r = 11 at the latest (the highest found over the calibration cases: 10),
-#: or once the tongue's relative width (Mathieu, small q, A&S 20.2.25) is below 1e-6.
-_TONGUE_R_MODEL = 11
-_TONGUE_WIDTH_MODEL = 1e-6
-#: Below this Omega_bar the harmonic balance meets its round-off floor (TONGUE_RTOL_FLOOR):
-#: every K is tried (undamped) or one K more converges (damped).
-_TONGUE_FLOOR_OMEGA_BAR = 3e-3
 
-
-def _qz_seconds(n: int, K: int, period: str, damped: bool) -> float:
-    """Modelled time of one harmonic-balance eigenproblem (n modes, K harmonics)."""
-    m = n * (2 * K if period == "2T" else 2 * K + 1) * (2 if damped else 1)
-    return TONGUE_QZ_SECONDS * float(m) ** 3 + _TONGUE_CALL
-
-
-def _growth_seconds(n: int, S: int = TONGUE_HILL_HARMONICS) -> float:
-    """Modelled time of :func:`_growth_max` (n modes, S Hill harmonics)."""
-    c0, c1 = _TONGUE_GROWTH
-    m = 2 * n * (2 * S + 1)
-    return c0 + c1 * (31.0 * m**3 + (2 * n * (2 * S + 9)) ** 3)
-
-
-class _Spend:
-    """Modelled seconds of a tongue search so far (from the sizes of the eigenproblems it
-    solved: deterministic, unlike a clock)."""
-
-    def __init__(self) -> None:
-        self.seconds = 0.0
-
-
-def _pitch_mode(system: BeamActionSystem) -> int:
+def pitch_mode(system: BeamActionSystem) -> int:
     """Index (ascending frequency) of the steady mode with the largest rigid-rotation share."""
     mu, V = np.linalg.eig(system.A0)
     w = np.sqrt(mu.astype(complex))
     return int(np.flatnonzero(np.argsort(w.real, kind="stable") == _pitch_column(V))[0])
+
+
+def pitch_guide(system: BeamActionSystem, C: np.ndarray | None) -> tuple[float, float, float]:
+    """(mu_p, b_p, c_p): the pitch mode alone in the steady modal frame (units of omega_1).
+
+    Its equation eta'' + c_p eta' + (mu_p - b_p f(tau)) eta = 0 is a damped Mathieu
+    equation; C is the damping matrix (:func:`modal_damping`) or None.
+    """
+    mu, V = np.linalg.eig(system.A0)
+    ip = _pitch_column(V)
+    Vi = np.linalg.inv(V)
+    return (float(mu[ip].real), float((Vi @ system.B @ V)[ip, ip].real),
+            0.0 if C is None else float((Vi @ C @ V)[ip, ip].real))
 
 
 def _nearest_pair(r: np.ndarray, ref: tuple[float, float]) -> tuple[float, float] | None:
@@ -1325,8 +1079,8 @@ def _pitch_only_edges(mu_p: float, b_p: float, c_p: float, *, period: str, centr
 
 
 def _tongue_edges(A, C, B, *, period: str, centre: float, window: tuple[float, float],
-                  rtol: float, harmonics=None, guess: tuple[float, float] | None = None,
-                  spend: _Spend | None = None) -> tuple[tuple[float, float] | None, int]:
+                  rtol: float, harmonics=None, guess: tuple[float, float] | None = None
+                  ) -> tuple[tuple[float, float] | None, int]:
     """Edges of the tongue about ``centre`` from the converged T / 2T-periodic boundaries.
 
     Within the window, roots closer than rtol * centre in pairs (double roots: regions of
@@ -1337,8 +1091,8 @@ def _tongue_edges(A, C, B, *, period: str, centre: float, window: tuple[float, f
     With ``harmonics`` = (K,) one truncation is used as it is.  With ``guess`` (the pitch-only
     tongue, :func:`_pitch_only_edges`) the edges are the roots nearest to it from the first K
     on (a tongue r >= 3 does not straddle its tip).  Returns the edges (None: no tongue) and
-    the smaller K of the two that agree (as accurate, cheaper).  ``spend`` is charged the
-    modelled time of each eigenproblem.
+    the smaller K of the two that agree (as accurate, cheaper); :class:`TongueEdgesError` when
+    they do not converge with :data:`TONGUE_MAX_HARMONICS`.
     """
     n = A.shape[0]
     prev = None
@@ -1347,8 +1101,6 @@ def _tongue_edges(A, C, B, *, period: str, centre: float, window: tuple[float, f
     for K in Ks:
         r = periodic_boundaries(np.eye(n), C, A, B, period=period, n_harmonics=K,
                                 omega_max=window[1])
-        if spend is not None:
-            spend.seconds += _qz_seconds(n, K, period, C is not None)
         r = r[r >= window[0]]
         close = np.diff(r) <= rtol * centre
         drop = np.zeros(r.size, dtype=bool)
@@ -1375,15 +1127,15 @@ def _tongue_edges(A, C, B, *, period: str, centre: float, window: tuple[float, f
             diff = max(abs(cur[0] - prev[0]), abs(cur[1] - prev[1]))
             if diff < best[0]:
                 best = (diff, cur, K - 4)
-            elif best[0] <= TONGUE_RTOL_FLOOR * centre and centre < _TONGUE_FLOOR_OMEGA_BAR:
+            elif best[0] <= TONGUE_RTOL_FLOOR * centre and centre < TONGUE_FLOOR_OMEGA_BAR:
                 break  # worse after reaching the floor, far below the beam: round-off now
                 # grows with K, and a later close agreement would be by chance (keep the best)
         prev = cur
     if best[0] <= TONGUE_RTOL_FLOOR * centre:  # converged to round-off, not to rtol
         cur = best[1]  # a tongue when it is wider than twice the wander of its edges
         return (cur if cur[1] - cur[0] > 2.0 * max(best[0], rtol * centre) else None), best[2]
-    raise ValueError(f"pitch tongue near Omega_bar = {centre!r}: its edges did not converge "
-                     f"with {TONGUE_MAX_HARMONICS} harmonics")
+    raise TongueEdgesError(f"pitch tongue near Omega_bar = {centre!r}: its edges did not "
+                           f"converge with {TONGUE_MAX_HARMONICS} harmonics")
 
 
 def _hill_growth(A, C, B, om: np.ndarray, S: int) -> np.ndarray:
@@ -1461,61 +1213,43 @@ def _tongue_arguments(gamma, omega_min, omega_max) -> tuple[float, float, float]
     return gamma, lo, hi
 
 
-def _pitch_guide(system: BeamActionSystem, C: np.ndarray | None) -> tuple[float, float, float]:
-    """(mu_p, b_p, c_p): the pitch mode alone in the steady modal frame."""
-    mu, V = np.linalg.eig(system.A0)
-    ip = _pitch_column(V)
-    Vi = np.linalg.inv(V)
-    return (float(mu[ip].real), float((Vi @ system.B @ V)[ip, ip].real),
-            0.0 if C is None else float((Vi @ C @ V)[ip, ip].real))
-
-
 def _tongue_search(system: BeamActionSystem, gamma: float, lo: float, hi: float, *,
-                   beam_ratio: float, pitch_ratio: float, rtol: float = BAND_RTOL,
-                   max_seconds: float | None = None
-                   ) -> tuple[tuple[BeamActionBand, ...], str | None]:
-    """:func:`pitch_tongue_bands` (validated arguments) with a cap: before the growth maximum
-    and the critical gamma of a tongue, and before each next tongue, the modelled time spent
-    (:class:`_Spend`) plus the modelled time of that step is compared with ``max_seconds``;
-    past it the search stops.  Returns the bands and None, or the bands found so far and the
-    reason the rest was not searched (one line, naming max_seconds and the tongues left)."""
+                   beam_ratio: float, pitch_ratio: float, rtol: float = BAND_RTOL
+                   ) -> tuple[tuple[BeamActionBand, ...], tuple[SearchGap, ...]]:
+    """:func:`pitch_tongue_bands` (validated arguments) and what its limits leave out: the
+    tongues past :data:`TONGUE_MAX_ORDER`, or from the first whose edges do not converge
+    within :data:`TONGUE_MAX_HARMONICS` on (one :class:`flexbooster.bands.SearchGap`)."""
     w1 = float(system.omega_1)
-    p = _pitch_mode(system)
+    p = pitch_mode(system)
     wp = complex(loaded_frequencies(system)[p])
     if gamma == 0.0 or wp.imag != 0.0 or not wp.real > 0.0:
-        return (), None  # no pulsation, or the steady system diverges / flutters
+        return (), ()  # no pulsation, or the steady system diverges / flutters
     wp = wp.real
     C = modal_damping(system, beam_ratio=beam_ratio, pitch_ratio=pitch_ratio)
     A = system.A0
-    n = A.shape[0]
     # the pitch mode alone in the steady modal frame (the guide of each tongue's search)
-    mu_p, b_p, c_p = _pitch_guide(system, C)
-    spend = _Spend()
+    mu_p, b_p, c_p = pitch_guide(system, C)
     out = []
+
+    def done(gaps=()):
+        return tuple(sorted(out, key=lambda b: b.omega_lo)), gaps
+
+    def gap(r: int, limit: str, why: str) -> SearchGap:
+        top = 2.0 * wp * w1 / r
+        return SearchGap(stage="beam_action", limit=limit, order=r, Omega_lo=lo,
+                         Omega_hi=min(top, hi),
+                         reason=f"the rigid-pitch tongues r >= {r} (Omega <= {top:.6g} rad/s, "
+                                f"below omega_1 / 4) not searched: {why}")
+
     r_min = max(1, int(np.ceil(2.0 * wp * w1 / hi - 1e-12)))
-
-    def stop(r: int, step: float) -> str | None:
-        if max_seconds is None or spend.seconds + step <= max_seconds:
-            return None
-        return (f"max_seconds = {max_seconds:.3g}: the rigid-pitch tongues r >= {r} (Omega <= "
-                f"{2.0 * wp * w1 / r:.6g} rad/s, below omega_1 / 4) not searched, their "
-                f"search past its share of the budget ({spend.seconds:.3g} s modelled so far, "
-                f"{n} modes); raise thrust.omega_min, reduce truncation.N, or raise the budget")
-
-    for r in range(r_min, 64):
+    for r in range(r_min, TONGUE_MAX_ORDER + 1):
         centre = 2.0 * wp / r  # tip of tongue r (Omega_bar)
         if centre * w1 < lo:
             break
         window = (centre * (1.0 - 0.5 / (r + 1)), centre * (1.0 + 0.5 / r))  # to the next tips
         period = "2T" if r % 2 else "T"
-        K_model = _model_harmonics(r, centre, C is not None)
-        why = stop(r, sum(_qz_seconds(n, K, period, C is not None)
-                          for K in range(4, K_model + 5, 4)) + _TONGUE_GUIDE)
-        if why is not None:
-            return tuple(sorted(out, key=lambda b: b.omega_lo)), why
 
         def edges(g, harmonics=None, centre=centre, window=window, period=period):
-            spend.seconds += _TONGUE_GUIDE
             guess = _pitch_only_edges(mu_p, g * b_p, c_p, period=period, centre=centre,
                                       window=window)
             if harmonics == (0,):
@@ -1523,25 +1257,22 @@ def _tongue_search(system: BeamActionSystem, gamma: float, lo: float, hi: float,
             try:
                 return _tongue_edges(A, C, -g * system.B, period=period, centre=centre,
                                      window=window, rtol=rtol, harmonics=harmonics,
-                                     guess=guess, spend=spend)
-            except ValueError:  # round-off beyond TONGUE_RTOL_FLOOR (Omega_bar ~ 1e-6: the
-                if guess is None:  # beam modes 1e6 above): the pitch mode alone, whose
+                                     guess=guess)
+            except TongueEdgesError:  # round-off beyond TONGUE_RTOL_FLOOR (Omega_bar ~ 1e-6:
+                if guess is None:  # the beam modes 1e6 above): the pitch mode alone, whose
                     raise  # coupling to them is O((Omega / omega_beam)^2), below round-off
                 return guess, 0
 
-        e, K = edges(gamma)
+        try:
+            e, K = edges(gamma)
+        except TongueEdgesError:
+            return done((gap(r, "TONGUE_MAX_HARMONICS", "their edges do not converge with "
+                             f"TONGUE_MAX_HARMONICS = {TONGUE_MAX_HARMONICS} harmonics"),))
         if e is None:
             if r > 2:
                 break  # higher tongues are narrower still
             continue
-        S = _tongue_hill_harmonics(r)
-        rest = _growth_seconds(n, S) + (0.0 if C is None else _TONGUE_BISECTIONS * (
-            _TONGUE_GUIDE + (_qz_seconds(n, K, period, True) if K else 0.0)))
-        why = stop(r, rest)
-        if why is not None:
-            return tuple(sorted(out, key=lambda b: b.omega_lo)), why
-        g_max, x_max = _growth_max(A, C, -gamma * system.B, *e, S=S)
-        spend.seconds += _growth_seconds(n, S)
+        g_max, x_max = _growth_max(A, C, -gamma * system.B, *e, S=tongue_hill_harmonics(r))
         g_cr = 0.0
         if C is not None:  # bisection on existence (Bolotin 1964, sec. 6), K of the edges
             a, b = 0.0, gamma
@@ -1555,107 +1286,11 @@ def _tongue_search(system: BeamActionSystem, gamma: float, lo: float, hi: float,
             omega_at_max=x_max * w1, kind="simple", modes=(p,), order=r,
             omega_center=centre * w1, clipped=(e_lo > e[0] * w1 or e_hi < e[1] * w1),
             critical_gamma=g_cr))
-    return tuple(sorted(out, key=lambda b: b.omega_lo)), None
-
-
-def _model_harmonics(r: int, centre: float, damped: bool) -> int:
-    """The harmonics K at which the edges of tongue r are modelled to converge (the search
-    raises K by 4 until two agree): 4 for r <= 2, 8 for r <= 6, ..., one step more below
-    :data:`_TONGUE_FLOOR_OMEGA_BAR` with damping, up to TONGUE_MAX_HARMONICS - 4."""
-    K = 4 * math.ceil((r + 2) / 4)
-    if damped and centre < _TONGUE_FLOOR_OMEGA_BAR:
-        K += 4
-    return min(K, TONGUE_MAX_HARMONICS - 4)
-
-
-def _mathieu_log_width(theta: float, r: int) -> float:
-    """log of the relative width (in a) of Mathieu tongue r at q = theta r^2, small-q
-    leading term 2 q^r / (4^(r-1) ((r-1)!)^2) / r^2 (A&S 20.2.25 and its higher analogues)."""
-    q = theta * r * r
-    if not q > 0.0:
-        return -math.inf
-    return (math.log(2.0) + r * math.log(q) - (r - 1) * math.log(4.0)
-            - 2.0 * math.lgamma(r) - 2.0 * math.log(r))
-
-
-def tongue_search_seconds(system: BeamActionSystem, gamma: float, *, omega_min: float,
-                          omega_max: float, beam_ratio: float = 0.0,
-                          pitch_ratio: float = 0.0) -> float:
-    """Estimated time of :func:`pitch_tongue_bands` (no eigenproblem of the search is solved).
-
-    The tongues r whose tip 2 omega_p / r lies in the range are counted while they exist:
-    with pitch damping while the undamped relative width of the pitch-only Mathieu tongue
-    (q = gamma b_p r^2 / (2 mu_p) in the steady modal frame) exceeds 4 zeta_p, the damping
-    ratio of the pitch mode (damped Mathieu: the growth rate at the centre of the tongue,
-    Delta a / (4 r), must exceed the decay zeta r); without it while the width exceeds 1e-6
-    and r <= 11 (the search stops earlier where round-off leaves it empty; the highest found
-    over the calibration cases is 10); for r >= 3 while the tongue's drift below its tip,
-    ~theta^2 / 4 relative (theta = q / r^2), stays inside the search window, r theta^2 <= 2.
-    Each costs its edges (K = 4..K_r + 4, :func:`_model_harmonics`), its growth maximum and,
-    with damping, the bisection of its critical gamma at K_r; the tongue that ends the search
-    costs its edges.  The converged K is not known before the search (round-off far below
-    the beam can take it to 20): the search itself is capped (:func:`pipeline_band_search`).
-
-    Parameters
-    ----------
-    system : BeamActionSystem
-        The normalised system.
-    gamma : float
-        Pulsation amplitude (dimensionless), 0 <= gamma < 1.
-    omega_min, omega_max : float
-        The low Omega range (rad/s), 0 < omega_min < omega_max.
-    beam_ratio, pitch_ratio : float
-        Modal damping ratios (dimensionless), see :func:`modal_damping`.
-
-    Returns
-    -------
-    float
-        Seconds on one core (calibration: the comments above :data:`TONGUE_QZ_SECONDS`;
-        estimate against measured time in benchmarks/bench_cost.py).
-
-    References
-    ----------
-    M. Abramowitz, I. A. Stegun, *Handbook of Mathematical Functions*, 1964, 20.2.25;
-    Bolotin (1964), sec. 6 (damped regions).
-    """
-    gamma, lo, hi = _tongue_arguments(gamma, omega_min, omega_max)
-    C = modal_damping(system, beam_ratio=beam_ratio, pitch_ratio=pitch_ratio)
-    w1 = float(system.omega_1)
-    wp = complex(loaded_frequencies(system)[_pitch_mode(system)])
-    if gamma == 0.0 or wp.imag != 0.0 or not wp.real > 0.0:
-        return 0.0
-    wp = wp.real
-    n = system.A0.shape[0]
-    mu_p, b_p, c_p = _pitch_guide(system, C)
-    theta = gamma * abs(b_p) / (2.0 * mu_p)
-    zeta = abs(c_p) / (2.0 * math.sqrt(mu_p)) if pitch_ratio > 0.0 else 0.0
-    damped = C is not None
-    seconds = 0.0
-    r_min = max(1, int(np.ceil(2.0 * wp * w1 / hi - 1e-12)))
-    for r in range(r_min, 64):
-        centre = 2.0 * wp / r
-        if centre * w1 < lo:
-            break
-        period = "2T" if r % 2 else "T"
-        K = _model_harmonics(r, centre, damped)
-        log_w = _mathieu_log_width(theta, r)
-        exists = (log_w > math.log(4.0 * zeta) if zeta > 0.0 else
-                  log_w > math.log(_TONGUE_WIDTH_MODEL) and r <= _TONGUE_R_MODEL)
-        # a tongue r >= 3 drifts below its tip by ~theta^2 / 4 (Mathieu: a_r ~ r^2 + q^2 /
-        # (2 (r^2 - 1))): out of the search window (0.5 / (r + 1) below the tip) past 2/theta^2
-        exists = exists and (r <= 2 or r * theta**2 <= 2.0)
-        if not exists:  # its edges (K = 4, 8) end the search, or (r <= 2) go on
-            seconds += _TONGUE_GUIDE + sum(_qz_seconds(n, k, period, damped) for k in (4, 8))
-            if r > 2:
-                break
-            continue
-        Ks = (range(4, TONGUE_MAX_HARMONICS + 1, 4)
-              if not damped and centre < _TONGUE_FLOOR_OMEGA_BAR else range(4, K + 5, 4))
-        seconds += _TONGUE_GUIDE + sum(_qz_seconds(n, k, period, damped) for k in Ks)
-        seconds += _growth_seconds(n, _tongue_hill_harmonics(r))
-        if damped:
-            seconds += _TONGUE_BISECTIONS * (_TONGUE_GUIDE + _qz_seconds(n, K, period, True))
-    return float(seconds)
+    else:  # the order limit, not a stopping rule, ended the search
+        r = max(r_min, TONGUE_MAX_ORDER + 1)
+        if 2.0 * wp * w1 / r >= lo:
+            return done((gap(r, "TONGUE_MAX_ORDER", f"TONGUE_MAX_ORDER = {TONGUE_MAX_ORDER}"),))
+    return done()
 
 
 def _band_range(model: BoosterModel, omega_1: float) -> tuple[float, float]:
@@ -1664,39 +1299,38 @@ def _band_range(model: BoosterModel, omega_1: float) -> tuple[float, float]:
             float(np.max(model.Omega)))
 
 
-@dataclass(frozen=True)
-class BandSearch:
-    """The pipeline's band search (:func:`pipeline_band_search`).
+def _band_search(model: BoosterModel, system: BeamActionSystem
+                 ) -> tuple[tuple[BeamActionBand, ...], tuple[SearchGap, ...]]:
+    """:func:`pipeline_bands` and what the limits of the tongue search leave out."""
+    lo, hi = _band_range(model, float(system.omega_1))
+    gamma = float(model.gamma)
+    damping = {"beam_ratio": float(model.beam_damping_ratio),
+               "pitch_ratio": float(model.pitch_damping_ratio)}
+    found: tuple[BeamActionBand, ...] = ()
+    gaps: tuple[SearchGap, ...] = ()
+    if hi > lo:
+        found = beam_action_bands(system, gamma, omega_min=lo, omega_max=hi, **damping)
+    low = float(np.min(model.Omega))
+    if min(lo, hi) > low:  # below omega_1 / 4: the pitch tongues by harmonic balance
+        seen = {(b.kind, b.modes, b.order) for b in found}
+        tongues, gaps = _tongue_search(system, *_tongue_arguments(gamma, low, min(lo, hi)),
+                                       **damping)
+        found += tuple(b for b in tongues
+                       if (b.kind, b.modes, b.order) not in seen)  # a tongue across omega_1/4
+    return tuple(sorted(found, key=lambda b: b.omega_lo)), gaps
 
-    Attributes
-    ----------
-    bands : tuple of BeamActionBand
-        Sorted by omega_lo.
-    skipped : tuple of str
-        Why part of the range was not searched (the pitch-tongue search past its share of the
-        budget, ``max_seconds``), one line each; empty when all of it was.
-    """
 
-    bands: tuple = ()
-    skipped: tuple = ()
-
-
-def pipeline_band_search(model: BoosterModel, *,
-                         max_seconds: float | None = None) -> BandSearch:
-    """The bands :func:`beam_action_analysis` searches, on their own (a separate task).
+def pipeline_bands(model: BoosterModel) -> tuple[BeamActionBand, ...]:
+    """The instability bands of :func:`beam_action_analysis`.
 
     Parameters
     ----------
     model : BoosterModel
         The derived model: Omega range (rad/s), gamma, damping ratios, beam-action system.
-    max_seconds : float, optional
-        Cap (s, > 0) of the rigid-pitch tongue search below omega_1 / 4, in its own modelled
-        time (:func:`tongue_search_seconds`; deterministic): the tongues past it are not
-        searched and named in ``skipped``.  None: no cap.
 
     Returns
     -------
-    BandSearch
+    tuple of BeamActionBand
         :func:`beam_action_bands` over [max(Omega[0], omega_1 / 4), Omega[-1]]
         (:data:`BAND_OMEGA_BAR_MIN`) and, below omega_1 / 4, the rigid-pitch tongues of the
         coupled system (:func:`pitch_tongue_bands`), with the model's damping ratios; sorted
@@ -1706,72 +1340,7 @@ def pipeline_band_search(model: BoosterModel, *,
     ----------
     Bolotin (1964), ch. 1-2, sec. 6; Tech Memo 104, eqs. (4.1-10), (4.1-11).
     """
-    if max_seconds is not None:
-        max_seconds = positive("max_seconds", max_seconds)
-    system = beam_system(model)
-    lo, hi = _band_range(model, float(system.omega_1))
-    gamma = float(model.gamma)
-    damping = {"beam_ratio": float(model.beam_damping_ratio),
-               "pitch_ratio": float(model.pitch_damping_ratio)}
-    found: tuple[BeamActionBand, ...] = ()
-    skipped: tuple[str, ...] = ()
-    if hi > lo:
-        found = beam_action_bands(system, gamma, omega_min=lo, omega_max=hi, **damping)
-    low = float(np.min(model.Omega))
-    if min(lo, hi) > low:  # below omega_1 / 4: the pitch tongues by harmonic balance
-        seen = {(b.kind, b.modes, b.order) for b in found}
-        tongues, why = _tongue_search(system, *_tongue_arguments(gamma, low, min(lo, hi)),
-                                      max_seconds=max_seconds, **damping)
-        found += tuple(b for b in tongues
-                       if (b.kind, b.modes, b.order) not in seen)  # a tongue across omega_1/4
-        skipped = () if why is None else (why,)
-    return BandSearch(bands=tuple(sorted(found, key=lambda b: b.omega_lo)), skipped=skipped)
-
-
-def pipeline_bands(model: BoosterModel) -> tuple[BeamActionBand, ...]:
-    """:func:`pipeline_band_search` without a cap: its bands.
-
-    Parameters
-    ----------
-    model : BoosterModel
-        The derived model.
-
-    Returns
-    -------
-    tuple of BeamActionBand
-        Sorted by omega_lo.
-
-    References
-    ----------
-    Bolotin (1964), ch. 1-2, sec. 6; Tech Memo 104, eqs. (4.1-10), (4.1-11).
-    """
-    return pipeline_band_search(model).bands
-
-
-def hill_check(model: BoosterModel, *, n_hill: int = 3) -> HillResult:
-    """Hill's exponents at ``n_hill`` points of the Omega grid: the independent check of the
-    monodromy exponents in :func:`beam_action_analysis`, on its own (a separate task).
-
-    Parameters
-    ----------
-    model : BoosterModel
-        The derived model: Omega grid (rad/s), gamma, truncation N and S.
-    n_hill : int
-        Grid points (evenly spread, ends included), 1..len(Omega) (clipped to the grid size).
-
-    Returns
-    -------
-    HillResult
-        :func:`hill_exponents` with S = ``model.truncation.S`` at those points.
-
-    References
-    ----------
-    Bolotin (1964), sec. 7 (Hill's infinite determinant); Tech Memo 104, eqs. (4.1-10), (4.1-11).
-    """
-    system = beam_system(model)
-    Ob, gam, _ = _grid(model.Omega, float(model.gamma), system.omega_1)
-    pick = _hill_points(Ob.size, n_hill)
-    return hill_exponents(system, Ob[pick] * system.omega_1, gam[pick], model.truncation.S)
+    return _band_search(model, beam_system(model))[0]
 
 
 def _hill_points(n_grid: int, n_hill: int) -> np.ndarray:
@@ -1780,159 +1349,61 @@ def _hill_points(n_grid: int, n_hill: int) -> np.ndarray:
     return np.unique(np.round(np.linspace(0, n_grid - 1, n_hill)).astype(int))
 
 
-@dataclass(frozen=True)
-class BeamActionExponents:
-    """The beam-action exponents on the Omega grid: the first part of the beam action.
-
-    What the stability table needs (:func:`flexbooster.memo.responses.excitation_parameters`),
-    before the bands and the Hill check of :func:`beam_action_analysis` complete it.
-
-    Attributes
-    ----------
-    Omega_bar : numpy.ndarray
-        Shape (G,), Omega / omega_1 (dimensionless), the grid as in
-        :attr:`BeamActionResult.Omega_bar`.
-    alpha : numpy.ndarray
-        Shape (G, R), the exponents alpha_r on the natural branch (dimensionless), as in
-        :attr:`BeamActionResult.alpha`.
-    reduced : numpy.ndarray
-        Shape (G, N + 1), every exponent of the monodromy matrix reduced to its canonical
-        representative (:func:`reduced_exponents`; dimensionless).
-    frequencies : numpy.ndarray
-        Shape (N + 1,), the loaded-beam frequencies (units of omega_1).
-    """
-
-    Omega_bar: np.ndarray
-    alpha: np.ndarray
-    reduced: np.ndarray
-    frequencies: np.ndarray
-
-
-def beam_action_exponents(model: BoosterModel) -> BeamActionExponents:
-    """alpha_r along the Omega grid from the monodromy matrix (no bands, no Hill check).
+def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3) -> BeamActionResult:
+    """alpha_r along the Omega grid, the instability bands and the verdict (pipeline stage).
 
     Parameters
     ----------
     model : BoosterModel
-        The derived model: its Omega grid (rad/s), omega_1, mass properties, F0 (N), gamma, K
-        and truncation N (elastic modes), R (exponents reported).
-
-    Returns
-    -------
-    BeamActionExponents
-        The exponents that :func:`beam_action_analysis` reports, bit for bit (it computes
-        them so when not given them).
-
-    References
-    ----------
-    Tech Memo 104, eqs. (4.1-10)..(4.1-12); Bolotin (1964).
-    """
-    system = beam_system(model)
-    R = count("R", model.truncation.R, 1, system.N + 1)
-    Ob, gam, _ = _grid(model.Omega, float(model.gamma), system.omega_1)
-    red_m = reduced_exponents(monodromy_exponents(system, Ob * system.omega_1, gam))
-    freqs = loaded_frequencies(system)
-    return BeamActionExponents(Omega_bar=Ob, alpha=natural_branch(red_m, Ob, freqs)[:, :R],
-                               reduced=red_m, frequencies=freqs)
-
-
-def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3,
-                         bands: bool | tuple | BandSearch | Callable[[], tuple | BandSearch]
-                         = True,
-                         hill: HillResult | Callable[[], HillResult] | None = None,
-                         exponents: BeamActionExponents | None = None,
-                         ) -> BeamActionResult:
-    """alpha_r along the Omega grid and the beam-action verdict (pipeline entry point).
-
-    Parameters
-    ----------
-    model : BoosterModel
-        The derived model: its Omega grid (rad/s), omega_1, mass properties, F0 (N), gamma, K
-        and truncation N (elastic modes), S (Hill harmonics), R (exponents reported).
+        The derived model: its Omega grid (rad/s), omega_1, mass properties, F0 (N), gamma, K,
+        damping ratios and truncation N (elastic modes), S (Hill harmonics), R (exponents
+        reported).
     n_hill : int
-        Number of grid points (evenly spread, ends included) at which Hill's determinant is
-        also solved and compared with the monodromy exponents, 1..len(Omega) (clipped to the
-        grid size); Hill costs O((2 (N + 1)(2 S + 1))^3) per point, about 0.1-0.5 s for
-        N = S = 10.
-    bands : bool, tuple of BeamActionBand, BandSearch or callable
-        Search the instability bands (:func:`pipeline_bands`); False: ``bands`` is empty and
-        the verdict is "not searched"; a tuple or a :class:`BandSearch`, or a function of no
-        argument returning one (called after the exponents are computed): the bands
-        :func:`pipeline_band_search` returns for this model, searched elsewhere (e.g. in a
-        worker process, with a cap: its ``skipped`` are the result's).
-    hill : HillResult or callable, optional
-        :func:`hill_check` of this model with this ``n_hill``, or a function of no argument
-        returning it (called after the exponents are computed: the check computed
-        elsewhere, e.g. in a worker process); default: computed here.
-    exponents : BeamActionExponents, optional
-        :func:`beam_action_exponents` of this model, computed before (e.g. for the stability
-        table while the bands are searched elsewhere); default: computed here.
+        Grid points (evenly spread, ends included) at which Hill's determinant is also solved
+        and compared with the monodromy exponents, 1..len(Omega) (clipped to the grid size).
 
     Returns
     -------
     BeamActionResult
         Exponents on the whole grid from the monodromy matrix, reduced to the natural branch;
-        ``hill_monodromy_difference`` is the largest difference of the canonical
-        representatives at the Hill points; the bands over
-        [max(Omega[0], omega_1 / 4), Omega[-1]] (:data:`BAND_OMEGA_BAR_MIN`; the range is
-        ``band_range``) from :func:`beam_action_bands` and the pitch tongues below it
-        (:func:`pipeline_bands`) with the model's damping ratios, and
-        the verdict from the bands.
+        ``hill_monodromy_difference``, the largest difference of the canonical
+        representatives at the Hill points; the bands (:func:`pipeline_bands`) and what the
+        limits of their search left out (``gaps``); the verdict from the bands.
 
     References
     ----------
     Tech Memo 104, eqs. (4.1-10)..(4.1-12); Bolotin (1964); Beal (1965).
     """
     system = beam_system(model)
-    N, S = system.N, model.truncation.S
-    R = count("R", model.truncation.R, 1, N + 1)
+    w1 = float(system.omega_1)
+    S = model.truncation.S
+    R = count("R", model.truncation.R, 1, system.N + 1)
     gamma = float(model.gamma)
     Ob, gam, _ = _grid(model.Omega, gamma, system.omega_1)
     pick = _hill_points(Ob.size, n_hill)
-    if exponents is None:
-        exponents = beam_action_exponents(model)
-    elif exponents.alpha.shape != (Ob.size, R) or not np.array_equal(exponents.Omega_bar, Ob):
-        raise ValueError(f"exponents: shape {exponents.alpha.shape} on another grid, not the "
-                         f"{(Ob.size, R)} of this model's grid and truncation.R")
-    red_m, freqs = exponents.reduced, exponents.frequencies
-    if hill is None:
-        hill = hill_exponents(system, Ob[pick] * system.omega_1, gam[pick], S)
-    elif callable(hill):  # computed elsewhere, meanwhile
-        hill = hill()
-    if hill.alpha.shape[0] != pick.size:
-        raise ValueError(f"hill: {hill.alpha.shape[0]} points, not the {pick.size} of "
-                         f"n_hill = {n_hill} on this model's grid")
+    red_m = reduced_exponents(monodromy_exponents(system, Ob * system.omega_1, gam))
+    freqs = loaded_frequencies(system)
+    hill = hill_exponents(system, Ob[pick] * system.omega_1, gam[pick], S)
     diff = float(np.max(_match_distance(reduced_exponents(hill.alpha), red_m[pick])))
     im = np.max(red_m.imag, axis=1)
     stable = im <= _STABLE_TOL
     # below the stability tolerance Im alpha is round-off: report a growth rate of 0 there
     growth = np.where(stable, 0.0, im * Ob * system.omega_1)  # 1/s
     i = int(np.argmax(growth))
-    at_max = float(Ob[i] * system.omega_1) if growth[i] > 0.0 else 0.0
-    zb, zp = float(model.beam_damping_ratio), float(model.pitch_damping_ratio)
-    lo, hi = _band_range(model, float(system.omega_1))
-    if callable(bands):  # searched elsewhere, meanwhile
-        bands = bands()
-    skipped: tuple = ()
-    if isinstance(bands, BandSearch):
-        bands, skipped = tuple(bands.bands), tuple(bands.skipped)
-    searched = isinstance(bands, tuple) or bool(bands)
-    found = tuple(bands) if isinstance(bands, tuple) else (
-        pipeline_bands(model) if bands else ())
-    verdict = ("unstable" if found else "stable") if searched else "not searched"
-    if skipped and not found:  # part of the range not searched: no verdict of stability
-        verdict = "unknown: " + "; ".join(skipped)
-    peak, at_peak = float(growth[i]), at_max
+    peak, at_peak = float(growth[i]), (float(Ob[i] * system.omega_1) if growth[i] > 0.0 else 0.0)
+    found, gaps = _band_search(model, system)
     for band in found:  # the bands' exact maxima: a grid steps over narrow bands
         if band.growth_rate_max > peak:
             peak, at_peak = float(band.growth_rate_max), float(band.omega_at_max)
+    verdict = "unstable" if found else (gaps_text(gaps) if gaps else "stable")
     return BeamActionResult(
-        Omega=Ob * system.omega_1, Omega_bar=Ob, alpha=exponents.alpha, frequencies=freqs[:R],
-        stable=stable, growth_rate=growth, max_growth_rate=peak,
-        Omega_at_max=at_peak, hill_monodromy_difference=diff,
-        verdict=verdict, gamma=gamma, K=system.K,
-        N=system.N, S=S, R=R, p=system.p, bands=found, beam_damping_ratio=zb,
-        pitch_damping_ratio=zp, band_range=(lo, hi), skipped=skipped)
+        Omega=Ob * w1, Omega_bar=Ob, alpha=natural_branch(red_m, Ob, freqs)[:, :R],
+        frequencies=freqs[:R], stable=stable, growth_rate=growth, max_growth_rate=peak,
+        Omega_at_max=at_peak, hill_monodromy_difference=diff, verdict=verdict, gamma=gamma,
+        K=system.K, N=system.N, S=S, R=R, p=system.p, bands=found,
+        beam_damping_ratio=float(model.beam_damping_ratio),
+        pitch_damping_ratio=float(model.pitch_damping_ratio),
+        band_range=_band_range(model, w1), gaps=gaps)
 
 
 @dataclass(frozen=True)
