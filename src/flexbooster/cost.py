@@ -81,7 +81,7 @@ _C_CHART = 2.5  # beam-action chart of the default, scales like (n / 11)^2.5
 _C_PITCH_STEP = (2e-5, 3e-7)  # per Magnus step: fixed, per grid point
 _C_TONGUE = 0.07  # pitch bands, per tongue in the range
 # pitch bands at a large pulsation: tongue r (a ~ r^2) costs ~ r^1.5 Hill rows x evaluations
-# while it is wider than round-off, r <= 110 gamma (fuzz cases of issue 18: 5.2 s at gamma
+# while it is wider than round-off, r <= 110 gamma (fuzz cases: 5.2 s at gamma
 # = 0.78 for r = 6..60, 0.83 s at 0.4, x 2.5 with pitch damping, 12 s)
 _C_TONGUE_R = (4.6e-4, 0.78, 110.0, 2.5)  # per r^1.5 at gamma_ref; r cut / gamma; damped x
 _C_TONGUE_LEVEL = 0.04  # pitch chart, per tongue and gamma level

@@ -50,22 +50,10 @@ _MAX_COND = 1e8
 class StabilityCertificate:
     """Weighted logarithmic-norm bound of the Floquet exponents, valid at every Omega.
 
-    Attributes
-    ----------
-    rho : float
-        Spectral radius of Q = diag(1 / delta) |G| (dimensionless); inf when no bound exists
-        (an undamped or unstable steady mode, or an ill-conditioned modal frame).
-    growth_bound : float
-        mu_d with the Perron weights (1 / time unit of the matrices): every Re lambda at every
-        Omega is <= it; inf when no bound exists.
-    certified : bool
-        growth_bound < 0: the system is asymptotically stable for every Omega.
-    amplitude_factor : float
-        1 / rho (dimensionless): B may be scaled by any factor below it and stay certified.
-
-    References
-    ----------
-    Dahlquist (1959); Desoer & Vidyasagar (1975), sec. 2.8.
+    ``rho``: spectral radius of Q = diag(1 / delta) |G|; ``growth_bound``: mu_d with the Perron
+    weights (1 / time unit), every Re lambda at every Omega is below it (both inf without a
+    bound); ``certified``: growth_bound < 0; ``amplitude_factor`` = 1 / rho, how far B may be
+    scaled and stay certified (Dahlquist 1959; Desoer & Vidyasagar 1975, sec. 2.8).
     """
 
     rho: float
@@ -87,7 +75,16 @@ _NONE = StabilityCertificate(rho=np.inf, growth_bound=np.inf, certified=False,
                              amplitude_factor=0.0)
 
 
-def _certificate(system: LinearPeriodicSystem) -> StabilityCertificate:
+def stability_certificate(M, C, A, B) -> StabilityCertificate:
+    """Bound of every Floquet exponent of M q'' + C q' + (A + B cos Omega t) q = 0, any Omega.
+
+    The system as :func:`flexbooster.floquet.periodic_system` (or a LinearPeriodicSystem as M);
+    without damping, or with an undamped or unstable steady mode or a modal frame of condition
+    above 1e8, no bound (``certified`` False).
+    """
+    system = M if isinstance(M, LinearPeriodicSystem) else periodic_system(M, C, A, B)
+    if not system.damped:
+        return _NONE
     n = system.n
     L0 = np.block([[np.zeros((n, n)), np.eye(n)], [-system.K0, -system.Kc]])
     lam, W = np.linalg.eig(L0)
@@ -113,30 +110,3 @@ def _certificate(system: LinearPeriodicSystem) -> StabilityCertificate:
     mu = float(np.max(-delta + (G @ d) / d))
     return StabilityCertificate(rho=rho, growth_bound=mu, certified=bool(mu < 0.0),
                                 amplitude_factor=1.0 / rho if rho > 0.0 else np.inf)
-
-
-def stability_certificate(M, C, A, B) -> StabilityCertificate:
-    """Bound of every Floquet exponent of M q'' + C q' + (A + B cos Omega t) q = 0, any Omega.
-
-    Parameters
-    ----------
-    M, C, A, B : array_like
-        The system, each (n, n) (see :func:`flexbooster.floquet.periodic_system`; C may be
-        None, then no bound exists); a :class:`LinearPeriodicSystem` may be passed as M.
-
-    Returns
-    -------
-    StabilityCertificate
-        ``certified`` is True when the weighted logarithmic norm (module docstring) is
-        negative: the system is asymptotically stable at every Omega (no instability region
-        at all); ``amplitude_factor`` is how far B may be scaled and stay certified.
-
-    References
-    ----------
-    Dahlquist (1959); Desoer & Vidyasagar (1975), ch. 2, sec. 2.8; Horn & Johnson (1985),
-    sec. 8.3.
-    """
-    system = M if isinstance(M, LinearPeriodicSystem) else periodic_system(M, C, A, B)
-    if not system.damped:
-        return _NONE
-    return _certificate(system)

@@ -1,17 +1,11 @@
-"""Harmonic balance for M q'' + C q' + (A + B cos Omega t) q = 0: Hill exponents and boundaries.
+"""Harmonic balance of M q'' + C q' + (A + B cos Omega t) q = 0: Hill's exponents, periodic
+boundaries.
 
-* :func:`hill_exponents`: Hill's infinite determinant truncated at s = -S..S, solved as a
-  linear eigenproblem in the exponent lambda for each Omega (batched).
-* :func:`periodic_boundaries`: Bolotin's harmonic balance for the T- and 2T-periodic solutions,
-  which are the boundaries of the simple (parametric) instability regions, as an eigenproblem
-  in Omega (linear in Omega^2 when C = 0, quadratic in Omega, linearised, when C != 0).
-
-References
-----------
-.. [1] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, ch. 1
-   (sec. 3-5: harmonic balance, eqs. (3.4)-(3.9) for the boundaries with period 2T and T),
-   ch. 2 (sec. 7-8: matrix form; Hill's determinant).
-.. [2] W. Magnus, S. Winkler, *Hill's Equation*, Wiley, 1966, ch. 2 (Hill's determinant).
+:func:`hill_exponents` and :func:`hill_modes`: Hill's infinite determinant truncated at
+s = -S..S, a linear eigenproblem in the exponent per Omega (batched);
+:func:`periodic_boundaries`: the T- and 2T-periodic solutions that bound the simple regions,
+an eigenproblem in Omega (Bolotin 1964, ch. 1 sec. 3-5, ch. 2 sec. 7-8; Magnus & Winkler 1966,
+ch. 2).
 """
 
 from __future__ import annotations
@@ -40,17 +34,9 @@ def _harmonics(name: str, value, low: int = 0, high: int = 200) -> int:
 
 @dataclass(frozen=True)
 class HillModes:
-    """Floquet exponents with their Fourier vectors from Hill's truncated determinant.
-
-    Attributes
-    ----------
-    exponents : numpy.ndarray
-        Shape (P, k), complex exponents lambda (1 / time unit of the matrices).
-    vectors : numpy.ndarray
-        Shape (P, k, 2S + 1, n), the Fourier vectors c_s (s = -S..S) of
-        q = exp(lambda t) sum_s c_s exp(i s Omega t), unit Euclidean norm.
-    centroid : numpy.ndarray
-        Shape (P, k), the harmonic centroid sum_s s |c_s|^2 of each vector.
+    """Hill's exponents lambda (P, k) (1 / time unit), their unit Fourier vectors c_s
+    (s = -S..S) (P, k, 2S + 1, n) of q = exp(lambda t) sum_s c_s exp(i s Omega t), and the
+    centroids sum_s s |c_s|^2 (P, k).
     """
 
     exponents: np.ndarray
@@ -118,43 +104,14 @@ def _hill_arguments(M, C, A, B, Omega, n_harmonics, chunk, amplitude):
 
 def hill_exponents(M, C, A, B, Omega, *, n_harmonics: int = 8, chunk: int = 8,
                    amplitude=None, real_form: bool = False) -> np.ndarray:
-    """Characteristic exponents by Hill's determinant truncated at s = -S..S.
+    """Characteristic exponents lambda by Hill's determinant truncated at s = -S..S, (P, 2n).
 
-    With q = exp(lambda t) sum_s c_s exp(i s Omega t) the equation becomes, for each s,
-
-        M (lambda + i s Omega)^2 c_s + C (lambda + i s Omega) c_s + A c_s
-            + (B / 2) (c_{s-1} + c_{s+1}) = 0,
-
-    an eigenproblem of order 2n(2S + 1) in lambda.  Of its eigenvalues (each repeated modulo
-    i Omega) the 2n distinct ones whose Fourier vectors are most central (smallest
-    |sum_s s |c_s|^2|) are returned.
-
-    Parameters
-    ----------
-    M, C, A, B : array_like
-        The system (see :func:`flexbooster.floquet.periodic_system`).
-    Omega : array_like
-        Pulsation frequencies, shape (P,) (rad per time unit of the matrices), > 0.
-    n_harmonics : int
-        S, harmonics s = -S..S, 0..500.
-    chunk : int
-        Points per batched eigen-solve (memory).
-    amplitude : array_like, optional
-        Shape (P,): point p has the excitation amplitude[p] B (default 1).
-    real_form : bool
-        Solve an undamped system in its real form (lambda = i mu): a third of the work, the
-        same exponents to round-off.
-
-    Returns
-    -------
-    numpy.ndarray
-        Shape (P, 2n), complex exponents lambda (1 / time unit); max Re lambda is the growth
-        rate.  The truncation error falls fast with S when Omega is not small against the
-        frequencies.
-
-    References
-    ----------
-    Bolotin (1964), sec. 7-8; Magnus & Winkler (1966), ch. 2.
+    M (lambda + i s Omega)^2 c_s + C (lambda + i s Omega) c_s + A c_s + (B / 2)(c_(s-1) + c_(s+1))
+    = 0: of the eigenvalues (each repeated modulo i Omega) the 2n distinct ones whose Fourier
+    vectors are most central.  Omega (P,) > 0 (rad per time unit of the matrices); n_harmonics S
+    0..500; ``amplitude`` (P,): point p has amplitude[p] B; ``real_form``: an undamped system in
+    its real form (lambda = i mu), a third of the work.  Exact as S grows when Omega is not small
+    against the frequencies (Bolotin 1964, sec. 7-8).
     """
     system, om, S, amplitude = _hill_arguments(M, C, A, B, Omega, n_harmonics, chunk,
                                                amplitude)
@@ -191,22 +148,8 @@ def _distinct_central(lam: np.ndarray, cen: np.ndarray, om: np.ndarray,
 
 def hill_modes(M, C, A, B, Omega, *, n_harmonics: int = 8, chunk: int = 8,
                amplitude=None, real_form: bool = False) -> HillModes:
-    """The 2n exponents of Hill's determinant whose Fourier vectors are most central, with them.
-
-    Parameters
-    ----------
-    M, C, A, B, Omega, n_harmonics, chunk, amplitude, real_form
-        As :func:`hill_exponents`.
-
-    Returns
-    -------
-    HillModes
-        k = 2n exponents per point, the eigenvalues whose vectors have the smallest
-        |centroid| (not shifted, copies modulo i Omega not removed).
-
-    References
-    ----------
-    Bolotin (1964), sec. 7-8; Magnus & Winkler (1966), ch. 2.
+    """The 2n eigenvalues of :func:`hill_exponents`'s problem whose Fourier vectors are most
+    central (not shifted, copies modulo i Omega kept), with the vectors (:class:`HillModes`).
     """
     system, om, S, amplitude = _hill_arguments(M, C, A, B, Omega, n_harmonics, chunk,
                                                amplitude)
@@ -226,39 +169,14 @@ def hill_modes(M, C, A, B, Omega, *, n_harmonics: int = 8, chunk: int = 8,
 
 def periodic_boundaries(M, C, A, B, *, period: str = "2T", n_harmonics: int = 8,
                         omega_max: float | None = None) -> np.ndarray:
-    """Omega at which a T- or 2T-periodic solution exists (simple-region boundaries).
+    """Omega at which a T- or 2T-periodic solution exists (simple-region boundaries), sorted.
 
-    Harmonic balance with q = sum_k c_k exp(i k Omega t / 2), k odd (period 2T: boundaries of
-    the regions near 2 omega / j, j odd) or k even (period T: j even), |k| <= K:
-
-        [A - (k Omega / 2)^2 M + i (k Omega / 2) C] c_k + (B / 2) (c_{k-2} + c_{k+2}) = 0,
-
-    a quadratic eigenproblem in Omega (Bolotin 1964, eqs. (3.4)-(3.9) and sec. 8 for the
-    matrix form); with C = 0 it is the generalised eigenproblem for Omega^2.
-
-    Parameters
-    ----------
-    M, C, A, B : array_like
-        The system (see :func:`flexbooster.floquet.multipliers.periodic_system`).
-    period : {"2T", "T"}
-        Period of the boundary solutions.
-    n_harmonics : int
-        Number of positive harmonics kept (k = 1, 3, .. 2K - 1 for 2T; k = 0, 2, .. 2K for T),
-        1..100.  Boundaries of the region of order j need K well above j / 2: compare two
-        values of K (the regions' search uses the monodromy instead).
-    omega_max : float, optional
-        Only roots with 0 < Omega <= omega_max are returned.
-
-    Returns
-    -------
-    numpy.ndarray
-        Sorted real positive Omega (rad per time unit of the matrices) of the truncated
-        problem (roots with |Im Omega| > 1e-9 |Omega| are dropped: with damping these are
-        boundaries of a region that does not exist at this amplitude).
-
-    References
-    ----------
-    Bolotin (1964), ch. 1 sec. 3-5, ch. 2 sec. 8.
+    q = sum_k c_k exp(i k Omega t / 2), k odd (period "2T": regions near 2 omega / j, j odd) or
+    even ("T"), |k| <= 2K (n_harmonics K, 1..100):
+    [A - (k Omega / 2)^2 M + i (k Omega / 2) C] c_k + (B / 2)(c_(k-2) + c_(k+2)) = 0, an
+    eigenproblem in Omega^2 (undamped) or quadratic in Omega.  Real roots 0 < Omega <= omega_max
+    (|Im| > 1e-9 |Omega| dropped) of the truncated problem: compare two K (Bolotin 1964, ch. 1
+    sec. 3-5, ch. 2 sec. 8).
     """
     system = _system(M, C, A, B)
     K = _harmonics("n_harmonics", n_harmonics, 1, 100)
@@ -299,36 +217,9 @@ def periodic_boundaries(M, C, A, B, *, period: str = "2T", n_harmonics: int = 8,
 def converged_periodic_boundaries(M, C, A, B, *, period: str = "2T", omega_min: float,
                                   omega_max: float, rtol: float = 1e-10,
                                   max_harmonics: int = 64) -> tuple[np.ndarray, int]:
-    """:func:`periodic_boundaries` with the harmonics raised until the roots converge.
-
-    K = 4, 8, 12, ... until the roots in [omega_min, omega_max] are the same in number and
-    agree to rtol * omega_max for two successive K (Bolotin 1964, sec. 4-5: the truncated
-    determinants converge to the boundaries as harmonics are added).
-
-    Parameters
-    ----------
-    M, C, A, B : array_like
-        The system (see :func:`flexbooster.floquet.multipliers.periodic_system`).
-    period : {"2T", "T"}
-        Period of the boundary solutions.
-    omega_min, omega_max : float
-        Range of Omega of interest (rad per time unit), 0 < omega_min < omega_max.  Low roots
-        of a truncation (near 2 omega / (2K)) are poor: the range keeps them out of the test.
-    rtol : float
-        Convergence tolerance relative to omega_max (dimensionless), > 0.
-    max_harmonics : int
-        Largest K tried, 8..100; ValueError if the roots have not converged by then.
-
-    Returns
-    -------
-    roots : numpy.ndarray
-        Converged roots in the range (rad per time unit), from the larger K.
-    K : int
-        The number of harmonics used.
-
-    References
-    ----------
-    Bolotin (1964), ch. 1 sec. 4-5, ch. 2 sec. 8.
+    """:func:`periodic_boundaries` in [omega_min, omega_max], K = 4, 8, .. until two successive
+    K give as many roots, agreeing to rtol * omega_max (ValueError past max_harmonics, 8..100).
+    Returns (roots, K) (Bolotin 1964, ch. 1 sec. 4-5).
     """
     for name, v in (("omega_min", omega_min), ("omega_max", omega_max), ("rtol", rtol)):
         if not np.isfinite(v) or v <= 0.0:

@@ -292,19 +292,9 @@ def _magnus_pass(a: np.ndarray, q: np.ndarray, n_steps: int) -> tuple[np.ndarray
 
 def beta_from_discriminants(one_minus: np.ndarray, one_plus: np.ndarray,
                             count: np.ndarray) -> np.ndarray:
-    """Complex beta on the branch beta -> sqrt(a) (q -> 0) from 1 -+ cos(pi beta).
-
-    Parameters
-    ----------
-    one_minus, one_plus : numpy.ndarray
-        1 - cos(pi beta) and 1 + cos(pi beta) (dimensionless), computed without cancellation.
-    count : numpy.ndarray
-        Number of characteristic values below a (a Sturm count): 2 r + 1 in stable band r.
-
-    Returns
-    -------
-    numpy.ndarray
-        beta (complex): real r < beta < r + 1 in a stable band, r + i mu inside tongue r.
+    """Complex beta on the branch beta -> sqrt(a) (q -> 0) from 1 -+ cos(pi beta), computed
+    without cancellation, and ``count`` the Sturm count (2 r + 1 in stable band r): real
+    r < beta < r + 1 in a stable band, r + i mu inside tongue r.
     """
     even_tongue = one_minus < 0.0  # cos(pi beta) > 1
     odd_tongue = one_plus < 0.0  # cos(pi beta) < -1
@@ -339,26 +329,10 @@ def _discriminants(a: np.ndarray, q: np.ndarray, method: str, n_steps: int | Non
 
 def floquet_discriminant(a: Any, q: Any, method: str = "floquet",
                          n_steps: int | None = None) -> np.ndarray:
-    """The Floquet discriminant cos(pi beta) = y1(pi) of Mathieu's equation.
+    """cos(pi beta) = y1(pi) of Mathieu's equation, shaped like the broadcast of a and q.
 
-    Parameters
-    ----------
-    a, q : array_like
-        Mathieu parameters (dimensionless), broadcast together.
-    method : {"floquet", "hill"}
-        See :func:`characteristic_exponent`.
-    n_steps : int, optional
-        Magnus steps over [0, pi/2] (``"floquet"``; 2 n_steps also run and extrapolated);
-        default 24 + 16 max sqrt(|a| + 2|q|).
-
-    Returns
-    -------
-    numpy.ndarray
-        cos(pi beta), shaped like the broadcast of ``a`` and ``q``.
-
-    References
-    ----------
-    McLachlan (1947) ch. IV; Whittaker & Watson (1927) 19.42.
+    ``method`` as :func:`characteristic_exponent`; ``n_steps`` the Magnus steps over [0, pi/2]
+    (default 24 + 16 max sqrt(|a| + 2|q|)).  McLachlan (1947) ch. IV; W&W (1927) 19.42.
     """
     a, q = _as_grid(a, q)
     if method == "floquet":
@@ -370,60 +344,24 @@ def floquet_discriminant(a: Any, q: Any, method: str = "floquet",
 
 def characteristic_exponent(a: Any, q: Any, method: str = "floquet",
                             n_steps: int | None = None) -> np.ndarray:
-    """Characteristic exponent beta of y'' + (a - 2 q cos 2t) y = 0.
+    """Characteristic exponent beta of y'' + (a - 2 q cos 2t) y = 0 (a, q real, broadcast).
 
-    Parameters
-    ----------
-    a : array_like
-        Mathieu parameter a (dimensionless), any real.
-    q : array_like
-        Mathieu parameter q (dimensionless), broadcast against ``a``; beta is even in q.
-    method : {"floquet", "hill"}
-        Monodromy by vectorised Magnus integration, or Hill's determinant (module docstring).
-    n_steps : int, optional
-        Magnus steps over [0, pi/2] (``"floquet"`` only).
-
-    Returns
-    -------
-    numpy.ndarray of complex
-        beta: real where the solutions are bounded (r < beta < r + 1 above tongue r), r + i mu
-        (mu > 0) inside tongue r, where the solution grows like e^(mu t); accurate near
-        integers (1 -+ cos(pi beta) are products), to about the square root of the
-        discriminant's accuracy at a transition curve.
-
-    References
-    ----------
-    McLachlan (1947) ch. IV; Whittaker & Watson (1927) 19.42.
+    ``method`` "floquet" (Magnus monodromy, ``n_steps`` over [0, pi/2]) or "hill" (Hill's
+    determinant; faster).  Complex: real where the solutions are bounded (r < beta < r + 1
+    above tongue r), r + i mu (mu > 0) inside tongue r, growing like e^(mu t); even in q;
+    accurate near integers, to about the square root of the discriminant's accuracy at a
+    transition curve.  McLachlan (1947) ch. IV; Whittaker & Watson (1927) 19.42.
     """
     a, q = _as_grid(a, q)
     return beta_from_discriminants(*_discriminants(a, q, method, n_steps))
 
 
 def transition_curves(q: Any, r_max: int = 4) -> dict[str, np.ndarray]:
-    """Mathieu characteristic values a_r(q) (r = 0..r_max) and b_r(q) (r = 1..r_max).
+    """Characteristic values a_r(q) (r = 0..r_max) and b_r(q) (r = 1..r_max) at q >= 0 (1-D).
 
-    Parameters
-    ----------
-    q : array_like
-        Mathieu parameter q >= 0 (dimensionless), 1-D.
-    r_max : int
-        Highest order (>= 1).
-
-    Returns
-    -------
-    dict
-        ``"a0"``..``"a{r_max}"`` and ``"b1"``..``"b{r_max}"``: arrays shaped like ``q``, the
-        transition curves of the Ince-Strutt chart (dimensionless); tongue r lies between
-        b_r and a_r.
-
-    Notes
-    -----
-    Eigenvalues of the four symmetric tridiagonal matrices of A&S 20.2 (bases cos 2nt,
-    sin 2nt, cos (2n+1)t, sin (2n+1)t), batched over q with ``numpy.linalg.eigvalsh``.
-
-    References
-    ----------
-    Abramowitz & Stegun (1964) 20.2.21-20.2.25; McLachlan (1947) ch. III.
+    Keys "a0".."a{r_max}", "b1".."b{r_max}"; tongue r lies between b_r and a_r.  Eigenvalues of
+    the four symmetric tridiagonal matrices of A&S 20.2 (cos 2nt, sin 2nt, cos (2n+1)t,
+    sin (2n+1)t), batched over q (A&S 20.2.21-20.2.25; McLachlan 1947 ch. III).
     """
     q = np.atleast_1d(np.asarray(q, dtype=float))
     if q.ndim != 1 or not np.all(np.isfinite(q)) or np.any(q < 0):
@@ -474,27 +412,11 @@ def _bracket(f, x0: float, f0: float, direction: float, step: float, limit: floa
 
 
 def tongue_edges(r: int, g: float) -> tuple[float, float] | None:
-    """(x_b, x_a): where the ray q = g x / 2 crosses b_r(q) and a_r(q) in the (q, a) plane.
+    """(x_b, x_a): where the ray q = g x / 2 crosses b_r(q) and a_r(q) (r >= 1, g >= 0).
 
-    From the tongue's tip x = r^2 the midline x = (a_r + b_r) / 2 is bracketed and solved
-    (brentq), then each edge outward from it with steps of the tongue's width.
-
-    Parameters
-    ----------
-    r : int
-        Tongue order, >= 1.
-    g : float
-        Slope of the ray, q = g x / 2 (dimensionless), >= 0.
-
-    Returns
-    -------
-    (float, float) or None
-        The edges in x = a (dimensionless), x_b < x_a; None when a_r - b_r is below the
-        round-off of the characteristic values.
-
-    References
-    ----------
-    Abramowitz & Stegun (1964) 20.2; McLachlan (1947) ch. IV.
+    From the tip x = r^2 the midline x = (a_r + b_r) / 2 is bracketed and solved (brentq), then
+    each edge outward from it with steps of the tongue's width; None when a_r - b_r is below
+    the round-off of the characteristic values (A&S 20.2; McLachlan 1947 ch. IV).
     """
     from scipy import optimize  # here: its import is a sixth of a run's (unused by most)
 
@@ -535,31 +457,13 @@ def _mu(x: float, g: float) -> float:
 
 
 def damped_tongue(x_b: float, x_a: float, g: float, zeta: float) -> tuple | None:
-    """Edges and growth peak of tongue (x_b, x_a) with damping: f(x) = mu(x) - zeta sqrt(x / s).
+    """Edges and growth peak of tongue (x_b, x_a) of the ray q = g x / 2 with damping zeta.
 
-    y'' + 2 c y' + (a - 2 q cos 2t) y = 0 with c = zeta sqrt(a) (a damping ratio zeta of the
-    frequency sqrt(a)) is, with y = e^(-c t) u, Mathieu's equation for u with x = a s,
-    s = 1 - zeta^2 (mu = Im beta of u); y grows where f > 0.
-
-    Parameters
-    ----------
-    x_b, x_a : float
-        The undamped tongue on the ray q = g x / 2 (:func:`tongue_edges`).
-    g : float
-        Slope of the ray (dimensionless).
-    zeta : float
-        Damping ratio (dimensionless), 0 <= zeta < 1.
-
-    Returns
-    -------
-    (x_lo, x_hi, x_m, f_m) or None
-        The damped edges (f = 0; the undamped ones when zeta = 0), the maximiser of
-        f / sqrt(x) (a growth rate per unit time of a frequency proportional to x^(-1/2)) and
-        f there; None when f <= 0 throughout (the tongue is damped out).
-
-    References
-    ----------
-    Bolotin (1964), sec. 6.
+    y'' + 2 c y' + (a - 2 q cos 2t) y = 0, c = zeta sqrt(a), is Mathieu's equation for
+    u = e^(c t) y with x = a (1 - zeta^2); y grows where f(x) = mu(x) - zeta sqrt(x / (1 - zeta^2))
+    > 0 (mu = Im beta).  Returns (x_lo, x_hi, x_m, f_m): the edges f = 0 (the undamped ones when
+    zeta = 0), the maximiser of f / sqrt(x) and f there; None when f <= 0 throughout (Bolotin
+    1964, sec. 6).
     """
     from scipy import optimize  # here: its import is a sixth of a run's (unused by most)
     s = 1.0 / (1.0 - zeta * zeta)
@@ -582,26 +486,11 @@ def damped_tongue(x_b: float, x_a: float, g: float, zeta: float) -> tuple | None
 
 
 def tongue_critical_gamma(r: int, gamma: float, zeta: float) -> float:
-    """Smallest amplitude at which damped tongue r opens (the ray q = gamma x / (2 s)).
+    """Smallest amplitude at which damped tongue r opens on the ray q = gamma x / (2 (1 - zeta^2)).
 
-    Parameters
-    ----------
-    r : int
-        Tongue order, >= 1.
-    gamma : float
-        An amplitude at which the tongue is open (dimensionless), > 0.
-    zeta : float
-        Damping ratio (dimensionless), 0 < zeta < 1, s = 1 - zeta^2.
-
-    Returns
-    -------
-    float
-        The root in gamma of the largest f of :func:`damped_tongue` (brentq to 1e-10
-        gamma); 0 when the tongue is open down to 1e-12 gamma.
-
-    References
-    ----------
-    Bolotin (1964), sec. 6 (mu_cr = Delta / pi for the damped Mathieu equation).
+    brentq in gamma (to 1e-10 gamma, below an amplitude ``gamma`` where it is open, 0 < zeta < 1)
+    on the largest f of :func:`damped_tongue`; 0 when open down to 1e-12 gamma (Bolotin 1964,
+    sec. 6: mu_cr = Delta / pi).
     """
     from scipy import optimize  # here: its import is a sixth of a run's (unused by most)
     s = 1.0 / (1.0 - zeta * zeta)

@@ -1,21 +1,16 @@
 """Monodromy matrix, Floquet multipliers, growth rates of M q'' + C q' + (A + B cos Omega t) q = 0.
 
-Two kernels, both Lawson (integrating-factor) fourth-order Runge-Kutta schemes in which the
-steady system (B = 0) is propagated exactly:
-
-* ``C = 0`` (the system is time-reversible, A(t) is even): second-order form in the modal frame
-  of the steady system, eta'' + diag(mu) eta = -cos(Omega t) Bt eta with mu the eigenvalues of
-  M^-1 A and Bt = V^-1 M^-1 B V; only the half period is integrated and the period map follows
-  from reversibility, Phi(T) = R Phi(T/2)^-1 R Phi(T/2), R = diag(I, -I).  The half-period map
-  also gives the n values s = rho + 1/rho directly (eigenvalues of 2 U11, U = Phi R Phi^-1).
-* ``C != 0``: first-order form z' = (L0 + cos(Omega t) N) z over the full period with the
-  exponential of L0 from ``scipy.linalg.expm`` (works for defective L0 too).
+Lawson (integrating-factor) fourth-order Runge-Kutta, the steady system (B = 0) propagated
+exactly.  ``C = 0`` (time-reversible, A(t) even): in the modal frame of the steady system,
+eta'' + diag(mu) eta = -cos(Omega t) Bt eta, over half a period; the period map follows from
+reversibility, Phi(T) = R Phi(T/2)^-1 R Phi(T/2), R = diag(I, -I).  ``C != 0``: first-order
+form over the full period with the exponential of L0 from ``scipy.linalg.expm``.  Point p may
+carry its own amplitude a_p B and its own step count.
 
 References
 ----------
 .. [1] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, ch. 1-2.
-.. [2] W. Magnus, S. Winkler, *Hill's Equation*, Wiley, 1966, ch. 1-2 (Floquet theory,
-   time-reversible (even) coefficients, rho + 1/rho from the half period).
+.. [2] W. Magnus, S. Winkler, *Hill's Equation*, Wiley, 1966, ch. 1-2.
 .. [3] J. D. Lawson, "Generalized Runge-Kutta processes for stable systems with large Lipschitz
    constants", SIAM J. Numer. Anal. 4 (1967) 372-380.
 """
@@ -27,25 +22,10 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.linalg
 
-__all__ = [
-    "MAX_STEPS",
-    "LinearPeriodicSystem",
-    "periodic_system",
-    "steady_frequencies",
-    "as_omega",
-    "step_counts",
-    "StepLimitError",
-    "PeriodMapOverflowError",
-    "half_period_maps",
-    "period_maps",
-    "s_matrices",
-    "s_value_sets",
-    "largest_multiplier",
-    "monodromy",
-    "floquet_multipliers",
-    "floquet_exponents",
-    "growth_rate",
-]
+__all__ = ["MAX_STEPS", "LinearPeriodicSystem", "periodic_system", "steady_frequencies",
+           "as_omega", "step_counts", "StepLimitError", "PeriodMapOverflowError",
+           "half_period_maps", "period_maps", "s_matrices", "s_value_sets", "largest_multiplier",
+           "monodromy", "floquet_multipliers", "floquet_exponents", "growth_rate"]
 
 #: Default cap on the steps per integrated period (half period when C = 0).
 MAX_STEPS = 200_000
@@ -96,24 +76,10 @@ def _one_line(value) -> str:
 
 @dataclass(frozen=True)
 class LinearPeriodicSystem:
-    """Validated system M q'' + C q' + (A + B cos Omega t) q = 0 in the form q'' = ...
-
-    Attributes
-    ----------
-    K0, Kc, Kb : numpy.ndarray
-        M^-1 A, M^-1 C, M^-1 B, shape (n, n) (units of the matrices' time unit^-2, ^-1, ^-2).
-    damped : bool
-        True when C != 0.
-    mu : numpy.ndarray
-        Eigenvalues of M^-1 A (squared steady frequencies), complex shape (n,).
-    V : numpy.ndarray or None
-        Eigenvectors of M^-1 A (None when ill-conditioned: the dense kernel is used).
-    Bt : numpy.ndarray or None
-        V^-1 M^-1 B V (modal frame).
-
-    References
-    ----------
-    Bolotin (1964), sec. 2 (matrix equations of dynamic stability).
+    """The validated system in the form q'' = ...: K0, Kc, Kb = M^-1 A, M^-1 C, M^-1 B (n, n);
+    ``damped`` when C != 0; ``mu`` (n,) the eigenvalues of M^-1 A (squared steady frequencies,
+    ascending); ``V`` its eigenvectors and ``Bt`` = V^-1 M^-1 B V (None when V is
+    ill-conditioned: the dense kernel is used).
     """
 
     K0: np.ndarray
@@ -137,33 +103,10 @@ class LinearPeriodicSystem:
 
 
 def periodic_system(M, C, A, B) -> LinearPeriodicSystem:
-    """Validate and pre-process M q'' + C q' + (A + B cos Omega t) q = 0.
+    """Validate and pre-process M q'' + C q' + (A + B cos Omega t) q = 0 (Bolotin 1964, sec. 2).
 
-    Parameters
-    ----------
-    M : array_like
-        Mass matrix, shape (n, n), invertible (kg or normalised, dimensionless).
-    C : array_like or None
-        Damping matrix, shape (n, n) (kg/s or normalised); None or 0 for no damping.
-    A : array_like
-        Steady stiffness matrix, shape (n, n), may be non-symmetric (N/m or normalised).
-    B : array_like
-        Amplitude of the cos(Omega t) stiffness, shape (n, n), may be non-symmetric (same unit
-        as A).
-
-    Returns
-    -------
-    LinearPeriodicSystem
-        The matrices divided by M and the modal frame of M^-1 A.
-
-    Raises
-    ------
-    ValueError
-        Naming the argument: non-finite entries, wrong shapes, singular M.
-
-    References
-    ----------
-    Bolotin (1964), sec. 2 (matrix form of the equations of dynamic stability).
+    M (n, n) invertible, C (n, n) or None / 0, A and B (n, n), any consistent units; ValueError
+    naming the argument (non-finite entries, shapes, singular M).
     """
     M = _matrix("M", M, None)
     n = M.shape[0]
@@ -192,27 +135,8 @@ def periodic_system(M, C, A, B) -> LinearPeriodicSystem:
 
 
 def steady_frequencies(M, A, *, C=None) -> np.ndarray:
-    """Frequencies of the steady system (B = 0), sqrt of the eigenvalues of M^-1 A.
-
-    Parameters
-    ----------
-    M : array_like
-        Mass matrix (n, n), invertible.
-    A : array_like
-        Steady stiffness matrix (n, n).
-    C : array_like, optional
-        Damping matrix (only validated; the undamped frequencies are returned).
-
-    Returns
-    -------
-    numpy.ndarray
-        Shape (n,), complex, principal square roots (rad per time unit of the matrices), sorted
-        by the squared frequency; a non-real or zero value means the steady system is not
-        stable (flutter or divergence).
-
-    References
-    ----------
-    Bolotin (1964), sec. 2.
+    """sqrt of the eigenvalues of M^-1 A (B = 0), shape (n,), complex, ascending in the squared
+    frequency; a non-real or zero value means flutter or divergence (C is only validated).
     """
     system = periodic_system(M, C, A, np.zeros_like(np.asarray(M, dtype=float)))
     return np.sqrt(system.mu)
@@ -230,30 +154,12 @@ def as_omega(Omega) -> np.ndarray:
 
 
 def _rates(system: LinearPeriodicSystem) -> tuple[np.ndarray, np.ndarray]:
-    """Steady frequencies and coupling magnitudes of the cost model of :func:`step_counts`.
+    """Steady frequencies w (m,) and coupling magnitudes b (m, m) of :func:`step_counts`.
 
-    Without damping (modal frame available): w_j = |omega_j| and b_jk = |B~_jk|,
-    B~ = V^-1 M^-1 B V.  With damping (or an ill-conditioned V) they come from the damped
-    first-order frame z = W y, y' = (Lambda + cos(Omega t) G) y with G = W^-1 N W,
-    N = [[0, 0], [-M^-1 B, 0]]: w_j = |lambda_j| and b_jk = 2 |lambda_j| |G_jk|, the columns of
-    W scaled to a unit q-part like those of V.  Without damping that frame has
-    lambda_j = +-i omega_j and G_jk = -B~_jk / (2 lambda_j), so b = |B~| there: damped and
-    undamped systems get the same count per unit time as C -> 0 (derivation with units:
-    docs/theory/floquet.md sec. 2, "Cost model and cap").  A defective steady operator
-    (cond W > 1e8) gets b_jk = max |M^-1 B|.
-
-    Parameters
-    ----------
-    system : LinearPeriodicSystem
-        From :func:`periodic_system`.
-
-    Returns
-    -------
-    w : numpy.ndarray
-        Shape (m,), steady frequencies (rad per time unit of the matrices), m = n undamped,
-        2n damped.
-    b : numpy.ndarray
-        Shape (m, m), coupling magnitudes (time unit^-2), row j the mode driven.
+    Without damping w_j = |omega_j|, b = |Bt|; with it (or no modal frame) from the damped
+    first-order frame z = W y, G = W^-1 N W, N = [[0, 0], [-M^-1 B, 0]]: w_j = |lambda_j|,
+    b_jk = 2 |lambda_j| |G_jk| (-> |Bt_jk| as C -> 0; docs/theory/floquet.md sec. 2); a
+    defective steady operator (cond W > 1e8) gets b = max |M^-1 B|.
     """
     if not system.damped and system.Bt is not None:
         return np.abs(np.sqrt(system.mu)), np.abs(system.Bt)
@@ -274,45 +180,20 @@ def step_counts(system: LinearPeriodicSystem, Omega, *, step_phase: float = 0.06
                 clip: bool = False) -> np.ndarray:
     """Steps per integrated interval (half period if C = 0, else one period): the cost model.
 
-    In the steady frame the term coupling modes j, k oscillates at nu_jk = w_j + w_k + Omega
-    with rate g_jk = b_jk / max(w_j, Omega / 2) (1/time; w, b from the modal frame without
-    damping, from the damped first-order frame with it, the same as C -> 0: see
-    :func:`_rates`); a fourth-order step errs by about g (h nu)^4 / nu, so
-    h max_jk nu_jk^(3/4) g_jk^(1/4) <= step_phase (dimensionless, independent of the time
-    unit).  The count grows like 1 / Omega as Omega -> 0 (the period grows): it is capped.
-
-    Parameters
-    ----------
-    system : LinearPeriodicSystem
-        From :func:`periodic_system`.
-    Omega : array_like
-        Pulsation frequencies (rad per time unit of the matrices), > 0.
-    step_phase : float
-        Tolerance parameter (rad), > 0; error on the exponents ~ step_phase^4 (about 1e-9 of
-        the largest steady frequency at 0.06, damped or not).
-    max_steps : int
-        Cap; exceeding it raises, or with ``clip`` the count is max_steps.
-    amplitude : array_like, optional
-        Shape (P,): point p has the excitation amplitude[p] B (default 1).
-    levels_per_octave : int
-        Counts are rounded up to 2^(k / levels_per_octave) so points batch in few groups.
-    clip : bool
-        Cap the counts at max_steps instead of raising (a bounded cost, a larger error).
-
-    Returns
-    -------
-    numpy.ndarray
-        Integer step counts, shape (P,).
+    The term coupling modes j, k oscillates at nu_jk = w_j + w_k + Omega with rate g_jk =
+    a b_jk / max(w_j, Omega / 2) (:func:`_rates`, amplitude a); a fourth-order step errs by about
+    g (h nu)^4 / nu, so h max nu^(3/4) g^(1/4) <= step_phase (error on the exponents ~
+    step_phase^4, about 1e-9 of the largest frequency at 0.06).  Counts are rounded up to
+    2^(k / levels_per_octave) (few batches), and grow like 1 / Omega.
 
     Raises
     ------
     StepLimitError
-        If a count would exceed max_steps and ``clip`` is False (the message gives the
-        estimate and the Omega).
+        A count above ``max_steps`` (unless ``clip``: then capped), naming Omega.
 
     References
     ----------
-    Lawson (1967); error model of the flexbooster beam-action kernel (docs/theory/floquet.md).
+    Lawson (1967); docs/theory/floquet.md.
     """
     om = as_omega(Omega)
     if not (np.isfinite(step_phase) and step_phase > 0.0):
@@ -349,12 +230,9 @@ def _rotation(mu: np.ndarray, t: np.ndarray) -> tuple[np.ndarray, ...]:
 
 def _half_modal(system: LinearPeriodicSystem, om: np.ndarray, n_steps: np.ndarray,
                 amp: np.ndarray) -> np.ndarray:
-    """Phi(T/2) in modal coordinates (eta, eta'), shape (P, 2n, 2n); Lawson RK4.
-
-    ``n_steps`` (P,) is each point's own step count, in descending order: all points advance
-    together and a point leaves the batch (its map stored) once its own count is done, so
-    the loop runs max(n_steps) times whatever the spread of the counts.  Point p has the
-    excitation amp[p] B.
+    """Phi(T/2) in modal coordinates (eta, eta'), shape (P, 2n, 2n); Lawson RK4, point p with
+    amp[p] B and its own step count (descending: a point leaves the batch when done, so the loop
+    runs max(n_steps) times).
     """
     mu, Bt = system.mu, system.Bt
     real = np.all(mu.imag == 0.0) and np.isrealobj(Bt) and np.all(mu.real > 0.0)
@@ -523,30 +401,10 @@ def _dense_maps(system: LinearPeriodicSystem, om: np.ndarray, steps: np.ndarray,
 
 def half_period_maps(system: LinearPeriodicSystem, Omega, steps: np.ndarray, *,
                      chunk: int = 256, amplitude=None) -> np.ndarray:
-    """Phi(T/2) of an undamped system, in its modal frame when it has one.
-
-    Parameters
-    ----------
-    system : LinearPeriodicSystem
-        From :func:`periodic_system`.
-    Omega : array_like
-        Shape (P,), pulsation frequencies (rad per time unit of the matrices), > 0.
-    steps : numpy.ndarray
-        Shape (P,), integration steps of each point (:func:`step_counts`).
-    chunk : int
-        Points per batch of the dense kernel (memory).
-    amplitude : array_like, optional
-        Shape (P,): point p has the excitation amplitude[p] B (default 1).
-
-    Returns
-    -------
-    numpy.ndarray
-        Shape (P, 2n, 2n) complex, the map of (eta, eta') (modal) or (q, q').
-
-    Raises
-    ------
-    PeriodMapOverflowError
-        Where the map overflows.
+    """Phi(T/2) of an undamped system, shape (P, 2n, 2n) complex, in its modal frame when it has
+    one; ``steps`` (P,) per point (:func:`step_counts`), ``amplitude`` (P,) a_p (default 1),
+    ``chunk`` points per batch of the dense kernel.  :class:`PeriodMapOverflowError` where a
+    map overflows.
     """
     om = as_omega(Omega)
     amp = _amplitudes(amplitude, om)
@@ -567,10 +425,7 @@ def half_period_maps(system: LinearPeriodicSystem, Omega, steps: np.ndarray, *,
 
 def period_maps(system: LinearPeriodicSystem, Omega, steps: np.ndarray, *, chunk: int = 256,
                 amplitude=None) -> np.ndarray:
-    """Phi(T) in (q, q') by the dense kernel (damped systems), shape (P, 2n, 2n).
-
-    Parameters and errors as :func:`half_period_maps`.
-    """
+    """Phi(T) in (q, q') by the dense kernel (damped systems), as :func:`half_period_maps`."""
     om = as_omega(Omega)
     n = system.n
     steps = np.broadcast_to(np.asarray(steps), om.shape)
@@ -593,24 +448,13 @@ def _reflection(n: int) -> np.ndarray:
 
 
 def s_matrices(Phi: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """2 U_11, 2 (U_11 - I), 2 (U_11 + I) from the half-period map of a reversible system.
+    """2 U_11, 2 (U_11 - I), 2 (U_11 + I), each (P, n, n), from the half-period map (P, 2n, 2n).
 
-    With W = Phi(T/2) Phi(T) Phi(T/2)^-1 = U R, U = Phi(T/2) R Phi(T/2)^-1, R = diag(I, -I)
-    and U^2 = I, W + W^-1 = diag(2 U_11, -2 U_22): the n values s = rho + 1/rho are the
-    eigenvalues of 2 U_11 (Magnus & Winkler 1966, sec. 2.2 for n = 1).  With
-    P = Phi(T/2)^-1, s - 2 = eig(-4 Phi_12 P_21) and s + 2 = eig(4 Phi_11 P_11): near
-    rho = +1 (-1) the small eigenvalue is a product of small factors, accurate relative to
-    itself where 2 U_11 -+ 2 I would lose it to cancellation.
-
-    Parameters
-    ----------
-    Phi : numpy.ndarray
-        Shape (P, 2n, 2n), from :func:`half_period_maps`.
-
-    Returns
-    -------
-    S, Xp, Xm : numpy.ndarray
-        Each (P, n, n), the matrices whose eigenvalues are s, s - 2 and s + 2.
+    U = Phi R Phi^-1 (Phi = Phi(T/2)), U^2 = I and W + W^-1 = diag(2 U_11, -2 U_22) for W = U R
+    similar to Phi(T): the n values s = rho + 1/rho are the eigenvalues of 2 U_11 (Magnus &
+    Winkler 1966, sec. 2.2).  With P = Phi^-1, s - 2 = eig(-4 Phi_12 P_21) and s + 2 =
+    eig(4 Phi_11 P_11): near rho = +-1 the small eigenvalue is a product of small factors, free
+    of the cancellation in 2 U_11 -+ 2 I.
     """
     n = Phi.shape[-1] // 2
     if np.iscomplexobj(Phi) and not np.any(Phi.imag):
@@ -694,23 +538,18 @@ def _prepare(M, C, A, B, Omega, n_steps, step_phase, max_steps, chunk, amplitude
 
 def monodromy(M, C, A, B, Omega, *, n_steps=None, step_phase: float = 0.06,
               max_steps: int = MAX_STEPS, chunk: int = 256, amplitude=None) -> np.ndarray:
-    """Monodromy matrices Phi(T), T = 2 pi / Omega, for a batch of Omega.
+    """Monodromy matrices Phi(T), T = 2 pi / Omega, shape (P, 2n, 2n), for a batch of Omega.
 
     Parameters
     ----------
     M, C, A, B : array_like
-        The system M q'' + C q' + (A + B cos Omega t) q = 0, each (n, n) (see
-        :func:`periodic_system`; C may be None).  A :class:`LinearPeriodicSystem` may be passed
-        as M (then C, A, B are ignored).
+        The system (:func:`periodic_system`), or a :class:`LinearPeriodicSystem` as M.
     Omega : array_like
-        Pulsation frequencies, shape (P,) (rad per time unit of the matrices), > 0.
+        Shape (P,), rad per time unit of the matrices, > 0.
     n_steps : int or array_like of int, optional
-        Steps per integrated interval, for every point or per point (default: the cost model
-        of :func:`step_counts`).
-    step_phase : float
-        Accuracy parameter of the cost model (rad), > 0.
-    max_steps : int
-        Cap on the steps; a larger estimate raises :class:`StepLimitError`.
+        Steps per interval, for all or per point (default :func:`step_counts`).
+    step_phase, max_steps : float, int
+        Accuracy and cap of :func:`step_counts` (:class:`StepLimitError` beyond the cap).
     chunk : int
         Points per batch (memory).
     amplitude : array_like, optional
@@ -719,8 +558,7 @@ def monodromy(M, C, A, B, Omega, *, n_steps=None, step_phase: float = 0.06,
     Returns
     -------
     numpy.ndarray
-        Shape (P, 2n, 2n), real: the state (q, q') maps as z(T) = Phi(T) z(0).  When C = 0 it
-        is built from the half period by reversibility, Phi(T) = R Phi(T/2)^-1 R Phi(T/2).
+        z(T) = Phi(T) z(0) for z = (q, q'), real; with C = 0 from the half period.
 
     References
     ----------
@@ -745,27 +583,11 @@ def monodromy(M, C, A, B, Omega, *, n_steps=None, step_phase: float = 0.06,
 def floquet_multipliers(M, C, A, B, Omega, *, n_steps=None, step_phase: float = 0.06,
                         max_steps: int = MAX_STEPS, chunk: int = 256,
                         amplitude=None) -> np.ndarray:
-    """Floquet multipliers rho (eigenvalues of the monodromy matrix).
+    """Floquet multipliers rho, shape (P, 2n) complex (arguments as :func:`monodromy`).
 
-    Parameters
-    ----------
-    M, C, A, B, Omega, n_steps, step_phase, max_steps, chunk, amplitude
-        As :func:`monodromy`.
-
-    Returns
-    -------
-    numpy.ndarray
-        Shape (P, 2n), complex (dimensionless).  With C = 0 from the half-period map by
-        reversibility (pairs rho, 1/rho to round-off).
-
-    Raises
-    ------
-    PeriodMapOverflowError
-        Where the map overflows or is singular beyond what QZ resolves.
-
-    References
-    ----------
-    Magnus & Winkler (1966), ch. 1-2; Bolotin (1964), sec. 2-3.
+    With C = 0 from the half-period map by reversibility (pairs rho, 1/rho to round-off); a map
+    singular to working precision (unpaired) raises :class:`PeriodMapOverflowError`.  Magnus &
+    Winkler (1966), ch. 1-2.
     """
     system, om, steps, amp = _prepare(M, C, A, B, Omega, n_steps, step_phase, max_steps,
                                       chunk, amplitude)
@@ -776,22 +598,8 @@ def floquet_multipliers(M, C, A, B, Omega, *, n_steps=None, step_phase: float = 
 
 
 def floquet_exponents(M, C, A, B, Omega, **options) -> np.ndarray:
-    """Characteristic exponents lambda = log(rho) / T (principal log), T = 2 pi / Omega.
-
-    Parameters
-    ----------
-    M, C, A, B, Omega, **options
-        As :func:`floquet_multipliers`.
-
-    Returns
-    -------
-    numpy.ndarray
-        Shape (P, 2n), complex (1 / time unit of the matrices); Im lambda is defined modulo
-        Omega.
-
-    References
-    ----------
-    Bolotin (1964), sec. 2; Magnus & Winkler (1966), ch. 1.
+    """Characteristic exponents log(rho) / T (principal log), (P, 2n), 1 / time unit; Im modulo
+    Omega (arguments as :func:`floquet_multipliers`).
     """
     rho = floquet_multipliers(M, C, A, B, Omega, **options)
     return np.log(rho) * (as_omega(Omega) / (2.0 * np.pi))[:, None]  # lambda = log(rho) / T
@@ -800,27 +608,11 @@ def floquet_exponents(M, C, A, B, Omega, **options) -> np.ndarray:
 def growth_rate(M, C, A, B, Omega, *, method: str = "monodromy", n_harmonics: int = 8,
                 n_steps=None, step_phase: float = 0.06, max_steps: int = MAX_STEPS,
                 chunk: int = 256, amplitude=None) -> np.ndarray:
-    """Largest real part of the characteristic exponents, log|rho|_max / T (1/s).
+    """Largest real part of the characteristic exponents, log|rho|_max / T, shape (P,).
 
-    Parameters
-    ----------
-    M, C, A, B, Omega, n_steps, step_phase, max_steps, chunk, amplitude
-        As :func:`monodromy`.
-    method : {"monodromy", "hill"}
-        Monodromy matrix, or Hill's truncated determinant
-        (:func:`flexbooster.floquet.hill_exponents`) with ``n_harmonics``.
-    n_harmonics : int
-        Harmonics s = -S..S of Hill's method (ignored by the monodromy).
-
-    Returns
-    -------
-    numpy.ndarray
-        Shape (P,), max Re lambda (1 / time unit of the matrices, 1/s for SI matrices); > 0
-        means unstable.
-
-    References
-    ----------
-    Bolotin (1964), sec. 2-3, 7; Magnus & Winkler (1966), ch. 1.
+    Arguments as :func:`monodromy`; ``method`` "monodromy" or "hill" (Hill's determinant with
+    ``n_harmonics``, :func:`flexbooster.floquet.hill_exponents`).  > 0 means unstable.
+    Bolotin (1964), sec. 2-3, 7.
     """
     if method == "hill":
         from .hill import hill_exponents

@@ -233,30 +233,12 @@ def _slope(cand, L):
 def narrow_search(mu: np.ndarray, Bt: np.ndarray, cand: dict, *, max_iter: int = 16) -> dict:
     """Vertex and width of D(Omega) near each candidate (one batch per order j).
 
-    Parameters
-    ----------
-    mu : numpy.ndarray
-        Squared steady frequencies (n,), real > 0 (1 / time unit^2).
-    Bt : numpy.ndarray
-        Modal coupling V^-1 M^-1 B V (n, n) (1 / time unit^2).
-    cand : dict
-        Candidate arrays kind (0 simple, 1 sum, 2 difference), i, k (modes), j (order),
-        centre (rad per time unit), window (half-width of the search window about the
-        centre, rad per time unit).
-    max_iter : int
-        Newton steps on the parabola per harmonic margin (capped; no error when reached).
-
-    Returns
-    -------
-    dict
-        Arrays per candidate: found (bool: D > 0 at the vertex beyond its round-off, width
-        at most :data:`MAX_WIDTH` of the centre), converged (bool: the harmonic margins agree),
-        lo, hi (edges, rad per time unit), growth (sqrt(D) / 2 at the vertex, 1 / time
-        unit), omega_at_max (the vertex, rad per time unit).
-
-    References
-    ----------
-    Bolotin (1964), sec. 7-8; Loewdin (1963); module docstring.
+    ``mu`` (n,) squared steady frequencies > 0, ``Bt`` (n, n) the modal coupling V^-1 M^-1 B V,
+    ``cand`` arrays kind (0 simple, 1 sum, 2 difference), i, k, j, centre and window (half-width
+    about the centre), rad per time unit; ``max_iter`` Newton steps on the parabola per
+    harmonic margin.  Returns arrays: found (D > 0 at the vertex beyond round-off, width at most
+    :data:`MAX_WIDTH` of the centre), converged (the margins agree), lo, hi (edges), growth
+    (sqrt(D) / 2 at the vertex) and omega_at_max (the vertex).
     """
     w = np.sqrt(mu)
     size = cand["centre"].size

@@ -30,31 +30,11 @@ class NoConvergenceError(ValueError):
 
 def golden_section_max(f, a, b, *, xtol, max_iter: int = 200,
                        stop_above: float | None = None) -> tuple[np.ndarray, np.ndarray]:
-    """Maximise f on [a, b] by golden-section search (Kiefer 1953; Press et al. sec. 10.2).
+    """Maximise f on [a, b] (P,) by golden-section search (Kiefer 1953; Press et al. sec. 10.2).
 
-    Parameters
-    ----------
-    f : callable
-        f(x, idx) -> values (module docstring).
-    a, b : array_like
-        Interval ends, shape (P,), finite, a <= b (unit of x).
-    xtol : array_like
-        Final interval lengths, shape (P,) or scalar, > 0 (unit of x).
-    max_iter : int
-        Cap on the steps, >= 1.
-    stop_above : float, optional
-        An interval stops as soon as f exceeds this at one of its points.
-
-    Returns
-    -------
-    x, fx : numpy.ndarray
-        The best point of each interval and f there, shape (P,); the global maximum where f is
-        unimodal on the interval.
-
-    Raises
-    ------
-    ValueError
-        Bad arguments (naming them); :class:`NoConvergenceError` after max_iter steps.
+    Each interval shrinks by the golden ratio per step to b - a <= xtol (> 0), or stops once f
+    exceeds ``stop_above``; max_iter >= 1 (:class:`NoConvergenceError` past it).  Returns the best
+    point of each interval and f there; the global maximum where f is unimodal.
     """
     a = np.atleast_1d(np.asarray(a, dtype=float)).copy()
     b = np.atleast_1d(np.asarray(b, dtype=float)).copy()
@@ -97,30 +77,11 @@ def golden_section_max(f, a, b, *, xtol, max_iter: int = 200,
 def brent_max(f, a: np.ndarray, b: np.ndarray, x0: np.ndarray, xtol: np.ndarray, *,
               max_iter: int = 200,
               stop_above: float | None = None) -> tuple[np.ndarray, np.ndarray]:
-    """Maximise f on [a, b] from x0: golden-section and parabolic steps (Brent 1973, ch. 5).
+    """Maximise f on [a, b] from x0 (P,): golden-section and parabolic steps (Brent 1973, ch. 5).
 
-    Parameters
-    ----------
-    f : callable
-        f(x, idx) -> values (module docstring).
-    a, b, x0 : numpy.ndarray
-        Interval ends and starting points, shape (P,), a <= x0 <= b (unit of x).
-    xtol : numpy.ndarray
-        Absolute tolerances, shape (P,), > 0 (unit of x).
-    max_iter : int
-        Cap on the steps.
-    stop_above : float, optional
-        A problem stops as soon as f exceeds this at its current best point.
-
-    Returns
-    -------
-    x, fx : numpy.ndarray
-        The maximiser of each problem and f there, shape (P,).
-
-    Raises
-    ------
-    NoConvergenceError
-        After max_iter steps.
+    Absolute tolerance ``xtol`` (P,) plus 1.5e-8 |x|; a problem stops once f exceeds
+    ``stop_above``.  Returns the maximiser and f there (:class:`NoConvergenceError` after
+    max_iter).
     """
     cgold = 0.5 * (3.0 - np.sqrt(5.0))
     a, b = a.copy(), b.copy()
@@ -178,30 +139,10 @@ def brent_max(f, a: np.ndarray, b: np.ndarray, x0: np.ndarray, xtol: np.ndarray,
 
 def illinois_root(f, x_in: np.ndarray, f_in: np.ndarray, x_out: np.ndarray, f_out: np.ndarray,
                   xtol: np.ndarray, *, max_iter: int = 200, bracket: bool = False):
-    """Root of f between x_in (f > 0) and x_out (f <= 0) by Illinois regula falsi.
+    """Root of f between x_in (f > 0) and x_out (f <= 0), Illinois regula falsi, (P,) problems.
 
-    Parameters
-    ----------
-    f : callable
-        f(x, idx) -> values (module docstring).
-    x_in, f_in, x_out, f_out : numpy.ndarray
-        The brackets and f at their ends, shape (P,), f_in > 0 >= f_out.
-    xtol : numpy.ndarray
-        Final bracket lengths, shape (P,), > 0 (unit of x).
-    max_iter : int
-        Cap on the steps; past half of it each step bisects (a stagnating f at round-off).
-    bracket : bool
-        Return the final brackets (x_in, f_in, x_out, f_out) instead of their midpoints.
-
-    Returns
-    -------
-    numpy.ndarray or tuple
-        The midpoints of the final brackets, shape (P,), or the brackets.
-
-    Raises
-    ------
-    NoConvergenceError
-        After max_iter steps.
+    Brackets shrink to ``xtol`` (at least xtol / 2 per step; past max_iter / 2 by bisection, for
+    f at round-off); returns their midpoints, or with ``bracket`` (x_in, f_in, x_out, f_out).
     """
     a, fa, b, fb = x_in.copy(), f_in.copy(), x_out.copy(), f_out.copy()
     last = np.zeros(a.size, dtype=int)  # which end moved last (+1 a, -1 b)
@@ -234,34 +175,11 @@ def illinois_root(f, x_in: np.ndarray, f_in: np.ndarray, x_out: np.ndarray, f_ou
 def expand_bracket(f, x0: np.ndarray, f0: np.ndarray, d0: np.ndarray, direction,
                    limit: np.ndarray, *, factor: float = 3.0,
                    max_iter: int = 80) -> tuple[np.ndarray, ...]:
-    """March from x0 by d0 factor^m towards ``limit`` until the sign of f differs from f0's.
+    """March from x0 by d0 factor^m towards ``limit`` until f's sign differs from f0's (P,).
 
-    Parameters
-    ----------
-    f : callable
-        f(x, idx) -> values (module docstring).
-    x0, f0, d0 : numpy.ndarray
-        Starting points, f there (non-zero) and first steps (> 0), shape (P,).
-    direction : float or numpy.ndarray
-        +1 or -1 per problem.
-    limit : numpy.ndarray
-        End of the march per problem (the last point tried).
-    factor : float
-        Growth of the step per point, > 1.
-    max_iter : int
-        Cap on the points per problem.
-
-    Returns
-    -------
-    x_in, f_in, x_out, f_out, clipped : numpy.ndarray
-        The last point with the sign of f0 (x0 itself if none) and the first without, f
-        there (f_out 0 and x_out x0 where none was found); ``clipped`` where the march
-        reached ``limit`` without a change of sign.
-
-    Raises
-    ------
-    NoConvergenceError
-        After max_iter points.
+    Returns (x_in, f_in, x_out, f_out, clipped): the last point with f0's sign (x0 if none), the
+    first without (x0, 0 if none), and where the march reached ``limit`` without a change
+    (:class:`NoConvergenceError` after max_iter points).
     """
     x_in, f_in = x0.copy(), np.asarray(f0, dtype=float).copy()
     x_out, f_out = x0.copy(), np.zeros(x0.size)

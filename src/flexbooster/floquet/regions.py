@@ -1,41 +1,23 @@
-"""Instability regions in Omega of M q'' + C q' + (A + B cos Omega t) q = 0 and their amplitude
-dependence.
+"""Instability regions in Omega of M q'' + C q' + (A + B cos Omega t) q = 0, and their
+amplitude dependence.
 
-The search is driven by the analytic candidates, never by a grid: with omega_n the steady
-frequencies (eigenvalues of M^-1 A), regions can only grow out of
-
-* simple (parametric) resonances  Omega = 2 omega_i / j,
-* sum combinations                Omega = (omega_i + omega_k) / j,
-* difference combinations         Omega = |omega_k - omega_i| / j,
-
-j = 1, 2, ...  Without damping the system is time-reversible and the half-period map gives
-the n values s = rho + 1/rho (eigenvalues of a real n x n matrix, see
-:mod:`.multipliers`).  At gamma -> 0, s_i = 2 cos(2 pi omega_i / Omega), and each mode's s is
-tracked from that value.  Each candidate has a smooth local indicator F(Omega), positive
-exactly where its multipliers are off the unit circle:
-
-* simple, order j:  F = (-1)^j s_i - 2 (s_i real; F <= -|Im s_i| when s_i is in a complex
-  pair); F = 0 is rho = +-1, the T- or 2T-periodic boundary;
-* combination:      F = -Re (s_i - s_k)^2 (F > 0: s_i, s_k complex conjugate, |rho| != 1;
-  F = 0: the pair collides on |rho| = 1).
-
-F is maximised near the candidate (vectorised Brent maximiser over all candidates at once, in
-a window that holds no other candidate), and where the maximum is above the round-off floor
-both boundaries are bracketed outward and refined on F = 0 (vectorised Illinois regula falsi)
-to the stated tolerance; if the system is still unstable beyond (an overlapping region) the
-march goes on with the whole-system indicator to the first Omega where |rho|_max = 1, so
-overlapping regions are reported as their union.  Candidates below the round-off floor of the
-indicators (relative width ~6e-8 / j) are examined by the harmonic-balance pair discriminant of
-:mod:`.narrow`, whose resolution is linear in the width.  With damping, the undamped regions
-seed the search of max log|rho| > 0 from the full-period monodromy (see
-``docs/theory/floquet.md`` for the assumptions and limits).
+The search starts from the analytic candidates, never from a grid: regions grow out of the
+simple resonances Omega = 2 omega_i / j and the combinations (omega_i +- omega_k) / j.  Without
+damping the half-period map gives s = rho + 1/rho (:mod:`.multipliers`), tracked per mode from
+its gamma -> 0 value 2 cos(2 pi omega_i / Omega); each candidate has a smooth indicator F,
+positive exactly where its multipliers leave the unit circle: (-1)^j s_i - 2 (simple) and
+-Re (s_i - s_k)^2 (combination).  F is maximised near each candidate (:func:`.optimize.
+brent_max`), both edges are bracketed and refined on F = 0 (:func:`.optimize.illinois_root`),
+and an overlapping region is followed to |rho|_max = 1 (its union is reported).  Candidates
+below the indicators' round-off floor go to the pair discriminant of :mod:`.narrow`; with
+damping the undamped regions seed the search of max log|rho| > 0 (docs/theory/floquet.md).
 
 References
 ----------
-.. [1] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, ch. 1-2
-   (regions, periodic boundaries), sec. 6 (damping: critical amplitude).
+.. [1] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, ch. 1-2,
+   sec. 6.
 .. [2] C. S. Hsu, "On the parametric excitation of a dynamic system having multiple degrees of
-   freedom", J. Appl. Mech. 30 (1963) 367-372 (combination resonances, first-order widths).
+   freedom", J. Appl. Mech. 30 (1963) 367-372.
 .. [3] W. Magnus, S. Winkler, *Hill's Equation*, Wiley, 1966, ch. 1-2.
 .. [4] K. Takahashi, "An approach to investigate the instability of the multiple-degree-of-
    freedom parametric dynamic systems", J. Sound Vib. 78 (1981) 519-529.
@@ -62,18 +44,9 @@ from .multipliers import (
 from .narrow import narrow_search
 from .optimize import brent_max, expand_bracket, golden_section_max, illinois_root
 
-__all__ = [
-    "DAMPING_MARGIN",
-    "TooManyCandidatesError",
-    "InstabilityRegion",
-    "instability_regions",
-    "RegionBoundary",
-    "region_boundaries",
-    "CriticalAmplitude",
-    "critical_amplitude",
-    "SearchWork",
-    "search_work",
-]
+__all__ = ["DAMPING_MARGIN", "TooManyCandidatesError", "InstabilityRegion", "instability_regions",
+           "RegionBoundary", "region_boundaries", "CriticalAmplitude", "critical_amplitude",
+           "SearchWork", "search_work"]
 
 _KINDS = ("simple", "sum", "difference")
 
@@ -100,31 +73,12 @@ DAMPING_MARGIN = 4.0
 
 @dataclass(frozen=True)
 class InstabilityRegion:
-    """One instability region Omega in (omega_lo, omega_hi).
+    """One instability region Omega in (omega_lo, omega_hi) (rad per time unit of the matrices).
 
-    Attributes
-    ----------
-    omega_lo, omega_hi : float
-        Boundaries (rad per time unit of the matrices), |rho|_max = 1 there.
-    growth_rate_max : float
-        Largest growth rate max Re lambda = log|rho|_max / T inside (1 / time unit).
-    omega_at_max : float
-        Omega where it occurs.
-    kind : str
-        "simple", "sum", "difference", or "steady" (the steady system itself is unstable:
-        the region is the whole range asked for).
-    modes : tuple of int
-        Indices of the steady modes involved (in ascending order of frequency).
-    order : int
-        j of the candidate centre 2 omega_i / j or (omega_i +- omega_k) / j (0 for "steady").
-    omega_center : float
-        The analytic candidate centre.
-    clipped : bool
-        True when a boundary is the end of the Omega range asked for.
-
-    References
-    ----------
-    Bolotin (1964), ch. 1-2; Hsu (1963).
+    growth_rate_max = max log|rho|_max / T inside (1 / time unit) at omega_at_max; kind "simple",
+    "sum", "difference" or "steady" (the steady system itself is unstable: the whole range);
+    modes (ascending frequency), order j and omega_center of the candidate 2 omega_i / j or
+    (omega_i +- omega_k) / j; clipped: an edge is an end of the range (Bolotin 1964; Hsu 1963).
     """
 
     omega_lo: float
@@ -205,16 +159,11 @@ def _range(omega_min, omega_max) -> tuple[float, float]:
 def _damping_caps(w, Bt, base, i0, k0, zrow, zeta, rate, margin) -> np.ndarray:
     """Largest order j per resonance base that damping could leave unstable (0: none).
 
-    The averaged (first-order) equations of a resonant group have the coupling
-    H_ab = |Bt_ab| / (4 sqrt(w_a w_b)) (Bolotin 1964 sec. 3 for simple, Hsu 1963 for
-    combination resonances: growth |Bt_ii| / (4 w_i), sqrt(|Bt_ik Bt_ki| / (16 w_i w_k)));
-    their largest undamped growth rate is at most the largest row sum R_a = sum_b H_ab of the
-    modes involved (Gershgorin: it covers clusters of nearly equal frequencies too).  Order j
-    >= 2: growth = j x width / 4 (the width of a two-mode averaged resonance is 4 lambda / j)
-    with the path bound of the width, so lambda_j <= base zeta_i zeta_k zeta^(j-2) / 4.  With
-    modal decay rates delta, a region exists only if lambda > sqrt(delta_i delta_k) >=
-    min(delta_i, delta_k) (Bolotin sec. 6: mu_cr = Delta / pi; Hsu's combination threshold),
-    kept here when margin * lambda > min(delta_i, delta_k).  A mode without decay keeps all.
+    The averaged equations of a resonant group couple with H_ab = |Bt_ab| / (4 sqrt(w_a w_b));
+    their undamped growth is at most the largest row sum R_a of the modes involved (Gershgorin);
+    order j >= 2 grows at most like base zeta_i zeta_k zeta^(j-2) / 4.  A region needs a growth
+    above min(delta_i, delta_k) of the modal decay rates (Bolotin 1964 sec. 6; Hsu 1963): kept
+    while margin x growth exceeds it.  A mode without decay keeps all.
     """
     with np.errstate(divide="ignore", invalid="ignore"):
         H = np.abs(Bt) / (4.0 * np.sqrt(np.outer(w, w)))
@@ -395,13 +344,10 @@ def _edges(f, x0: np.ndarray, f0: np.ndarray, d0: np.ndarray, direction,
            max_rounds: int = 6) -> tuple[np.ndarray, np.ndarray]:
     """First boundary from x0 (f(x0) > 0) in ``direction``: bracket, refine, then check.
 
-    The outward march takes growing steps and could jump over a stable gap between two
-    adjacent regions; so points between x0 and the refined root are evaluated (8, or 64 when
-    the distance exceeds 4 ``scale``, the expected half-width) and, if one of them has f <= 0,
-    the root is searched again between it and its inner neighbour (up to ``max_rounds``
-    times; a round checks the entries whose root the last one moved, the others' check
-    points and values are unchanged).  Gaps narrower than the check spacing can still be
-    missed (the region is then reported too wide, never lost).  Returns (root, clipped).
+    The outward march could jump over a stable gap between adjacent regions: 8 points between x0
+    and the root (64 beyond 4 ``scale``) are checked and, where one has f <= 0, the root is
+    searched again inside (up to ``max_rounds``).  Narrower gaps can be missed (the region is
+    reported too wide, never lost).  Returns (root, clipped).
     """
     xi, fi, xo, fo, clip = expand_bracket(f, x0, f0, d0, direction, limit)
     root = np.where(clip, limit, xo)
@@ -454,13 +400,8 @@ def _seed_edges(f, x0: np.ndarray, f0: np.ndarray, d0: np.ndarray, limit: np.nda
                 xtol: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Both edges of each region about x0 (f(x0) > 0) to a fraction of its width.
 
-    Entries 0..P-1 march down, P..2P-1 up (as in :func:`_edges`, without its gap check and
-    without the continuation through overlapping regions).  After the bracketing march each
-    round refines every bracket by Illinois to max(xtol, _SEED_WIDTH_FRACTION x W_in,
-    1e-2 x bracket), W_in = the distance between the two inner points (a lower bound of the
-    width: both are inside the region), until every bracket is below max(xtol,
-    _SEED_WIDTH_FRACTION x W_in): the edges are then known to that fraction of the width
-    whatever the region's size, at a fraction of the evaluations of the refinement to rtol.
+    Entries 0..P-1 march down, P..2P-1 up; each round refines every bracket by Illinois until
+    it is below max(xtol, _SEED_WIDTH_FRACTION x the distance between the two inner points).
     Returns (edges, clipped).
     """
     P = x0.size
@@ -794,55 +735,34 @@ def instability_regions(M, C, A, B, omega_min: float, omega_max: float, *,
     Parameters
     ----------
     M, C, A, B : array_like
-        The system M q'' + C q' + (A + B cos Omega t) q = 0, each (n, n) (C may be None).
+        The system, each (n, n) (C may be None).
     omega_min, omega_max : float
         Range of Omega (rad per time unit of the matrices), 0 < omega_min < omega_max.
     rtol : float
-        Boundary tolerance relative to the candidate centre (dimensionless), 1e-14..1e-2:
-        every boundary is refined on |rho|_max = 1 to rtol * Omega_c; regions narrower than
-        that are not reported.
+        Edge tolerance relative to the candidate centre, 1e-14..1e-2; narrower regions are not
+        reported.
     step_phase, max_steps, chunk
-        Monodromy accuracy, cap and batch size (see
-        :func:`flexbooster.floquet.multipliers.monodromy`); the search's default step_phase
-        0.12 (half the steps of 0.06) errs by ~2e-8 on the edges of the damped Mathieu test
-        and leaves the default-case edges unchanged to 3e-10 relative.
+        Monodromy accuracy, cap and batch (:func:`.multipliers.monodromy`); 0.12 errs by ~2e-8
+        on the edges of the damped Mathieu test.
     max_order : int, optional
-        Largest order j examined (default: every order whose estimated width, Omega_c zeta^j
-        with zeta the largest modal coupling |Bt_ab| / (omega_a omega_b), exceeds 1e-3 rtol
-        Omega_c).
+        Largest order j (default: every order whose estimated width exceeds 1e-3 rtol Omega_c).
     max_candidates : int
-        Cap on the number of resonance centres enumerated (ValueError beyond it).
+        Cap on the resonance centres (:class:`TooManyCandidatesError` beyond it).
     damping_margin : float or None
-        With damping (dimensionless, >= 1; default 4): (a) if the rigorous certificate of
-        :func:`flexbooster.floquet.stability_certificate` holds, no region exists at any
-        Omega and none is searched; (b) otherwise a candidate is examined only when
-        ``damping_margin`` x its first-order growth-rate bound exceeds the decay rate of its
-        modes (a region below that is suppressed by damping: Bolotin sec. 6; the bound and
-        its margin in ``docs/theory/floquet.md`` sec. 4).  None: neither (every candidate).
+        With damping, >= 1: no search where :func:`flexbooster.floquet.stability_certificate`
+        holds, and a candidate only where margin x its first-order growth bound exceeds the decay
+        of its modes (docs/theory/floquet.md sec. 4); None: every candidate.
 
     Returns
     -------
     tuple of InstabilityRegion
-        Sorted by omega_lo; every edge is a point of |rho|_max = 1 (or an end of the range,
-        ``clipped``); overlapping regions come as their union, labelled by the lowest-order
-        candidate that reached it.  Regions narrower than about 6e-8 / j of their centre
-        (below the round-off floor of the monodromy indicators) come from the harmonic-balance
-        pair of :mod:`flexbooster.floquet.narrow` (undamped systems; edges and growth rate
-        resolved linearly in the width) down to 1e-14 of their centre; narrower ones are not
-        reported.  If the steady system
-        (B = 0) is itself unstable (complex or non-positive eigenvalues of M^-1 A, or a damped
-        steady system with a growing mode) the result is one region of kind "steady" over the
-        whole range.
-
-    Raises
-    ------
-    ValueError
-        Bad input (naming the argument), too many candidates, or a step count over the cap.
+        Sorted by omega_lo; every edge a point of |rho|_max = 1 or an end of the range; overlaps
+        as their union; regions below the indicators' floor (~6e-8 / j) from :mod:`.narrow`
+        (undamped) down to 1e-14 of the centre; an unstable steady system one "steady" region.
 
     References
     ----------
-    Bolotin (1964), ch. 1-2 and sec. 6; Hsu (1963); Magnus & Winkler (1966), ch. 2;
-    Takahashi (1981).
+    Bolotin (1964), ch. 1-2, sec. 6; Hsu (1963); Magnus & Winkler (1966), ch. 2; Takahashi (1981).
     """
     lo, hi = _range(omega_min, omega_max)
     opt = _options(rtol, step_phase, max_steps, max_order, max_candidates, chunk,
@@ -854,32 +774,10 @@ def instability_regions(M, C, A, B, omega_min: float, omega_max: float, *,
 class SearchWork:
     """What :func:`instability_regions` will integrate, known before it runs (a cost model).
 
-    Attributes
-    ----------
-    n : int
-        Degrees of freedom (dimensionless).
-    steady : bool
-        The steady system is unstable: the search returns one "steady" region at once.
-    certified : bool
-        Damped and certified stable at every Omega (:func:`stability_certificate`): no search.
-    n_candidates : int
-        Candidates examined with the monodromy (after the damping filter; dimensionless).
-    n_narrow : int
-        Candidates left to the harmonic-balance pair of :mod:`.narrow` (undamped only;
-        dimensionless).
-    undamped_steps : int
-        Sum over the monodromy candidates of the undamped half-period step count at the
-        centre (:func:`.multipliers.step_counts`; dimensionless): one undamped evaluation of
-        every candidate (the undamped search, or the seeds of the damped one).  Each step
-        costs ~n^3 (the modal Lawson kernel).
-    damped_steps : int
-        The same with the damped full-period step count (0 without damping): one damped
-        evaluation of every candidate (an upper bound: only the seeds that hold an undamped
-        region are searched with damping).
-
-    References
-    ----------
-    Cost model of :func:`.multipliers.step_counts` (Lawson 1967; docs/theory/floquet.md).
+    n degrees of freedom; ``steady``: the steady system is unstable (no search); ``certified``:
+    damped and certified stable (no search); ``n_candidates`` examined by the monodromy,
+    ``n_narrow`` left to :mod:`.narrow`; ``undamped_steps`` and ``damped_steps``: the sums of the
+    step counts (:func:`.multipliers.step_counts`) at the candidate centres (each step ~n^3).
     """
 
     n: int
@@ -901,35 +799,9 @@ class SearchWork:
 def search_work(M, C, A, B, omega_min: float, omega_max: float, **options) -> SearchWork:
     """The candidates and step counts of :func:`instability_regions`, without integrating.
 
-    The same steps as the search up to its first monodromy: the steady check, the
-    certificate and the damping filter (damped), the candidate table; then the step count of
-    :func:`.multipliers.step_counts` at each candidate centre.  The time of the search is
-    about a number of evaluations per candidate times these steps (calibrated by the caller,
-    e.g. :func:`flexbooster.vehicle.harmonic_search_seconds`).
-
-    Parameters
-    ----------
-    M, C, A, B : array_like
-        The system (see :func:`instability_regions`).
-    omega_min, omega_max : float
-        Range of Omega (rad per time unit of the matrices), 0 < omega_min < omega_max.
-    **options
-        As :func:`instability_regions` (rtol, step_phase, max_steps, max_order,
-        max_candidates, chunk, damping_margin).
-
-    Returns
-    -------
-    SearchWork
-
-    Raises
-    ------
-    ValueError
-        As :func:`instability_regions` (bad input, too many candidates, a step count over the
-        cap).
-
-    References
-    ----------
-    Bolotin (1964), ch. 1-2 (the candidate centres); Lawson (1967) (the step counts).
+    The search's steps up to its first monodromy (steady check, certificate, damping filter,
+    candidates) with the same arguments (``**options`` as :func:`instability_regions`); raises
+    as the search (bad input, too many candidates, steps past the cap).
     """
     lo, hi = _range(omega_min, omega_max)
     opt = _options(**options)
@@ -969,20 +841,8 @@ def search_work(M, C, A, B, omega_min: float, omega_max: float, **options) -> Se
 # --------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class CriticalAmplitude:
-    """Smallest amplitude gamma at which a region exists (B = gamma B1).
-
-    Attributes
-    ----------
-    kind, modes, order : str, tuple of int, int
-        The region (see :class:`InstabilityRegion`).
-    gamma_cr : float
-        Critical amplitude (dimensionless); 0 without damping.
-    omega_cr : float
-        Omega where the region appears (rad per time unit).
-
-    References
-    ----------
-    Bolotin (1964), sec. 6.
+    """Smallest amplitude gamma_cr at which a region (kind, modes, order) exists (B = gamma B1),
+    and the Omega where it appears; gamma_cr = 0 without damping (Bolotin 1964, sec. 6).
     """
 
     kind: str
@@ -1000,21 +860,8 @@ class CriticalAmplitude:
 
 @dataclass(frozen=True)
 class RegionBoundary:
-    """Boundary curves of one region in the (Omega, gamma) plane (B = gamma B1).
-
-    Attributes
-    ----------
-    kind, modes, order : str, tuple of int, int
-        The region.
-    gamma : numpy.ndarray
-        Amplitudes (dimensionless) at which the region exists, ascending; the first is the
-        critical amplitude (0 without damping), where omega_lo = omega_hi.
-    omega_lo, omega_hi : numpy.ndarray
-        Boundaries at each gamma (rad per time unit).
-
-    References
-    ----------
-    Bolotin (1964), ch. 1 (regions in the (Omega, mu) plane), sec. 6.
+    """Boundary curves omega_lo(gamma), omega_hi(gamma) of one region (B = gamma B1): gamma
+    ascending from the critical amplitude, where omega_lo = omega_hi (Bolotin 1964, ch. 1).
     """
 
     kind: str
@@ -1047,41 +894,13 @@ def critical_amplitude(M, C, A, B1, *, gamma_max: float, omega_min: float, omega
                        **options) -> tuple[CriticalAmplitude, ...]:
     """Critical amplitude of every region that exists at gamma_max (B = gamma B1).
 
-    Without damping every region grows out of its candidate centre at gamma = 0.  With damping
-    the largest growth rate near the region, g(gamma) = max_Omega log|rho|_max / T, is negative
-    at gamma = 0 and positive at gamma_max; its root (Illinois regula falsi, all regions at
-    once, each g a Brent maximum over the region's Omega interval at gamma_max, with its own
-    monodromy accuracy: independent of the search's rtol and step_phase) is the amplitude at
-    which the two boundaries meet (Bolotin 1964, sec. 6: mu_cr = Delta / pi for the damped
-    Mathieu equation).
-
-    Parameters
-    ----------
-    M, C, A, B1 : array_like
-        The system with B = gamma B1 (see :func:`instability_regions`).
-    gamma_max : float
-        Largest amplitude (dimensionless), > 0.
-    omega_min, omega_max : float
-        Omega range (rad per time unit).
-    gamma_rtol : float
-        Tolerance on gamma_cr relative to gamma_max (dimensionless), 1e-12..1e-2; the growth
-        maxima are converged to ~1e-8 of the peak and integrated at step_phase
-        min(step_phase, 0.12) (error ~1e-8 relative on gamma_cr), so the tip is accurate to
-        about gamma_rtol + 1e-7 relative whatever the search's rtol.
-    regions : tuple of InstabilityRegion, optional
-        The regions at gamma_max from :func:`instability_regions` with the same range and
-        options, if already computed (saves that search; not checked).
-    **options
-        Passed to :func:`instability_regions`.
-
-    Returns
-    -------
-    tuple of CriticalAmplitude
-        One per region found at gamma_max (steady regions are skipped).
-
-    References
-    ----------
-    Bolotin (1964), sec. 6 (damping), ch. 1-2.
+    Without damping every region grows out of its centre at gamma = 0.  With damping the largest
+    growth rate near the region, g(gamma) = max_Omega log|rho|_max / T, is negative at 0 and
+    positive at gamma_max; its root (Illinois, all regions at once, each g a Brent maximum over
+    the region at gamma_max, at its own step_phase) is where the two boundaries meet (Bolotin
+    1964, sec. 6).  ``gamma_rtol`` (1e-12..1e-2) is relative to gamma_max; ``regions`` the
+    search's result at gamma_max if known; ``**options`` as :func:`instability_regions`.
+    Returns one :class:`CriticalAmplitude` per non-steady region.
     """
     gmax = _gamma_max(gamma_max)
     lo, hi = _range(omega_min, omega_max)
@@ -1115,14 +934,10 @@ _TIP_SAMPLES = 5
 def _tips(base: LinearPeriodicSystem, top, opt: _Options, gamma_rtol: float):
     """Critical amplitude factors c (B = c B_top) and Omega of the tips, all regions at once.
 
-    g(c) = max_Omega growth(Omega, c) over each region's Omega interval at gamma_max (the
-    region at a smaller amplitude lies inside it) is increasing, g(0) = -(slowest steady decay)
-    < 0 (exact, from the steady eigenvalues) and g(1) > 0; its root c_cr is bracketed by
-    [0, 1] and found by vectorised Illinois regula falsi to gamma_rtol; each g is a
-    vectorised Brent maximum over Omega (to _TIP_OMEGA_XTOL of the width, from the previous
-    maximiser), with the monodromy at _TIP_STEP_PHASE: the tip does not depend on the search's
-    rtol or step_phase (Bolotin 1964, sec. 6: the two boundaries meet where the largest
-    growth rate is zero).
+    g(c), the largest growth over each region's interval at gamma_max, rises from
+    g(0) = -(slowest steady decay) < 0 to g(1) > 0; its root by Illinois to gamma_rtol, each g a
+    Brent maximum (to _TIP_OMEGA_XTOL of the width, from the best of the previous maximiser, the
+    centre and a few samples) at _TIP_STEP_PHASE.
     """
     tip = _Options(rtol=opt.rtol, step_phase=min(opt.step_phase, _TIP_STEP_PHASE),
                    max_steps=opt.max_steps, max_order=opt.max_order,
@@ -1193,38 +1008,13 @@ def _selector(r):
 def region_boundaries(M, C, A, B1, *, gamma_max: float, omega_min: float, omega_max: float,
                       n_gamma: int = 21, regions: tuple | None = None,
                       **options) -> tuple[RegionBoundary, ...]:
-    """Boundary curves omega_lo(gamma), omega_hi(gamma) of every region (B = gamma B1).
+    """Boundary curves of every region in the (Omega, gamma) plane (B = gamma B1).
 
-    At each of ``n_gamma`` amplitudes in (0, gamma_max] the boundaries are solved from the
-    boundary conditions (:func:`instability_regions`, refined on |rho| = 1), and matched to the
-    regions found at gamma_max by (kind, modes, order).  The tip is (0, Omega_c, Omega_c)
-    without damping and (gamma_cr, omega_cr, omega_cr) from :func:`critical_amplitude` with
-    damping.
-
-    Parameters
-    ----------
-    M, C, A, B1 : array_like
-        The system with B = gamma B1.
-    gamma_max : float
-        Largest amplitude (dimensionless), > 0.
-    omega_min, omega_max : float
-        Omega range (rad per time unit).
-    n_gamma : int
-        Number of amplitude levels, 2..1000.
-    regions : tuple of InstabilityRegion, optional
-        The regions at gamma_max from :func:`instability_regions` with the same range and
-        options, if already computed (saves that level's search; not checked).
-    **options
-        Passed to :func:`instability_regions`.
-
-    Returns
-    -------
-    tuple of RegionBoundary
-        One per region at gamma_max.
-
-    References
-    ----------
-    Bolotin (1964), ch. 1 (figs. of the regions in the (Omega, mu) plane), sec. 6.
+    At ``n_gamma`` (2..1000) amplitudes in (0, gamma_max] the regions of
+    :func:`instability_regions`, matched to those at gamma_max by (kind, modes, order); the tip
+    at the critical amplitude (:func:`critical_amplitude`).  ``regions``: the search at
+    gamma_max if known; ``**options`` as :func:`instability_regions`.  One
+    :class:`RegionBoundary` per region at gamma_max (Bolotin 1964, ch. 1, sec. 6).
     """
     gmax = _gamma_max(gamma_max)
     lo, hi = _range(omega_min, omega_max)

@@ -29,36 +29,14 @@ from .pitch import PITCH_MAX_TONGUE, PitchResult, pitch_band_edges, pitch_tongue
 from .shell import ShellFrequencies
 from .stability import StabilityTable, excitation, excitation_curves
 
-__all__ = [
-    "INCE_STRUTT_Q_POINTS",
-    "INCE_STRUTT_ORDERS",
-    "CAMPBELL_POINTS",
-    "CAMPBELL_S_MAX",
-    "BAND_CHART_GAMMA_MAX",
-    "PITCH_BAND_CHART_LEVELS",
-    "BEAM_ACTION_CHART_LEVELS",
-    "BEAM_ACTION_CHART_RTOL",
-    "BEAM_ACTION_CHART_MAX_ORDER",
-    "BEAM_ACTION_CHART_STEP_PHASE",
-    "VEHICLE_CHART_LEVELS",
-    "VEHICLE_CHART_GAMMA_MAX",
-    "MODE_SHAPE_POINTS",
-    "MODE_SHAPE_COUNT",
-    "InceStruttData",
-    "ince_strutt_data",
-    "CampbellData",
-    "campbell_data",
-    "RegionCurves",
-    "BandChart",
-    "pitch_band_chart",
-    "beam_action_chart",
-    "BeamModeShapes",
-    "beam_mode_shapes",
-    "NodalPattern",
-    "nodal_lines",
-    "nodal_pattern_data",
-    "FigureData",
-]
+__all__ = ["INCE_STRUTT_Q_POINTS", "INCE_STRUTT_ORDERS", "CAMPBELL_POINTS", "CAMPBELL_S_MAX",
+           "BAND_CHART_GAMMA_MAX", "PITCH_BAND_CHART_LEVELS", "BEAM_ACTION_CHART_LEVELS",
+           "BEAM_ACTION_CHART_RTOL", "BEAM_ACTION_CHART_MAX_ORDER", "BEAM_ACTION_CHART_STEP_PHASE",
+           "VEHICLE_CHART_LEVELS", "VEHICLE_CHART_GAMMA_MAX", "MODE_SHAPE_POINTS",
+           "MODE_SHAPE_COUNT", "InceStruttData", "ince_strutt_data", "CampbellData",
+           "campbell_data", "RegionCurves", "BandChart", "pitch_band_chart", "beam_action_chart",
+           "BeamModeShapes", "beam_mode_shapes", "NodalPattern", "nodal_lines",
+           "nodal_pattern_data", "FigureData"]
 
 #: q points of the Ince-Strutt transition curves, uniform on [0, q_max].
 INCE_STRUTT_Q_POINTS = 300
@@ -113,19 +91,9 @@ def _arrays(obj: Any) -> dict[str, Any]:
 
 @dataclass(frozen=True)
 class InceStruttData:
-    """The Ince-Strutt chart: transition curves and the operating path (memo 4.2).
-
-    Attributes
-    ----------
-    q : numpy.ndarray
-        Shape (n,), q grid of the curves (dimensionless).
-    curves : dict of str to numpy.ndarray
-        ``"a0"``..``"a{r}"``, ``"b1"``..``"b{r}"`` on ``q``; tongue r lies between b_r and a_r
-        and a < a_0 is unstable (dimensionless).
-    a_path, q_path : numpy.ndarray
-        Shape (G,), the operating path (a(Omega), |q(Omega)|) of eq. (4.2-4).
-    path_stable : numpy.ndarray of bool
-        Shape (G,), beta real at each point of the path.
+    """The Ince-Strutt chart (memo 4.2): ``curves`` "a0".."a{r}", "b1".."b{r}" on the grid ``q``
+    (tongue r between b_r and a_r, a < a_0 unstable) and the operating path (``a_path``,
+    ``q_path`` = |q|) of eq. (4.2-4) with ``path_stable`` (beta real); dimensionless.
     """
 
     q: np.ndarray
@@ -141,25 +109,8 @@ class InceStruttData:
 
 def ince_strutt_data(pitch: PitchResult, *, n_q: int = INCE_STRUTT_Q_POINTS,
                      r_max: int = INCE_STRUTT_ORDERS) -> InceStruttData:
-    """Transition curves over the q range of the operating path, and the path itself.
-
-    Parameters
-    ----------
-    pitch : PitchResult
-        The rigid-body pitch result (a, q along the Omega grid).
-    n_q : int
-        q points, 2..100000.
-    r_max : int
-        Highest order of the curves, 1..50.
-
-    Returns
-    -------
-    InceStruttData
-        q runs from 0 to max(0.1, 1.3 max |q|).
-
-    References
-    ----------
-    Abramowitz & Stegun (1964) 20.2; Tech Memo 104, eqs. (4.2-3)..(4.2-5).
+    """Transition curves (n_q points, orders 1..r_max) on q in [0, max(0.1, 1.3 max |q|)] and the
+    operating path of the pitch result (A&S 20.2; memo eqs. 4.2-3..4.2-5).
     """
     n_q = count("n_q", n_q, 2, 100_000)
     r_max = count("r_max", r_max, 1, 50)
@@ -172,24 +123,9 @@ def ince_strutt_data(pitch: PitchResult, *, n_q: int = INCE_STRUTT_Q_POINTS,
 
 @dataclass(frozen=True)
 class CampbellData:
-    """The Campbell diagram: excitation curves (memo 7.3), shell frequencies and the roots.
-
-    Attributes
-    ----------
-    Omega_bar : numpy.ndarray
-        Shape (n,), thrust frequencies Omega / omega_1 of the curves.
-    curves : numpy.ndarray
-        Shape (C, n), excitation frequencies of the drawn curves (units of omega_1).
-    family, s : numpy.ndarray of int
-        Shape (C,), family (memo 7.4) and harmonic of each curve.
-    shell_omega_bar : numpy.ndarray
-        Shell natural frequencies (units of omega_1).
-    root_Omega_bar, root_shell_omega_bar : numpy.ndarray
-        Roots of the stability table (units of omega_1).
-    root_active : numpy.ndarray of bool
-        Active forcing at each root.
-    omega_1 : float
-        Reference frequency (rad/s).
+    """The Campbell diagram (memo 7.3): excitation ``curves`` (C, n) over ``Omega_bar`` (n,) with
+    their ``family`` (memo 7.4) and harmonic ``s``, the shell frequencies and the table's roots
+    with ``root_active`` (all in units of ``omega_1``, rad/s).
     """
 
     Omega_bar: np.ndarray
@@ -214,35 +150,9 @@ _CAMPBELL_FAMILIES = (7, 12, 8, 9, 10, 11, 13, 3)
 def campbell_data(*, params: Any, omega_range: tuple[float, float], omega_1: float,
                   shell: ShellFrequencies, table: StabilityTable, R: int, S: int,
                   n_points: int = CAMPBELL_POINTS, s_max: int = CAMPBELL_S_MAX) -> CampbellData:
-    """Excitation curves on a logarithmic Omega grid, with the shell frequencies and roots.
-
-    Parameters
-    ----------
-    params : callable
-        ``params(Omega_bar) -> (beta, alpha)``, the pipeline's parameter function
-        (:class:`flexbooster.memo.responses.ExcitationParameters`).
-    omega_range : (float, float)
-        Omega range (rad/s), 0 < lo < hi.
-    omega_1 : float
-        Reference frequency (rad/s), > 0.
-    shell : ShellFrequencies
-        The shell frequencies.
-    table : StabilityTable
-        The roots.
-    R, S : int
-        Beam exponents and harmonics of the case.
-    n_points : int
-        Points of the Omega grid, 2..100000.
-    s_max : int
-        Harmonics |s| <= s_max of the (alpha_r + s) curves are kept, >= 0.
-
-    Returns
-    -------
-    CampbellData
-
-    References
-    ----------
-    Tech Memo 104, eqs. (7.3-1)..(7.3-35).
+    """Excitation curves on a logarithmic Omega grid (n_points over ``omega_range``, rad/s),
+    harmonics |s| <= s_max, with the shell frequencies and roots; ``params(Omega_bar) -> (beta,
+    alpha)`` is the pipeline's parameter function; R, S the case's (memo 7.3-1..7.3-35).
     """
     n_points = count("n_points", n_points, 2, 100_000)
     s_max = count("s_max", s_max, 0, None)
@@ -260,16 +170,8 @@ def campbell_data(*, params: Any, omega_range: tuple[float, float], omega_1: flo
 
 @dataclass(frozen=True)
 class RegionCurves:
-    """The boundary curves of one instability region in the (Omega, gamma) plane.
-
-    Attributes
-    ----------
-    label : str
-        Which region: "tongue r" (pitch) or "kind modes j" (beam action).
-    gamma : numpy.ndarray
-        Shape (k,), amplitudes, ascending; the first is the tip (critical gamma).
-    omega_lo, omega_hi : numpy.ndarray
-        Shape (k,), the edges at each gamma (rad/s).
+    """The edges ``omega_lo``, ``omega_hi`` (rad/s) of one region ("tongue r" or "kind modes j")
+    at the amplitudes ``gamma``, ascending from the tip (its critical gamma).
     """
 
     label: str
@@ -284,20 +186,8 @@ class RegionCurves:
 
 @dataclass(frozen=True)
 class BandChart:
-    """Instability regions traced from their boundaries, in physical Omega (rad/s).
-
-    Attributes
-    ----------
-    title : str
-        What is charted.
-    regions : tuple of RegionCurves
-        The traced regions.
-    gamma_operating : float
-        The case's gamma (dimensionless), drawn as a horizontal line.
-    omega_min, omega_max : float
-        The case's Omega range (rad/s).
-    gamma_max : float
-        Top of the chart (dimensionless).
+    """Instability regions traced from their boundaries in (Omega, gamma), Omega in rad/s, with the
+    case's gamma and Omega range and the chart's top ``gamma_max``.
     """
 
     title: str
@@ -317,27 +207,10 @@ class BandChart:
 
 def pitch_band_chart(model: Any, *, n_gamma: int = PITCH_BAND_CHART_LEVELS,
                      gamma_max: float = BAND_CHART_GAMMA_MAX) -> BandChart:
-    """The pitch tongues in the (Omega, gamma) plane, traced from the transition curves.
-
-    Parameters
-    ----------
-    model : BoosterModel
-        The derived model (omega_psi in rad/s, gamma, Omega range, pitch damping ratio).
-    n_gamma : int
-        gamma levels, uniform on [0, gamma_max], 2..1000.
-    gamma_max : float
-        Largest gamma (dimensionless), 0 < gamma_max < 1.
-
-    Returns
-    -------
-    BandChart
-        One region per tongue r that reaches the Omega range at gamma_max, with the edges of
-        :func:`flexbooster.memo.pitch.pitch_band_edges` at each level where the band exists.
-
-    References
-    ----------
-    Tech Memo 104, eqs. (4.2-3), (4.2-4); Abramowitz & Stegun (1964) 20.2; Bolotin (1964),
-    ch. 1, sec. 6.
+    """The pitch tongues in the (Omega, gamma) plane at n_gamma (2..1000) levels in [0, gamma_max]
+    (gamma_max < 1): one region per tongue reaching the Omega range at gamma_max, with the edges
+    of :func:`flexbooster.memo.pitch.pitch_band_edges` where the band exists (memo 4.2-3, 4.2-4;
+    A&S 20.2; Bolotin 1964 sec. 6).
     """
     n_gamma = count("n_gamma", n_gamma, 2, 1000)
     gamma_max = positive("gamma_max", gamma_max)
@@ -374,35 +247,11 @@ def beam_action_chart(model: Any, *, n_gamma: int = BEAM_ACTION_CHART_LEVELS,
                       rtol: float = BEAM_ACTION_CHART_RTOL,
                       max_order: int | None = BEAM_ACTION_CHART_MAX_ORDER,
                       step_phase: float = BEAM_ACTION_CHART_STEP_PHASE) -> BandChart:
-    """The beam-action instability regions in the (Omega, gamma) plane, from their boundaries.
+    """The beam-action regions in the (Omega, gamma) plane from their boundaries.
 
-    Parameters
-    ----------
-    model : BoosterModel
-        The derived model (Omega range in rad/s, beam-action system, damping ratios).
-    n_gamma : int
-        Amplitude levels of :func:`flexbooster.floquet.region_boundaries` (the tip at the
-        critical gamma included), 2..1000.
-    gamma_max : float
-        Largest gamma (dimensionless), 0 < gamma_max < 1.
-    rtol : float
-        Boundary tolerance relative to each centre (dimensionless); narrower regions are not
-        drawn.
-    max_order : int or None
-        Largest resonance order j drawn.
-    step_phase : float
-        Monodromy step parameter (dimensionless), > 0.
-
-    Returns
-    -------
-    BandChart
-        The regions that exist at gamma_max, edges converted from Omega / omega_1 to rad/s;
-        searched above max(omega_min, omega_1 / 4) as the pipeline's bands
-        (:data:`flexbooster.memo.beam_action.BAND_OMEGA_BAR_MIN`).
-
-    References
-    ----------
-    Bolotin (1964), ch. 1 (regions in the (Omega, mu) plane), sec. 6; Tech Memo 104, 4.1.
+    :func:`flexbooster.floquet.region_boundaries` at n_gamma levels up to gamma_max < 1, with the
+    chart's rtol, max_order and step_phase, above max(omega_min, omega_1 / 4) like the pipeline's
+    bands; edges in rad/s (Bolotin 1964, ch. 1, sec. 6).
     """
     n_gamma = count("n_gamma", n_gamma, 2, 1000)
     gamma_max = positive("gamma_max", gamma_max)
@@ -433,18 +282,8 @@ def beam_action_chart(model: Any, *, n_gamma: int = BEAM_ACTION_CHART_LEVELS,
 
 @dataclass(frozen=True)
 class BeamModeShapes:
-    """Free-free beam mode shapes phi_n(zeta) (appendix C).
-
-    Attributes
-    ----------
-    zeta : numpy.ndarray
-        Shape (n,), beam coordinate, 0 at the aft edge, 2 at the nose (dimensionless).
-    phi : numpy.ndarray
-        Shape (N, n), phi_n(zeta) (dimensionless).
-    lambda_n : numpy.ndarray
-        Shape (N,), eigenvalues (dimensionless).
-    zeta_junction, zeta_cm : float
-        zeta of the junction (eq. C-8) and of the CM.
+    """Free-free beam mode shapes ``phi`` (N, n) on ``zeta`` in [0, 2] (0 at the aft edge), their
+    eigenvalues ``lambda_n``, and zeta of the junction (C-8) and of the CM.
     """
 
     zeta: np.ndarray
@@ -460,24 +299,8 @@ class BeamModeShapes:
 
 def beam_mode_shapes(mass: MassProperties, *, N: int = MODE_SHAPE_COUNT,
                      n_points: int = MODE_SHAPE_POINTS) -> BeamModeShapes:
-    """phi_n(zeta), n = 1..N, with the junction and the CM.
-
-    Parameters
-    ----------
-    mass : MassProperties
-        Mass properties (L, d1, d4 in m).
-    N : int
-        Modes, 1..500.
-    n_points : int
-        Points per mode, 2..100000.
-
-    Returns
-    -------
-    BeamModeShapes
-
-    References
-    ----------
-    Tech Memo 104, eqs. (4.1-2), (C-1), (C-6)..(C-9).
+    """phi_n(zeta), n = 1..N (1..500), at n_points, with the junction and the CM (memo eqs. 4.1-2,
+    C-1, C-6..C-9).
     """
     N = count("N", N, 1, 500)
     n_points = count("n_points", n_points, 2, 100_000)
@@ -490,26 +313,9 @@ def beam_mode_shapes(mass: MassProperties, *, N: int = MODE_SHAPE_COUNT,
 
 
 def nodal_lines(j: int, k: int) -> tuple[np.ndarray, np.ndarray]:
-    """Nodal lines of the radial shape sin(j pi s / 2) cos(k theta) (eqs. 5.3-2d, 5.3-3d).
-
-    Parameters
-    ----------
-    j : int
-        Axial index (>= 1; j half-waves along the cylinder).
-    k : int
-        Circumferential index (>= 0; k full waves around the circumference).
-
-    Returns
-    -------
-    s : numpy.ndarray
-        Axial nodal circles s = 2 i / j, i = 0..j, in the local coordinate s in [0, 2]
-        (0 = aft edge, 2 = forward edge).
-    theta : numpy.ndarray
-        Nodal generators theta = (2 i + 1) pi / (2 k), i = 0..2k - 1 (rad); empty for k = 0.
-
-    References
-    ----------
-    Tech Memo 104, eqs. (5.3-2d), (5.3-3d), Fig. 4.
+    """Nodal lines of sin(j pi s / 2) cos(k theta) (memo 5.3-2d, 5.3-3d): the circles s = 2 i / j
+    (i = 0..j, s in [0, 2] from the aft edge) and the generators theta = (2 i + 1) pi / (2 k)
+    (rad; none for k = 0); j >= 1, k >= 0.
     """
     j = count("j", j, 1, None)
     k = count("k", k, 0, None)
@@ -520,22 +326,9 @@ def nodal_lines(j: int, k: int) -> tuple[np.ndarray, np.ndarray]:
 
 @dataclass(frozen=True)
 class NodalPattern:
-    """The nodal pattern of one shell mode on its unrolled cylinder (memo Fig. 4).
-
-    Attributes
-    ----------
-    cylinder, j, k : int
-        The mode.
-    radius, half_length : float
-        R_d, L_d (m).
-    s_nodes : numpy.ndarray
-        Nodal circles in the local coordinate s in [0, 2].
-    theta_nodes : numpy.ndarray
-        Nodal generators (rad).
-    sign : numpy.ndarray
-        Shape (len(theta cells), len(s cells)), sign of w in each cell.
-    hz : float
-        Lowest frequency of the mode (Hz), 0 if not in the table.
+    """The nodal pattern of shell mode (cylinder, j, k) on its unrolled cylinder (memo Fig. 4):
+    radius and half-length (m), nodal circles and generators, the sign of w per cell and the
+    mode's lowest frequency (Hz, 0 if not in the table).
     """
 
     cylinder: int
@@ -555,26 +348,8 @@ class NodalPattern:
 
 def nodal_pattern_data(shell: ShellFrequencies, *, cylinder: int, j: int | None = None,
                        k: int | None = None, radius: float, half_length: float) -> NodalPattern:
-    """The nodal pattern of mode (j, k) of a cylinder; by default its lowest j, k >= 1 mode.
-
-    Parameters
-    ----------
-    shell : ShellFrequencies
-        The frequency table (gives the frequency).
-    cylinder : int
-        1 or 2.
-    j, k : int, optional
-        The mode; by default the lowest-frequency mode with j >= 1 and k >= 1.
-    radius, half_length : float
-        R_d, L_d (m), > 0.
-
-    Returns
-    -------
-    NodalPattern
-
-    References
-    ----------
-    Tech Memo 104, eqs. (5.3-2d), (5.3-3d), Fig. 4.
+    """The nodal pattern of mode (j, k) of cylinder 1 or 2 (default its lowest mode with j, k >=
+    1), radius and half_length > 0 (m) (memo 5.3-2d, 5.3-3d, Fig. 4).
     """
     d = count("cylinder", cylinder, 1, 2)
     radius = positive("radius", radius)
@@ -601,21 +376,8 @@ def nodal_pattern_data(shell: ShellFrequencies, *, cylinder: int, j: int | None 
 
 @dataclass(frozen=True)
 class FigureData:
-    """Everything the figures draw (stored in the results and in results.json ``figures``).
-
-    Attributes
-    ----------
-    ince_strutt : InceStruttData
-    beam_modes : BeamModeShapes
-    nodal_patterns : tuple of NodalPattern
-        One per cylinder.
-    beam_action_chart : BandChart or None
-        The beam-action regions traced from their boundaries; None when the beam action was
-        not computed.
-    campbell : CampbellData or None
-        None when the stability table was not computed.
-    pitch_band_chart : BandChart or None
-        The pitch tongues in the (Omega, gamma) plane.
+    """Everything the figures draw (results.json ``figures``); the beam-action chart, the
+    Campbell diagram and the pitch band chart are None when their stage did not run.
     """
 
     ince_strutt: InceStruttData

@@ -29,7 +29,7 @@ from typing import Any
 import numpy as np
 
 from ..bands import SearchGap, gaps_text
-from ..checks import count
+from ..checks import count, nonnegative, positive
 from ..floquet import (
     beta_from_discriminants,
     characteristic_exponent,
@@ -38,82 +38,29 @@ from ..floquet import (
     tongue_edges,
 )
 
-__all__ = [
-    "pitch_frequency",
-    "mathieu_parameters",
-    "memo_exponent",
-    "psi_three_term",
-    "psi_numerical",
-    "three_term_error",
-    "PITCH_MAX_TONGUE",
-    "PitchBand",
-    "pitch_band_edges",
-    "pitch_tongue_omega_bound",
-    "pitch_bands",
-    "PitchResult",
-    "pitch_analysis",
-]
+__all__ = ["pitch_frequency", "mathieu_parameters", "memo_exponent", "psi_three_term",
+           "psi_numerical", "three_term_error", "PITCH_MAX_TONGUE", "PitchBand",
+           "pitch_band_edges", "pitch_tongue_omega_bound", "pitch_bands", "PitchResult",
+           "pitch_analysis"]
 
 
 def pitch_frequency(F0: float, d2: float, K: float, I_cm: float) -> float:
-    """Rigid-body pitch frequency omega_psi under the steady thrust (rad/s).
+    """Rigid-body pitch frequency omega_psi = sqrt(F0 d2 K / I_cm) (rad/s), steady thrust.
 
-    Parameters
-    ----------
-    F0 : float
-        Total steady thrust, F0 = 2 pi R1 T0 (N), >= 0.
-    d2 : float
-        Lever arm, CM to the aft edge (m) (erratum E2), > 0.
-    K : float
-        Gimbal gain (dimensionless, >= 0): the thrust turns by K psi.
-    I_cm : float
-        Pitch moment of inertia about the CM (kg m^2), > 0.
-
-    Returns
-    -------
-    float
-        omega_psi = sqrt(F0 d2 K / I_cm) (rad/s); zero when K = 0.
-
-    References
-    ----------
-    Tech Memo 104, eq. (4.2-1) linearised, with erratum E2.
+    F0 = 2 pi R1 T0 (N) and K (gimbal gain) >= 0, d2 (m, CM to the aft edge, erratum E2) and
+    I_cm (kg m^2) > 0; zero when K = 0 (memo eq. 4.2-1 linearised).
     """
-    for name, value, positive in (
-        ("F0", F0, False),
-        ("d2", d2, True),
-        ("K", K, False),
-        ("I_cm", I_cm, True),
-    ):
-        ok = np.isfinite(value) and (value > 0 if positive else value >= 0)
-        if not ok:
-            rule = "> 0" if positive else ">= 0"
-            raise ValueError(f"{name} = {value!r}: must be finite and {rule}")
+    F0, K = nonnegative("F0", F0), nonnegative("K", K)
+    d2, I_cm = positive("d2", d2), positive("I_cm", I_cm)
     return float(np.sqrt(F0 * d2 * K / I_cm))  # eq. (4.2-1), sin(K psi) ~ K psi
 
 
 def mathieu_parameters(
     Omega: np.ndarray, omega_psi: float, gamma: float
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Mathieu parameters a(Omega), q(Omega) of the rigid-body pitch equation.
+    """Mathieu parameters a = 4 omega_psi^2 / Omega^2 and q = gamma a / 2 (eq. 4.2-4, erratum E2).
 
-    Parameters
-    ----------
-    Omega : array_like
-        Thrust pulsation frequency (rad/s), > 0.
-    omega_psi : float
-        Rigid-body pitch frequency (rad/s), >= 0, see :func:`pitch_frequency`.
-    gamma : float
-        Relative amplitude of the thrust pulsation (dimensionless), >= 0.
-
-    Returns
-    -------
-    a, q : numpy.ndarray
-        a = 4 omega_psi^2 / Omega^2 = 8 pi R1 d2 K T0 / (I_cm Omega^2) and q = gamma a / 2
-        (eq. 4.2-4), dimensionless, shaped like ``Omega``.
-
-    References
-    ----------
-    Tech Memo 104, eq. (4.2-4) with erratum E2.
+    Omega (rad/s) > 0, omega_psi (rad/s) and gamma >= 0; a, q are shaped like ``Omega``.
     """
     Omega = np.asarray(Omega, dtype=float)
     if Omega.size == 0 or not np.all(np.isfinite(Omega)) or np.any(Omega <= 0):
@@ -130,25 +77,10 @@ def mathieu_parameters(
 def memo_exponent(a: Any, q: Any, *, printed: bool = False) -> np.ndarray:
     """beta from the memo's small-q formula (4.2-9), corrected per erratum E4.
 
-    cos(pi beta) = cos(pi sqrt a) + pi q^2 / (4 sqrt(a) (a - 1)) sin(pi sqrt a), valid for small
-    q away from a = 1 (memo range 0 < a < 1, 0 < q <= 0.05, eq. 4.2-5).
-
-    Parameters
-    ----------
-    a, q : array_like
-        Mathieu parameters (dimensionless), broadcast together; every a > 0, a != 1.
-    printed : bool
-        The formula as printed, with sin(pi sqrt(a) / 2) (an O(q^2) error).
-
-    Returns
-    -------
-    numpy.ndarray of complex
-        beta on the q -> 0 band r = floor(sqrt a) (:func:`flexbooster.floquet.
-        beta_from_discriminants`).
-
-    References
-    ----------
-    Tech Memo 104, eq. (4.2-9), erratum E4; Abramowitz & Stegun (1964) 20.3.15.
+    cos(pi beta) = cos(pi sqrt a) + pi q^2 / (4 sqrt(a) (a - 1)) sin(pi sqrt a) for a > 0,
+    a != 1 (memo range 0 < a < 1, 0 < q <= 0.05, eq. 4.2-5); ``printed``: with sin(pi sqrt(a) / 2)
+    as printed (an O(q^2) error).  beta on the q -> 0 band r = floor(sqrt a), complex
+    (Abramowitz & Stegun 20.3.15).
     """
     a, q = np.broadcast_arrays(np.asarray(a, dtype=float), np.asarray(q, dtype=float))
     if not (np.all(np.isfinite(a)) and np.all(np.isfinite(q))):
@@ -184,29 +116,11 @@ def _scalar_aq(a: Any, q: Any) -> tuple[float, float]:
 def psi_three_term(
     tau1: Any, a: float, q: float, psi0: float = 1.0, beta: float | None = None
 ) -> np.ndarray:
-    """The memo's three-term solution psi = sum_(i=1..3) A_i cos(Omega_i tau) (4.2-6..8).
+    """The memo's three-term solution psi = sum_(i=1..3) A_i cos(Omega_i tau) (4.2-6..8), rad.
 
-    Parameters
-    ----------
-    tau1 : array_like
-        Mathieu time tau_1 = Omega t / 2 (dimensionless).  The memo's tau = omega_1 t is
-        tau = (2 omega_1 / Omega) tau_1 (4.2-6a), and Omega_i tau = (2 - beta) tau_1,
-        beta tau_1, (2 + beta) tau_1 (4.2-7e..g).
-    a, q : float
-        Mathieu parameters (dimensionless), in the stable region.
-    psi0 : float
-        psi(0) (rad) (4.2-8a).
-    beta : float, optional
-        The exponent to use; default the exact (Floquet) exponent.  Must be real.
-
-    Returns
-    -------
-    numpy.ndarray
-        psi(tau_1) (rad), shaped like ``tau1``; psi'(0) = 0.
-
-    References
-    ----------
-    Tech Memo 104, eqs. (4.2-6), (4.2-7), (4.2-8a).
+    At Mathieu times tau1 = Omega t / 2 (Omega_i tau = (2 - beta) tau1, beta tau1,
+    (2 + beta) tau1, 4.2-7e..g), psi(0) = psi0, psi'(0) = 0, with the exact real beta unless one
+    is given (a, q in a stable band).
     """
     a, q = _scalar_aq(a, q)
     if beta is None:
@@ -235,30 +149,10 @@ def psi_three_term(
 
 
 def psi_numerical(tau1: Any, a: Any, q: Any, psi0: float = 1.0) -> np.ndarray:
-    """psi(tau_1) by direct integration of eq. (4.2-3), psi(0) = psi0, psi'(0) = 0.
+    """psi(tau1) of eq. (4.2-3) by direct integration (solve_ivp DOP853, rtol 1e-12), rad.
 
-    Parameters
-    ----------
-    tau1 : array_like
-        Increasing output times tau_1 >= 0 (dimensionless), 1-D.
-    a, q : array_like
-        Mathieu parameters (dimensionless); 1-D arrays of equal length (or scalars) give one
-        solution per pair, integrated together as one system.
-    psi0 : float
-        Initial angle (rad).
-
-    Returns
-    -------
-    numpy.ndarray
-        Shape (len(a), len(tau1)) (or (len(tau1),) for scalar a, q), psi in rad.
-
-    Notes
-    -----
-    scipy.integrate.solve_ivp, DOP853, rtol 1e-12, atol 1e-14 |psi0|.
-
-    References
-    ----------
-    Tech Memo 104, eq. (4.2-3).
+    psi(0) = psi0, psi'(0) = 0 at increasing times tau1 >= 0; a, q scalars or equal-length 1-D
+    arrays (one solution per pair): shape (len(a), len(tau1)), or (len(tau1),) for scalars.
     """
     scalar = np.ndim(a) == 0 and np.ndim(q) == 0
     if not (np.all(np.isfinite(np.asarray(a, dtype=float)))
@@ -301,28 +195,8 @@ def psi_numerical(tau1: Any, a: Any, q: Any, psi0: float = 1.0) -> np.ndarray:
 def three_term_error(
     a: float, q: Any, tau1_max: float = 20.0 * np.pi, n_times: int = 2001
 ) -> np.ndarray:
-    """Error of the memo's three-term psi against direct integration, as a function of q.
-
-    Parameters
-    ----------
-    a : float
-        Mathieu parameter a (dimensionless), 0 < a < 1 (memo range, eq. 4.2-5).
-    q : array_like
-        Values of q (dimensionless), 1-D; each must lie in the stable region.
-    tau1_max : float
-        Length of the comparison in Mathieu time tau_1 (dimensionless).
-    n_times : int
-        Number of comparison times.
-
-    Returns
-    -------
-    numpy.ndarray
-        max over tau_1 in [0, tau1_max] of |psi_3 - psi| / |psi0|, shaped like ``q``, with the
-        exact (Floquet) beta in the three-term form: the truncation error of (4.2-6), O(q^2).
-
-    References
-    ----------
-    Tech Memo 104, eqs. (4.2-3), (4.2-6)..(4.2-8).
+    """max over tau1 in [0, tau1_max] of |psi_3 - psi| / |psi0| per q: the truncation error of
+    (4.2-6) with the exact beta, O(q^2) (0 < a < 1, every (a, q) stable).
     """
     q = np.atleast_1d(np.asarray(q, dtype=float))
     if not (np.isfinite(tau1_max) and tau1_max > 0):
@@ -346,31 +220,22 @@ def three_term_error(
 PITCH_MAX_TONGUE = 60
 
 
+def _check(omega_psi: float, gamma: float, damping_ratio: float) -> float:
+    """Validate omega_psi >= 0, 0 <= gamma < 1, 0 <= damping_ratio < 1; returns the ratio."""
+    nonnegative("omega_psi", omega_psi)
+    for name, value in (("gamma", gamma), ("damping_ratio", damping_ratio)):
+        if not nonnegative(name, value) < 1.0:
+            raise ValueError(f"{name} = {value!r}: must be < 1")
+    return float(damping_ratio)
+
+
 @dataclass(frozen=True)
 class PitchBand:
-    """One instability band of the rigid-body pitch in Omega (Mathieu tongue r, memo 4.2).
+    """One instability band of the rigid-body pitch: Mathieu tongue r in Omega (rad/s).
 
-    Attributes
-    ----------
-    omega_lo, omega_hi : float
-        Band edges (rad/s): where the operating path a = 4 omega_psi^2 / Omega^2,
-        q = gamma a / 2 (4.2-4) crosses a_r(q) (lower edge) and b_r(q) (upper edge); with
-        damping, where the growth rate is zero.
-    growth_rate_max : float
-        Largest amplitude growth rate of psi inside the band (1/s).
-    omega_at_max : float
-        Omega where it occurs (rad/s).
-    tongue : int
-        Order r of the Mathieu tongue (Omega ~ 2 omega_psi / r).
-    critical_gamma : float
-        Smallest gamma at which the band exists (dimensionless); 0 without damping.
-    clipped : bool
-        True when an edge is an end of the Omega range asked for.
-
-    References
-    ----------
-    Tech Memo 104, eqs. (4.2-3), (4.2-4); Abramowitz & Stegun (1964) 20.2; Bolotin (1964),
-    sec. 6 (damping).
+    Edges omega_lo, omega_hi: the operating path (4.2-4) on a_r(q), b_r(q), or with damping where
+    the growth rate is zero; growth_rate_max (1/s) at omega_at_max; tongue r (Omega ~
+    2 omega_psi / r); critical_gamma (0 without damping); clipped: an edge is an end of the range.
     """
 
     omega_lo: float
@@ -396,88 +261,29 @@ class PitchBand:
 
 def pitch_tongue_omega_bound(omega_psi: float, gamma: float, *, tongue: int,
                              damping_ratio: float = 0.0) -> float:
-    """An upper bound (rad/s) on the thrust frequencies of Mathieu tongue r, without a solve.
+    """An upper bound (rad/s) on the thrust frequencies of Mathieu tongue r >= 1, without a solve.
 
-    Parameters
-    ----------
-    omega_psi : float
-        Rigid-body pitch frequency (rad/s), >= 0.
-    gamma : float
-        Pulsation amplitude (dimensionless), 0 <= gamma < 1.
-    tongue : int
-        Tongue order r >= 1.
-    damping_ratio : float
-        Pitch damping ratio zeta (dimensionless), 0 <= zeta < 1.
-
-    Returns
-    -------
-    float
-        2 omega_psi sqrt((1 - zeta^2) (1 + g)) / r with g = gamma / (1 - zeta^2): every band
-        edge of :func:`pitch_band_edges` (damped or not) at this gamma is at or below it, and
-        so is every higher tongue's.
-
-    Notes
-    -----
-    ``|a_r(q) - r^2|`` and ``|b_r(q) - r^2|`` are at most ``2|q|``: the term ``2 q cos 2 tau``
-    of Mathieu's operator has norm ``2|q|``, and Weyl's inequality bounds the shift of each
-    eigenvalue of a self-adjoint operator by the norm of the perturbation, in each parity class
-    apart [1]_.  On the path ``q = g x / 2`` the tongue therefore starts at
-    ``x_b >= r^2 / (1 + g)``, i.e. ``Omega = 2 omega_psi sqrt((1 - zeta^2) / x) <=`` the bound;
-    the damped band lies inside the undamped tongue.
-
-    References
-    ----------
-    .. [1] T. Kato, *Perturbation Theory for Linear Operators*, Springer, 1966, V.4.3.
+    2 omega_psi sqrt((1 - zeta^2)(1 + g)) / r with g = gamma / (1 - zeta^2): |a_r(q) - r^2| and
+    |b_r(q) - r^2| are at most 2|q| (Weyl's inequality for the perturbation 2 q cos 2 tau of norm
+    2|q|, Kato 1966, V.4.3), so on the path q = g x / 2 the tongue starts at x_b >= r^2 / (1 + g);
+    the damped band lies inside, and every higher tongue below.
     """
-    for name, value in (("omega_psi", omega_psi), ("gamma", gamma),
-                        ("damping_ratio", damping_ratio)):
-        if not (np.isfinite(value) and value >= 0.0):
-            raise ValueError(f"{name} = {value!r}: must be finite and >= 0")
-    if not (gamma < 1.0 and damping_ratio < 1.0):
-        raise ValueError(f"gamma = {gamma!r}, damping_ratio = {damping_ratio!r}: must be < 1")
-    if isinstance(tongue, bool) or int(tongue) != tongue or tongue < 1:
-        raise ValueError(f"tongue = {tongue!r}: must be an integer >= 1")
+    _check(omega_psi, gamma, damping_ratio)
+    tongue = count("tongue", tongue, 1, None)
     s = 1.0 - damping_ratio * damping_ratio
     return float(2.0 * omega_psi * np.sqrt(s * (1.0 + gamma / s)) / tongue)
 
 
 def pitch_band_edges(omega_psi: float, gamma: float, *, tongue: int,
                      damping_ratio: float = 0.0) -> tuple[float, float] | None:
-    """Edges (omega_lo, omega_hi) (rad/s) of Mathieu tongue r on the operating path.
+    """Edges (omega_lo, omega_hi) (rad/s) of Mathieu tongue r on the operating path, unclipped.
 
-    Parameters
-    ----------
-    omega_psi : float
-        Rigid-body pitch frequency (rad/s), > 0.
-    gamma : float
-        Pulsation amplitude (dimensionless), 0 <= gamma < 1.
-    tongue : int
-        Tongue order r >= 1 (Omega ~ 2 omega_psi / r).
-    damping_ratio : float
-        Pitch damping ratio zeta (dimensionless), 0 <= zeta < 1.
-
-    Returns
-    -------
-    (float, float) or None
-        The band edges as in :func:`pitch_bands` (not clipped to a range); (Omega_r, Omega_r)
-        with Omega_r = 2 omega_psi sqrt(1 - zeta^2) / r at gamma = 0 without damping; None where
-        the band does not exist (below the critical gamma with damping) or is narrower than
-        round-off.
-
-    References
-    ----------
-    Tech Memo 104, eqs. (4.2-3), (4.2-4); Abramowitz & Stegun (1964) 20.2; Bolotin (1964),
-    sec. 6.
+    omega_psi > 0, 0 <= gamma < 1, tongue 1..PITCH_MAX_TONGUE, 0 <= zeta < 1; at gamma = 0
+    without damping (Omega_r, Omega_r), Omega_r = 2 omega_psi sqrt(1 - zeta^2) / r; None where the
+    band does not exist (damped below its critical gamma) or is below round-off.
     """
-    if not (np.isfinite(omega_psi) and omega_psi > 0.0):
-        raise ValueError(f"omega_psi = {omega_psi!r}: must be finite and > 0")
-    if not (np.isfinite(gamma) and 0.0 <= gamma < 1.0):
-        raise ValueError(f"gamma = {gamma!r}: must satisfy 0 <= gamma < 1")
-    if not (np.isfinite(damping_ratio) and 0.0 <= damping_ratio < 1.0):
-        raise ValueError(f"damping_ratio = {damping_ratio!r}: must satisfy 0 <= zeta < 1")
-    if isinstance(tongue, bool) or int(tongue) != tongue or not 1 <= tongue <= PITCH_MAX_TONGUE:
-        raise ValueError(f"tongue = {tongue!r}: must be an integer in 1..{PITCH_MAX_TONGUE}")
-    r, zeta = int(tongue), float(damping_ratio)
+    _check(positive("omega_psi", omega_psi), gamma, damping_ratio)
+    r, zeta = count("tongue", tongue, 1, PITCH_MAX_TONGUE), float(damping_ratio)
     s = 1.0 - zeta * zeta
     w = float(omega_psi)
     if gamma == 0.0:
@@ -496,39 +302,16 @@ def pitch_band_edges(omega_psi: float, gamma: float, *, tongue: int,
 
 def pitch_bands(omega_psi: float, gamma: float, *, omega_min: float, omega_max: float,
                 damping_ratio: float = 0.0) -> tuple[PitchBand, ...]:
-    """Every instability band of the rigid-body pitch in [omega_min, omega_max], exactly.
+    """Every instability band of the rigid-body pitch in [omega_min, omega_max] (rad/s), exactly.
 
-    Parameters
-    ----------
-    omega_psi : float
-        Rigid-body pitch frequency (rad/s), >= 0 (:func:`pitch_frequency`).
-    gamma : float
-        Pulsation amplitude (dimensionless), 0 <= gamma < 1.
-    omega_min, omega_max : float
-        Range of the thrust frequency Omega (rad/s), 0 < omega_min < omega_max.
-    damping_ratio : float
-        zeta of psi'' + 2 zeta omega_psi psi' + omega_psi^2 (1 - gamma cos Omega t) psi = 0
-        (dimensionless), 0 <= zeta < 1.
-
-    Returns
-    -------
-    tuple of PitchBand
-        Sorted by Omega.  Without damping the edges are the Omega where the operating path
-        a(Omega) = 4 omega_psi^2 / Omega^2, q = gamma a / 2 (4.2-4) crosses a_r(q) and b_r(q),
-        r = 1, 2, ... (every tongue the range reaches; a > 0 > a_0 so the region a < a_0 is
-        never reached), solved by brentq from the analytic positions Omega ~ 2 omega_psi / r;
-        with damping, psi = e^(-c tau_1) u (c = 2 zeta omega_psi / Omega) gives Mathieu's
-        equation for u with a' = a (1 - zeta^2), and the edges are the roots of
-        Im beta(a', q) = c inside the undamped tongue of the path (a', q).  The growth rate
-        Im beta Omega / 2 - zeta omega_psi (1/s) is maximised inside each band (bounded
-        scalar maximiser).  Tongues narrower than the round-off of a_r - b_r (about
-        1e-14 r^2) are not reported, nor tongues r > :data:`PITCH_MAX_TONGUE` (the
-        :class:`flexbooster.bands.SearchGap` of :attr:`PitchResult.gaps`).
-
-    References
-    ----------
-    Tech Memo 104, eqs. (4.2-3), (4.2-4); Abramowitz & Stegun (1964) 20.2.21-20.2.25;
-    McLachlan (1947) ch. IV; Bolotin (1964), sec. 6 (damped Mathieu equation).
+    Without damping the edges are where the path a(Omega) = 4 omega_psi^2 / Omega^2, q = gamma a
+    / 2 crosses a_r(q) and b_r(q) (:func:`flexbooster.floquet.tongue_edges`), r = 1, 2, ...; with
+    damping zeta (psi'' + 2 zeta omega_psi psi' + omega_psi^2 (1 - gamma cos Omega t) psi = 0,
+    0 <= zeta < 1) the roots of Im beta = zeta sqrt(a) inside the tongue of the path
+    a' = a (1 - zeta^2) (:func:`flexbooster.floquet.damped_tongue`).  The growth rate
+    (Im beta - zeta sqrt(a)) Omega / 2 (1/s) is maximised in each band.  Tongues below round-off
+    are not reported, nor tongues r > :data:`PITCH_MAX_TONGUE` (:attr:`PitchResult.gaps`).
+    Sorted by Omega.  Memo (4.2-3), (4.2-4); A&S 20.2; Bolotin (1964), sec. 6.
     """
     return _pitch_search(omega_psi, gamma, omega_min, omega_max, damping_ratio)[0]
 
@@ -536,18 +319,8 @@ def pitch_bands(omega_psi: float, gamma: float, *, omega_min: float, omega_max: 
 def _pitch_search(omega_psi: float, gamma: float, omega_min: float, omega_max: float,
                   damping_ratio: float) -> tuple[tuple[PitchBand, ...], tuple[SearchGap, ...]]:
     """:func:`pitch_bands` and what PITCH_MAX_TONGUE leaves out."""
-    for name, value, low in (("omega_psi", omega_psi, 0.0), ("gamma", gamma, 0.0),
-                             ("damping_ratio", damping_ratio, 0.0)):
-        if not (np.isfinite(value) and value >= low):
-            raise ValueError(f"{name} = {value!r}: must be finite and >= 0")
-    if gamma >= 1.0:
-        raise ValueError(f"gamma = {gamma!r}: must be < 1")
-    if damping_ratio >= 1.0:
-        raise ValueError(f"damping_ratio = {damping_ratio!r}: must be < 1")
-    for name, value in (("omega_min", omega_min), ("omega_max", omega_max)):
-        if not (np.isfinite(value) and value > 0.0):
-            raise ValueError(f"{name} = {value!r}: must be finite and > 0")
-    if not omega_min < omega_max:
+    _check(omega_psi, gamma, damping_ratio)
+    if not positive("omega_min", omega_min) < positive("omega_max", omega_max):
         raise ValueError(f"omega_min = {omega_min!r}: must be < omega_max = {omega_max!r}")
     if omega_psi == 0.0 or gamma == 0.0:
         return (), ()  # q = 0: a = r^2 are isolated points, no band
@@ -614,34 +387,11 @@ def _pitch_search(omega_psi: float, gamma: float, omega_min: float, omega_max: f
 class PitchResult:
     """Rigid-body pitch stability along the Omega grid (memo section 4.2).
 
-    Attributes
-    ----------
-    Omega : numpy.ndarray
-        Thrust pulsation frequencies (rad/s).
-    omega_psi : float
-        Rigid-body pitch frequency (rad/s).
-    gamma : float
-        Pulsation amplitude (dimensionless).
-    a, q : numpy.ndarray
-        Mathieu parameters (4.2-4) (dimensionless).
-    beta_real, beta_imag : numpy.ndarray
-        Exact characteristic exponent (Floquet) (dimensionless).
-    beta_memo_real, beta_memo_imag : numpy.ndarray
-        Eq. (4.2-9) with erratum E4 (dimensionless); zero where a <= 0 or a = 1.
-    growth_rate : numpy.ndarray
-        Amplitude growth rate of psi, beta_imag Omega / 2 (1/s); 0 where stable.
-    stable : numpy.ndarray of bool
-        True where beta is real (bounded psi).
-    in_memo_range : numpy.ndarray of bool
-        0 < a < 1 and 0 < q <= 0.05 (eq. 4.2-5).
-    verdict : str
-        One-line stability verdict, from the bands.
-    bands : tuple of PitchBand
-        The exact instability bands in the range of the grid (:func:`pitch_bands`).
-    damping_ratio : float
-        zeta of the pitch damping (dimensionless).
-    gaps : tuple of SearchGap
-        What the order limit :data:`PITCH_MAX_TONGUE` left out of the search.
+    ``Omega`` (rad/s), ``omega_psi`` (rad/s), ``gamma``, ``a``, ``q`` (4.2-4); ``beta_real``,
+    ``beta_imag`` the exact exponent, ``beta_memo_*`` eq. (4.2-9) with E4 (0 where a <= 0 or
+    a = 1); ``growth_rate`` (1/s, 0 where ``stable``); ``in_memo_range`` 0 < a < 1,
+    0 < q <= 0.05 (4.2-5); ``bands`` (:func:`pitch_bands`) over the grid's range, ``gaps`` what
+    :data:`PITCH_MAX_TONGUE` left out; ``damping_ratio``; ``verdict`` from the bands.
     """
 
     Omega: np.ndarray
@@ -668,10 +418,7 @@ class PitchResult:
 
     @property
     def max_growth_rate(self) -> float:
-        """The largest growth rate (1/s): of the bands' exact maxima and of the grid points.
-
-        A grid steps over narrow bands; the bands do not.  0 when stable.
-        """
+        """Largest growth rate (1/s) of the bands' maxima and the grid points; 0 when stable."""
         grid = float(np.max(self.growth_rate)) if self.growth_rate.size else 0.0
         return max([grid, *(float(b.growth_rate_max) for b in self.bands)])
 
@@ -712,36 +459,15 @@ def pitch_analysis(Omega: Any, omega_psi: float, gamma: float, *,
                    damping_ratio: float = 0.0) -> PitchResult:
     """Rigid-body pitch stability over a grid of thrust frequencies, with its exact bands.
 
-    Parameters
-    ----------
-    Omega : array_like
-        Thrust pulsation frequencies (rad/s), > 0, 1-D, increasing.
-    omega_psi : float
-        Rigid-body pitch frequency (rad/s), from :func:`pitch_frequency`.
-    gamma : float
-        Pulsation amplitude (dimensionless), 0 <= gamma < 1.
-    damping_ratio : float
-        Pitch damping ratio zeta (dimensionless), 0 <= zeta < 1:
-        psi'' + 2 zeta omega_psi psi' + omega_psi^2 (1 - gamma cos Omega t) psi = 0.
-
-    Returns
-    -------
-    PitchResult
-        a, q (4.2-4), exact and memo beta, growth rates on the grid, the exact bands over
-        [Omega[0], Omega[-1]] (:func:`pitch_bands`) and the verdict from the bands.  With
-        damping the grid's beta is that of a' = a (1 - zeta^2) (psi = e^(-c tau_1) u,
-        c = zeta sqrt(a)), stable where Im beta <= c and growth (Im beta - c) Omega / 2.
-
-    References
-    ----------
-    Tech Memo 104, eqs. (4.2-3), (4.2-4), (4.2-5), (4.2-9); Bolotin (1964), sec. 6.
+    Omega (rad/s) > 0, 1-D; omega_psi (rad/s) from :func:`pitch_frequency`; 0 <= gamma < 1;
+    damping zeta, 0 <= zeta < 1 (psi'' + 2 zeta omega_psi psi' + omega_psi^2 (1 - gamma cos Omega
+    t) psi = 0; on the grid beta of a' = a (1 - zeta^2), growth (Im beta - zeta sqrt a) Omega / 2).
+    Memo eqs. (4.2-3)..(4.2-5), (4.2-9); Bolotin (1964), sec. 6.
     """
     Omega = np.atleast_1d(np.asarray(Omega, dtype=float))
     if Omega.ndim != 1:
         raise ValueError(f"Omega: must be 1-D, got shape {Omega.shape}")
-    if not (np.isfinite(damping_ratio) and 0.0 <= damping_ratio < 1.0):
-        raise ValueError(f"damping_ratio = {damping_ratio!r}: must satisfy 0 <= zeta < 1")
-    zeta = float(damping_ratio)
+    zeta = _check(omega_psi, 0.0, damping_ratio)
     a, q = mathieu_parameters(Omega, omega_psi, gamma)
     if zeta == 0.0:
         beta = characteristic_exponent(a, q, "floquet")
