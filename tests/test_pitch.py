@@ -247,7 +247,7 @@ def test_tongues_below_the_range_are_not_solved(monkeypatch):
     def refused(*args):
         raise AssertionError("a tongue edge was solved")
 
-    monkeypatch.setattr(pitch, "tongue_edges", refused)
+    monkeypatch.setattr(mathieu, "tongue_edges", refused)
     assert pitch.pitch_bands(1.2, 0.05, omega_min=5.0, omega_max=2000.0) == ()
 
 

@@ -30,13 +30,7 @@ import numpy as np
 
 from ..bands import SearchGap, gaps_text
 from ..checks import count, nonnegative, positive
-from ..floquet import (
-    beta_from_discriminants,
-    characteristic_exponent,
-    damped_tongue,
-    tongue_critical_gamma,
-    tongue_edges,
-)
+from ..floquet import mathieu
 
 __all__ = ["pitch_frequency", "mathieu_parameters", "memo_exponent", "psi_three_term",
            "psi_numerical", "three_term_error", "PITCH_MAX_TONGUE", "PitchBand",
@@ -96,7 +90,7 @@ def memo_exponent(a: Any, q: Any, *, printed: bool = False) -> np.ndarray:
     # 1 -+ cos(pi beta) with 1 -+ cos(pi sqrt a) written as 2 sin^2, 2 cos^2 (no cancellation)
     one_minus = 2.0 * np.sin(0.5 * np.pi * sa) ** 2 - corr
     one_plus = 2.0 * np.cos(0.5 * np.pi * sa) ** 2 + corr
-    return beta_from_discriminants(one_minus, one_plus, 2.0 * np.floor(sa) + 1.0)
+    return mathieu.beta_from_discriminants(one_minus, one_plus, 2.0 * np.floor(sa) + 1.0)
 
 
 # --------------------------------------------------------------------------------------------
@@ -124,7 +118,7 @@ def psi_three_term(
     """
     a, q = _scalar_aq(a, q)
     if beta is None:
-        b = complex(characteristic_exponent(a, q, "floquet"))
+        b = complex(mathieu.characteristic_exponent(a, q, "floquet"))
         if b.imag != 0.0:
             raise ValueError(
                 f"a = {a}, q = {q}: unstable (beta = {b}); the three-term form "
@@ -203,7 +197,7 @@ def three_term_error(
         raise ValueError(f"tau1_max = {tau1_max!r}: must be finite and > 0")
     tau = np.linspace(0.0, tau1_max, count("n_times", n_times, 2, 10**6))
     exact = psi_numerical(tau, np.full(q.shape, float(a)), q)
-    betas = characteristic_exponent(float(a), q, "floquet")
+    betas = mathieu.characteristic_exponent(float(a), q, "floquet")
     if np.any(betas.imag != 0.0):
         raise ValueError(f"q = {q!r}: every (a, q) must be stable for the three-term form")
     approx = np.stack(
@@ -289,11 +283,11 @@ def pitch_band_edges(omega_psi: float, gamma: float, *, tongue: int,
     if gamma == 0.0:
         return None if zeta > 0.0 else (2.0 * w * np.sqrt(s) / r,) * 2
     g = gamma / s
-    edges = tongue_edges(r, g)
+    edges = mathieu.tongue_edges(r, g)
     if edges is None:
         return None
     if zeta > 0.0:
-        band = damped_tongue(edges[0], edges[1], g, zeta)
+        band = mathieu.damped_tongue(edges[0], edges[1], g, zeta)
         if band is None:
             return None
         edges = band[:2]
@@ -339,7 +333,7 @@ def _pitch_search(omega_psi: float, gamma: float, omega_min: float, omega_max: f
         # before an edge is solved
         if pitch_tongue_omega_bound(w, gamma, tongue=r, damping_ratio=zeta) < omega_min:
             break
-        edges = tongue_edges(r, g)
+        edges = mathieu.tongue_edges(r, g)
         if edges is None:
             break  # this and every higher tongue is below round-off
         x_b, x_a = edges
@@ -347,7 +341,7 @@ def _pitch_search(omega_psi: float, gamma: float, omega_min: float, omega_max: f
             break
         if omega(x_a) > omega_max:
             continue
-        band = damped_tongue(x_b, x_a, g, zeta)
+        band = mathieu.damped_tongue(x_b, x_a, g, zeta)
         if band is None:
             continue
         x_lo, x_hi, x_m, f_m = band
@@ -358,11 +352,11 @@ def _pitch_search(omega_psi: float, gamma: float, omega_min: float, omega_max: f
         if not omega_min <= om_m <= omega_max:  # the peak is outside the clipped band
             om_m = lo if om_m < lo else hi
             x_m = 4.0 * w * w * s / om_m**2
-            mu = float(np.imag(characteristic_exponent(x_m, 0.5 * g * x_m, "hill")))
+            mu = float(np.imag(mathieu.characteristic_exponent(x_m, 0.5 * g * x_m, "hill")))
             f_m = mu - zeta * np.sqrt(x_m / s)
         # growth of psi: e^((mu - c) tau_1), tau_1 = Omega t / 2, c = zeta sqrt(a)
         growth = max(f_m, 0.0) * om_m / 2.0
-        crit = tongue_critical_gamma(r, gamma, zeta) if zeta > 0.0 else 0.0
+        crit = mathieu.tongue_critical_gamma(r, gamma, zeta) if zeta > 0.0 else 0.0
         bands.append(PitchBand(omega_lo=float(lo), omega_hi=float(hi),
                                growth_rate_max=float(growth), omega_at_max=float(om_m),
                                tongue=r, critical_gamma=crit, clipped=bool(clipped)))
@@ -470,11 +464,11 @@ def pitch_analysis(Omega: Any, omega_psi: float, gamma: float, *,
     zeta = _check(omega_psi, 0.0, damping_ratio)
     a, q = mathieu_parameters(Omega, omega_psi, gamma)
     if zeta == 0.0:
-        beta = characteristic_exponent(a, q, "floquet")
+        beta = mathieu.characteristic_exponent(a, q, "floquet")
         stable = beta.imag == 0.0
         growth = np.where(stable, 0.0, beta.imag * Omega / 2.0)  # e^(mu tau_1), tau_1 = Omega t/2
     else:
-        beta = characteristic_exponent(a * (1.0 - zeta**2), q, "floquet")  # u of psi e^(c tau_1)
+        beta = mathieu.characteristic_exponent(a * (1.0 - zeta**2), q, "floquet")  # u, psi e^(c t1)
         excess = beta.imag - zeta * np.sqrt(a)  # mu - c, c = 2 zeta omega_psi / Omega
         stable = excess <= 0.0
         growth = np.where(stable, 0.0, excess * Omega / 2.0)
