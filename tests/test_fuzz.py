@@ -175,7 +175,7 @@ def _outcome(data: dict, regions: bool = False) -> str:
 
 #: The warnings of a run that its budget limited or may exceed (issue 18): a case over the
 #: budget with one of them is not "silently" over.
-BUDGET_WARNINGS = ("cost-estimate", "beam-action-tongue-budget", "vehicle-regions-budget")
+BUDGET_WARNINGS = ("cost-estimate", "vehicle-regions-budget")
 
 
 def _run(data: dict, start: float, regions: bool = False) -> str:
