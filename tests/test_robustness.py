@@ -439,8 +439,6 @@ API_CALLS = [
      lambda: fmult.floquet_multipliers(_M2, _C2, _A2, _B2, [nan])),
     ("floquet_exponents-Omega-neg", "Omega",
      lambda: fmult.floquet_exponents(_M2, _C2, _A2, _B2, [-1.0])),
-    ("growth_rate-method", "method",
-     lambda: fmult.growth_rate(_M2, _C2, _A2, _B2, [1.0], method="x")),
     ("monodromy-n_steps-0", "n_steps", lambda: fmult.monodromy(_M2, _C2, _A2, _B2, [1.0],
                                                                 n_steps=0)),
     ("instability_regions-omega_min-nan", "omega_min",

@@ -605,22 +605,13 @@ def floquet_exponents(M, C, A, B, Omega, **options) -> np.ndarray:
     return np.log(rho) * (as_omega(Omega) / (2.0 * np.pi))[:, None]  # lambda = log(rho) / T
 
 
-def growth_rate(M, C, A, B, Omega, *, method: str = "monodromy", n_harmonics: int = 8,
-                n_steps=None, step_phase: float = 0.06, max_steps: int = MAX_STEPS,
-                chunk: int = 256, amplitude=None) -> np.ndarray:
+def growth_rate(M, C, A, B, Omega, *, n_steps=None, step_phase: float = 0.06,
+                max_steps: int = MAX_STEPS, chunk: int = 256, amplitude=None) -> np.ndarray:
     """Largest real part of the characteristic exponents, log|rho|_max / T, shape (P,).
 
-    Arguments as :func:`monodromy`; ``method`` "monodromy" or "hill" (Hill's determinant with
-    ``n_harmonics``, :func:`flexbooster.floquet.hill_exponents`).  > 0 means unstable.
-    Bolotin (1964), sec. 2-3, 7.
+    Arguments as :func:`monodromy`; > 0 means unstable (Bolotin 1964, sec. 2-3).  Hill's
+    determinant gives the same from :func:`flexbooster.floquet.hill_exponents`.
     """
-    if method == "hill":
-        from .hill import hill_exponents
-
-        lam = hill_exponents(M, C, A, B, Omega, n_harmonics=n_harmonics, amplitude=amplitude)
-        return np.max(lam.real, axis=-1)
-    if method != "monodromy":
-        raise ValueError(f"method = {method!r}: must be 'monodromy' or 'hill'")
     system, om, steps, amp = _prepare(M, C, A, B, Omega, n_steps, step_phase, max_steps,
                                       chunk, amplitude)
     if system.damped:
