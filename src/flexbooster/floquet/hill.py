@@ -34,9 +34,17 @@ def _harmonics(name: str, value, low: int = 0, high: int = 200) -> int:
 
 @dataclass(frozen=True)
 class HillModes:
-    """Hill's exponents lambda (P, k) (1 / time unit), their unit Fourier vectors c_s
-    (s = -S..S) (P, k, 2S + 1, n) of q = exp(lambda t) sum_s c_s exp(i s Omega t), and the
-    centroids sum_s s |c_s|^2 (P, k).
+    """Exponents and Fourier vectors from Hill's truncated determinant.
+
+    Attributes
+    ----------
+    exponents : numpy.ndarray
+        Shape (P, k), lambda (1 / time unit of the matrices).
+    vectors : numpy.ndarray
+        Shape (P, k, 2S + 1, n), unit Fourier vectors c_s (s = -S..S) of
+        q = exp(lambda t) sum_s c_s exp(i s Omega t).
+    centroid : numpy.ndarray
+        Shape (P, k), sum_s s |c_s|^2.
     """
 
     exponents: np.ndarray
@@ -104,14 +112,33 @@ def _hill_arguments(M, C, A, B, Omega, n_harmonics, chunk, amplitude):
 
 def hill_exponents(M, C, A, B, Omega, *, n_harmonics: int = 8, chunk: int = 8,
                    amplitude=None, real_form: bool = False) -> np.ndarray:
-    """Characteristic exponents lambda by Hill's determinant truncated at s = -S..S, (P, 2n).
+    """Characteristic exponents lambda by Hill's determinant truncated at s = -S..S.
 
     M (lambda + i s Omega)^2 c_s + C (lambda + i s Omega) c_s + A c_s + (B / 2)(c_(s-1) + c_(s+1))
     = 0: of the eigenvalues (each repeated modulo i Omega) the 2n distinct ones whose Fourier
-    vectors are most central.  Omega (P,) > 0 (rad per time unit of the matrices); n_harmonics S
-    0..500; ``amplitude`` (P,): point p has amplitude[p] B; ``real_form``: an undamped system in
-    its real form (lambda = i mu), a third of the work.  Exact as S grows when Omega is not small
-    against the frequencies (Bolotin 1964, sec. 7-8).
+    vectors are most central (Bolotin 1964, sec. 7-8; Magnus & Winkler 1966, ch. 2).
+
+    Parameters
+    ----------
+    M, C, A, B : array_like
+        The system M q'' + C q' + (A + B cos Omega t) q = 0, each (n, n), C may be None
+        (:func:`flexbooster.floquet.periodic_system`); or a LinearPeriodicSystem as M.
+    Omega : array_like
+        Shape (P,), rad per time unit of the matrices, > 0.
+    n_harmonics : int
+        S, 0..500.
+    chunk : int
+        Points per batched eigen-solve (memory).
+    amplitude : array_like, optional
+        Shape (P,): point p has the excitation amplitude[p] B (default 1).
+    real_form : bool
+        Solve an undamped system in its real form (lambda = i mu): a third of the work.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (P, 2n), lambda (1 / time unit); exact as S grows when Omega is not small against
+        the frequencies.
     """
     system, om, S, amplitude = _hill_arguments(M, C, A, B, Omega, n_harmonics, chunk,
                                                amplitude)
@@ -148,8 +175,17 @@ def _distinct_central(lam: np.ndarray, cen: np.ndarray, om: np.ndarray,
 
 def hill_modes(M, C, A, B, Omega, *, n_harmonics: int = 8, chunk: int = 8,
                amplitude=None, real_form: bool = False) -> HillModes:
-    """The 2n eigenvalues of :func:`hill_exponents`'s problem whose Fourier vectors are most
-    central (not shifted, copies modulo i Omega kept), with the vectors (:class:`HillModes`).
+    """The 2n eigenvalues of Hill's determinant whose Fourier vectors are most central.
+
+    Parameters
+    ----------
+    M, C, A, B, Omega, n_harmonics, chunk, amplitude, real_form
+        As :func:`hill_exponents`.
+
+    Returns
+    -------
+    HillModes
+        Not shifted, copies modulo i Omega kept, with their unit vectors and centroids.
     """
     system, om, S, amplitude = _hill_arguments(M, C, A, B, Omega, n_harmonics, chunk,
                                                amplitude)
@@ -169,14 +205,28 @@ def hill_modes(M, C, A, B, Omega, *, n_harmonics: int = 8, chunk: int = 8,
 
 def periodic_boundaries(M, C, A, B, *, period: str = "2T", n_harmonics: int = 8,
                         omega_max: float | None = None) -> np.ndarray:
-    """Omega at which a T- or 2T-periodic solution exists (simple-region boundaries), sorted.
+    """Omega at which a T- or 2T-periodic solution exists (simple-region boundaries).
 
-    q = sum_k c_k exp(i k Omega t / 2), k odd (period "2T": regions near 2 omega / j, j odd) or
-    even ("T"), |k| <= 2K (n_harmonics K, 1..100):
-    [A - (k Omega / 2)^2 M + i (k Omega / 2) C] c_k + (B / 2)(c_(k-2) + c_(k+2)) = 0, an
-    eigenproblem in Omega^2 (undamped) or quadratic in Omega.  Real roots 0 < Omega <= omega_max
-    (|Im| > 1e-9 |Omega| dropped) of the truncated problem: compare two K (Bolotin 1964, ch. 1
-    sec. 3-5, ch. 2 sec. 8).
+    [A - (k Omega / 2)^2 M + i (k Omega / 2) C] c_k + (B / 2)(c_(k-2) + c_(k+2)) = 0 for
+    q = sum_k c_k exp(i k Omega t / 2): an eigenproblem in Omega^2 (undamped) or quadratic in
+    Omega (Bolotin 1964, ch. 1 sec. 3-5, ch. 2 sec. 8).
+
+    Parameters
+    ----------
+    M, C, A, B : array_like
+        The system M q'' + C q' + (A + B cos Omega t) q = 0, each (n, n), C may be None
+        (:func:`flexbooster.floquet.periodic_system`); or a LinearPeriodicSystem as M.
+    period : {"2T", "T"}
+        k odd (regions near 2 omega / j, j odd) or even (j even).
+    n_harmonics : int
+        K, |k| <= 2K, 1..100; the boundaries of order j need K well above j / 2.
+    omega_max : float, optional
+        Only roots 0 < Omega <= omega_max.
+
+    Returns
+    -------
+    numpy.ndarray
+        Sorted real roots (|Im| > 1e-9 |Omega| dropped) of the truncated problem.
     """
     system = _system(M, C, A, B)
     K = _harmonics("n_harmonics", n_harmonics, 1, 100)
@@ -217,9 +267,23 @@ def periodic_boundaries(M, C, A, B, *, period: str = "2T", n_harmonics: int = 8,
 def converged_periodic_boundaries(M, C, A, B, *, period: str = "2T", omega_min: float,
                                   omega_max: float, rtol: float = 1e-10,
                                   max_harmonics: int = 64) -> tuple[np.ndarray, int]:
-    """:func:`periodic_boundaries` in [omega_min, omega_max], K = 4, 8, .. until two successive
-    K give as many roots, agreeing to rtol * omega_max (ValueError past max_harmonics, 8..100).
-    Returns (roots, K) (Bolotin 1964, ch. 1 sec. 4-5).
+    """:func:`periodic_boundaries` with the harmonics raised until the roots converge.
+
+    Parameters
+    ----------
+    M, C, A, B, period
+        As :func:`periodic_boundaries`.
+    omega_min, omega_max : float
+        Range of the roots (rad per time unit), 0 < omega_min < omega_max.
+    rtol : float
+        Two successive K = 4, 8, .. agree to rtol * omega_max, with as many roots.
+    max_harmonics : int
+        Largest K, 8..100 (ValueError past it).
+
+    Returns
+    -------
+    roots, K : numpy.ndarray, int
+        The converged roots in the range and the K used (Bolotin 1964, ch. 1 sec. 4-5).
     """
     for name, v in (("omega_min", omega_min), ("omega_max", omega_max), ("rtol", rtol)):
         if not np.isfinite(v) or v <= 0.0:

@@ -1,30 +1,19 @@
 """Mathieu's equation y'' + (a - 2 q cos 2t) y = 0: characteristic exponent, tongues, damping.
 
-The solutions are e^(+-i beta t) P(t) with P pi-periodic, and cos(pi beta) = y1(pi) for the even
-solution y1(0) = 1, y1'(0) = 0.  :func:`characteristic_exponent` computes beta by
-
-* ``"floquet"``: the monodromy over half a period, fourth-order Magnus with Richardson
-  extrapolation (exact 2 x 2 exponentials), vectorised over all (a, q), from
-  1 - cos(pi beta) = -2 y1'(pi/2) y2(pi/2) and 1 + cos(pi beta) = 2 y1(pi/2) y2'(pi/2);
-* ``"hill"``: Hill's infinite determinant (Whittaker & Watson 19.42), a tridiagonal
-  continuant for the pi-periodic and the pi-antiperiodic Fourier bases, its tail summed
-  analytically.
-
-The branch of beta tends to sqrt(a) as q -> 0: r < beta < r + 1 in the stable band between
-a_r(q) and b_(r+1)(q), beta = r + i mu (mu > 0) inside tongue r between b_r(q) and a_r(q); r is
-a Sturm count of the Hill matrices.  :func:`tongue_edges`, :func:`damped_tongue` and
-:func:`tongue_critical_gamma` follow tongue r along the ray q = g x / 2, x = a, with damping
-c y' added (y = e^(-c t) u turns it into Mathieu's equation for u).  Numerical core: numpy
-and scipy only.
+Solutions are e^(+-i beta t) P(t), P pi-periodic, cos(pi beta) = y1(pi).
+:func:`characteristic_exponent` computes beta by a Magnus monodromy over half a period or by
+Hill's determinant (a tridiagonal continuant, its tail summed analytically), on the branch
+beta -> sqrt(a) as q -> 0 (a Sturm count gives the band r): r < beta < r + 1 between a_r and
+b_(r+1), r + i mu inside tongue r.  :func:`tongue_edges`, :func:`damped_tongue` and
+:func:`tongue_critical_gamma` follow tongue r along the ray q = g x / 2, x = a
+(docs/theory/beam-pitch.md, bands.md).
 
 References
 ----------
 .. [1] N. W. McLachlan, *Theory and Application of Mathieu Functions*, Oxford, 1947, ch. IV.
-.. [2] E. T. Whittaker, G. N. Watson, *A Course of Modern Analysis*, 4th ed., Cambridge, 1927,
-   sec. 19.41-19.42.
+.. [2] E. T. Whittaker, G. N. Watson, *A Course of Modern Analysis*, 4th ed., 1927, 19.41-19.42.
 .. [3] M. Abramowitz, I. A. Stegun, *Handbook of Mathematical Functions*, NBS, 1964, ch. 20.
-.. [4] S. Blanes, F. Casas, J. Ros, "Improved high order integrators based on the Magnus
-   expansion", BIT 40 (2000) 434-450.
+.. [4] S. Blanes, F. Casas, J. Ros, BIT 40 (2000) 434-450 (fourth-order Magnus).
 .. [5] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, sec. 6.
 """
 
@@ -292,9 +281,19 @@ def _magnus_pass(a: np.ndarray, q: np.ndarray, n_steps: int) -> tuple[np.ndarray
 
 def beta_from_discriminants(one_minus: np.ndarray, one_plus: np.ndarray,
                             count: np.ndarray) -> np.ndarray:
-    """Complex beta on the branch beta -> sqrt(a) (q -> 0) from 1 -+ cos(pi beta), computed
-    without cancellation, and ``count`` the Sturm count (2 r + 1 in stable band r): real
-    r < beta < r + 1 in a stable band, r + i mu inside tongue r.
+    """Complex beta on the branch beta -> sqrt(a) (q -> 0) from 1 -+ cos(pi beta).
+
+    Parameters
+    ----------
+    one_minus, one_plus : numpy.ndarray
+        1 - cos(pi beta), 1 + cos(pi beta), computed without cancellation.
+    count : numpy.ndarray
+        Characteristic values below a (a Sturm count): 2 r + 1 in stable band r.
+
+    Returns
+    -------
+    numpy.ndarray
+        beta: real r < beta < r + 1 in a stable band, r + i mu inside tongue r.
     """
     even_tongue = one_minus < 0.0  # cos(pi beta) > 1
     odd_tongue = one_plus < 0.0  # cos(pi beta) < -1
@@ -329,10 +328,19 @@ def _discriminants(a: np.ndarray, q: np.ndarray, method: str, n_steps: int | Non
 
 def floquet_discriminant(a: Any, q: Any, method: str = "floquet",
                          n_steps: int | None = None) -> np.ndarray:
-    """cos(pi beta) = y1(pi) of Mathieu's equation, shaped like the broadcast of a and q.
+    """cos(pi beta) = y1(pi) of Mathieu's equation (McLachlan 1947 ch. IV; W&W 19.42).
 
-    ``method`` as :func:`characteristic_exponent`; ``n_steps`` the Magnus steps over [0, pi/2]
-    (default 24 + 16 max sqrt(|a| + 2|q|)).  McLachlan (1947) ch. IV; W&W (1927) 19.42.
+    Parameters
+    ----------
+    a, q : array_like
+        Mathieu parameters (dimensionless), broadcast together.
+    method, n_steps
+        As :func:`characteristic_exponent`.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shaped like the broadcast of a and q.
     """
     a, q = _as_grid(a, q)
     if method == "floquet":
@@ -344,24 +352,48 @@ def floquet_discriminant(a: Any, q: Any, method: str = "floquet",
 
 def characteristic_exponent(a: Any, q: Any, method: str = "floquet",
                             n_steps: int | None = None) -> np.ndarray:
-    """Characteristic exponent beta of y'' + (a - 2 q cos 2t) y = 0 (a, q real, broadcast).
+    """Characteristic exponent beta of y'' + (a - 2 q cos 2t) y = 0.
 
-    ``method`` "floquet" (Magnus monodromy, ``n_steps`` over [0, pi/2]) or "hill" (Hill's
-    determinant; faster).  Complex: real where the solutions are bounded (r < beta < r + 1
-    above tongue r), r + i mu (mu > 0) inside tongue r, growing like e^(mu t); even in q;
-    accurate near integers, to about the square root of the discriminant's accuracy at a
-    transition curve.  McLachlan (1947) ch. IV; Whittaker & Watson (1927) 19.42.
+    Parameters
+    ----------
+    a, q : array_like
+        Mathieu parameters (dimensionless), real, broadcast together; beta is even in q.
+    method : {"floquet", "hill"}
+        Monodromy by Magnus integration, or Hill's determinant (faster; module docstring).
+    n_steps : int, optional
+        Magnus steps over [0, pi/2] ("floquet"; default 24 + 16 max sqrt(|a| + 2|q|)).
+
+    Returns
+    -------
+    numpy.ndarray of complex
+        Real where the solutions are bounded (r < beta < r + 1 above tongue r), r + i mu
+        (mu > 0) inside tongue r, growing like e^(mu t); accurate near integers, to about the
+        square root of the discriminant's accuracy at a transition curve.
+
+    References
+    ----------
+    McLachlan (1947) ch. IV; Whittaker & Watson (1927) 19.42.
     """
     a, q = _as_grid(a, q)
     return beta_from_discriminants(*_discriminants(a, q, method, n_steps))
 
 
 def transition_curves(q: Any, r_max: int = 4) -> dict[str, np.ndarray]:
-    """Characteristic values a_r(q) (r = 0..r_max) and b_r(q) (r = 1..r_max) at q >= 0 (1-D).
+    """Characteristic values a_r(q) (r = 0..r_max) and b_r(q) (r = 1..r_max).
 
-    Keys "a0".."a{r_max}", "b1".."b{r_max}"; tongue r lies between b_r and a_r.  Eigenvalues of
-    the four symmetric tridiagonal matrices of A&S 20.2 (cos 2nt, sin 2nt, cos (2n+1)t,
-    sin (2n+1)t), batched over q (A&S 20.2.21-20.2.25; McLachlan 1947 ch. III).
+    Parameters
+    ----------
+    q : array_like
+        q >= 0 (dimensionless), 1-D.
+    r_max : int
+        Highest order, >= 1.
+
+    Returns
+    -------
+    dict of str to numpy.ndarray
+        "a0".."a{r_max}", "b1".."b{r_max}"; tongue r lies between b_r and a_r.  Eigenvalues of
+        the four symmetric tridiagonal matrices of A&S 20.2 (cos 2nt, sin 2nt, cos (2n+1)t,
+        sin (2n+1)t), batched over q (A&S 20.2.21-20.2.25).
     """
     q = np.atleast_1d(np.asarray(q, dtype=float))
     if q.ndim != 1 or not np.all(np.isfinite(q)) or np.any(q < 0):
@@ -396,7 +428,17 @@ def transition_curves(q: Any, r_max: int = 4) -> dict[str, np.ndarray]:
 
 
 def characteristic_value(kind: str, r: int, q: float) -> float:
-    """a_r(q) (``kind`` "a") or b_r(q) ("b") at one q >= 0 (A&S 20.2; dimensionless)."""
+    """a_r(q) or b_r(q) at one q (A&S 20.2; dimensionless).
+
+    Parameters
+    ----------
+    kind : {"a", "b"}
+        The curve.
+    r : int
+        Order (r >= 1 for "b").
+    q : float
+        q >= 0.
+    """
     return float(transition_curves(np.array([q]), r)[f"{kind}{r}"][0])
 
 
@@ -412,11 +454,22 @@ def _bracket(f, x0: float, f0: float, direction: float, step: float, limit: floa
 
 
 def tongue_edges(r: int, g: float) -> tuple[float, float] | None:
-    """(x_b, x_a): where the ray q = g x / 2 crosses b_r(q) and a_r(q) (r >= 1, g >= 0).
+    """(x_b, x_a): where the ray q = g x / 2 crosses b_r(q) and a_r(q) in the (q, a) plane.
 
-    From the tip x = r^2 the midline x = (a_r + b_r) / 2 is bracketed and solved (brentq), then
-    each edge outward from it with steps of the tongue's width; None when a_r - b_r is below
-    the round-off of the characteristic values (A&S 20.2; McLachlan 1947 ch. IV).
+    From the tip x = r^2 the midline x = (a_r + b_r) / 2 is bracketed and solved (brentq),
+    then each edge outward from it with steps of the tongue's width (A&S 20.2).
+
+    Parameters
+    ----------
+    r : int
+        Tongue order, >= 1.
+    g : float
+        Slope of the ray (dimensionless), >= 0.
+
+    Returns
+    -------
+    (float, float) or None
+        x_b < x_a (x = a); None when a_r - b_r is below the round-off of the curves.
     """
     from scipy import optimize  # here: its import is a sixth of a run's (unused by most)
 
@@ -457,13 +510,26 @@ def _mu(x: float, g: float) -> float:
 
 
 def damped_tongue(x_b: float, x_a: float, g: float, zeta: float) -> tuple | None:
-    """Edges and growth peak of tongue (x_b, x_a) of the ray q = g x / 2 with damping zeta.
+    """Edges and growth peak of a tongue with damping (Bolotin 1964, sec. 6).
 
     y'' + 2 c y' + (a - 2 q cos 2t) y = 0, c = zeta sqrt(a), is Mathieu's equation for
-    u = e^(c t) y with x = a (1 - zeta^2); y grows where f(x) = mu(x) - zeta sqrt(x / (1 - zeta^2))
-    > 0 (mu = Im beta).  Returns (x_lo, x_hi, x_m, f_m): the edges f = 0 (the undamped ones when
-    zeta = 0), the maximiser of f / sqrt(x) and f there; None when f <= 0 throughout (Bolotin
-    1964, sec. 6).
+    u = e^(c t) y with x = a (1 - zeta^2); y grows where f(x) = mu(x) - zeta sqrt(x / (1 -
+    zeta^2)) > 0, mu = Im beta.
+
+    Parameters
+    ----------
+    x_b, x_a : float
+        The undamped tongue on the ray q = g x / 2 (:func:`tongue_edges`).
+    g : float
+        Slope of the ray (dimensionless).
+    zeta : float
+        Damping ratio, 0 <= zeta < 1.
+
+    Returns
+    -------
+    (x_lo, x_hi, x_m, f_m) or None
+        The edges f = 0 (the undamped ones when zeta = 0), the maximiser of f / sqrt(x) and f
+        there; None when f <= 0 throughout.
     """
     from scipy import optimize  # here: its import is a sixth of a run's (unused by most)
     s = 1.0 / (1.0 - zeta * zeta)
@@ -486,11 +552,22 @@ def damped_tongue(x_b: float, x_a: float, g: float, zeta: float) -> tuple | None
 
 
 def tongue_critical_gamma(r: int, gamma: float, zeta: float) -> float:
-    """Smallest amplitude at which damped tongue r opens on the ray q = gamma x / (2 (1 - zeta^2)).
+    """Smallest amplitude at which damped tongue r opens (Bolotin 1964, sec. 6).
 
-    brentq in gamma (to 1e-10 gamma, below an amplitude ``gamma`` where it is open, 0 < zeta < 1)
-    on the largest f of :func:`damped_tongue`; 0 when open down to 1e-12 gamma (Bolotin 1964,
-    sec. 6: mu_cr = Delta / pi).
+    Parameters
+    ----------
+    r : int
+        Tongue order, >= 1.
+    gamma : float
+        An amplitude at which the tongue is open (ray q = gamma x / (2 (1 - zeta^2))), > 0.
+    zeta : float
+        Damping ratio, 0 < zeta < 1.
+
+    Returns
+    -------
+    float
+        brentq in gamma (1e-10 gamma) on the largest f of :func:`damped_tongue`; 0 when the
+        tongue is open down to 1e-12 gamma.
     """
     from scipy import optimize  # here: its import is a sixth of a run's (unused by most)
     s = 1.0 / (1.0 - zeta * zeta)

@@ -76,10 +76,17 @@ def _one_line(value) -> str:
 
 @dataclass(frozen=True)
 class LinearPeriodicSystem:
-    """The validated system in the form q'' = ...: K0, Kc, Kb = M^-1 A, M^-1 C, M^-1 B (n, n);
-    ``damped`` when C != 0; ``mu`` (n,) the eigenvalues of M^-1 A (squared steady frequencies,
-    ascending); ``V`` its eigenvectors and ``Bt`` = V^-1 M^-1 B V (None when V is
-    ill-conditioned: the dense kernel is used).
+    """Validated system M q'' + C q' + (A + B cos Omega t) q = 0 in the form q'' = ...
+
+    Attributes
+    ----------
+    K0, Kc, Kb : numpy.ndarray
+        M^-1 A, M^-1 C, M^-1 B, (n, n).
+    damped : bool
+        C != 0.
+    mu, V, Bt : numpy.ndarray
+        Eigenvalues of M^-1 A (ascending), its eigenvectors and V^-1 M^-1 B V (V, Bt None when
+        V is ill-conditioned: the dense kernel is used).
     """
 
     K0: np.ndarray
@@ -105,8 +112,16 @@ class LinearPeriodicSystem:
 def periodic_system(M, C, A, B) -> LinearPeriodicSystem:
     """Validate and pre-process M q'' + C q' + (A + B cos Omega t) q = 0 (Bolotin 1964, sec. 2).
 
-    M (n, n) invertible, C (n, n) or None / 0, A and B (n, n), any consistent units; ValueError
-    naming the argument (non-finite entries, shapes, singular M).
+    Parameters
+    ----------
+    M, C, A, B : array_like
+        Each (n, n), any consistent units; M invertible, C None or 0 for no damping, A and B
+        possibly non-symmetric.
+
+    Returns
+    -------
+    LinearPeriodicSystem
+        ValueError naming the argument for non-finite entries, wrong shapes, a singular M.
     """
     M = _matrix("M", M, None)
     n = M.shape[0]
@@ -135,15 +150,33 @@ def periodic_system(M, C, A, B) -> LinearPeriodicSystem:
 
 
 def steady_frequencies(M, A, *, C=None) -> np.ndarray:
-    """sqrt of the eigenvalues of M^-1 A (B = 0), shape (n,), complex, ascending in the squared
-    frequency; a non-real or zero value means flutter or divergence (C is only validated).
+    """Frequencies of the steady system (B = 0), sqrt of the eigenvalues of M^-1 A.
+
+    Parameters
+    ----------
+    M, A : array_like
+        Mass and steady stiffness, (n, n).
+    C : array_like, optional
+        Damping (only validated).
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (n,), complex, ascending in the squared frequency; a non-real or zero value means
+        flutter or divergence (Bolotin 1964, sec. 2).
     """
     system = periodic_system(M, C, A, np.zeros_like(np.asarray(M, dtype=float)))
     return np.sqrt(system.mu)
 
 
 def as_omega(Omega) -> np.ndarray:
-    """``Omega`` as a non-empty 1-D float array of finite values > 0 (else ValueError)."""
+    """``Omega`` as a non-empty 1-D float array of finite values > 0.
+
+    Parameters
+    ----------
+    Omega : array_like
+        Pulsation frequencies (rad per time unit); ValueError otherwise.
+    """
     try:
         om = np.atleast_1d(np.asarray(Omega, dtype=float))
     except (TypeError, ValueError):
@@ -181,19 +214,30 @@ def step_counts(system: LinearPeriodicSystem, Omega, *, step_phase: float = 0.06
     """Steps per integrated interval (half period if C = 0, else one period): the cost model.
 
     The term coupling modes j, k oscillates at nu_jk = w_j + w_k + Omega with rate g_jk =
-    a b_jk / max(w_j, Omega / 2) (:func:`_rates`, amplitude a); a fourth-order step errs by about
-    g (h nu)^4 / nu, so h max nu^(3/4) g^(1/4) <= step_phase (error on the exponents ~
-    step_phase^4, about 1e-9 of the largest frequency at 0.06).  Counts are rounded up to
-    2^(k / levels_per_octave) (few batches), and grow like 1 / Omega.
+    a b_jk / max(w_j, Omega / 2) (:func:`_rates`); a fourth-order step errs by about
+    g (h nu)^4 / nu, so h max nu^(3/4) g^(1/4) <= step_phase (Lawson 1967; docs/theory/floquet.md).
 
-    Raises
-    ------
-    StepLimitError
-        A count above ``max_steps`` (unless ``clip``: then capped), naming Omega.
-
-    References
+    Parameters
     ----------
-    Lawson (1967); docs/theory/floquet.md.
+    system : LinearPeriodicSystem
+        From :func:`periodic_system`.
+    Omega : array_like
+        Shape (P,), rad per time unit, > 0.
+    step_phase : float
+        > 0; error on the exponents ~ step_phase^4 (about 1e-9 of the largest frequency at 0.06).
+    max_steps : int
+        Cap: :class:`StepLimitError` beyond it (naming Omega), or with ``clip`` the cap itself.
+    amplitude : array_like, optional
+        Shape (P,), the amplitude a of each point (default 1).
+    levels_per_octave : int
+        Counts rounded up to 2^(k / levels_per_octave): few batches.
+    clip : bool
+        Cap the counts instead of raising (a bounded cost, a larger error).
+
+    Returns
+    -------
+    numpy.ndarray
+        Integer counts, shape (P,); they grow like 1 / Omega.
     """
     om = as_omega(Omega)
     if not (np.isfinite(step_phase) and step_phase > 0.0):
@@ -401,10 +445,26 @@ def _dense_maps(system: LinearPeriodicSystem, om: np.ndarray, steps: np.ndarray,
 
 def half_period_maps(system: LinearPeriodicSystem, Omega, steps: np.ndarray, *,
                      chunk: int = 256, amplitude=None) -> np.ndarray:
-    """Phi(T/2) of an undamped system, shape (P, 2n, 2n) complex, in its modal frame when it has
-    one; ``steps`` (P,) per point (:func:`step_counts`), ``amplitude`` (P,) a_p (default 1),
-    ``chunk`` points per batch of the dense kernel.  :class:`PeriodMapOverflowError` where a
-    map overflows.
+    """Phi(T/2) of an undamped system, in its modal frame when it has one (complex).
+
+    Parameters
+    ----------
+    system : LinearPeriodicSystem
+        From :func:`periodic_system`.
+    Omega : array_like
+        Shape (P,), rad per time unit of the matrices, > 0.
+    steps : numpy.ndarray
+        Shape (P,), integration steps of each point (:func:`step_counts`).
+    chunk : int
+        Points per batch of the dense kernel (memory).
+    amplitude : array_like, optional
+        Shape (P,): point p has the excitation amplitude[p] B (default 1).
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (P, 2n, 2n): the map of (eta, eta') or (q, q'); :class:`PeriodMapOverflowError`
+        where one overflows.
     """
     om = as_omega(Omega)
     amp = _amplitudes(amplitude, om)
@@ -425,7 +485,13 @@ def half_period_maps(system: LinearPeriodicSystem, Omega, steps: np.ndarray, *,
 
 def period_maps(system: LinearPeriodicSystem, Omega, steps: np.ndarray, *, chunk: int = 256,
                 amplitude=None) -> np.ndarray:
-    """Phi(T) in (q, q') by the dense kernel (damped systems), as :func:`half_period_maps`."""
+    """Phi(T) in (q, q') by the dense kernel (damped systems), shape (P, 2n, 2n), real.
+
+    Parameters
+    ----------
+    system, Omega, steps, chunk, amplitude
+        As :func:`half_period_maps` (:class:`PeriodMapOverflowError` likewise).
+    """
     om = as_omega(Omega)
     n = system.n
     steps = np.broadcast_to(np.asarray(steps), om.shape)
@@ -448,13 +514,22 @@ def _reflection(n: int) -> np.ndarray:
 
 
 def s_matrices(Phi: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """2 U_11, 2 (U_11 - I), 2 (U_11 + I), each (P, n, n), from the half-period map (P, 2n, 2n).
+    """2 U_11, 2 (U_11 - I), 2 (U_11 + I) from the half-period map of a reversible system.
 
     U = Phi R Phi^-1 (Phi = Phi(T/2)), U^2 = I and W + W^-1 = diag(2 U_11, -2 U_22) for W = U R
     similar to Phi(T): the n values s = rho + 1/rho are the eigenvalues of 2 U_11 (Magnus &
     Winkler 1966, sec. 2.2).  With P = Phi^-1, s - 2 = eig(-4 Phi_12 P_21) and s + 2 =
-    eig(4 Phi_11 P_11): near rho = +-1 the small eigenvalue is a product of small factors, free
-    of the cancellation in 2 U_11 -+ 2 I.
+    eig(4 Phi_11 P_11): near rho = +-1 the small eigenvalue is a product of small factors.
+
+    Parameters
+    ----------
+    Phi : numpy.ndarray
+        Shape (P, 2n, 2n), from :func:`half_period_maps`.
+
+    Returns
+    -------
+    S, Xp, Xm : numpy.ndarray
+        Each (P, n, n): the matrices whose eigenvalues are s, s - 2 and s + 2.
     """
     n = Phi.shape[-1] // 2
     if np.iscomplexobj(Phi) and not np.any(Phi.imag):
@@ -467,16 +542,25 @@ def s_matrices(Phi: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 
 
 def s_value_sets(Phi: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """s, s - 2 and s + 2 (each (P, n), each set in its own order): the eigenvalues of the
-    matrices of :func:`s_matrices`."""
+    """s, s - 2 and s + 2 (each (P, n), each set in its own order) from the half-period map.
+
+    Parameters
+    ----------
+    Phi : numpy.ndarray
+        Shape (P, 2n, 2n): the eigenvalues of the matrices of :func:`s_matrices`.
+    """
     S, Xp, Xm = s_matrices(Phi)
     return np.linalg.eigvals(S), np.linalg.eigvals(Xp), np.linalg.eigvals(Xm)
 
 
 def largest_multiplier(xp: np.ndarray, xm: np.ndarray) -> np.ndarray:
-    """|rho|_max from s - 2 (used where Re s >= 0) and s + 2 (where Re s < 0), shape (P,).
+    """|rho|_max, shape (P,), from s - 2 (used where Re s >= 0) and s + 2 (where Re s < 0).
 
-    rho = s/2 + sqrt((s/2 - 1)(s/2 + 1)) with the small factor taken from the shifted set.
+    Parameters
+    ----------
+    xp, xm : numpy.ndarray
+        Shape (P, n): s - 2 and s + 2 (:func:`s_value_sets`); rho = s/2 + sqrt((s/2 - 1)
+        (s/2 + 1)) with the small factor from the shifted set.
     """
     xp = xp.astype(complex)
     xm = xm.astype(complex)
@@ -538,18 +622,19 @@ def _prepare(M, C, A, B, Omega, n_steps, step_phase, max_steps, chunk, amplitude
 
 def monodromy(M, C, A, B, Omega, *, n_steps=None, step_phase: float = 0.06,
               max_steps: int = MAX_STEPS, chunk: int = 256, amplitude=None) -> np.ndarray:
-    """Monodromy matrices Phi(T), T = 2 pi / Omega, shape (P, 2n, 2n), for a batch of Omega.
+    """Monodromy matrices Phi(T), T = 2 pi / Omega, for a batch of Omega.
 
     Parameters
     ----------
     M, C, A, B : array_like
-        The system (:func:`periodic_system`), or a :class:`LinearPeriodicSystem` as M.
+        The system M q'' + C q' + (A + B cos Omega t) q = 0, each (n, n), C may be None; or a
+        :class:`LinearPeriodicSystem` as M (C, A, B then ignored).
     Omega : array_like
         Shape (P,), rad per time unit of the matrices, > 0.
     n_steps : int or array_like of int, optional
         Steps per interval, for all or per point (default :func:`step_counts`).
     step_phase, max_steps : float, int
-        Accuracy and cap of :func:`step_counts` (:class:`StepLimitError` beyond the cap).
+        Accuracy and cap of :func:`step_counts`.
     chunk : int
         Points per batch (memory).
     amplitude : array_like, optional
@@ -558,7 +643,8 @@ def monodromy(M, C, A, B, Omega, *, n_steps=None, step_phase: float = 0.06,
     Returns
     -------
     numpy.ndarray
-        z(T) = Phi(T) z(0) for z = (q, q'), real; with C = 0 from the half period.
+        Shape (P, 2n, 2n), real: z(T) = Phi(T) z(0) for z = (q, q'); with C = 0 from the half
+        period, Phi(T) = R Phi(T/2)^-1 R Phi(T/2).
 
     References
     ----------
@@ -583,11 +669,18 @@ def monodromy(M, C, A, B, Omega, *, n_steps=None, step_phase: float = 0.06,
 def floquet_multipliers(M, C, A, B, Omega, *, n_steps=None, step_phase: float = 0.06,
                         max_steps: int = MAX_STEPS, chunk: int = 256,
                         amplitude=None) -> np.ndarray:
-    """Floquet multipliers rho, shape (P, 2n) complex (arguments as :func:`monodromy`).
+    """Floquet multipliers rho, the eigenvalues of the monodromy matrix.
 
-    With C = 0 from the half-period map by reversibility (pairs rho, 1/rho to round-off); a map
-    singular to working precision (unpaired) raises :class:`PeriodMapOverflowError`.  Magnus &
-    Winkler (1966), ch. 1-2.
+    Parameters
+    ----------
+    M, C, A, B, Omega, n_steps, step_phase, max_steps, chunk, amplitude
+        As :func:`monodromy`.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (P, 2n), complex; with C = 0 from the half-period map by reversibility (pairs
+        rho, 1/rho to round-off; unpaired: :class:`PeriodMapOverflowError`).
     """
     system, om, steps, amp = _prepare(M, C, A, B, Omega, n_steps, step_phase, max_steps,
                                       chunk, amplitude)
@@ -598,8 +691,17 @@ def floquet_multipliers(M, C, A, B, Omega, *, n_steps=None, step_phase: float = 
 
 
 def floquet_exponents(M, C, A, B, Omega, **options) -> np.ndarray:
-    """Characteristic exponents log(rho) / T (principal log), (P, 2n), 1 / time unit; Im modulo
-    Omega (arguments as :func:`floquet_multipliers`).
+    """Characteristic exponents log(rho) / T (principal log), T = 2 pi / Omega.
+
+    Parameters
+    ----------
+    M, C, A, B, Omega, **options
+        As :func:`floquet_multipliers`.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (P, 2n), 1 / time unit; Im defined modulo Omega.
     """
     rho = floquet_multipliers(M, C, A, B, Omega, **options)
     return np.log(rho) * (as_omega(Omega) / (2.0 * np.pi))[:, None]  # lambda = log(rho) / T
@@ -607,10 +709,15 @@ def floquet_exponents(M, C, A, B, Omega, **options) -> np.ndarray:
 
 def growth_rate(M, C, A, B, Omega, *, n_steps=None, step_phase: float = 0.06,
                 max_steps: int = MAX_STEPS, chunk: int = 256, amplitude=None) -> np.ndarray:
-    """Largest real part of the characteristic exponents, log|rho|_max / T, shape (P,).
+    """Largest real part of the characteristic exponents, log|rho|_max / T (1 / time unit).
 
-    Arguments as :func:`monodromy`; > 0 means unstable (Bolotin 1964, sec. 2-3).  Hill's
-    determinant gives the same from :func:`flexbooster.floquet.hill_exponents`.
+    > 0 means unstable (Bolotin 1964, sec. 2-3); Hill's determinant gives the same from
+    :func:`flexbooster.floquet.hill_exponents`.
+
+    Parameters
+    ----------
+    M, C, A, B, Omega, n_steps, step_phase, max_steps, chunk, amplitude
+        The system and options of :func:`monodromy`; the result has shape (P,).
     """
     system, om, steps, amp = _prepare(M, C, A, B, Omega, n_steps, step_phase, max_steps,
                                       chunk, amplitude)

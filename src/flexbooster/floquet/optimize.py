@@ -30,11 +30,25 @@ class NoConvergenceError(ValueError):
 
 def golden_section_max(f, a, b, *, xtol, max_iter: int = 200,
                        stop_above: float | None = None) -> tuple[np.ndarray, np.ndarray]:
-    """Maximise f on [a, b] (P,) by golden-section search (Kiefer 1953; Press et al. sec. 10.2).
+    """Maximise f on [a, b] by golden-section search (Kiefer 1953; Press et al. sec. 10.2).
 
-    Each interval shrinks by the golden ratio per step to b - a <= xtol (> 0), or stops once f
-    exceeds ``stop_above``; max_iter >= 1 (:class:`NoConvergenceError` past it).  Returns the best
-    point of each interval and f there; the global maximum where f is unimodal.
+    Parameters
+    ----------
+    f : callable
+        f(x, idx) -> values (module docstring).
+    a, b : array_like
+        Interval ends, shape (P,), finite, a <= b (unit of x).
+    xtol : array_like
+        Final interval lengths, shape (P,) or scalar, > 0.
+    max_iter : int
+        Cap on the steps, >= 1 (:class:`NoConvergenceError` past it).
+    stop_above : float, optional
+        An interval stops once f exceeds this at one of its points.
+
+    Returns
+    -------
+    x, fx : numpy.ndarray
+        The best point of each interval and f there; the maximum where f is unimodal.
     """
     a = np.atleast_1d(np.asarray(a, dtype=float)).copy()
     b = np.atleast_1d(np.asarray(b, dtype=float)).copy()
@@ -77,11 +91,25 @@ def golden_section_max(f, a, b, *, xtol, max_iter: int = 200,
 def brent_max(f, a: np.ndarray, b: np.ndarray, x0: np.ndarray, xtol: np.ndarray, *,
               max_iter: int = 200,
               stop_above: float | None = None) -> tuple[np.ndarray, np.ndarray]:
-    """Maximise f on [a, b] from x0 (P,): golden-section and parabolic steps (Brent 1973, ch. 5).
+    """Maximise f on [a, b] from x0: golden-section and parabolic steps (Brent 1973, ch. 5).
 
-    Absolute tolerance ``xtol`` (P,) plus 1.5e-8 |x|; a problem stops once f exceeds
-    ``stop_above``.  Returns the maximiser and f there (:class:`NoConvergenceError` after
-    max_iter).
+    Parameters
+    ----------
+    f : callable
+        f(x, idx) -> values (module docstring).
+    a, b, x0 : numpy.ndarray
+        Interval ends and starting points, shape (P,), a <= x0 <= b.
+    xtol : numpy.ndarray
+        Absolute tolerances, shape (P,), > 0 (plus 1.5e-8 |x|).
+    max_iter : int
+        Cap on the steps (:class:`NoConvergenceError` past it).
+    stop_above : float, optional
+        A problem stops once f exceeds this at its best point.
+
+    Returns
+    -------
+    x, fx : numpy.ndarray
+        The maximiser of each problem and f there.
     """
     cgold = 0.5 * (3.0 - np.sqrt(5.0))
     a, b = a.copy(), b.copy()
@@ -139,10 +167,25 @@ def brent_max(f, a: np.ndarray, b: np.ndarray, x0: np.ndarray, xtol: np.ndarray,
 
 def illinois_root(f, x_in: np.ndarray, f_in: np.ndarray, x_out: np.ndarray, f_out: np.ndarray,
                   xtol: np.ndarray, *, max_iter: int = 200, bracket: bool = False):
-    """Root of f between x_in (f > 0) and x_out (f <= 0), Illinois regula falsi, (P,) problems.
+    """Root of f between x_in (f > 0) and x_out (f <= 0) by Illinois regula falsi.
 
-    Brackets shrink to ``xtol`` (at least xtol / 2 per step; past max_iter / 2 by bisection, for
-    f at round-off); returns their midpoints, or with ``bracket`` (x_in, f_in, x_out, f_out).
+    Parameters
+    ----------
+    f : callable
+        f(x, idx) -> values (module docstring).
+    x_in, f_in, x_out, f_out : numpy.ndarray
+        The brackets and f at their ends, shape (P,), f_in > 0 >= f_out.
+    xtol : numpy.ndarray
+        Final bracket lengths, shape (P,), > 0 (at least xtol / 2 gained per step).
+    max_iter : int
+        Cap on the steps; past half of it each step bisects (f at round-off).
+    bracket : bool
+        Return the final brackets (x_in, f_in, x_out, f_out) instead of their midpoints.
+
+    Returns
+    -------
+    numpy.ndarray or tuple
+        The midpoints of the final brackets, shape (P,), or the brackets.
     """
     a, fa, b, fb = x_in.copy(), f_in.copy(), x_out.copy(), f_out.copy()
     last = np.zeros(a.size, dtype=int)  # which end moved last (+1 a, -1 b)
@@ -175,11 +218,28 @@ def illinois_root(f, x_in: np.ndarray, f_in: np.ndarray, x_out: np.ndarray, f_ou
 def expand_bracket(f, x0: np.ndarray, f0: np.ndarray, d0: np.ndarray, direction,
                    limit: np.ndarray, *, factor: float = 3.0,
                    max_iter: int = 80) -> tuple[np.ndarray, ...]:
-    """March from x0 by d0 factor^m towards ``limit`` until f's sign differs from f0's (P,).
+    """March from x0 by d0 factor^m towards ``limit`` until the sign of f differs from f0's.
 
-    Returns (x_in, f_in, x_out, f_out, clipped): the last point with f0's sign (x0 if none), the
-    first without (x0, 0 if none), and where the march reached ``limit`` without a change
-    (:class:`NoConvergenceError` after max_iter points).
+    Parameters
+    ----------
+    f : callable
+        f(x, idx) -> values (module docstring).
+    x0, f0, d0 : numpy.ndarray
+        Starting points, f there and first steps (> 0), shape (P,).
+    direction : float or numpy.ndarray
+        +1 or -1 per problem.
+    limit : numpy.ndarray
+        End of each march (its last point).
+    factor : float
+        Growth of the step per point, > 1.
+    max_iter : int
+        Cap on the points (:class:`NoConvergenceError` past it).
+
+    Returns
+    -------
+    x_in, f_in, x_out, f_out, clipped : numpy.ndarray
+        The last point with f0's sign (x0 if none) and the first without (x0, f 0 if none);
+        ``clipped`` where the march reached ``limit`` without a change of sign.
     """
     x_in, f_in = x0.copy(), np.asarray(f0, dtype=float).copy()
     x_out, f_out = x0.copy(), np.zeros(x0.size)

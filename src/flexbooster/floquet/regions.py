@@ -73,12 +73,20 @@ DAMPING_MARGIN = 4.0
 
 @dataclass(frozen=True)
 class InstabilityRegion:
-    """One instability region Omega in (omega_lo, omega_hi) (rad per time unit of the matrices).
+    """One instability region Omega in (omega_lo, omega_hi) (Bolotin 1964; Hsu 1963).
 
-    growth_rate_max = max log|rho|_max / T inside (1 / time unit) at omega_at_max; kind "simple",
-    "sum", "difference" or "steady" (the steady system itself is unstable: the whole range);
-    modes (ascending frequency), order j and omega_center of the candidate 2 omega_i / j or
-    (omega_i +- omega_k) / j; clipped: an edge is an end of the range (Bolotin 1964; Hsu 1963).
+    Attributes
+    ----------
+    omega_lo, omega_hi, omega_at_max, omega_center : float
+        Edges (|rho|_max = 1), where the growth is largest, the candidate's analytic centre
+        (rad per time unit of the matrices).
+    growth_rate_max : float
+        Largest max Re lambda = log|rho|_max / T inside (1 / time unit).
+    kind, modes, order : str, tuple of int, int
+        "simple", "sum", "difference" or "steady" (the steady system is unstable: the whole
+        range); the modes (ascending frequency) and j of 2 omega_i / j or (omega_i +- omega_k) / j.
+    clipped : bool
+        An edge is an end of the range asked for.
     """
 
     omega_lo: float
@@ -774,10 +782,17 @@ def instability_regions(M, C, A, B, omega_min: float, omega_max: float, *,
 class SearchWork:
     """What :func:`instability_regions` will integrate, known before it runs (a cost model).
 
-    n degrees of freedom; ``steady``: the steady system is unstable (no search); ``certified``:
-    damped and certified stable (no search); ``n_candidates`` examined by the monodromy,
-    ``n_narrow`` left to :mod:`.narrow`; ``undamped_steps`` and ``damped_steps``: the sums of the
-    step counts (:func:`.multipliers.step_counts`) at the candidate centres (each step ~n^3).
+    Attributes
+    ----------
+    n : int
+        Degrees of freedom.
+    steady, certified : bool
+        The steady system is unstable, or damped and certified stable: no search.
+    n_candidates, n_narrow : int
+        Candidates examined by the monodromy and left to :mod:`.narrow`.
+    undamped_steps, damped_steps : int
+        Sums of the step counts (:func:`.multipliers.step_counts`) at the candidate centres,
+        undamped half period and damped period (each step ~n^3).
     """
 
     n: int
@@ -799,9 +814,16 @@ class SearchWork:
 def search_work(M, C, A, B, omega_min: float, omega_max: float, **options) -> SearchWork:
     """The candidates and step counts of :func:`instability_regions`, without integrating.
 
-    The search's steps up to its first monodromy (steady check, certificate, damping filter,
-    candidates) with the same arguments (``**options`` as :func:`instability_regions`); raises
-    as the search (bad input, too many candidates, steps past the cap).
+    Parameters
+    ----------
+    M, C, A, B, omega_min, omega_max, **options
+        As :func:`instability_regions`.
+
+    Returns
+    -------
+    SearchWork
+        The search's steps up to its first monodromy (steady check, certificate, damping filter,
+        candidates); raises as the search does.
     """
     lo, hi = _range(omega_min, omega_max)
     opt = _options(**options)
@@ -841,8 +863,14 @@ def search_work(M, C, A, B, omega_min: float, omega_max: float, **options) -> Se
 # --------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class CriticalAmplitude:
-    """Smallest amplitude gamma_cr at which a region (kind, modes, order) exists (B = gamma B1),
-    and the Omega where it appears; gamma_cr = 0 without damping (Bolotin 1964, sec. 6).
+    """Smallest amplitude at which a region exists (B = gamma B1; Bolotin 1964, sec. 6).
+
+    Attributes
+    ----------
+    kind, modes, order
+        The region (:class:`InstabilityRegion`).
+    gamma_cr, omega_cr : float
+        The critical amplitude (0 without damping) and the Omega where the region appears.
     """
 
     kind: str
@@ -860,8 +888,15 @@ class CriticalAmplitude:
 
 @dataclass(frozen=True)
 class RegionBoundary:
-    """Boundary curves omega_lo(gamma), omega_hi(gamma) of one region (B = gamma B1): gamma
-    ascending from the critical amplitude, where omega_lo = omega_hi (Bolotin 1964, ch. 1).
+    """Boundary curves of one region in the (Omega, gamma) plane (B = gamma B1; Bolotin ch. 1).
+
+    Attributes
+    ----------
+    kind, modes, order
+        The region (:class:`InstabilityRegion`).
+    gamma, omega_lo, omega_hi : numpy.ndarray
+        Amplitudes, ascending from the critical one (where omega_lo = omega_hi), and the edges
+        there (rad per time unit).
     """
 
     kind: str
@@ -896,11 +931,28 @@ def critical_amplitude(M, C, A, B1, *, gamma_max: float, omega_min: float, omega
 
     Without damping every region grows out of its centre at gamma = 0.  With damping the largest
     growth rate near the region, g(gamma) = max_Omega log|rho|_max / T, is negative at 0 and
-    positive at gamma_max; its root (Illinois, all regions at once, each g a Brent maximum over
-    the region at gamma_max, at its own step_phase) is where the two boundaries meet (Bolotin
-    1964, sec. 6).  ``gamma_rtol`` (1e-12..1e-2) is relative to gamma_max; ``regions`` the
-    search's result at gamma_max if known; ``**options`` as :func:`instability_regions`.
-    Returns one :class:`CriticalAmplitude` per non-steady region.
+    positive at gamma_max; its root (Illinois, all regions at once, each g a Brent maximum at its
+    own step_phase) is where the two boundaries meet (Bolotin 1964, sec. 6).
+
+    Parameters
+    ----------
+    M, C, A, B1 : array_like
+        The system with B = gamma B1 (see :func:`instability_regions`).
+    gamma_max : float
+        Largest amplitude, > 0.
+    omega_min, omega_max : float
+        Omega range (rad per time unit).
+    gamma_rtol : float
+        Tolerance relative to gamma_max, 1e-12..1e-2.
+    regions : tuple of InstabilityRegion, optional
+        The search at gamma_max with the same range and options, if known.
+    **options
+        As :func:`instability_regions`.
+
+    Returns
+    -------
+    tuple of CriticalAmplitude
+        One per non-steady region at gamma_max.
     """
     gmax = _gamma_max(gamma_max)
     lo, hi = _range(omega_min, omega_max)
@@ -1008,13 +1060,23 @@ def _selector(r):
 def region_boundaries(M, C, A, B1, *, gamma_max: float, omega_min: float, omega_max: float,
                       n_gamma: int = 21, regions: tuple | None = None,
                       **options) -> tuple[RegionBoundary, ...]:
-    """Boundary curves of every region in the (Omega, gamma) plane (B = gamma B1).
+    """Boundary curves omega_lo(gamma), omega_hi(gamma) of every region (B = gamma B1).
 
-    At ``n_gamma`` (2..1000) amplitudes in (0, gamma_max] the regions of
-    :func:`instability_regions`, matched to those at gamma_max by (kind, modes, order); the tip
-    at the critical amplitude (:func:`critical_amplitude`).  ``regions``: the search at
-    gamma_max if known; ``**options`` as :func:`instability_regions`.  One
-    :class:`RegionBoundary` per region at gamma_max (Bolotin 1964, ch. 1, sec. 6).
+    At ``n_gamma`` amplitudes in (0, gamma_max] the regions of :func:`instability_regions`,
+    matched to those at gamma_max by (kind, modes, order); the tip at the critical amplitude
+    (:func:`critical_amplitude`) (Bolotin 1964, ch. 1, sec. 6).
+
+    Parameters
+    ----------
+    M, C, A, B1, gamma_max, omega_min, omega_max, regions, **options
+        As :func:`critical_amplitude`.
+    n_gamma : int
+        Amplitude levels, 2..1000.
+
+    Returns
+    -------
+    tuple of RegionBoundary
+        One per region at gamma_max.
     """
     gmax = _gamma_max(gamma_max)
     lo, hi = _range(omega_min, omega_max)

@@ -1,31 +1,22 @@
 """Beam action under a gimbaled pulsating end thrust: Floquet exponents alpha_r (memo 4.1).
 
-The memo takes the exponents alpha_r of the beam motion (4.1-10/11) from its reference 11;
-this module computes them for the standard model (Beal 1965; docs/theory/beam-action.md): a
-uniform free-free Euler-Bernoulli beam of the composite's mass and length 2L (memo 4.1 A)
-with its first frequency omega_1 (4.2-8b), the end thrust T(t) = F0 (1 - gamma cos Omega t)
-along the tangent turned by K psi (2.2-2), the axial force F(t) (1 - x / l), the rigid
-rotation q_B = psi and N elastic modes (4.1-1, 4.1-3), the rotation's moment balance about
-the CM (4.2-1).  With tau = omega_1 t, Omega_bar = Omega / omega_1:
-
-    q'' + [Lambda + f(tau) B] q = 0,   f(tau) = 1 - gamma cos(Omega_bar tau),
-
-q = (q_1 .. q_N, q_B) (4.1-12), B non-symmetric (follower force).  Solutions are
-q = sum_s C^(s) exp(i (alpha + s) Omega_bar tau) (4.1-10/11), alpha modulo integers, the set
-symmetric under alpha -> -alpha and conj.  The exponents come from the monodromy
-(:func:`flexbooster.floquet.floquet_multipliers`) and, as a check, Hill's determinant; the
-instability bands from :func:`flexbooster.floquet.instability_regions` and, below
-omega_1 / 4, the rigid-pitch tongues by harmonic balance.
+The standard model of the memo's reference 11 (Beal 1965; docs/theory/beam-action.md): a
+uniform free-free beam of the composite's mass and length 2L with its first frequency omega_1
+(4.2-8b), the end thrust F0 (1 - gamma cos Omega t) along the tangent turned by K psi
+(2.2-2), the rigid rotation q_B = psi and N elastic modes (4.1-1, 4.1-3).  With
+tau = omega_1 t: q'' + [Lambda + f(tau) B] q = 0, f = 1 - gamma cos(Omega_bar tau),
+q = (q_1 .. q_N, q_B) (4.1-12), B non-symmetric (follower force); solutions
+sum_s C^(s) exp(i (alpha + s) Omega_bar tau) (4.1-10/11).  The exponents come from the
+monodromy (:mod:`flexbooster.floquet`) checked by Hill's determinant; the bands from their
+boundaries and, below omega_1 / 4, the rigid-pitch tongues by harmonic balance.
 
 References
 ----------
 .. [1] Tech Memo 104, sections 2.2, 4.1, 4.2.
-.. [2] V. L. Beal, "Dynamic stability of a flexible missile under constant and pulsating
-   thrusts", AIAA J. 3 (1965) 486-494 (follower flutter load 109.69 EI / l^2).
+.. [2] V. L. Beal, AIAA J. 3 (1965) 486-494 (follower flutter load 109.69 EI / l^2).
 .. [3] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, ch. 1-3.
 .. [4] W. Magnus, S. Winkler, *Hill's Equation*, Wiley, 1966.
-.. [5] J. D. Lawson, "Generalized Runge-Kutta processes for stable systems with large
-   Lipschitz constants", SIAM J. Numer. Anal. 4 (1967) 372-380.
+.. [5] J. D. Lawson, SIAM J. Numer. Anal. 4 (1967) 372-380.
 """
 
 from __future__ import annotations
@@ -78,12 +69,19 @@ MONODROMY_MAX_STEPS = 8192
 # --------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class BeamActionSystem:
-    """The normalised system q'' + [Lambda + f(tau) B] q = 0 (tau = omega_1 t).
+    """The normalised beam-action system q'' + [Lambda + f(tau) B] q = 0 (tau = omega_1 t).
 
-    ``Lambda`` (N + 1,): (lambda_n / lambda_1)^4 and 0 for q_B; ``B`` (N + 1, N + 1): the thrust
-    matrix per unit f(tau); ``omega_1`` (rad/s); ``load`` = F0 / (M L omega_1^2) (P l^2 / EI =
-    lambda_1^4 load / 2); ``K`` the gimbal gain; ``N`` the elastic modes (all dimensionless but
-    omega_1).
+    Attributes
+    ----------
+    Lambda, B : numpy.ndarray
+        (lambda_n / lambda_1)^4 and 0 for q_B, shape (N + 1,); the thrust matrix per unit f(tau),
+        (N + 1, N + 1), non-symmetric (dimensionless).
+    omega_1 : float
+        First free-free frequency (rad/s) normalising time.
+    load, K : float
+        F0 / (M L omega_1^2) (P l^2 / EI = lambda_1^4 load / 2) and the gimbal gain.
+    N : int
+        Elastic modes.
     """
 
     Lambda: np.ndarray
@@ -195,7 +193,15 @@ def beam_action_system(omega_1: float, mass: float, L: float, d2: float, I_cm: f
 
 
 def beam_system(model: BoosterModel, N: int | None = None) -> BeamActionSystem:
-    """:func:`beam_action_system` of a derived model (its truncation N unless given)."""
+    """:func:`beam_action_system` of a booster's derived model.
+
+    Parameters
+    ----------
+    model : BoosterModel
+        The derived model (omega_1, mass properties, F0, K).
+    N : int, optional
+        Elastic modes (default the model's truncation N).
+    """
     m = model.mass
     return beam_action_system(model.omega_1, m.mass, m.L, m.d2, m.I_cm, model.F0, model.K,
                               model.truncation.N if N is None else N)
@@ -204,8 +210,17 @@ def beam_system(model: BoosterModel, N: int | None = None) -> BeamActionSystem:
 def uniform_beam_system(p: float, K: float, N: int, omega_1: float = 1.0) -> BeamActionSystem:
     """The system of a uniform free-free beam under the steady thrust P l^2 / EI = p.
 
-    As :func:`beam_action_system` with d2 = L, I_cm = M L^2 / 3 and eps = 2 p / lambda_1^4;
-    p, K >= 0, N >= 0 modes, omega_1 (rad/s) normalises time (Beal 1965, eq. 4).
+    As :func:`beam_action_system` with d2 = L, I_cm = M L^2 / 3 and eps = 2 p / lambda_1^4
+    (Beal 1965, eq. 4).
+
+    Parameters
+    ----------
+    p, K : float
+        Steady thrust P l^2 / EI and gimbal gain (dimensionless), >= 0.
+    N : int
+        Elastic modes, >= 0.
+    omega_1 : float
+        First bending frequency (rad/s) normalising time.
     """
     p = nonnegative("p", p)
     K = nonnegative("K", K)
@@ -220,9 +235,20 @@ def follower_flutter_load(n_modes: int = 12, p_max: float = 1000.0,
                           rtol: float = 1e-12) -> float:
     """Flutter load P l^2 / EI of the free-free beam under a steady follower end force.
 
-    The smallest p at which two squared frequencies of the steady system (gamma = 0, K = 0,
-    n_modes = 2..200 elastic modes) coalesce, by bisection to rtol below p_max (ValueError if
-    none); 109.69 in the limit, approached from above (Beal 1965, fig. 2, table 1).
+    Parameters
+    ----------
+    n_modes : int
+        Elastic modes of the Galerkin model, 2..200.
+    p_max : float
+        Upper end of the search, > 0 (ValueError if no flutter below it).
+    rtol : float
+        Relative tolerance of the bisection, > 0.
+
+    Returns
+    -------
+    float
+        The smallest p at which two squared frequencies of the steady system (gamma = 0,
+        K = 0) coalesce; 109.69 in the limit, approached from above (Beal 1965, fig. 2).
     """
     n_modes = count("n_modes", n_modes, 2, 200)
     p_max = positive("p_max", p_max)
@@ -252,10 +278,18 @@ def follower_flutter_load(n_modes: int = 12, p_max: float = 1000.0,
 
 
 def loaded_frequencies(system: BeamActionSystem) -> np.ndarray:
-    """omega_r / omega_1 under the steady thrust (gamma = 0), shape (N + 1,), complex.
+    """omega_r / omega_1 under the steady thrust (gamma = 0), sorted by real part.
 
-    sqrt of the eigenvalues of Lambda + B (principal branch), sorted by real part; complex values
-    mean flutter under the steady thrust (Beal 1965; memo 4.1-11).
+    Parameters
+    ----------
+    system : BeamActionSystem
+        The normalised system.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (N + 1,), complex: sqrt of the eigenvalues of Lambda + B (principal branch);
+        complex values mean flutter under the steady thrust (Beal 1965; memo 4.1-11).
     """
     w = np.sqrt(np.linalg.eigvals(system.A0).astype(complex))
     return w[np.argsort(w.real, kind="stable")]
@@ -271,11 +305,19 @@ def _fold(alpha: np.ndarray) -> np.ndarray:
 
 
 def reduced_exponents(alpha: np.ndarray) -> np.ndarray:
-    """The n canonical representatives of a full set of 2n exponents (..., 2n).
+    """The n canonical representatives of a full set of 2n exponents.
 
-    Each folded to 0 <= Re alpha <= 1/2, Im alpha >= 0 (the set is invariant under -alpha,
-    alpha + 1, conj); the 2n folded values form n pairs, whose means are returned sorted by real
-    part (Magnus & Winkler 1966, ch. 1).
+    Parameters
+    ----------
+    alpha : numpy.ndarray
+        Shape (..., 2n), exponents (dimensionless, as in 4.1-10/11), finite.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (..., n): each exponent folded to 0 <= Re alpha <= 1/2, Im alpha >= 0 (the set is
+        invariant under -alpha, alpha + 1, conj), the means of the n pairs, sorted by real part
+        (Magnus & Winkler 1966, ch. 1).
     """
     alpha = np.asarray(alpha)
     if alpha.ndim == 0 or alpha.shape[-1] == 0 or alpha.shape[-1] % 2:
@@ -292,10 +334,21 @@ def natural_branch(reduced: np.ndarray, Omega_bar: np.ndarray,
                    frequencies: np.ndarray) -> np.ndarray:
     """alpha_r on the branch continuous from gamma = 0: alpha_r Omega_bar -> omega_r / omega_1.
 
-    ``reduced`` (G, n) from :func:`reduced_exponents`, ``Omega_bar`` (G,) > 0, ``frequencies``
-    (n,) from :func:`loaded_frequencies`.  Representatives are assigned to modes greedily by the
-    distance of fold(omega_r / Omega_bar) to Re alpha_j (exact at gamma = 0); mode r gets the
-    member of its representative's orbit nearest omega_r / Omega_bar, Im >= 0.  Shape (G, n).
+    Parameters
+    ----------
+    reduced : numpy.ndarray
+        Shape (G, n), from :func:`reduced_exponents`.
+    Omega_bar : numpy.ndarray
+        Shape (G,), Omega / omega_1, > 0.
+    frequencies : numpy.ndarray
+        Shape (n,), omega_r / omega_1 (:func:`loaded_frequencies`).
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (G, n): representatives assigned to modes greedily by the distance of
+        fold(omega_r / Omega_bar) to Re alpha_j (exact at gamma = 0); mode r gets the member of
+        its representative's orbit nearest omega_r / Omega_bar, Im >= 0 (memo 4.1-10/11).
     """
     reduced = np.asarray(reduced)
     Omega_bar = np.asarray(Omega_bar, dtype=float)
@@ -330,8 +383,14 @@ def natural_branch(reduced: np.ndarray, Omega_bar: np.ndarray,
 # --------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class HillResult:
-    """Hill's exponents of the beam action: ``alpha`` (G, 2n), ``C`` (G, 2n, 2S + 1, n) the unit
-    Fourier vectors C^(s) of (4.1-12), ``centroid`` (G, 2n) sum_s s |C^(s)|^2.
+    """Hill's exponents of the beam action with their Fourier vectors (4.1-10..12).
+
+    Attributes
+    ----------
+    alpha, centroid : numpy.ndarray
+        Shape (G, 2n): the exponents whose vectors are most central, sum_s s |C^(s)|^2.
+    C : numpy.ndarray
+        Shape (G, 2n, 2S + 1, n), unit Fourier vectors C^(s) of (4.1-12), rows q_1..q_N, q_B.
     """
 
     alpha: np.ndarray
@@ -365,8 +424,18 @@ def hill_exponents(system: BeamActionSystem, Omega: np.ndarray, gamma: np.ndarra
     """The 2n exponents alpha with the most central Fourier vectors, by Hill's determinant.
 
     (alpha Omega_bar + s Omega_bar)^2 C^(s) = A0 C^(s) - (gamma / 2) B (C^(s-1) + C^(s+1)),
-    s = -S..S (0 <= S <= 500), at Omega (rad/s, > 0) broadcast against gamma (0 <= gamma < 1);
-    :func:`flexbooster.floquet.hill_modes`.  Memo 4.1-10..12; Bolotin (1964), sec. 7.
+    s = -S..S (:func:`flexbooster.floquet.hill_modes`; memo 4.1-10..12; Bolotin 1964, sec. 7).
+
+    Parameters
+    ----------
+    system : BeamActionSystem
+        The normalised system.
+    Omega, gamma : array_like
+        Thrust frequencies (rad/s, > 0) and amplitudes (0 <= gamma < 1), broadcast together.
+    S : int
+        Harmonics, 0..500.
+    chunk : int
+        Grid points per batched eigen-solve (memory).
     """
     S = count("S", S, 0)
     chunk = count("chunk", chunk, 1, 10**6)
@@ -387,10 +456,19 @@ def _unit_system(system: BeamActionSystem) -> LinearPeriodicSystem:
 # --------------------------------------------------------------------------------------------
 def monodromy_steps(system: BeamActionSystem, Omega: np.ndarray, gamma: np.ndarray,
                     step_phase: float = 0.06, *, max_steps: int | None = None) -> np.ndarray:
-    """Steps per half period of :func:`monodromy_exponents`, shape (G,).
+    """Steps per half period of :func:`monodromy_exponents` (Lawson 1967).
 
-    The coupling-weighted rule of :func:`flexbooster.floquet.step_counts` (error ~ step_phase^4 on
-    alpha), rounded up to 2^(k/4), capped at ``max_steps`` (default: no cap) (Lawson 1967).
+    The coupling-weighted rule of :func:`flexbooster.floquet.step_counts` (error ~ step_phase^4
+    on alpha), rounded up to 2^(k/4).
+
+    Parameters
+    ----------
+    system, Omega, gamma
+        As :func:`hill_exponents`.
+    step_phase : float
+        Accuracy of the rule, > 0.
+    max_steps : int, optional
+        Cap of the counts (default none).
     """
     Ob, gam, _ = _grid(Omega, gamma, system.omega_1)
     return step_counts(_unit_system(system), Ob, step_phase=positive("step_phase", step_phase),
@@ -406,10 +484,8 @@ def monodromy_exponents(system: BeamActionSystem, Omega: np.ndarray, gamma: np.n
 
     Parameters
     ----------
-    system : BeamActionSystem
-        The normalised system.
-    Omega, gamma : array_like
-        Thrust frequencies (rad/s, > 0) and amplitudes (0 <= gamma < 1), broadcast together.
+    system, Omega, gamma
+        As :func:`hill_exponents`.
     n_steps : int, optional
         Steps per half period of every point (default :func:`monodromy_steps`).
     step_phase : float
@@ -469,11 +545,19 @@ BAND_OMEGA_BAR_MIN = 0.25
 
 @dataclass(frozen=True)
 class BeamActionBand:
-    """One instability band of the beam action, Omega in (omega_lo, omega_hi) (rad/s).
+    """One instability band of the beam action in Omega (rad/s), from
+    :func:`beam_action_bands` or :func:`pitch_tongue_bands`.
 
-    growth_rate_max (1/s) at omega_at_max; kind, modes, order and omega_center as
-    :class:`flexbooster.floquet.InstabilityRegion` (rad/s); clipped: an edge is an end of the
-    range; critical_gamma: the smallest gamma at which it exists (0 without damping).
+    Attributes
+    ----------
+    omega_lo, omega_hi, omega_at_max, omega_center : float
+        Edges, where the growth is largest and the resonance centre (rad/s).
+    growth_rate_max : float
+        Largest growth rate inside (1/s).
+    kind, modes, order, clipped
+        As :class:`flexbooster.floquet.InstabilityRegion` (rigid pitch 0 for a small thrust).
+    critical_gamma : float
+        Smallest gamma at which the band exists; 0 without damping.
     """
 
     omega_lo: float
@@ -512,9 +596,20 @@ def modal_damping(system: BeamActionSystem, *, beam_ratio: float = 0.0,
                   pitch_ratio: float = 0.0) -> np.ndarray | None:
     """Damping matrix C of q'' + C q' + [Lambda + f(tau) B] q = 0, modal in the steady system.
 
-    None when both ratios (0 <= zeta < 1) are 0; else C = V diag(2 zeta_k omega_k) V^-1 with
-    A0 = V diag(omega_k^2) V^-1 (units of omega_1): the mode with the largest relative q_B
-    component gets ``pitch_ratio``, the others ``beam_ratio`` (Bolotin 1964, sec. 6).
+    Parameters
+    ----------
+    system : BeamActionSystem
+        The normalised system.
+    beam_ratio, pitch_ratio : float
+        Damping ratios of the elastic modes and of the rigid-pitch mode (the one with the
+        largest relative q_B component), 0 <= zeta < 1.
+
+    Returns
+    -------
+    numpy.ndarray or None
+        None when both are 0; else C = V diag(2 zeta_k omega_k) V^-1 with A0 = V diag(omega_k^2)
+        V^-1 (units of omega_1): each steady mode decays like exp(-zeta_k omega_k tau) and keeps
+        its shape (Bolotin 1964, sec. 6).
     """
     zb = nonnegative("beam_ratio", beam_ratio)
     zp = nonnegative("pitch_ratio", pitch_ratio)
@@ -538,13 +633,31 @@ def beam_action_bands(system: BeamActionSystem, gamma: float, *, omega_min: floa
                       step_phase: float = 0.12) -> tuple[BeamActionBand, ...]:
     """Every instability band of the beam action in [omega_min, omega_max] (rad/s).
 
-    :func:`flexbooster.floquet.instability_regions` of q'' + C q' + [A0 - gamma cos(Omega_bar tau)
-    B] q = 0 (M = I, C of :func:`modal_damping`, Omega in units of omega_1), converted to rad/s
-    and 1/s; with damping each band carries its critical gamma
-    (:func:`flexbooster.floquet.critical_amplitude`).  ``rtol`` is the edge tolerance relative to
-    the centre, ``max_order`` the highest resonance order (None: the width estimate decides),
-    ``step_phase`` the monodromy accuracy.  Sorted by omega_lo.  Bolotin (1964), ch. 1-2, sec. 6;
-    Hsu (1963).
+    :func:`flexbooster.floquet.instability_regions` of q'' + C q' + [A0 - gamma cos(Omega_bar
+    tau) B] q = 0 (M = I, Omega in units of omega_1), converted to rad/s and 1/s; with damping
+    each band carries its critical gamma (:func:`flexbooster.floquet.critical_amplitude`).
+
+    Parameters
+    ----------
+    system : BeamActionSystem
+        The normalised system.
+    gamma : float
+        Pulsation amplitude, 0 <= gamma < 1.
+    omega_min, omega_max : float
+        Omega range (rad/s), 0 < omega_min < omega_max.
+    beam_ratio, pitch_ratio : float
+        Modal damping ratios (:func:`modal_damping`).
+    rtol : float
+        Edge tolerance relative to each band's centre.
+    max_order : int or None
+        Largest resonance order j (None: the toolkit's width estimate decides).
+    step_phase : float
+        Monodromy accuracy.
+
+    Returns
+    -------
+    tuple of BeamActionBand
+        Sorted by omega_lo (Bolotin 1964, ch. 1-2, sec. 6; Hsu 1963).
     """
     gamma = nonnegative("gamma", gamma)
     if gamma >= 1.0:
@@ -583,14 +696,31 @@ def beam_action_bands(system: BeamActionSystem, gamma: float, *, omega_min: floa
 class BeamActionResult:
     """Beam-action exponents along the Omega grid and the bands (memo 4.1-10/11).
 
-    Grid (G points): ``Omega`` (rad/s), ``Omega_bar``, ``alpha`` (G, R) on the natural branch,
-    ``stable`` (all |Im alpha| <= 1e-6), ``growth_rate`` (max |Im alpha| Omega, 1/s; 0 where
-    stable), all of the undamped system; ``frequencies`` (R,) steady omega_r / omega_1.
-    ``max_growth_rate`` (1/s) at ``Omega_at_max`` (rad/s): the largest of the bands' maxima and
-    the grid's.  ``hill_monodromy_difference``: the Hill check.  ``bands`` from their boundaries
-    over ``band_range`` (rad/s) and the pitch tongues below it, with the damping ratios;
-    ``gaps``: what a limit of the search left out; ``verdict``: "unstable" with a band, else
-    "stable" or "not fully searched: ...".  Inputs gamma, K, N, S, R; p = P l^2 / EI.
+    Attributes
+    ----------
+    Omega, Omega_bar : numpy.ndarray
+        Shape (G,), the grid (rad/s) and Omega / omega_1.
+    alpha : numpy.ndarray
+        Shape (G, R), alpha_r on the natural branch (Im >= 0; conj is an exponent too).
+    frequencies : numpy.ndarray
+        Shape (R,), steady omega_r / omega_1 (complex in general).
+    stable, growth_rate : numpy.ndarray
+        Shape (G,): every |Im alpha| <= 1e-6, and max |Im alpha| Omega (1/s; 0 where stable), of
+        the undamped system.
+    max_growth_rate, Omega_at_max : float
+        The largest of the bands' maxima and the grid's (1/s) and where (rad/s); 0 when stable.
+    hill_monodromy_difference : float
+        Largest difference of Hill's and the monodromy's representatives at the check points.
+    verdict : str
+        "unstable" with a band, else "stable", or "not fully searched: ..." with a gap.
+    gamma, K, N, S, R, p : float, float, int, int, int, float
+        Inputs; p = P l^2 / EI.
+    bands, gaps : tuple
+        The bands from their boundaries (:func:`pipeline_bands`); what a limit left out.
+    beam_damping_ratio, pitch_damping_ratio : float
+        Damping ratios of the band search.
+    band_range : (float, float)
+        Omega range of the band search (rad/s); below it the pitch tongues.
     """
 
     Omega: np.ndarray
@@ -675,24 +805,41 @@ def tongue_hill_harmonics(r: int) -> int:
     """Hill harmonics S of the growth rate inside pitch tongue r: max(4, 2 r - 4).
 
     Tongue r arises at order r in gamma and Hill's truncated determinant resolves it only with
-    enough harmonics (else the growth rate is round-off): against the rigid-pitch Mathieu
-    tongues, r = 1..4 converge at S = 4, r = 5..9 first at S = 6, 6, 10, 8, 12; the value at the
-    maximum is taken at S + 4.
+    enough harmonics: against the rigid-pitch Mathieu tongues, r = 1..4 converge at S = 4,
+    r = 5..9 first at S = 6, 6, 10, 8, 12; the value at the maximum is taken at S + 4.
+
+    Parameters
+    ----------
+    r : int
+        Tongue order, >= 1.
     """
     return max(TONGUE_HILL_HARMONICS, 2 * r - 4)
 
 
 def pitch_mode(system: BeamActionSystem) -> int:
-    """Index (ascending frequency) of the steady mode with the largest rigid-rotation share."""
+    """Index (ascending frequency) of the steady mode with the largest rigid-rotation share.
+
+    Parameters
+    ----------
+    system : BeamActionSystem
+        The normalised system.
+    """
     mu, V = np.linalg.eig(system.A0)
     w = np.sqrt(mu.astype(complex))
     return int(np.flatnonzero(np.argsort(w.real, kind="stable") == _pitch_column(V))[0])
 
 
 def pitch_guide(system: BeamActionSystem, C: np.ndarray | None) -> tuple[float, float, float]:
-    """(mu_p, b_p, c_p) of the pitch mode alone in the steady modal frame (units of omega_1):
-    eta'' + c_p eta' + (mu_p - b_p f(tau)) eta = 0, a damped Mathieu equation (C from
-    :func:`modal_damping`, or None).
+    """(mu_p, b_p, c_p) of the pitch mode alone in the steady modal frame (units of omega_1).
+
+    eta'' + c_p eta' + (mu_p - b_p f(tau)) eta = 0, a damped Mathieu equation.
+
+    Parameters
+    ----------
+    system : BeamActionSystem
+        The normalised system.
+    C : numpy.ndarray or None
+        The damping matrix (:func:`modal_damping`).
     """
     mu, V = np.linalg.eig(system.A0)
     ip = _pitch_column(V)
@@ -816,16 +963,28 @@ def _growth_max(A, C, B, lo: float, hi: float, S: int = TONGUE_HILL_HARMONICS
 def pitch_tongue_bands(system: BeamActionSystem, gamma: float, *, omega_min: float,
                        omega_max: float, beam_ratio: float = 0.0, pitch_ratio: float = 0.0,
                        rtol: float = BAND_RTOL) -> tuple[BeamActionBand, ...]:
-    """The rigid-pitch tongues of the coupled beam action in a low Omega range (rad/s).
+    """The rigid-pitch tongues of the coupled beam action in a low Omega range.
 
     Below omega_1 / 4 (:data:`BAND_OMEGA_BAR_MIN`) the only bands wider than round-off are the
-    tongues of the pitch mode near 2 omega_p / r (an elastic resonance there has order j >= 8).
-    Their edges carry T- (r even) or 2T-periodic (r odd) solutions, by harmonic balance
-    (:func:`flexbooster.floquet.periodic_boundaries`, harmonics raised until the edges
-    converge); the growth rate is Hill's, maximised by golden section; with damping the critical
-    gamma is a bisection on the tongue's existence.  Tongues whose tip lies in
-    [omega_min, omega_max] are returned, clipped to it: kind "simple", modes (p,), order r,
-    sorted by omega_lo.  Bolotin (1964), ch. 1 sec. 3-5, ch. 2 sec. 8; Tech Memo 104, (4.1-11).
+    tongues of the pitch mode near 2 omega_p / r.  Their edges carry T- (r even) or 2T-periodic
+    (r odd) solutions, by harmonic balance (:func:`flexbooster.floquet.periodic_boundaries`,
+    harmonics raised until the edges converge); the growth rate is Hill's, maximised by golden
+    section; with damping the critical gamma is a bisection on the tongue's existence (Bolotin
+    1964, ch. 1 sec. 3-5, ch. 2 sec. 8).
+
+    Parameters
+    ----------
+    system, gamma, beam_ratio, pitch_ratio
+        As :func:`beam_action_bands`.
+    omega_min, omega_max : float
+        The low range (rad/s): tongues whose tip lies in it, clipped to it.
+    rtol : float
+        Edge tolerance relative to the tip.
+
+    Returns
+    -------
+    tuple of BeamActionBand
+        Kind "simple", modes (p,), order r, sorted by omega_lo.
     """
     gamma, lo, hi = _tongue_arguments(gamma, omega_min, omega_max)
     rtol = positive("rtol", rtol)
@@ -951,10 +1110,18 @@ def _band_search(model: BoosterModel, system: BeamActionSystem
 
 
 def pipeline_bands(model: BoosterModel) -> tuple[BeamActionBand, ...]:
-    """The instability bands of :func:`beam_action_analysis`, sorted by omega_lo.
+    """The instability bands of :func:`beam_action_analysis`.
 
-    :func:`beam_action_bands` over [max(Omega[0], omega_1 / 4), Omega[-1]] and below omega_1 / 4
-    the rigid-pitch tongues (:func:`pitch_tongue_bands`), with the model's damping ratios.
+    Parameters
+    ----------
+    model : BoosterModel
+        The derived model (Omega range, gamma, damping ratios, beam-action system).
+
+    Returns
+    -------
+    tuple of BeamActionBand
+        :func:`beam_action_bands` over [max(Omega[0], omega_1 / 4), Omega[-1]] and the
+        rigid-pitch tongues below (:func:`pitch_tongue_bands`), sorted by omega_lo.
     """
     return _band_search(model, beam_system(model))[0]
 
@@ -1023,7 +1190,17 @@ def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3) -> BeamActionR
 
 @dataclass(frozen=True)
 class StabilityChart:
-    """Stability flags (|Im alpha| <= 1e-6) and growth rates (1/s) on an (Omega, gamma) grid."""
+    """Stability of the beam-action system on an (Omega, gamma) grid.
+
+    Attributes
+    ----------
+    Omega, gamma : numpy.ndarray
+        Shapes (m,) (rad/s) and (k,).
+    stable, growth_rate : numpy.ndarray
+        Shape (k, m): every |Im alpha| <= 1e-6, and max |Im alpha| Omega (1/s).
+    omega_1 : float
+        Normalising frequency (rad/s).
+    """
 
     Omega: np.ndarray
     gamma: np.ndarray
@@ -1047,10 +1224,24 @@ def stability_chart(system: BeamActionSystem, Omega: np.ndarray, gamma: np.ndarr
                     collision_distance: float = 1e-3) -> StabilityChart:
     """Stability of the beam-action system on an (Omega, gamma) grid (a chart, not a verdict).
 
-    Every point first with ``coarse_step_phase``; points that are unstable or whose multipliers
-    come closer than ``collision_distance`` (where a region can open) again with
-    ``step_phase`` (0.25 keeps alpha to ~5e-7 at p = 20, gamma = 0.6).  Omega (m,) in rad/s,
-    gamma (k,); gamma along axis 0 of the result (Bolotin 1964, ch. 3).
+    Parameters
+    ----------
+    system : BeamActionSystem
+        The normalised system.
+    Omega, gamma : array_like
+        Shapes (m,) (rad/s, > 0) and (k,) (0 <= gamma < 1).
+    step_phase : float
+        Monodromy accuracy of the points refined (0.25: alpha to ~5e-7 at p = 20, gamma = 0.6).
+    coarse_step_phase : float
+        Accuracy of the first pass over every point (>= step_phase).
+    collision_distance : float
+        Points whose multipliers come closer than this (where a region can open), or unstable,
+        are refined.
+
+    Returns
+    -------
+    StabilityChart
+        gamma along axis 0 (Bolotin 1964, ch. 3).
     """
     Omega = np.asarray(Omega, dtype=float).ravel()
     gamma = np.asarray(gamma, dtype=float).ravel()

@@ -91,9 +91,14 @@ def _arrays(obj: Any) -> dict[str, Any]:
 
 @dataclass(frozen=True)
 class InceStruttData:
-    """The Ince-Strutt chart (memo 4.2): ``curves`` "a0".."a{r}", "b1".."b{r}" on the grid ``q``
-    (tongue r between b_r and a_r, a < a_0 unstable) and the operating path (``a_path``,
-    ``q_path`` = |q|) of eq. (4.2-4) with ``path_stable`` (beta real); dimensionless.
+    """The Ince-Strutt chart: transition curves and the operating path (memo 4.2).
+
+    Attributes
+    ----------
+    q, curves : numpy.ndarray, dict
+        The q grid and "a0".."a{r}", "b1".."b{r}" on it (tongue r between b_r and a_r).
+    a_path, q_path, path_stable : numpy.ndarray
+        The path (a, |q|) of eq. (4.2-4) and beta real on it.
     """
 
     q: np.ndarray
@@ -109,8 +114,21 @@ class InceStruttData:
 
 def ince_strutt_data(pitch: PitchResult, *, n_q: int = INCE_STRUTT_Q_POINTS,
                      r_max: int = INCE_STRUTT_ORDERS) -> InceStruttData:
-    """Transition curves (n_q points, orders 1..r_max) on q in [0, max(0.1, 1.3 max |q|)] and the
-    operating path of the pitch result (A&S 20.2; memo eqs. 4.2-3..4.2-5).
+    """Transition curves over the q range of the operating path, and the path itself.
+
+    Parameters
+    ----------
+    pitch : PitchResult
+        The rigid-body pitch (a, q along the grid).
+    n_q : int
+        q points, on [0, max(0.1, 1.3 max |q|)], 2..100000.
+    r_max : int
+        Highest order, 1..50.
+
+    Returns
+    -------
+    InceStruttData
+        A&S 20.2; memo eqs. (4.2-3)..(4.2-5).
     """
     n_q = count("n_q", n_q, 2, 100_000)
     r_max = count("r_max", r_max, 1, 50)
@@ -123,9 +141,16 @@ def ince_strutt_data(pitch: PitchResult, *, n_q: int = INCE_STRUTT_Q_POINTS,
 
 @dataclass(frozen=True)
 class CampbellData:
-    """The Campbell diagram (memo 7.3): excitation ``curves`` (C, n) over ``Omega_bar`` (n,) with
-    their ``family`` (memo 7.4) and harmonic ``s``, the shell frequencies and the table's roots
-    with ``root_active`` (all in units of ``omega_1``, rad/s).
+    """The Campbell diagram: excitation curves (memo 7.3), shell frequencies and the roots.
+
+    Attributes
+    ----------
+    Omega_bar, curves, family, s : numpy.ndarray
+        Omega / omega_1 (n,), the drawn curves (C, n), their family (memo 7.4) and harmonic.
+    shell_omega_bar, root_Omega_bar, root_shell_omega_bar, root_active : numpy.ndarray
+        Shell frequencies, the roots of the stability table, active forcing at each root.
+    omega_1 : float
+        Reference frequency (rad/s); frequencies are in its units.
     """
 
     Omega_bar: np.ndarray
@@ -150,9 +175,29 @@ _CAMPBELL_FAMILIES = (7, 12, 8, 9, 10, 11, 13, 3)
 def campbell_data(*, params: Any, omega_range: tuple[float, float], omega_1: float,
                   shell: ShellFrequencies, table: StabilityTable, R: int, S: int,
                   n_points: int = CAMPBELL_POINTS, s_max: int = CAMPBELL_S_MAX) -> CampbellData:
-    """Excitation curves on a logarithmic Omega grid (n_points over ``omega_range``, rad/s),
-    harmonics |s| <= s_max, with the shell frequencies and roots; ``params(Omega_bar) -> (beta,
-    alpha)`` is the pipeline's parameter function; R, S the case's (memo 7.3-1..7.3-35).
+    """Excitation curves on a logarithmic Omega grid, with the shell frequencies and roots.
+
+    Parameters
+    ----------
+    params : callable
+        ``params(Omega_bar) -> (beta, alpha)``, the pipeline's parameter function.
+    omega_range : (float, float)
+        Omega range (rad/s).
+    omega_1 : float
+        Reference frequency (rad/s).
+    shell, table : ShellFrequencies, StabilityTable
+        The shell frequencies and the roots.
+    R, S : int
+        Beam exponents and harmonics of the case.
+    n_points : int
+        Omega points, 2..100000.
+    s_max : int
+        Harmonics |s| <= s_max of the (alpha_r + s) curves drawn.
+
+    Returns
+    -------
+    CampbellData
+        Memo eqs. (7.3-1)..(7.3-35).
     """
     n_points = count("n_points", n_points, 2, 100_000)
     s_max = count("s_max", s_max, 0, None)
@@ -170,8 +215,14 @@ def campbell_data(*, params: Any, omega_range: tuple[float, float], omega_1: flo
 
 @dataclass(frozen=True)
 class RegionCurves:
-    """The edges ``omega_lo``, ``omega_hi`` (rad/s) of one region ("tongue r" or "kind modes j")
-    at the amplitudes ``gamma``, ascending from the tip (its critical gamma).
+    """The boundary curves of one instability region in the (Omega, gamma) plane.
+
+    Attributes
+    ----------
+    label : str
+        "tongue r" (pitch) or "kind modes j" (beam action).
+    gamma, omega_lo, omega_hi : numpy.ndarray
+        Amplitudes ascending from the tip (the critical gamma) and the edges (rad/s).
     """
 
     label: str
@@ -186,8 +237,17 @@ class RegionCurves:
 
 @dataclass(frozen=True)
 class BandChart:
-    """Instability regions traced from their boundaries in (Omega, gamma), Omega in rad/s, with the
-    case's gamma and Omega range and the chart's top ``gamma_max``.
+    """Instability regions traced from their boundaries, in physical Omega (rad/s), drawn as
+    shaded regions against the case's gamma.
+
+    Attributes
+    ----------
+    title : str
+        What is charted.
+    regions : tuple of RegionCurves
+        The traced regions.
+    gamma_operating, omega_min, omega_max, gamma_max : float
+        The case's gamma and Omega range (rad/s), the top of the chart.
     """
 
     title: str
@@ -207,10 +267,22 @@ class BandChart:
 
 def pitch_band_chart(model: Any, *, n_gamma: int = PITCH_BAND_CHART_LEVELS,
                      gamma_max: float = BAND_CHART_GAMMA_MAX) -> BandChart:
-    """The pitch tongues in the (Omega, gamma) plane at n_gamma (2..1000) levels in [0, gamma_max]
-    (gamma_max < 1): one region per tongue reaching the Omega range at gamma_max, with the edges
-    of :func:`flexbooster.memo.pitch.pitch_band_edges` where the band exists (memo 4.2-3, 4.2-4;
-    A&S 20.2; Bolotin 1964 sec. 6).
+    """The pitch tongues in the (Omega, gamma) plane, from the transition curves.
+
+    Parameters
+    ----------
+    model : BoosterModel
+        The derived model (omega_psi, gamma, Omega range, pitch damping ratio).
+    n_gamma : int
+        gamma levels, uniform on [0, gamma_max], 2..1000.
+    gamma_max : float
+        Largest gamma, 0 < gamma_max < 1.
+
+    Returns
+    -------
+    BandChart
+        One region per tongue reaching the range at gamma_max, with the edges of
+        :func:`flexbooster.memo.pitch.pitch_band_edges` where the band exists.
     """
     n_gamma = count("n_gamma", n_gamma, 2, 1000)
     gamma_max = positive("gamma_max", gamma_max)
@@ -247,11 +319,24 @@ def beam_action_chart(model: Any, *, n_gamma: int = BEAM_ACTION_CHART_LEVELS,
                       rtol: float = BEAM_ACTION_CHART_RTOL,
                       max_order: int | None = BEAM_ACTION_CHART_MAX_ORDER,
                       step_phase: float = BEAM_ACTION_CHART_STEP_PHASE) -> BandChart:
-    """The beam-action regions in the (Omega, gamma) plane from their boundaries.
+    """The beam-action instability regions in the (Omega, gamma) plane, from their boundaries.
 
-    :func:`flexbooster.floquet.region_boundaries` at n_gamma levels up to gamma_max < 1, with the
-    chart's rtol, max_order and step_phase, above max(omega_min, omega_1 / 4) like the pipeline's
-    bands; edges in rad/s (Bolotin 1964, ch. 1, sec. 6).
+    Parameters
+    ----------
+    model : BoosterModel
+        The derived model (Omega range, beam-action system, damping ratios).
+    n_gamma : int
+        Amplitude levels of :func:`flexbooster.floquet.region_boundaries`, 2..1000.
+    gamma_max : float
+        Largest gamma, 0 < gamma_max < 1.
+    rtol, max_order, step_phase
+        Edge tolerance (narrower regions not drawn), highest order, monodromy accuracy.
+
+    Returns
+    -------
+    BandChart
+        The regions at gamma_max above max(omega_min, omega_1 / 4), as the pipeline's bands,
+        edges in rad/s (Bolotin 1964, ch. 1, sec. 6).
     """
     n_gamma = count("n_gamma", n_gamma, 2, 1000)
     gamma_max = positive("gamma_max", gamma_max)
@@ -282,8 +367,14 @@ def beam_action_chart(model: Any, *, n_gamma: int = BEAM_ACTION_CHART_LEVELS,
 
 @dataclass(frozen=True)
 class BeamModeShapes:
-    """Free-free beam mode shapes ``phi`` (N, n) on ``zeta`` in [0, 2] (0 at the aft edge), their
-    eigenvalues ``lambda_n``, and zeta of the junction (C-8) and of the CM.
+    """Free-free beam mode shapes phi_n(zeta) (appendix C).
+
+    Attributes
+    ----------
+    zeta, phi, lambda_n : numpy.ndarray
+        Coordinate (n,), 0 at the aft edge, 2 at the nose; shapes (N, n); eigenvalues (N,).
+    zeta_junction, zeta_cm : float
+        zeta of the junction (C-8) and of the CM.
     """
 
     zeta: np.ndarray
@@ -299,8 +390,16 @@ class BeamModeShapes:
 
 def beam_mode_shapes(mass: MassProperties, *, N: int = MODE_SHAPE_COUNT,
                      n_points: int = MODE_SHAPE_POINTS) -> BeamModeShapes:
-    """phi_n(zeta), n = 1..N (1..500), at n_points, with the junction and the CM (memo eqs. 4.1-2,
-    C-1, C-6..C-9).
+    """phi_n(zeta), n = 1..N, with the junction and the CM (memo 4.1-2, C-1, C-6..C-9).
+
+    Parameters
+    ----------
+    mass : MassProperties
+        Mass properties (L, d1, d4 in m).
+    N : int
+        Modes, 1..500.
+    n_points : int
+        Points per mode, 2..100000.
     """
     N = count("N", N, 1, 500)
     n_points = count("n_points", n_points, 2, 100_000)
@@ -313,9 +412,18 @@ def beam_mode_shapes(mass: MassProperties, *, N: int = MODE_SHAPE_COUNT,
 
 
 def nodal_lines(j: int, k: int) -> tuple[np.ndarray, np.ndarray]:
-    """Nodal lines of sin(j pi s / 2) cos(k theta) (memo 5.3-2d, 5.3-3d): the circles s = 2 i / j
-    (i = 0..j, s in [0, 2] from the aft edge) and the generators theta = (2 i + 1) pi / (2 k)
-    (rad; none for k = 0); j >= 1, k >= 0.
+    """Nodal lines of the radial shape sin(j pi s / 2) cos(k theta) (memo 5.3-2d, 5.3-3d).
+
+    Parameters
+    ----------
+    j, k : int
+        Axial (>= 1) and circumferential (>= 0) indices.
+
+    Returns
+    -------
+    s, theta : numpy.ndarray
+        Nodal circles s = 2 i / j, i = 0..j (s in [0, 2] from the aft edge) and generators
+        theta = (2 i + 1) pi / (2 k) (rad; none for k = 0).
     """
     j = count("j", j, 1, None)
     k = count("k", k, 0, None)
@@ -326,9 +434,16 @@ def nodal_lines(j: int, k: int) -> tuple[np.ndarray, np.ndarray]:
 
 @dataclass(frozen=True)
 class NodalPattern:
-    """The nodal pattern of shell mode (cylinder, j, k) on its unrolled cylinder (memo Fig. 4):
-    radius and half-length (m), nodal circles and generators, the sign of w per cell and the
-    mode's lowest frequency (Hz, 0 if not in the table).
+    """The nodal pattern of one shell mode on its unrolled cylinder (memo Fig. 4).
+
+    Attributes
+    ----------
+    cylinder, j, k : int
+        The mode.
+    radius, half_length, hz : float
+        R_d, L_d (m) and the mode's lowest frequency (Hz; 0 if not in the table).
+    s_nodes, theta_nodes, sign : numpy.ndarray
+        Nodal circles (s in [0, 2]), generators (rad), the sign of w in each cell.
     """
 
     cylinder: int
@@ -348,8 +463,18 @@ class NodalPattern:
 
 def nodal_pattern_data(shell: ShellFrequencies, *, cylinder: int, j: int | None = None,
                        k: int | None = None, radius: float, half_length: float) -> NodalPattern:
-    """The nodal pattern of mode (j, k) of cylinder 1 or 2 (default its lowest mode with j, k >=
-    1), radius and half_length > 0 (m) (memo 5.3-2d, 5.3-3d, Fig. 4).
+    """The nodal pattern of mode (j, k) of a cylinder (memo 5.3-2d, 5.3-3d, Fig. 4).
+
+    Parameters
+    ----------
+    shell : ShellFrequencies
+        The frequency table.
+    cylinder : int
+        1 or 2.
+    j, k : int, optional
+        The mode (default its lowest mode with j, k >= 1).
+    radius, half_length : float
+        R_d, L_d (m), > 0.
     """
     d = count("cylinder", cylinder, 1, 2)
     radius = positive("radius", radius)
@@ -376,8 +501,14 @@ def nodal_pattern_data(shell: ShellFrequencies, *, cylinder: int, j: int | None 
 
 @dataclass(frozen=True)
 class FigureData:
-    """Everything the figures draw (results.json ``figures``); the beam-action chart, the
-    Campbell diagram and the pitch band chart are None when their stage did not run.
+    """Everything the figures draw (results.json ``figures``).
+
+    Attributes
+    ----------
+    ince_strutt, beam_modes, nodal_patterns
+        The Ince-Strutt chart, the beam mode shapes, one nodal pattern per cylinder.
+    beam_action_chart, campbell, pitch_band_chart : optional
+        None when their stage did not run.
     """
 
     ince_strutt: InceStruttData

@@ -41,8 +41,20 @@ __all__ = ["pitch_frequency", "mathieu_parameters", "memo_exponent", "psi_three_
 def pitch_frequency(F0: float, d2: float, K: float, I_cm: float) -> float:
     """Rigid-body pitch frequency omega_psi = sqrt(F0 d2 K / I_cm) (rad/s), steady thrust.
 
-    F0 = 2 pi R1 T0 (N) and K (gimbal gain) >= 0, d2 (m, CM to the aft edge, erratum E2) and
-    I_cm (kg m^2) > 0; zero when K = 0 (memo eq. 4.2-1 linearised).
+    Parameters
+    ----------
+    F0 : float
+        Total steady thrust 2 pi R1 T0 (N), >= 0.
+    d2 : float
+        Lever arm, CM to the aft edge (m), > 0 (erratum E2).
+    K : float
+        Gimbal gain (dimensionless), >= 0; omega_psi = 0 when K = 0.
+    I_cm : float
+        Pitch moment of inertia about the CM (kg m^2), > 0.
+
+    References
+    ----------
+    Tech Memo 104, eq. (4.2-1) linearised, with erratum E2.
     """
     F0, K = nonnegative("F0", F0), nonnegative("K", K)
     d2, I_cm = positive("d2", d2), positive("I_cm", I_cm)
@@ -52,9 +64,14 @@ def pitch_frequency(F0: float, d2: float, K: float, I_cm: float) -> float:
 def mathieu_parameters(
     Omega: np.ndarray, omega_psi: float, gamma: float
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Mathieu parameters a = 4 omega_psi^2 / Omega^2 and q = gamma a / 2 (eq. 4.2-4, erratum E2).
+    """Mathieu parameters a = 4 omega_psi^2 / Omega^2 and q = gamma a / 2 (eq. 4.2-4, E2).
 
-    Omega (rad/s) > 0, omega_psi (rad/s) and gamma >= 0; a, q are shaped like ``Omega``.
+    Parameters
+    ----------
+    Omega : array_like
+        Thrust frequencies (rad/s), > 0; a, q are shaped like it.
+    omega_psi, gamma : float
+        Pitch frequency (rad/s) and pulsation amplitude, >= 0.
     """
     Omega = np.asarray(Omega, dtype=float)
     if Omega.size == 0 or not np.all(np.isfinite(Omega)) or np.any(Omega <= 0):
@@ -71,10 +88,20 @@ def mathieu_parameters(
 def memo_exponent(a: Any, q: Any, *, printed: bool = False) -> np.ndarray:
     """beta from the memo's small-q formula (4.2-9), corrected per erratum E4.
 
-    cos(pi beta) = cos(pi sqrt a) + pi q^2 / (4 sqrt(a) (a - 1)) sin(pi sqrt a) for a > 0,
-    a != 1 (memo range 0 < a < 1, 0 < q <= 0.05, eq. 4.2-5); ``printed``: with sin(pi sqrt(a) / 2)
-    as printed (an O(q^2) error).  beta on the q -> 0 band r = floor(sqrt a), complex
-    (Abramowitz & Stegun 20.3.15).
+    cos(pi beta) = cos(pi sqrt a) + pi q^2 / (4 sqrt(a) (a - 1)) sin(pi sqrt a), valid for small q
+    away from a = 1 (memo range 0 < a < 1, 0 < q <= 0.05, eq. 4.2-5; A&S 20.3.15).
+
+    Parameters
+    ----------
+    a, q : array_like
+        Mathieu parameters, broadcast together; every a > 0, a != 1.
+    printed : bool
+        The formula as printed, with sin(pi sqrt(a) / 2) (an O(q^2) error).
+
+    Returns
+    -------
+    numpy.ndarray of complex
+        beta on the q -> 0 band r = floor(sqrt a).
     """
     a, q = np.broadcast_arrays(np.asarray(a, dtype=float), np.asarray(q, dtype=float))
     if not (np.all(np.isfinite(a)) and np.all(np.isfinite(q))):
@@ -110,11 +137,24 @@ def _scalar_aq(a: Any, q: Any) -> tuple[float, float]:
 def psi_three_term(
     tau1: Any, a: float, q: float, psi0: float = 1.0, beta: float | None = None
 ) -> np.ndarray:
-    """The memo's three-term solution psi = sum_(i=1..3) A_i cos(Omega_i tau) (4.2-6..8), rad.
+    """The memo's three-term solution psi = sum_(i=1..3) A_i cos(Omega_i tau) (4.2-6..8).
 
-    At Mathieu times tau1 = Omega t / 2 (Omega_i tau = (2 - beta) tau1, beta tau1,
-    (2 + beta) tau1, 4.2-7e..g), psi(0) = psi0, psi'(0) = 0, with the exact real beta unless one
-    is given (a, q in a stable band).
+    Parameters
+    ----------
+    tau1 : array_like
+        Mathieu time tau_1 = Omega t / 2; Omega_i tau = (2 - beta) tau_1, beta tau_1,
+        (2 + beta) tau_1 (4.2-7e..g).
+    a, q : float
+        Mathieu parameters in a stable band.
+    psi0 : float
+        psi(0) (rad); psi'(0) = 0 (4.2-8a).
+    beta : float, optional
+        The real exponent to use (default the exact one).
+
+    Returns
+    -------
+    numpy.ndarray
+        psi (rad), shaped like ``tau1``.
     """
     a, q = _scalar_aq(a, q)
     if beta is None:
@@ -143,10 +183,21 @@ def psi_three_term(
 
 
 def psi_numerical(tau1: Any, a: Any, q: Any, psi0: float = 1.0) -> np.ndarray:
-    """psi(tau1) of eq. (4.2-3) by direct integration (solve_ivp DOP853, rtol 1e-12), rad.
+    """psi(tau_1) of eq. (4.2-3) by direct integration (solve_ivp DOP853, rtol 1e-12).
 
-    psi(0) = psi0, psi'(0) = 0 at increasing times tau1 >= 0; a, q scalars or equal-length 1-D
-    arrays (one solution per pair): shape (len(a), len(tau1)), or (len(tau1),) for scalars.
+    Parameters
+    ----------
+    tau1 : array_like
+        Increasing times tau_1 >= 0, 1-D.
+    a, q : array_like
+        Scalars or equal-length 1-D arrays: one solution per pair, integrated together.
+    psi0 : float
+        psi(0) (rad), non-zero; psi'(0) = 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        psi (rad), shape (len(a), len(tau1)), or (len(tau1),) for scalars.
     """
     scalar = np.ndim(a) == 0 and np.ndim(q) == 0
     if not (np.all(np.isfinite(np.asarray(a, dtype=float)))
@@ -189,8 +240,24 @@ def psi_numerical(tau1: Any, a: Any, q: Any, psi0: float = 1.0) -> np.ndarray:
 def three_term_error(
     a: float, q: Any, tau1_max: float = 20.0 * np.pi, n_times: int = 2001
 ) -> np.ndarray:
-    """max over tau1 in [0, tau1_max] of |psi_3 - psi| / |psi0| per q: the truncation error of
-    (4.2-6) with the exact beta, O(q^2) (0 < a < 1, every (a, q) stable).
+    """Error of the memo's three-term psi against direct integration, per q.
+
+    Parameters
+    ----------
+    a : float
+        0 < a < 1 (memo range).
+    q : array_like
+        1-D, each (a, q) stable.
+    tau1_max : float
+        Length of the comparison in tau_1, > 0.
+    n_times : int
+        Comparison times.
+
+    Returns
+    -------
+    numpy.ndarray
+        max |psi_3 - psi| / |psi0| over [0, tau1_max] with the exact beta: the O(q^2)
+        truncation error of (4.2-6).
     """
     q = np.atleast_1d(np.asarray(q, dtype=float))
     if not (np.isfinite(tau1_max) and tau1_max > 0):
@@ -225,11 +292,21 @@ def _check(omega_psi: float, gamma: float, damping_ratio: float) -> float:
 
 @dataclass(frozen=True)
 class PitchBand:
-    """One instability band of the rigid-body pitch: Mathieu tongue r in Omega (rad/s).
+    """One instability band of the rigid-body pitch: Mathieu tongue r in Omega (memo 4.2),
+    from :func:`pitch_bands`.
 
-    Edges omega_lo, omega_hi: the operating path (4.2-4) on a_r(q), b_r(q), or with damping where
-    the growth rate is zero; growth_rate_max (1/s) at omega_at_max; tongue r (Omega ~
-    2 omega_psi / r); critical_gamma (0 without damping); clipped: an edge is an end of the range.
+    Attributes
+    ----------
+    omega_lo, omega_hi : float
+        Edges (rad/s): the path (4.2-4) on a_r(q) and b_r(q), or with damping zero growth.
+    growth_rate_max, omega_at_max : float
+        Largest growth rate of psi inside (1/s) and where (rad/s).
+    tongue : int
+        Order r (Omega ~ 2 omega_psi / r).
+    critical_gamma : float
+        Smallest gamma at which the band exists; 0 without damping.
+    clipped : bool
+        True when omega_lo or omega_hi is an end of the Omega range searched.
     """
 
     omega_lo: float
@@ -255,12 +332,25 @@ class PitchBand:
 
 def pitch_tongue_omega_bound(omega_psi: float, gamma: float, *, tongue: int,
                              damping_ratio: float = 0.0) -> float:
-    """An upper bound (rad/s) on the thrust frequencies of Mathieu tongue r >= 1, without a solve.
+    """An upper bound (rad/s) on the thrust frequencies of Mathieu tongue r, without a solve.
 
-    2 omega_psi sqrt((1 - zeta^2)(1 + g)) / r with g = gamma / (1 - zeta^2): |a_r(q) - r^2| and
-    |b_r(q) - r^2| are at most 2|q| (Weyl's inequality for the perturbation 2 q cos 2 tau of norm
-    2|q|, Kato 1966, V.4.3), so on the path q = g x / 2 the tongue starts at x_b >= r^2 / (1 + g);
-    the damped band lies inside, and every higher tongue below.
+    |a_r(q) - r^2| and |b_r(q) - r^2| are at most 2|q| (Weyl's inequality for the perturbation
+    2 q cos 2 tau of norm 2|q|; Kato 1966, V.4.3): on the path q = g x / 2 the tongue starts at
+    x_b >= r^2 / (1 + g); the damped band lies inside, every higher tongue below.
+
+    Parameters
+    ----------
+    omega_psi : float
+        Pitch frequency (rad/s), >= 0.
+    gamma, damping_ratio : float
+        Pulsation amplitude and pitch damping ratio zeta, in [0, 1).
+    tongue : int
+        Order r >= 1.
+
+    Returns
+    -------
+    float
+        2 omega_psi sqrt((1 - zeta^2)(1 + g)) / r, g = gamma / (1 - zeta^2).
     """
     _check(omega_psi, gamma, damping_ratio)
     tongue = count("tongue", tongue, 1, None)
@@ -270,11 +360,23 @@ def pitch_tongue_omega_bound(omega_psi: float, gamma: float, *, tongue: int,
 
 def pitch_band_edges(omega_psi: float, gamma: float, *, tongue: int,
                      damping_ratio: float = 0.0) -> tuple[float, float] | None:
-    """Edges (omega_lo, omega_hi) (rad/s) of Mathieu tongue r on the operating path, unclipped.
+    """Edges (omega_lo, omega_hi) (rad/s) of Mathieu tongue r on the operating path.
 
-    omega_psi > 0, 0 <= gamma < 1, tongue 1..PITCH_MAX_TONGUE, 0 <= zeta < 1; at gamma = 0
-    without damping (Omega_r, Omega_r), Omega_r = 2 omega_psi sqrt(1 - zeta^2) / r; None where the
-    band does not exist (damped below its critical gamma) or is below round-off.
+    Parameters
+    ----------
+    omega_psi : float
+        Pitch frequency (rad/s), > 0.
+    gamma, damping_ratio : float
+        Pulsation amplitude and pitch damping ratio zeta, in [0, 1).
+    tongue : int
+        Order r, 1..PITCH_MAX_TONGUE.
+
+    Returns
+    -------
+    (float, float) or None
+        As :func:`pitch_bands`, not clipped; (Omega_r, Omega_r), Omega_r = 2 omega_psi
+        sqrt(1 - zeta^2) / r, at gamma = 0 undamped; None where the band does not exist or is
+        below round-off.
     """
     _check(positive("omega_psi", omega_psi), gamma, damping_ratio)
     r, zeta = count("tongue", tongue, 1, PITCH_MAX_TONGUE), float(damping_ratio)
@@ -296,16 +398,31 @@ def pitch_band_edges(omega_psi: float, gamma: float, *, tongue: int,
 
 def pitch_bands(omega_psi: float, gamma: float, *, omega_min: float, omega_max: float,
                 damping_ratio: float = 0.0) -> tuple[PitchBand, ...]:
-    """Every instability band of the rigid-body pitch in [omega_min, omega_max] (rad/s), exactly.
+    """Every instability band of the rigid-body pitch in [omega_min, omega_max], exactly.
 
     Without damping the edges are where the path a(Omega) = 4 omega_psi^2 / Omega^2, q = gamma a
-    / 2 crosses a_r(q) and b_r(q) (:func:`flexbooster.floquet.tongue_edges`), r = 1, 2, ...; with
-    damping zeta (psi'' + 2 zeta omega_psi psi' + omega_psi^2 (1 - gamma cos Omega t) psi = 0,
-    0 <= zeta < 1) the roots of Im beta = zeta sqrt(a) inside the tongue of the path
-    a' = a (1 - zeta^2) (:func:`flexbooster.floquet.damped_tongue`).  The growth rate
-    (Im beta - zeta sqrt(a)) Omega / 2 (1/s) is maximised in each band.  Tongues below round-off
-    are not reported, nor tongues r > :data:`PITCH_MAX_TONGUE` (:attr:`PitchResult.gaps`).
-    Sorted by Omega.  Memo (4.2-3), (4.2-4); A&S 20.2; Bolotin (1964), sec. 6.
+    / 2 crosses a_r(q) and b_r(q) (:func:`flexbooster.floquet.tongue_edges`); with damping the
+    roots of Im beta = zeta sqrt(a) inside the tongue of the path a' = a (1 - zeta^2)
+    (:func:`flexbooster.floquet.damped_tongue`).  The growth rate (Im beta - zeta sqrt(a))
+    Omega / 2 is maximised in each band.  Tongues below round-off are not reported, nor tongues
+    r > :data:`PITCH_MAX_TONGUE` (:attr:`PitchResult.gaps`).
+
+    Parameters
+    ----------
+    omega_psi : float
+        Pitch frequency (rad/s), >= 0.
+    gamma : float
+        Pulsation amplitude, 0 <= gamma < 1.
+    omega_min, omega_max : float
+        Omega range (rad/s), 0 < omega_min < omega_max.
+    damping_ratio : float
+        zeta of psi'' + 2 zeta omega_psi psi' + omega_psi^2 (1 - gamma cos Omega t) psi = 0,
+        0 <= zeta < 1.
+
+    Returns
+    -------
+    tuple of PitchBand
+        Sorted by Omega (memo 4.2-3, 4.2-4; A&S 20.2; Bolotin 1964, sec. 6).
     """
     return _pitch_search(omega_psi, gamma, omega_min, omega_max, damping_ratio)[0]
 
@@ -381,11 +498,21 @@ def _pitch_search(omega_psi: float, gamma: float, omega_min: float, omega_max: f
 class PitchResult:
     """Rigid-body pitch stability along the Omega grid (memo section 4.2).
 
-    ``Omega`` (rad/s), ``omega_psi`` (rad/s), ``gamma``, ``a``, ``q`` (4.2-4); ``beta_real``,
-    ``beta_imag`` the exact exponent, ``beta_memo_*`` eq. (4.2-9) with E4 (0 where a <= 0 or
-    a = 1); ``growth_rate`` (1/s, 0 where ``stable``); ``in_memo_range`` 0 < a < 1,
-    0 < q <= 0.05 (4.2-5); ``bands`` (:func:`pitch_bands`) over the grid's range, ``gaps`` what
-    :data:`PITCH_MAX_TONGUE` left out; ``damping_ratio``; ``verdict`` from the bands.
+    Attributes
+    ----------
+    Omega, a, q : numpy.ndarray
+        Thrust frequencies (rad/s) and the Mathieu parameters (4.2-4).
+    omega_psi, gamma, damping_ratio : float
+        Pitch frequency (rad/s), pulsation amplitude, pitch damping ratio.
+    beta_real, beta_imag, beta_memo_real, beta_memo_imag : numpy.ndarray
+        The exact exponent and eq. (4.2-9) with E4 (0 where a <= 0 or a = 1).
+    growth_rate, stable, in_memo_range : numpy.ndarray
+        Growth of psi (1/s; 0 where stable), beta real, 0 < a < 1 and 0 < q <= 0.05 (4.2-5).
+    verdict : str
+        One line, from the bands ("not fully searched: ..." with a gap and no band).
+    bands, gaps : tuple
+        The exact bands over the grid's range (:func:`pitch_bands`); what PITCH_MAX_TONGUE left
+        out.
     """
 
     Omega: np.ndarray
@@ -453,10 +580,23 @@ def pitch_analysis(Omega: Any, omega_psi: float, gamma: float, *,
                    damping_ratio: float = 0.0) -> PitchResult:
     """Rigid-body pitch stability over a grid of thrust frequencies, with its exact bands.
 
-    Omega (rad/s) > 0, 1-D; omega_psi (rad/s) from :func:`pitch_frequency`; 0 <= gamma < 1;
-    damping zeta, 0 <= zeta < 1 (psi'' + 2 zeta omega_psi psi' + omega_psi^2 (1 - gamma cos Omega
-    t) psi = 0; on the grid beta of a' = a (1 - zeta^2), growth (Im beta - zeta sqrt a) Omega / 2).
-    Memo eqs. (4.2-3)..(4.2-5), (4.2-9); Bolotin (1964), sec. 6.
+    Parameters
+    ----------
+    Omega : array_like
+        Thrust frequencies (rad/s), > 0, 1-D, increasing.
+    omega_psi : float
+        Pitch frequency (rad/s), from :func:`pitch_frequency`.
+    gamma : float
+        Pulsation amplitude, 0 <= gamma < 1.
+    damping_ratio : float
+        Pitch damping ratio zeta, 0 <= zeta < 1.
+
+    Returns
+    -------
+    PitchResult
+        a, q (4.2-4), exact and memo beta, growth rates on the grid (with damping: beta of
+        a' = a (1 - zeta^2), growth (Im beta - zeta sqrt a) Omega / 2), the exact bands over the
+        grid's range, their gaps and the verdict (memo 4.2-3..4.2-5, 4.2-9; Bolotin 1964 sec. 6).
     """
     Omega = np.atleast_1d(np.asarray(Omega, dtype=float))
     if Omega.ndim != 1:
