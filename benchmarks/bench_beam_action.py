@@ -1,107 +1,82 @@
-"""Benchmark: beam-action Floquet exponents, Hill's determinant against the monodromy matrix.
+"""Benchmark: the pitch and beam-action stages against a baseline commit, in the same run.
 
-Times, in the same run,
-  1. Hill's determinant (``hill_exponents``) against the monodromy matrix
-     (``monodromy_exponents``, Lawson RK4, 1e-8 setting) for the same points as N and S grow,
-     with the largest difference between the two (a strong-thrust uniform beam, p = 20, K = 1,
-     gamma = 0.6, where the coupling is strong and the monodromy needs many steps; and the
-     default case, weak coupling);
-  2. the (Omega, gamma) stability chart of the default case on --n x --n points with N = 10
-     (``stability_chart``) against the baseline Hill (S = 10) per point, timed on a subsample
-     and extrapolated to the full grid.
+Times ``pitch_analysis`` and ``beam_action_analysis`` (exponents on the grid, bands, Hill
+check) of the default case and of the inch-pound Titan-class case (tests/data), in this tree
+and in commit ``--baseline`` (default the tag ``pre-simplify``), each in a child process with
+one BLAS thread, alternating tree and baseline ``--rounds`` times; prints the best CPU time
+of each (less sensitive than wall time to other processes on the machine) and the ratio
+baseline / this tree (> 1: this tree is faster).
 
-Usage::
+Usage (repository root)::
 
-    python benchmarks/bench_beam_action.py [--n 200] [--sample 6]
+    python benchmarks/bench_beam_action.py [--rounds 3] [--baseline pre-simplify]
 """
 
 from __future__ import annotations
 
 import argparse
+import json
 import os
-import time
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
 
-import numpy as np
+from baseline_checkout import ROOT, baseline_checkout
 
-from flexbooster.case import default_case
-from flexbooster.memo import beam, geometry
-from flexbooster.memo.beam_action import (
-    beam_action_system,
-    hill_exponents,
-    monodromy_exponents,
-    reduced_exponents,
-    stability_chart,
-    uniform_beam_system,
-)
+__all__ = ["CASES", "main"]
 
+#: The cases timed: the default case and the Titan-class case of the regression tests.
+CASES = {"default": None, "titan": ROOT / "tests" / "data" / "cases" / "titan-inch-pound.toml"}
 
-def default_system(N: int):
-    case = default_case()
-    b = case.booster
-    mp = geometry.mass_properties(b.cylinder1.radius, b.cylinder1.half_length,
-                                  b.cylinder2.radius, b.cylinder2.half_length, b.thickness,
-                                  b.rho)
-    w1 = beam.first_bending_frequency(mp.L, b.cylinder1.radius, b.E, b.rho)
-    return case, beam_action_system(w1, mp.mass, mp.L, mp.d2, mp.I_cm, case.F0,
-                                    case.thrust.K, N)
+_CHILD = r"""
+import json, sys, time
+from flexbooster.case import default_case, load_case
+from flexbooster.memo.beam_action import beam_action_analysis
+from flexbooster.memo.pitch import pitch_analysis
+from flexbooster.model import model_from_case
 
-
-def timed(fn, *args, **kwargs):
-    t0 = time.perf_counter()
-    out = fn(*args, **kwargs)
-    return out, time.perf_counter() - t0
+path = sys.argv[1]
+model = model_from_case(default_case() if path == "-" else load_case(path))
+t0 = time.process_time()
+pitch_analysis(model.Omega, model.omega_psi, model.gamma,
+               damping_ratio=model.pitch_damping_ratio)
+t1 = time.process_time()
+action = beam_action_analysis(model)
+t2 = time.process_time()
+print(json.dumps({"pitch": t1 - t0, "beam_action": t2 - t1, "bands": len(action.bands)}))
+"""
 
 
-def scaling(label: str, make, Omega_bar: np.ndarray, gamma: float) -> None:
-    print(f"\n[1] {label}: {Omega_bar.size} points, Omega_bar = {np.round(Omega_bar, 3)}")
-    print(f"{'N':>3} {'S':>3} {'Hill (s)':>10} {'monodromy (s)':>14} {'Hill/mono':>10} "
-          f"{'max |diff|':>11}")
-    for N in (2, 4, 6, 10):
-        system = make(N)
-        Om = Omega_bar * system.omega_1
-        mono, t_m = timed(monodromy_exponents, system, Om, gamma)
-        red_m = reduced_exponents(mono)
-        for S in (4, 8, 12):
-            hill, t_h = timed(hill_exponents, system, Om, gamma, S)
-            diff = np.max(np.abs(reduced_exponents(hill.alpha) - red_m))
-            print(f"{N:>3} {S:>3} {t_h:>10.3f} {t_m:>14.3f} {t_h / t_m:>10.1f} {diff:>11.1e}")
+def _run(src: Path, case: Path | None) -> dict:
+    env = dict(os.environ, PYTHONPATH=str(src), OPENBLAS_NUM_THREADS="1")
+    out = subprocess.run([sys.executable, "-c", _CHILD, "-" if case is None else str(case)],
+                         env=env, check=True, capture_output=True, text=True)
+    return json.loads(out.stdout.strip().splitlines()[-1])
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--n", type=int, default=200, help="chart points per axis")
-    parser.add_argument("--sample", type=int, default=6, help="baseline subsample size")
+    parser.add_argument("--rounds", type=int, default=3)
+    parser.add_argument("--baseline", default="pre-simplify", help="commit to compare with")
     args = parser.parse_args()
-    print(f"cpu count {os.cpu_count()}, OMP_NUM_THREADS={os.environ.get('OMP_NUM_THREADS')}, "
-          f"OPENBLAS_NUM_THREADS={os.environ.get('OPENBLAS_NUM_THREADS')}")
-
-    scaling("strong thrust, uniform beam p = 20, K = 1, gamma = 0.6",
-            lambda N: uniform_beam_system(20.0, 1.0, N), np.array([0.45, 1.2, 2.5, 4.0]), 0.6)
-    case, _ = default_system(2)
-    w1 = default_system(2)[1].omega_1
-    scaling("default case, gamma = 0.05", lambda N: default_system(N)[1],
-            np.array([5.0, 300.0, 1000.0, 2000.0]) / w1, 0.05)
-
-    case, system = default_system(10)
-    Omega = np.linspace(case.thrust.omega_min, case.thrust.omega_max, args.n)
-    gamma = np.linspace(0.0, 0.9, args.n)
-    chart, t_chart = timed(stability_chart, system, Omega, gamma)
-    rng = np.random.default_rng(0)
-    iO = rng.integers(0, args.n, args.sample)
-    ig = rng.integers(0, args.n, args.sample)
-    hill, t_base = timed(hill_exponents, system, Omega[iO], gamma[ig], 10)
-    red = reduced_exponents(hill.alpha)
-    flags = np.max(red.imag, axis=1) <= 1e-6
-    agree = np.array_equal(flags, chart.stable[ig, iO])
-    t_full = t_base / args.sample * Omega.size * gamma.size
-    print(f"\n[2] chart, default case, N = 10, {args.n} x {args.n} = {args.n**2} points, "
-          f"Omega {Omega[0]:.0f}..{Omega[-1]:.0f} rad/s, gamma 0..0.9")
-    print(f"  stability_chart (monodromy, step_phase 0.25): {t_chart:8.2f} s "
-          f"({np.mean(~chart.stable) * 100:.2f} % unstable)")
-    print(f"  baseline Hill S = 10 per point: {t_base / args.sample:.3f} s/point, "
-          f"extrapolated {t_full:8.1f} s")
-    print(f"  ratio baseline / chart: {t_full / t_chart:8.1f}   "
-          f"flags agree on the {args.sample}-point subsample: {agree}")
+    best: dict = {}
+    with tempfile.TemporaryDirectory() as tmp:
+        with baseline_checkout(args.baseline, Path(tmp) / "baseline") as base:
+            for _ in range(args.rounds):
+                for name, case in CASES.items():
+                    for tree, src in (("new", ROOT / "src"), ("old", base / "src")):
+                        got = _run(src, case)
+                        key = (name, tree)
+                        best[key] = {k: min(v, best.get(key, got)[k]) for k, v in got.items()}
+    print(f"best of {args.rounds} rounds, CPU time (s), baseline {args.baseline}:")
+    print(f"{'case':>8} {'stage':>12} {'this tree':>10} {'baseline':>10} {'ratio':>7}")
+    for name in CASES:
+        new, old = best[(name, "new")], best[(name, "old")]
+        for stage in ("pitch", "beam_action"):
+            print(f"{name:>8} {stage:>12} {new[stage]:10.3f} {old[stage]:10.3f} "
+                  f"{old[stage] / new[stage]:7.2f}")
+        print(f"{name:>8} {'bands':>12} {new['bands']:10d} {old['bands']:10d}")
 
 
 if __name__ == "__main__":

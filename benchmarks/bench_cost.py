@@ -61,9 +61,10 @@ TONGUE_CASES = {
 
 
 def _tongue_time(model) -> float:
-    """CPU time (s) of the pipeline's tongue search of a model (as pipeline_band_search)."""
+    """CPU time (s) of the pipeline's tongue search of a model (as beam_action_analysis)."""
     system = ba.beam_system(model)
-    lo, hi = ba._band_range(model, float(system.omega_1))
+    lo = max(float(np.min(model.Omega)), ba.BAND_OMEGA_BAR_MIN * float(system.omega_1))
+    hi = float(np.max(model.Omega))
     low = float(np.min(model.Omega))
     t = time.process_time()
     with blas_threads(1):

@@ -24,7 +24,7 @@ import time
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from flexbooster.memo.pitch import characteristic_exponent, floquet_discriminant
+from flexbooster.floquet import characteristic_exponent, floquet_discriminant
 
 
 def baseline_discriminant(a: float, q: float) -> float:

@@ -15,6 +15,7 @@ import numpy as np
 import pytest
 from scipy import integrate, special
 
+from flexbooster.floquet import mathieu
 from flexbooster.memo import pitch
 from harness import assert_close  # noqa: E402
 
@@ -45,10 +46,10 @@ EXPONENT_POINTS = list(REFERENCES)
 def test_q_zero_gives_sqrt_a(method):
     # q = 0: psi'' + a psi = 0, beta = sqrt(a) exactly (a > 0), i sqrt(-a) for a < 0.
     a = np.array([0.01, 0.3, 0.81, 1.7, 3.9, 8.5, 15.0, 24.2])
-    beta = pitch.characteristic_exponent(a, 0.0, method)
+    beta = mathieu.characteristic_exponent(a, 0.0, method)
     np.testing.assert_allclose(beta.real, np.sqrt(a), rtol=0, atol=1e-11)
     assert np.all(beta.imag == 0)
-    neg = pitch.characteristic_exponent(np.array([-0.5, -2.0]), 0.0, method)
+    neg = mathieu.characteristic_exponent(np.array([-0.5, -2.0]), 0.0, method)
     np.testing.assert_allclose(neg.imag, np.sqrt([0.5, 2.0]), rtol=1e-11)
     np.testing.assert_allclose(neg.real, 0.0, atol=0)
 
@@ -58,9 +59,11 @@ def test_even_in_q(method):
     # Shifting tau_1 by pi/2 maps q to -q, so beta(a, -q) = beta(a, q) (McLachlan ch. IV).
     a = np.array([0.3, 0.6, 0.95])
     q = np.array([0.01, 0.04, 0.05])
-    np.testing.assert_array_equal(
-        pitch.characteristic_exponent(a, -q, method), pitch.characteristic_exponent(a, q, method)
-    )
+    def beta(q):
+        return (pitch.memo_exponent(a, q) if method == "memo"
+                else mathieu.characteristic_exponent(a, q, method))
+
+    np.testing.assert_array_equal(beta(-q), beta(q))
 
 
 def test_mathieu_parameters_definition():
@@ -90,7 +93,7 @@ def test_transition_curves_match_scipy():
     # A&S 20.2 characteristic values, scipy.special.mathieu_a / mathieu_b (same q convention
     # as eq. 4.2-3: y'' + (a - 2q cos 2t) y = 0); 1e-10 absolute on values O(1..30).
     q = np.linspace(0.0, 10.0, 41)
-    curves = pitch.transition_curves(q, r_max=5)
+    curves = mathieu.transition_curves(q, r_max=5)
     for r in range(6):
         assert_close(curves[f"a{r}"], special.mathieu_a(r, q), rtol=0, atol=1e-10,
                      source="scipy.special.mathieu_a (A&S 20.2)", name=f"a{r}(q)")
@@ -103,7 +106,7 @@ def test_small_q_characteristic_values():
     # A&S 20.2.25: a_1 = 1 + q - q^2/8 - q^3/64 + ..., b_1 = 1 - q - q^2/8 + q^3/64 + ...,
     # truncation error O(q^4) ~ 1e-8 at q = 0.05.
     q = np.array([0.01, 0.05])
-    curves = pitch.transition_curves(q, r_max=1)
+    curves = mathieu.transition_curves(q, r_max=1)
     np.testing.assert_allclose(curves["a1"], 1 + q - q**2 / 8 - q**3 / 64, atol=1e-7)
     np.testing.assert_allclose(curves["b1"], 1 - q - q**2 / 8 + q**3 / 64, atol=1e-7)
 
@@ -123,9 +126,9 @@ def test_exponent_against_mpmath(point, method):
     # has a square-root singularity, so 1e-11 in cos(pi beta) is < 1e-8 in beta).
     a, q = point
     D_ref, beta_ref = REFERENCES[point]
-    D = float(pitch.floquet_discriminant(a, q, method))
+    D = float(mathieu.floquet_discriminant(a, q, method))
     assert abs(D - D_ref) <= 1e-11 * max(1.0, abs(D_ref))
-    beta = complex(pitch.characteristic_exponent(a, q, method))
+    beta = complex(mathieu.characteristic_exponent(a, q, method))
     assert_close(beta, beta_ref, rtol=0, atol=1e-8, name=f"beta{point}",
                  source="50-digit mpmath Taylor series of y1(pi), scipy band index")
     assert (beta.imag == 0) == (beta_ref.imag == 0)
@@ -137,13 +140,13 @@ def test_tongue_structure_from_scipy_curves(r, q):
     # Between b_r(q) and a_r(q) (scipy): Re beta = r, Im beta > 0; just outside: real beta
     # within 1e-3 of r (square-root approach); midway to the next curve: r < beta < r + 1.
     b_r, a_r = special.mathieu_b(r, q), special.mathieu_a(r, q)
-    inside = pitch.characteristic_exponent(0.5 * (a_r + b_r), q, "hill")
+    inside = mathieu.characteristic_exponent(0.5 * (a_r + b_r), q, "hill")
     assert inside.real == r and inside.imag > 0
-    above = pitch.characteristic_exponent(a_r + 1e-7, q, "hill")
-    below = pitch.characteristic_exponent(b_r - 1e-7, q, "hill")
+    above = mathieu.characteristic_exponent(a_r + 1e-7, q, "hill")
+    below = mathieu.characteristic_exponent(b_r - 1e-7, q, "hill")
     assert above.imag == 0 and r < above.real < r + 1e-3
     assert below.imag == 0 and r - 1e-3 < below.real < r
-    band = pitch.characteristic_exponent(0.5 * (a_r + special.mathieu_b(r + 1, q)), q, "floquet")
+    band = mathieu.characteristic_exponent(0.5 * (a_r + special.mathieu_b(r + 1, q)), q, "floquet")
     assert band.imag == 0 and r < band.real < r + 1
 
 
@@ -171,8 +174,26 @@ def test_tongues_below_the_range_are_not_solved(monkeypatch):
     def refused(*args):
         raise AssertionError("a tongue edge was solved")
 
-    monkeypatch.setattr(pitch, "_tongue_edges", refused)
+    monkeypatch.setattr(mathieu, "tongue_edges", refused)
     assert pitch.pitch_bands(1.2, 0.05, omega_min=5.0, omega_max=2000.0) == ()
+
+
+def test_tongues_past_the_order_limit_are_a_gap_not_a_stable_verdict():
+    # omega_psi = 1 rad/s, gamma = 0.9 over Omega in [0.02, 0.03] rad/s: the tongues with
+    # tips 2 / r in the range have r = 67..100; every tongue r <= PITCH_MAX_TONGUE = 60 lies
+    # above it, so the search ends at its order limit with no band: the result holds one
+    # SearchGap from r = 61 on, and the verdict is "not fully searched".
+    res = pitch.pitch_analysis(np.linspace(0.02, 0.03, 5), 1.0, 0.9)
+    assert res.bands == ()
+    (gap,) = res.gaps
+    assert (gap.stage, gap.limit, gap.order) == ("pitch", "PITCH_MAX_TONGUE",
+                                                 pitch.PITCH_MAX_TONGUE + 1)
+    assert gap.Omega_lo == 0.02 and gap.Omega_hi == 0.03
+    assert res.verdict.startswith("rigid-body pitch not fully searched: the Mathieu tongues")
+    assert "stable" not in res.verdict
+    assert res.to_dict()["gaps"] == [gap.to_dict()]
+    # the same search without the limit in its way: no gap
+    assert pitch.pitch_analysis(np.linspace(0.5, 3.0, 5), 1.0, 0.9).gaps == ()
 
 
 # --------------------------------------------------------------------------------------------
@@ -188,8 +209,8 @@ def test_floquet_and_hill_agree_on_memo_range_grid():
     near = (np.abs(a - special.mathieu_a(1, q)) < 1e-6) | (
         np.abs(a - special.mathieu_b(1, q)) < 1e-6
     )
-    bf = pitch.characteristic_exponent(a, q, "floquet")
-    bh = pitch.characteristic_exponent(a, q, "hill")
+    bf = mathieu.characteristic_exponent(a, q, "floquet")
+    bh = mathieu.characteristic_exponent(a, q, "hill")
     assert np.max(np.abs(bf - bh)[~near]) < 1e-9
 
 
@@ -197,7 +218,7 @@ def test_hill_even_and_odd_determinants_are_consistent():
     # 1 - cos(pi beta) (pi-periodic determinant) and 1 + cos(pi beta) (antiperiodic one) are
     # computed independently; they must add to 2 (1e-13 in the memo range).
     a, q = np.meshgrid(np.linspace(-0.5, 1.5, 50), np.linspace(0.0, 0.05, 20))
-    one_minus, one_plus, _ = pitch._hill(a, q)
+    one_minus, one_plus, _ = mathieu._hill(a, q)
     assert np.max(np.abs(one_minus + one_plus - 2.0)) < 1e-13
 
 
@@ -212,9 +233,9 @@ def test_memo_formula_error_is_order_q4_and_printed_is_order_q2(a):
     # (Hill) falls like q^4; as printed (sin(pi sqrt(a)/2)) like q^2.  Slopes on q in
     # [0.05/16, 0.05] within 0.25 of 4 and 2.
     q = 0.05 / 2.0 ** np.arange(5)
-    exact = pitch.characteristic_exponent(a, q, "hill")
-    corrected = np.abs(pitch.characteristic_exponent(a, q, "memo") - exact)
-    printed = np.abs(pitch.characteristic_exponent(a, q, "memo-printed") - exact)
+    exact = mathieu.characteristic_exponent(a, q, "hill")
+    corrected = np.abs(pitch.memo_exponent(a, q) - exact)
+    printed = np.abs(pitch.memo_exponent(a, q, printed=True) - exact)
     assert abs(_slope(q, corrected) - 4.0) < 0.25
     assert abs(_slope(q, printed) - 2.0) < 0.25
     assert np.all(corrected < printed)
@@ -243,7 +264,7 @@ def test_growth_rate_matches_direct_integration():
     # solve_ivp (DOP853, rtol 1e-12) over 60 periods: the log growth per period, fitted over
     # the last 30 periods, equals pi mu to 1e-4 relative.
     a, q = 1.0, 0.05
-    mu = complex(pitch.characteristic_exponent(a, q, "floquet")).imag
+    mu = complex(mathieu.characteristic_exponent(a, q, "floquet")).imag
     tau = np.pi * np.arange(61)
 
     def rhs(t, y):
@@ -265,7 +286,7 @@ def test_pitch_analysis_flags_first_tongue():
     Omega = np.array([12.0, 6.0])
     res = pitch.pitch_analysis(Omega, omega_psi, gamma)
     assert res.stable.tolist() == [True, False]
-    beta = complex(pitch.characteristic_exponent(1.0, 0.025, "hill"))
+    beta = complex(mathieu.characteristic_exponent(1.0, 0.025, "hill"))
     assert res.growth_rate[1] == pytest.approx(beta.imag * 6.0 / 2.0, rel=1e-9)
     assert "UNSTABLE" in res.verdict
     # the exact band over [6, 12]: lower edge (a = a_1) clipped at Omega = 6; upper edge where
@@ -297,15 +318,15 @@ def test_pitch_analysis_stable_default_like_case():
 @pytest.mark.parametrize(
     ("call", "match"),
     [
-        (lambda: pitch.characteristic_exponent(0.5, 0.1, "exact"), "method"),
-        (lambda: pitch.characteristic_exponent(np.nan, 0.1), "a:"),
-        (lambda: pitch.characteristic_exponent(0.5, np.inf), "q:"),
-        (lambda: pitch.characteristic_exponent(-0.5, 0.1, "memo"), "a > 0"),
-        (lambda: pitch.characteristic_exponent(1.0, 0.01, "memo"), "a = 1"),
+        (lambda: mathieu.characteristic_exponent(0.5, 0.1, "exact"), "method"),
+        (lambda: mathieu.characteristic_exponent(np.nan, 0.1), "a:"),
+        (lambda: mathieu.characteristic_exponent(0.5, np.inf), "q:"),
+        (lambda: pitch.memo_exponent(-0.5, 0.1), "a > 0"),
+        (lambda: pitch.memo_exponent(1.0, 0.01), "a = 1"),
         (lambda: pitch.mathieu_parameters([0.0, 1.0], 1.0, 0.05), "Omega"),
         (lambda: pitch.mathieu_parameters([1.0], 1.0, -0.05), "gamma"),
         (lambda: pitch.pitch_frequency(1.0, -2.0, 0.5, 1.0), "d2 = -2.0"),
-        (lambda: pitch.transition_curves([-1.0]), "q ="),
+        (lambda: mathieu.transition_curves([-1.0]), "q ="),
         (lambda: pitch.psi_three_term([0.0], 1.0, 0.05), "unstable"),
         (lambda: pitch.psi_numerical([1.0, 0.5], 0.5, 0.01), "tau1"),
     ],
@@ -326,8 +347,8 @@ def test_ince_strutt_chart_draws_curves_and_path():
     a_path = np.array([0.5, 1.0, 1.2])
     q_path = np.array([0.0125, 0.025, 0.03])
     q = np.linspace(0, 0.1, 40)
-    stable = np.imag(pitch.characteristic_exponent(a_path, q_path, "hill")) == 0
-    data = InceStruttData(q=q, curves=pitch.transition_curves(q, 2), a_path=a_path,
+    stable = np.imag(mathieu.characteristic_exponent(a_path, q_path, "hill")) == 0
+    data = InceStruttData(q=q, curves=mathieu.transition_curves(q, 2), a_path=a_path,
                           q_path=q_path, path_stable=stable)
     fig = ince_strutt_chart(data)
     assert isinstance(fig, Figure)
@@ -335,7 +356,7 @@ def test_ince_strutt_chart_draws_curves_and_path():
     lines = {line.get_label(): line for line in ax.get_lines()}
     np.testing.assert_array_equal(lines["operating path"].get_ydata(), a_path)
     np.testing.assert_array_equal(lines["unstable"].get_ydata(), [1.0])  # b_1 < 1 < a_1
-    a1 = pitch.transition_curves(np.linspace(0, 0.1, 40), 2)["a1"]
+    a1 = mathieu.transition_curves(np.linspace(0, 0.1, 40), 2)["a1"]
     assert any(np.allclose(line.get_ydata(), a1) for line in ax.get_lines())
 
 

@@ -19,7 +19,8 @@ matplotlib.rcParams["svg.hashsalt"] = "flexbooster"  # reproducible ids
 
 import numpy as np  # noqa: E402
 
-from flexbooster.memo.pitch import characteristic_exponent  # noqa: E402
+from flexbooster.floquet import characteristic_exponent  # noqa: E402
+from flexbooster.memo.pitch import memo_exponent  # noqa: E402
 from flexbooster.present.plotting.pitch import beta_comparison_plot  # noqa: E402
 
 OUT = Path(__file__).with_name("beta-memo-vs-exact.svg")
@@ -30,8 +31,8 @@ def main() -> None:
     errors = {}
     for a in (0.2, 0.5, 0.8):
         exact = characteristic_exponent(a, q, "hill")
-        errors[a] = (np.abs(characteristic_exponent(a, q, "memo") - exact),
-                     np.abs(characteristic_exponent(a, q, "memo-printed") - exact))
+        errors[a] = (np.abs(memo_exponent(a, q) - exact),
+                     np.abs(memo_exponent(a, q, printed=True) - exact))
     fig = beta_comparison_plot(q, errors)
     fig.savefig(OUT, format="svg", metadata={"Date": None, "Creator": None})
     print(f"wrote {OUT} ({OUT.stat().st_size} bytes)")

@@ -160,6 +160,8 @@ def analyze(
         if beam_action:
             step(STAGES[3])
             action = _beam_action(model)
+            extra += [AnalysisWarning("beam-action-not-fully-searched", gap.limit, gap.reason)
+                      for gap in action.gaps]
         if stability and beam_action:
             step(STAGES[4])
             params = excitation_parameters(model, action)

@@ -27,18 +27,27 @@ from typing import Any
 
 import numpy as np
 
-from .checks import positive
+from .checks import nonnegative, positive
 from .errors import AnalysisWarning, CaseError
+from .floquet import MATHIEU_SCALE_MAX
 from .memo.beam_action import (
     BAND_OMEGA_BAR_MIN,
     MONODROMY_MAX_STEPS,
+    TONGUE_FLOOR_OMEGA_BAR,
+    TONGUE_GAMMA_RTOL,
+    TONGUE_MAX_HARMONICS,
+    TONGUE_MAX_ORDER,
     beam_system,
+    loaded_frequencies,
+    modal_damping,
     monodromy_steps,
-    tongue_search_seconds,
+    pitch_guide,
+    pitch_mode,
+    tongue_hill_harmonics,
 )
 from .memo.charts import PITCH_BAND_CHART_LEVELS
 from .memo.model import BoosterModel
-from .memo.pitch import MATHIEU_SCALE_MAX, PITCH_MAX_TONGUE
+from .memo.pitch import PITCH_MAX_TONGUE
 
 __all__ = [
     "DEFAULT_MAX_SECONDS",
@@ -51,10 +60,11 @@ __all__ = [
     "estimate_vehicle_cost",
     "region_modes",
     "TONGUE_PART",
+    "tongue_search_seconds",
 ]
 
 #: Name of the part of :func:`estimate_cost` for the rigid-pitch tongue search below
-#: omega_1 / 4 (:func:`flexbooster.memo.beam_action.pitch_tongue_bands`).
+#: omega_1 / 4 (:func:`tongue_search_seconds`).
 TONGUE_PART = "beam-action pitch tongues"
 
 #: Default budget of a run (s): a case whose estimate exceeds it is refused up front.
@@ -70,7 +80,7 @@ _C_CHART = 2.5  # beam-action chart of the default, scales like (n / 11)^2.5
 _C_PITCH_STEP = (2e-5, 3e-7)  # per Magnus step: fixed, per grid point
 _C_TONGUE = 0.07  # pitch bands, per tongue in the range
 # pitch bands at a large pulsation: tongue r (a ~ r^2) costs ~ r^1.5 Hill rows x evaluations
-# while it is wider than round-off, r <= 110 gamma (fuzz cases of issue 18: 5.2 s at gamma
+# while it is wider than round-off, r <= 110 gamma (fuzz cases: 5.2 s at gamma
 # = 0.78 for r = 6..60, 0.83 s at 0.4, x 2.5 with pitch damping, 12 s)
 _C_TONGUE_R = (4.6e-4, 0.78, 110.0, 2.5)  # per r^1.5 at gamma_ref; r cut / gamma; damped x
 _C_TONGUE_LEVEL = 0.04  # pitch chart, per tongue and gamma level
@@ -200,7 +210,7 @@ def estimate_cost(model: BoosterModel, *, beam_action: bool = True, stability: b
         (M x N modes), beam-action monodromy (the sum of the capped step counts over the
         grid), Hill determinant ((2 n (2 S + 1))^3 per point), band search and chart
         (~n^2.5), the rigid-pitch tongues below omega_1 / 4 (:data:`TONGUE_PART`,
-        :func:`flexbooster.memo.beam_action.tongue_search_seconds`), stability table
+        :func:`tongue_search_seconds`), stability table
         (curves x shell modes).
 
     References
@@ -270,6 +280,139 @@ def estimate_cost(model: BoosterModel, *, beam_action: bool = True, stability: b
             drivers["beam-action chart"] = ("truncation.N",)
     return CostEstimate(seconds=float(sum(parts.values())), parts=parts, drivers=drivers,
                         capped_points=capped, capped_omega_max=capped_omega)
+
+
+# The rigid-pitch tongue search (flexbooster.memo.beam_action.pitch_tongue_bands; one core),
+# measured on 310 fuzz-like boosters (N = 1..4, 2..5 modes) and the default booster at N = 6
+# and 10 (benchmarks/bench_cost.py): each harmonic-balance eigenproblem (QZ, order m = n h,
+# 2 n h with damping, h = 2 K or 2 K + 1 harmonic blocks) costs _TONGUE_QZ m^3 + _TONGUE_CALL;
+# the growth maximum of tongue r (~31 Hill eigenproblems of order 2 n (2 S_r + 1) and one of
+# 2 n (2 S_r + 9)) _TONGUE_GROWTH[0] + _TONGUE_GROWTH[1] x their m^3; the pitch-only guide
+# (1 x 1 harmonic balance) _TONGUE_GUIDE per use; with damping the critical gamma is a
+# bisection of _TONGUE_BISECTIONS steps, one eigenproblem each at the tongue's converged K.
+_TONGUE_QZ = 1.2e-8
+_TONGUE_CALL = 4e-4
+_TONGUE_GROWTH = (0.1, 3e-9)
+_TONGUE_GUIDE = 3.5e-3
+_TONGUE_BISECTIONS = int(math.ceil(math.log2(1.0 / TONGUE_GAMMA_RTOL)))
+# Without pitch damping the search is modelled to stop after tongue r = 11 at the latest (the
+# highest found over the calibration cases: 10), or once the tongue's relative width
+# (Mathieu, small q, A&S 20.2.25) is below 1e-6.
+_TONGUE_R_MODEL = 11
+_TONGUE_WIDTH_MODEL = 1e-6
+
+
+def _qz_seconds(n: int, K: int, period: str, damped: bool) -> float:
+    """Modelled time of one harmonic-balance eigenproblem (n modes, K harmonics)."""
+    m = n * (2 * K if period == "2T" else 2 * K + 1) * (2 if damped else 1)
+    return _TONGUE_QZ * float(m) ** 3 + _TONGUE_CALL
+
+
+def _growth_seconds(n: int, S: int) -> float:
+    """Modelled time of the growth maximum of a tongue (n modes, S Hill harmonics)."""
+    c0, c1 = _TONGUE_GROWTH
+    m = 2 * n * (2 * S + 1)
+    return c0 + c1 * (31.0 * m**3 + (2 * n * (2 * S + 9)) ** 3)
+
+
+def _model_harmonics(r: int, centre: float, damped: bool) -> int:
+    """The harmonics K at which the edges of tongue r are modelled to converge (the search
+    raises K by 4 until two agree): 4 for r <= 2, 8 for r <= 6, ..., one step more below
+    TONGUE_FLOOR_OMEGA_BAR with damping, up to TONGUE_MAX_HARMONICS - 4."""
+    K = 4 * math.ceil((r + 2) / 4)
+    if damped and centre < TONGUE_FLOOR_OMEGA_BAR:
+        K += 4
+    return min(K, TONGUE_MAX_HARMONICS - 4)
+
+
+def _mathieu_log_width(theta: float, r: int) -> float:
+    """log of the relative width (in a) of Mathieu tongue r at q = theta r^2, small-q
+    leading term 2 q^r / (4^(r-1) ((r-1)!)^2) / r^2 (A&S 20.2.25 and its higher analogues)."""
+    q = theta * r * r
+    if not q > 0.0:
+        return -math.inf
+    return (math.log(2.0) + r * math.log(q) - (r - 1) * math.log(4.0)
+            - 2.0 * math.lgamma(r) - 2.0 * math.log(r))
+
+
+def tongue_search_seconds(system: Any, gamma: float, *, omega_min: float, omega_max: float,
+                          beam_ratio: float = 0.0, pitch_ratio: float = 0.0) -> float:
+    """Estimated time of :func:`flexbooster.memo.beam_action.pitch_tongue_bands`.
+
+    No eigenproblem of the search is solved.  The tongues r whose tip 2 omega_p / r lies in
+    the range are counted while they exist: with pitch damping while the undamped relative
+    width of the pitch-only Mathieu tongue (q = gamma b_p r^2 / (2 mu_p) in the steady modal
+    frame) exceeds 4 zeta_p (damped Mathieu: the growth rate at the centre of the tongue,
+    Delta a / (4 r), must exceed the decay zeta r); without it while the width exceeds 1e-6
+    and r <= 11; for r >= 3 while the tongue's drift below its tip, ~theta^2 / 4 relative
+    (theta = q / r^2), stays inside the search window, r theta^2 <= 2.  Each costs its edges
+    (K = 4..K_r + 4, :func:`_model_harmonics`), its growth maximum and, with damping, the
+    bisection of its critical gamma at K_r; the tongue that ends the search costs its edges.
+
+    Parameters
+    ----------
+    system : BeamActionSystem
+        The normalised beam-action system.
+    gamma : float
+        Pulsation amplitude (dimensionless), 0 <= gamma < 1.
+    omega_min, omega_max : float
+        The low Omega range (rad/s), 0 < omega_min < omega_max.
+    beam_ratio, pitch_ratio : float
+        Modal damping ratios (dimensionless).
+
+    Returns
+    -------
+    float
+        Seconds on one core (calibration: the comments above :func:`_qz_seconds`; estimate
+        against measured time in benchmarks/bench_cost.py).
+
+    References
+    ----------
+    M. Abramowitz, I. A. Stegun, *Handbook of Mathematical Functions*, 1964, 20.2.25;
+    Bolotin (1964), sec. 6 (damped regions).
+    """
+    gamma, lo, hi = (nonnegative("gamma", gamma), positive("omega_min", omega_min),
+                     positive("omega_max", omega_max))
+    if gamma >= 1.0 or not lo < hi:
+        raise ValueError(f"gamma = {gamma!r}, omega_min = {lo!r}, omega_max = {hi!r}: must "
+                         "satisfy gamma < 1 and omega_min < omega_max")
+    C = modal_damping(system, beam_ratio=beam_ratio, pitch_ratio=pitch_ratio)
+    w1 = float(system.omega_1)
+    wp = complex(loaded_frequencies(system)[pitch_mode(system)])
+    if gamma == 0.0 or wp.imag != 0.0 or not wp.real > 0.0:
+        return 0.0
+    wp = wp.real
+    n = system.A0.shape[0]
+    mu_p, b_p, c_p = pitch_guide(system, C)
+    theta = gamma * abs(b_p) / (2.0 * mu_p)
+    zeta = abs(c_p) / (2.0 * math.sqrt(mu_p)) if pitch_ratio > 0.0 else 0.0
+    damped = C is not None
+    seconds = 0.0
+    r_min = max(1, int(np.ceil(2.0 * wp * w1 / hi - 1e-12)))
+    for r in range(r_min, TONGUE_MAX_ORDER + 1):
+        centre = 2.0 * wp / r
+        if centre * w1 < lo:
+            break
+        period = "2T" if r % 2 else "T"
+        K = _model_harmonics(r, centre, damped)
+        log_w = _mathieu_log_width(theta, r)
+        exists = (log_w > math.log(4.0 * zeta) if zeta > 0.0 else
+                  log_w > math.log(_TONGUE_WIDTH_MODEL) and r <= _TONGUE_R_MODEL)
+        # a tongue r >= 3 drifts below its tip by ~theta^2 / 4 (Mathieu: a_r ~ r^2 + q^2 /
+        # (2 (r^2 - 1))): out of the search window (0.5 / (r + 1) below the tip) past 2/theta^2
+        exists = exists and (r <= 2 or r * theta**2 <= 2.0)
+        if not exists:  # its edges (K = 4, 8) end the search, or (r <= 2) go on
+            seconds += _TONGUE_GUIDE + sum(_qz_seconds(n, k, period, damped) for k in (4, 8))
+            if r > 2:
+                break
+            continue
+        Ks = (range(4, TONGUE_MAX_HARMONICS + 1, 4)
+              if not damped and centre < TONGUE_FLOOR_OMEGA_BAR else range(4, K + 5, 4))
+        seconds += _TONGUE_GUIDE + sum(_qz_seconds(n, k, period, damped) for k in Ks)
+        seconds += _growth_seconds(n, tongue_hill_harmonics(r))
+        if damped:
+            seconds += _TONGUE_BISECTIONS * (_TONGUE_GUIDE + _qz_seconds(n, K, period, True))
+    return float(seconds)
 
 
 # Vehicle stages (issue 15 / 18): calibration on the default case's vehicle (the memo's two
@@ -449,7 +592,7 @@ def check_physical(model: BoosterModel) -> None:
         ``thrust.F0`` when the steady beam-action system (gamma = 0) diverges (an eigenvalue
         of A0 = Lambda + B below 0) or flutters (a complex eigenvalue), or when the Mathieu
         parameter a = 4 omega_psi^2 / omega_min^2 (eq. 4.2-4) exceeds
-        :data:`flexbooster.memo.pitch.MATHIEU_SCALE_MAX` squared.
+        :data:`flexbooster.floquet.MATHIEU_SCALE_MAX` squared.
 
     References
     ----------

@@ -3,14 +3,34 @@
 Floquet multipliers and growth rates (:mod:`.multipliers`), Hill's method and the harmonic
 balance of the periodic boundaries (:mod:`.hill`), a rigorous all-Omega stability certificate
 for damped systems (:mod:`.bounds`), and the instability regions in Omega with
-their amplitude dependence (:mod:`.regions`).  Numerical core: numpy and scipy only.  Theory:
-``docs/theory/floquet.md``.
+their amplitude dependence (:mod:`.regions`), Mathieu's equation (:mod:`.mathieu`) and the
+vectorised scalar solvers they share (:mod:`.optimize`).  Numerical core: numpy and scipy
+only.  Theory: ``docs/theory/floquet.md``.
 """
 
 from .bounds import StabilityCertificate, stability_certificate
-from .hill import converged_periodic_boundaries, hill_exponents, periodic_boundaries
+from .hill import (
+    HillModes,
+    converged_periodic_boundaries,
+    hill_exponents,
+    hill_modes,
+    periodic_boundaries,
+)
+from .mathieu import (
+    MATHIEU_SCALE_MAX,
+    beta_from_discriminants,
+    characteristic_exponent,
+    characteristic_value,
+    damped_tongue,
+    floquet_discriminant,
+    tongue_critical_gamma,
+    tongue_edges,
+    transition_curves,
+)
 from .multipliers import (
+    MAX_STEPS,
     LinearPeriodicSystem,
+    PeriodMapOverflowError,
     StepLimitError,
     floquet_exponents,
     floquet_multipliers,
@@ -20,6 +40,13 @@ from .multipliers import (
     steady_frequencies,
     step_counts,
 )
+from .optimize import (
+    NoConvergenceError,
+    brent_max,
+    expand_bracket,
+    golden_section_max,
+    illinois_root,
+)
 from .regions import (
     DAMPING_MARGIN,
     CriticalAmplitude,
@@ -28,36 +55,19 @@ from .regions import (
     SearchWork,
     TooManyCandidatesError,
     critical_amplitude,
-    golden_section_max,
     instability_regions,
     region_boundaries,
     search_work,
 )
 
-__all__ = [
-    "DAMPING_MARGIN",
-    "CriticalAmplitude",
-    "InstabilityRegion",
-    "RegionBoundary",
-    "TooManyCandidatesError",
-    "converged_periodic_boundaries",
-    "critical_amplitude",
-    "golden_section_max",
-    "instability_regions",
-    "region_boundaries",
-    "SearchWork",
-    "search_work",
-    "LinearPeriodicSystem",
-    "StepLimitError",
-    "floquet_exponents",
-    "floquet_multipliers",
-    "growth_rate",
-    "hill_exponents",
-    "monodromy",
-    "periodic_boundaries",
-    "periodic_system",
-    "steady_frequencies",
-    "step_counts",
-    "StabilityCertificate",
-    "stability_certificate",
-]
+__all__ = ["MATHIEU_SCALE_MAX", "beta_from_discriminants", "characteristic_exponent",
+           "characteristic_value", "damped_tongue", "floquet_discriminant",
+           "tongue_critical_gamma", "tongue_edges", "transition_curves", "DAMPING_MARGIN",
+           "CriticalAmplitude", "InstabilityRegion", "RegionBoundary", "TooManyCandidatesError",
+           "converged_periodic_boundaries", "critical_amplitude", "NoConvergenceError",
+           "brent_max", "expand_bracket", "golden_section_max", "illinois_root",
+           "instability_regions", "region_boundaries", "SearchWork", "search_work",
+           "LinearPeriodicSystem", "StepLimitError", "MAX_STEPS", "PeriodMapOverflowError",
+           "floquet_exponents", "floquet_multipliers", "growth_rate", "hill_exponents",
+           "HillModes", "hill_modes", "monodromy", "periodic_boundaries", "periodic_system",
+           "steady_frequencies", "step_counts", "StabilityCertificate", "stability_certificate"]

@@ -1,34 +1,19 @@
-"""A rigorous stability certificate for damped periodic systems (any Omega).
+"""A rigorous stability certificate of M q'' + C q' + (A + B cos Omega t) q = 0 at every Omega.
 
-M q'' + C q' + (A + B cos Omega t) q = 0: a bound of every Floquet exponent.
-
-In the eigenbasis of the steady first-order operator L0 = [[0, I], [-M^-1 A, -M^-1 C]]
-(z = W y, L0 W = W Lambda) the system is y' = (Lambda + cos(Omega t) G) y with
-G = W^-1 N W, N = [[0, 0], [-M^-1 B, 0]].  With positive weights d the logarithmic norm of
-Lambda + c G in the weighted maximum norm ||y|| = max_i |y_i| / d_i (|c| <= 1) is at most
-
-    mu_d = max_i ( -delta_i + sum_j |G_ij| d_j / d_i ),    delta_i = -Re Lambda_i,
-
-(Dahlquist 1959; Desoer & Vidyasagar 1975, ch. 2, sec. 2.8: the matrix measure of the
-infinity norm), and every solution obeys ||y(t)|| <= exp(mu_d t) ||y(0)||: every Floquet
-exponent, at *every* Omega, has Re lambda <= mu_d.  The best weights are the Perron vector of
-Q = diag(1 / delta) |G| (Perron-Frobenius); then mu_d < 0 exactly when rho(Q) < 1, and the
-system is stable for all Omega and for every amplitude B' = g B with g < 1 / rho(Q).
-
-The bound ignores the phases of the coupling (no averaging), so it is conservative: for the
-damped Mathieu equation it certifies mu < zeta / 2 against the true threshold 2 zeta
-(Bolotin 1964, sec. 6), a factor 4.  Where damping dominates the coupling (the vehicle at the
-default damping) it proves, at the cost of one 2n x 2n eigenproblem, that no region exists.
+In the eigenbasis of the steady first-order operator (z = W y) the system is
+y' = (Lambda + cos(Omega t) G) y; with positive weights d the logarithmic norm of
+Lambda + c G (|c| <= 1) in the weighted maximum norm is at most
+mu_d = max_i (-delta_i + sum_j |G_ij| d_j / d_i), delta_i = -Re Lambda_i, a bound of every
+Floquet exponent at every Omega; the best weights are the Perron vector of
+Q = diag(1 / delta) |G|, and mu_d < 0 exactly when rho(Q) < 1 (docs/theory/floquet.md sec. 4).
+Conservative (a factor 4 on the damped Mathieu equation), cheap: one 2n x 2n eigenproblem.
 
 References
 ----------
-.. [1] G. Dahlquist, "Stability and error bounds in the numerical integration of ordinary
-   differential equations", Trans. Roy. Inst. Technol. Stockholm 130 (1959) (logarithmic norm).
+.. [1] G. Dahlquist, Trans. Roy. Inst. Technol. Stockholm 130 (1959) (logarithmic norm).
 .. [2] C. A. Desoer, M. Vidyasagar, *Feedback Systems: Input-Output Properties*, Academic
-   Press, 1975, ch. 2, sec. 2.8 (matrix measure, the bound ||x(t)|| <= exp(int mu) ||x(0)||).
-.. [3] R. A. Horn, C. R. Johnson, *Matrix Analysis*, Cambridge, 1985, sec. 8.3 (Perron
-   vector; rho(Q) < 1 iff Q d < d for some d > 0).
-.. [4] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, sec. 6.
+   Press, 1975, ch. 2, sec. 2.8.
+.. [3] R. A. Horn, C. R. Johnson, *Matrix Analysis*, Cambridge, 1985, sec. 8.3.
 """
 
 from __future__ import annotations
@@ -52,20 +37,13 @@ class StabilityCertificate:
 
     Attributes
     ----------
-    rho : float
-        Spectral radius of Q = diag(1 / delta) |G| (dimensionless); inf when no bound exists
-        (an undamped or unstable steady mode, or an ill-conditioned modal frame).
-    growth_bound : float
-        mu_d with the Perron weights (1 / time unit of the matrices): every Re lambda at every
-        Omega is <= it; inf when no bound exists.
+    rho, growth_bound : float
+        Spectral radius of Q = diag(1 / delta) |G|, and mu_d with the Perron weights (1 / time
+        unit): every Re lambda at every Omega is below it; both inf without a bound.
     certified : bool
-        growth_bound < 0: the system is asymptotically stable for every Omega.
+        growth_bound < 0: asymptotically stable at every Omega.
     amplitude_factor : float
-        1 / rho (dimensionless): B may be scaled by any factor below it and stay certified.
-
-    References
-    ----------
-    Dahlquist (1959); Desoer & Vidyasagar (1975), sec. 2.8.
+        1 / rho: how far B may be scaled and stay certified.
     """
 
     rho: float
@@ -87,7 +65,24 @@ _NONE = StabilityCertificate(rho=np.inf, growth_bound=np.inf, certified=False,
                              amplitude_factor=0.0)
 
 
-def _certificate(system: LinearPeriodicSystem) -> StabilityCertificate:
+def stability_certificate(M, C, A, B) -> StabilityCertificate:
+    """Bound of every Floquet exponent of M q'' + C q' + (A + B cos Omega t) q = 0, any Omega.
+
+    Parameters
+    ----------
+    M, C, A, B : array_like
+        The system M q'' + C q' + (A + B cos Omega t) q = 0, each (n, n), C may be None
+        (:func:`flexbooster.floquet.periodic_system`); or a LinearPeriodicSystem as M.
+
+    Returns
+    -------
+    StabilityCertificate
+        No bound (``certified`` False) without damping, with an undamped or unstable steady
+        mode, or a modal frame of condition above 1e8.
+    """
+    system = M if isinstance(M, LinearPeriodicSystem) else periodic_system(M, C, A, B)
+    if not system.damped:
+        return _NONE
     n = system.n
     L0 = np.block([[np.zeros((n, n)), np.eye(n)], [-system.K0, -system.Kc]])
     lam, W = np.linalg.eig(L0)
@@ -113,30 +108,3 @@ def _certificate(system: LinearPeriodicSystem) -> StabilityCertificate:
     mu = float(np.max(-delta + (G @ d) / d))
     return StabilityCertificate(rho=rho, growth_bound=mu, certified=bool(mu < 0.0),
                                 amplitude_factor=1.0 / rho if rho > 0.0 else np.inf)
-
-
-def stability_certificate(M, C, A, B) -> StabilityCertificate:
-    """Bound of every Floquet exponent of M q'' + C q' + (A + B cos Omega t) q = 0, any Omega.
-
-    Parameters
-    ----------
-    M, C, A, B : array_like
-        The system, each (n, n) (see :func:`flexbooster.floquet.periodic_system`; C may be
-        None, then no bound exists); a :class:`LinearPeriodicSystem` may be passed as M.
-
-    Returns
-    -------
-    StabilityCertificate
-        ``certified`` is True when the weighted logarithmic norm (module docstring) is
-        negative: the system is asymptotically stable at every Omega (no instability region
-        at all); ``amplitude_factor`` is how far B may be scaled and stay certified.
-
-    References
-    ----------
-    Dahlquist (1959); Desoer & Vidyasagar (1975), ch. 2, sec. 2.8; Horn & Johnson (1985),
-    sec. 8.3.
-    """
-    system = M if isinstance(M, LinearPeriodicSystem) else periodic_system(M, C, A, B)
-    if not system.damped:
-        return _NONE
-    return _certificate(system)

@@ -1,27 +1,24 @@
-"""Harmonic balance for M q'' + C q' + (A + B cos Omega t) q = 0: Hill exponents and boundaries.
+"""Harmonic balance of M q'' + C q' + (A + B cos Omega t) q = 0: Hill's exponents, periodic
+boundaries.
 
-* :func:`hill_exponents`: Hill's infinite determinant truncated at s = -S..S, solved as a
-  linear eigenproblem in the exponent lambda for each Omega (batched).
-* :func:`periodic_boundaries`: Bolotin's harmonic balance for the T- and 2T-periodic solutions,
-  which are the boundaries of the simple (parametric) instability regions, as an eigenproblem
-  in Omega (linear in Omega^2 when C = 0, quadratic in Omega, linearised, when C != 0).
-
-References
-----------
-.. [1] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, ch. 1
-   (sec. 3-5: harmonic balance, eqs. (3.4)-(3.9) for the boundaries with period 2T and T),
-   ch. 2 (sec. 7-8: matrix form; Hill's determinant).
-.. [2] W. Magnus, S. Winkler, *Hill's Equation*, Wiley, 1966, ch. 2 (Hill's determinant).
+:func:`hill_exponents` and :func:`hill_modes`: Hill's infinite determinant truncated at
+s = -S..S, a linear eigenproblem in the exponent per Omega (batched);
+:func:`periodic_boundaries`: the T- and 2T-periodic solutions that bound the simple regions,
+an eigenproblem in Omega (Bolotin 1964, ch. 1 sec. 3-5, ch. 2 sec. 7-8; Magnus & Winkler 1966,
+ch. 2).
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 import scipy.linalg
 
-from .multipliers import LinearPeriodicSystem, _omega, periodic_system
+from .multipliers import LinearPeriodicSystem, as_omega, periodic_system
 
-__all__ = ["hill_exponents", "periodic_boundaries", "converged_periodic_boundaries"]
+__all__ = ["HillModes", "hill_exponents", "hill_modes", "periodic_boundaries",
+           "converged_periodic_boundaries"]
 
 
 def _system(M, C, A, B) -> LinearPeriodicSystem:
@@ -35,73 +32,120 @@ def _harmonics(name: str, value, low: int = 0, high: int = 200) -> int:
     return int(value)
 
 
-def hill_exponents(M, C, A, B, Omega, *, n_harmonics: int = 8, chunk: int = 8) -> np.ndarray:
-    """Characteristic exponents by Hill's determinant truncated at s = -S..S.
+@dataclass(frozen=True)
+class HillModes:
+    """Exponents and Fourier vectors from Hill's truncated determinant.
 
-    With q = exp(lambda t) sum_s c_s exp(i s Omega t) the equation becomes, for each s,
+    Attributes
+    ----------
+    exponents : numpy.ndarray
+        Shape (P, k), lambda (1 / time unit of the matrices).
+    vectors : numpy.ndarray
+        Shape (P, k, 2S + 1, n), unit Fourier vectors c_s (s = -S..S) of
+        q = exp(lambda t) sum_s c_s exp(i s Omega t).
+    centroid : numpy.ndarray
+        Shape (P, k), sum_s s |c_s|^2.
+    """
 
-        M (lambda + i s Omega)^2 c_s + C (lambda + i s Omega) c_s + A c_s
-            + (B / 2) (c_{s-1} + c_{s+1}) = 0,
+    exponents: np.ndarray
+    vectors: np.ndarray
+    centroid: np.ndarray
 
-    linearised with y_s = (lambda + i s Omega) c_s into the 2n(2S + 1) eigenproblem
-    lambda [c; y] = [[-D, I], [-M^-1 H, -D - M^-1 C]] [c; y], D = diag(i s Omega).  Of its
-    eigenvalues (each repeated modulo i Omega) the 2n whose Fourier vectors are most central
-    (smallest |sum_s s |c_s|^2|) are returned.
+
+def _spectra(system: LinearPeriodicSystem, om: np.ndarray, S: int, chunk: int,
+             amplitude: np.ndarray | None, real_form: bool):
+    """Per chunk of points: (slice, lambda (P, 2m), c-parts (P, 2S + 1, n, 2m), centroids).
+
+    With y_s = (lambda + i s Omega) c_s the Hill equations are the 2m = 2n(2S + 1) eigenproblem
+    lambda [c; y] = [[-D, I], [-M^-1 H, -D - M^-1 C]] [c; y], D = diag(i s Omega), H the Hill
+    matrix (Bolotin 1964, eq. (7.4)).  With ``real_form`` an undamped system is solved in the
+    real form mu [c; y'] = [[-D', I], [M^-1 H, -D']] [c; y'] (lambda = i mu,
+    D' = diag(s Omega), y = i y'): a third of the work of the complex one.
+    """
+    n = system.n
+    h = 2 * S + 1
+    m = n * h
+    s = np.arange(-S, S + 1)
+    K0 = np.kron(np.eye(h), system.K0)  # blocks coupling s and s +- 1 below
+    Kb = np.kron(np.eye(h, k=1) + np.eye(h, k=-1), 0.5 * system.Kb)
+    Cm = np.kron(np.eye(h), system.Kc)
+    idx = np.arange(m)
+    for start in range(0, om.size, chunk):
+        sl = slice(start, start + chunk)
+        ob = om[sl]
+        P = ob.size
+        Hm = K0[None] + (Kb[None] if amplitude is None else amplitude[sl, None, None] * Kb[None])
+        D = np.repeat(s, n)[None, :] * ob[:, None]  # (P, m)
+        real = real_form and not system.damped
+        if not real:
+            Mat = np.zeros((P, 2 * m, 2 * m), dtype=complex)
+            Mat[:, m:, :m] = -Hm
+            Mat[:, m:, m:] = -Cm[None]
+            D = 1j * D
+        else:
+            Mat = np.zeros((P, 2 * m, 2 * m))
+            Mat[:, m:, :m] = Hm
+        Mat[:, idx, idx] = -D
+        Mat[:, idx, m + idx] = 1.0
+        Mat[:, m + idx, m + idx] -= D
+        lam, vec = np.linalg.eig(Mat)
+        if real:
+            lam = 1j * lam
+        C = vec[:, :m, :].reshape(P, h, n, 2 * m)
+        w = np.sum(np.abs(C) ** 2, axis=2)  # (P, h, 2m)
+        cen = np.einsum("s,psk->pk", s.astype(float), w / np.sum(w, axis=1, keepdims=True))
+        yield sl, lam, C, cen
+
+
+def _hill_arguments(M, C, A, B, Omega, n_harmonics, chunk, amplitude):
+    system = _system(M, C, A, B)
+    om = as_omega(Omega)
+    S = _harmonics("n_harmonics", n_harmonics, 0, 500)
+    if not isinstance(chunk, int | np.integer) or chunk < 1:
+        raise ValueError(f"chunk = {chunk!r}: must be an integer >= 1")
+    if amplitude is not None:
+        amplitude = np.broadcast_to(np.asarray(amplitude, dtype=float), om.shape)
+        if not np.all(np.isfinite(amplitude)):
+            raise ValueError(f"amplitude = {amplitude!r}: must be finite")
+    return system, om, S, amplitude
+
+
+def hill_exponents(M, C, A, B, Omega, *, n_harmonics: int = 8, chunk: int = 8,
+                   amplitude=None, real_form: bool = False) -> np.ndarray:
+    """Characteristic exponents lambda by Hill's determinant truncated at s = -S..S.
+
+    M (lambda + i s Omega)^2 c_s + C (lambda + i s Omega) c_s + A c_s + (B / 2)(c_(s-1) + c_(s+1))
+    = 0: of the eigenvalues (each repeated modulo i Omega) the 2n distinct ones whose Fourier
+    vectors are most central (Bolotin 1964, sec. 7-8; Magnus & Winkler 1966, ch. 2).
 
     Parameters
     ----------
     M, C, A, B : array_like
-        The system (see :func:`flexbooster.floquet.multipliers.periodic_system`).
+        The system M q'' + C q' + (A + B cos Omega t) q = 0, each (n, n), C may be None
+        (:func:`flexbooster.floquet.periodic_system`); or a LinearPeriodicSystem as M.
     Omega : array_like
-        Pulsation frequencies, shape (P,) (rad per time unit of the matrices), > 0.
+        Shape (P,), rad per time unit of the matrices, > 0.
     n_harmonics : int
-        S, harmonics s = -S..S, 0..200.
+        S, 0..500.
     chunk : int
         Points per batched eigen-solve (memory).
+    amplitude : array_like, optional
+        Shape (P,): point p has the excitation amplitude[p] B (default 1).
+    real_form : bool
+        Solve an undamped system in its real form (lambda = i mu): a third of the work.
 
     Returns
     -------
     numpy.ndarray
-        Shape (P, 2n), complex exponents lambda (1 / time unit); max Re lambda is the growth
-        rate.  Truncation error falls fast with S when Omega is not small against the
-        frequencies (Hill's method is the cheap one for few modes and Omega ~ omega).
-
-    References
-    ----------
-    Bolotin (1964), sec. 7-8; Magnus & Winkler (1966), ch. 2.
+        Shape (P, 2n), lambda (1 / time unit); exact as S grows when Omega is not small against
+        the frequencies.
     """
-    system = _system(M, C, A, B)
-    om = _omega(Omega)
-    S = _harmonics("n_harmonics", n_harmonics)
-    if not isinstance(chunk, int | np.integer) or chunk < 1:
-        raise ValueError(f"chunk = {chunk!r}: must be an integer >= 1")
-    n = system.n
-    h = 2 * S + 1
-    m = n * h
-    if 2 * m > 4000:
-        raise ValueError(f"n_harmonics = {S}: the Hill matrix would be {2 * m} x {2 * m} "
-                         "(> 4000) for this system: use the monodromy")
-    s = np.arange(-S, S + 1)
-    Hm = np.kron(np.eye(h), system.K0) + np.kron(
-        np.eye(h, k=1) + np.eye(h, k=-1), 0.5 * system.Kb)  # M^-1 H, Hill matrix
-    Cm = np.kron(np.eye(h), system.Kc)
-    out = []
-    for start in range(0, om.size, chunk):
-        ob = om[start:start + chunk]
-        P = ob.size
-        D = 1j * np.repeat(s, n)[None, :] * ob[:, None]  # (P, m)
-        Mat = np.zeros((P, 2 * m, 2 * m), dtype=complex)
-        idx = np.arange(m)
-        Mat[:, idx, idx] = -D
-        Mat[:, idx, m + idx] = 1.0
-        Mat[:, m:, :m] = -Hm[None]  # Bolotin (1964) eq. (7.4) in first-order form
-        Mat[:, m:, m:] = -Cm[None]
-        Mat[:, m + idx, m + idx] -= D
-        lam, vec = np.linalg.eig(Mat)
-        w = np.sum(np.abs(vec[:, :m, :].reshape(P, h, n, 2 * m)) ** 2, axis=2)
-        cen = np.einsum("s,psk->pk", s.astype(float), w / np.sum(w, axis=1, keepdims=True))
-        out.append(_distinct_central(lam, cen, ob, 2 * n))
-    return np.concatenate(out)
+    system, om, S, amplitude = _hill_arguments(M, C, A, B, Omega, n_harmonics, chunk,
+                                               amplitude)
+    out = np.empty((om.size, 2 * system.n), dtype=complex)
+    for sl, lam, _, cen in _spectra(system, om, S, chunk, amplitude, real_form):
+        out[sl] = _distinct_central(lam, cen, om[sl], 2 * system.n)
+    return out
 
 
 def _distinct_central(lam: np.ndarray, cen: np.ndarray, om: np.ndarray,
@@ -129,41 +173,60 @@ def _distinct_central(lam: np.ndarray, cen: np.ndarray, om: np.ndarray,
     return np.take_along_axis(lam, pick, axis=1)
 
 
+def hill_modes(M, C, A, B, Omega, *, n_harmonics: int = 8, chunk: int = 8,
+               amplitude=None, real_form: bool = False) -> HillModes:
+    """The 2n eigenvalues of Hill's determinant whose Fourier vectors are most central.
+
+    Parameters
+    ----------
+    M, C, A, B, Omega, n_harmonics, chunk, amplitude, real_form
+        As :func:`hill_exponents`.
+
+    Returns
+    -------
+    HillModes
+        Not shifted, copies modulo i Omega kept, with their unit vectors and centroids.
+    """
+    system, om, S, amplitude = _hill_arguments(M, C, A, B, Omega, n_harmonics, chunk,
+                                               amplitude)
+    k = 2 * system.n
+    lams, vecs, cents = [], [], []
+    for _, lam, Cv, cen in _spectra(system, om, S, chunk, amplitude, real_form):
+        P = lam.shape[0]
+        sel = np.argsort(np.abs(cen), axis=1, kind="stable")[:, :k]
+        vec = np.take_along_axis(Cv, sel[:, None, None, :], axis=3)
+        vec = vec / np.linalg.norm(vec.reshape(P, -1, k), axis=1)[:, None, None, :]
+        lams.append(np.take_along_axis(lam, sel, axis=1))
+        vecs.append(np.moveaxis(vec, 3, 1))
+        cents.append(np.take_along_axis(cen, sel, axis=1))
+    return HillModes(exponents=np.concatenate(lams), vectors=np.concatenate(vecs),
+                     centroid=np.concatenate(cents))
+
+
 def periodic_boundaries(M, C, A, B, *, period: str = "2T", n_harmonics: int = 8,
                         omega_max: float | None = None) -> np.ndarray:
     """Omega at which a T- or 2T-periodic solution exists (simple-region boundaries).
 
-    Harmonic balance with q = sum_k c_k exp(i k Omega t / 2), k odd (period 2T: boundaries of
-    the regions near 2 omega / j, j odd) or k even (period T: j even), |k| <= K:
-
-        [A - (k Omega / 2)^2 M + i (k Omega / 2) C] c_k + (B / 2) (c_{k-2} + c_{k+2}) = 0,
-
-    a quadratic eigenproblem in Omega (Bolotin 1964, eqs. (3.4)-(3.9) and sec. 8 for the
-    matrix form); with C = 0 it is the generalised eigenproblem for Omega^2.
+    [A - (k Omega / 2)^2 M + i (k Omega / 2) C] c_k + (B / 2)(c_(k-2) + c_(k+2)) = 0 for
+    q = sum_k c_k exp(i k Omega t / 2): an eigenproblem in Omega^2 (undamped) or quadratic in
+    Omega (Bolotin 1964, ch. 1 sec. 3-5, ch. 2 sec. 8).
 
     Parameters
     ----------
     M, C, A, B : array_like
-        The system (see :func:`flexbooster.floquet.multipliers.periodic_system`).
+        The system M q'' + C q' + (A + B cos Omega t) q = 0, each (n, n), C may be None
+        (:func:`flexbooster.floquet.periodic_system`); or a LinearPeriodicSystem as M.
     period : {"2T", "T"}
-        Period of the boundary solutions.
+        k odd (regions near 2 omega / j, j odd) or even (j even).
     n_harmonics : int
-        Number of positive harmonics kept (k = 1, 3, .. 2K - 1 for 2T; k = 0, 2, .. 2K for T),
-        1..100.  Boundaries of the region of order j need K well above j / 2: compare two
-        values of K (the regions' search uses the monodromy instead).
+        K, |k| <= 2K, 1..100; the boundaries of order j need K well above j / 2.
     omega_max : float, optional
-        Only roots with 0 < Omega <= omega_max are returned.
+        Only roots 0 < Omega <= omega_max.
 
     Returns
     -------
     numpy.ndarray
-        Sorted real positive Omega (rad per time unit of the matrices) of the truncated
-        problem (roots with |Im Omega| > 1e-9 |Omega| are dropped: with damping these are
-        boundaries of a region that does not exist at this amplitude).
-
-    References
-    ----------
-    Bolotin (1964), ch. 1 sec. 3-5, ch. 2 sec. 8.
+        Sorted real roots (|Im| > 1e-9 |Omega| dropped) of the truncated problem.
     """
     system = _system(M, C, A, B)
     K = _harmonics("n_harmonics", n_harmonics, 1, 100)
@@ -206,34 +269,21 @@ def converged_periodic_boundaries(M, C, A, B, *, period: str = "2T", omega_min: 
                                   max_harmonics: int = 64) -> tuple[np.ndarray, int]:
     """:func:`periodic_boundaries` with the harmonics raised until the roots converge.
 
-    K = 4, 8, 12, ... until the roots in [omega_min, omega_max] are the same in number and
-    agree to rtol * omega_max for two successive K (Bolotin 1964, sec. 4-5: the truncated
-    determinants converge to the boundaries as harmonics are added).
-
     Parameters
     ----------
-    M, C, A, B : array_like
-        The system (see :func:`flexbooster.floquet.multipliers.periodic_system`).
-    period : {"2T", "T"}
-        Period of the boundary solutions.
+    M, C, A, B, period
+        As :func:`periodic_boundaries`.
     omega_min, omega_max : float
-        Range of Omega of interest (rad per time unit), 0 < omega_min < omega_max.  Low roots
-        of a truncation (near 2 omega / (2K)) are poor: the range keeps them out of the test.
+        Range of the roots (rad per time unit), 0 < omega_min < omega_max.
     rtol : float
-        Convergence tolerance relative to omega_max (dimensionless), > 0.
+        Two successive K = 4, 8, .. agree to rtol * omega_max, with as many roots.
     max_harmonics : int
-        Largest K tried, 8..100; ValueError if the roots have not converged by then.
+        Largest K, 8..100 (ValueError past it).
 
     Returns
     -------
-    roots : numpy.ndarray
-        Converged roots in the range (rad per time unit), from the larger K.
-    K : int
-        The number of harmonics used.
-
-    References
-    ----------
-    Bolotin (1964), ch. 1 sec. 4-5, ch. 2 sec. 8.
+    roots, K : numpy.ndarray, int
+        The converged roots in the range and the K used (Bolotin 1964, ch. 1 sec. 4-5).
     """
     for name, v in (("omega_min", omega_min), ("omega_max", omega_max), ("rtol", rtol)):
         if not np.isfinite(v) or v <= 0.0:

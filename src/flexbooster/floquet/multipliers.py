@@ -1,21 +1,16 @@
 """Monodromy matrix, Floquet multipliers, growth rates of M q'' + C q' + (A + B cos Omega t) q = 0.
 
-Two kernels, both Lawson (integrating-factor) fourth-order Runge-Kutta schemes in which the
-steady system (B = 0) is propagated exactly:
-
-* ``C = 0`` (the system is time-reversible, A(t) is even): second-order form in the modal frame
-  of the steady system, eta'' + diag(mu) eta = -cos(Omega t) Bt eta with mu the eigenvalues of
-  M^-1 A and Bt = V^-1 M^-1 B V; only the half period is integrated and the period map follows
-  from reversibility, Phi(T) = R Phi(T/2)^-1 R Phi(T/2), R = diag(I, -I).  The half-period map
-  also gives the n values s = rho + 1/rho directly (eigenvalues of 2 U11, U = Phi R Phi^-1).
-* ``C != 0``: first-order form z' = (L0 + cos(Omega t) N) z over the full period with the
-  exponential of L0 from ``scipy.linalg.expm`` (works for defective L0 too).
+Lawson (integrating-factor) fourth-order Runge-Kutta, the steady system (B = 0) propagated
+exactly.  ``C = 0`` (time-reversible, A(t) even): in the modal frame of the steady system,
+eta'' + diag(mu) eta = -cos(Omega t) Bt eta, over half a period; the period map follows from
+reversibility, Phi(T) = R Phi(T/2)^-1 R Phi(T/2), R = diag(I, -I).  ``C != 0``: first-order
+form over the full period with the exponential of L0 from ``scipy.linalg.expm``.  Point p may
+carry its own amplitude a_p B and its own step count.
 
 References
 ----------
 .. [1] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, ch. 1-2.
-.. [2] W. Magnus, S. Winkler, *Hill's Equation*, Wiley, 1966, ch. 1-2 (Floquet theory,
-   time-reversible (even) coefficients, rho + 1/rho from the half period).
+.. [2] W. Magnus, S. Winkler, *Hill's Equation*, Wiley, 1966, ch. 1-2.
 .. [3] J. D. Lawson, "Generalized Runge-Kutta processes for stable systems with large Lipschitz
    constants", SIAM J. Numer. Anal. 4 (1967) 372-380.
 """
@@ -27,19 +22,13 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.linalg
 
-__all__ = [
-    "LinearPeriodicSystem",
-    "periodic_system",
-    "steady_frequencies",
-    "step_counts",
-    "StepLimitError",
-    "monodromy",
-    "floquet_multipliers",
-    "floquet_exponents",
-    "growth_rate",
-]
+__all__ = ["MAX_STEPS", "LinearPeriodicSystem", "periodic_system", "steady_frequencies",
+           "as_omega", "step_counts", "StepLimitError", "PeriodMapOverflowError",
+           "half_period_maps", "period_maps", "s_matrices", "s_value_sets", "largest_multiplier",
+           "monodromy", "floquet_multipliers", "floquet_exponents", "growth_rate"]
 
-_MAX_STEPS = 200_000  # default cap on steps per integrated period (half period when C = 0)
+#: Default cap on the steps per integrated period (half period when C = 0).
+MAX_STEPS = 200_000
 #: Bytes of the work arrays of one block of points of the modal Lawson march (1 MiB: within
 #: the L2 cache of one core of current x86 and ARM processors, 1-2 MiB).
 _MODAL_BLOCK_BYTES = 1 << 20
@@ -49,6 +38,16 @@ class StepLimitError(ValueError):
     """A monodromy would need more integration steps than ``max_steps`` (Omega too small for
     the frequencies of the system, one line naming Omega): a computation past a resource
     limit, not a wrong argument."""
+
+
+class PeriodMapOverflowError(ValueError):
+    """The period map left the floating-point range (a growth over one period beyond ~1e308,
+    or a map singular to working precision that QZ cannot resolve): the system is far past a
+    divergence or flutter load at that Omega.  ``Omega`` is the first such pulsation."""
+
+    def __init__(self, message: str, Omega: float) -> None:
+        super().__init__(message)
+        self.Omega = float(Omega)
 
 
 def _matrix(name: str, value, n: int | None) -> np.ndarray:
@@ -82,19 +81,12 @@ class LinearPeriodicSystem:
     Attributes
     ----------
     K0, Kc, Kb : numpy.ndarray
-        M^-1 A, M^-1 C, M^-1 B, shape (n, n) (units of the matrices' time unit^-2, ^-1, ^-2).
+        M^-1 A, M^-1 C, M^-1 B, (n, n).
     damped : bool
-        True when C != 0.
-    mu : numpy.ndarray
-        Eigenvalues of M^-1 A (squared steady frequencies), complex shape (n,).
-    V : numpy.ndarray or None
-        Eigenvectors of M^-1 A (None when ill-conditioned: the dense kernel is used).
-    Bt : numpy.ndarray or None
-        V^-1 M^-1 B V (modal frame).
-
-    References
-    ----------
-    Bolotin (1964), sec. 2 (matrix equations of dynamic stability).
+        C != 0.
+    mu, V, Bt : numpy.ndarray
+        Eigenvalues of M^-1 A (ascending), its eigenvectors and V^-1 M^-1 B V (V, Bt None when
+        V is ill-conditioned: the dense kernel is used).
     """
 
     K0: np.ndarray
@@ -118,33 +110,18 @@ class LinearPeriodicSystem:
 
 
 def periodic_system(M, C, A, B) -> LinearPeriodicSystem:
-    """Validate and pre-process M q'' + C q' + (A + B cos Omega t) q = 0.
+    """Validate and pre-process M q'' + C q' + (A + B cos Omega t) q = 0 (Bolotin 1964, sec. 2).
 
     Parameters
     ----------
-    M : array_like
-        Mass matrix, shape (n, n), invertible (kg or normalised, dimensionless).
-    C : array_like or None
-        Damping matrix, shape (n, n) (kg/s or normalised); None or 0 for no damping.
-    A : array_like
-        Steady stiffness matrix, shape (n, n), may be non-symmetric (N/m or normalised).
-    B : array_like
-        Amplitude of the cos(Omega t) stiffness, shape (n, n), may be non-symmetric (same unit
-        as A).
+    M, C, A, B : array_like
+        Each (n, n), any consistent units; M invertible, C None or 0 for no damping, A and B
+        possibly non-symmetric.
 
     Returns
     -------
     LinearPeriodicSystem
-        The matrices divided by M and the modal frame of M^-1 A.
-
-    Raises
-    ------
-    ValueError
-        Naming the argument: non-finite entries, wrong shapes, singular M.
-
-    References
-    ----------
-    Bolotin (1964), sec. 2 (matrix form of the equations of dynamic stability).
+        ValueError naming the argument for non-finite entries, wrong shapes, a singular M.
     """
     M = _matrix("M", M, None)
     n = M.shape[0]
@@ -177,29 +154,29 @@ def steady_frequencies(M, A, *, C=None) -> np.ndarray:
 
     Parameters
     ----------
-    M : array_like
-        Mass matrix (n, n), invertible.
-    A : array_like
-        Steady stiffness matrix (n, n).
+    M, A : array_like
+        Mass and steady stiffness, (n, n).
     C : array_like, optional
-        Damping matrix (only validated; the undamped frequencies are returned).
+        Damping (only validated).
 
     Returns
     -------
     numpy.ndarray
-        Shape (n,), complex, principal square roots (rad per time unit of the matrices), sorted
-        by the squared frequency; a non-real or zero value means the steady system is not
-        stable (flutter or divergence).
-
-    References
-    ----------
-    Bolotin (1964), sec. 2.
+        Shape (n,), complex, ascending in the squared frequency; a non-real or zero value means
+        flutter or divergence (Bolotin 1964, sec. 2).
     """
     system = periodic_system(M, C, A, np.zeros_like(np.asarray(M, dtype=float)))
     return np.sqrt(system.mu)
 
 
-def _omega(Omega) -> np.ndarray:
+def as_omega(Omega) -> np.ndarray:
+    """``Omega`` as a non-empty 1-D float array of finite values > 0.
+
+    Parameters
+    ----------
+    Omega : array_like
+        Pulsation frequencies (rad per time unit); ValueError otherwise.
+    """
     try:
         om = np.atleast_1d(np.asarray(Omega, dtype=float))
     except (TypeError, ValueError):
@@ -210,30 +187,12 @@ def _omega(Omega) -> np.ndarray:
 
 
 def _rates(system: LinearPeriodicSystem) -> tuple[np.ndarray, np.ndarray]:
-    """Steady frequencies and coupling magnitudes of the cost model of :func:`step_counts`.
+    """Steady frequencies w (m,) and coupling magnitudes b (m, m) of :func:`step_counts`.
 
-    Without damping (modal frame available): w_j = |omega_j| and b_jk = |B~_jk|,
-    B~ = V^-1 M^-1 B V.  With damping (or an ill-conditioned V) they come from the damped
-    first-order frame z = W y, y' = (Lambda + cos(Omega t) G) y with G = W^-1 N W,
-    N = [[0, 0], [-M^-1 B, 0]]: w_j = |lambda_j| and b_jk = 2 |lambda_j| |G_jk|, the columns of
-    W scaled to a unit q-part like those of V.  Without damping that frame has
-    lambda_j = +-i omega_j and G_jk = -B~_jk / (2 lambda_j), so b = |B~| there: damped and
-    undamped systems get the same count per unit time as C -> 0 (derivation with units:
-    docs/theory/floquet.md sec. 2, "Cost model and cap").  A defective steady operator
-    (cond W > 1e8) gets b_jk = max |M^-1 B|.
-
-    Parameters
-    ----------
-    system : LinearPeriodicSystem
-        From :func:`periodic_system`.
-
-    Returns
-    -------
-    w : numpy.ndarray
-        Shape (m,), steady frequencies (rad per time unit of the matrices), m = n undamped,
-        2n damped.
-    b : numpy.ndarray
-        Shape (m, m), coupling magnitudes (time unit^-2), row j the mode driven.
+    Without damping w_j = |omega_j|, b = |Bt|; with it (or no modal frame) from the damped
+    first-order frame z = W y, G = W^-1 N W, N = [[0, 0], [-M^-1 B, 0]]: w_j = |lambda_j|,
+    b_jk = 2 |lambda_j| |G_jk| (-> |Bt_jk| as C -> 0; docs/theory/floquet.md sec. 2); a
+    defective steady operator (cond W > 1e8) gets b = max |M^-1 B|.
     """
     if not system.damped and system.Bt is not None:
         return np.abs(np.sqrt(system.mu)), np.abs(system.Bt)
@@ -250,54 +209,52 @@ def _rates(system: LinearPeriodicSystem) -> tuple[np.ndarray, np.ndarray]:
 
 
 def step_counts(system: LinearPeriodicSystem, Omega, *, step_phase: float = 0.06,
-                max_steps: int = _MAX_STEPS) -> np.ndarray:
+                max_steps: int = MAX_STEPS, amplitude=None, levels_per_octave: int = 2,
+                clip: bool = False) -> np.ndarray:
     """Steps per integrated interval (half period if C = 0, else one period): the cost model.
 
-    In the steady frame the term coupling modes j, k oscillates at nu_jk = w_j + w_k + Omega
-    with rate g_jk = b_jk / max(w_j, Omega / 2) (1/time; w, b from the modal frame without
-    damping, from the damped first-order frame with it, the same as C -> 0: see
-    :func:`_rates`); a fourth-order step errs by about g (h nu)^4 / nu, so
-    h max_jk nu_jk^(3/4) g_jk^(1/4) <= step_phase (dimensionless, independent of the time
-    unit).  The count grows like 1 / Omega as Omega -> 0 (the period grows): it is capped.
+    The term coupling modes j, k oscillates at nu_jk = w_j + w_k + Omega with rate g_jk =
+    a b_jk / max(w_j, Omega / 2) (:func:`_rates`); a fourth-order step errs by about
+    g (h nu)^4 / nu, so h max nu^(3/4) g^(1/4) <= step_phase (Lawson 1967; docs/theory/floquet.md).
 
     Parameters
     ----------
     system : LinearPeriodicSystem
         From :func:`periodic_system`.
     Omega : array_like
-        Pulsation frequencies (rad per time unit of the matrices), > 0.
+        Shape (P,), rad per time unit, > 0.
     step_phase : float
-        Tolerance parameter (rad), > 0; error on the exponents ~ step_phase^4 (about 1e-9 of
-        the largest steady frequency at 0.06, damped or not).
+        > 0; error on the exponents ~ step_phase^4 (about 1e-9 of the largest frequency at 0.06).
     max_steps : int
-        Cap; exceeding it raises.
+        Cap: :class:`StepLimitError` beyond it (naming Omega), or with ``clip`` the cap itself.
+    amplitude : array_like, optional
+        Shape (P,), the amplitude a of each point (default 1).
+    levels_per_octave : int
+        Counts rounded up to 2^(k / levels_per_octave): few batches.
+    clip : bool
+        Cap the counts instead of raising (a bounded cost, a larger error).
 
     Returns
     -------
     numpy.ndarray
-        Integer step counts, shape (P,), rounded up to 2^(k/2) so points batch in few
-        groups.
-
-    Raises
-    ------
-    StepLimitError
-        If a count would exceed max_steps (a ValueError; the message gives the estimate and
-        the Omega).
-
-    References
-    ----------
-    Lawson (1967); error model of the flexbooster beam-action kernel (docs/theory/floquet.md).
+        Integer counts, shape (P,); they grow like 1 / Omega.
     """
-    om = _omega(Omega)
+    om = as_omega(Omega)
     if not (np.isfinite(step_phase) and step_phase > 0.0):
         raise ValueError(f"step_phase = {step_phase!r}: must be finite and > 0")
     w, b = _rates(system)
     interval = (2.0 if system.damped else 1.0) * np.pi / om  # full or half period
     nu = w[:, None] + w[None, :] + om[:, None, None]
-    g = b[None] / np.maximum(w[None, :, None], 0.5 * om[:, None, None])
+    if amplitude is not None:
+        b = np.abs(np.broadcast_to(np.asarray(amplitude, dtype=float), om.shape))[:, None,
+                                                                                 None] * b
+    g = b / np.maximum(w[None, :, None], 0.5 * om[:, None, None])
     rate = np.max(nu**0.75 * g**0.25, axis=(1, 2))
     steps = np.maximum(8.0, np.ceil(interval * rate / step_phase))
-    steps = np.ceil(2.0 ** (np.ceil(2.0 * np.log2(steps)) / 2.0))  # 2^(k/2): few batches
+    k = float(levels_per_octave)  # 2^(j/k): few batches
+    steps = np.ceil(2.0 ** (np.ceil(k * np.log2(steps)) / k))
+    if clip:
+        return np.minimum(steps, max_steps).astype(int)
     worst = int(np.argmax(steps))
     if steps[worst] > max_steps:
         raise StepLimitError(f"Omega = {float(om[worst]):.6g}: needs about {int(steps[worst])} "
@@ -315,13 +272,11 @@ def _rotation(mu: np.ndarray, t: np.ndarray) -> tuple[np.ndarray, ...]:
     return np.cos(wt), sn, -mu * sn
 
 
-def _half_modal(system: LinearPeriodicSystem, om: np.ndarray, n_steps: np.ndarray) -> np.ndarray:
-    """Phi(T/2) in modal coordinates (eta, eta'), shape (P, 2n, 2n); Lawson RK4.
-
-    ``n_steps`` (P,) is each point's own step count, in descending order: all points advance
-    together and a point leaves the batch (its map stored) once its own count is done, so
-    the loop runs max(n_steps) times whatever the spread of the counts (the batch of
-    descending step counts of :mod:`flexbooster.memo.beam_action`).
+def _half_modal(system: LinearPeriodicSystem, om: np.ndarray, n_steps: np.ndarray,
+                amp: np.ndarray) -> np.ndarray:
+    """Phi(T/2) in modal coordinates (eta, eta'), shape (P, 2n, 2n); Lawson RK4, point p with
+    amp[p] B and its own step count (descending: a point leaves the batch when done, so the loop
+    runs max(n_steps) times).
     """
     mu, Bt = system.mu, system.Bt
     real = np.all(mu.imag == 0.0) and np.isrealobj(Bt) and np.all(mu.real > 0.0)
@@ -337,32 +292,28 @@ def _half_modal(system: LinearPeriodicSystem, om: np.ndarray, n_steps: np.ndarra
     z[0, idx, :, idx] = 1.0
     z[1, idx, :, n + idx] = 1.0
     with np.errstate(over="ignore", invalid="ignore"):  # overflow is reported by _finite
-        z = _lawson_modal(z, Bt, om * (0.5 * h), n_steps, c1, s1, m1, c2, s2,
+        z = _lawson_modal(z, Bt, om * (0.5 * h), amp, n_steps, c1, s1, m1, c2, s2,
                           h[None, :, None])
     return z.reshape(2 * n, P, 2 * n).transpose(1, 0, 2)
 
 
-def _lawson_modal(z, Bt, phase, n_steps, c1, s1, m1, c2, s2, hh):
+def _lawson_modal(z, Bt, phase, amp, n_steps, c1, s1, m1, c2, s2, hh):
     """The Lawson RK4 loop of :func:`_half_modal` (returns the final z of every point).
 
-    eta'' = -mu eta - cos(Omega t) Bt eta; ``z`` (2, n, P, 2n) holds eta (z[0]) and eta'
-    (z[1]), ``phase`` (P,) is Omega h / 2, the stage times are t = m h / 2.  The points are a
-    prefix of the batch that shrinks as their (descending) step counts are done.  The force
-    of stage i is f_i Bt y (f_i = -cos(Omega t_i) per point): the products Bt y are kept and
-    f_i goes into the (mode, point) coefficients.  The loop is bound by the number of array
-    operations per step, so eta and eta' are updated together where their coefficients
-    differ only (E(h) z, the final sum), k2 and k3 are one matmul call, the cosines of every
-    step are taken at once and the seven coefficient-force products of a step are one
-    product; the step-independent coefficients are stored over the 2n columns.  Each
-    operation is the one of the step written out (same operands, same order): the results do
-    not depend on this arrangement, nor on the batch a point is in.
+    eta'' = -mu eta - a cos(Omega t) Bt eta; ``z`` (2, n, P, 2n) holds eta (z[0]) and eta'
+    (z[1]), ``phase`` (P,) is Omega h / 2, ``amp`` (P,) is a, the stage times are t = m h / 2;
+    the points are a prefix of the batch that shrinks as their (descending) step counts are
+    done.  The loop is bound by the number of array operations per step: the force
+    coefficients of every step are computed at once, k2 and k3 are one matmul, eta and eta'
+    are updated together.  Each operation is the one of the step written out (same operands,
+    same order): the results do not depend on the batch a point is in.
     """
     out = np.empty_like(z)
     n, p = z.shape[1], z.shape[2]  # p: the points still integrating
     steps = int(n_steps[0]) if p else 0
     h6 = hh / 6.0
-    # -cos(Omega t) at every stage time t = m h / 2, m = 0 .. 2 steps, shape (2 steps + 1, P)
-    f = -np.cos(phase[None, :] * np.arange(2 * steps + 1)[:, None])
+    # -a cos(Omega t) at every stage time t = m h / 2, m = 0 .. 2 steps, shape (2 steps + 1, P)
+    f = -(amp * np.cos(phase[None, :] * np.arange(2 * steps + 1)[:, None]))
     k2 = 2 * np.arange(steps)[:, None]
     # per step the force of each coefficient below: f0 (stage t = k h) x 3, f1 ((k + 1/2) h)
     # x 3, f2 ((k + 1) h)
@@ -421,10 +372,10 @@ def _lawson_modal(z, Bt, phase, n_steps, c1, s1, m1, c2, s2, hh):
 
 
 def _period_dense(system: LinearPeriodicSystem, om: np.ndarray, n_steps: int,
-                  half: bool, scale: np.ndarray | None = None) -> np.ndarray:
+                  half: bool, amp: np.ndarray) -> np.ndarray:
     """Phi over one period (or half period) in (q, q'), shape (P, 2n, 2n); dense Lawson RK4.
 
-    With ``scale`` (P,) the amplitude of point p is scale[p] x B (a batch of amplitudes)."""
+    Point p has the excitation amp[p] B."""
     n, P = system.n, om.size
     L0 = np.block([[np.zeros((n, n)), np.eye(n)], [-system.K0, -system.Kc]])
     h = ((1.0 if half else 2.0) * np.pi / om) / n_steps
@@ -432,9 +383,8 @@ def _period_dense(system: LinearPeriodicSystem, om: np.ndarray, n_steps: int,
     E2 = scipy.linalg.expm(L0[None] * (0.5 * h)[:, None, None])
     Kb = system.Kb
     hh = h[:, None, None]
-    amp = np.ones(P) if scale is None else np.asarray(scale, dtype=float)
 
-    def force(t, z):  # N(t) z = (0, -cos(Omega t) M^-1 B q)
+    def force(t, z):  # N(t) z = (0, -a cos(Omega t) M^-1 B q)
         out = np.zeros_like(z)
         out[:, n:, :] = -(amp * np.cos(om * t))[:, None, None] * (Kb @ z[:, :n, :])
         return out
@@ -472,96 +422,118 @@ def _merge_steps(steps: np.ndarray, n: int) -> np.ndarray:
         steps[steps == lo] = hi
 
 
-def _half_maps(system: LinearPeriodicSystem, om: np.ndarray, steps: np.ndarray,
-               chunk: int) -> np.ndarray:
-    """Phi(T/2) (modal frame if available); modal kernel: batches of descending step counts
-    (each point with its own count), dense kernel: batched by equal step counts."""
-    n = system.n
-    out = np.empty((om.size, 2 * n, 2 * n), dtype=complex)
-    if system.Bt is not None:
-        order = np.argsort(-steps, kind="stable")
-        # blocks of points whose work arrays (16 of n x 2n per point, 8 bytes each) stay in
-        # a core's cache: a step of 256 points at n = 11 takes 15 % longer per point
-        block = max(1, min(chunk, _MODAL_BLOCK_BYTES // (256 * n * n)))
-        for start in range(0, order.size, block):
-            sel = order[start:start + block]
-            out[sel] = _half_modal(system, om[sel], steps[sel])
-        return _finite(out, om)
-    steps = _merge_steps(steps, n)
+def _amplitudes(amplitude, om: np.ndarray) -> np.ndarray:
+    if amplitude is None:
+        return np.ones(om.size)
+    amp = np.broadcast_to(np.asarray(amplitude, dtype=float), om.shape)
+    if not np.all(np.isfinite(amp)):
+        raise ValueError(f"amplitude = {amplitude!r:.60}: must be finite")
+    return amp
+
+
+def _dense_maps(system: LinearPeriodicSystem, om: np.ndarray, steps: np.ndarray, chunk: int,
+                half: bool, amp: np.ndarray, out: np.ndarray) -> np.ndarray:
+    """The dense kernel batched by equal (merged) step counts, into ``out``."""
+    steps = _merge_steps(steps, system.n)
     for ns in np.unique(steps):
         where = np.nonzero(steps == ns)[0]
         for start in range(0, where.size, chunk):
             sel = where[start:start + chunk]
-            out[sel] = _period_dense(system, om[sel], int(ns), True)
+            out[sel] = _period_dense(system, om[sel], int(ns), half, amp[sel])
     return _finite(out, om)
+
+
+def half_period_maps(system: LinearPeriodicSystem, Omega, steps: np.ndarray, *,
+                     chunk: int = 256, amplitude=None) -> np.ndarray:
+    """Phi(T/2) of an undamped system, in its modal frame when it has one (complex).
+
+    Parameters
+    ----------
+    system : LinearPeriodicSystem
+        From :func:`periodic_system`.
+    Omega : array_like
+        Shape (P,), rad per time unit of the matrices, > 0.
+    steps : numpy.ndarray
+        Shape (P,), integration steps of each point (:func:`step_counts`).
+    chunk : int
+        Points per batch of the dense kernel (memory).
+    amplitude : array_like, optional
+        Shape (P,): point p has the excitation amplitude[p] B (default 1).
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (P, 2n, 2n): the map of (eta, eta') or (q, q'); :class:`PeriodMapOverflowError`
+        where one overflows.
+    """
+    om = as_omega(Omega)
+    amp = _amplitudes(amplitude, om)
+    steps = np.broadcast_to(np.asarray(steps), om.shape)
+    n = system.n
+    out = np.empty((om.size, 2 * n, 2 * n), dtype=complex)
+    if system.Bt is None:
+        return _dense_maps(system, om, steps, chunk, True, amp, out)
+    order = np.argsort(-steps, kind="stable")
+    # blocks of points whose work arrays (16 of n x 2n per point, 8 bytes each) stay in
+    # a core's cache: a step of 256 points at n = 11 takes 15 % longer per point
+    block = max(1, min(chunk, _MODAL_BLOCK_BYTES // (256 * n * n)))
+    for start in range(0, order.size, block):
+        sel = order[start:start + block]
+        out[sel] = _half_modal(system, om[sel], steps[sel], amp[sel])
+    return _finite(out, om)
+
+
+def period_maps(system: LinearPeriodicSystem, Omega, steps: np.ndarray, *, chunk: int = 256,
+                amplitude=None) -> np.ndarray:
+    """Phi(T) in (q, q') by the dense kernel (damped systems), shape (P, 2n, 2n), real.
+
+    Parameters
+    ----------
+    system, Omega, steps, chunk, amplitude
+        As :func:`half_period_maps` (:class:`PeriodMapOverflowError` likewise).
+    """
+    om = as_omega(Omega)
+    n = system.n
+    steps = np.broadcast_to(np.asarray(steps), om.shape)
+    return _dense_maps(system, om, steps, chunk, False, _amplitudes(amplitude, om),
+                       np.empty((om.size, 2 * n, 2 * n)))
 
 
 def _finite(Phi: np.ndarray, om: np.ndarray) -> np.ndarray:
     """Raise instead of returning an overflowed (inf / NaN) map."""
     bad = ~np.all(np.isfinite(Phi), axis=(-2, -1))
     if np.any(bad):
-        raise ValueError(f"Omega = {om[bad][:5]!r}: the monodromy overflowed (growth over one "
-                         "period beyond floating point)")
+        raise PeriodMapOverflowError(
+            f"Omega = {om[bad][:5]!r}: the monodromy overflowed (growth over one period beyond "
+            "floating point)", om[bad][0])
     return Phi
-
-
-def _full_maps(system: LinearPeriodicSystem, om: np.ndarray, steps: np.ndarray,
-               chunk: int, scale: np.ndarray | None = None) -> np.ndarray:
-    n = system.n
-    out = np.empty((om.size, 2 * n, 2 * n))
-    steps = _merge_steps(steps, n)
-    for ns in np.unique(steps):
-        where = np.nonzero(steps == ns)[0]
-        for start in range(0, where.size, chunk):
-            sel = where[start:start + chunk]
-            out[sel] = _period_dense(system, om[sel], int(ns), False,
-                                     None if scale is None else scale[sel])
-    return _finite(out, om)
 
 
 def _reflection(n: int) -> np.ndarray:
     return np.concatenate([np.ones(n), -np.ones(n)])
 
 
-def _s_values_from_half(Phi: np.ndarray) -> np.ndarray:
-    """s = rho + 1/rho: eigenvalues of 2 U11, U = Phi(T/2) R Phi(T/2)^-1 (reversible case).
+def s_matrices(Phi: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """2 U_11, 2 (U_11 - I), 2 (U_11 + I) from the half-period map of a reversible system.
 
-    With W = Phi(T/2) Phi(T) Phi(T/2)^-1 = U R and U^2 = I, W + W^-1 = U R + R U =
-    diag(2 U11, -2 U22), so the n values rho + 1/rho are the eigenvalues of 2 U11
-    (Magnus & Winkler 1966, sec. 2.2 for n = 1: rho + 1/rho = 2 (y1 y2' + y1' y2)(T/2)).
+    U = Phi R Phi^-1 (Phi = Phi(T/2)), U^2 = I and W + W^-1 = diag(2 U_11, -2 U_22) for W = U R
+    similar to Phi(T): the n values s = rho + 1/rho are the eigenvalues of 2 U_11 (Magnus &
+    Winkler 1966, sec. 2.2).  With P = Phi^-1, s - 2 = eig(-4 Phi_12 P_21) and s + 2 =
+    eig(4 Phi_11 P_11): near rho = +-1 the small eigenvalue is a product of small factors.
+
+    Parameters
+    ----------
+    Phi : numpy.ndarray
+        Shape (P, 2n, 2n), from :func:`half_period_maps`.
+
+    Returns
+    -------
+    S, Xp, Xm : numpy.ndarray
+        Each (P, n, n): the matrices whose eigenvalues are s, s - 2 and s + 2.
     """
     n = Phi.shape[-1] // 2
-    R = _reflection(n)
     if np.iscomplexobj(Phi) and not np.any(Phi.imag):
         Phi = Phi.real  # real eigenvalues come out exactly real (s of a real system)
-    U = np.linalg.solve(np.swapaxes(Phi, -1, -2), np.swapaxes(Phi * R, -1, -2))
-    U = np.swapaxes(U, -1, -2)  # U = (Phi R) Phi^-1
-    return np.linalg.eigvals(2.0 * U[:, :n, :n])
-
-
-def _s_sets_from_half(Phi: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """s, s - 2 and s + 2 from the half-period map, the shifted ones without cancellation.
-
-    Returns (s, s - 2, s + 2), each (P, n), each set in its own order: the eigenvalues of
-    the matrices of :func:`_s_matrices`.
-    """
-    S, Xp, Xm = _s_matrices(Phi)
-    return np.linalg.eigvals(S), np.linalg.eigvals(Xp), np.linalg.eigvals(Xm)
-
-
-def _s_matrices(Phi: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """2 U_11, 2 (U_11 - I), 2 (U_11 + I) from the half-period map, the last two without
-    cancellation: the matrices whose eigenvalues are s, s - 2 and s + 2.
-
-    With P = Phi(T/2)^-1: U - I = Phi (R - I) P and U + I = Phi (R + I) P, so
-    s - 2 = eig(-4 Phi_12 P_21) and s + 2 = eig(4 Phi_11 P_11): near rho = +1 (-1) the
-    small eigenvalue is a product of small factors, accurate relative to itself in the modal
-    frame of a weakly coupled system, where 2 U_11 - 2 I would lose it to cancellation.
-    Each (P, n, n).
-    """
-    n = Phi.shape[-1] // 2
-    if np.iscomplexobj(Phi) and not np.any(Phi.imag):
-        Phi = Phi.real
     Pinv = np.linalg.solve(Phi, np.broadcast_to(np.eye(2 * n), Phi.shape))
     Xm = 4.0 * Phi[:, :n, :n] @ Pinv[:, :n, :n]  # 2 (U_11 + I)
     Xp = -4.0 * Phi[:, :n, n:] @ Pinv[:, n:, :n]  # 2 (U_11 - I)
@@ -569,10 +541,26 @@ def _s_matrices(Phi: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return S, Xp, Xm
 
 
-def _rho_max_from_sets(xp: np.ndarray, xm: np.ndarray) -> np.ndarray:
-    """|rho|_max from s - 2 (used where Re s >= 0) and s + 2 (where Re s < 0).
+def s_value_sets(Phi: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """s, s - 2 and s + 2 (each (P, n), each set in its own order) from the half-period map.
 
-    rho = s/2 + sqrt((s/2 - 1)(s/2 + 1)) with the small factor taken from the shifted set.
+    Parameters
+    ----------
+    Phi : numpy.ndarray
+        Shape (P, 2n, 2n): the eigenvalues of the matrices of :func:`s_matrices`.
+    """
+    S, Xp, Xm = s_matrices(Phi)
+    return np.linalg.eigvals(S), np.linalg.eigvals(Xp), np.linalg.eigvals(Xm)
+
+
+def largest_multiplier(xp: np.ndarray, xm: np.ndarray) -> np.ndarray:
+    """|rho|_max, shape (P,), from s - 2 (used where Re s >= 0) and s + 2 (where Re s < 0).
+
+    Parameters
+    ----------
+    xp, xm : numpy.ndarray
+        Shape (P, n): s - 2 and s + 2 (:func:`s_value_sets`); rho = s/2 + sqrt((s/2 - 1)
+        (s/2 + 1)) with the small factor from the shifted set.
     """
     xp = xp.astype(complex)
     xm = xm.astype(complex)
@@ -587,63 +575,87 @@ def _rho_max_from_sets(xp: np.ndarray, xm: np.ndarray) -> np.ndarray:
     return np.maximum(np.max(ap, axis=-1), np.max(am, axis=-1))
 
 
-def _rho_from_s(s: np.ndarray) -> np.ndarray:
-    """The 2n multipliers rho, 1/rho from s = rho + 1/rho."""
-    r = np.sqrt(s.astype(complex) ** 2 / 4.0 - 1.0)
-    return np.concatenate([s / 2.0 + r, s / 2.0 - r], axis=-1)
+def _reversible_multipliers(Phi: np.ndarray, om: np.ndarray) -> np.ndarray:
+    """The 2n multipliers: eigenvalues of Phi(T/2) R Phi(T/2)^-1 R, similar to Phi(T).
+
+    Where Phi(T/2) is singular to working precision they are the eigenvalues of the pencil
+    (Phi R, R Phi) (v = R Phi u), by QZ without an inverse.  The multipliers of a reversible
+    system come in pairs rho, 1/rho (sum of log|rho| = 0): where they do not, the growth over
+    one period is beyond what double precision resolves (PeriodMapOverflowError).
+    """
+    R = _reflection(Phi.shape[-1] // 2)
+    PhiR = Phi * R[None, None, :]
+    with np.errstate(all="ignore"):
+        try:
+            inv = np.linalg.solve(Phi, np.broadcast_to(np.diag(R), Phi.shape))  # Phi^-1 R
+            rho = np.linalg.eigvals(PhiR @ inv)
+            bad = ~np.all(np.isfinite(rho) & (rho != 0.0), axis=-1)
+        except np.linalg.LinAlgError:  # some point singular: each by the pencil below
+            rho = np.zeros(Phi.shape[:-1], dtype=complex)
+            bad = np.ones(Phi.shape[0], dtype=bool)
+        for i in np.flatnonzero(bad):  # (Phi R) u = rho (R Phi) u
+            rho[i] = scipy.linalg.eigvals(PhiR[i], R[:, None] * Phi[i])
+        logs = np.log(np.abs(rho))
+        unpaired = np.abs(np.sum(logs, axis=-1)) > 1e-6 * (1.0 + np.max(np.abs(logs), axis=-1))
+    bad = ~np.all(np.isfinite(rho) & (rho != 0.0), axis=-1) | unpaired
+    if np.any(bad):
+        raise PeriodMapOverflowError(
+            f"Omega = {float(om[bad][0]):.6g}: the period map is singular to working precision "
+            "(a growth over one period beyond ~1e15)", om[bad][0])
+    return rho
 
 
-def _prepare(M, C, A, B, Omega, n_steps, step_phase, max_steps, chunk):
+def _prepare(M, C, A, B, Omega, n_steps, step_phase, max_steps, chunk, amplitude):
     system = M if isinstance(M, LinearPeriodicSystem) else periodic_system(M, C, A, B)
-    om = _omega(Omega)
+    om = as_omega(Omega)
     if not isinstance(chunk, int | np.integer) or chunk < 1:
         raise ValueError(f"chunk = {chunk!r}: must be an integer >= 1")
     if n_steps is None:
-        steps = step_counts(system, om, step_phase=step_phase, max_steps=max_steps)
+        steps = step_counts(system, om, step_phase=step_phase, max_steps=max_steps,
+                            amplitude=amplitude)
     else:
-        if not isinstance(n_steps, int | np.integer) or not 1 <= n_steps <= max_steps:
-            raise ValueError(f"n_steps = {n_steps!r}: must be an integer in 1..{max_steps}")
-        steps = np.full(om.size, int(n_steps))
-    return system, om, steps
+        steps = np.broadcast_to(np.asarray(n_steps), om.shape)
+        if steps.dtype.kind not in "iu" or np.any(steps < 1) or np.any(steps > max_steps):
+            raise ValueError(f"n_steps = {n_steps!r:.60}: must be integers in 1..{max_steps}")
+    return system, om, steps, _amplitudes(amplitude, om)
 
 
-def monodromy(M, C, A, B, Omega, *, n_steps: int | None = None, step_phase: float = 0.06,
-              max_steps: int = _MAX_STEPS, chunk: int = 256) -> np.ndarray:
+def monodromy(M, C, A, B, Omega, *, n_steps=None, step_phase: float = 0.06,
+              max_steps: int = MAX_STEPS, chunk: int = 256, amplitude=None) -> np.ndarray:
     """Monodromy matrices Phi(T), T = 2 pi / Omega, for a batch of Omega.
 
     Parameters
     ----------
     M, C, A, B : array_like
-        The system M q'' + C q' + (A + B cos Omega t) q = 0, each (n, n) (see
-        :func:`periodic_system`; C may be None).  A :class:`LinearPeriodicSystem` may be passed
-        as M (then C, A, B are ignored).
+        The system M q'' + C q' + (A + B cos Omega t) q = 0, each (n, n), C may be None; or a
+        :class:`LinearPeriodicSystem` as M (C, A, B then ignored).
     Omega : array_like
-        Pulsation frequencies, shape (P,) (rad per time unit of the matrices), > 0.
-    n_steps : int, optional
-        Steps per integrated interval for every point (default: the cost model of
-        :func:`step_counts`).
-    step_phase : float
-        Accuracy parameter of the cost model (rad), > 0.
-    max_steps : int
-        Cap on the steps; a larger estimate raises ValueError.
+        Shape (P,), rad per time unit of the matrices, > 0.
+    n_steps : int or array_like of int, optional
+        Steps per interval, for all or per point (default :func:`step_counts`).
+    step_phase, max_steps : float, int
+        Accuracy and cap of :func:`step_counts`.
     chunk : int
         Points per batch (memory).
+    amplitude : array_like, optional
+        Shape (P,): point p has the excitation amplitude[p] B (default 1).
 
     Returns
     -------
     numpy.ndarray
-        Shape (P, 2n, 2n), real: the state (q, q') maps as z(T) = Phi(T) z(0).  When C = 0 it
-        is built from the half period by reversibility, Phi(T) = R Phi(T/2)^-1 R Phi(T/2).
+        Shape (P, 2n, 2n), real: z(T) = Phi(T) z(0) for z = (q, q'); with C = 0 from the half
+        period, Phi(T) = R Phi(T/2)^-1 R Phi(T/2).
 
     References
     ----------
     Bolotin (1964), sec. 2-3; Magnus & Winkler (1966), ch. 1; Lawson (1967).
     """
-    system, om, steps = _prepare(M, C, A, B, Omega, n_steps, step_phase, max_steps, chunk)
+    system, om, steps, amp = _prepare(M, C, A, B, Omega, n_steps, step_phase, max_steps,
+                                      chunk, amplitude)
     n = system.n
     if system.damped:
-        return _full_maps(system, om, steps, chunk)
-    Phi = _half_maps(system, om, steps, chunk)
+        return period_maps(system, om, steps, chunk=chunk, amplitude=amp)
+    Phi = half_period_maps(system, om, steps, chunk=chunk, amplitude=amp)
     R = _reflection(n)
     Mon = R[:, None] * np.linalg.solve(Phi, Phi * R[:, None])  # R Phi^-1 R Phi (reversibility)
     if system.Bt is not None:  # modal -> physical: blockdiag(V) Mon blockdiag(V)^-1
@@ -654,99 +666,66 @@ def monodromy(M, C, A, B, Omega, *, n_steps: int | None = None, step_phase: floa
     return Mon
 
 
-def _multipliers(system, om, steps, chunk) -> tuple[np.ndarray, np.ndarray | None]:
-    """Multipliers (P, 2n) and, for C = 0, the s-values (P, n)."""
+def floquet_multipliers(M, C, A, B, Omega, *, n_steps=None, step_phase: float = 0.06,
+                        max_steps: int = MAX_STEPS, chunk: int = 256,
+                        amplitude=None) -> np.ndarray:
+    """Floquet multipliers rho, the eigenvalues of the monodromy matrix.
+
+    Parameters
+    ----------
+    M, C, A, B, Omega, n_steps, step_phase, max_steps, chunk, amplitude
+        As :func:`monodromy`.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (P, 2n), complex; with C = 0 from the half-period map by reversibility (pairs
+        rho, 1/rho to round-off; unpaired: :class:`PeriodMapOverflowError`).
+    """
+    system, om, steps, amp = _prepare(M, C, A, B, Omega, n_steps, step_phase, max_steps,
+                                      chunk, amplitude)
     if system.damped:
-        return np.linalg.eigvals(_full_maps(system, om, steps, chunk)), None
-    s = _s_values_from_half(_half_maps(system, om, steps, chunk))
-    return _rho_from_s(s), s
+        return np.linalg.eigvals(period_maps(system, om, steps, chunk=chunk, amplitude=amp))
+    return _reversible_multipliers(half_period_maps(system, om, steps, chunk=chunk,
+                                                    amplitude=amp), om)
 
 
-def floquet_multipliers(M, C, A, B, Omega, *, n_steps: int | None = None,
-                        step_phase: float = 0.06, max_steps: int = _MAX_STEPS,
-                        chunk: int = 256) -> np.ndarray:
-    """Floquet multipliers rho (eigenvalues of the monodromy matrix).
+def floquet_exponents(M, C, A, B, Omega, **options) -> np.ndarray:
+    """Characteristic exponents log(rho) / T (principal log), T = 2 pi / Omega.
 
     Parameters
     ----------
-    M, C, A, B, Omega, n_steps, step_phase, max_steps, chunk
-        As :func:`monodromy`.
+    M, C, A, B, Omega, **options
+        As :func:`floquet_multipliers`.
 
     Returns
     -------
     numpy.ndarray
-        Shape (P, 2n), complex (dimensionless).  With C = 0 they come as pairs rho, 1/rho from
-        the n values s = rho + 1/rho of the half-period map, so det Phi(T) = 1 exactly.
-
-    References
-    ----------
-    Magnus & Winkler (1966), ch. 1-2; Bolotin (1964), sec. 2-3.
+        Shape (P, 2n), 1 / time unit; Im defined modulo Omega.
     """
-    system, om, steps = _prepare(M, C, A, B, Omega, n_steps, step_phase, max_steps, chunk)
-    return _multipliers(system, om, steps, chunk)[0]
+    rho = floquet_multipliers(M, C, A, B, Omega, **options)
+    return np.log(rho) * (as_omega(Omega) / (2.0 * np.pi))[:, None]  # lambda = log(rho) / T
 
 
-def floquet_exponents(M, C, A, B, Omega, *, n_steps: int | None = None,
-                      step_phase: float = 0.06, max_steps: int = _MAX_STEPS,
-                      chunk: int = 256) -> np.ndarray:
-    """Characteristic exponents lambda = log(rho) / T (principal log), T = 2 pi / Omega.
+def growth_rate(M, C, A, B, Omega, *, n_steps=None, step_phase: float = 0.06,
+                max_steps: int = MAX_STEPS, chunk: int = 256, amplitude=None) -> np.ndarray:
+    """Largest real part of the characteristic exponents, log|rho|_max / T (1 / time unit).
+
+    > 0 means unstable (Bolotin 1964, sec. 2-3); Hill's determinant gives the same from
+    :func:`flexbooster.floquet.hill_exponents`.
 
     Parameters
     ----------
-    M, C, A, B, Omega, n_steps, step_phase, max_steps, chunk
-        As :func:`monodromy`.
-
-    Returns
-    -------
-    numpy.ndarray
-        Shape (P, 2n), complex (1 / time unit of the matrices); Im lambda is defined modulo
-        Omega.
-
-    References
-    ----------
-    Bolotin (1964), sec. 2; Magnus & Winkler (1966), ch. 1.
+    M, C, A, B, Omega, n_steps, step_phase, max_steps, chunk, amplitude
+        The system and options of :func:`monodromy`; the result has shape (P,).
     """
-    system, om, steps = _prepare(M, C, A, B, Omega, n_steps, step_phase, max_steps, chunk)
-    rho = _multipliers(system, om, steps, chunk)[0]
-    return np.log(rho) * (om / (2.0 * np.pi))[:, None]  # lambda = log(rho) / T
-
-
-def growth_rate(M, C, A, B, Omega, *, method: str = "monodromy", n_harmonics: int = 8,
-                n_steps: int | None = None, step_phase: float = 0.06,
-                max_steps: int = _MAX_STEPS, chunk: int = 256) -> np.ndarray:
-    """Largest real part of the characteristic exponents, log|rho|_max / T (1/s).
-
-    Parameters
-    ----------
-    M, C, A, B, Omega, n_steps, step_phase, max_steps, chunk
-        As :func:`monodromy`.
-    method : {"monodromy", "hill"}
-        Monodromy matrix, or Hill's truncated determinant
-        (:func:`flexbooster.floquet.hill.hill_exponents`) with ``n_harmonics``.
-    n_harmonics : int
-        Harmonics s = -S..S of Hill's method (ignored by the monodromy).
-
-    Returns
-    -------
-    numpy.ndarray
-        Shape (P,), max Re lambda (1 / time unit of the matrices, 1/s for SI matrices); > 0
-        means unstable.
-
-    References
-    ----------
-    Bolotin (1964), sec. 2-3, 7; Magnus & Winkler (1966), ch. 1.
-    """
-    if method == "hill":
-        from .hill import hill_exponents
-
-        lam = hill_exponents(M, C, A, B, Omega, n_harmonics=n_harmonics)
-        return np.max(lam.real, axis=-1)
-    if method != "monodromy":
-        raise ValueError(f"method = {method!r}: must be 'monodromy' or 'hill'")
-    system, om, steps = _prepare(M, C, A, B, Omega, n_steps, step_phase, max_steps, chunk)
+    system, om, steps, amp = _prepare(M, C, A, B, Omega, n_steps, step_phase, max_steps,
+                                      chunk, amplitude)
     if system.damped:
-        rho_max = np.max(np.abs(np.linalg.eigvals(_full_maps(system, om, steps, chunk))), -1)
+        rho = np.linalg.eigvals(period_maps(system, om, steps, chunk=chunk, amplitude=amp))
+        rho_max = np.max(np.abs(rho), -1)
     else:
-        _, xp, xm = _s_sets_from_half(_half_maps(system, om, steps, chunk))
-        rho_max = _rho_max_from_sets(xp, xm)
+        _, xp, xm = s_value_sets(half_period_maps(system, om, steps, chunk=chunk,
+                                                  amplitude=amp))
+        rho_max = largest_multiplier(xp, xm)
     return np.log(rho_max) * om / (2.0 * np.pi)  # log|rho|_max / T

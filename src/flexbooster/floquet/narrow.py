@@ -1,38 +1,20 @@
-"""Narrow instability regions of q'' + (A + B cos Omega t) q = 0 with a resolution linear in width.
+"""Narrow instability regions of q'' + (A + B cos Omega t) q = 0, resolved linearly in width.
 
-Near a narrow region the monodromy indicators (|trace| - 2, |rho| - 1) are quadratic in the
-distance to the tip, so round-off hides regions narrower than ~sqrt(eps) of their centre.  Here
-the two Floquet exponents that collide at a candidate resonance are isolated from Hill's
-(harmonic-balance) equations of the undamped system in the modal frame,
-
-    [diag(mu) + (lambda + i s Omega)^2] eta_s + (Bt / 2) (eta_{s-1} + eta_{s+1}) = 0,
-
-s = s_min..s_max (Bolotin 1964, sec. 7-8; Magnus & Winkler 1966, ch. 2).  The two resonant
-components P = {(s_a, i), (s_b, k)} (mode i at harmonic s_a with exponent ~ +i omega_i, mode k
-at s_b with ~ -+i omega_k) are kept and the rest Q eliminated exactly (Schur complement,
-Loewdin partitioning): det S(lambda) = 0 with the 2 x 2 matrix
-S = T_PP - T_PQ T_QQ^-1 T_QP.  Linearised about the pair's midpoint lambda_0 (found by a
-few fixed-point steps), det(S_0 + x S') = a x^2 + b x + c, and the squared separation of the
-pair is
-
-    D(Omega) = (lambda_1 - lambda_2)^2 = (b^2 - 4 a c) / a^2:
-
-D > 0 inside the region (exponents lambda_0 +- sqrt(D) / 2, growth rate sqrt(D) / 2), D < 0
-outside (a pair on the imaginary axis), D = 0 on the boundaries.  D is a difference of two
-terms each known to relative eps (detuning^2 and coupling product), so its zero crossings,
-and the width, are resolved to relative eps of the width itself; D is a parabola in Omega to
-leading order (the detuning is linear in Omega), so its vertex and roots follow from three
-values by Newton steps on the parabola.  The harmonics are raised until the result converges.
+Near a narrow region the monodromy indicators are quadratic in the distance to the tip, so
+round-off hides regions narrower than ~sqrt(eps) of their centre.  Here the two exponents
+that collide at a candidate are isolated from Hill's equations in the modal frame,
+[diag(mu) + (lambda + i s Omega)^2] eta_s + (Bt / 2)(eta_(s-1) + eta_(s+1)) = 0: the two
+resonant components are kept and the rest eliminated exactly (Schur complement, Loewdin
+partitioning), and the squared separation D(Omega) = (lambda_1 - lambda_2)^2 of the pair is
+> 0 inside, < 0 outside, 0 on the edges, to relative eps of the width itself
+(docs/theory/floquet.md sec. 4).
 
 References
 ----------
-.. [1] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, ch. 1-2
-   (sec. 7-8: Hill's determinant, matrix form).
+.. [1] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, sec. 7-8.
 .. [2] W. Magnus, S. Winkler, *Hill's Equation*, Wiley, 1966, ch. 2.
-.. [3] P.-O. Loewdin, "Studies in perturbation theory IV", J. Mol. Spectrosc. 10 (1963) 12-33
-   (partitioning: the exact reduced eigenproblem of a subspace).
-.. [4] C. S. Hsu, "On the parametric excitation of a dynamic system having multiple degrees of
-   freedom", J. Appl. Mech. 30 (1963) 367-372 (combination resonances).
+.. [3] P.-O. Loewdin, "Studies in perturbation theory IV", J. Mol. Spectrosc. 10 (1963) 12-33.
+.. [4] C. S. Hsu, J. Appl. Mech. 30 (1963) 367-372 (combination resonances).
 """
 
 from __future__ import annotations
@@ -233,30 +215,12 @@ def _slope(cand, L):
 def narrow_search(mu: np.ndarray, Bt: np.ndarray, cand: dict, *, max_iter: int = 16) -> dict:
     """Vertex and width of D(Omega) near each candidate (one batch per order j).
 
-    Parameters
-    ----------
-    mu : numpy.ndarray
-        Squared steady frequencies (n,), real > 0 (1 / time unit^2).
-    Bt : numpy.ndarray
-        Modal coupling V^-1 M^-1 B V (n, n) (1 / time unit^2).
-    cand : dict
-        Candidate arrays kind (0 simple, 1 sum, 2 difference), i, k (modes), j (order),
-        centre (rad per time unit), window (half-width of the search window about the
-        centre, rad per time unit).
-    max_iter : int
-        Newton steps on the parabola per harmonic margin (capped; no error when reached).
-
-    Returns
-    -------
-    dict
-        Arrays per candidate: found (bool: D > 0 at the vertex beyond its round-off, width
-        at most :data:`MAX_WIDTH` of the centre), converged (bool: the harmonic margins agree),
-        lo, hi (edges, rad per time unit), growth (sqrt(D) / 2 at the vertex, 1 / time
-        unit), omega_at_max (the vertex, rad per time unit).
-
-    References
-    ----------
-    Bolotin (1964), sec. 7-8; Loewdin (1963); module docstring.
+    ``mu`` (n,) squared steady frequencies > 0, ``Bt`` (n, n) the modal coupling V^-1 M^-1 B V,
+    ``cand`` arrays kind (0 simple, 1 sum, 2 difference), i, k, j, centre and window (half-width
+    about the centre), rad per time unit; ``max_iter`` Newton steps on the parabola per
+    harmonic margin.  Returns arrays: found (D > 0 at the vertex beyond round-off, width at most
+    :data:`MAX_WIDTH` of the centre), converged (the margins agree), lo, hi (edges), growth
+    (sqrt(D) / 2 at the vertex) and omega_at_max (the vertex).
     """
     w = np.sqrt(mu)
     size = cand["centre"].size

@@ -1,41 +1,23 @@
-"""Instability regions in Omega of M q'' + C q' + (A + B cos Omega t) q = 0 and their amplitude
-dependence.
+"""Instability regions in Omega of M q'' + C q' + (A + B cos Omega t) q = 0, and their
+amplitude dependence.
 
-The search is driven by the analytic candidates, never by a grid: with omega_n the steady
-frequencies (eigenvalues of M^-1 A), regions can only grow out of
-
-* simple (parametric) resonances  Omega = 2 omega_i / j,
-* sum combinations                Omega = (omega_i + omega_k) / j,
-* difference combinations         Omega = |omega_k - omega_i| / j,
-
-j = 1, 2, ...  Without damping the system is time-reversible and the half-period map gives
-the n values s = rho + 1/rho (eigenvalues of a real n x n matrix, see
-:mod:`.multipliers`).  At gamma -> 0, s_i = 2 cos(2 pi omega_i / Omega), and each mode's s is
-tracked from that value.  Each candidate has a smooth local indicator F(Omega), positive
-exactly where its multipliers are off the unit circle:
-
-* simple, order j:  F = (-1)^j s_i - 2 (s_i real; F <= -|Im s_i| when s_i is in a complex
-  pair); F = 0 is rho = +-1, the T- or 2T-periodic boundary;
-* combination:      F = -Re (s_i - s_k)^2 (F > 0: s_i, s_k complex conjugate, |rho| != 1;
-  F = 0: the pair collides on |rho| = 1).
-
-F is maximised near the candidate (vectorised Brent maximiser over all candidates at once, in
-a window that holds no other candidate), and where the maximum is above the round-off floor
-both boundaries are bracketed outward and refined on F = 0 (vectorised Illinois regula falsi)
-to the stated tolerance; if the system is still unstable beyond (an overlapping region) the
-march goes on with the whole-system indicator to the first Omega where |rho|_max = 1, so
-overlapping regions are reported as their union.  Candidates below the round-off floor of the
-indicators (relative width ~6e-8 / j) are examined by the harmonic-balance pair discriminant of
-:mod:`.narrow`, whose resolution is linear in the width.  With damping, the undamped regions
-seed the search of max log|rho| > 0 from the full-period monodromy (see
-``docs/theory/floquet.md`` for the assumptions and limits).
+The search starts from the analytic candidates, never from a grid: regions grow out of the
+simple resonances Omega = 2 omega_i / j and the combinations (omega_i +- omega_k) / j.  Without
+damping the half-period map gives s = rho + 1/rho (:mod:`.multipliers`), tracked per mode from
+its gamma -> 0 value 2 cos(2 pi omega_i / Omega); each candidate has a smooth indicator F,
+positive exactly where its multipliers leave the unit circle: (-1)^j s_i - 2 (simple) and
+-Re (s_i - s_k)^2 (combination).  F is maximised near each candidate (:func:`.optimize.
+brent_max`), both edges are bracketed and refined on F = 0 (:func:`.optimize.illinois_root`),
+and an overlapping region is followed to |rho|_max = 1 (its union is reported).  Candidates
+below the indicators' round-off floor go to the pair discriminant of :mod:`.narrow`; with
+damping the undamped regions seed the search of max log|rho| > 0 (docs/theory/floquet.md).
 
 References
 ----------
-.. [1] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, ch. 1-2
-   (regions, periodic boundaries), sec. 6 (damping: critical amplitude).
+.. [1] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, ch. 1-2,
+   sec. 6.
 .. [2] C. S. Hsu, "On the parametric excitation of a dynamic system having multiple degrees of
-   freedom", J. Appl. Mech. 30 (1963) 367-372 (combination resonances, first-order widths).
+   freedom", J. Appl. Mech. 30 (1963) 367-372.
 .. [3] W. Magnus, S. Winkler, *Hill's Equation*, Wiley, 1966, ch. 1-2.
 .. [4] K. Takahashi, "An approach to investigate the instability of the multiple-degree-of-
    freedom parametric dynamic systems", J. Sound Vib. 78 (1981) 519-529.
@@ -47,33 +29,24 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .bounds import _certificate
+from .bounds import stability_certificate
 from .multipliers import (
-    _MAX_STEPS,
+    MAX_STEPS,
     LinearPeriodicSystem,
-    _full_maps,
-    _half_maps,
-    _rho_max_from_sets,
-    _s_matrices,
-    _s_sets_from_half,
+    half_period_maps,
+    largest_multiplier,
+    period_maps,
     periodic_system,
+    s_matrices,
+    s_value_sets,
     step_counts,
 )
 from .narrow import narrow_search
+from .optimize import brent_max, expand_bracket, golden_section_max, illinois_root
 
-__all__ = [
-    "DAMPING_MARGIN",
-    "TooManyCandidatesError",
-    "golden_section_max",
-    "InstabilityRegion",
-    "instability_regions",
-    "RegionBoundary",
-    "region_boundaries",
-    "CriticalAmplitude",
-    "critical_amplitude",
-    "SearchWork",
-    "search_work",
-]
+__all__ = ["DAMPING_MARGIN", "TooManyCandidatesError", "InstabilityRegion", "instability_regions",
+           "RegionBoundary", "region_boundaries", "CriticalAmplitude", "critical_amplitude",
+           "SearchWork", "search_work"]
 
 _KINDS = ("simple", "sum", "difference")
 
@@ -82,7 +55,6 @@ class TooManyCandidatesError(ValueError):
     """The resonance candidates 2 omega_i / j, (omega_i +- omega_k) / j in the Omega range
     exceed ``max_candidates``: omega_min too small for the frequencies (one line, naming
     omega_min); a search past a resource limit, not a wrong argument."""
-_GOLD = 0.5 * (np.sqrt(5.0) - 1.0)
 #: Round-off floor of the indicators (s-values are O(1), eigenvalue errors ~ eps ||S||): a
 #: maximum below it is not a region.  Detection limit: relative width ~ 2 sqrt(floor) / (pi j).
 _F_FLOOR = 1e-14
@@ -101,31 +73,20 @@ DAMPING_MARGIN = 4.0
 
 @dataclass(frozen=True)
 class InstabilityRegion:
-    """One instability region Omega in (omega_lo, omega_hi).
+    """One instability region Omega in (omega_lo, omega_hi) (Bolotin 1964; Hsu 1963).
 
     Attributes
     ----------
-    omega_lo, omega_hi : float
-        Boundaries (rad per time unit of the matrices), |rho|_max = 1 there.
+    omega_lo, omega_hi, omega_at_max, omega_center : float
+        Edges (|rho|_max = 1), where the growth is largest, the candidate's analytic centre
+        (rad per time unit of the matrices).
     growth_rate_max : float
-        Largest growth rate max Re lambda = log|rho|_max / T inside (1 / time unit).
-    omega_at_max : float
-        Omega where it occurs.
-    kind : str
-        "simple", "sum", "difference", or "steady" (the steady system itself is unstable:
-        the region is the whole range asked for).
-    modes : tuple of int
-        Indices of the steady modes involved (in ascending order of frequency).
-    order : int
-        j of the candidate centre 2 omega_i / j or (omega_i +- omega_k) / j (0 for "steady").
-    omega_center : float
-        The analytic candidate centre.
+        Largest max Re lambda = log|rho|_max / T inside (1 / time unit).
+    kind, modes, order : str, tuple of int, int
+        "simple", "sum", "difference" or "steady" (the steady system is unstable: the whole
+        range); the modes (ascending frequency) and j of 2 omega_i / j or (omega_i +- omega_k) / j.
     clipped : bool
-        True when a boundary is the end of the Omega range asked for.
-
-    References
-    ----------
-    Bolotin (1964), ch. 1-2; Hsu (1963).
+        An edge is an end of the range asked for.
     """
 
     omega_lo: float
@@ -163,7 +124,7 @@ class _Options:
     damping_margin: float | None = DAMPING_MARGIN
 
 
-def _options(rtol=1e-9, step_phase=0.12, max_steps=_MAX_STEPS, max_order=None,
+def _options(rtol=1e-9, step_phase=0.12, max_steps=MAX_STEPS, max_order=None,
              max_candidates=200_000, chunk=256,
              damping_margin=DAMPING_MARGIN) -> _Options:
     if not (np.isfinite(rtol) and 1e-14 <= rtol <= 1e-2):
@@ -206,16 +167,11 @@ def _range(omega_min, omega_max) -> tuple[float, float]:
 def _damping_caps(w, Bt, base, i0, k0, zrow, zeta, rate, margin) -> np.ndarray:
     """Largest order j per resonance base that damping could leave unstable (0: none).
 
-    The averaged (first-order) equations of a resonant group have the coupling
-    H_ab = |Bt_ab| / (4 sqrt(w_a w_b)) (Bolotin 1964 sec. 3 for simple, Hsu 1963 for
-    combination resonances: growth |Bt_ii| / (4 w_i), sqrt(|Bt_ik Bt_ki| / (16 w_i w_k)));
-    their largest undamped growth rate is at most the largest row sum R_a = sum_b H_ab of the
-    modes involved (Gershgorin: it covers clusters of nearly equal frequencies too).  Order j
-    >= 2: growth = j x width / 4 (the width of a two-mode averaged resonance is 4 lambda / j)
-    with the path bound of the width, so lambda_j <= base zeta_i zeta_k zeta^(j-2) / 4.  With
-    modal decay rates delta, a region exists only if lambda > sqrt(delta_i delta_k) >=
-    min(delta_i, delta_k) (Bolotin sec. 6: mu_cr = Delta / pi; Hsu's combination threshold),
-    kept here when margin * lambda > min(delta_i, delta_k).  A mode without decay keeps all.
+    The averaged equations of a resonant group couple with H_ab = |Bt_ab| / (4 sqrt(w_a w_b));
+    their undamped growth is at most the largest row sum R_a of the modes involved (Gershgorin);
+    order j >= 2 grows at most like base zeta_i zeta_k zeta^(j-2) / 4.  A region needs a growth
+    above min(delta_i, delta_k) of the modal decay rates (Bolotin 1964 sec. 6; Hsu 1963): kept
+    while margin x growth exceeds it.  A mode without decay keeps all.
     """
     with np.errstate(divide="ignore", invalid="ignore"):
         H = np.abs(Bt) / (4.0 * np.sqrt(np.outer(w, w)))
@@ -308,23 +264,23 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
 # Indicators (vectorised over candidates)
 # --------------------------------------------------------------------------------------------
 def _s_values(system: LinearPeriodicSystem, om: np.ndarray, opt: _Options) -> tuple:
-    """(s, s - 2, s + 2) at om (see :func:`.multipliers._s_sets_from_half`)."""
-    return _s_sets_from_half(_half_maps_at(system, om, opt))
+    """(s, s - 2, s + 2) at om (see :func:`.multipliers.s_value_sets`)."""
+    return s_value_sets(_half_maps_at(system, om, opt))
 
 
 def _half_maps_at(system: LinearPeriodicSystem, om: np.ndarray, opt: _Options) -> np.ndarray:
     """Phi(T/2) at om with the search's step counts."""
     steps = step_counts(system, om, step_phase=opt.step_phase, max_steps=opt.max_steps)
-    return _half_maps(system, om, steps, opt.chunk)
+    return half_period_maps(system, om, steps, chunk=opt.chunk)
 
 
 def _indicator(system, w, cand, om, opt) -> np.ndarray:
     """F per candidate at om (same length as the candidate arrays).
 
     Each point needs one eigenvalue set: s (combination), s - 2 (simple, j even) or s + 2
-    (simple, j odd), so only that matrix of :func:`.multipliers._s_matrices` is decomposed.
+    (simple, j odd), so only that matrix of :func:`.multipliers.s_matrices` is decomposed.
     """
-    mats = _s_matrices(_half_maps_at(system, om, opt))
+    mats = s_matrices(_half_maps_at(system, om, opt))
     P = om.size
     rows = np.arange(P)
     simple = cand["kind"] == 0
@@ -379,232 +335,16 @@ def _unstable_indicator(system, om, opt) -> np.ndarray:
 
 
 def _growth_undamped(system, om, opt) -> np.ndarray:
-    _, Xp, Xm = _s_matrices(_half_maps_at(system, om, opt))
-    rho = _rho_max_from_sets(np.linalg.eigvals(Xp), np.linalg.eigvals(Xm))
+    _, Xp, Xm = s_matrices(_half_maps_at(system, om, opt))
+    rho = largest_multiplier(np.linalg.eigvals(Xp), np.linalg.eigvals(Xm))
     return np.log(rho) * om / (2.0 * np.pi)  # log|rho|_max / T
 
 
-def _growth_damped(system, om, opt, scale=None) -> np.ndarray:
+def _growth_damped(system, om, opt, amplitude=None) -> np.ndarray:
     steps = step_counts(system, om, step_phase=opt.step_phase, max_steps=opt.max_steps)
-    rho = np.linalg.eigvals(_full_maps(system, om, steps, opt.chunk, scale))
+    rho = np.linalg.eigvals(period_maps(system, om, steps, chunk=opt.chunk,
+                                        amplitude=amplitude))
     return np.log(np.max(np.abs(rho), axis=1)) * om / (2.0 * np.pi)  # log|rho|_max / T
-
-
-# --------------------------------------------------------------------------------------------
-# Vectorised scalar solvers
-# --------------------------------------------------------------------------------------------
-def golden_section_max(f, a, b, *, xtol, max_iter: int = 200,
-                       stop_positive: bool = False) -> tuple[np.ndarray, np.ndarray]:
-    """Maximise f on [a, b] by golden-section search, vectorised over independent intervals.
-
-    Each interval m is shrunk by the golden ratio per step, keeping the larger of its two
-    interior values, until b_m - a_m <= xtol_m (Kiefer 1953; Press et al. 2007, sec. 10.2);
-    f must be unimodal on each interval for the global maximum.
-
-    Parameters
-    ----------
-    f : callable
-        f(x, idx) -> values: x (P',) the points (unit of a, b) for the intervals idx (P',),
-        integer indices into the arrays; returns (P',) floats (any unit).
-    a, b : array_like
-        Interval ends, shape (P,), finite, a < b (unit of x).
-    xtol : array_like
-        Final interval lengths, shape (P,) or scalar, > 0 (unit of x).
-    max_iter : int
-        Cap on the steps (ValueError beyond it), >= 1.
-    stop_positive : bool
-        If True an interval stops as soon as f > 0 at one of its points.
-
-    Returns
-    -------
-    x, fx : numpy.ndarray
-        The best point of each interval and f there, shape (P,).
-
-    Raises
-    ------
-    ValueError
-        Bad arguments (naming them), or no convergence in max_iter steps.
-
-    References
-    ----------
-    J. Kiefer, "Sequential minimax search for a maximum", Proc. AMS 4 (1953) 502-506;
-    W. H. Press et al., *Numerical Recipes*, 3rd ed., Cambridge, 2007, sec. 10.2.
-    """
-    a = np.atleast_1d(np.asarray(a, dtype=float))
-    b = np.atleast_1d(np.asarray(b, dtype=float))
-    if a.ndim != 1 or a.shape != b.shape or not (np.all(np.isfinite(a))
-                                                 and np.all(np.isfinite(b))):
-        raise ValueError(f"a = {a!r}: a and b must be finite 1-D arrays of the same shape")
-    if np.any(b <= a):
-        raise ValueError(f"b = {b!r}: must be > a")
-    xtol = np.broadcast_to(np.asarray(xtol, dtype=float), a.shape)
-    if not np.all(np.isfinite(xtol)) or np.any(xtol <= 0.0):
-        raise ValueError(f"xtol = {xtol!r}: must be finite and > 0")
-    if isinstance(max_iter, bool) or not isinstance(max_iter, int | np.integer) or max_iter < 1:
-        raise ValueError(f"max_iter = {max_iter!r}: must be an integer >= 1")
-    return _golden_max(f, a, b, xtol, max_iter, stop_positive)
-
-
-def _golden_max(f, a: np.ndarray, b: np.ndarray, xtol: np.ndarray, max_iter: int = 200,
-                stop_positive: bool = False) -> tuple[np.ndarray, np.ndarray]:
-    """:func:`golden_section_max` without the checks (arrays of the same shape)."""
-    a, b = a.copy(), b.copy()
-    x1 = b - _GOLD * (b - a)
-    x2 = a + _GOLD * (b - a)
-    every = np.arange(a.size)
-    f1, f2 = f(x1, every), f(x2, every)
-    for _ in range(max_iter):
-        done = b - a <= xtol
-        if stop_positive:
-            done |= (f1 > 0.0) | (f2 > 0.0)
-        if np.all(done):
-            break
-        right = f2 > f1  # max in [x1, b]
-        act = np.nonzero(~done)[0]
-        r_ = right[act]
-        a[act] = np.where(r_, x1[act], a[act])
-        b[act] = np.where(r_, b[act], x2[act])
-        xn = np.where(r_, a[act] + _GOLD * (b[act] - a[act]), b[act] - _GOLD * (b[act] - a[act]))
-        fn = f(xn, act)
-        x1[act], f1[act], x2[act], f2[act] = (
-            np.where(r_, x2[act], xn), np.where(r_, f2[act], fn),
-            np.where(r_, xn, x1[act]), np.where(r_, fn, f1[act]))
-    else:
-        raise ValueError(f"golden section: no convergence in {max_iter} iterations")
-    best = f1 >= f2
-    return np.where(best, x1, x2), np.where(best, f1, f2)
-
-
-def _brent_max(f, a: np.ndarray, b: np.ndarray, x0: np.ndarray, xtol: np.ndarray,
-               max_iter: int = 200, stop_positive: bool = False) -> tuple[np.ndarray, np.ndarray]:
-    """Maximise f on [a, b] from x0: Brent's golden section + parabolic steps, vectorised.
-
-    f(x, idx) evaluates the points idx only.  Parabolic steps converge superlinearly on the
-    smooth indicators (they are nearly quadratic near a candidate), golden steps guarantee
-    convergence.  With ``stop_positive`` a point stops as soon as f > floor somewhere.
-    (Brent 1973, ch. 5, procedure localmin, for -f.)
-    """
-    cgold = 0.5 * (3.0 - np.sqrt(5.0))
-    a, b = a.copy(), b.copy()
-    x = np.clip(x0, a, b)
-    fx = -f(x, np.arange(x.size))
-    w, v, fw, fv = x.copy(), x.copy(), fx.copy(), fx.copy()
-    d = np.zeros(x.size)
-    e = np.zeros(x.size)
-    done = np.zeros(x.size, dtype=bool)
-    for _ in range(max_iter):
-        xm = 0.5 * (a + b)
-        tol1 = 1.5e-8 * np.abs(x) + xtol / 3.0
-        tol2 = 2.0 * tol1
-        done |= np.abs(x - xm) <= tol2 - 0.5 * (b - a)
-        if stop_positive:
-            done |= -fx > _F_FLOOR
-        act = np.nonzero(~done)[0]
-        if act.size == 0:
-            return x, -fx
-        X, W, V, FX, FW, FV = x[act], w[act], v[act], fx[act], fw[act], fv[act]
-        A_, B_, D, E, T1, T2, XM = a[act], b[act], d[act], e[act], tol1[act], tol2[act], xm[act]
-        r = (X - W) * (FX - FV)
-        q = (X - V) * (FX - FW)
-        p = (X - V) * q - (X - W) * r
-        q = 2.0 * (q - r)
-        p = np.where(q > 0.0, -p, p)
-        q = np.abs(q)
-        try_par = np.abs(E) > T1
-        with np.errstate(divide="ignore", invalid="ignore"):
-            par = try_par & (np.abs(p) < np.abs(0.5 * q * E)) & (p > q * (A_ - X)) & (
-                p < q * (B_ - X))
-            dpar = np.where(par, p / np.where(q == 0.0, 1.0, q), 0.0)
-        upar = X + dpar
-        near_end = ((upar - A_) < T2) | ((B_ - upar) < T2)
-        dpar = np.where(near_end, np.where(XM - X >= 0.0, T1, -T1), dpar)
-        egold = np.where(X >= XM, A_ - X, B_ - X)
-        E_new = np.where(par, D, egold)  # e <- d (parabolic) or the golden interval
-        D_new = np.where(par, dpar, cgold * egold)
-        U = X + np.where(np.abs(D_new) >= T1, D_new, np.where(D_new >= 0.0, T1, -T1))
-        FU = -f(U, act)
-        better = FU <= FX
-        a[act] = np.where(better, np.where(U >= X, X, A_), np.where(U < X, U, A_))
-        b[act] = np.where(better, np.where(U >= X, B_, X), np.where(U < X, B_, U))
-        c1 = ~better & ((FU <= FW) | (W == X))
-        c2 = ~better & ~c1 & ((FU <= FV) | (V == X) | (V == W))
-        v[act] = np.where(better | c1, W, np.where(c2, U, V))
-        fv[act] = np.where(better | c1, FW, np.where(c2, FU, FV))
-        w[act] = np.where(better, X, np.where(c1, U, W))
-        fw[act] = np.where(better, FX, np.where(c1, FU, FW))
-        x[act] = np.where(better, U, X)
-        fx[act] = np.where(better, FU, FX)
-        d[act], e[act] = D_new, E_new
-    raise ValueError(f"maximiser: no convergence in {max_iter} iterations")
-
-
-def _illinois(f, x_in: np.ndarray, f_in: np.ndarray, x_out: np.ndarray, f_out: np.ndarray,
-              xtol: np.ndarray, max_iter: int = 200, bracket: bool = False):
-    """Root of f between x_in (f > 0) and x_out (f <= 0), Illinois regula falsi, vectorised.
-
-    f(x, idx) evaluates the points idx only.  Returns the midpoints of the final brackets, or
-    with ``bracket`` the brackets themselves (x_in, f_in, x_out, f_out; f_in > 0 >= f_out).
-    """
-    a, fa, b, fb = x_in.copy(), f_in.copy(), x_out.copy(), f_out.copy()
-    last = np.zeros(a.size, dtype=int)  # which end moved last (+1 a, -1 b)
-    for it in range(max_iter):
-        act = np.nonzero(np.abs(b - a) > xtol)[0]
-        if act.size == 0:
-            return (a, fa, b, fb) if bracket else 0.5 * (a + b)
-        A_, FA, B_, FB = a[act], fa[act], b[act], fb[act]
-        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-            x = np.where(FA != FB, B_ - FB * (B_ - A_) / (FB - FA), 0.5 * (A_ + B_))
-        if it >= max_iter // 2:  # stagnating (an indicator at round-off): bisect, which
-            x = 0.5 * (A_ + B_)  # halves the bracket each step (2^-100: converged surely)
-        lo_, hi_ = np.minimum(A_, B_), np.maximum(A_, B_)
-        x = np.where((x > lo_) & (x < hi_), x, 0.5 * (A_ + B_))
-        # keep the new point at least xtol/2 inside so that the bracket always shrinks
-        tol = 0.5 * xtol[act]
-        x = np.clip(x, lo_ + tol, hi_ - tol)
-        fx = f(x, act)
-        pos = fx > 0.0
-        # Illinois: halve the value at the end that stays twice in a row
-        fb[act] = np.where(pos & (last[act] == 1), 0.5 * FB, FB)
-        fa[act] = np.where(~pos & (last[act] == -1), 0.5 * FA, FA)
-        a[act] = np.where(pos, x, A_)
-        fa[act] = np.where(pos, fx, fa[act])
-        b[act] = np.where(pos, B_, x)
-        fb[act] = np.where(pos, fb[act], fx)
-        last[act] = np.where(pos, 1, -1)
-    raise ValueError(f"boundary refinement: no convergence in {max_iter} iterations")
-
-
-def _expand(f, x0: np.ndarray, d0: np.ndarray, direction, limit: np.ndarray,
-            max_iter: int = 80) -> tuple[np.ndarray, ...]:
-    """March from x0 (f > 0) by d0 * 3^m until f <= 0 or the range end; vectorised.
-
-    Returns (x_in, f_in, x_out, f_out, clipped).
-    """
-    x_in = x0.copy()
-    f_in = np.full(x0.size, np.inf)
-    x_out = x0.copy()
-    f_out = np.zeros(x0.size)
-    clipped = np.zeros(x0.size, dtype=bool)
-    open_ = np.ones(x0.size, dtype=bool)
-    d = d0.copy()
-    for _ in range(max_iter):
-        if not open_.any():
-            return x_in, f_in, x_out, f_out, clipped
-        x = x0 + direction * d
-        past = direction * (x - limit) >= 0.0
-        x = np.where(past, limit, x)
-        idx = np.nonzero(open_)[0]
-        fx = f(x[idx], idx)
-        inside = fx > 0.0
-        out_i, in_i = idx[~inside], idx[inside]
-        x_out[out_i], f_out[out_i] = x[out_i], fx[~inside]
-        x_in[in_i], f_in[in_i] = x[in_i], fx[inside]
-        open_[out_i] = False
-        hit = in_i[past[in_i]]
-        clipped[hit] = True
-        open_[hit] = False
-        d = d * 3.0
-    raise ValueError(f"boundary bracketing: no sign change in {max_iter} expansions")
 
 
 def _edges(f, x0: np.ndarray, f0: np.ndarray, d0: np.ndarray, direction,
@@ -612,20 +352,16 @@ def _edges(f, x0: np.ndarray, f0: np.ndarray, d0: np.ndarray, direction,
            max_rounds: int = 6) -> tuple[np.ndarray, np.ndarray]:
     """First boundary from x0 (f(x0) > 0) in ``direction``: bracket, refine, then check.
 
-    The outward march takes growing steps and could jump over a stable gap between two
-    adjacent regions; so points between x0 and the refined root are evaluated (8, or 64 when
-    the distance exceeds 4 ``scale``, the expected half-width) and, if one of them has f <= 0,
-    the root is searched again between it and its inner neighbour (up to ``max_rounds``
-    times; a round checks the entries whose root the last one moved, the others' check
-    points and values are unchanged).  Gaps narrower than the check spacing can still be
-    missed (the region is then reported too wide, never lost).  Returns (root, clipped).
+    The outward march could jump over a stable gap between adjacent regions: 8 points between x0
+    and the root (64 beyond 4 ``scale``) are checked and, where one has f <= 0, the root is
+    searched again inside (up to ``max_rounds``).  Narrower gaps can be missed (the region is
+    reported too wide, never lost).  Returns (root, clipped).
     """
-    xi, fi, xo, fo, clip = _expand(f, x0, d0, direction, limit)
-    fi = np.where(np.isinf(fi), f0, fi)
+    xi, fi, xo, fo, clip = expand_bracket(f, x0, f0, d0, direction, limit)
     root = np.where(clip, limit, xo)
 
     def refine(idx, a, fa, b, fb):
-        return _illinois(lambda x, act: f(x, idx[act]), a, fa, b, fb, xtol[idx])
+        return illinois_root(lambda x, act: f(x, idx[act]), a, fa, b, fb, xtol[idx])
 
     idx = np.nonzero(~clip)[0]
     if idx.size:
@@ -672,20 +408,14 @@ def _seed_edges(f, x0: np.ndarray, f0: np.ndarray, d0: np.ndarray, limit: np.nda
                 xtol: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Both edges of each region about x0 (f(x0) > 0) to a fraction of its width.
 
-    Entries 0..P-1 march down, P..2P-1 up (as in :func:`_edges`, without its gap check and
-    without the continuation through overlapping regions).  After the bracketing march each
-    round refines every bracket by Illinois to max(xtol, _SEED_WIDTH_FRACTION x W_in,
-    1e-2 x bracket), W_in = the distance between the two inner points (a lower bound of the
-    width: both are inside the region), until every bracket is below max(xtol,
-    _SEED_WIDTH_FRACTION x W_in): the edges are then known to that fraction of the width
-    whatever the region's size, at a fraction of the evaluations of the refinement to rtol.
+    Entries 0..P-1 march down, P..2P-1 up; each round refines every bracket by Illinois until
+    it is below max(xtol, _SEED_WIDTH_FRACTION x the distance between the two inner points).
     Returns (edges, clipped).
     """
     P = x0.size
     direction = np.concatenate([-np.ones(P), np.ones(P)])
     X0, F0, D0 = (np.concatenate([v, v]) for v in (x0, f0, d0))
-    xi, fi, xo, fo, clip = _expand(f, X0, D0, direction, limit)
-    fi = np.where(np.isinf(fi), F0, fi)
+    xi, fi, xo, fo, clip = expand_bracket(f, X0, F0, D0, direction, limit)
     XT = np.concatenate([xtol, xtol])
     for _ in range(40):  # each round cuts the brackets by 100 at least
         w_in = np.abs(xi[P:] - xi[:P])
@@ -694,7 +424,7 @@ def _seed_edges(f, x0: np.ndarray, f0: np.ndarray, d0: np.ndarray, limit: np.nda
         if act.size == 0:
             break
         tol = np.maximum(goal[act], 1e-2 * np.abs(xo - xi)[act])
-        xi[act], fi[act], xo[act], fo[act] = _illinois(
+        xi[act], fi[act], xo[act], fo[act] = illinois_root(
             lambda x, a, act=act: f(x, act[a]), xi[act], fi[act], xo[act], fo[act], tol,
             bracket=True)
     edge = np.where(clip, limit, 0.5 * (xi + xo))
@@ -794,7 +524,7 @@ def _monodromy_search(system, w, cand, lo, hi, opt,
     delta = np.maximum(0.45 * cand["gap"], np.minimum(2.0 * cand["est"], 0.2 * Oc / cand["j"]))
     a = np.maximum(Oc - delta, 0.5 * Oc)
     b = Oc + delta
-    xs, fs = _brent_max(F, a, b, Oc, np.maximum(10.0 * xtol, 1e-15 * Oc), stop_positive=True)
+    xs, fs = brent_max(F, a, b, Oc, np.maximum(10.0 * xtol, 1e-15 * Oc), stop_above=_F_FLOOR)
     hit = np.nonzero(fs > _F_FLOOR)[0]
     if hit.size == 0:
         return [], fs
@@ -879,7 +609,8 @@ def _damped_search(system, undamped, opt, lo, hi) -> list[dict]:
     def G(x, idx=None):
         return _growth_damped(system, x, opt)
 
-    xs, gs = _golden_max(G, a, b, np.maximum(10.0 * xtol, 1e-15 * hi_u), stop_positive=True)
+    xs, gs = golden_section_max(G, a, b, xtol=np.maximum(10.0 * xtol, 1e-15 * hi_u),
+                                stop_above=0.0)
     hit = np.nonzero(gs > 0.0)[0]
     out = []
     if hit.size == 0:
@@ -956,7 +687,7 @@ def _finish_monodromy(system, regs, opt, damped) -> tuple[InstabilityRegion, ...
     rows = np.arange(a.size)
     a2 = grid[rows, np.maximum(best - 1, 0)]
     b2 = grid[rows, np.minimum(best + 1, nsamp - 1)]
-    xm, gm = _brent_max(G, a2, b2, grid[rows, best], np.maximum(1e-4 * (b2 - a2), 1e-15 * b2))
+    xm, gm = brent_max(G, a2, b2, grid[rows, best], np.maximum(1e-4 * (b2 - a2), 1e-15 * b2))
     out = []
     for m, r in enumerate(regs):
         modes = (r["i"],) if r["kind"] == 0 else (r["i"], r["k"])
@@ -983,7 +714,7 @@ def _search(system: LinearPeriodicSystem, lo: float, hi: float, opt: _Options,
     w = np.sqrt(system.mu.real)
     rate = None
     if system.damped and opt.damping_margin is not None:
-        if _certificate(system).certified:  # rigorous: stable at every Omega (bounds.py)
+        if stability_certificate(system, None, None, None).certified:  # stable at every Omega
             return ()
         rate = _modal_decay_rates(system)
     cand = _candidates(w, undamped.Bt, lo, hi, opt, rate=rate)
@@ -1003,7 +734,7 @@ def _search(system: LinearPeriodicSystem, lo: float, hi: float, opt: _Options,
 
 def instability_regions(M, C, A, B, omega_min: float, omega_max: float, *,
                         rtol: float = 1e-9, step_phase: float = 0.12,
-                        max_steps: int = _MAX_STEPS, max_order: int | None = None,
+                        max_steps: int = MAX_STEPS, max_order: int | None = None,
                         max_candidates: int = 200_000, chunk: int = 256,
                         damping_margin: float | None = DAMPING_MARGIN,
                         ) -> tuple[InstabilityRegion, ...]:
@@ -1012,55 +743,34 @@ def instability_regions(M, C, A, B, omega_min: float, omega_max: float, *,
     Parameters
     ----------
     M, C, A, B : array_like
-        The system M q'' + C q' + (A + B cos Omega t) q = 0, each (n, n) (C may be None).
+        The system, each (n, n) (C may be None).
     omega_min, omega_max : float
         Range of Omega (rad per time unit of the matrices), 0 < omega_min < omega_max.
     rtol : float
-        Boundary tolerance relative to the candidate centre (dimensionless), 1e-14..1e-2:
-        every boundary is refined on |rho|_max = 1 to rtol * Omega_c; regions narrower than
-        that are not reported.
+        Edge tolerance relative to the candidate centre, 1e-14..1e-2; narrower regions are not
+        reported.
     step_phase, max_steps, chunk
-        Monodromy accuracy, cap and batch size (see
-        :func:`flexbooster.floquet.multipliers.monodromy`); the search's default step_phase
-        0.12 (half the steps of 0.06) errs by ~2e-8 on the edges of the damped Mathieu test
-        and leaves the default-case edges unchanged to 3e-10 relative.
+        Monodromy accuracy, cap and batch (:func:`.multipliers.monodromy`); 0.12 errs by ~2e-8
+        on the edges of the damped Mathieu test.
     max_order : int, optional
-        Largest order j examined (default: every order whose estimated width, Omega_c zeta^j
-        with zeta the largest modal coupling |Bt_ab| / (omega_a omega_b), exceeds 1e-3 rtol
-        Omega_c).
+        Largest order j (default: every order whose estimated width exceeds 1e-3 rtol Omega_c).
     max_candidates : int
-        Cap on the number of resonance centres enumerated (ValueError beyond it).
+        Cap on the resonance centres (:class:`TooManyCandidatesError` beyond it).
     damping_margin : float or None
-        With damping (dimensionless, >= 1; default 4): (a) if the rigorous certificate of
-        :func:`flexbooster.floquet.stability_certificate` holds, no region exists at any
-        Omega and none is searched; (b) otherwise a candidate is examined only when
-        ``damping_margin`` x its first-order growth-rate bound exceeds the decay rate of its
-        modes (a region below that is suppressed by damping: Bolotin sec. 6; the bound and
-        its margin in ``docs/theory/floquet.md`` sec. 4).  None: neither (every candidate).
+        With damping, >= 1: no search where :func:`flexbooster.floquet.stability_certificate`
+        holds, and a candidate only where margin x its first-order growth bound exceeds the decay
+        of its modes (docs/theory/floquet.md sec. 4); None: every candidate.
 
     Returns
     -------
     tuple of InstabilityRegion
-        Sorted by omega_lo; every edge is a point of |rho|_max = 1 (or an end of the range,
-        ``clipped``); overlapping regions come as their union, labelled by the lowest-order
-        candidate that reached it.  Regions narrower than about 6e-8 / j of their centre
-        (below the round-off floor of the monodromy indicators) come from the harmonic-balance
-        pair of :mod:`flexbooster.floquet.narrow` (undamped systems; edges and growth rate
-        resolved linearly in the width) down to 1e-14 of their centre; narrower ones are not
-        reported.  If the steady system
-        (B = 0) is itself unstable (complex or non-positive eigenvalues of M^-1 A, or a damped
-        steady system with a growing mode) the result is one region of kind "steady" over the
-        whole range.
-
-    Raises
-    ------
-    ValueError
-        Bad input (naming the argument), too many candidates, or a step count over the cap.
+        Sorted by omega_lo; every edge a point of |rho|_max = 1 or an end of the range; overlaps
+        as their union; regions below the indicators' floor (~6e-8 / j) from :mod:`.narrow`
+        (undamped) down to 1e-14 of the centre; an unstable steady system one "steady" region.
 
     References
     ----------
-    Bolotin (1964), ch. 1-2 and sec. 6; Hsu (1963); Magnus & Winkler (1966), ch. 2;
-    Takahashi (1981).
+    Bolotin (1964), ch. 1-2, sec. 6; Hsu (1963); Magnus & Winkler (1966), ch. 2; Takahashi (1981).
     """
     lo, hi = _range(omega_min, omega_max)
     opt = _options(rtol, step_phase, max_steps, max_order, max_candidates, chunk,
@@ -1075,29 +785,14 @@ class SearchWork:
     Attributes
     ----------
     n : int
-        Degrees of freedom (dimensionless).
-    steady : bool
-        The steady system is unstable: the search returns one "steady" region at once.
-    certified : bool
-        Damped and certified stable at every Omega (:func:`stability_certificate`): no search.
-    n_candidates : int
-        Candidates examined with the monodromy (after the damping filter; dimensionless).
-    n_narrow : int
-        Candidates left to the harmonic-balance pair of :mod:`.narrow` (undamped only;
-        dimensionless).
-    undamped_steps : int
-        Sum over the monodromy candidates of the undamped half-period step count at the
-        centre (:func:`.multipliers.step_counts`; dimensionless): one undamped evaluation of
-        every candidate (the undamped search, or the seeds of the damped one).  Each step
-        costs ~n^3 (the modal Lawson kernel).
-    damped_steps : int
-        The same with the damped full-period step count (0 without damping): one damped
-        evaluation of every candidate (an upper bound: only the seeds that hold an undamped
-        region are searched with damping).
-
-    References
-    ----------
-    Cost model of :func:`.multipliers.step_counts` (Lawson 1967; docs/theory/floquet.md).
+        Degrees of freedom.
+    steady, certified : bool
+        The steady system is unstable, or damped and certified stable: no search.
+    n_candidates, n_narrow : int
+        Candidates examined by the monodromy and left to :mod:`.narrow`.
+    undamped_steps, damped_steps : int
+        Sums of the step counts (:func:`.multipliers.step_counts`) at the candidate centres,
+        undamped half period and damped period (each step ~n^3).
     """
 
     n: int
@@ -1119,35 +814,16 @@ class SearchWork:
 def search_work(M, C, A, B, omega_min: float, omega_max: float, **options) -> SearchWork:
     """The candidates and step counts of :func:`instability_regions`, without integrating.
 
-    The same steps as the search up to its first monodromy: the steady check, the
-    certificate and the damping filter (damped), the candidate table; then the step count of
-    :func:`.multipliers.step_counts` at each candidate centre.  The time of the search is
-    about a number of evaluations per candidate times these steps (calibrated by the caller,
-    e.g. :func:`flexbooster.vehicle.harmonic_search_seconds`).
-
     Parameters
     ----------
-    M, C, A, B : array_like
-        The system (see :func:`instability_regions`).
-    omega_min, omega_max : float
-        Range of Omega (rad per time unit of the matrices), 0 < omega_min < omega_max.
-    **options
-        As :func:`instability_regions` (rtol, step_phase, max_steps, max_order,
-        max_candidates, chunk, damping_margin).
+    M, C, A, B, omega_min, omega_max, **options
+        As :func:`instability_regions`.
 
     Returns
     -------
     SearchWork
-
-    Raises
-    ------
-    ValueError
-        As :func:`instability_regions` (bad input, too many candidates, a step count over the
-        cap).
-
-    References
-    ----------
-    Bolotin (1964), ch. 1-2 (the candidate centres); Lawson (1967) (the step counts).
+        The search's steps up to its first monodromy (steady check, certificate, damping filter,
+        candidates); raises as the search does.
     """
     lo, hi = _range(omega_min, omega_max)
     opt = _options(**options)
@@ -1164,7 +840,7 @@ def search_work(M, C, A, B, omega_min: float, omega_max: float, **options) -> Se
         V=system.V, Bt=system.Bt)
     rate = None
     if system.damped and opt.damping_margin is not None:
-        if _certificate(system).certified:  # as _search: no region at any Omega
+        if stability_certificate(system, None, None, None).certified:  # as _search: none
             return SearchWork(**{**none, "certified": True})
         rate = _modal_decay_rates(system)
     cand = _candidates(np.sqrt(system.mu.real), undamped.Bt, lo, hi, opt, rate=rate)
@@ -1187,20 +863,14 @@ def search_work(M, C, A, B, omega_min: float, omega_max: float, **options) -> Se
 # --------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class CriticalAmplitude:
-    """Smallest amplitude gamma at which a region exists (B = gamma B1).
+    """Smallest amplitude at which a region exists (B = gamma B1; Bolotin 1964, sec. 6).
 
     Attributes
     ----------
-    kind, modes, order : str, tuple of int, int
-        The region (see :class:`InstabilityRegion`).
-    gamma_cr : float
-        Critical amplitude (dimensionless); 0 without damping.
-    omega_cr : float
-        Omega where the region appears (rad per time unit).
-
-    References
-    ----------
-    Bolotin (1964), sec. 6.
+    kind, modes, order
+        The region (:class:`InstabilityRegion`).
+    gamma_cr, omega_cr : float
+        The critical amplitude (0 without damping) and the Omega where the region appears.
     """
 
     kind: str
@@ -1218,21 +888,15 @@ class CriticalAmplitude:
 
 @dataclass(frozen=True)
 class RegionBoundary:
-    """Boundary curves of one region in the (Omega, gamma) plane (B = gamma B1).
+    """Boundary curves of one region in the (Omega, gamma) plane (B = gamma B1; Bolotin ch. 1).
 
     Attributes
     ----------
-    kind, modes, order : str, tuple of int, int
-        The region.
-    gamma : numpy.ndarray
-        Amplitudes (dimensionless) at which the region exists, ascending; the first is the
-        critical amplitude (0 without damping), where omega_lo = omega_hi.
-    omega_lo, omega_hi : numpy.ndarray
-        Boundaries at each gamma (rad per time unit).
-
-    References
-    ----------
-    Bolotin (1964), ch. 1 (regions in the (Omega, mu) plane), sec. 6.
+    kind, modes, order
+        The region (:class:`InstabilityRegion`).
+    gamma, omega_lo, omega_hi : numpy.ndarray
+        Amplitudes, ascending from the critical one (where omega_lo = omega_hi), and the edges
+        there (rad per time unit).
     """
 
     kind: str
@@ -1265,41 +929,30 @@ def critical_amplitude(M, C, A, B1, *, gamma_max: float, omega_min: float, omega
                        **options) -> tuple[CriticalAmplitude, ...]:
     """Critical amplitude of every region that exists at gamma_max (B = gamma B1).
 
-    Without damping every region grows out of its candidate centre at gamma = 0.  With damping
-    the largest growth rate near the region, g(gamma) = max_Omega log|rho|_max / T, is negative
-    at gamma = 0 and positive at gamma_max; its root (Illinois regula falsi, all regions at
-    once, each g a Brent maximum over the region's Omega interval at gamma_max, with its own
-    monodromy accuracy: independent of the search's rtol and step_phase) is the amplitude at
-    which the two boundaries meet (Bolotin 1964, sec. 6: mu_cr = Delta / pi for the damped
-    Mathieu equation).
+    Without damping every region grows out of its centre at gamma = 0.  With damping the largest
+    growth rate near the region, g(gamma) = max_Omega log|rho|_max / T, is negative at 0 and
+    positive at gamma_max; its root (Illinois, all regions at once, each g a Brent maximum at its
+    own step_phase) is where the two boundaries meet (Bolotin 1964, sec. 6).
 
     Parameters
     ----------
     M, C, A, B1 : array_like
         The system with B = gamma B1 (see :func:`instability_regions`).
     gamma_max : float
-        Largest amplitude (dimensionless), > 0.
+        Largest amplitude, > 0.
     omega_min, omega_max : float
         Omega range (rad per time unit).
     gamma_rtol : float
-        Tolerance on gamma_cr relative to gamma_max (dimensionless), 1e-12..1e-2; the growth
-        maxima are converged to ~1e-8 of the peak and integrated at step_phase
-        min(step_phase, 0.12) (error ~1e-8 relative on gamma_cr), so the tip is accurate to
-        about gamma_rtol + 1e-7 relative whatever the search's rtol.
+        Tolerance relative to gamma_max, 1e-12..1e-2.
     regions : tuple of InstabilityRegion, optional
-        The regions at gamma_max from :func:`instability_regions` with the same range and
-        options, if already computed (saves that search; not checked).
+        The search at gamma_max with the same range and options, if known.
     **options
-        Passed to :func:`instability_regions`.
+        As :func:`instability_regions`.
 
     Returns
     -------
     tuple of CriticalAmplitude
-        One per region found at gamma_max (steady regions are skipped).
-
-    References
-    ----------
-    Bolotin (1964), sec. 6 (damping), ch. 1-2.
+        One per non-steady region at gamma_max.
     """
     gmax = _gamma_max(gamma_max)
     lo, hi = _range(omega_min, omega_max)
@@ -1333,14 +986,10 @@ _TIP_SAMPLES = 5
 def _tips(base: LinearPeriodicSystem, top, opt: _Options, gamma_rtol: float):
     """Critical amplitude factors c (B = c B_top) and Omega of the tips, all regions at once.
 
-    g(c) = max_Omega growth(Omega, c) over each region's Omega interval at gamma_max (the
-    region at a smaller amplitude lies inside it) is increasing, g(0) = -(slowest steady decay)
-    < 0 (exact, from the steady eigenvalues) and g(1) > 0; its root c_cr is bracketed by
-    [0, 1] and found by vectorised Illinois regula falsi to gamma_rtol; each g is a
-    vectorised Brent maximum over Omega (to _TIP_OMEGA_XTOL of the width, from the previous
-    maximiser), with the monodromy at _TIP_STEP_PHASE: the tip does not depend on the search's
-    rtol or step_phase (Bolotin 1964, sec. 6: the two boundaries meet where the largest
-    growth rate is zero).
+    g(c), the largest growth over each region's interval at gamma_max, rises from
+    g(0) = -(slowest steady decay) < 0 to g(1) > 0; its root by Illinois to gamma_rtol, each g a
+    Brent maximum (to _TIP_OMEGA_XTOL of the width, from the best of the previous maximiser, the
+    centre and a few samples) at _TIP_STEP_PHASE.
     """
     tip = _Options(rtol=opt.rtol, step_phase=min(opt.step_phase, _TIP_STEP_PHASE),
                    max_steps=opt.max_steps, max_order=opt.max_order,
@@ -1355,7 +1004,7 @@ def _tips(base: LinearPeriodicSystem, top, opt: _Options, gamma_rtol: float):
 
     def g(c, idx):
         def f(x, sub):
-            return _growth_damped(base, x, tip, scale=c[idx][sub])
+            return _growth_damped(base, x, tip, amplitude=c[idx][sub])
 
         # the start: the best of the previous maximiser, the candidate centre and a few
         # samples.  Outside the undamped region of amplitude c the growth is flat (the
@@ -1367,7 +1016,7 @@ def _tips(base: LinearPeriodicSystem, top, opt: _Options, gamma_rtol: float):
         m = starts.shape[1]
         fs = f(starts.ravel(), np.repeat(np.arange(idx.size), m)).reshape(starts.shape)
         x0 = starts[np.arange(idx.size), np.argmax(fs, axis=1)]
-        x, gx = _brent_max(f, a[idx], b[idx], x0, xtol[idx])
+        x, gx = brent_max(f, a[idx], b[idx], x0, xtol[idx])
         xs[idx] = x
         return gx
 
@@ -1389,7 +1038,7 @@ def _tips(base: LinearPeriodicSystem, top, opt: _Options, gamma_rtol: float):
             c_vec[ids[act]] = c
             return g(c_vec, ids[act])
 
-        c_cr[ids] = _illinois(root_f, c_in[ids], f_in[ids], c_out[ids], f_out[ids],
+        c_cr[ids] = illinois_root(root_f, c_in[ids], f_in[ids], c_out[ids], f_out[ids],
                               np.full(ids.size, gamma_rtol))
         c_vec[ids] = c_cr[ids]
         g(c_vec, ids)  # the maximiser at the tip
@@ -1413,36 +1062,21 @@ def region_boundaries(M, C, A, B1, *, gamma_max: float, omega_min: float, omega_
                       **options) -> tuple[RegionBoundary, ...]:
     """Boundary curves omega_lo(gamma), omega_hi(gamma) of every region (B = gamma B1).
 
-    At each of ``n_gamma`` amplitudes in (0, gamma_max] the boundaries are solved from the
-    boundary conditions (:func:`instability_regions`, refined on |rho| = 1), and matched to the
-    regions found at gamma_max by (kind, modes, order).  The tip is (0, Omega_c, Omega_c)
-    without damping and (gamma_cr, omega_cr, omega_cr) from :func:`critical_amplitude` with
-    damping.
+    At ``n_gamma`` amplitudes in (0, gamma_max] the regions of :func:`instability_regions`,
+    matched to those at gamma_max by (kind, modes, order); the tip at the critical amplitude
+    (:func:`critical_amplitude`) (Bolotin 1964, ch. 1, sec. 6).
 
     Parameters
     ----------
-    M, C, A, B1 : array_like
-        The system with B = gamma B1.
-    gamma_max : float
-        Largest amplitude (dimensionless), > 0.
-    omega_min, omega_max : float
-        Omega range (rad per time unit).
+    M, C, A, B1, gamma_max, omega_min, omega_max, regions, **options
+        As :func:`critical_amplitude`.
     n_gamma : int
-        Number of amplitude levels, 2..1000.
-    regions : tuple of InstabilityRegion, optional
-        The regions at gamma_max from :func:`instability_regions` with the same range and
-        options, if already computed (saves that level's search; not checked).
-    **options
-        Passed to :func:`instability_regions`.
+        Amplitude levels, 2..1000.
 
     Returns
     -------
     tuple of RegionBoundary
         One per region at gamma_max.
-
-    References
-    ----------
-    Bolotin (1964), ch. 1 (figs. of the regions in the (Omega, mu) plane), sec. 6.
     """
     gmax = _gamma_max(gamma_max)
     lo, hi = _range(omega_min, omega_max)

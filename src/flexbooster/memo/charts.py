@@ -21,50 +21,22 @@ from typing import Any
 import numpy as np
 
 from ..checks import count, positive
-from ..floquet import region_boundaries
+from ..floquet import region_boundaries, transition_curves
 from .beam import free_free_eigenvalues, mode_shape
 from .beam_action import BAND_OMEGA_BAR_MIN, beam_system, modal_damping
 from .geometry import MassProperties
-from .pitch import (
-    PITCH_MAX_TONGUE,
-    PitchResult,
-    pitch_band_edges,
-    pitch_tongue_omega_bound,
-    transition_curves,
-)
+from .pitch import PITCH_MAX_TONGUE, PitchResult, pitch_band_edges, pitch_tongue_omega_bound
 from .shell import ShellFrequencies
 from .stability import StabilityTable, excitation, excitation_curves
 
-__all__ = [
-    "INCE_STRUTT_Q_POINTS",
-    "INCE_STRUTT_ORDERS",
-    "CAMPBELL_POINTS",
-    "CAMPBELL_S_MAX",
-    "BAND_CHART_GAMMA_MAX",
-    "PITCH_BAND_CHART_LEVELS",
-    "BEAM_ACTION_CHART_LEVELS",
-    "BEAM_ACTION_CHART_RTOL",
-    "BEAM_ACTION_CHART_MAX_ORDER",
-    "BEAM_ACTION_CHART_STEP_PHASE",
-    "VEHICLE_CHART_LEVELS",
-    "VEHICLE_CHART_GAMMA_MAX",
-    "MODE_SHAPE_POINTS",
-    "MODE_SHAPE_COUNT",
-    "InceStruttData",
-    "ince_strutt_data",
-    "CampbellData",
-    "campbell_data",
-    "RegionCurves",
-    "BandChart",
-    "pitch_band_chart",
-    "beam_action_chart",
-    "BeamModeShapes",
-    "beam_mode_shapes",
-    "NodalPattern",
-    "nodal_lines",
-    "nodal_pattern_data",
-    "FigureData",
-]
+__all__ = ["INCE_STRUTT_Q_POINTS", "INCE_STRUTT_ORDERS", "CAMPBELL_POINTS", "CAMPBELL_S_MAX",
+           "BAND_CHART_GAMMA_MAX", "PITCH_BAND_CHART_LEVELS", "BEAM_ACTION_CHART_LEVELS",
+           "BEAM_ACTION_CHART_RTOL", "BEAM_ACTION_CHART_MAX_ORDER", "BEAM_ACTION_CHART_STEP_PHASE",
+           "VEHICLE_CHART_LEVELS", "VEHICLE_CHART_GAMMA_MAX", "MODE_SHAPE_POINTS",
+           "MODE_SHAPE_COUNT", "InceStruttData", "ince_strutt_data", "CampbellData",
+           "campbell_data", "RegionCurves", "BandChart", "pitch_band_chart", "beam_action_chart",
+           "BeamModeShapes", "beam_mode_shapes", "NodalPattern", "nodal_lines",
+           "nodal_pattern_data", "FigureData"]
 
 #: q points of the Ince-Strutt transition curves, uniform on [0, q_max].
 INCE_STRUTT_Q_POINTS = 300
@@ -123,15 +95,10 @@ class InceStruttData:
 
     Attributes
     ----------
-    q : numpy.ndarray
-        Shape (n,), q grid of the curves (dimensionless).
-    curves : dict of str to numpy.ndarray
-        ``"a0"``..``"a{r}"``, ``"b1"``..``"b{r}"`` on ``q``; tongue r lies between b_r and a_r
-        and a < a_0 is unstable (dimensionless).
-    a_path, q_path : numpy.ndarray
-        Shape (G,), the operating path (a(Omega), |q(Omega)|) of eq. (4.2-4).
-    path_stable : numpy.ndarray of bool
-        Shape (G,), beta real at each point of the path.
+    q, curves : numpy.ndarray, dict
+        The q grid and "a0".."a{r}", "b1".."b{r}" on it (tongue r between b_r and a_r).
+    a_path, q_path, path_stable : numpy.ndarray
+        The path (a, |q|) of eq. (4.2-4) and beta real on it.
     """
 
     q: np.ndarray
@@ -152,20 +119,16 @@ def ince_strutt_data(pitch: PitchResult, *, n_q: int = INCE_STRUTT_Q_POINTS,
     Parameters
     ----------
     pitch : PitchResult
-        The rigid-body pitch result (a, q along the Omega grid).
+        The rigid-body pitch (a, q along the grid).
     n_q : int
-        q points, 2..100000.
+        q points, on [0, max(0.1, 1.3 max |q|)], 2..100000.
     r_max : int
-        Highest order of the curves, 1..50.
+        Highest order, 1..50.
 
     Returns
     -------
     InceStruttData
-        q runs from 0 to max(0.1, 1.3 max |q|).
-
-    References
-    ----------
-    Abramowitz & Stegun (1964) 20.2; Tech Memo 104, eqs. (4.2-3)..(4.2-5).
+        A&S 20.2; memo eqs. (4.2-3)..(4.2-5).
     """
     n_q = count("n_q", n_q, 2, 100_000)
     r_max = count("r_max", r_max, 1, 50)
@@ -182,20 +145,12 @@ class CampbellData:
 
     Attributes
     ----------
-    Omega_bar : numpy.ndarray
-        Shape (n,), thrust frequencies Omega / omega_1 of the curves.
-    curves : numpy.ndarray
-        Shape (C, n), excitation frequencies of the drawn curves (units of omega_1).
-    family, s : numpy.ndarray of int
-        Shape (C,), family (memo 7.4) and harmonic of each curve.
-    shell_omega_bar : numpy.ndarray
-        Shell natural frequencies (units of omega_1).
-    root_Omega_bar, root_shell_omega_bar : numpy.ndarray
-        Roots of the stability table (units of omega_1).
-    root_active : numpy.ndarray of bool
-        Active forcing at each root.
+    Omega_bar, curves, family, s : numpy.ndarray
+        Omega / omega_1 (n,), the drawn curves (C, n), their family (memo 7.4) and harmonic.
+    shell_omega_bar, root_Omega_bar, root_shell_omega_bar, root_active : numpy.ndarray
+        Shell frequencies, the roots of the stability table, active forcing at each root.
     omega_1 : float
-        Reference frequency (rad/s).
+        Reference frequency (rad/s); frequencies are in its units.
     """
 
     Omega_bar: np.ndarray
@@ -225,30 +180,24 @@ def campbell_data(*, params: Any, omega_range: tuple[float, float], omega_1: flo
     Parameters
     ----------
     params : callable
-        ``params(Omega_bar) -> (beta, alpha)``, the pipeline's parameter function
-        (:class:`flexbooster.memo.responses.ExcitationParameters`).
+        ``params(Omega_bar) -> (beta, alpha)``, the pipeline's parameter function.
     omega_range : (float, float)
-        Omega range (rad/s), 0 < lo < hi.
+        Omega range (rad/s).
     omega_1 : float
-        Reference frequency (rad/s), > 0.
-    shell : ShellFrequencies
-        The shell frequencies.
-    table : StabilityTable
-        The roots.
+        Reference frequency (rad/s).
+    shell, table : ShellFrequencies, StabilityTable
+        The shell frequencies and the roots.
     R, S : int
         Beam exponents and harmonics of the case.
     n_points : int
-        Points of the Omega grid, 2..100000.
+        Omega points, 2..100000.
     s_max : int
-        Harmonics |s| <= s_max of the (alpha_r + s) curves are kept, >= 0.
+        Harmonics |s| <= s_max of the (alpha_r + s) curves drawn.
 
     Returns
     -------
     CampbellData
-
-    References
-    ----------
-    Tech Memo 104, eqs. (7.3-1)..(7.3-35).
+        Memo eqs. (7.3-1)..(7.3-35).
     """
     n_points = count("n_points", n_points, 2, 100_000)
     s_max = count("s_max", s_max, 0, None)
@@ -271,11 +220,9 @@ class RegionCurves:
     Attributes
     ----------
     label : str
-        Which region: "tongue r" (pitch) or "kind modes j" (beam action).
-    gamma : numpy.ndarray
-        Shape (k,), amplitudes, ascending; the first is the tip (critical gamma).
-    omega_lo, omega_hi : numpy.ndarray
-        Shape (k,), the edges at each gamma (rad/s).
+        "tongue r" (pitch) or "kind modes j" (beam action).
+    gamma, omega_lo, omega_hi : numpy.ndarray
+        Amplitudes ascending from the tip (the critical gamma) and the edges (rad/s).
     """
 
     label: str
@@ -290,7 +237,8 @@ class RegionCurves:
 
 @dataclass(frozen=True)
 class BandChart:
-    """Instability regions traced from their boundaries, in physical Omega (rad/s).
+    """Instability regions traced from their boundaries, in physical Omega (rad/s), drawn as
+    shaded regions against the case's gamma.
 
     Attributes
     ----------
@@ -298,12 +246,8 @@ class BandChart:
         What is charted.
     regions : tuple of RegionCurves
         The traced regions.
-    gamma_operating : float
-        The case's gamma (dimensionless), drawn as a horizontal line.
-    omega_min, omega_max : float
-        The case's Omega range (rad/s).
-    gamma_max : float
-        Top of the chart (dimensionless).
+    gamma_operating, omega_min, omega_max, gamma_max : float
+        The case's gamma and Omega range (rad/s), the top of the chart.
     """
 
     title: str
@@ -323,27 +267,22 @@ class BandChart:
 
 def pitch_band_chart(model: Any, *, n_gamma: int = PITCH_BAND_CHART_LEVELS,
                      gamma_max: float = BAND_CHART_GAMMA_MAX) -> BandChart:
-    """The pitch tongues in the (Omega, gamma) plane, traced from the transition curves.
+    """The pitch tongues in the (Omega, gamma) plane, from the transition curves.
 
     Parameters
     ----------
     model : BoosterModel
-        The derived model (omega_psi in rad/s, gamma, Omega range, pitch damping ratio).
+        The derived model (omega_psi, gamma, Omega range, pitch damping ratio).
     n_gamma : int
         gamma levels, uniform on [0, gamma_max], 2..1000.
     gamma_max : float
-        Largest gamma (dimensionless), 0 < gamma_max < 1.
+        Largest gamma, 0 < gamma_max < 1.
 
     Returns
     -------
     BandChart
-        One region per tongue r that reaches the Omega range at gamma_max, with the edges of
-        :func:`flexbooster.memo.pitch.pitch_band_edges` at each level where the band exists.
-
-    References
-    ----------
-    Tech Memo 104, eqs. (4.2-3), (4.2-4); Abramowitz & Stegun (1964) 20.2; Bolotin (1964),
-    ch. 1, sec. 6.
+        One region per tongue reaching the range at gamma_max, with the edges of
+        :func:`flexbooster.memo.pitch.pitch_band_edges` where the band exists.
     """
     n_gamma = count("n_gamma", n_gamma, 2, 1000)
     gamma_max = positive("gamma_max", gamma_max)
@@ -385,30 +324,19 @@ def beam_action_chart(model: Any, *, n_gamma: int = BEAM_ACTION_CHART_LEVELS,
     Parameters
     ----------
     model : BoosterModel
-        The derived model (Omega range in rad/s, beam-action system, damping ratios).
+        The derived model (Omega range, beam-action system, damping ratios).
     n_gamma : int
-        Amplitude levels of :func:`flexbooster.floquet.region_boundaries` (the tip at the
-        critical gamma included), 2..1000.
+        Amplitude levels of :func:`flexbooster.floquet.region_boundaries`, 2..1000.
     gamma_max : float
-        Largest gamma (dimensionless), 0 < gamma_max < 1.
-    rtol : float
-        Boundary tolerance relative to each centre (dimensionless); narrower regions are not
-        drawn.
-    max_order : int or None
-        Largest resonance order j drawn.
-    step_phase : float
-        Monodromy step parameter (dimensionless), > 0.
+        Largest gamma, 0 < gamma_max < 1.
+    rtol, max_order, step_phase
+        Edge tolerance (narrower regions not drawn), highest order, monodromy accuracy.
 
     Returns
     -------
     BandChart
-        The regions that exist at gamma_max, edges converted from Omega / omega_1 to rad/s;
-        searched above max(omega_min, omega_1 / 4) as the pipeline's bands
-        (:data:`flexbooster.memo.beam_action.BAND_OMEGA_BAR_MIN`).
-
-    References
-    ----------
-    Bolotin (1964), ch. 1 (regions in the (Omega, mu) plane), sec. 6; Tech Memo 104, 4.1.
+        The regions at gamma_max above max(omega_min, omega_1 / 4), as the pipeline's bands,
+        edges in rad/s (Bolotin 1964, ch. 1, sec. 6).
     """
     n_gamma = count("n_gamma", n_gamma, 2, 1000)
     gamma_max = positive("gamma_max", gamma_max)
@@ -443,14 +371,10 @@ class BeamModeShapes:
 
     Attributes
     ----------
-    zeta : numpy.ndarray
-        Shape (n,), beam coordinate, 0 at the aft edge, 2 at the nose (dimensionless).
-    phi : numpy.ndarray
-        Shape (N, n), phi_n(zeta) (dimensionless).
-    lambda_n : numpy.ndarray
-        Shape (N,), eigenvalues (dimensionless).
+    zeta, phi, lambda_n : numpy.ndarray
+        Coordinate (n,), 0 at the aft edge, 2 at the nose; shapes (N, n); eigenvalues (N,).
     zeta_junction, zeta_cm : float
-        zeta of the junction (eq. C-8) and of the CM.
+        zeta of the junction (C-8) and of the CM.
     """
 
     zeta: np.ndarray
@@ -466,7 +390,7 @@ class BeamModeShapes:
 
 def beam_mode_shapes(mass: MassProperties, *, N: int = MODE_SHAPE_COUNT,
                      n_points: int = MODE_SHAPE_POINTS) -> BeamModeShapes:
-    """phi_n(zeta), n = 1..N, with the junction and the CM.
+    """phi_n(zeta), n = 1..N, with the junction and the CM (memo 4.1-2, C-1, C-6..C-9).
 
     Parameters
     ----------
@@ -476,14 +400,6 @@ def beam_mode_shapes(mass: MassProperties, *, N: int = MODE_SHAPE_COUNT,
         Modes, 1..500.
     n_points : int
         Points per mode, 2..100000.
-
-    Returns
-    -------
-    BeamModeShapes
-
-    References
-    ----------
-    Tech Memo 104, eqs. (4.1-2), (C-1), (C-6)..(C-9).
     """
     N = count("N", N, 1, 500)
     n_points = count("n_points", n_points, 2, 100_000)
@@ -496,26 +412,18 @@ def beam_mode_shapes(mass: MassProperties, *, N: int = MODE_SHAPE_COUNT,
 
 
 def nodal_lines(j: int, k: int) -> tuple[np.ndarray, np.ndarray]:
-    """Nodal lines of the radial shape sin(j pi s / 2) cos(k theta) (eqs. 5.3-2d, 5.3-3d).
+    """Nodal lines of the radial shape sin(j pi s / 2) cos(k theta) (memo 5.3-2d, 5.3-3d).
 
     Parameters
     ----------
-    j : int
-        Axial index (>= 1; j half-waves along the cylinder).
-    k : int
-        Circumferential index (>= 0; k full waves around the circumference).
+    j, k : int
+        Axial (>= 1) and circumferential (>= 0) indices.
 
     Returns
     -------
-    s : numpy.ndarray
-        Axial nodal circles s = 2 i / j, i = 0..j, in the local coordinate s in [0, 2]
-        (0 = aft edge, 2 = forward edge).
-    theta : numpy.ndarray
-        Nodal generators theta = (2 i + 1) pi / (2 k), i = 0..2k - 1 (rad); empty for k = 0.
-
-    References
-    ----------
-    Tech Memo 104, eqs. (5.3-2d), (5.3-3d), Fig. 4.
+    s, theta : numpy.ndarray
+        Nodal circles s = 2 i / j, i = 0..j (s in [0, 2] from the aft edge) and generators
+        theta = (2 i + 1) pi / (2 k) (rad; none for k = 0).
     """
     j = count("j", j, 1, None)
     k = count("k", k, 0, None)
@@ -532,16 +440,10 @@ class NodalPattern:
     ----------
     cylinder, j, k : int
         The mode.
-    radius, half_length : float
-        R_d, L_d (m).
-    s_nodes : numpy.ndarray
-        Nodal circles in the local coordinate s in [0, 2].
-    theta_nodes : numpy.ndarray
-        Nodal generators (rad).
-    sign : numpy.ndarray
-        Shape (len(theta cells), len(s cells)), sign of w in each cell.
-    hz : float
-        Lowest frequency of the mode (Hz), 0 if not in the table.
+    radius, half_length, hz : float
+        R_d, L_d (m) and the mode's lowest frequency (Hz; 0 if not in the table).
+    s_nodes, theta_nodes, sign : numpy.ndarray
+        Nodal circles (s in [0, 2]), generators (rad), the sign of w in each cell.
     """
 
     cylinder: int
@@ -561,26 +463,18 @@ class NodalPattern:
 
 def nodal_pattern_data(shell: ShellFrequencies, *, cylinder: int, j: int | None = None,
                        k: int | None = None, radius: float, half_length: float) -> NodalPattern:
-    """The nodal pattern of mode (j, k) of a cylinder; by default its lowest j, k >= 1 mode.
+    """The nodal pattern of mode (j, k) of a cylinder (memo 5.3-2d, 5.3-3d, Fig. 4).
 
     Parameters
     ----------
     shell : ShellFrequencies
-        The frequency table (gives the frequency).
+        The frequency table.
     cylinder : int
         1 or 2.
     j, k : int, optional
-        The mode; by default the lowest-frequency mode with j >= 1 and k >= 1.
+        The mode (default its lowest mode with j, k >= 1).
     radius, half_length : float
         R_d, L_d (m), > 0.
-
-    Returns
-    -------
-    NodalPattern
-
-    References
-    ----------
-    Tech Memo 104, eqs. (5.3-2d), (5.3-3d), Fig. 4.
     """
     d = count("cylinder", cylinder, 1, 2)
     radius = positive("radius", radius)
@@ -607,21 +501,14 @@ def nodal_pattern_data(shell: ShellFrequencies, *, cylinder: int, j: int | None 
 
 @dataclass(frozen=True)
 class FigureData:
-    """Everything the figures draw (stored in the results and in results.json ``figures``).
+    """Everything the figures draw (results.json ``figures``).
 
     Attributes
     ----------
-    ince_strutt : InceStruttData
-    beam_modes : BeamModeShapes
-    nodal_patterns : tuple of NodalPattern
-        One per cylinder.
-    beam_action_chart : BandChart or None
-        The beam-action regions traced from their boundaries; None when the beam action was
-        not computed.
-    campbell : CampbellData or None
-        None when the stability table was not computed.
-    pitch_band_chart : BandChart or None
-        The pitch tongues in the (Omega, gamma) plane.
+    ince_strutt, beam_modes, nodal_patterns
+        The Ince-Strutt chart, the beam mode shapes, one nodal pattern per cylinder.
+    beam_action_chart, campbell, pitch_band_chart : optional
+        None when their stage did not run.
     """
 
     ince_strutt: InceStruttData

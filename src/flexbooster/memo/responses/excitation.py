@@ -16,8 +16,8 @@ import numpy as np
 import scipy.linalg
 
 from ...checks import count, finite, positive
+from ...floquet import characteristic_exponent
 from ..beam_action import (
-    BeamActionExponents,
     BeamActionResult,
     beam_system,
     hill_exponents,
@@ -26,7 +26,7 @@ from ..beam_action import (
     reduced_exponents,
 )
 from ..model import BoosterModel
-from ..pitch import characteristic_exponent, mathieu_parameters
+from ..pitch import mathieu_parameters
 
 __all__ = [
     "BASIS",
@@ -275,15 +275,14 @@ class ExcitationParameters:
 
 
 def excitation_parameters(model: BoosterModel,
-                          beam_action: BeamActionResult | BeamActionExponents
-                          ) -> ExcitationParameters:
+                          beam_action: BeamActionResult) -> ExcitationParameters:
     """The parameter function beta(Omega_bar), alpha_r(Omega_bar) of a booster.
 
     Parameters
     ----------
     model : BoosterModel
         The derived model (omega_psi, gamma, omega_1).
-    beam_action : BeamActionResult or BeamActionExponents
+    beam_action : BeamActionResult
         Beam-action exponents on the case's Omega grid (natural branch): its ``Omega_bar``
         and ``alpha`` alone are used.
 
