@@ -133,11 +133,12 @@ def test_figures_laid_out_once_keep_every_text_inside_and_apart(results):
     # figure has no layout engine left (the saves do not lay it out again)
     from matplotlib.text import Text
 
-    from flexbooster.present.outputs import _render, figure_names, make_figures
+    from flexbooster.present.figure_files import render_figure
+    from flexbooster.present.outputs import figure_names, make_figures
 
     for name in figure_names(results):
         fig = make_figures(results, names=(name,))[name]
-        _render(fig)
+        render_figure(fig)
         assert fig.get_layout_engine() is None, name
         renderer = fig.canvas.get_renderer()  # the PNG's (Agg, 120 dpi)
         page = fig.bbox.padded(1.0)  # one pixel of rounding

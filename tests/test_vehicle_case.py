@@ -431,7 +431,7 @@ def test_report_embeds_the_vehicle_figures(vehicle_case_file):
     the stored views) and the report's vehicle section embeds both."""
     from dataclasses import replace
 
-    from flexbooster.present.outputs import _render
+    from flexbooster.present.figure_files import render_figure
     from flexbooster.present.report import SECTIONS, render_report
     from flexbooster.present.vehicle import vehicle_figures
 
@@ -441,7 +441,7 @@ def test_report_embeds_the_vehicle_figures(vehicle_case_file):
     results = analyze(case, beam_action=False, figures=False, vehicle=False)
     survey = analyze_vehicle(case, k_max=2, views=True)
     results = replace(results, vehicle=survey)
-    svgs = {name: _render(fig)[0] for name, fig in vehicle_figures(survey).items()}
+    svgs = {name: render_figure(fig)[0] for name, fig in vehicle_figures(survey).items()}
     assert set(svgs) == {"vehicle-mode-shapes", "vehicle-unrolled"}
     report = render_report(results, svgs)
     assert 'id="fig-vehicle-mode-shapes"' in report and 'id="fig-vehicle-unrolled"' in report

@@ -426,7 +426,7 @@ def test_chart_and_report_from_the_results_alone(results, monkeypatch):
     report section are drawn from the stored Results (compute -> data -> plot)."""
     import matplotlib
 
-    from flexbooster.present.outputs import _render
+    from flexbooster.present.figure_files import render_figure
     from flexbooster.present.plotting.vehicle_regions import vehicle_region_chart
     from flexbooster.present.report import render_report
     from flexbooster.present.summary import print_summary
@@ -457,7 +457,7 @@ def test_chart_and_report_from_the_results_alone(results, monkeypatch):
     # on a given axes, returning its figure
     other = matplotlib.figure.Figure()
     assert vehicle_region_chart(results.vehicle_regions, ax=other.add_subplot()) is other
-    svgs = {"vehicle-regions": _render(fig)[0]}
+    svgs = {"vehicle-regions": render_figure(fig)[0]}
     page = render_report(results, svgs)
     sec = page.split('<section id="vehicle-regions">', 1)[1].split("</section>", 1)[0]
     assert 'id="fig-vehicle-regions"' in sec and "<svg" in sec

@@ -404,8 +404,8 @@ def simulate(
     """
     from .analysis import simulate_case
     from .memo.responses import edge_conditions
+    from .present.figure_files import save_figure
     from .present.io import dumps_finite, write_csv_atomic, write_json_atomic
-    from .present.outputs import save_figure
     from .units import to_si
 
     case = _load(case_file)

@@ -52,6 +52,8 @@ import numpy as np
 from ..checks import count
 
 __all__ = [
+    "one_minus_alpha_scaled",
+    "alpha_from_eigenvalues",
     "free_free_eigenvalues",
     "free_free_alpha",
     "first_bending_frequency",
@@ -125,10 +127,22 @@ def free_free_alpha(n: int) -> np.ndarray:
     ----------
     Tech Memo 104, appendix C-IV.
     """
-    return _alpha(free_free_eigenvalues(n))
+    return alpha_from_eigenvalues(free_free_eigenvalues(n))
 
 
-def _alpha(lam: np.ndarray) -> np.ndarray:
+def alpha_from_eigenvalues(lam: np.ndarray) -> np.ndarray:
+    """alpha_n = (cosh - cos) / (sinh - sin) of lambda_n, without overflow (memo C-IV).
+
+    Parameters
+    ----------
+    lam : numpy.ndarray
+        Free-free eigenvalues lambda_n (dimensionless), > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        alpha_n (dimensionless).
+    """
     e = np.exp(-lam)
     sech = 2.0 * e / (1.0 + e * e)
     tanh = (1.0 - e * e) / (1.0 + e * e)
@@ -136,8 +150,19 @@ def _alpha(lam: np.ndarray) -> np.ndarray:
     return (1.0 - np.cos(lam) * sech) / (tanh - np.sin(lam) * sech)
 
 
-def _one_minus_alpha_scaled(lam: np.ndarray) -> np.ndarray:
-    """(1 - alpha) e^lambda / 2, computed without forming e^lambda."""
+def one_minus_alpha_scaled(lam: np.ndarray) -> np.ndarray:
+    """(1 - alpha) e^lambda / 2, computed without forming e^lambda (memo C-IV).
+
+    Parameters
+    ----------
+    lam : numpy.ndarray
+        Free-free eigenvalues lambda_n (dimensionless), > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        (1 - alpha_n) e^lambda_n / 2 (dimensionless).
+    """
     e = np.exp(-lam)
     # 1 - alpha = (cos - sin - e^-lam) / (sinh - sin),
     # sinh - sin = e^lam (1 - e^-2lam - 2 e^-lam sin) / 2
@@ -185,9 +210,9 @@ def mode_shape(n: int | np.ndarray, zeta: np.ndarray, derivative: int = 0) -> np
     nmax = int(np.max(n))
     lam_all = free_free_eigenvalues(nmax)
     lam = lam_all[n - 1]
-    alpha = _alpha(lam)
+    alpha = alpha_from_eigenvalues(lam)
     x = lam * zeta / 2.0  # C-6: X = (lambda_n / 2)(xi_bar - d4/L + 1)
-    grow = _one_minus_alpha_scaled(lam) * np.exp(x - lam)  # A e^X
+    grow = one_minus_alpha_scaled(lam) * np.exp(x - lam)  # A e^X
     decay = 0.5 * (1.0 + alpha) * np.exp(-x)  # B e^-X
     shift = derivative * np.pi / 2.0
     # C-1..C-5: phi^(k) = A e^X + (-1)^k B e^-X + cos(X + k pi/2) - alpha sin(X + k pi/2)
@@ -305,7 +330,7 @@ def beam_modes(
     """
     N = _check_count("N", N)
     lam = free_free_eigenvalues(N)
-    alpha = _alpha(lam)
+    alpha = alpha_from_eigenvalues(lam)
     data = (L, R1, E, rho)
     omega = None
     if all(v is not None for v in data):

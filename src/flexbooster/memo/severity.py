@@ -49,8 +49,8 @@ from ..checks import choice, finite, nonnegative, positive
 from .beam_action import beam_system
 from .model import BoosterModel
 from .pitch import mathieu_parameters
-from .responses.excitation import _NB, ExcitationParameters
-from .responses.modal import _cylinder_groups, modal_basis
+from .responses.excitation import N_BASIS, ExcitationParameters
+from .responses.modal import cylinder_groups, modal_basis
 from .stability import StabilityTable
 
 __all__ = [
@@ -369,7 +369,7 @@ def _mode_tables(model: BoosterModel, N: int, phase: str) -> dict:
     tr = model.truncation
     out = {}
     for d, (M, Nk) in ((1, (tr.M1, tr.N1)), (2, (tr.M2, tr.N2))):
-        for g in _cylinder_groups(model.shell, d, M, Nk, N, phase):
+        for g in cylinder_groups(model.shell, d, M, Nk, N, phase):
             omega, Phi, P = modal_basis(g)
             h = np.einsum("nmp,bnp->nmb", P, g.forcing)  # y'' + w^2 y = sum_b h_b f_b (6.1-*)
             scale = np.abs(Phi).max(axis=1)  # (n, m): largest of |U|, |V|, |W| per unit y
@@ -436,7 +436,7 @@ def root_severity(model: BoosterModel, table: StabilityTable, params: Excitation
     tables = _mode_tables(model, N, phase)
     ob = table.Omega_bar
     d, j, k, m = table.cylinder, table.j, table.k, table.branch - 1
-    nb = _NB + 2 * (N + 1)
+    nb = N_BASIS + 2 * (N + 1)
     h = np.zeros((n_root, nb))
     w = np.zeros(n_root)
     scale = np.zeros(n_root)
@@ -505,7 +505,7 @@ def root_severity(model: BoosterModel, table: StabilityTable, params: Excitation
         c = beam_amplitude * Cs  # C^(s) of each root: (nbeam, N + 1), units of L
         f = mu + s * ob[beam]  # (4.1-10/11), at the exponent refined at the root
         hb = h[beam]
-        qb, qdd = slice(_NB, _NB + N + 1), slice(_NB + N + 1, nb)
+        qb, qdd = slice(N_BASIS, N_BASIS + N + 1), slice(N_BASIS + N + 1, nb)
         Gb = np.abs(np.sum(c * (hb[:, qb] - (f**2)[:, None] * hb[:, qdd]), axis=1))
         G[beam] += Gb  # independent motions: magnitudes add (see Notes)
     rate = G / (2.0 * w)  # y ~ |G| / (2 omega) tau sin(omega tau) (7.1)

@@ -6,7 +6,6 @@ A thin layer over :mod:`flexbooster.present.io` (atomic writes) and
 
 from __future__ import annotations
 
-import io as _io
 import json
 import multiprocessing
 import os
@@ -20,6 +19,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ..results import Results
+from .figure_files import render_figure
 from .io import (
     hold_signals,
     locked_folder,
@@ -33,7 +33,7 @@ from .io import (
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
-__all__ = ["OUTPUT_STAGES", "write_outputs", "save_figure", "make_figures", "figure_svgs",
+__all__ = ["OUTPUT_STAGES", "write_outputs", "make_figures", "figure_svgs",
            "figure_names", "render_figures", "MANIFEST", "STAGING_PREFIX", "publish_set",
            "check_output_set"]
 
@@ -42,7 +42,6 @@ OUTPUT_STAGES = ("results.json and CSV", "figures", "report.html")
 #: The manifest of an output set, written last: every file of the set with its SHA-256.
 MANIFEST = "manifest.json"
 #: Resolution of the PNG files (dots per inch).
-_PNG_DPI = 120
 
 #: Prefix of the staging folder that :func:`write_outputs` makes inside the output folder.
 STAGING_PREFIX = ".flexbooster-staging-"
@@ -116,28 +115,6 @@ def check_output_set(folder: str | Path) -> dict[str, str]:
             raise ValueError(f"folder = {str(folder)!r}: {name} differs from {MANIFEST} "
                              "(a mixed or damaged output set)")
     return files
-
-
-def save_figure(fig, path_stem: Path) -> list[Path]:
-    """Save a matplotlib figure atomically as ``path_stem.svg`` and ``path_stem.png``.
-
-    Parameters
-    ----------
-    fig : matplotlib.figure.Figure
-        The figure.
-    path_stem : pathlib.Path
-        Destination without suffix.
-
-    Returns
-    -------
-    list of pathlib.Path
-        The two files written.
-    """
-    svg, png = _render(fig)
-    return [
-        write_text_atomic(path_stem.with_suffix(".svg"), svg),
-        write_bytes_atomic(path_stem.with_suffix(".png"), png),
-    ]
 
 
 def write_outputs(
@@ -229,7 +206,7 @@ def _usable_cpus() -> int:
 def _figure_files(results: Results, name: str) -> tuple[str, bytes]:
     """Draw and render one figure: SVG text (with its tooltips) and PNG bytes."""
     fig = make_figures(results, names=(name,))[name]
-    svg, png = _render(fig)
+    svg, png = render_figure(fig)
     return _svg_titles(fig, svg), png
 
 
@@ -289,38 +266,6 @@ def render_figures(results: Results, *, processes: int = 1) -> dict[str, tuple[s
     names = figure_names(results)
     with _drawn(results, names, processes) as drawn:
         return dict(zip(names, drawn, strict=True))
-
-
-def _render(fig) -> tuple[str, bytes]:
-    """SVG text (reproducible ids) and PNG bytes of a figure.
-
-    The figure is laid out once (:func:`flexbooster.present.plotting.layout.lay_out_once`: its
-    layout engine, the package's tight layout for a figure without one, run once, the titles
-    fixed, the engine removed) instead of at each save (matplotlib lays a figure with a layout
-    engine out, and draws it without output, before every save), then drawn once for each
-    file.
-    """
-    import matplotlib
-    import numpy as np
-    from matplotlib.collections import LineCollection, QuadMesh
-
-    from .plotting.layout import lay_out_once
-
-    for ax in fig.axes:  # dense meshes and line bundles as an embedded image: small, fast SVG
-        for artist in ax.collections:  # (not the artists with a tooltip id: they stay vector)
-            if isinstance(artist, QuadMesh | LineCollection) and artist.get_gid() is None:
-                artist.set_rasterized(True)
-        many = len(ax.lines) > 40  # many curves: one embedded image
-        for line in ax.lines:  # and every line with thousands of points or markers
-            if (many or np.size(line.get_xdata()) > 2000) and line.get_gid() is None:
-                line.set_rasterized(True)
-    lay_out_once(fig, dpi=_PNG_DPI)  # measured by the renderer that draws the PNG
-    with matplotlib.rc_context({"svg.hashsalt": "flexbooster"}):
-        svg = _io.StringIO()
-        fig.savefig(svg, format="svg", dpi=150, metadata={"Date": None})
-    png = _io.BytesIO()
-    fig.savefig(png, format="png", dpi=_PNG_DPI)
-    return svg.getvalue(), png.getvalue()
 
 
 def figure_svgs(results: Results) -> dict[str, str]:

@@ -191,7 +191,7 @@ def write_vehicle_files(survey: VehicleSurvey, folder: str | Path, *,
     list of pathlib.Path
         The files written.
     """
-    from .outputs import save_figure
+    from .figure_files import save_figure
 
     folder = Path(folder)
     written = [write_json_atomic(folder / "modes.json", survey.to_dict()),

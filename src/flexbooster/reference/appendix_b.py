@@ -17,12 +17,12 @@ from typing import Any
 
 import numpy as np
 
+from ..checks import count
 from ..memo.beam import (
-    _alpha,
-    _check_count,
-    _one_minus_alpha_scaled,
+    alpha_from_eigenvalues,
     free_free_eigenvalues,
     mode_shape,
+    one_minus_alpha_scaled,
 )
 
 _METHODS = ("closed", "memo", "memo-corrected", "quadrature")
@@ -135,8 +135,8 @@ def limit_values(props: Any, N: int, derivative: int = 0) -> LimitValues:
     Tech Memo 104, appendix C-II and C-III (errata C-13, C-20 in docs/memo-errata.md).
     """
     L, L1, _L2, d1, d2, d3, d4 = _geometry(props)
-    N = _check_count("N", N)
-    derivative = _check_count("derivative", derivative, minimum=0)
+    N = count("N", N, low=1, high=None)
+    derivative = count("derivative", derivative, low=0, high=None)
     zeta_a = (L - (d2 + d4)) / L  # eq. (C-7)
     zeta_c = (L - (d4 - d1)) / L  # eq. (C-8)
     zeta_b = (L - (d4 - d3)) / L  # eq. (C-9)
@@ -292,15 +292,15 @@ def coefficient_integrals(
     ----------
     Tech Memo 104, appendix B; reading guide errata E10, section 4.3.
     """
-    M = _check_count("M", M)
-    N = _check_count("N", N)
+    M = count("M", M, low=1, high=None)
+    N = count("N", N, low=1, high=None)
     if method not in _METHODS:
         raise ValueError(f"method = {method!r}: must be one of {_METHODS}")
     p, theta0, lo, hi = shell_phase(props, cylinder, phase)
     L, _L1, _L2, _d1, _d2, _d3, d4 = _geometry(props)
     xi0 = d4 / L - 1.0  # X = k (xi_bar - xi0), eq. (C-6)
     lam = free_free_eigenvalues(N)
-    alpha = _alpha(lam)
+    alpha = alpha_from_eigenvalues(lam)
     j = np.arange(1, M + 1, dtype=float)
     pj = (j * p)[:, None]  # d theta_j / d xi_bar
     th0 = (j * theta0)[:, None]
@@ -313,7 +313,7 @@ def coefficient_integrals(
         s, t, x, y, z = _quadrature(lam, alpha, pj, th0, xi0, lo, hi, n_points)
     elif method == "closed":
         x_lo, x_hi = k * (lo - xi0), k * (hi - xi0)
-        g = _one_minus_alpha_scaled(lam)[None, :]
+        g = one_minus_alpha_scaled(lam)[None, :]
         bb = 0.5 * (1.0 + al)
 
         def closed(m: int, weight: str) -> np.ndarray:
@@ -463,7 +463,7 @@ def _memo_closed_form(
     kk = (j * 2.0 * p)[:, None]  # j pi L / L_d  (B-18, B-24)
     lam_ = lam[None, :]
     al = alpha[None, :]
-    g = _one_minus_alpha_scaled(lam)[None, :]
+    g = one_minus_alpha_scaled(lam)[None, :]
     bb = 0.5 * (1.0 + al)
     a_minus = lam_**2 - kk**2  # eq. (B-18a) / (B-24a)
     a_plus = lam_**2 + kk**2  # eq. (B-18b) / (B-24b)

@@ -79,16 +79,14 @@ from .modal import (
     modal_basis,
     modal_groups,
 )
+from .result import SimulationResult
 from .secular import (
     SecularGrowth,
     modal_forcing_spectrum,
     secular_growth,
     secular_rates,
 )
-from .simulate import (
-    SimulationResult,
-    simulate,
-)
+from .simulate import simulate
 
 __all__ = [
     "BASIS",

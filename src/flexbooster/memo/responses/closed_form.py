@@ -14,7 +14,7 @@ from typing import Any
 import numpy as np
 
 from ...checks import finite_array
-from .excitation import Excitation, _times
+from .excitation import Excitation, checked_times
 from .modal import ModalGroup, forcing_harmonics, modal_basis
 
 __all__ = [
@@ -74,7 +74,7 @@ def closed_form_0k(omega: Any, u0: Any, nu: Any, P: Any, tau: Any) -> np.ndarray
     Tech Memo 104, eqs. (6.2-1)..(6.2-3).
     """
     omega = np.atleast_1d(finite_array("omega", omega, positive=True))
-    tau = _times(tau)
+    tau = checked_times(tau)
     nu = np.atleast_1d(finite_array("nu", nu, nonempty=False))
     P = np.asarray(P, dtype=complex)
     if P.size != omega.size * nu.size or not np.all(np.isfinite(P)):
@@ -133,7 +133,7 @@ def closed_form_j0(coef: dict, u0: Any, w0: Any, nu: Any, P1: Any, P2: Any,
     """
     a, b, c, d, h, j, k = (np.atleast_1d(np.asarray(coef[x], dtype=float))
                            for x in ("a", "b", "c", "d", "h", "j", "k"))
-    tau = _times(tau)
+    tau = checked_times(tau)
     nu = np.asarray(nu, dtype=float)
     u0 = np.broadcast_to(np.asarray(u0, dtype=float), a.shape)
     w0 = np.broadcast_to(np.asarray(w0, dtype=float), a.shape)
@@ -219,7 +219,7 @@ def closed_form_jk(mass: Any, stiff: Any, x0: Any, nu: Any, Q: Any,
                          f"{stiff.shape})")
     mass, stiff = mass.reshape(-1, 3, 3), stiff.reshape(-1, 3, 3)
     n = mass.shape[0]
-    tau = _times(tau)
+    tau = checked_times(tau)
     nu = np.atleast_1d(finite_array("nu", nu, nonempty=False))
     x0 = finite_array("x0", x0)
     Q = np.asarray(Q, dtype=complex)
@@ -291,7 +291,7 @@ def harmonic_response(group: ModalGroup, ex: Excitation, tau: Any,
     ----------
     Tech Memo 104, eqs. (6.2-3), (6.2-11), (6.2-12), (6.2-20); Meirovitch (1986) ch. 4.
     """
-    tau = _times(tau)
+    tau = checked_times(tau)
     n, p = group.j.size, group.mass.shape[-1]
     x0 = np.zeros((n, p)) if x0 is None else np.asarray(x0, dtype=float).reshape(n, p)
     out = np.zeros((n, p, tau.size))

@@ -29,6 +29,10 @@ from ..model import BoosterModel
 from ..pitch import mathieu_parameters
 
 __all__ = [
+    "excitation_at",
+    "beam_exponents_on",
+    "N_BASIS",
+    "checked_times",
     "BASIS",
     "Excitation",
     "ExcitationParameters",
@@ -37,13 +41,25 @@ __all__ = [
 ]
 
 BASIS = ("F_T", "u_T", "u_T_dd", "psi_dd", "psi_d_sq", "F_T_psi")
-_NB = len(BASIS)
+N_BASIS = len(BASIS)
 
 
 # --------------------------------------------------------------------------------------------
 # Checks
 # --------------------------------------------------------------------------------------------
-def _times(tau: Any) -> np.ndarray:
+def checked_times(tau: Any) -> np.ndarray:
+    """Times tau as a checked 1-D array.
+
+    Parameters
+    ----------
+    tau : array_like
+        Dimensionless times tau = omega_1 t, finite, >= 0, non-decreasing, non-empty.
+
+    Returns
+    -------
+    numpy.ndarray
+        tau as floats, shape (n,).
+    """
     tau = np.atleast_1d(np.asarray(tau, dtype=float))
     if tau.ndim != 1 or tau.size == 0 or not np.all(np.isfinite(tau)) or np.any(tau < 0):
         raise ValueError("tau: must be a non-empty 1-D array of finite values >= 0")
@@ -159,7 +175,7 @@ class Excitation:
         """
         Ob, g, A, W = self.Omega_bar, self.gamma, self.A, self.Omega_i
         tf, eps, kt = 0.5 * self.T0_bar, self.strain, 0.5 * self.K * self.T0_bar
-        nb = _NB + 2 * (self.N + 1)
+        nb = N_BASIS + 2 * (self.N + 1)
         nu: list[float] = []
         cols: list[tuple[int, complex]] = []
 
@@ -183,8 +199,8 @@ class Excitation:
                 add(W[i] + W[p], 4, -half)
         for c, f in enumerate(self.beam_freq):
             for b in range(self.N + 1):
-                add(f, _NB + b, self.beam_amp[c, b])  # q_b
-                add(f, _NB + self.N + 1 + b, -(f**2) * self.beam_amp[c, b])  # q_b''
+                add(f, N_BASIS + b, self.beam_amp[c, b])  # q_b
+                add(f, N_BASIS + self.N + 1 + b, -(f**2) * self.beam_amp[c, b])  # q_b''
         out = np.zeros((nb, len(nu)), dtype=complex)
         for h, (row, amp) in enumerate(cols):
             out[row, h] = amp
@@ -413,7 +429,23 @@ def cubic_spline(x: np.ndarray, y: np.ndarray) -> CubicSplineData:
                                             y[:-1])))
 
 
-def _beam_exponents(model: BoosterModel, x: np.ndarray, N: int, S: int) -> tuple:
+def beam_exponents_on(model: BoosterModel, x: np.ndarray, N: int, S: int) -> tuple:
+    """Hill's exponents of the beam-action system and their natural branch on a grid.
+
+    Parameters
+    ----------
+    model : BoosterModel
+        The derived model (omega_1, gamma).
+    x : numpy.ndarray
+        Omega / omega_1 (dimensionless), shape (G,).
+    N, S : int
+        Elastic beam modes and Hill harmonics s = -S..S.
+
+    Returns
+    -------
+    tuple
+        (HillResult, natural-branch exponents of shape (G, N + 1)) (memo 4.1-10, 4.1-11).
+    """
     system = beam_system(model, N)
     hill = hill_exponents(system, x * model.omega_1, np.full(x.shape, model.gamma), S)
     nat = natural_branch(reduced_exponents(hill.alpha), x, loaded_frequencies(system))
@@ -470,12 +502,37 @@ def make_excitation(model: BoosterModel, Omega: float, *, psi0: float = 0.01,
     """
     N = count("N", model.truncation.N if N is None else N, 0)
     S = count("S", model.truncation.S if S is None else S, 0)
-    return _make_excitation(model, Omega, psi0, beam_amplitude, beam_mode, N, S, params)
+    return excitation_at(model, Omega, psi0, beam_amplitude, beam_mode, N, S, params)
 
 
-def _make_excitation(model: BoosterModel, Omega: float, psi0: float, beam_amplitude: float,
+def excitation_at(model: BoosterModel, Omega: float, psi0: float, beam_amplitude: float,
                      beam_mode: int, N: int, S: int, params: ExcitationParameters | None,
                      beam_pre: tuple | None = None) -> Excitation:
+    """:func:`make_excitation` with every argument given (checked here).
+
+    Parameters
+    ----------
+    model : BoosterModel
+        The derived model.
+    Omega : float
+        Thrust frequency (rad/s), > 0.
+    psi0 : float
+        Initial pitch angle (rad).
+    beam_amplitude : float
+        Norm of the beam's Floquet vector (units of L).
+    beam_mode : int
+        Beam exponent followed, 1..N + 1.
+    N, S : int
+        Elastic beam modes; Hill harmonics.
+    params : ExcitationParameters or None
+        Precomputed exponents along Omega (None: computed here).
+    beam_pre : tuple, optional
+        :func:`beam_exponents_on` at this Omega, computed before.
+
+    Returns
+    -------
+    Excitation
+    """
     Omega = positive("Omega", Omega)
     psi0 = finite("psi0", psi0)
     beam_amplitude = finite("beam_amplitude", beam_amplitude)
@@ -502,7 +559,7 @@ def _make_excitation(model: BoosterModel, Omega: float, psi0: float, beam_amplit
     alpha = 0j
     if beam_amplitude != 0.0 and N >= 0:
         if beam_pre is None:
-            hill, nat = _beam_exponents(model, np.array([Ob]), N, S)
+            hill, nat = beam_exponents_on(model, np.array([Ob]), N, S)
             beam_pre = (hill.alpha[0], hill.C[0], nat[0])
         cand, Cs, nat_row = beam_pre
         target = complex(nat_row[beam_mode - 1])

@@ -9,16 +9,14 @@ References
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 
 from ...checks import count, finite_array
 from ..shell_coefficients import ShellParameters
-from .modal import _beam_shapes, _edge_argument
-
-if TYPE_CHECKING:
-    from .simulate import SimulationResult
+from .modal import beam_shapes_at, edge_argument
+from .result import SimulationResult
 
 __all__ = [
     "displacement_fields",
@@ -33,7 +31,7 @@ def _axial_shape(p: ShellParameters, d: int, j: np.ndarray, xi: np.ndarray, kind
     """order-th xi-derivative of cos s (kind "cos") or sin s ("sin") of modes j at xi."""
     j = np.asarray(j)
     alpha = j * np.pi * p.L / (2.0 * p.half_length(d))
-    s = (_edge_argument(p, d, j, phase)[:, None]
+    s = (edge_argument(p, d, j, phase)[:, None]
          + alpha[:, None] * (xi - p.edges(d)[0])[None, :])  # 5.3-2/3
     shift = order * np.pi / 2.0
     base = np.cos(s + shift) if kind == "cos" else np.sin(s + shift)
@@ -109,7 +107,7 @@ def displacement_fields(result: SimulationResult, xi: Any, theta: Any,
     if part in ("total", "beam"):
         ex = result.excitation
         tau = result.tau[idx]
-        bs = _beam_shapes(p, xi, ex.N)
+        bs = beam_shapes_at(p, xi, ex.N)
         key = ("g", "g1", "g2", "g3", "g4")[order]
         g = bs[key].T @ ex.beam(tau)  # g* and its derivatives (4.1-3..7), (nx, ni)
         Xi = (xi - 0.5 * (xi - p.b + 1.0) ** 2, p.b - xi, -np.ones_like(xi),

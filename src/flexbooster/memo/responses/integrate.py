@@ -14,7 +14,7 @@ from typing import Any
 import numpy as np
 from scipy.special import roots_legendre
 
-from .excitation import Excitation, _times
+from .excitation import Excitation, checked_times
 from .modal import ModalGroup, modal_basis
 
 _GAUSS = 8  # Gauss-Legendre nodes per step of the Duhamel integrator
@@ -69,7 +69,7 @@ def integrate(group: ModalGroup, ex: Excitation, tau: Any, x0: Any = None,
     E. Hairer, S. P. Norsett, G. Wanner, *Solving Ordinary Differential Equations I*,
     Springer, 1993 (DOP853).
     """
-    tau = _times(tau)
+    tau = checked_times(tau)
     n, p = group.j.size, group.mass.shape[-1]
     x0 = np.zeros((n, p)) if x0 is None else np.asarray(x0, dtype=float).reshape(n, p)
     if method == "duhamel":

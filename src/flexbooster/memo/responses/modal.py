@@ -17,9 +17,12 @@ from scipy.special import roots_legendre
 from ...checks import count
 from .. import beam as beam_mod
 from ..shell_coefficients import ShellParameters, galerkin_coefficients
-from .excitation import _NB, Excitation
+from .excitation import N_BASIS, Excitation
 
 __all__ = [
+    "cylinder_groups",
+    "edge_argument",
+    "beam_shapes_at",
     "ModalGroup",
     "modal_groups",
     "modal_basis",
@@ -82,8 +85,23 @@ def _quad_nodes(p: ShellParameters, d: int, M: int, N: int) -> tuple[np.ndarray,
     return lo + half * (t + 1.0), w * half
 
 
-def _beam_shapes(p: ShellParameters, xi: np.ndarray, N: int) -> dict[str, np.ndarray]:
-    """g and its xi-derivatives of each beam coordinate (rows q_1..q_N, q_B) (4.1-3..7)."""
+def beam_shapes_at(p: ShellParameters, xi: np.ndarray, N: int) -> dict[str, np.ndarray]:
+    """g and its xi-derivatives of each beam coordinate (rows q_1..q_N, q_B) (4.1-3..7).
+
+    Parameters
+    ----------
+    p : ShellParameters
+        Shell parameters (coordinates a, c, b).
+    xi : numpy.ndarray
+        Axial coordinate xi_bar (dimensionless).
+    N : int
+        Elastic beam modes.
+
+    Returns
+    -------
+    dict of str to numpy.ndarray
+        Keys "g", "g1".."g4", each of shape (N + 1, len(xi)).
+    """
     xi = np.asarray(xi, dtype=float)
     zeta = xi - p.a  # zeta = xi_bar - d4/L + 1 = xi_bar + x_cm / L (C-6)
     out = {key: np.zeros((N + 1, xi.size)) for key in ("g", "g1", "g2", "g3", "g4")}
@@ -98,7 +116,25 @@ def _beam_shapes(p: ShellParameters, xi: np.ndarray, N: int) -> dict[str, np.nda
     return out
 
 
-def _edge_argument(p: ShellParameters, d: int, j: np.ndarray, phase: str) -> np.ndarray:
+def edge_argument(p: ShellParameters, d: int, j: np.ndarray, phase: str) -> np.ndarray:
+    """The argument of the axial shape functions at the aft edge of cylinder d (App. B).
+
+    Parameters
+    ----------
+    p : ShellParameters
+        Shell parameters.
+    d : int
+        Cylinder, 1 or 2.
+    j : numpy.ndarray
+        Axial indices.
+    phase : str
+        Phase convention of :func:`flexbooster.memo.shell_coefficients.edge_arguments`.
+
+    Returns
+    -------
+    numpy.ndarray
+        The argument for each j (rad).
+    """
     from ..shell_coefficients import edge_arguments
 
     return np.asarray(edge_arguments(p, d, j, phase)[0], dtype=float) + 0.0 * j
@@ -149,12 +185,31 @@ def modal_groups(p: ShellParameters, M: tuple[int, int], Nk: tuple[int, int], N:
     for d in (1, 2):
         Md = count(f"M{d}", M[d - 1], 1)
         Nd = count(f"N{d}", Nk[d - 1], 1)
-        out.extend(_cylinder_groups(p, d, Md, Nd, N, phase))
+        out.extend(cylinder_groups(p, d, Md, Nd, N, phase))
     return tuple(out)
 
 
-def _cylinder_groups(p: ShellParameters, d: int, M: int, Nk: int, N: int,
+def cylinder_groups(p: ShellParameters, d: int, M: int, Nk: int, N: int,
                      phase: str) -> list[ModalGroup]:
+    """The modal groups of cylinder d: every (j, k) with its modal matrices (memo 6.1).
+
+    Parameters
+    ----------
+    p : ShellParameters
+        Shell parameters.
+    d : int
+        Cylinder, 1 or 2.
+    M, Nk : int
+        Largest axial index j and circumferential index k.
+    N : int
+        Elastic beam modes.
+    phase : str
+        Phase convention of the axial shape functions.
+
+    Returns
+    -------
+    list of ModalGroup
+    """
     nu, mu, sg = p.nu, p.mu, p.sigma
     lam = p.lam(d)
     g0 = 1.0 / ((1.0 - nu**2) * mu)
@@ -162,10 +217,10 @@ def _cylinder_groups(p: ShellParameters, d: int, M: int, Nk: int, N: int,
     xi, wq = _quad_nodes(p, d, M, N)
     j = np.arange(1, M + 1)
     alpha = j * np.pi * p.L / (2.0 * p.half_length(d))
-    s = (_edge_argument(p, d, j, phase)[:, None]
+    s = (edge_argument(p, d, j, phase)[:, None]
          + alpha[:, None] * (xi - p.edges(d)[0])[None, :])  # argument of 5.3-2/3
     C, S = np.cos(s), np.sin(s)
-    bs = _beam_shapes(p, xi, N)
+    bs = beam_shapes_at(p, xi, N)
     Xi = xi - 0.5 * (xi - p.b + 1.0) ** 2  # bracket of eq. (5.3-4a)
     IC, IS = C @ wq, S @ wq
     IxC, IxS = (C * xi) @ wq, (S * xi) @ wq
@@ -174,10 +229,10 @@ def _cylinder_groups(p: ShellParameters, d: int, M: int, Nk: int, N: int,
     GS = (S * wq) @ bs["g"].T
     G2S = (S * wq) @ bs["g2"].T
     DelS = (S * wq) @ (bs["g4"] - 2.0 * lam**2 * bs["g2"] + lam**4 * bs["g"]).T  # Lap^4 g*
-    nb = _NB + 2 * (N + 1)
-    qb = slice(_NB, _NB + N + 1)  # rows q_b
-    qdd = slice(_NB + N + 1, nb)  # rows q_b''
-    kF, kU, kUdd, kPdd, kPd2, kTP = range(_NB)
+    nb = N_BASIS + 2 * (N + 1)
+    qb = slice(N_BASIS, N_BASIS + N + 1)  # rows q_b
+    qdd = slice(N_BASIS + N + 1, nb)  # rows q_b''
+    kF, kU, kUdd, kPdd, kPd2, kTP = range(N_BASIS)
     groups = []
 
     # 0k: U_0k'' + omega_0k^2 U_0k = P_0k (5.4-4, 6.1-2), mass = cylinder length ell
@@ -282,5 +337,5 @@ def forcing_harmonics(group: ModalGroup, ex: Excitation) -> tuple[np.ndarray, np
     nu, c = ex.harmonics()
     if c.shape[0] != group.forcing.shape[0]:
         raise ValueError(f"ex: N = {ex.N} does not match the group's beam modes "
-                         f"({(group.forcing.shape[0] - _NB) // 2 - 1})")
+                         f"({(group.forcing.shape[0] - N_BASIS) // 2 - 1})")
     return nu, np.einsum("bh,bnp->nph", c, group.forcing)

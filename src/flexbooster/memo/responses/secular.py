@@ -18,12 +18,12 @@ from ..model import BoosterModel
 from .excitation import (
     Excitation,
     ExcitationParameters,
-    _beam_exponents,
-    _make_excitation,
+    beam_exponents_on,
+    excitation_at,
     make_excitation,
 )
 from .integrate import integrate
-from .modal import ModalGroup, _cylinder_groups, forcing_harmonics, modal_basis
+from .modal import ModalGroup, cylinder_groups, forcing_harmonics, modal_basis
 
 __all__ = [
     "SecularGrowth",
@@ -180,7 +180,7 @@ def _single_mode(model: BoosterModel, Omega: float, cylinder: int, j: int, k: in
     ex = make_excitation(model, Omega, psi0=psi0, beam_amplitude=beam_amplitude,
                          beam_mode=beam_mode, N=N, S=S, params=params)
     kind = "0k" if j == 0 else ("j0" if k == 0 else "jk")
-    groups = _cylinder_groups(model.shell, d, max(j, 1), max(k, 1), ex.N, phase)
+    groups = cylinder_groups(model.shell, d, max(j, 1), max(k, 1), ex.N, phase)
     g = [x for x in groups if x.kind == kind][0]
     g = g.select(np.flatnonzero((g.j == j) & (g.k == k)))
     branch = count("branch", branch, 1, g.mass.shape[-1])
@@ -274,19 +274,19 @@ def secular_rates(model: BoosterModel, rows: list[dict], psi0: float = 0.01,
     Om = np.array([float(x["Omega_rad_s"]) for x in rows])
     pre = None
     if beam_amplitude != 0.0:
-        hill, nat = _beam_exponents(model, Om / model.omega_1, N, S)
+        hill, nat = beam_exponents_on(model, Om / model.omega_1, N, S)
     groups_cache: dict[tuple, ModalGroup] = {}
     out = []
     for n, x in enumerate(rows):
         if beam_amplitude != 0.0:
             pre = (hill.alpha[n], hill.C[n], nat[n])
-        ex = _make_excitation(model, Om[n], psi0, beam_amplitude, max(int(x.get("r", 0)), 1),
+        ex = excitation_at(model, Om[n], psi0, beam_amplitude, max(int(x.get("r", 0)), 1),
                               N, S, params, pre)
         d, j, k, m = (int(x[key]) for key in ("cylinder", "j", "k", "branch"))
         kind = "0k" if j == 0 else ("j0" if k == 0 else "jk")
         key = (d, j, k)
         if key not in groups_cache:
-            groups = _cylinder_groups(model.shell, d, max(j, 1), max(k, 1), N, phase)
+            groups = cylinder_groups(model.shell, d, max(j, 1), max(k, 1), N, phase)
             g = [y for y in groups if y.kind == kind][0]
             groups_cache[key] = g.select(np.flatnonzero((g.j == j) & (g.k == k)))
         g = groups_cache[key]

@@ -6,11 +6,10 @@ colour bar, if any, in a column of its own (:func:`axes_with_colorbar`), so that
 places it beside every label of the axes (a twin axis' labels too).  A figure saved directly
 (``fig.savefig``) is laid out by that engine as usual.
 
-:func:`lay_out_once` (used by :func:`flexbooster.present.outputs._render`) runs the engine once,
-fixes the titles where matplotlib placed them and removes the engine: the SVG and the PNG are
-then drawn once each, without the layout pass and the title placement that each save would
-otherwise repeat (about half of the CPU of the figures of a default run; benchmarks/README.md,
-``bench_presentation.py``).
+:func:`lay_out_once` (used by :func:`flexbooster.present.figure_files.render_figure`)
+runs the engine once, fixes the titles where matplotlib placed them and removes the engine: the
+SVG and the PNG are then drawn once each, without the layout pass and the title placement that
+each save would otherwise repeat (about half of the CPU of the figures of a default run).
 """
 
 from __future__ import annotations
