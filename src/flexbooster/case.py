@@ -260,7 +260,7 @@ class Output(BaseModel):
 class SeverityTable(BaseModel):
     """Optional reference amplitudes and thresholds of the severity (table ``[severity]``).
 
-    The severity of a root of the stability table (issue 13, ``docs/theory/severity.md``) is
+    The severity of a root of the stability table (``docs/theory/severity.md``) is
     the secular growth rate of the resonant shell mode for these amplitudes of the free
     motions that drive it.
 

@@ -415,7 +415,7 @@ def tongue_search_seconds(system: Any, gamma: float, *, omega_min: float, omega_
     return float(seconds)
 
 
-# Vehicle stages (issue 15 / 18): calibration on the default case's vehicle (the memo's two
+# Vehicle stages: calibration on the default case's vehicle (the memo's two
 # cylinders, 263 FE DOFs), one core.  The modes survey (``[vehicle]`` only): k_max = 20 in
 # 0.38 s, 40 in 0.47 s (-> 0.3 s + 5e-3 s per harmonic); building a harmonic of the regions:
 # flexbooster.vehicle.HARMONIC_BUILD_SECONDS; its search where the certificate does not

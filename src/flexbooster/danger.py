@@ -12,12 +12,12 @@ Sources (each optional, ``None`` when not computed):
   parametric resonances of the gimbaled beam, memo 4.1);
 * ``vehicle_regions`` -- any sequence of objects with ``Omega_lo``, ``Omega_hi`` (rad/s) and
   ``growth_rate_max`` (1/s), optionally ``label`` / ``mode`` (text, e.g. "k = 2, modes 1+3"):
-  the instability regions of the vehicle model (issue 15); a
+  the instability regions of the vehicle model; a
   :class:`flexbooster.vehicle.VehicleRegion` (``k``, ``kind``, ``order``, ``modes`` with
   ``type`` and ``order``) is described from those fields;
 * ``resonance_bands`` -- any sequence of objects with ``Omega_lo``, ``Omega_hi`` (rad/s) and
   ``severity`` (dimensionless, > 0), optionally ``growth_rate_max`` (1/s) and ``label`` /
-  ``family``: the resonances (secular roots) of memo 7.3 (issue 13).
+  ``family``: the resonances (secular roots) of memo 7.3.
 
 The adapters accept the lower-case spelling ``omega_lo`` / ``omega_hi`` too.  This module is in
 the results layer (numpy only): the pipeline calls it, the presentation reads its output.

@@ -114,7 +114,7 @@ UNITS: dict[str, str] = {
     "danger.operating_range, danger.bands.Omega_lo, Omega_hi": "rad/s",
     "danger.bands.Omega_lo_hz, Omega_hi_hz": "Hz",
     "danger.bands.growth_rate": "1/s",
-    "danger.bands.severity": "m/s (memo resonances, issue 13)",
+    "danger.bands.severity": "m/s (memo resonances)",
 }
 
 
@@ -153,7 +153,7 @@ class Results:
     vehicle : VehicleSurvey or None
         The vehicle modes (shell of revolution), only for a case with ``[vehicle]``.
     vehicle_regions : VehicleRegions or None
-        The vehicle's parametric instability regions (issue 15; with the (Omega, gamma)
+        The vehicle's parametric instability regions (with the (Omega, gamma)
         boundary curves of the chart when the figures were computed); None with
         ``analyze(..., vehicle=False)`` or when they could not be computed (see the warnings).
     memo_roots_in_regions : MemoRootsInRegions or None
@@ -161,7 +161,7 @@ class Results:
     danger : DangerSummary or None
         One verdict per mechanism and the ranked unstable bands of Omega (the first screen).
     severity : SeverityResult or None
-        Severity of the roots of ``stability`` and their bands (issue 13); None if the table
+        Severity of the roots of ``stability`` and their bands; None if the table
         was not computed.  results.json holds it as ``stability.severity``.
     """
 
@@ -223,7 +223,7 @@ class Results:
             "figures": None if self.figures is None else self.figures.to_dict(),
         }
         out["danger"] = None if self.danger is None else self.danger.to_dict()
-        if out["stability"] is not None and self.severity is not None:  # issue 13
+        if out["stability"] is not None and self.severity is not None:
             out["stability"]["severity"] = self.severity.to_dict()
         if self.vehicle is not None:  # only for a case with [vehicle] (units inside)
             out["vehicle_modes"] = self.vehicle.to_dict()

@@ -1,14 +1,14 @@
 """The optional ``[vehicle]`` table of a case file: the vehicle as one shell of revolution.
 
 With ``[[vehicle.segments]]`` the table describes the vehicle as cylinders and cones, listed
-from the aft edge forward (issue 14); the numerical model is
+from the aft edge forward; the numerical model is
 :class:`flexbooster.shell_of_revolution.Vehicle`.  Without segments (or without a
 ``[vehicle]`` table at all) the vehicle is the memo's: the two cylinders of ``[booster]``
 (R1, 2 L1 aft and R2, 2 L2 forward, thickness h, E, nu, rho), joined by the memo's rigid,
 weightless disc (``junction = "memo-bulkhead"``), with the memo's end bulkheads
 (``"shear-diaphragm"`` ends, Tech Memo 104 sec. 5.3 and Fig. 1); a ``[vehicle]`` table
 without segments may then change only ``junction``, ``aft_end``, ``fwd_end``, ``theory``,
-``k_max`` and the settings of the parametric instability regions (issue 15): ``damping_ratio``
+``k_max`` and the settings of the parametric instability regions: ``damping_ratio``
 (modal damping of the loaded shell modes, default :data:`REGION_DAMPING_RATIO`, 0 allowed) and
 ``n_modes`` (modes per harmonic k, default :data:`REGION_N_MODES`).  A case without a
 ``[vehicle]`` table takes the defaults.

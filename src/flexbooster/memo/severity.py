@@ -703,7 +703,7 @@ def with_severity(table: StabilityTable, sev: RootSeverity) -> StabilityTable:
 
     References
     ----------
-    Tech Memo 104, section 7.1 (issue 13: active means a forcing above the threshold).
+    Tech Memo 104, section 7.1 (active: a forcing above the threshold).
     """
     from dataclasses import replace
 

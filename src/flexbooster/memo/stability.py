@@ -287,7 +287,7 @@ class StabilityTable:
     omega_1 : float
         The unit of the dimensionless frequencies (rad/s).
     severity : numpy.ndarray or None
-        Secular growth rate of the mode's surface displacement at the root (m/s), issue 13
+        Secular growth rate of the mode's surface displacement at the root (m/s)
         (:mod:`flexbooster.memo.severity`); None if not computed.
     severity_rel : numpy.ndarray or None
         severity over the largest severity of the table (dimensionless); None if not computed.
@@ -379,7 +379,7 @@ _COLUMNS = (
     "shell_hz",
     "forcing",
 )
-_SEVERITY = ("severity", "severity_rel")  # issue 13, when the severity is attached
+_SEVERITY = ("severity", "severity_rel")  # when the severity is attached
 
 
 ParamsFn = Callable[[np.ndarray], tuple[np.ndarray, np.ndarray]]

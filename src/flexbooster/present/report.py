@@ -328,7 +328,7 @@ def inline_svg(svg: str, prefix: str, label: str) -> str:
     body = re.sub(r"<style[^>]*>.*?</style>", "", body, flags=re.S)
     # every id attribute (XML puts white space before an attribute), href="#..." and
     # url(#...): plain replacements, 7x faster than the equivalent regular expressions (the
-    # same text: tests/test_report.py; benchmarks/README.md, session 9)
+    # same text: tests/test_report.py)
     for space in " \n\t\r":
         body = body.replace(f'{space}id="', f'{space}id="{prefix}-')
     body = body.replace('href="#', f'href="#{prefix}-').replace("url(#", f"url(#{prefix}-")
@@ -459,7 +459,7 @@ def _unstable(results: Results) -> str:
         return '<p class="note">Not computed (see the warnings).</p>'
     bands = band_rows(results, 10)
     out = ""
-    if st.severity is not None:  # issue 13: the most severe bands first, then the roots
+    if st.severity is not None:  # the most severe bands first, then the roots
         out = (f"<p>The 10 most severe bands of unstable thrust frequencies. "
                f"{_e(severity_caption(results))} All bands are in resonance-bands.csv.</p>"
                + _table(BAND_COLUMNS, bands, [False] * len(BAND_COLUMNS)))

@@ -297,7 +297,7 @@ def vehicle_region_verdict(results: Results) -> tuple[str, bool]:
         return "not computed", True
     where = (f"Omega in [{vr.omega_min:.6g}, {vr.omega_max:.6g}] rad/s at gamma = "
              f"{vr.gamma:g}, damping ratio {vr.damping_ratio:g}")
-    skipped = getattr(vr, "skipped", ())  # harmonics the budget left out (issue 18)
+    skipped = getattr(vr, "skipped", ())  # harmonics a limit left out
     if not vr.regions and skipped:
         return (f"unknown: {len(skipped)} harmonic(s) not searched within max_seconds; no "
                 f"region in the others at {where}"), False

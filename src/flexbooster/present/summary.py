@@ -221,7 +221,7 @@ def _print_beam_action(results: Results, console: Console) -> None:
 
 
 def print_stability(results: Results, console: Console) -> None:
-    """Print the 10 most severe bands of unstable thrust frequencies (issue 13).
+    """Print the 10 most severe bands of unstable thrust frequencies.
 
     Parameters
     ----------

@@ -2,7 +2,7 @@
 
 A thin layer over a stored :class:`~flexbooster.shell_of_revolution.survey.VehicleSurvey`
 (``flexbooster modes``; ``Results.vehicle`` of ``flexbooster run``); it computes nothing.
-Also the vehicle's parametric instability regions (``Results.vehicle_regions``, issue 15):
+Also the vehicle's parametric instability regions (``Results.vehicle_regions``):
 ``vehicle-regions.csv`` (:func:`vehicle_region_columns`), the summary section
 (:func:`print_vehicle_regions`) and the chart (:func:`vehicle_region_figures`).
 """
@@ -262,7 +262,7 @@ def print_vehicle_regions(results: Results, console: Console) -> None:
         console.print("Vehicle parametric instability regions: not computed.")
         return
     table = Table(title="Vehicle parametric instability regions (shell of revolution, "
-                  "issue 15; all in vehicle-regions.csv)", title_justify="left",
+                  "all in vehicle-regions.csv)", title_justify="left",
                   header_style="bold")
     for col in ("quantity", "value", "unit"):
         table.add_column(col, justify="right" if col == "value" else "left")

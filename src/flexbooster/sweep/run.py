@@ -111,7 +111,7 @@ def point_scalars(data: Mapping[str, Any]) -> dict[str, float]:
     frequencies 5.4/6.2, unstable thrust frequencies 7.3; results.json schema, README.
     """
     freq, pitch = data["frequencies"], data["pitch"]
-    # instability from the bands (exact edges, issue 12), never from grid samples
+    # instability from the bands (exact edges), never from grid samples
     out = {
         "omega_1": float(freq["omega_1"]),
         "omega_psi": float(freq["omega_psi"]),
@@ -139,7 +139,7 @@ def point_scalars(data: Mapping[str, Any]) -> dict[str, float]:
 
 def _analysis_options(analyze: Callable, *, beam_action: bool, stability: bool) -> dict:
     """Keyword arguments of ``analyze`` for a sweep point: the stages, no figure data and no
-    vehicle regions (issue 15; not stored by a sweep).
+    vehicle regions (not stored by a sweep).
 
     ``figures=False`` where ``analyze`` takes it (the figure data, e.g. the beam-action
     (Omega, gamma) chart, cost more than the point's numbers and are not stored by a sweep).
