@@ -19,12 +19,12 @@ Run:  python benchmarks/bench_liquid.py
 from __future__ import annotations
 
 import os
-import time
 
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")  # before numpy loads OpenBLAS
 
 import numpy as np  # noqa: E402
 import scipy.linalg as sla  # noqa: E402
+from bench_shell_of_revolution import REPEATS, best_of  # noqa: E402 (benchmarks/)
 
 from flexbooster.shell_of_revolution import Cone, Cylinder, Vehicle, mesh_vehicle  # noqa: E402
 from flexbooster.shell_of_revolution.elements import theta_weight  # noqa: E402
@@ -43,17 +43,6 @@ VEHICLE = Vehicle([Cylinder(1.5, 6.0, 0.006, **ALU), Cone(1.5, 1.0, 1.5, 0.005, 
                    Cylinder(1.0, 3.0, 0.005, **ALU)])
 TANK = vehicle_tank(VEHICLE, aft=0.0, fwd=7.5, fill=0.8, density=1140.0)
 K_MAX = 20
-REPEATS = 5
-
-
-def best_of(fn, repeats=REPEATS):
-    """Best wall time (s) of ``repeats`` calls, and the last result."""
-    best, out = np.inf, None
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        out = fn()
-        best = min(best, time.perf_counter() - t0)
-    return best, out
 
 
 def work(walls):
