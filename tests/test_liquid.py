@@ -286,14 +286,24 @@ def stack_vehicle():
                     Cylinder(1.0, 3.0, 0.005, **st)], junctions=("continuous", "continuous"))
 
 
+def bulkhead_vehicle():
+    st = {"E": 70e9, "nu": 0.33, "rho": 2800.0}
+    return Vehicle([Cylinder(1.5, 3.0, 0.006, **st), Cylinder(1.5, 5.0, 0.006, **st),
+                    Cone(1.5, 1.0, 1.0, 0.005, **st), Cylinder(1.0, 2.0, 0.005, **st)],
+                   junctions=("rigid-bulkhead", "rigid-bulkhead", "continuous"))
+
+
 @pytest.mark.parametrize(("k", "fill"), [(0, 0.6), (0, 1.0), (1, 1.0)])
-def test_adapter_rigid_motion_carries_the_liquid(k, fill):
-    """Free-free cylinder-cone-cylinder, a tank over the first two segments: the shell's rigid
-    translation (assembly.rigid_body_fields, axial for k = 0, lateral for k = 1) through the
-    adapter gives q^T M_a q = m_L (Newton; lateral only when the tank is full and closed)."""
-    veh = stack_vehicle()
+@pytest.mark.parametrize(("build", "aft", "fwd"), [(stack_vehicle, 0.0, 7.5),
+                                                   (bulkhead_vehicle, 3.0, 9.0)])
+def test_adapter_rigid_motion_carries_the_liquid(k, fill, build, aft, fwd):
+    """A tank at the free aft end (cylinder + cone) and one between a rigid bulkhead and a
+    cone: the shell's rigid translation (assembly.rigid_body_fields, axial for k = 0, lateral
+    for k = 1) through the adapter, the ends moving with the shell's edges, gives
+    q^T M_a q = m_L (Newton; lateral only when the tank is full and closed; rel. 1e-9)."""
+    veh = build()
     mesh = mesh_vehicle(veh)
-    tank = vehicle_tank(veh, aft=0.0, fwd=7.5, fill=fill, density=1140.0)
+    tank = vehicle_tank(veh, aft=aft, fwd=fwd, fill=fill, density=1140.0)
     lm = liquid_mesh(tank)
     dmap = dof_map(veh, mesh, k)
     full = rigid_body_fields(mesh, k)[0]
@@ -395,7 +405,7 @@ def test_wet_frequencies_converge_with_the_liquid_mesh(fill):
 
 def test_empty_full_and_shallow_tanks():
     """fill = 0: no added mass, no slosh; fill = 1: no slosh (no free surface); a film of
-    1e-4 of the length: finite numbers."""
+    2e-5 of the radius: finite, and the slosh frequency within 1e-4 of Abramson's."""
     wall = WallQuadrature(x=[], r=[], normal=np.zeros((0, 2)), weight=[])
     empty = liquid_mesh(Tank(stations=(0.0, 2.0), radii=(R, R), fill=0.0, density=WATER))
     am = added_mass(empty, 0, wall, np.zeros((0, 3)), aft_end=[1.0, 0.0, 0.0])
@@ -403,10 +413,12 @@ def test_empty_full_and_shallow_tanks():
     assert slosh_mode(empty, 9.0) is None
     full = liquid_mesh(Tank(stations=(0.0, 2.0), radii=(R, R), fill=1.0, density=WATER))
     assert slosh_mode(full, 9.0) is None
-    film = Tank(stations=(0.0, 2.0), radii=(R, R), fill=1e-4, density=WATER)
+    film = Tank(stations=(0.0, 2.0), radii=(R, R), fill=1e-5, density=WATER)
     lm = liquid_mesh(film)
     mode = slosh_mode(lm, 9.0)
     assert np.isfinite([mode.omega, mode.mass]).all() and 0 < mode.mass < mode.liquid_mass
+    h = 2e-5
+    assert mode.omega == pytest.approx(np.sqrt(9.0 * XI_1 / R * np.tanh(XI_1 * h / R)), rel=1e-4)
     wall = cylinder_wall(lm)
     am = added_mass(lm, 1, wall, np.ones((wall.x.size, 1)))
     assert np.isfinite(am.matrix).all()
@@ -422,6 +434,7 @@ def _tank(**over):
     (lambda: _tank(fill=-0.1), "fill"),
     (lambda: _tank(fill=float("nan")), "fill"),
     (lambda: _tank(fill=True), "fill"),
+    (lambda: _tank(fill=1e-7), "fill"),
     (lambda: _tank(density=0.0), "density"),
     (lambda: _tank(density=-1.0), "density"),
     (lambda: _tank(density=float("inf")), "density"),
@@ -434,6 +447,7 @@ def _tank(**over):
     (lambda: _tank(radii=(0.0, 1.0), ends=("pressure-release", "rigid")), "ends"),
     (lambda: liquid_mesh(_tank(), order=1), "order"),
     (lambda: liquid_mesh(_tank(), refinement=0), "refinement"),
+    (lambda: liquid_mesh(_tank(stations=(0.0, 1e4), radii=(1.0, 1.0))), "axial elements"),
     (lambda: slosh_mode(liquid_mesh(_tank()), 0.0), "acceleration"),
     (lambda: slosh_mode(liquid_mesh(_tank()), float("nan")), "acceleration"),
     (lambda: added_mass(liquid_mesh(_tank()), -1, cylinder_wall(liquid_mesh(_tank())),

@@ -44,6 +44,11 @@ LIQUID_ORDER = 8
 GRADING, LAYERS = 0.3, 2
 #: Longest element of the liquid mesh (axially), in tank radii.
 MAX_ELEMENT_RADII = 1.0
+#: Smallest liquid depth, in units of the tank's largest radius (thinner films: 0 or refused;
+#: at 1e-5 the slosh frequency is still within 1e-5 of Abramson's).
+MIN_DEPTH_RADII = 1e-5
+#: Largest number of axial elements of a liquid mesh.
+MAX_AXIAL_ELEMENTS = 4000
 #: Radial breakpoints of eta = r / R(x) (graded towards the wall, where the high harmonics and
 #: the corners live).
 ETA_BREAKS = (0.0, 0.5, 0.8, 0.96, 1.0)
@@ -100,6 +105,10 @@ class Tank:
         object.__setattr__(self, "ends", ends)
         if r[0] == 0.0 and ends[0] != "rigid" or r[-1] == 0.0 and ends[1] != "rigid":
             raise ValueError(f"ends = {ends!r}: an apex (radius 0) has no open end")
+        depth = fill * (x[-1] - x[0])
+        if 0.0 < depth < MIN_DEPTH_RADII * r.max():
+            raise ValueError(f"fill = {fill!r}: the liquid depth {depth!r} m must be 0 or at "
+                             f"least {MIN_DEPTH_RADII:g} of the largest radius {r.max()!r} m")
         if fill > 0.0 and self.radius(self.surface) <= 0.0:
             raise ValueError(f"fill = {fill!r}: the free surface cannot be at an apex")
 
@@ -239,6 +248,10 @@ def liquid_mesh(tank: Tank, *, order: int = LIQUID_ORDER, refinement: int = 1) -
     xb = np.array([tank.aft]) if empty else np.unique(np.concatenate(
         [_graded(a, b, max(ra, rb), refinement)
          for a, b, ra, rb in zip(xs[:-1], xs[1:], rs[:-1], rs[1:], strict=True)]))
+    if xb.size - 1 > MAX_AXIAL_ELEMENTS:
+        raise ValueError(f"refinement = {refinement}: {xb.size - 1} axial elements, more than "
+                         f"{MAX_AXIAL_ELEMENTS} (a tank of {xs[-1] - xs[0]:g} m and radius "
+                         f"{rs.max():g} m)")
     if empty:
         none = np.zeros((0, (p + 1) ** 2, (p + 1) ** 2))
         return LiquidMesh(tank, p, xb, eta, xb, eta, none[:, 0].astype(int), none, none)
