@@ -469,6 +469,9 @@ def _tank(**over):
     (lambda: vehicle_tank(stack_vehicle(), aft=0.0, fwd=20.0, fill=0.5, density=1.0), "fwd"),
     (lambda: vehicle_tank(stack_vehicle(), aft=6.0, fwd=6.0, fill=0.5, density=1.0), "fwd"),
     (lambda: vehicle_tank(stack_vehicle(), aft=0.0, fwd=7.5, fill=2.0, density=1.0), "fill"),
+    (lambda: wetted_wall(stack_vehicle(), mesh_vehicle(stack_vehicle()),
+                         Tank(stations=(0.3, 6.0), radii=(1.5, 1.5), fill=0.5, density=1.0),
+                         0), "tank end"),
 ])
 def test_bad_input_raises_naming_the_parameter(build, name):
     with pytest.raises(ValueError, match=name):

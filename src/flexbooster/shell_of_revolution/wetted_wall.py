@@ -146,9 +146,13 @@ def wetted_wall(vehicle: Vehicle, mesh: Mesh, tank: Tank, k: int, *,
     ends = [np.zeros(dmap.n), np.zeros(dmap.n)]
     if k <= 1:
         for i, (station, end) in enumerate(((tank.aft, 0), (tank.fwd, 1))):
-            edge = (mesh.x1, x2)[end]
-            e = int(np.flatnonzero((np.abs(edge - station) <= STATION_RTOL * x2.max())
-                                   & (mesh.cos_phi > 0))[-end])
+            edge = (mesh.x1, x2)[end]  # the element that starts (ends) the tank's wall
+            at = np.flatnonzero((np.abs(edge - station) <= STATION_RTOL * x2.max())
+                                & (mesh.cos_phi > 0))
+            if at.size == 0:
+                raise ValueError(f"tank end at {station!r} m: not an element end of the "
+                                 "shell's mesh (make the tank with vehicle_tank)")
+            e = int(at[-end])
             r = mesh.r1[e] + end * mesh.length[e] * mesh.sin_phi[e]
             fr = mesh.frame[e, end]  # u_x = a cos(frame) - b sin(frame)
             row = np.zeros((1, ref.n_dof))
