@@ -28,6 +28,7 @@ __all__ = [
     "symmetric_functions_j0",
     "symmetric_functions_jk",
     "memo_roots_j0",
+    "sd_cylinder_stiffness",
 ]
 
 # --------------------------------------------------------------------------------------------
@@ -414,3 +415,48 @@ def donnell_reference(table: ShellFrequencies, R1: float, L1: float, R2: float, 
         res[pos] = pick[np.arange(pick.shape[0]), br[pos] - 1]
         out[sel] = res
     return out
+
+
+def sd_cylinder_stiffness(length: float, radius: float, thickness: float, E: float, nu: float,
+                          m: int, n: int, theory: str = "sanders") -> np.ndarray:
+    """Stiffness per unit area of the shear-diaphragm cylinder's mode (m, n), Sanders or Donnell.
+
+    Parameters
+    ----------
+    length, radius, thickness : float
+        L, R, h (m).
+    E, nu : float
+        Young's modulus (Pa), Poisson's ratio.
+    m, n : int
+        Axial half-waves (>= 0) and circumferential waves (>= 0).
+    theory : {"sanders", "donnell"}
+
+    Returns
+    -------
+    ndarray, shape (3, 3)
+        K (N/m^3) on the amplitudes (A, B, C) of u = A cos(lam x) cos(n t),
+        v = B sin(lam x) sin(n t), w = C sin(lam x) cos(n t), lam = m pi / L: the strain
+        energy per unit area is (A, B, C) K (A, B, C) / 4 and, with the inertia rho h per unit
+        area, |K - omega^2 diag(rho h, rho h, rho h)| = 0 (m = 0: the u-only mode, K[0, 0]).
+
+    Notes
+    -----
+    Strain amplitudes (Leissa 1973 sec. 2.1; Donnell drops the starred terms):
+    eps_x = -lam A, eps_t = (n B + C) / R, gamma = lam B - n A / R, kappa_x = lam^2 C,
+    kappa_t = (n^2 C + *n B) / R^2, tau = (2 n lam C + *1.5 lam B + *0.5 n A / R) / R;
+    K = E h / (1 - nu^2) mem^T C mem + E h^3 / (12 (1 - nu^2)) ben^T C ben.
+
+    References
+    ----------
+    A. W. Leissa, *Vibration of Shells*, NASA SP-288, 1973, sec. 2.1-2.3.
+    """
+    lam = m * np.pi / length
+    c = 1.0 if theory == "sanders" else 0.0
+    R = radius
+    a = E * thickness / (1.0 - nu**2)
+    d = E * thickness**3 / (12.0 * (1.0 - nu**2))
+    mem = np.array([[-lam, 0, 0], [0, n / R, 1 / R], [-n / R, lam, 0]])
+    ben = np.array([[0, 0, lam**2], [0, c * n / R**2, n**2 / R**2],
+                    [c * 0.5 * n / R**2, c * 1.5 * lam / R, 2 * n * lam / R]])
+    cm = np.array([[1, nu, 0], [nu, 1, 0], [0, 0, (1 - nu) / 2]])
+    return a * mem.T @ cm @ mem + d * ben.T @ cm @ ben

@@ -1,0 +1,212 @@
+"""The liquid of a propellant tank: its potential-flow added mass on the wall (virtual mass).
+
+The liquid (density rho_L, inviscid, incompressible) fills an axisymmetric tank 0 <= r <= R(x),
+R a polyline of cylinders and cones, from the aft end x_a (settled there by the thrust) to the
+free surface x_s = x_a + fill (x_f - x_a).  Per circumferential harmonic k the velocity
+potential is phi = Phi(x, r) cos k theta with
+
+    Phi_xx + Phi_rr + Phi_r / r - k^2 Phi / r^2 = 0,   Phi regular on the axis (0 for k >= 1),
+
+dPhi/dn = the normal wall (or end) displacement on the wetted boundary, and on the free surface
+either Phi = 0 (the structural added mass: p = 0, the high-frequency limit) or the slosh
+condition dPhi/dx = (omega^2 / a) Phi.  The pressure p = -rho_L d^2 Phi / dt^2 loads the wall,
+whose added-mass matrix (the virtual-mass method) is
+
+    M_a = rho_L c_k G^T H^-1 G,   H = A + k^2 B,   c_k = int cos^2 k theta d theta,
+
+with A = int grad psi . grad psi r dr dx, B = int psi psi / r dr dx and G = int_wall psi N r ds
+(+ the ends), discretised by :mod:`.liquid_mesh` (spectral elements, A and B assembled once
+per tank).  The slosh condition: :mod:`.slosh`.
+
+References
+----------
+.. [1] H. N. Abramson (ed.), *The Dynamic Behavior of Liquids in Moving Containers*, NASA
+   SP-106, 1966, ch. 2 (lateral sloshing, cylinder), ch. 6 (mechanical models).
+.. [2] F. T. Dodge, *The New "Dynamic Behavior of Liquids in Moving Containers"*, SwRI, 2000,
+   ch. 1-3.
+.. [3] R. A. Ibrahim, *Liquid Sloshing Dynamics*, Cambridge, 2005, ch. 2 and 9.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+from scipy.sparse.linalg import splu
+
+from ..checks import count, finite_array
+from .elements import theta_weight
+from .liquid_mesh import (
+    LiquidMesh,
+    Tank,
+    condensed_operator,
+    dof_index,
+    liquid_mesh,
+    radial_moments,
+    wall_trace,
+)
+
+__all__ = ["WALL_RTOL", "Tank", "LiquidMesh", "liquid_mesh", "WallQuadrature", "AddedMass",
+           "added_mass"]
+
+#: Relative tolerance of the wall points on the wall R(x) and inside [x_a, x_s].
+WALL_RTOL = 1e-6
+
+
+@dataclass(frozen=True)
+class WallQuadrature:
+    """Quadrature points on the wetted wall (x_a < x < x_s) of a tank.
+
+    Parameters
+    ----------
+    x, r : array_like, shape (n,)
+        Station and radius of each point (m), on the wall R(x).
+    normal : array_like, shape (n, 2)
+        Unit normal (n_x, n_r) out of the liquid (the shell's outward normal).
+    weight : array_like, shape (n,)
+        Meridian arc-length weights (m): int f ds = sum weight f (the module multiplies by r
+        and by c_k).
+    """
+
+    x: np.ndarray
+    r: np.ndarray
+    normal: np.ndarray
+    weight: np.ndarray
+
+    def __post_init__(self) -> None:
+        x = finite_array("wall.x", self.x, nonempty=False)
+        n = x.size
+        for name, shape in (("r", (n,)), ("normal", (n, 2)), ("weight", (n,))):
+            val = finite_array(f"wall.{name}", getattr(self, name), nonempty=False)
+            if val.shape != shape:
+                raise ValueError(f"wall.{name}: shape {val.shape}, need {shape}")
+            object.__setattr__(self, name, val)
+        object.__setattr__(self, "x", x)
+        if np.any(np.abs(np.hypot(*self.normal.T) - 1.0) > WALL_RTOL):
+            raise ValueError("wall.normal: must be unit vectors")
+
+
+def _check_wall(tank: Tank, wall: WallQuadrature) -> None:
+    """The points lie on the wetted wall: x_a <= x <= x_s, r = R(x), normal out of it."""
+    scale = max(tank.fwd - tank.aft, max(tank.radii))
+    tol = WALL_RTOL * scale
+    bad = (wall.x < tank.aft - tol) | (wall.x > tank.surface + tol)
+    bad |= np.abs(wall.r - tank.radius(wall.x)) > tol
+    xs, rs = np.asarray(tank.stations), np.asarray(tank.radii)
+    slopes = np.diff(rs) / np.diff(xs)
+    ok = np.zeros(wall.x.size, dtype=bool)
+    for side in ("left", "right"):  # at a breakpoint either piece's normal is accepted
+        s = slopes[np.clip(np.searchsorted(xs, wall.x, side=side) - 1, 0, slopes.size - 1)]
+        nx_, nr_ = wall.normal.T
+        ok |= (np.abs(nx_ + s * nr_) <= 1e-6 * np.hypot(1.0, s)) & (nr_ - s * nx_ > 0.0)
+    bad |= ~ok
+    if np.any(bad):
+        i = int(np.argmax(bad))
+        raise ValueError(f"wall point {i} = (x {wall.x[i]!r}, r {wall.r[i]!r}, normal "
+                         f"{tuple(wall.normal[i])!r}): not on the wetted wall of the tank "
+                         f"(x_a {tank.aft!r} .. x_s {tank.surface!r}, R(x) "
+                         f"{float(tank.radius(wall.x[i]))!r}, outward normal)")
+
+
+@dataclass(frozen=True)
+class AddedMass:
+    """Added mass of a tank's liquid for one harmonic.
+
+    Attributes
+    ----------
+    k : int
+        Circumferential harmonic.
+    matrix : ndarray, shape (n, n)
+        M_a (kg, in the units of the DOFs), symmetric positive semi-definite: the liquid's
+        kinetic energy is q' M_a q' / 2 for the shell's convention (the theta integral c_k).
+    constraint : ndarray, shape (n,), or None
+        For a closed full tank and k = 0: the volume change per unit DOF (m^3); the motion
+        must satisfy ``constraint @ q = 0`` (incompressible liquid), on which ``matrix`` is
+        exact.  None otherwise.
+    """
+
+    k: int
+    matrix: np.ndarray
+    constraint: np.ndarray | None
+
+
+def _end_row(name: str, value, n: int) -> np.ndarray:
+    row = np.zeros(n) if value is None else finite_array(name, value, nonempty=False)
+    if row.shape != (n,):
+        raise ValueError(f"{name}: shape {row.shape}, need ({n},)")
+    return row
+
+
+def added_mass(mesh: LiquidMesh, k: int, wall: WallQuadrature, displacement: np.ndarray, *,
+               aft_end: np.ndarray | None = None, fwd_end: np.ndarray | None = None
+               ) -> AddedMass:
+    """Added-mass matrix of the liquid on the wall DOFs for harmonic k (free surface p = 0).
+
+    Parameters
+    ----------
+    mesh : LiquidMesh
+        The tank's liquid (:func:`liquid_mesh`), reused for every k.
+    k : int
+        Circumferential harmonic (dimensionless), 0..200.
+    wall : WallQuadrature
+        Quadrature of the wetted wall, x_a .. x_s.
+    displacement : array_like, shape (n_points, n)
+        Normal wall displacement (m per unit DOF, out of the liquid) of each DOF at the points:
+        w_n(x, theta) = (displacement @ q) cos k theta.
+    aft_end, fwd_end : array_like, shape (n,), optional
+        Axial displacement of the rigid aft / forward end per unit DOF: u_x = r^k cos k theta
+        (row @ q), k = 0 (translation, m) or 1 (tilt, rad); ignored for k >= 2 (a rigid end
+        has no such motion) and, for ``fwd_end``, unless ``fill = 1``.
+
+    Returns
+    -------
+    AddedMass
+
+    References
+    ----------
+    .. [1] Abramson 1966 ch. 2; Ibrahim 2005 ch. 9 (virtual mass of the liquid on the wall).
+    """
+    k = count("k", k, 0, 200)
+    N = finite_array("displacement", displacement, nonempty=False)
+    if N.ndim != 2 or N.shape[0] != wall.x.size:
+        raise ValueError(f"displacement: shape {N.shape}, need ({wall.x.size}, n)")
+    n = N.shape[1]
+    rows = [_end_row(name, val, n) * (k <= 1)
+            for name, val in (("aft_end", aft_end), ("fwd_end", fwd_end))]
+    tank = mesh.tank
+    _check_wall(tank, wall)
+    if mesh.nodes.size == 0:  # no liquid
+        return AddedMass(k, np.zeros((n, n)), None)
+    nx, ny = mesh.shape
+    index, n_dof = dof_index(mesh, k, open_surface=True)
+    # W[node] = int_boundary psi_node w_n r ds per unit DOF: the wall by the given points,
+    # the ends d Phi / dn = -u_x (aft), +u_x (fwd) by quadrature
+    axial, val = wall_trace(mesh, wall.x)
+    trace = np.zeros((nx, wall.x.size))
+    np.add.at(trace, (axial, np.arange(wall.x.size)[:, None]),
+              val * (wall.weight * wall.r)[:, None])
+    nodes, W = [np.arange(nx) * ny + ny - 1], [trace @ N]
+    moment = radial_moments(mesh, k + 1)
+    for line, sign, row in [(0, -1.0, rows[0])] + [(nx - 1, 1.0, rows[1])] * (tank.fill == 1.0):
+        nodes.append(line * ny + np.arange(ny))
+        W.append(sign * float(tank.radius(mesh.x_nodes[line])) ** (k + 2) * np.outer(moment, row))
+    nodes, W = np.concatenate(nodes), np.concatenate(W)
+    keep = index[nodes] >= 0
+    bd, inv = np.unique(index[nodes][keep], return_inverse=True)
+    Gb = sp.csr_matrix((np.ones(inv.size), (inv, np.arange(inv.size))),
+                       shape=(bd.size, inv.size)) @ W[keep]
+    if bd.size == 0:
+        return AddedMass(k, np.zeros((n, n)), None)
+    H = condensed_operator(mesh, k, index, n_dof)
+    constraint = None
+    if k == 0 and tank.fill == 1.0 and tank.ends == ("rigid", "rigid"):  # pure Neumann
+        constraint = theta_weight(0) * W.sum(axis=0)  # int w_n dS (partition of unity)
+        border = np.zeros(n_dof)  # gauge: the sum of Phi over the boundary nodes is 0
+        border[bd] = 1.0
+        H = sp.bmat([[H, border[:, None]], [border[None, :], None]]).tocsc()
+    rhs = np.zeros((H.shape[0], bd.size))
+    rhs[bd, np.arange(bd.size)] = 1.0
+    Z = splu(H, permc_spec="MMD_AT_PLUS_A").solve(rhs)[bd]
+    M = tank.density * theta_weight(k) * Gb.T @ (0.5 * (Z + Z.T)) @ Gb
+    return AddedMass(k, 0.5 * (M + M.T), constraint)

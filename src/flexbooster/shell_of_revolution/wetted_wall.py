@@ -1,0 +1,242 @@
+"""A tank's liquid on the shell-of-revolution model: its wetted wall in the shell's DOFs.
+
+Adapter between :mod:`.liquid` (geometry and quadrature in, added mass out) and the shell's
+mesh: the wall quadrature of the wetted part of the meridian, the normal displacement w of
+every reduced shell DOF at its points (the element shape functions, the node frames and the
+constraint map of :func:`.assembly.dof_map`), the tank ends' axial motion, and the wet system
+M + M_a of :func:`.assembly.system_matrices`.
+
+References
+----------
+.. [1] O. C. Zienkiewicz, R. L. Taylor, *The Finite Element Method*, vol. 2, 5th ed., 2000,
+   sec. 10.3 (node frames); H. N. Abramson, NASA SP-106, 1966 (the liquid).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.polynomial import legendre as leg
+
+from ..checks import count
+from .assembly import Mesh, dof_map, mesh_vehicle, system_matrices
+from .elements import reference_element
+from .geometry import Vehicle
+from .liquid import LiquidMesh, Tank, WallQuadrature, added_mass, liquid_mesh
+
+__all__ = ["WettedWall", "WetSystem", "vehicle_tank", "wetted_wall", "wet_system_matrices"]
+
+#: Relative tolerance of a tank end on a segment boundary (of the vehicle's length).
+STATION_RTOL = 1e-9
+
+
+def vehicle_tank(vehicle: Vehicle, *, aft: float, fwd: float, fill: float, density: float,
+                 ends: tuple = ("rigid", "rigid")) -> Tank:
+    """The :class:`.liquid.Tank` whose wall is the vehicle's meridian between two stations.
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+    aft, fwd : float
+        Tank end stations (m from the aft edge), each a segment boundary or a vehicle end,
+        aft < fwd; the wall between them must be continuous (no plate, no radius step).
+    fill, density, ends
+        As :class:`.liquid.Tank`.
+
+    Returns
+    -------
+    Tank
+    """
+    bounds = np.concatenate(([0.0], np.cumsum([s.length for s in vehicle.segments])))
+    tol = STATION_RTOL * bounds[-1]
+    i_a, i_f = (int(np.argmin(np.abs(bounds - v))) for v in (aft, fwd))
+    for name, v, i in (("aft", aft, i_a), ("fwd", fwd, i_f)):
+        if not (np.isfinite(v) and abs(bounds[i] - v) <= tol):
+            raise ValueError(f"{name} = {v!r}: must be a segment boundary or a vehicle end "
+                             f"({', '.join(f'{b:g}' for b in bounds)} m)")
+    if i_f <= i_a:
+        raise ValueError(f"fwd = {fwd!r}: must be forward of aft = {aft!r}")
+    segs = vehicle.segments[i_a:i_f]
+    for a, b in zip(segs[:-1], segs[1:], strict=True):
+        if a.length == 0.0 or b.length == 0.0 or a.radius_fwd != b.radius_aft:
+            raise ValueError(f"aft = {aft!r}, fwd = {fwd!r}: the tank's wall must be one "
+                             "continuous meridian (no flat plate, no radius step)")
+    radii = [s.radius_aft for s in segs] + [segs[-1].radius_fwd]
+    return Tank(stations=tuple(bounds[i_a:i_f + 1]), radii=tuple(radii), fill=fill,
+                density=density, ends=ends)
+
+
+@dataclass(frozen=True)
+class WettedWall:
+    """The wetted wall of a tank in the reduced shell DOFs of one harmonic.
+
+    Attributes
+    ----------
+    wall : WallQuadrature
+    displacement : ndarray, shape (n_points, n)
+        Normal displacement w (m per unit reduced DOF) at the points.
+    aft_end, fwd_end : ndarray, shape (n,)
+        Axial displacement u_x / r^k of the shell edge at the tank's ends (k <= 1; zero else).
+    """
+
+    wall: WallQuadrature
+    displacement: np.ndarray
+    aft_end: np.ndarray
+    fwd_end: np.ndarray
+
+
+def wetted_wall(vehicle: Vehicle, mesh: Mesh, tank: Tank, k: int, *,
+                breaks: np.ndarray = (), points: int = 10) -> WettedWall:
+    """Quadrature of the wetted meridian (x_a .. x_s) and the shell's w at its points.
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+    mesh : Mesh
+        The shell's mesh (:func:`.assembly.mesh_vehicle`).
+    tank : Tank
+        Its wall must be the vehicle's (:func:`vehicle_tank`).
+    k : int
+        Circumferential harmonic (dimensionless), 0..200.
+    breaks : array_like
+        Further stations (m) at which to cut the quadrature (the liquid mesh's
+        ``x_breaks``, so that every interval integrates a polynomial).
+    points : int
+        Gauss points per interval (dimensionless), 1..40.
+
+    Returns
+    -------
+    WettedWall
+    """
+    k = count("k", k, 0, 200)
+    points = count("points", points, 1, 40)
+    ref = reference_element(mesh.order)
+    g, gw = leg.leggauss(points)
+    x2 = mesh.x1 + mesh.length * mesh.cos_phi
+    cuts = np.unique(np.concatenate(([tank.aft, tank.surface], np.ravel(breaks))))
+    xi, wt, els = [], [], []
+    for e in np.flatnonzero((x2 > tank.aft) & (mesh.x1 < tank.surface) & (mesh.cos_phi > 0)):
+        lo, hi = max(mesh.x1[e], tank.aft), min(x2[e], tank.surface)
+        c = np.concatenate(([lo], cuts[(cuts > lo) & (cuts < hi)], [hi]))
+        mid, half = 0.5 * (c[1:] + c[:-1]), 0.5 * np.diff(c)
+        x = (mid[:, None] + half[:, None] * g[None, :]).ravel()
+        xi.append(2.0 * (x - mesh.x1[e]) / (x2[e] - mesh.x1[e]) - 1.0)
+        wt.append((half[:, None] * gw[None, :]).ravel() / mesh.cos_phi[e])  # ds = dx / cos
+        els.append(np.full(x.size, e))
+    xi, wt, el = (np.concatenate(a) if a else np.zeros(0) for a in (xi, wt, els))
+    el = el.astype(int)
+    s = 0.5 * (1.0 + xi) * mesh.length[el]
+    # w in the element's local DOFs (slope DOFs dw/ds: d/dxi times l / 2) ...
+    nw = ref.evaluate(xi)[1]
+    nw[:, ref.slope] *= 0.5 * mesh.length[el, None]
+    local = np.zeros((xi.size, ref.n_dof))
+    local[:, ref.iw] = nw
+    # ... then in the node frames: w_local = -a sin(delta) + b cos(delta) at both ends
+    for end, (ia, ib) in enumerate(((0, 2), (4, 6))):
+        delta = mesh.phi[el] - mesh.frame[el, end]
+        local[:, ia] = -np.sin(delta) * local[:, ib]
+        local[:, ib] *= np.cos(delta)
+    dmap = dof_map(vehicle, mesh, k)
+    N = _reduce(dmap, mesh.dofs[el], local)
+    wall = WallQuadrature(x=mesh.x1[el] + s * mesh.cos_phi[el],
+                          r=mesh.r1[el] + s * mesh.sin_phi[el],
+                          normal=np.stack([-mesh.sin_phi[el], mesh.cos_phi[el]], axis=1),
+                          weight=wt)
+    ends = [np.zeros(dmap.n), np.zeros(dmap.n)]
+    if k <= 1:
+        for i, (station, end) in enumerate(((tank.aft, 0), (tank.fwd, 1))):
+            edge = (mesh.x1, x2)[end]  # the element that starts (ends) the tank's wall
+            at = np.flatnonzero((np.abs(edge - station) <= STATION_RTOL * x2.max())
+                                & (mesh.cos_phi > 0))
+            if at.size == 0:
+                raise ValueError(f"tank end at {station!r} m: not an element end of the "
+                                 "shell's mesh (make the tank with vehicle_tank)")
+            e = int(at[-end])
+            r = mesh.r1[e] + end * mesh.length[e] * mesh.sin_phi[e]
+            fr = mesh.frame[e, end]  # u_x = a cos(frame) - b sin(frame)
+            row = np.zeros((1, ref.n_dof))
+            row[0, 4 * end], row[0, 4 * end + 2] = np.cos(fr) / r**k, -np.sin(fr) / r**k
+            ends[i] = _reduce(dmap, mesh.dofs[e][None], row)[0]
+    return WettedWall(wall, N, ends[0], ends[1])
+
+
+def _reduce(dmap, dofs: np.ndarray, rows: np.ndarray) -> np.ndarray:
+    """Rows over element DOFs (full indices ``dofs``) -> rows over the reduced DOFs."""
+    idx = dmap.index[dofs]
+    keep = idx >= 0
+    out = np.zeros((rows.shape[0], dmap.n))
+    np.add.at(out, (np.broadcast_to(np.arange(rows.shape[0])[:, None], idx.shape)[keep],
+                    idx[keep]), (rows * dmap.coef[dofs])[keep])
+    return out
+
+
+@dataclass(frozen=True)
+class WetSystem:
+    """The shell with its tanks' liquid, one harmonic.
+
+    Attributes
+    ----------
+    mass, stiffness, geometric : ndarray, shape (m, m)
+        M + M_a (kg), K_e and K_g (N/m) on the coordinates q = basis @ q_c.
+    added_mass : ndarray, shape (n, n)
+        Sum of the tanks' M_a on the reduced shell DOFs (kg).
+    basis : ndarray, shape (n, m), or None
+        Orthonormal basis of the motions that keep every closed full tank's volume (k = 0);
+        None (q_c = q) when no tank constrains the motion.
+    """
+
+    mass: np.ndarray
+    stiffness: np.ndarray
+    geometric: np.ndarray
+    added_mass: np.ndarray
+    basis: np.ndarray | None
+
+
+def wet_system_matrices(vehicle: Vehicle, k: int, tanks: tuple, *, mesh: Mesh | None = None,
+                        liquid_meshes: tuple | None = None, prestress_F0: float = 0.0,
+                        supported_forward_end: bool = False) -> WetSystem:
+    """:func:`.assembly.system_matrices` with the tanks' added mass (and volume constraints).
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+    k : int
+        Circumferential harmonic (dimensionless), 0..200.
+    tanks : sequence of Tank
+        The tanks (:func:`vehicle_tank`).
+    mesh : Mesh, optional
+        The shell's mesh (default :func:`.assembly.mesh_vehicle`).
+    liquid_meshes : sequence of LiquidMesh, optional
+        One per tank (default :func:`.liquid.liquid_mesh`), to reuse over k.
+    prestress_F0, supported_forward_end
+        As :func:`.assembly.system_matrices`.
+
+    Returns
+    -------
+    WetSystem
+    """
+    mesh = mesh_vehicle(vehicle) if mesh is None else mesh
+    tanks = tuple(tanks)
+    lms = tuple(liquid_mesh(t) for t in tanks) if liquid_meshes is None else tuple(
+        liquid_meshes)
+    if len(lms) != len(tanks) or not all(
+            isinstance(lm, LiquidMesh) and lm.tank == t for lm, t in zip(lms, tanks, strict=True)):
+        raise ValueError("liquid_meshes: need one LiquidMesh of each tank, in order")
+    M, K, G = system_matrices(vehicle, k, mesh=mesh, prestress_F0=prestress_F0,
+                              supported_forward_end=supported_forward_end)
+    Ma = np.zeros_like(M)
+    cons = []
+    for t, lm in zip(tanks, lms, strict=True):
+        ww = wetted_wall(vehicle, mesh, t, k, breaks=lm.x_breaks)
+        am = added_mass(lm, k, ww.wall, ww.displacement, aft_end=ww.aft_end,
+                        fwd_end=ww.fwd_end)
+        Ma += am.matrix
+        if am.constraint is not None:
+            cons.append(am.constraint)
+    if not cons:
+        return WetSystem(M + Ma, K, G, Ma, None)
+    C = np.array(cons)
+    Q = np.linalg.qr(C.T, mode="complete")[0]
+    Z = Q[:, np.linalg.matrix_rank(C):]  # the motions with C q = 0
+    return WetSystem(Z.T @ (M + Ma) @ Z, Z.T @ K @ Z, Z.T @ G @ Z, Ma, Z)
