@@ -29,8 +29,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..checks import count, nonnegative, positive
-from ..shell_of_revolution import DEFAULT_ORDER, Vehicle, buckling_load, labelled_modal_system
+from ..checks import count, positive
+from ..shell_of_revolution import (
+    DEFAULT_ORDER,
+    BucklingError,
+    Vehicle,
+    buckling_load,
+    labelled_modal_system,
+)
+from .harmonic import in_unit_interval
 
 __all__ = ["AxialResonance", "ForcedAxial", "forced_axial"]
 
@@ -154,35 +161,21 @@ def forced_axial(
 ) -> ForcedAxial:
     """Forced resonances of the k = 0 modes under T(t) = F0 (1 - gamma cos Omega t).
 
+    Raises :class:`~flexbooster.shell_of_revolution.BucklingError` when F0 buckles k = 0.
+    Meirovitch (1986), sec. 7.4; Tech Memo 104, sec. 7.3 (family 3).
+
     Parameters
     ----------
     vehicle : Vehicle
-        The vehicle (:class:`flexbooster.shell_of_revolution.Vehicle`).
+        The vehicle.
     F0 : float
         Steady thrust (N), > 0 (it prestresses the modes).
     omega_min, omega_max : float
         Omega range (rad/s), 0 < omega_min < omega_max.
     n_modes : int
-        Unloaded k = 0 modes in the basis (dimensionless), 1..2000.
-    damping_ratio : float
-        Modal damping ratio of the loaded modes (dimensionless), [0, 1).
-    supported_forward_end : bool
-        Uniform compression F0 reacted at the nose instead of inertia relief.
-    elements_per_segment, order
-        Mesh (see :func:`flexbooster.shell_of_revolution.mesh_vehicle`).
-
-    Returns
-    -------
-    ForcedAxial
-
-    Raises
-    ------
-    ValueError
-        Bad input (naming it), or the steady thrust buckles k = 0.
-
-    References
-    ----------
-    Meirovitch (1986), sec. 7.4; Tech Memo 104, sec. 7.3 (family 3).
+        Unloaded k = 0 modes in the basis, 1..2000.
+    damping_ratio, supported_forward_end, elements_per_segment, order
+        As :func:`.regions.harmonic_system`.
     """
     if not isinstance(vehicle, Vehicle):
         raise ValueError(f"vehicle = {vehicle!r}: must be a Vehicle")
@@ -191,9 +184,7 @@ def forced_axial(
     if lo >= hi:
         raise ValueError(f"omega_min = {omega_min!r}: must be < omega_max = {omega_max!r}")
     n_modes = count("n_modes", n_modes, 1, 2000)
-    zeta = nonnegative("damping_ratio", damping_ratio)
-    if zeta >= 1.0:
-        raise ValueError(f"damping_ratio = {damping_ratio!r}: must be in [0, 1)")
+    zeta = in_unit_interval("damping_ratio", damping_ratio)
     mesh = {"elements_per_segment": elements_per_segment, "order": order}
     ms, labels = labelled_modal_system(vehicle, 0, n_modes, F0,
                                        supported_forward_end=supported_forward_end, **mesh)
@@ -201,8 +192,8 @@ def forced_axial(
     if w2[0] <= 0.0:
         lam = buckling_load(vehicle, 0, F0=F0, supported_forward_end=supported_forward_end,
                             **mesh).load_factor[0]
-        raise ValueError(f"F0 = {F0!r}: the steady thrust buckles harmonic k = 0 (load "
-                         f"factor lambda = {lam:.6g})")
+        raise BucklingError(f"F0 = {F0!r}: the steady thrust buckles harmonic k = 0 (load "
+                            f"factor lambda = {lam:.6g})", 0, F0, float(lam))
     omega = np.sqrt(w2)
     # generalised force per unit axial aft load of the loaded modes; a mode is defined up to
     # its sign: each is taken with phi_n >= 0 (else the sign depends on round-off, e.g. the
