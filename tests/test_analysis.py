@@ -203,6 +203,6 @@ def test_harmonics_left_out_are_one_warning_per_kind():
     assert (merged[0].code, merged[0].field) == ("vehicle-regions-budget", "max_seconds")
     assert merged[0].message == (
         "6 harmonics left out (k = 2-4, 7, 9-10); the first, max_seconds = 1: harmonic k = 2 "
-        "not searched, estimated at 2 s; each one's reason is in vehicle_regions.skipped of "
+        "not searched, estimated at 2 s; each one's reason is in vehicle_regions.gaps of "
         "results.json")
     assert _merged_warnings([budget(5)]) == [budget(5)]

@@ -50,6 +50,7 @@ from .memo.shell import natural_frequencies
 from .memo.stability import ShellModes, StabilityTable, TooManyRootsError, unstable_frequencies
 from .model import vehicle_from_case
 from .results import SCHEMA_VERSION, UNITS, MemoRootsInRegions, Results
+from .shell_of_revolution import BucklingError
 from .shell_of_revolution.survey import VehicleSurvey, has_flat_plate, vehicle_survey
 from .vehicle import VehicleRegions, region_curves, vehicle_regions
 
@@ -222,9 +223,7 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
               if beam_action and pool.parallel else None)
     hill = pool.submit(hill_check, model) if beam_action and pool.parallel else None
     # the vehicle's regions depend on the case alone (run last when there is no worker)
-    # their budget: the case's less the other stages' estimate
-    vbudget = case.max_seconds - (est.seconds - est.parts.get("vehicle regions", 0.0))
-    vreg = (pool.submit(_vehicle_regions_stage, case, boundaries=figures, max_seconds=vbudget)
+    vreg = (pool.submit(_vehicle_regions_stage, case, boundaries=figures)
             if with_regions and pool.parallel else None)
     n = model.truncation
     beam = beam_modes(n.N, model.mass.L, model.R1, model.E, model.rho)
@@ -287,8 +286,7 @@ def _analyze(case: Case, beam_action: bool, stability: bool, figures: bool,
     if with_regions:
         step(VEHICLE_REGIONS_STAGE)
         regions, skipped = (vreg.result() if vreg is not None
-                            else _vehicle_regions_stage(case, boundaries=figures,
-                                                        max_seconds=vbudget))
+                            else _vehicle_regions_stage(case, boundaries=figures))
         extra += skipped
         if regions is not None and table is not None:
             matches = memo_roots_in_regions(table, regions)
@@ -468,12 +466,10 @@ def analyze_vehicle(case: Case, *, k_max: int | None = None, f_max: float | None
         try:
             return vehicle_survey(vehicle, k_max=k_max, F0=case.F0, f_max=f_max,
                                   prestress=prestress, views=views, source=source)
-        except ValueError as exc:
-            if "buckling" in str(exc):
-                raise CaseError("thrust.F0", case.F0, "the thrust prestress exceeds a "
-                                f"buckling load of the vehicle ({exc}); use --no-prestress "
-                                "for the unloaded modes") from None
-            raise
+        except BucklingError as exc:
+            raise CaseError("thrust.F0", case.F0, "the thrust prestress exceeds a "
+                            f"buckling load of the vehicle ({exc}); use --no-prestress "
+                            "for the unloaded modes") from None
 
 
 def vehicle_warnings(survey: VehicleSurvey) -> list[AnalysisWarning]:
@@ -501,12 +497,11 @@ def vehicle_warnings(survey: VehicleSurvey) -> list[AnalysisWarning]:
     return out
 
 
-def _vehicle_regions_stage(case: Case, *, boundaries: bool, max_seconds: float | None = None
+def _vehicle_regions_stage(case: Case, *, boundaries: bool
                            ) -> tuple[VehicleRegions | None, list[AnalysisWarning]]:
     """The regions of :func:`analyze_vehicle_regions`, or None and a warning where they cannot
     be computed (k_max < 1, or the steady thrust buckles a harmonic): the run goes on.  The
     harmonics left out are warnings, one per kind (:func:`_merged_warnings`):
-    ``vehicle-regions-budget`` (field max_seconds) past the budget,
     ``vehicle-regions-skipped`` (thrust.omega_min) past the candidate or step limit."""
     from .errors import CaseError
     from .vehicle_case import VehicleTable
@@ -520,21 +515,15 @@ def _vehicle_regions_stage(case: Case, *, boundaries: bool, max_seconds: float |
             f"computed for k >= {VEHICLE_REGIONS_K_MIN} only (k = 0 gives forced, not "
             "parametric, resonances)")]
     try:
-        found = analyze_vehicle_regions(case, boundaries=boundaries, max_seconds=max_seconds)
+        found = analyze_vehicle_regions(case, boundaries=boundaries)
         used, dofs = cost.region_modes(case, k_max=k_max)
         clipped = [] if table is None or used == table.n_modes else [AnalysisWarning(
             "vehicle-modes-clipped", "vehicle.n_modes",
             f"vehicle.n_modes = {table.n_modes}: more than the {dofs} modes the vehicle's "
             f"mesh has in a harmonic: {used} modes per harmonic (all of them) are used")]
-        left = ("" if max_seconds is None or max_seconds == case.max_seconds else
-                f" [what the other stages' estimate left of max_seconds = "
-                f"{case.max_seconds:g} s]")
-        # harmonics whose search would pass the budget (issue 18): named, not searched
         return found, clipped + _merged_warnings([
-            AnalysisWarning("vehicle-regions-budget", "max_seconds", why + left)
-            if why.startswith("max_seconds") else
-            AnalysisWarning("vehicle-regions-skipped", why.split(" = ", 1)[0], why)
-            for why in found.skipped])
+            AnalysisWarning("vehicle-regions-skipped", "thrust.omega_min", g.reason)
+            for g in found.gaps])
     except CaseError as exc:  # the thrust buckles the vehicle: a result, not a bad input
         return None, [AnalysisWarning("vehicle-regions-skipped", exc.field, exc.rule)]
 
@@ -543,7 +532,7 @@ def _merged_warnings(warnings: list[AnalysisWarning]) -> list[AnalysisWarning]:
     """One warning per (code, field) for the harmonics left out of the vehicle regions: a
     case over its budget can leave out dozens, and a warning each would bury the others in
     the summary.  The merged warning names every harmonic (k = 2-9, 12) and quotes the first
-    one's reason; each reason stays in ``VehicleRegions.skipped`` (results.json)."""
+    one's reason; each reason stays in ``VehicleRegions.gaps`` (results.json)."""
     groups: dict[tuple[str, str], list[AnalysisWarning]] = {}
     for w in warnings:
         groups.setdefault((w.code, w.field), []).append(w)
@@ -555,7 +544,7 @@ def _merged_warnings(warnings: list[AnalysisWarning]) -> list[AnalysisWarning]:
             continue
         out.append(AnalysisWarning(code, field, (
             f"{len(ws)} harmonics left out (k = {_ranges(sorted(ks))}); the first, "
-            f"{ws[0].message}; each one's reason is in vehicle_regions.skipped of "
+            f"{ws[0].message}; each one's reason is in vehicle_regions.gaps of "
             "results.json")))
     return out
 
@@ -572,8 +561,7 @@ def _ranges(ks: list[int]) -> str:
 
 
 def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
-                            k_max: int | None = None, boundaries: bool = True,
-                            max_seconds: float | None = None) -> VehicleRegions:
+                            k_max: int | None = None, boundaries: bool = True) -> VehicleRegions:
     """The parametric instability regions of the case's vehicle (the last stage of
     :func:`analyze`).
 
@@ -602,11 +590,6 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
         Only the regions that exist at that gamma have curves
         (:func:`flexbooster.vehicle.region_curves`: the harmonics with a region there, from
         their stored systems, in the budget the searches left).
-    max_seconds : float, optional
-        Budget of the searches (s), > 0; default ``case.max_seconds``.  The chart's curves
-        get what the map left of it (``VehicleRegions.estimated_seconds``); a harmonic whose
-        search would pass it is named in ``skipped``.
-
     Returns
     -------
     VehicleRegions
@@ -633,7 +616,6 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
         raise CaseError("vehicle.k_max", table.k_max,
                         f"the parametric regions need k_max >= {k_min}")
     t = case.thrust
-    budget = case.max_seconds if max_seconds is None else positive("max_seconds", max_seconds)
     vehicle = vehicle_from_case(case)
     if has_flat_plate(vehicle):  # the modes survey goes on unloaded; the regions cannot
         raise CaseError("vehicle.segments", "a cone of length 0",
@@ -647,22 +629,18 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
                     gimbal_gain=t.K)
     with blas_threads(1):
         try:
-            found = vehicle_regions(vehicle, gamma=t.gamma, max_seconds=budget, **settings)
+            found = vehicle_regions(vehicle, gamma=t.gamma, **settings)
             top = _chart_gamma(found)
             if boundaries and top > 0.0:
                 # the harmonics that can have a region at the chart's top (above the case's
                 # gamma every harmonic is certified: none), in the budget the map left
-                curves, skipped = region_curves(
-                    found, gamma_max=top, n_gamma=charts.VEHICLE_CHART_LEVELS,
-                    max_seconds=max(budget - found.estimated_seconds, 1e-9))
-                found = dataclasses.replace(found, curves=curves,
-                                            skipped=found.skipped + skipped)
+                curves, gaps = region_curves(
+                    found, gamma_max=top, n_gamma=charts.VEHICLE_CHART_LEVELS)
+                found = dataclasses.replace(found, curves=curves, gaps=found.gaps + gaps)
             found = dataclasses.replace(found, chart_gamma_max=top if boundaries else None)
-        except ValueError as exc:
-            if "buckles" in str(exc):
-                raise CaseError("thrust.F0", case.F0, "the steady thrust buckles the vehicle "
-                                f"({exc}): no parametric regions") from None
-            raise
+        except BucklingError as exc:
+            raise CaseError("thrust.F0", case.F0, "the steady thrust buckles the vehicle "
+                            f"({exc}): no parametric regions") from None
     return found
 
 
