@@ -30,14 +30,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..checks import count, positive
-from ..shell_of_revolution import (
-    DEFAULT_ORDER,
-    BucklingError,
-    Vehicle,
-    buckling_load,
-    labelled_modal_system,
-)
-from .harmonic import in_unit_interval
+from ..shell_of_revolution import DEFAULT_ORDER, Vehicle
+from .harmonic import in_unit_interval, loaded_modes
 
 __all__ = ["AxialResonance", "ForcedAxial", "forced_axial"]
 
@@ -65,11 +59,7 @@ class AxialResonance:
         phi_n^2 / omega_n^2: static modal flexibility at the aft edge (m/N).
     amplitude : float or None
         Aft-edge axial amplitude per unit gamma F0 at Omega = omega_n, phi_n^2 /
-        (2 zeta omega_n^2) (m/N); None without damping (unbounded).
-
-    References
-    ----------
-    Meirovitch (1986), sec. 7.4; Tech Memo 104, eq. 7.3-5.
+        (2 zeta omega_n^2) (m/N; Meirovitch 1986, sec. 7.4); None without damping.
     """
 
     index: int
@@ -118,23 +108,9 @@ class ForcedAxial:
     omega_max: float
 
     def receptance(self, Omega) -> np.ndarray:
-        """Aft-edge axial receptance u_x / (gamma F0) of the elastic modes.
-
-        Parameters
-        ----------
-        Omega : array_like
-            Pulsation frequencies (rad/s), > 0.
-
-        Returns
-        -------
-        ndarray, complex
-            sum_n phi_n^2 / (omega_n^2 - Omega^2 + 2 i zeta omega_n Omega) (m/N); the
-            displacement is Re(receptance e^{i Omega t}) times -gamma F0.
-
-        References
-        ----------
-        Meirovitch (1986), sec. 7.4.
-        """
+        """Aft-edge axial receptance u_x / (gamma F0) of the elastic modes at Omega (rad/s,
+        > 0): sum_n phi_n^2 / (omega_n^2 - Omega^2 + 2 i zeta omega_n Omega) (m/N, complex;
+        the displacement is Re(receptance e^{i Omega t}) times -gamma F0; Meirovitch 7.4)."""
         om = np.atleast_1d(np.asarray(Omega, dtype=float))
         if not np.all(np.isfinite(om)) or np.any(om <= 0.0):
             raise ValueError(f"Omega = {Omega!r}: must be finite and > 0")
@@ -185,15 +161,9 @@ def forced_axial(
         raise ValueError(f"omega_min = {omega_min!r}: must be < omega_max = {omega_max!r}")
     n_modes = count("n_modes", n_modes, 1, 2000)
     zeta = in_unit_interval("damping_ratio", damping_ratio)
-    mesh = {"elements_per_segment": elements_per_segment, "order": order}
-    ms, labels = labelled_modal_system(vehicle, 0, n_modes, F0,
-                                       supported_forward_end=supported_forward_end, **mesh)
-    w2, V = np.linalg.eigh(ms.stiffness + ms.geometric)  # loaded modes (Bolotin sec. 8)
-    if w2[0] <= 0.0:
-        lam = buckling_load(vehicle, 0, F0=F0, supported_forward_end=supported_forward_end,
-                            **mesh).load_factor[0]
-        raise BucklingError(f"F0 = {F0!r}: the steady thrust buckles harmonic k = 0 (load "
-                            f"factor lambda = {lam:.6g})", 0, F0, float(lam))
+    ms, labels, w2, V = loaded_modes(vehicle, 0, n_modes, F0,
+                                     supported_forward_end=supported_forward_end,
+                                     elements_per_segment=elements_per_segment, order=order)
     omega = np.sqrt(w2)
     # generalised force per unit axial aft load of the loaded modes; a mode is defined up to
     # its sign: each is taken with phi_n >= 0 (else the sign depends on round-off, e.g. the

@@ -151,7 +151,9 @@ def bending_system(
     gimbal_gain: float = 0.0, supported_forward_end: bool = False,
     elements_per_segment: int | tuple | None = None, order: int = DEFAULT_ORDER,
 ) -> BendingSystem:
-    """The k = 1 periodic system with rigid modes and the follower thrust (module docstring).
+    """The k = 1 periodic system with rigid modes and the follower thrust (module docstring;
+    Beal 1965, eq. 4 in Galerkin form).  For a free-free vehicle the first basis mode is the
+    rigid rotation and the second the rigid translation (its column of A and B is 0).
 
     Parameters
     ----------
@@ -160,26 +162,14 @@ def bending_system(
     F0 : float
         Steady thrust (N), > 0.
     n_modes : int
-        Basis modes of k = 1, rigid ones included (dimensionless), 2..2000.
+        Basis modes of k = 1, rigid ones included, 2..2000.
     damping_ratio : float
         Modal damping ratio of the elastic basis modes (dimensionless), [0, 1).
     gimbal_gain : float
         K (dimensionless), >= 0: the thrust turns by K psi from the aft tangent, psi the
         rigid pitch angle (Tech Memo 104, eq. 2.2-2).
-    supported_forward_end : bool
-        Uniform compression F0 reacted at the nose instead of inertia relief.
-    elements_per_segment, order
-        Mesh (see :func:`flexbooster.shell_of_revolution.mesh_vehicle`).
-
-    Returns
-    -------
-    BendingSystem
-        For a free-free vehicle the first basis mode is the rigid rotation and the second the
-        rigid translation (it does not act back on the others: its column of A and B is 0).
-
-    References
-    ----------
-    Beal (1965), eq. 4 (Galerkin form); Bolotin (1963), ch. 1.
+    supported_forward_end, elements_per_segment, order
+        As :func:`.regions.harmonic_system`.
     """
     if not isinstance(vehicle, Vehicle):
         raise ValueError(f"vehicle = {vehicle!r}: must be a Vehicle")
@@ -204,11 +194,13 @@ def follower_flutter_thrust(
     supported_forward_end: bool = False, elements_per_segment: int | tuple | None = None,
     order: int = DEFAULT_ORDER, rtol: float = 1e-9,
 ) -> float:
-    """Smallest steady thrust (gamma = 0, no damping) at which the k = 1 system flutters.
+    """Smallest steady thrust (N; gamma = 0, no damping) at which the k = 1 system flutters,
+    inf if none up to thrust_max.
 
     Flutter: two frequencies of diag(omega^2) + T (K_g - y beta^T) coalesce and leave the real
-    axis (Bolotin 1963, ch. 1); located by a scan of ``n_scan`` thrusts in (0, thrust_max]
-    and refined by brentq on max |Im lambda| / max |lambda| = 1e-9.
+    axis (Bolotin 1963, ch. 1; Beal 1965, fig. 2: 109.69 EI / l^2 for the free-free uniform
+    beam); located by a scan of ``n_scan`` thrusts in (0, thrust_max] and refined by brentq on
+    max |Im lambda| / max |lambda| = 1e-9.
 
     Parameters
     ----------
@@ -216,23 +208,12 @@ def follower_flutter_thrust(
         The vehicle.
     thrust_max : float
         Largest thrust examined (N), > 0.
-    n_modes : int
-        Basis modes of k = 1, rigid ones included (dimensionless), 2..2000.
-    n_scan : int
-        Scan points (dimensionless), 2..10000.
+    n_modes, n_scan : int
+        Basis modes of k = 1, rigid ones included, 2..2000; scan points, 2..10000.
     supported_forward_end, elements_per_segment, order
         As :func:`bending_system`.
     rtol : float
         Relative tolerance on the thrust (dimensionless), (0, 1e-2].
-
-    Returns
-    -------
-    float
-        The flutter thrust (N); inf if the system does not flutter up to thrust_max.
-
-    References
-    ----------
-    Beal (1965), fig. 2 (109.69 EI / l^2 for the free-free uniform beam).
     """
     if not isinstance(vehicle, Vehicle):
         raise ValueError(f"vehicle = {vehicle!r}: must be a Vehicle")
@@ -323,22 +304,15 @@ def bending_harmonic(
     of A, ascending real part of the eigenvalue, the toolkit's mode order) labelled by the
     basis mode that dominates it.
 
+    ``omega_unloaded`` are those of the kept basis modes, ``omega_loaded`` the steady
+    frequencies sqrt(max(Re mu, 0)) of A (rad/s).  Beal (1965), eq. 4; Bolotin (1964), sec. 8.
+
     Parameters
     ----------
     vehicle, F0, damping_ratio, gimbal_gain, supported_forward_end, elements_per_segment, order
-        As :func:`bending_system` (F0 in N, > 0; the ratio and K dimensionless).
+        As :func:`bending_system`.
     n_modes : int
-        Basis modes of k = 1, rigid ones included (dimensionless), 3..2000.
-
-    Returns
-    -------
-    HarmonicSystem
-        With k = 1: ``omega_unloaded`` of the kept basis modes, ``omega_loaded`` the steady
-        frequencies sqrt(max(Re mu, 0)) of A (rad/s).
-
-    References
-    ----------
-    Beal (1965), eq. 4; Bolotin (1963), ch. 1; Bolotin (1964), sec. 8.
+        Basis modes of k = 1, rigid ones included, 3..2000.
     """
     n_modes = count("n_modes", n_modes, 3, 2000)
     bs = bending_system(vehicle, F0=F0, n_modes=n_modes, damping_ratio=damping_ratio,

@@ -15,9 +15,10 @@ import numpy as np
 from .. import floquet
 from ..bands import SearchGap
 from ..checks import count, finite, nonnegative, positive
+from ..shell_of_revolution import BucklingError, buckling_load, labelled_modal_system
 
 __all__ = ["RegionMode", "ModalMatrices", "HarmonicSystem", "VehicleRegion", "LIMIT_ERRORS",
-           "floquet_options", "harmonic_regions", "limit_gap", "in_unit_interval"]
+           "floquet_options", "harmonic_regions", "limit_gap", "in_unit_interval", "loaded_modes"]
 
 #: The toolkit's size limits: past one a harmonic is a :class:`~flexbooster.bands.SearchGap`.
 LIMIT_ERRORS = (floquet.TooManyCandidatesError, floquet.StepLimitError)
@@ -212,6 +213,39 @@ def in_unit_interval(name: str, value) -> float:
     if x >= 1.0:
         raise ValueError(f"{name} = {value!r}: must be in [0, 1)")
     return x
+
+
+def loaded_modes(vehicle, k: int, n_modes: int, F0: float, *, supported_forward_end: bool,
+                 elements_per_segment, order) -> tuple:
+    """The unloaded modal system of harmonic k and its modes loaded by the steady thrust.
+
+    Eigenpairs (w2, V) of K_e + K_g in the mass-normalised unloaded modes (M = I; Bolotin
+    1964, sec. 8).  Raises :class:`~flexbooster.shell_of_revolution.BucklingError` with the
+    load factor of :func:`~flexbooster.shell_of_revolution.buckling_load` when a loaded
+    omega^2 <= 0.  Returns (modal system, its labels, w2, V).
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        The vehicle.
+    k, n_modes : int
+        Harmonic; unloaded modes in the basis.
+    F0 : float
+        Steady thrust (N), > 0.
+    supported_forward_end, elements_per_segment, order
+        As :func:`.regions.harmonic_system`.
+    """
+    mesh = {"elements_per_segment": elements_per_segment, "order": order}
+    ms, labels = labelled_modal_system(vehicle, k, n_modes, F0,
+                                       supported_forward_end=supported_forward_end, **mesh)
+    w2, V = np.linalg.eigh(ms.stiffness + ms.geometric)
+    if w2[0] <= 0.0:
+        lam = float(buckling_load(vehicle, k, F0=F0, supported_forward_end=supported_forward_end,
+                                  **mesh).load_factor[0])
+        raise BucklingError(f"F0 = {F0!r}: the steady thrust buckles harmonic k = {k} (load "
+                            f"factor lambda = {lam:.6g} <= 1, critical thrust {lam * F0:.6g} "
+                            f"N; loaded omega^2 = {w2[0]:.4g} 1/s^2)", k, F0, lam)
+    return ms, labels, w2, V
 
 
 def floquet_options(rtol=1e-9, step_phase=0.12, max_order=None,

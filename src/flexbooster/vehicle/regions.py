@@ -23,13 +23,7 @@ import numpy as np
 
 from .. import floquet
 from ..checks import count, nonnegative, positive
-from ..shell_of_revolution import (
-    DEFAULT_ORDER,
-    BucklingError,
-    Vehicle,
-    buckling_load,
-    labelled_modal_system,
-)
+from ..shell_of_revolution import DEFAULT_ORDER, Vehicle
 from .axial import ForcedAxial, forced_axial
 from .bending import bending_harmonic
 from .harmonic import (
@@ -39,6 +33,7 @@ from .harmonic import (
     harmonic_regions,
     in_unit_interval,
     limit_gap,
+    loaded_modes,
 )
 
 __all__ = ["RegionCurve", "VehicleRegions", "harmonic_system", "vehicle_regions",
@@ -203,16 +198,9 @@ def harmonic_system(
     zeta = in_unit_interval("damping_ratio", damping_ratio)
     if not isinstance(supported_forward_end, bool | np.bool_):
         raise ValueError(f"supported_forward_end = {supported_forward_end!r}: must be a bool")
-    mesh = {"elements_per_segment": elements_per_segment, "order": order}
-    ms, labels = labelled_modal_system(vehicle, k, n_modes, F0,
-                                       supported_forward_end=supported_forward_end, **mesh)
-    w2, V = np.linalg.eigh(ms.stiffness + ms.geometric)  # steady K_e + K_g, M = I
-    if w2[0] <= 0.0:
-        lam = buckling_load(vehicle, k, F0=F0, supported_forward_end=supported_forward_end,
-                            **mesh).load_factor[0]
-        raise BucklingError(f"F0 = {F0!r}: the steady thrust buckles harmonic k = {k} (load "
-                            f"factor lambda = {lam:.6g} <= 1, critical thrust {lam * F0:.6g} "
-                            f"N; loaded omega^2 = {w2[0]:.4g} 1/s^2)", k, F0, float(lam))
+    ms, labels, w2, V = loaded_modes(vehicle, k, n_modes, F0,
+                                     supported_forward_end=supported_forward_end,
+                                     elements_per_segment=elements_per_segment, order=order)
     omega_l = np.sqrt(w2)
     n = omega_l.size
     mode_order, mode_type = labels()
