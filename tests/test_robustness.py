@@ -1520,49 +1520,12 @@ def test_fuzz_reproducer_vehicle_regions_of_a_flat_plate():
         analysis.analyze_vehicle_regions(case, boundaries=False)
 
 
-def test_fuzz_reproducer_vehicle_regions_past_the_step_limit():
-    """Found by the fuzz (run 8, after the damped step counts were fixed: a damped monodromy
-    now takes about 5 times the steps it took): harmonic k = 19 of a 37-mode vehicle (up to
-    21,000 rad/s) at Omega = 1.15 rad/s needs 370,728 steps per period, past the toolkit's
-    max_steps = 200,000: its ValueError ended the run (exit 1).  Now
-    floquet.StepLimitError, and the harmonic is named as not searched (vehicle-regions-
-    skipped, field thrust.omega_min, one line), like a harmonic past the candidate limit."""
-    from flexbooster.floquet import StepLimitError
-
-    assert issubclass(StepLimitError, ValueError)
-    case = flexbooster.load_case({
-        "name": "fuzz", "max_seconds": 20.0,
-        "booster": {"cylinder1": {"radius": 27.007642697630487, "half_length": 1.0},
-                    "cylinder2": {"radius": 1.987751681068438, "half_length": 1.0},
-                    "thickness": 0.4245637120574288, "E": 697719596.8563334,
-                    "nu": 0.2321362982983677, "rho": 252.09343551531046},
-        "thrust": {"gamma": 0.5145247219221243, "K": 3.812612563831604,
-                   "omega_min": 1.2530159911033738, "omega_max": 907.9807723031281,
-                   "n_omega": 8, "F0": 697719596.8563334},
-        "truncation": {"M1": 4, "N1": 1, "M2": 3, "N2": 4, "N": 4, "S": 1, "R": 2},
-        "damping": {"pitch_ratio": 0.02},
-        "vehicle": {"k_max": 50, "n_modes": 37, "damping_ratio": 0.001, "theory": "donnell",
-                    "fwd_end": "hinged", "junction": "rigid-bulkhead"}})
-    found, warns = analysis._vehicle_regions_stage(case, boundaries=False, max_seconds=20.0)
-    steps = [w for w in warns if "max_steps" in w.message]
-    assert len(steps) == 1 and (steps[0].code, steps[0].field) == (
-        "vehicle-regions-skipped", "thrust.omega_min")
-    assert "harmonic k = 19 not searched" in steps[0].message and "\n" not in steps[0].message
-    # every other harmonic is over the budget: 49 named in one warning (not 49 warnings)
-    assert found is not None and len(found.skipped) == 50 and len(warns) == 2
-    (budget,) = [w for w in warns if w.code == "vehicle-regions-budget"]
-    assert budget.message.startswith("49 harmonics left out (k = 1-18, 20-50); the first, ")
-
-
-def test_a_truncation_past_the_band_search_limits_is_a_case_error():
-    """truncation.N = 150 with the budget lifted (max_seconds = 1e9; the estimate refuses it
-    otherwise): the beam-action band search has 9e8 resonance candidates above omega_1 / 4,
-    past the Floquet toolkit's limit.  A one-line CaseError naming truncation.N (exit 2), not
-    the toolkit's TooManyCandidatesError (exit 1); in one process the band search runs
-    before the exponents of the grid, so the refusal comes at once."""
-    data = flexbooster.default_case().model_dump(exclude_none=True)
-    data["truncation"].update(N=150, M1=2, N1=2, M2=2, N2=2, S=1, R=2)
-    data["thrust"]["n_omega"] = 4
-    data["max_seconds"] = 1e9
-    with pytest.raises(CaseError, match=r"^truncation\.N = 150: the beam-action band search"):
-        analyze(flexbooster.load_case(data), figures=False, vehicle=False)
+def test_a_band_search_past_the_toolkit_limits_is_a_case_error(monkeypatch):
+    """A beam-action band search past a size limit of the Floquet toolkit (here the default
+    case with BAND_MAX_CANDIDATES = 10: it examines some 300 candidates above omega_1 / 4) is
+    a one-line CaseError naming truncation.N (exit 2), not the toolkit's
+    TooManyCandidatesError (exit 1)."""
+    monkeypatch.setattr(ba, "BAND_MAX_CANDIDATES", 10)
+    model = cost.derived_model(flexbooster.default_case())
+    with pytest.raises(CaseError, match=r"^truncation\.N = 10: the beam-action band search"):
+        analysis._beam_action(model, None, max_seconds=300.0)

@@ -827,3 +827,21 @@ def test_candidate_gaps_equal_the_full_enumeration():
         others = np.delete(near, np.argmin(np.abs(near - c)))
         assert g == np.min(np.abs(others - c))
 
+
+
+def test_harmonics_past_the_step_limit_are_gaps():
+    """An accuracy setting past the toolkit's step limit (step_phase = 1e-6: some 1e7 steps per
+    period against max_steps = 200,000): every harmonic of the map and of the chart is a
+    SearchGap naming max_steps and its k, no row and no curve; the harmonics are still built
+    and certified."""
+    res = vehicle_regions(readme_vehicle(), F0=F0_DEFAULT, gamma=0.3, omega_min=5.0,
+                          omega_max=2000.0, k_min=2, k_max=3, n_modes=3, damping_ratio=0.0,
+                          axial=False, step_phase=1e-6, boundaries=True, gamma_max=0.4,
+                          n_gamma=3)
+    assert res.regions == () and res.curves == () and len(res.certificates) == 2
+    assert [(g.stage, g.k, g.limit) for g in res.gaps] == [("vehicle", k, "max_steps")
+                                                           for k in (2, 3, 2, 3)]
+    assert [g.reason.split(":")[0] for g in res.gaps] == [
+        "harmonic k = 2 not searched", "harmonic k = 3 not searched",
+        "harmonic k = 2 not traced for the chart", "harmonic k = 3 not traced for the chart"]
+    assert all("max_steps = 200000" in g.reason for g in res.gaps)

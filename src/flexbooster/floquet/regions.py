@@ -358,7 +358,7 @@ def _gaps(own: np.ndarray, j: np.ndarray, centre: np.ndarray, base: np.ndarray,
     step = max(1, _ENUMERATION_BATCH // max(4 * base.size, 1))
     for s in range(0, centre.size, step):
         c, o, jo = centre[s:s + step, None], own[s:s + step, None], j[s:s + step, None]
-        jf = np.floor(base[None, :] / c).astype(np.int64)
+        jf = np.floor(np.minimum(base[None, :] / c, 2.0**62)).astype(np.int64)
         for d in (-1, 0, 1, 2):
             jj = np.clip(jf + d, jmin[None, :], np.maximum(jmax, jmin)[None, :])
             dist = np.abs(c - base[None, :] / jj)
