@@ -1,8 +1,8 @@
-"""Benchmark: the vehicle-regions stage of the pipeline (issue 15) against its baselines, same run.
+"""Benchmark: the vehicle-regions stage of the pipeline against its baselines, same run.
 
 Work timed (best of ``--repeat``, ``time.perf_counter``), on the default case's memo vehicle
 (k = 2..10, F0 = 2.8 MN, gamma = 0.05, Omega 5..2000 rad/s, damping 0.01) with ``--n-modes``
-modes per k (default 4: the core is slow today, see docs/theory/vehicle-regions.md):
+modes per k (default 4):
 
 1. ``analyze_vehicle_regions(case, boundaries=False)`` (what ``analyze(..., figures=False)``
    runs) against the bare ``flexbooster.vehicle.vehicle_regions`` with the same settings: the

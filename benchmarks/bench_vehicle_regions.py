@@ -16,42 +16,24 @@ two cylinders, memo bulkhead, shear-diaphragm ends, inertia relief), F0 = 2.8 MN
   3. ``--hard``: a case where damping leaves a region (k = 3, 10 modes, Omega 10..300 rad/s,
      gamma = 0.5, zeta = 0.001) with the damping filter (default) and without
      (``damping_margin=None``), to show what the filter alone saves;
-  4. ``--cost``: the per-harmonic cost model (``flexbooster.vehicle.harmonic_search_seconds``
-     of ``floquet.search_work``, issue 18) and the up-front one (``search_seconds``) against
-     the measured search of undamped k = 3 maps with 4, 8 and 12 modes (``--cost-modes``),
+  4. ``--cost``: the up-front estimate (``flexbooster.cost.search_seconds``) against the
+     measured search of undamped k = 3 harmonics with 4, 8 and 12 modes (``--cost-modes``)
      and of the damped harmonics that are not certified: the README example's k = 2 and the
-     free-free default vehicle's k = 1 (20 modes); the ratio estimate / measured.
-
-  5. ``--leftovers`` (issue 15 leftovers, branch vk2): the pipeline's stage
-     ``analysis.analyze_vehicle_regions(case, boundaries=True)`` (what ``flexbooster run``
-     runs, no budget) on the default case, the README's ``[vehicle]`` example and the default
-     vehicle with free ends, k = 1..10 and k = 1..20, against the same run's baseline: the
-     previous stage (a second full map with ``boundaries=True`` for the chart's curves, the
-     damped seeds refined to rtol: ``floquet.regions._monodromy_search(seeds=False)``); the
-     regions of both must be equal (kind, modes, order; edges to 1e-6 relative).  ``--run``
-     adds ``flexbooster run -j 1`` of the default case and of the README example (wall, CPU
-     of the child).
-  6. ``--damped-counts`` (branch damped1): the same stage on the same three cases, k = 1..20,
-     and the ``--hard`` case, against the same run's baseline: the damped step counts of
-     main before the fix of ``floquet.multipliers._rates`` (:func:`_previous_rates`, a copy
-     of main 308388d's function patched in); the time and how far the regions moved (edges
-     and growth rates, relative).
+     free-free default vehicle's k = 1 (20 modes); the ratio estimate / measured;
+  5. ``--limits``: a harmonic whose resonance centres of every order in the range number
+     over 200,000 (the README example, k = 2, 8 modes, undamped, Omega 1..2000 rad/s): the
+     candidates examined (the orders whose width estimate passes the floor) and the time of
+     the search.
 
 Usage::
 
     OPENBLAS_NUM_THREADS=1 PYTHONPATH=src python benchmarks/bench_vehicle_regions.py \
-        [--n-modes 20] [--k-max 20] [--repeat 3] [--sample 16] [--hard] [--cost] \
-        [--leftovers] [--run] [--damped-counts]
+        [--n-modes 20] [--k-max 20] [--repeat 3] [--sample 16] [--hard] [--cost] [--limits]
 """
 
 from __future__ import annotations
 
 import argparse
-import dataclasses
-import resource
-import subprocess
-import sys
-import tempfile
 import time
 import tomllib
 from pathlib import Path
@@ -60,19 +42,11 @@ import numpy as np
 
 import flexbooster
 from flexbooster import floquet
-from flexbooster.analysis import analyze_vehicle_regions
 from flexbooster.case import default_case_text, load_case
+from flexbooster.cost import search_seconds
 from flexbooster.floquet import growth_rate
-from flexbooster.floquet import regions as floquet_regions
 from flexbooster.model import vehicle_from_case
-from flexbooster.vehicle import (
-    bending_harmonic,
-    harmonic_search_seconds,
-    harmonic_system,
-    search_seconds,
-    vehicle_regions,
-)
-from flexbooster.vehicle.regions import _floquet_options, _harmonic_regions
+from flexbooster.vehicle import vehicle_regions
 
 F0, GAMMA, LO, HI = 2.8e6, 0.05, 5.0, 2000.0
 
@@ -140,10 +114,7 @@ def main() -> None:
     ap.add_argument("--hard", action="store_true", help="also the filter-only case")
     ap.add_argument("--cost", action="store_true", help="also the cost model check")
     ap.add_argument("--cost-modes", type=int, nargs="+", default=[4, 8, 12])
-    ap.add_argument("--leftovers", action="store_true", help="the pipeline stage, vk2")
-    ap.add_argument("--run", action="store_true", help="flexbooster run of two cases")
-    ap.add_argument("--damped-counts", action="store_true",
-                    help="the damped step counts against main's (branch damped1)")
+    ap.add_argument("--limits", action="store_true", help="a former candidate-count case")
     args = ap.parse_args()
     print(f"load average {Path('/proc/loadavg').read_text().split()[:3]} at start")
     veh = vehicle_from_case(flexbooster.default_case())
@@ -153,7 +124,7 @@ def main() -> None:
     print(f"default case vehicle, k = 1..{args.k_max}, {args.n_modes} modes per k, "
           f"Omega = {LO:g}..{HI:g} rad/s, gamma = {GAMMA}, zeta = 0.01")
     _, t_10, c_10 = best_of(lambda: vehicle_regions(veh, **{**kw, "k_max": 10}), args.repeat)
-    print(f"k = 1..10 (the former cap), same run: {t_10:.3f} s wall, {c_10:.3f} s CPU")
+    print(f"k = 1..10, same run: {t_10:.3f} s wall, {c_10:.3f} s CPU")
     _, t_k1, c_k1 = best_of(lambda: vehicle_regions(veh, **{**kw, "k_max": 1}, axial=False),
                             args.repeat)
     print(f"k = 1 alone (bending, gimbal gain 0.5): {t_k1:.3f} s wall, {c_k1:.3f} s CPU")
@@ -190,12 +161,8 @@ def main() -> None:
               f"{t_u / t_f:.2f}; {len(fast.regions)} region(s), same as unfiltered: {same}")
     if args.cost:
         cost_check(args.cost_modes)
-    if args.leftovers:
-        leftovers(args.repeat)
-    if args.run:
-        cli_runs()
-    if args.damped_counts:
-        damped_counts(args.repeat)
+    if args.limits:
+        limits(args.repeat)
 
 
 def _case(text: str):
@@ -203,8 +170,7 @@ def _case(text: str):
 
 
 def cost_check(modes) -> None:
-    """Estimate / measured CPU time of single harmonics' searches (item 4 of the docstring)."""
-    opts = _floquet_options(1e-9, 0.12, None, floquet.DAMPING_MARGIN)
+    """Up-front estimate / measured CPU time of single harmonics' searches (item 4)."""
     memo = vehicle_from_case(flexbooster.default_case())
     cases = [(f"default vehicle, k = 3, {n} modes, undamped", memo, 3, n, 0.0) for n in modes]
     cases += [("README example, k = 2, 20 modes, zeta = 0.01",
@@ -212,168 +178,31 @@ def cost_check(modes) -> None:
               ("free-free default vehicle, k = 1, 20 modes, zeta = 0.01",
                vehicle_from_case(_case(default_case_text() + FREE_ENDS)), 1, 20, 0.01)]
     for name, veh, k, n, zeta in cases:  # a handful of harmonics
-        h = (bending_harmonic(veh, F0=F0, n_modes=n, damping_ratio=zeta, gimbal_gain=0.5)
-             if k == 1 else harmonic_system(veh, k, F0=F0, n_modes=n, damping_ratio=zeta))
-        M, C, A, B = h.matrices(GAMMA)
-        work = floquet.search_work(M, C if zeta > 0 else None, A, B, LO, HI, **opts)
-        (rows, *_), _, cpu = best_of(lambda h=h: _harmonic_regions(h, GAMMA, LO, HI, opts), 1)
-        est = harmonic_search_seconds(work)
-        up = search_seconds(A.shape[0], LO, HI, damped=zeta > 0)
-        print(f"cost model, {name}: measured {cpu:.2f} s CPU ({len(rows)} regions, "
-              f"{work.n_candidates} candidates); per harmonic {est:.2f} s (ratio "
-              f"{est / cpu:.2f}); up front {up:.2f} s (ratio {up / cpu:.2f})")
+        kw = dict(F0=F0, gamma=GAMMA, omega_min=LO, omega_max=HI, k_min=k, k_max=k,
+                  n_modes=n, damping_ratio=zeta, gimbal_gain=0.5, axial=False)
+        found, _, cpu = best_of(lambda kw=kw, veh=veh: vehicle_regions(veh, **kw), 1)
+        up = search_seconds(found.harmonics[0].omega_loaded.size, LO, HI, damped=zeta > 0)
+        print(f"cost model, {name}: measured {cpu:.2f} s CPU ({len(found.regions)} regions); "
+              f"up front {up:.2f} s (ratio {up / cpu:.2f})")
 
 
-def _previous_stage(case):
-    """The stage before vk2 (same numerics otherwise): the map, then the chart's curves by a
-    second full map with boundaries=True up to the chart's gamma; the damped seeds refined to
-    rtol (seeds=False); no budget."""
-    from flexbooster.analysis import _chart_gamma
-    from flexbooster.memo import charts
-    from flexbooster.vehicle_case import VehicleTable
-
-    table = case.vehicle if case.vehicle is not None else VehicleTable()
-    t = case.thrust
-    settings = dict(F0=case.F0, omega_min=t.omega_min, omega_max=t.omega_max, k_min=1,
-                    k_max=table.k_max, n_modes=table.n_modes,
-                    damping_ratio=table.damping_ratio, gimbal_gain=t.K)
-    real = floquet_regions._monodromy_search
-
-    def no_seeds(*a, seeds=False, **k):
-        return real(*a, seeds=False, **k)
-
-    floquet_regions._monodromy_search = no_seeds
-    try:
-        veh = vehicle_from_case(case)
-        found = vehicle_regions(veh, gamma=t.gamma, **settings)
-        top = _chart_gamma(found)
-        if top > 0.0 and (top == t.gamma and found.regions or top > t.gamma and
-                          vehicle_regions(veh, gamma=top, **settings).regions):
-            curved = vehicle_regions(veh, gamma=t.gamma, boundaries=True, gamma_max=top,
-                                     n_gamma=charts.VEHICLE_CHART_LEVELS, **settings)
-            found = dataclasses.replace(found, curves=curved.curves)
-        return found
-    finally:
-        floquet_regions._monodromy_search = real
-
-
-def _same_regions(a, b) -> bool:
-    key = [(r.k, r.kind, r.order, tuple(m.index for m in r.modes)) for r in a.regions]
-    if key != [(r.k, r.kind, r.order, tuple(m.index for m in r.modes)) for r in b.regions]:
-        return False
-    return all(abs(x.omega_lo - y.omega_lo) <= 1e-6 * y.omega_center
-               and abs(x.omega_hi - y.omega_hi) <= 1e-6 * y.omega_center
-               for x, y in zip(a.regions, b.regions, strict=True))
-
-
-def leftovers(repeat: int) -> None:
-    """Item 5 of the docstring: the stage, now and before, k = 1..10 and 1..20."""
-    cases = {"default case": default_case_text(),
-             "README [vehicle] example": default_case_text() + README_VEHICLE,
-             "default vehicle, free ends": default_case_text() + FREE_ENDS}
-    for name, text in cases.items():  # three cases
-        for k_max in (10, 20):
-            # no budget (max_seconds 1e9): the work itself; the vehicle table's k_max
-            body = ("max_seconds = 1e9\n" + text).replace("k_max = 20", f"k_max = {k_max}")
-            if "k_max =" not in body.split("[vehicle]")[-1]:
-                body += ("" if "[vehicle]" in body else "\n[vehicle]\n") + f"k_max = {k_max}\n"
-            case = _case(body)
-            now, t_now, c_now = best_of(
-                lambda case=case: analyze_vehicle_regions(case, boundaries=True), repeat)
-            old, t_old, c_old = best_of(lambda case=case: _previous_stage(case), 1)
-            print(f"{name}, k = 1..{k_max}: stage {t_now:.2f} s wall / {c_now:.2f} s CPU "
-                  f"(best of {repeat}; {len(now.regions)} regions, {len(now.curves)} curves, "
-                  f"skipped {len(now.skipped)}); previous stage {t_old:.2f} s / {c_old:.2f} s "
-                  f"CPU ({len(old.curves)} curves); CPU ratio {c_old / c_now:.2f}; same "
-                  f"regions: {_same_regions(now, old)}", flush=True)
-
-
-def cli_runs() -> None:
-    """flexbooster run -j 1 of the default case and of the README example (wall, child CPU)."""
-    for name, text in (("default case", default_case_text()),
-                       ("README [vehicle] example", default_case_text() + README_VEHICLE)):
-        with tempfile.TemporaryDirectory() as tmp:
-            path = Path(tmp) / "case.toml"
-            path.write_text(text)
-            before = resource.getrusage(resource.RUSAGE_CHILDREN)
-            t0 = time.perf_counter()
-            subprocess.run([sys.executable, "-m", "flexbooster", "run", str(path), "-q",
-                            "-j", "1", "-o", str(Path(tmp) / "out")], check=True)
-            wall = time.perf_counter() - t0
-            after = resource.getrusage(resource.RUSAGE_CHILDREN)
-            cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-            print(f"flexbooster run -j 1, {name}: {wall:.1f} s wall, {cpu:.1f} s CPU")
-
-
-def _previous_rates(system):
-    """``floquet.multipliers._rates`` of main 308388d (before branch damped1): the damped
-    frame's |G_jk| (1/time, columns of W of unit norm in (q, q')), which ``step_counts`` then
-    divides by max(w_j, Omega / 2): a dimensionless "rate", ~(2 omega)^(1/4) fewer steps."""
-    if not system.damped and system.Bt is not None:
-        return np.abs(np.sqrt(system.mu)), np.abs(system.Bt)
-    n = system.n
-    L0 = np.block([[np.zeros((n, n)), np.eye(n)], [-system.K0, -system.Kc]])
-    lam, W = np.linalg.eig(L0)
-    Nmat = np.block([[np.zeros((n, n)), np.zeros((n, n))], [-system.Kb, np.zeros((n, n))]])
-    if np.linalg.cond(W) < 1e8:
-        G = np.abs(np.linalg.solve(W, Nmat @ W))
-    else:
-        G = np.full((2 * n, 2 * n), np.max(np.abs(Nmat)))
-    return np.abs(lam), G
-
-
-def _with_previous_counts(fn):
-    """fn() with main's damped step counts (:func:`_previous_rates` patched in)."""
-    from flexbooster.floquet import multipliers
-
-    real = multipliers._rates
-    multipliers._rates = _previous_rates
-    try:
-        return fn()
-    finally:
-        multipliers._rates = real
-
-
-def _moved(now, old) -> str:
-    """How far the regions moved: same keys, largest relative change of edges and growth."""
-    key = [(r.k, r.kind, r.order, tuple(m.index for m in r.modes)) for r in now.regions]
-    if key != [(r.k, r.kind, r.order, tuple(m.index for m in r.modes)) for r in old.regions]:
-        return f"regions differ: {len(now.regions)} now, {len(old.regions)} before"
-    if not now.regions:
-        return "same (no region)"
-    edge = max(max(abs(x.omega_lo / y.omega_lo - 1), abs(x.omega_hi / y.omega_hi - 1))
-               for x, y in zip(now.regions, old.regions, strict=True))
-    grow = max(abs(x.growth_rate_max / y.growth_rate_max - 1)
-               for x, y in zip(now.regions, old.regions, strict=True))
-    gcr = max(abs(x.critical_gamma - y.critical_gamma) / max(y.critical_gamma, 1e-300)
-              for x, y in zip(now.regions, old.regions, strict=True))
-    return (f"same {len(key)} regions; edges moved <= {edge:.1e}, growth rates <= {grow:.1e}, "
-            f"critical gamma <= {gcr:.1e} relative")
-
-
-def damped_counts(repeat: int) -> None:
-    """Item 6 of the docstring: the stage and the hard case, now and with main's counts."""
-    cases = {"default case": default_case_text(),
-             "README [vehicle] example": default_case_text() + README_VEHICLE,
-             "default vehicle, free ends": default_case_text() + FREE_ENDS}
-    for name, text in cases.items():  # three cases
-        case = _case("max_seconds = 1e9\n" + text)  # no budget: the work itself
-        now, t_now, c_now = best_of(
-            lambda case=case: analyze_vehicle_regions(case, boundaries=True), repeat)
-        old, t_old, c_old = best_of(lambda case=case: _with_previous_counts(
-            lambda: analyze_vehicle_regions(case, boundaries=True)), repeat)
-        print(f"{name}, k = 1..20, stage: {t_now:.2f} s wall / {c_now:.2f} s CPU; main's "
-              f"damped counts {t_old:.2f} s / {c_old:.2f} s CPU; CPU ratio now / main "
-              f"{c_now / c_old:.2f}; {_moved(now, old)}", flush=True)
-    veh = vehicle_from_case(flexbooster.default_case())
-    hk = dict(F0=F0, gamma=0.5, omega_min=10.0, omega_max=300.0, k_min=3, k_max=3,
-              n_modes=10, damping_ratio=0.001, axial=False)
-    now, t_now, c_now = best_of(lambda: vehicle_regions(veh, **hk), repeat)
-    old, t_old, c_old = best_of(lambda: _with_previous_counts(
-        lambda: vehicle_regions(veh, **hk)), repeat)
-    print(f"hard case (k = 3, 10 modes, gamma = 0.5, zeta = 0.001): {t_now:.2f} s wall / "
-          f"{c_now:.2f} s CPU; main's damped counts {t_old:.2f} s / {c_old:.2f} s CPU; CPU "
-          f"ratio now / main {c_now / c_old:.2f}; {_moved(now, old)}", flush=True)
+def limits(repeat: int) -> None:
+    """Item 5: the README example, k = 2, 8 modes, undamped, Omega 1..2000 rad/s."""
+    veh = vehicle_from_case(_case(default_case_text() + README_VEHICLE))
+    kw = dict(F0=F0, gamma=GAMMA, omega_min=1.0, omega_max=HI, k_min=2, k_max=2, n_modes=8,
+              damping_ratio=0.0, axial=False)
+    found, t_map, c_map = best_of(lambda: vehicle_regions(veh, **kw), repeat)
+    M, _, A, B = found.harmonics[0].matrices(GAMMA)
+    work = floquet.search_work(M, None, A, B, 1.0, HI)
+    w = found.harmonics[0].omega_loaded
+    i, k = np.triu_indices(w.size, 1)
+    base = np.concatenate([2 * w, w[i] + w[k], w[k] - w[i]])
+    every = int(np.sum(np.floor(base / 0.5) - np.maximum(1, np.ceil(base / (2 * HI))) + 1))
+    print(f"README example k = 2, 8 modes, undamped, Omega 1..{HI:g} rad/s: {every} centres "
+          f"of every order in [Omega_min / 2, 2 Omega_max], {work.n_candidates} examined by "
+          f"the monodromy and {work.n_narrow} by harmonic balance; map {t_map:.2f} s wall, "
+          f"{c_map:.2f} s CPU (best of {repeat}), {len(found.regions)} regions, "
+          f"{len(found.gaps)} gaps")
 
 
 if __name__ == "__main__":

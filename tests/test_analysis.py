@@ -200,24 +200,24 @@ def test_oversized_stability_table_becomes_a_warning(case_dict, monkeypatch):
     assert codes == ["stability-skipped"]
 
 
-def test_harmonics_left_out_are_one_warning_per_kind():
-    """A case over its budget can leave out dozens of harmonics: one warning per (code,
-    field) names them all as ranges and quotes the first reason; a single one stays as it
-    is (analysis._merged_warnings)."""
-    from flexbooster.analysis import _merged_warnings
-    from flexbooster.errors import AnalysisWarning
+def test_harmonics_left_out_are_one_warning_per_limit():
+    """A low omega_min can leave out dozens of harmonics: one warning per limit names them all
+    as ranges and quotes the first reason; a single one stays as it is (the reference: the
+    gaps' own k and reasons)."""
+    from flexbooster.analysis import _gap_warnings
+    from flexbooster.bands import SearchGap
 
-    def budget(k):
-        return AnalysisWarning("vehicle-regions-budget", "max_seconds",
-                               f"max_seconds = 1: harmonic k = {k} not searched, estimated at 2 s")
+    def steps(k):
+        return SearchGap("vehicle", f"harmonic k = {k} not searched: past max_steps",
+                         "max_steps", k=k)
 
-    limit = AnalysisWarning("vehicle-regions-skipped", "thrust.omega_min",
-                            "thrust.omega_min = 1: harmonic k = 19 not searched, max_steps")
-    merged = _merged_warnings([budget(k) for k in (2, 3, 4, 7, 9, 10)] + [limit])
-    assert merged[1] == limit
-    assert (merged[0].code, merged[0].field) == ("vehicle-regions-budget", "max_seconds")
+    cand = SearchGap("vehicle", "harmonic k = 19 not searched: past max_candidates",
+                     "max_candidates", k=19)
+    merged = _gap_warnings([steps(k) for k in (2, 3, 4, 7, 9, 10)] + [cand])
+    assert [(w.code, w.field) for w in merged] == [("vehicle-regions-skipped",
+                                                     "thrust.omega_min")] * 2
     assert merged[0].message == (
-        "6 harmonics left out (k = 2-4, 7, 9-10); the first, max_seconds = 1: harmonic k = 2 "
-        "not searched, estimated at 2 s; each one's reason is in vehicle_regions.skipped of "
-        "results.json")
-    assert _merged_warnings([budget(5)]) == [budget(5)]
+        "6 harmonics left out (k = 2-4, 7, 9-10); the first, harmonic k = 2 not searched: "
+        "past max_steps; each one's reason is in vehicle_regions.gaps of results.json")
+    assert merged[1].message == cand.reason
+    assert [w.message for w in _gap_warnings([steps(5)])] == [steps(5).reason]

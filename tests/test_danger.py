@@ -212,7 +212,7 @@ def test_default_case_top_band_is_the_beam_action_maximum(default_results):
 def test_vehicle_region_adapter_describes_the_region():
     # flexbooster.vehicle.VehicleRegion (issue 15): harmonic k, kind, order j and the loaded
     # modes' type and meridian order in the words; the fields copied exactly
-    from flexbooster.vehicle.regions import RegionMode, VehicleRegion
+    from flexbooster.vehicle import RegionMode, VehicleRegion
 
     modes = (RegionMode(k=2, index=0, order=1, type="radial", omega_loaded=50.0, share=0.9),
              RegionMode(k=2, index=1, order=2, type="axial", omega_loaded=70.0, share=0.8))

@@ -750,8 +750,8 @@ def test_step_count_capped_as_omega_goes_to_zero():
     assert steps[1] > 5 * steps[0] and steps[2] > 5 * steps[1]  # grows like 1 / Omega
     with pytest.raises(ValueError, match="max_steps"):
         monodromy(ONE, None, ONE, [[-0.2]], [1e-6])
-    with pytest.raises(ValueError, match="max_candidates"):
-        instability_regions(*mathieu(0.1), 1e-7, 3.0)
+    with pytest.raises(ValueError, match="max_candidates"):  # orders j = 1..~14 examined
+        instability_regions(*mathieu(0.1), 1e-7, 3.0, max_candidates=5)
 
 
 @pytest.mark.parametrize("args,name", [

@@ -39,6 +39,7 @@ from flexbooster.analysis import (
     analyze_vehicle_regions,
     memo_roots_in_regions,
 )
+from flexbooster.bands import SearchGap
 from flexbooster.case import default_case_text, load_case
 from flexbooster.cli import main
 from flexbooster.errors import CaseError
@@ -48,6 +49,7 @@ from flexbooster.model import vehicle_from_case
 from flexbooster.present.io import dumps_finite
 from flexbooster.present.vehicle import VEHICLE_REGION_CSV_COLUMNS, vehicle_region_columns
 from flexbooster.results import MemoRootsInRegions
+from flexbooster.shell_of_revolution import BucklingError
 from flexbooster.vehicle import (
     RegionCurve,
     RegionMode,
@@ -231,10 +233,13 @@ def test_region_fields_and_defaults():
 # --------------------------------------------------------------------------- settings
 
 
+CHART_GAP = SearchGap(stage="vehicle", reason="harmonic k = 3 not traced for the chart: ...",
+                      limit="max_steps", k=3)
+
+
 class _Recorder:
     """Stands in for vehicle_regions and region_curves: records the calls, returns empty
-    regions (a running estimate of 1.5 s) and, for the curves, one curve and one skipped
-    harmonic."""
+    regions and, for the curves, one curve and one gap."""
 
     def __init__(self):
         self.calls = []
@@ -242,21 +247,21 @@ class _Recorder:
 
     def __call__(self, vehicle, **kw):
         self.calls.append(kw)
-        return dataclasses.replace(_regions(), gamma=kw["gamma"], estimated_seconds=1.5)
+        return dataclasses.replace(_regions(), gamma=kw["gamma"])
 
     def curves(self, found, **kw):
         self.curve_calls.append((found, kw))
         curve = RegionCurve(k=2, kind="simple", order=1, modes=(0,), gamma=np.array([0.1]),
                             omega_lo=np.array([10.0]), omega_hi=np.array([11.0]))
-        return (curve,), ("thrust.omega_min = 1: harmonic k = 3 not traced for the chart",)
+        return (curve,), (CHART_GAP,)
 
 
 def test_stage_passes_the_case_settings_and_defaults(monkeypatch):
     """Without [vehicle]: damping 0.01, 20 modes, k = 1..20 (the defaults, vehicle.k_max
     of the memo vehicle), the case's F0, gamma, Omega range and gimbal gain K (for k = 1) in
     one search, no budget; the chart's curves from the stored map (vehicle.region_curves) up
-    to the chart's gamma with the chart's levels; their curves and skipped harmonics reach
-    the result; a [vehicle] k_max is passed as it is."""
+    to the chart's gamma with the chart's levels; their curves and gaps reach the result; a
+    [vehicle] k_max is passed as it is."""
     import flexbooster.analysis as analysis
 
     rec = _Recorder()
@@ -274,7 +279,7 @@ def test_stage_passes_the_case_settings_and_defaults(monkeypatch):
     assert mapped.gamma == 0.05
     assert kw == {"gamma_max": VEHICLE_CHART_GAMMA_MAX, "n_gamma": VEHICLE_CHART_LEVELS}
     assert [c.k for c in found.curves] == [2] and found.chart_gamma_max == VEHICLE_CHART_GAMMA_MAX
-    assert found.skipped == ("thrust.omega_min = 1: harmonic k = 3 not traced for the chart",)
+    assert found.gaps == (CHART_GAP,)
     rec.calls.clear()
     rec.curve_calls.clear()
     analyze_vehicle_regions(load_case(small_case_data(k_max=4, n_modes=5, damping_ratio=0.2)),
@@ -335,7 +340,8 @@ def test_stage_warns_instead_of_failing(monkeypatch):
     assert w.field == "vehicle.k_max"
 
     def buckles(vehicle, **kw):
-        raise ValueError("F0 = 1: the steady thrust buckles harmonic k = 2 (load factor ...)")
+        raise BucklingError("F0 = 1: the steady thrust buckles harmonic k = 2 (load factor "
+                            "0.5 ...)", 2, 1.0, 0.5)
 
     monkeypatch.setattr(analysis, "vehicle_regions", buckles)
     res = analyze(load_case(small_case_data()), beam_action=False, figures=False)
@@ -569,3 +575,47 @@ def test_pipeline_k1_rows_are_bending_regions(results):
     assert k1 == direct and len(k1) > 0
     assert vehicle_region_columns(vr)["k"].count(1) == len(k1)
     assert vr.to_dict()["gimbal_gain"] == t.K
+
+
+_FUZZ_CANDIDATES = {
+    "name": "fuzz",
+    "booster": {"cylinder1": {"radius": 28.44842919443165, "half_length": 1.3954288775018648},
+                "cylinder2": {"radius": 47.13013587898876, "half_length": 3.1557674301688827},
+                "thickness": 0.048771811768155295, "E": 20447356474.064217,
+                "nu": 0.32332789317528776, "rho": 226.8960928016897},
+    "thrust": {"gamma": 0.9439478472914494, "K": 3.5018139758102595,
+               "omega_min": 3.7423594778010467, "omega_max": 5.617245733771596,
+               "n_omega": 11, "F0": 146800443.25106373},
+    "truncation": {"M1": 1, "N1": 1, "M2": 1, "N2": 1, "N": 2, "S": 0, "R": 1},
+}
+
+
+def test_a_case_past_a_size_limit_says_so():
+    """The memo vehicle of the vehicle fuzz (two wide short cylinders, 20 modes up to 6,350
+    rad/s; gamma = 0.94, Omega = 3.7..5.6 rad/s): couplings above the frequencies keep every
+    order, some 258,000-322,000 candidates to examine per harmonic, past the toolkit's
+    max_candidates (200,000).  Each harmonic is a SearchGap (stage vehicle, its k, the limit,
+    the Omega range) in the result and in results.json, one merged warning
+    (vehicle-regions-skipped, thrust.omega_min) names all 20, and the verdict is not
+    "stable"."""
+    import types
+
+    import flexbooster.analysis as analysis
+    from flexbooster.present.rows import vehicle_region_verdict
+
+    case = load_case(_FUZZ_CANDIDATES)
+    found, warns = analysis._vehicle_regions_stage(case, boundaries=False)
+    assert found.regions == () and [g.k for g in found.gaps] == list(range(1, 21))
+    t = case.thrust
+    for k, gap in enumerate(found.gaps, start=1):
+        assert (gap.stage, gap.limit) == ("vehicle", "max_candidates")
+        assert (gap.Omega_lo, gap.Omega_hi) == (t.omega_min, t.omega_max)
+        assert gap.reason.startswith(f"harmonic k = {k} not searched: ") and \
+            "candidates" in gap.reason
+    assert found.to_dict()["gaps"] == [g.to_dict() for g in found.gaps]
+    (w,) = warns  # merged: one line for the 20, not 20 warnings burying the others
+    assert (w.code, w.field) == ("vehicle-regions-skipped", "thrust.omega_min")
+    assert w.message.startswith("20 harmonics left out (k = 1-20); the first, ")
+    assert "harmonic k = 1 not searched" in w.message and "\n" not in w.message
+    text, stable = vehicle_region_verdict(types.SimpleNamespace(vehicle_regions=found))
+    assert not stable and text.startswith("unknown")

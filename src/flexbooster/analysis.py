@@ -10,7 +10,6 @@ memo-table roots inside each region; and the warnings under which the analysis g
 from __future__ import annotations
 
 import dataclasses
-import re
 from collections.abc import Callable
 
 import numpy as np
@@ -32,6 +31,7 @@ from .memo.shell import natural_frequencies
 from .memo.stability import ShellModes, StabilityTable, TooManyRootsError, unstable_frequencies
 from .model import model_from_case, vehicle_from_case
 from .results import SCHEMA_VERSION, UNITS, MemoRootsInRegions, Results
+from .shell_of_revolution import BucklingError
 from .shell_of_revolution.survey import VehicleSurvey, has_flat_plate, vehicle_survey
 from .vehicle import VehicleRegions, region_curves, vehicle_regions
 
@@ -362,12 +362,10 @@ def analyze_vehicle(case: Case, *, k_max: int | None = None, f_max: float | None
         try:
             return vehicle_survey(vehicle, k_max=k_max, F0=case.F0, f_max=f_max,
                                   prestress=prestress, views=views, source=source)
-        except ValueError as exc:
-            if "buckling" in str(exc):
-                raise CaseError("thrust.F0", case.F0, "the thrust prestress exceeds a "
-                                f"buckling load of the vehicle ({exc}); use --no-prestress "
-                                "for the unloaded modes") from None
-            raise
+        except BucklingError as exc:
+            raise CaseError("thrust.F0", case.F0, "the thrust prestress exceeds a "
+                            f"buckling load of the vehicle ({exc}); use --no-prestress "
+                            "for the unloaded modes") from None
 
 
 def vehicle_warnings(survey: VehicleSurvey) -> list[AnalysisWarning]:
@@ -399,8 +397,8 @@ def _vehicle_regions_stage(case: Case, *, boundaries: bool
                            ) -> tuple[VehicleRegions | None, list[AnalysisWarning]]:
     """The regions of :func:`analyze_vehicle_regions`, or None and a warning where they cannot
     be computed (k_max < 1, or the steady thrust buckles a harmonic): the run goes on.  The
-    harmonics a limit left out are ``vehicle-regions-skipped`` warnings, merged per field
-    (:func:`_merged_warnings`)."""
+    harmonics left out are warnings, one per kind (:func:`_gap_warnings`):
+    ``vehicle-regions-skipped`` (thrust.omega_min) past the candidate or step limit."""
     from .errors import CaseError
     from .vehicle_case import VehicleTable
 
@@ -419,29 +417,28 @@ def _vehicle_regions_stage(case: Case, *, boundaries: bool
             "vehicle-modes-clipped", "vehicle.n_modes",
             f"vehicle.n_modes = {table.n_modes}: more than the {dofs} modes the vehicle's "
             f"mesh has in a harmonic: {used} modes per harmonic (all of them) are used")]
-        return found, clipped + _merged_warnings([
-            AnalysisWarning("vehicle-regions-skipped", why.split(" = ", 1)[0], why)
-            for why in found.skipped])
+        return found, clipped + _gap_warnings(found.gaps)
     except CaseError as exc:  # the thrust buckles the vehicle: a result, not a bad input
         return None, [AnalysisWarning("vehicle-regions-skipped", exc.field, exc.rule)]
 
 
-def _merged_warnings(warnings: list[AnalysisWarning]) -> list[AnalysisWarning]:
-    """One warning per (code, field) for the harmonics left out of the vehicle regions (a low
-    omega_min can leave out dozens): it names every harmonic (k = 2-9, 12) and quotes the
-    first one's reason; each reason stays in ``VehicleRegions.skipped`` (results.json)."""
-    groups: dict[tuple[str, str], list[AnalysisWarning]] = {}
-    for w in warnings:
-        groups.setdefault((w.code, w.field), []).append(w)
+def _gap_warnings(gaps) -> list[AnalysisWarning]:
+    """One ``vehicle-regions-skipped`` warning per limit for the harmonics a limit left out (a
+    low omega_min can leave out dozens): it names every harmonic (k = 2-9, 12) and quotes the
+    first one's reason; each reason stays in ``VehicleRegions.gaps`` (results.json)."""
+    groups: dict[str, list] = {}
+    for g in gaps:
+        groups.setdefault(g.limit, []).append(g)
     out = []
-    for (code, field), ws in groups.items():
-        ks = [int(m.group(1)) for w in ws if (m := re.search(r"harmonic k = (\d+)", w.message))]
-        if len(ws) == 1 or len(ks) != len(ws):  # one, or not all naming a harmonic: as they are
-            out += ws
+    for group in groups.values():
+        if len(group) == 1 or any(g.k is None for g in group):
+            out += [AnalysisWarning("vehicle-regions-skipped", "thrust.omega_min", g.reason)
+                    for g in group]
             continue
-        out.append(AnalysisWarning(code, field, (
-            f"{len(ws)} harmonics left out (k = {_ranges(sorted(ks))}); the first, "
-            f"{ws[0].message}; each one's reason is in vehicle_regions.skipped of "
+        ks = sorted({int(g.k) for g in group})
+        out.append(AnalysisWarning("vehicle-regions-skipped", "thrust.omega_min", (
+            f"{len(group)} harmonics left out (k = {_ranges(ks)}); the first, "
+            f"{group[0].reason}; each one's reason is in vehicle_regions.gaps of "
             "results.json")))
     return out
 
@@ -529,16 +526,15 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
             found = vehicle_regions(vehicle, gamma=t.gamma, **settings)
             top = _chart_gamma(found)
             if boundaries and top > 0.0:
-                curves, skipped = region_curves(found, gamma_max=top,
-                                                n_gamma=charts.VEHICLE_CHART_LEVELS)
-                found = dataclasses.replace(found, curves=curves,
-                                            skipped=found.skipped + skipped)
+                # the harmonics that can have a region at the chart's top (above the case's
+                # gamma every harmonic is certified: none), in the budget the map left
+                curves, gaps = region_curves(
+                    found, gamma_max=top, n_gamma=charts.VEHICLE_CHART_LEVELS)
+                found = dataclasses.replace(found, curves=curves, gaps=found.gaps + gaps)
             found = dataclasses.replace(found, chart_gamma_max=top if boundaries else None)
-        except ValueError as exc:
-            if "buckles" in str(exc):
-                raise CaseError("thrust.F0", case.F0, "the steady thrust buckles the vehicle "
-                                f"({exc}): no parametric regions") from None
-            raise
+        except BucklingError as exc:
+            raise CaseError("thrust.F0", case.F0, "the steady thrust buckles the vehicle "
+                            f"({exc}): no parametric regions") from None
     return found
 
 

@@ -27,7 +27,7 @@ from typing import Any
 
 import numpy as np
 
-from .checks import nonnegative, positive
+from .checks import count, nonnegative, positive
 from .errors import AnalysisWarning, CaseError
 from .floquet import MATHIEU_SCALE_MAX
 from .memo.beam_action import (
@@ -59,6 +59,7 @@ __all__ = [
     "capped_steps_warning",
     "estimate_vehicle_cost",
     "region_modes",
+    "search_seconds",
     "TONGUE_PART",
     "tongue_search_seconds",
 ]
@@ -422,7 +423,44 @@ def tongue_search_seconds(system: Any, gamma: float, *, omega_min: float, omega_
 # cover it: flexbooster.vehicle.search_seconds.  FE work scales like the DOFs cubed (dense
 # eigensolves), floored at a third (fixed overheads).
 _C_SURVEY = (0.3, 5e-3)
+_C_HARMONIC_BUILD = 0.02
 _REF_DOFS = 263.0
+# One harmonic's region search, up front (no FE solved): k = 3, gamma = 0.05, undamped, Omega
+# 5..2000 rad/s: 4 modes 0.11 s, 8: 0.53 s, 12: 1.43 s, 20: 9.6 s (-> 0.1 + 6e-5 n^4); 20
+# modes over 5..500 rad/s: 8.0 s (-> the log-range factor).  Blind to the frequencies: the
+# README's [vehicle] example (modes up to 4000 rad/s), k = 2, 8 modes: 6.3 s against 0.35 s.
+_SEARCH_FIXED, _SEARCH_PER_N4, _SEARCH_LOG_RANGE = 0.1, 6e-5, float(np.log(400.0))
+# Damped: the undamped seeds, the damped search of those holding a region and the critical
+# gamma of each (measured 2.4x the README example's k = 2 and 3.8x the free-free default
+# vehicle's k = 1 estimate); with the chart's curves: the search and 3 more levels.
+_DAMPED_UPFRONT_FACTOR, _BOUNDARY_SEARCH_FACTOR = 3.0, 4.0
+
+
+def search_seconds(n_modes: int, omega_min: float, omega_max: float, *, damped: bool,
+                   boundaries: bool = False) -> float:
+    """Estimated time (s, one core) of the region search of one harmonic not certified stable.
+
+    (0.1 + 6e-5 n^4) ln(omega_max / omega_min) / ln(400), x 3 damped, x 4 with the chart's
+    curves: good to a factor of about 2 on the memo vehicle, optimistic by up to ~20 on a
+    short stiff vehicle whose frequencies are far above omega_min (calibration: above).
+
+    Parameters
+    ----------
+    n_modes : int
+        Modes n of the harmonic's system, >= 1.
+    omega_min, omega_max : float
+        Omega range (rad/s), 0 < omega_min < omega_max.
+    damped, boundaries : bool
+        Damping > 0; the chart's curves traced as well.
+    """
+    n = count("n_modes", n_modes, 1, 100_000)
+    lo, hi = positive("omega_min", omega_min), positive("omega_max", omega_max)
+    if lo >= hi:
+        raise ValueError(f"omega_min = {omega_min!r}: must be < omega_max = {omega_max!r}")
+    t = (_SEARCH_FIXED + _SEARCH_PER_N4 * float(n) ** 4) * max(
+        np.log(hi / lo) / _SEARCH_LOG_RANGE, 0.05)
+    return float(t * (_DAMPED_UPFRONT_FACTOR if damped else 1.0)
+                 * (_BOUNDARY_SEARCH_FACTOR if boundaries else 1.0))
 
 
 def _dof_factor(vehicle) -> float:
@@ -492,16 +530,14 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
     CostEstimate
         Parts "vehicle modes" (``[vehicle]`` only: one FE eigenproblem per k = 0..k_max) and
         "vehicle regions" (k = 1..k_max: build each harmonic, search those not certified,
-        :func:`flexbooster.vehicle.search_seconds`), with the fields that drive them; no
-        solver is run (the mesh is built to count its DOFs).
+        :func:`search_seconds`), with the fields that drive them; no solver is run (the mesh
+        is built to count its DOFs).
 
     References
     ----------
-    Measured calibration (comments in this module and in flexbooster.vehicle.regions);
-    docs/theory/vehicle-regions.md, section 3d.
+    Measured calibration (comments in this module); docs/theory/vehicle-regions.md, 3d.
     """
     from .model import vehicle_from_case
-    from .vehicle import HARMONIC_BUILD_SECONDS, search_seconds
     from .vehicle_case import VehicleTable
 
     table = case.vehicle if case.vehicle is not None else VehicleTable()
@@ -525,7 +561,7 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
         # k = 1 has the rigid modes too (at least 3 basis modes)
         search = searched * search_seconds(max(n_modes, 3), t.omega_min, t.omega_max,
                                            damped=damped, boundaries=figures)
-        parts["vehicle regions"] = n_k * HARMONIC_BUILD_SECONDS * dofs * max(
+        parts["vehicle regions"] = n_k * _C_HARMONIC_BUILD * dofs * max(
             1.0, n_modes / 20.0) + search
         drivers["vehicle regions"] = ("vehicle.n_modes", "vehicle.damping_ratio",
                                       "vehicle.k_max", "thrust.omega_min", "thrust.omega_max",

@@ -108,7 +108,6 @@ UNITS: dict[str, str] = {
     "vehicle_regions.curves.gamma": "1",
     "vehicle_regions.curves.omega_lo, omega_hi": "rad/s",
     "vehicle_regions.gimbal_gain": "1 (K of the k = 1 harmonic)",
-    "vehicle_regions.estimated_seconds": "s (cost model of the map's builds and searches)",
     "vehicle_regions.memo_roots.Omega": "rad/s",
     "vehicle_regions.memo_roots.rtol": "1 (relative to each region's centre)",
     "danger.operating_range, danger.bands.Omega_lo, Omega_hi": "rad/s",

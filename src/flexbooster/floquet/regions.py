@@ -52,9 +52,10 @@ _KINDS = ("simple", "sum", "difference")
 
 
 class TooManyCandidatesError(ValueError):
-    """The resonance candidates 2 omega_i / j, (omega_i +- omega_k) / j in the Omega range
-    exceed ``max_candidates``: omega_min too small for the frequencies (one line, naming
-    omega_min); a search past a resource limit, not a wrong argument."""
+    """The resonance candidates 2 omega_i / j, (omega_i +- omega_k) / j to examine (in the
+    Omega range, width estimate above round-off) exceed ``max_candidates``: omega_min too
+    small for the frequencies (one line, naming omega_min); a search past a size limit, not a
+    wrong argument."""
 #: Round-off floor of the indicators (s-values are O(1), eigenvalue errors ~ eps ||S||): a
 #: maximum below it is not a region.  Detection limit: relative width ~ 2 sqrt(floor) / (pi j).
 _F_FLOOR = 1e-14
@@ -196,9 +197,11 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
     """Analytic centres in [lo, hi] with their first-order width estimates.
 
     Returns arrays kind (0 simple, 1 sum, 2 difference), i, k, j, centre, est, gap (distance
-    to the nearest other centre of *any* enumerated candidate, kept or not).  With ``rate``
-    (modal decay rates, 1/time) and ``opt.damping_margin``, the orders that damping
-    suppresses (:func:`_damping_caps`) are not enumerated.
+    to the nearest other centre of *any* order j whose centre lies in [lo / 2, 2 hi], kept or
+    not), mono.  With ``rate`` (modal decay rates, 1/time) and ``opt.damping_margin``, the
+    orders that damping suppresses (:func:`_damping_caps`) are not enumerated.  Only the
+    orders whose width estimate can pass the floor are enumerated, in batches of bounded
+    memory; more than ``opt.max_candidates`` kept raises :class:`TooManyCandidatesError`.
     """
     n = w.size
     ii, kk = np.triu_indices(n, 1)
@@ -218,31 +221,70 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
         jmax_all = np.minimum(jmax_all, _damping_caps(w, Bt, base, i0, k0, zrow, zeta, rate,
                                                       opt.damping_margin))
     jmin_all = np.maximum(1, np.ceil(base / (2.0 * hi)).astype(np.int64))
-    counts = np.maximum(0, jmax_all - jmin_all + 1)
+    # enumerated: the orders up to the last whose width estimate can pass the floor below
+    # (est / centre = zeta_i zeta_k zeta^(j-2) >= 1e-2 _NARROW_FLOOR; 3 orders of slack)
+    jhi = np.minimum(jmax_all, _order_cap(zrow[i0] * zrow[k0], zeta, opt.max_order))
+    counts = np.maximum(0, jhi - jmin_all + 1)
+    parts, kept = [], 0
+    for sel in _batches(counts, _ENUMERATION_BATCH) if counts.size else (np.arange(0),):
+        c = _enumerate(sel, counts[sel], jmin_all[sel], base, kind0, i0, k0, w, Bt, zrow,
+                       zeta, lo, hi, opt)
+        kept += c["j"].size
+        if kept > opt.max_candidates:
+            raise TooManyCandidatesError(
+                f"omega_min = {lo!r}: more than max_candidates = {opt.max_candidates} "
+                "resonance candidates to examine (omega_min too small for the frequencies)")
+        parts.append(c)
+    out = {key: np.concatenate([p[key] for p in parts]) for key in parts[0]}
+    out["gap"] = _gaps(out.pop("base"), out["j"], out["centre"], base, jmin_all, jmax_all)
+    return out
+
+
+#: Resonance candidates enumerated at once (:func:`_candidates`).
+_ENUMERATION_BATCH = 1 << 20
+
+
+def _order_cap(p: np.ndarray, zeta: float, max_order: int | None) -> np.ndarray:
+    """Largest order j whose width estimate p zeta^(j-2) Omega_c can reach the narrow floor
+    1e-2 _NARROW_FLOOR Omega_c (3 orders of slack for round-off; at least 2)."""
+    big = np.iinfo(np.int64).max // 4
+    cap = np.full(p.size, big if max_order is None else int(max_order), dtype=np.int64)
+    if 0.0 < zeta < 1.0:
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+            L = np.log(1e-2 * _NARROW_FLOOR / p) / np.log(zeta)
+        L = np.where(p > 0.0, np.minimum(np.nan_to_num(L, nan=0.0), 1e15), 0.0)
+        cap = np.minimum(cap, np.maximum(2, 5 + np.floor(L)).astype(np.int64))
+    elif zeta == 0.0:
+        cap = np.minimum(cap, 2)
+    return cap
+
+
+def _batches(counts: np.ndarray, size: int):
+    """Consecutive index ranges of ``counts`` whose sums are at most ``size`` (or one entry)."""
+    start, csum = 0, np.cumsum(counts)
+    while start < counts.size:
+        before = csum[start - 1] if start else 0
+        stop = max(start + 1, int(np.searchsorted(csum, before + size, side="right")))
+        yield np.arange(start, min(stop, counts.size))
+        start = stop
+
+
+def _enumerate(sel, counts, jmin, base, kind0, i0, k0, w, Bt, zrow, zeta, lo, hi,
+               opt) -> dict:
+    """The candidates of the bases ``sel``, orders jmin.. (``counts`` each), that are kept."""
     total = int(np.sum(counts))
-    if total > opt.max_candidates:
-        raise TooManyCandidatesError(
-            f"omega_min = {lo!r}: {total} resonance candidates, more than max_candidates = "
-            f"{opt.max_candidates} (omega_min too small for the frequencies)")
-    rep = np.repeat(np.arange(base.size), counts)
+    rep = np.repeat(sel, counts)
     offs = np.arange(total) - np.repeat(np.cumsum(counts) - counts, counts)
-    j = jmin_all[rep] + offs
+    j = np.repeat(jmin, counts) + offs
     centre = base[rep] / j
     kind, i, k = kind0[rep], i0[rep], k0[rep]
-    # gaps to the nearest other centre (all candidates)
-    order = np.argsort(centre, kind="stable")
-    cs = centre[order]
-    d = np.diff(cs)
-    left = np.concatenate([[np.inf], d])
-    right = np.concatenate([d, [np.inf]])
-    gap = np.empty(total)
-    gap[order] = np.minimum(left, right)
     # width estimates: first order (Bolotin sec. 3 for simple, Hsu 1963 for combinations);
     # order j: a product of j couplings along a path i -> ... -> k, bounded by
     # Omega_c zeta_i zeta_k zeta^(j-2) with zeta_ab = |Bt_ab| / (w~_a w~_b), w~ = max(w, lo/2)
     # (small denominators through slow modes are kept), zeta_i = max_b zeta_ib
     jf = j.astype(float)
-    est = centre * zrow[i] * zrow[k] * zeta ** np.maximum(jf - 2.0, 0.0)
+    with np.errstate(over="ignore"):  # couplings above the frequencies: est = inf, kept
+        est = centre * zrow[i] * zrow[k] * zeta ** np.maximum(jf - 2.0, 0.0)
     first = np.where(kind == 0, np.abs(Bt[i, i]) / w[i],
                      np.sqrt(np.abs(Bt[i, k] * Bt[k, i]) / (w[i] * w[k])))
     est = np.where(j == 1, np.maximum(first, est), est)
@@ -251,13 +293,33 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
     # the harmonic-balance pair (:mod:`.narrow`, resolution linear in the width) are kept too
     floor = np.maximum(opt.rtol, 2.0 * np.sqrt(_F_FLOOR) / (np.pi * jf))
     keep = (centre >= lo * (1.0 - 1e-9)) & (centre <= hi * (1.0 + 1e-9))
-    keep |= (centre + 2.0 * est >= lo) & (centre - 2.0 * est <= hi)
+    with np.errstate(over="ignore", invalid="ignore"):
+        keep |= (centre + 2.0 * est >= lo) & (centre - 2.0 * est <= hi)
     keep &= est >= 1e-2 * _NARROW_FLOOR * centre
     if opt.max_order is not None:
         keep &= j <= opt.max_order
     mono = est >= 1e-2 * floor * centre
     return {"kind": kind[keep], "i": i[keep], "k": k[keep], "j": j[keep],
-            "centre": centre[keep], "est": est[keep], "gap": gap[keep], "mono": mono[keep]}
+            "centre": centre[keep], "est": est[keep], "mono": mono[keep], "base": rep[keep]}
+
+
+def _gaps(own: np.ndarray, j: np.ndarray, centre: np.ndarray, base: np.ndarray,
+          jmin: np.ndarray, jmax: np.ndarray) -> np.ndarray:
+    """Distance from each centre (base ``own``, order j) to the nearest other centre
+    base[m] / j' of every base m and order jmin[m] <= j' <= jmax[m]: the orders nearest to
+    base[m] / centre (b / j' is monotone in j'), in batches of bounded memory."""
+    gap = np.full(centre.size, np.inf)
+    empty = jmax < jmin
+    step = max(1, _ENUMERATION_BATCH // max(4 * base.size, 1))
+    for s in range(0, centre.size, step):
+        c, o, jo = centre[s:s + step, None], own[s:s + step, None], j[s:s + step, None]
+        jf = np.floor(np.minimum(base[None, :] / c, 2.0**62)).astype(np.int64)
+        for d in (-1, 0, 1, 2):
+            jj = np.clip(jf + d, jmin[None, :], np.maximum(jmax, jmin)[None, :])
+            dist = np.abs(c - base[None, :] / jj)
+            dist[empty[None, :] | ((np.arange(base.size)[None, :] == o) & (jj == jo))] = np.inf
+            gap[s:s + step] = np.minimum(gap[s:s + step], np.min(dist, axis=1))
+    return gap
 
 
 # --------------------------------------------------------------------------------------------
@@ -459,6 +521,10 @@ def _modal_decay_rates(system: LinearPeriodicSystem) -> np.ndarray | None:
     return 0.5 * np.real(np.diag(Ct))
 
 
+#: Work arrays of the monodromy candidates evaluated at once (bytes; :func:`_undamped_search`).
+_SEARCH_BATCH_BYTES = 1 << 28
+
+
 def _undamped_search(system, w, cand, lo, hi, opt, narrow: bool = True,
                      seeds: bool = False) -> list[dict]:
     """Regions of the undamped system for the candidate table; list of plain dicts.
@@ -468,8 +534,15 @@ def _undamped_search(system, w, cand, lo, hi, opt, narrow: bool = True,
     if cand["centre"].size == 0:
         return []
     mono = cand["mono"]
-    regs, fmax = _monodromy_search(system, w, {key: v[mono] for key, v in cand.items()}, lo,
-                                   hi, opt, seeds=seeds)
+    sub = {key: v[mono] for key, v in cand.items()}
+    regs, fmax = [], [np.zeros(0)]
+    step = max(1, _SEARCH_BATCH_BYTES // (256 * system.n ** 2))  # 4 complex 2n x 2n each
+    for s in range(0, sub["centre"].size, step):  # batches: each candidate on its own
+        r, f = _monodromy_search(system, w, {key: v[s:s + step] for key, v in sub.items()},
+                                 lo, hi, opt, seeds=seeds)
+        regs += r
+        fmax.append(f)
+    fmax = np.concatenate(fmax)
     if not narrow or seeds:
         return regs
     # the candidates below the monodromy floor, and those whose indicator maximum stayed
@@ -755,7 +828,7 @@ def instability_regions(M, C, A, B, omega_min: float, omega_max: float, *,
     max_order : int, optional
         Largest order j (default: every order whose estimated width exceeds 1e-3 rtol Omega_c).
     max_candidates : int
-        Cap on the resonance centres (:class:`TooManyCandidatesError` beyond it).
+        Cap on the resonance candidates examined (TooManyCandidatesError beyond it).
     damping_margin : float or None
         With damping, >= 1: no search where :func:`flexbooster.floquet.stability_certificate`
         holds, and a candidate only where margin x its first-order growth bound exceeds the decay

@@ -297,10 +297,9 @@ def vehicle_region_verdict(results: Results) -> tuple[str, bool]:
         return "not computed", True
     where = (f"Omega in [{vr.omega_min:.6g}, {vr.omega_max:.6g}] rad/s at gamma = "
              f"{vr.gamma:g}, damping ratio {vr.damping_ratio:g}")
-    skipped = getattr(vr, "skipped", ())  # harmonics a limit left out
-    if not vr.regions and skipped:
-        return (f"unknown: {len(skipped)} harmonic(s) not searched within max_seconds; no "
-                f"region in the others at {where}"), False
+    if not vr.regions and vr.gaps:
+        return (f"unknown: {len(vr.gaps)} harmonic(s) not searched or traced; no region in "
+                f"the others at {where}"), False
     if not vr.regions:
         return f"stable: no parametric instability region reaches {where}", True
     worst = max(vr.regions, key=lambda r: r.growth_rate_max)

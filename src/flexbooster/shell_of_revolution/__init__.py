@@ -33,6 +33,7 @@ from .geometry import (
 from .modes import (
     BAND_FACTOR,
     MODE_TYPES,
+    BucklingError,
     BucklingLoad,
     ModalSystem,
     VehicleModes,
@@ -49,6 +50,7 @@ __all__ = [
     "JUNCTIONS",
     "MODE_TYPES",
     "THEORIES",
+    "BucklingError",
     "BucklingLoad",
     "Cone",
     "Cylinder",

@@ -52,7 +52,21 @@ __all__ = [
     "modal_system",
     "labelled_modal_system",
     "buckling_load",
+    "BucklingError",
 ]
+
+class BucklingError(ValueError):
+    """The thrust prestress buckles harmonic ``k`` (a loaded omega^2 <= 0): a result of the
+    case, not a bad argument.  ``F0`` (N) is the thrust; ``load_factor`` the lowest lambda of
+    :func:`buckling_load` (<= 1), None where it was not computed."""
+
+    def __init__(self, message: str, k: int, F0: float, load_factor: float | None = None):
+        super().__init__(message)
+        self.k, self.F0, self.load_factor = k, F0, load_factor
+
+    def __reduce__(self):
+        return type(self), (str(self), self.k, self.F0, self.load_factor)
+
 
 #: Mode type names (see the module docstring).
 MODE_TYPES = ("axial", "torsional", "breathing", "bending", "radial")
@@ -559,8 +573,9 @@ def _modes_on_mesh(vehicle: Vehicle, mesh: Mesh, *, k_min: int, k_max: int,
 
 def _check_positive(vals: np.ndarray, F0: float, k: int) -> None:
     if np.any(vals <= 0):
-        raise ValueError(f"prestress_F0 = {F0!r}: k = {k} has a non-positive omega^2 "
-                         f"({vals.min():.4g} 1/s^2): the prestress exceeds a buckling load")
+        raise BucklingError(f"prestress_F0 = {F0!r}: k = {k} has a non-positive omega^2 "
+                            f"({vals.min():.4g} 1/s^2): the prestress exceeds a buckling load",
+                            k, F0)
 
 
 def _check_finite(*arrays: np.ndarray) -> None:

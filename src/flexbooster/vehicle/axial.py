@@ -29,8 +29,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..checks import count, nonnegative, positive
-from ..shell_of_revolution import DEFAULT_ORDER, Vehicle, buckling_load, labelled_modal_system
+from ..checks import count, positive
+from ..shell_of_revolution import DEFAULT_ORDER, Vehicle
+from .harmonic import in_unit_interval, loaded_modes
 
 __all__ = ["AxialResonance", "ForcedAxial", "forced_axial"]
 
@@ -58,11 +59,7 @@ class AxialResonance:
         phi_n^2 / omega_n^2: static modal flexibility at the aft edge (m/N).
     amplitude : float or None
         Aft-edge axial amplitude per unit gamma F0 at Omega = omega_n, phi_n^2 /
-        (2 zeta omega_n^2) (m/N); None without damping (unbounded).
-
-    References
-    ----------
-    Meirovitch (1986), sec. 7.4; Tech Memo 104, eq. 7.3-5.
+        (2 zeta omega_n^2) (m/N; Meirovitch 1986, sec. 7.4); None without damping.
     """
 
     index: int
@@ -111,23 +108,9 @@ class ForcedAxial:
     omega_max: float
 
     def receptance(self, Omega) -> np.ndarray:
-        """Aft-edge axial receptance u_x / (gamma F0) of the elastic modes.
-
-        Parameters
-        ----------
-        Omega : array_like
-            Pulsation frequencies (rad/s), > 0.
-
-        Returns
-        -------
-        ndarray, complex
-            sum_n phi_n^2 / (omega_n^2 - Omega^2 + 2 i zeta omega_n Omega) (m/N); the
-            displacement is Re(receptance e^{i Omega t}) times -gamma F0.
-
-        References
-        ----------
-        Meirovitch (1986), sec. 7.4.
-        """
+        """Aft-edge axial receptance u_x / (gamma F0) of the elastic modes at Omega (rad/s,
+        > 0): sum_n phi_n^2 / (omega_n^2 - Omega^2 + 2 i zeta omega_n Omega) (m/N, complex;
+        the displacement is Re(receptance e^{i Omega t}) times -gamma F0; Meirovitch 7.4)."""
         om = np.atleast_1d(np.asarray(Omega, dtype=float))
         if not np.all(np.isfinite(om)) or np.any(om <= 0.0):
             raise ValueError(f"Omega = {Omega!r}: must be finite and > 0")
@@ -154,35 +137,21 @@ def forced_axial(
 ) -> ForcedAxial:
     """Forced resonances of the k = 0 modes under T(t) = F0 (1 - gamma cos Omega t).
 
+    Raises :class:`~flexbooster.shell_of_revolution.BucklingError` when F0 buckles k = 0.
+    Meirovitch (1986), sec. 7.4; Tech Memo 104, sec. 7.3 (family 3).
+
     Parameters
     ----------
     vehicle : Vehicle
-        The vehicle (:class:`flexbooster.shell_of_revolution.Vehicle`).
+        The vehicle.
     F0 : float
         Steady thrust (N), > 0 (it prestresses the modes).
     omega_min, omega_max : float
         Omega range (rad/s), 0 < omega_min < omega_max.
     n_modes : int
-        Unloaded k = 0 modes in the basis (dimensionless), 1..2000.
-    damping_ratio : float
-        Modal damping ratio of the loaded modes (dimensionless), [0, 1).
-    supported_forward_end : bool
-        Uniform compression F0 reacted at the nose instead of inertia relief.
-    elements_per_segment, order
-        Mesh (see :func:`flexbooster.shell_of_revolution.mesh_vehicle`).
-
-    Returns
-    -------
-    ForcedAxial
-
-    Raises
-    ------
-    ValueError
-        Bad input (naming it), or the steady thrust buckles k = 0.
-
-    References
-    ----------
-    Meirovitch (1986), sec. 7.4; Tech Memo 104, sec. 7.3 (family 3).
+        Unloaded k = 0 modes in the basis, 1..2000.
+    damping_ratio, supported_forward_end, elements_per_segment, order
+        As :func:`.regions.harmonic_system`.
     """
     if not isinstance(vehicle, Vehicle):
         raise ValueError(f"vehicle = {vehicle!r}: must be a Vehicle")
@@ -191,18 +160,10 @@ def forced_axial(
     if lo >= hi:
         raise ValueError(f"omega_min = {omega_min!r}: must be < omega_max = {omega_max!r}")
     n_modes = count("n_modes", n_modes, 1, 2000)
-    zeta = nonnegative("damping_ratio", damping_ratio)
-    if zeta >= 1.0:
-        raise ValueError(f"damping_ratio = {damping_ratio!r}: must be in [0, 1)")
-    mesh = {"elements_per_segment": elements_per_segment, "order": order}
-    ms, labels = labelled_modal_system(vehicle, 0, n_modes, F0,
-                                       supported_forward_end=supported_forward_end, **mesh)
-    w2, V = np.linalg.eigh(ms.stiffness + ms.geometric)  # loaded modes (Bolotin sec. 8)
-    if w2[0] <= 0.0:
-        lam = buckling_load(vehicle, 0, F0=F0, supported_forward_end=supported_forward_end,
-                            **mesh).load_factor[0]
-        raise ValueError(f"F0 = {F0!r}: the steady thrust buckles harmonic k = 0 (load "
-                         f"factor lambda = {lam:.6g})")
+    zeta = in_unit_interval("damping_ratio", damping_ratio)
+    ms, labels, w2, V = loaded_modes(vehicle, 0, n_modes, F0,
+                                     supported_forward_end=supported_forward_end,
+                                     elements_per_segment=elements_per_segment, order=order)
     omega = np.sqrt(w2)
     # generalised force per unit axial aft load of the loaded modes; a mode is defined up to
     # its sign: each is taken with phi_n >= 0 (else the sign depends on round-off, e.g. the

@@ -38,19 +38,29 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.linalg
 
-from .. import floquet
 from ..checks import count, nonnegative, positive
-from ..shell_of_revolution import DEFAULT_ORDER, Vehicle, mesh_vehicle, system_matrices
-from ..shell_of_revolution import vehicle_modes as _vehicle_modes
+from ..shell_of_revolution import (
+    DEFAULT_ORDER,
+    Vehicle,
+    mesh_vehicle,
+    system_matrices,
+    vehicle_modes,
+)
 from ..shell_of_revolution.assembly import dof_map
-from .regions import HarmonicSystem, _floquet_options, _harmonic_regions, _ModalMatrices
+from .harmonic import (
+    HarmonicSystem,
+    ModalMatrices,
+    floquet_options,
+    harmonic_regions,
+    in_unit_interval,
+)
 
 __all__ = ["BendingSystem", "bending_system", "bending_harmonic", "bending_regions",
            "follower_flutter_thrust"]
 
 
 @dataclass(frozen=True)
-class BendingSystem(_ModalMatrices):
+class BendingSystem(ModalMatrices):
     """Periodic modal system of k = 1: q'' + C q' + (A + gamma B1 cos Omega t) q = 0.
 
     Attributes
@@ -141,7 +151,9 @@ def bending_system(
     gimbal_gain: float = 0.0, supported_forward_end: bool = False,
     elements_per_segment: int | tuple | None = None, order: int = DEFAULT_ORDER,
 ) -> BendingSystem:
-    """The k = 1 periodic system with rigid modes and the follower thrust (module docstring).
+    """The k = 1 periodic system with rigid modes and the follower thrust (module docstring;
+    Beal 1965, eq. 4 in Galerkin form).  For a free-free vehicle the first basis mode is the
+    rigid rotation and the second the rigid translation (its column of A and B is 0).
 
     Parameters
     ----------
@@ -150,34 +162,20 @@ def bending_system(
     F0 : float
         Steady thrust (N), > 0.
     n_modes : int
-        Basis modes of k = 1, rigid ones included (dimensionless), 2..2000.
+        Basis modes of k = 1, rigid ones included, 2..2000.
     damping_ratio : float
         Modal damping ratio of the elastic basis modes (dimensionless), [0, 1).
     gimbal_gain : float
         K (dimensionless), >= 0: the thrust turns by K psi from the aft tangent, psi the
         rigid pitch angle (Tech Memo 104, eq. 2.2-2).
-    supported_forward_end : bool
-        Uniform compression F0 reacted at the nose instead of inertia relief.
-    elements_per_segment, order
-        Mesh (see :func:`flexbooster.shell_of_revolution.mesh_vehicle`).
-
-    Returns
-    -------
-    BendingSystem
-        For a free-free vehicle the first basis mode is the rigid rotation and the second the
-        rigid translation (it does not act back on the others: its column of A and B is 0).
-
-    References
-    ----------
-    Beal (1965), eq. 4 (Galerkin form); Bolotin (1963), ch. 1.
+    supported_forward_end, elements_per_segment, order
+        As :func:`.regions.harmonic_system`.
     """
     if not isinstance(vehicle, Vehicle):
         raise ValueError(f"vehicle = {vehicle!r}: must be a Vehicle")
     F0 = positive("F0", F0)
     n_modes = count("n_modes", n_modes, 2, 2000)
-    zeta = nonnegative("damping_ratio", damping_ratio)
-    if zeta >= 1.0:
-        raise ValueError(f"damping_ratio = {damping_ratio!r}: must be in [0, 1)")
+    zeta = in_unit_interval("damping_ratio", damping_ratio)
     K = nonnegative("gimbal_gain", gimbal_gain)
     w2, kg, y, beta, psi, n_rigid = _basis(vehicle, n_modes, supported_forward_end,
                                            elements_per_segment, order)
@@ -196,11 +194,13 @@ def follower_flutter_thrust(
     supported_forward_end: bool = False, elements_per_segment: int | tuple | None = None,
     order: int = DEFAULT_ORDER, rtol: float = 1e-9,
 ) -> float:
-    """Smallest steady thrust (gamma = 0, no damping) at which the k = 1 system flutters.
+    """Smallest steady thrust (N; gamma = 0, no damping) at which the k = 1 system flutters,
+    inf if none up to thrust_max.
 
     Flutter: two frequencies of diag(omega^2) + T (K_g - y beta^T) coalesce and leave the real
-    axis (Bolotin 1963, ch. 1); located by a scan of ``n_scan`` thrusts in (0, thrust_max]
-    and refined by brentq on max |Im lambda| / max |lambda| = 1e-9.
+    axis (Bolotin 1963, ch. 1; Beal 1965, fig. 2: 109.69 EI / l^2 for the free-free uniform
+    beam); located by a scan of ``n_scan`` thrusts in (0, thrust_max] and refined by brentq on
+    max |Im lambda| / max |lambda| = 1e-9.
 
     Parameters
     ----------
@@ -208,23 +208,12 @@ def follower_flutter_thrust(
         The vehicle.
     thrust_max : float
         Largest thrust examined (N), > 0.
-    n_modes : int
-        Basis modes of k = 1, rigid ones included (dimensionless), 2..2000.
-    n_scan : int
-        Scan points (dimensionless), 2..10000.
+    n_modes, n_scan : int
+        Basis modes of k = 1, rigid ones included, 2..2000; scan points, 2..10000.
     supported_forward_end, elements_per_segment, order
         As :func:`bending_system`.
     rtol : float
         Relative tolerance on the thrust (dimensionless), (0, 1e-2].
-
-    Returns
-    -------
-    float
-        The flutter thrust (N); inf if the system does not flutter up to thrust_max.
-
-    References
-    ----------
-    Beal (1965), fig. 2 (109.69 EI / l^2 for the free-free uniform beam).
     """
     if not isinstance(vehicle, Vehicle):
         raise ValueError(f"vehicle = {vehicle!r}: must be a Vehicle")
@@ -265,45 +254,29 @@ def bending_regions(
 ) -> tuple:
     """Parametric instability regions of k = 1 (bending, rigid pitch, gimbaled follower thrust).
 
+    The rows of ``vehicle_regions(..., k_min=1)`` for k = 1 (:func:`bending_harmonic`, one
+    code path), sorted by omega_lo; the toolkit's size-limit errors propagate.  Bolotin
+    (1964), ch. 1-2, sec. 6; Beal (1965); Tech Memo 104, eq. 2.2-2.
+
     Parameters
     ----------
     vehicle : Vehicle
         The vehicle.
-    F0 : float
-        Steady thrust (N), > 0.
-    gamma : float
-        Pulsation amplitude (dimensionless), [0, 1).
+    F0, gamma : float
+        Steady thrust (N), > 0; pulsation amplitude (dimensionless), [0, 1).
     omega_min, omega_max : float
         Omega range (rad/s), 0 < omega_min < omega_max.
     gimbal_gain : float
-        K (dimensionless), >= 0 (0: neutral rigid pitch, reported as a "steady" region).
+        K (dimensionless), >= 0 (0: the neutral rigid pitch is a "steady" region).
     n_modes : int
-        Basis modes of k = 1, rigid ones included (dimensionless), 3..2000.
-    damping_ratio : float
-        Modal damping ratio of the elastic modes (dimensionless), [0, 1) (none on the rigid
-        pitch).
-    supported_forward_end, elements_per_segment, order
+        Basis modes of k = 1, rigid ones included, 3..2000.
+    damping_ratio, supported_forward_end, elements_per_segment, order
         As :func:`bending_system`.
     **options
-        Passed to :func:`flexbooster.floquet.instability_regions` (rtol, step_phase,
-        max_order, damping_margin, ...).
-
-    Returns
-    -------
-    tuple of VehicleRegion
-        k = 1 regions sorted by omega_lo (those of ``vehicle_regions(..., k_min=1)`` for
-        k = 1: one code path, :func:`bending_harmonic`); ``modes`` carry the basis mode
-        dominating each steady mode (type "rigid-pitch" for the rigid rotation),
-        ``omega_loaded`` the steady frequency; ``critical_gamma`` from
-        :func:`flexbooster.floquet.critical_amplitude` with damping (0 without).
-
-    References
-    ----------
-    Bolotin (1964), ch. 1-2, sec. 6; Beal (1965); Tech Memo 104, eq. 2.2-2.
+        To :func:`flexbooster.floquet.instability_regions` (rtol, step_phase, max_order,
+        damping_margin, ...).
     """
-    gamma = nonnegative("gamma", gamma)
-    if gamma >= 1.0:
-        raise ValueError(f"gamma = {gamma!r}: must be in [0, 1)")
+    gamma = in_unit_interval("gamma", gamma)
     n_modes = count("n_modes", n_modes, 3, 2000)
     omega_min, omega_max = positive("omega_min", omega_min), positive("omega_max", omega_max)
     if omega_min >= omega_max:
@@ -312,12 +285,9 @@ def bending_regions(
                          gimbal_gain=gimbal_gain, supported_forward_end=supported_forward_end,
                          elements_per_segment=elements_per_segment, order=order)
     opts = dict(options)
-    known = {"rtol", "step_phase", "max_order", "damping_margin"}
-    if known >= set(opts):  # the options of vehicle_regions: validated the same way
-        opts = _floquet_options(opts.get("rtol", 1e-9), opts.get("step_phase", 0.12),
-                                opts.get("max_order"),
-                                opts.get("damping_margin", floquet.DAMPING_MARGIN))
-    rows = _harmonic_regions(h, gamma, omega_min, omega_max, opts)[0]
+    if {"rtol", "step_phase", "max_order", "damping_margin"} >= set(opts):
+        opts = floquet_options(**opts)  # the options of vehicle_regions, checked alike
+    rows = harmonic_regions(h, gamma, omega_min, omega_max, opts)
     return tuple(sorted(rows, key=lambda r: r.omega_lo))
 
 
@@ -329,28 +299,20 @@ def bending_harmonic(
     """The k = 1 system of :func:`bending_system` as the map's harmonic k = 1.
 
     The rigid translation of a free-free vehicle is dropped (its column of A and B is zero:
-    it is driven but does not act back); the rest is kept in the basis coordinates (see the
-    Notes of :class:`~flexbooster.vehicle.regions.HarmonicSystem`), each steady mode (an
-    eigenvector of A, ascending real part of the eigenvalue, the order of the modes of
-    :func:`flexbooster.floquet.instability_regions`) labelled by the basis mode that dominates
-    it.
+    it is driven but does not act back); the rest stays in the basis coordinates
+    (:class:`~flexbooster.vehicle.harmonic.HarmonicSystem`), each steady mode (eigenvector
+    of A, ascending real part of the eigenvalue, the toolkit's mode order) labelled by the
+    basis mode that dominates it.
+
+    ``omega_unloaded`` are those of the kept basis modes, ``omega_loaded`` the steady
+    frequencies sqrt(max(Re mu, 0)) of A (rad/s).  Beal (1965), eq. 4; Bolotin (1964), sec. 8.
 
     Parameters
     ----------
     vehicle, F0, damping_ratio, gimbal_gain, supported_forward_end, elements_per_segment, order
-        As :func:`bending_system` (F0 in N, > 0; the ratio and K dimensionless).
+        As :func:`bending_system`.
     n_modes : int
-        Basis modes of k = 1, rigid ones included (dimensionless), 3..2000.
-
-    Returns
-    -------
-    HarmonicSystem
-        With k = 1: ``omega_unloaded`` of the kept basis modes, ``omega_loaded`` the steady
-        frequencies sqrt(max(Re mu, 0)) of A (rad/s).
-
-    References
-    ----------
-    Beal (1965), eq. 4; Bolotin (1963), ch. 1; Bolotin (1964), sec. 8.
+        Basis modes of k = 1, rigid ones included, 3..2000.
     """
     n_modes = count("n_modes", n_modes, 3, 2000)
     bs = bending_system(vehicle, F0=F0, n_modes=n_modes, damping_ratio=damping_ratio,
@@ -368,7 +330,7 @@ def bending_harmonic(
     basis = np.nonzero(keep)[0]
     pos = np.argmax(np.abs(X), axis=0)  # the basis vector dominating each steady mode
     dom = basis[pos]
-    labels = _vehicle_modes(vehicle, k_min=1, k_max=1, n_modes=max(1, n_modes - bs.n_rigid),
+    labels = vehicle_modes(vehicle, k_min=1, k_max=1, n_modes=max(1, n_modes - bs.n_rigid),
                             supported_forward_end=supported_forward_end,
                             elements_per_segment=elements_per_segment, order=order)
     rigid = dom < bs.n_rigid

@@ -1,0 +1,331 @@
+"""One harmonic's periodic modal system and its parametric instability regions.
+
+Shared by the map of :mod:`.regions` (k >= 2) and the bending harmonic of :mod:`.bending`
+(k = 1): the system q'' + C q' + (A + gamma B1 cos Omega t) q = 0 (Bolotin 1964, sec. 8),
+its labelled modes, and the rows of :func:`flexbooster.floquet.instability_regions` with the
+critical amplitude of each (Bolotin sec. 6).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .. import floquet
+from ..bands import SearchGap
+from ..checks import count, finite, nonnegative, positive
+from ..shell_of_revolution import BucklingError, buckling_load, labelled_modal_system
+
+__all__ = ["RegionMode", "ModalMatrices", "HarmonicSystem", "VehicleRegion", "LIMIT_ERRORS",
+           "floquet_options", "harmonic_regions", "limit_gap", "in_unit_interval", "loaded_modes"]
+
+#: The toolkit's size limits: past one a harmonic is a :class:`~flexbooster.bands.SearchGap`.
+LIMIT_ERRORS = (floquet.TooManyCandidatesError, floquet.StepLimitError)
+
+
+@dataclass(frozen=True)
+class RegionMode:
+    """One loaded mode taking part in a region.
+
+    Attributes
+    ----------
+    k, index : int
+        Circumferential wave number; index of the loaded mode, ascending frequency.
+    order, type : int, str
+        Meridian sign changes and type of the unloaded mode dominating it
+        (:func:`~flexbooster.shell_of_revolution.vehicle_modes` labels).
+    omega_loaded : float
+        Frequency under the steady thrust F0 (rad/s).
+    share : float
+        Share V_ij^2 of the dominating unloaded mode (dimensionless).
+    """
+
+    k: int
+    index: int
+    order: int
+    type: str
+    omega_loaded: float
+    share: float
+
+    def to_dict(self) -> dict:
+        """JSON-ready mapping."""
+        return {"k": int(self.k), "index": int(self.index), "order": int(self.order),
+                "type": str(self.type), "omega_loaded": float(self.omega_loaded),
+                "share": float(self.share)}
+
+
+class ModalMatrices:
+    """Base of a periodic modal system with fields mass, damping, stiffness, excitation."""
+
+    __slots__ = ()
+
+    def matrices(self, gamma: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """(M, C, A, B = gamma B1) for T = F0 (1 - gamma cos Omega t), 0 <= gamma < 1
+        (dimensionless, 1/s, 1/s^2, 1/s^2; Bolotin 1964, sec. 8)."""
+        gamma = in_unit_interval("gamma", gamma)
+        return self.mass, self.damping, self.stiffness, gamma * self.excitation
+
+
+@dataclass(frozen=True)
+class HarmonicSystem(ModalMatrices):
+    """Periodic modal system of one harmonic: M q'' + C q' + (A + gamma B1 cos Omega t) q = 0.
+
+    k >= 2 (:func:`.regions.harmonic_system`): the basis of the modes loaded by F0, M = I,
+    A = diag(omega_loaded^2) = V^T (K_e + K_g) V, B1 = -V^T K_g V, C = 2 zeta
+    diag(omega_loaded).  k = 1 (:func:`.bending.bending_harmonic`): the unloaded basis with
+    the rigid pitch (A not diagonal nor symmetric), ``omega_loaded`` the square roots of the
+    real parts of the eigenvalues of A, ``basis`` the real parts of its unit eigenvectors.
+
+    Attributes
+    ----------
+    k : int
+        Circumferential wave number.
+    F0 : float
+        Steady thrust (N).
+    damping_ratio : float
+        Modal damping ratio zeta (dimensionless).
+    omega_unloaded, omega_loaded : ndarray, shape (n,)
+        Basis frequencies without thrust and steady frequencies under F0 (rad/s).
+    basis : ndarray, shape (n, n)
+        Column j: steady mode j in the basis coordinates.
+    mass, damping, stiffness, excitation : ndarray, shape (n, n)
+        M (dimensionless), C (1/s), A and B1 (1/s^2).
+    mode_order, mode_type, mode_share : ndarray, shape (n,)
+        Labels of the basis mode dominating each steady mode, and its share.
+    """
+
+    k: int
+    F0: float
+    damping_ratio: float
+    omega_unloaded: np.ndarray
+    omega_loaded: np.ndarray
+    basis: np.ndarray
+    mass: np.ndarray
+    damping: np.ndarray
+    stiffness: np.ndarray
+    excitation: np.ndarray
+    mode_order: np.ndarray
+    mode_type: np.ndarray
+    mode_share: np.ndarray
+
+    def mode(self, index: int) -> RegionMode:
+        """Label of steady mode ``index`` (0..n-1)."""
+        index = count("index", index, 0, self.omega_loaded.size - 1)
+        return RegionMode(k=self.k, index=index, order=int(self.mode_order[index]),
+                          type=str(self.mode_type[index]),
+                          omega_loaded=float(self.omega_loaded[index]),
+                          share=float(self.mode_share[index]))
+
+    def periodic(self, gamma: float) -> tuple:
+        """(M, C or None when undamped, A, B) for :mod:`flexbooster.floquet`."""
+        M, C, A, B = self.matrices(gamma)
+        return M, (C if self.damping_ratio > 0.0 else None), A, B
+
+    def to_dict(self) -> dict:
+        """JSON-ready mapping."""
+        return {"k": int(self.k), "F0": float(self.F0),
+                "damping_ratio": float(self.damping_ratio),
+                "omega_unloaded": self.omega_unloaded.tolist(),
+                "omega_loaded": self.omega_loaded.tolist(), "basis": self.basis.tolist(),
+                "damping": self.damping.tolist(), "stiffness": self.stiffness.tolist(),
+                "excitation": self.excitation.tolist(),
+                "mode_order": [int(v) for v in self.mode_order],
+                "mode_type": [str(v) for v in self.mode_type],
+                "mode_share": self.mode_share.tolist()}
+
+
+@dataclass(frozen=True)
+class VehicleRegion:
+    """One parametric instability region of harmonic k (Bolotin 1964, ch. 1-2; Hsu 1963).
+
+    Attributes
+    ----------
+    k : int
+        Circumferential wave number.
+    kind : str
+        "simple" (Omega near 2 omega_i / j), "sum", "difference" ((omega_i +- omega_k) / j),
+        or "steady" (k = 1: the steady system itself is not stable).
+    order : int
+        j of the resonance centre.
+    modes : tuple of RegionMode
+        The steady modes involved (one for "simple", two otherwise).
+    omega_lo, omega_hi : float
+        Edges in Omega at the requested gamma, |rho|_max = 1 there (rad/s).
+    growth_rate_max, omega_at_max : float
+        Largest growth rate log|rho|_max / T inside (1/s) and where (rad/s).
+    omega_center : float
+        Analytic centre (rad/s).
+    critical_gamma : float
+        Amplitude below which damping suppresses the region (0 without damping).
+    clipped : bool
+        An edge is an end of the Omega range.
+    """
+
+    k: int
+    kind: str
+    order: int
+    modes: tuple
+    omega_lo: float
+    omega_hi: float
+    growth_rate_max: float
+    omega_at_max: float
+    omega_center: float
+    critical_gamma: float
+    clipped: bool = False
+
+    @property
+    def width(self) -> float:
+        """omega_hi - omega_lo (rad/s)."""
+        return self.omega_hi - self.omega_lo
+
+    def to_dict(self) -> dict:
+        """JSON-ready mapping."""
+        return {"k": int(self.k), "kind": self.kind, "order": int(self.order),
+                "modes": [m.to_dict() for m in self.modes], "omega_lo": float(self.omega_lo),
+                "omega_hi": float(self.omega_hi), "width": float(self.width),
+                "growth_rate_max": float(self.growth_rate_max),
+                "omega_at_max": float(self.omega_at_max),
+                "omega_center": float(self.omega_center),
+                "critical_gamma": float(self.critical_gamma), "clipped": bool(self.clipped)}
+
+    def instability_region(self) -> floquet.InstabilityRegion:
+        """The toolkit's region of this row (the top level of
+        :func:`flexbooster.floquet.region_boundaries`)."""
+        return floquet.InstabilityRegion(
+            omega_lo=self.omega_lo, omega_hi=self.omega_hi,
+            growth_rate_max=self.growth_rate_max, omega_at_max=self.omega_at_max,
+            kind=self.kind, modes=tuple(m.index for m in self.modes), order=self.order,
+            omega_center=self.omega_center, clipped=self.clipped)
+
+
+def in_unit_interval(name: str, value) -> float:
+    """A dimensionless value checked to lie in [0, 1) (a pulsation amplitude, a damping ratio).
+
+    Parameters
+    ----------
+    name : str
+        The argument's name, for the ValueError.
+    value : float
+        The value.
+    """
+    x = nonnegative(name, value)
+    if x >= 1.0:
+        raise ValueError(f"{name} = {value!r}: must be in [0, 1)")
+    return x
+
+
+def loaded_modes(vehicle, k: int, n_modes: int, F0: float, *, supported_forward_end: bool,
+                 elements_per_segment, order) -> tuple:
+    """The unloaded modal system of harmonic k and its modes loaded by the steady thrust.
+
+    Eigenpairs (w2, V) of K_e + K_g in the mass-normalised unloaded modes (M = I; Bolotin
+    1964, sec. 8).  Raises :class:`~flexbooster.shell_of_revolution.BucklingError` with the
+    load factor of :func:`~flexbooster.shell_of_revolution.buckling_load` when a loaded
+    omega^2 <= 0.  Returns (modal system, its labels, w2, V).
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        The vehicle.
+    k, n_modes : int
+        Harmonic; unloaded modes in the basis.
+    F0 : float
+        Steady thrust (N), > 0.
+    supported_forward_end, elements_per_segment, order
+        As :func:`.regions.harmonic_system`.
+    """
+    mesh = {"elements_per_segment": elements_per_segment, "order": order}
+    ms, labels = labelled_modal_system(vehicle, k, n_modes, F0,
+                                       supported_forward_end=supported_forward_end, **mesh)
+    w2, V = np.linalg.eigh(ms.stiffness + ms.geometric)
+    if w2[0] <= 0.0:
+        lam = float(buckling_load(vehicle, k, F0=F0, supported_forward_end=supported_forward_end,
+                                  **mesh).load_factor[0])
+        raise BucklingError(f"F0 = {F0!r}: the steady thrust buckles harmonic k = {k} (load "
+                            f"factor lambda = {lam:.6g} <= 1, critical thrust {lam * F0:.6g} "
+                            f"N; loaded omega^2 = {w2[0]:.4g} 1/s^2)", k, F0, lam)
+    return ms, labels, w2, V
+
+
+def floquet_options(rtol=1e-9, step_phase=0.12, max_order=None,
+                    damping_margin=floquet.DAMPING_MARGIN) -> dict:
+    """Checked options of :func:`flexbooster.floquet.instability_regions`.
+
+    Parameters
+    ----------
+    rtol, step_phase, max_order, damping_margin
+        Edge tolerance and step phase (dimensionless), largest order j (None or 1..10000),
+        damping filter (None or >= 1).
+    """
+    opts = {"rtol": finite("rtol", rtol), "step_phase": positive("step_phase", step_phase)}
+    if damping_margin is not None:
+        if isinstance(damping_margin, bool) or finite("damping_margin", damping_margin) < 1:
+            raise ValueError(f"damping_margin = {damping_margin!r}: must be None or >= 1")
+        damping_margin = float(damping_margin)
+    opts["damping_margin"] = damping_margin
+    if max_order is not None:
+        opts["max_order"] = count("max_order", max_order, 1, 10_000)
+    return opts
+
+
+def harmonic_regions(h: HarmonicSystem, gamma: float, lo: float, hi: float,
+                     opts: dict) -> list[VehicleRegion]:
+    """The regions of one harmonic, with the critical gamma of each one that is not "steady"
+    (:func:`flexbooster.floquet.critical_amplitude`, Bolotin sec. 6: where the damped
+    region's edges meet; 0 without damping).  Raises :data:`LIMIT_ERRORS` past the
+    toolkit's size limits.
+
+    Parameters
+    ----------
+    h : HarmonicSystem
+        The harmonic.
+    gamma : float
+        Pulsation amplitude (dimensionless), [0, 1).
+    lo, hi : float
+        Omega range (rad/s).
+    opts : dict
+        :func:`floquet_options`.
+    """
+    M, C, A, B = h.periodic(gamma)
+    found = floquet.instability_regions(M, C, A, B, lo, hi, **opts)
+    crit = {}
+    if C is not None and any(r.kind != "steady" for r in found):
+        crit = {(c.kind, c.modes, c.order): c.gamma_cr for c in floquet.critical_amplitude(
+            M, C, A, h.excitation, gamma_max=gamma, omega_min=lo, omega_max=hi,
+            regions=found, **opts)}
+    rows = []
+    for r in found:
+        key = (r.kind, r.modes, r.order)
+        if C is not None and r.kind != "steady" and key not in crit:
+            raise ValueError(f"gamma = {gamma!r}: k = {h.k}, region {key} found but its "
+                             "critical amplitude was not (inconsistent searches)")
+        rows.append(VehicleRegion(
+            k=h.k, kind=r.kind, order=r.order, modes=tuple(h.mode(i) for i in r.modes),
+            omega_lo=r.omega_lo, omega_hi=r.omega_hi, growth_rate_max=r.growth_rate_max,
+            omega_at_max=r.omega_at_max, omega_center=r.omega_center,
+            critical_gamma=float(crit.get(key, 0.0)), clipped=r.clipped))
+    return rows
+
+
+def limit_gap(h: HarmonicSystem, lo: float, hi: float, exc: Exception,
+              what: str = "not searched") -> SearchGap:
+    """The gap of a harmonic past a size limit of the toolkit (both limits are reached as
+    omega_min falls far below the harmonic's frequencies).
+
+    Parameters
+    ----------
+    h : HarmonicSystem
+        The harmonic.
+    lo, hi : float
+        Omega range left out (rad/s).
+    exc : Exception
+        One of :data:`LIMIT_ERRORS`.
+    what : str
+        What was left out ("not searched", "not traced for the chart").
+    """
+    limit = "max_candidates" if isinstance(exc, floquet.TooManyCandidatesError) else "max_steps"
+    return SearchGap(
+        stage="vehicle", limit=limit, k=int(h.k), Omega_lo=float(lo), Omega_hi=float(hi),
+        reason=(f"harmonic k = {h.k} {what}: {exc} ({h.omega_loaded.size} modes up to "
+                f"{float(np.max(h.omega_loaded)):.6g} rad/s)"))
