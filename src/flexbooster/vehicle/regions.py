@@ -7,13 +7,15 @@ for each circumferential harmonic k the modal equations of :func:`modal_system` 
     q'' + (K_e + (T(t) / F0) K_g) q = 0
       = q'' + (K_e + K_g) q - gamma cos(Omega t) K_g q = 0
 
-(Bolotin 1964, sec. 8, in modal form).  They are written in the basis of the modes
-loaded by the steady thrust (eigenvectors V of K_e + K_g, orthonormal since the modal mass is
-I): with omega_L the loaded frequencies,
+(Bolotin 1964, sec. 8, in modal form).  The basis is the modes loaded by the steady thrust
+(eigenvectors V of (K_e + K_g, M) of the full model, mass-normalised): with omega_L the loaded
+frequencies,
 
     M = I,  A = diag(omega_L^2),  B = -gamma V^T K_g V,  C = 2 zeta diag(omega_L),
 
-the modal damping acting on the loaded modes.  The regions in Omega are those of
+the modal damping acting on the loaded modes.  A mode's own terms (omega_L, B_ii), which set
+the first-order width of its regions, are then those of the full model whatever the basis
+size; the basis only enters through the couplings.  The regions in Omega are those of
 :func:`flexbooster.floquet.instability_regions` (candidates 2 omega_i / j,
 (omega_i +- omega_k) / j); the critical amplitude from :func:`flexbooster.floquet.
 critical_amplitude` and the boundary curves in (Omega, gamma) from
@@ -43,6 +45,7 @@ from ..shell_of_revolution import (
     buckling_load,
     labelled_modal_system,
 )
+from ..shell_of_revolution.prestress import load_path
 from .axial import ForcedAxial, forced_axial
 
 __all__ = [
@@ -246,11 +249,12 @@ class HarmonicSystem(_ModalMatrices):
     damping_ratio : float
         Modal damping ratio zeta of the loaded modes (dimensionless).
     omega_unloaded : ndarray, shape (n,)
-        Unloaded frequencies of the basis modes (rad/s).
+        The harmonic's lowest natural frequencies without thrust, as many (rad/s).
     omega_loaded : ndarray, shape (n,)
         Frequencies under the steady thrust F0 (rad/s), ascending.
     basis : ndarray, shape (n, n)
-        V: column j = loaded mode j in the unloaded modal coordinates (orthonormal).
+        Column j = steady mode j in the basis coordinates (the identity: the basis modes are
+        the loaded modes).
     mass : ndarray, shape (n, n)
         M = I (modal mass, mass-normalised modes).
     damping : ndarray, shape (n, n)
@@ -260,15 +264,17 @@ class HarmonicSystem(_ModalMatrices):
     excitation : ndarray, shape (n, n)
         B1 = -V^T K_g V (1/s^2): B = gamma B1 for T = F0 (1 - gamma cos Omega t).
     mode_order, mode_type : ndarray, shape (n,)
-        Labels of the unloaded mode dominating each loaded mode.
+        Labels of the basis mode dominating each steady mode (as
+        :func:`~flexbooster.shell_of_revolution.vehicle_modes` labels a mode).
     mode_share : ndarray, shape (n,)
-        Its share V_ij^2 (dimensionless).
+        Its share (dimensionless; 1 for k >= 2).
 
     Notes
     -----
     k = 1 (:func:`.bending.bending_harmonic`: bending, rigid pitch, gimbaled follower thrust)
-    is written in the unloaded basis modes instead (the rigid translation dropped): A =
-    diag(omega^2) + F0 [K_g - y (beta + K psi)^T] is not diagonal and not symmetric, C =
+    is written in the basis of the rigid motions and the unloaded elastic modes (the rigid
+    translation dropped, and the neutral rigid pitch without gimbal gain): A =
+    diag(omega^2) + K_g - F0 y (beta + K psi)^T is not diagonal and not symmetric, C =
     2 zeta diag(omega_unloaded) (0 on the rigid pitch), ``omega_loaded`` are the square roots
     of the real parts of the eigenvalues of A (ascending; the steady frequencies), ``basis``
     the real parts of its unit eigenvectors, and the labels those of the basis mode that
@@ -335,7 +341,7 @@ class VehicleRegion:
     kind : str
         "simple" (Omega near 2 omega_i / j), "sum" ((omega_i + omega_k) / j) or "difference";
         "steady" (k = 1 only, :func:`.bending.bending_regions`: the steady system itself is
-        not stable, e.g. the neutral rigid pitch without gimbal gain).
+        not stable).
     order : int
         j of the resonance centre (dimensionless; not the meridian order of the modes).
     modes : tuple of RegionMode
@@ -447,7 +453,10 @@ class VehicleRegions:
     omega_min, omega_max : float
         Omega range (rad/s).
     supported_forward_end : bool
-        Thrust reacted at the nose (uniform compression) instead of inertia relief.
+        The nose reacts the thrust (uniform compression; ``load_path`` "forward support").
+    load_path : str
+        What balances the thrust in the prestress: "inertia relief", "forward support" or
+        "aft support" (:data:`flexbooster.shell_of_revolution.prestress.LOAD_PATHS`).
     forced_axial : ForcedAxial or None
         k = 0: the axial modes forced directly by the thrust pulsation, resonances
         Omega = omega_n with their amplitude per unit gamma F0 (:mod:`.axial`; the memo's
@@ -481,6 +490,7 @@ class VehicleRegions:
     omega_min: float
     omega_max: float
     supported_forward_end: bool
+    load_path: str = "inertia relief"
     forced_axial: ForcedAxial | None = None
     certificates: tuple = ()
     chart_gamma_max: float | None = None
@@ -512,6 +522,7 @@ class VehicleRegions:
                 "damping_ratio": float(self.damping_ratio),
                 "omega_min": float(self.omega_min), "omega_max": float(self.omega_max),
                 "supported_forward_end": bool(self.supported_forward_end),
+                "load_path": self.load_path,
                 "regions": [r.to_dict() for r in self.regions],
                 "harmonics": [{"k": int(h.k), "omega_unloaded": h.omega_unloaded.tolist(),
                                "omega_loaded": h.omega_loaded.tolist(),
@@ -558,7 +569,7 @@ def _vehicle(vehicle) -> Vehicle:
 
 def harmonic_system(
     vehicle: Vehicle, k: int, *, F0: float, n_modes: int = 20, damping_ratio: float = 0.01,
-    supported_forward_end: bool = False, elements_per_segment: int | tuple | None = None,
+    supported_forward_end: bool | None = None, elements_per_segment: int | tuple | None = None,
     order: int = DEFAULT_ORDER,
 ) -> HarmonicSystem:
     """Periodic modal system of harmonic k under T(t) = F0 (1 - gamma cos Omega t).
@@ -572,11 +583,13 @@ def harmonic_system(
     F0 : float
         Steady thrust (N), > 0.
     n_modes : int
-        Unloaded modes in the basis (dimensionless), 1..2000.
+        Loaded modes in the basis (dimensionless), 1..2000.
     damping_ratio : float
         Modal damping ratio zeta of the loaded modes (dimensionless), 0 <= zeta < 1.
-    supported_forward_end : bool
-        Uniform compression F0 reacted at the nose instead of inertia relief.
+    supported_forward_end : bool or None
+        Load path of the thrust: None from the vehicle's ends (a hinged or clamped forward
+        end reacts it: uniform compression; else inertia relief), True uniform compression,
+        False inertia relief (:func:`flexbooster.shell_of_revolution.prestress.load_path`).
     elements_per_segment, order
         Mesh (see :func:`flexbooster.shell_of_revolution.mesh_vehicle`).
 
@@ -599,8 +612,7 @@ def harmonic_system(
     F0 = positive("F0", F0)
     n_modes = count("n_modes", n_modes, 1, 2000)
     zeta = _zeta(damping_ratio)
-    if not isinstance(supported_forward_end, bool | np.bool_):
-        raise ValueError(f"supported_forward_end = {supported_forward_end!r}: must be a bool")
+    load_path(vehicle, supported_forward_end)  # checks the flag
     mesh = {"elements_per_segment": elements_per_segment, "order": order}
     ms, labels = labelled_modal_system(vehicle, k, n_modes, F0,
                                        supported_forward_end=supported_forward_end, **mesh)
@@ -615,10 +627,10 @@ def harmonic_system(
     omega_l = np.sqrt(w2)
     n = omega_l.size
     mode_order, mode_type = labels()  # as vehicle_modes(k_min=k, k_max=k, n_modes) labels
-    dom = np.argmax(V**2, axis=0)  # unloaded mode dominating each loaded one
+    dom = np.argmax(V**2, axis=0)  # basis mode dominating each loaded one (V = I)
     kg = V.T @ ms.geometric @ V
     return HarmonicSystem(
-        k=k, F0=F0, damping_ratio=zeta, omega_unloaded=ms.omega, omega_loaded=omega_l,
+        k=k, F0=F0, damping_ratio=zeta, omega_unloaded=ms.omega_unloaded, omega_loaded=omega_l,
         basis=V, mass=np.eye(n),
         damping=2.0 * zeta * np.diag(omega_l),  # modal damping of the loaded modes
         stiffness=np.diag(w2),  # A = V^T (K_e + K_g) V
@@ -818,7 +830,7 @@ def region_curves(
 def vehicle_regions(
     vehicle: Vehicle, *, F0: float, gamma: float, omega_min: float, omega_max: float,
     k_max: int, k_min: int = 2, n_modes: int = 20, damping_ratio: float = 0.01,
-    supported_forward_end: bool = False, elements_per_segment: int | tuple | None = None,
+    supported_forward_end: bool | None = None, elements_per_segment: int | tuple | None = None,
     order: int = DEFAULT_ORDER, boundaries: bool = False, gamma_max: float = 0.5,
     n_gamma: int = 11, rtol: float = 1e-9, step_phase: float = 0.12,
     max_order: int | None = None, damping_margin: float | None = floquet.DAMPING_MARGIN,
@@ -842,12 +854,12 @@ def vehicle_regions(
         (:func:`.bending.bending_harmonic`, its regions those of
         :func:`.bending.bending_regions`).
     n_modes : int
-        Unloaded modes per harmonic in the modal basis (dimensionless), 1..2000 (for k = 1
+        Loaded modes per harmonic in the modal basis (dimensionless), 1..2000 (for k = 1
         at least 3, rigid modes included).
     damping_ratio : float
         Modal damping ratio of the loaded modes (dimensionless), [0, 1); default 0.01.
-    supported_forward_end : bool
-        Uniform compression F0 reacted at the nose instead of inertia relief.
+    supported_forward_end : bool or None
+        Load path of the thrust (:func:`harmonic_system`): None from the vehicle's ends.
     elements_per_segment, order
         Mesh (see :func:`flexbooster.shell_of_revolution.mesh_vehicle`).
     boundaries : bool
@@ -925,6 +937,7 @@ def vehicle_regions(
     searched = 0.0
     mesh = {"supported_forward_end": supported_forward_end,
             "elements_per_segment": elements_per_segment, "order": order}
+    path = load_path(vehicle, supported_forward_end)
     for k in range(k_min, k_max + 1):  # up to 200 harmonics, each a small search or none
         if k == 1:  # bending + rigid pitch + gimbaled follower thrust (Beal 1965, eq. 4)
             h = bending_harmonic(vehicle, F0=F0, n_modes=max(n_modes, 3), damping_ratio=zeta,
@@ -950,7 +963,7 @@ def vehicle_regions(
                           elements_per_segment=elements_per_segment, order=order)
     found = VehicleRegions(regions=tuple(regions), harmonics=tuple(harmonics), curves=(),
                            F0=F0, gamma=gamma, damping_ratio=zeta, omega_min=lo, omega_max=hi,
-                           supported_forward_end=bool(supported_forward_end),
+                           supported_forward_end=path == "forward support", load_path=path,
                            forced_axial=fa, certificates=tuple(certs), gimbal_gain=gimbal,
                            skipped=tuple(skipped),
                            estimated_seconds=HARMONIC_BUILD_SECONDS * len(harmonics) + searched)
