@@ -479,6 +479,7 @@ def vehicle_modes(
     order: int = DEFAULT_ORDER,
     points_per_element: int = 9,
     tolerance: float | None = None,
+    refinement: int = 1,
 ) -> VehicleModes:
     """Natural frequencies and labelled mode shapes for k = k_min..k_max.
 
@@ -510,6 +511,9 @@ def vehicle_modes(
         Target relative accuracy (dimensionless), 1e-9..0.1: the mesh is refined (every
         element split in 2, 4, 8) until no returned frequency changes by more than this;
         the finer result is returned (``ValueError`` if not reached at 8).
+    refinement : int
+        Split every element of the mesh into this many equal ones first (dimensionless),
+        1..64 (nested meshes: :func:`~.assembly.mesh_vehicle`).
 
     Returns
     -------
@@ -531,16 +535,18 @@ def vehicle_modes(
     points_per_element = count("points_per_element", points_per_element, 2, 50)
     opts = dict(k_min=k_min, k_max=k_max, f_max=f_max, n_modes=n_modes, band_factor=band_factor,
                 F0=F0, supported=supported_forward_end, points_per_element=points_per_element)
+    refinement = count("refinement", refinement, 1, 64)
     if tolerance is None:
-        mesh = mesh_vehicle(vehicle, elements_per_segment=elements_per_segment, order=order)
+        mesh = mesh_vehicle(vehicle, elements_per_segment=elements_per_segment, order=order,
+                            refinement=refinement)
         return _modes_on_mesh(vehicle, mesh, **opts)
     tolerance = positive("tolerance", tolerance)
     if not 1e-9 <= tolerance <= 0.1:
         raise ValueError(f"tolerance = {tolerance!r}: must be in [1e-9, 0.1]")
     previous, change = None, np.inf
-    for refinement in (1, 2, 4, 8):
+    for split in (1, 2, 4, 8):
         mesh = mesh_vehicle(vehicle, elements_per_segment=elements_per_segment, order=order,
-                            refinement=refinement)
+                            refinement=split * refinement)
         current = _modes_on_mesh(vehicle, mesh, **opts)
         if previous is not None:
             change = _max_change(previous, current)

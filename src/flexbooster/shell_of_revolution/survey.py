@@ -279,7 +279,8 @@ class VehicleSurvey:
         return {
             "source": self.source, "vehicle": self.vehicle.to_dict(), "k_max": self.k_max,
             "f_max_hz": self.f_max, "prestressed": self.prestressed,
-            "prestress_F0": float(self.prestress_F0), "note": self.note,
+            "prestress_F0": float(self.prestress_F0), "load_path": m.load_path,
+            "note": self.note,
             "theory": m.theory, "rigid_modes": {str(k): int(v)
                                                 for k, v in m.rigid_modes.items()},
             "elements_per_segment": list(m.elements_per_segment),
