@@ -2,10 +2,13 @@
 
 For each harmonic k the generalised eigenproblem K x = omega^2 M x (or (K_e + K_g) x =
 omega^2 M x with the thrust prestress) is solved densely (``scipy.linalg.eigh``, only the
-eigenpairs wanted).  For k = 0 and k = 1 the rigid-body motions that the constraints admit
-(k = 0: axial translation, rotation about the axis; k = 1: lateral translation, pitch) are
-identified (:func:`~.assembly.rigid_body_fields`, restricted to the admissible subspace) and
-removed exactly: the problem is solved on the M-orthogonal complement of that subspace.
+eigenpairs wanted); the omega^2 returned are the Rayleigh quotients of its eigenvectors, the
+energies summed from the strains at the Gauss points (accurate to round-off relative to
+themselves: monotone under mesh refinement).  For k = 0 and k = 1 the rigid-body motions
+that the constraints admit (k = 0: axial translation, rotation about the axis; k = 1: lateral
+translation, pitch) are identified (:func:`~.assembly.rigid_body_fields`, restricted to the
+admissible subspace) and removed exactly: the problem is solved on the M-orthogonal complement
+of that subspace.
 
 Every mode is labelled: ``k``; ``order``, the number of sign changes along the meridian of
 its dominant component (an SD-SD cylinder mode with m axial half-waves has order m - 1);

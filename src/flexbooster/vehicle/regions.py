@@ -185,14 +185,15 @@ class RegionMode:
     index : int
         Index of the loaded mode in its harmonic, ascending frequency (dimensionless).
     order : int
-        Sign changes along the meridian of the unloaded mode that dominates it
-        (:func:`~flexbooster.shell_of_revolution.vehicle_modes` label; dimensionless).
+        Sign changes along the meridian of the basis mode that dominates it (for k >= 2 the
+        loaded mode itself; :func:`~flexbooster.shell_of_revolution.vehicle_modes` label;
+        dimensionless).
     type : str
-        Type of that unloaded mode ("axial", "torsional", "radial").
+        Type of that mode ("axial", "torsional", "radial"; "bending", "rigid-pitch" for k = 1).
     omega_loaded : float
         Frequency under the steady thrust F0 (rad/s).
     share : float
-        Share V_ij^2 of the dominating unloaded mode in the loaded one (dimensionless).
+        Share of the dominating basis mode in the loaded one (dimensionless; 1 for k >= 2).
     """
 
     k: int
@@ -854,8 +855,8 @@ def vehicle_regions(
         (:func:`.bending.bending_harmonic`, its regions those of
         :func:`.bending.bending_regions`).
     n_modes : int
-        Loaded modes per harmonic in the modal basis (dimensionless), 1..2000 (for k = 1
-        at least 3, rigid modes included).
+        Modes per harmonic in the modal basis (dimensionless), 1..2000: the loaded modes
+        (k = 1: the rigid motions and the unloaded modes, at least 3).
     damping_ratio : float
         Modal damping ratio of the loaded modes (dimensionless), [0, 1); default 0.01.
     supported_forward_end : bool or None
