@@ -670,7 +670,8 @@ def test_refinement_lowers_every_frequency_monotonically(name):
     the three lowest each) by more than 1e-9 relative (the Rayleigh quotients are accurate to
     round-off relative to themselves; measured: no rise above 4e-15 up to a split in 8), and
     the automatic mesh is within 2e-4 of the split in 4 (measured against the split in 8:
-    <= 1.2e-4, the SD cylinder; 7.1e-5 the two-cone vehicle, the others <= 3.5e-5)."""
+    <= 1.2e-4, the SD cylinder; 7.1e-5 the two-cone vehicle, the others <= 3.5e-5); on the
+    two-cone vehicle ``tolerance=1e-6`` is met (within 1e-6 of the split in 4)."""
     veh = _test_vehicles()[name]
     prev = None
     for refinement in (1, 2, 4):
@@ -682,6 +683,9 @@ def test_refinement_lowers_every_frequency_monotonically(name):
             auto = modes
         prev = modes
     assert np.max(np.abs(auto.omega / prev.omega - 1)) < 2e-4
+    if name == "two-cone":  # tolerance = 1e-6 is reached (at the split in 2)
+        tol = vehicle_modes(veh, k_max=6, n_modes=3, tolerance=1e-6)
+        assert np.max(np.abs(tol.omega / prev.omega - 1)) < 1e-6
 
 
 def test_tolerance_option_refines_until_converged():
