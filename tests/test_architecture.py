@@ -27,7 +27,8 @@ PACKAGE = Path(flexbooster.__file__).parent
 LAYER = {
     "errors": "input", "units": "input", "checks": "input", "case": "input",
     "vehicle_case": "input",
-    "memo": "core", "floquet": "core", "bands": "core", "shell_of_revolution": "core", "vehicle": "core",
+    "memo": "core", "floquet": "core", "bands": "core", "shell_of_revolution": "core",
+    "vehicle": "core",
     "model": "model", "cost": "model", "_threads": "pipeline", "_parallel": "infra",
     "results": "results", "danger": "results", "analysis": "pipeline",
     "reference": "reference",
