@@ -52,6 +52,7 @@ from flexbooster.present.outputs import (
 from flexbooster.reference import donnell
 from flexbooster.shell_of_revolution import assembly as sor_assembly
 from flexbooster.shell_of_revolution import elements as sor_elements
+from flexbooster.shell_of_revolution import geometry as sor_geometry
 from flexbooster.shell_of_revolution import modes as sor_modes
 from flexbooster.shell_of_revolution import prestress as sor_prestress
 from flexbooster.shell_of_revolution import survey as sor_survey
@@ -232,6 +233,13 @@ def _vehicle():
     return vehicle_from_case(flexbooster.default_case())
 
 
+def _plate_vehicle():
+    """A cylinder closed by a flat annular plate (a cone of length 0)."""
+    mat = {"E": 7e10, "nu": 0.3, "rho": 2700.0}
+    return sor_geometry.Vehicle([sor_geometry.Cylinder(1.0, 2.0, 0.01, **mat),
+                                 sor_geometry.Cone(1.0, 0.5, 0.0, 0.01, **mat)])
+
+
 @functools.cache
 def _small() -> dict:
     """A small analysis (the default case, truncations 2/2/2/2, N = 2, S = R = 1, 20 points)
@@ -347,14 +355,17 @@ API_CALLS = [
     ("buckling_load-F0-nan", "F0", lambda: sor_modes.buckling_load(_vehicle(), 1, F0=nan)),
     ("modal_system-n_modes-0", "n_modes",
      lambda: sor_modes.modal_system(_vehicle(), 1, n_modes=0, F0=1e6)),
-    ("axial_force-F0-nan", "F0",
-     lambda: sor_prestress.axial_force(np.array([0.1]), nan, r1=np.array([1.]),
-                                       sin_phi=np.array([0.]), length=np.array([1.]),
-                                       rho_h=np.array([1.]))),
-    ("axial_force-length-0", "length",
-     lambda: sor_prestress.axial_force(np.array([0.1]), 1e6, r1=np.array([1.]),
-                                       sin_phi=np.array([0.]), length=np.array([0.]),
-                                       rho_h=np.array([1.]))),
+    ("membrane_prestate-aft_force-nan", "aft_force",
+     lambda: sor_prestress.membrane_prestate(sor_assembly.mesh_vehicle(_vehicle()),
+                                             "inertia relief", aft_force=nan)),
+    ("membrane_prestate-path", "path",
+     lambda: sor_prestress.membrane_prestate(sor_assembly.mesh_vehicle(_vehicle()),
+                                             "relief", aft_force=1e6)),
+    ("membrane_prestate-axial-nan", "axial",
+     lambda: sor_prestress.membrane_prestate(sor_assembly.mesh_vehicle(_vehicle()),
+                                             "inertia relief", aft_force=1e6, axial=nan)),
+    ("load_path-flag", "supported_forward_end",
+     lambda: sor_prestress.load_path(_vehicle(), "yes")),
     ("vehicle_survey-k_max-neg", "k_max",
      lambda: sor_survey.vehicle_survey(_vehicle(), k_max=-1, F0=1e6)),
     ("vehicle_survey-F0-nan", "F0", lambda: sor_survey.vehicle_survey(_vehicle(), k_max=2,
@@ -396,14 +407,12 @@ API_CALLS = [
                                   omega_1=_small()["model"].omega_1,
                                   shell=_small()["shell"], table=_small()["table"], R=1, S=1,
                                   n_points=0)),
-    ("meridional_resultant-r-0", "r",
-     lambda: sor_prestress.meridional_resultant(np.array([[1.0]]), np.array([[0.0]]),
-                                                cos_phi=np.array([1.0]))),
-    ("meridional_resultant-flat-plate", "cos_phi",
-     lambda: sor_prestress.meridional_resultant(np.array([[1.0]]), np.array([[1.0]]),
-                                                cos_phi=np.array([0.0]))),
-    ("prestress_resultant-F0-nan", "F0",
-     lambda: sor_assembly.prestress_resultant(sor_assembly.mesh_vehicle(_vehicle()), nan)),
+    ("membrane_prestate-flat-plate", "cos_phi",
+     lambda: sor_prestress.membrane_prestate(sor_assembly.mesh_vehicle(_plate_vehicle()),
+                                             "forward support", aft_force=1e6)),
+    ("thrust_prestate-F0-nan", "prestress_F0",
+     lambda: sor_assembly.thrust_prestate(_vehicle(), sor_assembly.mesh_vehicle(_vehicle()),
+                                          nan)),
     ("dof_map-k-neg", "k", lambda: sor_assembly.dof_map(
         _vehicle(), sor_assembly.mesh_vehicle(_vehicle()), -1)),
     ("rigid_body_fields-k-neg", "k",

@@ -15,9 +15,9 @@ Closed forms used below (written out, not imported): the SD-SD Donnell cylinder,
 u = A cos(lam x) cos(k t), v = B sin(lam x) sin(k t), w = C sin(lam x) cos(k t),
 lam = m pi / L, has the 3x3 stiffness of Leissa (NASA SP-288, 1973, sec. 2.1-2.3, eq. 2.20)
 and mass rho h I; a uniform axial compression N (N/m) adds -N lam^2 to K_CC (Brush & Almroth
-1975, ch. 5).  With one mode per harmonic (the lowest), the one-mode system is
-q'' + (w^2 - (P(t) / P_cr) w^2) q = 0 with the Rayleigh quotient
-P_cr = 2 pi R rho h w^2 |x|^2 / (lam^2 C^2) of the vibration vector x = (A, B, C).
+1975, ch. 5).  With one mode per harmonic (the lowest loaded mode x = (A, B, C) at P0), the
+one-mode system is q'' + (w_L^2 + (P(t) - P0) d w_L^2 / dP) q = 0, d w_L^2 / dP =
+-lam^2 C^2 / (2 pi R rho h |x|^2) (Hellmann-Feynman).
 """
 
 from __future__ import annotations
@@ -63,24 +63,36 @@ def sd_vehicle() -> Vehicle:
                    aft_end="shear-diaphragm", fwd_end="shear-diaphragm")
 
 
-def sd_lowest_mode(k: int) -> tuple[float, float]:
-    """(omega, P_cr) of the lowest SD-SD Donnell mode of harmonic k (closed form, above):
-    omega (rad/s) over m = 1..39, P_cr (N, total thrust) its one-mode Rayleigh quotient."""
+def sd_loaded_mode(k: int) -> tuple[float, float, float]:
+    """(P0, w_L, s) of the lowest SD-SD Donnell mode of harmonic k under uniform compression
+    (closed form, above): P0 (N, total thrust) = half the one-mode Rayleigh quotient P_cr =
+    2 pi R rho h w^2 |x|^2 / (lam^2 C^2) of the lowest unloaded mode (over m = 1..39); w_L
+    (rad/s) the lowest frequency over m of the loaded problem (K - N lam^2 e_C e_C^T) x =
+    w^2 rho h x, N = P0 / (2 pi R); s = -d w_L^2 / dP = lam^2 C^2 / (2 pi R rho h |x|^2) of its
+    vector (Hellmann-Feynman).  The one loaded mode under P(t) = P0 (1 - gamma cos W t) is
+    q'' + w_L^2 (1 - 2 mu cos W t) q = 0 with mu = gamma P0 s / (2 w_L^2)."""
     E, nu, rho = STEEL["E"], STEEL["nu"], STEEL["rho"]
     a = E * H_SD / (1 - nu**2)
     d = E * H_SD**3 / (12 * (1 - nu**2))
     cm = np.array([[1, nu, 0], [nu, 1, 0], [0, 0, (1 - nu) / 2]])
-    best = None
+    stiff = []
     for m in range(1, 40):
         lam = m * np.pi / L_SD
         mem = np.array([[-lam, 0, 0], [0, k / R_SD, 1 / R_SD], [-k / R_SD, lam, 0]])
         ben = np.array([[0, 0, lam**2], [0, 0, k**2 / R_SD**2], [0, 0, 2 * k * lam / R_SD]])
-        K = a * mem.T @ cm @ mem + d * ben.T @ cm @ ben
-        w2, X = np.linalg.eigh(K / (rho * H_SD))
+        stiff.append((lam, a * mem.T @ cm @ mem + d * ben.T @ cm @ ben))
+    w2, x, lam = min(((*np.linalg.eigh(K / (rho * H_SD)), lam) for lam, K in stiff),
+                     key=lambda t: t[0][0])
+    p0 = 0.5 * 2 * np.pi * R_SD * rho * H_SD * w2[0] / (lam**2 * x[2, 0] ** 2)
+    best = None
+    for lam, K in stiff:
+        K = K.copy()
+        K[2, 2] -= p0 / (2 * np.pi * R_SD) * lam**2
+        w2, x = np.linalg.eigh(K / (rho * H_SD))
         if best is None or w2[0] < best[0]:
-            best = (w2[0], X[:, 0], lam)
+            best = (w2[0], x[:, 0], lam)
     w2, x, lam = best
-    return float(np.sqrt(w2)), float(2 * np.pi * R_SD * rho * H_SD * w2 / (lam**2 * x[2]**2))
+    return float(p0), float(np.sqrt(w2)), float(lam**2 * x[2]**2 / (2 * np.pi * R_SD * rho * H_SD))
 
 
 def mathieu_edges(mu: float, j: int) -> tuple[float, float]:
@@ -100,14 +112,12 @@ def mathieu_edges(mu: float, j: int) -> tuple[float, float]:
 @pytest.mark.parametrize("k", [4, 6])
 @pytest.mark.parametrize("mu", [0.05, 0.1, 0.2])
 def test_sd_cylinder_regions_are_mathieu_regions(k, mu):
-    """SD-SD Donnell cylinder, uniform compression P0 = P_cr / 2, one mode: regions j = 1, 2
-    equal the exact Mathieu regions with mu = gamma P0 / (2 (P_cr - P0)) and
-    w_L = omega sqrt(1 - P0 / P_cr).  Source: scipy.special.mathieu_a/b (map in
-    mathieu_edges); tolerance 1e-6 (j = 1) and 1e-5 (j = 2) on Omega / w_L (measured ~4e-9)."""
-    omega, p_cr = sd_lowest_mode(k)
-    P0 = 0.5 * p_cr
-    gamma = 2 * mu * (p_cr - P0) / P0
-    w_l = omega * np.sqrt(1 - P0 / p_cr)
+    """SD-SD Donnell cylinder, uniform compression P0, one loaded mode: regions j = 1, 2
+    equal the exact Mathieu regions with w_L and mu = gamma P0 s / (2 w_L^2) of the loaded
+    closed form (sd_loaded_mode).  Source: scipy.special.mathieu_a/b (map in mathieu_edges);
+    tolerance 1e-6 (j = 1) and 1e-5 (j = 2) on Omega / w_L (measured ~4e-9)."""
+    P0, w_l, slope = sd_loaded_mode(k)
+    gamma = 2 * mu * w_l**2 / (P0 * slope)
     res = vehicle_regions(sd_vehicle(), F0=P0, gamma=gamma, omega_min=0.7 * w_l,
                           omega_max=2.6 * w_l, k_min=k, k_max=k, n_modes=1, damping_ratio=0.0,
                           supported_forward_end=True, elements_per_segment=SD_MESH)
@@ -124,13 +134,11 @@ def test_sd_cylinder_regions_are_mathieu_regions(k, mu):
 @pytest.mark.parametrize("k", [4, 6])
 def test_sd_cylinder_damped_threshold(k):
     """Damped Mathieu threshold (Bolotin 1964 sec. 6, first order): mu_cr = Delta / pi = 2 zeta,
-    i.e. gamma_cr = 4 zeta (P_cr - P0) / P0; relative tolerance zeta (measured 1e-5).  The
-    region exists at 1.1 gamma_cr and not at 0.9 gamma_cr."""
+    i.e. gamma_cr = 4 zeta w_L^2 / (P0 s) (sd_loaded_mode); relative tolerance zeta (measured
+    1e-5).  The region exists at 1.1 gamma_cr and not at 0.9 gamma_cr."""
     zeta = 0.01
-    omega, p_cr = sd_lowest_mode(k)
-    P0 = 0.5 * p_cr
-    w_l = omega * np.sqrt(1 - P0 / p_cr)
-    g_cr = 4 * zeta * (p_cr - P0) / P0
+    P0, w_l, slope = sd_loaded_mode(k)
+    g_cr = 4 * zeta * w_l**2 / (P0 * slope)
     kw = dict(F0=P0, omega_min=1.5 * w_l, omega_max=2.5 * w_l, k_min=k, k_max=k, n_modes=1,
               damping_ratio=zeta, supported_forward_end=True, elements_per_segment=SD_MESH,
               max_order=1)
@@ -145,9 +153,7 @@ def test_sd_cylinder_boundary_curves_are_mathieu():
     exact Mathieu edges (scipy.special), tolerance 1e-6 on Omega / w_L; tip at gamma = 0 on
     the centre 2 w_L (undamped: Bolotin ch. 1)."""
     k = 4
-    omega, p_cr = sd_lowest_mode(k)
-    P0 = 0.5 * p_cr
-    w_l = omega * np.sqrt(1 - P0 / p_cr)
+    P0, w_l, slope = sd_loaded_mode(k)
     res = vehicle_regions(sd_vehicle(), F0=P0, gamma=0.2, omega_min=1.5 * w_l,
                           omega_max=2.5 * w_l, k_min=k, k_max=k, n_modes=1, damping_ratio=0.0,
                           supported_forward_end=True, elements_per_segment=SD_MESH,
@@ -156,7 +162,7 @@ def test_sd_cylinder_boundary_curves_are_mathieu():
     np.testing.assert_allclose(curve.gamma, [0.0, 0.1, 0.2, 0.3], atol=1e-15)
     assert curve.omega_lo[0] == curve.omega_hi[0] == pytest.approx(2 * w_l, rel=1e-9)
     for g, a, b in zip(curve.gamma[1:], curve.omega_lo[1:], curve.omega_hi[1:], strict=True):
-        lo, hi = mathieu_edges(g * P0 / (2 * (p_cr - P0)), 1)
+        lo, hi = mathieu_edges(g * P0 * slope / (2 * w_l**2), 1)
         assert abs(a / w_l - lo) < 1e-6 and abs(b / w_l - hi) < 1e-6
 
 
@@ -282,9 +288,9 @@ def test_gamma_to_zero():
 
 def test_modal_truncation_converges():
     """Invariant under truncation: the three first-order simple regions of k = 3 (Omega 15..50
-    rad/s, gamma = 0.05) with 10 and 14 modes per k: edges within 1e-5 relative (measured
-    1.7e-6, the loaded frequency itself moves by 1.6e-6), widths and growth rates within 1e-3
-    (measured 1.5e-4, 2e-4; 6 -> 10 modes: 4e-4)."""
+    rad/s, gamma = 0.05) with 10 and 14 loaded modes per k: edges within 1e-5 relative
+    (measured 2e-9: the loaded frequencies are the full model's), widths and growth rates
+    within 1e-3 (measured 1.4e-8; 6 -> 14 modes: 1e-8)."""
     kw = dict(F0=F0_DEFAULT, gamma=0.05, omega_min=15.0, omega_max=50.0, k_min=3, k_max=3,
               damping_ratio=0.0, max_order=1)
     veh = default_size_vehicle()

@@ -335,8 +335,11 @@ def vehicle_region_rows(results: Results) -> list[Row]:
          vr.damping_ratio, "-"),
         ("harmonics k / modes per k (vehicle.n_modes)",
          f"{min(ks)}..{max(ks)} / {', '.join(str(n) for n in n_modes)}" if ks else "none", "-"),
-        ("thrust load distribution", "uniform compression (forward end supported)"
-         if vr.supported_forward_end else "inertia relief (free-free vehicle)", "-"),
+        ("thrust load distribution", {
+            "inertia relief": "inertia relief (free-free vehicle)",
+            "forward support": "uniform compression (forward end supported)",
+            "aft support": "none (the supported aft end takes the thrust)"}[vr.load_path],
+         "-"),
         ("steady thrust F0 / pulsation amplitude gamma", f"{vr.F0:.6g} / {vr.gamma:g}", "N / -"),
         ("regions in the Omega range", len(vr.regions), "-"),
     ]

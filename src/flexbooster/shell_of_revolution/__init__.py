@@ -6,7 +6,7 @@ then:
 * :func:`vehicle_modes` - natural frequencies and labelled mode shapes for k = 0..k_max,
   optionally under the thrust prestress;
 * :func:`system_matrices` - M, K_e, K_g of one harmonic;
-* :func:`modal_system` - the same reduced to the first unloaded modes;
+* :func:`modal_system` - the same reduced to the lowest modes loaded by the thrust;
   :func:`labelled_modal_system` also gives their labels (one eigensolution for both);
 * :func:`buckling_load` - linear buckling load factors of one harmonic.
 

@@ -39,10 +39,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..checks import count
-from .elements import ReferenceElement, einsum, element_matrices, reference_element
+from ..checks import count, finite
+from .elements import einsum, element_matrices, reference_element, theta_weight
 from .geometry import Cylinder, Vehicle
-from .prestress import axial_force, meridional_resultant
+from .mesh import Mesh
+from .prestress import Prestate, load_path, membrane_prestate
 
 __all__ = [
     "DEFAULT_ORDER",
@@ -54,7 +55,11 @@ __all__ = [
     "system_matrices",
     "rigid_body_fields",
     "element_set",
-    "prestress_resultant",
+    "ring_matrix",
+    "node_transform",
+    "thrust_prestate",
+    "HarmonicMatrices",
+    "harmonic_matrices",
 ]
 
 #: Default polynomial degree of the elements.
@@ -67,62 +72,6 @@ GRADING = 2.5
 MAX_ELEMENT_RADII = 3.0
 #: First element at a segment end of the automatic mesh, in units of sqrt(R h) (at p = 6).
 EDGE_ELEMENT = 3.0
-
-
-@dataclass(frozen=True)
-class Mesh:
-    """Elements of the meridian (arrays over the elements, aft to forward).
-
-    Attributes
-    ----------
-    order : int
-        Polynomial degree p (dimensionless).
-    segment : ndarray of int
-        Segment index of each element.
-    s1, x1, r1 : ndarray
-        Meridian coordinate, axial station and radius of each element's aft end (m).
-    length : ndarray
-        Meridian length of each element (m).
-    sin_phi, cos_phi, phi : ndarray
-        Meridian angle (dimensionless; phi in rad) of each element.
-    thickness, E, nu, rho : ndarray
-        Element properties (m, Pa, dimensionless, kg/m^3).
-    elements_per_segment : tuple of int
-        Element count of every segment.
-    dofs : ndarray of int, shape (e, 3 (p + 1))
-        Full DOF index of every element DOF.
-    frame : ndarray, shape (e, 2)
-        Angle (rad) of the node frame at each element's ends (phi: local, 0: global).
-    n_full : int
-        Number of full DOFs.
-    end_nodes : tuple
-        Full DOF index of the first node DOF at the aft end, forward end, and at each
-        junction (aft side, forward side).
-    """
-
-    order: int
-    segment: np.ndarray
-    s1: np.ndarray
-    x1: np.ndarray
-    r1: np.ndarray
-    length: np.ndarray
-    sin_phi: np.ndarray
-    cos_phi: np.ndarray
-    phi: np.ndarray
-    thickness: np.ndarray
-    E: np.ndarray
-    nu: np.ndarray
-    rho: np.ndarray
-    elements_per_segment: tuple
-    dofs: np.ndarray
-    frame: np.ndarray
-    n_full: int
-    end_nodes: tuple
-
-    @property
-    def n_elements(self) -> int:
-        """Number of elements."""
-        return int(self.length.size)
 
 
 def _auto_breaks(seg, meridian: float, order: int) -> np.ndarray:
@@ -368,8 +317,19 @@ def _dof_map(aft_end, fwd_end, junctions, end_nodes, n_full, kc, radii) -> DofMa
     return DofMap(index=index, coef=coef, n=n)
 
 
-def _transform(mesh: Mesh) -> np.ndarray:
-    """Node-frame -> element-local rotation of the (u, w) pairs, shape (e, n_dof, n_dof)."""
+def node_transform(mesh: Mesh) -> np.ndarray:
+    """Node-frame -> element-local rotation of the (u, w) pairs of every element.
+
+    Parameters
+    ----------
+    mesh : Mesh
+        The mesh (its node frames and element meridian angles).
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (e, n_dof, n_dof): element DOFs in the local frame = T @ node-frame DOFs.
+    """
     ne = mesh.n_elements
     nd = mesh.dofs.shape[1]
     T = np.broadcast_to(np.eye(nd), (ne, nd, nd)).copy()
@@ -383,47 +343,39 @@ def _transform(mesh: Mesh) -> np.ndarray:
     return T
 
 
-def _gauss_geometry(mesh: Mesh, ref: ReferenceElement):
-    t = 0.5 * (1.0 + ref.xi)[None, :] * mesh.length[:, None]
-    r = mesh.r1[:, None] + t * mesh.sin_phi[:, None]
-    return t, r
-
-
-def prestress_resultant(mesh: Mesh, F0: float, *, supported_forward_end: bool = False
-                        ) -> np.ndarray:
-    """Membrane prestress N_s^0 at the Gauss points of every element.
+def thrust_prestate(vehicle: Vehicle, mesh: Mesh, F0: float, *,
+                    supported_forward_end: bool | None = None) -> Prestate:
+    """The membrane prestate of the steady thrust F0 at the aft edge (:mod:`.prestress`).
 
     Parameters
     ----------
+    vehicle : Vehicle
+        The vehicle (its ends give the load path).
     mesh : Mesh
         Mesh of the vehicle.
     F0 : float
         Thrust at the aft edge (N).
-    supported_forward_end : bool
-        Uniform compression F0 reacted at the nose instead of inertia relief.
+    supported_forward_end : bool or None
+        Load path (:func:`.prestress.load_path`): None from the ends, True the nose reacts
+        the thrust (uniform compression), False inertia relief.
 
     Returns
     -------
-    ndarray, shape (e, g)
-        N_s^0 (N/m), negative in compression.
+    Prestate
 
     References
     ----------
-    .. [1] Flügge 1973 sec. 2.2.2; see :mod:`.prestress`.
+    .. [1] Flügge 1973 sec. 2.2; see :mod:`.prestress`.
     """
-    ref = reference_element(mesh.order)
+    F0 = finite("prestress_F0", F0)
+    path = load_path(vehicle, supported_forward_end)
     if F0 != 0.0 and np.any(np.abs(mesh.cos_phi) < 1e-12):
         raise ValueError(f"prestress_F0 = {F0!r}: a flat annular plate cannot carry the axial "
                          "force as a membrane (N_s = -F / (2 pi r cos(phi)))")
-    t, r = _gauss_geometry(mesh, ref)
-    force = axial_force(t, F0, r1=mesh.r1, sin_phi=mesh.sin_phi, length=mesh.length,
-                        rho_h=mesh.rho * mesh.thickness,
-                        supported_forward_end=supported_forward_end)
-    return meridional_resultant(force, r, cos_phi=mesh.cos_phi)
+    return membrane_prestate(mesh, path, aft_force=F0)
 
 
-def element_set(vehicle: Vehicle, mesh: Mesh, k: int, *, prestress_F0: float = 0.0,
-                supported_forward_end: bool = False, geometric: bool = False):
+def element_set(vehicle: Vehicle, mesh: Mesh, k: int, *, prestate: Prestate | None = None):
     """Element matrices of harmonic k rotated to the node frames.
 
     Parameters
@@ -434,36 +386,78 @@ def element_set(vehicle: Vehicle, mesh: Mesh, k: int, *, prestress_F0: float = 0
         Mesh of the vehicle.
     k : int
         Circumferential wave number (dimensionless), >= 0.
-    prestress_F0 : float
-        Thrust of the prestress (N).
-    supported_forward_end : bool
-        Uniform compression instead of inertia relief.
-    geometric : bool
-        Also compute K_g.
+    prestate : Prestate, optional
+        Membrane prestate whose element geometric stiffness is wanted (None: no K_g).
 
     Returns
     -------
     M, K_e, K_g : ndarray, shape (e, n_dof, n_dof)
-        Mass (kg), elastic and geometric stiffness (N/m); K_g is None unless ``geometric``.
+        Mass (kg), elastic and geometric stiffness (N/m); K_g is None without ``prestate``
+        (the rings' part is :func:`ring_matrix`).
 
     References
     ----------
     .. [1] Zienkiewicz & Taylor vol. 2, sec. 10.3 (transformation T^T K T).
     """
     ref = reference_element(mesh.order)
-    ns0 = None
-    if geometric:
-        ns0 = prestress_resultant(mesh, prestress_F0,
-                                  supported_forward_end=supported_forward_end)
+    ns0 = nt0 = None
+    if prestate is not None:
+        ns0, nt0 = prestate.meridional, prestate.hoop
     m, ke, kg = element_matrices(ref, k, r1=mesh.r1, length=mesh.length,
                                  sin_phi=mesh.sin_phi, cos_phi=mesh.cos_phi,
                                  thickness=mesh.thickness, E=mesh.E, nu=mesh.nu, rho=mesh.rho,
-                                 theory=vehicle.theory, ns0=ns0)
-    T = _transform(mesh)
+                                 theory=vehicle.theory, ns0=ns0, nt0=nt0)
+    T = node_transform(mesh)
     out = []
     for mat in (m, ke, kg):
         out.append(None if mat is None else einsum("eia,eij,ejb->eab", T, mat, T))
     return tuple(out)
+
+
+def ring_matrix(theory: str, dmap: DofMap, prestate: Prestate, k: int) -> np.ndarray:
+    """Geometric stiffness (N/m) of the prestate's rings for harmonic k, reduced (n, n).
+
+    A ring of radius r and hoop force H has the second-order strain |(du/dl)_perp|^2 / 2 along
+    its circle; with u = (U_x cos k theta, V sin k theta, U_r cos k theta) (global frame)
+
+        K_g,ring = theta_weight(k) (H / r) [c k^2 U_x^2 + (k U_r + c V)^2]
+
+    (c = 1 Sanders, 0 Donnell: no in-plane rotation, no v in the rotations).
+
+    Parameters
+    ----------
+    theory : str
+        ``"sanders"`` or ``"donnell"`` (the vehicle's).
+    dmap : DofMap
+        Constraint map of harmonic k.
+    prestate : Prestate
+        The prestate (its rings).
+    k : int
+        Circumferential wave number (dimensionless), >= 0.
+
+    Returns
+    -------
+    ndarray, shape (n, n)
+
+    References
+    ----------
+    .. [1] Kraus 1967 ch. 2 (ring kinematics of a shell of revolution); Flügge 1973 sec. 2.2
+       (the ring forces of a membrane at a kink of the meridian).
+    """
+    c = 1.0 if theory == "sanders" else 0.0
+    out = np.zeros((dmap.n, dmap.n))
+    for node, frame, rad, hoop in zip(prestate.ring_node, prestate.ring_frame,
+                                      prestate.ring_radius, prestate.ring_force, strict=True):
+        cf, sf = np.cos(frame), np.sin(frame)  # u_x = a cos f - b sin f, u_r = a sin f + b cos f
+        grads = np.array([[c * k * cf, 0.0, -c * k * sf], [k * sf, c, k * cf]])  # (a, v, b)
+        local = theta_weight(k) * hoop / rad * (grads.T @ grads)
+        idx = dmap.index[node:node + 3]
+        cof = dmap.coef[node:node + 3]
+        keep = idx >= 0  # (two DOFs of a bulkhead's edge may share one reduced DOF)
+        sel = idx[keep]
+        vals = (local * cof[:, None] * cof[None, :])[np.ix_(keep, keep)]
+        np.add.at(out, (np.repeat(sel, sel.size), np.tile(sel, sel.size)), vals.ravel())
+    return out
 
 
 def assemble(mesh: Mesh, dmap: DofMap, element: np.ndarray) -> np.ndarray:
@@ -496,9 +490,69 @@ def assemble(mesh: Mesh, dmap: DofMap, element: np.ndarray) -> np.ndarray:
     return 0.5 * (out + out.T)
 
 
+@dataclass(frozen=True)
+class HarmonicMatrices:
+    """The assembled matrices of one harmonic (reduced DOFs) and what they were built from.
+
+    Attributes
+    ----------
+    k : int
+        Circumferential wave number.
+    dmap : DofMap
+        Constraint map.
+    mass, stiffness : ndarray, shape (n, n)
+        M (kg) and K_e (N/m).
+    geometric : ndarray, shape (n, n) or None
+        K_g of the prestate (N/m): elements and rings; None without a prestate.
+    element_stiffness : ndarray, shape (e, n_dof, n_dof)
+        K_e of every element in the node frames (N/m).
+    """
+
+    k: int
+    dmap: DofMap
+    mass: np.ndarray
+    stiffness: np.ndarray
+    geometric: np.ndarray | None
+    element_stiffness: np.ndarray
+
+
+def harmonic_matrices(vehicle: Vehicle, mesh: Mesh, k: int, *,
+                      prestate: Prestate | None = None) -> HarmonicMatrices:
+    """M, K_e and K_g (elements and rings) of harmonic k on a mesh.
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        The vehicle.
+    mesh : Mesh
+        Mesh of the vehicle.
+    k : int
+        Circumferential wave number (dimensionless), 0..200.
+    prestate : Prestate, optional
+        The prestate of K_g (:func:`thrust_prestate`); None: no K_g.
+
+    Returns
+    -------
+    HarmonicMatrices
+
+    References
+    ----------
+    .. [1] Zienkiewicz & Taylor vol. 2, ch. 10; Brush & Almroth 1975 ch. 5.
+    """
+    k = count("k", k, 0, 200)
+    dmap = dof_map(vehicle, mesh, k)
+    m, ke, kg = element_set(vehicle, mesh, k, prestate=prestate)
+    geo = None
+    if prestate is not None:
+        geo = assemble(mesh, dmap, kg) + ring_matrix(vehicle.theory, dmap, prestate, k)
+    return HarmonicMatrices(k=k, dmap=dmap, mass=assemble(mesh, dmap, m),
+                            stiffness=assemble(mesh, dmap, ke), geometric=geo,
+                            element_stiffness=ke)
+
+
 def system_matrices(
     vehicle: Vehicle, k: int, *, prestress_F0: float = 0.0,
-    supported_forward_end: bool = False, elements_per_segment: int | tuple | None = None,
+    supported_forward_end: bool | None = None, elements_per_segment: int | tuple | None = None,
     order: int = DEFAULT_ORDER, mesh: Mesh | None = None,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Global mass, elastic and geometric stiffness for one harmonic k (reduced DOFs).
@@ -511,8 +565,8 @@ def system_matrices(
         Circumferential wave number (dimensionless), 0..200.
     prestress_F0 : float
         Thrust (N) whose steady prestress K_g represents (0: K_g = 0).
-    supported_forward_end : bool
-        Uniform compression F0 reacted at the nose instead of inertia relief.
+    supported_forward_end : bool or None
+        Load path of the thrust (:func:`thrust_prestate`): None from the vehicle's ends.
     elements_per_segment, order : see :func:`mesh_vehicle`.
     mesh : Mesh, optional
         A mesh made by :func:`mesh_vehicle` (overrides the two above).
@@ -530,15 +584,12 @@ def system_matrices(
        moderate-rotation strains: K_g).
     """
     k = count("k", k, 0, 200)
-    F0 = float(prestress_F0)
-    if not np.isfinite(F0):
-        raise ValueError(f"prestress_F0 = {prestress_F0!r}: must be finite")
+    F0 = finite("prestress_F0", prestress_F0)
     if mesh is None:
         mesh = mesh_vehicle(vehicle, elements_per_segment=elements_per_segment, order=order)
-    dmap = dof_map(vehicle, mesh, k)
-    m, ke, kg = element_set(vehicle, mesh, k, prestress_F0=F0,
-                            supported_forward_end=supported_forward_end, geometric=True)
-    return assemble(mesh, dmap, m), assemble(mesh, dmap, ke), assemble(mesh, dmap, kg)
+    pre = thrust_prestate(vehicle, mesh, F0, supported_forward_end=supported_forward_end)
+    h = harmonic_matrices(vehicle, mesh, k, prestate=pre)
+    return h.mass, h.stiffness, h.geometric
 
 
 def rigid_body_fields(mesh: Mesh, k: int) -> np.ndarray:

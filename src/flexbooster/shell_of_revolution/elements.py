@@ -25,11 +25,11 @@ with c = 1 (Sanders) or 0 (Donnell: no v in the rotation, no Phi in the twist); 
 engineering twist 2 kappa_s theta.  Energy densities (Kraus 1967 ch. 3, constitutive law):
 N = A [eps_s, eps_th, gamma], A = E h / (1 - nu^2) [[1, nu, 0], [nu, 1, 0], [0, 0, (1 - nu)/2]],
 M = D [kappa_s, kappa_th, tau], D = E h^3 / (12 (1 - nu^2)) [same].  Mass: rho h (U^2 + V^2 +
-W^2) (consistent, no rotary inertia).  Geometric stiffness of a meridional prestress N_s^0
-(Sanders' moderate-rotation strain eps_s = U' + (beta_s^2 + Phi^2) / 2, beta_s = -W';
-Donnell: eps_s = U' + W'^2 / 2; Brush & Almroth 1975 ch. 5).  The theta integral
-gives the factor pi (k >= 1) or 2 pi (k = 0, where U, W (axisymmetric) and V (torsion)
-decouple).
+W^2) (consistent, no rotary inertia).  Geometric stiffness of the membrane prestress
+N_s^0, N_theta^0 (Sanders' moderate-rotation strains eps_s = U' + (beta_s^2 + Phi^2) / 2,
+eps_theta = ... + (beta_theta^2 + Phi^2) / 2, beta_s = -W', beta_theta = B; Donnell:
+W'^2 / 2 and (k W / r)^2 / 2; Brush & Almroth 1975 ch. 5).  The theta integral gives the
+factor pi (k >= 1) or 2 pi (k = 0, where U, W (axisymmetric) and V (torsion) decouple).
 
 References
 ----------
@@ -53,7 +53,8 @@ from numpy.polynomial import legendre as leg
 
 from ..checks import count
 
-__all__ = ["ReferenceElement", "reference_element", "element_matrices", "theta_weight"]
+__all__ = ["ElementFields", "ReferenceElement", "element_energies", "element_fields",
+           "element_matrices", "reference_element", "theta_weight"]
 
 
 @lru_cache(maxsize=64)
@@ -218,7 +219,33 @@ def _operators(ref: ReferenceElement, length: np.ndarray):
     return U, dU, V, dV, W, dW, d2W
 
 
-def element_matrices(
+@dataclass(frozen=True)
+class ElementFields:
+    """Strain, rotation and displacement operators of all elements at the Gauss points.
+
+    Attributes
+    ----------
+    strains : ndarray, shape (e, g, 6, n_dof)
+        (eps_s, eps_theta, gamma, kappa_s, kappa_theta, tau) of each element DOF.
+    material : ndarray, shape (e, 6, 6)
+        Constitutive matrix diag(A, D) (N/m, N m).
+    displacement : ndarray, shape (e, g, 3, n_dof)
+        (U, V, W).
+    meridional_rotation, hoop_rotation : ndarray, shape (e, g, 2, n_dof)
+        (beta_s, c Phi) and (beta_theta, c Phi): the rotations of the geometric stiffness.
+    volume : ndarray, shape (e, g)
+        Quadrature weight times theta weight times r ds (m^2).
+    """
+
+    strains: np.ndarray
+    material: np.ndarray
+    displacement: np.ndarray
+    meridional_rotation: np.ndarray
+    hoop_rotation: np.ndarray
+    volume: np.ndarray
+
+
+def element_fields(
     ref: ReferenceElement,
     k: int,
     *,
@@ -229,11 +256,9 @@ def element_matrices(
     thickness: np.ndarray,
     E: np.ndarray,
     nu: np.ndarray,
-    rho: np.ndarray,
     theory: str = "sanders",
-    ns0: np.ndarray | None = None,
-) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
-    """Mass, elastic and geometric stiffness of all elements for harmonic k (local DOFs).
+) -> ElementFields:
+    """The operators of :func:`element_matrices` (Sanders or Donnell, module docstring).
 
     Parameters
     ----------
@@ -247,20 +272,14 @@ def element_matrices(
         Meridian length of each element (m), > 0.
     sin_phi, cos_phi : ndarray, shape (e,)
         Meridian angle of each element (dimensionless): dr/ds and dx/ds.
-    thickness, E, nu, rho : ndarray, shape (e,)
-        Wall thickness (m), Young's modulus (Pa), Poisson's ratio (dimensionless), density
-        (kg/m^3).
+    thickness, E, nu : ndarray, shape (e,)
+        Wall thickness (m), Young's modulus (Pa), Poisson's ratio (dimensionless).
     theory : str
         ``"sanders"`` or ``"donnell"``.
-    ns0 : ndarray, shape (e, g), optional
-        Meridional prestress resultant N_s^0 at the Gauss points (N/m, compression < 0).
 
     Returns
     -------
-    mass, stiffness : ndarray, shape (e, n_dof, n_dof)
-        Consistent mass (kg) and elastic stiffness (N/m) in the element DOFs.
-    geometric : ndarray, shape (e, n_dof, n_dof) or None
-        Geometric stiffness (N/m) of ``ns0``; None when ``ns0`` is None.
+    ElementFields
 
     References
     ----------
@@ -292,13 +311,103 @@ def element_matrices(
         mat[:, off, off] = mat[:, off + 1, off + 1] = val
         mat[:, off, off + 1] = mat[:, off + 1, off] = nu * val
         mat[:, off + 2, off + 2] = 0.5 * (1.0 - nu) * val
-    wt = theta_weight(k)
-    dvol = wt * ref.weight[None, :] * jac * r  # (e, g): theta weight * r ds
-    stiff = einsum("egia,eij,egjb,eg->eab", strains, mat, strains, dvol)
-    disp = np.stack([U, V, W], axis=2)
-    mass = einsum("egia,egib,eg->eab", disp, disp, (rho * thickness)[:, None] * dvol)
+    return ElementFields(
+        strains=strains, material=mat, displacement=np.stack([U, V, W], axis=2),
+        meridional_rotation=np.stack([-dW, c * phi_n], axis=2),  # beta_s, Phi (Sanders)
+        hoop_rotation=np.stack([B, c * phi_n], axis=2),  # beta_theta, Phi
+        volume=theta_weight(k) * ref.weight[None, :] * jac * r)  # theta weight * r ds
+
+
+def element_matrices(
+    ref: ReferenceElement,
+    k: int,
+    *,
+    r1: np.ndarray,
+    length: np.ndarray,
+    sin_phi: np.ndarray,
+    cos_phi: np.ndarray,
+    thickness: np.ndarray,
+    E: np.ndarray,
+    nu: np.ndarray,
+    rho: np.ndarray,
+    theory: str = "sanders",
+    ns0: np.ndarray | None = None,
+    nt0: np.ndarray | None = None,
+) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
+    """Mass, elastic and geometric stiffness of all elements for harmonic k (local DOFs).
+
+    Parameters
+    ----------
+    ref, k, r1, length, sin_phi, cos_phi, thickness, E, nu, theory
+        As :func:`element_fields`.
+    rho : ndarray, shape (e,)
+        Density (kg/m^3).
+    ns0, nt0 : ndarray, shape (e, g), optional
+        Meridional and hoop prestress resultants N_s^0, N_theta^0 at the Gauss points (N/m,
+        compression < 0); ``nt0`` None: 0.
+
+    Returns
+    -------
+    mass, stiffness : ndarray, shape (e, n_dof, n_dof)
+        Consistent mass (kg) and elastic stiffness (N/m) in the element DOFs.
+    geometric : ndarray, shape (e, n_dof, n_dof) or None
+        Geometric stiffness (N/m) of the prestress, N_s (beta_s^2 + c Phi^2) +
+        N_theta (beta_theta^2 + c Phi^2); None when ``ns0`` is None.
+
+    References
+    ----------
+    .. [1] Kraus 1967 ch. 2-3; Sanders 1959; Brush & Almroth 1975 ch. 5
+       (see the module docstring).
+    """
+    f = element_fields(ref, k, r1=r1, length=length, sin_phi=sin_phi, cos_phi=cos_phi,
+                       thickness=thickness, E=E, nu=nu, theory=theory)
+    dvol = f.volume
+    stiff = einsum("egia,eij,egjb,eg->eab", f.strains, f.material, f.strains, dvol)
+    mass = einsum("egia,egib,eg->eab", f.displacement, f.displacement,
+                  (rho * thickness)[:, None] * dvol)
     geo = None
     if ns0 is not None:
-        rot = np.stack([-dW, c * phi_n], axis=2)  # beta_s and Phi (Sanders; Brush & Almroth ch. 5)
+        rot = f.meridional_rotation
         geo = einsum("egia,egib,eg->eab", rot, rot, ns0 * dvol)
+        if nt0 is not None:
+            rot = f.hoop_rotation
+            geo = geo + einsum("egia,egib,eg->eab", rot, rot, nt0 * dvol)
     return mass, stiff, geo
+
+
+def element_energies(fields: ElementFields, local: np.ndarray, *,
+                     ns0: np.ndarray | None = None, nt0: np.ndarray | None = None
+                     ) -> np.ndarray:
+    """Twice the strain energy (and the prestress's second-order energy) of displacement
+    fields, summed over the elements from the strains at the Gauss points.
+
+    Computing the strains first keeps the energy of a smooth field accurate to round-off
+    relative to itself: the quadratic form q^T K q of the assembled matrix loses the
+    digits of its large, cancelling membrane terms (Bathe 1996 sec. 10.2.5, Rayleigh
+    quotient).
+
+    Parameters
+    ----------
+    fields : ElementFields
+        From :func:`element_fields`.
+    local : ndarray, shape (m, e, n_dof)
+        Element DOFs (local frame) of m fields.
+    ns0, nt0 : ndarray, shape (e, g), optional
+        Prestress resultants (N/m): adds the geometric energy.
+
+    Returns
+    -------
+    ndarray, shape (m,)
+        q^T K_e q (+ q^T K_g q) of each field (N m for m-valued DOFs).
+
+    References
+    ----------
+    .. [1] K.-J. Bathe, *Finite Element Procedures*, 1996, sec. 10.2.5 (Rayleigh quotient).
+    """
+    eps = np.einsum("egia,mea->megi", fields.strains, local)
+    out = np.einsum("megi,eij,megj,eg->m", eps, fields.material, eps, fields.volume)
+    for rot, res in ((fields.meridional_rotation, ns0), (fields.hoop_rotation, nt0)):
+        if res is not None:
+            val = np.einsum("egia,mea->megi", rot, local)
+            out = out + np.einsum("megi,megi,eg->m", val, val, res * fields.volume)
+    return out

@@ -2,10 +2,13 @@
 
 For each harmonic k the generalised eigenproblem K x = omega^2 M x (or (K_e + K_g) x =
 omega^2 M x with the thrust prestress) is solved densely (``scipy.linalg.eigh``, only the
-eigenpairs wanted).  For k = 0 and k = 1 the rigid-body motions that the constraints admit
-(k = 0: axial translation, rotation about the axis; k = 1: lateral translation, pitch) are
-identified (:func:`~.assembly.rigid_body_fields`, restricted to the admissible subspace) and
-removed exactly: the problem is solved on the M-orthogonal complement of that subspace.
+eigenpairs wanted); the omega^2 returned are the Rayleigh quotients of its eigenvectors, the
+energies summed from the strains at the Gauss points (accurate to round-off relative to
+themselves: monotone under mesh refinement).  For k = 0 and k = 1 the rigid-body motions
+that the constraints admit (k = 0: axial translation, rotation about the axis; k = 1: lateral
+translation, pitch) are identified (:func:`~.assembly.rigid_body_fields`, restricted to the
+admissible subspace) and removed exactly: the problem is solved on the M-orthogonal complement
+of that subspace.
 
 Every mode is labelled: ``k``; ``order``, the number of sign changes along the meridian of
 its dominant component (an SD-SD cylinder mode with m axial half-waves has order m - 1);
@@ -31,16 +34,18 @@ import scipy.linalg as sla
 from ..checks import count, finite, positive
 from .assembly import (
     DEFAULT_ORDER,
+    DofMap,
     Mesh,
-    _transform,
-    assemble,
-    dof_map,
-    element_set,
+    harmonic_matrices,
     mesh_vehicle,
+    node_transform,
     rigid_body_fields,
+    ring_matrix,
+    thrust_prestate,
 )
-from .elements import reference_element
+from .elements import element_energies, element_fields, reference_element
 from .geometry import Vehicle
+from .prestress import Prestate, load_path
 
 __all__ = [
     "MODE_TYPES",
@@ -108,6 +113,8 @@ class VehicleModes:
         ``{k: n}``: number of rigid-body modes found and removed for k = 0 and 1.
     prestress_F0 : float
         Thrust (N) of the prestress (0: unloaded).
+    load_path : str
+        What balances the thrust in the prestress (:data:`~.prestress.LOAD_PATHS`).
     theory : str
         Shell theory.
     elements_per_segment : tuple of int
@@ -131,6 +138,7 @@ class VehicleModes:
     shapes: np.ndarray
     rigid_modes: dict
     prestress_F0: float
+    load_path: str
     theory: str
     elements_per_segment: tuple
     element_order: int
@@ -161,7 +169,8 @@ class VehicleModes:
             "order": self.order.tolist(), "type": self.type.tolist(),
             "segment": self.segment.tolist(), "kinetic_share": self.kinetic_share.tolist(),
             "rigid_modes": {str(key): int(val) for key, val in self.rigid_modes.items()},
-            "prestress_F0": float(self.prestress_F0), "theory": self.theory,
+            "prestress_F0": float(self.prestress_F0), "load_path": self.load_path,
+            "theory": self.theory,
             "elements_per_segment": list(self.elements_per_segment),
             "element_order": int(self.element_order),
             "warnings": [w.to_dict() for w in self.warnings],
@@ -174,38 +183,56 @@ class VehicleModes:
 
 @dataclass(frozen=True)
 class ModalSystem:
-    """Modal matrices of one harmonic: M q'' + (K_e + (T(t)/F0) K_g) q = 0.
+    """One harmonic in the basis of its modes, loaded by the steady thrust F0 (K_e + K_g =
+    diag(omega^2) on the elastic modes) or unloaded (K_e = diag(omega^2)):
+    q'' + (K_e + (T(t)/F0) K_g) q = 0.
 
     Attributes
     ----------
     k : int
         Circumferential wave number.
     omega : ndarray, shape (n,)
-        Unloaded natural frequencies of the basis modes (rad/s).
+        Natural frequencies of the basis modes (rad/s): under the steady thrust F0, or
+        without it for an unloaded basis; 0 for the rigid ones.
+    omega_unloaded : ndarray, shape (n,)
+        The harmonic's lowest natural frequencies without thrust, as many (rad/s; 0 for the
+        rigid motions).
     mass, stiffness, geometric : ndarray, shape (n, n)
-        Modal mass (identity, kg m^0 by mass normalisation), elastic stiffness
-        diag(omega^2) (1/s^2) and geometric stiffness of the thrust F0 (1/s^2).
+        Modal mass (identity: mass-normalised modes), elastic stiffness K_e and geometric
+        stiffness K_g of the thrust F0 (1/s^2); on the elastic modes K_e = diag(omega^2) - K_g
+        (loaded basis) or diag(omega^2) (unloaded); 0 on the rigid ones.
     F0 : float
         Thrust of the prestress (N).
-    aft_axial : ndarray, shape (n,), optional
-        Axial displacement u_x at the aft edge of each (mass-normalised) basis mode (m per
-        sqrt(kg)): the generalised force of an axial ring load F at the aft edge is
-        F * aft_axial (k = 0; for k >= 1 a uniform axial load does no work on the mode).
+    n_rigid : int
+        Rigid-body motions first in the basis (dimensionless; 0 unless asked for).
+    aft_edge : ndarray, shape (n, 4)
+        Displacements (u_x, v, u_r) (m per sqrt(kg)) and meridional rotation chi (rad per
+        sqrt(kg)) of the aft edge in each basis mode (amplitudes of cos, sin, cos k theta).
     """
 
     k: int
     omega: np.ndarray
+    omega_unloaded: np.ndarray
     mass: np.ndarray
     stiffness: np.ndarray
     geometric: np.ndarray
     F0: float
-    aft_axial: np.ndarray | None = None
+    n_rigid: int
+    aft_edge: np.ndarray
+
+    @property
+    def aft_axial(self) -> np.ndarray:
+        """u_x at the aft edge of each basis mode (m per sqrt(kg)): the generalised force of an
+        axial ring load F there is F * aft_axial (k = 0)."""
+        return self.aft_edge[:, 0]
 
     def to_dict(self) -> dict:
         """JSON-ready mapping."""
-        return {"k": self.k, "omega": self.omega.tolist(), "mass": self.mass.tolist(),
+        return {"k": self.k, "omega": self.omega.tolist(),
+                "omega_unloaded": self.omega_unloaded.tolist(), "mass": self.mass.tolist(),
                 "stiffness": self.stiffness.tolist(), "geometric": self.geometric.tolist(),
-                "F0": float(self.F0)}
+                "F0": float(self.F0), "n_rigid": int(self.n_rigid),
+                "aft_edge": self.aft_edge.tolist()}
 
 
 @dataclass(frozen=True)
@@ -247,13 +274,21 @@ class _Harmonic:
     """Matrices of one harmonic, with the rigid-free basis Q (None: no rigid motions)."""
 
     k: int
+    mesh: Mesh
+    theory: str
+    prestate: Prestate | None
     M: np.ndarray
     K: np.ndarray
     G: np.ndarray | None
     Q: np.ndarray | None
-    dmap: object
+    R: np.ndarray
+    dmap: DofMap
     elem_k: np.ndarray
-    n_rigid: int
+
+    @property
+    def n_rigid(self) -> int:
+        """Admissible rigid-body motions (dimensionless)."""
+        return int(self.R.shape[1])
 
 
 def _rigid_subspace(mesh: Mesh, dmap, k: int) -> np.ndarray:
@@ -278,20 +313,19 @@ def _rigid_subspace(mesh: Mesh, dmap, k: int) -> np.ndarray:
     return (null @ red).T
 
 
-def _harmonic(vehicle: Vehicle, mesh: Mesh, k: int, *, F0: float, supported: bool,
+def _harmonic(vehicle: Vehicle, mesh: Mesh, k: int, *, F0: float, supported: bool | None,
               geometric: bool) -> _Harmonic:
-    dmap = dof_map(vehicle, mesh, k)
-    m, ke, kg = element_set(vehicle, mesh, k, prestress_F0=F0,
-                            supported_forward_end=supported, geometric=geometric)
-    M = assemble(mesh, dmap, m)
-    K = assemble(mesh, dmap, ke)
-    G = None if kg is None else assemble(mesh, dmap, kg)
+    pre = thrust_prestate(vehicle, mesh, F0, supported_forward_end=supported) if geometric \
+        else None
+    hm = harmonic_matrices(vehicle, mesh, k, prestate=pre)
+    M, K, G, dmap, ke = hm.mass, hm.stiffness, hm.geometric, hm.dmap, hm.element_stiffness
     R = _rigid_subspace(mesh, dmap, k)
     Q = None
     if R.shape[1]:
         q_full, _ = np.linalg.qr(M @ R, mode="complete")
         Q = q_full[:, R.shape[1]:]  # Q^T M R = 0: the M-orthogonal complement (Bathe 10.2)
-    return _Harmonic(k=k, M=M, K=K, G=G, Q=Q, dmap=dmap, elem_k=ke, n_rigid=R.shape[1])
+    return _Harmonic(k=k, mesh=mesh, theory=vehicle.theory, prestate=pre, M=M, K=K, G=G, Q=Q,
+                     R=R, dmap=dmap, elem_k=ke)
 
 
 def _project(h: _Harmonic, mat: np.ndarray) -> np.ndarray:
@@ -318,8 +352,11 @@ def _none_below(stiff: np.ndarray, mass: np.ndarray, w2: float) -> bool:
     return True
 
 
-def _solve(h: _Harmonic, stiff: np.ndarray, *, n_modes: int | None, w2_max: float | None):
-    """Lowest eigenpairs (omega^2, reduced vectors (n, m)) of stiff x = omega^2 M x."""
+def _solve(h: _Harmonic, *, loaded: bool, n_modes: int | None, w2_max: float | None):
+    """Lowest eigenpairs (omega^2, reduced vectors (n, m), M-orthonormal) of K_e x = omega^2
+    M x, or of (K_e + K_g) x = omega^2 M x when ``loaded``, on the complement of the rigid
+    motions; omega^2 are the Rayleigh quotients of the vectors (:func:`_rayleigh`)."""
+    stiff = h.K + h.G if loaded else h.K
     if n_modes is None and w2_max is not None and h.Q is None and _none_below(
             stiff, h.M, w2_max):
         return np.zeros(0), np.zeros((stiff.shape[0], 0))
@@ -346,15 +383,46 @@ def _solve(h: _Harmonic, stiff: np.ndarray, *, n_modes: int | None, w2_max: floa
     vecs = vecs * scale[:, None]
     if h.Q is not None:
         vecs = h.Q @ vecs
+    if vals.size:
+        vals = _rayleigh(h, vecs, loaded=loaded)
+        order = np.argsort(vals, kind="stable")
+        vals, vecs = vals[order], vecs[:, order]
     return vals, vecs
+
+
+def _local(mesh: Mesh, dmap: DofMap, vecs: np.ndarray) -> np.ndarray:
+    """Element DOFs in the element frames of reduced vectors (n, m): shape (m, e, n_dof)."""
+    q = dmap.expand(vecs.T)[:, mesh.dofs]
+    return np.einsum("eij,mej->mei", node_transform(mesh), q)
+
+
+def _rayleigh(h: _Harmonic, vecs: np.ndarray, *, loaded: bool) -> np.ndarray:
+    """Rayleigh quotients (1/s^2) of reduced vectors (n, m): the strain energy (and the
+    prestate's) summed from the strains at the Gauss points over x^T M x.
+
+    The eigenvalues of the dense solver carry an absolute error of round-off times the
+    largest eigenvalue (1e-6 relative on the lowest ones of a fine mesh); the quotient of a
+    computed eigenvector is accurate to round-off relative to itself and, the error being
+    quadratic in the vector's, an upper bound of the mesh's eigenvalue (Bathe 1996,
+    sec. 10.2.5): refinement lowers it monotonically."""
+    mesh = h.mesh
+    fields = element_fields(reference_element(mesh.order), h.k, r1=mesh.r1,
+                            length=mesh.length, sin_phi=mesh.sin_phi, cos_phi=mesh.cos_phi,
+                            thickness=mesh.thickness, E=mesh.E, nu=mesh.nu, theory=h.theory)
+    pre = h.prestate if loaded else None
+    energy = element_energies(fields, _local(mesh, h.dmap, vecs),
+                              ns0=None if pre is None else pre.meridional,
+                              nt0=None if pre is None else pre.hoop)
+    if pre is not None and pre.ring_node.size:
+        ring = ring_matrix(h.theory, h.dmap, pre, h.k)
+        energy = energy + np.einsum("am,ab,bm->m", vecs, ring, vecs)
+    return energy / np.einsum("am,ab,bm->m", vecs, h.M, vecs)
 
 
 def _sample(mesh: Mesh, dmap, vecs: np.ndarray, xi: np.ndarray):
     """Local (U, V, W) of reduced vectors (n, m) at points xi of every element: (m, 3, e, q)."""
     ref = reference_element(mesh.order)
-    full = dmap.expand(vecs.T)  # (m, n_full)
-    q = full[:, mesh.dofs]  # (m, e, nd)
-    q = np.einsum("eij,mej->mei", _transform(mesh), q)
+    q = _local(mesh, dmap, vecs)
     nuv, nw = ref.evaluate(xi)
     scale = np.ones((mesh.n_elements, ref.iw.size))
     scale[:, ref.slope] = 0.5 * mesh.length[:, None]
@@ -423,11 +491,12 @@ def vehicle_modes(
     n_modes: int | None = None,
     band_factor: float = BAND_FACTOR,
     prestress_F0: float = 0.0,
-    supported_forward_end: bool = False,
+    supported_forward_end: bool | None = None,
     elements_per_segment: int | tuple | None = None,
     order: int = DEFAULT_ORDER,
     points_per_element: int = 9,
     tolerance: float | None = None,
+    refinement: int = 1,
 ) -> VehicleModes:
     """Natural frequencies and labelled mode shapes for k = k_min..k_max.
 
@@ -449,8 +518,9 @@ def vehicle_modes(
     prestress_F0 : float
         Thrust (N) of the steady prestress (0: unloaded); the frequencies are those of
         K_e + K_g(F0).
-    supported_forward_end : bool
-        Prestress as uniform compression F0 reacted at the nose.
+    supported_forward_end : bool or None
+        Load path of the thrust (:func:`~.assembly.thrust_prestate`): None from the ends,
+        True uniform compression reacted at the nose, False inertia relief.
     elements_per_segment, order : see :func:`~.assembly.mesh_vehicle`.
     points_per_element : int
         Shape samples per element (dimensionless), 2..50.
@@ -458,6 +528,9 @@ def vehicle_modes(
         Target relative accuracy (dimensionless), 1e-9..0.1: the mesh is refined (every
         element split in 2, 4, 8) until no returned frequency changes by more than this;
         the finer result is returned (``ValueError`` if not reached at 8).
+    refinement : int
+        Split every element of the mesh into this many equal ones first (dimensionless),
+        1..64 (nested meshes: :func:`~.assembly.mesh_vehicle`).
 
     Returns
     -------
@@ -479,16 +552,18 @@ def vehicle_modes(
     points_per_element = count("points_per_element", points_per_element, 2, 50)
     opts = dict(k_min=k_min, k_max=k_max, f_max=f_max, n_modes=n_modes, band_factor=band_factor,
                 F0=F0, supported=supported_forward_end, points_per_element=points_per_element)
+    refinement = count("refinement", refinement, 1, 64)
     if tolerance is None:
-        mesh = mesh_vehicle(vehicle, elements_per_segment=elements_per_segment, order=order)
+        mesh = mesh_vehicle(vehicle, elements_per_segment=elements_per_segment, order=order,
+                            refinement=refinement)
         return _modes_on_mesh(vehicle, mesh, **opts)
     tolerance = positive("tolerance", tolerance)
     if not 1e-9 <= tolerance <= 0.1:
         raise ValueError(f"tolerance = {tolerance!r}: must be in [1e-9, 0.1]")
     previous, change = None, np.inf
-    for refinement in (1, 2, 4, 8):
+    for split in (1, 2, 4, 8):
         mesh = mesh_vehicle(vehicle, elements_per_segment=elements_per_segment, order=order,
-                            refinement=refinement)
+                            refinement=split * refinement)
         current = _modes_on_mesh(vehicle, mesh, **opts)
         if previous is not None:
             change = _max_change(previous, current)
@@ -512,7 +587,7 @@ def _max_change(coarse: VehicleModes, fine: VehicleModes) -> float:
 
 def _modes_on_mesh(vehicle: Vehicle, mesh: Mesh, *, k_min: int, k_max: int,
                    f_max: float | None, n_modes: int | None, band_factor: float, F0: float,
-                   supported: bool, points_per_element: int) -> VehicleModes:
+                   supported: bool | None, points_per_element: int) -> VehicleModes:
     """The work of :func:`vehicle_modes` on one mesh (arguments already checked)."""
     supported_forward_end = supported
     loaded = F0 != 0.0
@@ -525,16 +600,15 @@ def _modes_on_mesh(vehicle: Vehicle, mesh: Mesh, *, k_min: int, k_max: int,
     for kk in ks:
         h = _harmonic(vehicle, mesh, kk, F0=F0, supported=supported_forward_end,
                       geometric=loaded)
-        stiff = h.K + h.G if loaded else h.K
         if band and w2_bound is None:
-            vals, vecs = _solve(h, stiff, n_modes=min(12, stiff.shape[0]), w2_max=None)
+            vals, vecs = _solve(h, loaded=loaded, n_modes=min(12, h.M.shape[0]), w2_max=None)
             positive_vals = vals[vals > 0]
             if positive_vals.size:
                 w2_bound = band_factor**2 * positive_vals[0]
                 if vals[-1] < w2_bound:
-                    vals, vecs = _solve(h, stiff, n_modes=None, w2_max=w2_bound)
+                    vals, vecs = _solve(h, loaded=loaded, n_modes=None, w2_max=w2_bound)
         else:
-            vals, vecs = _solve(h, stiff, n_modes=n_modes, w2_max=w2_bound)
+            vals, vecs = _solve(h, loaded=loaded, n_modes=n_modes, w2_max=w2_bound)
         if band and vals.size and vals[0] > 0:
             w2_bound = min(w2_bound, band_factor**2 * vals[0])
         results[kk] = (h, vals, vecs)
@@ -567,7 +641,8 @@ def _modes_on_mesh(vehicle: Vehicle, mesh: Mesh, *, k_min: int, k_max: int,
                         order=cat[2].astype(int), type=cat[3].astype(str),
                         segment=cat[4].astype(int), kinetic_share=cat[5], s=s_pts, x=x_pts,
                         r=r_pts, shapes=cat[6], rigid_modes=rigid, prestress_F0=F0,
-                        theory=vehicle.theory, elements_per_segment=mesh.elements_per_segment,
+                        load_path=load_path(vehicle, supported), theory=vehicle.theory,
+                        elements_per_segment=mesh.elements_per_segment,
                         element_order=mesh.order, warnings=vehicle.warnings)
 
 
@@ -586,10 +661,16 @@ def _check_finite(*arrays: np.ndarray) -> None:
 
 def modal_system(
     vehicle: Vehicle, k: int, n_modes: int, F0: float, *,
-    supported_forward_end: bool = False, elements_per_segment: int | tuple | None = None,
-    order: int = DEFAULT_ORDER,
+    supported_forward_end: bool | None = None, rigid: bool = False, loaded: bool = True,
+    elements_per_segment: int | tuple | None = None, order: int = DEFAULT_ORDER,
 ) -> ModalSystem:
-    """Modal M, K_e, K_g of harmonic k in the basis of its first n_modes unloaded modes.
+    """Harmonic k in the basis of its lowest n_modes modes loaded by the steady thrust F0.
+
+    In the loaded modes the steady part is exact (diag(omega^2)) and the pulsating part's
+    own-mode terms, which set the first-order widths of the parametric regions, are those of
+    the full model whatever n_modes; the basis size only enters through the couplings.
+    ``loaded=False``: the unloaded modes instead (a basis for a thrust whose conservative
+    part alone would buckle the harmonic, as the follower thrust's k = 1).
 
     Parameters
     ----------
@@ -598,13 +679,17 @@ def modal_system(
     k : int
         Circumferential wave number (dimensionless), 0..200.
     n_modes : int
-        Number of unloaded elastic modes in the basis (dimensionless), 1..2000 (rigid-body
-        modes excluded).
+        Modes in the basis (dimensionless), 1..2000 (the rigid ones included with
+        ``rigid``).
     F0 : float
-        Thrust (N) whose prestress K_g represents; the periodic problem is
-        q'' + (K_e + (T(t)/F0) K_g) q = 0.
-    supported_forward_end : bool
-        Uniform compression F0 reacted at the nose instead of inertia relief.
+        Thrust (N) of the prestress; the periodic problem is q'' + (K_e + (T(t)/F0) K_g) q = 0.
+    supported_forward_end : bool or None
+        Load path of the thrust (:func:`~.assembly.thrust_prestate`): None from the ends.
+    rigid : bool
+        Put the admissible rigid-body motions (k = 0, 1) first in the basis, M-orthonormal;
+        otherwise the basis is their M-orthogonal complement.
+    loaded : bool
+        Elastic basis modes of K_e + K_g (True) or of K_e.
     elements_per_segment, order : see :func:`~.assembly.mesh_vehicle`.
 
     Returns
@@ -617,20 +702,21 @@ def modal_system(
        reduction of parametrically loaded systems).
     """
     return labelled_modal_system(vehicle, k, n_modes, F0,
-                                 supported_forward_end=supported_forward_end,
-                                 elements_per_segment=elements_per_segment, order=order)[0]
+                                 supported_forward_end=supported_forward_end, rigid=rigid,
+                                 loaded=loaded, elements_per_segment=elements_per_segment,
+                                 order=order)[0]
 
 
 def labelled_modal_system(
     vehicle: Vehicle, k: int, n_modes: int, F0: float, *,
-    supported_forward_end: bool = False, elements_per_segment: int | tuple | None = None,
-    order: int = DEFAULT_ORDER,
+    supported_forward_end: bool | None = None, rigid: bool = False, loaded: bool = True,
+    elements_per_segment: int | tuple | None = None, order: int = DEFAULT_ORDER,
 ) -> tuple[ModalSystem, Callable[[], tuple[np.ndarray, np.ndarray]]]:
-    """:func:`modal_system` and the labels of its basis modes (mode order and type).
+    """:func:`modal_system` and the labels of its elastic basis modes (order and type).
 
     Parameters
     ----------
-    vehicle, k, n_modes, F0, supported_forward_end, elements_per_segment, order
+    vehicle, k, n_modes, F0, supported_forward_end, rigid, loaded, elements_per_segment, order
         As :func:`modal_system`.
 
     Returns
@@ -638,10 +724,9 @@ def labelled_modal_system(
     ModalSystem
         As :func:`modal_system` returns it.
     labels : callable
-        labels() -> (order, type), each shape (n,): the labels of the basis modes, those
-        that ``vehicle_modes(vehicle, k_min=k, k_max=k, n_modes=n_modes,
-        elements_per_segment=..., order=...)`` gives (the same unloaded eigenproblem, solved
-        once), with its errors; called when needed (after the caller's own checks).
+        labels() -> (order, type), each shape (n - n_rigid,): the labels of the elastic basis
+        modes (as :func:`vehicle_modes` labels a mode), with its errors (an omega^2 <= 0
+        raises); called when needed (after the caller's own checks).
 
     References
     ----------
@@ -653,21 +738,40 @@ def labelled_modal_system(
     n_modes = count("n_modes", n_modes, 1, 2000)
     mesh = mesh_vehicle(vehicle, elements_per_segment=elements_per_segment, order=order)
     h = _harmonic(vehicle, mesh, k, F0=F0, supported=supported_forward_end, geometric=True)
-    vals, vecs = _solve(h, h.K, n_modes=n_modes, w2_max=None)
-    if vals.size < n_modes:
-        raise ValueError(f"n_modes = {n_modes}: the mesh has only {vals.size} modes for k = {k}")
-    kg = vecs.T @ h.G @ vecs
-    # the vehicle's end nodes carry global-frame DOFs (a = u_x, v, b = u_r, chi)
-    aft = h.dmap.expand(vecs.T)[:, mesh.end_nodes[0]]
-    ms = ModalSystem(k=k, omega=np.sqrt(np.maximum(vals, 0.0)), mass=vecs.T @ h.M @ vecs,
-                     stiffness=vecs.T @ h.K @ vecs, geometric=0.5 * (kg + kg.T), F0=F0,
-                     aft_axial=aft)
+    n_rigid = h.n_rigid if rigid else 0
+    n_elastic = n_modes - n_rigid
+    if n_elastic < 0:
+        raise ValueError(f"n_modes = {n_modes}: fewer than the {n_rigid} rigid modes of k = {k}")
+    vals, vecs = np.zeros(0), np.zeros((h.M.shape[0], 0))
+    unloaded = np.zeros(0)
+    if n_elastic:
+        vals, vecs = _solve(h, loaded=loaded, n_modes=n_elastic, w2_max=None)
+        unloaded = _solve(h, loaded=False, n_modes=n_elastic, w2_max=None)[0] if loaded \
+            else vals
+    if vals.size < n_elastic:
+        raise ValueError(f"n_modes = {n_modes}: the mesh has only {vals.size + n_rigid} modes "
+                         f"for k = {k}")
+    basis = vecs
+    if n_rigid:  # M-orthonormal rigid motions, M-orthogonal to the elastic modes
+        chol = np.linalg.cholesky(h.R.T @ h.M @ h.R)
+        basis = np.hstack([np.linalg.solve(chol, h.R.T).T, vecs])
+    kg = basis.T @ h.G @ basis
+    kg = 0.5 * (kg + kg.T)
+    stiff = np.zeros_like(kg)
+    el = slice(n_rigid, None)
+    stiff[el, el] = np.diag(vals) - (kg[el, el] if loaded else 0.0)  # V^T K_e V, no round-off
+    node, frame = mesh.end_nodes[0], mesh.frame[0, 0]
+    a, v, b, chi = h.dmap.expand(basis.T)[:, node:node + 4].T
+    aft = np.stack([a * np.cos(frame) - b * np.sin(frame), v,
+                    a * np.sin(frame) + b * np.cos(frame), chi], axis=1)  # global frame
+    zeros = np.zeros(n_rigid)
+    ms = ModalSystem(k=k, omega=np.concatenate([zeros, np.sqrt(np.maximum(vals, 0.0))]),
+                     omega_unloaded=np.concatenate([zeros, np.sqrt(np.maximum(unloaded, 0.0))]),
+                     mass=np.eye(n_modes), stiffness=stiff, geometric=kg, F0=F0,
+                     n_rigid=n_rigid, aft_edge=aft)
 
     def labels() -> tuple[np.ndarray, np.ndarray]:
-        # vehicle_modes solves K_e x = omega^2 M x (F0 = 0) on the same mesh: h.M, h.K and
-        # the element K_e are those of the prestressed harmonic (K_g apart), so are its
-        # eigenpairs (vals, vecs)
-        _check_positive(vals, 0.0, k)
+        _check_positive(vals, F0 if loaded else 0.0, k)
         share, _, ordr, names, sh = _labels(mesh, h, vecs, k, _LABEL_POINTS)
         _check_finite(np.sqrt(vals), share, sh)
         return ordr, names
@@ -677,7 +781,7 @@ def labelled_modal_system(
 
 def buckling_load(
     vehicle: Vehicle, k: int, *, F0: float = 1.0, n_modes: int = 1,
-    supported_forward_end: bool = False, elements_per_segment: int | tuple | None = None,
+    supported_forward_end: bool | None = None, elements_per_segment: int | tuple | None = None,
     order: int = DEFAULT_ORDER, points_per_element: int = 9,
 ) -> BucklingLoad:
     """Linear buckling load factors of harmonic k: K_e x = -lambda K_g(F0) x.
@@ -692,8 +796,8 @@ def buckling_load(
         Reference thrust (N), > 0.
     n_modes : int
         Number of load factors returned (dimensionless), 1..200.
-    supported_forward_end : bool
-        Uniform compression F0 reacted at the nose instead of inertia relief.
+    supported_forward_end : bool or None
+        Load path of the thrust (:func:`~.assembly.thrust_prestate`): None from the ends.
     elements_per_segment, order : see :func:`~.assembly.mesh_vehicle`.
     points_per_element : int
         Shape samples per element (dimensionless), 2..50.

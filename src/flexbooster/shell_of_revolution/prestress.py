@@ -1,114 +1,218 @@
-"""Steady meridional prestress of a vehicle accelerated by its thrust (inertia relief).
+"""The axisymmetric membrane prestate of a vehicle under its thrust and other axisymmetric loads.
 
-A free-free vehicle driven by the thrust F0 at its aft edge accelerates at F0 / m_total; the
-axial force carried at a station is what accelerates the mass ahead of it,
+A load case is the axial force ``aft_force`` on the aft edge plus surface loads per unit area
+at the Gauss points, p_x (axial, + forward) and p_r (radial, + outward); a pressure p on a
+segment of meridian angle phi is p_x = -p sin(phi), p_r = p cos(phi).  The load path
+(:data:`LOAD_PATHS`, :func:`load_path`) decides what balances them:
 
-    F(s) = F0 m_ahead(s) / m_total          (F0 at the aft edge, 0 at the nose),
+* ``"inertia relief"`` (no end restrains the axial motion): the vehicle accelerates at
+  a = P / m (P the net applied axial force, m the shell mass), which adds the body load
+  p_x = -rho h a;
+* ``"forward support"`` (a hinged or clamped forward end): the nose reacts P, no acceleration;
+* ``"aft support"`` (a hinged or clamped aft end): the aft support reacts P; the thrust, applied
+  at the supported edge, goes into the support.
 
-and per unit circumference of a cone of meridian angle phi (membrane state)
+The membrane state of a shell of revolution is then statically determinate (Flügge 1973,
+sec. 2.2): the axial force carried at a station (compression > 0),
 
-    N_s^0(s) = -F(s) / (2 pi r(s) cos(phi)).
+    F(s) = F(0) + int_0^s 2 pi r p_x ds',      F(0) = aft_force (or the aft reaction),
 
-With ``supported_forward_end`` the force is uniform, F(s) = F0 (thrust reacted at the nose).
-Neglected: the hoop resultant N_theta^0 that the axial inertia load induces on cones (its normal
-component), and the bending boundary layers of the prestate at junctions (membrane prestate).
+gives the meridional resultant N_s = -F / (2 pi r cos(phi)), the normal equilibrium
+(1/R_s = 0) the hoop resultant N_theta = r p_n / cos(phi), p_n = -p_x sin(phi) + p_r cos(phi);
+the meridional equilibrium d(r N_s)/ds = N_theta sin(phi) - r p_s then holds identically.
+Where the meridian turns (a junction between segments of different phi, or an end of a cone)
+the meridional forces leave a radial resultant that a ring carries as the hoop force
+
+    H = r (N_s^fwd sin(phi_fwd) - N_s^aft sin(phi_aft))      (N, tension > 0)
+
+(a continuous junction: one ring; a bulkhead or an end: a ring at each shell edge).  Every
+geometric stiffness K_g of the package is built from (N_s, N_theta, H) (``assembly``).
 
 References
 ----------
-.. [1] D. O. Brush, B. O. Almroth, *Buckling of Bars, Plates and Shells*, 1975, sec. 5.3
-   (membrane prebuckling state of an axially loaded shell).
-.. [2] W. Flügge, *Stresses in Shells*, 2nd ed., 1973, sec. 2.2.2 (membrane forces of a cone
-   under axial load: N_s = -P / (2 pi r cos(phi)), N_theta = 0).
+.. [1] W. Flügge, *Stresses in Shells*, 2nd ed., Springer, 1973, sec. 2.2 (membrane forces of
+   shells of revolution under axisymmetric loads; cones: N_s = -F / (2 pi r cos(phi))).
+.. [2] D. O. Brush, B. O. Almroth, *Buckling of Bars, Plates and Shells*, 1975, sec. 5.3
+   (membrane prebuckling state).
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+from functools import lru_cache
+from typing import TYPE_CHECKING
+
 import numpy as np
+from numpy.polynomial import legendre as leg
 
 from ..checks import finite, finite_array
+from .elements import reference_element
+from .mesh import Mesh
 
-__all__ = ["axial_force", "meridional_resultant"]
+if TYPE_CHECKING:
+    from .geometry import Vehicle
+
+__all__ = ["AXIAL_SUPPORTS", "LOAD_PATHS", "Prestate", "load_path", "membrane_prestate"]
+
+#: End conditions that restrain the axial motion of an edge (u = 0).
+AXIAL_SUPPORTS = ("hinged", "clamped")
+#: What balances the axial loads (see the module docstring).
+LOAD_PATHS = ("inertia relief", "forward support", "aft support")
 
 
-def _mass_behind(r1, sin_phi, length, rho_h, t):
-    """Shell mass (kg) between each element's aft end and the local coordinate t (m)."""
-    return 2.0 * np.pi * rho_h * (r1 * t + 0.5 * sin_phi * t**2)  # int 2 pi rho h r ds
-
-
-def axial_force(
-    t: np.ndarray, F0: float, *, r1: np.ndarray, sin_phi: np.ndarray, length: np.ndarray,
-    rho_h: np.ndarray, supported_forward_end: bool = False,
-) -> np.ndarray:
-    """Axial compressive force F(s) (N) at points t (m) inside every element.
+def load_path(vehicle: Vehicle, supported_forward_end: bool | None = None) -> str:
+    """The load path of the thrust: from the end conditions, or as given.
 
     Parameters
     ----------
-    t : ndarray, shape (e, g)
-        Meridian distance of the points from each element's aft end (m).
-    F0 : float
-        Thrust at the aft edge (N).
-    r1 : ndarray, shape (e,)
-        Radius at each element's aft end (m).
-    sin_phi : ndarray, shape (e,)
-        dr/ds of each element (dimensionless).
-    length : ndarray, shape (e,)
-        Meridian length of each element (m); the elements are ordered aft to forward.
-    rho_h : ndarray, shape (e,)
-        Mass per unit area rho h (kg/m^2).
-    supported_forward_end : bool
-        Uniform F = F0 (reacted at the nose) instead of inertia relief.
+    vehicle : Vehicle
+        The vehicle (its ``aft_end`` and ``fwd_end``).
+    supported_forward_end : bool or None
+        None: from the ends (an aft end in :data:`AXIAL_SUPPORTS`: ``"aft support"``; else a
+        forward end in it: ``"forward support"``; else ``"inertia relief"``).  True: the nose
+        reacts the thrust as a dead load whatever the ends (``"forward support"``, the
+        classical uniformly compressed shell); False: ``"inertia relief"``.
 
     Returns
     -------
-    ndarray, shape (e, g)
-        F(s) (N), positive in compression.
-
-    References
-    ----------
-    .. [1] Brush & Almroth 1975, ch. 5; Newton's second law for the mass ahead of s.
+    str
+        One of :data:`LOAD_PATHS`.
     """
-    F0 = finite("F0", F0)
-    t = finite_array("t", t)
-    r1, sin_phi = finite_array("r1", r1), finite_array("sin_phi", sin_phi)
-    length = finite_array("length", length, positive=True)
-    rho_h = finite_array("rho_h", rho_h, positive=True)
-    if supported_forward_end:
-        return np.full(t.shape, F0)
-    elem_mass = _mass_behind(r1, sin_phi, length, rho_h, length)
-    before = np.concatenate(([0.0], np.cumsum(elem_mass)[:-1]))
-    total = elem_mass.sum()
-    behind = before[:, None] + _mass_behind(r1[:, None], sin_phi[:, None], length[:, None],
-                                            rho_h[:, None], t)
-    return F0 * (total - behind) / total  # F = F0 m_ahead / m_total (inertia relief)
+    if supported_forward_end is not None:
+        if not isinstance(supported_forward_end, bool | np.bool_):
+            raise ValueError(f"supported_forward_end = {supported_forward_end!r}: must be "
+                             "None or a bool")
+        return "forward support" if supported_forward_end else "inertia relief"
+    if vehicle.aft_end in AXIAL_SUPPORTS:
+        return "aft support"
+    return "forward support" if vehicle.fwd_end in AXIAL_SUPPORTS else "inertia relief"
 
 
-def meridional_resultant(force: np.ndarray, r: np.ndarray, *, cos_phi: np.ndarray
-                         ) -> np.ndarray:
-    """Membrane prestress N_s^0 = -F / (2 pi r cos(phi)) (N/m, compression negative).
+@dataclass(frozen=True)
+class Prestate:
+    """Membrane prestate of a vehicle: resultants at the Gauss points, ring forces at nodes.
 
-    Parameters
+    Attributes
     ----------
+    load_path : str
+        One of :data:`LOAD_PATHS`.
     force : ndarray, shape (e, g)
-        Axial compressive force (N).
-    r : ndarray, shape (e, g)
-        Radius at the points (m), > 0.
-    cos_phi : ndarray, shape (e,)
-        dx/ds of each element (dimensionless), nonzero.
+        Axial force carried by the shell, compression positive (N).
+    meridional, hoop : ndarray, shape (e, g)
+        N_s and N_theta (N/m, tension positive).
+    ring_node : ndarray of int, shape (m,)
+        Full DOF index of the first DOF of each ring's node.
+    ring_frame : ndarray, shape (m,)
+        Angle of that node's frame (rad): 0 for global (u_x, v, u_r, chi), phi for local.
+    ring_radius : ndarray, shape (m,)
+        Radius of each ring (m).
+    ring_force : ndarray, shape (m,)
+        Hoop force H of each ring (N, tension positive).
+    """
+
+    load_path: str
+    force: np.ndarray
+    meridional: np.ndarray
+    hoop: np.ndarray
+    ring_node: np.ndarray
+    ring_frame: np.ndarray
+    ring_radius: np.ndarray
+    ring_force: np.ndarray
+
+
+@lru_cache(maxsize=16)
+def _cumulative(order: int) -> np.ndarray:
+    """(g, g) matrix S: int_{-1}^{xi_i} f dxi = S @ f(xi) for f of degree < g at the Gauss
+    points of ``reference_element(order)`` (exact for those polynomials)."""
+    xi = reference_element(order).xi
+    coef = np.linalg.inv(leg.legvander(xi, xi.size - 1))  # Lagrange basis at the points
+    out = leg.legval(xi, leg.legint(coef, lbnd=-1.0)).T
+    out.setflags(write=False)
+    return out
+
+
+def membrane_prestate(mesh: Mesh, path: str, *, aft_force: float,
+                      axial: np.ndarray | None = None, radial: np.ndarray | None = None
+                      ) -> Prestate:
+    """Membrane resultants and ring forces of one axisymmetric load case (module docstring).
+
+    Parameters
+    ----------
+    mesh : Mesh
+        Mesh of the vehicle (:func:`~.assembly.mesh_vehicle`).
+    path : str
+        Load path, one of :data:`LOAD_PATHS`.
+    aft_force : float
+        Axial force on the aft edge (N), forward positive (the thrust F0).
+    axial, radial : ndarray, shape (e, g), optional
+        Surface loads p_x, p_r at the Gauss points (Pa); integrated as the polynomials of
+        degree < g through those values.
 
     Returns
     -------
-    ndarray, shape (e, g)
-        N_s^0 (N/m).
+    Prestate
+
+    Raises
+    ------
+    ValueError
+        A flat annular plate (cos(phi) = 0) under a load (no membrane state), or bad input.
 
     References
     ----------
-    .. [1] Flügge 1973, sec. 2.2.2 (axial equilibrium of a cone: 2 pi r N_s cos(phi) = -F).
+    .. [1] Flügge 1973, sec. 2.2 (axial and normal equilibrium of the membrane).
     """
-    force, r = finite_array("force", force), finite_array("r", r, positive=True)
-    cos_phi = finite_array("cos_phi", cos_phi)
-    flat = (cos_phi == 0.0)[:, None]
-    if np.any(flat & (force != 0.0)):
-        raise ValueError("cos_phi = 0 (a flat annular plate): cannot carry a non-zero axial "
-                         "force as a membrane")
-    cos_safe = np.where(flat, 1.0, cos_phi[:, None])  # a flat plate without force: N_s = 0
-    return np.where(flat, 0.0, -force / (2.0 * np.pi * r * cos_safe))  # Flügge 2.2.2
+    if path not in LOAD_PATHS:
+        raise ValueError(f"path = {path!r}: must be one of {LOAD_PATHS}")
+    aft_force = finite("aft_force", aft_force)
+    ref = reference_element(mesh.order)
+    half = 0.5 * mesh.length[:, None]
+    t = (1.0 + ref.xi)[None, :] * half
+    r = mesh.r1[:, None] + t * mesh.sin_phi[:, None]
+    zeros = np.zeros_like(r)
+    px = zeros if axial is None else finite_array("axial", axial) * np.ones_like(r)
+    pr = zeros if radial is None else finite_array("radial", radial) * np.ones_like(r)
+
+    def integral(f):  # int 2 pi r f ds over each element (Gauss: exact for r f of degree < 2g)
+        return (2.0 * np.pi * r * f * half) @ ref.weight
+
+    if path == "inertia relief":  # a = P / m: the body load -rho h a (d'Alembert)
+        rho_h = mesh.rho * mesh.thickness
+        accel = (aft_force + integral(px).sum()) / integral(rho_h[:, None] + zeros).sum()
+        px = px - rho_h[:, None] * accel
+    line = 2.0 * np.pi * r * px  # axial load per unit meridian length (N/m)
+    total = integral(px)
+    before = np.concatenate(([0.0], np.cumsum(total)[:-1]))
+    start = -total.sum() if path == "aft support" else aft_force  # F just ahead of the aft edge
+    force = start + before[:, None] + half * (line @ _cumulative(mesh.order).T)
+    p_n = -px * mesh.sin_phi[:, None] + pr * mesh.cos_phi[:, None]
+    flat = np.abs(mesh.cos_phi) < 1e-12
+    scale = max(abs(aft_force), float(np.max(np.abs(line), initial=0.0)) * mesh.length.sum())
+    loaded = np.any(np.abs(force[flat]) > 1e-12 * scale) or np.any(p_n[flat] != 0.0)
+    if np.any(flat) and loaded:
+        raise ValueError("cos_phi = 0 (a flat annular plate): cannot carry the axial load as a "
+                         "membrane (N_s = -F / (2 pi r cos(phi)))")
+    cos = np.where(flat, 1.0, mesh.cos_phi)[:, None]
+    meridional = np.where(flat[:, None], 0.0, -force / (2.0 * np.pi * r * cos))  # Flügge 2.2
+    hoop = np.where(flat[:, None], 0.0, r * p_n / cos)  # normal equilibrium, 1/R_s = 0
+    # rings where the meridian turns: each segment's edges (inside a segment phi is constant)
+    f_end = start + before + total
+    r_end = mesh.r1 + mesh.length * mesh.sin_phi
+    nodes, frames, radii, hoops = [], [], [], []
+    for i in range(len(mesh.elements_per_segment)):
+        el = np.nonzero(mesh.segment == i)[0]
+        first, last = el[0], el[-1]
+        sin, cos_i = mesh.sin_phi[first], (1.0 if flat[first] else mesh.cos_phi[first])
+        if sin == 0.0 or flat[first]:
+            continue
+        for node, frame, rad, fax, sign in (
+                (mesh.dofs[first, 0], mesh.frame[first, 0], mesh.r1[first], start + before[first],
+                 1.0),
+                (mesh.dofs[last, 4], mesh.frame[last, 1], r_end[last], f_end[last], -1.0)):
+            ns = -fax / (2.0 * np.pi * rad * cos_i)
+            nodes.append(node)
+            frames.append(frame)
+            radii.append(rad)
+            hoops.append(sign * rad * ns * sin)  # H = r (N_s sin(phi)) of the shell beyond
+    return Prestate(load_path=path, force=force, meridional=meridional, hoop=hoop,
+                    ring_node=np.array(nodes, dtype=int), ring_frame=np.array(frames),
+                    ring_radius=np.array(radii), ring_force=np.array(hoops))

@@ -22,6 +22,7 @@ import numpy as np
 from ..checks import count, finite, positive
 from .geometry import Cone, Vehicle
 from .modes import VehicleModes, vehicle_modes
+from .prestress import load_path
 
 __all__ = [
     "SHAPES_PER_K",
@@ -40,6 +41,11 @@ SHAPES_PER_K = 3
 SHAPE_HARMONICS = 4
 #: Modes drawn on the unrolled surface (the lowest of each of the first harmonics shown).
 UNROLLED_MODES = 3
+_PATH_NOTES = {
+    "inertia relief": "inertia relief: F0 at the aft edge, 0 at the nose",
+    "forward support": "the supported forward end reacts it: uniform compression F0",
+    "aft support": "the supported aft end reacts it where it acts: no prestress",
+}
 
 
 @dataclass(frozen=True)
@@ -208,7 +214,7 @@ class VehicleSurvey:
     f_max : float or None
         Frequency bound (Hz); None: the band up to 5 times the lowest elastic frequency.
     prestressed : bool
-        Whether the frequencies include the thrust prestress (inertia relief).
+        Whether the frequencies include the thrust prestress.
     prestress_F0 : float
         Thrust of the prestress (N), 0 when not prestressed.
     note : str
@@ -273,7 +279,8 @@ class VehicleSurvey:
         return {
             "source": self.source, "vehicle": self.vehicle.to_dict(), "k_max": self.k_max,
             "f_max_hz": self.f_max, "prestressed": self.prestressed,
-            "prestress_F0": float(self.prestress_F0), "note": self.note,
+            "prestress_F0": float(self.prestress_F0), "load_path": m.load_path,
+            "note": self.note,
             "theory": m.theory, "rigid_modes": {str(k): int(v)
                                                 for k, v in m.rigid_modes.items()},
             "elements_per_segment": list(m.elements_per_segment),
@@ -305,7 +312,7 @@ def has_flat_plate(vehicle: Vehicle) -> bool:
 def vehicle_survey(vehicle: Vehicle, *, k_max: int, F0: float, f_max: float | None = None,
                    prestress: bool = True, views: bool = True,
                    source: str = "vehicle") -> VehicleSurvey:
-    """Vehicle modes for k = 0..k_max, prestressed by the thrust (inertia relief) by default.
+    """Vehicle modes for k = 0..k_max, prestressed by the thrust by default.
 
     Parameters
     ----------
@@ -314,8 +321,9 @@ def vehicle_survey(vehicle: Vehicle, *, k_max: int, F0: float, f_max: float | No
     k_max : int
         Highest circumferential wave number (dimensionless), 0..200.
     F0 : float
-        Steady thrust (N), > 0: the prestress, F0 at the aft edge falling to 0 at the nose
-        in proportion to the mass ahead (inertia relief).
+        Steady thrust (N), > 0: the prestress, with the load path of the vehicle's ends
+        (:func:`.prestress.load_path`: inertia relief, F0 at the aft edge falling to 0 at the
+        nose in proportion to the mass ahead, unless a hinged or clamped end reacts it).
     f_max : float, optional
         Keep the modes up to this frequency (Hz), > 0; default the band up to 5 times the
         lowest elastic frequency over all k.
@@ -354,8 +362,7 @@ def vehicle_survey(vehicle: Vehicle, *, k_max: int, F0: float, f_max: float | No
                 "membrane, so the prestress is left out")
     else:
         load = finite("F0", F0)
-        note = (f"prestressed by the thrust F0 = {F0:.6g} N (inertia relief: F0 at the aft "
-                "edge, 0 at the nose)")
+        note = f"prestressed by the thrust F0 = {F0:.6g} N ({_PATH_NOTES[load_path(vehicle)]})"
     modes = vehicle_modes(vehicle, k_max=k_max, f_max=f_max, prestress_F0=load)
     return VehicleSurvey(vehicle=vehicle, source=source, modes=modes, k_max=int(k_max),
                          f_max=f_max, prestressed=load > 0.0, prestress_F0=load, note=note,

@@ -4,8 +4,9 @@ The pulsating part of T(t) = F0 (1 - gamma cos Omega t), -gamma F0 cos Omega t, 
 ring load at the aft edge.  In the modes of harmonic k = 0 loaded by the steady thrust
 (q = V p, as :func:`.regions.harmonic_system`; mass-normalised, modal damping zeta on the
 loaded frequencies omega_n) it is the generalised force -gamma F0 cos(Omega t) phi_n, with
-phi_n = (V^T a)_n and a_m the axial displacement of unloaded mode m at the aft edge
-(:class:`flexbooster.shell_of_revolution.ModalSystem` ``aft_axial``):
+phi_n = (V^T a)_n and a_m the axial displacement of basis mode m at the aft edge
+(:class:`flexbooster.shell_of_revolution.ModalSystem` ``aft_axial``; the basis modes are the
+loaded modes, V = I):
 
     p_n'' + 2 zeta omega_n p_n' + omega_n^2 p_n = -gamma F0 phi_n cos Omega t.
 
@@ -49,7 +50,7 @@ class AxialResonance:
     index : int
         Loaded k = 0 mode, ascending frequency (dimensionless).
     order, type : int, str
-        Meridian order and type of the unloaded mode dominating it (labels of
+        Meridian order and type of the basis mode dominating it (labels of
         :func:`flexbooster.shell_of_revolution.vehicle_modes`).
     omega : float
         Resonance Omega = omega_n, the loaded frequency (rad/s).
@@ -132,7 +133,7 @@ class ForcedAxial:
 
 def forced_axial(
     vehicle: Vehicle, *, F0: float, omega_min: float, omega_max: float, n_modes: int = 20,
-    damping_ratio: float = 0.01, supported_forward_end: bool = False,
+    damping_ratio: float = 0.01, supported_forward_end: bool | None = None,
     elements_per_segment: int | tuple | None = None, order: int = DEFAULT_ORDER,
 ) -> ForcedAxial:
     """Forced resonances of the k = 0 modes under T(t) = F0 (1 - gamma cos Omega t).
@@ -149,9 +150,27 @@ def forced_axial(
     omega_min, omega_max : float
         Omega range (rad/s), 0 < omega_min < omega_max.
     n_modes : int
-        Unloaded k = 0 modes in the basis, 1..2000.
-    damping_ratio, supported_forward_end, elements_per_segment, order
-        As :func:`.regions.harmonic_system`.
+        Loaded k = 0 modes in the basis (dimensionless), 1..2000.
+    damping_ratio : float
+        Modal damping ratio of the loaded modes (dimensionless), [0, 1).
+    supported_forward_end : bool or None
+        Load path of the thrust: None from the vehicle's ends
+        (:func:`flexbooster.shell_of_revolution.prestress.load_path`).
+    elements_per_segment, order
+        Mesh (see :func:`flexbooster.shell_of_revolution.mesh_vehicle`).
+
+    Returns
+    -------
+    ForcedAxial
+
+    Raises
+    ------
+    ValueError
+        Bad input (naming it), or the steady thrust buckles k = 0.
+
+    References
+    ----------
+    Meirovitch (1986), sec. 7.4; Tech Memo 104, sec. 7.3 (family 3).
     """
     if not isinstance(vehicle, Vehicle):
         raise ValueError(f"vehicle = {vehicle!r}: must be a Vehicle")

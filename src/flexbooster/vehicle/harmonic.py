@@ -215,21 +215,22 @@ def in_unit_interval(name: str, value) -> float:
     return x
 
 
-def loaded_modes(vehicle, k: int, n_modes: int, F0: float, *, supported_forward_end: bool,
+def loaded_modes(vehicle, k: int, n_modes: int, F0: float, *,
+                 supported_forward_end: bool | None,
                  elements_per_segment, order) -> tuple:
-    """The unloaded modal system of harmonic k and its modes loaded by the steady thrust.
+    """The modal system of harmonic k and its modes loaded by the steady thrust.
 
-    Eigenpairs (w2, V) of K_e + K_g in the mass-normalised unloaded modes (M = I; Bolotin
-    1964, sec. 8).  Raises :class:`~flexbooster.shell_of_revolution.BucklingError` with the
-    load factor of :func:`~flexbooster.shell_of_revolution.buckling_load` when a loaded
-    omega^2 <= 0.  Returns (modal system, its labels, w2, V).
+    Eigenpairs (w2, V) of K_e + K_g in the mass-normalised basis modes (the loaded modes, so
+    V = I to round-off; M = I; Bolotin 1964, sec. 8).  Raises
+    :class:`~flexbooster.shell_of_revolution.BucklingError` with the load factor of
+    :func:`~flexbooster.shell_of_revolution.buckling_load` when a loaded omega^2 <= 0.  Returns (modal system, its labels, w2, V).
 
     Parameters
     ----------
     vehicle : Vehicle
         The vehicle.
     k, n_modes : int
-        Harmonic; unloaded modes in the basis.
+        Harmonic; loaded modes in the basis.
     F0 : float
         Steady thrust (N), > 0.
     supported_forward_end, elements_per_segment, order

@@ -24,6 +24,7 @@ import numpy as np
 from .. import floquet
 from ..checks import count, nonnegative, positive
 from ..shell_of_revolution import DEFAULT_ORDER, Vehicle
+from ..shell_of_revolution.prestress import load_path
 from .axial import ForcedAxial, forced_axial
 from .bending import bending_harmonic
 from .harmonic import (
@@ -91,7 +92,10 @@ class VehicleRegions:
     omega_min, omega_max : float
         Omega range (rad/s).
     supported_forward_end : bool
-        Thrust reacted at the nose (uniform compression) instead of inertia relief.
+        The nose reacts the thrust (uniform compression; ``load_path`` "forward support").
+    load_path : str
+        What balances the thrust in the prestress: "inertia relief", "forward support" or
+        "aft support" (:data:`flexbooster.shell_of_revolution.prestress.LOAD_PATHS`).
     forced_axial : ForcedAxial or None
         k = 0: the axial modes forced by the pulsation (:mod:`.axial`); None when not asked.
     certificates : tuple of StabilityCertificate
@@ -114,6 +118,7 @@ class VehicleRegions:
     omega_min: float
     omega_max: float
     supported_forward_end: bool
+    load_path: str = "inertia relief"
     forced_axial: ForcedAxial | None = None
     certificates: tuple = ()
     chart_gamma_max: float | None = None
@@ -133,6 +138,7 @@ class VehicleRegions:
                 "damping_ratio": float(self.damping_ratio),
                 "omega_min": float(self.omega_min), "omega_max": float(self.omega_max),
                 "supported_forward_end": bool(self.supported_forward_end),
+                "load_path": self.load_path,
                 "regions": [r.to_dict() for r in self.regions],
                 "harmonics": [{"k": int(h.k), "omega_unloaded": h.omega_unloaded.tolist(),
                                "omega_loaded": h.omega_loaded.tolist(),
@@ -165,7 +171,7 @@ def _range(omega_min, omega_max) -> tuple[float, float]:
 
 def harmonic_system(
     vehicle: Vehicle, k: int, *, F0: float, n_modes: int = 20, damping_ratio: float = 0.01,
-    supported_forward_end: bool = False, elements_per_segment: int | tuple | None = None,
+    supported_forward_end: bool | None = None, elements_per_segment: int | tuple | None = None,
     order: int = DEFAULT_ORDER,
 ) -> HarmonicSystem:
     """Periodic modal system of harmonic k under T(t) = F0 (1 - gamma cos Omega t).
@@ -183,11 +189,13 @@ def harmonic_system(
     F0 : float
         Steady thrust (N), > 0.
     n_modes : int
-        Unloaded modes in the basis, 1..2000.
+        Loaded modes in the basis, 1..2000.
     damping_ratio : float
         Modal damping ratio of the loaded modes (dimensionless), [0, 1).
-    supported_forward_end : bool
-        F0 reacted at the nose (uniform compression) instead of inertia relief.
+    supported_forward_end : bool or None
+        Load path of the thrust: None from the vehicle's ends (a hinged or clamped forward
+        end reacts it: uniform compression; else inertia relief), True uniform compression,
+        False inertia relief (:func:`flexbooster.shell_of_revolution.prestress.load_path`).
     elements_per_segment, order
         The mesh (:func:`flexbooster.shell_of_revolution.mesh_vehicle`).
     """
@@ -196,18 +204,17 @@ def harmonic_system(
     F0 = positive("F0", F0)
     n_modes = count("n_modes", n_modes, 1, 2000)
     zeta = in_unit_interval("damping_ratio", damping_ratio)
-    if not isinstance(supported_forward_end, bool | np.bool_):
-        raise ValueError(f"supported_forward_end = {supported_forward_end!r}: must be a bool")
+    load_path(vehicle, supported_forward_end)  # checks the flag
     ms, labels, w2, V = loaded_modes(vehicle, k, n_modes, F0,
                                      supported_forward_end=supported_forward_end,
                                      elements_per_segment=elements_per_segment, order=order)
     omega_l = np.sqrt(w2)
     n = omega_l.size
     mode_order, mode_type = labels()
-    dom = np.argmax(V**2, axis=0)  # unloaded mode dominating each loaded one
+    dom = np.argmax(V**2, axis=0)  # basis mode dominating each loaded one (V = I)
     kg = V.T @ ms.geometric @ V
     return HarmonicSystem(
-        k=k, F0=F0, damping_ratio=zeta, omega_unloaded=ms.omega, omega_loaded=omega_l,
+        k=k, F0=F0, damping_ratio=zeta, omega_unloaded=ms.omega_unloaded, omega_loaded=omega_l,
         basis=V, mass=np.eye(n), damping=2.0 * zeta * np.diag(omega_l),
         stiffness=np.diag(w2),  # A = V^T (K_e + K_g) V
         excitation=-0.5 * (kg + kg.T),  # B = -gamma K_g: T/F0 = 1 - gamma cos Omega t
@@ -274,7 +281,7 @@ def region_curves(
 def vehicle_regions(
     vehicle: Vehicle, *, F0: float, gamma: float, omega_min: float, omega_max: float,
     k_max: int, k_min: int = 2, n_modes: int = 20, damping_ratio: float = 0.01,
-    supported_forward_end: bool = False, elements_per_segment: int | tuple | None = None,
+    supported_forward_end: bool | None = None, elements_per_segment: int | tuple | None = None,
     order: int = DEFAULT_ORDER, boundaries: bool = False, gamma_max: float = 0.5,
     n_gamma: int = 11, rtol: float = 1e-9, step_phase: float = 0.12,
     max_order: int | None = None, damping_margin: float | None = floquet.DAMPING_MARGIN,
@@ -297,7 +304,8 @@ def vehicle_regions(
     gimbal_gain : float
         K of the gimbal control for k = 1 (dimensionless), >= 0.
     n_modes, damping_ratio, supported_forward_end, elements_per_segment, order
-        As :func:`harmonic_system`.
+        As :func:`harmonic_system` (supported_forward_end None: the load path from the
+        vehicle's ends).
     boundaries, gamma_max, n_gamma
         Also the edges in (Omega, gamma) up to gamma_max (:func:`region_curves`).
     rtol, step_phase, max_order, damping_margin
@@ -340,6 +348,7 @@ def vehicle_regions(
             raise ValueError(f"gamma_max = {gamma_max!r}: must be in (0, 1)")
         n_gamma = count("n_gamma", n_gamma, 2, 1000)
     opts = floquet_options(rtol, step_phase, max_order, damping_margin)
+    path = load_path(vehicle, supported_forward_end)  # checks the flag
     mesh = {"supported_forward_end": supported_forward_end,
             "elements_per_segment": elements_per_segment, "order": order}
     harmonics, regions, certs, gaps = [], [], [], []
@@ -363,7 +372,7 @@ def vehicle_regions(
                           damping_ratio=zeta, **mesh)
     found = VehicleRegions(regions=tuple(regions), harmonics=tuple(harmonics), curves=(),
                            F0=F0, gamma=gamma, damping_ratio=zeta, omega_min=lo, omega_max=hi,
-                           supported_forward_end=bool(supported_forward_end),
+                           supported_forward_end=path == "forward support", load_path=path,
                            forced_axial=fa, certificates=tuple(certs), gimbal_gain=gimbal,
                            gaps=tuple(gaps))
     if boundaries:
