@@ -48,7 +48,7 @@ from flexbooster.shell_of_revolution import (
     mesh_vehicle,
     system_matrices,
 )
-from flexbooster.shell_of_revolution.assembly import dof_map, element_set
+from flexbooster.shell_of_revolution.assembly import dof_map, element_set, thrust_prestate
 from flexbooster.vehicle import ThrustSpectrum, bending_system, forced_response
 from flexbooster.vehicle.forced import QUANTITIES, STANDARD_GRAVITY
 
@@ -263,7 +263,7 @@ def test_k0_agrees_with_the_full_damped_model_per_omega():
     M, K, ends = full_k0(v, F0)
     w2, V = sla.eigh(K, M, subset_by_value=(1.0, (4 * om[-1]) ** 2))
     mesh = mesh_vehicle(v)
-    m_el, k_el, g_el = element_set(v, mesh, 0, prestress_F0=F0, geometric=True)
+    m_el, k_el, g_el = element_set(v, mesh, 0, prestate=thrust_prestate(v, mesh, F0))
     e = mesh.elements_per_segment[0]  # the first element of the cone: ahead of the junction
     for zeta in (0.02, 1e-5):
         MV = M @ V

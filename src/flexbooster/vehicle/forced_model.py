@@ -55,8 +55,10 @@ from ..shell_of_revolution.assembly import (
     dof_map,
     element_set,
     rigid_body_fields,
+    ring_matrix,
+    thrust_prestate,
 )
-from ..shell_of_revolution.prestress import axial_force
+from ..shell_of_revolution.elements import reference_element
 
 __all__ = ["ROWS", "FullModel", "ModalModel", "cut_vehicle", "full_model", "mesh_nodes",
            "modal_model"]
@@ -272,6 +274,15 @@ def _node_loads(k, mesh, dmap, keep, x, mats, Y) -> np.ndarray:
     return np.stack([part[0], x[:, None] * part[0] - part[1]], axis=1)  # S, M = -M(x)
 
 
+def _element_end_values(values: np.ndarray, order: int) -> np.ndarray:
+    """Values (e, 2) at the two ends of each element of a field given at its Gauss points
+    (e, g): the polynomial of degree < g through them, evaluated at xi = -1 and 1 (exact for
+    the prestate's axial force, a polynomial of degree <= 2 in the meridian coordinate)."""
+    xi = reference_element(order).xi
+    coef = np.polynomial.legendre.legfit(xi, np.asarray(values, dtype=float).T, xi.size - 1)
+    return np.polynomial.legendre.legval(np.array([-1.0, 1.0]), coef)  # (e, 2)
+
+
 def _embed(keep, Y):
     """Vectors of the kept reduced DOFs (k = 0: no torsion) as vectors of all of them."""
     out = np.zeros((keep.size,) + Y.shape[1:], dtype=Y.dtype)
@@ -408,10 +419,12 @@ def full_model(
     :func:`.bending_system`).
     """
     dmap = dof_map(vehicle, mesh, k)
-    mats = element_set(vehicle, mesh, k, prestress_F0=F0,
-                       supported_forward_end=supported_forward_end, geometric=True)
+    pre = thrust_prestate(vehicle, mesh, F0, supported_forward_end=supported_forward_end)
+    mats = element_set(vehicle, mesh, k, prestate=pre)
     keep = _axisymmetric(mesh, dmap, k)
+    rings = ring_matrix(vehicle.theory, dmap, pre, k)[np.ix_(keep, keep)]
     M, Ke, Kg = (assemble(mesh, dmap, a)[np.ix_(keep, keep)] for a in mats)
+    Kg = Kg + rings  # the hoop rings where the meridian turns
     nodes = mesh_nodes(mesh)
     r = nodes[3]
     D = _node_displacements(mesh, dmap, keep, nodes[0], nodes[1])
@@ -432,10 +445,7 @@ def full_model(
         y = 0.5 * (D[0, 2] - D[0, 1])
         KL = KL - F0 * np.outer(y, beta + gimbal_gain * psi)  # Beal eq. 4, memo eq. 2.2-2
     w2[:n_rigid] = 0.0
-    tilt = axial_force(np.column_stack([np.zeros(mesh.n_elements), mesh.length]), F0,
-                       r1=mesh.r1, sin_phi=mesh.sin_phi, length=mesh.length,
-                       rho_h=mesh.rho * mesh.thickness,
-                       supported_forward_end=supported_forward_end)
+    tilt = _element_end_values(pre.force, mesh.order)  # (e, 2) at each element's two ends
     P0 = np.append(tilt[:, 0], tilt[-1, 1])  # steady axial load at each node (N, > 0)
     return FullModel(k=k, mass=M, stiffness=KL, load=F, basis=Phi, omega2=w2,
                      n_rigid=n_rigid, parts=(mesh, dmap, keep, mats, nodes, D, P0))
