@@ -1,29 +1,29 @@
-"""The ranked danger bands (flexbooster.danger): adapters, ranking, verdicts, JSON.
+"""The ranked danger bands (flexbooster.danger) and the one band type (flexbooster.bands).
 
 Tiers: exact (synthetic bands whose fields and order are known by construction), the default
 case (the top band agrees with the beam action's own largest growth rate: two paths to one
-number), invariants (ranking unchanged by the order of the inputs; duck-typed sources).
+number), invariants (ranking unchanged by the order of the inputs; a search with a gap is never
+"stable").
 """
 
 from __future__ import annotations
 
 import json
 import math
-from types import SimpleNamespace
 
 import pytest
 
+from flexbooster.bands import MECHANISMS, Band, BandMode, SearchGap
 from flexbooster.danger import (
-    MECHANISMS,
     STEADY_CAUSE,
-    DangerBand,
+    RankedBand,
     danger_bands,
     danger_summary,
     mechanism_verdicts,
 )
-from flexbooster.memo.beam_action import BeamActionBand
-from flexbooster.memo.pitch import PitchBand
-from flexbooster.memo.severity import ResonanceBand
+from flexbooster.memo.beam_action import band_modes
+from flexbooster.memo.pitch import PITCH_MODE
+from flexbooster.memo.severity import FAMILY_CAUSES, shell_mode
 
 OPERATING = (10.0, 100.0)
 
@@ -36,29 +36,38 @@ def default_results():
     return analyze(default_case(), stability=False, figures=False)
 
 
-def _pitch(*bands):
-    return SimpleNamespace(bands=tuple(bands))
+def _band(mechanism, lo, hi, g=0.0, *, kind="simple", order=1, modes=(), **extra):
+    return Band(mechanism=mechanism, Omega_lo=lo, Omega_hi=hi, kind=kind, order=order,
+                modes=modes, growth_rate_max=g, Omega_at_max=0.5 * (lo + hi),
+                Omega_center=0.5 * (lo + hi), **extra)
 
 
 def _ba(lo, hi, g, kind="sum", modes=(0, 1), order=1):
-    return BeamActionBand(lo, hi, g, 0.5 * (lo + hi), kind, modes, order, 0.5 * (lo + hi))
+    return _band("beam_action", lo, hi, g, kind=kind, order=order, modes=band_modes(modes))
 
 
-def test_pitch_adapter_fields_exact():
+def _res(lo, hi, severity, family=3):
+    return _band("resonance", lo, hi, kind="resonance", order=family,
+                 modes=(shell_mode(1, 1, 0, 1, "axial"),), severity=severity,
+                 cause=FAMILY_CAUSES[family])
+
+
+def test_pitch_band_fields_exact():
     # exact: the fields are copied; Hz = rad/s / (2 pi) to 1e-15 relative
-    band = PitchBand(40.0, 42.0, 0.25, 41.0, tongue=1)
-    (d,) = danger_bands(operating_range=OPERATING, pitch=_pitch(band))
+    band = _band("pitch", 40.0, 42.0, 0.25, modes=(PITCH_MODE,))
+    (d,) = danger_bands([band], operating_range=OPERATING)
     assert (d.mechanism, d.Omega_lo, d.Omega_hi, d.growth_rate, d.severity) == (
         "pitch", 40.0, 42.0, 0.25, None)
-    assert d.mode_text == "rigid pitch" and d.cause_text.startswith("instability region")
+    assert d.mode_text == "rigid pitch" and d.cause_text == \
+        "instability region (Mathieu tongue 1)"
     assert d.hz == pytest.approx((40.0 / (2 * math.pi), 42.0 / (2 * math.pi)), rel=1e-15)
-    assert d.in_operating_range
+    assert d.in_operating_range and d.band is band
 
 
-def test_beam_action_adapter_words():
-    # the words of issue 17: "instability region", the modes named (0 = rigid pitch)
-    (d,) = danger_bands(operating_range=OPERATING, beam_action=SimpleNamespace(
-        bands=(_ba(50.0, 51.0, 0.1, kind="sum", modes=(0, 2), order=1),)))
+def test_beam_action_band_words():
+    # the modes named (0 = rigid pitch), the kind and order in words
+    (d,) = danger_bands([_ba(50.0, 51.0, 0.1, kind="sum", modes=(0, 2), order=1)],
+                        operating_range=OPERATING)
     assert d.mode_text == "rigid pitch + bending 2"
     assert d.cause_text == "instability region (sum combination, order 1)"
 
@@ -75,84 +84,75 @@ def test_beam_action_adapter_words():
 )
 def test_in_operating_range_is_interval_overlap(lo, hi, inside):
     # exact: closed-interval overlap with [10, 100] rad/s
-    (d,) = danger_bands(operating_range=OPERATING,
-                        beam_action=SimpleNamespace(bands=(_ba(lo, hi, 0.1),)))
+    (d,) = danger_bands([_ba(lo, hi, 0.1)], operating_range=OPERATING)
     assert d.in_operating_range is inside
 
 
 def test_ranking_exact_and_independent_of_input_order():
     # by construction: in range before out of range; growth rate (largest first) before
-    # severity only (largest first)
-    ba = [_ba(20.0, 21.0, 0.01), _ba(30.0, 31.0, 0.5), _ba(200.0, 201.0, 9.0)]
-    res = [SimpleNamespace(Omega_lo=60.0, Omega_hi=60.5, severity=3.0),
-           SimpleNamespace(omega_lo=70.0, omega_hi=70.5, severity=30.0)]
-    ranked = danger_bands(operating_range=OPERATING, beam_action=SimpleNamespace(bands=ba),
-                          resonance_bands=res)
+    # resonances (largest severity first)
+    bands = [_ba(20.0, 21.0, 0.01), _ba(30.0, 31.0, 0.5), _ba(200.0, 201.0, 9.0),
+             _res(60.0, 60.5, 3.0), _res(70.0, 70.5, 30.0)]
+    ranked = danger_bands(bands, operating_range=OPERATING)
     order = [(b.mechanism, b.Omega_lo) for b in ranked]
     assert order == [("beam_action", 30.0), ("beam_action", 20.0), ("resonance", 70.0),
                      ("resonance", 60.0), ("beam_action", 200.0)]
-    swapped = danger_bands(operating_range=OPERATING,
-                           beam_action=SimpleNamespace(bands=ba[::-1]),
-                           resonance_bands=res[::-1])
-    assert swapped == ranked
-    assert danger_bands(operating_range=OPERATING, beam_action=SimpleNamespace(bands=ba),
-                        limit=2) == ranked[:2]
+    assert danger_bands(bands[::-1], operating_range=OPERATING) == ranked
+    assert danger_bands(bands, operating_range=OPERATING, limit=2) == ranked[:2]
 
 
-def test_resonance_and_vehicle_adapters_duck_typed():
-    vehicle = [SimpleNamespace(Omega_lo=15.0, Omega_hi=16.0, growth_rate_max=0.2,
-                               label="k = 2, modes 1+3")]
-    res = [SimpleNamespace(Omega_lo=80.0, Omega_hi=80.0, severity=5.0, family="family 3")]
-    ranked = danger_bands(operating_range=OPERATING, vehicle_regions=vehicle,
-                          resonance_bands=res)
-    v, r = ranked
-    assert (v.mechanism, v.growth_rate, v.mode_text) == ("vehicle", 0.2, "k = 2, modes 1+3")
-    assert v.cause_text.startswith("instability region")
-    assert (r.mechanism, r.severity, r.growth_rate) == ("resonance", 5.0, None)
-    assert r.cause_text == "resonance (memo 7): family 3"
-
-
-def test_resonance_band_of_the_severity_module_in_words():
-    # a ResonanceBand (memo.severity) as the danger ranking shows it: the most severe root's
-    # mode and its family's cause, Omega edges and severity copied exactly
-    band = ResonanceBand(Omega_lo=379.1, Omega_hi=379.3, Omega_peak=379.2, severity=6.4e-3,
-                         severity_rel=1.0, n_roots=2, families=(3, 7),
-                         modes=((1, 1, 0, 1, "axial"), (1, 1, 1, 1, "radial")), family=3,
-                         cause="thrust pulsation at the aft edge")
-    (d,) = danger_bands(operating_range=OPERATING, resonance_bands=[band])
-    assert (d.Omega_lo, d.Omega_hi, d.severity) == (379.1, 379.3, 6.4e-3)
-    assert d.mode_text == "cylinder 1 shell mode j = 1, k = 0, m = 1 (axial)"
+def test_resonance_band_in_words():
+    # a resonance band of the severity module as the ranking shows it: the most severe root's
+    # mode and its family's cause, the Omega edges and the severity copied exactly
+    band = _band("resonance", 379.1, 379.3, kind="resonance", order=3,
+                 modes=(shell_mode(1, 1, 0, 1, "axial"), shell_mode(1, 1, 1, 1, "radial")),
+                 severity=6.4e-3, severity_rel=1.0, n_roots=2, families=(3, 7),
+                 cause="thrust pulsation at the aft edge")
+    (d,) = danger_bands([band], operating_range=OPERATING)
+    assert (d.Omega_lo, d.Omega_hi, d.severity, d.growth_rate) == (379.1, 379.3, 6.4e-3, None)
+    assert d.mode_text.startswith("cylinder 1 shell mode j = 1, k = 0, m = 1 (axial)")
     assert d.cause_text == "resonance (memo 7): family 3: thrust pulsation at the aft edge"
 
 
+def test_vehicle_region_in_words():
+    # a vehicle region: harmonic k, kind, order j and the loaded modes' type and meridian
+    # order in the words
+    modes = (BandMode("radial 1", index=0, k=2, order=1, type="radial", omega=50.0),
+             BandMode("axial 2", index=1, k=2, order=2, type="axial", omega=70.0))
+    (d,) = danger_bands([_band("vehicle", 60.0, 61.0, 0.3, kind="sum", modes=modes, k=2)],
+                        operating_range=OPERATING)
+    assert (d.mechanism, d.Omega_lo, d.Omega_hi, d.growth_rate) == ("vehicle", 60.0, 61.0, 0.3)
+    assert d.mode_text == "k = 2: radial 1 + axial 2"
+    assert d.cause_text == "instability region (sum combination, order 1; vehicle model)"
+
+
 @pytest.mark.parametrize(
-    ("kwargs", "words"),
+    ("make", "words"),
     [
-        pytest.param({"operating_range": (100.0, 10.0)}, "operating_range", id="range-order"),
-        pytest.param({"operating_range": (0.0, math.inf)}, "operating_range", id="range-inf"),
-        pytest.param({"operating_range": OPERATING, "limit": -1}, "limit", id="limit"),
-        pytest.param({"operating_range": OPERATING,
-                      "resonance_bands": [SimpleNamespace(Omega_lo=1.0, Omega_hi=2.0)]},
-                     "severity", id="resonance-without-level"),
-        pytest.param({"operating_range": OPERATING,
-                      "vehicle_regions": [SimpleNamespace(Omega_lo=3.0, Omega_hi=2.0,
-                                                          growth_rate_max=1.0)]},
-                     "Omega_lo <= Omega_hi", id="edges-reversed"),
-        pytest.param({"operating_range": OPERATING,
-                      "vehicle_regions": [SimpleNamespace(Omega_lo=1.0, Omega_hi=2.0,
-                                                          growth_rate_max=math.nan)]},
-                     "finite", id="growth-nan"),
+        pytest.param(lambda: danger_bands([], operating_range=(100.0, 10.0)),
+                     "operating_range", id="range-order"),
+        pytest.param(lambda: danger_bands([], operating_range=(0.0, math.inf)),
+                     "operating_range", id="range-inf"),
+        pytest.param(lambda: danger_bands([], operating_range=OPERATING, limit=-1), "limit",
+                     id="limit"),
+        pytest.param(lambda: _band("vehicle", 3.0, 2.0, 1.0), "Omega_lo <= Omega_hi",
+                     id="edges-reversed"),
+        pytest.param(lambda: _band("vehicle", 1.0, 2.0, math.nan), "finite", id="growth-nan"),
+        pytest.param(lambda: _band("shells", 1.0, 2.0), "mechanism", id="mechanism"),
+        pytest.param(lambda: _band("vehicle", 1.0, 2.0, kind="flutter"), "kind", id="kind"),
+        pytest.param(lambda: danger_summary(operating_range=OPERATING, bands={"x": []}),
+                     "unknown mechanism", id="summary-key"),
     ],
 )
-def test_bad_arguments_raise(kwargs, words):
+def test_bad_arguments_raise(make, words):
     with pytest.raises(ValueError, match=words):
-        danger_bands(**kwargs)
+        make()
 
 
 def test_verdicts_not_computed_stable_unstable():
-    # exact: one line per mechanism in MECHANISMS order; wording of issue 17
-    bands = danger_bands(operating_range=OPERATING, beam_action=SimpleNamespace(
-        bands=(_ba(20.0, 21.0, 0.01), _ba(30.0, 31.0, 0.5), _ba(300.0, 301.0, 0.9))))
+    # exact: one line per mechanism in MECHANISMS order
+    bands = danger_bands([_ba(20.0, 21.0, 0.01), _ba(30.0, 31.0, 0.5), _ba(300.0, 301.0, 0.9)],
+                         operating_range=OPERATING)
     v = mechanism_verdicts(bands, computed={"pitch": True, "beam_action": True})
     assert [k for k, _, _ in v] == [k for k, _ in MECHANISMS]
     text = {k: t for k, _, t in v}
@@ -160,21 +160,35 @@ def test_verdicts_not_computed_stable_unstable():
     assert text["beam_action"] == ("unstable: 2 instability regions in the operating range, "
                                    "largest growth rate 0.5 1/s")  # 300 rad/s is outside
     assert text["vehicle"] == text["resonance"] == "not computed"
-    res = danger_bands(operating_range=OPERATING,
-                       resonance_bands=[SimpleNamespace(Omega_lo=50, Omega_hi=51, severity=2)])
+    res = danger_bands([_res(50, 51, 2.0)], operating_range=OPERATING)
     (r,) = [t for k, _, t in mechanism_verdicts(res, computed={"resonance": True})
             if k == "resonance"]
     assert r == "unstable: 1 resonance (memo 7) in the operating range, largest severity 2 m/s"
 
 
+def test_a_mechanism_with_a_gap_is_never_stable():
+    """No band found but a part of the search left out by a limit: "not fully searched" with
+    the gap's reason, never "stable"; with bands found the gap is appended to the verdict."""
+    gap = SearchGap(stage="vehicle", reason="harmonic k = 19 not searched: max_steps",
+                    limit="max_steps", k=19)
+    v = dict((k, t) for k, _, t in mechanism_verdicts(
+        (), computed={"vehicle": True, "pitch": True}, gaps=[gap]))
+    assert v["vehicle"] == "not fully searched: harmonic k = 19 not searched: max_steps"
+    assert v["pitch"] == "stable in the operating range"
+    bands = danger_bands([_band("vehicle", 20.0, 21.0, 0.1, k=2)], operating_range=OPERATING)
+    (text,) = [t for k, _, t in mechanism_verdicts(bands, computed={"vehicle": True},
+                                                   gaps=[gap]) if k == "vehicle"]
+    assert text.startswith("unstable: 1 instability region") and text.endswith(
+        "; not fully searched: harmonic k = 19 not searched: max_steps")
+
+
 def test_a_steady_region_is_named_unstable_without_pulsation():
     """A "steady" region (the system under the steady thrust alone is unstable: Beal's
-    follower flutter, or the slow growth of a gimballed rigid pitch with damped elastic modes,
-    the README's [vehicle] example at 9.9e-7 1/s) is not a parametric region: its cause says
-    so, and the verdict names it with its e-folding time 1 / growth (exact)."""
-    bands = danger_bands(operating_range=OPERATING, beam_action=SimpleNamespace(
-        bands=(_ba(OPERATING[0], OPERATING[1], 2.0e-3, kind="steady", modes=(0,), order=0),
-               _ba(30.0, 31.0, 0.5))))
+    follower flutter, or the slow growth of a gimballed rigid pitch with damped elastic modes)
+    is not a parametric region: its cause says so, and the verdict names it with its
+    e-folding time 1 / growth (exact)."""
+    bands = danger_bands([_ba(OPERATING[0], OPERATING[1], 2.0e-3, kind="steady", modes=(0,),
+                              order=0), _ba(30.0, 31.0, 0.5)], operating_range=OPERATING)
     steady = [b for b in bands if b.cause_text.startswith(STEADY_CAUSE)]
     assert len(steady) == 1 and "gamma = 0" in steady[0].cause_text
     assert "instability region" not in steady[0].cause_text
@@ -186,12 +200,15 @@ def test_a_steady_region_is_named_unstable_without_pulsation():
 
 
 def test_summary_to_dict_is_json():
-    s = danger_summary(operating_range=OPERATING, pitch=_pitch(PitchBand(40, 42, 0.25, 41, 1)))
+    s = danger_summary(operating_range=OPERATING,
+                       bands={"pitch": [_band("pitch", 40, 42, 0.25, modes=(PITCH_MODE,))]})
     d = json.loads(json.dumps(s.to_dict()))
     assert d["operating_range"] == [10.0, 100.0]
     assert d["bands"][0]["Omega_lo_hz"] == pytest.approx(40 / (2 * math.pi), rel=1e-15)
-    assert [v["verdict"] for v in d["verdicts"]][2:] == ["not computed", "not computed"]
-    assert isinstance(s.bands[0], DangerBand)
+    assert [v["verdict"] for v in d["verdicts"]][1:] == ["not computed"] * 3
+    assert isinstance(s.bands[0], RankedBand)
+    band = json.loads(json.dumps(s.bands[0].band.to_dict()))
+    assert band["modes"] == [PITCH_MODE.to_dict()] and band["width"] == 2.0
 
 
 @pytest.mark.slow
@@ -204,22 +221,7 @@ def test_default_case_top_band_is_the_beam_action_maximum(default_results):
     top = r.danger.bands[0]
     assert top.mechanism == "beam_action"
     assert top.growth_rate == pytest.approx(r.beam_action.max_growth_rate, rel=1e-12)
-    assert len(r.danger.bands) == len(r.pitch.bands) + len(r.beam_action.bands)
+    n_vehicle = 0 if r.vehicle_regions is None else len(r.vehicle_regions.regions)
+    assert len(r.danger.bands) == len(r.pitch.bands) + len(r.beam_action.bands) + n_vehicle
     assert json.loads(json.dumps(r.to_dict()["danger"]))["bands"][0]["mechanism"] == \
         "beam_action"
-
-
-def test_vehicle_region_adapter_describes_the_region():
-    # flexbooster.vehicle.VehicleRegion (issue 15): harmonic k, kind, order j and the loaded
-    # modes' type and meridian order in the words; the fields copied exactly
-    from flexbooster.vehicle import RegionMode, VehicleRegion
-
-    modes = (RegionMode(k=2, index=0, order=1, type="radial", omega_loaded=50.0, share=0.9),
-             RegionMode(k=2, index=1, order=2, type="axial", omega_loaded=70.0, share=0.8))
-    region = VehicleRegion(k=2, kind="sum", order=1, modes=modes, omega_lo=60.0, omega_hi=61.0,
-                           growth_rate_max=0.3, omega_at_max=60.5, omega_center=60.0,
-                           critical_gamma=0.0)
-    (d,) = danger_bands(operating_range=OPERATING, vehicle_regions=[region])
-    assert (d.mechanism, d.Omega_lo, d.Omega_hi, d.growth_rate) == ("vehicle", 60.0, 61.0, 0.3)
-    assert d.mode_text == "k = 2: radial 1 + axial 2"
-    assert d.cause_text == "instability region (sum combination, order 1; vehicle model)"

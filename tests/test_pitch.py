@@ -299,7 +299,7 @@ def test_pitch_analysis_flags_first_tongue():
         q = gamma * x / 2.0
         x = 1.0 - q - q**2 / 8.0 + q**3 / 64.0 - q**4 / 1536.0
     assert hi == pytest.approx(2.0 * omega_psi / np.sqrt(x), rel=1e-9)
-    assert res.bands[0].tongue == 1 and res.bands[0].clipped
+    assert res.bands[0].order == 1 and res.bands[0].clipped
     data = json.loads(json.dumps(res.to_dict(), allow_nan=False))
     assert data["stable"] == [True, False]
     assert data["max_growth_rate"] == pytest.approx(res.growth_rate[1])

@@ -172,7 +172,7 @@ def test_unstable_table_active_first_and_capped(results, page):
     bands = rows[:10]  # the bands table (its header row is rows[0] of the section)
     assert [b[0] for b in bands] == [str(n) for n in range(1, 11)]
     top = results.severity.bands[0]
-    assert float(bands[0][1]) == pytest.approx(top.Omega_peak, rel=5e-6)
+    assert float(bands[0][1]) == pytest.approx(top.Omega_at_max, rel=5e-6)
     assert bands[0][-1] == top.cause
     rows = rows[11:]  # after the roots' header row
     assert len(rows) == min(len(st), MAX_UNSTABLE_ROWS)

@@ -1041,7 +1041,7 @@ def test_fuzz_reproducer_damped_band_search():
     assert bands
     lo, hi = model.omega_range
     for b in bands:
-        assert lo <= b.omega_lo < b.omega_hi <= hi and np.isfinite(b.growth_rate_max)
+        assert lo <= b.Omega_lo < b.Omega_hi <= hi and np.isfinite(b.growth_rate_max)
     json.dumps([b.to_dict() for b in bands], allow_nan=False)
 
 
@@ -1077,7 +1077,7 @@ def test_fuzz_reproducer_pitch_tongue_edges():
         bands = ba.pipeline_bands(model)
     lo, hi = model.omega_range
     for b in bands:
-        assert lo <= b.omega_lo < b.omega_hi <= hi and math.isfinite(b.growth_rate_max)
+        assert lo <= b.Omega_lo < b.Omega_hi <= hi and math.isfinite(b.growth_rate_max)
 
 
 #: Found by `make fuzz`: F0 = 1e11 N on a short booster (omega_1 = 318 rad/s) at Omega ~ 1
@@ -1240,8 +1240,8 @@ def test_fuzz_reproducer_band_refinement(change):
     lo, hi = float(model.Omega[0]), float(model.Omega[-1])
     assert bands
     for b in bands:
-        assert all(math.isfinite(v) for v in (b.omega_lo, b.omega_hi, b.growth_rate_max))
-        assert lo <= b.omega_lo <= b.omega_hi <= hi and b.growth_rate_max > 0.0
+        assert all(math.isfinite(v) for v in (b.Omega_lo, b.Omega_hi, b.growth_rate_max))
+        assert lo <= b.Omega_lo <= b.Omega_hi <= hi and b.growth_rate_max > 0.0
 
 
 #: Found by `make fuzz` (run 3, 3 cases; fixed on main): a pitch tongue at Omega_bar = 1.7e-6
@@ -1298,7 +1298,7 @@ def test_fuzz_reproducer_pitch_tongues_far_below_the_beam(data, orders, exact, r
             bands = ba.pipeline_bands(model)
     system = ba.beam_system(model)
     wp = float(ba.loaded_frequencies(system)[ba.pitch_mode(system)].real) * system.omega_1
-    ref = {b.tongue: b for b in pitch.pitch_bands(wp, model.gamma, omega_min=model.Omega[0],
+    ref = {b.order: b for b in pitch.pitch_bands(wp, model.gamma, omega_min=model.Omega[0],
                                                   omega_max=model.Omega[-1])}
     assert _orders_beyond_floor([b.order for b in bands], orders)
     for b in bands:
@@ -1307,13 +1307,13 @@ def test_fuzz_reproducer_pitch_tongues_far_below_the_beam(data, orders, exact, r
         # differ by the beam's quasi-static share, measured 2e-4 at most), to 1e-3
         assert b.growth_rate_max == pytest.approx(ref[b.order].growth_rate_max, rel=1e-3)
         if b.order in exact:
-            assert b.omega_lo == pytest.approx(ref[b.order].omega_lo, rel=rtol)
-            assert b.omega_hi == pytest.approx(ref[b.order].omega_hi, rel=rtol)
-            assert b.omega_hi - b.omega_lo == pytest.approx(
-                ref[b.order].omega_hi - ref[b.order].omega_lo, rel=0.25)
+            assert b.Omega_lo == pytest.approx(ref[b.order].Omega_lo, rel=rtol)
+            assert b.Omega_hi == pytest.approx(ref[b.order].Omega_hi, rel=rtol)
+            assert b.Omega_hi - b.Omega_lo == pytest.approx(
+                ref[b.order].Omega_hi - ref[b.order].Omega_lo, rel=0.25)
         else:  # at the round-off floor: inside the rigid-pitch tongue (to rtol)
-            assert ref[b.order].omega_lo * (1 - rtol) <= b.omega_lo <= b.omega_hi
-            assert b.omega_hi <= ref[b.order].omega_hi * (1 + rtol)
+            assert ref[b.order].Omega_lo * (1 - rtol) <= b.Omega_lo <= b.Omega_hi
+            assert b.Omega_hi <= ref[b.order].Omega_hi * (1 + rtol)
 
 
 @pytest.mark.slow
@@ -1335,12 +1335,12 @@ def test_tongue_growth_harmonics_resolve_high_order_tongues(r):
     w1 = float(system.omega_1)
     wp = float(ba.loaded_frequencies(system)[ba.pitch_mode(system)].real) * w1
     (ref,) = [b for b in pitch.pitch_bands(wp, model.gamma, omega_min=model.Omega[0],
-                                           omega_max=model.Omega[-1]) if b.tongue == r]
+                                           omega_max=model.Omega[-1]) if b.order == r]
     B = -model.gamma * system.B
     with blas_threads(1):
-        g, _ = ba._growth_max(system.A0, None, B, ref.omega_lo / w1, ref.omega_hi / w1,
+        g, _ = ba._growth_max(system.A0, None, B, ref.Omega_lo / w1, ref.Omega_hi / w1,
                               S=ba.tongue_hill_harmonics(r))
-        g4, _ = ba._growth_max(system.A0, None, B, ref.omega_lo / w1, ref.omega_hi / w1)
+        g4, _ = ba._growth_max(system.A0, None, B, ref.Omega_lo / w1, ref.Omega_hi / w1)
     assert g * w1 == pytest.approx(ref.growth_rate_max, rel=1e-3)
     if r in (7, 9):  # the failure the rule mends, where it does not depend on chance
         assert g4 * w1 < 1e-2 * ref.growth_rate_max

@@ -77,7 +77,7 @@ def serial_reference(case_data: dict, *, stability: bool = True) -> dict:
         "pitch_max_growth_rate": max((b["growth_rate_max"] for b in pitch), default=0.0),
         "pitch_unstable_regions": len(pitch),
         "beam_action_max_growth_rate": 0.0 if peak is None else peak["growth_rate_max"],
-        "beam_action_Omega_at_max": 0.0 if peak is None else peak["omega_at_max"],
+        "beam_action_Omega_at_max": 0.0 if peak is None else peak["Omega_at_max"],
         "beam_action_unstable_bands": len(action),
         "n_warnings": len(d["warnings"]),
         "shell_min_frequency": min(d["shell_frequencies"]["rad_s"]),

@@ -68,7 +68,7 @@ def test_default_and_damped_cases_are_not_refused(vehicle):
     assert upper.parts["vehicle regions"] > est.parts["vehicle regions"]
 
 
-def test_verdict_is_unknown_when_a_harmonic_is_a_gap():
+def test_verdict_is_not_stable_when_a_harmonic_is_a_gap():
     """No region found but a harmonic past a size limit: the verdict is not "stable"
     (present.rows.vehicle_region_verdict reads only the stored result)."""
     from types import SimpleNamespace
@@ -82,7 +82,7 @@ def test_verdict_is_unknown_when_a_harmonic_is_a_gap():
                         gaps=(SearchGap(stage="vehicle", reason="harmonic k = 2 ...",
                                         limit="max_steps", k=2),))
     text, stable = vehicle_region_verdict(SimpleNamespace(vehicle_regions=vr))
-    assert not stable and text.startswith("unknown: 1 harmonic(s) not searched")
+    assert not stable and text.startswith("not fully searched: 1 harmonic(s) not searched")
     text, stable = vehicle_region_verdict(SimpleNamespace(
         vehicle_regions=dataclasses.replace(vr, gaps=())))
     assert stable and text.startswith("stable:")

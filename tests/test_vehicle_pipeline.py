@@ -39,7 +39,7 @@ from flexbooster.analysis import (
     analyze_vehicle_regions,
     memo_roots_in_regions,
 )
-from flexbooster.bands import SearchGap
+from flexbooster.bands import Band, BandMode, SearchGap
 from flexbooster.case import default_case_text, load_case
 from flexbooster.cli import main
 from flexbooster.errors import CaseError
@@ -52,8 +52,6 @@ from flexbooster.results import MemoRootsInRegions
 from flexbooster.shell_of_revolution import BucklingError
 from flexbooster.vehicle import (
     RegionCurve,
-    RegionMode,
-    VehicleRegion,
     VehicleRegions,
     vehicle_regions,
 )
@@ -92,11 +90,11 @@ def results():
 
 
 def _region(k, lo, hi, *, kind="simple", order=1, growth=0.1):
-    mode = RegionMode(k=k, index=0, order=0, type="radial", omega_loaded=(lo + hi) / 4,
-                      share=1.0)
-    return VehicleRegion(k=k, kind=kind, order=order, modes=(mode,), omega_lo=lo, omega_hi=hi,
-                         growth_rate_max=growth, omega_at_max=(lo + hi) / 2,
-                         omega_center=(lo + hi) / 2, critical_gamma=0.0)
+    mode = BandMode("radial 0", index=0, k=k, order=0, type="radial", omega=(lo + hi) / 4,
+                    share=1.0)
+    return Band(mechanism="vehicle", k=k, kind=kind, order=order, modes=(mode,), Omega_lo=lo,
+                Omega_hi=hi, growth_rate_max=growth, Omega_at_max=(lo + hi) / 2,
+                Omega_center=(lo + hi) / 2, critical_gamma=0.0)
 
 
 def _regions(*regs):
@@ -159,9 +157,9 @@ def test_memo_roots_in_regions_equal_a_brute_force_matrix(rtol):
     Omega = np.round(rng.uniform(1.0, 520.0, 400), 1)  # rounded: repeated values
     table = _table(Omega, rng.integers(0, 6, 400), rng.random(400) < 0.3)
     m = memo_roots_in_regions(table, regs, rtol=rtol)
-    centre = np.array([r.omega_center for r in regs.regions])
-    a = np.array([r.omega_lo for r in regs.regions]) - rtol * centre
-    b = np.array([r.omega_hi for r in regs.regions]) + rtol * centre
+    centre = np.array([r.Omega_center for r in regs.regions])
+    a = np.array([r.Omega_lo for r in regs.regions]) - rtol * centre
+    b = np.array([r.Omega_hi for r in regs.regions]) + rtol * centre
     inside = (Omega[:, None] >= a) & (Omega[:, None] <= b)
     expected = sorted((g, Omega[r], r) for r, g in zip(*np.nonzero(inside), strict=True))
     assert list(zip(m.region.tolist(), m.root.tolist(), strict=True)) == [
@@ -279,7 +277,7 @@ def test_stage_passes_the_case_settings_and_defaults(monkeypatch):
     assert mapped.gamma == 0.05
     assert kw == {"gamma_max": VEHICLE_CHART_GAMMA_MAX, "n_gamma": VEHICLE_CHART_LEVELS}
     assert [c.k for c in found.curves] == [2] and found.chart_gamma_max == VEHICLE_CHART_GAMMA_MAX
-    assert found.gaps == (CHART_GAP,)
+    assert found.gaps == () and found.chart_gaps == (CHART_GAP,)
     rec.calls.clear()
     rec.curve_calls.clear()
     analyze_vehicle_regions(load_case(small_case_data(k_max=4, n_modes=5, damping_ratio=0.2)),
@@ -382,8 +380,8 @@ def test_results_json_round_trip(results):
     assert out["memo_roots"] == json.loads(json.dumps(results.memo_roots_in_regions.to_dict()))
     for got, r in zip(out["regions"], vr.regions, strict=True):
         assert (got["k"], got["kind"], got["order"]) == (r.k, r.kind, r.order)
-        assert (got["omega_lo"], got["omega_hi"], got["growth_rate_max"],
-                got["critical_gamma"]) == (r.omega_lo, r.omega_hi, r.growth_rate_max,
+        assert (got["Omega_lo"], got["Omega_hi"], got["growth_rate_max"],
+                got["critical_gamma"]) == (r.Omega_lo, r.Omega_hi, r.growth_rate_max,
                                            r.critical_gamma)
     assert len(out["curves"]) == len(vr.curves) > 0
     assert out["gamma"] == 0.3 and out["damping_ratio"] == 0.0
@@ -407,8 +405,8 @@ def test_csv_columns_against_the_objects(results, tmp_path):
     assert len(rows) == len(regs)
     for row, r in zip(rows, regs, strict=True):
         assert (int(row["k"]), row["kind"], int(row["order"])) == (r.k, r.kind, r.order)
-        assert float(row["Omega_lo_rad_s"]) == r.omega_lo
-        assert float(row["Omega_hi_rad_s"]) == r.omega_hi
+        assert float(row["Omega_lo_rad_s"]) == r.Omega_lo
+        assert float(row["Omega_hi_rad_s"]) == r.Omega_hi
         assert float(row["width_rad_s"]) == r.width
         assert float(row["growth_rate_max"]) == r.growth_rate_max
         assert float(row["critical_gamma"]) == r.critical_gamma
@@ -618,4 +616,4 @@ def test_a_case_past_a_size_limit_says_so():
     assert w.message.startswith("20 harmonics left out (k = 1-20); the first, ")
     assert "harmonic k = 1 not searched" in w.message and "\n" not in w.message
     text, stable = vehicle_region_verdict(types.SimpleNamespace(vehicle_regions=found))
-    assert not stable and text.startswith("unknown")
+    assert not stable and text.startswith("not fully searched")

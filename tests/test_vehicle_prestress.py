@@ -137,7 +137,7 @@ def _principal_regions(veh, k, n_modes):
                               omega_max=2 * w * 1.03, k_min=k, k_max=k, n_modes=n_modes,
                               damping_ratio=0.0, axial=False, max_order=1)
         (reg,) = [r for r in res.regions if r.kind == "simple" and r.modes[0].index == i]
-        out[i] = (reg.omega_lo, reg.omega_hi)
+        out[i] = (reg.Omega_lo, reg.Omega_hi)
     return out, omega
 
 
@@ -224,7 +224,7 @@ def test_load_path_from_the_ends_and_its_mathieu_regions(fwd_end, path):
     for r in res.regions:
         lo, hi = _mathieu_edges(mu, r.order)
         tol = 1e-6 if r.order == 1 else 1e-5
-        assert abs(r.omega_lo / w_l - lo) < tol and abs(r.omega_hi / w_l - hi) < tol
+        assert abs(r.Omega_lo / w_l - lo) < tol and abs(r.Omega_hi / w_l - hi) < tol
 
 
 @pytest.mark.parametrize("fwd_end, path", [("clamped", "forward support"),

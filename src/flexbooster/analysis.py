@@ -205,12 +205,24 @@ def analyze(
         vehicle=survey,
         vehicle_regions=regions,
         memo_roots_in_regions=matches,
-        danger=danger_summary(operating_range=model.omega_range, pitch=pitch,
-                              beam_action=action,
-                              vehicle_regions=None if regions is None else regions.regions,
-                              resonance_bands=None if severity is None else severity.bands),
+        danger=_danger(model, pitch, action, regions, severity),
         severity=severity,
     )
+
+
+def _danger(model: BoosterModel, pitch, action, regions, severity):
+    """The ranked bands and verdicts of every mechanism computed, with their gaps."""
+    found = {"pitch": pitch.bands}
+    gaps = list(pitch.gaps)
+    if action is not None:
+        found["beam_action"] = action.bands
+        gaps += action.gaps
+    if regions is not None:
+        found["vehicle"] = regions.regions
+        gaps += regions.gaps
+    if severity is not None:
+        found["resonance"] = severity.bands
+    return danger_summary(operating_range=model.omega_range, bands=found, gaps=gaps)
 
 
 def _stability_table(model: BoosterModel, shell, params
@@ -417,7 +429,7 @@ def _vehicle_regions_stage(case: Case, *, boundaries: bool
             "vehicle-modes-clipped", "vehicle.n_modes",
             f"vehicle.n_modes = {table.n_modes}: more than the {dofs} modes the vehicle's "
             f"mesh has in a harmonic: {used} modes per harmonic (all of them) are used")]
-        return found, clipped + _gap_warnings(found.gaps)
+        return found, clipped + _gap_warnings(found.gaps + found.chart_gaps)
     except CaseError as exc:  # the thrust buckles the vehicle: a result, not a bad input
         return None, [AnalysisWarning("vehicle-regions-skipped", exc.field, exc.rule)]
 
@@ -530,7 +542,7 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
                 # gamma every harmonic is certified: none), in the budget the map left
                 curves, gaps = region_curves(
                     found, gamma_max=top, n_gamma=charts.VEHICLE_CHART_LEVELS)
-                found = dataclasses.replace(found, curves=curves, gaps=found.gaps + gaps)
+                found = dataclasses.replace(found, curves=curves, chart_gaps=gaps)
             found = dataclasses.replace(found, chart_gamma_max=top if boundaries else None)
         except BucklingError as exc:
             raise CaseError("thrust.F0", case.F0, "the steady thrust buckles the vehicle "
@@ -565,8 +577,8 @@ def memo_roots_in_regions(table: StabilityTable, regions: VehicleRegions, *,
     """The memo-table roots that fall inside each vehicle region, and the regions with none.
 
     A root (memo 7.3: a thrust frequency Omega where an excitation frequency meets a shell
-    frequency) falls inside a region when omega_lo - rtol Omega_c <= Omega <=
-    omega_hi + rtol Omega_c (Omega_c the region's centre); with the roots sorted by Omega
+    frequency) falls inside a region when Omega_lo - rtol Omega_c <= Omega <=
+    Omega_hi + rtol Omega_c (Omega_c the region's centre); with the roots sorted by Omega
     those of a region are one run, found by bisection (no roots x regions matrix).  The memo's
     shells and the vehicle's harmonics share the circumferential wave number k: each match
     says whether the root's shell mode has the region's k.
@@ -600,9 +612,9 @@ def memo_roots_in_regions(table: StabilityTable, regions: VehicleRegions, *,
         raise ValueError(f"regions = {type(regions).__name__}: must be a VehicleRegions")
     rtol = nonnegative("rtol", rtol)
     regs = regions.regions
-    lo = np.array([r.omega_lo for r in regs], dtype=float)
-    hi = np.array([r.omega_hi for r in regs], dtype=float)
-    pad = rtol * np.array([r.omega_center for r in regs], dtype=float)
+    lo = np.array([r.Omega_lo for r in regs], dtype=float)
+    hi = np.array([r.Omega_hi for r in regs], dtype=float)
+    pad = rtol * np.array([r.Omega_center for r in regs], dtype=float)
     region_k = np.array([r.k for r in regs], dtype=int)
     Omega = np.asarray(table.Omega, dtype=float)
     by_omega = np.argsort(Omega, kind="stable")  # the roots inside a region are a run of it

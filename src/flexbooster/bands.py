@@ -1,17 +1,20 @@
 """Result records shared by every mechanism's search for unstable thrust frequencies.
 
-:class:`SearchGap` is what a deterministic size or accuracy limit of a search left out (a
-harmonic, a tongue order, a part of the Omega range).  Every search returns its gaps beside its
-bands, and a verdict built from bands with a gap is "not fully searched", never "stable"
-(docs/theory/bands.md).  Numerical core: the standard library only.
+:class:`Band` is a band of thrust frequencies in which one mechanism (the rigid pitch, the
+memo's beam action, the vehicle's parametric regions, the memo's resonances) is unstable or
+resonant: every mechanism produces it and the danger ranking reads it.  :class:`SearchGap` is
+what a deterministic size or accuracy limit of a search left out (a harmonic, a tongue order, a
+part of the Omega range): a verdict built from bands with a gap is "not fully searched", never
+"stable" (docs/theory/bands.md).  Numerical core: the standard library only.
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Any
 
-__all__ = ["SearchGap", "gaps_text"]
+__all__ = ["Band", "BandMode", "KINDS", "MECHANISMS", "SearchGap", "gaps_text"]
 
 
 @dataclass(frozen=True)
@@ -69,3 +72,170 @@ def gaps_text(gaps: tuple[SearchGap, ...] | list[SearchGap]) -> str:
     if not gaps:
         raise ValueError("gaps: empty, a fully searched mechanism has no gap text")
     return "not fully searched: " + "; ".join(g.reason for g in gaps)
+
+
+@dataclass(frozen=True)
+class BandMode:
+    """One mode taking part in a band.
+
+    Attributes
+    ----------
+    label : str
+        The mode in words, e.g. "rigid pitch", "bending 2", "radial 1 (k = 3)".
+    index : int
+        Index of the mode in its mechanism's list of modes (ascending frequency).
+    k : int or None
+        Circumferential harmonic, where the mechanism has one.
+    order : int or None
+        Sign changes along the meridian (vehicle) or axial index j (memo shells).
+    type : str or None
+        "axial", "torsional", "breathing", "bending", "radial", where known.
+    omega : float or None
+        Its frequency under the steady thrust (rad/s), where known.
+    share : float or None
+        Share of the dominating unloaded mode in it (dimensionless), where known.
+    cylinder : int or None
+        The memo's cylinder d (1 aft, 2 forward) of a shell mode; its ``index`` is then the
+        branch m (1..3, ascending frequency) and its ``order`` the axial index j.
+    """
+
+    label: str
+    index: int = 0
+    k: int | None = None
+    order: int | None = None
+    type: str | None = None
+    omega: float | None = None
+    share: float | None = None
+    cylinder: int | None = None
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready mapping (None kept)."""
+        return {"label": self.label, "index": int(self.index),
+                "k": None if self.k is None else int(self.k),
+                "order": None if self.order is None else int(self.order),
+                "type": self.type, "omega": None if self.omega is None else float(self.omega),
+                "share": None if self.share is None else float(self.share),
+                "cylinder": None if self.cylinder is None else int(self.cylinder)}
+
+
+#: Mechanisms that produce bands: (key, words).
+MECHANISMS: tuple[tuple[str, str], ...] = (
+    ("pitch", "rigid-body pitch (memo 4.2)"),
+    ("beam_action", "beam action (memo 4.1)"),
+    ("vehicle", "vehicle parametric regions"),
+    ("resonance", "memo resonances (memo 7.3)"),
+)
+#: Kinds of band: parametric regions ("simple": Omega near 2 omega_i / j, "sum" and
+#: "difference": (omega_i +- omega_k) / j), "steady" (the system under the steady thrust alone
+#: is not stable) and "resonance" (a forced resonance of memo 7.3).
+KINDS = ("simple", "sum", "difference", "steady", "resonance")
+
+
+@dataclass(frozen=True)
+class Band:
+    """A band of thrust frequencies Omega in which a mechanism is unstable or resonant.
+
+    Attributes
+    ----------
+    mechanism : str
+        A key of :data:`MECHANISMS`.
+    Omega_lo, Omega_hi : float
+        Edges (rad/s), 0 <= Omega_lo <= Omega_hi: where the largest Floquet multiplier has
+        modulus 1 (a region), or the band's lowest and highest root (a resonance).
+    kind : str
+        One of :data:`KINDS`.
+    order : int
+        j of the centre 2 omega_i / j or (omega_i +- omega_k) / j (a Mathieu tongue: r); the
+        family (memo 7.3) of the most severe root of a resonance band.
+    modes : tuple of BandMode
+        The modes involved (one for "simple", two for a combination; the most severe root's
+        shell mode first for a resonance).
+    growth_rate_max : float
+        Largest growth rate of the motion inside (1/s); 0 for a resonance.
+    Omega_at_max : float
+        Omega where it occurs (rad/s); the most severe root of a resonance band.
+    Omega_center : float
+        The analytic centre (rad/s); the most severe root of a resonance band.
+    critical_gamma : float
+        Smallest gamma at which the band exists (dimensionless); 0 without damping.
+    clipped : bool
+        An edge is an end of the Omega range searched.
+    k : int or None
+        Circumferential harmonic of a vehicle region.
+    severity : float or None
+        Resonance: secular growth rate of the resonant shell mode's surface displacement
+        (m/s, memo 7.3 and docs/theory/severity.md); None for a region.
+    severity_rel : float or None
+        Resonance: severity over the largest of the table (dimensionless).
+    n_roots : int
+        Resonance: roots of the stability table in the band; 0 for a region.
+    families : tuple of int
+        Resonance: families (memo 7.3) of the band's roots.
+    cause : str
+        The forcing or mechanism in words, where the kind alone does not say it.
+    """
+
+    mechanism: str
+    Omega_lo: float
+    Omega_hi: float
+    kind: str
+    order: int
+    modes: tuple[BandMode, ...]
+    growth_rate_max: float
+    Omega_at_max: float
+    Omega_center: float
+    critical_gamma: float = 0.0
+    clipped: bool = False
+    k: int | None = None
+    severity: float | None = None
+    severity_rel: float | None = None
+    n_roots: int = 0
+    families: tuple[int, ...] = ()
+    cause: str = ""
+
+    def __post_init__(self) -> None:
+        if self.mechanism not in dict(MECHANISMS):
+            raise ValueError(f"mechanism = {self.mechanism!r}: must be one of "
+                             f"{', '.join(dict(MECHANISMS))}")
+        if self.kind not in KINDS:
+            raise ValueError(f"kind = {self.kind!r}: must be one of {', '.join(KINDS)}")
+        lo, hi = float(self.Omega_lo), float(self.Omega_hi)
+        if not (math.isfinite(lo) and math.isfinite(hi) and 0.0 <= lo <= hi):
+            raise ValueError(f"Omega_lo, Omega_hi = {lo!r}, {hi!r}: need finite "
+                             "0 <= Omega_lo <= Omega_hi (rad/s)")
+        if not math.isfinite(float(self.growth_rate_max)):
+            raise ValueError(f"growth_rate_max = {self.growth_rate_max!r}: must be finite")
+
+    @property
+    def width(self) -> float:
+        """Omega_hi - Omega_lo (rad/s)."""
+        return self.Omega_hi - self.Omega_lo
+
+    @property
+    def hz(self) -> tuple[float, float]:
+        """The edges in Hz."""
+        return self.Omega_lo / (2.0 * math.pi), self.Omega_hi / (2.0 * math.pi)
+
+    @property
+    def mode_text(self) -> str:
+        """The modes in words, joined by " + "."""
+        return " + ".join(m.label for m in self.modes) or "-"
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready mapping: every attribute, the width and the edges in Hz."""
+        lo_hz, hi_hz = self.hz
+        return {
+            "mechanism": self.mechanism, "kind": self.kind, "order": int(self.order),
+            "k": None if self.k is None else int(self.k),
+            "modes": [m.to_dict() for m in self.modes],
+            "Omega_lo": float(self.Omega_lo), "Omega_hi": float(self.Omega_hi),
+            "Omega_lo_hz": float(lo_hz), "Omega_hi_hz": float(hi_hz),
+            "width": float(self.width), "growth_rate_max": float(self.growth_rate_max),
+            "Omega_at_max": float(self.Omega_at_max),
+            "Omega_center": float(self.Omega_center),
+            "critical_gamma": float(self.critical_gamma), "clipped": bool(self.clipped),
+            "severity": None if self.severity is None else float(self.severity),
+            "severity_rel": None if self.severity_rel is None else float(self.severity_rel),
+            "n_roots": int(self.n_roots), "families": [int(f) for f in self.families],
+            "cause": self.cause,
+        }

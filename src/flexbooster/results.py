@@ -64,9 +64,7 @@ UNITS: dict[str, str] = {
     "pitch.a, q, beta_*": "1",
     "pitch.growth_rate, max_growth_rate": "1/s (amplitude e-folding rate of psi)",
     "pitch.unstable_intervals": "rad/s",
-    "pitch.bands.omega_lo, omega_hi, width, omega_at_max": "rad/s",
-    "pitch.bands.growth_rate_max": "1/s",
-    "pitch.bands.critical_gamma, pitch.damping_ratio": "1",
+    "pitch.damping_ratio": "1",
     "shell_frequencies.omega_bar": "1 (units of omega_1)",
     "shell_frequencies.rad_s": "rad/s",
     "shell_frequencies.hz": "Hz",
@@ -74,9 +72,7 @@ UNITS: dict[str, str] = {
     "beam_action.Omega_bar, alpha_*, frequencies_*": "1 (alpha_r Omega_bar in units of omega_1)",
     "beam_action.growth_rate, max_growth_rate": "1/s",
     "beam_action.unstable_intervals, band_range": "rad/s",
-    "beam_action.bands.omega_lo, omega_hi, width, omega_at_max, omega_center": "rad/s",
-    "beam_action.bands.growth_rate_max": "1/s",
-    "beam_action.bands.critical_gamma, *_damping_ratio": "1",
+    "beam_action.*_damping_ratio": "1",
     "case.damping.*": "1",
     "stability.rows.Omega_rad_s, shell_rad_s": "rad/s",
     "stability.rows.Omega_hz, shell_hz": "Hz",
@@ -86,10 +82,7 @@ UNITS: dict[str, str] = {
     "stability.severity.psi0": "rad",
     "stability.severity.beam_amplitude": "1 (units of L)",
     "stability.severity.max_severity, bands.severity": "m/s",
-    "stability.severity.bands.Omega_lo, Omega_hi, Omega_peak": "rad/s",
-    "stability.severity.bands.Omega_*_hz": "Hz",
-    "stability.severity.bands.severity_rel": "1",
-    "figures.*.Omega_bar, curves, shell_omega_bar, root_*": "1 (units of omega_1)",
+        "figures.*.Omega_bar, curves, shell_omega_bar, root_*": "1 (units of omega_1)",
     "figures.beam_action_chart.regions.omega_lo, omega_hi, omega_min, omega_max": "rad/s",
     "figures.pitch_band_chart.regions.omega_lo, omega_hi, omega_min, omega_max": "rad/s",
     "figures.*_chart.regions.gamma, gamma_operating, gamma_max": "1",
@@ -99,12 +92,7 @@ UNITS: dict[str, str] = {
     "vehicle_regions.F0": "N",
     "vehicle_regions.gamma, damping_ratio": "1",
     "vehicle_regions.omega_min, omega_max": "rad/s",
-    "vehicle_regions.regions.omega_lo, omega_hi, width, omega_at_max, omega_center": "rad/s",
-    "vehicle_regions.regions.growth_rate_max": "1/s (amplitude e-folding rate)",
-    "vehicle_regions.regions.critical_gamma": "1",
-    "vehicle_regions.regions.modes.omega_loaded": "rad/s",
-    "vehicle_regions.regions.modes.share": "1",
-    "vehicle_regions.harmonics.omega_unloaded, omega_loaded": "rad/s",
+        "vehicle_regions.harmonics.omega_unloaded, omega_loaded": "rad/s",
     "vehicle_regions.curves.gamma": "1",
     "vehicle_regions.curves.omega_lo, omega_hi": "rad/s",
     "vehicle_regions.gimbal_gain": "1 (K of the k = 1 harmonic)",
@@ -115,6 +103,17 @@ UNITS: dict[str, str] = {
     "danger.bands.growth_rate": "1/s",
     "danger.bands.severity": "m/s (memo resonances)",
 }
+# The bands of every mechanism (flexbooster.bands.Band.to_dict), wherever they are stored.
+for _where in ("pitch.bands", "beam_action.bands", "vehicle_regions.regions",
+               "stability.severity.bands"):
+    UNITS.update({
+        f"{_where}.Omega_lo, Omega_hi, width, Omega_at_max, Omega_center, modes.omega": "rad/s",
+        f"{_where}.Omega_lo_hz, Omega_hi_hz": "Hz",
+        f"{_where}.growth_rate_max": "1/s (amplitude e-folding rate)",
+        f"{_where}.critical_gamma, severity_rel, modes.share": "1",
+        f"{_where}.severity": "m/s (memo resonances)",
+    })
+del _where
 
 
 @dataclass(frozen=True)

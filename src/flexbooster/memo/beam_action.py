@@ -26,7 +26,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..bands import SearchGap, gaps_text
+from ..bands import Band, BandMode, SearchGap, gaps_text
 from ..checks import count, nonnegative, positive
 from ..floquet import (
     LinearPeriodicSystem,
@@ -53,7 +53,7 @@ __all__ = ["PeriodMapOverflowError", "BeamActionSystem", "beam_action_system", "
            "BAND_MAX_CANDIDATES", "BAND_OMEGA_BAR_MIN", "TONGUE_MAX_HARMONICS",
            "TONGUE_HILL_HARMONICS", "TONGUE_GAMMA_RTOL", "TONGUE_RTOL_FLOOR",
            "TONGUE_FLOOR_OMEGA_BAR", "TONGUE_MAX_ORDER", "TongueEdgesError",
-           "tongue_hill_harmonics", "pitch_mode", "pitch_guide", "BeamActionBand", "modal_damping",
+           "tongue_hill_harmonics", "pitch_mode", "pitch_guide", "band_modes", "modal_damping",
            "beam_action_bands", "pitch_tongue_bands", "pipeline_bands", "BeamActionResult",
            "beam_action_analysis", "StabilityChart", "stability_chart"]
 
@@ -543,47 +543,22 @@ BAND_MAX_CANDIDATES = 1_000_000
 BAND_OMEGA_BAR_MIN = 0.25
 
 
-@dataclass(frozen=True)
-class BeamActionBand:
-    """One instability band of the beam action in Omega (rad/s), from
-    :func:`beam_action_bands` or :func:`pitch_tongue_bands`.
+def band_modes(modes) -> tuple[BandMode, ...]:
+    """The steady modes of a beam-action band by index (ascending frequency; 0 is the rigid
+    pitch for a small thrust, memo 4.1) as :class:`flexbooster.bands.BandMode`.
 
-    Attributes
+    Parameters
     ----------
-    omega_lo, omega_hi, omega_at_max, omega_center : float
-        Edges, where the growth is largest and the resonance centre (rad/s).
-    growth_rate_max : float
-        Largest growth rate inside (1/s).
-    kind, modes, order, clipped
-        As :class:`flexbooster.floquet.InstabilityRegion` (rigid pitch 0 for a small thrust).
-    critical_gamma : float
-        Smallest gamma at which the band exists; 0 without damping.
+    modes : iterable of int
+        Indices of the steady modes.
+
+    Returns
+    -------
+    tuple of BandMode
+        Labels "rigid pitch" (index 0) and "bending m".
     """
-
-    omega_lo: float
-    omega_hi: float
-    growth_rate_max: float
-    omega_at_max: float
-    kind: str
-    modes: tuple
-    order: int
-    omega_center: float
-    clipped: bool = False
-    critical_gamma: float = 0.0
-
-    @property
-    def width(self) -> float:
-        """omega_hi - omega_lo (rad/s)."""
-        return self.omega_hi - self.omega_lo
-
-    def to_dict(self) -> dict:
-        """JSON-ready mapping."""
-        return {"omega_lo": float(self.omega_lo), "omega_hi": float(self.omega_hi),
-                "width": float(self.width), "growth_rate_max": float(self.growth_rate_max),
-                "omega_at_max": float(self.omega_at_max), "kind": self.kind,
-                "modes": [int(m) for m in self.modes], "order": int(self.order),
-                "omega_center": float(self.omega_center), "clipped": bool(self.clipped),
-                "critical_gamma": float(self.critical_gamma)}
+    return tuple(BandMode(label="rigid pitch" if int(m) == 0 else f"bending {int(m)}",
+                          index=int(m)) for m in modes)
 
 
 def _pitch_column(V: np.ndarray) -> int:
@@ -630,7 +605,7 @@ def modal_damping(system: BeamActionSystem, *, beam_ratio: float = 0.0,
 def beam_action_bands(system: BeamActionSystem, gamma: float, *, omega_min: float,
                       omega_max: float, beam_ratio: float = 0.0, pitch_ratio: float = 0.0,
                       rtol: float = BAND_RTOL, max_order: int | None = BAND_MAX_ORDER,
-                      step_phase: float = 0.12) -> tuple[BeamActionBand, ...]:
+                      step_phase: float = 0.12) -> tuple[Band, ...]:
     """Every instability band of the beam action in [omega_min, omega_max] (rad/s).
 
     :func:`flexbooster.floquet.instability_regions` of q'' + C q' + [A0 - gamma cos(Omega_bar
@@ -656,8 +631,8 @@ def beam_action_bands(system: BeamActionSystem, gamma: float, *, omega_min: floa
 
     Returns
     -------
-    tuple of BeamActionBand
-        Sorted by omega_lo (Bolotin 1964, ch. 1-2, sec. 6; Hsu 1963).
+    tuple of Band
+        Sorted by Omega_lo (Bolotin 1964, ch. 1-2, sec. 6; Hsu 1963).
     """
     gamma = nonnegative("gamma", gamma)
     if gamma >= 1.0:
@@ -680,11 +655,11 @@ def beam_action_bands(system: BeamActionSystem, gamma: float, *, omega_min: floa
             crit[(c.kind, c.modes, c.order)] = c.gamma_cr
     out = []
     for r in regions:
-        out.append(BeamActionBand(
-            omega_lo=r.omega_lo * w1, omega_hi=r.omega_hi * w1,  # Omega_bar -> rad/s
-            growth_rate_max=r.growth_rate_max * w1,  # 1/tau -> 1/s
-            omega_at_max=r.omega_at_max * w1, kind=r.kind, modes=tuple(r.modes),
-            order=int(r.order), omega_center=r.omega_center * w1, clipped=bool(r.clipped),
+        out.append(Band(
+            mechanism="beam_action", Omega_lo=r.omega_lo * w1,  # Omega_bar -> rad/s
+            Omega_hi=r.omega_hi * w1, growth_rate_max=r.growth_rate_max * w1,  # 1/tau -> 1/s
+            Omega_at_max=r.omega_at_max * w1, kind=r.kind, modes=band_modes(r.modes),
+            order=int(r.order), Omega_center=r.omega_center * w1, clipped=bool(r.clipped),
             critical_gamma=float(crit.get((r.kind, tuple(r.modes), r.order), 0.0))))
     return tuple(out)
 
@@ -746,8 +721,8 @@ class BeamActionResult:
     gaps: tuple = ()
 
     def unstable_intervals(self) -> list[tuple[float, float]]:
-        """The bands as (omega_lo, omega_hi) (rad/s)."""
-        return [(float(b.omega_lo), float(b.omega_hi)) for b in self.bands]
+        """The bands as (Omega_lo, Omega_hi) (rad/s)."""
+        return [(float(b.Omega_lo), float(b.Omega_hi)) for b in self.bands]
 
     def to_dict(self) -> dict:
         """JSON-ready mapping (plain lists and floats, no NaN)."""
@@ -962,7 +937,7 @@ def _growth_max(A, C, B, lo: float, hi: float, S: int = TONGUE_HILL_HARMONICS
 
 def pitch_tongue_bands(system: BeamActionSystem, gamma: float, *, omega_min: float,
                        omega_max: float, beam_ratio: float = 0.0, pitch_ratio: float = 0.0,
-                       rtol: float = BAND_RTOL) -> tuple[BeamActionBand, ...]:
+                       rtol: float = BAND_RTOL) -> tuple[Band, ...]:
     """The rigid-pitch tongues of the coupled beam action in a low Omega range.
 
     Below omega_1 / 4 (:data:`BAND_OMEGA_BAR_MIN`) the only bands wider than round-off are the
@@ -983,8 +958,8 @@ def pitch_tongue_bands(system: BeamActionSystem, gamma: float, *, omega_min: flo
 
     Returns
     -------
-    tuple of BeamActionBand
-        Kind "simple", modes (p,), order r, sorted by omega_lo.
+    tuple of Band
+        Kind "simple", modes (p,), order r, sorted by Omega_lo.
     """
     gamma, lo, hi = _tongue_arguments(gamma, omega_min, omega_max)
     rtol = positive("rtol", rtol)
@@ -1004,7 +979,7 @@ def _tongue_arguments(gamma, omega_min, omega_max) -> tuple[float, float, float]
 
 def _tongue_search(system: BeamActionSystem, gamma: float, lo: float, hi: float, *,
                    beam_ratio: float, pitch_ratio: float, rtol: float = BAND_RTOL
-                   ) -> tuple[tuple[BeamActionBand, ...], tuple[SearchGap, ...]]:
+                   ) -> tuple[tuple[Band, ...], tuple[SearchGap, ...]]:
     """:func:`pitch_tongue_bands` (validated arguments) and what its limits leave out: the
     tongues past :data:`TONGUE_MAX_ORDER`, or from the first whose edges do not converge
     within :data:`TONGUE_MAX_HARMONICS` on (one :class:`flexbooster.bands.SearchGap`)."""
@@ -1021,7 +996,7 @@ def _tongue_search(system: BeamActionSystem, gamma: float, lo: float, hi: float,
     out = []
 
     def done(gaps=()):
-        return tuple(sorted(out, key=lambda b: b.omega_lo)), gaps
+        return tuple(sorted(out, key=lambda b: b.Omega_lo)), gaps
 
     def gap(r: int, limit: str, why: str) -> SearchGap:
         top = 2.0 * wp * w1 / r
@@ -1070,10 +1045,11 @@ def _tongue_search(system: BeamActionSystem, gamma: float, lo: float, hi: float,
                 a, b = (a, mid) if edges(mid, (K,))[0] is not None else (mid, b)
             g_cr = b
         e_lo, e_hi = max(e[0] * w1, lo), min(e[1] * w1, hi)
-        out.append(BeamActionBand(
-            omega_lo=e_lo, omega_hi=e_hi, growth_rate_max=g_max * w1,  # 1/tau -> 1/s
-            omega_at_max=x_max * w1, kind="simple", modes=(p,), order=r,
-            omega_center=centre * w1, clipped=(e_lo > e[0] * w1 or e_hi < e[1] * w1),
+        out.append(Band(
+            mechanism="beam_action", Omega_lo=e_lo, Omega_hi=e_hi,
+            growth_rate_max=g_max * w1,  # 1/tau -> 1/s
+            Omega_at_max=x_max * w1, kind="simple", modes=band_modes((p,)), order=r,
+            Omega_center=centre * w1, clipped=(e_lo > e[0] * w1 or e_hi < e[1] * w1),
             critical_gamma=g_cr))
     else:  # the order limit, not a stopping rule, ended the search
         r = max(r_min, TONGUE_MAX_ORDER + 1)
@@ -1089,13 +1065,13 @@ def _band_range(model: BoosterModel, omega_1: float) -> tuple[float, float]:
 
 
 def _band_search(model: BoosterModel, system: BeamActionSystem
-                 ) -> tuple[tuple[BeamActionBand, ...], tuple[SearchGap, ...]]:
+                 ) -> tuple[tuple[Band, ...], tuple[SearchGap, ...]]:
     """:func:`pipeline_bands` and what the limits of the tongue search leave out."""
     lo, hi = _band_range(model, float(system.omega_1))
     gamma = float(model.gamma)
     damping = {"beam_ratio": float(model.beam_damping_ratio),
                "pitch_ratio": float(model.pitch_damping_ratio)}
-    found: tuple[BeamActionBand, ...] = ()
+    found: tuple[Band, ...] = ()
     gaps: tuple[SearchGap, ...] = ()
     if hi > lo:
         found = beam_action_bands(system, gamma, omega_min=lo, omega_max=hi, **damping)
@@ -1106,10 +1082,10 @@ def _band_search(model: BoosterModel, system: BeamActionSystem
                                        **damping)
         found += tuple(b for b in tongues
                        if (b.kind, b.modes, b.order) not in seen)  # a tongue across omega_1/4
-    return tuple(sorted(found, key=lambda b: b.omega_lo)), gaps
+    return tuple(sorted(found, key=lambda b: b.Omega_lo)), gaps
 
 
-def pipeline_bands(model: BoosterModel) -> tuple[BeamActionBand, ...]:
+def pipeline_bands(model: BoosterModel) -> tuple[Band, ...]:
     """The instability bands of :func:`beam_action_analysis`.
 
     Parameters
@@ -1119,9 +1095,9 @@ def pipeline_bands(model: BoosterModel) -> tuple[BeamActionBand, ...]:
 
     Returns
     -------
-    tuple of BeamActionBand
+    tuple of Band
         :func:`beam_action_bands` over [max(Omega[0], omega_1 / 4), Omega[-1]] and the
-        rigid-pitch tongues below (:func:`pitch_tongue_bands`), sorted by omega_lo.
+        rigid-pitch tongues below (:func:`pitch_tongue_bands`), sorted by Omega_lo.
     """
     return _band_search(model, beam_system(model))[0]
 
@@ -1176,7 +1152,7 @@ def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3) -> BeamActionR
     found, gaps = _band_search(model, system)
     for band in found:  # the bands' exact maxima: a grid steps over narrow bands
         if band.growth_rate_max > peak:
-            peak, at_peak = float(band.growth_rate_max), float(band.omega_at_max)
+            peak, at_peak = float(band.growth_rate_max), float(band.Omega_at_max)
     verdict = "unstable" if found else (gaps_text(gaps) if gaps else "stable")
     return BeamActionResult(
         Omega=Ob * w1, Omega_bar=Ob, alpha=natural_branch(red_m, Ob, freqs)[:, :R],

@@ -28,12 +28,12 @@ from typing import Any
 
 import numpy as np
 
-from ..bands import SearchGap, gaps_text
+from ..bands import Band, BandMode, SearchGap, gaps_text
 from ..checks import count, nonnegative, positive
 from ..floquet import mathieu
 
 __all__ = ["pitch_frequency", "mathieu_parameters", "memo_exponent", "psi_three_term",
-           "psi_numerical", "three_term_error", "PITCH_MAX_TONGUE", "PitchBand",
+           "psi_numerical", "three_term_error", "PITCH_MAX_TONGUE", "PITCH_MODE",
            "pitch_band_edges", "pitch_tongue_omega_bound", "pitch_bands", "PitchResult",
            "pitch_analysis"]
 
@@ -279,6 +279,8 @@ def three_term_error(
 #: Largest tongue order r searched; tongues narrower than the round-off of a_r - b_r end the
 #: search earlier (their width falls like (gamma / 8)^r).
 PITCH_MAX_TONGUE = 60
+#: The one mode of the rigid-body pitch bands.
+PITCH_MODE = BandMode(label="rigid pitch")
 
 
 def _check(omega_psi: float, gamma: float, damping_ratio: float) -> float:
@@ -288,46 +290,6 @@ def _check(omega_psi: float, gamma: float, damping_ratio: float) -> float:
         if not nonnegative(name, value) < 1.0:
             raise ValueError(f"{name} = {value!r}: must be < 1")
     return float(damping_ratio)
-
-
-@dataclass(frozen=True)
-class PitchBand:
-    """One instability band of the rigid-body pitch: Mathieu tongue r in Omega (memo 4.2),
-    from :func:`pitch_bands`.
-
-    Attributes
-    ----------
-    omega_lo, omega_hi : float
-        Edges (rad/s): the path (4.2-4) on a_r(q) and b_r(q), or with damping zero growth.
-    growth_rate_max, omega_at_max : float
-        Largest growth rate of psi inside (1/s) and where (rad/s).
-    tongue : int
-        Order r (Omega ~ 2 omega_psi / r).
-    critical_gamma : float
-        Smallest gamma at which the band exists; 0 without damping.
-    clipped : bool
-        True when omega_lo or omega_hi is an end of the Omega range searched.
-    """
-
-    omega_lo: float
-    omega_hi: float
-    growth_rate_max: float
-    omega_at_max: float
-    tongue: int
-    critical_gamma: float = 0.0
-    clipped: bool = False
-
-    @property
-    def width(self) -> float:
-        """omega_hi - omega_lo (rad/s)."""
-        return self.omega_hi - self.omega_lo
-
-    def to_dict(self) -> dict[str, Any]:
-        """JSON-ready mapping (plain floats, ints and bools)."""
-        return {"omega_lo": float(self.omega_lo), "omega_hi": float(self.omega_hi),
-                "width": float(self.width), "growth_rate_max": float(self.growth_rate_max),
-                "omega_at_max": float(self.omega_at_max), "tongue": int(self.tongue),
-                "critical_gamma": float(self.critical_gamma), "clipped": bool(self.clipped)}
 
 
 def pitch_tongue_omega_bound(omega_psi: float, gamma: float, *, tongue: int,
@@ -397,7 +359,7 @@ def pitch_band_edges(omega_psi: float, gamma: float, *, tongue: int,
 
 
 def pitch_bands(omega_psi: float, gamma: float, *, omega_min: float, omega_max: float,
-                damping_ratio: float = 0.0) -> tuple[PitchBand, ...]:
+                damping_ratio: float = 0.0) -> tuple[Band, ...]:
     """Every instability band of the rigid-body pitch in [omega_min, omega_max], exactly.
 
     Without damping the edges are where the path a(Omega) = 4 omega_psi^2 / Omega^2, q = gamma a
@@ -421,14 +383,14 @@ def pitch_bands(omega_psi: float, gamma: float, *, omega_min: float, omega_max: 
 
     Returns
     -------
-    tuple of PitchBand
+    tuple of Band
         Sorted by Omega (memo 4.2-3, 4.2-4; A&S 20.2; Bolotin 1964, sec. 6).
     """
     return _pitch_search(omega_psi, gamma, omega_min, omega_max, damping_ratio)[0]
 
 
 def _pitch_search(omega_psi: float, gamma: float, omega_min: float, omega_max: float,
-                  damping_ratio: float) -> tuple[tuple[PitchBand, ...], tuple[SearchGap, ...]]:
+                  damping_ratio: float) -> tuple[tuple[Band, ...], tuple[SearchGap, ...]]:
     """:func:`pitch_bands` and what PITCH_MAX_TONGUE leaves out."""
     _check(omega_psi, gamma, damping_ratio)
     if not positive("omega_min", omega_min) < positive("omega_max", omega_max):
@@ -474,9 +436,11 @@ def _pitch_search(omega_psi: float, gamma: float, omega_min: float, omega_max: f
         # growth of psi: e^((mu - c) tau_1), tau_1 = Omega t / 2, c = zeta sqrt(a)
         growth = max(f_m, 0.0) * om_m / 2.0
         crit = mathieu.tongue_critical_gamma(r, gamma, zeta) if zeta > 0.0 else 0.0
-        bands.append(PitchBand(omega_lo=float(lo), omega_hi=float(hi),
-                               growth_rate_max=float(growth), omega_at_max=float(om_m),
-                               tongue=r, critical_gamma=crit, clipped=bool(clipped)))
+        bands.append(Band(mechanism="pitch", Omega_lo=float(lo), Omega_hi=float(hi),
+                          kind="simple", order=r, modes=(PITCH_MODE,),
+                          growth_rate_max=float(growth), Omega_at_max=float(om_m),
+                          Omega_center=2.0 * w / r,  # tongue r: a = 4 omega_psi^2/Omega^2 = r^2
+                          critical_gamma=crit, clipped=bool(clipped)))
     else:  # the order limit, not a stopping rule, ended the scan
         r = PITCH_MAX_TONGUE + 1
         top = pitch_tongue_omega_bound(w, gamma, tongue=r, damping_ratio=zeta)
@@ -485,8 +449,8 @@ def _pitch_search(omega_psi: float, gamma: float, omega_min: float, omega_max: f
                             Omega_lo=float(omega_min), Omega_hi=float(min(top, omega_max)),
                             reason=f"the Mathieu tongues r >= {r} (Omega <= {top:.6g} rad/s) "
                                    f"not searched: PITCH_MAX_TONGUE = {PITCH_MAX_TONGUE}")
-            return tuple(sorted(bands, key=lambda b: b.omega_lo)), (gap,)
-    return tuple(sorted(bands, key=lambda b: b.omega_lo)), ()
+            return tuple(sorted(bands, key=lambda b: b.Omega_lo)), (gap,)
+    return tuple(sorted(bands, key=lambda b: b.Omega_lo)), ()
 
 
 # --------------------------------------------------------------------------------------------
@@ -545,7 +509,7 @@ class PitchResult:
 
     def unstable_intervals(self) -> list[tuple[float, float]]:
         """The exact instability bands as (omega_lo, omega_hi) (rad/s), from :attr:`bands`."""
-        return [(float(b.omega_lo), float(b.omega_hi)) for b in self.bands]
+        return [(float(b.Omega_lo), float(b.Omega_hi)) for b in self.bands]
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready mapping: plain lists of floats/bools, no NaN or inf."""
@@ -629,12 +593,12 @@ def pitch_analysis(Omega: Any, omega_psi: float, gamma: float, *,
         )
     else:
         top = max(bands, key=lambda b: b.growth_rate_max)
-        spans = ", ".join(f"[{b.omega_lo:.6g}, {b.omega_hi:.6g}]" for b in bands[:4])
+        spans = ", ".join(f"[{b.Omega_lo:.6g}, {b.Omega_hi:.6g}]" for b in bands[:4])
         more = f" and {len(bands) - 4} more" if len(bands) > 4 else ""
         verdict = (
             f"rigid-body pitch UNSTABLE in {len(bands)} band(s) {spans}{more} rad/s; max "
-            f"growth rate {top.growth_rate_max:.6g} 1/s at Omega = {top.omega_at_max:.6g} "
-            f"rad/s (tongue {top.tongue})"
+            f"growth rate {top.growth_rate_max:.6g} 1/s at Omega = {top.Omega_at_max:.6g} "
+            f"rad/s (tongue {top.order})"
         )
     if not np.all(in_range):
         verdict += f"; {int(np.sum(~in_range))} points outside the memo range (4.2-5)"

@@ -45,6 +45,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..bands import Band, BandMode
 from ..checks import choice, finite, nonnegative, positive
 from .beam_action import beam_system
 from .model import BoosterModel
@@ -58,7 +59,7 @@ __all__ = [
     "DEFAULT_THRESHOLD",
     "DEFAULT_RESOLUTION",
     "RootSeverity",
-    "ResonanceBand",
+    "shell_mode",
     "SeverityResult",
     "root_severity",
     "floquet_vectors",
@@ -517,72 +518,32 @@ def root_severity(model: BoosterModel, table: StabilityTable, params: Excitation
                         beam_amplitude=beam_amplitude, threshold=threshold)
 
 
-@dataclass(frozen=True)
-class ResonanceBand:
-    """Roots of the stability table within a resolution of each other in Omega.
+def shell_mode(cylinder: int, j: int, k: int, branch: int, mode_type: str) -> BandMode:
+    """A memo shell mode (memo 6.1) as a :class:`flexbooster.bands.BandMode`.
 
-    Attributes
+    Parameters
     ----------
-    Omega_lo, Omega_hi : float
-        Lowest and highest root of the band (rad/s).
-    Omega_peak : float
-        The root of largest severity (rad/s).
-    severity : float
-        Largest severity of the band's roots (m/s).
-    severity_rel : float
-        That over the largest of the table (dimensionless).
-    n_roots : int
-        Active roots in the band.
-    families : tuple of int
-        Families of the band's roots (ascending).
-    modes : tuple of (int, int, int, int, str)
-        Shell modes (cylinder, j, k, branch, type) of the band's roots, most severe first.
-    family : int
-        Family of the most severe root.
-    cause : str
-        Its forcing in words (:data:`FAMILY_CAUSES`).
+    cylinder : int
+        Cylinder d (1 aft, 2 forward).
+    j, k : int
+        Axial and circumferential indices.
+    branch : int
+        Branch m of the modal system (1..3, ascending frequency).
+    mode_type : str
+        "axial", "torsional" or "radial".
+
+    Returns
+    -------
+    BandMode
     """
-
-    Omega_lo: float
-    Omega_hi: float
-    Omega_peak: float
-    severity: float
-    severity_rel: float
-    n_roots: int
-    families: tuple[int, ...]
-    modes: tuple[tuple[int, int, int, int, str], ...]
-    family: int
-    cause: str
-
-    @property
-    def mode_text(self) -> str:
-        """The most severe root's shell mode in words (cylinder, j, k, branch m, type)."""
-        c, j, k, m, t = self.modes[0]
-        return f"cylinder {c} shell mode j = {j}, k = {k}, m = {m} ({t})"
-
-    @property
-    def cause_text(self) -> str:
-        """The family of the most severe root and its forcing in words."""
-        return f"family {self.family}: {self.cause}"
-
-    def to_dict(self) -> dict:
-        """JSON-ready mapping (Omega in rad/s and Hz)."""
-        two_pi = 2.0 * np.pi
-        return {
-            "Omega_lo": float(self.Omega_lo), "Omega_hi": float(self.Omega_hi),
-            "Omega_peak": float(self.Omega_peak), "Omega_peak_hz": float(self.Omega_peak / two_pi),
-            "Omega_lo_hz": float(self.Omega_lo / two_pi),
-            "Omega_hi_hz": float(self.Omega_hi / two_pi),
-            "severity": float(self.severity), "severity_rel": float(self.severity_rel),
-            "n_roots": int(self.n_roots), "families": [int(f) for f in self.families],
-            "modes": [[int(a), int(b), int(c), int(e), str(t)] for a, b, c, e, t in self.modes],
-            "family": int(self.family), "cause": self.cause,
-        }
+    return BandMode(label=f"cylinder {cylinder} shell mode j = {j}, k = {k}, m = {branch} "
+                          f"({mode_type})", index=int(branch), k=int(k), order=int(j),
+                    type=mode_type, cylinder=int(cylinder))
 
 
 def resonance_bands(table: StabilityTable, sev: RootSeverity, *,
                     resolution: float = DEFAULT_RESOLUTION,
-                    half_power: np.ndarray | None = None) -> tuple[ResonanceBand, ...]:
+                    half_power: np.ndarray | None = None) -> tuple[Band, ...]:
     """Merge the active roots into bands of Omega, most severe band first.
 
     Parameters
@@ -601,7 +562,7 @@ def resonance_bands(table: StabilityTable, sev: RootSeverity, *,
 
     Returns
     -------
-    tuple of ResonanceBand
+    tuple of Band
         Sorted by decreasing severity.
 
     References
@@ -634,12 +595,15 @@ def resonance_bands(table: StabilityTable, sev: RootSeverity, *,
                    int(table.branch[n]), sev.mode_type[n])
             if key not in modes:
                 modes.append(key)
-        bands.append(ResonanceBand(
-            Omega_lo=float(Om[a]), Omega_hi=float(Om[b - 1]), Omega_peak=float(table.Omega[top]),
+        peak = float(table.Omega[top])
+        family = int(table.family[top])
+        bands.append(Band(
+            mechanism="resonance", kind="resonance", Omega_lo=float(Om[a]),
+            Omega_hi=float(Om[b - 1]), Omega_at_max=peak, Omega_center=peak,
+            growth_rate_max=0.0, order=family, modes=tuple(shell_mode(*m) for m in modes),
             severity=float(sev.severity[top]), severity_rel=float(sev.severity_rel[top]),
             n_roots=int(b - a), families=tuple(sorted({int(table.family[n]) for n in members})),
-            modes=tuple(modes), family=int(table.family[top]),
-            cause=FAMILY_CAUSES[int(table.family[top])]))
+            cause=FAMILY_CAUSES[family]))
     bands.sort(key=lambda x: -x.severity)
     return tuple(bands)
 
@@ -652,14 +616,14 @@ class SeverityResult:
     ----------
     roots : RootSeverity
         Per-root severity (the table's ``severity`` and ``severity_rel`` columns).
-    bands : tuple of ResonanceBand
+    bands : tuple of Band
         The active roots merged into bands, most severe first.
     resolution : float
         Relative resolution in Omega of the bands (dimensionless).
     """
 
     roots: RootSeverity
-    bands: tuple[ResonanceBand, ...]
+    bands: tuple[Band, ...]
     resolution: float
 
     def to_dict(self) -> dict:
@@ -672,17 +636,17 @@ class SeverityResult:
         """One flat mapping per band (the rows of resonance-bands.csv), most severe first."""
         rows = []
         for rank, b in enumerate(self.bands, start=1):
-            d = b.to_dict()
             top = b.modes[0]
             rows.append({
-                "rank": rank, "Omega_lo_rad_s": d["Omega_lo"], "Omega_hi_rad_s": d["Omega_hi"],
-                "Omega_peak_rad_s": d["Omega_peak"], "Omega_peak_hz": d["Omega_peak_hz"],
-                "severity_m_s": d["severity"], "severity_rel": d["severity_rel"],
-                "n_roots": d["n_roots"], "family": d["family"],
+                "rank": rank, "Omega_lo_rad_s": b.Omega_lo, "Omega_hi_rad_s": b.Omega_hi,
+                "Omega_peak_rad_s": b.Omega_at_max,
+                "Omega_peak_hz": b.Omega_at_max / (2.0 * np.pi),
+                "severity_m_s": b.severity, "severity_rel": b.severity_rel,
+                "n_roots": b.n_roots, "family": b.order,
                 "families": " ".join(str(f) for f in b.families),
-                "cylinder": top[0], "j": top[1], "k": top[2], "branch": top[3],
-                "mode_type": top[4],
-                "modes": " ".join(f"{c}/{j}/{k}/{m}" for c, j, k, m, _ in b.modes),
+                "cylinder": top.cylinder, "j": top.order, "k": top.k, "branch": top.index,
+                "mode_type": top.type,
+                "modes": " ".join(f"{m.cylinder}/{m.order}/{m.k}/{m.index}" for m in b.modes),
                 "cause": b.cause})
         return rows
 

@@ -395,7 +395,7 @@ def _pitch(results: Results, svgs: Mapping[str, str] | None) -> str:
         out += "<p>Instability bands of Omega (exact edges):</p>" + _table(
             ("tongue", "from (rad/s)", "to (rad/s)", "from (Hz)", "to (Hz)",
              "max growth (1/s)", "critical gamma"),
-            [(b.tongue, b.omega_lo, b.omega_hi, _hz(b.omega_lo), _hz(b.omega_hi),
+            [(b.order, b.Omega_lo, b.Omega_hi, _hz(b.Omega_lo), _hz(b.Omega_hi),
               b.growth_rate_max, b.critical_gamma) for b in bands[:50]], (True,) * 7)
         if len(bands) > 50:
             out += f'<p class="note">First 50 of {len(bands)} bands.</p>'
@@ -422,12 +422,12 @@ def _beam_action(results: Results) -> str:
          float(np.real(ba.frequencies[r])), "omega_1")
         for r in range(np.size(ba.frequencies))
     ]
-    out = _verdict(ba.verdict, not ba.bands and not getattr(ba, "skipped", ())) + _qvu(rows)
+    out = _verdict(ba.verdict, not ba.bands and not ba.gaps) + _qvu(rows)
     if ba.bands:
         out += "<p>Instability bands of Omega (edges on |rho| = 1):</p>" + _table(
             ("kind", "modes", "j", "from (rad/s)", "to (rad/s)", "max growth (1/s)",
              "critical gamma"),
-            [(b.kind, "+".join(str(m) for m in b.modes), b.order, b.omega_lo, b.omega_hi,
+            [(b.kind, "+".join(str(m.index) for m in b.modes), b.order, b.Omega_lo, b.Omega_hi,
               b.growth_rate_max, b.critical_gamma) for b in ba.bands[:50]],
             (False, False, True, True, True, True, True))
         if len(ba.bands) > 50:

@@ -265,7 +265,7 @@ def region_modes_words(region) -> str:
 
     Parameters
     ----------
-    region : VehicleRegion
+    region : Band
         One region of :class:`flexbooster.vehicle.VehicleRegions`.
 
     Returns
@@ -298,7 +298,7 @@ def vehicle_region_verdict(results: Results) -> tuple[str, bool]:
     where = (f"Omega in [{vr.omega_min:.6g}, {vr.omega_max:.6g}] rad/s at gamma = "
              f"{vr.gamma:g}, damping ratio {vr.damping_ratio:g}")
     if not vr.regions and vr.gaps:
-        return (f"unknown: {len(vr.gaps)} harmonic(s) not searched or traced; no region in "
+        return (f"not fully searched: {len(vr.gaps)} harmonic(s) not searched; no region in "
                 f"the others at {where}"), False
     if not vr.regions:
         return f"stable: no parametric instability region reaches {where}", True
@@ -307,8 +307,8 @@ def vehicle_region_verdict(results: Results) -> tuple[str, bool]:
     what = f"{n} parametric instability regions reach" if n > 1 else \
         "1 parametric instability region reaches"
     return (f"unstable: {what} {where}; worst growth rate {worst.growth_rate_max:.4g} 1/s "
-            f"(k = {worst.k}, {worst.kind}, Omega {worst.omega_lo:.6g}.."
-            f"{worst.omega_hi:.6g} rad/s)"), False
+            f"(k = {worst.k}, {worst.kind}, Omega {worst.Omega_lo:.6g}.."
+            f"{worst.Omega_hi:.6g} rad/s)"), False
 
 
 def vehicle_region_rows(results: Results) -> list[Row]:
@@ -412,12 +412,12 @@ def vehicle_region_table(results: Results) -> list[tuple]:
     m = results.memo_roots_in_regions
     unexplained = set() if m is None else {int(i) for i in m.without_active_root}
     order = sorted(range(len(vr.regions)),
-                   key=lambda i: (-vr.regions[i].growth_rate_max, vr.regions[i].omega_lo))
+                   key=lambda i: (-vr.regions[i].growth_rate_max, vr.regions[i].Omega_lo))
     rows = []
     for i in order:
         r = vr.regions[i]
         memo = "-" if m is None else ("no" if i in unexplained else "yes")
-        rows.append((r.omega_lo, r.omega_hi, _hz(r.omega_lo), _hz(r.omega_hi), r.k,
+        rows.append((r.Omega_lo, r.Omega_hi, _hz(r.Omega_lo), _hz(r.Omega_hi), r.k,
                      region_modes_words(r), r.kind, r.order, r.growth_rate_max,
                      r.critical_gamma, memo))
     return rows
@@ -444,7 +444,7 @@ def memo_root_rows(results: Results) -> list[tuple]:
     out = []
     for n in range(len(m)):
         r = vr.regions[int(m.region[n])]
-        out.append((f"k = {r.k}, {r.kind}, j = {r.order}, {r.omega_lo:.6g}..{r.omega_hi:.6g}",
+        out.append((f"k = {r.k}, {r.kind}, j = {r.order}, {r.Omega_lo:.6g}..{r.Omega_hi:.6g}",
                     float(m.Omega[n]), int(m.family[n]),
                     f"{m.cylinder[n]}, {m.j[n]}, {m.k[n]}, {m.branch[n]}",
                     "active" if m.active[n] else "listed", "yes" if m.same_k[n] else "no",
@@ -477,13 +477,14 @@ def band_rows(results: Results, limit: int = 10) -> list[tuple[str, ...]]:
         return []
     out = []
     for n, b in enumerate(sev.bands[:limit], start=1):
-        c, j, k, m, typ = b.modes[0]
+        top = b.modes[0]
+        c, j, k, m, typ = top.cylinder, top.order, top.k, top.index, top.type
         more = f" +{len(b.modes) - 1}" if len(b.modes) > 1 else ""
         fams = ",".join(str(f) for f in b.families)
-        out.append((str(n), f"{b.Omega_peak:.6g}", f"{b.Omega_peak / (2 * math.pi):.6g}",
+        out.append((str(n), f"{b.Omega_at_max:.6g}", f"{b.Omega_at_max / (2 * math.pi):.6g}",
                     f"{b.Omega_lo:.6g}..{b.Omega_hi:.6g}", f"{b.severity:.3g}",
                     f"{b.severity_rel:.3g}", f"{c}, {j}, {k}, {m}, {typ}{more}",
-                    f"{b.family} ({fams})" if len(b.families) > 1 else str(b.family),
+                    f"{b.order} ({fams})" if len(b.families) > 1 else str(b.order),
                     b.cause))
     return out
 

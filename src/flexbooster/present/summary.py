@@ -175,9 +175,9 @@ def _print_beam_and_pitch(results: Results, console: Console) -> None:
         ),
     ]
     for b in p.bands[:5]:
-        rows += [(f"tongue {b.tongue}: Omega (exact edges)", range_text(b.omega_lo, b.omega_hi),
+        rows += [(f"tongue {b.order}: Omega (exact edges)", range_text(b.Omega_lo, b.Omega_hi),
                   "rad/s"),
-                 (f"tongue {b.tongue}: growth rate", _g(b.growth_rate_max), "1/s")]
+                 (f"tongue {b.order}: growth rate", _g(b.growth_rate_max), "1/s")]
     console.print(_table("Rigid-body pitch (memo 4.2, Floquet exponent)", rows))
 
 

@@ -202,11 +202,11 @@ def write_vehicle_files(survey: VehicleSurvey, folder: str | Path, *,
     return written
 
 
-#: Columns of ``vehicle-regions.csv`` (one region a row, sorted by omega_lo then k).
+#: Columns of ``vehicle-regions.csv`` (one region a row, sorted by Omega_lo then k).
 VEHICLE_REGION_CSV_COLUMNS = (
     "k", "kind", "order", "modes", "mode_indices", "Omega_lo_rad_s", "Omega_hi_rad_s",
-    "Omega_lo_hz", "Omega_hi_hz", "width_rad_s", "growth_rate_max", "omega_at_max_rad_s",
-    "omega_center_rad_s", "critical_gamma", "clipped",
+    "Omega_lo_hz", "Omega_hi_hz", "width_rad_s", "growth_rate_max", "Omega_at_max_rad_s",
+    "Omega_center_rad_s", "critical_gamma", "clipped",
 )
 #: Regions listed in the terminal summary (all are in vehicle-regions.csv).
 SUMMARY_REGION_ROWS = 15
@@ -234,14 +234,14 @@ def vehicle_region_columns(regions: VehicleRegions) -> dict[str, list]:
         "order": [int(r.order) for r in rs],
         "modes": [region_modes_words(r) for r in rs],
         "mode_indices": ["+".join(str(m.index) for m in r.modes) for r in rs],
-        "Omega_lo_rad_s": [float(r.omega_lo) for r in rs],
-        "Omega_hi_rad_s": [float(r.omega_hi) for r in rs],
-        "Omega_lo_hz": [float(r.omega_lo) / two_pi for r in rs],
-        "Omega_hi_hz": [float(r.omega_hi) / two_pi for r in rs],
+        "Omega_lo_rad_s": [float(r.Omega_lo) for r in rs],
+        "Omega_hi_rad_s": [float(r.Omega_hi) for r in rs],
+        "Omega_lo_hz": [float(r.Omega_lo) / two_pi for r in rs],
+        "Omega_hi_hz": [float(r.Omega_hi) / two_pi for r in rs],
         "width_rad_s": [float(r.width) for r in rs],
         "growth_rate_max": [float(r.growth_rate_max) for r in rs],
-        "omega_at_max_rad_s": [float(r.omega_at_max) for r in rs],
-        "omega_center_rad_s": [float(r.omega_center) for r in rs],
+        "Omega_at_max_rad_s": [float(r.Omega_at_max) for r in rs],
+        "Omega_center_rad_s": [float(r.Omega_center) for r in rs],
         "critical_gamma": [float(r.critical_gamma) for r in rs],
         "clipped": [bool(r.clipped) for r in rs],
     }

@@ -127,7 +127,7 @@ def point_scalars(data: Mapping[str, Any]) -> dict[str, float]:
         peak = max(action["bands"], key=lambda b: b["growth_rate_max"], default=None)
         out["beam_action_max_growth_rate"] = 0.0 if peak is None else float(peak["growth_rate_max"])
         out["beam_action_unstable_bands"] = float(len(action["bands"]))
-        out["beam_action_Omega_at_max"] = 0.0 if peak is None else float(peak["omega_at_max"])
+        out["beam_action_Omega_at_max"] = 0.0 if peak is None else float(peak["Omega_at_max"])
         growth.append(out["beam_action_max_growth_rate"])
     out["max_growth_rate"] = max(growth)
     table = data.get("stability")

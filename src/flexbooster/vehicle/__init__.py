@@ -16,7 +16,7 @@ from .bending import (
     follower_flutter_thrust,
 )
 from .forced import ForcedPeak, ForcedResponse, LoadEnvelope, ThrustSpectrum, forced_response
-from .harmonic import HarmonicSystem, RegionMode, VehicleRegion
+from .harmonic import HarmonicSystem
 from .regions import (
     RegionCurve,
     VehicleRegions,
@@ -31,8 +31,6 @@ __all__ = [
     "ForcedAxial",
     "HarmonicSystem",
     "RegionCurve",
-    "RegionMode",
-    "VehicleRegion",
     "VehicleRegions",
     "bending_harmonic",
     "bending_regions",

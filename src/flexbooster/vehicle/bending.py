@@ -311,11 +311,11 @@ def bending_regions(
 
     Returns
     -------
-    tuple of VehicleRegion
-        k = 1 regions sorted by omega_lo (those of ``vehicle_regions(..., k_min=1)`` for
+    tuple of Band
+        k = 1 regions sorted by Omega_lo (those of ``vehicle_regions(..., k_min=1)`` for
         k = 1: one code path, :func:`bending_harmonic`); ``modes`` carry the basis mode
         dominating each steady mode (type "rigid-pitch" for the rigid rotation),
-        ``omega_loaded`` the steady frequency; ``critical_gamma`` from
+        ``omega`` the steady frequency; ``critical_gamma`` from
         :func:`flexbooster.floquet.critical_amplitude` with damping (0 without).
 
     References
@@ -334,7 +334,7 @@ def bending_regions(
     if {"rtol", "step_phase", "max_order", "damping_margin"} >= set(opts):
         opts = floquet_options(**opts)  # the options of vehicle_regions, checked alike
     rows = harmonic_regions(h, gamma, omega_min, omega_max, opts)
-    return tuple(sorted(rows, key=lambda r: r.omega_lo))
+    return tuple(sorted(rows, key=lambda r: r.Omega_lo))
 
 
 def bending_harmonic(

@@ -13,46 +13,15 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import floquet
-from ..bands import SearchGap
+from ..bands import Band, BandMode, SearchGap
 from ..checks import count, finite, nonnegative, positive
 from ..shell_of_revolution import BucklingError, buckling_load, labelled_modal_system
 
-__all__ = ["RegionMode", "ModalMatrices", "HarmonicSystem", "VehicleRegion", "LIMIT_ERRORS",
+__all__ = ["ModalMatrices", "HarmonicSystem", "LIMIT_ERRORS",
            "floquet_options", "harmonic_regions", "limit_gap", "in_unit_interval", "loaded_modes"]
 
 #: The toolkit's size limits: past one a harmonic is a :class:`~flexbooster.bands.SearchGap`.
 LIMIT_ERRORS = (floquet.TooManyCandidatesError, floquet.StepLimitError)
-
-
-@dataclass(frozen=True)
-class RegionMode:
-    """One loaded mode taking part in a region.
-
-    Attributes
-    ----------
-    k, index : int
-        Circumferential wave number; index of the loaded mode, ascending frequency.
-    order, type : int, str
-        Meridian sign changes and type of the unloaded mode dominating it
-        (:func:`~flexbooster.shell_of_revolution.vehicle_modes` labels).
-    omega_loaded : float
-        Frequency under the steady thrust F0 (rad/s).
-    share : float
-        Share V_ij^2 of the dominating unloaded mode (dimensionless).
-    """
-
-    k: int
-    index: int
-    order: int
-    type: str
-    omega_loaded: float
-    share: float
-
-    def to_dict(self) -> dict:
-        """JSON-ready mapping."""
-        return {"k": int(self.k), "index": int(self.index), "order": int(self.order),
-                "type": str(self.type), "omega_loaded": float(self.omega_loaded),
-                "share": float(self.share)}
 
 
 class ModalMatrices:
@@ -109,13 +78,14 @@ class HarmonicSystem(ModalMatrices):
     mode_type: np.ndarray
     mode_share: np.ndarray
 
-    def mode(self, index: int) -> RegionMode:
-        """Label of steady mode ``index`` (0..n-1)."""
+    def mode(self, index: int) -> BandMode:
+        """Label of steady mode ``index`` (0..n-1): its type and meridian order, k, the
+        loaded frequency (rad/s) and the share of the basis mode dominating it."""
         index = count("index", index, 0, self.omega_loaded.size - 1)
-        return RegionMode(k=self.k, index=index, order=int(self.mode_order[index]),
-                          type=str(self.mode_type[index]),
-                          omega_loaded=float(self.omega_loaded[index]),
-                          share=float(self.mode_share[index]))
+        order, kind = int(self.mode_order[index]), str(self.mode_type[index])
+        return BandMode(label=f"{kind} {order}", index=index, k=self.k, order=order,
+                        type=kind, omega=float(self.omega_loaded[index]),
+                        share=float(self.mode_share[index]))
 
     def periodic(self, gamma: float) -> tuple:
         """(M, C or None when undamped, A, B) for :mod:`flexbooster.floquet`."""
@@ -133,70 +103,6 @@ class HarmonicSystem(ModalMatrices):
                 "mode_order": [int(v) for v in self.mode_order],
                 "mode_type": [str(v) for v in self.mode_type],
                 "mode_share": self.mode_share.tolist()}
-
-
-@dataclass(frozen=True)
-class VehicleRegion:
-    """One parametric instability region of harmonic k (Bolotin 1964, ch. 1-2; Hsu 1963).
-
-    Attributes
-    ----------
-    k : int
-        Circumferential wave number.
-    kind : str
-        "simple" (Omega near 2 omega_i / j), "sum", "difference" ((omega_i +- omega_k) / j),
-        or "steady" (k = 1: the steady system itself is not stable).
-    order : int
-        j of the resonance centre.
-    modes : tuple of RegionMode
-        The steady modes involved (one for "simple", two otherwise).
-    omega_lo, omega_hi : float
-        Edges in Omega at the requested gamma, |rho|_max = 1 there (rad/s).
-    growth_rate_max, omega_at_max : float
-        Largest growth rate log|rho|_max / T inside (1/s) and where (rad/s).
-    omega_center : float
-        Analytic centre (rad/s).
-    critical_gamma : float
-        Amplitude below which damping suppresses the region (0 without damping).
-    clipped : bool
-        An edge is an end of the Omega range.
-    """
-
-    k: int
-    kind: str
-    order: int
-    modes: tuple
-    omega_lo: float
-    omega_hi: float
-    growth_rate_max: float
-    omega_at_max: float
-    omega_center: float
-    critical_gamma: float
-    clipped: bool = False
-
-    @property
-    def width(self) -> float:
-        """omega_hi - omega_lo (rad/s)."""
-        return self.omega_hi - self.omega_lo
-
-    def to_dict(self) -> dict:
-        """JSON-ready mapping."""
-        return {"k": int(self.k), "kind": self.kind, "order": int(self.order),
-                "modes": [m.to_dict() for m in self.modes], "omega_lo": float(self.omega_lo),
-                "omega_hi": float(self.omega_hi), "width": float(self.width),
-                "growth_rate_max": float(self.growth_rate_max),
-                "omega_at_max": float(self.omega_at_max),
-                "omega_center": float(self.omega_center),
-                "critical_gamma": float(self.critical_gamma), "clipped": bool(self.clipped)}
-
-    def instability_region(self) -> floquet.InstabilityRegion:
-        """The toolkit's region of this row (the top level of
-        :func:`flexbooster.floquet.region_boundaries`)."""
-        return floquet.InstabilityRegion(
-            omega_lo=self.omega_lo, omega_hi=self.omega_hi,
-            growth_rate_max=self.growth_rate_max, omega_at_max=self.omega_at_max,
-            kind=self.kind, modes=tuple(m.index for m in self.modes), order=self.order,
-            omega_center=self.omega_center, clipped=self.clipped)
 
 
 def in_unit_interval(name: str, value) -> float:
@@ -223,7 +129,8 @@ def loaded_modes(vehicle, k: int, n_modes: int, F0: float, *,
     Eigenpairs (w2, V) of K_e + K_g in the mass-normalised basis modes (the loaded modes, so
     V = I to round-off; M = I; Bolotin 1964, sec. 8).  Raises
     :class:`~flexbooster.shell_of_revolution.BucklingError` with the load factor of
-    :func:`~flexbooster.shell_of_revolution.buckling_load` when a loaded omega^2 <= 0.  Returns (modal system, its labels, w2, V).
+    :func:`~flexbooster.shell_of_revolution.buckling_load` when a loaded omega^2 <= 0.
+    Returns (modal system, its labels, w2, V).
 
     Parameters
     ----------
@@ -271,7 +178,7 @@ def floquet_options(rtol=1e-9, step_phase=0.12, max_order=None,
 
 
 def harmonic_regions(h: HarmonicSystem, gamma: float, lo: float, hi: float,
-                     opts: dict) -> list[VehicleRegion]:
+                     opts: dict) -> list[Band]:
     """The regions of one harmonic, with the critical gamma of each one that is not "steady"
     (:func:`flexbooster.floquet.critical_amplitude`, Bolotin sec. 6: where the damped
     region's edges meet; 0 without damping).  Raises :data:`LIMIT_ERRORS` past the
@@ -301,10 +208,11 @@ def harmonic_regions(h: HarmonicSystem, gamma: float, lo: float, hi: float,
         if C is not None and r.kind != "steady" and key not in crit:
             raise ValueError(f"gamma = {gamma!r}: k = {h.k}, region {key} found but its "
                              "critical amplitude was not (inconsistent searches)")
-        rows.append(VehicleRegion(
-            k=h.k, kind=r.kind, order=r.order, modes=tuple(h.mode(i) for i in r.modes),
-            omega_lo=r.omega_lo, omega_hi=r.omega_hi, growth_rate_max=r.growth_rate_max,
-            omega_at_max=r.omega_at_max, omega_center=r.omega_center,
+        rows.append(Band(
+            mechanism="vehicle", k=h.k, kind=r.kind, order=r.order,
+            modes=tuple(h.mode(i) for i in r.modes), Omega_lo=r.omega_lo,
+            Omega_hi=r.omega_hi, growth_rate_max=r.growth_rate_max,
+            Omega_at_max=r.omega_at_max, Omega_center=r.omega_center,
             critical_gamma=float(crit.get(key, 0.0)), clipped=r.clipped))
     return rows
 

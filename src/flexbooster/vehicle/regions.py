@@ -51,7 +51,7 @@ class RegionCurve:
     Attributes
     ----------
     k, kind, order : int, str, int
-        As :class:`.VehicleRegion`.
+        As :class:`flexbooster.bands.Band`.
     modes : tuple of int
         Steady mode indices in harmonic k.
     gamma : ndarray
@@ -81,8 +81,8 @@ class VehicleRegions:
 
     Attributes
     ----------
-    regions : tuple of VehicleRegion
-        Sorted by omega_lo, then k.
+    regions : tuple of Band
+        Sorted by Omega_lo, then k.
     harmonics : tuple of HarmonicSystem
         The periodic system of each harmonic (k ascending).
     curves : tuple of RegionCurve
@@ -105,8 +105,11 @@ class VehicleRegions:
     gimbal_gain : float
         Gimbal gain K of the k = 1 harmonic (dimensionless).
     gaps : tuple of SearchGap
-        What the toolkit's size limits left out (stage "vehicle", per harmonic k): harmonics
-        not searched, whose regions are unknown, and harmonics not traced for the chart.
+        Harmonics the toolkit's size limits left out of the search (stage "vehicle", per
+        harmonic k): their regions are unknown.
+    chart_gaps : tuple of SearchGap
+        Harmonics whose boundary curves the size limits left out of the chart (their regions
+        at the case's gamma are known).
     """
 
     regions: tuple
@@ -124,6 +127,7 @@ class VehicleRegions:
     chart_gamma_max: float | None = None
     gimbal_gain: float = 0.0
     gaps: tuple = ()
+    chart_gaps: tuple = ()
 
     def harmonic(self, k: int) -> HarmonicSystem:
         """The system of harmonic k (one of those computed)."""
@@ -153,7 +157,8 @@ class VehicleRegions:
                 "certificates": [dict(c.to_dict(), k=int(h.k)) for h, c in
                                  zip(self.harmonics, self.certificates, strict=True)],
                 "gimbal_gain": float(self.gimbal_gain),
-                "gaps": [g.to_dict() for g in self.gaps]}
+                "gaps": [g.to_dict() for g in self.gaps],
+                "chart_gaps": [g.to_dict() for g in self.chart_gaps]}
 
 
 def _vehicle(vehicle) -> Vehicle:
@@ -222,6 +227,15 @@ def harmonic_system(
         mode_share=(V**2)[dom, np.arange(n)])
 
 
+def _toolkit_region(band) -> floquet.InstabilityRegion:
+    """The toolkit's region of a band of the map (the top level of
+    :func:`flexbooster.floquet.region_boundaries`): the same edges, the modes by index."""
+    return floquet.InstabilityRegion(
+        omega_lo=band.Omega_lo, omega_hi=band.Omega_hi, growth_rate_max=band.growth_rate_max,
+        omega_at_max=band.Omega_at_max, kind=band.kind, modes=tuple(m.index for m in band.modes),
+        order=band.order, omega_center=band.Omega_center, clipped=band.clipped)
+
+
 def region_curves(
     found: VehicleRegions, *, gamma_max: float, n_gamma: int = 11, rtol: float = 1e-9,
     step_phase: float = 0.12, max_order: int | None = None,
@@ -262,7 +276,7 @@ def region_curves(
             rows = [r for r in found.regions if r.k == h.k]
             if not any(r.kind != "steady" for r in rows):
                 continue
-            top = tuple(r.instability_region() for r in rows)
+            top = tuple(_toolkit_region(r) for r in rows)
         elif floquet.stability_certificate(M, C, A, B).certified:
             continue  # no region at gamma_max: nothing to trace
         try:
@@ -365,7 +379,7 @@ def vehicle_regions(
             regions += harmonic_regions(h, gamma, lo, hi, opts)
         except LIMIT_ERRORS as exc:
             gaps.append(limit_gap(h, lo, hi, exc))
-    regions.sort(key=lambda r: (r.omega_lo, r.k))
+    regions.sort(key=lambda r: (r.Omega_lo, r.k))
     fa = None
     if axial:
         fa = forced_axial(vehicle, F0=F0, omega_min=lo, omega_max=hi, n_modes=n_modes,
@@ -379,5 +393,5 @@ def vehicle_regions(
         curves, more = region_curves(found, gamma_max=gmax, n_gamma=n_gamma, rtol=rtol,
                                      step_phase=step_phase, max_order=max_order,
                                      damping_margin=damping_margin)
-        found = dataclasses.replace(found, curves=curves, gaps=found.gaps + more)
+        found = dataclasses.replace(found, curves=curves, chart_gaps=more)
     return found

@@ -23,7 +23,7 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Rectangle
 
-from ...danger import DangerBand, DangerSummary
+from ...danger import DangerSummary, RankedBand
 from .labels import plain_log_ticks, power_log_ticks
 from .layout import axes_with_colorbar
 
@@ -36,14 +36,14 @@ SVG_TITLES_ATTRIBUTE = "flexbooster_svg_titles"
 _MIN_DECADES = 0.012
 
 
-def band_tooltip(rank: int, band: DangerBand) -> str:
+def band_tooltip(rank: int, band: RankedBand) -> str:
     """The tooltip of one band: rank, edges in rad/s and Hz, growth rate or severity, words.
 
     Parameters
     ----------
     rank : int
         1-based rank in the danger list (dimensionless).
-    band : DangerBand
+    band : RankedBand
         The band.
 
     Returns

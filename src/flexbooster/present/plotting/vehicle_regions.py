@@ -77,7 +77,7 @@ def vehicle_region_chart(regions: VehicleRegions, ax: Axes | None = None) -> Fig
     gamma = float(regions.gamma)
     ax.axhline(gamma, color="C0", ls="--", lw=1.0, label=f"case's gamma = {gamma:g}")
     if regions.regions:
-        xs = np.array([r.omega_at_max for r in regions.regions]) * _TO_HZ
+        xs = np.array([r.Omega_at_max for r in regions.regions]) * _TO_HZ
         rates = np.array([r.growth_rate_max for r in regions.regions])
         ax.scatter(xs, np.full(xs.size, gamma), c=cmap.to_rgba(rates), s=22, ec="k", lw=0.4,
                    zorder=3, label="regions at the case's gamma")
