@@ -254,3 +254,65 @@ def test_public_parameters_are_documented(qualname, obj):
     missing = [p.name for p in params if p.name not in _documented(doc)
                and p.kind not in (p.VAR_POSITIONAL, p.VAR_KEYWORD)]
     assert not missing, f"{qualname}: parameters not documented: {missing}"
+
+
+def _module_graph() -> tuple[dict[str, set[str]], list[tuple[str, str, str, int]]]:
+    """The package's import graph (every import, lazy and type-only ones included) and every
+    private name (one leading underscore) imported from another module."""
+    names = {_name(p) for p in MODULES}
+    graph: dict[str, set[str]] = {m: set() for m in names}
+    private = []
+    for path in MODULES:
+        me = _name(path)
+        for mod, imported, line in _imports(path):
+            if not mod.startswith("flexbooster"):
+                continue
+            for n in imported or [""]:
+                target = f"{mod}.{n}" if f"{mod}.{n}" in names else mod
+                if target in names and target != me:
+                    graph[me].add(target)
+                if n.startswith("_") and not n.startswith("__"):
+                    private.append((me, mod, n, line))
+    return graph, private
+
+
+def test_no_private_name_is_imported_across_modules():
+    _, private = _module_graph()
+    assert not private, "private names imported across modules: " + "; ".join(
+        f"{me}:{line} imports {mod}.{n}" for me, mod, n, line in private)
+
+
+def test_no_import_cycle():
+    """Tarjan's strongly connected components of the import graph: none with two modules."""
+    graph, _ = _module_graph()
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    stack: list[str] = []
+    on: set[str] = set()
+    cycles = []
+
+    def visit(v: str) -> None:
+        index[v] = low[v] = len(index)
+        stack.append(v)
+        on.add(v)
+        for w in sorted(graph[v]):
+            if w not in index:
+                visit(w)
+                low[v] = min(low[v], low[w])
+            elif w in on:
+                low[v] = min(low[v], index[w])
+        if low[v] == index[v]:
+            comp = []
+            while True:
+                w = stack.pop()
+                on.discard(w)
+                comp.append(w)
+                if w == v:
+                    break
+            if len(comp) > 1:
+                cycles.append(sorted(comp))
+
+    for v in sorted(graph):
+        if v not in index:
+            visit(v)
+    assert not cycles, f"import cycles: {cycles}"
