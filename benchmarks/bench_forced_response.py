@@ -1,4 +1,4 @@
-"""Benchmark: flexbooster.vehicle.forced_response on the README's [vehicle] example (issue 34).
+"""Benchmark: flexbooster.dynamics.forced_response on the README's [vehicle] example (issue 34).
 
 Work: README.md's vehicle (cylinder R 1.5 m x 6 m and a cone to R 1.0 m over 1 m, 16 mm walls,
 E = 70 GPa, nu = 0.3, rho = 2700 kg/m^3, free-free, automatic mesh), F0 = 2.8 MN (the default
@@ -31,10 +31,10 @@ import time
 
 import numpy as np
 
+from flexbooster.dynamics import forced_response
+from flexbooster.dynamics.forced import CLUSTER, CLUSTER_DENSITY
+from flexbooster.dynamics.forced_model import cut_vehicle, full_model
 from flexbooster.shell_of_revolution import Cone, Cylinder, Vehicle, mesh_vehicle
-from flexbooster.vehicle import forced_response
-from flexbooster.vehicle.forced import CLUSTER, CLUSTER_DENSITY
-from flexbooster.vehicle.forced_model import cut_vehicle, full_model
 
 ALU = {"E": 70e9, "nu": 0.3, "rho": 2700.0}
 VEHICLE = Vehicle(segments=(Cylinder(1.5, 6.0, 0.016, **ALU), Cone(1.5, 1.0, 1.0, 0.016, **ALU)))

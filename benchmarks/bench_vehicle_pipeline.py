@@ -5,7 +5,7 @@ Work timed (best of ``--repeat``, ``time.perf_counter``), on the default case's 
 modes per k (default 4):
 
 1. ``analyze_vehicle_regions(case, boundaries=False)`` (what ``analyze(..., figures=False)``
-   runs) against the bare ``flexbooster.vehicle.vehicle_regions`` with the same settings: the
+   runs) against the bare ``flexbooster.dynamics.vehicle_regions`` with the same settings: the
    overhead of the case layer (ratio close to 1 is the goal);
 2. ``analyze_vehicle_regions(case, boundaries=True)`` (what ``flexbooster run`` runs: a search
    at the chart's gamma first, the boundary curves only when a region exists there) against
@@ -28,9 +28,9 @@ from bench_vehicle_case import best  # noqa: E402  (best of n, time.perf_counter
 
 from flexbooster.analysis import analyze_vehicle_regions  # noqa: E402
 from flexbooster.case import default_case_text, load_case  # noqa: E402
+from flexbooster.dynamics import vehicle_regions  # noqa: E402
 from flexbooster.memo.charts import VEHICLE_CHART_GAMMA_MAX, VEHICLE_CHART_LEVELS  # noqa: E402
 from flexbooster.model import vehicle_from_case  # noqa: E402
-from flexbooster.vehicle import vehicle_regions  # noqa: E402
 
 __all__: list[str] = []
 

@@ -1,4 +1,4 @@
-"""Benchmark: flexbooster.vehicle.vehicle_regions on the default case's vehicle (issue 15).
+"""Benchmark: flexbooster.dynamics.vehicle_regions on the default case's vehicle (issue 15).
 
 The vehicle of ``flexbooster.model.vehicle_from_case(flexbooster.default_case())`` (the memo's
 two cylinders, memo bulkhead, shear-diaphragm ends, inertia relief), F0 = 2.8 MN, k = 1..20
@@ -44,9 +44,9 @@ import flexbooster
 from flexbooster import floquet
 from flexbooster.case import default_case_text, load_case
 from flexbooster.cost import search_seconds
+from flexbooster.dynamics import vehicle_regions
 from flexbooster.floquet import growth_rate
 from flexbooster.model import vehicle_from_case
-from flexbooster.vehicle import vehicle_regions
 
 F0, GAMMA, LO, HI = 2.8e6, 0.05, 5.0, 2000.0
 

@@ -27,8 +27,8 @@ from flexbooster.analysis import (
     analyze_vehicle_regions,
     memo_roots_in_regions,
 )
+from flexbooster.dynamics import vehicle_regions
 from flexbooster.model import vehicle_from_case
-from flexbooster.vehicle import vehicle_regions
 
 __all__ = ["main"]
 

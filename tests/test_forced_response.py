@@ -1,4 +1,4 @@
-"""Forced response of the vehicle to the thrust oscillation (flexbooster.vehicle.forced).
+"""Forced response of the vehicle to the thrust oscillation (flexbooster.dynamics.forced).
 
 Evidence, by tier:
 
@@ -41,6 +41,8 @@ import pytest
 import scipy.linalg as sla
 from scipy.integrate import solve_ivp
 
+from flexbooster.dynamics import ThrustSpectrum, bending_system, forced_response
+from flexbooster.dynamics.forced import QUANTITIES, STANDARD_GRAVITY
 from flexbooster.shell_of_revolution import (
     Cone,
     Cylinder,
@@ -49,8 +51,6 @@ from flexbooster.shell_of_revolution import (
     system_matrices,
 )
 from flexbooster.shell_of_revolution.assembly import dof_map, element_set, thrust_prestate
-from flexbooster.vehicle import ThrustSpectrum, bending_system, forced_response
-from flexbooster.vehicle.forced import QUANTITIES, STANDARD_GRAVITY
 
 ALU = {"E": 70e9, "nu": 0.3, "rho": 2700.0}
 # the thin rod-like cylinder (ring frequency 5340 rad/s, first axial mode 1592 rad/s)

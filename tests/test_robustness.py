@@ -28,6 +28,9 @@ from conftest import dump_toml
 from flexbooster import analysis, checks, cost, units
 from flexbooster.analysis import STAGES, VEHICLE_REGIONS_STAGE, analyze
 from flexbooster.cli import main
+from flexbooster.dynamics import axial as vaxial
+from flexbooster.dynamics import bending as vbending
+from flexbooster.dynamics import regions as vregions
 from flexbooster.errors import CaseError
 from flexbooster.floquet import bounds as fbounds
 from flexbooster.floquet import hill as fhill
@@ -56,9 +59,6 @@ from flexbooster.shell_of_revolution import geometry as sor_geometry
 from flexbooster.shell_of_revolution import modes as sor_modes
 from flexbooster.shell_of_revolution import prestress as sor_prestress
 from flexbooster.shell_of_revolution import survey as sor_survey
-from flexbooster.vehicle import axial as vaxial
-from flexbooster.vehicle import bending as vbending
-from flexbooster.vehicle import regions as vregions
 from test_case import BAD_INPUTS, _set
 
 nan, inf = math.nan, math.inf
@@ -435,7 +435,7 @@ API_CALLS = [
     ("cubic_spline-x-not-increasing", "x",
      lambda: responses.excitation.cubic_spline(np.array([0.0, 2.0, 1.0, 3.0]),
                                                np.zeros((4, 1)))),
-    # flexbooster.floquet (owner: bands2) and flexbooster.vehicle (owner: vk1)
+    # flexbooster.floquet (owner: bands2) and flexbooster.dynamics (owner: vk1)
     ("periodic_boundaries-period", "period",
      lambda: fhill.periodic_boundaries(_M2, _C2, _A2, _B2, period="x")),
     ("periodic_boundaries-n_harmonics-0", "n_harmonics",

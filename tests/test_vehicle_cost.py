@@ -73,8 +73,8 @@ def test_verdict_is_not_stable_when_a_harmonic_is_a_gap():
     (present.rows.vehicle_region_verdict reads only the stored result)."""
     from types import SimpleNamespace
 
+    from flexbooster.dynamics import VehicleRegions
     from flexbooster.present.rows import vehicle_region_verdict
-    from flexbooster.vehicle import VehicleRegions
 
     vr = VehicleRegions(regions=(), harmonics=(), curves=(), F0=1.0, gamma=0.1,
                         damping_ratio=0.0, omega_min=1.0, omega_max=10.0,

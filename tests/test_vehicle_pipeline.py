@@ -7,7 +7,7 @@ Tiers:
   regions with none, the severity hook), tolerance: exact (integer indices, booleans);
 * interface invariants: the pipeline passes the case's settings (F0, gamma, Omega range,
   ``vehicle.damping_ratio``, ``vehicle.n_modes``, k = 1..min(k_max, 10), defaults without a
-  ``[vehicle]`` table) to :func:`flexbooster.vehicle.vehicle_regions` and stores its result
+  ``[vehicle]`` table) to :func:`flexbooster.dynamics.vehicle_regions` and stores its result
   unchanged (exact: the same call made directly); results.json round trip of the new keys
   (exact, JSON floats are repr round trips); vehicle-regions.csv columns against the result
   objects (exact); the chart and the report drawn from the Results alone with every core
@@ -42,6 +42,11 @@ from flexbooster.analysis import (
 from flexbooster.bands import Band, BandMode, SearchGap
 from flexbooster.case import default_case_text, load_case
 from flexbooster.cli import main
+from flexbooster.dynamics import (
+    RegionCurve,
+    VehicleRegions,
+    vehicle_regions,
+)
 from flexbooster.errors import CaseError
 from flexbooster.memo.charts import VEHICLE_CHART_GAMMA_MAX, VEHICLE_CHART_LEVELS
 from flexbooster.memo.stability import StabilityTable
@@ -50,11 +55,6 @@ from flexbooster.present.io import dumps_finite
 from flexbooster.present.vehicle import VEHICLE_REGION_CSV_COLUMNS, vehicle_region_columns
 from flexbooster.results import MemoRootsInRegions
 from flexbooster.shell_of_revolution import BucklingError
-from flexbooster.vehicle import (
-    RegionCurve,
-    VehicleRegions,
-    vehicle_regions,
-)
 
 #: The small memo analysis of the tests (the vehicle stage is what is tested).
 SMALL_TRUNCATION = dict(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)
@@ -299,7 +299,7 @@ def test_chart_top_gamma_is_certified_free_of_regions(path):
     The top reuses the search's certificates (scaled by gamma): checked against the
     certificate per unit gamma."""
     import flexbooster.analysis as analysis
-    from flexbooster.vehicle import vehicle_regions as regions_of
+    from flexbooster.dynamics import vehicle_regions as regions_of
 
     data = (small_case_data() if path is None else
             tomllib.loads((Path(__file__).parent / "data" / "cases" / path).read_text()))
@@ -417,7 +417,7 @@ def test_csv_columns_against_the_objects(results, tmp_path):
 
 
 def _core_modules():
-    for package in ("flexbooster.memo", "flexbooster.floquet", "flexbooster.vehicle",
+    for package in ("flexbooster.memo", "flexbooster.floquet", "flexbooster.dynamics",
                     "flexbooster.shell_of_revolution"):
         pkg = importlib.import_module(package)
         yield pkg
@@ -558,10 +558,10 @@ def test_forced_axial_resonances_are_reported_from_the_results(results):
 
 def test_pipeline_k1_rows_are_bending_regions(results):
     """Two paths for k = 1: the pipeline's k = 1 rows (vehicle_regions with k_min = 1, the
-    case's gimbal gain thrust.K) equal flexbooster.vehicle.bending_regions called directly
+    case's gimbal gain thrust.K) equal flexbooster.dynamics.bending_regions called directly
     with the case's settings (exact); they reach the CSV columns and the memo-root matching
     (same objects)."""
-    from flexbooster.vehicle import bending_regions
+    from flexbooster.dynamics import bending_regions
 
     case = results.case
     t = case.thrust

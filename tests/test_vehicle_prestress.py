@@ -27,10 +27,10 @@ from scipy.special import mathieu_a, mathieu_b
 import sanders_ritz as ritz
 from flexbooster.analysis import analyze_vehicle_regions
 from flexbooster.case import default_case_text, load_case
+from flexbooster.dynamics import bending_system, harmonic_system, vehicle_regions
 from flexbooster.shell_of_revolution import Cone, Cylinder, Vehicle, mesh_vehicle, vehicle_modes
 from flexbooster.shell_of_revolution.assembly import thrust_prestate
 from flexbooster.shell_of_revolution.elements import reference_element
-from flexbooster.vehicle import bending_system, harmonic_system, vehicle_regions
 
 ALU = {"E": 70e9, "nu": 0.3, "rho": 2700.0}  # README.md's [vehicle] example
 STEEL = {"E": 210e9, "nu": 0.3, "rho": 7850.0}

@@ -31,6 +31,15 @@ from scipy.special import mathieu_a, mathieu_b
 
 import flexbooster
 from flexbooster import floquet
+from flexbooster.dynamics import (
+    bending_regions,
+    bending_system,
+    follower_flutter_thrust,
+    forced_axial,
+    harmonic_system,
+    region_curves,
+    vehicle_regions,
+)
 from flexbooster.memo.beam_action import uniform_beam_system
 from flexbooster.model import vehicle_from_case
 from flexbooster.shell_of_revolution import (
@@ -40,15 +49,6 @@ from flexbooster.shell_of_revolution import (
     Vehicle,
     buckling_load,
     vehicle_modes,
-)
-from flexbooster.vehicle import (
-    bending_regions,
-    bending_system,
-    follower_flutter_thrust,
-    forced_axial,
-    harmonic_system,
-    region_curves,
-    vehicle_regions,
 )
 
 STEEL = {"E": 210e9, "nu": 0.3, "rho": 7850.0}

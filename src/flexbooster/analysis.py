@@ -3,7 +3,7 @@
 A plain sequence of stages in the memo's order, each from the one model built from the case
 (:func:`flexbooster.model.model_from_case`): beam modes, rigid-body pitch, shell frequencies,
 beam action, unstable thrust frequencies (memo 7.3) and their severity, figure data, then the
-vehicle's modes and parametric instability regions (:mod:`flexbooster.vehicle`) with the
+vehicle's modes and parametric instability regions (:mod:`flexbooster.dynamics`) with the
 memo-table roots inside each region; and the warnings under which the analysis goes on.
 """
 
@@ -19,6 +19,7 @@ from ._threads import blas_threads
 from .case import Case
 from .checks import count, finite, positive
 from .danger import danger_summary
+from .dynamics import VehicleRegions, region_curves, vehicle_regions
 from .errors import AnalysisWarning
 from .memo import charts
 from .memo.beam import beam_modes
@@ -33,7 +34,6 @@ from .model import model_from_case, vehicle_from_case
 from .results import SCHEMA_VERSION, UNITS, MemoRootsInRegions, Results
 from .shell_of_revolution import BucklingError
 from .shell_of_revolution.survey import VehicleSurvey, has_flat_plate, vehicle_survey
-from .vehicle import VehicleRegions, region_curves, vehicle_regions
 
 __all__ = [
     "analyze",
@@ -70,7 +70,7 @@ VEHICLE_REGIONS_STAGE = "vehicle instability regions"
 #: Harmonics k of the vehicle regions: k = VEHICLE_REGIONS_K_MIN..vehicle.k_max (default 20,
 #: also for the memo vehicle of a case without ``[vehicle]``); k = 1 is the bending harmonic
 #: with the rigid pitch, the gimbal control and the follower thrust
-#: (:func:`flexbooster.vehicle.bending_regions`), k = 0 the forced axial resonances.
+#: (:func:`flexbooster.dynamics.bending_regions`), k = 0 the forced axial resonances.
 VEHICLE_REGIONS_K_MIN = 1
 #: Thin-shell theory (Donnell, memo 2.3) is trusted for h/R up to 1/20.
 THIN_SHELL_LIMIT = 1.0 / 20.0
@@ -494,7 +494,7 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
         :data:`flexbooster.memo.charts.VEHICLE_CHART_LEVELS` levels up to
         :data:`flexbooster.memo.charts.VEHICLE_CHART_GAMMA_MAX` as far as the stability
         certificate allows (:func:`_chart_gamma`; at least the case's gamma), for the
-        harmonics with a region there (:func:`flexbooster.vehicle.region_curves`).
+        harmonics with a region there (:func:`flexbooster.dynamics.region_curves`).
 
     Returns
     -------

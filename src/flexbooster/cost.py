@@ -419,8 +419,8 @@ def tongue_search_seconds(system: Any, gamma: float, *, omega_min: float, omega_
 # Vehicle stages: calibration on the default case's vehicle (the memo's two
 # cylinders, 263 FE DOFs), one core.  The modes survey (``[vehicle]`` only): k_max = 20 in
 # 0.38 s, 40 in 0.47 s (-> 0.3 s + 5e-3 s per harmonic); building a harmonic of the regions:
-# flexbooster.vehicle.HARMONIC_BUILD_SECONDS; its search where the certificate does not
-# cover it: flexbooster.vehicle.search_seconds.  FE work scales like the DOFs cubed (dense
+# flexbooster.dynamics.HARMONIC_BUILD_SECONDS; its search where the certificate does not
+# cover it: flexbooster.dynamics.search_seconds.  FE work scales like the DOFs cubed (dense
 # eigensolves), floored at a third (fixed overheads).
 _C_SURVEY = (0.3, 5e-3)
 _C_HARMONIC_BUILD = 0.02

@@ -12,6 +12,7 @@ import numpy as np
 
 from . import __version__
 from .danger import DangerSummary
+from .dynamics import VehicleRegions
 from .errors import AnalysisWarning
 from .memo.beam import BeamModes
 from .memo.beam_action import BeamActionResult
@@ -23,7 +24,6 @@ from .memo.severity import SeverityResult
 from .memo.shell import ShellFrequencies
 from .memo.stability import StabilityTable
 from .shell_of_revolution.survey import VehicleSurvey
-from .vehicle import VehicleRegions
 
 if TYPE_CHECKING:
     from .case import Case

@@ -63,7 +63,7 @@ BEAM_ACTION_CHART_MAX_ORDER = 1
 #: :func:`flexbooster.floquet.instability_regions`).
 BEAM_ACTION_CHART_STEP_PHASE = 0.25
 #: gamma levels of the vehicle's (Omega, gamma) region chart (``n_gamma`` of
-#: :func:`flexbooster.vehicle.vehicle_regions`, the tip at the critical gamma included), up to
+#: :func:`flexbooster.dynamics.vehicle_regions`, the tip at the critical gamma included), up to
 #: :data:`VEHICLE_CHART_GAMMA_MAX`.
 VEHICLE_CHART_LEVELS = 4
 #: Largest gamma of the vehicle's region chart, raised to the case's gamma when that is larger

@@ -266,7 +266,7 @@ def region_modes_words(region) -> str:
     Parameters
     ----------
     region : Band
-        One region of :class:`flexbooster.vehicle.VehicleRegions`.
+        One region of :class:`flexbooster.dynamics.VehicleRegions`.
 
     Returns
     -------

@@ -17,9 +17,9 @@ from rich.console import Console
 from rich.markup import escape
 from rich.table import Table
 
+from ..dynamics import VehicleRegions
 from ..results import Results
 from ..shell_of_revolution.survey import VehicleSurvey
-from ..vehicle import VehicleRegions
 from .io import write_csv_atomic, write_json_atomic
 from .rows import (
     MEMO_ROOT_HEADER,

@@ -1,7 +1,7 @@
 """The vehicle's Ince-Strutt chart: parametric instability regions in the (Omega, gamma) plane.
 
-Draws a stored :class:`~flexbooster.vehicle.VehicleRegions` (its boundary curves
-:class:`~flexbooster.vehicle.RegionCurve` and its regions at the case's gamma); it computes
+Draws a stored :class:`~flexbooster.dynamics.VehicleRegions` (its boundary curves
+:class:`~flexbooster.dynamics.RegionCurve` and its regions at the case's gamma); it computes
 nothing.
 """
 
@@ -13,8 +13,8 @@ from matplotlib.cm import ScalarMappable
 from matplotlib.colors import Normalize
 from matplotlib.figure import Figure
 
+from ...dynamics import VehicleRegions
 from ...memo.charts import VEHICLE_CHART_GAMMA_MAX
-from ...vehicle import VehicleRegions
 from .labels import plain_log_ticks
 from .layout import axes_with_colorbar
 

@@ -346,7 +346,7 @@ def bending_harmonic(
 
     The rigid translation of a free-free vehicle is dropped (its column of A and B is zero:
     it is driven but does not act back); the rest is kept in the basis coordinates (see the
-    Notes of :class:`~flexbooster.vehicle.harmonic.HarmonicSystem`), each steady mode (an
+    Notes of :class:`~flexbooster.dynamics.harmonic.HarmonicSystem`), each steady mode (an
     eigenvector of A, ascending real part of the eigenvalue, the order of the modes of
     :func:`flexbooster.floquet.instability_regions`) labelled by the basis mode that dominates
     it.
