@@ -31,7 +31,6 @@ LAYER = {
     "dynamics": "core",
     "model": "model", "cost": "model", "_threads": "pipeline",
     "results": "results", "danger": "results", "analysis": "pipeline",
-    "reference": "reference",
     "present": "present", "sweep": "sweep", "cli": "cli", "__init__": "api", "__main__": "cli",
 }
 #: Which layers a layer may import (itself included).
@@ -42,7 +41,6 @@ ALLOWED = {
     "model": {"model", "core", "input"},
     "results": {"results", "core", "input"},
     "pipeline": {"pipeline", "infra", "results", "model", "core", "input"},
-    "reference": {"reference", "core", "checks"},
     "present": {"present", "infra", "results", "core-types", "input", "api"},
     "sweep": {"sweep", "infra", "pipeline", "results", "model", "core", "input", "present",
               "api"},
@@ -103,7 +101,7 @@ def test_layers_import_only_what_they_may(path):
     allowed = ALLOWED["core"] if mine == "checks" else ALLOWED[mine]
     for mod, names, line in _imports(path):
         if not mod.startswith("flexbooster"):
-            if mine in ("core", "checks", "reference"):
+            if mine in ("core", "checks"):
                 assert mod.split(".")[0] in CORE_THIRD_PARTY | set(sys.stdlib_module_names), (
                     f"{me}:{line} imports {mod}: the numerical core uses numpy and scipy only")
             if mine == "infra":
@@ -129,18 +127,15 @@ def test_layers_import_only_what_they_may(path):
                         "draw stored results, not compute them")
                 continue
             if theirs == "checks":
-                theirs = "checks" if mine in ("core", "checks", "reference") else "input"
+                theirs = "checks" if mine in ("core", "checks") else "input"
             assert theirs in allowed or theirs == mine, (
                 f"{me}:{line} ({mine}) imports {target} ({theirs}); allowed: {sorted(allowed)}")
 
 
-def test_nothing_in_the_product_imports_the_reference_package():
+def test_nothing_in_the_product_imports_the_tests_reference_package():
     for path in MODULES:
-        me = _name(path)
-        if _layer(me) == "reference":
-            continue
         for mod, _, line in _imports(path):
-            assert not mod.startswith("flexbooster.reference"), f"{me}:{line} imports {mod}"
+            assert mod.split(".")[0] != "reference", f"{_name(path)}:{line} imports {mod}"
 
 
 CORE_MODULES = [_name(p) for p in MODULES if _layer(_name(p)) in ("core", "checks")]

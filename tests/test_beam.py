@@ -14,8 +14,8 @@ import pytest
 
 from flexbooster.memo import beam
 from flexbooster.memo.geometry import mass_properties
-from flexbooster.reference import appendix_b
 from harness import Reference, check_reference  # noqa: E402
+from reference import appendix_b
 
 # Geometries (R1, L1, R2, L2) in m, h = 20 mm, rho = 2768 kg/m^3:
 # the default case (Saturn-class), a short forward stage, and one with L/L2 = 7/4, for which

@@ -8,7 +8,7 @@ Tiers of evidence, each expected value computed here, independently of the code 
   x r cos(theta) of a 45-degree cone, Newton (a rigid tank carries its liquid), the
   high-frequency identity M_a = m_L - sum of all slosh masses (Abramson's series);
 * the wet shear-diaphragm cylinder: the 3x3 shell eigenproblem of the same shell theory
-  (flexbooster.reference.donnell.sd_cylinder_stiffness, Leissa sec. 2.1-2.3) with the closed-form
+  (tests/reference/donnell.py: sd_cylinder_stiffness, Leissa sec. 2.1-2.3) with the closed-form
   added mass on the radial inertia, and a Galerkin series for rigid bulkheads;
 * a refined liquid mesh (cone and cylinder tanks without a closed form); bad input.
 
@@ -23,7 +23,6 @@ import pytest
 import scipy.linalg as sla
 from scipy.special import ive, jnp_zeros
 
-from flexbooster.reference.donnell import sd_cylinder_stiffness
 from flexbooster.shell_of_revolution import Cone, Cylinder, Vehicle, mesh_vehicle
 from flexbooster.shell_of_revolution.assembly import dof_map, rigid_body_fields, system_matrices
 from flexbooster.shell_of_revolution.liquid import (
@@ -38,6 +37,7 @@ from flexbooster.shell_of_revolution.wetted_wall import (
     wet_system_matrices,
     wetted_wall,
 )
+from reference.donnell import sd_cylinder_stiffness
 
 E, NU, RHO = 210e9, 0.3, 7850.0
 STEEL = {"E": E, "nu": NU, "rho": RHO}

@@ -52,13 +52,13 @@ from flexbooster.present.outputs import (
     STAGING_PREFIX,
     check_output_set,
 )
-from flexbooster.reference import donnell
 from flexbooster.shell_of_revolution import assembly as sor_assembly
 from flexbooster.shell_of_revolution import elements as sor_elements
 from flexbooster.shell_of_revolution import geometry as sor_geometry
 from flexbooster.shell_of_revolution import modes as sor_modes
 from flexbooster.shell_of_revolution import prestress as sor_prestress
 from flexbooster.shell_of_revolution import survey as sor_survey
+from reference import donnell
 from test_case import BAD_INPUTS, _set
 
 nan, inf = math.nan, math.inf

@@ -27,7 +27,7 @@ from flexbooster.memo.shell import (
 )
 from flexbooster.memo.shell_coefficients import shell_parameters
 from flexbooster.model import model_from_case
-from flexbooster.reference.donnell import (
+from reference.donnell import (
     donnell_cubic,
     donnell_frequencies,
     donnell_reference,

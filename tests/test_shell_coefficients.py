@@ -22,7 +22,7 @@ from flexbooster.memo.shell_coefficients import (
     overlap_matrices,
     shell_parameters,
 )
-from flexbooster.reference.donnell import single_cylinder_matrix
+from reference.donnell import single_cylinder_matrix
 
 E, NU, RHO = 72.39e9, 0.33, 2768.0
 #: Geometries (R1, L1, R2, L2, h) in m: the default case (Saturn-class, CM in cylinder 1), a

@@ -5,7 +5,7 @@ Tiers:
 * exact limits / closed forms: the shear-diaphragm (SD-SD) cylinder, Sanders and Donnell,
   from the 3x3 characteristic determinant written out below from the strain-displacement
   relations (Leissa, NASA SP-288, 1973, sec. 2.1-2.3), independent of the FE code; Donnell's
-  cubic of the memo path (``flexbooster.reference.donnell.donnell_frequencies``,
+  cubic of the memo path (``donnell_frequencies`` of tests/reference/donnell.py,
   Leissa eqs. 2.20-2.22);
   Batdorf's buckling formula; Rayleigh's inextensional modes; exact free-free torsion;
   the Euler-Bernoulli free-free beam; the cone's torsion ODE solved by shooting;
@@ -26,7 +26,6 @@ import scipy.linalg as sla
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
-from flexbooster.reference.donnell import donnell_frequencies
 from flexbooster.shell_of_revolution import (
     Cone,
     Cylinder,
@@ -42,6 +41,7 @@ from flexbooster.shell_of_revolution import (
 from flexbooster.shell_of_revolution.assembly import dof_map, rigid_body_fields
 from flexbooster.shell_of_revolution.elements import reference_element
 from flexbooster.shell_of_revolution.prestress import membrane_prestate
+from reference.donnell import donnell_frequencies
 
 STEEL = {"E": 210e9, "nu": 0.3, "rho": 7850.0}
 E, NU, RHO = STEEL["E"], STEEL["nu"], STEEL["rho"]
@@ -129,7 +129,7 @@ def test_sd_cylinder_matches_closed_form(theory, k):
 
 @pytest.mark.parametrize("k", [0, 2, 5])
 def test_donnell_equals_memo_path_cubic(k):
-    """Donnell FE = flexbooster.reference.donnell.donnell_frequencies (Leissa 2.20-2.22),
+    """Donnell FE = tests/reference/donnell.py: donnell_frequencies (Leissa 2.20-2.22),
     m = 1..3,
     all three branches, rel. 1e-6."""
     length, radius, h = 3.0, 1.2, 0.008

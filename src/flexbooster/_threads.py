@@ -17,10 +17,6 @@ def blas_threads(limit: int = 1) -> Iterator[None]:
     ----------
     limit : int
         Threads per BLAS pool (>= 1).
-
-    Yields
-    ------
-    None
     """
     from threadpoolctl import threadpool_limits
 

@@ -131,15 +131,9 @@ def analyze(
     figures : bool
         Compute the data of the figures (``results.figures``; None without).
     vehicle : bool
-        Compute the vehicle's parametric instability regions (:func:`analyze_vehicle_regions`)
-        and the memo-table roots inside them.
+        Compute the vehicle's parametric instability regions and the memo roots inside them.
     on_estimate : callable, optional
-        Called once before any solver runs with the cost estimate and ``case.max_seconds``
-        (s); a case over its budget is refused before (``CaseError`` on ``max_seconds``).
-
-    Returns
-    -------
-    Results
+        Called before any solver runs with the cost estimate and ``case.max_seconds`` (s).
     """
     step = progress or (lambda stage: None)
     with blas_threads(1):  # many small eigenproblems: one BLAS thread is the fastest
@@ -278,7 +272,8 @@ def _figure_data(model, pitch, shell, action, table, params) -> charts.FigureDat
 
 def simulate_case(case: Case, Omega: float, *, tau_max: float, n_out: int = 401,
                   psi0: float = 0.01) -> SimulationResult:
-    """Modal time responses of a case at one thrust frequency, with the pipeline's parameters.
+    """Modal time responses of a case at one thrust frequency, with the parameter function of the
+    stability table (a simulation at a root is exactly resonant).
 
     Parameters
     ----------
@@ -287,18 +282,11 @@ def simulate_case(case: Case, Omega: float, *, tau_max: float, n_out: int = 401,
     Omega : float
         Thrust frequency (rad/s), > 0.
     tau_max : float
-        Last time tau = omega_1 t (dimensionless), > 0.
+        Last time tau = omega_1 t, > 0.
     n_out : int
         Output times, 2..100000.
     psi0 : float
         Initial pitch angle (rad).
-
-    Returns
-    -------
-    SimulationResult
-        As :func:`flexbooster.memo.responses.simulate`, with beta and alpha_r from the same
-        parameter function as the stability table (so a simulation at a root of the table is
-        exactly resonant).
     """
     # the cheap argument checks of simulate first, before the beam-action analysis
     Omega, tau_max, psi0 = (positive("Omega", Omega), positive("tau_max", tau_max),
@@ -312,9 +300,9 @@ def simulate_case(case: Case, Omega: float, *, tau_max: float, n_out: int = 401,
 
 
 def _beam_action(model: BoosterModel):
-    """:func:`beam_action_analysis`, its refusals as one-line CaseErrors: a period map beyond
-    floating point is the load's; a band search past the Floquet toolkit's limits (resonance
-    candidates, monodromy steps: a huge truncation) the truncation's."""
+    """:func:`beam_action_analysis` with its refusals as one-line CaseErrors (a period-map overflow
+    is the load's; a search past the toolkit's limits the truncation's).
+    """
     from .errors import CaseError
 
     try:
@@ -332,37 +320,22 @@ def _beam_action(model: BoosterModel):
 
 def analyze_vehicle(case: Case, *, k_max: int | None = None, f_max: float | None = None,
                     prestress: bool = True, views: bool = True) -> VehicleSurvey:
-    """The vehicle modes of a case (``flexbooster modes``; the last stage of :func:`analyze`).
+    """The vehicle modes of a case (``flexbooster modes``); CaseError on ``thrust.F0`` when the
+    prestress exceeds a buckling load (docs/theory/vehicle-case.md).
 
     Parameters
     ----------
     case : Case
-        The validated case; its ``[vehicle]`` table, or the memo vehicle built from
-        ``[booster]`` (:func:`flexbooster.model.vehicle_from_case`).
+        The validated case; its ``[vehicle]`` table or the memo vehicle.
     k_max : int, optional
-        Highest circumferential wave number (dimensionless), 0..200; default the case's
-        ``vehicle.k_max`` (20).
+        Highest circumferential wave number, 0..200; default ``vehicle.k_max``.
     f_max : float, optional
         Keep the modes up to this frequency (Hz), > 0; default the band up to 5 times the
         lowest elastic frequency.
     prestress : bool
-        Prestress by the case's steady thrust F0 (inertia relief).
+        Prestress by the case's steady thrust F0.
     views : bool
         Compute the figure data of the mode shapes.
-
-    Returns
-    -------
-    VehicleSurvey
-
-    Raises
-    ------
-    CaseError
-        ``thrust.F0`` when the thrust prestress exceeds a buckling load of the vehicle.
-
-    References
-    ----------
-    .. [1] Tech Memo 104, Fig. 1, sec. 5.3 (the memo vehicle); D. Bushnell, Computers &
-       Structures 4, 1974 (shells of revolution); docs/theory/vehicle-case.md.
     """
     from .errors import CaseError
 
@@ -381,19 +354,13 @@ def analyze_vehicle(case: Case, *, k_max: int | None = None, f_max: float | None
 
 
 def vehicle_warnings(survey: VehicleSurvey) -> list[AnalysisWarning]:
-    """The warnings of the vehicle modes (h/R > 1/20 per segment; prestress left out).
+    """The warnings of the vehicle modes: ``thick-shell`` per segment with h/R > 1/20, and
+    ``vehicle-prestress`` when a flat plate forced the unloaded modes.
 
     Parameters
     ----------
     survey : VehicleSurvey
         From :func:`analyze_vehicle`.
-
-    Returns
-    -------
-    list of AnalysisWarning
-        Code ``thick-shell`` with field ``vehicle.segments[i]`` (or ``booster.cylinder{i+1}``
-        for the memo vehicle), and ``vehicle-prestress`` when a flat plate forced the
-        unloaded modes.
     """
     out = []
     for w in survey.modes.warnings:
@@ -407,10 +374,9 @@ def vehicle_warnings(survey: VehicleSurvey) -> list[AnalysisWarning]:
 
 def _vehicle_regions_stage(case: Case, *, boundaries: bool
                            ) -> tuple[VehicleRegions | None, list[AnalysisWarning]]:
-    """The regions of :func:`analyze_vehicle_regions`, or None and a warning where they cannot
-    be computed (k_max < 1, or the steady thrust buckles a harmonic): the run goes on.  The
-    harmonics left out are warnings, one per kind (:func:`_gap_warnings`):
-    ``vehicle-regions-skipped`` (thrust.omega_min) past the candidate or step limit."""
+    """The regions of :func:`analyze_vehicle_regions`, or None and a warning where they cannot be
+    computed; the harmonics left out are ``vehicle-regions-skipped`` warnings.
+    """
     from .errors import CaseError
     from .vehicle_case import VehicleTable
 
@@ -435,9 +401,9 @@ def _vehicle_regions_stage(case: Case, *, boundaries: bool
 
 
 def _gap_warnings(gaps) -> list[AnalysisWarning]:
-    """One ``vehicle-regions-skipped`` warning per limit for the harmonics a limit left out (a
-    low omega_min can leave out dozens): it names every harmonic (k = 2-9, 12) and quotes the
-    first one's reason; each reason stays in ``VehicleRegions.gaps`` (results.json)."""
+    """One ``vehicle-regions-skipped`` warning per limit naming every harmonic left out (k = 2-9,
+    12) and the first one's reason (each reason stays in ``VehicleRegions.gaps``).
+    """
     groups: dict[str, list] = {}
     for g in gaps:
         groups.setdefault(g.limit, []).append(g)
@@ -469,49 +435,22 @@ def _ranges(ks: list[int]) -> str:
 def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
                             k_max: int | None = None, boundaries: bool = True
                             ) -> VehicleRegions:
-    """The parametric instability regions of the case's vehicle (the last stage of
-    :func:`analyze`).
-
-    The vehicle is the case's ``[vehicle]`` table or the memo's two cylinders
-    (:func:`flexbooster.model.vehicle_from_case`); the thrust T(t) = F0 (1 - gamma cos Omega t)
-    is the case's (F0, gamma, the Omega range of the grid), the modal damping ratio and the
-    modes per harmonic are ``vehicle.damping_ratio`` and ``vehicle.n_modes`` (defaults
-    :data:`flexbooster.vehicle_case.REGION_DAMPING_RATIO`,
-    :data:`~flexbooster.vehicle_case.REGION_N_MODES` without a ``[vehicle]`` table).
+    """The parametric instability regions of the case's vehicle at its thrust, gamma and Omega range
+    (damping and modes per harmonic from ``[vehicle]`` or their defaults); CaseError on
+    ``thrust.F0`` (buckling), ``vehicle.k_max`` (no harmonic) or ``vehicle.segments`` (a flat
+    plate). Bolotin 1964; docs/theory/vehicle-regions.md.
 
     Parameters
     ----------
     case : Case
         The validated case (SI).
     k_min : int
-        Lowest harmonic (dimensionless), >= 1 (:data:`VEHICLE_REGIONS_K_MIN`: k = 1 with the
-        case's gimbal gain ``thrust.K``, the rigid pitch and the follower thrust).
+        Lowest harmonic, >= 1 (k = 1: gimbal gain ``thrust.K``, rigid pitch, follower thrust).
     k_max : int, optional
-        Highest harmonic (dimensionless); default ``vehicle.k_max`` (20 without a
-        ``[vehicle]`` table).
+        Highest harmonic; default ``vehicle.k_max``.
     boundaries : bool
-        Also trace the boundary curves in (Omega, gamma) for the chart, at
-        :data:`flexbooster.memo.charts.VEHICLE_CHART_LEVELS` levels up to
-        :data:`flexbooster.memo.charts.VEHICLE_CHART_GAMMA_MAX` as far as the stability
-        certificate allows (:func:`_chart_gamma`; at least the case's gamma), for the
-        harmonics with a region there (:func:`flexbooster.dynamics.region_curves`).
-
-    Returns
-    -------
-    VehicleRegions
-        Regions of every harmonic k_min..k_max in the case's Omega range at its gamma.
-
-    Raises
-    ------
-    CaseError
-        ``thrust.F0`` when the steady thrust buckles a harmonic (the load factor is named);
-        ``vehicle.k_max`` when fewer than one harmonic remains; ``vehicle.segments`` when a
-        segment is a flat plate (no membrane prestress).
-
-    References
-    ----------
-    .. [1] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964,
-       ch. 1-2, sec. 6, sec. 8; docs/theory/vehicle-regions.md, docs/theory/memo-vs-vehicle.md.
+        Also the boundary curves in (Omega, gamma) for the chart, up to the top gamma of
+        :func:`_chart_gamma`.
     """
     from .errors import CaseError
     from .vehicle_case import VehicleTable
@@ -551,12 +490,9 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
 
 
 def _chart_gamma(found: VehicleRegions) -> float:
-    """Top gamma of the vehicle's (Omega, gamma) chart: the case's gamma, raised towards
-    :data:`~flexbooster.memo.charts.VEHICLE_CHART_GAMMA_MAX` only as far as every harmonic is
-    proven free of regions (the stability certificate of the excitation per unit gamma,
-    :func:`flexbooster.floquet.stability_certificate`): above that a search at the chart's
-    top can cost minutes (a thin-walled vehicle: 300 s at gamma = 0.2) for regions that do
-    not reach the operating gamma."""
+    """Top gamma of the vehicle's chart: the case's gamma, raised towards VEHICLE_CHART_GAMMA_MAX
+    only as far as the stability certificate proves every harmonic free of regions.
+    """
     certified = 0.0
     if found.damping_ratio > 0.0 and found.harmonics:
         # the certificate of gamma B1 has rho = gamma rho_1 (Q is linear in B): it certifies
@@ -574,14 +510,11 @@ def _chart_gamma(found: VehicleRegions) -> float:
 
 def memo_roots_in_regions(table: StabilityTable, regions: VehicleRegions, *,
                           rtol: float = 0.0) -> MemoRootsInRegions:
-    """The memo-table roots that fall inside each vehicle region, and the regions with none.
+    """The memo-table roots inside each vehicle region, and the regions with none.
 
-    A root (memo 7.3: a thrust frequency Omega where an excitation frequency meets a shell
-    frequency) falls inside a region when Omega_lo - rtol Omega_c <= Omega <=
-    Omega_hi + rtol Omega_c (Omega_c the region's centre); with the roots sorted by Omega
-    those of a region are one run, found by bisection (no roots x regions matrix).  The memo's
-    shells and the vehicle's harmonics share the circumferential wave number k: each match
-    says whether the root's shell mode has the region's k.
+    A root falls inside when Omega_lo - rtol Omega_c <= Omega <= Omega_hi + rtol Omega_c, found by
+    bisection on the sorted roots; each match says whether the root's shell mode has the
+    region's k (docs/theory/memo-vs-vehicle.md).
 
     Parameters
     ----------
@@ -590,19 +523,7 @@ def memo_roots_in_regions(table: StabilityTable, regions: VehicleRegions, *,
     regions : VehicleRegions
         The vehicle's parametric regions (Omega in rad/s).
     rtol : float
-        Widening of each region relative to its centre (dimensionless), >= 0.
-
-    Returns
-    -------
-    MemoRootsInRegions
-        One row per (region, root) pair inside, sorted by region then Omega; the regions
-        without any root and without an active one; the roots' ``severity`` where the table
-        has one.
-
-    References
-    ----------
-    .. [1] Tech Memo 104, sec. 7.3 (the roots); Bolotin (1964), ch. 1-2 (the regions);
-       docs/theory/memo-vs-vehicle.md.
+        Widening of each region relative to its centre, >= 0.
     """
     from .checks import nonnegative
 

@@ -1,11 +1,7 @@
-"""Result records shared by every mechanism's search for unstable thrust frequencies.
-
-:class:`Band` is a band of thrust frequencies in which one mechanism (the rigid pitch, the
-memo's beam action, the vehicle's parametric regions, the memo's resonances) is unstable or
-resonant: every mechanism produces it and the danger ranking reads it.  :class:`SearchGap` is
-what a deterministic size or accuracy limit of a search left out (a harmonic, a tongue order, a
-part of the Omega range): a verdict built from bands with a gap is "not fully searched", never
-"stable" (docs/theory/bands.md).  Numerical core: the standard library only.
+"""Result records shared by every mechanism's search: :class:`Band`, a band of thrust
+frequencies in which a mechanism is unstable or resonant, and :class:`SearchGap`, what a
+size or accuracy limit left out (a verdict with a gap is "not fully searched", never
+"stable"; docs/theory/bands.md). Standard library only.
 """
 
 from __future__ import annotations
@@ -24,17 +20,13 @@ class SearchGap:
     Attributes
     ----------
     stage : str
-        The mechanism searched: ``"pitch"``, ``"beam_action"``, ``"vehicle"``,
-        ``"resonance"``.
+        The mechanism searched: ``"pitch"``, ``"beam_action"``, ``"vehicle"``, ``"resonance"``.
     reason : str
-        What was left out and why, in words, naming the limit and its value.
+        What was left out and why, naming the limit and its value.
     limit : str
-        The setting that limits the search (a case field such as ``"truncation.S"`` or a
-        named constant such as ``"PITCH_MAX_TONGUE"``).
-    k : int or None
-        Circumferential harmonic left out, where the search is per harmonic.
-    order : int or None
-        Order left out (a Mathieu tongue r, a resonance order j), where there is one.
+        The limiting setting (a case field such as ``"truncation.S"`` or a named constant).
+    k, order : int or None
+        Circumferential harmonic, and order (tongue r, resonance j), left out where any.
     Omega_lo, Omega_hi : float or None
         The part of the thrust-frequency range left out (rad/s), where it is one interval.
     """
@@ -63,11 +55,6 @@ def gaps_text(gaps: tuple[SearchGap, ...] | list[SearchGap]) -> str:
     ----------
     gaps : sequence of SearchGap
         At least one gap.
-
-    Returns
-    -------
-    str
-        The words a verdict line uses for a search with gaps.
     """
     if not gaps:
         raise ValueError("gaps: empty, a fully searched mechanism has no gap text")
@@ -83,20 +70,14 @@ class BandMode:
     label : str
         The mode in words, e.g. "rigid pitch", "bending 2", "radial 1 (k = 3)".
     index : int
-        Index of the mode in its mechanism's list of modes (ascending frequency).
-    k : int or None
-        Circumferential harmonic, where the mechanism has one.
-    order : int or None
-        Sign changes along the meridian (vehicle) or axial index j (memo shells).
-    type : str or None
-        "axial", "torsional", "breathing", "bending", "radial", where known.
-    omega : float or None
-        Its frequency under the steady thrust (rad/s), where known.
-    share : float or None
-        Share of the dominating unloaded mode in it (dimensionless), where known.
+        Index in its mechanism's list of modes (ascending frequency); a memo shell's branch m.
+    k, order, type : int or None, int or None, str or None
+        Circumferential harmonic; sign changes along the meridian (vehicle) or axial j (memo
+        shells); "axial", "torsional", "breathing", "bending", "radial", where known.
+    omega, share : float or None
+        Its frequency under the steady thrust (rad/s) and the dominating unloaded mode's share.
     cylinder : int or None
-        The memo's cylinder d (1 aft, 2 forward) of a shell mode; its ``index`` is then the
-        branch m (1..3, ascending frequency) and its ``order`` the axial index j.
+        The memo's cylinder d of a shell mode.
     """
 
     label: str
@@ -140,33 +121,24 @@ class Band:
     mechanism : str
         A key of :data:`MECHANISMS`.
     Omega_lo, Omega_hi : float
-        Edges (rad/s), 0 <= Omega_lo <= Omega_hi: where the largest Floquet multiplier has
-        modulus 1 (a region), or the band's lowest and highest root (a resonance).
+        Edges (rad/s): |rho|_max = 1 (a region), or the lowest and highest root (a resonance).
     kind : str
         One of :data:`KINDS`.
     order : int
-        j of the centre 2 omega_i / j or (omega_i +- omega_k) / j (a Mathieu tongue: r); the
-        family (memo 7.3) of the most severe root of a resonance band.
+        j of 2 omega_i / j or (omega_i +- omega_k) / j (tongue r); a resonance's family.
     modes : tuple of BandMode
-        The modes involved (one for "simple", two for a combination; the most severe root's
-        shell mode first for a resonance).
-    growth_rate_max : float
-        Largest growth rate of the motion inside (1/s); 0 for a resonance.
-    Omega_at_max : float
-        Omega where it occurs (rad/s); the most severe root of a resonance band.
-    Omega_center : float
-        The analytic centre (rad/s); the most severe root of a resonance band.
+        The modes involved (the most severe root's shell mode first for a resonance).
+    growth_rate_max, Omega_at_max, Omega_center : float
+        Largest growth rate inside (1/s; 0 for a resonance), where (rad/s), analytic centre.
     critical_gamma : float
-        Smallest gamma at which the band exists (dimensionless); 0 without damping.
+        Smallest gamma at which the band exists; 0 without damping.
     clipped : bool
         An edge is an end of the Omega range searched.
     k : int or None
         Circumferential harmonic of a vehicle region.
-    severity : float or None
-        Resonance: secular growth rate of the resonant shell mode's surface displacement
-        (m/s, memo 7.3 and docs/theory/severity.md); None for a region.
-    severity_rel : float or None
-        Resonance: severity over the largest of the table (dimensionless).
+    severity, severity_rel : float or None
+        Resonance: secular growth rate of the shell mode's surface displacement (m/s,
+        docs/theory/severity.md) and over the table's largest.
     n_roots : int
         Resonance: roots of the stability table in the band; 0 for a region.
     families : tuple of int

@@ -1,13 +1,9 @@
 """Case files: TOML input validated by pydantic, physical values converted to SI by pint.
 
-A case has three tables, ``[booster]`` (with sub-tables ``cylinder1`` and ``cylinder2``),
-``[thrust]`` and ``[truncation]``; the embedded default case
-(``flexbooster init`` writes it) documents every field.  Each physical value is a plain number
-in SI or a string with units ("120 in", "10.5e6 psi"); everything the library sees is SI.
-
-Every invalid input raises :class:`~flexbooster.errors.CaseError` naming the field, the value
-and the rule.  Conditions under which the analysis can go on (h/R > 1/20, Mathieu parameters
-outside the memo's range) are warnings, produced by :func:`flexbooster.analysis.analyze`.
+Tables ``[booster]`` (``cylinder1``, ``cylinder2``), ``[thrust]``, ``[truncation]`` and the
+optional ones; the embedded default case (``flexbooster init``) documents every field. A
+value is an SI number or a string with units. Invalid input raises
+:class:`~flexbooster.errors.CaseError` naming the field, the value and the rule.
 """
 
 from __future__ import annotations
@@ -87,13 +83,9 @@ class Booster(BaseModel):
     cylinder1, cylinder2 : Cylinder
         Geometry of each shell.
     thickness : float
-        Shell thickness h (m), the same for both cylinders (memo 2.2), 0 < h < R_d.
-    E : float
-        Young's modulus (Pa), > 0.
-    nu : float
-        Poisson's ratio, 0 < nu < 0.5.
-    rho : float
-        Mass density (kg/m^3), > 0.
+        Shell thickness h (m), the same for both (memo 2.2), 0 < h < R_d.
+    E, nu, rho : float
+        Young's modulus (Pa) > 0, Poisson's ratio in (0, 0.5), density (kg/m^3) > 0.
     """
 
     model_config = _FROZEN
@@ -118,26 +110,21 @@ class Booster(BaseModel):
 
 
 class Thrust(BaseModel):
-    """The gimbaled pulsating end thrust T(t) = T0 (1 - gamma cos Omega t) (memo 2.2-2).
-
-    Exactly one of ``F0`` (total force, N) and ``T0`` (force per unit circumference of the aft
-    edge, N/m; F0 = 2 pi R1 T0) is given.
+    """The gimbaled pulsating end thrust T(t) = T0 (1 - gamma cos Omega t) (memo 2.2-2); exactly
+    one of ``F0`` and ``T0`` (F0 = 2 pi R1 T0).
 
     Attributes
     ----------
-    F0 : float or None
-        Total steady thrust (N), > 0.
-    T0 : float or None
-        Steady thrust per unit circumference (N/m), > 0.
+    F0, T0 : float or None
+        Total steady thrust (N) or per unit circumference of the aft edge (N/m), > 0.
     gamma : float
-        Relative pulsation amplitude, 0 <= gamma < 1 (the thrust stays positive).
+        Relative pulsation amplitude, 0 <= gamma < 1.
     K : float
-        Gimbal gain (dimensionless), >= 0: the thrust turns by K psi (directional control).
+        Gimbal gain, >= 0: the thrust turns by K psi.
     omega_min, omega_max : float
-        Range of the thrust pulsation frequency Omega (rad/s; "Hz" values are cyclic and are
-        multiplied by 2 pi), 0 < omega_min < omega_max.
+        Range of Omega (rad/s; "Hz" values are cyclic, times 2 pi), 0 < omega_min < omega_max.
     n_omega : int
-        Number of points of the (uniform) Omega grid, 2..100000.
+        Points of the uniform Omega grid, 2..100000.
     """
 
     model_config = _FROZEN
@@ -225,11 +212,10 @@ class Damping(BaseModel):
     Attributes
     ----------
     beam_modal_ratio : float
-        Modal damping ratio zeta of the elastic beam modes, C = V diag(2 zeta omega_k) V^-1 in
-        the modal frame of the steady beam-action system, 0 <= zeta < 1.
-    pitch_ratio : float
-        Damping ratio of the rigid-body pitch, psi'' + 2 zeta omega_psi psi' + ...,
+        Modal damping ratio of the elastic beam modes in the steady beam-action modal frame,
         0 <= zeta < 1.
+    pitch_ratio : float
+        Damping ratio of the rigid-body pitch, 0 <= zeta < 1.
     """
 
     model_config = _FROZEN
@@ -258,24 +244,19 @@ class Output(BaseModel):
     model_config = _FROZEN
     units: Literal["SI", "US"] = "SI"
 class SeverityTable(BaseModel):
-    """Optional reference amplitudes and thresholds of the severity (table ``[severity]``).
-
-    The severity of a root of the stability table (``docs/theory/severity.md``) is
-    the secular growth rate of the resonant shell mode for these amplitudes of the free
-    motions that drive it.
+    """Optional reference amplitudes and thresholds of the severity (table ``[severity]``;
+    docs/theory/severity.md).
 
     Attributes
     ----------
     psi0 : float
-        Reference initial pitch angle psi(0) (rad), default 0.01 (as ``simulate``).
+        Reference initial pitch angle psi(0) (rad), default 0.01.
     beam_amplitude : float
-        Reference Euclidean norm of the beam Floquet vector (units of L, dimensionless),
-        >= 0, default 1e-4 (as ``simulate``).
+        Reference norm of the beam Floquet vector (units of L), >= 0, default 1e-4.
     threshold : float
-        severity_rel at and above which a root is "active", 0 <= threshold <= 1, default 1e-6.
+        severity_rel at and above which a root is "active", in [0, 1], default 1e-6.
     resolution : float
-        Relative resolution in Omega within which active roots merge into a band, in (0, 1),
-        default 0.005.
+        Relative resolution in Omega within which active roots merge, in (0, 1), default 0.005.
     """
 
     model_config = _FROZEN
@@ -305,21 +286,17 @@ class Case(BaseModel):
     ----------
     name : str
         A label for reports.
-    booster : Booster
-    thrust : Thrust
-    truncation : Truncation
-    damping : Damping
-        Optional; no damping by default.
-    severity : SeverityTable
-        Optional reference amplitudes, threshold and band resolution of the severity.
+    booster, thrust, truncation : Booster, Thrust, Truncation
+        The required tables.
+    damping, severity : Damping, SeverityTable
+        Optional tables (no damping by default).
     vehicle : VehicleTable or None
-        The optional ``[vehicle]`` table (:mod:`flexbooster.vehicle_case`); None: the memo
-        vehicle built from ``booster`` is used by ``flexbooster modes`` only.
+        The optional ``[vehicle]`` table (:mod:`flexbooster.vehicle_case`).
     output : Output
         Optional ``[output]``: ``units = "SI" | "US"`` of the summary and report.
     max_seconds : float
-        Budget of the analysis (s), > 0, default 300: a case whose estimated run time
-        (:func:`flexbooster.cost.estimate_cost`) exceeds it is refused before it starts.
+        Budget of the analysis (s), > 0, default 300: a case whose estimated run time exceeds
+        it is refused before it starts.
     """
 
     model_config = _FROZEN
@@ -421,10 +398,8 @@ def _unknown_key(loc: tuple, value: object) -> CaseError:
 
 
 def _from_validation_error(exc: ValidationError) -> CaseError:
-    """The first pydantic error as a one-line CaseError (field, value, rule).
-
-    An unknown key comes before a missing one (a misspelt key is both), and a CaseError
-    raised inside a validator keeps its rule and the value once.
+    """The first pydantic error as a one-line CaseError (an unknown key before a missing one; a
+    CaseError raised in a validator kept as it is).
     """
     errors = exc.errors(include_url=False)
     err = next((e for e in errors if e["type"] == "extra_forbidden"), errors[0])
@@ -492,22 +467,13 @@ def _validate(data: Mapping[str, Any]) -> Case:
 
 
 def load_case(source: str | Path | Mapping[str, Any]) -> Case:
-    """Load and validate a case from a TOML file or a mapping.
+    """Load and validate a case from a TOML file or a mapping (CaseError for a missing file, a file
+    that is not TOML, or any invalid field).
 
     Parameters
     ----------
     source : str or pathlib.Path or Mapping
         Path of a TOML case file, or the already-parsed mapping.
-
-    Returns
-    -------
-    Case
-        The validated case, all values in SI.
-
-    Raises
-    ------
-    CaseError
-        For a missing file, a file that is not TOML, or any invalid field.
     """
     if isinstance(source, Mapping):
         return _validate(source)

@@ -23,10 +23,6 @@ def finite(name: str, value: Any) -> float:
         Parameter name for the message.
     value : float-like
         The value to check.
-
-    Returns
-    -------
-    float
     """
     try:
         result = float(value)
@@ -38,7 +34,7 @@ def finite(name: str, value: Any) -> float:
 
 
 def positive(name: str, value: Any) -> float:
-    """``value`` as a finite float > 0 (see :func:`finite`).
+    """``value`` as a finite float > 0.
 
     Parameters
     ----------
@@ -46,10 +42,6 @@ def positive(name: str, value: Any) -> float:
         Parameter name for the message.
     value : float-like
         The value to check.
-
-    Returns
-    -------
-    float
     """
     result = finite(name, value)
     if result <= 0.0:
@@ -58,7 +50,7 @@ def positive(name: str, value: Any) -> float:
 
 
 def nonnegative(name: str, value: Any) -> float:
-    """``value`` as a finite float >= 0 (see :func:`finite`).
+    """``value`` as a finite float >= 0.
 
     Parameters
     ----------
@@ -66,10 +58,6 @@ def nonnegative(name: str, value: Any) -> float:
         Parameter name for the message.
     value : float-like
         The value to check.
-
-    Returns
-    -------
-    float
     """
     result = finite(name, value)
     if result < 0.0:
@@ -78,9 +66,7 @@ def nonnegative(name: str, value: Any) -> float:
 
 
 def count(name: str, value: Any, low: int = 1, high: int | None = 500) -> int:
-    """``value`` as an int in ``low..high`` (no upper bound when ``high`` is None).
-
-    Only Python or numpy integers are accepted (not booleans, not floats such as 2.0).
+    """``value`` as an int in ``low..high`` (Python or numpy integers only, not bools or floats).
 
     Parameters
     ----------
@@ -88,14 +74,8 @@ def count(name: str, value: Any, low: int = 1, high: int | None = 500) -> int:
         Parameter name for the message.
     value : int
         The value to check.
-    low : int
-        Smallest allowed value.
-    high : int or None
-        Largest allowed value (None: no upper bound).
-
-    Returns
-    -------
-    int
+    low, high : int, int or None
+        Smallest and largest allowed values (high None: no upper bound).
     """
     rule = (
         f"must be an integer in {low}..{high}"
@@ -121,10 +101,6 @@ def choice(name: str, value: Any, options: tuple[str, ...]) -> str:
         The value to check.
     options : tuple of str
         The allowed values.
-
-    Returns
-    -------
-    str
     """
     if not isinstance(value, str) or value not in options:
         raise ValueError(f"{name} = {value!r}: must be one of {options}")
@@ -133,7 +109,8 @@ def choice(name: str, value: Any, options: tuple[str, ...]) -> str:
 
 def finite_array(name: str, value: Any, *, positive: bool = False,
                  nonempty: bool = True) -> np.ndarray:
-    """``value`` as a float array of finite values (> 0 with ``positive``), in one line.
+    """``np.asarray(value, dtype=float)`` of finite values (> 0 with ``positive``); the ValueError
+    quotes the first few values on one line.
 
     Parameters
     ----------
@@ -145,17 +122,6 @@ def finite_array(name: str, value: Any, *, positive: bool = False,
         Also require every value > 0.
     nonempty : bool
         Also require at least one value.
-
-    Returns
-    -------
-    numpy.ndarray
-        ``np.asarray(value, dtype=float)``.
-
-    Raises
-    ------
-    ValueError
-        ``"name: must be a non-empty array of finite values > 0 (got [nan, 1.0])"``: the
-        first few values on the same line, never a multi-line array repr.
     """
     rule = (f"must be a{' non-empty' if nonempty else 'n'} array of finite values"
             f"{' > 0' if positive else ''}")

@@ -1,22 +1,15 @@
 """Cost and feasibility of a case before its analysis: bounded run time, physical validity.
 
 :func:`estimate_cost` predicts the run time of :func:`flexbooster.analysis.analyze` from the
-derived model alone (no solver is run): one term per expensive kernel, each with the case
-fields that drive it.  :func:`check_case_cost` refuses (``CaseError``, exit 2 on the command
-line) a case whose estimate exceeds its budget (``max_seconds``, case field or
-``--max-seconds``).  :func:`check_physical` refuses a load at or above what the structure
-carries (divergence or flutter of the steady beam-action system, an absurd Mathieu ``a``) and
-:func:`physical_warnings` names the others (the thrust above the classical buckling load of a
-shell).  The constants are calibrated on the default case (docs/theory/robustness.md); an
-estimate is good to a factor of about 2.
+derived model alone, one term per expensive kernel with the case fields that drive it;
+:func:`check_case_cost` refuses a case over its budget (``max_seconds``); :func:`check_physical`
+refuses a load at or above what the structure carries and :func:`physical_warnings` names
+the others. Constants calibrated on the default case (docs/theory/robustness.md), good to a
+factor of about 2.
 
-References
-----------
-.. [1] Tech Memo 104, eqs. (4.1-10)..(4.1-12) (beam action), (4.2-3), (4.2-4) (pitch),
-   section 7.3 (the stability table).
-.. [2] S. P. Timoshenko, J. M. Gere, *Theory of Elastic Stability*, 2nd ed., McGraw-Hill,
-   1961, eq. (11-17) (classical axial buckling stress of a cylinder).
-.. [3] V. L. Beal, AIAA J. 3 (1965) 486-494 (flutter and divergence of the steady system).
+References: Tech Memo 104, eqs. (4.1-10)..(4.1-12), (4.2-3), (4.2-4), sec. 7.3;
+S. P. Timoshenko, J. M. Gere, *Theory of Elastic Stability*, 1961, eq. (11-17);
+V. L. Beal, AIAA J. 3 (1965) 486-494.
 """
 
 from __future__ import annotations
@@ -50,7 +43,6 @@ from .memo.model import BoosterModel
 from .memo.pitch import PITCH_MAX_TONGUE
 
 __all__ = [
-    "DEFAULT_MAX_SECONDS",
     "CostEstimate",
     "estimate_cost",
     "check_case_cost",
@@ -68,8 +60,6 @@ __all__ = [
 #: omega_1 / 4 (:func:`tongue_search_seconds`).
 TONGUE_PART = "beam-action pitch tongues"
 
-#: Default budget of a run (s): a case whose estimate exceeds it is refused up front.
-DEFAULT_MAX_SECONDS = 300.0
 
 # Calibration (s), measured on the default case on one core (docs/theory/robustness.md).
 _C_MONODROMY = 9e-5  # per grid point and Lawson step, n <= 24 modes (numpy overhead bound)
@@ -102,11 +92,9 @@ class CostEstimate:
         Seconds by kernel.
     drivers : dict of str to tuple of str
         The case fields that drive each kernel.
-    capped_points : int
+    capped_points, capped_omega_max : int, float
         Omega grid points whose beam-action step count is capped
-        (:data:`flexbooster.memo.beam_action.MONODROMY_MAX_STEPS`).
-    capped_omega_max : float
-        The largest of those Omega (rad/s); 0 when none.
+        (:data:`flexbooster.memo.beam_action.MONODROMY_MAX_STEPS`), and the largest (rad/s; 0).
     """
 
     seconds: float
@@ -116,17 +104,13 @@ class CostEstimate:
     capped_omega_max: float = 0.0
 
     def describe(self, n: int = 3) -> str:
-        """The largest ``n`` parts with their fields, in one line.
+        """The largest ``n`` parts with their fields in one line, e.g. ``"Hill determinant 2.2e+03 s
+        (truncation.N, truncation.S); ..."``.
 
         Parameters
         ----------
         n : int
             Number of parts named.
-
-        Returns
-        -------
-        str
-            E.g. ``"Hill determinant 2.2e+03 s (truncation.N, truncation.S); ..."``.
         """
         top = sorted(self.parts.items(), key=lambda kv: -kv[1])[:n]
         return "; ".join(f"{k} {v:.3g} s ({', '.join(self.drivers[k])})" for k, v in top)
@@ -141,10 +125,9 @@ class CostEstimate:
 
 
 def _resonance_weight(A0: np.ndarray, B: np.ndarray, lo: float, hi: float) -> float:
-    """Sum of the orders j of the resonance centres 2 w_i / j, (w_i +- w_k) / j in [lo, hi]
-    whose first-order width estimate is above the band tolerance (Bolotin sec. 3; as the
-    candidates of :func:`flexbooster.floquet.instability_regions`, without its round-off
-    floor, so an over-count); Omega in units of omega_1."""
+    """Sum of the orders j of the resonance centres in [lo, hi] (units of omega_1) whose width
+    estimate is above the band tolerance (an over-count of the toolkit's candidates).
+    """
     mu, V = np.linalg.eig(A0)
     w = np.sqrt(np.abs(mu.real))
     Bt = np.abs(np.linalg.solve(V, B @ V))  # modal coupling, eq. (4.1-11)
@@ -177,8 +160,9 @@ def _tongues(omega_psi: float, lo: float, hi: float, widen: float) -> int:
 
 
 def _tongue_orders(model: BoosterModel, lo: float, hi: float) -> float:
-    """The order-dependent part of the pitch-band search (s): sum of r^1.5 over the tongues
-    r in the range that are wider than round-off (r <= 110 gamma), scaled by gamma^1.5."""
+    """Order-dependent part of the pitch-band search (s): sum of r^1.5 over the tongues in the
+    range wider than round-off (r <= 110 gamma), scaled by gamma^1.5.
+    """
     c, g_ref, r_per_gamma, damped = _C_TONGUE_R
     if model.omega_psi <= 0.0 or model.gamma <= 0.0:
         return 0.0
@@ -194,7 +178,9 @@ def _tongue_orders(model: BoosterModel, lo: float, hi: float) -> float:
 
 def estimate_cost(model: BoosterModel, *, beam_action: bool = True, stability: bool = True,
                   figures: bool = True) -> CostEstimate:
-    """The predicted run time of the analysis of a derived model, by kernel.
+    """The predicted run time of the analysis of a derived model, by kernel: pitch Magnus pass,
+    pitch bands and chart, shell frequencies, beam-action monodromy, Hill determinant, band
+    search and chart, the pitch tongues below omega_1 / 4 (:data:`TONGUE_PART`), stability table.
 
     Parameters
     ----------
@@ -202,21 +188,6 @@ def estimate_cost(model: BoosterModel, *, beam_action: bool = True, stability: b
         The derived model (:func:`flexbooster.model.model_from_case`).
     beam_action, stability, figures : bool
         The stages that will run (as the arguments of :func:`flexbooster.analysis.analyze`).
-
-    Returns
-    -------
-    CostEstimate
-        Seconds by kernel: pitch Magnus pass (24 + 16 sqrt(a + 2 q) steps, a at omega_min,
-        eq. 4.2-4), pitch bands and chart (tongues in the range), shell frequencies
-        (M x N modes), beam-action monodromy (the sum of the capped step counts over the
-        grid), Hill determinant ((2 n (2 S + 1))^3 per point), band search and chart
-        (~n^2.5), the rigid-pitch tongues below omega_1 / 4 (:data:`TONGUE_PART`,
-        :func:`tongue_search_seconds`), stability table
-        (curves x shell modes).
-
-    References
-    ----------
-    Tech Memo 104, eqs. (4.1-10)..(4.1-12), (4.2-3), (4.2-4), section 7.3.
     """
     n = model.truncation
     Omega = np.asarray(model.Omega, dtype=float)
@@ -317,9 +288,10 @@ def _growth_seconds(n: int, S: int) -> float:
 
 
 def _model_harmonics(r: int, centre: float, damped: bool) -> int:
-    """The harmonics K at which the edges of tongue r are modelled to converge (the search
-    raises K by 4 until two agree): 4 for r <= 2, 8 for r <= 6, ..., one step more below
-    TONGUE_FLOOR_OMEGA_BAR with damping, up to TONGUE_MAX_HARMONICS - 4."""
+    """Harmonics K at which the edges of tongue r are modelled to converge: 4 for r <= 2, 8 for
+    r <= 6, ..., one step more below TONGUE_FLOOR_OMEGA_BAR with damping, up to
+    TONGUE_MAX_HARMONICS - 4.
+    """
     K = 4 * math.ceil((r + 2) / 4)
     if damped and centre < TONGUE_FLOOR_OMEGA_BAR:
         K += 4
@@ -327,8 +299,9 @@ def _model_harmonics(r: int, centre: float, damped: bool) -> int:
 
 
 def _mathieu_log_width(theta: float, r: int) -> float:
-    """log of the relative width (in a) of Mathieu tongue r at q = theta r^2, small-q
-    leading term 2 q^r / (4^(r-1) ((r-1)!)^2) / r^2 (A&S 20.2.25 and its higher analogues)."""
+    """log of the relative width (in a) of Mathieu tongue r at q = theta r^2, small-q leading
+    term 2 q^r / (4^(r-1) ((r-1)!)^2) / r^2 (A&S 20.2.25).
+    """
     q = theta * r * r
     if not q > 0.0:
         return -math.inf
@@ -338,39 +311,25 @@ def _mathieu_log_width(theta: float, r: int) -> float:
 
 def tongue_search_seconds(system: Any, gamma: float, *, omega_min: float, omega_max: float,
                           beam_ratio: float = 0.0, pitch_ratio: float = 0.0) -> float:
-    """Estimated time of :func:`flexbooster.memo.beam_action.pitch_tongue_bands`.
+    """Estimated time (s, one core) of :func:`flexbooster.memo.beam_action.pitch_tongue_bands`,
+    without solving an eigenproblem of the search.
 
-    No eigenproblem of the search is solved.  The tongues r whose tip 2 omega_p / r lies in
-    the range are counted while they exist: with pitch damping while the undamped relative
-    width of the pitch-only Mathieu tongue (q = gamma b_p r^2 / (2 mu_p) in the steady modal
-    frame) exceeds 4 zeta_p (damped Mathieu: the growth rate at the centre of the tongue,
-    Delta a / (4 r), must exceed the decay zeta r); without it while the width exceeds 1e-6
-    and r <= 11; for r >= 3 while the tongue's drift below its tip, ~theta^2 / 4 relative
-    (theta = q / r^2), stays inside the search window, r theta^2 <= 2.  Each costs its edges
-    (K = 4..K_r + 4, :func:`_model_harmonics`), its growth maximum and, with damping, the
-    bisection of its critical gamma at K_r; the tongue that ends the search costs its edges.
+    The tongues r with their tip in the range are counted while they exist: damped, while the
+    undamped width of the pitch-only Mathieu tongue exceeds 4 zeta_p; undamped, while it
+    exceeds 1e-6 and r <= 11; for r >= 3 while r theta^2 <= 2 (the tongue's drift stays in the
+    window). Each costs its edges, its growth maximum and, damped, the bisection of its critical
+    gamma (A&S 20.2.25; Bolotin 1964, sec. 6; measured in benchmarks/bench_cost.py).
 
     Parameters
     ----------
     system : BeamActionSystem
         The normalised beam-action system.
     gamma : float
-        Pulsation amplitude (dimensionless), 0 <= gamma < 1.
+        Pulsation amplitude, 0 <= gamma < 1.
     omega_min, omega_max : float
         The low Omega range (rad/s), 0 < omega_min < omega_max.
     beam_ratio, pitch_ratio : float
-        Modal damping ratios (dimensionless).
-
-    Returns
-    -------
-    float
-        Seconds on one core (calibration: the comments above :func:`_qz_seconds`; estimate
-        against measured time in benchmarks/bench_cost.py).
-
-    References
-    ----------
-    M. Abramowitz, I. A. Stegun, *Handbook of Mathematical Functions*, 1964, 20.2.25;
-    Bolotin (1964), sec. 6 (damped regions).
+        Modal damping ratios.
     """
     gamma, lo, hi = (nonnegative("gamma", gamma), positive("omega_min", omega_min),
                      positive("omega_max", omega_max))
@@ -438,11 +397,8 @@ _DAMPED_UPFRONT_FACTOR, _BOUNDARY_SEARCH_FACTOR = 3.0, 4.0
 
 def search_seconds(n_modes: int, omega_min: float, omega_max: float, *, damped: bool,
                    boundaries: bool = False) -> float:
-    """Estimated time (s, one core) of the region search of one harmonic not certified stable.
-
-    (0.1 + 6e-5 n^4) ln(omega_max / omega_min) / ln(400), x 3 damped, x 4 with the chart's
-    curves: good to a factor of about 2 on the memo vehicle, optimistic by up to ~20 on a
-    short stiff vehicle whose frequencies are far above omega_min (calibration: above).
+    """Estimated time (s, one core) of the region search of one harmonic not certified stable:
+    (0.1 + 6e-5 n^4) ln(omega_max / omega_min) / ln(400), x 3 damped, x 4 with the chart.
 
     Parameters
     ----------
@@ -470,9 +426,8 @@ def _dof_factor(vehicle) -> float:
 
 
 def region_modes(case: Any, vehicle: Any = None, *, k_max: int = 10) -> tuple[int, int]:
-    """The modes per harmonic of the vehicle's regions: ``vehicle.n_modes``, at most the DOFs
-    of the vehicle's mesh in a harmonic k = 0..k_max (a basis cannot hold more; k = 0, the
-    forced axial modes, less its rigid motions).
+    """The modes per harmonic of the vehicle's regions (``vehicle.n_modes``, at most the DOFs of
+    the mesh in a harmonic k = 0..k_max) and the smallest mode count of the harmonics.
 
     Parameters
     ----------
@@ -481,13 +436,7 @@ def region_modes(case: Any, vehicle: Any = None, *, k_max: int = 10) -> tuple[in
     vehicle : Vehicle, optional
         Its vehicle (:func:`flexbooster.model.vehicle_from_case`), when already built.
     k_max : int
-        Highest harmonic of the regions (dimensionless), >= 1.
-
-    Returns
-    -------
-    (int, int)
-        The modes used and the smallest mode count of the harmonics (the mesh of
-        :func:`flexbooster.shell_of_revolution.mesh_vehicle`, its constraints per k).
+        Highest harmonic of the regions, >= 1.
     """
     from .model import vehicle_from_case
     from .shell_of_revolution import mesh_vehicle
@@ -507,35 +456,23 @@ def region_modes(case: Any, vehicle: Any = None, *, k_max: int = 10) -> tuple[in
 def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
                           regions: bool = True, figures: bool = True,
                           certified: bool = True) -> CostEstimate:
-    """The predicted time of the vehicle stages of :func:`flexbooster.analysis.analyze`.
+    """The predicted time of the vehicle stages of :func:`flexbooster.analysis.analyze`: "vehicle
+    modes" (``[vehicle]`` only) and "vehicle regions" (:func:`search_seconds` per harmonic not
+    certified), with their fields; no solver is run.
 
     Parameters
     ----------
     case : Case
         The validated case (SI).
     regions_k_max : int, optional
-        Highest harmonic of the regions (dimensionless), >= 1: k = 1..min(vehicle.k_max, it);
-        default ``vehicle.k_max`` (20 without a ``[vehicle]`` table), as the pipeline.
+        Highest harmonic of the regions, >= 1; default ``vehicle.k_max``.
     regions : bool
-        The vehicle's parametric regions are computed (``analyze(..., vehicle=True)``).
+        The vehicle's parametric regions are computed.
     figures : bool
         With the chart's boundary curves.
     certified : bool
-        Assume that damping certifies every harmonic stable (the lower bound: no search;
-        what the default case does); False: every harmonic searched (the upper bound).
-        Without damping every harmonic is searched either way.
-
-    Returns
-    -------
-    CostEstimate
-        Parts "vehicle modes" (``[vehicle]`` only: one FE eigenproblem per k = 0..k_max) and
-        "vehicle regions" (k = 1..k_max: build each harmonic, search those not certified,
-        :func:`search_seconds`), with the fields that drive them; no solver is run (the mesh
-        is built to count its DOFs).
-
-    References
-    ----------
-    Measured calibration (comments in this module); docs/theory/vehicle-regions.md, 3d.
+        Assume that damping certifies every harmonic stable (the lower bound); False: every
+        harmonic searched (the upper bound).
     """
     from .model import vehicle_from_case
     from .vehicle_case import VehicleTable
@@ -571,7 +508,8 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
 
 def check_case_cost(model: BoosterModel, max_seconds: float, *,
                     vehicle: CostEstimate | None = None, **stages: bool) -> CostEstimate:
-    """The cost estimate, or a ``CaseError`` when it exceeds the budget.
+    """The cost estimate (the vehicle parts included), or a ``CaseError`` on ``max_seconds`` with
+    the estimate and its fields when it exceeds the budget.
 
     Parameters
     ----------
@@ -583,20 +521,6 @@ def check_case_cost(model: BoosterModel, max_seconds: float, *,
         The vehicle stages (:func:`estimate_vehicle_cost`), added to the memo's.
     **stages : bool
         ``beam_action``, ``stability``, ``figures`` as for :func:`estimate_cost`.
-
-    Returns
-    -------
-    CostEstimate
-        When within the budget (the vehicle parts included).
-
-    Raises
-    ------
-    CaseError
-        Field ``max_seconds``: one line with the estimate and the fields that drive it.
-
-    References
-    ----------
-    docs/theory/robustness.md.
     """
     max_seconds = positive("max_seconds", max_seconds)
     est = estimate_cost(model, **stages)
@@ -615,24 +539,14 @@ def check_case_cost(model: BoosterModel, max_seconds: float, *,
 
 
 def check_physical(model: BoosterModel) -> None:
-    """Refuse a load at or above what the structure carries, before any solver runs.
+    """Refuse a load at or above what the structure carries, before any solver runs: CaseError on
+    ``thrust.F0`` when the steady beam-action system diverges or flutters (Beal 1965; memo
+    4.1-11) or a = 4 omega_psi^2 / omega_min^2 (4.2-4) exceeds MATHIEU_SCALE_MAX^2.
 
     Parameters
     ----------
     model : BoosterModel
         The derived model.
-
-    Raises
-    ------
-    CaseError
-        ``thrust.F0`` when the steady beam-action system (gamma = 0) diverges (an eigenvalue
-        of A0 = Lambda + B below 0) or flutters (a complex eigenvalue), or when the Mathieu
-        parameter a = 4 omega_psi^2 / omega_min^2 (eq. 4.2-4) exceeds
-        :data:`flexbooster.floquet.MATHIEU_SCALE_MAX` squared.
-
-    References
-    ----------
-    Beal (1965) (follower flutter, divergence); Tech Memo 104, eqs. (4.1-11), (4.2-4).
     """
     lo = float(np.min(model.Omega))
     a_max = 4.0 * model.omega_psi**2 / lo**2  # eq. (4.2-4)
@@ -660,23 +574,13 @@ def check_physical(model: BoosterModel) -> None:
 
 
 def physical_warnings(model: BoosterModel) -> list[AnalysisWarning]:
-    """Named warnings of a load the memo's model does not see (the shells are unloaded).
+    """``shell-buckling`` (field ``thrust.F0``) when F0 reaches the classical axial buckling load
+    2 pi E h^2 / sqrt(3 (1 - nu^2)) of a cylinder (Timoshenko & Gere 1961, eq. 11-17).
 
     Parameters
     ----------
     model : BoosterModel
         The derived model.
-
-    Returns
-    -------
-    list of AnalysisWarning
-        Code ``shell-buckling`` (field ``thrust.F0``) when F0 reaches the classical axial
-        buckling load 2 pi E h^2 / sqrt(3 (1 - nu^2)) of a cylinder (the same for both: h
-        and E are common).
-
-    References
-    ----------
-    Timoshenko & Gere (1961), eq. (11-17).
     """
     f_cr = 2.0 * math.pi * model.E * model.h**2 / math.sqrt(3.0 * (1.0 - model.nu**2))
     if model.F0 >= f_cr:
@@ -690,7 +594,8 @@ def physical_warnings(model: BoosterModel) -> list[AnalysisWarning]:
 
 
 def capped_steps_warning(estimate: CostEstimate, model: BoosterModel) -> list[AnalysisWarning]:
-    """A warning when the beam-action step count was capped at some grid points.
+    """``beam-action-step-cap`` (field ``thrust.omega_min``) when the beam-action step count was
+    capped at some grid points (docs/theory/robustness.md), or nothing.
 
     Parameters
     ----------
@@ -698,15 +603,6 @@ def capped_steps_warning(estimate: CostEstimate, model: BoosterModel) -> list[An
         From :func:`estimate_cost`.
     model : BoosterModel
         The derived model.
-
-    Returns
-    -------
-    list of AnalysisWarning
-        Code ``beam-action-step-cap`` (field ``thrust.omega_min``), or empty.
-
-    References
-    ----------
-    docs/theory/robustness.md (the cap and its error).
     """
     if not estimate.capped_points:
         return []

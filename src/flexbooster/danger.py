@@ -1,11 +1,8 @@
-"""The most dangerous thrust-frequency bands of an analysis, across every mechanism.
-
-:func:`danger_summary` ranks the :class:`flexbooster.bands.Band` of every mechanism computed
-(the rigid-body pitch, memo 4.2; the beam action, memo 4.1; the vehicle's parametric regions;
-the memo's resonances, memo 7.3) and gives one verdict per mechanism, reading what each search
-left out (:class:`flexbooster.bands.SearchGap`): a mechanism with a gap is never "stable".  The
-first screen of the summary and of the report, and the danger-map figure, draw this and nothing
-else.  Results layer.
+"""The most dangerous thrust-frequency bands of an analysis, across every mechanism (memo 4.1,
+4.2, 7.3 and the vehicle's regions): :func:`danger_summary` ranks their
+:class:`flexbooster.bands.Band` and gives one verdict per mechanism, reading the
+:class:`flexbooster.bands.SearchGap` (a mechanism with a gap is never "stable"). The first
+screen and the danger map draw this and nothing else.
 """
 
 from __future__ import annotations
@@ -123,7 +120,8 @@ def _operating(operating_range: tuple[float, float]) -> tuple[float, float]:
 
 def danger_bands(bands: Sequence[Band], *, operating_range: tuple[float, float],
                  limit: int | None = None) -> tuple[RankedBand, ...]:
-    """Every band, most dangerous first.
+    """Every band, most dangerous first: those the operating range reaches, then by growth rate,
+    then resonances by severity; ties by Omega_lo.
 
     Parameters
     ----------
@@ -133,16 +131,6 @@ def danger_bands(bands: Sequence[Band], *, operating_range: tuple[float, float],
         [omega_min, omega_max] of the case (rad/s), finite, 0 <= omega_min < omega_max.
     limit : int, optional
         Keep the first ``limit`` (>= 0); all by default.
-
-    Returns
-    -------
-    tuple of RankedBand
-        Bands reached by the operating range first; then those with a growth rate, largest
-        first; then the resonances, largest severity first; ties by Omega_lo.
-
-    References
-    ----------
-    Tech Memo 104, secs. 4.1, 4.2, 7.3; Bolotin (1964), ch. 1-2, sec. 6.
     """
     lo, hi = _operating(operating_range)
     if limit is not None and (not isinstance(limit, int) or limit < 0):
@@ -160,7 +148,9 @@ def danger_bands(bands: Sequence[Band], *, operating_range: tuple[float, float],
 
 def mechanism_verdicts(ranked: Sequence[RankedBand], *, computed: Mapping[str, bool],
                        gaps: Sequence[SearchGap] = ()) -> tuple[tuple[str, str, str], ...]:
-    """One verdict line per mechanism of :data:`flexbooster.bands.MECHANISMS`.
+    """(key, words, verdict) per mechanism of :data:`flexbooster.bands.MECHANISMS`: "not
+    computed", "stable in the operating range", "not fully searched: ..." or "unstable: N ..."
+    (with "; not fully searched: ..." when a gap remains).
 
     Parameters
     ----------
@@ -170,14 +160,6 @@ def mechanism_verdicts(ranked: Sequence[RankedBand], *, computed: Mapping[str, b
         Whether each mechanism was computed; a missing key means not computed.
     gaps : sequence of SearchGap
         What the searches left out (``stage`` names the mechanism).
-
-    Returns
-    -------
-    tuple of (str, str, str)
-        (key, words, verdict): "not computed"; "stable in the operating range"; "not fully
-        searched: ..." (no band in the range, a gap); or "unstable: N instability regions in
-        the operating range, largest growth rate G 1/s" (resonances: "N resonances (memo
-        7) ..., largest severity S m/s"), with "; not fully searched: ..." when a gap remains.
     """
     out = []
     for key, words in MECHANISMS:
@@ -244,14 +226,9 @@ def danger_summary(*, operating_range: tuple[float, float], bands: Mapping[str, 
     operating_range : (float, float)
         [omega_min, omega_max] (rad/s).
     bands : mapping of str to sequence of Band
-        The bands of each mechanism computed, by key of
-        :data:`flexbooster.bands.MECHANISMS` (a mechanism not computed is absent).
+        The bands of each mechanism computed, by key of :data:`flexbooster.bands.MECHANISMS`.
     gaps : sequence of SearchGap
         What the searches left out.
-
-    Returns
-    -------
-    DangerSummary
     """
     for key in bands:
         if key not in dict(MECHANISMS):

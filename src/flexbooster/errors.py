@@ -1,10 +1,7 @@
-"""Exceptions and warnings shared by every layer of flexbooster.
-
-A :class:`CaseError` is raised for input that makes the analysis impossible; it always names
-the field, the offending value and the rule that was broken, so that the command line can
-print it on one line and exit with status 2.  A :class:`AnalysisWarning` records a condition
-under which the analysis goes on but the user must be told (it reaches the summary and
-``results.json``).
+"""Exceptions and warnings shared by every layer: :class:`CaseError` names the field, the value
+and the rule of input that makes the analysis impossible (one line, exit 2);
+:class:`AnalysisWarning` records a condition under which the analysis goes on (it reaches the
+summary and ``results.json``).
 """
 
 from __future__ import annotations
@@ -26,8 +23,7 @@ class CaseError(ValueError):
     rule : str
         The rule that the value breaks, in words.
     message : str, optional
-        The whole line, where ``field = value: rule`` does not read well (an unknown key:
-        ``thrust.gama: unknown key 'gama' (did you mean 'gamma'?)``).
+        The whole line, where ``field = value: rule`` does not read well.
     """
 
     def __init__(self, field: str, value: object, rule: str, *,

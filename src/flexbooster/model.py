@@ -1,9 +1,5 @@
-"""From a validated case to the derived model: the one place where the input layer meets the core.
-
-References
-----------
-.. [1] Tech Memo 104, sections 2.2, 3.0, 4.2 (see :mod:`flexbooster.memo.model`).
-.. [2] Tech Memo 104, sec. 5.3 and Fig. 1 (the memo vehicle of :func:`vehicle_from_case`).
+"""From a validated case to the derived model: the one place where the input layer meets the
+core (Tech Memo 104, sec. 2.2, 3.0, 4.2, 5.3, Fig. 1).
 """
 
 from __future__ import annotations
@@ -23,24 +19,14 @@ __all__ = ["model_from_case", "vehicle_from_case"]
 
 
 def model_from_case(case: Case) -> BoosterModel:
-    """The derived model of a validated case, built once.
+    """The derived model of a validated case, built once (mass properties, omega_1, omega_psi,
+    shell parameters, T0_bar, thrust, truncation, Omega grid); CaseError on ``booster`` when a
+    derived quantity overflows.
 
     Parameters
     ----------
     case : Case
         From :func:`flexbooster.load_case` or :func:`flexbooster.default_case` (SI).
-
-    Returns
-    -------
-    BoosterModel
-        Mass properties, omega_1, omega_psi, shell parameters, T0_bar, thrust, truncation and
-        the Omega grid (rad/s).
-
-    Raises
-    ------
-    CaseError
-        Field ``booster`` when a derived quantity overflows double precision (e.g. a radius
-        of 1e300 m), with the message naming it.
     """
     b, t, n = case.booster, case.thrust, case.truncation
     try:
@@ -59,31 +45,15 @@ def model_from_case(case: Case) -> BoosterModel:
 
 
 def vehicle_from_case(case: Case) -> Vehicle:
-    """The vehicle of a case as one shell of revolution (``flexbooster.shell_of_revolution``).
-
-    With ``[[vehicle.segments]]``: those segments, aft to forward, each with its own material
-    or the ``[vehicle]`` table's or the ``[booster]``'s, the junction at each segment's aft
-    edge (default ``"continuous"``) and the table's ends (default ``"free"``).  Otherwise the
-    memo's vehicle (Tech Memo 104, Fig. 1): cylinder 1 (R1, length 2 L1) aft and cylinder 2
-    (R2, 2 L2) forward, thickness h and the material of ``[booster]``, joined by the memo's
-    rigid weightless disc (``"memo-bulkhead"``) with the memo's end bulkheads
-    (``"shear-diaphragm"`` ends: v = w = 0, memo eqs. 5.3-2, 5.3-3); a ``[vehicle]`` table
-    without segments may override the junction, the ends and the theory.
+    """The vehicle of a case as one shell of revolution: its ``[[vehicle.segments]]`` (material
+    from the segment, ``[vehicle]`` or ``[booster]``), or the memo vehicle (Fig. 1): the two
+    cylinders of ``[booster]`` joined by a "memo-bulkhead" with "shear-diaphragm" ends (5.3-2,
+    5.3-3), junction, ends and theory overridable by ``[vehicle]``.
 
     Parameters
     ----------
     case : Case
         A validated case (SI).
-
-    Returns
-    -------
-    Vehicle
-        The validated vehicle (its ``warnings`` list the segments with h/R > 1/20).
-
-    References
-    ----------
-    .. [1] Tech Memo 104, sec. 2.2, 5.3 (eqs. 5.3-1 to 5.3-3), Fig. 1.
-    .. [2] D. Bushnell, Computers & Structures 4, 1974 (BOSOR segments and junctions).
     """
     from .vehicle_case import MEMO_END, MEMO_JUNCTION
 

@@ -126,41 +126,35 @@ class Results:
         The validated input.
     mass : MassProperties
         Geometry and mass properties (memo 2.2, Fig. 1-2).
-    omega_1 : float
-        First free-free bending frequency of the equivalent beam, eq. (4.2-8b) (rad/s).
-    omega_psi : float
-        Rigid-body pitch frequency under the steady thrust, sqrt(F0 d2 K / I_cm) (rad/s).
+    omega_1, omega_psi : float
+        First free-free bending frequency (4.2-8b) and rigid pitch frequency (rad/s).
     groups : DimensionlessGroups
         mu, lambda_d, sigma, T0_bar (memo 3.0).
     beam : BeamModes
         lambda_n, alpha_n, omega_n of the first N free-free modes (appendix C).
     pitch : PitchResult
-        Mathieu a, q, the exponent beta (exact and memo) and the rigid-body verdict (4.2).
+        The rigid-body pitch (4.2).
     shell : ShellFrequencies
-        Shell natural frequencies of both cylinders (5.4, 6.2, appendix A).
+        Shell natural frequencies of both cylinders (5.4, 6.2).
     model : BoosterModel
         The derived model the stages were computed from.
     figures : FigureData
-        The data every figure draws (transition curves, excitation curves, charts, shapes).
-    beam_action : BeamActionResult or None
-        Beam-action exponents alpha_r and verdict (4.1); None if not computed.
-    stability : StabilityTable or None
-        Unstable thrust frequencies (7.3); None if not computed.
+        The data every figure draws.
+    beam_action, stability : BeamActionResult or None, StabilityTable or None
+        Beam action (4.1) and unstable thrust frequencies (7.3); None if not computed.
     warnings : tuple of AnalysisWarning
         Conditions the user must know about.
     vehicle : VehicleSurvey or None
-        The vehicle modes (shell of revolution), only for a case with ``[vehicle]``.
+        The vehicle modes, only for a case with ``[vehicle]``.
     vehicle_regions : VehicleRegions or None
-        The vehicle's parametric instability regions (with the (Omega, gamma)
-        boundary curves of the chart when the figures were computed); None with
-        ``analyze(..., vehicle=False)`` or when they could not be computed (see the warnings).
+        The vehicle's parametric instability regions (with the chart's curves when the figures
+        were computed); None when not asked for or not computable (see the warnings).
     memo_roots_in_regions : MemoRootsInRegions or None
-        The memo-table roots inside each region; None without regions or without the table.
+        The memo-table roots inside each region.
     danger : DangerSummary or None
-        One verdict per mechanism and the ranked unstable bands of Omega (the first screen).
+        One verdict per mechanism and the ranked bands (the first screen).
     severity : SeverityResult or None
-        Severity of the roots of ``stability`` and their bands; None if the table
-        was not computed.  results.json holds it as ``stability.severity``.
+        Severity of the roots and their bands (results.json ``stability.severity``).
     """
 
     case: Case
@@ -240,40 +234,28 @@ class Results:
 
 @dataclass(frozen=True)
 class MemoRootsInRegions:
-    """The memo-table roots (memo 7.3) that fall inside the vehicle's parametric regions.
-
-    One row per (region, root) pair, parallel arrays, sorted by region then Omega; made by
-    :func:`flexbooster.analysis.memo_roots_in_regions`.
+    """The memo-table roots (memo 7.3) inside the vehicle's parametric regions, one row per
+    (region, root) pair, sorted by region then Omega (:func:`flexbooster.analysis.
+    memo_roots_in_regions`; docs/theory/memo-vs-vehicle.md).
 
     Attributes
     ----------
-    region : numpy.ndarray of int
-        Index of the region in ``VehicleRegions.regions``.
-    root : numpy.ndarray of int
-        Row of the root in the stability table.
+    region, root : numpy.ndarray of int
+        Index of the region in ``VehicleRegions.regions`` and row of the root in the table.
     Omega : numpy.ndarray
         Thrust frequency of the root (rad/s).
     family, cylinder, j, k, branch : numpy.ndarray of int
-        The root's family (memo 7.4) and shell mode (cylinder d, axial j, circumferential k,
-        branch m).
-    active : numpy.ndarray of bool
-        The root has active forcing (memo 7.3).
-    same_k : numpy.ndarray of bool
-        The root's shell k is the region's harmonic k.
+        The root's family (memo 7.4) and shell mode.
+    active, same_k : numpy.ndarray of bool
+        The root has active forcing; its shell k is the region's k.
     severity : tuple or None
-        The root's ``severity`` where the stability table has that column; None otherwise.
-    without_root : numpy.ndarray of int
-        Regions (indices) with no root inside.
-    without_active_root : numpy.ndarray of int
-        Regions with no root of active forcing inside: no memo resonance explains them.
+        The root's ``severity`` where the table has that column.
+    without_root, without_active_root : numpy.ndarray of int
+        Regions with no root inside, and with no root of active forcing inside.
     n_regions : int
-        Number of regions compared (dimensionless).
+        Number of regions compared.
     rtol : float
-        Widening of each region relative to its centre (dimensionless).
-
-    References
-    ----------
-    Tech Memo 104, sec. 7.3; docs/theory/memo-vs-vehicle.md.
+        Widening of each region relative to its centre.
     """
 
     region: np.ndarray

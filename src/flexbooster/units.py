@@ -1,14 +1,9 @@
 """Physical quantities in case files: plain SI numbers or strings with units (pint).
 
-Everything inside flexbooster is SI.  A case value is either a plain number, taken to be in
-the field's SI unit, or a string such as ``"120 in"``, ``"10.5e6 psi"`` or
-``"2.59e-4 lbf*s^2/in^4"`` that pint converts.  Frequencies need care: pint treats ``Hz`` as
-``1/s`` and the radian as dimensionless, so ``"2 Hz"`` would silently become 2 rad/s.  Here a
-quantity written in hertz (or any prefixed hertz) is a *cyclic* frequency and is multiplied by
-2 pi on conversion to rad/s; ``rpm`` and ``rad/s`` are handled by pint correctly.
-
-This module is part of the input layer, not of the numerical core; only :mod:`flexbooster.case`
-imports it.
+A plain number is in the field's SI unit; a string ("120 in", "10.5e6 psi") is converted by
+pint, except that a value in (prefixed) hertz is a cyclic frequency, multiplied by 2 pi on
+conversion to rad/s (pint would take 2 Hz as 2 rad/s). Input layer; only
+:mod:`flexbooster.case` imports it.
 """
 
 from __future__ import annotations
@@ -52,13 +47,8 @@ SI_UNITS: dict[str, str] = {
 
 @lru_cache(maxsize=1)
 def _pint():
-    """pint, imported on first use, without its optional dask support.
-
-    pint imports dask when it is installed (``pint.compat``: ``HAS_DASK = find_spec("dask")
-    is not None``), which doubles pint's import time (0.19 of 0.40 s measured); flexbooster
-    never gives pint dask arrays.  While pint is imported, ``sys.modules["dask"] = None``
-    makes ``find_spec`` answer None; the entry is removed at once, so a later ``import dask``
-    (the sweeps) works as usual.  Where dask is imported already, nothing is changed.
+    """pint, imported on first use without its optional dask support (``sys.modules["dask"] =
+    None`` while it imports, where dask is not imported yet: half of pint's import time).
     """
     hide = "dask" not in sys.modules
     if hide:
@@ -88,29 +78,18 @@ def _is_hertz(quantity: pint.Quantity) -> bool:
 
 
 def to_si(field: str, value: object, kind: str) -> float:
-    """Convert a case value to a float in the SI unit of ``kind``.
+    """Convert a case value to a float in the SI unit of ``kind`` (rad/s for angular frequencies).
+    CaseError for a boolean, an unparsable string, an unknown or wrong-dimension unit, or a
+    non-finite value; ValueError for an unknown ``kind``.
 
     Parameters
     ----------
     field : str
-        Dotted name of the field (used in error messages).
+        Dotted name of the field (for the message).
     value : float or int or str
         A plain number (already SI) or a string with units.
     kind : str
         One of the keys of :data:`SI_UNITS`.
-
-    Returns
-    -------
-    float
-        The value in SI units (rad/s for angular frequencies).
-
-    Raises
-    ------
-    CaseError
-        For a boolean, an unparsable string, an unknown unit, a unit of the wrong dimension,
-        or a value that is not finite (NaN, inf, or an integer beyond the float range).
-    ValueError
-        ``kind`` not one of :data:`SI_UNITS` (a programming error, not bad input).
     """
     target = SI_UNITS[choice("kind", kind, tuple(SI_UNITS))]
     if isinstance(value, bool):
@@ -153,27 +132,15 @@ def to_si(field: str, value: object, kind: str) -> float:
 
 
 def to_us(value: float, si_unit: str) -> tuple[float, str] | None:
-    """A value in an SI unit of :data:`US_UNITS` converted to its inch-pound unit.
+    """(value, unit name) in the inch-pound unit of an SI unit of :data:`US_UNITS`, None without a
+    counterpart; ValueError for a non-finite value or result.
 
     Parameters
     ----------
     value : float
         The value in ``si_unit``.
     si_unit : str
-        One of the keys of :data:`US_UNITS` ("m", "Pa", "kg/m^3", "N", "N/m", "kg",
-        "kg m^2").
-
-    Returns
-    -------
-    (float, str) or None
-        The value and the unit's name; None for a unit without an inch-pound counterpart
-        (rad/s, Hz, dimensionless).
-
-    Raises
-    ------
-    ValueError
-        ``value`` not a finite number, or its conversion beyond the float range (1e308 m in
-        inches); ``si_unit`` not a string.
+        One of the keys of :data:`US_UNITS` ("m", "Pa", "kg/m^3", "N", "N/m", "kg", "kg m^2").
     """
     value = finite("value", value)
     if not isinstance(si_unit, str):

@@ -1,20 +1,12 @@
 """The optional ``[vehicle]`` table of a case file: the vehicle as one shell of revolution.
 
-With ``[[vehicle.segments]]`` the table describes the vehicle as cylinders and cones, listed
-from the aft edge forward; the numerical model is
-:class:`flexbooster.shell_of_revolution.Vehicle`.  Without segments (or without a
-``[vehicle]`` table at all) the vehicle is the memo's: the two cylinders of ``[booster]``
-(R1, 2 L1 aft and R2, 2 L2 forward, thickness h, E, nu, rho), joined by the memo's rigid,
-weightless disc (``junction = "memo-bulkhead"``), with the memo's end bulkheads
-(``"shear-diaphragm"`` ends, Tech Memo 104 sec. 5.3 and Fig. 1); a ``[vehicle]`` table
-without segments may then change only ``junction``, ``aft_end``, ``fwd_end``, ``theory``,
-``k_max`` and the settings of the parametric instability regions: ``damping_ratio``
-(modal damping of the loaded shell modes, default :data:`REGION_DAMPING_RATIO`, 0 allowed) and
-``n_modes`` (modes per harmonic k, default :data:`REGION_N_MODES`).  A case without a
-``[vehicle]`` table takes the defaults.
-
-Every invalid field raises :class:`~flexbooster.errors.CaseError` naming it, e.g.
-``vehicle.segments[1].radius_aft``.  This module is part of the input layer (pydantic, pint).
+``[[vehicle.segments]]`` lists cylinders and cones from the aft edge forward
+(:class:`flexbooster.shell_of_revolution.Vehicle`); without segments the vehicle is the
+memo's two cylinders of ``[booster]`` joined by a "memo-bulkhead" with "shear-diaphragm"
+ends (Tech Memo 104, sec. 5.3, Fig. 1), of which the table may change the junction, the ends,
+the theory, ``k_max`` and the regions' ``damping_ratio`` and ``n_modes``. An invalid field
+raises :class:`~flexbooster.errors.CaseError` naming it, e.g.
+``vehicle.segments[1].radius_aft``.
 """
 
 from __future__ import annotations
@@ -125,11 +117,11 @@ class VehicleSegment(BaseModel):
     thickness : float
         Wall thickness h (m), 0 < h < the segment's smallest radius.
     E, nu, rho : float or None
-        Young's modulus (Pa), Poisson's ratio (dimensionless), density (kg/m^3); default the
-        ``[vehicle]`` table's, then the ``[booster]``'s.
+        Young's modulus (Pa), Poisson's ratio, density (kg/m^3); default the ``[vehicle]``
+        table's, then the ``[booster]``'s.
     junction : str or None
-        Junction at this segment's aft edge with the previous segment: ``"continuous"``
-        (default), ``"rigid-bulkhead"`` or ``"memo-bulkhead"``; not on the first segment.
+        Junction with the previous segment: ``"continuous"`` (default), ``"rigid-bulkhead"`` or
+        ``"memo-bulkhead"``; not on the first segment.
     """
 
     model_config = _FROZEN
@@ -168,26 +160,25 @@ class VehicleTable(BaseModel):
     Attributes
     ----------
     E, nu, rho : float or None
-        Default material of the segments: Young's modulus (Pa), Poisson's ratio
-        (dimensionless), density (kg/m^3); default the ``[booster]``'s.
+        Default material of the segments (Pa, -, kg/m^3); default the ``[booster]``'s.
     aft_end, fwd_end : str or None
         ``"free"``, ``"shear-diaphragm"``, ``"clamped"`` or ``"hinged"``; default ``"free"``
         with segments, :data:`MEMO_END` for the memo vehicle.
     theory : str
         ``"sanders"`` (default) or ``"donnell"``.
     k_max : int
-        Circumferential harmonics k = 0..k_max (dimensionless), 0..200, default 20.
+        Circumferential harmonics k = 0..k_max, 0..200, default 20.
     junction : str or None
-        Only without segments: the junction of the memo vehicle (default
-        :data:`MEMO_JUNCTION`; ``"continuous"`` needs R1 = R2).
+        Only without segments: the memo vehicle's junction (default :data:`MEMO_JUNCTION`;
+        ``"continuous"`` needs R1 = R2).
     segments : tuple of VehicleSegment or None
-        The segments from the aft edge forward; None: the memo vehicle from ``[booster]``.
+        The segments from the aft edge forward; None: the memo vehicle.
     damping_ratio : float
-        Modal damping ratio zeta of the loaded shell modes in the parametric instability
-        regions (dimensionless), 0 <= zeta < 1, default :data:`REGION_DAMPING_RATIO`.
+        Modal damping ratio of the loaded modes in the regions, [0, 1), default
+        :data:`REGION_DAMPING_RATIO`.
     n_modes : int
-        Unloaded modes per harmonic k in the regions' modal basis (dimensionless),
-        1..:data:`REGION_N_MODES_LIMIT`, default :data:`REGION_N_MODES`.
+        Modes per harmonic in the regions' basis, 1..:data:`REGION_N_MODES_LIMIT`, default
+        :data:`REGION_N_MODES`.
     """
 
     model_config = _FROZEN
@@ -236,19 +227,14 @@ def _radius_field(i: int, seg: VehicleSegment, end: str) -> str:
 
 
 def check_vehicle(table: VehicleTable | None, *, booster_radii: tuple[float, float]) -> None:
-    """Rules of the ``[vehicle]`` table that involve more than one field.
+    """Rules of the ``[vehicle]`` table that involve more than one field (CaseError naming it).
 
     Parameters
     ----------
     table : VehicleTable or None
-        The validated table (None: no ``[vehicle]``, nothing to check).
+        The validated table (None: nothing to check).
     booster_radii : tuple of float
         (R1, R2) of ``[booster]`` (m), for ``junction = "continuous"`` on the memo vehicle.
-
-    Raises
-    ------
-    CaseError
-        Naming the field, e.g. ``vehicle.segments[1].radius_aft``.
     """
     if table is None:
         return

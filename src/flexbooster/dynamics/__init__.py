@@ -1,10 +1,7 @@
-"""Dynamic stability of the whole vehicle (shell of revolution) under the pulsating thrust.
-
-Per circumferential harmonic k >= 1 the periodic modal system q'' + C q' + (A + B cos Omega t)
-q = 0 of the pre-stressed shell under T(t) = F0 (1 - gamma cos Omega t) and its parametric
-instability regions in Omega (:mod:`.harmonic`, :mod:`.regions`; k = 1 with the rigid modes
-and the follower thrust, :mod:`.bending`); for k = 0 the axial modes forced directly by the
-pulsation (:mod:`.axial`).  Numerical core.  Theory: ``docs/theory/vehicle-regions.md``.
+"""Dynamic stability of the whole vehicle (shell of revolution) under the pulsating thrust: per
+harmonic k >= 1 the periodic modal system and its parametric regions (:mod:`.harmonic`,
+:mod:`.regions`, k = 1 :mod:`.bending`), k = 0 the forced axial modes (:mod:`.axial`), and
+the forced response (:mod:`.forced`). Theory: docs/theory/vehicle-regions.md.
 """
 
 from .axial import AxialResonance, ForcedAxial, forced_axial

@@ -1,27 +1,13 @@
 """k = 0: the axial modes of the vehicle forced directly by the thrust pulsation.
 
-The pulsating part of T(t) = F0 (1 - gamma cos Omega t), -gamma F0 cos Omega t, is an axial
-ring load at the aft edge.  In the modes of harmonic k = 0 loaded by the steady thrust
-(q = V p, as :func:`.regions.harmonic_system`; mass-normalised, modal damping zeta on the
-loaded frequencies omega_n) it is the generalised force -gamma F0 cos(Omega t) phi_n, with
-phi_n = (V^T a)_n and a_m the axial displacement of basis mode m at the aft edge
-(:class:`flexbooster.shell_of_revolution.ModalSystem` ``aft_axial``; the basis modes are the
-loaded modes, V = I):
+-gamma F0 cos Omega t is an axial ring load at the aft edge: in the loaded k = 0 modes,
+p_n'' + 2 zeta omega_n p_n' + omega_n^2 p_n = -gamma F0 phi_n cos Omega t, phi_n the aft-edge
+axial displacement of mode n. A forced resonance at Omega = omega_n (memo family 3, 7.3-4,
+7.3-5) with amplitude phi_n^2 / (2 zeta omega_n^2) per unit gamma F0, receptance
+sum_n phi_n^2 / (omega_n^2 - Omega^2 + 2 i zeta omega_n Omega) (elastic modes only).
 
-    p_n'' + 2 zeta omega_n p_n' + omega_n^2 p_n = -gamma F0 phi_n cos Omega t.
-
-Its steady state is a forced (secular, not parametric) response: a resonance at
-Omega = omega_n (the memo's family 3, Tech Memo 104 eqs. 7.3-4, 7.3-5) with the aft-edge
-amplitude per unit gamma F0 phi_n^2 / (2 zeta omega_n^2) (m/N) and the receptance
-u_x(aft) / (gamma F0) = sum_n phi_n^2 / (omega_n^2 - Omega^2 + 2 i zeta omega_n Omega) of
-the elastic modes (the rigid translation, the flight itself, is left out).
-
-References
-----------
-.. [1] Tech Memo 104, sec. 7.3 (family 3: Omega = omega_j0, the axial shell modes).
-.. [2] L. Meirovitch, *Elements of Vibration Analysis*, 2nd ed., McGraw-Hill, 1986, sec. 7.4
-   (modal analysis of the forced response; steady-state amplitude 1 / (2 zeta) x static at
-   resonance), sec. 5.4 (the free-free rod: omega_n = n pi c / L, c = sqrt(E / rho)).
+References: Tech Memo 104, sec. 7.3; L. Meirovitch, *Elements of Vibration Analysis*, 1986,
+sec. 5.4, 7.4.
 """
 
 from __future__ import annotations
@@ -48,10 +34,9 @@ class AxialResonance:
     Attributes
     ----------
     index : int
-        Loaded k = 0 mode, ascending frequency (dimensionless).
+        Loaded k = 0 mode, ascending frequency.
     order, type : int, str
-        Meridian order and type of the basis mode dominating it (labels of
-        :func:`flexbooster.shell_of_revolution.vehicle_modes`).
+        Meridian order and type of the dominating basis mode.
     omega : float
         Resonance Omega = omega_n, the loaded frequency (rad/s).
     participation : float
@@ -59,8 +44,7 @@ class AxialResonance:
     flexibility : float
         phi_n^2 / omega_n^2: static modal flexibility at the aft edge (m/N).
     amplitude : float or None
-        Aft-edge axial amplitude per unit gamma F0 at Omega = omega_n, phi_n^2 /
-        (2 zeta omega_n^2) (m/N; Meirovitch 1986, sec. 7.4); None without damping.
+        phi_n^2 / (2 zeta omega_n^2) (m/N) at resonance; None without damping.
     """
 
     index: int
@@ -88,14 +72,10 @@ class ForcedAxial:
     ----------
     resonances : tuple of AxialResonance
         The forced modes with omega_n in [omega_min, omega_max], ascending.
-    omega_loaded : ndarray
-        All loaded k = 0 frequencies of the basis (rad/s).
-    participation : ndarray
-        phi_n of each (m / sqrt(kg)).
-    F0 : float
-        Steady thrust (N).
-    damping_ratio : float
-        Modal damping ratio (dimensionless).
+    omega_loaded, participation : ndarray
+        All loaded k = 0 frequencies of the basis (rad/s) and their phi_n (m / sqrt(kg)).
+    F0, damping_ratio : float
+        Steady thrust (N) and modal damping ratio.
     omega_min, omega_max : float
         Omega range (rad/s).
     """
@@ -109,9 +89,9 @@ class ForcedAxial:
     omega_max: float
 
     def receptance(self, Omega) -> np.ndarray:
-        """Aft-edge axial receptance u_x / (gamma F0) of the elastic modes at Omega (rad/s,
-        > 0): sum_n phi_n^2 / (omega_n^2 - Omega^2 + 2 i zeta omega_n Omega) (m/N, complex;
-        the displacement is Re(receptance e^{i Omega t}) times -gamma F0; Meirovitch 7.4)."""
+        """Aft-edge axial receptance u_x / (gamma F0) of the elastic modes at Omega (rad/s, > 0),
+        complex (m/N); the displacement is Re(receptance e^{i Omega t}) times -gamma F0.
+        """
         om = np.atleast_1d(np.asarray(Omega, dtype=float))
         if not np.all(np.isfinite(om)) or np.any(om <= 0.0):
             raise ValueError(f"Omega = {Omega!r}: must be finite and > 0")
@@ -136,10 +116,8 @@ def forced_axial(
     damping_ratio: float = 0.01, supported_forward_end: bool | None = None,
     elements_per_segment: int | tuple | None = None, order: int = DEFAULT_ORDER,
 ) -> ForcedAxial:
-    """Forced resonances of the k = 0 modes under T(t) = F0 (1 - gamma cos Omega t).
-
-    Raises :class:`~flexbooster.shell_of_revolution.BucklingError` when F0 buckles k = 0.
-    Meirovitch (1986), sec. 7.4; Tech Memo 104, sec. 7.3 (family 3).
+    """Forced resonances of the k = 0 modes under T(t) = F0 (1 - gamma cos Omega t); ValueError for
+    bad input, BucklingError when F0 buckles k = 0.
 
     Parameters
     ----------
@@ -150,27 +128,13 @@ def forced_axial(
     omega_min, omega_max : float
         Omega range (rad/s), 0 < omega_min < omega_max.
     n_modes : int
-        Loaded k = 0 modes in the basis (dimensionless), 1..2000.
+        Loaded k = 0 modes in the basis, 1..2000.
     damping_ratio : float
-        Modal damping ratio of the loaded modes (dimensionless), [0, 1).
+        Modal damping ratio of the loaded modes, [0, 1).
     supported_forward_end : bool or None
-        Load path of the thrust: None from the vehicle's ends
-        (:func:`flexbooster.shell_of_revolution.prestress.load_path`).
+        Load path of the thrust: None from the vehicle's ends.
     elements_per_segment, order
         Mesh (see :func:`flexbooster.shell_of_revolution.mesh_vehicle`).
-
-    Returns
-    -------
-    ForcedAxial
-
-    Raises
-    ------
-    ValueError
-        Bad input (naming it), or the steady thrust buckles k = 0.
-
-    References
-    ----------
-    Meirovitch (1986), sec. 7.4; Tech Memo 104, sec. 7.3 (family 3).
     """
     if not isinstance(vehicle, Vehicle):
         raise ValueError(f"vehicle = {vehicle!r}: must be a Vehicle")

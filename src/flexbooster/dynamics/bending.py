@@ -1,43 +1,18 @@
 """k = 1: the bending harmonic with the rigid modes and the follower direction of the thrust.
 
-For k = 1 the shell's modes are the vehicle's beam-like bending modes; the rigid lateral
-translation and pitch belong to the same harmonic.  The basis here is the admissible rigid
-motions (first, omega = 0) and the lowest unloaded elastic modes of (K_e, M)
-(:func:`flexbooster.shell_of_revolution.modal_system` with ``rigid``, ``loaded=False``: the
-conservative part of the thrust alone may buckle the loaded modes while the follower system
-stays stable), mass-normalised.  The thrust T(t) = F0 (1 - gamma cos Omega t) acts at the aft edge
-along the axis of the aft cross-section (a follower force, zero gimbal gain): besides the
-axial prestress (geometric stiffness K_g of the membrane prestate) it has the lateral
-component T beta, beta = -U_x / r the rotation of the aft cross-section (U_x the cos-theta
-amplitude of the axial displacement at the aft edge, radius r), which works on the lateral
-displacement y = (W - V) / 2 of the aft edge (W, V the u_r and v amplitudes: the k = 1 rigid
-translation is W = 1, V = -1).  In modal coordinates
+Basis: the admissible rigid motions (first) and the lowest unloaded elastic modes of
+(K_e, M), mass-normalised. T(t) = F0 (1 - gamma cos Omega t) at the aft edge follows the aft
+cross-section (rotation beta = -U_x / r) turned by the gimbal K psi (memo 2.2-2); its lateral
+component works on y = (W - V) / 2, so
 
-    q'' + C q' + (diag(omega^2) + (T(t) / F0) (K_g - F0 y beta^T)) q = 0,
+    q'' + C q' + (diag(omega^2) + (T(t) / F0) (K_g - F0 y (beta + K psi)^T)) q = 0,
 
-non-symmetric (the follower term; Beal 1965, eq. 4 in Galerkin form; Bolotin 1963 ch. 1 for
-follower forces).  At gamma = 0 the steady system of a free-free uniform tube flutters (two
-bending frequencies coalesce) at Beal's T = 109.69 EI / l^2.
+non-symmetric (Beal 1965, eq. 4 in Galerkin form). The rigid translation (and the pitch
+without gain) does not act back and is dropped; the pitch frequency is omega_psi^2 =
+F0 K d / I_cm (memo 4.2-1). Theory: docs/theory/vehicle-regions.md.
 
-The gimbal control turns the thrust by K psi further (psi the rigid pitch angle; Tech Memo 104
-eq. 2.2-2): the lateral force is T (beta + K psi).  The parametric regions in Omega are those
-of :func:`flexbooster.floquet.instability_regions` on this system (:func:`bending_regions`)
-with the rigid translation dropped (it does not act back on the others).  Under inertia
-relief the prestate is in equilibrium with the thrust and the inertia loads, so the rigid
-rotation's K_g is the rotated loads: on itself -F0 d psi^2 (d the distance from the centre of
-mass to the aft edge), which the follower term cancels, and on the elastic modes the work of
-the follower force alone (Sanders' K_g leaves an O(N_s gamma_s theta Phi) remainder there, the
-strain-rotation products its moderate-rotation strains neglect).  The rigid pitch frequency
-under the steady thrust is therefore omega_psi^2 = F0 K d / I_cm (memo eq. 4.2-1); with zero
-gain the pitch is neutral and does not act back either, and it is dropped like the
-translation.
-
-References
-----------
-.. [1] V. L. Beal, "Dynamic stability of a flexible missile under constant and pulsating
-   thrusts", AIAA J. 3 (1965) 486-494 (follower flutter load 109.69 EI / l^2).
-.. [2] V. V. Bolotin, *Nonconservative Problems of the Theory of Elastic Stability*,
-   Pergamon, 1963, ch. 1 (follower forces, flutter by coalescence of frequencies).
+References: V. L. Beal, AIAA J. 3 (1965) 486-494; V. V. Bolotin, *Nonconservative Problems
+of the Theory of Elastic Stability*, 1963, ch. 1.
 """
 
 from __future__ import annotations
@@ -70,21 +45,16 @@ class BendingSystem(ModalMatrices):
     F0 : float
         Steady thrust (N).
     damping_ratio : float
-        Modal damping ratio of the elastic basis modes (dimensionless; 0 on the rigid ones).
+        Modal damping ratio of the elastic basis modes (0 on the rigid ones).
     omega_unloaded : ndarray, shape (n,)
         Frequencies of the basis modes without thrust (rad/s); 0 for the rigid ones.
     n_rigid : int
-        Rigid modes in the basis (dimensionless).
+        Rigid modes in the basis.
     aft_lateral, aft_rotation : ndarray, shape (n,)
-        y and beta of each mass-normalised mode at the aft edge (m / sqrt(kg),
-        rad / sqrt(kg)).
+        y and beta of each mode at the aft edge (m / sqrt(kg), rad / sqrt(kg)).
     mass, damping, stiffness, excitation : ndarray, shape (n, n)
-        M = I, C = 2 zeta diag(omega) (1/s), A = diag(omega^2) + K_g - F0 y (beta + K psi)^T
-        (1/s^2, non-symmetric), B1 = -(K_g - F0 y (beta + K psi)^T) (1/s^2).
-
-    References
-    ----------
-    Beal (1965), eq. 4; Bolotin (1963), ch. 1.
+        M = I, C = 2 zeta diag(omega) (1/s), A = diag(omega^2) + K_g - F0 y (beta + K psi)^T and
+        B1 = -(K_g - F0 y (beta + K psi)^T) (1/s^2).
     """
 
     F0: float
@@ -123,14 +93,9 @@ class _Basis:
 
 
 def _basis(vehicle, n_modes, F0, supported_forward_end, elements_per_segment, order) -> _Basis:
-    """The k = 1 basis: the rigid motions first, then the unloaded elastic modes, K_g of the
-    thrust F0 (:func:`modal_system` with ``rigid``, ``loaded=False``).
-
-    A rigid pair (free-free) is rotated into the pure rotation (first) and the pure
-    translation (second, beta = 0); psi_j is the rigid pitch angle of basis vector j (beta
-    of the rotation, 0 for the others: the elastic modes are M-orthogonal to the rigid
-    ones, memo 4.1.2).  The aft edge's lateral displacement is y = (u_r - v) / 2 (the rigid
-    translation is u_r = 1, v = -1), its rotation beta = -u_x / r (u_x = -r beta cos theta).
+    """The k = 1 basis: the rigid motions first (a free-free pair turned into the pure rotation,
+    then the translation), then the unloaded elastic modes, with K_g of the thrust F0;
+    y = (u_r - v) / 2 and beta = -u_x / r at the aft edge, psi_j the rigid pitch angle.
     """
     ms, labels = labelled_modal_system(vehicle, 1, n_modes, F0, rigid=True, loaded=False,
                                        supported_forward_end=supported_forward_end,
@@ -157,7 +122,8 @@ def bending_system(
     gimbal_gain: float = 0.0, supported_forward_end: bool | None = None,
     elements_per_segment: int | tuple | None = None, order: int = DEFAULT_ORDER,
 ) -> BendingSystem:
-    """The k = 1 periodic system with rigid modes and the follower thrust (module docstring).
+    """The k = 1 periodic system with rigid modes and the follower thrust; for a free-free vehicle
+    the rigid rotation first, then the translation (its column of A and B is 0).
 
     Parameters
     ----------
@@ -166,26 +132,15 @@ def bending_system(
     F0 : float
         Steady thrust (N), > 0.
     n_modes : int
-        Basis modes of k = 1, rigid ones included (dimensionless), 2..2000.
+        Basis modes of k = 1, rigid ones included, 2..2000.
     damping_ratio : float
-        Modal damping ratio of the elastic basis modes (dimensionless), [0, 1).
+        Modal damping ratio of the elastic basis modes, [0, 1).
     gimbal_gain : float
-        K (dimensionless), >= 0: the thrust turns by K psi from the aft tangent, psi the
-        rigid pitch angle (Tech Memo 104, eq. 2.2-2).
+        K >= 0: the thrust turns by K psi from the aft tangent (memo 2.2-2).
     supported_forward_end : bool
         Uniform compression F0 reacted at the nose instead of inertia relief.
     elements_per_segment, order
         Mesh (see :func:`flexbooster.shell_of_revolution.mesh_vehicle`).
-
-    Returns
-    -------
-    BendingSystem
-        For a free-free vehicle the first basis mode is the rigid rotation and the second the
-        rigid translation (it does not act back on the others: its column of A and B is 0).
-
-    References
-    ----------
-    Beal (1965), eq. 4 (Galerkin form); Bolotin (1963), ch. 1.
     """
     return _bending(vehicle, F0=F0, n_modes=n_modes, damping_ratio=damping_ratio,
                     gimbal_gain=gimbal_gain, supported_forward_end=supported_forward_end,
@@ -217,11 +172,9 @@ def follower_flutter_thrust(
     supported_forward_end: bool | None = None, elements_per_segment: int | tuple | None = None,
     order: int = DEFAULT_ORDER, rtol: float = 1e-9,
 ) -> float:
-    """Smallest steady thrust (gamma = 0, no damping) at which the k = 1 system flutters.
-
-    Flutter: two frequencies of diag(omega^2) + T (K_g - y beta^T) (K_g per newton) coalesce
-    and leave the real axis (Bolotin 1963, ch. 1); located by a scan of ``n_scan`` thrusts in
-    (0, thrust_max] and refined by brentq on max |Im lambda| / max |lambda| = 1e-9.
+    """Smallest steady thrust (N) at which the undamped k = 1 system flutters (two frequencies of
+    diag(omega^2) + T (K_g - y beta^T) coalesce; Beal 1965, fig. 2), inf if none up to
+    thrust_max: a scan, refined by brentq on max |Im lambda| / max |lambda| = 1e-9.
 
     Parameters
     ----------
@@ -230,22 +183,13 @@ def follower_flutter_thrust(
     thrust_max : float
         Largest thrust examined (N), > 0.
     n_modes : int
-        Basis modes of k = 1, rigid ones included (dimensionless), 2..2000.
+        Basis modes of k = 1, rigid ones included, 2..2000.
     n_scan : int
-        Scan points (dimensionless), 2..10000.
+        Scan points, 2..10000.
     supported_forward_end, elements_per_segment, order
         As :func:`bending_system`.
     rtol : float
-        Relative tolerance on the thrust (dimensionless), (0, 1e-2].
-
-    Returns
-    -------
-    float
-        The flutter thrust (N); inf if the system does not flutter up to thrust_max.
-
-    References
-    ----------
-    Beal (1965), fig. 2 (109.69 EI / l^2 for the free-free uniform beam).
+        Relative tolerance on the thrust, (0, 1e-2].
     """
     if not isinstance(vehicle, Vehicle):
         raise ValueError(f"vehicle = {vehicle!r}: must be a Vehicle")
@@ -283,7 +227,9 @@ def bending_regions(
     supported_forward_end: bool | None = None, elements_per_segment: int | tuple | None = None,
     order: int = DEFAULT_ORDER, **options,
 ) -> tuple:
-    """Parametric instability regions of k = 1 (bending, rigid pitch, gimbaled follower thrust).
+    """Parametric instability regions of k = 1 as Bands sorted by Omega_lo (those of
+    ``vehicle_regions(..., k_min=1)`` for k = 1, through :func:`bending_harmonic`); critical
+    gamma with damping (Bolotin 1964, ch. 1-2).
 
     Parameters
     ----------
@@ -292,35 +238,19 @@ def bending_regions(
     F0 : float
         Steady thrust (N), > 0.
     gamma : float
-        Pulsation amplitude (dimensionless), [0, 1).
+        Pulsation amplitude, [0, 1).
     omega_min, omega_max : float
         Omega range (rad/s), 0 < omega_min < omega_max.
     gimbal_gain : float
-        K (dimensionless), >= 0 (0: the rigid pitch of a free-free vehicle is neutral and
-        dropped).
+        K >= 0 (0: the rigid pitch of a free-free vehicle is neutral and dropped).
     n_modes : int
-        Basis modes of k = 1, rigid ones included (dimensionless), 3..2000.
+        Basis modes of k = 1, rigid ones included, 3..2000.
     damping_ratio : float
-        Modal damping ratio of the elastic modes (dimensionless), [0, 1) (none on the rigid
-        pitch).
+        Modal damping ratio of the elastic modes, [0, 1) (none on the rigid pitch).
     supported_forward_end, elements_per_segment, order
         As :func:`bending_system`.
     **options
-        Passed to :func:`flexbooster.floquet.instability_regions` (rtol, step_phase,
-        max_order, damping_margin, ...).
-
-    Returns
-    -------
-    tuple of Band
-        k = 1 regions sorted by Omega_lo (those of ``vehicle_regions(..., k_min=1)`` for
-        k = 1: one code path, :func:`bending_harmonic`); ``modes`` carry the basis mode
-        dominating each steady mode (type "rigid-pitch" for the rigid rotation),
-        ``omega`` the steady frequency; ``critical_gamma`` from
-        :func:`flexbooster.floquet.critical_amplitude` with damping (0 without).
-
-    References
-    ----------
-    Bolotin (1964), ch. 1-2, sec. 6; Beal (1965); Tech Memo 104, eq. 2.2-2.
+        Passed to :func:`flexbooster.floquet.instability_regions`.
     """
     gamma = in_unit_interval("gamma", gamma)
     n_modes = count("n_modes", n_modes, 3, 2000)
@@ -342,31 +272,16 @@ def bending_harmonic(
     gimbal_gain: float = 0.0, supported_forward_end: bool | None = None,
     elements_per_segment: int | tuple | None = None, order: int = DEFAULT_ORDER,
 ) -> HarmonicSystem:
-    """The k = 1 system of :func:`bending_system` as the map's harmonic k = 1.
-
-    The rigid translation of a free-free vehicle is dropped (its column of A and B is zero:
-    it is driven but does not act back); the rest is kept in the basis coordinates (see the
-    Notes of :class:`~flexbooster.dynamics.harmonic.HarmonicSystem`), each steady mode (an
-    eigenvector of A, ascending real part of the eigenvalue, the order of the modes of
-    :func:`flexbooster.floquet.instability_regions`) labelled by the basis mode that dominates
-    it.
+    """The k = 1 system of :func:`bending_system` as the map's harmonic k = 1: the rigid
+    translation dropped, each steady mode (eigenvector of A, ascending) labelled by its
+    dominant basis mode; ``omega_loaded`` = sqrt(max(Re mu, 0)) of A (rad/s).
 
     Parameters
     ----------
     vehicle, F0, damping_ratio, gimbal_gain, supported_forward_end, elements_per_segment, order
-        As :func:`bending_system` (F0 in N, > 0; the ratio and K dimensionless).
+        As :func:`bending_system`.
     n_modes : int
-        Basis modes of k = 1, rigid ones included (dimensionless), 3..2000.
-
-    Returns
-    -------
-    HarmonicSystem
-        With k = 1: ``omega_unloaded`` of the kept basis modes, ``omega_loaded`` the steady
-        frequencies sqrt(max(Re mu, 0)) of A (rad/s).
-
-    References
-    ----------
-    Beal (1965), eq. 4; Bolotin (1963), ch. 1; Bolotin (1964), sec. 8.
+        Basis modes of k = 1, rigid ones included, 3..2000.
     """
     n_modes = count("n_modes", n_modes, 3, 2000)
     bs, b = _bending(vehicle, F0=F0, n_modes=n_modes, damping_ratio=damping_ratio,

@@ -1,23 +1,13 @@
 """Forced response of the vehicle to the thrust oscillation: g, N and N m at every station.
 
-The oscillating part of the thrust, Delta F(t) = gamma F0 cos(Omega t) along a thrust line
-misaligned by delta, loads the aft edge axially (k = 0: gamma F0 cos(delta) cos(Omega t)) and
-laterally (k = 1: gamma F0 sin(delta) cos(Omega t)); the steady thrust F0 prestresses the
-vehicle and, for k = 1, keeps its follower direction and gimbal feedback K psi.  Per harmonic
-the steady response is that of the reduced model of :mod:`.forced_model` (modal superposition
-with the static correction of the truncated modes; rigid modes included).  Stations: the aft
-and forward edges, the segment junctions and the caller's (name, axial distance from the aft
-edge); the vehicle is cut into more segments at a station inside a segment, so that every
-station is a node.  Peaks over an Omega range come from its resonances, not from the grid:
-the Omega grid plus 65 points across each damped resonance (+-4 half-power half-widths), then a
-golden-section search in the bracket of the largest sample.
+Delta F(t) = gamma F0 cos(Omega t) along a thrust line misaligned by delta loads the aft edge
+axially (k = 0, cos delta) and laterally (k = 1, sin delta); per harmonic the reduced model
+of :mod:`.forced_model`. Stations: the edges, the junctions and the caller's (the vehicle is
+cut there). Peaks come from the resonances, not the grid: 65 points across each damped
+resonance, then golden section. Theory: docs/theory/forced-response.md.
 
-References
-----------
-.. [1] L. Meirovitch, *Elements of Vibration Analysis*, 2nd ed., McGraw-Hill, 1986, ch. 7
-   (modal analysis of the forced response, mode-acceleration method).
-.. [2] R. R. Craig, A. J. Kurdila, *Fundamentals of Structural Dynamics*, 2nd ed., Wiley,
-   2006 (residual flexibility and inertia relief of free-free structures).
+References: L. Meirovitch, *Elements of Vibration Analysis*, 1986, ch. 7; R. R. Craig,
+A. J. Kurdila, *Fundamentals of Structural Dynamics*, 2006.
 """
 
 from __future__ import annotations
@@ -62,7 +52,7 @@ class ThrustSpectrum:
     frequency : array_like
         Omega_j (rad/s), > 0, strictly increasing.
     amplitude : array_like
-        a_j as a fraction of F0 (dimensionless), [0, 1), one per line.
+        a_j as a fraction of F0, [0, 1), one per line.
     """
 
     frequency: np.ndarray
@@ -90,8 +80,7 @@ class Station:
     Attributes
     ----------
     name : str
-        "aft-edge", "forward-edge", "junction-i" (between segments i - 1 and i) or the
-        caller's.
+        "aft-edge", "forward-edge", "junction-i" (between segments i - 1 and i) or the caller's.
     x : float
         Axial distance from the aft edge (m).
     kind : str
@@ -123,7 +112,7 @@ class ForcedPeak:
         Peak amplitude (unit).
     omega : float
         Omega where it occurs (rad/s); spectrum: the line contributing most; a harmonic not
-        forced (k = 1 without misalignment): value 0 at the lowest Omega.
+        forced: value 0 at the lowest Omega.
     """
 
     k: int
@@ -154,8 +143,7 @@ class LoadEnvelope:
     x : ndarray
         Axial distance of the nodes from the aft edge (m), non-decreasing.
     peak, peak_omega : ndarray
-        Peak |load| at each node over the Omega range (unit) and its Omega (rad/s), as
-        :class:`ForcedPeak`.
+        Peak |load| at each node (unit) and its Omega (rad/s), as :class:`ForcedPeak`.
     worst_omega : float
         Omega of the largest peak (rad/s).
     at_worst : ndarray, complex
@@ -185,24 +173,20 @@ class ForcedResponse:
 
     Attributes
     ----------
-    omega : ndarray, shape (n,)
-        Omega grid (rad/s): the sweep's, or the spectrum's line frequencies.
-    amplitude : ndarray, shape (n,)
-        gamma at each Omega (fraction of F0).
+    omega, amplitude : ndarray, shape (n,)
+        Omega grid (rad/s: the sweep's or the spectrum's lines) and gamma at each.
     combination : str
-        "sweep" (one oscillation of amplitude gamma at each Omega; peaks: the maximum over
-        [min Omega, max Omega]) or "spectrum" (all lines at once; peaks: the sum of the lines'
-        amplitudes, the supremum of a sum of sinusoids of incommensurate frequencies).
+        "sweep" (peaks: the maximum over the range) or "spectrum" (peaks: the sum of the lines'
+        amplitudes, the supremum of a sum of incommensurate sinusoids).
     F0, damping_ratio, pitch_damping_ratio, misalignment, gimbal_gain : float
-        Steady thrust (N), zeta, zeta_psi, delta (rad) and K (dimensionless).
+        Steady thrust (N), zeta, zeta_psi, delta (rad) and K.
     harmonics : tuple of int
         The k of the first axis of the arrays (0 axial, 1 lateral).
     stations : tuple of Station
         Aft to forward.
     displacement, acceleration, axial_force, shear_force, bending_moment : ndarray, complex
-        Shape (len(harmonics), len(stations), n): amplitudes X of Re(X e^{i Omega t}) (m,
-        m/s^2, N (tension > 0), N, N m); exactly 0 where the quantity does not belong to the
-        harmonic (k = 0: no shear or moment; k = 1: no net axial force).
+        Shape (len(harmonics), len(stations), n): amplitudes X of Re(X e^{i Omega t}) (m, m/s^2,
+        N (tension > 0), N, N m); 0 where the quantity does not belong to the harmonic.
     peaks : tuple of ForcedPeak
         Per harmonic, station and quantity of the harmonic.
     envelopes : tuple of LoadEnvelope
@@ -302,9 +286,9 @@ def _omega(amplitude, Omega) -> tuple[np.ndarray, np.ndarray, str]:
 
 
 def _undamped(model: ModalModel, om: np.ndarray, spectrum: bool) -> tuple | None:
-    """(lambda, dominant basis mode) of a pole that is not damped (Re lambda >=
-    -UNDAMPED_RTOL |lambda|: undamped or growing) with Im lambda in the Omega range (sweep)
-    or on a line (spectrum)."""
+    """(lambda, dominant basis mode) of a pole not damped (Re lambda >= -UNDAMPED_RTOL |lambda|)
+    with Im lambda in the Omega range (sweep) or on a line (spectrum).
+    """
     poles, mode = model.poles()
     for lam, j in zip(poles, mode, strict=True):
         c = lam.imag
@@ -316,8 +300,9 @@ def _undamped(model: ModalModel, om: np.ndarray, spectrum: bool) -> tuple | None
 
 
 def _golden(model: ModalModel, a, b, node, row, power):
-    """Maximum of Omega^power |row| in [a, b] per entry: golden-section search (value,
-    Omega); Kiefer's search, GOLDEN_STEPS steps, one evaluation per entry and step."""
+    """Maximum of Omega^power |row| in [a, b] per entry by golden section (value, Omega),
+    GOLDEN_STEPS steps (Kiefer 1953).
+    """
     r = (math.sqrt(5.0) - 1.0) / 2.0
 
     def f(om):
@@ -365,8 +350,9 @@ def _peaks(model: ModalModel, om, scale, objectives, spectrum: bool):
 
 
 def _harmonic(model: ModalModel, om, scale, spectrum: bool, stations, at):
-    """(node rows (n, p, rows), peaks at the stations, envelopes) of one harmonic; scale:
-    Delta F of each Omega (N), 0 for a harmonic not forced."""
+    """(node rows (n, p, rows), peaks at the stations, envelopes) of one harmonic; scale: Delta F
+    of each Omega (N), 0 for a harmonic not forced.
+    """
     k = model.k
     objectives = [("displacement", 0, 0), ("acceleration", 0, 2)] + [
         (q, i, 0) for i, q in enumerate(ROWS[k]) if i > 0]
@@ -401,7 +387,8 @@ def forced_response(
     supported_forward_end: bool = False, elements_per_segment: int | tuple | None = None,
     order: int = DEFAULT_ORDER, refinement: int = 1,
 ) -> ForcedResponse:
-    """Steady response to Delta F(t) = gamma F0 cos(Omega t) at the aft edge (module docstring).
+    """Steady response to Delta F(t) = gamma F0 cos(Omega t) at the aft edge. ValueError for bad
+    input, a thrust that buckles a harmonic, or an undamped resonance in the range or on a line.
 
     Parameters
     ----------
@@ -410,46 +397,26 @@ def forced_response(
     F0 : float
         Steady thrust (N), > 0.
     amplitude : float or ThrustSpectrum
-        gamma (fraction of F0), [0, 1), swept over ``Omega``: the peaks are the maxima over
-        [min Omega, max Omega]; or the spectrum's lines (then ``Omega`` is None): the
-        response is the sum over the lines, the peaks the sum of the lines' amplitudes (the
-        supremum of a sum of sinusoids of incommensurate frequencies).
+        gamma (fraction of F0), [0, 1), swept over ``Omega``; or the spectrum's lines (``Omega``
+        None).
     Omega : array_like
         Strictly increasing Omega grid (rad/s), > 0, 1..100000 points (sweep only).
     damping_ratio, pitch_damping_ratio : float
         zeta of the elastic modes and zeta_psi of the gimbaled rigid pitch, [0, 1).
     misalignment : float
-        Thrust misalignment delta (rad), |delta| < pi/2: the k = 1 load gamma F0 sin(delta).
+        Thrust misalignment delta (rad), |delta| < pi/2.
     gimbal_gain : float
-        K (dimensionless), >= 0: the thrust turns by K psi (Tech Memo 104, eq. 2.2-2).
+        K >= 0: the thrust turns by K psi (memo 2.2-2).
     stations : sequence of (str, float)
-        (name, axial distance from the aft edge in m) of the caller's stations (lumped masses,
-        ``[[output.stations]]``), added to the edges and junctions.
+        (name, axial distance from the aft edge in m) of the caller's stations.
     harmonics : tuple of int
         Among (0, 1).
     n_modes : int, optional
-        Elastic basis modes per harmonic, 1..2000; default every mode below 4 max Omega (at
-        least 4); the rigid modes come in addition.
+        Elastic basis modes per harmonic, 1..2000; default every mode below 4 max Omega (>= 4).
     static_correction : bool
         The static correction of the truncated modes (False: mode displacement only).
     supported_forward_end, elements_per_segment, order, refinement
-        Prestress and mesh (see :func:`flexbooster.shell_of_revolution.mesh_vehicle`); the
-        element counts are shared among the pieces of a segment cut at a station.
-
-    Returns
-    -------
-    ForcedResponse
-
-    Raises
-    ------
-    ValueError
-        Bad input (naming it); a thrust that buckles a harmonic (``F0``); an undamped
-        resonance inside the Omega range or on a line (``damping_ratio`` = 0, or
-        ``pitch_damping_ratio`` = 0 with a gimbaled pitch): its response is unbounded.
-
-    References
-    ----------
-    Meirovitch (1986), ch. 7; Craig & Kurdila (2006).
+        Prestress and mesh (see :func:`flexbooster.shell_of_revolution.mesh_vehicle`).
     """
     if not isinstance(vehicle, Vehicle):
         raise ValueError(f"vehicle = {vehicle!r}: must be a Vehicle")

@@ -1,45 +1,18 @@
 """Reduced model of one harmonic for the forced response (:mod:`.forced`).
 
-Per harmonic k the finite-element model of :mod:`flexbooster.shell_of_revolution` under the
-steady thrust F0, loaded at the aft edge by F cos(Omega t) (k = 0 axial, k = 1 lateral), is
+Per harmonic k (0 axial without torsion, 1 lateral) the FE model under the steady thrust F0,
+loaded at the aft edge by F cos(Omega t): M X'' + C X' + K_L X = F cos(Omega t), K_L = K_e +
+K_g(F0) (+ the follower and gimbal term of :func:`.bending_system` for k = 1). Modal basis
+with the static correction of the truncated modes (mode acceleration, residual flexibility
+with inertia relief via the bordered system), the reduced system solved for many Omega
+through the complex Schur form of its companion matrix; internal loads (N, M, S) at the
+nodes by force summation over the part ahead with the consistent mass. Theory:
+docs/theory/forced-response.md.
 
-    M X'' + C X' + K_L X = F cos(Omega t),   K_L = K_e + K_g(F0) (+ K_f for k = 1),
-
-K_f = -F0 y (beta + K psi)^T the follower thrust turned by the gimbal (aft-edge lateral
-displacement y = (W - V) / 2, rotation beta = -U_x / r, rigid pitch angle psi; as
-:func:`.bending_system`).  k = 0 is the axisymmetric (u, w) part: the torsion (v) is
-decoupled from it and not forced.  Basis Phi: k = 0 the loaded modes (K_e + K_g, M), k = 1 the
-unloaded modes (K_e, M) with the rigid ones (the free-free pair turned into the rotation, then
-the translation), mass-normalised; modal damping 2 zeta omega on the elastic modes, 2 zeta_psi
-omega_psi on the gimbaled rigid pitch.  The truncated modes respond statically (mode
-acceleration; residual flexibility with inertia relief): with G_c the flexibility of K_L on the
-M-orthogonal complement of Phi (the bordered system [[K_L, M Phi], [Phi^T M, 0]]),
-
-    X = Psi q + G_c F,   Psi = Phi - G_c K_L Phi,
-    (Phi^T K_L Psi - Omega^2 I + i Omega C) q = Phi^T (F - K_L G_c F),
-
-exact as Omega -> 0 (the full model's static inertia-relief solution), and for a symmetric K_L
-with Phi its modes the classical Phi q + (G - Phi Lambda^-1 Phi^T) F.  The non-symmetric
-reduced system is solved for many Omega at once through the complex Schur form of its
-companion matrix (backward stable also for the free rigid modes' Jordan blocks).  Internal
-loads at a node: force summation with the consistent mass, the loads that the part ahead of
-the node receives from the part behind, r^T sum_e (K_e + K_g - Omega^2 M)_e x_e over the
-elements ahead, r its rigid motions: the axial force N (tension > 0), the moment M about the
-node (M = E I w'' for a beam) and the shear S (S = dM/dx statically) less P0 beta, the
-lateral component of the steady axial load P0(x) (inertia relief) carried by the section
-tilted by beta = -U_x / r: S is normal to the section (the stress resultant; a rigid pitch
-carries none).  The modal damping forces count as internal (as material damping): the loads
-are those that accelerate the part ahead, exact at the aft edge for any number of modes.
-
-References
-----------
-.. [1] L. Meirovitch, *Elements of Vibration Analysis*, 2nd ed., McGraw-Hill, 1986, ch. 7
-   (modal superposition, mode-acceleration method).
-.. [2] R. R. Craig, A. J. Kurdila, *Fundamentals of Structural Dynamics*, 2nd ed., Wiley,
-   2006 (residual flexibility, inertia relief of free-free structures).
-.. [3] G. H. Golub, C. F. Van Loan, *Matrix Computations*, 4th ed., 2013, sec. 7.1 (Schur).
-.. [4] V. L. Beal, AIAA J. 3 (1965) 486-494, eq. 4 (follower thrust); Tech Memo 104,
-   eq. 2.2-2 (gimbal).
+References: L. Meirovitch, *Elements of Vibration Analysis*, 1986, ch. 7; R. R. Craig,
+A. J. Kurdila, *Fundamentals of Structural Dynamics*, 2006; G. H. Golub, C. F. Van Loan,
+*Matrix Computations*, 2013, sec. 7.1; V. L. Beal, AIAA J. 3 (1965), eq. 4; Tech Memo 104,
+eq. 2.2-2.
 """
 
 from __future__ import annotations
@@ -85,9 +58,9 @@ class ModalModel:
     n_rigid : int
         Rigid basis modes (k = 1 free-free: the rotation, then the translation).
     free : ndarray of bool, shape (m,)
-        The free rigid modes (no stiffness: translation; the pitch without gimbal gain).
+        The free rigid modes (no stiffness).
     stiffness, damping : ndarray, shape (m, m)
-        A (1/s^2, non-symmetric for k = 1) and C (1/s) of the module docstring.
+        A (1/s^2, non-symmetric for k = 1) and C (1/s).
     load : ndarray, shape (m,)
         f per newton of Delta F (1/sqrt(kg)).
     node_x : ndarray, shape (p,)
@@ -95,8 +68,7 @@ class ModalModel:
     rows : tuple of str
         Quantities of the node rows (:data:`ROWS`).
     stiffness_map, mass_map : ndarray, shape (p, len(rows), m)
-        Node row = (stiffness_map - Omega^2 mass_map) q + static_stiffness - Omega^2
-        static_mass (row units per newton).
+        Node row = (stiffness_map - Omega^2 mass_map) q + static_stiffness - Omega^2 static_mass.
     static_stiffness, static_mass : ndarray, shape (p, len(rows))
         The residual (static) part of the rows.
     """
@@ -154,8 +126,9 @@ class ModalModel:
             - w2 * self.static_mass[node, row])
 
     def poles(self) -> tuple[np.ndarray, np.ndarray]:
-        """Eigenvalues (1/s) of the restrained coordinates (the free rigid ones, Jordan
-        blocks at 0, left out) and the basis mode dominating each."""
+        """Eigenvalues (1/s) of the restrained coordinates (free rigid ones left out) and the basis
+        mode dominating each.
+        """
         keep = np.nonzero(~self.free)[0]
         m = keep.size
         A, C = (x[np.ix_(keep, keep)] for x in (self.stiffness, self.damping))
@@ -176,22 +149,18 @@ class ModalModel:
 
 
 def cut_vehicle(vehicle: Vehicle, xs: list, counts) -> tuple[Vehicle, tuple | None, tuple]:
-    """The vehicle cut into more segments at the axial stations xs inside segments.
+    """The vehicle cut at the axial stations xs inside segments ("continuous"), the element counts
+    of its segments (shared in proportion to length; None) and the index of the first piece of
+    every segment.
 
     Parameters
     ----------
     vehicle : Vehicle
         The vehicle.
     xs : list of float
-        Axial distances from the aft edge (m); those inside a segment cut it ("continuous").
+        Axial distances from the aft edge (m).
     counts : tuple of int or None
         Elements of each segment (None: the automatic mesh).
-
-    Returns
-    -------
-    tuple
-        The cut vehicle, the element counts of its segments (an original count shared in
-        proportion to length; None) and the index of the first piece of every segment.
     """
     tol = 1e-9 * vehicle.total_length
     segs, juncs, pieces, starts, x0 = [], [], [], [], 0.0
@@ -220,18 +189,13 @@ def cut_vehicle(vehicle: Vehicle, xs: list, counts) -> tuple[Vehicle, tuple | No
 
 
 def mesh_nodes(mesh):
-    """Nodes of a mesh: each element's aft node, then the nose.
+    """Nodes of a mesh (each element's aft node, then the nose): element, end (0 aft, 1 forward),
+    axial distance from the aft edge and radius (m).
 
     Parameters
     ----------
     mesh : Mesh
         The mesh (:func:`flexbooster.shell_of_revolution.mesh_vehicle`).
-
-    Returns
-    -------
-    elem, end, x, r : ndarray
-        Element and end (0 aft, 1 forward) of each node, its axial distance from the aft
-        edge and radius (m).
     """
     ne = mesh.n_elements
     elem = np.append(np.arange(ne), ne - 1)
@@ -258,11 +222,10 @@ def _node_displacements(mesh, dmap, keep, elem, end) -> np.ndarray:
 
 
 def _node_loads(k, mesh, dmap, keep, x, mats, Y) -> np.ndarray:
-    """Internal loads (p, len(ROWS[k]) - 1, c) of reduced vectors Y (n_kept, c) by force
-    summation over the part ahead of each node: the rigid motions r of that part (k = 0: the
-    axial translation; k = 1: the lateral translation, the rotation about the node) times
-    the sum of its element forces mats[e] Y_e over its free DOFs (a support's reaction is
-    not a load of the part); 0 at the nose (nothing ahead)."""
+    """Internal loads (p, len(ROWS[k]) - 1, c) of reduced vectors Y by force summation over the
+    part ahead of each node: its rigid motions times the sum of its element forces over its free
+    DOFs; 0 at the nose.
+    """
     full = dmap.expand(_embed(keep, Y).T)  # (c, n_full)
     f = np.einsum("eij,cej->eic", mats, full[:, mesh.dofs])  # element forces (e, nd, c)
     free = dmap.index[mesh.dofs] >= 0
@@ -275,9 +238,9 @@ def _node_loads(k, mesh, dmap, keep, x, mats, Y) -> np.ndarray:
 
 
 def _element_end_values(values: np.ndarray, order: int) -> np.ndarray:
-    """Values (e, 2) at the two ends of each element of a field given at its Gauss points
-    (e, g): the polynomial of degree < g through them, evaluated at xi = -1 and 1 (exact for
-    the prestate's axial force, a polynomial of degree <= 2 in the meridian coordinate)."""
+    """Values (e, 2) at the element ends of a field given at the Gauss points (e, g), by the
+    polynomial through them (exact for the prestate's axial force).
+    """
     xi = reference_element(order).xi
     coef = np.polynomial.legendre.legfit(xi, np.asarray(values, dtype=float).T, xi.size - 1)
     return np.polynomial.legendre.legval(np.array([-1.0, 1.0]), coef)  # (e, 2)
@@ -302,8 +265,9 @@ def _axisymmetric(mesh, dmap, k: int) -> np.ndarray:
 
 
 def _basis(K, M, n_modes, omega_max):
-    """Lowest eigenpairs (omega^2, M-normalised vectors) of K x = omega^2 M x and the number
-    of rigid ones: n_modes elastic ones, or all below MODE_CUTOFF omega_max (>= MIN_MODES)."""
+    """Lowest eigenpairs (omega^2, M-normalised vectors) of K x = omega^2 M x and the number of
+    rigid ones: n_modes elastic ones, or all below MODE_CUTOFF omega_max (>= MIN_MODES).
+    """
     n = K.shape[0]
     scale = 1.0 / np.sqrt(np.diag(M))  # unit mass diagonal: a better-conditioned reduction
     A, B = K * np.outer(scale, scale), M * np.outer(scale, scale)
@@ -325,8 +289,8 @@ def _basis(K, M, n_modes, omega_max):
 
 
 def _condense(KL, M, Phi, F, static: bool):
-    """(Psi, G_c F, A, f) of the module docstring (static=False: Phi, 0, Phi^T K_L Phi,
-    Phi^T F, the mode-displacement method)."""
+    """(Psi, G_c F, A, f) of the static correction (static=False: Phi, 0, Phi^T K_L Phi, Phi^T F).
+    """
     if not static:
         return Phi, np.zeros(F.size), Phi.T @ KL @ Phi, Phi.T @ F
     n, m = Phi.shape
@@ -341,14 +305,14 @@ def _condense(KL, M, Phi, F, static: bool):
 
 @dataclass(frozen=True)
 class FullModel:
-    """The finite-element model of one harmonic: M X'' + K_L X = F (module docstring).
+    """The finite-element model of one harmonic: M X'' + K_L X = F.
 
     Attributes
     ----------
     k : int
         Harmonic.
     mass, stiffness : ndarray, shape (n, n)
-        M (kg) and K_L (N/m; non-symmetric for k = 1) on the kept DOFs (k = 0: no torsion).
+        M (kg) and K_L (N/m; non-symmetric for k = 1) on the kept DOFs.
     load : ndarray, shape (n,)
         F per newton of Delta F.
     basis, omega2 : ndarray
@@ -356,9 +320,8 @@ class FullModel:
     n_rigid : int
         Rigid basis modes.
     parts : tuple
-        What :meth:`node_rows` needs: mesh, DOF map, kept DOFs, element matrices (M, K_e,
-        K_g), nodes (:func:`mesh_nodes`), node displacement functionals, steady axial load
-        P0 at the nodes (N).
+        What :meth:`node_rows` needs (mesh, DOF map, kept DOFs, element matrices, nodes, node
+        functionals, steady axial load P0 at the nodes).
     """
 
     k: int
@@ -371,8 +334,8 @@ class FullModel:
     parts: tuple = field(repr=False, compare=False)
 
     def node_rows(self, Y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Node rows (p, len(ROWS[k]), c) of vectors Y (n, c): the row at Omega is
-        (stiffness part - Omega^2 mass part), the first row the displacement."""
+        """Node rows (p, len(ROWS[k]), c) of vectors Y (n, c): stiffness part - Omega^2 mass
+        part, the first row the displacement."""
         mesh, dmap, keep, mats, (elem, end, x, r), D, P0 = self.parts
         k, disp = self.k, D[:, 0] if self.k == 0 else 0.5 * (D[:, 2] - D[:, 1])  # u_x or y
         stiff = np.concatenate([(disp @ Y)[:, None], _node_loads(
@@ -393,7 +356,7 @@ def full_model(
     Parameters
     ----------
     vehicle, mesh : Vehicle, Mesh
-        The vehicle and its mesh (:func:`flexbooster.shell_of_revolution.mesh_vehicle`).
+        The vehicle and its mesh.
     k : int
         0 (axial) or 1 (lateral).
     F0 : float
@@ -401,22 +364,13 @@ def full_model(
     share : float
         Load of this harmonic per newton of Delta F: cos(delta) (k = 0), sin(delta) (k = 1).
     n_modes : int or None
-        Elastic basis modes (dimensionless); None: all below 4 omega_max (at least 4).
+        Elastic basis modes; None: all below 4 omega_max (at least 4).
     omega_max : float
         Highest Omega (rad/s).
     gimbal_gain : float
-        K (dimensionless).
+        K.
     supported_forward_end : bool
         Prestress reacted at the nose.
-
-    Returns
-    -------
-    FullModel
-
-    References
-    ----------
-    Beal (1965), eq. 4 and Tech Memo 104, eq. 2.2-2 (the follower and gimbal terms, as
-    :func:`.bending_system`).
     """
     dmap = dof_map(vehicle, mesh, k)
     pre = thrust_prestate(vehicle, mesh, F0, supported_forward_end=supported_forward_end)
@@ -463,17 +417,9 @@ def modal_model(
     vehicle, mesh, k, F0, share, n_modes, omega_max, gimbal_gain, supported_forward_end
         As :func:`full_model`.
     damping_ratio, pitch_damping_ratio : float
-        zeta, zeta_psi (dimensionless).
+        zeta, zeta_psi.
     static_correction : bool
         The static correction of the truncated modes (False: mode displacement).
-
-    Returns
-    -------
-    ModalModel
-
-    References
-    ----------
-    Meirovitch (1986), ch. 7; Craig & Kurdila (2006) (module docstring).
     """
     fm = full_model(vehicle, mesh, k, F0=F0, share=share, n_modes=n_modes,
                     omega_max=omega_max, gimbal_gain=gimbal_gain,

@@ -1,9 +1,6 @@
-"""One harmonic's periodic modal system and its parametric instability regions.
-
-Shared by the map of :mod:`.regions` (k >= 2) and the bending harmonic of :mod:`.bending`
-(k = 1): the system q'' + C q' + (A + gamma B1 cos Omega t) q = 0 (Bolotin 1964, sec. 8),
-its labelled modes, and the rows of :func:`flexbooster.floquet.instability_regions` with the
-critical amplitude of each (Bolotin sec. 6).
+"""One harmonic's periodic modal system q'' + C q' + (A + gamma B1 cos Omega t) q = 0 (Bolotin
+1964, sec. 8), its labelled modes and its regions with their critical amplitudes (sec. 6);
+shared by :mod:`.regions` (k >= 2) and :mod:`.bending` (k = 1).
 """
 
 from __future__ import annotations
@@ -31,7 +28,7 @@ class ModalMatrices:
 
     def matrices(self, gamma: float) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """(M, C, A, B = gamma B1) for T = F0 (1 - gamma cos Omega t), 0 <= gamma < 1
-        (dimensionless, 1/s, 1/s^2, 1/s^2; Bolotin 1964, sec. 8)."""
+        (-, 1/s, 1/s^2, 1/s^2)."""
         gamma = in_unit_interval("gamma", gamma)
         return self.mass, self.damping, self.stiffness, gamma * self.excitation
 
@@ -40,11 +37,9 @@ class ModalMatrices:
 class HarmonicSystem(ModalMatrices):
     """Periodic modal system of one harmonic: M q'' + C q' + (A + gamma B1 cos Omega t) q = 0.
 
-    k >= 2 (:func:`.regions.harmonic_system`): the basis of the modes loaded by F0, M = I,
-    A = diag(omega_loaded^2) = V^T (K_e + K_g) V, B1 = -V^T K_g V, C = 2 zeta
-    diag(omega_loaded).  k = 1 (:func:`.bending.bending_harmonic`): the unloaded basis with
-    the rigid pitch (A not diagonal nor symmetric), ``omega_loaded`` the square roots of the
-    real parts of the eigenvalues of A, ``basis`` the real parts of its unit eigenvectors.
+    k >= 2: the loaded basis, M = I, A = diag(omega_loaded^2), B1 = -V^T K_g V, C = 2 zeta
+    diag(omega_loaded); k = 1: the unloaded basis with the rigid pitch (A neither diagonal nor
+    symmetric), ``omega_loaded`` sqrt(Re eig A), ``basis`` its unit eigenvectors' real parts.
 
     Attributes
     ----------
@@ -53,13 +48,13 @@ class HarmonicSystem(ModalMatrices):
     F0 : float
         Steady thrust (N).
     damping_ratio : float
-        Modal damping ratio zeta (dimensionless).
+        Modal damping ratio zeta.
     omega_unloaded, omega_loaded : ndarray, shape (n,)
         Basis frequencies without thrust and steady frequencies under F0 (rad/s).
     basis : ndarray, shape (n, n)
         Column j: steady mode j in the basis coordinates.
     mass, damping, stiffness, excitation : ndarray, shape (n, n)
-        M (dimensionless), C (1/s), A and B1 (1/s^2).
+        M, C (1/s), A and B1 (1/s^2).
     mode_order, mode_type, mode_share : ndarray, shape (n,)
         Labels of the basis mode dominating each steady mode, and its share.
     """
@@ -79,8 +74,9 @@ class HarmonicSystem(ModalMatrices):
     mode_share: np.ndarray
 
     def mode(self, index: int) -> BandMode:
-        """Label of steady mode ``index`` (0..n-1): its type and meridian order, k, the
-        loaded frequency (rad/s) and the share of the basis mode dominating it."""
+        """Label of steady mode ``index``: type, meridian order, k, loaded frequency (rad/s) and the
+        share of its dominant basis mode.
+        """
         index = count("index", index, 0, self.omega_loaded.size - 1)
         order, kind = int(self.mode_order[index]), str(self.mode_type[index])
         return BandMode(label=f"{kind} {order}", index=index, k=self.k, order=order,
@@ -106,12 +102,12 @@ class HarmonicSystem(ModalMatrices):
 
 
 def in_unit_interval(name: str, value) -> float:
-    """A dimensionless value checked to lie in [0, 1) (a pulsation amplitude, a damping ratio).
+    """A dimensionless value checked to lie in [0, 1) (ValueError naming it).
 
     Parameters
     ----------
     name : str
-        The argument's name, for the ValueError.
+        The argument's name.
     value : float
         The value.
     """
@@ -124,13 +120,8 @@ def in_unit_interval(name: str, value) -> float:
 def loaded_modes(vehicle, k: int, n_modes: int, F0: float, *,
                  supported_forward_end: bool | None,
                  elements_per_segment, order) -> tuple:
-    """The modal system of harmonic k and its modes loaded by the steady thrust.
-
-    Eigenpairs (w2, V) of K_e + K_g in the mass-normalised basis modes (the loaded modes, so
-    V = I to round-off; M = I; Bolotin 1964, sec. 8).  Raises
-    :class:`~flexbooster.shell_of_revolution.BucklingError` with the load factor of
-    :func:`~flexbooster.shell_of_revolution.buckling_load` when a loaded omega^2 <= 0.
-    Returns (modal system, its labels, w2, V).
+    """(modal system, its labels, w2, V): eigenpairs of K_e + K_g in the mass-normalised loaded
+    basis (V = I to round-off); BucklingError with the load factor when a loaded omega^2 <= 0.
 
     Parameters
     ----------
@@ -179,17 +170,15 @@ def floquet_options(rtol=1e-9, step_phase=0.12, max_order=None,
 
 def harmonic_regions(h: HarmonicSystem, gamma: float, lo: float, hi: float,
                      opts: dict) -> list[Band]:
-    """The regions of one harmonic, with the critical gamma of each one that is not "steady"
-    (:func:`flexbooster.floquet.critical_amplitude`, Bolotin sec. 6: where the damped
-    region's edges meet; 0 without damping).  Raises :data:`LIMIT_ERRORS` past the
-    toolkit's size limits.
+    """The regions of one harmonic with the critical gamma of each non-"steady" one (0 without
+    damping); raises :data:`LIMIT_ERRORS` past the toolkit's size limits.
 
     Parameters
     ----------
     h : HarmonicSystem
         The harmonic.
     gamma : float
-        Pulsation amplitude (dimensionless), [0, 1).
+        Pulsation amplitude, [0, 1).
     lo, hi : float
         Omega range (rad/s).
     opts : dict
@@ -219,8 +208,7 @@ def harmonic_regions(h: HarmonicSystem, gamma: float, lo: float, hi: float,
 
 def limit_gap(h: HarmonicSystem, lo: float, hi: float, exc: Exception,
               what: str = "not searched") -> SearchGap:
-    """The gap of a harmonic past a size limit of the toolkit (both limits are reached as
-    omega_min falls far below the harmonic's frequencies).
+    """The SearchGap of a harmonic past a size limit of the toolkit.
 
     Parameters
     ----------

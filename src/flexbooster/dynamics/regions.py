@@ -1,17 +1,12 @@
 """Parametric instability regions of the pre-stressed shell-of-revolution vehicle.
 
-The thrust T(t) = F0 (1 - gamma cos Omega t) acts on the vehicle of
-:mod:`flexbooster.shell_of_revolution`; its geometric stiffness is linear in the thrust, so per
-circumferential harmonic k the modal equations are q'' + (K_e + K_g) q - gamma cos(Omega t)
-K_g q = 0 (Bolotin 1964, sec. 8), written in the modes loaded by F0 (:class:`.HarmonicSystem`).
-Their regions in Omega are those of :func:`flexbooster.floquet.instability_regions`.
+Per harmonic k, in the modes loaded by F0: q'' + (K_e + K_g) q - gamma cos(Omega t) K_g q = 0
+(Bolotin 1964, sec. 8), its regions by :func:`flexbooster.floquet.instability_regions`.
+Theory: docs/theory/vehicle-regions.md.
 
-References
-----------
-.. [1] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, ch. 1-2,
-   sec. 6 (damping), sec. 8 (modal reduction of a parametrically loaded elastic system).
-.. [2] C. S. Hsu, J. Appl. Mech. 30 (1963) 367-372 (combination resonances).
-.. [3] D. Bushnell, Computers & Structures 4 (1974) 399-435 (shells of revolution, BOSOR).
+References: V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, 1964, ch. 1-2,
+sec. 6, 8; C. S. Hsu, J. Appl. Mech. 30 (1963) 367-372; D. Bushnell, Computers & Structures
+4 (1974) 399-435.
 """
 
 from __future__ import annotations
@@ -54,10 +49,8 @@ class RegionCurve:
         As :class:`flexbooster.bands.Band`.
     modes : tuple of int
         Steady mode indices in harmonic k.
-    gamma : ndarray
-        Amplitudes (dimensionless), ascending from the critical one.
-    omega_lo, omega_hi : ndarray
-        Edges at each gamma (rad/s).
+    gamma, omega_lo, omega_hi : ndarray
+        Amplitudes ascending from the critical one, and the edges there (rad/s).
     """
 
     k: int
@@ -88,28 +81,25 @@ class VehicleRegions:
     curves : tuple of RegionCurve
         Edges in (Omega, gamma) (empty unless asked for).
     F0, gamma, damping_ratio : float
-        Steady thrust (N), pulsation amplitude and modal damping ratio (dimensionless).
+        Steady thrust (N), pulsation amplitude and modal damping ratio.
     omega_min, omega_max : float
         Omega range (rad/s).
     supported_forward_end : bool
-        The nose reacts the thrust (uniform compression; ``load_path`` "forward support").
+        The nose reacts the thrust ("forward support").
     load_path : str
-        What balances the thrust in the prestress: "inertia relief", "forward support" or
-        "aft support" (:data:`flexbooster.shell_of_revolution.prestress.LOAD_PATHS`).
+        What balances the thrust (:data:`flexbooster.shell_of_revolution.prestress.LOAD_PATHS`).
     forced_axial : ForcedAxial or None
         k = 0: the axial modes forced by the pulsation (:mod:`.axial`); None when not asked.
     certificates : tuple of StabilityCertificate
         Per harmonic: :func:`flexbooster.floquet.stability_certificate` at gamma.
     chart_gamma_max : float or None
-        Top gamma of the (Omega, gamma) chart asked for; None when not set.
+        Top gamma of the (Omega, gamma) chart asked for.
     gimbal_gain : float
-        Gimbal gain K of the k = 1 harmonic (dimensionless).
+        Gimbal gain K of the k = 1 harmonic.
     gaps : tuple of SearchGap
-        Harmonics the toolkit's size limits left out of the search (stage "vehicle", per
-        harmonic k): their regions are unknown.
+        Harmonics the size limits left out of the search: their regions are unknown.
     chart_gaps : tuple of SearchGap
-        Harmonics whose boundary curves the size limits left out of the chart (their regions
-        at the case's gamma are known).
+        Harmonics whose boundary curves the size limits left out of the chart.
     """
 
     regions: tuple
@@ -179,11 +169,8 @@ def harmonic_system(
     supported_forward_end: bool | None = None, elements_per_segment: int | tuple | None = None,
     order: int = DEFAULT_ORDER,
 ) -> HarmonicSystem:
-    """Periodic modal system of harmonic k under T(t) = F0 (1 - gamma cos Omega t).
-
-    Raises :class:`~flexbooster.shell_of_revolution.BucklingError` (with the load factor of
-    :func:`~flexbooster.shell_of_revolution.buckling_load`) when F0 buckles the harmonic.
-    Bolotin (1964), sec. 8.
+    """Periodic modal system of harmonic k under T(t) = F0 (1 - gamma cos Omega t) (Bolotin 1964,
+    sec. 8); BucklingError (with the load factor) when F0 buckles the harmonic.
 
     Parameters
     ----------
@@ -196,11 +183,10 @@ def harmonic_system(
     n_modes : int
         Loaded modes in the basis, 1..2000.
     damping_ratio : float
-        Modal damping ratio of the loaded modes (dimensionless), [0, 1).
+        Modal damping ratio of the loaded modes, [0, 1).
     supported_forward_end : bool or None
-        Load path of the thrust: None from the vehicle's ends (a hinged or clamped forward
-        end reacts it: uniform compression; else inertia relief), True uniform compression,
-        False inertia relief (:func:`flexbooster.shell_of_revolution.prestress.load_path`).
+        Load path: None from the vehicle's ends, True uniform compression, False inertia relief
+        (:func:`flexbooster.shell_of_revolution.prestress.load_path`).
     elements_per_segment, order
         The mesh (:func:`flexbooster.shell_of_revolution.mesh_vehicle`).
     """
@@ -229,7 +215,8 @@ def harmonic_system(
 
 def _toolkit_region(band) -> floquet.InstabilityRegion:
     """The toolkit's region of a band of the map (the top level of
-    :func:`flexbooster.floquet.region_boundaries`): the same edges, the modes by index."""
+    :func:`flexbooster.floquet.region_boundaries`).
+    """
     return floquet.InstabilityRegion(
         omega_lo=band.Omega_lo, omega_hi=band.Omega_hi, growth_rate_max=band.growth_rate_max,
         omega_at_max=band.Omega_at_max, kind=band.kind, modes=tuple(m.index for m in band.modes),
@@ -241,20 +228,16 @@ def region_curves(
     step_phase: float = 0.12, max_order: int | None = None,
     damping_margin: float | None = floquet.DAMPING_MARGIN,
 ) -> tuple[tuple, tuple]:
-    """Edges in (Omega, gamma) of the regions of a map, up to gamma_max.
-
-    With gamma_max equal to the map's gamma: the harmonics with a region other than "steady"
-    (its rows are the top level); otherwise those the stability certificate at gamma_max does
-    not cover (:func:`flexbooster.floquet.region_boundaries` on the stored systems).  Returns
-    (curves, gaps): a RegionCurve per region (k ascending) and a SearchGap per harmonic past
-    a size limit of the toolkit.  Bolotin (1964), ch. 1, sec. 6.
+    """Edges in (Omega, gamma) of the regions of a map up to gamma_max, as (curves, gaps): the
+    harmonics with a non-"steady" region (gamma_max = the map's gamma) or not certified stable
+    at gamma_max; a SearchGap per harmonic past a size limit (Bolotin 1964, ch. 1, sec. 6).
 
     Parameters
     ----------
     found : VehicleRegions
         The map (:func:`vehicle_regions`).
     gamma_max : float
-        Top gamma (dimensionless), (0, 1).
+        Top gamma, (0, 1).
     n_gamma : int
         Levels, 2..1000.
     rtol, step_phase, max_order, damping_margin
@@ -301,7 +284,9 @@ def vehicle_regions(
     max_order: int | None = None, damping_margin: float | None = floquet.DAMPING_MARGIN,
     axial: bool = True, gimbal_gain: float = 0.0,
 ) -> VehicleRegions:
-    """Parametric instability regions of every harmonic k_min..k_max in [omega_min, omega_max].
+    """Parametric instability regions of every harmonic k_min..k_max in [omega_min, omega_max];
+    a harmonic past a size limit of the toolkit is a SearchGap. ValueError for bad input,
+    BucklingError when the steady thrust buckles a harmonic (Bolotin 1964; Hsu 1963; Beal 1965).
 
     Parameters
     ----------
@@ -312,37 +297,18 @@ def vehicle_regions(
     omega_min, omega_max : float
         Omega range (rad/s), 0 < omega_min < omega_max.
     k_max, k_min : int
-        Harmonics, 1 <= k_min <= k_max <= 200; k = 1 is the bending harmonic with the rigid
-        pitch and the follower thrust (:func:`.bending.bending_harmonic`, at least 3 basis
-        modes).
+        Harmonics, 1 <= k_min <= k_max <= 200; k = 1 is the bending harmonic
+        (:func:`.bending.bending_harmonic`, at least 3 basis modes).
     gimbal_gain : float
-        K of the gimbal control for k = 1 (dimensionless), >= 0.
+        K of the gimbal control for k = 1, >= 0.
     n_modes, damping_ratio, supported_forward_end, elements_per_segment, order
-        As :func:`harmonic_system` (supported_forward_end None: the load path from the
-        vehicle's ends).
+        As :func:`harmonic_system`.
     boundaries, gamma_max, n_gamma
         Also the edges in (Omega, gamma) up to gamma_max (:func:`region_curves`).
     rtol, step_phase, max_order, damping_margin
-        Options of :func:`flexbooster.floquet.instability_regions`: a damped harmonic
-        certified stable at every Omega is not searched, and with ``damping_margin`` (>= 1;
-        None: every candidate) the candidates damping suppresses are not examined.
+        Options of :func:`flexbooster.floquet.instability_regions`.
     axial : bool
         Also the k = 0 forced axial resonances (:func:`.axial.forced_axial`).
-
-    Returns
-    -------
-    VehicleRegions
-        Every harmonic is searched; one past a size limit of the toolkit is a SearchGap.
-
-    Raises
-    ------
-    ValueError
-        Bad input (naming it); :class:`~flexbooster.shell_of_revolution.BucklingError` when
-        the steady thrust buckles a harmonic.
-
-    References
-    ----------
-    Bolotin (1964), ch. 1-2, sec. 6, sec. 8; Hsu (1963); Beal (1965) (k = 1).
     """
     vehicle = _vehicle(vehicle)
     F0 = positive("F0", F0)

@@ -1,19 +1,12 @@
 """A rigorous stability certificate of M q'' + C q' + (A + B cos Omega t) q = 0 at every Omega.
 
-In the eigenbasis of the steady first-order operator (z = W y) the system is
-y' = (Lambda + cos(Omega t) G) y; with positive weights d the logarithmic norm of
-Lambda + c G (|c| <= 1) in the weighted maximum norm is at most
-mu_d = max_i (-delta_i + sum_j |G_ij| d_j / d_i), delta_i = -Re Lambda_i, a bound of every
-Floquet exponent at every Omega; the best weights are the Perron vector of
-Q = diag(1 / delta) |G|, and mu_d < 0 exactly when rho(Q) < 1 (docs/theory/floquet.md sec. 4).
-Conservative (a factor 4 on the damped Mathieu equation), cheap: one 2n x 2n eigenproblem.
+In the steady first-order eigenbasis, y' = (Lambda + cos(Omega t) G) y; the weighted
+logarithmic norm mu_d = max_i (-delta_i + sum_j |G_ij| d_j / d_i) bounds every Floquet
+exponent; the Perron vector of Q = diag(1 / delta) |G| is the best d, and mu_d < 0 exactly
+when rho(Q) < 1 (docs/theory/floquet.md sec. 4). Conservative, one 2n x 2n eigenproblem.
 
-References
-----------
-.. [1] G. Dahlquist, Trans. Roy. Inst. Technol. Stockholm 130 (1959) (logarithmic norm).
-.. [2] C. A. Desoer, M. Vidyasagar, *Feedback Systems: Input-Output Properties*, Academic
-   Press, 1975, ch. 2, sec. 2.8.
-.. [3] R. A. Horn, C. R. Johnson, *Matrix Analysis*, Cambridge, 1985, sec. 8.3.
+References: G. Dahlquist (1959), logarithmic norm; C. A. Desoer, M. Vidyasagar, *Feedback
+Systems*, 1975, sec. 2.8; R. A. Horn, C. R. Johnson, *Matrix Analysis*, 1985, sec. 8.3.
 """
 
 from __future__ import annotations
@@ -38,8 +31,7 @@ class StabilityCertificate:
     Attributes
     ----------
     rho, growth_bound : float
-        Spectral radius of Q = diag(1 / delta) |G|, and mu_d with the Perron weights (1 / time
-        unit): every Re lambda at every Omega is below it; both inf without a bound.
+        Spectral radius of Q and mu_d with the Perron weights (1 / time unit); inf without a bound.
     certified : bool
         growth_bound < 0: asymptotically stable at every Omega.
     amplitude_factor : float
@@ -66,19 +58,13 @@ _NONE = StabilityCertificate(rho=np.inf, growth_bound=np.inf, certified=False,
 
 
 def stability_certificate(M, C, A, B) -> StabilityCertificate:
-    """Bound of every Floquet exponent of M q'' + C q' + (A + B cos Omega t) q = 0, any Omega.
+    """Bound of every Floquet exponent at any Omega; not ``certified`` without damping, with an
+    undamped or unstable steady mode, or a modal frame of condition above 1e8.
 
     Parameters
     ----------
     M, C, A, B : array_like
-        The system M q'' + C q' + (A + B cos Omega t) q = 0, each (n, n), C may be None
-        (:func:`flexbooster.floquet.periodic_system`); or a LinearPeriodicSystem as M.
-
-    Returns
-    -------
-    StabilityCertificate
-        No bound (``certified`` False) without damping, with an undamped or unstable steady
-        mode, or a modal frame of condition above 1e8.
+        The system, each (n, n), C may be None; or a LinearPeriodicSystem as M.
     """
     system = M if isinstance(M, LinearPeriodicSystem) else periodic_system(M, C, A, B)
     if not system.damped:

@@ -1,11 +1,7 @@
-"""Harmonic balance of M q'' + C q' + (A + B cos Omega t) q = 0: Hill's exponents, periodic
-boundaries.
-
-:func:`hill_exponents` and :func:`hill_modes`: Hill's infinite determinant truncated at
-s = -S..S, a linear eigenproblem in the exponent per Omega (batched);
-:func:`periodic_boundaries`: the T- and 2T-periodic solutions that bound the simple regions,
-an eigenproblem in Omega (Bolotin 1964, ch. 1 sec. 3-5, ch. 2 sec. 7-8; Magnus & Winkler 1966,
-ch. 2).
+"""Harmonic balance of M q'' + C q' + (A + B cos Omega t) q = 0: Hill's exponents (a linear
+eigenproblem in the exponent per Omega) and the T- / 2T-periodic boundaries of the simple
+regions (an eigenproblem in Omega). Bolotin 1964, ch. 1 sec. 3-5, ch. 2 sec. 7-8; Magnus &
+Winkler 1966, ch. 2.
 """
 
 from __future__ import annotations
@@ -56,11 +52,9 @@ def _spectra(system: LinearPeriodicSystem, om: np.ndarray, S: int, chunk: int,
              amplitude: np.ndarray | None, real_form: bool):
     """Per chunk of points: (slice, lambda (P, 2m), c-parts (P, 2S + 1, n, 2m), centroids).
 
-    With y_s = (lambda + i s Omega) c_s the Hill equations are the 2m = 2n(2S + 1) eigenproblem
-    lambda [c; y] = [[-D, I], [-M^-1 H, -D - M^-1 C]] [c; y], D = diag(i s Omega), H the Hill
-    matrix (Bolotin 1964, eq. (7.4)).  With ``real_form`` an undamped system is solved in the
-    real form mu [c; y'] = [[-D', I], [M^-1 H, -D']] [c; y'] (lambda = i mu,
-    D' = diag(s Omega), y = i y'): a third of the work of the complex one.
+    With y_s = (lambda + i s Omega) c_s: lambda [c; y] = [[-D, I], [-M^-1 H, -D - M^-1 C]] [c; y],
+    D = diag(i s Omega), H the Hill matrix (Bolotin 1964, eq. 7.4); ``real_form``: the undamped
+    real form mu [c; y'] = [[-D', I], [M^-1 H, -D']] [c; y'], lambda = i mu (a third of the work).
     """
     n = system.n
     h = 2 * S + 1
@@ -112,17 +106,16 @@ def _hill_arguments(M, C, A, B, Omega, n_harmonics, chunk, amplitude):
 
 def hill_exponents(M, C, A, B, Omega, *, n_harmonics: int = 8, chunk: int = 8,
                    amplitude=None, real_form: bool = False) -> np.ndarray:
-    """Characteristic exponents lambda by Hill's determinant truncated at s = -S..S.
+    """Characteristic exponents lambda (1 / time unit), shape (P, 2n), by Hill's determinant.
 
-    M (lambda + i s Omega)^2 c_s + C (lambda + i s Omega) c_s + A c_s + (B / 2)(c_(s-1) + c_(s+1))
-    = 0: of the eigenvalues (each repeated modulo i Omega) the 2n distinct ones whose Fourier
-    vectors are most central (Bolotin 1964, sec. 7-8; Magnus & Winkler 1966, ch. 2).
+    M (lambda + i s Omega)^2 c_s + C (lambda + i s Omega) c_s + A c_s + (B / 2)(c_(s-1) +
+    c_(s+1)) = 0, s = -S..S: the 2n distinct eigenvalues (modulo i Omega) whose Fourier vectors
+    are most central (Bolotin 1964, sec. 7-8).
 
     Parameters
     ----------
     M, C, A, B : array_like
-        The system M q'' + C q' + (A + B cos Omega t) q = 0, each (n, n), C may be None
-        (:func:`flexbooster.floquet.periodic_system`); or a LinearPeriodicSystem as M.
+        The system, each (n, n), C may be None; or a LinearPeriodicSystem as M.
     Omega : array_like
         Shape (P,), rad per time unit of the matrices, > 0.
     n_harmonics : int
@@ -133,12 +126,6 @@ def hill_exponents(M, C, A, B, Omega, *, n_harmonics: int = 8, chunk: int = 8,
         Shape (P,): point p has the excitation amplitude[p] B (default 1).
     real_form : bool
         Solve an undamped system in its real form (lambda = i mu): a third of the work.
-
-    Returns
-    -------
-    numpy.ndarray
-        Shape (P, 2n), lambda (1 / time unit); exact as S grows when Omega is not small against
-        the frequencies.
     """
     system, om, S, amplitude = _hill_arguments(M, C, A, B, Omega, n_harmonics, chunk,
                                                amplitude)
@@ -150,10 +137,8 @@ def hill_exponents(M, C, A, B, Omega, *, n_harmonics: int = 8, chunk: int = 8,
 
 def _distinct_central(lam: np.ndarray, cen: np.ndarray, om: np.ndarray,
                       count: int) -> np.ndarray:
-    """The ``count`` most central exponents, distinct modulo i Omega (shifted to the centre).
-
-    lambda + i m Omega is the same exponent with its Fourier vector shifted by m harmonics, so
-    each eigenvalue is moved by i round(centroid) Omega and copies are dropped.
+    """The ``count`` most central exponents, distinct modulo i Omega: each moved by
+    i round(centroid) Omega and copies dropped.
     """
     P, m2 = lam.shape
     top = min(m2, 4 * count)
@@ -175,17 +160,13 @@ def _distinct_central(lam: np.ndarray, cen: np.ndarray, om: np.ndarray,
 
 def hill_modes(M, C, A, B, Omega, *, n_harmonics: int = 8, chunk: int = 8,
                amplitude=None, real_form: bool = False) -> HillModes:
-    """The 2n eigenvalues of Hill's determinant whose Fourier vectors are most central.
+    """The 2n eigenvalues of Hill's determinant whose Fourier vectors are most central, not
+    shifted, with their unit vectors and centroids.
 
     Parameters
     ----------
     M, C, A, B, Omega, n_harmonics, chunk, amplitude, real_form
         As :func:`hill_exponents`.
-
-    Returns
-    -------
-    HillModes
-        Not shifted, copies modulo i Omega kept, with their unit vectors and centroids.
     """
     system, om, S, amplitude = _hill_arguments(M, C, A, B, Omega, n_harmonics, chunk,
                                                amplitude)
@@ -205,28 +186,22 @@ def hill_modes(M, C, A, B, Omega, *, n_harmonics: int = 8, chunk: int = 8,
 
 def periodic_boundaries(M, C, A, B, *, period: str = "2T", n_harmonics: int = 8,
                         omega_max: float | None = None) -> np.ndarray:
-    """Omega at which a T- or 2T-periodic solution exists (simple-region boundaries).
+    """Omega at which a T- or 2T-periodic solution exists (simple-region boundaries): sorted real
+    roots (|Im| > 1e-9 |Omega| dropped) of the truncated problem.
 
-    [A - (k Omega / 2)^2 M + i (k Omega / 2) C] c_k + (B / 2)(c_(k-2) + c_(k+2)) = 0 for
-    q = sum_k c_k exp(i k Omega t / 2): an eigenproblem in Omega^2 (undamped) or quadratic in
-    Omega (Bolotin 1964, ch. 1 sec. 3-5, ch. 2 sec. 8).
+    [A - (k Omega / 2)^2 M + i (k Omega / 2) C] c_k + (B / 2)(c_(k-2) + c_(k+2)) = 0: an
+    eigenproblem in Omega^2 (undamped) or quadratic in Omega (Bolotin 1964, ch. 1 sec. 3-5).
 
     Parameters
     ----------
     M, C, A, B : array_like
-        The system M q'' + C q' + (A + B cos Omega t) q = 0, each (n, n), C may be None
-        (:func:`flexbooster.floquet.periodic_system`); or a LinearPeriodicSystem as M.
+        The system, each (n, n), C may be None; or a LinearPeriodicSystem as M.
     period : {"2T", "T"}
         k odd (regions near 2 omega / j, j odd) or even (j even).
     n_harmonics : int
         K, |k| <= 2K, 1..100; the boundaries of order j need K well above j / 2.
     omega_max : float, optional
         Only roots 0 < Omega <= omega_max.
-
-    Returns
-    -------
-    numpy.ndarray
-        Sorted real roots (|Im| > 1e-9 |Omega| dropped) of the truncated problem.
     """
     system = _system(M, C, A, B)
     K = _harmonics("n_harmonics", n_harmonics, 1, 100)
@@ -267,7 +242,8 @@ def periodic_boundaries(M, C, A, B, *, period: str = "2T", n_harmonics: int = 8,
 def converged_periodic_boundaries(M, C, A, B, *, period: str = "2T", omega_min: float,
                                   omega_max: float, rtol: float = 1e-10,
                                   max_harmonics: int = 64) -> tuple[np.ndarray, int]:
-    """:func:`periodic_boundaries` with the harmonics raised until the roots converge.
+    """:func:`periodic_boundaries` with K = 4, 8, .. raised until two successive K agree; returns
+    the roots in the range and the K used.
 
     Parameters
     ----------
@@ -276,14 +252,9 @@ def converged_periodic_boundaries(M, C, A, B, *, period: str = "2T", omega_min: 
     omega_min, omega_max : float
         Range of the roots (rad per time unit), 0 < omega_min < omega_max.
     rtol : float
-        Two successive K = 4, 8, .. agree to rtol * omega_max, with as many roots.
+        Agreement relative to omega_max, with as many roots.
     max_harmonics : int
         Largest K, 8..100 (ValueError past it).
-
-    Returns
-    -------
-    roots, K : numpy.ndarray, int
-        The converged roots in the range and the K used (Bolotin 1964, ch. 1 sec. 4-5).
     """
     for name, v in (("omega_min", omega_min), ("omega_max", omega_max), ("rtol", rtol)):
         if not np.isfinite(v) or v <= 0.0:

@@ -1,20 +1,14 @@
 """Mathieu's equation y'' + (a - 2 q cos 2t) y = 0: characteristic exponent, tongues, damping.
 
-Solutions are e^(+-i beta t) P(t), P pi-periodic, cos(pi beta) = y1(pi).
-:func:`characteristic_exponent` computes beta by a Magnus monodromy over half a period or by
-Hill's determinant (a tridiagonal continuant, its tail summed analytically), on the branch
-beta -> sqrt(a) as q -> 0 (a Sturm count gives the band r): r < beta < r + 1 between a_r and
-b_(r+1), r + i mu inside tongue r.  :func:`tongue_edges`, :func:`damped_tongue` and
-:func:`tongue_critical_gamma` follow tongue r along the ray q = g x / 2, x = a
-(docs/theory/beam-pitch.md, bands.md).
+Solutions e^(+-i beta t) P(t), P pi-periodic, cos(pi beta) = y1(pi); beta by a Magnus
+monodromy or by Hill's determinant (a continuant with its tail summed analytically), on the
+branch beta -> sqrt(a) as q -> 0; tongue r followed along the ray q = g x / 2, x = a.
+Theory: docs/theory/beam-pitch.md, docs/theory/bands.md.
 
-References
-----------
-.. [1] N. W. McLachlan, *Theory and Application of Mathieu Functions*, Oxford, 1947, ch. IV.
-.. [2] E. T. Whittaker, G. N. Watson, *A Course of Modern Analysis*, 4th ed., 1927, 19.41-19.42.
-.. [3] M. Abramowitz, I. A. Stegun, *Handbook of Mathematical Functions*, NBS, 1964, ch. 20.
-.. [4] S. Blanes, F. Casas, J. Ros, BIT 40 (2000) 434-450 (fourth-order Magnus).
-.. [5] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, sec. 6.
+References: N. W. McLachlan, *Theory and Application of Mathieu Functions*, 1947, ch. IV;
+E. T. Whittaker, G. N. Watson, *A Course of Modern Analysis*, 1927, 19.41-19.42;
+Abramowitz & Stegun, ch. 20; S. Blanes, F. Casas, J. Ros, BIT 40 (2000) 434-450 (Magnus);
+V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, 1964, sec. 6.
 """
 
 from __future__ import annotations
@@ -50,12 +44,8 @@ def _as_grid(a: Any, q: Any) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _hill_order(a: np.ndarray, q: np.ndarray) -> int:
-    """Truncation N of the Hill matrices (Fourier indices |m| <= 2N + 1) for these a, q.
-
-    N makes |a| <= (2N)^2 / 16 (the tail series in a converge fast) and the neglected links
-    small: with the tail included to second order, the remainder is O(eps^3),
-    eps = q^2 / (2N)^4, and (2N) >= 22 sqrt(q) keeps it below 1e-15 (checked against mpmath
-    up to q = 20 in the tests).
+    """Truncation N of the Hill matrices (|m| <= 2N + 1): |a| <= (2N)^2 / 16 and (2N) >= 22 sqrt(q)
+    keep the O(eps^3) remainder, eps = q^2 / (2N)^4, below 1e-15 (mpmath, tests, q <= 20).
     """
     amax = float(np.max(np.abs(a))) if a.size else 0.0
     qmax = float(np.max(q)) if q.size else 0.0
@@ -68,12 +58,8 @@ def _hill_order(a: np.ndarray, q: np.ndarray) -> int:
 
 
 def _chain_series(m0: int, factors: tuple[tuple[int, int], ...], kmax: int) -> np.ndarray:
-    """Coefficients c_k (k = 0..kmax) of sum_(m = m0, m0+2, ...) prod ((m + 2s)^2 - a)^-p.
-
-    ``factors`` are pairs (s, p).  Each factor is the series
-    sum_k binom(k + p - 1, p - 1) a^k x^-(k + p), x = (m + 2s)^2; the product is truncated at
-    a^kmax and summed explicitly over 2000 values of m (the terms fall at least like m^-6:
-    remainder below 1e-18).
+    """Coefficients c_k (k = 0..kmax) of sum_(m = m0, m0+2, ...) prod ((m + 2s)^2 - a)^-p over the
+    pairs (s, p) of ``factors``: each factor expanded in a, summed over 2000 m (remainder < 1e-18).
     """
     m = m0 + 2.0 * np.arange(2000)
     k = np.arange(kmax + 1)[:, None]
@@ -94,12 +80,9 @@ def _chain_series(m0: int, factors: tuple[tuple[int, int], ...], kmax: int) -> n
 
 @lru_cache(maxsize=64)  # a function of (m0, kmax) alone: few pairs per run, ~1 ms each
 def _tail_coefficients(m0: int, kmax: int) -> dict[str, np.ndarray]:
-    """Power series in a of the tails of the Hill continuant beyond |m| = m0 - 2.
-
-    Keys: ``"diag"``: sum_(m >= m0) log(1 - a/m^2) (Hurwitz zeta values);
-    ``"link"``: sum_(m >= m0 - 2) 1/((m^2 - a)((m+2)^2 - a)) (exact partial-fraction leading
-    term); ``"sq"``: the same with both factors squared; ``"adj"``: sum_(m >= m0 - 2)
-    1/((m^2 - a)((m+2)^2 - a)^2 ((m+4)^2 - a)); m runs over m0 - 2, m0, m0 + 2, ...
+    """Power series in a of the Hill continuant's tails beyond |m| = m0 - 2 (m = m0 - 2, m0, ...):
+    "diag" sum log(1 - a/m^2); "link" sum 1/((m^2 - a)((m+2)^2 - a)); "sq" the same squared;
+    "adj" sum 1/((m^2 - a)((m+2)^2 - a)^2 ((m+4)^2 - a)).
     """
     k = np.arange(kmax + 1)
     diag = np.zeros(kmax + 1)
@@ -140,12 +123,9 @@ def _series(coef: np.ndarray, a: np.ndarray) -> np.ndarray:
 
 
 def _log_tail(a: np.ndarray, q: np.ndarray, m_last: int, kmax: int) -> np.ndarray:
-    """log of the factor that the rows |m| > m_last contribute to the Hill determinant.
-
-    Rows scaled to diagonal 1 - a/m^2 have link products eps(m) = q^2/((m^2 - a)((m+2)^2 - a))
-    between rows m and m + 2; expanding log det in the links,
-    log det = sum log d - sum eps - (1/2) sum eps^2 - sum_(adjacent) eps eps' + O(eps^3).
-    The terms that involve a dropped row are summed here for one side (m > 0) and doubled.
+    """log of the factor the rows |m| > m_last contribute to Hill's determinant: with links
+    eps(m) = q^2/((m^2 - a)((m+2)^2 - a)), log det = sum log d - sum eps - (1/2) sum eps^2 -
+    sum_(adjacent) eps eps' + O(eps^3), one side summed and doubled.
     """
     tail = _tail_coefficients(m_last + 2, kmax)
     q2 = q * q
@@ -164,15 +144,10 @@ def _log_tail(a: np.ndarray, q: np.ndarray, m_last: int, kmax: int) -> np.ndarra
 def _hill(a: np.ndarray, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """1 - cos(pi beta), 1 + cos(pi beta) and the number of characteristic values below a.
 
-    Hill's determinant in the pi-periodic basis e^(2 i n t) gives (Whittaker & Watson 19.42)
-    1 - cos(pi beta) = 2 sin^2(pi sqrt(a)/2) Delta_even(0); in the antiperiodic basis
-    e^(i (2n+1) t), 1 + cos(pi beta) = 2 cos^2(pi sqrt(a)/2) Delta_odd.  Each row m of Delta
-    (diagonal 1, off-diagonal -q / (a - m^2)) is multiplied by (1 - a/m^2) (row m = 0 by a),
-    which absorbs the product formulas of sin and cos, so no entry is singular at a = m^2;
-    the continuant is evaluated by its pivot recurrence, whose signs also give the Sturm
-    count of the symmetric matrices (diag m^2, off-diagonal q).  The rows |m| > m_N are
-    accounted for analytically (:func:`_log_tail`: the tails of the sin/cos products and the
-    links to second order); the truncated determinant alone converges only like q^2 / m_N^3.
+    1 - cos(pi beta) = 2 sin^2(pi sqrt(a)/2) Delta_even(0), 1 + cos(pi beta) =
+    2 cos^2(pi sqrt(a)/2) Delta_odd (Whittaker & Watson 19.42); row m scaled by (1 - a/m^2) (row 0
+    by a), so no entry is singular; the pivot recurrence also gives the Sturm count; the rows
+    beyond m_N by :func:`_log_tail`.
     """
     N = _hill_order(a, q)
     shape = a.shape
@@ -227,10 +202,8 @@ def _hill(a: np.ndarray, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndar
 
 
 def _magnus(a: np.ndarray, q: np.ndarray, n_steps: int | None) -> tuple[np.ndarray, np.ndarray]:
-    """1 - cos(pi beta), 1 + cos(pi beta) from the fundamental matrix at pi/2.
-
-    Fourth-order Magnus with n and 2n steps, combined by Richardson extrapolation
-    (16 F(2n) - F(n)) / 15 (sixth order); n defaults to 24 + 16 max sqrt(|a| + 2|q|).
+    """1 - cos(pi beta), 1 + cos(pi beta) from the fundamental matrix at pi/2: Magnus-4 with n and
+    2n steps, Richardson (16 F(2n) - F(n)) / 15; n defaults to 24 + 16 max sqrt(|a| + 2|q|).
     """
     if n_steps is None:
         scale = float(np.max(np.sqrt(np.abs(a) + 2.0 * q))) if a.size else 0.0
@@ -281,7 +254,8 @@ def _magnus_pass(a: np.ndarray, q: np.ndarray, n_steps: int) -> tuple[np.ndarray
 
 def beta_from_discriminants(one_minus: np.ndarray, one_plus: np.ndarray,
                             count: np.ndarray) -> np.ndarray:
-    """Complex beta on the branch beta -> sqrt(a) (q -> 0) from 1 -+ cos(pi beta).
+    """Complex beta on the branch beta -> sqrt(a): real r < beta < r + 1 in a stable band, r + i mu
+    inside tongue r.
 
     Parameters
     ----------
@@ -289,11 +263,6 @@ def beta_from_discriminants(one_minus: np.ndarray, one_plus: np.ndarray,
         1 - cos(pi beta), 1 + cos(pi beta), computed without cancellation.
     count : numpy.ndarray
         Characteristic values below a (a Sturm count): 2 r + 1 in stable band r.
-
-    Returns
-    -------
-    numpy.ndarray
-        beta: real r < beta < r + 1 in a stable band, r + i mu inside tongue r.
     """
     even_tongue = one_minus < 0.0  # cos(pi beta) > 1
     odd_tongue = one_plus < 0.0  # cos(pi beta) < -1
@@ -328,7 +297,7 @@ def _discriminants(a: np.ndarray, q: np.ndarray, method: str, n_steps: int | Non
 
 def floquet_discriminant(a: Any, q: Any, method: str = "floquet",
                          n_steps: int | None = None) -> np.ndarray:
-    """cos(pi beta) = y1(pi) of Mathieu's equation (McLachlan 1947 ch. IV; W&W 19.42).
+    """cos(pi beta) = y1(pi) of Mathieu's equation, shaped like the broadcast of a and q.
 
     Parameters
     ----------
@@ -336,11 +305,6 @@ def floquet_discriminant(a: Any, q: Any, method: str = "floquet",
         Mathieu parameters (dimensionless), broadcast together.
     method, n_steps
         As :func:`characteristic_exponent`.
-
-    Returns
-    -------
-    numpy.ndarray
-        Shaped like the broadcast of a and q.
     """
     a, q = _as_grid(a, q)
     if method == "floquet":
@@ -352,34 +316,28 @@ def floquet_discriminant(a: Any, q: Any, method: str = "floquet",
 
 def characteristic_exponent(a: Any, q: Any, method: str = "floquet",
                             n_steps: int | None = None) -> np.ndarray:
-    """Characteristic exponent beta of y'' + (a - 2 q cos 2t) y = 0.
+    """Characteristic exponent beta of y'' + (a - 2 q cos 2t) y = 0, complex.
+
+    Real where bounded (r < beta < r + 1 above tongue r), r + i mu (mu > 0) inside tongue r;
+    accurate near integers, to about the square root of the discriminant's accuracy at a
+    transition curve.
 
     Parameters
     ----------
     a, q : array_like
         Mathieu parameters (dimensionless), real, broadcast together; beta is even in q.
     method : {"floquet", "hill"}
-        Monodromy by Magnus integration, or Hill's determinant (faster; module docstring).
+        Monodromy by Magnus integration, or Hill's determinant (faster).
     n_steps : int, optional
         Magnus steps over [0, pi/2] ("floquet"; default 24 + 16 max sqrt(|a| + 2|q|)).
-
-    Returns
-    -------
-    numpy.ndarray of complex
-        Real where the solutions are bounded (r < beta < r + 1 above tongue r), r + i mu
-        (mu > 0) inside tongue r, growing like e^(mu t); accurate near integers, to about the
-        square root of the discriminant's accuracy at a transition curve.
-
-    References
-    ----------
-    McLachlan (1947) ch. IV; Whittaker & Watson (1927) 19.42.
     """
     a, q = _as_grid(a, q)
     return beta_from_discriminants(*_discriminants(a, q, method, n_steps))
 
 
 def transition_curves(q: Any, r_max: int = 4) -> dict[str, np.ndarray]:
-    """Characteristic values a_r(q) (r = 0..r_max) and b_r(q) (r = 1..r_max).
+    """Characteristic values {"a0".."a{r_max}", "b1".."b{r_max}"}: eigenvalues of the four
+    tridiagonal matrices of A&S 20.2.21-20.2.25, batched over q; tongue r lies between b_r, a_r.
 
     Parameters
     ----------
@@ -387,13 +345,6 @@ def transition_curves(q: Any, r_max: int = 4) -> dict[str, np.ndarray]:
         q >= 0 (dimensionless), 1-D.
     r_max : int
         Highest order, >= 1.
-
-    Returns
-    -------
-    dict of str to numpy.ndarray
-        "a0".."a{r_max}", "b1".."b{r_max}"; tongue r lies between b_r and a_r.  Eigenvalues of
-        the four symmetric tridiagonal matrices of A&S 20.2 (cos 2nt, sin 2nt, cos (2n+1)t,
-        sin (2n+1)t), batched over q (A&S 20.2.21-20.2.25).
     """
     q = np.atleast_1d(np.asarray(q, dtype=float))
     if q.ndim != 1 or not np.all(np.isfinite(q)) or np.any(q < 0):
@@ -428,7 +379,7 @@ def transition_curves(q: Any, r_max: int = 4) -> dict[str, np.ndarray]:
 
 
 def characteristic_value(kind: str, r: int, q: float) -> float:
-    """a_r(q) or b_r(q) at one q (A&S 20.2; dimensionless).
+    """a_r(q) or b_r(q) at one q (A&S 20.2).
 
     Parameters
     ----------
@@ -454,10 +405,9 @@ def _bracket(f, x0: float, f0: float, direction: float, step: float, limit: floa
 
 
 def tongue_edges(r: int, g: float) -> tuple[float, float] | None:
-    """(x_b, x_a): where the ray q = g x / 2 crosses b_r(q) and a_r(q) in the (q, a) plane.
-
-    From the tip x = r^2 the midline x = (a_r + b_r) / 2 is bracketed and solved (brentq),
-    then each edge outward from it with steps of the tongue's width (A&S 20.2).
+    """(x_b, x_a), x_b < x_a: where the ray q = g x / 2 crosses b_r(q) and a_r(q) (x = a); None
+    when a_r - b_r is below the curves' round-off. From the tip x = r^2 the midline is solved,
+    then each edge outward in steps of the tongue's width.
 
     Parameters
     ----------
@@ -465,11 +415,6 @@ def tongue_edges(r: int, g: float) -> tuple[float, float] | None:
         Tongue order, >= 1.
     g : float
         Slope of the ray (dimensionless), >= 0.
-
-    Returns
-    -------
-    (float, float) or None
-        x_b < x_a (x = a); None when a_r - b_r is below the round-off of the curves.
     """
     from scipy import optimize  # here: its import is a sixth of a run's (unused by most)
 
@@ -514,7 +459,8 @@ def damped_tongue(x_b: float, x_a: float, g: float, zeta: float) -> tuple | None
 
     y'' + 2 c y' + (a - 2 q cos 2t) y = 0, c = zeta sqrt(a), is Mathieu's equation for
     u = e^(c t) y with x = a (1 - zeta^2); y grows where f(x) = mu(x) - zeta sqrt(x / (1 -
-    zeta^2)) > 0, mu = Im beta.
+    zeta^2)) > 0. Returns (x_lo, x_hi, x_m, f_m): the edges f = 0, the maximiser of
+    f / sqrt(x) and f there; None when f <= 0 throughout.
 
     Parameters
     ----------
@@ -524,12 +470,6 @@ def damped_tongue(x_b: float, x_a: float, g: float, zeta: float) -> tuple | None
         Slope of the ray (dimensionless).
     zeta : float
         Damping ratio, 0 <= zeta < 1.
-
-    Returns
-    -------
-    (x_lo, x_hi, x_m, f_m) or None
-        The edges f = 0 (the undamped ones when zeta = 0), the maximiser of f / sqrt(x) and f
-        there; None when f <= 0 throughout.
     """
     from scipy import optimize  # here: its import is a sixth of a run's (unused by most)
     s = 1.0 / (1.0 - zeta * zeta)
@@ -552,7 +492,8 @@ def damped_tongue(x_b: float, x_a: float, g: float, zeta: float) -> tuple | None
 
 
 def tongue_critical_gamma(r: int, gamma: float, zeta: float) -> float:
-    """Smallest amplitude at which damped tongue r opens (Bolotin 1964, sec. 6).
+    """Smallest amplitude at which damped tongue r opens: brentq in gamma on the largest f of
+    :func:`damped_tongue`; 0 when open down to 1e-12 gamma (Bolotin 1964, sec. 6).
 
     Parameters
     ----------
@@ -562,12 +503,6 @@ def tongue_critical_gamma(r: int, gamma: float, zeta: float) -> float:
         An amplitude at which the tongue is open (ray q = gamma x / (2 (1 - zeta^2))), > 0.
     zeta : float
         Damping ratio, 0 < zeta < 1.
-
-    Returns
-    -------
-    float
-        brentq in gamma (1e-10 gamma) on the largest f of :func:`damped_tongue`; 0 when the
-        tongue is open down to 1e-12 gamma.
     """
     from scipy import optimize  # here: its import is a sixth of a run's (unused by most)
     s = 1.0 / (1.0 - zeta * zeta)

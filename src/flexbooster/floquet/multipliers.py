@@ -1,18 +1,13 @@
 """Monodromy matrix, Floquet multipliers, growth rates of M q'' + C q' + (A + B cos Omega t) q = 0.
 
-Lawson (integrating-factor) fourth-order Runge-Kutta, the steady system (B = 0) propagated
-exactly.  ``C = 0`` (time-reversible, A(t) even): in the modal frame of the steady system,
-eta'' + diag(mu) eta = -cos(Omega t) Bt eta, over half a period; the period map follows from
-reversibility, Phi(T) = R Phi(T/2)^-1 R Phi(T/2), R = diag(I, -I).  ``C != 0``: first-order
-form over the full period with the exponential of L0 from ``scipy.linalg.expm``.  Point p may
-carry its own amplitude a_p B and its own step count.
+Lawson (integrating-factor) RK4 with the steady system (B = 0) propagated exactly. C = 0: in
+the steady modal frame over half a period, Phi(T) = R Phi(T/2)^-1 R Phi(T/2), R = diag(I, -I)
+(reversibility); C != 0: first-order form over the period. Point p may carry its own
+amplitude a_p B and step count. Theory: docs/theory/floquet.md.
 
-References
-----------
-.. [1] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, ch. 1-2.
-.. [2] W. Magnus, S. Winkler, *Hill's Equation*, Wiley, 1966, ch. 1-2.
-.. [3] J. D. Lawson, "Generalized Runge-Kutta processes for stable systems with large Lipschitz
-   constants", SIAM J. Numer. Anal. 4 (1967) 372-380.
+References: V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, 1964, ch. 1-2;
+W. Magnus, S. Winkler, *Hill's Equation*, 1966, ch. 1-2; J. D. Lawson, SIAM J. Numer. Anal.
+4 (1967) 372-380.
 """
 
 from __future__ import annotations
@@ -35,15 +30,15 @@ _MODAL_BLOCK_BYTES = 1 << 20
 
 
 class StepLimitError(ValueError):
-    """A monodromy would need more integration steps than ``max_steps`` (Omega too small for
-    the frequencies of the system, one line naming Omega): a computation past a resource
-    limit, not a wrong argument."""
+    """A monodromy would need more steps than ``max_steps`` (Omega too small for the system's
+    frequencies): a computation past a resource limit, not a wrong argument.
+    """
 
 
 class PeriodMapOverflowError(ValueError):
-    """The period map left the floating-point range (a growth over one period beyond ~1e308,
-    or a map singular to working precision that QZ cannot resolve): the system is far past a
-    divergence or flutter load at that Omega.  ``Omega`` is the first such pulsation."""
+    """The period map left the floating-point range (the system is far past a divergence or
+    flutter load there); ``Omega`` is the first such pulsation.
+    """
 
     def __init__(self, message: str, Omega: float) -> None:
         super().__init__(message)
@@ -110,18 +105,13 @@ class LinearPeriodicSystem:
 
 
 def periodic_system(M, C, A, B) -> LinearPeriodicSystem:
-    """Validate and pre-process M q'' + C q' + (A + B cos Omega t) q = 0 (Bolotin 1964, sec. 2).
+    """Validate and pre-process M q'' + C q' + (A + B cos Omega t) q = 0 (ValueError naming the
+    argument for non-finite entries, wrong shapes, a singular M).
 
     Parameters
     ----------
     M, C, A, B : array_like
-        Each (n, n), any consistent units; M invertible, C None or 0 for no damping, A and B
-        possibly non-symmetric.
-
-    Returns
-    -------
-    LinearPeriodicSystem
-        ValueError naming the argument for non-finite entries, wrong shapes, a singular M.
+        Each (n, n), any consistent units; C None or 0 for no damping.
     """
     M = _matrix("M", M, None)
     n = M.shape[0]
@@ -150,7 +140,8 @@ def periodic_system(M, C, A, B) -> LinearPeriodicSystem:
 
 
 def steady_frequencies(M, A, *, C=None) -> np.ndarray:
-    """Frequencies of the steady system (B = 0), sqrt of the eigenvalues of M^-1 A.
+    """Frequencies of the steady system, sqrt(eig(M^-1 A)), shape (n,), complex, ascending in the
+    square; a non-real or zero value means flutter or divergence (Bolotin 1964, sec. 2).
 
     Parameters
     ----------
@@ -158,12 +149,6 @@ def steady_frequencies(M, A, *, C=None) -> np.ndarray:
         Mass and steady stiffness, (n, n).
     C : array_like, optional
         Damping (only validated).
-
-    Returns
-    -------
-    numpy.ndarray
-        Shape (n,), complex, ascending in the squared frequency; a non-real or zero value means
-        flutter or divergence (Bolotin 1964, sec. 2).
     """
     system = periodic_system(M, C, A, np.zeros_like(np.asarray(M, dtype=float)))
     return np.sqrt(system.mu)
@@ -187,12 +172,9 @@ def as_omega(Omega) -> np.ndarray:
 
 
 def _rates(system: LinearPeriodicSystem) -> tuple[np.ndarray, np.ndarray]:
-    """Steady frequencies w (m,) and coupling magnitudes b (m, m) of :func:`step_counts`.
-
-    Without damping w_j = |omega_j|, b = |Bt|; with it (or no modal frame) from the damped
-    first-order frame z = W y, G = W^-1 N W, N = [[0, 0], [-M^-1 B, 0]]: w_j = |lambda_j|,
-    b_jk = 2 |lambda_j| |G_jk| (-> |Bt_jk| as C -> 0; docs/theory/floquet.md sec. 2); a
-    defective steady operator (cond W > 1e8) gets b = max |M^-1 B|.
+    """Steady frequencies w (m,) and coupling magnitudes b (m, m) of :func:`step_counts`: undamped
+    w = |omega_j|, b = |Bt|; damped from the first-order modal frame, b_jk = 2 |lambda_j| |G_jk|
+    (docs/theory/floquet.md sec. 2); a defective steady operator gets b = max |M^-1 B|.
     """
     if not system.damped and system.Bt is not None:
         return np.abs(np.sqrt(system.mu)), np.abs(system.Bt)
@@ -211,11 +193,10 @@ def _rates(system: LinearPeriodicSystem) -> tuple[np.ndarray, np.ndarray]:
 def step_counts(system: LinearPeriodicSystem, Omega, *, step_phase: float = 0.06,
                 max_steps: int = MAX_STEPS, amplitude=None, levels_per_octave: int = 2,
                 clip: bool = False) -> np.ndarray:
-    """Steps per integrated interval (half period if C = 0, else one period): the cost model.
+    """Steps per integrated interval (half period if C = 0, else one period), shape (P,).
 
-    The term coupling modes j, k oscillates at nu_jk = w_j + w_k + Omega with rate g_jk =
-    a b_jk / max(w_j, Omega / 2) (:func:`_rates`); a fourth-order step errs by about
-    g (h nu)^4 / nu, so h max nu^(3/4) g^(1/4) <= step_phase (Lawson 1967; docs/theory/floquet.md).
+    A fourth-order step errs by about g (h nu)^4 / nu, with nu_jk = w_j + w_k + Omega and
+    g_jk = a b_jk / max(w_j, Omega / 2), so h max nu^(3/4) g^(1/4) <= step_phase (Lawson 1967).
 
     Parameters
     ----------
@@ -226,18 +207,13 @@ def step_counts(system: LinearPeriodicSystem, Omega, *, step_phase: float = 0.06
     step_phase : float
         > 0; error on the exponents ~ step_phase^4 (about 1e-9 of the largest frequency at 0.06).
     max_steps : int
-        Cap: :class:`StepLimitError` beyond it (naming Omega), or with ``clip`` the cap itself.
+        Cap: :class:`StepLimitError` beyond it, or with ``clip`` the cap itself.
     amplitude : array_like, optional
         Shape (P,), the amplitude a of each point (default 1).
     levels_per_octave : int
         Counts rounded up to 2^(k / levels_per_octave): few batches.
     clip : bool
-        Cap the counts instead of raising (a bounded cost, a larger error).
-
-    Returns
-    -------
-    numpy.ndarray
-        Integer counts, shape (P,); they grow like 1 / Omega.
+        Cap the counts instead of raising.
     """
     om = as_omega(Omega)
     if not (np.isfinite(step_phase) and step_phase > 0.0):
@@ -274,9 +250,8 @@ def _rotation(mu: np.ndarray, t: np.ndarray) -> tuple[np.ndarray, ...]:
 
 def _half_modal(system: LinearPeriodicSystem, om: np.ndarray, n_steps: np.ndarray,
                 amp: np.ndarray) -> np.ndarray:
-    """Phi(T/2) in modal coordinates (eta, eta'), shape (P, 2n, 2n); Lawson RK4, point p with
-    amp[p] B and its own step count (descending: a point leaves the batch when done, so the loop
-    runs max(n_steps) times).
+    """Phi(T/2) in modal coordinates (eta, eta'), shape (P, 2n, 2n); point p with amp[p] B and its
+    own (descending) step count.
     """
     mu, Bt = system.mu, system.Bt
     real = np.all(mu.imag == 0.0) and np.isrealobj(Bt) and np.all(mu.real > 0.0)
@@ -300,13 +275,9 @@ def _half_modal(system: LinearPeriodicSystem, om: np.ndarray, n_steps: np.ndarra
 def _lawson_modal(z, Bt, phase, amp, n_steps, c1, s1, m1, c2, s2, hh):
     """The Lawson RK4 loop of :func:`_half_modal` (returns the final z of every point).
 
-    eta'' = -mu eta - a cos(Omega t) Bt eta; ``z`` (2, n, P, 2n) holds eta (z[0]) and eta'
-    (z[1]), ``phase`` (P,) is Omega h / 2, ``amp`` (P,) is a, the stage times are t = m h / 2;
-    the points are a prefix of the batch that shrinks as their (descending) step counts are
-    done.  The loop is bound by the number of array operations per step: the force
-    coefficients of every step are computed at once, k2 and k3 are one matmul, eta and eta'
-    are updated together.  Each operation is the one of the step written out (same operands,
-    same order): the results do not depend on the batch a point is in.
+    eta'' = -mu eta - a cos(Omega t) Bt eta; ``z`` (2, n, P, 2n) holds eta and eta', ``phase``
+    is Omega h / 2; the batch is a prefix that shrinks as the points finish. Each operation is
+    the one of the step written out: a point's result does not depend on its batch.
     """
     out = np.empty_like(z)
     n, p = z.shape[1], z.shape[2]  # p: the points still integrating
@@ -403,11 +374,8 @@ def _period_dense(system: LinearPeriodicSystem, om: np.ndarray, n_steps: int,
 
 
 def _merge_steps(steps: np.ndarray, n: int) -> np.ndarray:
-    """Raise step counts so that small batches share one loop (per-step overhead model).
-
-    A loop of s steps over p points costs about s (c0 + c1 p n^2) with c0 / c1 ~ 2000 (Python
-    overhead against the arithmetic per point and mode pair); a group is merged into the next
-    larger count when that is cheaper.
+    """Raise step counts so that small batches share one loop: a loop of s steps over p points
+    costs about s (c0 + c1 p n^2), c0 / c1 ~ 2000; a group is merged upward when cheaper.
     """
     steps = steps.copy()
     ratio = 2000.0
@@ -445,7 +413,8 @@ def _dense_maps(system: LinearPeriodicSystem, om: np.ndarray, steps: np.ndarray,
 
 def half_period_maps(system: LinearPeriodicSystem, Omega, steps: np.ndarray, *,
                      chunk: int = 256, amplitude=None) -> np.ndarray:
-    """Phi(T/2) of an undamped system, in its modal frame when it has one (complex).
+    """Phi(T/2) of an undamped system, in its modal frame when it has one (complex), shape
+    (P, 2n, 2n); :class:`PeriodMapOverflowError` where one overflows.
 
     Parameters
     ----------
@@ -459,12 +428,6 @@ def half_period_maps(system: LinearPeriodicSystem, Omega, steps: np.ndarray, *,
         Points per batch of the dense kernel (memory).
     amplitude : array_like, optional
         Shape (P,): point p has the excitation amplitude[p] B (default 1).
-
-    Returns
-    -------
-    numpy.ndarray
-        Shape (P, 2n, 2n): the map of (eta, eta') or (q, q'); :class:`PeriodMapOverflowError`
-        where one overflows.
     """
     om = as_omega(Omega)
     amp = _amplitudes(amplitude, om)
@@ -514,22 +477,17 @@ def _reflection(n: int) -> np.ndarray:
 
 
 def s_matrices(Phi: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """2 U_11, 2 (U_11 - I), 2 (U_11 + I) from the half-period map of a reversible system.
+    """2 U_11, 2 (U_11 - I), 2 (U_11 + I): matrices whose eigenvalues are s = rho + 1/rho, s - 2
+    and s + 2, each (P, n, n).
 
-    U = Phi R Phi^-1 (Phi = Phi(T/2)), U^2 = I and W + W^-1 = diag(2 U_11, -2 U_22) for W = U R
-    similar to Phi(T): the n values s = rho + 1/rho are the eigenvalues of 2 U_11 (Magnus &
-    Winkler 1966, sec. 2.2).  With P = Phi^-1, s - 2 = eig(-4 Phi_12 P_21) and s + 2 =
-    eig(4 Phi_11 P_11): near rho = +-1 the small eigenvalue is a product of small factors.
+    U = Phi R Phi^-1 (Phi = Phi(T/2)), W = U R is similar to Phi(T) and W + W^-1 =
+    diag(2 U_11, -2 U_22) (Magnus & Winkler 1966, sec. 2.2); s - 2 = eig(-4 Phi_12 P_21),
+    s + 2 = eig(4 Phi_11 P_11), P = Phi^-1: near rho = +-1 a product of small factors.
 
     Parameters
     ----------
     Phi : numpy.ndarray
         Shape (P, 2n, 2n), from :func:`half_period_maps`.
-
-    Returns
-    -------
-    S, Xp, Xm : numpy.ndarray
-        Each (P, n, n): the matrices whose eigenvalues are s, s - 2 and s + 2.
     """
     n = Phi.shape[-1] // 2
     if np.iscomplexobj(Phi) and not np.any(Phi.imag):
@@ -554,13 +512,13 @@ def s_value_sets(Phi: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 
 
 def largest_multiplier(xp: np.ndarray, xm: np.ndarray) -> np.ndarray:
-    """|rho|_max, shape (P,), from s - 2 (used where Re s >= 0) and s + 2 (where Re s < 0).
+    """|rho|_max, shape (P,): rho = s/2 + sqrt((s/2 - 1)(s/2 + 1)) with the small factor from s - 2
+    (where Re s >= 0) or s + 2.
 
     Parameters
     ----------
     xp, xm : numpy.ndarray
-        Shape (P, n): s - 2 and s + 2 (:func:`s_value_sets`); rho = s/2 + sqrt((s/2 - 1)
-        (s/2 + 1)) with the small factor from the shifted set.
+        Shape (P, n): s - 2 and s + 2 (:func:`s_value_sets`).
     """
     xp = xp.astype(complex)
     xm = xm.astype(complex)
@@ -576,12 +534,8 @@ def largest_multiplier(xp: np.ndarray, xm: np.ndarray) -> np.ndarray:
 
 
 def _reversible_multipliers(Phi: np.ndarray, om: np.ndarray) -> np.ndarray:
-    """The 2n multipliers: eigenvalues of Phi(T/2) R Phi(T/2)^-1 R, similar to Phi(T).
-
-    Where Phi(T/2) is singular to working precision they are the eigenvalues of the pencil
-    (Phi R, R Phi) (v = R Phi u), by QZ without an inverse.  The multipliers of a reversible
-    system come in pairs rho, 1/rho (sum of log|rho| = 0): where they do not, the growth over
-    one period is beyond what double precision resolves (PeriodMapOverflowError).
+    """The 2n multipliers: eigenvalues of Phi(T/2) R Phi(T/2)^-1 R (QZ of the pencil (Phi R, R Phi)
+    where Phi is singular); unpaired rho, 1/rho raise PeriodMapOverflowError.
     """
     R = _reflection(Phi.shape[-1] // 2)
     PhiR = Phi * R[None, None, :]
@@ -622,13 +576,13 @@ def _prepare(M, C, A, B, Omega, n_steps, step_phase, max_steps, chunk, amplitude
 
 def monodromy(M, C, A, B, Omega, *, n_steps=None, step_phase: float = 0.06,
               max_steps: int = MAX_STEPS, chunk: int = 256, amplitude=None) -> np.ndarray:
-    """Monodromy matrices Phi(T), T = 2 pi / Omega, for a batch of Omega.
+    """Monodromy matrices Phi(T), T = 2 pi / Omega: z(T) = Phi(T) z(0), z = (q, q'), shape
+    (P, 2n, 2n), real (Bolotin 1964, sec. 2-3).
 
     Parameters
     ----------
     M, C, A, B : array_like
-        The system M q'' + C q' + (A + B cos Omega t) q = 0, each (n, n), C may be None; or a
-        :class:`LinearPeriodicSystem` as M (C, A, B then ignored).
+        The system, each (n, n), C may be None; or a :class:`LinearPeriodicSystem` as M.
     Omega : array_like
         Shape (P,), rad per time unit of the matrices, > 0.
     n_steps : int or array_like of int, optional
@@ -639,16 +593,6 @@ def monodromy(M, C, A, B, Omega, *, n_steps=None, step_phase: float = 0.06,
         Points per batch (memory).
     amplitude : array_like, optional
         Shape (P,): point p has the excitation amplitude[p] B (default 1).
-
-    Returns
-    -------
-    numpy.ndarray
-        Shape (P, 2n, 2n), real: z(T) = Phi(T) z(0) for z = (q, q'); with C = 0 from the half
-        period, Phi(T) = R Phi(T/2)^-1 R Phi(T/2).
-
-    References
-    ----------
-    Bolotin (1964), sec. 2-3; Magnus & Winkler (1966), ch. 1; Lawson (1967).
     """
     system, om, steps, amp = _prepare(M, C, A, B, Omega, n_steps, step_phase, max_steps,
                                       chunk, amplitude)
@@ -669,18 +613,12 @@ def monodromy(M, C, A, B, Omega, *, n_steps=None, step_phase: float = 0.06,
 def floquet_multipliers(M, C, A, B, Omega, *, n_steps=None, step_phase: float = 0.06,
                         max_steps: int = MAX_STEPS, chunk: int = 256,
                         amplitude=None) -> np.ndarray:
-    """Floquet multipliers rho, the eigenvalues of the monodromy matrix.
+    """Floquet multipliers rho, the eigenvalues of the monodromy, shape (P, 2n), complex.
 
     Parameters
     ----------
     M, C, A, B, Omega, n_steps, step_phase, max_steps, chunk, amplitude
         As :func:`monodromy`.
-
-    Returns
-    -------
-    numpy.ndarray
-        Shape (P, 2n), complex; with C = 0 from the half-period map by reversibility (pairs
-        rho, 1/rho to round-off; unpaired: :class:`PeriodMapOverflowError`).
     """
     system, om, steps, amp = _prepare(M, C, A, B, Omega, n_steps, step_phase, max_steps,
                                       chunk, amplitude)
@@ -691,17 +629,12 @@ def floquet_multipliers(M, C, A, B, Omega, *, n_steps=None, step_phase: float = 
 
 
 def floquet_exponents(M, C, A, B, Omega, **options) -> np.ndarray:
-    """Characteristic exponents log(rho) / T (principal log), T = 2 pi / Omega.
+    """Characteristic exponents log(rho) / T (principal log), shape (P, 2n), 1 / time unit.
 
     Parameters
     ----------
     M, C, A, B, Omega, **options
         As :func:`floquet_multipliers`.
-
-    Returns
-    -------
-    numpy.ndarray
-        Shape (P, 2n), 1 / time unit; Im defined modulo Omega.
     """
     rho = floquet_multipliers(M, C, A, B, Omega, **options)
     return np.log(rho) * (as_omega(Omega) / (2.0 * np.pi))[:, None]  # lambda = log(rho) / T
@@ -709,15 +642,13 @@ def floquet_exponents(M, C, A, B, Omega, **options) -> np.ndarray:
 
 def growth_rate(M, C, A, B, Omega, *, n_steps=None, step_phase: float = 0.06,
                 max_steps: int = MAX_STEPS, chunk: int = 256, amplitude=None) -> np.ndarray:
-    """Largest real part of the characteristic exponents, log|rho|_max / T (1 / time unit).
-
-    > 0 means unstable (Bolotin 1964, sec. 2-3); Hill's determinant gives the same from
-    :func:`flexbooster.floquet.hill_exponents`.
+    """Largest real part of the characteristic exponents, log|rho|_max / T (1 / time unit), shape
+    (P,); > 0 means unstable.
 
     Parameters
     ----------
     M, C, A, B, Omega, n_steps, step_phase, max_steps, chunk, amplitude
-        The system and options of :func:`monodromy`; the result has shape (P,).
+        As :func:`monodromy`.
     """
     system, om, steps, amp = _prepare(M, C, A, B, Omega, n_steps, step_phase, max_steps,
                                       chunk, amplitude)

@@ -1,20 +1,12 @@
 """Narrow instability regions of q'' + (A + B cos Omega t) q = 0, resolved linearly in width.
 
-Near a narrow region the monodromy indicators are quadratic in the distance to the tip, so
-round-off hides regions narrower than ~sqrt(eps) of their centre.  Here the two exponents
-that collide at a candidate are isolated from Hill's equations in the modal frame,
-[diag(mu) + (lambda + i s Omega)^2] eta_s + (Bt / 2)(eta_(s-1) + eta_(s+1)) = 0: the two
-resonant components are kept and the rest eliminated exactly (Schur complement, Loewdin
-partitioning), and the squared separation D(Omega) = (lambda_1 - lambda_2)^2 of the pair is
-> 0 inside, < 0 outside, 0 on the edges, to relative eps of the width itself
-(docs/theory/floquet.md sec. 4).
+Round-off hides regions narrower than ~sqrt(eps) of their centre from the monodromy. Here
+the two colliding exponents are isolated from Hill's equations in the modal frame (the rest
+eliminated exactly: Schur complement, Loewdin partitioning) and D(Omega) = (lambda_1 -
+lambda_2)^2 is > 0 inside, 0 on the edges (docs/theory/floquet.md sec. 4).
 
-References
-----------
-.. [1] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, sec. 7-8.
-.. [2] W. Magnus, S. Winkler, *Hill's Equation*, Wiley, 1966, ch. 2.
-.. [3] P.-O. Loewdin, "Studies in perturbation theory IV", J. Mol. Spectrosc. 10 (1963) 12-33.
-.. [4] C. S. Hsu, J. Appl. Mech. 30 (1963) 367-372 (combination resonances).
+References: V. V. Bolotin, 1964, sec. 7-8; W. Magnus, S. Winkler, 1966, ch. 2;
+P.-O. Loewdin, J. Mol. Spectrosc. 10 (1963) 12-33; C. S. Hsu, J. Appl. Mech. 30 (1963).
 """
 
 from __future__ import annotations
@@ -49,12 +41,8 @@ def _pair_layout(kind: np.ndarray, j: np.ndarray, L: int):
 
 
 def _block_factor(Dg, Up, Lo):
-    """Block LU of the block-tridiagonal matrices (batched): the inverses of the pivot blocks.
-
-    Blocks Dg (B, h, n, n) on the diagonal, Up[:, p] = block (p, p + 1), Lo[:, p] = block
-    (p + 1, p).  Block Thomas (block LU without inter-block pivoting; the diagonal blocks
-    dominate for weak coupling): T = L U, U with the pivots D'_p and Up, L unit lower with
-    Lo_p D'_p^-1.  Returns the inverses D'_p^-1, (B, h, n, n).
+    """Block LU (block Thomas, no inter-block pivoting) of the batched block-tridiagonal matrices:
+    diagonal Dg (B, h, n, n), Up / Lo the blocks above / below. Returns the inverse pivots.
     """
     h = Dg.shape[1]
     Di = np.empty_like(Dg)
@@ -109,15 +97,10 @@ def _block_solve_t(Di, Up, Lo, R):
 
 
 def _discriminant(mu, Bt, om, nu0, ia, ib, pa, pb, s_min, h, n_fix):
-    """D(Omega) and the pair's midpoint for a batch (one Omega per entry).
+    """D(Omega), the pair's midpoint nu0 and D's round-off error for a batch (lambda = i nu).
 
-    The exponents are written lambda = i nu: Hill's blocks at lambda = i nu are
-    diag(mu) - (nu + s Omega)^2 with the derivative -2 (nu + s Omega) in nu, real for the
-    undamped system with a real modal frame (Bolotin 1964, sec. 7-8), so the batch is solved
-    in real arithmetic.  With det(S_0 + y S') = a y^2 + b y + c (y = nu - nu0, S' = dS/dnu)
-    the pair's roots are nu_1, nu_2 and D = (lambda_1 - lambda_2)^2 = -(nu_1 - nu_2)^2 =
-    -(b^2 - 4 a c) / a^2.  Returns (D, nu0, err): D (real for a real frame), the midpoint
-    nu0 (one fixed-point step per pass) and an estimate of the round-off error of D.
+    Hill's blocks diag(mu) - (nu + s Omega)^2 are real for an undamped real frame; with
+    det(S_0 + y S') = a y^2 + b y + c, D = -(nu_1 - nu_2)^2 = -(b^2 - 4 a c) / a^2.
     """
     B = om.size
     n = mu.size
@@ -215,12 +198,9 @@ def _slope(cand, L):
 def narrow_search(mu: np.ndarray, Bt: np.ndarray, cand: dict, *, max_iter: int = 16) -> dict:
     """Vertex and width of D(Omega) near each candidate (one batch per order j).
 
-    ``mu`` (n,) squared steady frequencies > 0, ``Bt`` (n, n) the modal coupling V^-1 M^-1 B V,
-    ``cand`` arrays kind (0 simple, 1 sum, 2 difference), i, k, j, centre and window (half-width
-    about the centre), rad per time unit; ``max_iter`` Newton steps on the parabola per
-    harmonic margin.  Returns arrays: found (D > 0 at the vertex beyond round-off, width at most
-    :data:`MAX_WIDTH` of the centre), converged (the margins agree), lo, hi (edges), growth
-    (sqrt(D) / 2 at the vertex) and omega_at_max (the vertex).
+    ``mu`` squared steady frequencies, ``Bt`` the modal coupling, ``cand`` arrays kind, i, k, j,
+    centre, window (rad per time unit); ``max_iter`` Newton steps per harmonic margin. Returns
+    arrays found, converged, lo, hi, growth (sqrt(D) / 2) and omega_at_max (the vertex).
     """
     w = np.sqrt(mu)
     size = cand["centre"].size
@@ -253,16 +233,9 @@ def narrow_search(mu: np.ndarray, Bt: np.ndarray, cand: dict, *, max_iter: int =
 
 
 def _vertex(mu, Bt, w, sub, L, max_iter):
-    """(vertex, half-width, found, growth) of D on each candidate's window, margin L.
-
-    D is a parabola in Omega to leading order (the detuning is linear in Omega): D at
-    x0 - h, x0, x0 + h (h = min(window / 4, 1e-3 Omega_c)), then one new value per step at
-    the vertex of the parabola through the three latest points (successive parabolic
-    interpolation).  D at a point within the region's width of the vertex is D_v itself, so
-    the width sqrt(D_v / -D'') is resolved however far the first points were.  A candidate
-    stops when its step is below 1e-3 of the half-width |D_v / D''|^(1/2) (D_v < 0: the
-    closest approach of the pair, no region) or, with D_v < 0, below 1/8 of the spread of its
-    points while the half-gap exceeds that spread (no region, resolved).
+    """(vertex, half-width, found, growth) of D on each candidate's window, margin L, by successive
+    parabolic interpolation (D is a parabola in Omega to leading order); stops below 1e-3 of the
+    half-width, or with D_v < 0 below 1/8 of the points' spread (no region).
     """
     Oc = sub["centre"]
     win = sub["window"]

@@ -1,17 +1,9 @@
-"""Scalar maximisers and root finders vectorised over independent intervals.
+"""Scalar maximisers and root finders vectorised over P independent problems: ``f(x, idx)``
+evaluates the points x (P',) of the problems idx (P',) and returns (P',) values.
 
-Each function works on P independent problems at once: ``f(x, idx)`` evaluates the points
-``x`` (P',) of the problems ``idx`` (P',) (integer indices into the arrays) and returns (P',)
-values, so one call serves every problem still active.  Numerical core: numpy only.
-
-References
-----------
-.. [1] J. Kiefer, "Sequential minimax search for a maximum", Proc. AMS 4 (1953) 502-506.
-.. [2] R. P. Brent, *Algorithms for Minimization without Derivatives*, Prentice-Hall, 1973,
-   ch. 5 (procedure localmin).
-.. [3] M. Dowell, P. Jarratt, "A modified regula falsi method for computing the root of an
-   equation", BIT 11 (1971) 168-174 (Illinois).
-.. [4] W. H. Press et al., *Numerical Recipes*, 3rd ed., Cambridge, 2007, sec. 9.1, 10.2.
+References: J. Kiefer, Proc. AMS 4 (1953) 502-506 (golden section); R. P. Brent,
+*Algorithms for Minimization without Derivatives*, 1973, ch. 5; M. Dowell, P. Jarratt,
+BIT 11 (1971) 168-174 (Illinois); Press et al., *Numerical Recipes*, 3rd ed., sec. 9.1, 10.2.
 """
 
 from __future__ import annotations
@@ -30,25 +22,20 @@ class NoConvergenceError(ValueError):
 
 def golden_section_max(f, a, b, *, xtol, max_iter: int = 200,
                        stop_above: float | None = None) -> tuple[np.ndarray, np.ndarray]:
-    """Maximise f on [a, b] by golden-section search (Kiefer 1953; Press et al. sec. 10.2).
+    """Maximise f on [a, b] by golden section: the best point of each interval and f there.
 
     Parameters
     ----------
     f : callable
-        f(x, idx) -> values (module docstring).
+        f(x, idx) -> values.
     a, b : array_like
-        Interval ends, shape (P,), finite, a <= b (unit of x).
+        Interval ends, shape (P,), finite, a <= b.
     xtol : array_like
         Final interval lengths, shape (P,) or scalar, > 0.
     max_iter : int
         Cap on the steps, >= 1 (:class:`NoConvergenceError` past it).
     stop_above : float, optional
         An interval stops once f exceeds this at one of its points.
-
-    Returns
-    -------
-    x, fx : numpy.ndarray
-        The best point of each interval and f there; the maximum where f is unimodal.
     """
     a = np.atleast_1d(np.asarray(a, dtype=float)).copy()
     b = np.atleast_1d(np.asarray(b, dtype=float)).copy()
@@ -91,12 +78,13 @@ def golden_section_max(f, a, b, *, xtol, max_iter: int = 200,
 def brent_max(f, a: np.ndarray, b: np.ndarray, x0: np.ndarray, xtol: np.ndarray, *,
               max_iter: int = 200,
               stop_above: float | None = None) -> tuple[np.ndarray, np.ndarray]:
-    """Maximise f on [a, b] from x0: golden-section and parabolic steps (Brent 1973, ch. 5).
+    """Maximise f on [a, b] from x0 by golden-section and parabolic steps (Brent 1973, ch. 5):
+    the maximisers and f there.
 
     Parameters
     ----------
     f : callable
-        f(x, idx) -> values (module docstring).
+        f(x, idx) -> values.
     a, b, x0 : numpy.ndarray
         Interval ends and starting points, shape (P,), a <= x0 <= b.
     xtol : numpy.ndarray
@@ -105,11 +93,6 @@ def brent_max(f, a: np.ndarray, b: np.ndarray, x0: np.ndarray, xtol: np.ndarray,
         Cap on the steps (:class:`NoConvergenceError` past it).
     stop_above : float, optional
         A problem stops once f exceeds this at its best point.
-
-    Returns
-    -------
-    x, fx : numpy.ndarray
-        The maximiser of each problem and f there.
     """
     cgold = 0.5 * (3.0 - np.sqrt(5.0))
     a, b = a.copy(), b.copy()
@@ -167,25 +150,21 @@ def brent_max(f, a: np.ndarray, b: np.ndarray, x0: np.ndarray, xtol: np.ndarray,
 
 def illinois_root(f, x_in: np.ndarray, f_in: np.ndarray, x_out: np.ndarray, f_out: np.ndarray,
                   xtol: np.ndarray, *, max_iter: int = 200, bracket: bool = False):
-    """Root of f between x_in (f > 0) and x_out (f <= 0) by Illinois regula falsi.
+    """Root of f between x_in (f > 0) and x_out (f <= 0) by Illinois regula falsi: the midpoints of
+    the final brackets, or the brackets.
 
     Parameters
     ----------
     f : callable
-        f(x, idx) -> values (module docstring).
+        f(x, idx) -> values.
     x_in, f_in, x_out, f_out : numpy.ndarray
         The brackets and f at their ends, shape (P,), f_in > 0 >= f_out.
     xtol : numpy.ndarray
-        Final bracket lengths, shape (P,), > 0 (at least xtol / 2 gained per step).
+        Final bracket lengths, shape (P,), > 0.
     max_iter : int
-        Cap on the steps; past half of it each step bisects (f at round-off).
+        Cap on the steps; past half of it each step bisects.
     bracket : bool
         Return the final brackets (x_in, f_in, x_out, f_out) instead of their midpoints.
-
-    Returns
-    -------
-    numpy.ndarray or tuple
-        The midpoints of the final brackets, shape (P,), or the brackets.
     """
     a, fa, b, fb = x_in.copy(), f_in.copy(), x_out.copy(), f_out.copy()
     last = np.zeros(a.size, dtype=int)  # which end moved last (+1 a, -1 b)
@@ -218,12 +197,15 @@ def illinois_root(f, x_in: np.ndarray, f_in: np.ndarray, x_out: np.ndarray, f_ou
 def expand_bracket(f, x0: np.ndarray, f0: np.ndarray, d0: np.ndarray, direction,
                    limit: np.ndarray, *, factor: float = 3.0,
                    max_iter: int = 80) -> tuple[np.ndarray, ...]:
-    """March from x0 by d0 factor^m towards ``limit`` until the sign of f differs from f0's.
+    """March from x0 by d0 factor^m towards ``limit`` until f's sign differs from f0's.
+
+    Returns x_in, f_in (last point with f0's sign, x0 if none), x_out, f_out (the first without;
+    x0, 0 if none) and ``clipped`` (the march reached ``limit``).
 
     Parameters
     ----------
     f : callable
-        f(x, idx) -> values (module docstring).
+        f(x, idx) -> values.
     x0, f0, d0 : numpy.ndarray
         Starting points, f there and first steps (> 0), shape (P,).
     direction : float or numpy.ndarray
@@ -234,12 +216,6 @@ def expand_bracket(f, x0: np.ndarray, f0: np.ndarray, d0: np.ndarray, direction,
         Growth of the step per point, > 1.
     max_iter : int
         Cap on the points (:class:`NoConvergenceError` past it).
-
-    Returns
-    -------
-    x_in, f_in, x_out, f_out, clipped : numpy.ndarray
-        The last point with f0's sign (x0 if none) and the first without (x0, f 0 if none);
-        ``clipped`` where the march reached ``limit`` without a change of sign.
     """
     x_in, f_in = x0.copy(), np.asarray(f0, dtype=float).copy()
     x_out, f_out = x0.copy(), np.zeros(x0.size)

@@ -1,26 +1,15 @@
 """Instability regions in Omega of M q'' + C q' + (A + B cos Omega t) q = 0, and their
 amplitude dependence.
 
-The search starts from the analytic candidates, never from a grid: regions grow out of the
-simple resonances Omega = 2 omega_i / j and the combinations (omega_i +- omega_k) / j.  Without
-damping the half-period map gives s = rho + 1/rho (:mod:`.multipliers`), tracked per mode from
-its gamma -> 0 value 2 cos(2 pi omega_i / Omega); each candidate has a smooth indicator F,
-positive exactly where its multipliers leave the unit circle: (-1)^j s_i - 2 (simple) and
--Re (s_i - s_k)^2 (combination).  F is maximised near each candidate (:func:`.optimize.
-brent_max`), both edges are bracketed and refined on F = 0 (:func:`.optimize.illinois_root`),
-and an overlapping region is followed to |rho|_max = 1 (its union is reported).  Candidates
-below the indicators' round-off floor go to the pair discriminant of :mod:`.narrow`; with
-damping the undamped regions seed the search of max log|rho| > 0 (docs/theory/floquet.md).
+Regions grow out of the analytic candidates 2 omega_i / j and (omega_i +- omega_k) / j, never
+from a grid: a smooth indicator per candidate, positive exactly where its multipliers leave
+the unit circle, is maximised near the centre and both edges are refined on its zero; regions
+below the indicators' round-off floor go to :mod:`.narrow`; with damping the undamped regions
+seed the search of max log|rho| > 0. Theory: docs/theory/floquet.md.
 
-References
-----------
-.. [1] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, ch. 1-2,
-   sec. 6.
-.. [2] C. S. Hsu, "On the parametric excitation of a dynamic system having multiple degrees of
-   freedom", J. Appl. Mech. 30 (1963) 367-372.
-.. [3] W. Magnus, S. Winkler, *Hill's Equation*, Wiley, 1966, ch. 1-2.
-.. [4] K. Takahashi, "An approach to investigate the instability of the multiple-degree-of-
-   freedom parametric dynamic systems", J. Sound Vib. 78 (1981) 519-529.
+References: V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, 1964, ch. 1-2, sec. 6;
+C. S. Hsu, J. Appl. Mech. 30 (1963) 367-372; W. Magnus, S. Winkler, *Hill's Equation*, 1966;
+K. Takahashi, J. Sound Vib. 78 (1981) 519-529.
 """
 
 from __future__ import annotations
@@ -52,10 +41,9 @@ _KINDS = ("simple", "sum", "difference")
 
 
 class TooManyCandidatesError(ValueError):
-    """The resonance candidates 2 omega_i / j, (omega_i +- omega_k) / j to examine (in the
-    Omega range, width estimate above round-off) exceed ``max_candidates``: omega_min too
-    small for the frequencies (one line, naming omega_min); a search past a size limit, not a
-    wrong argument."""
+    """The resonance candidates to examine exceed ``max_candidates`` (omega_min too small for the
+    frequencies): a search past a size limit, not a wrong argument.
+    """
 #: Round-off floor of the indicators (s-values are O(1), eigenvalue errors ~ eps ||S||): a
 #: maximum below it is not a region.  Detection limit: relative width ~ 2 sqrt(floor) / (pi j).
 _F_FLOOR = 1e-14
@@ -79,13 +67,13 @@ class InstabilityRegion:
     Attributes
     ----------
     omega_lo, omega_hi, omega_at_max, omega_center : float
-        Edges (|rho|_max = 1), where the growth is largest, the candidate's analytic centre
-        (rad per time unit of the matrices).
+        Edges (|rho|_max = 1), where the growth is largest, the analytic centre (rad per time
+        unit of the matrices).
     growth_rate_max : float
-        Largest max Re lambda = log|rho|_max / T inside (1 / time unit).
+        Largest log|rho|_max / T inside (1 / time unit).
     kind, modes, order : str, tuple of int, int
-        "simple", "sum", "difference" or "steady" (the steady system is unstable: the whole
-        range); the modes (ascending frequency) and j of 2 omega_i / j or (omega_i +- omega_k) / j.
+        "simple", "sum", "difference" or "steady" (unstable steady system: the whole range);
+        the modes (ascending frequency) and j.
     clipped : bool
         An edge is an end of the range asked for.
     """
@@ -168,11 +156,9 @@ def _range(omega_min, omega_max) -> tuple[float, float]:
 def _damping_caps(w, Bt, base, i0, k0, zrow, zeta, rate, margin) -> np.ndarray:
     """Largest order j per resonance base that damping could leave unstable (0: none).
 
-    The averaged equations of a resonant group couple with H_ab = |Bt_ab| / (4 sqrt(w_a w_b));
-    their undamped growth is at most the largest row sum R_a of the modes involved (Gershgorin);
-    order j >= 2 grows at most like base zeta_i zeta_k zeta^(j-2) / 4.  A region needs a growth
-    above min(delta_i, delta_k) of the modal decay rates (Bolotin 1964 sec. 6; Hsu 1963): kept
-    while margin x growth exceeds it.  A mode without decay keeps all.
+    The averaged equations couple with H_ab = |Bt_ab| / (4 sqrt(w_a w_b)); the undamped growth is
+    at most the largest row sum R_a (Gershgorin), order j >= 2 at most base zeta_i zeta_k
+    zeta^(j-2) / 4; kept while margin x growth exceeds min(delta_i, delta_k) (Hsu 1963).
     """
     with np.errstate(divide="ignore", invalid="ignore"):
         H = np.abs(Bt) / (4.0 * np.sqrt(np.outer(w, w)))
@@ -196,12 +182,10 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
                 rate: np.ndarray | None = None) -> dict:
     """Analytic centres in [lo, hi] with their first-order width estimates.
 
-    Returns arrays kind (0 simple, 1 sum, 2 difference), i, k, j, centre, est, gap (distance
-    to the nearest other centre of *any* order j whose centre lies in [lo / 2, 2 hi], kept or
-    not), mono.  With ``rate`` (modal decay rates, 1/time) and ``opt.damping_margin``, the
-    orders that damping suppresses (:func:`_damping_caps`) are not enumerated.  Only the
-    orders whose width estimate can pass the floor are enumerated, in batches of bounded
-    memory; more than ``opt.max_candidates`` kept raises :class:`TooManyCandidatesError`.
+    Arrays kind (0 simple, 1 sum, 2 difference), i, k, j, centre, est, gap (distance to the
+    nearest other centre of any order in [lo / 2, 2 hi]), mono. Orders suppressed by damping
+    (:func:`_damping_caps`) or below the floor are not enumerated; more than
+    ``opt.max_candidates`` kept raises :class:`TooManyCandidatesError`.
     """
     n = w.size
     ii, kk = np.triu_indices(n, 1)
@@ -337,10 +321,8 @@ def _half_maps_at(system: LinearPeriodicSystem, om: np.ndarray, opt: _Options) -
 
 
 def _indicator(system, w, cand, om, opt) -> np.ndarray:
-    """F per candidate at om (same length as the candidate arrays).
-
-    Each point needs one eigenvalue set: s (combination), s - 2 (simple, j even) or s + 2
-    (simple, j odd), so only that matrix of :func:`.multipliers.s_matrices` is decomposed.
+    """F per candidate at om; each point decomposes only the one matrix of
+    :func:`.multipliers.s_matrices` it needs (s, s - 2 or s + 2).
     """
     mats = s_matrices(_half_maps_at(system, om, opt))
     P = om.size
@@ -377,12 +359,8 @@ def _indicator(system, w, cand, om, opt) -> np.ndarray:
 
 
 def _unstable_indicator(system, om, opt) -> np.ndarray:
-    """U > 0 exactly where the undamped system is unstable; U = 0 on |rho|_max = 1.
-
-    U = max(max_a |Re s_a| - 2, max_{a<b} -Re (s_a - s_b)^2) - floor: positive when some s is
-    real outside [-2, 2] (multipliers rho != +-1 real) or a pair is complex (multipliers off
-    the unit circle); continuous in Omega and crossing 0 linearly at both kinds of boundary.
-    The floor discounts round-off (a nearly double real s may come out complex, Im ~ 1e-8).
+    """U > 0 exactly where the undamped system is unstable, U = 0 on |rho|_max = 1:
+    U = max(max_a |Re s_a| - 2, max_{a<b} -Re (s_a - s_b)^2) - floor (floor: round-off).
     """
     s, xp, xm = _s_values(system, om, opt)
     # |s| - 2 from the shifted sets: s - 2 where Re s >= 0, -(s + 2) where Re s < 0
@@ -412,12 +390,9 @@ def _growth_damped(system, om, opt, amplitude=None) -> np.ndarray:
 def _edges(f, x0: np.ndarray, f0: np.ndarray, d0: np.ndarray, direction,
            limit: np.ndarray, xtol: np.ndarray, scale: np.ndarray,
            max_rounds: int = 6) -> tuple[np.ndarray, np.ndarray]:
-    """First boundary from x0 (f(x0) > 0) in ``direction``: bracket, refine, then check.
-
-    The outward march could jump over a stable gap between adjacent regions: 8 points between x0
-    and the root (64 beyond 4 ``scale``) are checked and, where one has f <= 0, the root is
-    searched again inside (up to ``max_rounds``).  Narrower gaps can be missed (the region is
-    reported too wide, never lost).  Returns (root, clipped).
+    """First boundary from x0 (f(x0) > 0) in ``direction``: bracket, refine, then check 8 points
+    between (64 beyond 4 ``scale``) for a stable gap jumped over, up to ``max_rounds``.
+    Returns (root, clipped).
     """
     xi, fi, xo, fo, clip = expand_bracket(f, x0, f0, d0, direction, limit)
     root = np.where(clip, limit, xo)
@@ -468,11 +443,8 @@ _SEED_WIDTH_FRACTION = 1e-3
 
 def _seed_edges(f, x0: np.ndarray, f0: np.ndarray, d0: np.ndarray, limit: np.ndarray,
                 xtol: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Both edges of each region about x0 (f(x0) > 0) to a fraction of its width.
-
-    Entries 0..P-1 march down, P..2P-1 up; each round refines every bracket by Illinois until
-    it is below max(xtol, _SEED_WIDTH_FRACTION x the distance between the two inner points).
-    Returns (edges, clipped).
+    """Both edges of each region about x0 to a fraction of its width (entries 0..P-1 down,
+    P..2P-1 up). Returns (edges, clipped).
     """
     P = x0.size
     direction = np.concatenate([-np.ones(P), np.ones(P)])
@@ -510,10 +482,8 @@ def _steady_check(system: LinearPeriodicSystem):
 
 
 def _modal_decay_rates(system: LinearPeriodicSystem) -> np.ndarray | None:
-    """First-order modal decay rates delta_a = Re (V^-1 M^-1 C V)_aa / 2 (1/time unit).
-
-    Exact for modal damping C = 2 zeta diag(omega) in the modal frame (delta = zeta omega);
-    light non-proportional damping: first-order perturbation of the steady eigenvalues.
+    """First-order modal decay rates delta_a = Re (V^-1 M^-1 C V)_aa / 2 (1/time unit); exact for
+    modal damping.
     """
     if system.V is None:
         return None
@@ -527,10 +497,9 @@ _SEARCH_BATCH_BYTES = 1 << 28
 
 def _undamped_search(system, w, cand, lo, hi, opt, narrow: bool = True,
                      seeds: bool = False) -> list[dict]:
-    """Regions of the undamped system for the candidate table; list of plain dicts.
-
-    ``seeds``: the seeds of the damped search (no narrow pass; each region's own edges to a
-    fraction of its width, :func:`_seed_edges`, instead of |rho|_max = 1 to rtol)."""
+    """Regions of the undamped system for the candidate table, as dicts; ``seeds``: the seeds of
+    the damped search (edges by :func:`_seed_edges`, no narrow pass).
+    """
     if cand["centre"].size == 0:
         return []
     mono = cand["mono"]
@@ -553,11 +522,8 @@ def _undamped_search(system, w, cand, lo, hi, opt, narrow: bool = True,
 
 
 def _narrow_pass(system, cand, regs, lo, hi) -> list[dict]:
-    """Regions narrower than the monodromy's round-off floor (:mod:`.narrow`), as dicts.
-
-    The edges are the roots of the harmonic-balance pair discriminant D(Omega) (its vertex
-    +- the half-width), the growth rate sqrt(D) / 2 at the vertex; regions inside one that
-    the monodromy search found (an overlap: the union is reported) are dropped.
+    """Regions narrower than the monodromy's round-off floor (:mod:`.narrow`), as dicts, less
+    those inside a region the monodromy found.
     """
     if cand["centre"].size == 0:
         return []
@@ -658,12 +624,9 @@ def _monodromy_search(system, w, cand, lo, hi, opt,
 
 
 def _damped_search(system, undamped, opt, lo, hi) -> list[dict]:
-    """Regions with damping, seeded by the undamped regions (see module docstring).
-
-    The outward marches go on to the ends of [lo, hi], the range of the undamped seed search
-    (> 0), whatever the seed's width: a damped region may be much wider than its undamped seed
-    (Hsu 1963; docs/theory/floquet.md, sec. 4).  An edge is a point of log|rho|_max = 0 or an
-    end of that range (then ``clipped``).
+    """Regions with damping, seeded by the undamped regions; the marches go on to the ends of
+    [lo, hi] (a damped region may be much wider than its seed, Hsu 1963); an edge is a point of
+    log|rho|_max = 0 or an end of that range (``clipped``).
     """
     if not undamped:
         return []
@@ -813,6 +776,10 @@ def instability_regions(M, C, A, B, omega_min: float, omega_max: float, *,
                         ) -> tuple[InstabilityRegion, ...]:
     """Instability regions in Omega in [omega_min, omega_max], from the analytic candidates.
 
+    Sorted by omega_lo; every edge a point of |rho|_max = 1 or an end of the range; overlaps as
+    their union; regions below the indicators' floor (~6e-8 / j) from :mod:`.narrow` down to
+    1e-14 of the centre; an unstable steady system one "steady" region.
+
     Parameters
     ----------
     M, C, A, B : array_like
@@ -820,30 +787,16 @@ def instability_regions(M, C, A, B, omega_min: float, omega_max: float, *,
     omega_min, omega_max : float
         Range of Omega (rad per time unit of the matrices), 0 < omega_min < omega_max.
     rtol : float
-        Edge tolerance relative to the candidate centre, 1e-14..1e-2; narrower regions are not
-        reported.
+        Edge tolerance relative to the candidate centre, 1e-14..1e-2.
     step_phase, max_steps, chunk
-        Monodromy accuracy, cap and batch (:func:`.multipliers.monodromy`); 0.12 errs by ~2e-8
-        on the edges of the damped Mathieu test.
+        Monodromy accuracy, cap and batch (:func:`.multipliers.monodromy`).
     max_order : int, optional
         Largest order j (default: every order whose estimated width exceeds 1e-3 rtol Omega_c).
     max_candidates : int
-        Cap on the resonance candidates examined (TooManyCandidatesError beyond it).
+        Cap on the candidates examined (TooManyCandidatesError beyond it).
     damping_margin : float or None
-        With damping, >= 1: no search where :func:`flexbooster.floquet.stability_certificate`
-        holds, and a candidate only where margin x its first-order growth bound exceeds the decay
-        of its modes (docs/theory/floquet.md sec. 4); None: every candidate.
-
-    Returns
-    -------
-    tuple of InstabilityRegion
-        Sorted by omega_lo; every edge a point of |rho|_max = 1 or an end of the range; overlaps
-        as their union; regions below the indicators' floor (~6e-8 / j) from :mod:`.narrow`
-        (undamped) down to 1e-14 of the centre; an unstable steady system one "steady" region.
-
-    References
-    ----------
-    Bolotin (1964), ch. 1-2, sec. 6; Hsu (1963); Magnus & Winkler (1966), ch. 2; Takahashi (1981).
+        With damping, >= 1: no search where :func:`.bounds.stability_certificate` holds, and a
+        candidate only where margin x its growth bound exceeds its modes' decay; None: all.
     """
     lo, hi = _range(omega_min, omega_max)
     opt = _options(rtol, step_phase, max_steps, max_order, max_candidates, chunk,
@@ -864,8 +817,7 @@ class SearchWork:
     n_candidates, n_narrow : int
         Candidates examined by the monodromy and left to :mod:`.narrow`.
     undamped_steps, damped_steps : int
-        Sums of the step counts (:func:`.multipliers.step_counts`) at the candidate centres,
-        undamped half period and damped period (each step ~n^3).
+        Sums of the step counts at the candidate centres (each step ~n^3).
     """
 
     n: int
@@ -885,18 +837,13 @@ class SearchWork:
 
 
 def search_work(M, C, A, B, omega_min: float, omega_max: float, **options) -> SearchWork:
-    """The candidates and step counts of :func:`instability_regions`, without integrating.
+    """The candidates and step counts of :func:`instability_regions`, without integrating (it
+    raises as the search does).
 
     Parameters
     ----------
     M, C, A, B, omega_min, omega_max, **options
         As :func:`instability_regions`.
-
-    Returns
-    -------
-    SearchWork
-        The search's steps up to its first monodromy (steady check, certificate, damping filter,
-        candidates); raises as the search does.
     """
     lo, hi = _range(omega_min, omega_max)
     opt = _options(**options)
@@ -961,15 +908,14 @@ class CriticalAmplitude:
 
 @dataclass(frozen=True)
 class RegionBoundary:
-    """Boundary curves of one region in the (Omega, gamma) plane (B = gamma B1; Bolotin ch. 1).
+    """Boundary curves of one region in the (Omega, gamma) plane (B = gamma B1).
 
     Attributes
     ----------
     kind, modes, order
         The region (:class:`InstabilityRegion`).
     gamma, omega_lo, omega_hi : numpy.ndarray
-        Amplitudes, ascending from the critical one (where omega_lo = omega_hi), and the edges
-        there (rad per time unit).
+        Amplitudes ascending from the critical one, and the edges there (rad per time unit).
     """
 
     kind: str
@@ -1000,12 +946,11 @@ def _key(r) -> tuple:
 def critical_amplitude(M, C, A, B1, *, gamma_max: float, omega_min: float, omega_max: float,
                        gamma_rtol: float = 1e-6, regions: tuple | None = None,
                        **options) -> tuple[CriticalAmplitude, ...]:
-    """Critical amplitude of every region that exists at gamma_max (B = gamma B1).
+    """Critical amplitude of every non-steady region at gamma_max (B = gamma B1).
 
-    Without damping every region grows out of its centre at gamma = 0.  With damping the largest
-    growth rate near the region, g(gamma) = max_Omega log|rho|_max / T, is negative at 0 and
-    positive at gamma_max; its root (Illinois, all regions at once, each g a Brent maximum at its
-    own step_phase) is where the two boundaries meet (Bolotin 1964, sec. 6).
+    With damping, g(gamma) = max_Omega log|rho|_max / T near the region is < 0 at 0 and > 0 at
+    gamma_max; its root (Illinois, each g a Brent maximum) is where the two boundaries meet
+    (Bolotin 1964, sec. 6). Without damping every region grows out of gamma = 0.
 
     Parameters
     ----------
@@ -1021,11 +966,6 @@ def critical_amplitude(M, C, A, B1, *, gamma_max: float, omega_min: float, omega
         The search at gamma_max with the same range and options, if known.
     **options
         As :func:`instability_regions`.
-
-    Returns
-    -------
-    tuple of CriticalAmplitude
-        One per non-steady region at gamma_max.
     """
     gmax = _gamma_max(gamma_max)
     lo, hi = _range(omega_min, omega_max)
@@ -1057,12 +997,8 @@ _TIP_SAMPLES = 5
 
 
 def _tips(base: LinearPeriodicSystem, top, opt: _Options, gamma_rtol: float):
-    """Critical amplitude factors c (B = c B_top) and Omega of the tips, all regions at once.
-
-    g(c), the largest growth over each region's interval at gamma_max, rises from
-    g(0) = -(slowest steady decay) < 0 to g(1) > 0; its root by Illinois to gamma_rtol, each g a
-    Brent maximum (to _TIP_OMEGA_XTOL of the width, from the best of the previous maximiser, the
-    centre and a few samples) at _TIP_STEP_PHASE.
+    """Critical amplitude factors c (B = c B_top) and Omega of the tips, all regions at once: the
+    root of g(c) (g(0) < 0, g(1) > 0) by Illinois, each g a Brent maximum at _TIP_STEP_PHASE.
     """
     tip = _Options(rtol=opt.rtol, step_phase=min(opt.step_phase, _TIP_STEP_PHASE),
                    max_steps=opt.max_steps, max_order=opt.max_order,
@@ -1118,26 +1054,12 @@ def _tips(base: LinearPeriodicSystem, top, opt: _Options, gamma_rtol: float):
     return c_cr, xs
 
 
-def _selector(r):
-    kind = _KINDS.index(r.kind)
-    i = r.modes[0]
-    k = r.modes[-1]
-
-    def select(cand):
-        return (cand["kind"] == kind) & (cand["i"] == i) & (cand["k"] == k) & (
-            cand["j"] == r.order)
-
-    return select
-
-
 def region_boundaries(M, C, A, B1, *, gamma_max: float, omega_min: float, omega_max: float,
                       n_gamma: int = 21, regions: tuple | None = None,
                       **options) -> tuple[RegionBoundary, ...]:
-    """Boundary curves omega_lo(gamma), omega_hi(gamma) of every region (B = gamma B1).
-
-    At ``n_gamma`` amplitudes in (0, gamma_max] the regions of :func:`instability_regions`,
-    matched to those at gamma_max by (kind, modes, order); the tip at the critical amplitude
-    (:func:`critical_amplitude`) (Bolotin 1964, ch. 1, sec. 6).
+    """Boundary curves omega_lo(gamma), omega_hi(gamma) of every region at gamma_max: the regions
+    at ``n_gamma`` amplitudes in (0, gamma_max] matched by (kind, modes, order), and the tip at
+    the critical amplitude (Bolotin 1964, ch. 1).
 
     Parameters
     ----------
@@ -1145,11 +1067,6 @@ def region_boundaries(M, C, A, B1, *, gamma_max: float, omega_min: float, omega_
         As :func:`critical_amplitude`.
     n_gamma : int
         Amplitude levels, 2..1000.
-
-    Returns
-    -------
-    tuple of RegionBoundary
-        One per region at gamma_max.
     """
     gmax = _gamma_max(gamma_max)
     lo, hi = _range(omega_min, omega_max)

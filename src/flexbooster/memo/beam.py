@@ -1,45 +1,15 @@
 """Free-free Euler-Bernoulli beam functions (memo section 4.1, appendices B and C).
 
-The composite is treated, for its bending, as a uniform free-free beam of the same mass and
-length 2L (memo 4.1 A).  Its modes are written in the beam coordinate zeta = xi_bar - d4/L + 1
-(C-6), which runs from 0 at the aft edge to 2 at the nose; with X = lambda_n zeta / 2,
+phi_n = cosh X + cos X - alpha_n (sinh X + sin X), X = lambda_n zeta / 2 (C-1, erratum E5),
+zeta = xi_bar - d4/L + 1 from 0 (aft edge) to 2 (nose) (C-6); cos(lambda) cosh(lambda) = 1;
+a prime is d/dX (C-2..C-5). Evaluated in scaled form so nothing forms e^lambda. The
+coefficient integrals of appendix B (r, s, t, x, y, z) by the memo's closed form, a corrected
+closed form or quadrature, in the printed (E10) or zero phase of theta_j. Theory:
+docs/theory/beam-pitch.md.
 
-    phi_n = cosh X + cos X - alpha_n (sinh X + sin X)                       (C-1, erratum E5)
-
-where lambda_n are the roots of cos(lambda) cosh(lambda) = 1 and
-alpha_n = (cosh lambda_n - cos lambda_n) / (sinh lambda_n - sin lambda_n) (C-IV).  As in the
-memo (C-2..C-5), a prime on phi_n is a derivative with respect to the argument X; the
-derivative with respect to xi_bar (or zeta) carries a factor (lambda_n / 2) per order.
-
-cosh and sinh grow like e^lambda, so the functions are evaluated in scaled form: with
-A = (1 - alpha)/2, B = (1 + alpha)/2, cosh X - alpha sinh X = A e^X + B e^-X, and A is computed
-as a ratio that never forms e^lambda (see :func:`mode_shape`).
-
-The coefficient integrals of appendix B,
-
-    r_jn = int sin(theta_j),           s_jn = int phi_n sin(theta_j),
-    t_jn = int phi_n' sin(theta_j),    x_jn = int phi_n'' sin(theta_j),
-    y_jn = int phi_n''' sin(theta_j),  z_jn = int phi_n' cos(theta_j),
-
-over one cylinder (xi_bar from a to c for cylinder 1, from c to b for cylinder 2) are given
-three ways (:func:`coefficient_integrals`): the closed form printed in the memo (B-1, B-7,
-B-13..B-17, B-19..B-23; ``method="memo"``), a corrected closed form (the antiderivative
-evaluated at the limits; ``method="closed"``) and Gauss-Legendre quadrature
-(``method="quadrature"``), each for two phases of the shell functions theta_j (``phase``):
-
-* ``"memo"``: as printed in 5.3-2/5.3-3, theta_j = (j pi / 2)((L/L1) xi_bar - r1 + 1),
-  r1 = (L1 - d1)/L1, for cylinder 1 and theta_j = (j pi / 2)((L/L2) xi_bar + r2 + 1),
-  r2 = (d1 - L1 - L2)/L2, for cylinder 2 (reading guide erratum E10: not zero at the aft edge
-  of the cylinder);
-* ``"zero"``: theta_j = 0 at the aft edge of the cylinder and j pi at its forward edge.
-
-References
-----------
-.. [1] Tech Memo 104, eqs. (4.1-2), (4.2-8b), (5.3-2), (5.3-3), appendices B and C.
-.. [2] R. D. Blevins, *Formulas for Natural Frequency and Mode Shape*, Van Nostrand, 1979,
-   table 8-1 (free-free beam: lambda = 4.73004074, 7.85320462, 10.9956078, ...).
-.. [3] L. Meirovitch, *Elements of Vibration Analysis*, 2nd ed., McGraw-Hill, 1986, sec. 7.4
-   (orthogonality of the free-free modes).
+References: Tech Memo 104, eqs. (4.1-2), (4.2-8b), (5.3-2), (5.3-3), appendices B, C;
+R. D. Blevins, *Formulas for Natural Frequency and Mode Shape*, 1979, table 8-1;
+L. Meirovitch, *Elements of Vibration Analysis*, 1986, sec. 7.4.
 """
 
 from __future__ import annotations
@@ -69,30 +39,16 @@ def _check_count(name: str, value: Any, minimum: int = 1) -> int:
 
 
 def free_free_eigenvalues(n: int) -> np.ndarray:
-    """The first ``n`` roots lambda_1..lambda_n of cos(lambda) cosh(lambda) = 1, lambda > 0.
+    """The first ``n`` roots lambda_1..lambda_n > 0 of cos(lambda) cosh(lambda) = 1, to full
+    precision (Blevins 1979, table 8-1).
+
+    Newton on cos(lambda) = sech(lambda) from (n + 1/2) pi; the memo's lambda_n ~ (2n - 1) pi / 2
+    (C-IV) is off by one index (erratum C-IV-a).
 
     Parameters
     ----------
     n : int
         Number of roots (n >= 1).
-
-    Returns
-    -------
-    numpy.ndarray
-        Shape (n,), the eigenvalues of the free-free beam (dimensionless; frequency
-        omega_n = (lambda_n / l)^2 sqrt(EI / m) for a beam of length l), to full double
-        precision.
-
-    Notes
-    -----
-    The equation is solved as cos(lambda) = sech(lambda), Newton's method from
-    (n + 1/2) pi; sech is evaluated as 2 e^-lambda / (1 + e^-2 lambda), which never overflows.
-    The memo's asymptotic value lambda_n ~ (2n - 1) pi / 2 (C-IV) is off by one index: the
-    root near (2n - 1) pi / 2 is lambda_(n-1) (erratum C-IV-a).
-
-    References
-    ----------
-    Tech Memo 104, appendix C-IV; Blevins (1979), table 8-1.
     """
     n = _check_count("n", n)
     lam = (np.arange(1, n + 1) + 0.5) * np.pi
@@ -110,22 +66,13 @@ def free_free_eigenvalues(n: int) -> np.ndarray:
 
 
 def free_free_alpha(n: int) -> np.ndarray:
-    """alpha_n = (cosh lambda_n - cos lambda_n) / (sinh lambda_n - sin lambda_n), n = 1..n.
+    """alpha_n = (cosh lambda_n - cos lambda_n) / (sinh lambda_n - sin lambda_n), n = 1..n (C-IV),
+    without overflow.
 
     Parameters
     ----------
     n : int
         Number of values (n >= 1).
-
-    Returns
-    -------
-    numpy.ndarray
-        Shape (n,), dimensionless.  Evaluated divided through by cosh lambda, so it does not
-        overflow for large n (alpha_n -> 1).
-
-    References
-    ----------
-    Tech Memo 104, appendix C-IV.
     """
     return alpha_from_eigenvalues(free_free_eigenvalues(n))
 
@@ -136,12 +83,7 @@ def alpha_from_eigenvalues(lam: np.ndarray) -> np.ndarray:
     Parameters
     ----------
     lam : numpy.ndarray
-        Free-free eigenvalues lambda_n (dimensionless), > 0.
-
-    Returns
-    -------
-    numpy.ndarray
-        alpha_n (dimensionless).
+        Free-free eigenvalues lambda_n, > 0.
     """
     e = np.exp(-lam)
     sech = 2.0 * e / (1.0 + e * e)
@@ -151,17 +93,12 @@ def alpha_from_eigenvalues(lam: np.ndarray) -> np.ndarray:
 
 
 def one_minus_alpha_scaled(lam: np.ndarray) -> np.ndarray:
-    """(1 - alpha) e^lambda / 2, computed without forming e^lambda (memo C-IV).
+    """(1 - alpha_n) e^lambda_n / 2, computed without forming e^lambda (memo C-IV).
 
     Parameters
     ----------
     lam : numpy.ndarray
-        Free-free eigenvalues lambda_n (dimensionless), > 0.
-
-    Returns
-    -------
-    numpy.ndarray
-        (1 - alpha_n) e^lambda_n / 2 (dimensionless).
+        Free-free eigenvalues lambda_n, > 0.
     """
     e = np.exp(-lam)
     # 1 - alpha = (cos - sin - e^-lam) / (sinh - sin),
@@ -170,35 +107,20 @@ def one_minus_alpha_scaled(lam: np.ndarray) -> np.ndarray:
 
 
 def mode_shape(n: int | np.ndarray, zeta: np.ndarray, derivative: int = 0) -> np.ndarray:
-    """The free-free mode phi_n and its derivatives at beam coordinates zeta in [0, 2].
+    """The free-free mode phi_n^(k)(X) at zeta in [0, 2], int_0^2 phi_n^2 dzeta = 2 (4.1-2,
+    C-1..C-5, E5).
+
+    phi^(k) = A e^X + (-1)^k B e^-X + cos(X + k pi/2) - alpha sin(X + k pi/2), A = (1 - alpha)/2,
+    B = (1 + alpha)/2, with A e^X = [(1 - alpha) e^lambda / 2] e^(X - lambda): no overflow.
 
     Parameters
     ----------
     n : int or array of int
-        Mode numbers (1-based, >= 1); broadcast against ``zeta``.
+        Mode numbers (>= 1), broadcast against ``zeta``.
     zeta : array_like
-        Beam coordinate zeta = xi_bar - d4/L + 1 (C-6), 0 at the aft edge, 2 at the nose
-        (dimensionless).
+        Beam coordinate (C-6), 0 at the aft edge, 2 at the nose.
     derivative : int
-        Order k >= 0 of the derivative with respect to the argument X = lambda_n zeta / 2, as
-        the memo writes phi_n^(k) (C-2..C-5); the derivative with respect to zeta is
-        (lambda_n / 2)^k times this.
-
-    Returns
-    -------
-    numpy.ndarray
-        phi_n^(k)(X), normalised so that the integral of phi_n^2 over zeta in [0, 2] is 2.
-
-    Notes
-    -----
-    With A = (1 - alpha)/2 and B = (1 + alpha)/2,
-    phi^(k) = A e^X + (-1)^k B e^-X + cos(X + k pi/2) - alpha sin(X + k pi/2), and
-    A e^X = [(1 - alpha) e^lambda / 2] e^(X - lambda) with X <= lambda, so nothing overflows
-    on [0, 2].
-
-    References
-    ----------
-    Tech Memo 104, eqs. (4.1-2), (C-1)..(C-5) (erratum E5: no sum over n).
+        Order k >= 0 of the derivative in X = lambda_n zeta / 2; d/dzeta adds (lambda_n / 2)^k.
     """
     n = np.asarray(n)
     if n.size == 0 or not np.issubdtype(n.dtype, np.integer) or np.min(n) < 1:
@@ -220,33 +142,17 @@ def mode_shape(n: int | np.ndarray, zeta: np.ndarray, derivative: int = 0) -> np
 
 
 def first_bending_frequency(L: float, R1: float, E: float, rho: float) -> float:
-    """omega_1 of memo eq. (4.2-8b): the first free-free bending frequency (rad/s).
+    """omega_1 = (lambda_1 / 2L)^2 R1 sqrt(E / (2 rho)) (rad/s), memo eq. (4.2-8b): the thin tube
+    of cylinder 1 (EI/m = E R1^2 / (2 rho)) for the whole beam.
 
     Parameters
     ----------
     L : float
         Half-length of the composite (m); the beam length is 2L.
     R1 : float
-        Radius of cylinder 1 (m), whose thin-tube section gives EI/m = E R1^2 / (2 rho).
-    E : float
-        Young's modulus (Pa).
-    rho : float
-        Density (kg/m^3).
-
-    Returns
-    -------
-    float
-        omega_1 = (lambda_1 / 2L)^2 R1 sqrt(E / (2 rho)) in rad/s.
-
-    Notes
-    -----
-    For a thin tube I = pi R^3 h and the mass per length is 2 pi R h rho, so
-    sqrt(EI/m) = R sqrt(E / (2 rho)); the memo uses the radius of cylinder 1 for the whole
-    beam (its equivalent-beam assumption, 4.1 A).
-
-    References
-    ----------
-    Tech Memo 104, eq. (4.2-8b).
+        Radius of cylinder 1 (m).
+    E, rho : float
+        Young's modulus (Pa) and density (kg/m^3).
     """
     for name, value in (("L", L), ("R1", R1), ("E", E), ("rho", rho)):
         if not (np.isfinite(value) and value > 0):
@@ -266,13 +172,11 @@ class BeamModes:
 
     Attributes
     ----------
-    lambda_n : numpy.ndarray
-        Shape (N,), roots of cos(lambda) cosh(lambda) = 1 (dimensionless).
-    alpha_n : numpy.ndarray
-        Shape (N,), mode constants alpha_n (dimensionless).
+    lambda_n, alpha_n : numpy.ndarray
+        Shape (N,), roots of cos(lambda) cosh(lambda) = 1 and the mode constants.
     omega_n : numpy.ndarray or None
-        Shape (N,), bending frequencies omega_n = (lambda_n / 2L)^2 R1 sqrt(E / 2 rho) (rad/s),
-        when the beam data were given; omega_n[0] is omega_1 of eq. (4.2-8b).
+        Shape (N,), omega_n = (lambda_n / 2L)^2 R1 sqrt(E / 2 rho) (rad/s) when the beam data
+        were given; omega_n[0] is omega_1.
     """
 
     lambda_n: np.ndarray
@@ -302,31 +206,17 @@ def beam_modes(
     E: float | None = None,
     rho: float | None = None,
 ) -> BeamModes:
-    """lambda_n, alpha_n (n = 1..N) and, given the beam data, omega_n and omega_1.
+    """lambda_n, alpha_n (n = 1..N) and, when L, R1, E and rho are all given, omega_n (rad/s;
+    eq. 4.2-8b for n = 1).
 
     Parameters
     ----------
     N : int
         Number of modes (>= 1).
-    L : float, optional
-        Half-length of the composite (m).
-    R1 : float, optional
-        Radius of cylinder 1 (m).
-    E : float, optional
-        Young's modulus (Pa).
-    rho : float, optional
-        Density (kg/m^3).  The frequencies are computed only when L, R1, E and rho are all
-        given.
-
-    Returns
-    -------
-    BeamModes
-        The mode constants and, optionally, omega_n = (lambda_n / 2L)^2 R1 sqrt(E / 2 rho)
-        (rad/s; eq. 4.2-8b for n = 1).
-
-    References
-    ----------
-    Tech Memo 104, appendix C-IV and eq. (4.2-8b).
+    L, R1 : float, optional
+        Half-length of the composite and radius of cylinder 1 (m).
+    E, rho : float, optional
+        Young's modulus (Pa) and density (kg/m^3).
     """
     N = _check_count("N", N)
     lam = free_free_eigenvalues(N)

@@ -1,22 +1,14 @@
 """Beam action under a gimbaled pulsating end thrust: Floquet exponents alpha_r (memo 4.1).
 
-The standard model of the memo's reference 11 (Beal 1965; docs/theory/beam-action.md): a
-uniform free-free beam of the composite's mass and length 2L with its first frequency omega_1
-(4.2-8b), the end thrust F0 (1 - gamma cos Omega t) along the tangent turned by K psi
-(2.2-2), the rigid rotation q_B = psi and N elastic modes (4.1-1, 4.1-3).  With
-tau = omega_1 t: q'' + [Lambda + f(tau) B] q = 0, f = 1 - gamma cos(Omega_bar tau),
-q = (q_1 .. q_N, q_B) (4.1-12), B non-symmetric (follower force); solutions
-sum_s C^(s) exp(i (alpha + s) Omega_bar tau) (4.1-10/11).  The exponents come from the
-monodromy (:mod:`flexbooster.floquet`) checked by Hill's determinant; the bands from their
-boundaries and, below omega_1 / 4, the rigid-pitch tongues by harmonic balance.
+A uniform free-free beam of the composite's mass, length 2L and first frequency omega_1
+(4.2-8b) under F0 (1 - gamma cos Omega t) turned by K psi (2.2-2): with tau = omega_1 t,
+q'' + [Lambda + f(tau) B] q = 0, q = (q_1 .. q_N, q_B) (4.1-12). Exponents from the monodromy
+checked by Hill's determinant; bands from their boundaries, below omega_1 / 4 the rigid-pitch
+tongues by harmonic balance. Theory: docs/theory/beam-action.md.
 
-References
-----------
-.. [1] Tech Memo 104, sections 2.2, 4.1, 4.2.
-.. [2] V. L. Beal, AIAA J. 3 (1965) 486-494 (follower flutter load 109.69 EI / l^2).
-.. [3] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, ch. 1-3.
-.. [4] W. Magnus, S. Winkler, *Hill's Equation*, Wiley, 1966.
-.. [5] J. D. Lawson, SIAM J. Numer. Anal. 4 (1967) 372-380.
+References: Tech Memo 104, sec. 2.2, 4.1, 4.2; V. L. Beal, AIAA J. 3 (1965) 486-494;
+V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, 1964; W. Magnus, S. Winkler,
+*Hill's Equation*, 1966; J. D. Lawson, SIAM J. Numer. Anal. 4 (1967) 372-380.
 """
 
 from __future__ import annotations
@@ -151,32 +143,25 @@ def _assemble(load: float, K: float, rho_I: float, delta: float, N: int,
 def beam_action_system(omega_1: float, mass: float, L: float, d2: float, I_cm: float,
                        F0: float, K: float, N: int,
                        n_quad: int | None = None) -> BeamActionSystem:
-    """The normalised beam-action system of the composite (memo 4.1, 4.2).
+    """The normalised beam-action system of the composite (memo 2.2-2, 4.1-1, 4.1-3, 4.2-1).
+
+    With eps = F0 / (M L omega_1^2), G_nk = int_0^2 (1 - zeta/2) phi_n' phi_k' dzeta:
+    B_nk = -eps [G_nk + phi_n(0) phi_k'(0)], B_nB = -eps K phi_n(0),
+    B_Bk = eps (M L^2 / I_cm) [phi_k(0) + (d2 / L) phi_k'(0)], B_BB = (omega_psi / omega_1)^2.
 
     Parameters
     ----------
     omega_1 : float
         First free-free bending frequency (rad/s), > 0 (4.2-8b).
     mass, L, d2, I_cm : float
-        Mass (kg), half-length (m; beam length 2L), lever arm CM to aft edge (m, erratum E2)
-        and pitch inertia about the CM (kg m^2, erratum E1), > 0.
+        Mass (kg), half-length (m), lever arm CM to aft edge (m, erratum E2) and pitch inertia
+        about the CM (kg m^2, erratum E1), > 0.
     F0, K : float
-        Steady thrust (N) and gimbal gain (dimensionless), >= 0.
+        Steady thrust (N) and gimbal gain, >= 0.
     N : int
         Elastic free-free modes, 0..500 (0: pure rigid pitch).
     n_quad : int, optional
         Gauss-Legendre points of the modal integrals (default max(64, 8 N + 32)).
-
-    Returns
-    -------
-    BeamActionSystem
-        With eps = F0 / (M L omega_1^2), G_nk = int_0^2 (1 - zeta/2) phi_n' phi_k' dzeta:
-        B_nk = -eps [G_nk + phi_n(0) phi_k'(0)], B_nB = -eps K phi_n(0) (elastic rows),
-        B_Bk = eps (M L^2 / I_cm) [phi_k(0) + (d2 / L) phi_k'(0)], B_BB = (omega_psi / omega_1)^2.
-
-    References
-    ----------
-    Tech Memo 104, eqs. (2.2-2), (4.1-1), (4.1-3), (4.2-1), (4.2-8b); Beal (1965).
     """
     omega_1 = positive("omega_1", omega_1)
     mass = positive("mass", mass)
@@ -208,15 +193,14 @@ def beam_system(model: BoosterModel, N: int | None = None) -> BeamActionSystem:
 
 
 def uniform_beam_system(p: float, K: float, N: int, omega_1: float = 1.0) -> BeamActionSystem:
-    """The system of a uniform free-free beam under the steady thrust P l^2 / EI = p.
+    """A uniform free-free beam under the steady thrust p = P l^2 / EI (Beal 1965, eq. 4).
 
-    As :func:`beam_action_system` with d2 = L, I_cm = M L^2 / 3 and eps = 2 p / lambda_1^4
-    (Beal 1965, eq. 4).
+    :func:`beam_action_system` with d2 = L, I_cm = M L^2 / 3, eps = 2 p / lambda_1^4.
 
     Parameters
     ----------
     p, K : float
-        Steady thrust P l^2 / EI and gimbal gain (dimensionless), >= 0.
+        Steady thrust P l^2 / EI and gimbal gain, >= 0.
     N : int
         Elastic modes, >= 0.
     omega_1 : float
@@ -235,6 +219,9 @@ def follower_flutter_load(n_modes: int = 12, p_max: float = 1000.0,
                           rtol: float = 1e-12) -> float:
     """Flutter load P l^2 / EI of the free-free beam under a steady follower end force.
 
+    The smallest p at which two squared frequencies of the steady system (K = 0) coalesce;
+    109.69 in the limit, approached from above (Beal 1965, fig. 2).
+
     Parameters
     ----------
     n_modes : int
@@ -243,12 +230,6 @@ def follower_flutter_load(n_modes: int = 12, p_max: float = 1000.0,
         Upper end of the search, > 0 (ValueError if no flutter below it).
     rtol : float
         Relative tolerance of the bisection, > 0.
-
-    Returns
-    -------
-    float
-        The smallest p at which two squared frequencies of the steady system (gamma = 0,
-        K = 0) coalesce; 109.69 in the limit, approached from above (Beal 1965, fig. 2).
     """
     n_modes = count("n_modes", n_modes, 2, 200)
     p_max = positive("p_max", p_max)
@@ -278,18 +259,13 @@ def follower_flutter_load(n_modes: int = 12, p_max: float = 1000.0,
 
 
 def loaded_frequencies(system: BeamActionSystem) -> np.ndarray:
-    """omega_r / omega_1 under the steady thrust (gamma = 0), sorted by real part.
+    """omega_r / omega_1 under the steady thrust: sqrt of the eigenvalues of Lambda + B (complex:
+    flutter), shape (N + 1,), sorted by real part (memo 4.1-11).
 
     Parameters
     ----------
     system : BeamActionSystem
         The normalised system.
-
-    Returns
-    -------
-    numpy.ndarray
-        Shape (N + 1,), complex: sqrt of the eigenvalues of Lambda + B (principal branch);
-        complex values mean flutter under the steady thrust (Beal 1965; memo 4.1-11).
     """
     w = np.sqrt(np.linalg.eigvals(system.A0).astype(complex))
     return w[np.argsort(w.real, kind="stable")]
@@ -305,19 +281,15 @@ def _fold(alpha: np.ndarray) -> np.ndarray:
 
 
 def reduced_exponents(alpha: np.ndarray) -> np.ndarray:
-    """The n canonical representatives of a full set of 2n exponents.
+    """The n canonical representatives of 2n exponents, shape (..., n), sorted by real part.
+
+    Each exponent folded to 0 <= Re <= 1/2, Im >= 0 (the set is invariant under -alpha,
+    alpha + 1, conj), then the means of the n pairs (Magnus & Winkler 1966, ch. 1).
 
     Parameters
     ----------
     alpha : numpy.ndarray
-        Shape (..., 2n), exponents (dimensionless, as in 4.1-10/11), finite.
-
-    Returns
-    -------
-    numpy.ndarray
-        Shape (..., n): each exponent folded to 0 <= Re alpha <= 1/2, Im alpha >= 0 (the set is
-        invariant under -alpha, alpha + 1, conj), the means of the n pairs, sorted by real part
-        (Magnus & Winkler 1966, ch. 1).
+        Shape (..., 2n), finite exponents (4.1-10/11).
     """
     alpha = np.asarray(alpha)
     if alpha.ndim == 0 or alpha.shape[-1] == 0 or alpha.shape[-1] % 2:
@@ -332,7 +304,11 @@ def reduced_exponents(alpha: np.ndarray) -> np.ndarray:
 
 def natural_branch(reduced: np.ndarray, Omega_bar: np.ndarray,
                    frequencies: np.ndarray) -> np.ndarray:
-    """alpha_r on the branch continuous from gamma = 0: alpha_r Omega_bar -> omega_r / omega_1.
+    """alpha_r on the branch continuous from gamma = 0 (alpha_r Omega_bar -> omega_r / omega_1).
+
+    Representatives are assigned to modes greedily by the distance of fold(omega_r / Omega_bar)
+    to Re alpha_j; mode r gets the member of its orbit nearest omega_r / Omega_bar, Im >= 0.
+    Returns shape (G, n).
 
     Parameters
     ----------
@@ -342,13 +318,6 @@ def natural_branch(reduced: np.ndarray, Omega_bar: np.ndarray,
         Shape (G,), Omega / omega_1, > 0.
     frequencies : numpy.ndarray
         Shape (n,), omega_r / omega_1 (:func:`loaded_frequencies`).
-
-    Returns
-    -------
-    numpy.ndarray
-        Shape (G, n): representatives assigned to modes greedily by the distance of
-        fold(omega_r / Omega_bar) to Re alpha_j (exact at gamma = 0); mode r gets the member of
-        its representative's orbit nearest omega_r / Omega_bar, Im >= 0 (memo 4.1-10/11).
     """
     reduced = np.asarray(reduced)
     Omega_bar = np.asarray(Omega_bar, dtype=float)
@@ -421,10 +390,10 @@ def _grid(Omega: np.ndarray, gamma: np.ndarray, omega_1: float) -> tuple[np.ndar
 
 def hill_exponents(system: BeamActionSystem, Omega: np.ndarray, gamma: np.ndarray,
                    S: int, chunk: int = 8) -> HillResult:
-    """The 2n exponents alpha with the most central Fourier vectors, by Hill's determinant.
+    """The 2n exponents with the most central Fourier vectors, by Hill's determinant.
 
-    (alpha Omega_bar + s Omega_bar)^2 C^(s) = A0 C^(s) - (gamma / 2) B (C^(s-1) + C^(s+1)),
-    s = -S..S (:func:`flexbooster.floquet.hill_modes`; memo 4.1-10..12; Bolotin 1964, sec. 7).
+    (alpha + s)^2 Omega_bar^2 C^(s) = A0 C^(s) - (gamma / 2) B (C^(s-1) + C^(s+1)), s = -S..S
+    (memo 4.1-10..12; :func:`flexbooster.floquet.hill_modes`).
 
     Parameters
     ----------
@@ -456,10 +425,8 @@ def _unit_system(system: BeamActionSystem) -> LinearPeriodicSystem:
 # --------------------------------------------------------------------------------------------
 def monodromy_steps(system: BeamActionSystem, Omega: np.ndarray, gamma: np.ndarray,
                     step_phase: float = 0.06, *, max_steps: int | None = None) -> np.ndarray:
-    """Steps per half period of :func:`monodromy_exponents` (Lawson 1967).
-
-    The coupling-weighted rule of :func:`flexbooster.floquet.step_counts` (error ~ step_phase^4
-    on alpha), rounded up to 2^(k/4).
+    """Steps per half period of :func:`monodromy_exponents`: the coupling-weighted rule of
+    :func:`flexbooster.floquet.step_counts` (error ~ step_phase^4), rounded up to 2^(k/4).
 
     Parameters
     ----------
@@ -480,7 +447,8 @@ def monodromy_exponents(system: BeamActionSystem, Omega: np.ndarray, gamma: np.n
                         n_steps: int | None = None, step_phase: float = 0.06,
                         chunk: int = 256, *,
                         max_steps: int = MONODROMY_MAX_STEPS) -> np.ndarray:
-    """Floquet exponents alpha = log(rho) / (2 pi i) from the monodromy over one period.
+    """Floquet exponents alpha = log(rho) / (2 pi i) from the monodromy, shape (G, 2n),
+    Re alpha in (-1/2, 1/2] (memo 4.1-10/11).
 
     Parameters
     ----------
@@ -493,22 +461,13 @@ def monodromy_exponents(system: BeamActionSystem, Omega: np.ndarray, gamma: np.n
     chunk : int
         Grid points per batch (memory).
     max_steps : int
-        Cap on the automatic step count, 8..10^7 (:data:`MONODROMY_MAX_STEPS` keeps alpha to
-        about 3e-6 at Omega_bar = 4.4e-4, docs/theory/robustness.md).
-
-    Returns
-    -------
-    numpy.ndarray
-        Shape (G, 2n), Re alpha in (-1/2, 1/2] (:func:`flexbooster.floquet.floquet_multipliers`).
+        Cap on the automatic step count, 8..10^7 (:data:`MONODROMY_MAX_STEPS`: alpha to about
+        3e-6 at Omega_bar = 4.4e-4, docs/theory/robustness.md).
 
     Raises
     ------
     flexbooster.floquet.PeriodMapOverflowError
         Where the period map overflows, naming Omega (rad/s) and gamma.
-
-    References
-    ----------
-    Bolotin (1964), sec. 2-3; Lawson (1967); Tech Memo 104, eqs. (4.1-10), (4.1-11).
     """
     Ob, gam, _ = _grid(Omega, gamma, system.omega_1)
     chunk = count("chunk", chunk, 1, 10**6)
@@ -544,18 +503,13 @@ BAND_OMEGA_BAR_MIN = 0.25
 
 
 def band_modes(modes) -> tuple[BandMode, ...]:
-    """The steady modes of a beam-action band by index (ascending frequency; 0 is the rigid
-    pitch for a small thrust, memo 4.1) as :class:`flexbooster.bands.BandMode`.
+    """The steady modes of a band by index (ascending frequency) as
+    :class:`flexbooster.bands.BandMode`: "rigid pitch" (index 0) and "bending m".
 
     Parameters
     ----------
     modes : iterable of int
         Indices of the steady modes.
-
-    Returns
-    -------
-    tuple of BandMode
-        Labels "rigid pitch" (index 0) and "bending m".
     """
     return tuple(BandMode(label="rigid pitch" if int(m) == 0 else f"bending {int(m)}",
                           index=int(m)) for m in modes)
@@ -569,22 +523,17 @@ def _pitch_column(V: np.ndarray) -> int:
 
 def modal_damping(system: BeamActionSystem, *, beam_ratio: float = 0.0,
                   pitch_ratio: float = 0.0) -> np.ndarray | None:
-    """Damping matrix C of q'' + C q' + [Lambda + f(tau) B] q = 0, modal in the steady system.
+    """Damping matrix C = V diag(2 zeta_k omega_k) V^-1 (A0 = V diag(omega_k^2) V^-1), or None
+    when both ratios are 0: each steady mode decays like exp(-zeta_k omega_k tau) (Bolotin
+    1964, sec. 6).
 
     Parameters
     ----------
     system : BeamActionSystem
         The normalised system.
     beam_ratio, pitch_ratio : float
-        Damping ratios of the elastic modes and of the rigid-pitch mode (the one with the
-        largest relative q_B component), 0 <= zeta < 1.
-
-    Returns
-    -------
-    numpy.ndarray or None
-        None when both are 0; else C = V diag(2 zeta_k omega_k) V^-1 with A0 = V diag(omega_k^2)
-        V^-1 (units of omega_1): each steady mode decays like exp(-zeta_k omega_k tau) and keeps
-        its shape (Bolotin 1964, sec. 6).
+        Damping ratios of the elastic modes and of the rigid-pitch mode (largest relative q_B
+        component), 0 <= zeta < 1.
     """
     zb = nonnegative("beam_ratio", beam_ratio)
     zp = nonnegative("pitch_ratio", pitch_ratio)
@@ -606,11 +555,11 @@ def beam_action_bands(system: BeamActionSystem, gamma: float, *, omega_min: floa
                       omega_max: float, beam_ratio: float = 0.0, pitch_ratio: float = 0.0,
                       rtol: float = BAND_RTOL, max_order: int | None = BAND_MAX_ORDER,
                       step_phase: float = 0.12) -> tuple[Band, ...]:
-    """Every instability band of the beam action in [omega_min, omega_max] (rad/s).
+    """Every instability band of the beam action in [omega_min, omega_max] (rad/s), by Omega_lo.
 
     :func:`flexbooster.floquet.instability_regions` of q'' + C q' + [A0 - gamma cos(Omega_bar
-    tau) B] q = 0 (M = I, Omega in units of omega_1), converted to rad/s and 1/s; with damping
-    each band carries its critical gamma (:func:`flexbooster.floquet.critical_amplitude`).
+    tau) B] q = 0 in units of omega_1, converted to rad/s and 1/s; with damping each band
+    carries its critical gamma.
 
     Parameters
     ----------
@@ -625,14 +574,9 @@ def beam_action_bands(system: BeamActionSystem, gamma: float, *, omega_min: floa
     rtol : float
         Edge tolerance relative to each band's centre.
     max_order : int or None
-        Largest resonance order j (None: the toolkit's width estimate decides).
+        Largest resonance order j (None: the toolkit's width estimate).
     step_phase : float
         Monodromy accuracy.
-
-    Returns
-    -------
-    tuple of Band
-        Sorted by Omega_lo (Bolotin 1964, ch. 1-2, sec. 6; Hsu 1963).
     """
     gamma = nonnegative("gamma", gamma)
     if gamma >= 1.0:
@@ -676,14 +620,13 @@ class BeamActionResult:
     Omega, Omega_bar : numpy.ndarray
         Shape (G,), the grid (rad/s) and Omega / omega_1.
     alpha : numpy.ndarray
-        Shape (G, R), alpha_r on the natural branch (Im >= 0; conj is an exponent too).
+        Shape (G, R), alpha_r on the natural branch (Im >= 0).
     frequencies : numpy.ndarray
         Shape (R,), steady omega_r / omega_1 (complex in general).
     stable, growth_rate : numpy.ndarray
-        Shape (G,): every |Im alpha| <= 1e-6, and max |Im alpha| Omega (1/s; 0 where stable), of
-        the undamped system.
+        Shape (G,): every |Im alpha| <= 1e-6, and max |Im alpha| Omega (1/s), undamped.
     max_growth_rate, Omega_at_max : float
-        The largest of the bands' maxima and the grid's (1/s) and where (rad/s); 0 when stable.
+        The largest of the bands' and the grid's maxima (1/s) and where (rad/s); 0 when stable.
     hill_monodromy_difference : float
         Largest difference of Hill's and the monodromy's representatives at the check points.
     verdict : str
@@ -691,7 +634,7 @@ class BeamActionResult:
     gamma, K, N, S, R, p : float, float, int, int, int, float
         Inputs; p = P l^2 / EI.
     bands, gaps : tuple
-        The bands from their boundaries (:func:`pipeline_bands`); what a limit left out.
+        The bands (:func:`pipeline_bands`) and what a limit left out.
     beam_damping_ratio, pitch_damping_ratio : float
         Damping ratios of the band search.
     band_range : (float, float)
@@ -779,9 +722,8 @@ class TongueEdgesError(ValueError):
 def tongue_hill_harmonics(r: int) -> int:
     """Hill harmonics S of the growth rate inside pitch tongue r: max(4, 2 r - 4).
 
-    Tongue r arises at order r in gamma and Hill's truncated determinant resolves it only with
-    enough harmonics: against the rigid-pitch Mathieu tongues, r = 1..4 converge at S = 4,
-    r = 5..9 first at S = 6, 6, 10, 8, 12; the value at the maximum is taken at S + 4.
+    Against the rigid-pitch Mathieu tongues, r = 1..4 converge at S = 4, r = 5..9 first at
+    S = 6, 6, 10, 8, 12; the value at the maximum is taken at S + 4.
 
     Parameters
     ----------
@@ -805,8 +747,7 @@ def pitch_mode(system: BeamActionSystem) -> int:
 
 
 def pitch_guide(system: BeamActionSystem, C: np.ndarray | None) -> tuple[float, float, float]:
-    """(mu_p, b_p, c_p) of the pitch mode alone in the steady modal frame (units of omega_1).
-
+    """(mu_p, b_p, c_p) of the pitch mode alone in the steady modal frame (units of omega_1):
     eta'' + c_p eta' + (mu_p - b_p f(tau)) eta = 0, a damped Mathieu equation.
 
     Parameters
@@ -859,15 +800,13 @@ def _tongue_edges(A, C, B, *, period: str, centre: float, window: tuple[float, f
                   rtol: float, harmonics=None, guess: tuple[float, float] | None = None
                   ) -> tuple[tuple[float, float] | None, int]:
     """Edges of the tongue about ``centre`` from the T / 2T-periodic boundaries (Bolotin 1964,
-    sec. 4-5), the harmonics K = 4, 8, .. raised until two successive K agree to rtol * centre
-    (or, where round-off stops that, to :data:`TONGUE_RTOL_FLOOR` at best).
+    sec. 4-5), harmonics K = 4, 8, .. raised until two successive K agree to rtol * centre (or
+    :data:`TONGUE_RTOL_FLOOR` where round-off stops that).
 
-    In the window, pairs of roots closer than rtol * centre (regions of high-order elastic
-    resonances, narrower than the tolerance) are dropped; the edges are the nearest remaining
-    roots below and above the centre (or to ``guess``, the pitch-only edges), tracked from K
-    to K.  ``harmonics`` = (K,): that truncation as it is.  Returns the edges (None: no tongue)
-    and the smaller K of the two that agree; :class:`TongueEdgesError` when they do not
-    converge with :data:`TONGUE_MAX_HARMONICS`.
+    Root pairs closer than rtol * centre are dropped; the edges are the nearest remaining roots
+    about the centre (or ``guess``), tracked from K to K. ``harmonics`` = (K,): that truncation
+    as it is. Returns the edges (None: no tongue) and the smaller K of the two that agree;
+    :class:`TongueEdgesError` when they do not converge with :data:`TONGUE_MAX_HARMONICS`.
     """
     n = A.shape[0]
     prev = None
@@ -938,14 +877,12 @@ def _growth_max(A, C, B, lo: float, hi: float, S: int = TONGUE_HILL_HARMONICS
 def pitch_tongue_bands(system: BeamActionSystem, gamma: float, *, omega_min: float,
                        omega_max: float, beam_ratio: float = 0.0, pitch_ratio: float = 0.0,
                        rtol: float = BAND_RTOL) -> tuple[Band, ...]:
-    """The rigid-pitch tongues of the coupled beam action in a low Omega range.
+    """The rigid-pitch tongues of the coupled beam action in a low Omega range, by Omega_lo.
 
-    Below omega_1 / 4 (:data:`BAND_OMEGA_BAR_MIN`) the only bands wider than round-off are the
-    tongues of the pitch mode near 2 omega_p / r.  Their edges carry T- (r even) or 2T-periodic
-    (r odd) solutions, by harmonic balance (:func:`flexbooster.floquet.periodic_boundaries`,
-    harmonics raised until the edges converge); the growth rate is Hill's, maximised by golden
-    section; with damping the critical gamma is a bisection on the tongue's existence (Bolotin
-    1964, ch. 1 sec. 3-5, ch. 2 sec. 8).
+    Below omega_1 / 4 the only bands wider than round-off are the pitch tongues near
+    2 omega_p / r: edges by harmonic balance (T- or 2T-periodic, harmonics raised until they
+    converge), growth rate Hill's maximised by golden section, with damping the critical gamma
+    by bisection (Bolotin 1964, ch. 1-2). Bands of kind "simple", modes (p,), order r.
 
     Parameters
     ----------
@@ -955,11 +892,6 @@ def pitch_tongue_bands(system: BeamActionSystem, gamma: float, *, omega_min: flo
         The low range (rad/s): tongues whose tip lies in it, clipped to it.
     rtol : float
         Edge tolerance relative to the tip.
-
-    Returns
-    -------
-    tuple of Band
-        Kind "simple", modes (p,), order r, sorted by Omega_lo.
     """
     gamma, lo, hi = _tongue_arguments(gamma, omega_min, omega_max)
     rtol = positive("rtol", rtol)
@@ -1086,18 +1018,13 @@ def _band_search(model: BoosterModel, system: BeamActionSystem
 
 
 def pipeline_bands(model: BoosterModel) -> tuple[Band, ...]:
-    """The instability bands of :func:`beam_action_analysis`.
+    """The bands of :func:`beam_action_analysis`: :func:`beam_action_bands` over
+    [max(Omega[0], omega_1 / 4), Omega[-1]] and the pitch tongues below, by Omega_lo.
 
     Parameters
     ----------
     model : BoosterModel
         The derived model (Omega range, gamma, damping ratios, beam-action system).
-
-    Returns
-    -------
-    tuple of Band
-        :func:`beam_action_bands` over [max(Omega[0], omega_1 / 4), Omega[-1]] and the
-        rigid-pitch tongues below (:func:`pitch_tongue_bands`), sorted by Omega_lo.
     """
     return _band_search(model, beam_system(model))[0]
 
@@ -1109,7 +1036,10 @@ def _hill_points(n_grid: int, n_hill: int) -> np.ndarray:
 
 
 def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3) -> BeamActionResult:
-    """alpha_r along the Omega grid, the instability bands and the verdict (pipeline stage).
+    """alpha_r along the Omega grid, the bands, what the limits left out and the verdict
+    (pipeline stage; memo 4.1-10..12).
+
+    The monodromy exponents on the natural branch are checked by Hill's at ``n_hill`` points.
 
     Parameters
     ----------
@@ -1117,20 +1047,7 @@ def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3) -> BeamActionR
         The derived model: Omega grid (rad/s), omega_1, mass properties, F0 (N), gamma, K,
         damping ratios, truncation N, S (Hill harmonics), R (exponents reported).
     n_hill : int
-        Grid points (evenly spread, ends included, clipped to the grid) at which Hill's
-        determinant checks the monodromy exponents, >= 1.
-
-    Returns
-    -------
-    BeamActionResult
-        The monodromy exponents on the natural branch, the largest difference of the canonical
-        representatives of Hill's and the monodromy's at the check points, the bands
-        (:func:`pipeline_bands`), what the limits of their search left out (``gaps``) and the
-        verdict from the bands.
-
-    References
-    ----------
-    Tech Memo 104, eqs. (4.1-10)..(4.1-12); Bolotin (1964); Beal (1965).
+        Check points (evenly spread, ends included, clipped to the grid), >= 1.
     """
     system = beam_system(model)
     w1 = float(system.omega_1)
@@ -1198,7 +1115,7 @@ class StabilityChart:
 def stability_chart(system: BeamActionSystem, Omega: np.ndarray, gamma: np.ndarray,
                     step_phase: float = 0.25, coarse_step_phase: float = 2.0,
                     collision_distance: float = 1e-3) -> StabilityChart:
-    """Stability of the beam-action system on an (Omega, gamma) grid (a chart, not a verdict).
+    """Stability on an (Omega, gamma) grid, gamma along axis 0 (a chart, not a verdict).
 
     Parameters
     ----------
@@ -1207,17 +1124,11 @@ def stability_chart(system: BeamActionSystem, Omega: np.ndarray, gamma: np.ndarr
     Omega, gamma : array_like
         Shapes (m,) (rad/s, > 0) and (k,) (0 <= gamma < 1).
     step_phase : float
-        Monodromy accuracy of the points refined (0.25: alpha to ~5e-7 at p = 20, gamma = 0.6).
+        Accuracy of the refined points (0.25: alpha to ~5e-7 at p = 20, gamma = 0.6).
     coarse_step_phase : float
         Accuracy of the first pass over every point (>= step_phase).
     collision_distance : float
-        Points whose multipliers come closer than this (where a region can open), or unstable,
-        are refined.
-
-    Returns
-    -------
-    StabilityChart
-        gamma along axis 0 (Bolotin 1964, ch. 3).
+        Points whose multipliers come closer than this, or unstable, are refined.
     """
     Omega = np.asarray(Omega, dtype=float).ravel()
     gamma = np.asarray(gamma, dtype=float).ravel()

@@ -1,16 +1,9 @@
-"""The data of every figure, computed by the pipeline (compute -> data -> plot).
+"""The data of every figure, computed by the pipeline (compute -> data -> plot): the
+Ince-Strutt chart, the Campbell diagram, the (Omega, gamma) band charts, the beam mode
+shapes and the shells' nodal lines; the grids are named once here.
 
-The presentation layer draws these objects and computes nothing: the Ince-Strutt chart's
-transition curves and operating path, the Campbell diagram's excitation curves, the beam-action
-(Omega, gamma) chart, the beam mode shapes and the shells' nodal lines.  The grids are named
-once here (:data:`INCE_STRUTT_Q_POINTS`, ...), and the report's captions cite them.
-
-References
-----------
-.. [1] Abramowitz & Stegun (1964), 20.2 and fig. 20.1 (Mathieu transition curves).
-.. [2] Tech Memo 104, eqs. (4.2-3)..(4.2-5), (5.3-2d), (5.3-3d), (7.3-1)..(7.3-35), (C-1),
-   (C-6)..(C-9), Fig. 4.
-.. [3] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, ch. 3.
+References: Abramowitz & Stegun, 20.2, fig. 20.1; Tech Memo 104, eqs. (4.2-3)..(4.2-5),
+(5.3-2d), (5.3-3d), (7.3-1)..(7.3-35), (C-1), (C-6)..(C-9), Fig. 4; V. V. Bolotin, 1964, ch. 3.
 """
 
 from __future__ import annotations
@@ -114,7 +107,8 @@ class InceStruttData:
 
 def ince_strutt_data(pitch: PitchResult, *, n_q: int = INCE_STRUTT_Q_POINTS,
                      r_max: int = INCE_STRUTT_ORDERS) -> InceStruttData:
-    """Transition curves over the q range of the operating path, and the path itself.
+    """Transition curves over the q range of the operating path, and the path (A&S 20.2; memo
+    4.2-3..4.2-5).
 
     Parameters
     ----------
@@ -124,11 +118,6 @@ def ince_strutt_data(pitch: PitchResult, *, n_q: int = INCE_STRUTT_Q_POINTS,
         q points, on [0, max(0.1, 1.3 max |q|)], 2..100000.
     r_max : int
         Highest order, 1..50.
-
-    Returns
-    -------
-    InceStruttData
-        A&S 20.2; memo eqs. (4.2-3)..(4.2-5).
     """
     n_q = count("n_q", n_q, 2, 100_000)
     r_max = count("r_max", r_max, 1, 50)
@@ -175,7 +164,8 @@ _CAMPBELL_FAMILIES = (7, 12, 8, 9, 10, 11, 13, 3)
 def campbell_data(*, params: Any, omega_range: tuple[float, float], omega_1: float,
                   shell: ShellFrequencies, table: StabilityTable, R: int, S: int,
                   n_points: int = CAMPBELL_POINTS, s_max: int = CAMPBELL_S_MAX) -> CampbellData:
-    """Excitation curves on a logarithmic Omega grid, with the shell frequencies and roots.
+    """Excitation curves (memo 7.3) on a logarithmic Omega grid, with the shell frequencies and
+    roots.
 
     Parameters
     ----------
@@ -193,11 +183,6 @@ def campbell_data(*, params: Any, omega_range: tuple[float, float], omega_1: flo
         Omega points, 2..100000.
     s_max : int
         Harmonics |s| <= s_max of the (alpha_r + s) curves drawn.
-
-    Returns
-    -------
-    CampbellData
-        Memo eqs. (7.3-1)..(7.3-35).
     """
     n_points = count("n_points", n_points, 2, 100_000)
     s_max = count("s_max", s_max, 0, None)
@@ -237,8 +222,8 @@ class RegionCurves:
 
 @dataclass(frozen=True)
 class BandChart:
-    """Instability regions traced from their boundaries, in physical Omega (rad/s), drawn as
-    shaded regions against the case's gamma.
+    """Instability regions traced from their boundaries, in Omega (rad/s), against the case's
+    gamma.
 
     Attributes
     ----------
@@ -267,7 +252,8 @@ class BandChart:
 
 def pitch_band_chart(model: Any, *, n_gamma: int = PITCH_BAND_CHART_LEVELS,
                      gamma_max: float = BAND_CHART_GAMMA_MAX) -> BandChart:
-    """The pitch tongues in the (Omega, gamma) plane, from the transition curves.
+    """The pitch tongues in the (Omega, gamma) plane: one region per tongue reaching the range at
+    gamma_max, edges of :func:`flexbooster.memo.pitch.pitch_band_edges`.
 
     Parameters
     ----------
@@ -277,12 +263,6 @@ def pitch_band_chart(model: Any, *, n_gamma: int = PITCH_BAND_CHART_LEVELS,
         gamma levels, uniform on [0, gamma_max], 2..1000.
     gamma_max : float
         Largest gamma, 0 < gamma_max < 1.
-
-    Returns
-    -------
-    BandChart
-        One region per tongue reaching the range at gamma_max, with the edges of
-        :func:`flexbooster.memo.pitch.pitch_band_edges` where the band exists.
     """
     n_gamma = count("n_gamma", n_gamma, 2, 1000)
     gamma_max = positive("gamma_max", gamma_max)
@@ -319,7 +299,8 @@ def beam_action_chart(model: Any, *, n_gamma: int = BEAM_ACTION_CHART_LEVELS,
                       rtol: float = BEAM_ACTION_CHART_RTOL,
                       max_order: int | None = BEAM_ACTION_CHART_MAX_ORDER,
                       step_phase: float = BEAM_ACTION_CHART_STEP_PHASE) -> BandChart:
-    """The beam-action instability regions in the (Omega, gamma) plane, from their boundaries.
+    """The beam-action regions in the (Omega, gamma) plane at gamma_max, above max(omega_min,
+    omega_1 / 4), edges in rad/s (Bolotin 1964, ch. 1, sec. 6).
 
     Parameters
     ----------
@@ -331,12 +312,6 @@ def beam_action_chart(model: Any, *, n_gamma: int = BEAM_ACTION_CHART_LEVELS,
         Largest gamma, 0 < gamma_max < 1.
     rtol, max_order, step_phase
         Edge tolerance (narrower regions not drawn), highest order, monodromy accuracy.
-
-    Returns
-    -------
-    BandChart
-        The regions at gamma_max above max(omega_min, omega_1 / 4), as the pipeline's bands,
-        edges in rad/s (Bolotin 1964, ch. 1, sec. 6).
     """
     n_gamma = count("n_gamma", n_gamma, 2, 1000)
     gamma_max = positive("gamma_max", gamma_max)
@@ -412,18 +387,13 @@ def beam_mode_shapes(mass: MassProperties, *, N: int = MODE_SHAPE_COUNT,
 
 
 def nodal_lines(j: int, k: int) -> tuple[np.ndarray, np.ndarray]:
-    """Nodal lines of the radial shape sin(j pi s / 2) cos(k theta) (memo 5.3-2d, 5.3-3d).
+    """Nodal lines of sin(j pi s / 2) cos(k theta) (memo 5.3-2d, 5.3-3d): circles s = 2 i / j,
+    i = 0..j (s in [0, 2]) and generators theta = (2 i + 1) pi / (2 k) (rad; none for k = 0).
 
     Parameters
     ----------
     j, k : int
         Axial (>= 1) and circumferential (>= 0) indices.
-
-    Returns
-    -------
-    s, theta : numpy.ndarray
-        Nodal circles s = 2 i / j, i = 0..j (s in [0, 2] from the aft edge) and generators
-        theta = (2 i + 1) pi / (2 k) (rad; none for k = 0).
     """
     j = count("j", j, 1, None)
     k = count("k", k, 0, None)

@@ -1,26 +1,13 @@
 """Geometry and mass properties of the two-cylinder composite (memo section 2.2, Fig. 1-2).
 
-Coordinates (reading guide section 2; the memo's figures are lost): cylinder 1 (radius R1,
-half-length L1) is aft and carries the thrust on its aft edge; cylinder 2 (R2, L2) is forward.
-``x`` runs from the aft edge (x = 0) to the nose (x = 2 L).  Both shells have thickness h and
-density rho; the bulkheads are rigid and weightless, so the mass is that of the two shells.
+Cylinder 1 (R1, L1) is aft and carries the thrust, cylinder 2 (R2, L2) forward; x runs from
+the aft edge (0) to the nose (2 L); thickness h, density rho, weightless rigid bulkheads.
+From the CM: d2 = x_cm (aft edge), d1 = 2 L1 - x_cm (junction, signed), d3 = 2 L - x_cm
+(nose), d4 = L - x_cm; xi_bar = (x - x_cm) / L runs from a = -d2/L through c = d1/L to
+b = d3/L (reading guide section 2).
 
-Distances from the centre of mass (CM), as in Fig. 1:
-
-* d2 = x_cm            (CM to the aft edge),
-* d1 = 2 L1 - x_cm     (CM to the junction; negative when the CM lies in cylinder 2),
-* d3 = 2 L - x_cm      (CM to the nose),
-* d4 = L - x_cm        (geometric centre minus CM),
-
-and the dimensionless axial coordinate xi_bar = (x - x_cm) / L runs from a = -d2/L (aft edge)
-through c = d1/L (junction) to b = d3/L (nose).
-
-References
-----------
-.. [1] Tech Memo 104, "Dynamic stability of a flexible booster subjected to a gimbaled,
-   periodically-varying end thrust", sections 2.2 and 4.2, Fig. 1-2.
-.. [2] W. Weaver, S. P. Timoshenko, D. H. Young, *Vibration Problems in Engineering*, 5th ed.,
-   Wiley, 1990, appendix (moments of inertia of a thin cylindrical tube).
+References: Tech Memo 104, sec. 2.2 and 4.2, Fig. 1-2; W. Weaver, S. P. Timoshenko,
+D. H. Young, *Vibration Problems in Engineering*, 1990, appendix (thin tube inertia).
 """
 
 from __future__ import annotations
@@ -51,17 +38,16 @@ class MassProperties:
     x_cm : float
         Position of the centre of mass from the aft edge (m).
     d1, d2, d3, d4 : float
-        Distances of Fig. 1 (m): CM to junction (signed), CM to aft edge, CM to nose,
-        geometric centre minus CM.
+        Distances of Fig. 1 (m): CM to junction (signed), to aft edge, to nose, geometric centre
+        minus CM.
     a, c, b : float
-        Dimensionless coordinates of the aft edge, the junction and the nose,
-        xi_bar = (x - x_cm) / L.
+        xi_bar of the aft edge, the junction and the nose.
     m1, m2, mass : float
         Shell masses of cylinder 1 and 2 and the total (kg).
     I_cm : float
         Pitch moment of inertia about the CM, thin-shell formula (kg m^2), erratum E1.
     cm_cylinder : int
-        The cylinder (1 or 2) that holds the CM; 1 if it lies exactly on the junction.
+        The cylinder (1 or 2) that holds the CM; 1 on the junction.
     """
 
     L: float
@@ -87,40 +73,21 @@ class MassProperties:
 def mass_properties(
     R1: float, L1: float, R2: float, L2: float, h: float, rho: float
 ) -> MassProperties:
-    """Mass properties of two joined thin cylindrical shells.
+    """Mass properties of two joined thin cylindrical shells (memo 2.2-3, 4.2-2b, Fig. 1).
+
+    m_d = 2 pi rho h R_d (2 L_d); I_cm = sum_d m_d (R_d^2/2 + L_d^2/3 + e_d^2), e_1 = d2 - L1,
+    e_2 = d3 - L2 (erratum E1: the tube's own inertia plus the parallel-axis term).
 
     Parameters
     ----------
     R1, R2 : float
-        Mid-surface radii of cylinder 1 (aft) and cylinder 2 (forward) (m).
+        Mid-surface radii of cylinder 1 (aft) and 2 (forward) (m).
     L1, L2 : float
-        Half-lengths of cylinder 1 and 2 (m).  ``L2 = 0`` gives the single cylinder.
+        Half-lengths of cylinder 1 and 2 (m); ``L2 = 0`` gives the single cylinder.
     h : float
-        Shell thickness, the same for both cylinders (m).
+        Shell thickness (m).
     rho : float
-        Mass density of the shell material (kg/m^3).
-
-    Returns
-    -------
-    MassProperties
-        Masses, CM position, the distances d1..d4 and coordinates a, c, b of Fig. 1-2, and
-        I_cm.
-
-    Notes
-    -----
-    Shell masses m_d = 2 pi rho h R_d (2 L_d).  The moment of inertia about a transverse axis
-    through the CM is (erratum E1 of memo eqs. 2.2-3 and 4.2-2b)
-
-    .. math:: I_{cm} = \\sum_d m_d \\left[\\frac{R_d^2}{2} + \\frac{L_d^2}{3} + e_d^2\\right],
-              \\quad e_1 = d_2 - L_1,\\ e_2 = d_3 - L_2,
-
-    the thin tube's own inertia m (R^2/2 + (2L_d)^2/12) plus the parallel-axis term; e_d is
-    the distance from the CM to the centre of cylinder d, so the formula holds whichever
-    cylinder holds the CM.
-
-    References
-    ----------
-    Tech Memo 104, eqs. (2.2-3), (4.2-2b) and Fig. 1; reading guide, erratum E1.
+        Mass density (kg/m^3).
     """
     R1, L1, h, rho = (positive(n, v) for n, v in (("R1", R1), ("L1", L1), ("h", h),
                                                    ("rho", rho)))
@@ -164,7 +131,9 @@ def mass_properties(
 def moment_of_inertia_memo(
     R1: float, L1: float, R2: float, L2: float, h: float, rho: float, form: str = "2.2-3"
 ) -> float:
-    """I_cm as printed in the memo (kept reachable for comparison; erratum E1).
+    """I_cm as printed in the memo (kg m^2), kept for comparison (erratum E1, docs/memo-errata.md):
+    2 pi rho h {R1 [2L1 (R1^2/4 + L1^2/k) + (d2 - L1)^3] + R2 [2L2 (R2^2/4 + L2^2/k) +
+    (d3 - L2)^3]}, not the shells' moment of inertia.
 
     Parameters
     ----------
@@ -177,20 +146,7 @@ def moment_of_inertia_memo(
     rho : float
         Density (kg/m^3).
     form : {"2.2-3", "4.2-2b"}
-        Which printed form: eq. (2.2-3) has L_d^2/3, eq. (4.2-2b) has L_d^2/4.
-
-    Returns
-    -------
-    float
-        The printed expression evaluated as written, 2 pi rho h {R1 [2L1 (R1^2/4 + L1^2/k)
-        + (d2 - L1)^3] + R2 [2L2 (R2^2/4 + L2^2/k) + (d3 - L2)^3]}.  It is not the moment of
-        inertia of the shells: R^2/4 is a solid disc's term (a thin tube has R^2/2), the two
-        printings disagree on L_d^2/3 vs L_d^2/4, and the parallel-axis term R_d e_d^3 is
-        not m_d e_d^2 (it even changes sign with e_d); see docs/memo-errata.md, E1.
-
-    References
-    ----------
-    Tech Memo 104, eqs. (2.2-3) and (4.2-2b).
+        Which printed form: eq. (2.2-3) has L_d^2/3, eq. (4.2-2b) L_d^2/4.
     """
     divisor = {"2.2-3": 3.0, "4.2-2b": 4.0}[choice("form", form, ("2.2-3", "4.2-2b"))]
     p = mass_properties(R1, L1, R2, L2, h, rho)
@@ -213,14 +169,13 @@ class DimensionlessGroups:
     Attributes
     ----------
     mu : float
-        mu = rho L^2 omega_1^2 / E (notation list; eq. 3.0-4a as printed lacks a power of L,
-        erratum E3).
+        rho L^2 omega_1^2 / E (notation list; erratum E3 of 3.0-4a).
     lambda1, lambda2 : float
-        lambda_d = L / R_d (eq. 3.0-1), one per cylinder.
+        lambda_d = L / R_d (eq. 3.0-1).
     sigma : float
-        sigma = h / L (eq. 3.0-1).
+        h / L (eq. 3.0-1).
     T0_bar : float
-        T0_bar = T0 / (rho h L^2 omega_1^2) (eq. 3.0-4b).
+        T0 / (rho h L^2 omega_1^2) (eq. 3.0-4b).
     """
 
     mu: float
@@ -237,7 +192,7 @@ class DimensionlessGroups:
 def dimensionless_groups(
     L: float, R1: float, R2: float, h: float, E: float, rho: float, omega_1: float, T0: float
 ) -> DimensionlessGroups:
-    """The dimensionless groups mu, lambda_d, sigma, T0_bar of memo section 3.0.
+    """The dimensionless groups mu, lambda_d, sigma, T0_bar (memo 3.0-1, 3.0-4, erratum E3).
 
     Parameters
     ----------
@@ -247,22 +202,12 @@ def dimensionless_groups(
         Radii of cylinder 1 and 2 (m).
     h : float
         Shell thickness (m).
-    E : float
-        Young's modulus (Pa).
-    rho : float
-        Density (kg/m^3).
+    E, rho : float
+        Young's modulus (Pa) and density (kg/m^3).
     omega_1 : float
         First free-free bending frequency, eq. (4.2-8b) (rad/s).
     T0 : float
         Steady thrust per unit circumference of the aft edge (N/m).
-
-    Returns
-    -------
-    DimensionlessGroups
-
-    References
-    ----------
-    Tech Memo 104, eqs. (3.0-1), (3.0-4) and the notation list; reading guide, erratum E3.
     """
     for name, value in (("L", L), ("R1", R1), ("R2", R2), ("h", h), ("E", E), ("rho", rho),
                         ("omega_1", omega_1)):

@@ -1,19 +1,9 @@
 """The derived model of a booster: every quantity the memo's stages share, computed once.
 
-:func:`booster_model` takes the case's SI numbers (keyword-only) and returns a frozen
-:class:`BoosterModel`: mass properties (memo 2.2), omega_1 (4.2-8b), omega_psi (4.2-1), the
-dimensionless groups (3.0) and shell parameters, T0_bar (3.0-4b), the thrust, the truncation
-and the Omega grid.  Every stage of the pipeline (pitch, shell, beam action, stability,
-responses) takes this object or the arrays it holds; nothing recomputes omega_1.  Inside the
-solvers frequencies are in units of omega_1 (``Omega_bar``); rad/s appear only at the edges.
-
-:func:`flexbooster.model.model_from_case` builds it from a validated
-:class:`flexbooster.case.Case`.
-
-References
-----------
-.. [1] Tech Memo 104, eqs. (2.2-3), (3.0-1), (3.0-4) (erratum E3), (4.2-1) (erratum E2),
-   (4.2-8b), (5.3-4a).
+:func:`booster_model` turns the case's SI numbers into a frozen :class:`BoosterModel`: mass
+properties (2.2), omega_1 (4.2-8b), omega_psi (4.2-1, E2), the dimensionless groups and shell
+parameters (3.0, E3), the strain scale (5.3-4a), the thrust, truncation and Omega grid.
+Inside the solvers frequencies are in units of omega_1; rad/s only at the edges.
 """
 
 from __future__ import annotations
@@ -65,45 +55,29 @@ class BoosterModel:
     ----------
     R1, L1, R2, L2 : float
         Radii and half-lengths of cylinder 1 (aft) and 2 (forward) (m).
-    h : float
-        Shell thickness (m).
-    E : float
-        Young's modulus (Pa).
-    nu : float
-        Poisson's ratio (dimensionless).
-    rho : float
-        Density (kg/m^3).
-    F0 : float
-        Total steady thrust (N).
-    T0 : float
-        Steady thrust per unit circumference of the aft edge, F0 / (2 pi R1) (N/m).
-    gamma : float
-        Pulsation amplitude of T(t) = T0 (1 - gamma cos Omega t) (dimensionless).
-    K : float
-        Gimbal gain (dimensionless).
+    h, E, nu, rho : float
+        Shell thickness (m), Young's modulus (Pa), Poisson's ratio, density (kg/m^3).
+    F0, T0 : float
+        Total steady thrust (N) and per unit circumference of the aft edge, F0 / (2 pi R1) (N/m).
+    gamma, K : float
+        Pulsation amplitude of T0 (1 - gamma cos Omega t) and gimbal gain.
     Omega : numpy.ndarray
         The case's uniform grid of thrust frequencies (rad/s).
     truncation : Truncation
         Mode counts.
     mass : MassProperties
-        Geometry and mass properties (memo 2.2, Fig. 1-2).
-    omega_1 : float
-        First free-free bending frequency of the equivalent beam, eq. (4.2-8b) (rad/s).
-    omega_psi : float
-        Rigid-body pitch frequency sqrt(F0 d2 K / I_cm), eq. (4.2-1) (rad/s).
+        Geometry and mass properties (memo 2.2).
+    omega_1, omega_psi : float
+        First bending frequency (4.2-8b) and rigid pitch frequency sqrt(F0 d2 K / I_cm)
+        (4.2-1) (rad/s).
     groups : DimensionlessGroups
         mu, lambda_d, sigma, T0_bar (memo 3.0).
     shell : ShellParameters
         Dimensionless shell parameters (3.0-1, 3.0-4).
     strain : float
-        (1 - nu^2) T0 / (E h), the scale of the membrane strain u* of eq. (5.3-4a)
-        (dimensionless).
-    beam_damping_ratio : float
-        Modal damping ratio of the elastic beam modes in the beam-action band search
-        (dimensionless), 0 <= zeta < 1.
-    pitch_damping_ratio : float
-        Damping ratio of the rigid-body pitch, psi'' + 2 zeta omega_psi psi' + ...
-        (dimensionless), 0 <= zeta < 1.
+        (1 - nu^2) T0 / (E h), the scale of the membrane strain u* (5.3-4a).
+    beam_damping_ratio, pitch_damping_ratio : float
+        Modal damping ratios of the elastic beam modes and of the rigid pitch, in [0, 1).
     """
 
     R1: float
@@ -168,44 +142,26 @@ def booster_model(
     beam_damping_ratio: float = 0.0,
     pitch_damping_ratio: float = 0.0,
 ) -> BoosterModel:
-    """Build the derived model of a booster (memo 2.2, 3.0, 4.2).
+    """Build the derived model of a booster (memo 2.2-3, 3.0-1, 3.0-4b, 4.2-1, 4.2-8b, 5.3-4a).
 
     Parameters
     ----------
-    R1, L1 : float
-        Radius and half-length of the aft cylinder (m), > 0.
-    R2, L2 : float
-        Radius and half-length of the forward cylinder (m), > 0.
+    R1, L1, R2, L2 : float
+        Radius and half-length of the aft and forward cylinders (m), > 0.
     h : float
         Shell thickness (m), 0 < h < min(R1, R2).
-    E : float
-        Young's modulus (Pa), > 0.
-    nu : float
-        Poisson's ratio (dimensionless), 0 <= nu < 0.5.
-    rho : float
-        Density (kg/m^3), > 0.
+    E, nu, rho : float
+        Young's modulus (Pa) > 0, Poisson's ratio in [0, 0.5), density (kg/m^3) > 0.
     F0 : float
         Total steady thrust (N), > 0.
-    gamma : float
-        Pulsation amplitude (dimensionless), 0 <= gamma < 1.
-    K : float
-        Gimbal gain (dimensionless), >= 0.
+    gamma, K : float
+        Pulsation amplitude in [0, 1) and gimbal gain >= 0.
     Omega : array_like
         Thrust frequencies of the grid (rad/s), 1-D, > 0, increasing.
     truncation : Truncation
         Mode counts.
-    beam_damping_ratio : float
-        Modal damping ratio of the elastic beam modes (dimensionless), 0 <= zeta < 1.
-    pitch_damping_ratio : float
-        Damping ratio of the rigid-body pitch (dimensionless), 0 <= zeta < 1.
-
-    Returns
-    -------
-    BoosterModel
-
-    References
-    ----------
-    Tech Memo 104, eqs. (2.2-3), (3.0-1), (3.0-4b), (4.2-1), (4.2-8b), (5.3-4a).
+    beam_damping_ratio, pitch_damping_ratio : float
+        Damping ratios of the elastic beam modes and of the rigid pitch, in [0, 1).
     """
     F0 = positive("F0", F0)
     gamma = nonnegative("gamma", gamma)

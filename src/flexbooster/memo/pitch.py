@@ -1,24 +1,12 @@
 """Rigid-body pitch of the booster under the gimbaled pulsating thrust (memo section 4.2).
 
-For small psi, eq. (4.2-1) with the lever arm d2 (erratum E2) is
+psi'' + (2 pi R1 d2 K T(t) / I_cm) psi = 0 (4.2-1, lever arm d2, erratum E2) is, with
+tau_1 = Omega t / 2, Mathieu's equation (4.2-3) with a = 4 omega_psi^2 / Omega^2,
+q = gamma a / 2 (4.2-4). beta and the tongues from :mod:`flexbooster.floquet.mathieu`;
+:func:`memo_exponent` is the memo's small-q formula (4.2-9). Theory: docs/theory/beam-pitch.md.
 
-    psi'' + (2 pi R1 d2 K T(t) / I_cm) psi = 0,  T(t) = T0 (1 - gamma cos Omega t),
-
-and with tau_1 = Omega t / 2 it becomes the Mathieu equation (4.2-3)
-psi'' + (a - 2 q cos 2 tau_1) psi = 0 with (4.2-4)
-
-    a = 8 pi R1 d2 K T0 / (I_cm Omega^2) = 4 omega_psi^2 / Omega^2,   q = gamma a / 2,
-
-omega_psi = sqrt(2 pi R1 d2 K T0 / I_cm) the rigid-body pitch frequency under the steady
-thrust.  The characteristic exponent beta (psi grows like e^(Im beta Omega t / 2)) and the
-tongues come from :mod:`flexbooster.floquet.mathieu`; :func:`memo_exponent` is the memo's
-small-q formula (4.2-9).
-
-References
-----------
-.. [1] Tech Memo 104, eqs. (2.2-2c), (4.2-1)..(4.2-9).
-.. [2] M. Abramowitz, I. A. Stegun, *Handbook of Mathematical Functions*, NBS, 1964, ch. 20.
-.. [3] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, sec. 6.
+References: Tech Memo 104, eqs. (2.2-2c), (4.2-1)..(4.2-9); Abramowitz & Stegun, ch. 20;
+V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, 1964, sec. 6.
 """
 
 from __future__ import annotations
@@ -39,22 +27,19 @@ __all__ = ["pitch_frequency", "mathieu_parameters", "memo_exponent", "psi_three_
 
 
 def pitch_frequency(F0: float, d2: float, K: float, I_cm: float) -> float:
-    """Rigid-body pitch frequency omega_psi = sqrt(F0 d2 K / I_cm) (rad/s), steady thrust.
+    """Rigid-body pitch frequency omega_psi = sqrt(F0 d2 K / I_cm) (rad/s) under the steady thrust
+    (4.2-1 linearised, E2).
 
     Parameters
     ----------
     F0 : float
         Total steady thrust 2 pi R1 T0 (N), >= 0.
     d2 : float
-        Lever arm, CM to the aft edge (m), > 0 (erratum E2).
+        Lever arm, CM to the aft edge (m), > 0.
     K : float
-        Gimbal gain (dimensionless), >= 0; omega_psi = 0 when K = 0.
+        Gimbal gain, >= 0.
     I_cm : float
         Pitch moment of inertia about the CM (kg m^2), > 0.
-
-    References
-    ----------
-    Tech Memo 104, eq. (4.2-1) linearised, with erratum E2.
     """
     F0, K = nonnegative("F0", F0), nonnegative("K", K)
     d2, I_cm = positive("d2", d2), positive("I_cm", I_cm)
@@ -86,10 +71,8 @@ def mathieu_parameters(
 
 
 def memo_exponent(a: Any, q: Any, *, printed: bool = False) -> np.ndarray:
-    """beta from the memo's small-q formula (4.2-9), corrected per erratum E4.
-
-    cos(pi beta) = cos(pi sqrt a) + pi q^2 / (4 sqrt(a) (a - 1)) sin(pi sqrt a), valid for small q
-    away from a = 1 (memo range 0 < a < 1, 0 < q <= 0.05, eq. 4.2-5; A&S 20.3.15).
+    """beta on the band r = floor(sqrt a) from the memo's small-q formula (4.2-9) with erratum E4:
+    cos(pi beta) = cos(pi sqrt a) + pi q^2 / (4 sqrt(a) (a - 1)) sin(pi sqrt a) (A&S 20.3.15).
 
     Parameters
     ----------
@@ -97,11 +80,6 @@ def memo_exponent(a: Any, q: Any, *, printed: bool = False) -> np.ndarray:
         Mathieu parameters, broadcast together; every a > 0, a != 1.
     printed : bool
         The formula as printed, with sin(pi sqrt(a) / 2) (an O(q^2) error).
-
-    Returns
-    -------
-    numpy.ndarray of complex
-        beta on the q -> 0 band r = floor(sqrt a).
     """
     a, q = np.broadcast_arrays(np.asarray(a, dtype=float), np.asarray(q, dtype=float))
     if not (np.all(np.isfinite(a)) and np.all(np.isfinite(q))):
@@ -137,24 +115,19 @@ def _scalar_aq(a: Any, q: Any) -> tuple[float, float]:
 def psi_three_term(
     tau1: Any, a: float, q: float, psi0: float = 1.0, beta: float | None = None
 ) -> np.ndarray:
-    """The memo's three-term solution psi = sum_(i=1..3) A_i cos(Omega_i tau) (4.2-6..8).
+    """The memo's three-term solution psi = sum_(i=1..3) A_i cos(Omega_i tau) (rad) (4.2-6..8).
 
     Parameters
     ----------
     tau1 : array_like
-        Mathieu time tau_1 = Omega t / 2; Omega_i tau = (2 - beta) tau_1, beta tau_1,
-        (2 + beta) tau_1 (4.2-7e..g).
+        Mathieu time tau_1 = Omega t / 2; Omega_i tau = (2 - beta), beta, (2 + beta) times
+        tau_1 (4.2-7e..g).
     a, q : float
         Mathieu parameters in a stable band.
     psi0 : float
         psi(0) (rad); psi'(0) = 0 (4.2-8a).
     beta : float, optional
         The real exponent to use (default the exact one).
-
-    Returns
-    -------
-    numpy.ndarray
-        psi (rad), shaped like ``tau1``.
     """
     a, q = _scalar_aq(a, q)
     if beta is None:
@@ -183,21 +156,17 @@ def psi_three_term(
 
 
 def psi_numerical(tau1: Any, a: Any, q: Any, psi0: float = 1.0) -> np.ndarray:
-    """psi(tau_1) of eq. (4.2-3) by direct integration (solve_ivp DOP853, rtol 1e-12).
+    """psi(tau_1) (rad) of eq. (4.2-3) by solve_ivp DOP853, rtol 1e-12, shape (len(a), len(tau1))
+    or (len(tau1),) for scalars.
 
     Parameters
     ----------
     tau1 : array_like
         Increasing times tau_1 >= 0, 1-D.
     a, q : array_like
-        Scalars or equal-length 1-D arrays: one solution per pair, integrated together.
+        Scalars or equal-length 1-D arrays: one solution per pair.
     psi0 : float
         psi(0) (rad), non-zero; psi'(0) = 0.
-
-    Returns
-    -------
-    numpy.ndarray
-        psi (rad), shape (len(a), len(tau1)), or (len(tau1),) for scalars.
     """
     scalar = np.ndim(a) == 0 and np.ndim(q) == 0
     if not (np.all(np.isfinite(np.asarray(a, dtype=float)))
@@ -240,7 +209,8 @@ def psi_numerical(tau1: Any, a: Any, q: Any, psi0: float = 1.0) -> np.ndarray:
 def three_term_error(
     a: float, q: Any, tau1_max: float = 20.0 * np.pi, n_times: int = 2001
 ) -> np.ndarray:
-    """Error of the memo's three-term psi against direct integration, per q.
+    """max |psi_3 - psi| / |psi0| over [0, tau1_max] per q, with the exact beta: the O(q^2)
+    truncation error of (4.2-6).
 
     Parameters
     ----------
@@ -252,12 +222,6 @@ def three_term_error(
         Length of the comparison in tau_1, > 0.
     n_times : int
         Comparison times.
-
-    Returns
-    -------
-    numpy.ndarray
-        max |psi_3 - psi| / |psi0| over [0, tau1_max] with the exact beta: the O(q^2)
-        truncation error of (4.2-6).
     """
     q = np.atleast_1d(np.asarray(q, dtype=float))
     if not (np.isfinite(tau1_max) and tau1_max > 0):
@@ -294,11 +258,9 @@ def _check(omega_psi: float, gamma: float, damping_ratio: float) -> float:
 
 def pitch_tongue_omega_bound(omega_psi: float, gamma: float, *, tongue: int,
                              damping_ratio: float = 0.0) -> float:
-    """An upper bound (rad/s) on the thrust frequencies of Mathieu tongue r, without a solve.
-
-    |a_r(q) - r^2| and |b_r(q) - r^2| are at most 2|q| (Weyl's inequality for the perturbation
-    2 q cos 2 tau of norm 2|q|; Kato 1966, V.4.3): on the path q = g x / 2 the tongue starts at
-    x_b >= r^2 / (1 + g); the damped band lies inside, every higher tongue below.
+    """Upper bound (rad/s) on the thrust frequencies of Mathieu tongue r, without a solve:
+    2 omega_psi sqrt((1 - zeta^2)(1 + g)) / r, g = gamma / (1 - zeta^2), since |a_r - r^2|,
+    |b_r - r^2| <= 2|q| (Weyl; Kato 1966, V.4.3).
 
     Parameters
     ----------
@@ -308,11 +270,6 @@ def pitch_tongue_omega_bound(omega_psi: float, gamma: float, *, tongue: int,
         Pulsation amplitude and pitch damping ratio zeta, in [0, 1).
     tongue : int
         Order r >= 1.
-
-    Returns
-    -------
-    float
-        2 omega_psi sqrt((1 - zeta^2)(1 + g)) / r, g = gamma / (1 - zeta^2).
     """
     _check(omega_psi, gamma, damping_ratio)
     tongue = count("tongue", tongue, 1, None)
@@ -322,7 +279,8 @@ def pitch_tongue_omega_bound(omega_psi: float, gamma: float, *, tongue: int,
 
 def pitch_band_edges(omega_psi: float, gamma: float, *, tongue: int,
                      damping_ratio: float = 0.0) -> tuple[float, float] | None:
-    """Edges (omega_lo, omega_hi) (rad/s) of Mathieu tongue r on the operating path.
+    """Edges (omega_lo, omega_hi) (rad/s) of Mathieu tongue r on the operating path, as
+    :func:`pitch_bands`, not clipped; None where the band does not exist or is below round-off.
 
     Parameters
     ----------
@@ -332,13 +290,6 @@ def pitch_band_edges(omega_psi: float, gamma: float, *, tongue: int,
         Pulsation amplitude and pitch damping ratio zeta, in [0, 1).
     tongue : int
         Order r, 1..PITCH_MAX_TONGUE.
-
-    Returns
-    -------
-    (float, float) or None
-        As :func:`pitch_bands`, not clipped; (Omega_r, Omega_r), Omega_r = 2 omega_psi
-        sqrt(1 - zeta^2) / r, at gamma = 0 undamped; None where the band does not exist or is
-        below round-off.
     """
     _check(positive("omega_psi", omega_psi), gamma, damping_ratio)
     r, zeta = count("tongue", tongue, 1, PITCH_MAX_TONGUE), float(damping_ratio)
@@ -360,14 +311,12 @@ def pitch_band_edges(omega_psi: float, gamma: float, *, tongue: int,
 
 def pitch_bands(omega_psi: float, gamma: float, *, omega_min: float, omega_max: float,
                 damping_ratio: float = 0.0) -> tuple[Band, ...]:
-    """Every instability band of the rigid-body pitch in [omega_min, omega_max], exactly.
+    """Every instability band of the rigid-body pitch in [omega_min, omega_max], sorted by Omega.
 
-    Without damping the edges are where the path a(Omega) = 4 omega_psi^2 / Omega^2, q = gamma a
-    / 2 crosses a_r(q) and b_r(q) (:func:`flexbooster.floquet.tongue_edges`); with damping the
-    roots of Im beta = zeta sqrt(a) inside the tongue of the path a' = a (1 - zeta^2)
-    (:func:`flexbooster.floquet.damped_tongue`).  The growth rate (Im beta - zeta sqrt(a))
-    Omega / 2 is maximised in each band.  Tongues below round-off are not reported, nor tongues
-    r > :data:`PITCH_MAX_TONGUE` (:attr:`PitchResult.gaps`).
+    Undamped: where the path a = 4 omega_psi^2 / Omega^2, q = gamma a / 2 crosses a_r(q), b_r(q);
+    damped: Im beta = zeta sqrt(a) on the path a' = a (1 - zeta^2). Growth rate (Im beta -
+    zeta sqrt(a)) Omega / 2, maximised per band. Not reported: tongues below round-off and
+    r > :data:`PITCH_MAX_TONGUE` (:attr:`PitchResult.gaps`). Memo 4.2-3, 4.2-4; Bolotin, sec. 6.
 
     Parameters
     ----------
@@ -380,11 +329,6 @@ def pitch_bands(omega_psi: float, gamma: float, *, omega_min: float, omega_max: 
     damping_ratio : float
         zeta of psi'' + 2 zeta omega_psi psi' + omega_psi^2 (1 - gamma cos Omega t) psi = 0,
         0 <= zeta < 1.
-
-    Returns
-    -------
-    tuple of Band
-        Sorted by Omega (memo 4.2-3, 4.2-4; A&S 20.2; Bolotin 1964, sec. 6).
     """
     return _pitch_search(omega_psi, gamma, omega_min, omega_max, damping_ratio)[0]
 
@@ -475,8 +419,7 @@ class PitchResult:
     verdict : str
         One line, from the bands ("not fully searched: ..." with a gap and no band).
     bands, gaps : tuple
-        The exact bands over the grid's range (:func:`pitch_bands`); what PITCH_MAX_TONGUE left
-        out.
+        The exact bands over the grid's range; what PITCH_MAX_TONGUE left out.
     """
 
     Omega: np.ndarray
@@ -542,7 +485,9 @@ class PitchResult:
 
 def pitch_analysis(Omega: Any, omega_psi: float, gamma: float, *,
                    damping_ratio: float = 0.0) -> PitchResult:
-    """Rigid-body pitch stability over a grid of thrust frequencies, with its exact bands.
+    """Rigid-body pitch stability over a grid of thrust frequencies, with its exact bands (memo
+    4.2-3..4.2-5, 4.2-9). With damping beta is that of a' = a (1 - zeta^2) and the growth
+    (Im beta - zeta sqrt a) Omega / 2.
 
     Parameters
     ----------
@@ -554,13 +499,6 @@ def pitch_analysis(Omega: Any, omega_psi: float, gamma: float, *,
         Pulsation amplitude, 0 <= gamma < 1.
     damping_ratio : float
         Pitch damping ratio zeta, 0 <= zeta < 1.
-
-    Returns
-    -------
-    PitchResult
-        a, q (4.2-4), exact and memo beta, growth rates on the grid (with damping: beta of
-        a' = a (1 - zeta^2), growth (Im beta - zeta sqrt a) Omega / 2), the exact bands over the
-        grid's range, their gaps and the verdict (memo 4.2-3..4.2-5, 4.2-9; Bolotin 1964 sec. 6).
     """
     Omega = np.atleast_1d(np.asarray(Omega, dtype=float))
     if Omega.ndim != 1:

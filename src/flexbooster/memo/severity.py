@@ -1,42 +1,15 @@
 """Severity of the unstable thrust frequencies: secular growth rate of every root (memo 7.1).
 
-At a root of the stability table (:mod:`flexbooster.memo.stability`) one harmonic of the
-forcing of a shell mode has the mode's own frequency.  The normal coordinate y of that mode
-(branch m of the modal system 6.1-2..4) obeys
+At a root one forcing harmonic of a shell mode has the mode's frequency, so its normal
+coordinate grows like (|G| / (2 omega)) tau sin(omega tau + phi), G the sum of the resonant
+harmonics g_h (6.2). The severity is that rate at the shell surface, |G| / (2 omega) L omega_1
+max_c |Phi_c| (m/s), with the forcing of the thrust (4.2-1a, 5.3-4a), the pitch motion
+(4.2-6, 4.2-7) and the beam Floquet solution (4.1-10..12, Fourier vectors by a matrix
+continued fraction). The roots then merge into bands. Theory: docs/theory/severity.md.
 
-    y'' + omega^2 y = Re sum_h g_h e^{i nu_h tau},                                  (6.2-*)
-
-and a harmonic with |nu_h| = omega makes y grow like tau (memo 7.1: the vanishing denominator of
-the closed-form response):
-
-    y ~ (|G| / (2 omega)) tau sin(omega tau + phi),   G = sum_{nu_h = omega} g_h
-                                                          + conj(sum_{nu_h = -omega} g_h).
-
-The *severity* of the root is that growth rate expressed at the shell surface in metres per
-second: |G| / (2 omega) L omega_1 max_c |Phi_c|, where Phi is the mode's eigenvector (x = Phi y,
-x = (U, V, W) in units of L, 5.2-1; the shape functions have unit maximum) and tau = omega_1 t.
-The forcing g_h is computed for every root at once from the harmonics of the free motions that
-drive the shells (:mod:`flexbooster.memo.responses`):
-
-* the thrust T = 1 - gamma cos(Omega_bar tau) (4.2-1a) through u* (5.3-4a): family 3;
-* psi = sum_i A_i cos(Omega_i tau) (4.2-6, 4.2-7) for the case's psi0: psi'' (families 1, 7),
-  K T psi (7, 8, 9), psi'^2 (4, 5, 6, 10, 11, 12);
-* the beam Floquet solution q = sum_s C^(s) e^{i (alpha_r + s) Omega_bar tau} (4.1-10..12) of
-  Euclidean norm ``beam_amplitude``: families 2 and 13.  Its Fourier vectors are computed at the
-  root's own exponent by a matrix continued fraction of Hill's block-tridiagonal recursion
-  (batched n x n solves instead of one 2n(2S+1) eigenproblem per root).
-
-The modal forcing per unit basis function comes from the quadrature of the definitions
-(:func:`flexbooster.memo.responses.modal.modal_groups`).  The roots then merge into *bands*
-(:func:`resonance_bands`).  See ``docs/theory/severity.md``.
-
-References
-----------
-.. [1] Tech Memo 104, sections 4.1, 4.2, 5.3, 5.4, 6.1, 6.2, 7.1, 7.3.
-.. [2] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, ch. 1
-   (secular terms at resonance).
-.. [3] H. Risken, *The Fokker-Planck Equation*, 2nd ed., Springer, 1989, sec. 9.3 (matrix
-   continued fractions for block-tridiagonal recursions).
+References: Tech Memo 104, sec. 4.1, 4.2, 5.3, 5.4, 6.1, 6.2, 7.1, 7.3; V. V. Bolotin, *The
+Dynamic Stability of Elastic Systems*, 1964, ch. 1; H. Risken, *The Fokker-Planck Equation*,
+1989, sec. 9.3 (matrix continued fractions).
 """
 
 from __future__ import annotations
@@ -99,20 +72,17 @@ class RootSeverity:
 
     Attributes
     ----------
-    severity : numpy.ndarray
-        Shape (n,), growth rate of the mode's largest surface displacement amplitude (m/s).
-    severity_rel : numpy.ndarray
-        Shape (n,), severity over the largest severity of the table (dimensionless).
+    severity, severity_rel : numpy.ndarray
+        Shape (n,), growth rate of the mode's largest surface displacement (m/s), and over the
+        table's largest.
     rate : numpy.ndarray
         Shape (n,), |G| / (2 omega): growth of the normal coordinate per unit tau (units of L).
     mode_type : tuple of str
         Per root, "axial", "torsional" or "radial": the dominant component of the mode.
-    psi0 : float
-        Reference initial pitch angle (rad).
-    beam_amplitude : float
-        Reference norm of the beam Floquet vector (units of L).
+    psi0, beam_amplitude : float
+        Reference initial pitch angle (rad) and norm of the beam Floquet vector (units of L).
     threshold : float
-        severity_rel at and above which a root is active (dimensionless).
+        severity_rel at and above which a root is active.
     """
 
     severity: np.ndarray
@@ -157,57 +127,33 @@ def floquet_vectors(A0: np.ndarray, B: np.ndarray, mu: np.ndarray, Omega_bar: np
                     ) -> tuple[np.ndarray, np.ndarray]:
     """Fourier vectors C^(s), s = -S..S, of the Floquet solution with exponent near mu.
 
-    Hill's recursion (mu + s Omega_bar)^2 C^(s) = A0 C^(s) - (gamma/2) B (C^(s-1) + C^(s+1)),
-    truncated at |s| <= S, is solved in the modal frame of A0 (A0 = V diag(lambda) V^-1, where
-    D_s = diag(lambda - (mu + s Omega_bar)^2) is diagonal and G = -(gamma/2) V^-1 B V):
+    Hill's recursion (mu + s Omega_bar)^2 C^(s) = A0 C^(s) - (gamma/2) B (C^(s-1) + C^(s+1))
+    (4.1-10..12) in the modal frame of A0: where the coupling is weak (the term left out at most
+    ``kappa_max``) by the first-order continued fraction C^(s) = -D_s^-1 G C^(s -+ 1), mu refined
+    once from the s = 0 row; elsewhere by the exact matrix continued fraction (R_s, L_s), C^(0)
+    the null vector of D_0 + G (R_1 + L_-1), mu refined by three secant steps (Risken 1989).
 
-    * where the coupling is weak (the term the first-order fraction leaves out, D_s^-1 G
-      C^(s +- 1) outward, is at most ``kappa_max`` of C^(s) at every s: all points away from
-      the beam's own combination resonances), by the first-order continued fraction
-      C^(0) = e_r, C^(s) = -D_s^-1 G C^(s -+ 1), and the exponent refined once from the
-      s = 0 row, mu^2 = lambda_r + [G (C^(1) + C^(-1))]_r;
-    * elsewhere by the exact matrix continued fraction C^(s) = R_s C^(s-1) (s > 0), C^(s) =
-      L_s C^(s+1) (s < 0), R_S = -D_S^-1 G, R_s = -(D_s + G R_{s+1})^-1 G (likewise L_s),
-      C^(0) the null vector of D_0 + G (R_1 + L_-1), the exponent refined by three secant
-      steps on its eigenvalue nearest zero.
+    Returns C, shape (P, 2S + 1, n) (or (P, n) with ``s``) in q_1..q_N, q_B, unit norm over
+    (s, n), and the refined mu, shape (P,) (units of omega_1).
 
     Parameters
     ----------
-    A0 : numpy.ndarray
-        Shape (n, n), steady beam-action matrix Lambda + B (dimensionless).
-    B : numpy.ndarray
-        Shape (n, n), thrust matrix per unit f(tau) (dimensionless).
+    A0, B : numpy.ndarray
+        Shape (n, n), steady matrix Lambda + B and thrust matrix per unit f(tau).
     mu : numpy.ndarray
-        Shape (P,), real exponents alpha Omega_bar (units of omega_1): the starting values
-        (e.g. the splined alpha_r of the stability roots).
+        Shape (P,), starting exponents alpha Omega_bar (units of omega_1).
     Omega_bar : numpy.ndarray
-        Shape (P,), Omega / omega_1 (dimensionless), > 0.
+        Shape (P,), Omega / omega_1, > 0.
     gamma : float
-        Pulsation amplitude (dimensionless), 0 <= gamma < 1.
+        Pulsation amplitude, 0 <= gamma < 1.
     S : int
         Harmonics s = -S..S kept, >= 0.
     kappa_max : float
-        Largest relative term left out by the first-order fraction (dimensionless); 0 solves
-        every point exactly.
+        Largest relative term left out by the first-order fraction; 0 solves every point exactly.
     chunk : int
-        Points per batch (memory ~ chunk 2S n^2 doubles; small batches stay in cache).
+        Points per batch (memory ~ chunk 2S n^2 doubles).
     s : numpy.ndarray of int, optional
-        Shape (P,), one harmonic per point, |s| <= S: only C^(s) of each point is returned
-        (the same numbers as ``C[arange(P), s + S]`` of the full result, without storing the
-        other 2S harmonics of every point).
-
-    Returns
-    -------
-    C : numpy.ndarray
-        Shape (P, 2S + 1, n), in the physical coordinates q_1..q_N, q_B, unit Euclidean norm
-        over (s, n) (the sign is arbitrary; real for a real exponent); shape (P, n) with ``s``.
-    mu : numpy.ndarray
-        Shape (P,), the refined exponents (units of omega_1).
-
-    References
-    ----------
-    Tech Memo 104, eqs. (4.1-10)..(4.1-12); Bolotin (1964) sec. 7 (Hill's determinant); Risken
-    (1989) sec. 9.3 (matrix continued fractions).
+        Shape (P,), one harmonic per point, |s| <= S: only C^(s) of each point is returned.
     """
     mu = np.asarray(mu, dtype=float).ravel().copy()
     Ob = np.asarray(Omega_bar, dtype=float).ravel()
@@ -281,10 +227,9 @@ def floquet_vectors(A0: np.ndarray, B: np.ndarray, mu: np.ndarray, Omega_bar: np
 
 def _negative_inverse_diagonals(lam: np.ndarray, mu: np.ndarray, Ob: np.ndarray,
                                 levels: np.ndarray, tiny: float) -> np.ndarray:
-    """-1 / diag(D_s), D_s = diag(lambda - (mu + s Omega_bar)^2) (Hill 4.1-10, modal frame),
-    shape (len(levels), P, n); an exact zero of D_s is replaced by ``tiny``.  Computed as
-    1 / (x^2 - lambda): rounding to nearest is symmetric in sign, so a - b = -(b - a) and
-    1 / -d = -(1 / d) exactly."""
+    """-1 / diag(D_s), D_s = diag(lambda - (mu + s Omega_bar)^2), shape (len(levels), P, n), as
+    1 / (x^2 - lambda) (exact in sign); an exact zero of D_s is replaced by ``tiny``.
+    """
     x = mu[None, :] + levels[:, None] * Ob[None, :]  # (levels, P)
     neg_d = x[:, :, None] ** 2 - lam[None, None, :]
     zero = neg_d == 0.0
@@ -294,8 +239,7 @@ def _negative_inverse_diagonals(lam: np.ndarray, mu: np.ndarray, Ob: np.ndarray,
 
 
 def _abs_max_last(X: np.ndarray) -> np.ndarray:
-    """max |X| over the last axis (NaN propagates, as in ``np.abs(X).max(axis=-1)``): a running
-    np.maximum over the columns, several times faster than a reduction along a short axis."""
+    """max |X| over the last axis (NaN propagates) as a running np.maximum over the columns."""
     out = np.abs(X[..., 0])
     for j in range(1, X.shape[-1]):
         np.maximum(out, np.abs(X[..., j]), out=out)
@@ -385,44 +329,30 @@ def root_severity(model: BoosterModel, table: StabilityTable, params: Excitation
                   psi0: float = 0.01, beam_amplitude: float = 1e-4,
                   threshold: float = DEFAULT_THRESHOLD, S: int | None = None,
                   phase: str = "zero") -> RootSeverity:
-    """Severity (secular growth rate at the shell surface) of every root, in one pass.
+    """Severity (secular growth rate at the shell surface) of every root, in one pass (memo 7.1).
+
+    Every harmonic whose |frequency| equals the mode's to 1e-8 adds to G; the pitch and beam
+    motions, of undefined relative phase, add in magnitude; complex beta or alpha_r enter by
+    their real parts.
 
     Parameters
     ----------
     model : BoosterModel
-        The derived model (truncation M1, N1, M2, N2, N, S; omega_1, omega_psi, gamma, K, L).
+        The derived model (truncation, omega_1, omega_psi, gamma, K, L).
     table : StabilityTable
         The roots (:func:`flexbooster.memo.stability.unstable_frequencies`).
     params : ExcitationParameters
         beta(Omega_bar), alpha_r(Omega_bar): the parameter function the roots were solved with.
     psi0 : float
-        Reference initial pitch angle psi(0) (rad), as :func:`simulate`'s default.
+        Reference initial pitch angle psi(0) (rad).
     beam_amplitude : float
-        Reference Euclidean norm of the beam Floquet vector (units of L), >= 0.
+        Reference norm of the beam Floquet vector (units of L), >= 0.
     threshold : float
-        severity_rel at and above which a root is active (dimensionless), >= 0.
+        severity_rel at and above which a root is active, >= 0.
     S : int, optional
         Harmonics of the beam Floquet vectors (default: the model's truncation S).
     phase : {"zero", "printed"}
         Shape-function phase of the modal forcing (erratum E10).
-
-    Returns
-    -------
-    RootSeverity
-
-    Notes
-    -----
-    Every harmonic of the forcing whose |frequency| equals the mode's to 1e-8 (relative) adds to
-    G, so coincident families (e.g. Omega + Omega_2 = Omega_3) add their forcing.  The pitch and
-    beam motions are independent free motions whose relative phase is undefined: their resonant
-    contributions add in magnitude (the worst phase).  Where beta or alpha_r is complex (inside a
-    pitch or beam-action instability region) their real parts are used, as in
-    :func:`flexbooster.memo.responses.make_excitation`.
-
-    References
-    ----------
-    Tech Memo 104, eqs. (4.1-10)..(4.1-12), (4.2-6), (4.2-7), (5.3-4), (6.1-2)..(6.1-4), (7.2-6),
-    section 7.1; Bolotin (1964) ch. 1.
     """
     psi0 = finite("psi0", psi0)
     beam_amplitude = nonnegative("beam_amplitude", beam_amplitude)
@@ -531,10 +461,6 @@ def shell_mode(cylinder: int, j: int, k: int, branch: int, mode_type: str) -> Ba
         Branch m of the modal system (1..3, ascending frequency).
     mode_type : str
         "axial", "torsional" or "radial".
-
-    Returns
-    -------
-    BandMode
     """
     return BandMode(label=f"cylinder {cylinder} shell mode j = {j}, k = {k}, m = {branch} "
                           f"({mode_type})", index=int(branch), k=int(k), order=int(j),
@@ -544,31 +470,20 @@ def shell_mode(cylinder: int, j: int, k: int, branch: int, mode_type: str) -> Ba
 def resonance_bands(table: StabilityTable, sev: RootSeverity, *,
                     resolution: float = DEFAULT_RESOLUTION,
                     half_power: np.ndarray | None = None) -> tuple[Band, ...]:
-    """Merge the active roots into bands of Omega, most severe band first.
+    """Merge the active roots into bands of Omega, most severe first (memo 7.1).
 
     Parameters
     ----------
     table : StabilityTable
         The roots.
     sev : RootSeverity
-        Their severity (:func:`root_severity`); only active roots (severity_rel >= threshold)
-        form bands.
+        Their severity (:func:`root_severity`); only active roots form bands.
     resolution : float
-        Relative resolution in Omega (dimensionless), > 0: consecutive active roots closer than
-        max(resolution, half_power) times Omega join one band (single linkage).
+        Relative resolution in Omega, > 0: consecutive active roots closer than
+        max(resolution, half_power) Omega join one band (single linkage).
     half_power : numpy.ndarray, optional
-        Shape (n,), relative half-power width of each root's mode (2 zeta for a damping ratio
-        zeta); the shells are undamped in the memo, so the default is 0.
-
-    Returns
-    -------
-    tuple of Band
-        Sorted by decreasing severity.
-
-    References
-    ----------
-    Tech Memo 104, section 7.1; the half-power bandwidth 2 zeta omega: L. Meirovitch, *Elements
-    of Vibration Analysis*, 2nd ed., McGraw-Hill, 1986, sec. 3.3.
+        Shape (n,), relative half-power width of each root's mode, 2 zeta (Meirovitch 1986,
+        sec. 3.3); default 0 (undamped shells).
     """
     resolution = positive("resolution", resolution)
     if len(sev) != len(table):
@@ -619,7 +534,7 @@ class SeverityResult:
     bands : tuple of Band
         The active roots merged into bands, most severe first.
     resolution : float
-        Relative resolution in Omega of the bands (dimensionless).
+        Relative resolution in Omega of the bands.
     """
 
     roots: RootSeverity
@@ -652,7 +567,7 @@ class SeverityResult:
 
 
 def with_severity(table: StabilityTable, sev: RootSeverity) -> StabilityTable:
-    """The table with its severity columns and ``active = severity_rel >= threshold``.
+    """The table with its severity columns and ``active = severity_rel >= threshold`` (memo 7.1).
 
     Parameters
     ----------
@@ -660,14 +575,6 @@ def with_severity(table: StabilityTable, sev: RootSeverity) -> StabilityTable:
         The roots.
     sev : RootSeverity
         Their severity (:func:`root_severity` of this table).
-
-    Returns
-    -------
-    StabilityTable
-
-    References
-    ----------
-    Tech Memo 104, section 7.1 (active: a forcing above the threshold).
     """
     from dataclasses import replace
 
@@ -682,34 +589,21 @@ def severity_analysis(model: BoosterModel, table: StabilityTable, params: Excita
                       threshold: float = DEFAULT_THRESHOLD,
                       resolution: float = DEFAULT_RESOLUTION
                       ) -> tuple[StabilityTable, SeverityResult]:
-    """Severity of every root, the table with it attached and the bands (the pipeline's call).
+    """Severity of every root, the table with it attached and the bands: (table, result) (memo
+    6.2, 7.1, 7.3; pipeline stage).
 
     Parameters
     ----------
     model : BoosterModel
         The derived model.
     table : StabilityTable
-        The roots (:func:`flexbooster.memo.stability.unstable_frequencies`).
+        The roots.
     params : ExcitationParameters
         The parameter function the roots were solved with.
-    psi0 : float
-        Reference initial pitch angle (rad).
-    beam_amplitude : float
-        Reference norm of the beam Floquet vector (units of L), >= 0.
-    threshold : float
-        severity_rel at and above which a root is active (dimensionless), >= 0.
+    psi0, beam_amplitude, threshold : float
+        As :func:`root_severity`.
     resolution : float
-        Relative resolution of the bands in Omega (dimensionless), > 0.
-
-    Returns
-    -------
-    table : StabilityTable
-        With ``severity``, ``severity_rel`` and the new ``active``.
-    result : SeverityResult
-
-    References
-    ----------
-    Tech Memo 104, sections 6.2, 7.1, 7.3.
+        Relative resolution of the bands in Omega, > 0.
     """
     sev = root_severity(model, table, params, psi0=psi0, beam_amplitude=beam_amplitude,
                         threshold=threshold)

@@ -1,33 +1,13 @@
 """Natural frequencies of the shell modes of the two cylinders (memo 5.4, 6.2, appendix D).
 
-For each cylinder d (1 aft, 2 forward) the memo's modal equations give
+omega_0k (5.4-4, j = 0), omega_j0^{1,2} (6.2-5..7, k = 0) and omega_jk^{1,2,3} (6.2-15..17)
+as the eigenvalues of K x = omega_bar^2 M x, all (d, j, k) in one batched call, in units of
+omega_1, each labelled axial, torsional or radial by its largest component. Methods:
+"zero-phase" (default; equals Donnell's shear-diaphragm cylinders), "galerkin" (printed
+phase, errata corrected), "memo" (appendix A as printed). Theory: docs/theory/shell.md.
 
-* omega_0k (5.4-4): j = 0, k >= 1, a uniform axial (u = cos k theta) mode, one frequency;
-* omega_j0^{1,2} (6.2-5..7, D-9, D-10): j >= 1, k = 0, the (U, W) system of 5.4-6;
-* omega_jk^{1,2,3} (6.2-15..17, D-14..D-16): j, k >= 1, the (U, V, W) system of 5.4-8.
-
-They are computed here as the eigenvalues of the generalized problems K x = omega_bar^2 M x
-(:meth:`~flexbooster.memo.shell_coefficients.CylinderCoefficients.matrices_j0`, ``matrices_jk``),
-all (d, j, k) stacked into one array and solved by one batched call of ``numpy.linalg``; the
-memo's symmetric-function forms serve as tests.  Frequencies are dimensionless, in units of
-omega_1 (4.2-8b); rad/s = omega_bar omega_1 and Hz = rad/s / (2 pi).  Each is labelled axial,
-torsional (circumferential) or radial from the largest component of its eigenvector (U, V, W).
-
-Methods (where the coefficients come from):
-
-* ``"zero-phase"`` (default): the Galerkin integrals with the shape functions' argument 0 at
-  each cylinder's aft edge.  They equal Donnell's shear-diaphragm coefficients of each
-  cylinder alone (appendix D-II with L_d for L), so the composite frequencies are those of the
-  isolated cylinders; see ``docs/theory/shell.md`` for why this is the consistent default.
-* ``"galerkin"``: the Galerkin integrals of the printed phase (5.3-2/3, erratum E10) with the
-  memo's one-sided edge terms: appendix A with its errata corrected.
-* ``"memo"``: appendix A as printed (memo-literal), errata included.
-
-References
-----------
-.. [1] Tech Memo 104, sections 5.4, 6.2 and appendix D.
-.. [2] A. W. Leissa, *Vibration of Shells*, NASA SP-288, 1973, sec. 2.1-2.3 (Donnell-Mushtari
-   theory, shear-diaphragm edges: frequency determinant eq. 2.20 and its cubic, eqs. 2.21-2.22).
+References: Tech Memo 104, sec. 5.4, 6.2, appendix D; A. W. Leissa, *Vibration of Shells*,
+NASA SP-288, 1973, sec. 2.1-2.3.
 """
 
 from __future__ import annotations
@@ -74,18 +54,11 @@ class ShellFrequencies:
 
     Attributes
     ----------
-    cylinder : ndarray of int
-        1 (aft) or 2 (forward).
-    j, k : ndarray of int
-        Axial and circumferential indices (j = 0 rows are omega_0k).
-    branch : ndarray of int
-        m = 1, 2, 3 in ascending frequency within (cylinder, j, k).
-    omega_bar : ndarray of float
-        Frequency in units of omega_1.
-    rad_s : ndarray of float
-        Circular frequency (rad/s).
-    hz : ndarray of float
-        Frequency (Hz).
+    cylinder, j, k, branch : ndarray of int
+        Cylinder 1 (aft) or 2, axial and circumferential indices (j = 0: omega_0k), branch
+        m = 1..3 ascending.
+    omega_bar, rad_s, hz : ndarray of float
+        Frequency in units of omega_1, rad/s and Hz.
     mode_type : ndarray of str
         ``"axial"``, ``"torsional"`` or ``"radial"``.
     method : str
@@ -93,10 +66,8 @@ class ShellFrequencies:
     omega_1 : float
         Reference frequency (rad/s).
     excluded : dict of str to ndarray
-        Modes whose modal system has no real positive omega^2 (possible only for the
-        non-symmetric printed-phase systems, ``"galerkin"`` and ``"memo"``): parallel arrays
-        ``cylinder, j, k, branch, omega_sq_real, omega_sq_imag`` (omega_bar^2, units of
-        omega_1^2).  Empty for ``"zero-phase"``.
+        Modes without a real positive omega^2 (printed-phase methods only): parallel arrays
+        ``cylinder, j, k, branch, omega_sq_real, omega_sq_imag`` (units of omega_1^2).
     """
 
     cylinder: np.ndarray
@@ -162,33 +133,16 @@ def _check_method(method: str) -> None:
 def generalized_eigen(
     mass: np.ndarray, stiff: np.ndarray, symmetric: bool = False
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Batched eigenvalues omega^2 and eigenvectors of K x = omega^2 M x.
+    """Batched eigenvalues omega^2 (complex, ascending real part) and eigenvector component
+    moduli (columns scaled to unit maximum) of K x = omega^2 M x (memo 6.2-5, 6.2-15).
 
     Parameters
     ----------
     mass, stiff : ndarray, shape (..., n, n)
-        Mass and stiffness matrices (dimensionless), M invertible.
+        Mass and stiffness matrices, M invertible.
     symmetric : bool
-        If true, M is taken as its diagonal D (positive) and K as its symmetric part, and the
-        problem is solved as the symmetric D^-1/2 K D^-1/2 y = omega^2 y (``eigh``: real
-        eigenvalues by construction).  For the zero-phase systems, whose off-diagonal mass
-        terms are quadrature zeros (|.| < 1e-15) and whose K is symmetric.
-
-    Returns
-    -------
-    omega_sq : ndarray of complex, shape (..., n)
-        Eigenvalues of M^-1 K, ordered by ascending real part along the last axis.
-    vectors : ndarray of float, shape (..., n, n)
-        Moduli of the matching eigenvector components (columns), each column scaled to unit
-        maximum, for classifying the mode.
-
-    Notes
-    -----
-    One ``numpy.linalg.solve`` and one ``numpy.linalg.eig`` over the stacked systems
-    (memo 6.2-5 and 6.2-15: Delta(s) = det(M s^2 + K) = 0 at s^2 = -omega^2).  For the
-    symmetric zero-phase systems the eigenvalues are real and positive; the printed-phase
-    systems are not symmetric and may have complex or negative omega^2 (see
-    :func:`composite_frequencies`).
+        Take M as its diagonal and K as its symmetric part and solve D^-1/2 K D^-1/2 with
+        ``eigh`` (the zero-phase systems).
     """
     mass, stiff = np.asarray(mass, dtype=float), np.asarray(stiff, dtype=float)
     for name, mat in (("mass", mass), ("stiff", stiff)):
@@ -222,24 +176,18 @@ def _real_positive(omega_sq: np.ndarray) -> np.ndarray:
 
 def cylinder_coefficients(p: ShellParameters, d: int, M: int, N: int,
                           method: str = "zero-phase") -> CylinderCoefficients:
-    """Coefficients of cylinder ``d`` for a frequency ``method``.
+    """Coefficients of cylinder ``d`` for a frequency ``method`` (memo appendix A).
 
     Parameters
     ----------
     p : ShellParameters
+        The shell parameters.
     d : int
         Cylinder, 1 or 2.
     M, N : int
         Largest j and k.
     method : {"zero-phase", "galerkin", "memo"}
-
-    Returns
-    -------
-    CylinderCoefficients
-
-    References
-    ----------
-    Tech Memo 104, appendix A; :mod:`flexbooster.memo.shell_coefficients`.
+        The source of the coefficients.
     """
     _check_method(method)
     if method == "memo":
@@ -252,7 +200,9 @@ def composite_frequencies(
     R1: float, L1: float, R2: float, L2: float, h: float, E: float, nu: float, rho: float,
     omega_1: float, M1: int, N1: int, M2: int, N2: int, method: str = "zero-phase",
 ) -> ShellFrequencies:
-    """Shell natural frequencies of both cylinders from primitive arguments.
+    """Shell natural frequencies of both cylinders from primitive arguments; rows by cylinder,
+    then omega_0k, omega_j0 (2 branches), omega_jk (j-major, 3 branches). A mode with complex or
+    non-positive omega^2 goes to ``excluded``. Memo (5.4-4), (6.2-5..7), (6.2-15..17), (D-9..D-20).
 
     Parameters
     ----------
@@ -262,40 +212,14 @@ def composite_frequencies(
         Half-lengths (m).
     h : float
         Thickness (m).
-    E : float
-        Young's modulus (Pa).
-    nu : float
-        Poisson's ratio.
-    rho : float
-        Density (kg/m^3).
+    E, nu, rho : float
+        Young's modulus (Pa), Poisson's ratio, density (kg/m^3).
     omega_1 : float
         Reference frequency (rad/s), memo 4.2-8b.
     M1, N1, M2, N2 : int
         Largest j and k of cylinder 1 and 2, 1..500.
     method : {"zero-phase", "galerkin", "memo"}
-        Source of the modal coefficients (module docstring).
-
-    Returns
-    -------
-    ShellFrequencies
-        Rows ordered by cylinder, then omega_0k (k = 1..N), omega_j0 (j = 1..M, 2 branches),
-        omega_jk (j-major, 3 branches).
-
-    Raises
-    ------
-    ValueError
-        Bad parameter (the message names it).
-
-    Notes
-    -----
-    omega_0k^2 = lambda_d^2 k^2 / (2 (1 + nu) mu) (5.4-4) is the 1x1 case K/M.  The 2x2 and
-    3x3 problems of all (d, j, k) are solved in one batched call (:func:`generalized_eigen`).
-    A mode whose omega^2 is complex or not positive (the printed-phase systems are not
-    symmetric) has no natural frequency: it goes to ``excluded``, never into the table.
-
-    References
-    ----------
-    Tech Memo 104, eqs. (5.4-4), (6.2-5)..(6.2-7), (6.2-15)..(6.2-17), (D-9)..(D-20).
+        Source of the modal coefficients.
     """
     counts = [_check_count(n, v) for n, v in (("M1", M1), ("N1", N1), ("M2", M2), ("N2", N2))]
     _check_method(method)
@@ -371,23 +295,14 @@ def composite_frequencies(
 
 
 def natural_frequencies(model: BoosterModel, *, method: str = "zero-phase") -> ShellFrequencies:
-    """Shell natural frequencies of the booster's two cylinders.
+    """Shell natural frequencies of the booster's two cylinders (memo 5.4, 6.2, appendix D).
 
     Parameters
     ----------
     model : BoosterModel
-        The derived model: shell parameters (R_d, L_d (m), h (m), E (Pa), nu, rho (kg/m^3)),
-        omega_1 (rad/s, eq. 4.2-8b) and the truncation M1, N1, M2, N2.
+        The derived model: shell parameters, omega_1 and the truncation M1, N1, M2, N2.
     method : {"zero-phase", "galerkin", "memo"}
-        Source of the modal coefficients; ``"zero-phase"`` is the pipeline default.
-
-    Returns
-    -------
-    ShellFrequencies
-
-    References
-    ----------
-    Tech Memo 104, sections 5.4, 6.2, appendix D.
+        Source of the modal coefficients.
     """
     t = model.truncation
     return composite_frequencies(model.R1, model.L1, model.R2, model.L2, model.h, model.E,

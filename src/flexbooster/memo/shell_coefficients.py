@@ -1,48 +1,18 @@
-"""Galerkin coefficients of the shell modes of each cylinder (memo sections 5.2-5.4, appendix A).
+"""Galerkin coefficients of the shell modes of each cylinder (memo 5.2-5.4, appendix A).
 
-For cylinder d (d = 1 aft, d = 2 forward) and mode (j, k) the memo's Galerkin procedure turns
-the dimensionless Donnell equations (3.0-2) into the modal equations
+The Galerkin procedure turns the Donnell equations (3.0-2) of cylinder d (1 aft, 2 forward)
+and mode (j, k) into the modal equations (5.4-6) (k = 0, unknowns U, W) and (5.4-8) (k >= 1,
+U, V, W), with coefficients ``(a..m)_j0`` and ``(a..p)_jk``, given two ways:
+:func:`memo_coefficients`, appendix A as printed (A-1..A-52, OCR slips read as meant), and
+:func:`galerkin_coefficients`, the integrals they stand for, by quadrature. The edge terms of
+the step functions' derivatives follow ``delta``: "one-sided" (H(0) = 1), "symmetric"
+(H(0) = 1/2) or "none"; the shape-function phase is the printed one (5.3-2/3) or zero
+(erratum E10). Coefficients are divided by the theta integral of the test function and the
+stiffness ones by (1 - nu^2) mu, as in appendix A. Theory: docs/theory/shell.md;
+docs/memo-errata.md.
 
-    k = 0:   a U'' + b W'' + c U + d W = P1,          h U + j W'' + k W = P2        (5.4-6)
-    k >= 1:  a U'' + b V'' + c W'' + d U + e V + f W = Q1,
-             g U + h V'' + j V + k W = Q2,   l U + m V + n W'' + p W = Q3            (5.4-8)
-
-whose coefficients ``(a..m)_j0`` and ``(a..p)_jk`` appendix A lists in closed form.  This module
-gives them two ways:
-
-* :func:`memo_coefficients`, appendix A as printed ("memo-literal", eqs. A-1..A-52), with
-  only the obvious OCR slips read as meant (see ``docs/memo-errata.md``), and
-* :func:`galerkin_coefficients`, the integrals they stand for: the shell operators of 3.0-2
-  applied to the trial functions of 5.2-1 (shape functions 5.3-2/3 times the step functions
-  G_d, plus the xi-independent shift -A(theta) - (-1)^d (m pi/2) B(theta) and
-  (-1)^d (nu L/R) B(theta) [n V - W] that eqs. 5.2-2/5.2-3 add to the axial displacement in its
-  mass and d^2/dtheta^2 terms), multiplied by the test functions G_d f, G_d g, G_d h and
-  integrated over the cylinder by Gauss-Legendre quadrature in xi_bar (theta integrals by
-  orthogonality).
-
-Notation (reading guide section 2).  xi_bar = (x - x_cm)/L; cylinder 1 is [a, c], cylinder 2
-is [c, b].  The shape-function argument is s = (j pi / 2)(L/L_d xi_bar + phase term): the
-*printed* phase of 5.3-2/3 (r_1 = (L1 - d1)/L1, r_2 = (d1 - L1 - L2)/L2) gives
-s = j pi (d1 - d2)/(2 L1) at the aft edge of cylinder 1 and s = j pi (2 d1 - L1)/(2 L2) at the
-aft edge (junction) of cylinder 2; the *zero* phase puts s = 0 at the aft edge of each cylinder
-and s = j pi at its forward edge (shear-diaphragm modes u ~ cos, v, w ~ sin).  With
-alpha = j pi L / (2 L_d), f = cos s cos k theta, g = sin s sin k theta, h = sin s cos k theta.
-
-The derivative of a step function, G_d' = delta(xi - xi_aft) - delta(xi - xi_fwd), produces
-edge terms.  Integrated against G_d they need a value of the step at its own jump; the
-convention is a parameter: ``"one-sided"`` (H(0) = 1, so only the aft edge counts, weight 1),
-``"symmetric"`` (H(0) = 1/2: weights 1/2 and -1/2) or ``"none"`` (no edge terms: the integral
-over the open cylinder).  Terms in G_d'' and higher are dropped in every convention.
-
-Every coefficient is divided by the theta integral of the test function (pi for k >= 1,
-2 pi for k = 0) and the stiffness coefficients by (1 - nu^2) mu as in appendix A, so that the
-mass coefficients are lengths (in units of L) and the stiffness ones carry 1/((1 - nu^2) mu).
-
-References
-----------
-.. [1] Tech Memo 104, sections 3.0, 5.2-5.4 and appendix A (eqs. A-1..A-52).
-.. [2] A. W. Leissa, *Vibration of Shells*, NASA SP-288, 1973, ch. 2 (Donnell-Mushtari
-   equations, shear-diaphragm modes).
+References: Tech Memo 104, sec. 3.0, 5.2-5.4, appendix A; A. W. Leissa, *Vibration of
+Shells*, NASA SP-288, 1973, ch. 2.
 """
 
 from __future__ import annotations
@@ -93,16 +63,10 @@ class ShellParameters:
         CM to junction (signed), CM to aft edge, CM to nose (m), Fig. 1.
     a, c, b : float
         xi_bar of the aft edge, the junction and the nose.
-    lam1, lam2 : float
-        lambda_d = L / R_d.
-    sigma : float
-        sigma = h / L.
-    mu : float
-        mu = rho L^2 omega_1^2 / E (erratum E3 of 3.0-4a).
-    nu : float
-        Poisson's ratio.
+    lam1, lam2, sigma, mu, nu : float
+        L / R_d, h / L, rho L^2 omega_1^2 / E (erratum E3) and Poisson's ratio.
     omega_1 : float
-        Reference frequency omega_1 (rad/s); frequencies are in its units.
+        Reference frequency (rad/s); frequencies are in its units.
     """
 
     L: float
@@ -149,7 +113,8 @@ def shell_parameters(
     rho: float,
     omega_1: float,
 ) -> ShellParameters:
-    """Dimensionless shell parameters of the composite (memo 3.0-1, 3.0-4).
+    """Dimensionless shell parameters of the composite (memo 3.0-1, 3.0-4 with erratum E3);
+    ValueError naming a parameter that breaks its rule.
 
     Parameters
     ----------
@@ -159,27 +124,10 @@ def shell_parameters(
         Half-lengths of cylinder 1 and 2 (m), > 0.
     h : float
         Shell thickness (m), 0 < h < min(R1, R2).
-    E : float
-        Young's modulus (Pa), > 0.
-    nu : float
-        Poisson's ratio, 0 <= nu < 0.5.
-    rho : float
-        Density (kg/m^3), > 0.
+    E, nu, rho : float
+        Young's modulus (Pa) > 0, Poisson's ratio in [0, 0.5), density (kg/m^3) > 0.
     omega_1 : float
-        Reference frequency (rad/s), > 0; the memo's omega_1 (4.2-8b).
-
-    Returns
-    -------
-    ShellParameters
-
-    Raises
-    ------
-    ValueError
-        If a parameter breaks its rule (the message names it).
-
-    References
-    ----------
-    Tech Memo 104, eqs. (3.0-1), (3.0-4) with erratum E3 (mu = rho L^2 omega_1^2 / E).
+        Reference frequency (rad/s), > 0 (4.2-8b).
     """
     for name, value in (("R1", R1), ("L1", L1), ("R2", R2), ("L2", L2), ("h", h), ("E", E),
                         ("rho", rho), ("omega_1", omega_1)):
@@ -207,14 +155,11 @@ class CylinderCoefficients:
     ----------
     cylinder : int
         1 (aft) or 2 (forward).
-    j : ndarray, shape (M,)
-        Axial indices.
-    k : ndarray, shape (N,)
-        Circumferential indices (>= 1).
-    j0 : dict of str to ndarray, shape (M,)
-        ``(a..m)_j0`` keyed by :data:`J0_NAMES`.
-    jk : dict of str to ndarray, shape (M, N)
-        ``(a..p)_jk`` keyed by :data:`JK_NAMES`.
+    j, k : ndarray
+        Axial indices, shape (M,), and circumferential indices (>= 1), shape (N,).
+    j0, jk : dict of str to ndarray
+        ``(a..m)_j0``, shape (M,), keyed by :data:`J0_NAMES`; ``(a..p)_jk``, shape (M, N), keyed
+        by :data:`JK_NAMES`.
     source : str
         ``"memo"`` or ``"galerkin/<phase>/<delta>"``.
     """
@@ -227,9 +172,8 @@ class CylinderCoefficients:
     source: str = "memo"
 
     def matrices_j0(self) -> tuple[np.ndarray, np.ndarray]:
-        """Mass and stiffness matrices of eq. (5.4-6), shape (M, 2, 2), unknowns (U, W).
-
-        M = [[a, b], [0, j]], K = [[c, d], [h, k]], so that M x'' + K x = P (6.2-5).
+        """Mass and stiffness of eq. (5.4-6), shape (M, 2, 2), unknowns (U, W):
+        M = [[a, b], [0, j]], K = [[c, d], [h, k]], M x'' + K x = P (6.2-5).
         """
         c = self.j0
         zero = np.zeros_like(c["a"])
@@ -238,8 +182,7 @@ class CylinderCoefficients:
         return mass, stiff
 
     def matrices_jk(self) -> tuple[np.ndarray, np.ndarray]:
-        """Mass and stiffness matrices of eq. (5.4-8), shape (M, N, 3, 3), unknowns (U, V, W).
-
+        """Mass and stiffness of eq. (5.4-8), shape (M, N, 3, 3), unknowns (U, V, W):
         M = [[a, b, c], [0, h, 0], [0, 0, n]], K = [[d, e, f], [g, j, k], [l, m, p]] (6.2-15).
         """
         c = self.jk
@@ -277,24 +220,19 @@ def _check_cylinder(d: int) -> None:
 
 
 def edge_arguments(p: ShellParameters, d: int, j: np.ndarray, phase: str) -> tuple:
-    """Shape-function arguments s at the aft and forward edge of cylinder ``d``.
+    """Shape-function arguments (s_aft, s_fwd) (rad) at the edges of cylinder ``d``;
+    s_fwd - s_aft = j pi in both phases.
 
     Parameters
     ----------
     p : ShellParameters
+        The shell parameters.
     d : int
         Cylinder, 1 or 2.
     j : ndarray
         Axial indices.
     phase : {"printed", "zero"}
-        ``"printed"``: eqs. (5.3-2b..e), (5.3-3b..e): s = (j pi/2)(d1 - d2)/L1 .. (j pi/2) 2 d1/L1
-        for d = 1 and (j pi/2)(2 d1 - L1)/L2 .. (j pi/2)(d1 + d3 - L1)/L2 for d = 2 (erratum E10);
-        ``"zero"``: 0 .. j pi.
-
-    Returns
-    -------
-    s_aft, s_fwd : ndarray
-        Arguments (rad); s_fwd - s_aft = j pi in both phases.
+        "printed": eqs. (5.3-2b..e), (5.3-3b..e) (erratum E10); "zero": 0 .. j pi.
     """
     _check_cylinder(d)
     if phase not in PHASES:
@@ -314,34 +252,21 @@ def edge_arguments(p: ShellParameters, d: int, j: np.ndarray, phase: str) -> tup
 
 
 def memo_coefficients(p: ShellParameters, d: int, M: int, N: int) -> CylinderCoefficients:
-    """Appendix A coefficients as printed ("memo-literal"), j = 1..M, k = 1..N.
+    """Appendix A coefficients as printed, j = 1..M, k = 1..N (``source = "memo"``).
+
+    Term by term in the printed phase (E10). Kept as printed: E9 (lambda^4 in A-36), the sign
+    of the k^3 term of A-17, L1 in A-33, the missing term of A-42, the half angles of A-44. Read
+    as meant (OCR): "2 I_2" for 2 L2 in A-27/A-28, 1/(nu (1 - nu^2)) for 1/(mu (1 - nu^2)) in
+    A-16. Every difference from :func:`galerkin_coefficients` is in docs/memo-errata.md.
 
     Parameters
     ----------
     p : ShellParameters
         Dimensionless parameters (:func:`shell_parameters`).
     d : int
-        Cylinder: 1 (eqs. A-1..A-26) or 2 (eqs. A-27..A-52).
+        Cylinder: 1 (A-1..A-26) or 2 (A-27..A-52).
     M, N : int
         Largest axial and circumferential index, >= 1.
-
-    Returns
-    -------
-    CylinderCoefficients
-        ``source = "memo"``.
-
-    Notes
-    -----
-    Written term by term from the printed equations, in the printed phase of 5.3-2/3
-    (E10).  Kept as printed: E9 (lambda^4 in A-36), the sign of the k^3 term of A-17, the
-    L1 in the fourth term of A-33, the missing (j pi L/2L2) sin j pi (2d1 - L1)/L2 term of
-    A-42 and the half angles in the bracket of A-44.  Read as meant (OCR slips): "2 I_2"
-    for 2 L2 in A-27/A-28, 1/(nu (1 - nu^2)) for 1/(mu (1 - nu^2)) in A-16.  Every
-    difference from :func:`galerkin_coefficients` is a row in ``docs/memo-errata.md``.
-
-    References
-    ----------
-    Tech Memo 104, appendix A, eqs. (A-1)..(A-52).
     """
     _check_cylinder(d)
     jj, kk = _indices(M, N)
@@ -490,6 +415,14 @@ def galerkin_coefficients(
 ) -> CylinderCoefficients:
     """Coefficients of eqs. (5.4-6/8) as the Galerkin integrals of 5.2-2..5.2-5, by quadrature.
 
+    Trial functions (5.2-1 with the axial shift of 5.2-2/3, in the mass and the d^2/dtheta^2
+    terms only): u = G f U + A_d [(L_d/L - 1) U - (nu lambda / alpha)(k V - W)] cos k theta,
+    v = G g V, w = G h W, A_d = cos s_aft - cos s_fwd; test functions G f, G g, G h; the
+    operators of 3.0-2 (Donnell, inward w). Stiffness = minus the integral of test x operator,
+    mass = integral of test x trial, both over the theta integral; forcing e = int f,
+    f = int xi f, g = int (xi - b + 1)^2 f / 2, l = -b int h, m = int xi h (5.4-7).
+    Returns ``source = "galerkin/<phase>/<delta>"``.
+
     Parameters
     ----------
     p : ShellParameters
@@ -499,43 +432,11 @@ def galerkin_coefficients(
     M, N : int
         Largest axial and circumferential index, >= 1.
     phase : {"zero", "printed"}
-        Shape-function phase (see :func:`edge_arguments`); ``"printed"`` is that of
-        5.3-2/3 (erratum E10).
+        Shape-function phase (:func:`edge_arguments`).
     delta : {"one-sided", "symmetric", "none"}
-        Treatment of the edge terms from G_d' (module docstring).
+        Treatment of the edge terms from G_d'.
     n_points : int, optional
         Gauss-Legendre points on the cylinder (default 2 M + 48).
-
-    Returns
-    -------
-    CylinderCoefficients
-        ``source = "galerkin/<phase>/<delta>"``.
-
-    Notes
-    -----
-    Trial functions (5.2-1 with the axial shift of 5.2-2/3):
-    u = G f U + A_d [(L_d/L - 1) U - (nu lambda / alpha)(k V - W)] cos k theta,
-    v = G g V, w = G h W, where A_d = cos s_aft - cos s_fwd (A(theta)_d of 5.2-3; B(theta)_d
-    = -(-1)^d (2 L_d / j pi L) A_d); the shift enters only the mass and the
-    (1 - nu) lambda^2 / 2 d^2/dtheta^2 terms of 3.0-2a because it does not depend on xi_bar.
-    Test functions G f, G g, G h.  Operators of 3.0-2 (Donnell, inward w):
-
-    u: u'' + (1-nu) lam^2/2 u_tt + (1+nu) lam/2 v'_t - nu lam w'  = (1-nu^2) mu u_tau tau
-    v: (1+nu) lam/2 u'_t + (1-nu)/2 v'' + lam^2 v_tt - lam^2 w_t   = (1-nu^2) mu v_tau tau
-    w: nu lam u' + lam^2 v_t - lam^2 w - sigma^2/12 Lap^4 w        = (1-nu^2) mu w_tau tau
-
-    (' = d/dxi_bar, _t = d/dtheta).  Each stiffness coefficient is minus the integral of the
-    test function times the operator, divided by the theta integral and by (1 - nu^2) mu;
-    each mass coefficient is the integral of the test function times the trial function
-    divided by the theta integral.  The xi_bar integrals of smooth integrands are done by
-    Gauss-Legendre quadrature; the edge terms are point values (``delta``).  The forcing
-    coefficients are identified with e = int f, f = int xi f, g = int (xi - b + 1)^2 f / 2,
-    l = -b int h, m = int xi h (the integrals that eqs. 5.4-7 and A-5..A-7, A-11, A-12 stand
-    for).
-
-    References
-    ----------
-    Tech Memo 104, eqs. (3.0-2), (5.2-1)..(5.2-5), (5.3-2), (5.3-3), (5.4-6), (5.4-8).
     """
     _check_cylinder(d)
     if delta not in DELTA_CONVENTIONS:
@@ -645,11 +546,14 @@ def galerkin_coefficients(
 def overlap_matrices(
     p: ShellParameters, d: int, M: int, phase: str, n_points: int | None = None
 ) -> tuple[np.ndarray, np.ndarray]:
-    """Gram matrices of the axial shape functions on cylinder ``d``, by quadrature.
+    """Gram matrices int cos s_j cos s_j' and int sin s_j sin s_j' dxi_bar (M, M) of the axial
+    shape functions on cylinder ``d``; the per-(j, k) decoupling (5.2-6, 5.3) needs them
+    diagonal.
 
     Parameters
     ----------
     p : ShellParameters
+        The shell parameters.
     d : int
         Cylinder, 1 or 2.
     M : int
@@ -658,17 +562,6 @@ def overlap_matrices(
         Shape-function phase (:func:`edge_arguments`).
     n_points : int, optional
         Gauss-Legendre points (default 2 M + 48).
-
-    Returns
-    -------
-    cos_gram, sin_gram : ndarray, shape (M, M)
-        int cos s_j cos s_j' dxi_bar and int sin s_j sin s_j' dxi_bar over the cylinder.  The
-        decoupling of the modal equations per (j, k) (text after 5.2-6, 5.3) needs them
-        diagonal.
-
-    References
-    ----------
-    Tech Memo 104, eqs. (5.2-6), (5.3-2), (5.3-3).
     """
     _check_cylinder(d)
     jj, _ = _indices(M, 1)

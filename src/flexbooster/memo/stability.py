@@ -1,37 +1,14 @@
 """Unstable thrust frequencies: the 13 families of stability equations (memo section 7).
 
-Each family equates an *excitation frequency* of the forcing of the shell modes to a shell
-natural frequency (memo 7.1: the vanishing denominators of the closed-form responses of 6.2).
-With Omega_bar = Omega / omega_1 and (7.2-6)
+Each family equates an excitation frequency |c(Omega)| Omega_bar of the shell forcing to a
+shell natural frequency (7.1), c linear in beta and alpha_r (7.2-6, table :data:`FAMILIES`):
+an implicit equation in Omega. All roots in the range are bracketed on one scan grid for
+every curve and frequency at once, refined together by Illinois, and coincident curves are
+reported once. A root is "active" where its forcing is structurally non-zero, else "listed".
+Theory: docs/theory/stability.md.
 
-    Omega_i = [(i - 2)^2 + eps_i beta(Omega)] Omega_bar,   eps = (-1/2, 1/2, 1/2),  i = 1, 2, 3,
-
-every excitation is |c(Omega)| Omega_bar with a coefficient c that is linear in beta and in the
-beam exponents alpha_r (table :data:`FAMILIES`).  beta and alpha_r depend on Omega, so each
-family is an implicit equation in Omega; all its roots in the requested range are found at once
-for every curve and every shell frequency:
-
-1. one pass over a scan grid evaluates beta and alpha_r once and every excitation curve;
-2. every shell frequency between two consecutive curve values brackets a root (sorted targets,
-   ``numpy.searchsorted``: all curves, intervals and targets at once);
-3. all brackets are refined together by a vectorised Illinois (regula falsi) iteration, one
-   batched evaluation of beta and alpha_r per step, to a residual below 1e-12 in Omega_bar;
-4. roots of coincident curves (e.g. Omega_bar + Omega_2 = Omega_3 identically) at the same
-   shell mode are reported once, with every family that produces them.
-
-A root is "active" when the forcing that produces it is structurally non-zero (reading guide
-section 5): the rigid-body and beam terms carry delta_1k (k = 1 only), the psi-dot-squared terms
-drive k = 0 (families 4-6) and, through delta_2k, k = 2 (families 10-12); the pulsation terms need
-gamma != 0; A_1 and A_3 of psi (4.2-7b, d) are proportional to q, so terms in Omega_1 or Omega_3
-need gamma != 0 too; and with the zero-phase shape functions the psi-dot-squared and
-T0 gamma sin(K psi) terms project on odd j only.  Other roots are "listed": the memo lists
-them, but no forcing reaches them.
-
-References
-----------
-.. [1] Tech Memo 104, sections 6.2 and 7 (eqs. 7.2-1..7.2-6, 7.3-1..7.3-35), errata E7, E8.
-.. [2] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, Holden-Day, 1964, ch. 1
-   (combination resonances Omega_i +- Omega_p).
+References: Tech Memo 104, sec. 6.2 and 7 (7.2-1..7.2-6, 7.3-1..7.3-35), errata E7, E8;
+V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, 1964, ch. 1.
 """
 
 from __future__ import annotations
@@ -109,7 +86,13 @@ class ExcitationCurves:
 
 
 def excitation_curves(R: int, S: int) -> ExcitationCurves:
-    """All excitation curves of the 13 families, each counted once.
+    """All excitation curves of the 13 families, each counted once (only i < p of the symmetric
+    pairs).
+
+    Coefficients (memo 7.3, errata E7, E8): Omega_i (7.3-1, 7.3-17) (i-2)^2 + eps_i beta;
+    2 Omega_i (7.3-8, 7.3-32) twice that; Omega_i +- Omega_p (7.3-11, 7.3-26, 7.3-14, 7.3-29)
+    (i-2)^2 +- (p-2)^2 + (eps_i +- eps_p) beta; Omega_bar +- Omega_i (7.3-20, 7.3-23)
+    (i-2)^2 + eps_i beta +- 1; Omega_bar (7.3-5) 1; (alpha_r + s) Omega_bar (7.3-3, 7.3-35).
 
     Parameters
     ----------
@@ -117,27 +100,6 @@ def excitation_curves(R: int, S: int) -> ExcitationCurves:
         Number of beam exponents alpha_r (r = 1..R).
     S : int
         Harmonics s = -S..S.
-
-    Returns
-    -------
-    ExcitationCurves
-
-    Notes
-    -----
-    Omega_i + Omega_p and |Omega_i - Omega_p| are symmetric in (i, p): only i < p is kept, and
-    i = p of the sum is the family 2 Omega_i (4, 12), which would otherwise be counted twice.
-    Coefficients (eq. numbers of memo 7.3, with errata E7, E8):
-
-    * Omega_i (7.3-1, 7.3-17): (i-2)^2 + eps_i beta;
-    * 2 Omega_i (7.3-8, 7.3-32, E7): 2 [(i-2)^2 + eps_i beta];
-    * Omega_i + Omega_p (7.3-11, 7.3-26, E8): (i-2)^2 + (p-2)^2 + (eps_i + eps_p) beta;
-    * Omega_i - Omega_p (7.3-14, 7.3-29, E8): (i-2)^2 - (p-2)^2 + (eps_i - eps_p) beta;
-    * Omega_bar +- Omega_i (7.3-20, 7.3-23): (i-2)^2 + eps_i beta +- 1;
-    * Omega_bar (7.3-5): 1;  (alpha_r + s) Omega_bar (7.3-3, 7.3-35): alpha_r + s.
-
-    References
-    ----------
-    Tech Memo 104, eqs. (7.2-6), (7.3-1)..(7.3-35).
     """
     R = count("R", R, 0, None)
     S = count("S", S, 0, None)
@@ -187,7 +149,7 @@ def excitation_curves(R: int, S: int) -> ExcitationCurves:
 def excitation(
     curves: ExcitationCurves, Omega_bar: np.ndarray, beta: np.ndarray, alpha: np.ndarray
 ) -> np.ndarray:
-    """Excitation frequencies |k0 + kb beta + ka alpha_r| Omega_bar of every curve on a grid.
+    """Excitation frequencies of every curve on a grid, shape (C, n), units of omega_1 (7.2-6).
 
     Parameters
     ----------
@@ -198,16 +160,7 @@ def excitation(
     beta : numpy.ndarray
         Pitch stability parameter beta(Omega) (real part), shape (n,).
     alpha : numpy.ndarray
-        Beam exponents alpha_r(Omega), shape (n, R) (R may be 0 when no curve uses them).
-
-    Returns
-    -------
-    numpy.ndarray
-        Shape (C, n), in units of omega_1.
-
-    References
-    ----------
-    Tech Memo 104, eq. (7.2-6) and the left-hand sides of (7.3-1)..(7.3-35).
+        Beam exponents alpha_r(Omega), shape (n, R) (R may be 0).
     """
     Omega_bar = np.asarray(Omega_bar, dtype=float)
     beta = np.asarray(beta, dtype=float)
@@ -264,33 +217,26 @@ class StabilityTable:
 
     Attributes
     ----------
-    Omega : numpy.ndarray
-        Thrust pulsation frequency at the root (rad/s).
-    Omega_bar : numpy.ndarray
-        Omega / omega_1.
+    Omega, Omega_bar : numpy.ndarray
+        Thrust pulsation frequency at the root (rad/s) and Omega / omega_1.
     family, i, p, r, s : numpy.ndarray of int
         The (first) family and its indices (0 where unused).
-    equation : tuple of str
-        Memo equation number of the family.
-    also : tuple of str
-        Other families whose curves coincide here ("" if none), e.g. "7(i=3)".
+    equation, also : tuple of str
+        Memo equation of the family; other families whose curves coincide here ("" if none).
     cylinder, j, k, branch : numpy.ndarray of int
         The shell mode.
     shell_omega_bar : numpy.ndarray
         Its natural frequency in units of omega_1.
     active : numpy.ndarray of bool
-        True where the forcing of that mode through this family is non-zero: structurally
-        (Kronecker deltas, parity) as solved; ``severity_rel >= threshold`` once the severity
-        is attached (:func:`flexbooster.memo.severity.with_severity`).
+        Forcing structurally non-zero as solved; ``severity_rel >= threshold`` once the
+        severity is attached.
     residual : numpy.ndarray
-        |excitation - shell frequency| at the reported root (units of omega_1).
+        |excitation - shell frequency| at the root (units of omega_1).
     omega_1 : float
         The unit of the dimensionless frequencies (rad/s).
-    severity : numpy.ndarray or None
-        Secular growth rate of the mode's surface displacement at the root (m/s)
-        (:mod:`flexbooster.memo.severity`); None if not computed.
-    severity_rel : numpy.ndarray or None
-        severity over the largest severity of the table (dimensionless); None if not computed.
+    severity, severity_rel : numpy.ndarray or None
+        Secular growth rate of the mode at the root (m/s) and over the table's largest; None
+        if not computed.
     """
 
     Omega: np.ndarray
@@ -394,13 +340,9 @@ def _active(
     gamma: float,
     K: float,
 ) -> np.ndarray:
-    """Structurally non-zero forcing (memo 6.2; reading guide section 5).
-
-    The Kronecker deltas of section 6 select k; the axial projections of the forcing on the
-    zero-phase shape functions select j: int sin s over the cylinder vanishes for even j, so the
-    psi-dot^2 terms (families 4-6 at k = 0, 10-12 at k = 2) and the T0 gamma sin(K psi) term
-    (families 8, 9 at k = 1) reach odd j only (checked against the forcing computed from its
-    definition, :func:`flexbooster.memo.responses.secular_rates`, in the tests).
+    """Structurally non-zero forcing (memo 6.2): the Kronecker deltas select k, and the zero-phase
+    axial projections select odd j for the psi-dot^2 (families 4-6, 10-12) and T0 gamma
+    sin(K psi) (8, 9) terms.
     """
     pulsed = gamma != 0.0
     odd_j = (j % 2) == 1
@@ -437,18 +379,19 @@ def unstable_frequencies(
     tol: float = 1e-12,
     max_roots: int = 4_000_000,
 ) -> StabilityTable:
-    """All roots of the 13 families of stability equations in an Omega range.
+    """All roots of the 13 families in an Omega range, each once, sorted by Omega (memo 7.3).
+
+    Two crossings closer than the scan spacing (a near-tangency) may be missed, and a curve that
+    only touches a frequency is not a crossing.
 
     Parameters
     ----------
     modes : ShellModes
         Shell natural frequencies (units of omega_1) with their (d, j, k, m).
     params : callable
-        ``params(Omega_bar) -> (beta, alpha)``: the real pitch stability parameter beta,
-        shape (n,), and the beam exponents alpha_r, shape (n, R), at Omega = Omega_bar omega_1;
-        vectorised over the 1-D array Omega_bar (called with distinct values only).
+        ``params(Omega_bar) -> (beta, alpha)``, real beta (n,) and alpha_r (n, R), vectorised.
     Omega_bar_range : (float, float)
-        Range of the thrust pulsation frequency Omega / omega_1 (dimensionless).
+        Range of Omega / omega_1.
     omega_1 : float
         Reference frequency, eq. (4.2-8b) (rad/s).
     R, S : int
@@ -460,23 +403,7 @@ def unstable_frequencies(
     tol : float
         Residual to which each root is refined (units of omega_1).
     max_roots : int
-        Largest number of roots computed (memory grows with it: about 0.5 kB per root); more
-        raise :class:`TooManyRootsError` before any refinement.
-
-    Returns
-    -------
-    StabilityTable
-        Every root once, sorted by Omega.
-
-    Notes
-    -----
-    A root is found when the excitation curve crosses the shell frequency between two scan
-    points; two crossings closer together than the scan spacing (a near-tangency) may be
-    missed, and a curve that only touches a frequency is not a crossing.
-
-    References
-    ----------
-    Tech Memo 104, section 7.3; reading guide section 5.
+        Largest number of roots (about 0.5 kB each); more raise :class:`TooManyRootsError`.
     """
     omega_1 = positive("omega_1", omega_1)
     lo_W, hi_W = (float(x) for x in Omega_bar_range)
@@ -608,11 +535,8 @@ def _illinois(
 
 
 def _merge_coincident(root, t, fam, i, p, r, s, tol):
-    """Keep one row per (shell mode, root); list the other families that give the same root.
-
-    Rows sorted by (shell mode, root, family); a row joins the group of the previous kept row
-    when it has the same shell mode and its root lies within 1e3 tol max(|root|, 1).  Groups
-    are found in one vectorised pass; the labels are built for the (few) merged rows only.
+    """One row per (shell mode, root), listing the other families that give it: rows sorted by
+    (mode, root, family) join the previous kept row within 1e3 tol max(|root|, 1).
     """
     order = np.lexsort((fam, root, t))
     ro, to = root[order], t[order]

@@ -14,23 +14,13 @@ PNG_DPI = 120
 
 
 def render_figure(fig) -> tuple[str, bytes]:
-    """SVG text (reproducible ids) and PNG bytes of a figure.
-
-    The figure is laid out once (:func:`flexbooster.present.plotting.layout.lay_out_once`: its
-    layout engine, the package's tight layout for a figure without one, run once, the titles
-    fixed, the engine removed) instead of at each save (matplotlib lays a figure with a layout
-    engine out, and draws it without output, before every save), then drawn once for each
-    file.
+    """SVG text (reproducible ids) and PNG bytes of a figure, laid out once
+    (:func:`flexbooster.present.plotting.layout.lay_out_once`) and drawn once per file.
 
     Parameters
     ----------
     fig : matplotlib.figure.Figure
         The figure.
-
-    Returns
-    -------
-    (str, bytes)
-        The SVG document and the PNG bytes.
     """
     import matplotlib
     import numpy as np
@@ -56,7 +46,7 @@ def render_figure(fig) -> tuple[str, bytes]:
 
 
 def save_figure(fig, path_stem: Path) -> list[Path]:
-    """Save a matplotlib figure atomically as ``path_stem.svg`` and ``path_stem.png``.
+    """Save a figure atomically as ``path_stem.svg`` and ``path_stem.png``; returns the two paths.
 
     Parameters
     ----------
@@ -64,11 +54,6 @@ def save_figure(fig, path_stem: Path) -> list[Path]:
         The figure.
     path_stem : pathlib.Path
         Destination without suffix.
-
-    Returns
-    -------
-    list of pathlib.Path
-        The two files written.
     """
     svg, png = render_figure(fig)
     return [

@@ -33,7 +33,7 @@ __all__ = [
 
 
 def write_bytes_atomic(path: str | Path, data: bytes) -> Path:
-    """Write ``data`` to ``path`` atomically (temporary file, fsync, rename).
+    """Write ``data`` to ``path`` atomically (temporary file, fsync, rename); returns the path.
 
     Parameters
     ----------
@@ -41,11 +41,6 @@ def write_bytes_atomic(path: str | Path, data: bytes) -> Path:
         Destination file; its folder is created if needed.
     data : bytes
         Content.
-
-    Returns
-    -------
-    pathlib.Path
-        The destination path.
     """
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
@@ -70,30 +65,19 @@ def sha256_file(path: str | Path) -> str:
     ----------
     path : str or pathlib.Path
         The file.
-
-    Returns
-    -------
-    str
-        64 hex digits.
     """
     return hashlib.sha256(Path(path).read_bytes()).hexdigest()
 
 
 @contextmanager
 def locked_folder(folder: str | Path) -> Iterator[None]:
-    """An exclusive lock on ``folder`` (``fcntl.flock`` on ``folder/.flexbooster.lock``).
-
-    Concurrent writers of one output folder publish their sets one after the other.  Without
-    ``fcntl`` (Windows) the lock is a no-op.
+    """An exclusive lock on ``folder`` (``fcntl.flock`` on ``folder/.flexbooster.lock``; a no-op
+    without ``fcntl``): concurrent writers publish their sets one after the other.
 
     Parameters
     ----------
     folder : str or pathlib.Path
         The folder (it must exist).
-
-    Yields
-    ------
-    None
     """
     try:
         import fcntl
@@ -110,16 +94,9 @@ def locked_folder(folder: str | Path) -> Iterator[None]:
 
 @contextmanager
 def hold_signals() -> Iterator[None]:
-    """Hold SIGINT and SIGTERM back for a few renames, then deliver the first one held.
-
-    The Python handlers are replaced by one that only records the signal (not a thread's
-    ``pthread_sigmask``: with another thread alive, e.g. the progress bar's refresh thread,
-    the kernel hands a process-directed signal to that thread and the interrupt still breaks
-    into the renames).  In the main thread only; elsewhere a no-op.
-
-    Yields
-    ------
-    None
+    """Hold SIGINT and SIGTERM back for a few renames, then deliver the first one held (Python
+    handlers that only record the signal: a thread mask would let another thread take it). In
+    the main thread only; elsewhere a no-op.
     """
     import signal
     import threading
@@ -152,7 +129,7 @@ def _umask() -> int:
 
 
 def write_text_atomic(path: str | Path, text: str) -> Path:
-    """Write UTF-8 ``text`` to ``path`` atomically (see :func:`write_bytes_atomic`).
+    """Write UTF-8 ``text`` to ``path`` atomically (:func:`write_bytes_atomic`); returns the path.
 
     Parameters
     ----------
@@ -160,11 +137,6 @@ def write_text_atomic(path: str | Path, text: str) -> Path:
         Destination file; its folder is created if needed.
     text : str
         Content.
-
-    Returns
-    -------
-    pathlib.Path
-        The destination path.
     """
     return write_bytes_atomic(path, text.encode("utf-8"))
 
@@ -191,24 +163,15 @@ def check_finite(data: Any, where: str = "results") -> None:
 
 
 def dumps_finite(data: Any, **kwargs: Any) -> str:
-    """``json.dumps`` that refuses NaN and infinity, naming the first offending path.
+    """``json.dumps`` that refuses NaN and infinity with a ValueError naming the first offending
+    path (:func:`check_finite`).
 
     Parameters
     ----------
     data : object
         JSON-ready data (mappings, lists, numbers, strings).
     **kwargs
-        Passed to :func:`json.dumps` (e.g. ``indent``, ``separators``).
-
-    Returns
-    -------
-    str
-        The JSON text.
-
-    Raises
-    ------
-    ValueError
-        ``"<path> = nan: a result must be finite (internal error)"`` (:func:`check_finite`).
+        Passed to :func:`json.dumps`.
     """
     try:
         return json.dumps(data, allow_nan=False, **kwargs)
@@ -218,7 +181,7 @@ def dumps_finite(data: Any, **kwargs: Any) -> str:
 
 
 def write_json_atomic(path: str | Path, data: Mapping[str, Any]) -> Path:
-    """Write a mapping as JSON atomically; NaN and infinity are refused.
+    """Write a mapping as JSON atomically, NaN and infinity refused; returns the path.
 
     Parameters
     ----------
@@ -226,11 +189,6 @@ def write_json_atomic(path: str | Path, data: Mapping[str, Any]) -> Path:
         Destination file.
     data : Mapping
         JSON-ready data (plain lists, floats, strings).
-
-    Returns
-    -------
-    pathlib.Path
-        The destination path.
     """
     # compact: results hold long arrays, which indentation would put one number per line
     return write_text_atomic(path, dumps_finite(data, separators=(",", ":")) + "\n")
@@ -238,20 +196,15 @@ def write_json_atomic(path: str | Path, data: Mapping[str, Any]) -> Path:
 
 def write_csv_atomic(path: str | Path,
                      table: Iterable[Mapping[str, Any]] | Mapping[str, list]) -> Path:
-    """Write a table as CSV atomically.
+    """Write a table as CSV atomically; returns the path.
 
     Parameters
     ----------
     path : str or pathlib.Path
         Destination file.
     table : Mapping of str to list, or iterable of Mapping
-        By columns (name -> values, all of one length) or by rows (mappings with the same
-        keys; the keys of the first row are the header).
-
-    Returns
-    -------
-    pathlib.Path
-        The destination path.
+        By columns (name -> values of one length) or by rows (the first row's keys are the
+        header).
     """
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")

@@ -48,7 +48,8 @@ STAGING_PREFIX = ".flexbooster-staging-"
 
 
 def publish_set(stage: str | Path, folder: str | Path, names: list[str]) -> list[Path]:
-    """Move the files ``names`` of ``stage`` into ``folder`` as one set, the manifest last.
+    """Move the files ``names`` of ``stage`` into ``folder`` as one set, :data:`MANIFEST` last;
+    returns their paths.
 
     Parameters
     ----------
@@ -58,11 +59,6 @@ def publish_set(stage: str | Path, folder: str | Path, names: list[str]) -> list
         Output folder.
     names : list of str
         File names of the set (in ``stage``).
-
-    Returns
-    -------
-    list of pathlib.Path
-        The paths in ``folder``, :data:`MANIFEST` last.
     """
     stage, folder = Path(stage), Path(folder)
     hashes = {name: sha256_file(stage / name) for name in names}
@@ -88,22 +84,13 @@ def _manifest_files(folder: Path) -> dict[str, str]:
 
 
 def check_output_set(folder: str | Path) -> dict[str, str]:
-    """Verify that ``folder`` holds one complete output set (the reader's check).
+    """Verify that ``folder`` holds one complete output set: file name -> SHA-256; ValueError for
+    no manifest or a file missing or different (a mixed set).
 
     Parameters
     ----------
     folder : str or pathlib.Path
         An output folder of :func:`write_outputs`.
-
-    Returns
-    -------
-    dict of str to str
-        File name -> SHA-256 of the set.
-
-    Raises
-    ------
-    ValueError
-        No manifest, or a file missing or different from the manifest (a mixed set).
     """
     folder = Path(folder)
     files = _manifest_files(folder)
@@ -123,7 +110,9 @@ def write_outputs(
     figures: bool = True,
     progress: Callable[[str], None] | None = None,
 ) -> list[Path]:
-    """Write every output of an analysis into ``folder`` as one set.
+    """Write every output of an analysis into ``folder`` as one set: results.json, the CSV tables,
+    the figures, report.html and last :data:`MANIFEST`, staged and moved together
+    (:func:`publish_set`). Returns the files written.
 
     Parameters
     ----------
@@ -135,18 +124,6 @@ def write_outputs(
         Also draw and save the figures (SVG and PNG); the report then embeds them.
     progress : callable, optional
         Called with the name of each stage (:data:`OUTPUT_STAGES`) as it starts.
-
-    Returns
-    -------
-    list of pathlib.Path
-        The files written: results.json, the CSV tables, the figures, report.html and last
-        :data:`MANIFEST` (each file with its SHA-256).
-
-    Notes
-    -----
-    The files are written into a staging folder inside ``folder`` and moved into place
-    together (:func:`publish_set`), so an interrupted or a concurrent run never leaves a mixed
-    set; :func:`check_output_set` verifies one.
     """
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
@@ -248,20 +225,15 @@ def _drawn(results: Results, names: tuple[str, ...],
 
 
 def render_figures(results: Results, *, processes: int = 1) -> dict[str, tuple[str, bytes]]:
-    """SVG text and PNG bytes of every figure of :func:`make_figures`, by name.
+    """SVG text and PNG bytes of every figure of :func:`make_figures`, by name, in the order of
+    :func:`figure_names`.
 
     Parameters
     ----------
     results : Results
         The analysis.
     processes : int
-        Processes that draw the figures (>= 1; 1: this one), as :func:`write_outputs` does
-        with the usable CPUs; the bytes are the same.
-
-    Returns
-    -------
-    dict of str to (str, bytes)
-        Figure name -> (SVG document, PNG bytes), in the order of :func:`figure_names`.
+        Processes that draw the figures (>= 1; 1: this one); the bytes are the same.
     """
     names = figure_names(results)
     with _drawn(results, names, processes) as drawn:
@@ -275,11 +247,6 @@ def figure_svgs(results: Results) -> dict[str, str]:
     ----------
     results : Results
         The analysis.
-
-    Returns
-    -------
-    dict of str to str
-        Figure name -> SVG document.
     """
     return {name: svg for name, (svg, _) in render_figures(results).items()}
 
@@ -298,11 +265,6 @@ def figure_names(results: Results) -> tuple[str, ...]:
     ----------
     results : Results
         The analysis.
-
-    Returns
-    -------
-    tuple of str
-        Empty when the results hold no figure data.
     """
     data = results.figures
     if data is None:
@@ -325,24 +287,17 @@ def figure_names(results: Results) -> tuple[str, ...]:
 
 
 def make_figures(results: Results, *, names=None) -> dict[str, Figure]:
-    """Draw the figures of an analysis (matplotlib, Agg backend) from its stored data.
+    """Draw the figures of an analysis (matplotlib, Agg) from its stored data, by file stem:
+    ``danger-map``, ``ince-strutt``, ``beam-modes``, ``shell-frequencies-cylinder1/2``,
+    ``nodal-patterns``, ``pitch-band-chart``, ``beam-action-chart``, ``campbell`` and the
+    vehicle's ``vehicle-mode-shapes``, ``vehicle-unrolled``, ``vehicle-regions`` as computed.
 
     Parameters
     ----------
     results : Results
-        The analysis; ``results.figures`` holds every curve drawn (nothing is recomputed).
+        The analysis; ``results.figures`` holds every curve drawn.
     names : iterable of str, optional
         Draw only these (names from :func:`figure_names`); default all.
-
-    Returns
-    -------
-    dict of str to matplotlib.figure.Figure
-        By file stem: ``danger-map`` (when ``results.danger`` is set), ``ince-strutt``,
-        ``beam-modes``, ``shell-frequencies-cylinder1``,
-        ``shell-frequencies-cylinder2``, ``nodal-patterns``, ``pitch-band-chart`` and,
-        when they were computed, ``beam-action-chart`` and ``campbell``; for a case with
-        ``[vehicle]`` also ``vehicle-mode-shapes`` and ``vehicle-unrolled``; with the
-        vehicle's parametric regions ``vehicle-regions``.
     """
     import matplotlib
 

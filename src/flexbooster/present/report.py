@@ -1,14 +1,11 @@
 """The analysis report: one self-contained HTML file (``report.html``).
 
-A thin layer over :class:`~flexbooster.analysis.Results`: it formats what the analysis computed
-and computes nothing new.  The file has no external resource: the style sheet is inline, the
-figures are inline SVG (matplotlib; ids prefixed per figure), and there is no script.  Every text is
-escaped; a number that is not finite is shown as "n/a", never as NaN.  The markup is also
-well-formed XML (polyglot HTML5), which is what the tests check with a strict parser.
-
-Sections, by ``id``: ``summary``, ``inputs``, ``mass-properties``, ``frequencies``,
-``beam-modes``, ``rigid-body``, ``beam-action``, ``shell-frequencies``, ``nodal-patterns``,
-``unstable-frequencies``, ``campbell``, ``vehicle-regions``, ``verification``, ``warnings``.
+It formats what the analysis computed: inline style sheet, inline SVG figures (ids prefixed
+per figure), no script; every text escaped, a non-finite number shown as "n/a"; the markup
+is well-formed XML (polyglot HTML5). Sections by ``id``: ``summary``, ``inputs``,
+``mass-properties``, ``frequencies``, ``beam-modes``, ``rigid-body``, ``beam-action``,
+``shell-frequencies``, ``nodal-patterns``, ``unstable-frequencies``, ``campbell``,
+``vehicle-regions``, ``verification``, ``warnings``.
 """
 
 from __future__ import annotations
@@ -299,12 +296,9 @@ def _hz(rad_s: float) -> float:
 
 
 def inline_svg(svg: str, prefix: str, label: str) -> str:
-    """Make a matplotlib SVG document embeddable in HTML.
-
-    The XML declaration, DOCTYPE, metadata and the global style element are dropped, every
-    ``id`` (and every reference to it) is prefixed with ``prefix`` so that several figures can
-    share one page, and the root gets ``role="img"``, an ``aria-label`` and the class
-    ``figure``.
+    """The ``<svg>`` element of a matplotlib SVG document, embeddable in HTML: declaration,
+    DOCTYPE, metadata and global style dropped, every ``id`` prefixed, ``role="img"``, an
+    ``aria-label`` and the class ``figure`` on the root.
 
     Parameters
     ----------
@@ -314,11 +308,6 @@ def inline_svg(svg: str, prefix: str, label: str) -> str:
         Prefix of the ids, e.g. the figure name.
     label : str
         Accessible name of the image.
-
-    Returns
-    -------
-    str
-        The ``<svg>`` element.
     """
     start = svg.find("<svg")
     if start < 0:
@@ -641,24 +630,18 @@ def _source_date() -> str:
 
 def render_report(results: Results, svgs: Mapping[str, str] | None = None,
                   generated: str | None = None) -> str:
-    """The report of an analysis as one HTML document.
+    """The report of an analysis as one HTML document (UTF-8, no external resource).
 
     Parameters
     ----------
     results : Results
         The analysis.
     svgs : Mapping of str to str, optional
-        SVG text of the figures by name (the keys of :data:`FIGURES`), as returned by
-        :func:`flexbooster.present.outputs.figure_svgs`; missing figures are replaced by a note.
+        SVG text of the figures by name (the keys of :data:`FIGURES`), as
+        :func:`flexbooster.present.outputs.figure_svgs` returns them; a missing one is a note.
     generated : str, optional
-        Time stamp printed in the header; by default the time given by the environment
-        variable ``SOURCE_DATE_EPOCH`` (seconds since 1970, UTC: reproducible builds), else
-        none, so that two runs of one case write the same file.
-
-    Returns
-    -------
-    str
-        The HTML text (UTF-8, no external resource).
+        Time stamp of the header; by default from ``SOURCE_DATE_EPOCH`` (UTC), else none (two
+        runs of one case write the same file).
     """
     stamp = f", {generated}" if generated else _source_date()
     case = results.case
@@ -705,7 +688,7 @@ def render_report(results: Results, svgs: Mapping[str, str] | None = None,
 
 def write_report(results: Results, path: str | Path, svgs: Mapping[str, str] | None = None,
                  generated: str | None = None) -> Path:
-    """Write :func:`render_report` to ``path`` atomically (via ``io.write_text_atomic``).
+    """Write :func:`render_report` to ``path`` atomically; returns the path.
 
     Parameters
     ----------
@@ -717,10 +700,5 @@ def write_report(results: Results, path: str | Path, svgs: Mapping[str, str] | N
         Figures by name (see :func:`render_report`).
     generated : str, optional
         Time stamp of the header.
-
-    Returns
-    -------
-    pathlib.Path
-        The path written.
     """
     return write_text_atomic(path, render_report(results, svgs, generated))

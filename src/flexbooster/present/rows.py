@@ -51,16 +51,12 @@ Row = tuple[str, object, str]
 
 
 def input_rows(results: Results) -> list[Row]:
-    """The case's input in SI.
+    """The case's input in SI, as (quantity, value, unit) rows.
 
     Parameters
     ----------
     results : Results
         The analysis.
-
-    Returns
-    -------
-    list of (str, object, str)
     """
     case = results.case
     b, t, n = case.booster, case.thrust, case.truncation
@@ -92,8 +88,8 @@ def input_rows(results: Results) -> list[Row]:
 
 
 def with_us_units(results: Results, rows: list[Row]) -> list[Row]:
-    """The rows with the inch-pound value beside SI when the case asks ``[output] units =
-    "US"`` ("5.05 (198.819 in)"); unchanged otherwise or for units without a US counterpart.
+    """The rows with the inch-pound value beside SI ("5.05 (198.819 in)") when the case asks
+    ``[output] units = "US"``; unchanged otherwise or for units without a US counterpart.
 
     Parameters
     ----------
@@ -101,10 +97,6 @@ def with_us_units(results: Results, rows: list[Row]) -> list[Row]:
         The analysis (its ``case.output.units``).
     rows : list of (str, object, str)
         Quantity / value / SI unit rows.
-
-    Returns
-    -------
-    list of (str, object, str)
     """
     output = getattr(results.case, "output", None)
     if output is None or output.units != "US":
@@ -130,10 +122,6 @@ def mass_rows(results: Results) -> list[Row]:
     ----------
     results : Results
         The analysis.
-
-    Returns
-    -------
-    list of (str, object, str)
     """
     m = results.mass
 
@@ -161,10 +149,6 @@ def frequency_rows(results: Results) -> list[Row]:
     ----------
     results : Results
         The analysis.
-
-    Returns
-    -------
-    list of (str, object, str)
     """
     g = results.groups
     two_pi = 2.0 * math.pi
@@ -186,16 +170,12 @@ def frequency_rows(results: Results) -> list[Row]:
 
 
 def range_text(lo: float, hi: float) -> str:
-    """'lo-hi' with the fewest significant digits (>= 4, <= 10) that tell the edges apart.
+    """'lo-hi' with the fewest significant digits (4..10) that tell the edges apart.
 
     Parameters
     ----------
     lo, hi : float
         Edges (any unit).
-
-    Returns
-    -------
-    str
     """
     for digits in range(4, 11):
         a, b = f"{lo:.{digits}g}", f"{hi:.{digits}g}"
@@ -211,10 +191,6 @@ def verdict_rows(results: Results) -> list[tuple[str, str]]:
     ----------
     results : Results
         The analysis.
-
-    Returns
-    -------
-    list of (str, str)
     """
     if results.danger is None:
         return [("all mechanisms", "not computed")]
@@ -229,11 +205,7 @@ def danger_rows(results: Results, limit: int = FIRST_SCREEN_BANDS) -> list[tuple
     results : Results
         The analysis.
     limit : int
-        Rows shown (dimensionless), >= 0.
-
-    Returns
-    -------
-    list of tuple of str
+        Rows shown, >= 0.
     """
     if results.danger is None:
         return []
@@ -260,17 +232,13 @@ MEMO_ROOT_HEADER = ("region (k, kind, j, Omega rad/s)", "root Omega (rad/s)", "f
 
 
 def region_modes_words(region) -> str:
-    """The modes of a vehicle region in words, e.g. "mode 1 (radial, order 0) + mode 2
-    (axial, order 1)" (1-based loaded-mode index within its harmonic k).
+    """The modes of a vehicle region in words, e.g. "mode 1 (radial, order 0) + mode 2 (axial,
+    order 1)" (1-based loaded-mode index within its harmonic k).
 
     Parameters
     ----------
     region : Band
         One region of :class:`flexbooster.dynamics.VehicleRegions`.
-
-    Returns
-    -------
-    str
     """
     return " + ".join(f"mode {m.index + 1} ({m.type}, order {m.order})" for m in region.modes)
 
@@ -280,17 +248,13 @@ def _hz(x: float) -> float:
 
 
 def vehicle_region_verdict(results: Results) -> tuple[str, bool]:
-    """One line on the vehicle's parametric regions, and whether the vehicle is stable.
+    """(verdict line, stable) of the vehicle's parametric regions; stable when no region reaches
+    the Omega range (or none was computed).
 
     Parameters
     ----------
     results : Results
         The analysis.
-
-    Returns
-    -------
-    (str, bool)
-        The verdict; True when no region reaches the Omega range (or none was computed).
     """
     vr = results.vehicle_regions
     if vr is None:
@@ -318,10 +282,6 @@ def vehicle_region_rows(results: Results) -> list[Row]:
     ----------
     results : Results
         The analysis (``results.vehicle_regions`` not None).
-
-    Returns
-    -------
-    list of (str, object, str)
     """
     vr = results.vehicle_regions
     verdict, _ = vehicle_region_verdict(results)
@@ -367,19 +327,14 @@ FORCED_AXIAL_HEADER = ("Omega rad/s", "Omega Hz", "mode (k = 0)", "static flexib
 
 
 def forced_axial_rows(results: Results) -> list[tuple]:
-    """The k = 0 forced resonances of the vehicle (the memo's family 3), one row each.
+    """The k = 0 forced resonances (memo family 3), one row each: Omega (rad/s, Hz), the mode,
+    phi_n^2 / omega_n^2 (m/N), the resonant amplitude per unit axial load (m/N; "-" undamped)
+    and for the case's gamma F0 (m).
 
     Parameters
     ----------
     results : Results
         The analysis.
-
-    Returns
-    -------
-    list of tuple
-        Omega (rad/s, Hz), the mode in words, the aft-edge static modal flexibility
-        phi_n^2 / omega_n^2 (m/N), the resonant amplitude per unit axial aft load (m/N;
-        "-" without damping: unbounded) and that amplitude for the case's gamma F0 (m).
     """
     vr = results.vehicle_regions
     fa = None if vr is None else getattr(vr, "forced_axial", None)
@@ -392,19 +347,14 @@ def forced_axial_rows(results: Results) -> list[tuple]:
 
 
 def vehicle_region_table(results: Results) -> list[tuple]:
-    """The vehicle regions by decreasing growth rate, one row per region (:data:`REGION_HEADER`).
+    """The vehicle regions by decreasing growth rate (:data:`REGION_HEADER`): Omega range (rad/s,
+    Hz), k, modes, kind, j, growth rate (1/s), critical gamma, and whether an active memo root
+    lies inside ("-": not compared).
 
     Parameters
     ----------
     results : Results
         The analysis.
-
-    Returns
-    -------
-    list of tuple
-        Omega range (rad/s, Hz), k, modes in words, kind, j, growth rate (1/s), critical
-        gamma, and whether a memo-table root with active forcing lies inside ("no": no memo
-        resonance explains the region; "-": not compared).
     """
     vr = results.vehicle_regions
     if vr is None:
@@ -424,19 +374,12 @@ def vehicle_region_table(results: Results) -> list[tuple]:
 
 
 def memo_root_rows(results: Results) -> list[tuple]:
-    """The memo-table roots inside the vehicle regions, one row per pair
-    (:data:`MEMO_ROOT_HEADER`).
+    """The memo-table roots inside the vehicle regions, one row per pair (:data:`MEMO_ROOT_HEADER`).
 
     Parameters
     ----------
     results : Results
         The analysis.
-
-    Returns
-    -------
-    list of tuple
-        Region, root Omega (rad/s), family, shell mode, forcing, same k, severity ("-" where
-        the stability table has no severity).
     """
     m, vr = results.memo_roots_in_regions, results.vehicle_regions
     if m is None or vr is None:
@@ -458,7 +401,8 @@ BAND_COLUMNS = ("#", "Omega rad/s", "Hz", "band rad/s", "severity m/s", "rel.",
 
 
 def band_rows(results: Results, limit: int = 10) -> list[tuple[str, ...]]:
-    """The most severe resonance bands as text rows (:data:`BAND_COLUMNS`), most severe first.
+    """The most severe resonance bands as text rows (:data:`BAND_COLUMNS`), most severe first;
+    empty without the severity.
 
     Parameters
     ----------
@@ -466,11 +410,6 @@ def band_rows(results: Results, limit: int = 10) -> list[tuple[str, ...]]:
         The analysis (its stored ``severity.bands``).
     limit : int
         Largest number of rows.
-
-    Returns
-    -------
-    list of tuple of str
-        Empty if the severity was not computed.
     """
     sev = getattr(results, "severity", None)
     if sev is None:
@@ -490,17 +429,13 @@ def band_rows(results: Results, limit: int = 10) -> list[tuple[str, ...]]:
 
 
 def severity_caption(results: Results) -> str:
-    """One sentence: what the severity is, its reference amplitudes and what "active" means.
+    """One sentence: what the severity is, its reference amplitudes and what "active" means
+    (empty without the severity).
 
     Parameters
     ----------
     results : Results
         The analysis.
-
-    Returns
-    -------
-    str
-        Empty if the severity was not computed.
     """
     sev = getattr(results, "severity", None)
     st = results.stability

@@ -125,18 +125,13 @@ def print_vehicle_summary(survey: VehicleSurvey, console: Console) -> None:
 
 
 def vehicle_figure_names(survey: VehicleSurvey) -> tuple[str, ...]:
-    """The names of the figures :func:`vehicle_figures` draws for these modes.
+    """The names of the figures :func:`vehicle_figures` draws: ``vehicle-mode-shapes`` and, with
+    selected modes, ``vehicle-unrolled``; empty without stored views.
 
     Parameters
     ----------
     survey : VehicleSurvey
         The stored vehicle modes.
-
-    Returns
-    -------
-    tuple of str
-        ``vehicle-mode-shapes`` and, when modes were selected for it, ``vehicle-unrolled``;
-        empty without stored views.
     """
     if survey.views is None:
         return ()
@@ -146,7 +141,7 @@ def vehicle_figure_names(survey: VehicleSurvey) -> tuple[str, ...]:
 
 
 def vehicle_figures(survey: VehicleSurvey, *, names=None) -> dict[str, Figure]:
-    """The figures of the vehicle modes, drawn from the stored views.
+    """The figures of the vehicle modes, drawn from the stored views, by name.
 
     Parameters
     ----------
@@ -154,11 +149,6 @@ def vehicle_figures(survey: VehicleSurvey, *, names=None) -> dict[str, Figure]:
         The stored vehicle modes; no figure without ``views``.
     names : iterable of str, optional
         Only these of :func:`vehicle_figure_names` (default all).
-
-    Returns
-    -------
-    dict of str to matplotlib.figure.Figure
-        ``vehicle-mode-shapes`` and, when modes were selected for it, ``vehicle-unrolled``.
     """
     available = vehicle_figure_names(survey)
     wanted = [n for n in (available if names is None else names) if n in available]
@@ -175,7 +165,8 @@ def vehicle_figures(survey: VehicleSurvey, *, names=None) -> dict[str, Figure]:
 
 def write_vehicle_files(survey: VehicleSurvey, folder: str | Path, *,
                         figures: bool = True) -> list[Path]:
-    """Write ``modes.json``, ``vehicle-modes.csv`` and the figures (``flexbooster modes -o``).
+    """Write ``modes.json``, ``vehicle-modes.csv`` and the figures (``flexbooster modes -o``);
+    returns the files written.
 
     Parameters
     ----------
@@ -185,11 +176,6 @@ def write_vehicle_files(survey: VehicleSurvey, folder: str | Path, *,
         Output folder (created if needed).
     figures : bool
         Also draw the figures (SVG and PNG).
-
-    Returns
-    -------
-    list of pathlib.Path
-        The files written.
     """
     from .figure_files import save_figure
 
@@ -213,18 +199,13 @@ SUMMARY_REGION_ROWS = 15
 
 
 def vehicle_region_columns(regions: VehicleRegions) -> dict[str, list]:
-    """The regions by columns (:data:`VEHICLE_REGION_CSV_COLUMNS`) for ``vehicle-regions.csv``.
+    """The regions by columns (:data:`VEHICLE_REGION_CSV_COLUMNS`) for ``vehicle-regions.csv``:
+    growth rate in 1/s, modes in words, ``mode_indices`` 0-based joined by "+".
 
     Parameters
     ----------
     regions : VehicleRegions
         The stored regions (rad/s).
-
-    Returns
-    -------
-    dict of str to list
-        ``growth_rate_max`` in 1/s, ``critical_gamma`` dimensionless, ``modes`` in words,
-        ``mode_indices`` the 0-based loaded-mode indices joined by "+".
     """
     two_pi = 2.0 * np.pi
     rs = regions.regions
@@ -254,7 +235,7 @@ def print_vehicle_regions(results: Results, console: Console) -> None:
     Parameters
     ----------
     results : Results
-        The analysis (nothing is printed but "not computed" without regions).
+        The analysis ("not computed" without regions).
     console : rich.console.Console
         Where to print.
     """
@@ -304,17 +285,12 @@ def _value(v: object) -> str:
 
 
 def vehicle_region_figures(results: Results) -> dict[str, Figure]:
-    """The vehicle region chart, drawn from the stored regions and curves.
+    """The vehicle region chart ``vehicle-regions``, drawn from the stored regions and curves.
 
     Parameters
     ----------
     results : Results
         The analysis; no figure without ``results.vehicle_regions``.
-
-    Returns
-    -------
-    dict of str to matplotlib.figure.Figure
-        ``vehicle-regions`` (the (Omega, gamma) chart).
     """
     if results.vehicle_regions is None:
         return {}

@@ -1,21 +1,12 @@
 """The whole vehicle as one thin shell of revolution (BOSOR-class Fourier-harmonic FE).
 
-Build a :class:`Vehicle` of :class:`Cylinder` and :class:`Cone` segments (aft to forward),
-then:
+A :class:`Vehicle` of :class:`Cylinder` and :class:`Cone` segments; :func:`vehicle_modes`
+(frequencies and labelled shapes, optionally prestressed), :func:`system_matrices` (M, K_e,
+K_g of one harmonic), :func:`modal_system` / :func:`labelled_modal_system` (reduced to the
+lowest loaded modes), :func:`buckling_load`. Theory: docs/theory/shell-of-revolution.md.
 
-* :func:`vehicle_modes` - natural frequencies and labelled mode shapes for k = 0..k_max,
-  optionally under the thrust prestress;
-* :func:`system_matrices` - M, K_e, K_g of one harmonic;
-* :func:`modal_system` - the same reduced to the lowest modes loaded by the thrust;
-  :func:`labelled_modal_system` also gives their labels (one eigensolution for both);
-* :func:`buckling_load` - linear buckling load factors of one harmonic.
-
-Theory, tests and limitations: ``docs/theory/shell-of-revolution.md``.
-
-References
-----------
-.. [1] H. Kraus, *Thin Elastic Shells*, 1967; A. W. Leissa, NASA SP-288, 1973;
-   D. Bushnell, Computers & Structures 4, 1974 (BOSOR).
+References: H. Kraus, *Thin Elastic Shells*, 1967; A. W. Leissa, NASA SP-288, 1973;
+D. Bushnell, Computers & Structures 4 (1974) (BOSOR).
 """
 
 from __future__ import annotations

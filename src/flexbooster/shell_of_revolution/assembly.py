@@ -1,35 +1,16 @@
 """Meridian mesh, DOF map with the end and junction constraints, and global matrices per k.
 
-Every segment is cut into equal conical elements (:func:`mesh_vehicle`).  Node DOFs are
-(a, v, b, chi): in the element's local frame (a = u meridional, b = w normal) inside a segment
-and at the two ends of the vehicle, in the global frame (a = u_x axial, b = u_r radial) at the
-junction nodes, which each segment keeps for itself; chi = dw/ds is the meridional rotation, a
-global angle.  Each element transforms its end DOFs to its local (u, w) by the rotation
-through its meridian angle (Zienkiewicz & Taylor vol. 2, sec. 10.3).
+Segments are cut into conical elements; node DOFs (a, v, b, chi) are element-local (u, w)
+inside a segment and at the ends, global (u_x, u_r) at junction nodes (each segment keeps
+its own), chi = dw/ds (Zienkiewicz & Taylor vol. 2, sec. 10.3). Constraints map every full
+DOF to one reduced DOF with a coefficient +-1, or eliminate it: ends "free",
+"shear-diaphragm", "hinged", "clamped"; junctions "continuous", "rigid-bulkhead" (a rigid
+weightless disc hinged to both edges) and "memo-bulkhead" (rigid in its plane only: a shear
+diaphragm for k >= 2, memo appendix D-II). Kinematics table: docs/theory/shell-of-revolution.md.
 
-Constraints map every "full" DOF to one reduced DOF with a coefficient +-1, or eliminate it:
-
-* ends: ``"free"`` nothing; ``"shear-diaphragm"`` v = w = 0 (N_s = M_s = 0 natural);
-  ``"hinged"`` u = v = w = 0 (M_s = 0); ``"clamped"`` u = v = w = dw/ds = 0.
-* ``"continuous"`` junction: u_x, u_r, v, chi equal on both sides.
-* ``"rigid-bulkhead"``: a rigid, weightless disc hinged to both edges (it carries no moment:
-  chi free on each side).  k = 0: both edges share the disc's axial translation (u_x equal)
-  and its rotation about the axis (v / r equal), u_r = 0; k = 1: they share its lateral
-  translation (u_r = -v = D on both sides) and its tilt (u_x / r equal); k >= 2: a rigid
-  disc has no such motion, u_x = u_r = v = 0 on both edges (each shell sees a hinged edge).
-* ``"memo-bulkhead"``: the memo's disc, rigid in its plane but without out-of-plane
-  stiffness for k >= 2: as ``"rigid-bulkhead"`` for k <= 1; for k >= 2 u_r = v = 0 and u_x
-  free on each side (each shell sees a shear diaphragm, Tech Memo 104 appendix D-II).
-
-The bulkheads allow different radii on the two sides (the disc is an annulus between them).
-
-References
-----------
-.. [1] O. C. Zienkiewicz, R. L. Taylor, *The Finite Element Method*, vol. 2, 5th ed., 2000,
-   sec. 10.3 (axisymmetric shells, transformation to global DOFs at nodes).
-.. [2] D. Bushnell, Computers & Structures 4, 1974, 399-435 (BOSOR: segments, constraint
-   conditions at junctions).
-.. [3] Tech Memo 104, Fig. 1 and appendix D-II (rigid weightless bulkheads).
+References: O. C. Zienkiewicz, R. L. Taylor, *The Finite Element Method*, vol. 2, 2000,
+sec. 10.3; D. Bushnell, Computers & Structures 4 (1974) 399-435 (BOSOR); Tech Memo 104,
+Fig. 1 and appendix D-II.
 """
 
 from __future__ import annotations
@@ -75,11 +56,8 @@ EDGE_ELEMENT = 3.0
 
 
 def _auto_breaks(seg, meridian: float, order: int) -> np.ndarray:
-    """Graded element breakpoints (0..meridian, m) of a segment for the automatic mesh.
-
-    The first element at each end is l_b = 2 sqrt(R h) (6 / p) long (the edge-effect decay
-    length is about 2.4 sqrt(R h), Kraus sec. 7.3); the lengths grow by GRADING towards the
-    middle up to l_max = MAX_ELEMENT_RADII R_max (then uniform in the middle).
+    """Graded element breakpoints (0..meridian, m) of a segment: first element l_b = 2 sqrt(R h)
+    (6 / p) at each end (Kraus sec. 7.3), growing by GRADING up to MAX_ELEMENT_RADII R_max.
     """
     rmax = max(seg.radius_aft, seg.radius_fwd)
     l_b = EDGE_ELEMENT * math.sqrt(rmax * seg.thickness) * 6.0 / order
@@ -111,22 +89,12 @@ def mesh_vehicle(
     vehicle : Vehicle
         The vehicle.
     elements_per_segment : int or sequence of int, optional
-        Elements per segment (dimensionless), 1..400, one value for all or one per segment;
-        default (None): a graded mesh per segment, first element 3 sqrt(R h) (6 / p) at
-        each end (the bending boundary-layer length is 2.4 sqrt(R h), Kraus sec. 7.3),
-        lengths growing by 2.5 towards the middle up to 3 R (see ``docs/theory``).
+        Elements per segment, 1..400, one for all or one per segment; None: a graded mesh
+        (docs/theory/shell-of-revolution.md; Kraus 1967, sec. 7.3).
     order : int
-        Polynomial degree p (dimensionless), 3..12.
+        Polynomial degree p, 3..12.
     refinement : int
-        Split every element into this many equal ones (dimensionless), 1..64.
-
-    Returns
-    -------
-    Mesh
-
-    References
-    ----------
-    .. [1] H. Kraus, *Thin Elastic Shells*, 1967, sec. 7.3 (edge-effect decay length).
+        Split every element into this many equal ones, 1..64.
     """
     order = count("order", order, 3, 12)
     refinement = count("refinement", refinement, 1, 64)
@@ -221,17 +189,12 @@ class DofMap:
     n: int
 
     def expand(self, reduced: np.ndarray) -> np.ndarray:
-        """Full DOF values of reduced vectors.
+        """Full DOF values (..., n_full) of reduced vectors (..., n), 0 where eliminated.
 
         Parameters
         ----------
         reduced : ndarray, shape (..., n)
-            Reduced DOF values (m or rad, as the DOFs).
-
-        Returns
-        -------
-        ndarray, shape (..., n_full)
-            Full DOF values, 0 where eliminated.
+            Reduced DOF values (m or rad).
         """
         reduced = np.asarray(reduced)
         pad = np.concatenate([reduced, np.zeros(reduced.shape[:-1] + (1,))], axis=-1)
@@ -243,7 +206,7 @@ def _k_class(k: int) -> int:
 
 
 def dof_map(vehicle: Vehicle, mesh: Mesh, k: int) -> DofMap:
-    """Constraint map of the end conditions and junctions for harmonic k.
+    """Constraint map of the end conditions and junctions for harmonic k (Leissa 1973 sec. 1.6).
 
     Parameters
     ----------
@@ -252,16 +215,7 @@ def dof_map(vehicle: Vehicle, mesh: Mesh, k: int) -> DofMap:
     mesh : Mesh
         Mesh of the vehicle.
     k : int
-        Circumferential wave number (dimensionless), >= 0.
-
-    Returns
-    -------
-    DofMap
-
-    References
-    ----------
-    .. [1] Leissa 1973 sec. 1.6 (edge conditions); Tech Memo 104 Fig. 1 (bulkheads); see the
-       module docstring for the bulkhead kinematics.
+        Circumferential wave number, >= 0.
     """
     k = count("k", k, 0, 200)
     segs = vehicle.segments
@@ -318,17 +272,12 @@ def _dof_map(aft_end, fwd_end, junctions, end_nodes, n_full, kc, radii) -> DofMa
 
 
 def node_transform(mesh: Mesh) -> np.ndarray:
-    """Node-frame -> element-local rotation of the (u, w) pairs of every element.
+    """Node-frame -> element-local rotation of the (u, w) pairs, shape (e, n_dof, n_dof).
 
     Parameters
     ----------
     mesh : Mesh
         The mesh (its node frames and element meridian angles).
-
-    Returns
-    -------
-    numpy.ndarray
-        Shape (e, n_dof, n_dof): element DOFs in the local frame = T @ node-frame DOFs.
     """
     ne = mesh.n_elements
     nd = mesh.dofs.shape[1]
@@ -356,16 +305,8 @@ def thrust_prestate(vehicle: Vehicle, mesh: Mesh, F0: float, *,
     F0 : float
         Thrust at the aft edge (N).
     supported_forward_end : bool or None
-        Load path (:func:`.prestress.load_path`): None from the ends, True the nose reacts
-        the thrust (uniform compression), False inertia relief.
-
-    Returns
-    -------
-    Prestate
-
-    References
-    ----------
-    .. [1] Flügge 1973 sec. 2.2; see :mod:`.prestress`.
+        Load path (:func:`.prestress.load_path`): None from the ends, True the nose reacts the
+        thrust, False inertia relief.
     """
     F0 = finite("prestress_F0", F0)
     path = load_path(vehicle, supported_forward_end)
@@ -376,7 +317,8 @@ def thrust_prestate(vehicle: Vehicle, mesh: Mesh, F0: float, *,
 
 
 def element_set(vehicle: Vehicle, mesh: Mesh, k: int, *, prestate: Prestate | None = None):
-    """Element matrices of harmonic k rotated to the node frames.
+    """Element matrices M (kg), K_e, K_g (N/m) of harmonic k in the node frames (T^T K T), each
+    (e, n_dof, n_dof); K_g None without ``prestate`` (rings: :func:`ring_matrix`).
 
     Parameters
     ----------
@@ -385,19 +327,9 @@ def element_set(vehicle: Vehicle, mesh: Mesh, k: int, *, prestate: Prestate | No
     mesh : Mesh
         Mesh of the vehicle.
     k : int
-        Circumferential wave number (dimensionless), >= 0.
+        Circumferential wave number, >= 0.
     prestate : Prestate, optional
-        Membrane prestate whose element geometric stiffness is wanted (None: no K_g).
-
-    Returns
-    -------
-    M, K_e, K_g : ndarray, shape (e, n_dof, n_dof)
-        Mass (kg), elastic and geometric stiffness (N/m); K_g is None without ``prestate``
-        (the rings' part is :func:`ring_matrix`).
-
-    References
-    ----------
-    .. [1] Zienkiewicz & Taylor vol. 2, sec. 10.3 (transformation T^T K T).
+        Membrane prestate of the geometric stiffness (None: no K_g).
     """
     ref = reference_element(mesh.order)
     ns0 = nt0 = None
@@ -415,14 +347,9 @@ def element_set(vehicle: Vehicle, mesh: Mesh, k: int, *, prestate: Prestate | No
 
 
 def ring_matrix(theory: str, dmap: DofMap, prestate: Prestate, k: int) -> np.ndarray:
-    """Geometric stiffness (N/m) of the prestate's rings for harmonic k, reduced (n, n).
-
-    A ring of radius r and hoop force H has the second-order strain |(du/dl)_perp|^2 / 2 along
-    its circle; with u = (U_x cos k theta, V sin k theta, U_r cos k theta) (global frame)
-
-        K_g,ring = theta_weight(k) (H / r) [c k^2 U_x^2 + (k U_r + c V)^2]
-
-    (c = 1 Sanders, 0 Donnell: no in-plane rotation, no v in the rotations).
+    """Geometric stiffness (N/m) of the prestate's rings for harmonic k, reduced (n, n):
+    K_g,ring = theta_weight(k) (H / r) [c k^2 U_x^2 + (k U_r + c V)^2], c = 1 Sanders,
+    0 Donnell (Kraus 1967 ch. 2; Fluegge 1973 sec. 2.2).
 
     Parameters
     ----------
@@ -433,16 +360,7 @@ def ring_matrix(theory: str, dmap: DofMap, prestate: Prestate, k: int) -> np.nda
     prestate : Prestate
         The prestate (its rings).
     k : int
-        Circumferential wave number (dimensionless), >= 0.
-
-    Returns
-    -------
-    ndarray, shape (n, n)
-
-    References
-    ----------
-    .. [1] Kraus 1967 ch. 2 (ring kinematics of a shell of revolution); Flügge 1973 sec. 2.2
-       (the ring forces of a membrane at a kink of the meridian).
+        Circumferential wave number, >= 0.
     """
     c = 1.0 if theory == "sanders" else 0.0
     out = np.zeros((dmap.n, dmap.n))
@@ -471,14 +389,6 @@ def assemble(mesh: Mesh, dmap: DofMap, element: np.ndarray) -> np.ndarray:
         Constraint map.
     element : ndarray, shape (e, n_dof, n_dof)
         Element matrices.
-
-    Returns
-    -------
-    ndarray, shape (n, n)
-
-    References
-    ----------
-    .. [1] Zienkiewicz & Taylor vol. 1, sec. 1.4 (direct stiffness assembly).
     """
     idx = dmap.index[mesh.dofs]
     cf = dmap.coef[mesh.dofs]
@@ -527,17 +437,9 @@ def harmonic_matrices(vehicle: Vehicle, mesh: Mesh, k: int, *,
     mesh : Mesh
         Mesh of the vehicle.
     k : int
-        Circumferential wave number (dimensionless), 0..200.
+        Circumferential wave number, 0..200.
     prestate : Prestate, optional
         The prestate of K_g (:func:`thrust_prestate`); None: no K_g.
-
-    Returns
-    -------
-    HarmonicMatrices
-
-    References
-    ----------
-    .. [1] Zienkiewicz & Taylor vol. 2, ch. 10; Brush & Almroth 1975 ch. 5.
     """
     k = count("k", k, 0, 200)
     dmap = dof_map(vehicle, mesh, k)
@@ -555,33 +457,23 @@ def system_matrices(
     supported_forward_end: bool | None = None, elements_per_segment: int | tuple | None = None,
     order: int = DEFAULT_ORDER, mesh: Mesh | None = None,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Global mass, elastic and geometric stiffness for one harmonic k (reduced DOFs).
+    """Mass (kg), elastic and geometric stiffness (N/m) of harmonic k, reduced (n, n): the loaded
+    system is M q'' + (K_e + K_g) q = 0, K_g linear in ``prestress_F0`` (Brush & Almroth 1975,
+    ch. 5).
 
     Parameters
     ----------
     vehicle : Vehicle
         The vehicle.
     k : int
-        Circumferential wave number (dimensionless), 0..200.
+        Circumferential wave number, 0..200.
     prestress_F0 : float
         Thrust (N) whose steady prestress K_g represents (0: K_g = 0).
     supported_forward_end : bool or None
-        Load path of the thrust (:func:`thrust_prestate`): None from the vehicle's ends.
+        Load path of the thrust (:func:`thrust_prestate`).
     elements_per_segment, order : see :func:`mesh_vehicle`.
     mesh : Mesh, optional
         A mesh made by :func:`mesh_vehicle` (overrides the two above).
-
-    Returns
-    -------
-    M, K_e, K_g : ndarray, shape (n, n)
-        Mass (kg), elastic stiffness (N/m) and geometric stiffness (N/m) of the harmonic
-        (amplitudes u, w ~ cos k theta, v ~ sin k theta); the loaded system is
-        M q'' + (K_e + K_g) q = 0, and K_g scales linearly with ``prestress_F0``.
-
-    References
-    ----------
-    .. [1] Zienkiewicz & Taylor vol. 2, ch. 10; Brush & Almroth 1975 ch. 5 (Sanders'
-       moderate-rotation strains: K_g).
     """
     k = count("k", k, 0, 200)
     F0 = finite("prestress_F0", prestress_F0)
@@ -593,24 +485,15 @@ def system_matrices(
 
 
 def rigid_body_fields(mesh: Mesh, k: int) -> np.ndarray:
-    """Rigid-body motions of harmonic k (k = 0: axial translation, axial rotation; k = 1:
-    lateral translation, pitch about x = 0) as full DOF vectors, shape (m, n_full).
+    """Rigid-body motions of harmonic k as full DOF vectors (m, n_full): k = 0 axial translation
+    and rotation, k = 1 lateral translation and pitch about x = 0, none otherwise (Kraus 1967).
 
     Parameters
     ----------
     mesh : Mesh
         Mesh of the vehicle.
     k : int
-        0 or 1 (other k: no rigid motions, shape (0, n_full)).
-
-    Returns
-    -------
-    ndarray
-
-    References
-    ----------
-    .. [1] Kraus 1967 ch. 2 (rigid-body displacements of a shell of revolution: zero
-       Sanders strains).
+        The harmonic.
     """
     k = count("k", k, 0, 200)
     ref = reference_element(mesh.order)

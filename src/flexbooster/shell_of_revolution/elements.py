@@ -1,46 +1,16 @@
 """Conical frustum shell elements for one Fourier harmonic k (Sanders-Koiter or Donnell).
 
-Each element is a straight piece of meridian of length l_e at the meridian angle phi
-(dx/ds = cos phi, dr/ds = sin phi), with the local displacements
+A straight piece of meridian at the angle phi with u = U cos k theta, v = V sin k theta,
+w = W cos k theta; U, V C0 Lagrange of degree p on the GLL points, W C1 (w, dw/ds at the
+ends, p - 3 interior GLL values). DOF order: end 1 (u, v, w, dw/ds), end 2, interior u, v, w.
+Strains of a cone (Kraus 1967 ch. 2, Sanders 1959; c = 1 Sanders, 0 Donnell), the
+constitutive law A, D (Kraus ch. 3), consistent mass rho h (U^2 + V^2 + W^2), and the
+geometric stiffness of the membrane prestress (Brush & Almroth 1975 ch. 5); the theta
+integral gives pi (k >= 1) or 2 pi (k = 0). Equations: docs/theory/shell-of-revolution.md.
 
-    u = U(s) cos k theta   (meridional),   v = V(s) sin k theta,   w = W(s) cos k theta (normal)
-
-U, V: C0 Lagrange polynomials of degree p on the Gauss-Lobatto-Legendre points; W: C1
-polynomial of degree p with the DOFs w, dw/ds at both ends and w at the p - 3 interior GLL
-points of degree p - 2 (p = 3: the Hermite cubic).  Element DOF order: end 1 (u, v, w, dw/ds),
-end 2 (u, v, w, dw/ds), interior u (p - 1), interior v (p - 1), interior w (p - 3).
-
-Strain-displacement relations of a cone (Kraus 1967 ch. 2, shells of revolution, 1/R_s = 0,
-1/R_theta = cos(phi)/r, A_1 = 1, A_2 = r; Sanders 1959), for the harmonic amplitudes:
-
-    eps_s   = U'                                         (cos k theta)
-    eps_th  = (k V + U sin phi + W cos phi) / r          (cos)
-    gamma   = V' - V sin phi / r - k U / r               (sin)
-    kappa_s = -W''                                       (cos)
-    kappa_th = (k B - W' sin phi) / r,  B = (c V cos phi + k W) / r                      (cos)
-    tau     = B' - B sin phi / r + k W' / r + c (cos phi / r) Phi,                       (sin)
-              Phi = (V' + V sin phi / r + k U / r) / 2   (rotation about the normal)
-
-with c = 1 (Sanders) or 0 (Donnell: no v in the rotation, no Phi in the twist); tau is the
-engineering twist 2 kappa_s theta.  Energy densities (Kraus 1967 ch. 3, constitutive law):
-N = A [eps_s, eps_th, gamma], A = E h / (1 - nu^2) [[1, nu, 0], [nu, 1, 0], [0, 0, (1 - nu)/2]],
-M = D [kappa_s, kappa_th, tau], D = E h^3 / (12 (1 - nu^2)) [same].  Mass: rho h (U^2 + V^2 +
-W^2) (consistent, no rotary inertia).  Geometric stiffness of the membrane prestress
-N_s^0, N_theta^0 (Sanders' moderate-rotation strains eps_s = U' + (beta_s^2 + Phi^2) / 2,
-eps_theta = ... + (beta_theta^2 + Phi^2) / 2, beta_s = -W', beta_theta = B; Donnell:
-W'^2 / 2 and (k W / r)^2 / 2; Brush & Almroth 1975 ch. 5).  The theta integral gives the
-factor pi (k >= 1) or 2 pi (k = 0, where U, W (axisymmetric) and V (torsion) decouple).
-
-References
-----------
-.. [1] H. Kraus, *Thin Elastic Shells*, Wiley, 1967, ch. 2 (kinematics), ch. 3 (energy).
-.. [2] J. L. Sanders, "An improved first-approximation theory for thin shells", NASA TR R-24,
-   1959.
-.. [3] D. O. Brush, B. O. Almroth, *Buckling of Bars, Plates and Shells*, McGraw-Hill, 1975,
-   ch. 5 (Donnell and Sanders nonlinear strain-displacement relations).
-.. [4] O. C. Zienkiewicz, R. L. Taylor, *The Finite Element Method*, vol. 2, 5th ed., 2000,
-   ch. 10 (axisymmetric shells, Fourier harmonics); R. D. Cook et al., *Concepts and
-   Applications of FEA*, 4th ed., 2002, sec. 12.x (consistent mass).
+References: H. Kraus, *Thin Elastic Shells*, 1967, ch. 2-3; J. L. Sanders, NASA TR R-24,
+1959; D. O. Brush, B. O. Almroth, *Buckling of Bars, Plates and Shells*, 1975, ch. 5;
+O. C. Zienkiewicz, R. L. Taylor, *The Finite Element Method*, vol. 2, 2000, ch. 10.
 """
 
 from __future__ import annotations
@@ -59,14 +29,14 @@ __all__ = ["ElementFields", "ReferenceElement", "element_energies", "element_fie
 
 @lru_cache(maxsize=64)
 def _path(subscripts: str, *shapes: tuple) -> list:
-    """The contraction order ``np.einsum(..., optimize=True)`` chooses: it depends on the
-    subscripts and the shapes only, so it is found once per mesh size and harmonic class."""
+    """The contraction order ``np.einsum(..., optimize=True)`` chooses, found once per shapes."""
     return np.einsum_path(subscripts, *(np.empty(s) for s in shapes), optimize=True)[0]
 
 
 def einsum(subscripts: str, *operands: np.ndarray) -> np.ndarray:
-    """``np.einsum(subscripts, *operands, optimize=True)``, the contraction order cached (the
-    same contractions in the same order: the same result)."""
+    """``np.einsum(subscripts, *operands, optimize=True)`` with the contraction order cached (the
+    same contractions in the same order: the same result).
+    """
     return np.einsum(subscripts, *operands,
                      optimize=_path(subscripts, *(np.shape(a) for a in operands)))
 
@@ -77,17 +47,14 @@ class ReferenceElement:
 
     Attributes
     ----------
-    order : int
-        Polynomial degree p (dimensionless), >= 3.
-    n_dof : int
-        DOFs per element, 3 (p + 1).
+    order, n_dof : int
+        Polynomial degree p >= 3 and DOFs per element, 3 (p + 1).
     xi, weight : ndarray, shape (g,)
         Gauss-Legendre points and weights.
     nuv, duv : ndarray, shape (g, p + 1)
         U/V shape functions and d/dxi.
     nw, dw, d2w : ndarray, shape (g, p + 1)
-        W shape functions and d/dxi, d^2/dxi^2 (the slope DOFs in units of dw/dxi; the element
-        scales them by l_e / 2).
+        W shape functions and d/dxi, d^2/dxi^2 (slope DOFs in units of dw/dxi).
     iu, iv, iw : ndarray of int, shape (p + 1,)
         Positions of the U, V, W coefficients in the element DOF vector.
     slope : ndarray of int, shape (2,)
@@ -143,21 +110,13 @@ def _coefficients(p: int) -> tuple[np.ndarray, np.ndarray]:
 
 @lru_cache(maxsize=16)
 def reference_element(order: int) -> ReferenceElement:
-    """Shape functions and quadrature of the order-p element (cached, read-only).
+    """Shape functions and quadrature of the order-p element (cached, read-only; Canuto et al. 2006
+    sec. 2.3; Zienkiewicz & Taylor vol. 1, sec. 8.5).
 
     Parameters
     ----------
     order : int
-        Polynomial degree p of U, V and W (dimensionless), 3 <= p <= 12.
-
-    Returns
-    -------
-    ReferenceElement
-
-    References
-    ----------
-    .. [1] C. Canuto et al., *Spectral Methods*, Springer, 2006, sec. 2.3 (GLL points);
-       Zienkiewicz & Taylor vol. 1, sec. 8.5 (Hermite C1 elements).
+        Polynomial degree p of U, V and W, 3 <= p <= 12.
     """
     p = int(order)
     if not 3 <= p <= 12:
@@ -186,16 +145,12 @@ def reference_element(order: int) -> ReferenceElement:
 
 
 def theta_weight(k: int) -> float:
-    """Integral over theta of cos^2 k theta (pi for k >= 1, 2 pi for k = 0; dimensionless).
+    """Integral over theta of cos^2 k theta: pi for k >= 1, 2 pi for k = 0.
 
     Parameters
     ----------
     k : int
         Circumferential harmonic (>= 0).
-
-    Returns
-    -------
-    float
     """
     return 2.0 * np.pi if count("k", k, 0, None) == 0 else np.pi
 
@@ -258,33 +213,22 @@ def element_fields(
     nu: np.ndarray,
     theory: str = "sanders",
 ) -> ElementFields:
-    """The operators of :func:`element_matrices` (Sanders or Donnell, module docstring).
+    """The operators of :func:`element_matrices` (Sanders or Donnell).
 
     Parameters
     ----------
     ref : ReferenceElement
         Shape functions (:func:`reference_element`).
     k : int
-        Circumferential wave number (dimensionless), >= 0.
-    r1 : ndarray, shape (e,)
-        Radius at the aft end of each element (m), > 0 along the element.
-    length : ndarray, shape (e,)
-        Meridian length of each element (m), > 0.
+        Circumferential wave number, >= 0.
+    r1, length : ndarray, shape (e,)
+        Radius at the aft end (m, > 0 along the element) and meridian length (m, > 0).
     sin_phi, cos_phi : ndarray, shape (e,)
-        Meridian angle of each element (dimensionless): dr/ds and dx/ds.
+        Meridian angle of each element: dr/ds and dx/ds.
     thickness, E, nu : ndarray, shape (e,)
-        Wall thickness (m), Young's modulus (Pa), Poisson's ratio (dimensionless).
+        Wall thickness (m), Young's modulus (Pa), Poisson's ratio.
     theory : str
         ``"sanders"`` or ``"donnell"``.
-
-    Returns
-    -------
-    ElementFields
-
-    References
-    ----------
-    .. [1] Kraus 1967 ch. 2-3; Sanders 1959; Brush & Almroth 1975 ch. 5
-       (see the module docstring).
     """
     c = 1.0 if theory == "sanders" else 0.0
     U, dU, V, dV, W, dW, d2W = _operators(ref, length)
@@ -334,7 +278,9 @@ def element_matrices(
     ns0: np.ndarray | None = None,
     nt0: np.ndarray | None = None,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
-    """Mass, elastic and geometric stiffness of all elements for harmonic k (local DOFs).
+    """Consistent mass (kg), elastic stiffness (N/m) and geometric stiffness (N/m, None without
+    ``ns0``) N_s (beta_s^2 + c Phi^2) + N_theta (beta_theta^2 + c Phi^2) of all elements for
+    harmonic k, each (e, n_dof, n_dof) in the local DOFs.
 
     Parameters
     ----------
@@ -343,21 +289,8 @@ def element_matrices(
     rho : ndarray, shape (e,)
         Density (kg/m^3).
     ns0, nt0 : ndarray, shape (e, g), optional
-        Meridional and hoop prestress resultants N_s^0, N_theta^0 at the Gauss points (N/m,
-        compression < 0); ``nt0`` None: 0.
-
-    Returns
-    -------
-    mass, stiffness : ndarray, shape (e, n_dof, n_dof)
-        Consistent mass (kg) and elastic stiffness (N/m) in the element DOFs.
-    geometric : ndarray, shape (e, n_dof, n_dof) or None
-        Geometric stiffness (N/m) of the prestress, N_s (beta_s^2 + c Phi^2) +
-        N_theta (beta_theta^2 + c Phi^2); None when ``ns0`` is None.
-
-    References
-    ----------
-    .. [1] Kraus 1967 ch. 2-3; Sanders 1959; Brush & Almroth 1975 ch. 5
-       (see the module docstring).
+        Meridional and hoop prestress resultants at the Gauss points (N/m, compression < 0);
+        ``nt0`` None: 0.
     """
     f = element_fields(ref, k, r1=r1, length=length, sin_phi=sin_phi, cos_phi=cos_phi,
                        thickness=thickness, E=E, nu=nu, theory=theory)
@@ -378,13 +311,9 @@ def element_matrices(
 def element_energies(fields: ElementFields, local: np.ndarray, *,
                      ns0: np.ndarray | None = None, nt0: np.ndarray | None = None
                      ) -> np.ndarray:
-    """Twice the strain energy (and the prestress's second-order energy) of displacement
-    fields, summed over the elements from the strains at the Gauss points.
-
-    Computing the strains first keeps the energy of a smooth field accurate to round-off
-    relative to itself: the quadratic form q^T K q of the assembled matrix loses the
-    digits of its large, cancelling membrane terms (Bathe 1996 sec. 10.2.5, Rayleigh
-    quotient).
+    """q^T K_e q (+ q^T K_g q) of m fields, shape (m,), summed over the elements from the strains
+    at the Gauss points: accurate to round-off relative to itself, unlike the assembled
+    quadratic form (Bathe 1996 sec. 10.2.5).
 
     Parameters
     ----------
@@ -394,15 +323,6 @@ def element_energies(fields: ElementFields, local: np.ndarray, *,
         Element DOFs (local frame) of m fields.
     ns0, nt0 : ndarray, shape (e, g), optional
         Prestress resultants (N/m): adds the geometric energy.
-
-    Returns
-    -------
-    ndarray, shape (m,)
-        q^T K_e q (+ q^T K_g q) of each field (N m for m-valued DOFs).
-
-    References
-    ----------
-    .. [1] K.-J. Bathe, *Finite Element Procedures*, 1996, sec. 10.2.5 (Rayleigh quotient).
     """
     eps = np.einsum("egia,mea->megi", fields.strains, local)
     out = np.einsum("megi,eij,megj,eg->m", eps, fields.material, eps, fields.volume)

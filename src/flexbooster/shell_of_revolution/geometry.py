@@ -1,18 +1,12 @@
 """Segments, junctions and end conditions of a vehicle modelled as one thin shell of revolution.
 
-The meridian runs from the aft edge (x = 0) forward through an ordered list of axisymmetric
-segments: :class:`Cylinder` and :class:`Cone` (a cone of axial length 0 is a flat annular
-plate).  Consecutive segments meet at a junction, ``"continuous"`` (the shell is one piece) or
-a rigid, weightless bulkhead (``"rigid-bulkhead"``, ``"memo-bulkhead"``; see
-:data:`JUNCTIONS` and ``docs/theory/shell-of-revolution.md``).  Each end is ``"free"``,
-``"shear-diaphragm"``, ``"hinged"`` or ``"clamped"``.
+The meridian runs from the aft edge (x = 0) forward through :class:`Cylinder` and
+:class:`Cone` segments (a cone of axial length 0 is a flat annular plate), joined by
+:data:`JUNCTIONS`, with :data:`END_CONDITIONS` at the ends
+(docs/theory/shell-of-revolution.md).
 
-References
-----------
-.. [1] H. Kraus, *Thin Elastic Shells*, Wiley, 1967, ch. 2-3 (shells of revolution, the
-   meridian angle, edge conditions).
-.. [2] A. W. Leissa, *Vibration of Shells*, NASA SP-288, 1973, sec. 1.6 (boundary conditions),
-   sec. 2.3 (shear diaphragm: v = w = N_x = M_x = 0).
+References: H. Kraus, *Thin Elastic Shells*, 1967, ch. 2-3; A. W. Leissa, *Vibration of
+Shells*, NASA SP-288, 1973, sec. 1.6, 2.3, ch. 4.
 """
 
 from __future__ import annotations
@@ -63,22 +57,11 @@ class Cylinder:
 
     Parameters
     ----------
-    radius : float
-        Mid-surface radius R (m), > 0.
-    length : float
-        Axial length (m), > 0.
-    thickness : float
-        Wall thickness h (m), > 0.
-    E : float
-        Young's modulus (Pa), > 0 (keyword-only, as are ``nu`` and ``rho``).
-    nu : float
-        Poisson's ratio (dimensionless), 0 <= nu < 0.5.
-    rho : float
-        Density (kg/m^3), > 0.
-
-    References
-    ----------
-    .. [1] A. W. Leissa, NASA SP-288, 1973, ch. 2 (closed circular cylindrical shells).
+    radius, length, thickness : float
+        Mid-surface radius, axial length and wall thickness (m), > 0.
+    E, nu, rho : float
+        Young's modulus (Pa) > 0, Poisson's ratio in [0, 0.5), density (kg/m^3) > 0
+        (keyword-only).
     """
 
     radius: float
@@ -121,23 +104,14 @@ class Cone:
     Parameters
     ----------
     radius_aft, radius_fwd : float
-        Mid-surface radii at the aft and forward edges (m), > 0; they differ when
-        ``length = 0``.
+        Mid-surface radii at the aft and forward edges (m), > 0; they differ when ``length = 0``.
     length : float
         Axial length (m), >= 0.
     thickness : float
         Wall thickness h (m), > 0.
-    E : float
-        Young's modulus (Pa), > 0 (keyword-only, as are ``nu`` and ``rho``).
-    nu : float
-        Poisson's ratio (dimensionless), 0 <= nu < 0.5.
-    rho : float
-        Density (kg/m^3), > 0.
-
-    References
-    ----------
-    .. [1] A. W. Leissa, NASA SP-288, 1973, ch. 4 (conical shells: s along the generator,
-       r = r_0 + s sin(phi)).
+    E, nu, rho : float
+        Young's modulus (Pa) > 0, Poisson's ratio in [0, 0.5), density (kg/m^3) > 0
+        (keyword-only).
     """
 
     radius_aft: float
@@ -200,31 +174,21 @@ def _meridian(seg: Cylinder | Cone) -> tuple[float, float, float, float]:
 
 @dataclass(frozen=True)
 class Vehicle:
-    """A vehicle: axisymmetric segments from the aft edge forward, junctions, ends, theory.
+    """A vehicle: axisymmetric segments from the aft edge forward, junctions, ends, theory
+    (Bushnell 1974, BOSOR). s (m) runs along the generators from the aft edge, x (m) is the
+    axial station; :attr:`warnings` lists segments with h/R > 1/20.
 
     Parameters
     ----------
     segments : sequence of Cylinder or Cone
-        At least one, ordered aft to forward; across a ``"continuous"`` junction the forward
-        radius of each equals the aft radius of the next within :data:`RADIUS_RTOL`
-        (relative); a bulkhead may join different radii.
+        At least one, aft to forward; across a ``"continuous"`` junction the radii match within
+        :data:`RADIUS_RTOL` (relative); a bulkhead may join different radii.
     junctions : sequence of str, optional
         One per pair of neighbours, from :data:`JUNCTIONS`; default all ``"continuous"``.
     aft_end, fwd_end : str
         End conditions from :data:`END_CONDITIONS` (default ``"free"``).
     theory : str
         ``"sanders"`` (Sanders-Koiter, default) or ``"donnell"``.
-
-    Notes
-    -----
-    The meridian coordinate s (m) runs from 0 at the aft edge along the generators; x (m) is
-    the axial station.  :attr:`warnings` lists segments with h/R > 1/20 (thin-shell theory
-    doubtful) as :class:`ShellWarning` objects.
-
-    References
-    ----------
-    .. [1] D. Bushnell, "Stress, stability and vibration of complex branched shells of
-       revolution", Computers & Structures 4, 1974 (BOSOR: segments, junction constraints).
     """
 
     segments: tuple

@@ -1,30 +1,13 @@
 """The liquid of a propellant tank: its potential-flow added mass on the wall (virtual mass).
 
-The liquid (density rho_L, inviscid, incompressible) fills an axisymmetric tank 0 <= r <= R(x),
-R a polyline of cylinders and cones, from the aft end x_a (settled there by the thrust) to the
-free surface x_s = x_a + fill (x_f - x_a).  Per circumferential harmonic k the velocity
-potential is phi = Phi(x, r) cos k theta with
+An inviscid incompressible liquid settled aft in an axisymmetric tank; per harmonic k the
+potential Phi cos k theta solves Laplace's equation with dPhi/dn the wall's normal
+displacement and Phi = 0 on the free surface (the high-frequency limit): M_a = rho_L c_k
+G^T H^-1 G, H = A + k^2 B (:mod:`.liquid_mesh`). The slosh condition: :mod:`.slosh`. Theory:
+docs/theory/liquid.md.
 
-    Phi_xx + Phi_rr + Phi_r / r - k^2 Phi / r^2 = 0,   Phi regular on the axis (0 for k >= 1),
-
-dPhi/dn = the normal wall (or end) displacement on the wetted boundary, and on the free surface
-either Phi = 0 (the structural added mass: p = 0, the high-frequency limit) or the slosh
-condition dPhi/dx = (omega^2 / a) Phi.  The pressure p = -rho_L d^2 Phi / dt^2 loads the wall,
-whose added-mass matrix (the virtual-mass method) is
-
-    M_a = rho_L c_k G^T H^-1 G,   H = A + k^2 B,   c_k = int cos^2 k theta d theta,
-
-with A = int grad psi . grad psi r dr dx, B = int psi psi / r dr dx and G = int_wall psi N r ds
-(+ the ends), discretised by :mod:`.liquid_mesh` (spectral elements, A and B assembled once
-per tank).  The slosh condition: :mod:`.slosh`.
-
-References
-----------
-.. [1] H. N. Abramson (ed.), *The Dynamic Behavior of Liquids in Moving Containers*, NASA
-   SP-106, 1966, ch. 2 (lateral sloshing, cylinder), ch. 6 (mechanical models).
-.. [2] F. T. Dodge, *The New "Dynamic Behavior of Liquids in Moving Containers"*, SwRI, 2000,
-   ch. 1-3.
-.. [3] R. A. Ibrahim, *Liquid Sloshing Dynamics*, Cambridge, 2005, ch. 2 and 9.
+References: H. N. Abramson (ed.), NASA SP-106, 1966, ch. 2, 6; F. T. Dodge, SwRI, 2000,
+ch. 1-3; R. A. Ibrahim, *Liquid Sloshing Dynamics*, 2005, ch. 2, 9.
 """
 
 from __future__ import annotations
@@ -63,10 +46,9 @@ class WallQuadrature:
     x, r : array_like, shape (n,)
         Station and radius of each point (m), on the wall R(x).
     normal : array_like, shape (n, 2)
-        Unit normal (n_x, n_r) out of the liquid (the shell's outward normal).
+        Unit normal (n_x, n_r) out of the liquid.
     weight : array_like, shape (n,)
-        Meridian arc-length weights (m): int f ds = sum weight f (the module multiplies by r
-        and by c_k).
+        Meridian arc-length weights (m): int f ds = sum weight f.
     """
 
     x: np.ndarray
@@ -118,12 +100,11 @@ class AddedMass:
     k : int
         Circumferential harmonic.
     matrix : ndarray, shape (n, n)
-        M_a (kg, in the units of the DOFs), symmetric positive semi-definite: the liquid's
-        kinetic energy is q' M_a q' / 2 for the shell's convention (the theta integral c_k).
+        M_a (kg, in the DOFs' units), symmetric positive semi-definite (kinetic energy
+        q' M_a q' / 2, theta integral c_k included).
     constraint : ndarray, shape (n,), or None
-        For a closed full tank and k = 0: the volume change per unit DOF (m^3); the motion
-        must satisfy ``constraint @ q = 0`` (incompressible liquid), on which ``matrix`` is
-        exact.  None otherwise.
+        Closed full tank, k = 0: volume change per unit DOF (m^3); the motion must satisfy
+        ``constraint @ q = 0``. None otherwise.
     """
 
     k: int
@@ -141,31 +122,22 @@ def _end_row(name: str, value, n: int) -> np.ndarray:
 def added_mass(mesh: LiquidMesh, k: int, wall: WallQuadrature, displacement: np.ndarray, *,
                aft_end: np.ndarray | None = None, fwd_end: np.ndarray | None = None
                ) -> AddedMass:
-    """Added-mass matrix of the liquid on the wall DOFs for harmonic k (free surface p = 0).
+    """Added-mass matrix of the liquid on the wall DOFs for harmonic k (free surface p = 0;
+    Abramson 1966 ch. 2; Ibrahim 2005 ch. 9).
 
     Parameters
     ----------
     mesh : LiquidMesh
         The tank's liquid (:func:`liquid_mesh`), reused for every k.
     k : int
-        Circumferential harmonic (dimensionless), 0..200.
+        Circumferential harmonic, 0..200.
     wall : WallQuadrature
         Quadrature of the wetted wall, x_a .. x_s.
     displacement : array_like, shape (n_points, n)
-        Normal wall displacement (m per unit DOF, out of the liquid) of each DOF at the points:
-        w_n(x, theta) = (displacement @ q) cos k theta.
+        Normal wall displacement (m per unit DOF, out of the liquid) of each DOF at the points.
     aft_end, fwd_end : array_like, shape (n,), optional
-        Axial displacement of the rigid aft / forward end per unit DOF: u_x = r^k cos k theta
-        (row @ q), k = 0 (translation, m) or 1 (tilt, rad); ignored for k >= 2 (a rigid end
-        has no such motion) and, for ``fwd_end``, unless ``fill = 1``.
-
-    Returns
-    -------
-    AddedMass
-
-    References
-    ----------
-    .. [1] Abramson 1966 ch. 2; Ibrahim 2005 ch. 9 (virtual mass of the liquid on the wall).
+        Axial displacement of the rigid aft / forward end per unit DOF, u_x = r^k cos k theta
+        (row @ q), k <= 1 only; ``fwd_end`` only with ``fill = 1``.
     """
     k = count("k", k, 0, 200)
     N = finite_array("displacement", displacement, nonempty=False)

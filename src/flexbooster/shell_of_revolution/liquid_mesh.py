@@ -1,24 +1,12 @@
 """Spectral-element discretisation of a tank's liquid (the meridional domain 0 <= r <= R(x)).
 
-Per circumferential harmonic k the potential Phi(x, r) cos k theta solves the weak form
-c_k int (Phi_x psi_x + Phi_r psi_r + k^2 Phi psi / r^2) r dr dx = boundary terms, so that
-H = A + k^2 B with A = int grad psi . grad psi r dr dx and B = int psi psi / r dr dx, both
-independent of k.  Elements: tensor-product Lagrange polynomials of degree p on the
-Gauss-Lobatto-Legendre points, on the map (x, eta) -> (x, R(x) eta): every element is a
-straight-sided trapezoid (R linear between the wall's breakpoints), so the geometry is exact.
-Gauss quadrature of p + 3 points never evaluates the axis (1 / r).  The axial element
-boundaries include the wall's breakpoints, with geometric layers towards every corner of the
-domain (the wall's kinks, its ends, the free surface), where the potential is singular; the
-radial ones are graded towards the wall.  Each element's interior nodes are condensed
-statically (per k, a batched dense solve), so that a k costs one sparse factorisation of the
-element-edge skeleton.
+Per harmonic k the potential Phi(x, r) cos k theta has H = A + k^2 B, A = int grad psi .
+grad psi r dr dx and B = int psi psi / r dr dx independent of k; tensor-product GLL elements
+on the exact map (x, eta) -> (x, R(x) eta), geometric layers towards the corners, interior
+nodes condensed per k. Theory: docs/theory/liquid.md.
 
-References
-----------
-.. [1] C. Canuto, M. Y. Hussaini, A. Quarteroni, T. A. Zang, *Spectral Methods*, Springer,
-   2006, sec. 2.3 (GLL points), ch. 6 (spectral elements, static condensation).
-.. [2] B. Szabo, I. Babuska, *Finite Element Analysis*, Wiley, 1991, ch. 14 (geometric meshes
-   at corner singularities).
+References: C. Canuto et al., *Spectral Methods*, 2006, sec. 2.3, ch. 6; B. Szabo,
+I. Babuska, *Finite Element Analysis*, 1991, ch. 14.
 """
 
 from __future__ import annotations
@@ -61,17 +49,16 @@ class Tank:
     Parameters
     ----------
     stations : sequence of float
-        Axial stations x of the wall's breakpoints (m), aft to forward, strictly increasing;
-        the first and the last are the tank's ends.
+        Axial stations x of the wall's breakpoints (m), strictly increasing; the first and the
+        last are the tank's ends.
     radii : sequence of float
         Wall radius at each station (m), > 0 (0 allowed at an end: an apex).
     fill : float
-        Liquid height as a fraction of the tank's length (dimensionless), 0..1, settled aft.
+        Liquid height as a fraction of the tank's length, 0..1, settled aft.
     density : float
         Liquid density rho_L (kg/m^3), > 0.
     ends : (str, str)
-        Aft and forward end for the liquid, each in :data:`TANK_ENDS` (default rigid walls;
-        the forward end touches the liquid only when ``fill = 1``).
+        Aft and forward end for the liquid, each in :data:`TANK_ENDS` (default rigid walls).
     """
 
     stations: tuple
@@ -152,18 +139,18 @@ class LiquidMesh:
     Attributes
     ----------
     tank : Tank
+        The tank.
     order : int
-        Polynomial degree p (dimensionless).
+        Polynomial degree p.
     x_breaks, eta_breaks : ndarray
         Element boundaries: stations (m, x_a .. x_s) and eta = r / R(x) (0 .. 1).
     x_nodes, eta_nodes : ndarray
-        Node lines; node (i, j) is at (x_nodes[i], R(x_nodes[i]) eta_nodes[j]), index
+        Node lines; node (i, j) at (x_nodes[i], R(x_nodes[i]) eta_nodes[j]), index
         i * eta_nodes.size + j.
     nodes : ndarray of int, shape (e, (p + 1)^2)
-        Node of every element's local node, the 4 p on the element's edges first.
+        Node of every element's local node, the 4 p edge nodes first.
     gradient, hoop : ndarray, shape (e, (p + 1)^2, (p + 1)^2)
-        Element matrices int grad psi . grad psi r dr dx (m^2) and int psi psi / r dr dx (m)
-        (no elements for an empty tank, ``fill = 0``).
+        int grad psi . grad psi r dr dx (m^2) and int psi psi / r dr dx (m) per element.
     """
 
     tank: Tank
@@ -209,7 +196,8 @@ def _gram(f: np.ndarray, weight: np.ndarray) -> np.ndarray:
 
 def _graded(a: float, b: float, radius: float, refinement: int) -> np.ndarray:
     """Breaks of [a, b]: geometric layers (ratio GRADING) towards both ends, at most
-    MAX_ELEMENT_RADII radii between, every element split into ``refinement``."""
+    MAX_ELEMENT_RADII radii between, every element split into ``refinement``.
+    """
     zone = min(radius * MAX_ELEMENT_RADII, 0.5 * (b - a))
     layers = zone * GRADING ** np.arange(LAYERS, 0, -1)
     n_mid = max(1, math.ceil((b - a - 2.0 * zone) / (radius * MAX_ELEMENT_RADII) - 1e-9))
@@ -225,18 +213,11 @@ def liquid_mesh(tank: Tank, *, order: int = LIQUID_ORDER, refinement: int = 1) -
     Parameters
     ----------
     tank : Tank
+        The tank.
     order : int
-        Polynomial degree p (dimensionless), 2..16.
+        Polynomial degree p, 2..16.
     refinement : int
-        Split every element into this many in each direction (dimensionless), 1..8.
-
-    Returns
-    -------
-    LiquidMesh
-
-    References
-    ----------
-    .. [1] Canuto et al. 2006 sec. 2.3; Szabo & Babuska 1991 (geometric grading).
+        Split every element into this many in each direction, 1..8.
     """
     p = count("order", order, 2, 16)
     refinement = count("refinement", refinement, 1, 8)
@@ -303,17 +284,14 @@ def _radial_quadrature(mesh: LiquidMesh):
 
 
 def radial_moments(mesh: LiquidMesh, power: int) -> np.ndarray:
-    """int_0^1 eta^power L_j(eta) d eta for every radial node j (dimensionless).
+    """int_0^1 eta^power L_j(eta) d eta for every radial node j, shape (n_eta,).
 
     Parameters
     ----------
     mesh : LiquidMesh
+        The mesh.
     power : int
         Exponent (>= 0).
-
-    Returns
-    -------
-    ndarray, shape (n_eta,)
     """
     eta, wt, val, loc = _radial_quadrature(mesh)
     out = np.zeros(mesh.eta_nodes.size)
@@ -322,15 +300,12 @@ def radial_moments(mesh: LiquidMesh, power: int) -> np.ndarray:
 
 
 def radial_mass(mesh: LiquidMesh) -> np.ndarray:
-    """int_0^1 L_i L_j eta d eta over the radial nodes (dimensionless).
+    """int_0^1 L_i L_j eta d eta over the radial nodes, shape (n_eta, n_eta).
 
     Parameters
     ----------
     mesh : LiquidMesh
-
-    Returns
-    -------
-    ndarray, shape (n_eta, n_eta)
+        The mesh.
     """
     eta, wt, val, loc = _radial_quadrature(mesh)
     out = np.zeros((mesh.eta_nodes.size,) * 2)
@@ -340,20 +315,15 @@ def radial_mass(mesh: LiquidMesh) -> np.ndarray:
 
 
 def wall_trace(mesh: LiquidMesh, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The basis on the wall (eta = 1) at stations ``x``.
+    """The basis on the wall (eta = 1) at stations ``x``: axial node line i of each non-zero basis
+    function, (n, p + 1) (node i n_eta + n_eta - 1), and its value.
 
     Parameters
     ----------
     mesh : LiquidMesh
+        The mesh.
     x : ndarray, shape (n,)
         Stations (m) in x_a .. x_s.
-
-    Returns
-    -------
-    axial : ndarray of int, shape (n, p + 1)
-        Axial node line i of each non-zero basis function (the node is i n_eta + n_eta - 1).
-    value : ndarray, shape (n, p + 1)
-        Its value.
     """
     p, xb = mesh.order, mesh.x_breaks
     el = np.clip(np.searchsorted(xb, x, side="right") - 1, 0, xb.size - 2)
@@ -362,25 +332,19 @@ def wall_trace(mesh: LiquidMesh, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]
 
 
 def dof_index(mesh: LiquidMesh, k: int, *, open_surface: bool) -> tuple[np.ndarray, int]:
-    """DOF of every node on the element edges (-1: Phi = 0 there, or inside an element).
+    """DOF of every node on the element edges (-1: Phi = 0 there, or interior) and their number.
 
-    Phi = 0 on the axis for k >= 1 (regularity), on a pressure-release end, and on the free
-    surface when ``open_surface`` (the added-mass problem); the nodes of an apex share one DOF
-    (k = 0) or are on the axis (k >= 1).
+    Phi = 0 on the axis for k >= 1, on a pressure-release end and, with ``open_surface``, on
+    the free surface; an apex's nodes share one DOF (k = 0).
 
     Parameters
     ----------
     mesh : LiquidMesh
+        The mesh.
     k : int
         Circumferential harmonic (>= 0).
     open_surface : bool
         Phi = 0 on the free surface.
-
-    Returns
-    -------
-    index : ndarray of int, shape (n_nodes,)
-    n : int
-        Number of DOFs.
     """
     tank, p = mesh.tank, mesh.order
     nx, ny = mesh.shape
@@ -403,22 +367,16 @@ def dof_index(mesh: LiquidMesh, k: int, *, open_surface: bool) -> tuple[np.ndarr
 
 
 def condensed_operator(mesh: LiquidMesh, k: int, index: np.ndarray, n: int) -> sp.csc_matrix:
-    """H = A + k^2 B on the DOFs of ``index``, the element-interior nodes condensed.
-
-    Per element H_bb - H_bi H_ii^-1 H_ib (static condensation: the solution on the element
-    edges, and everything computed from it, is unchanged), then assembled.
+    """H = A + k^2 B (m^2, without c_k) on the DOFs of ``index``, sparse (n, n), the element
+    interiors condensed statically (H_bb - H_bi H_ii^-1 H_ib).
 
     Parameters
     ----------
     mesh : LiquidMesh
+        The mesh.
     k : int
         Circumferential harmonic (>= 0).
     index, n : see :func:`dof_index`.
-
-    Returns
-    -------
-    scipy.sparse.csc_matrix, shape (n, n)
-        In m^2 (without the circumferential factor c_k).
     """
     nb = 4 * mesh.order  # element-edge nodes, first in the element's node order
     H = mesh.gradient + (k * k) * mesh.hoop

@@ -16,7 +16,7 @@ class Mesh:
     Attributes
     ----------
     order : int
-        Polynomial degree p (dimensionless).
+        Polynomial degree p.
     segment : ndarray of int
         Segment index of each element.
     s1, x1, r1 : ndarray
@@ -24,9 +24,9 @@ class Mesh:
     length : ndarray
         Meridian length of each element (m).
     sin_phi, cos_phi, phi : ndarray
-        Meridian angle (dimensionless; phi in rad) of each element.
+        Meridian angle of each element (phi in rad).
     thickness, E, nu, rho : ndarray
-        Element properties (m, Pa, dimensionless, kg/m^3).
+        Element properties (m, Pa, -, kg/m^3).
     elements_per_segment : tuple of int
         Element count of every segment.
     dofs : ndarray of int, shape (e, 3 (p + 1))
@@ -36,8 +36,8 @@ class Mesh:
     n_full : int
         Number of full DOFs.
     end_nodes : tuple
-        Full DOF index of the first node DOF at the aft end, forward end, and at each
-        junction (aft side, forward side).
+        Full DOF index of the first node DOF at the aft end, forward end and each junction
+        (aft side, forward side).
     """
 
     order: int

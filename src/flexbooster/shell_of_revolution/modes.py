@@ -1,26 +1,13 @@
 """Natural modes, loaded frequencies, modal systems and buckling of a shell-of-revolution vehicle.
 
-For each harmonic k the generalised eigenproblem K x = omega^2 M x (or (K_e + K_g) x =
-omega^2 M x with the thrust prestress) is solved densely (``scipy.linalg.eigh``, only the
-eigenpairs wanted); the omega^2 returned are the Rayleigh quotients of its eigenvectors, the
-energies summed from the strains at the Gauss points (accurate to round-off relative to
-themselves: monotone under mesh refinement).  For k = 0 and k = 1 the rigid-body motions
-that the constraints admit (k = 0: axial translation, rotation about the axis; k = 1: lateral
-translation, pitch) are identified (:func:`~.assembly.rigid_body_fields`, restricted to the
-admissible subspace) and removed exactly: the problem is solved on the M-orthogonal complement
-of that subspace.
+Per harmonic k the eigenproblem (K_e [+ K_g]) x = omega^2 M x is solved densely on the
+M-orthogonal complement of the admissible rigid motions (k = 0, 1); omega^2 are the Rayleigh
+quotients of the eigenvectors (monotone under refinement). Modes are labelled by ``k``,
+``order`` (sign changes of the dominant component), ``type`` (largest kinetic-energy share)
+and ``segment`` (largest strain-energy share). Theory: docs/theory/shell-of-revolution.md.
 
-Every mode is labelled: ``k``; ``order``, the number of sign changes along the meridian of
-its dominant component (an SD-SD cylinder mode with m axial half-waves has order m - 1);
-``type`` from the largest kinetic-energy share of (u, v, w): k = 0 "axial" / "torsional" /
-"breathing", k = 1 "axial" / "bending", k >= 2 "axial" / "torsional" / "radial"; ``segment``,
-the segment holding the largest strain-energy share.
-
-References
-----------
-.. [1] K.-J. Bathe, *Finite Element Procedures*, 1996, sec. 10.2 (generalised eigenproblem,
-   M-orthogonality, rigid-body modes).
-.. [2] Brush & Almroth 1975, ch. 5 (linear buckling: K_e x = -lambda K_g x).
+References: K.-J. Bathe, *Finite Element Procedures*, 1996, sec. 10.2; Brush & Almroth 1975,
+ch. 5 (linear buckling: K_e x = -lambda K_g x).
 """
 
 from __future__ import annotations
@@ -61,9 +48,9 @@ __all__ = [
 ]
 
 class BucklingError(ValueError):
-    """The thrust prestress buckles harmonic ``k`` (a loaded omega^2 <= 0): a result of the
-    case, not a bad argument.  ``F0`` (N) is the thrust; ``load_factor`` the lowest lambda of
-    :func:`buckling_load` (<= 1), None where it was not computed."""
+    """The thrust prestress buckles harmonic ``k`` (a loaded omega^2 <= 0): a result of the case.
+    ``F0`` (N) is the thrust, ``load_factor`` the lowest lambda of :func:`buckling_load` or None.
+    """
 
     def __init__(self, message: str, k: int, F0: float, load_factor: float | None = None):
         super().__init__(message)
@@ -90,37 +77,29 @@ class VehicleModes:
 
     Attributes
     ----------
-    k : ndarray of int, shape (n,)
-        Circumferential wave number.
-    omega : ndarray, shape (n,)
-        Circular frequency (rad/s).
-    hz : ndarray, shape (n,)
-        Frequency (Hz).
-    order : ndarray of int, shape (n,)
-        Sign changes of the dominant component along the meridian.
+    k, order, segment : ndarray of int, shape (n,)
+        Circumferential wave number, sign changes of the dominant component along the
+        meridian, segment with the largest strain-energy share.
+    omega, hz : ndarray, shape (n,)
+        Frequency (rad/s, Hz).
     type : ndarray of str, shape (n,)
         Mode type (:data:`MODE_TYPES`).
-    segment : ndarray of int, shape (n,)
-        Segment with the largest strain-energy share.
     kinetic_share : ndarray, shape (n, 3)
         Kinetic-energy shares of u (meridional), v, w (normal).
     s, x, r : ndarray, shape (n_pts,)
-        Meridian coordinate, axial station and radius of the shape samples (m); element ends
-        appear twice (once per element).
+        Meridian coordinate, axial station and radius of the shape samples (m).
     shapes : ndarray, shape (n, 3, n_pts)
-        Local (u, v, w) amplitudes of each mode, scaled to max |.| = 1.
+        Local (u, v, w) amplitudes, max |.| = 1.
     rigid_modes : dict
-        ``{k: n}``: number of rigid-body modes found and removed for k = 0 and 1.
+        ``{k: n}``: rigid-body modes removed for k = 0 and 1.
     prestress_F0 : float
         Thrust (N) of the prestress (0: unloaded).
     load_path : str
-        What balances the thrust in the prestress (:data:`~.prestress.LOAD_PATHS`).
+        What balances the thrust (:data:`~.prestress.LOAD_PATHS`).
     theory : str
         Shell theory.
-    elements_per_segment : tuple of int
+    elements_per_segment, element_order : tuple of int, int
         Mesh used.
-    element_order : int
-        Polynomial degree used.
     warnings : tuple of ShellWarning
         Warnings of the vehicle.
     """
@@ -148,16 +127,12 @@ class VehicleModes:
         return int(self.k.size)
 
     def select(self, k: int | None = None) -> np.ndarray:
-        """Boolean mask of the modes of one harmonic.
+        """Boolean mask (n,) of the modes of one harmonic.
 
         Parameters
         ----------
         k : int, optional
-            Circumferential wave number (dimensionless); None selects all.
-
-        Returns
-        -------
-        ndarray of bool, shape (n,)
+            Circumferential wave number; None selects all.
         """
         return np.ones(len(self), bool) if k is None else self.k == k
 
@@ -183,31 +158,25 @@ class VehicleModes:
 
 @dataclass(frozen=True)
 class ModalSystem:
-    """One harmonic in the basis of its modes, loaded by the steady thrust F0 (K_e + K_g =
-    diag(omega^2) on the elastic modes) or unloaded (K_e = diag(omega^2)):
-    q'' + (K_e + (T(t)/F0) K_g) q = 0.
+    """One harmonic in the basis of its modes: q'' + (K_e + (T(t)/F0) K_g) q = 0, with
+    K_e + K_g = diag(omega^2) on the elastic modes (loaded basis) or K_e = diag(omega^2).
 
     Attributes
     ----------
     k : int
         Circumferential wave number.
     omega : ndarray, shape (n,)
-        Natural frequencies of the basis modes (rad/s): under the steady thrust F0, or
-        without it for an unloaded basis; 0 for the rigid ones.
+        Natural frequencies of the basis modes (rad/s), loaded or not; 0 for the rigid ones.
     omega_unloaded : ndarray, shape (n,)
-        The harmonic's lowest natural frequencies without thrust, as many (rad/s; 0 for the
-        rigid motions).
+        The harmonic's lowest frequencies without thrust (rad/s).
     mass, stiffness, geometric : ndarray, shape (n, n)
-        Modal mass (identity: mass-normalised modes), elastic stiffness K_e and geometric
-        stiffness K_g of the thrust F0 (1/s^2); on the elastic modes K_e = diag(omega^2) - K_g
-        (loaded basis) or diag(omega^2) (unloaded); 0 on the rigid ones.
+        Modal mass (identity), K_e and K_g of the thrust F0 (1/s^2).
     F0 : float
         Thrust of the prestress (N).
     n_rigid : int
-        Rigid-body motions first in the basis (dimensionless; 0 unless asked for).
+        Rigid-body motions first in the basis (0 unless asked for).
     aft_edge : ndarray, shape (n, 4)
-        Displacements (u_x, v, u_r) (m per sqrt(kg)) and meridional rotation chi (rad per
-        sqrt(kg)) of the aft edge in each basis mode (amplitudes of cos, sin, cos k theta).
+        (u_x, v, u_r) (m per sqrt(kg)) and chi (rad per sqrt(kg)) of the aft edge per mode.
     """
 
     k: int
@@ -222,8 +191,8 @@ class ModalSystem:
 
     @property
     def aft_axial(self) -> np.ndarray:
-        """u_x at the aft edge of each basis mode (m per sqrt(kg)): the generalised force of an
-        axial ring load F there is F * aft_axial (k = 0)."""
+        """u_x at the aft edge of each basis mode (m per sqrt(kg)): an axial ring load F there
+        has the generalised force F * aft_axial (k = 0)."""
         return self.aft_edge[:, 0]
 
     def to_dict(self) -> dict:
@@ -243,10 +212,8 @@ class BucklingLoad:
     ----------
     k : int
         Circumferential wave number.
-    load_factor : ndarray, shape (n,)
-        Smallest positive lambda of K_e x = -lambda K_g(F0) x, ascending (dimensionless).
-    critical_thrust : ndarray, shape (n,)
-        lambda F0 (N).
+    load_factor, critical_thrust : ndarray, shape (n,)
+        Smallest positive lambda of K_e x = -lambda K_g(F0) x, ascending, and lambda F0 (N).
     s : ndarray, shape (n_pts,)
         Meridian coordinate of the shape samples (m).
     shapes : ndarray, shape (n, 3, n_pts)
@@ -397,14 +364,10 @@ def _local(mesh: Mesh, dmap: DofMap, vecs: np.ndarray) -> np.ndarray:
 
 
 def _rayleigh(h: _Harmonic, vecs: np.ndarray, *, loaded: bool) -> np.ndarray:
-    """Rayleigh quotients (1/s^2) of reduced vectors (n, m): the strain energy (and the
-    prestate's) summed from the strains at the Gauss points over x^T M x.
-
-    The eigenvalues of the dense solver carry an absolute error of round-off times the
-    largest eigenvalue (1e-6 relative on the lowest ones of a fine mesh); the quotient of a
-    computed eigenvector is accurate to round-off relative to itself and, the error being
-    quadratic in the vector's, an upper bound of the mesh's eigenvalue (Bathe 1996,
-    sec. 10.2.5): refinement lowers it monotonically."""
+    """Rayleigh quotients (1/s^2) of reduced vectors (n, m): strain energy from the Gauss-point
+    strains over x^T M x; accurate to round-off relative to themselves and an upper bound of
+    the mesh's eigenvalue (Bathe 1996, sec. 10.2.5).
+    """
     mesh = h.mesh
     fields = element_fields(reference_element(mesh.order), h.k, r1=mesh.r1,
                             length=mesh.length, sin_phi=mesh.sin_phi, cos_phi=mesh.cos_phi,
@@ -498,47 +461,33 @@ def vehicle_modes(
     tolerance: float | None = None,
     refinement: int = 1,
 ) -> VehicleModes:
-    """Natural frequencies and labelled mode shapes for k = k_min..k_max.
+    """Natural frequencies and labelled mode shapes for k = k_min..k_max (Bathe 1996 sec. 10.2).
 
     Parameters
     ----------
     vehicle : Vehicle
         The vehicle.
-    k_max : int
-        Highest circumferential wave number (dimensionless), 0..200.
-    k_min : int
-        Lowest one (dimensionless), 0..k_max.
+    k_max, k_min : int
+        Highest circumferential wave number, 0..200, and the lowest, 0..k_max.
     f_max : float, optional
         Keep the elastic modes up to this frequency (Hz), > 0.
     n_modes : int, optional
-        Keep at most this many elastic modes per k (dimensionless), 1..2000.
+        Keep at most this many elastic modes per k, 1..2000.
     band_factor : float
-        Without ``f_max`` and ``n_modes``: keep the modes up to ``band_factor`` times the
-        lowest elastic frequency over all k (dimensionless), >= 1; default 5.
+        Without ``f_max`` and ``n_modes``: keep modes up to this times the lowest elastic
+        frequency over all k, >= 1.
     prestress_F0 : float
-        Thrust (N) of the steady prestress (0: unloaded); the frequencies are those of
-        K_e + K_g(F0).
+        Thrust (N) of the steady prestress (0: unloaded).
     supported_forward_end : bool or None
-        Load path of the thrust (:func:`~.assembly.thrust_prestate`): None from the ends,
-        True uniform compression reacted at the nose, False inertia relief.
+        Load path of the thrust (:func:`~.assembly.thrust_prestate`).
     elements_per_segment, order : see :func:`~.assembly.mesh_vehicle`.
     points_per_element : int
-        Shape samples per element (dimensionless), 2..50.
+        Shape samples per element, 2..50.
     tolerance : float, optional
-        Target relative accuracy (dimensionless), 1e-9..0.1: the mesh is refined (every
-        element split in 2, 4, 8) until no returned frequency changes by more than this;
-        the finer result is returned (``ValueError`` if not reached at 8).
+        Target relative accuracy, 1e-9..0.1: every element split in 2, 4, 8 until no frequency
+        changes by more than this (ValueError if not reached at 8).
     refinement : int
-        Split every element of the mesh into this many equal ones first (dimensionless),
-        1..64 (nested meshes: :func:`~.assembly.mesh_vehicle`).
-
-    Returns
-    -------
-    VehicleModes
-
-    References
-    ----------
-    .. [1] Bathe 1996 sec. 10.2; Zienkiewicz & Taylor vol. 2 ch. 10 (see the package docs).
+        Split every element into this many equal ones first, 1..64.
     """
     k_max, F0 = _check_common(vehicle, k_max, prestress_F0)
     k_min = count("k_min", k_min, 0, k_max)
@@ -664,42 +613,30 @@ def modal_system(
     supported_forward_end: bool | None = None, rigid: bool = False, loaded: bool = True,
     elements_per_segment: int | tuple | None = None, order: int = DEFAULT_ORDER,
 ) -> ModalSystem:
-    """Harmonic k in the basis of its lowest n_modes modes loaded by the steady thrust F0.
+    """Harmonic k in the basis of its lowest n_modes modes loaded by the steady thrust F0 (Bolotin
+    1964, sec. 8).
 
-    In the loaded modes the steady part is exact (diag(omega^2)) and the pulsating part's
-    own-mode terms, which set the first-order widths of the parametric regions, are those of
-    the full model whatever n_modes; the basis size only enters through the couplings.
-    ``loaded=False``: the unloaded modes instead (a basis for a thrust whose conservative
-    part alone would buckle the harmonic, as the follower thrust's k = 1).
+    The steady part is exact and the own-mode terms of the pulsating part are those of the
+    full model; ``loaded=False``: the unloaded modes (when the conservative thrust alone would
+    buckle the harmonic, as the follower thrust's k = 1).
 
     Parameters
     ----------
     vehicle : Vehicle
         The vehicle.
     k : int
-        Circumferential wave number (dimensionless), 0..200.
+        Circumferential wave number, 0..200.
     n_modes : int
-        Modes in the basis (dimensionless), 1..2000 (the rigid ones included with
-        ``rigid``).
+        Modes in the basis, 1..2000 (the rigid ones included with ``rigid``).
     F0 : float
-        Thrust (N) of the prestress; the periodic problem is q'' + (K_e + (T(t)/F0) K_g) q = 0.
+        Thrust (N) of the prestress.
     supported_forward_end : bool or None
-        Load path of the thrust (:func:`~.assembly.thrust_prestate`): None from the ends.
+        Load path of the thrust (:func:`~.assembly.thrust_prestate`).
     rigid : bool
-        Put the admissible rigid-body motions (k = 0, 1) first in the basis, M-orthonormal;
-        otherwise the basis is their M-orthogonal complement.
+        Put the admissible rigid-body motions (k = 0, 1) first, M-orthonormal.
     loaded : bool
         Elastic basis modes of K_e + K_g (True) or of K_e.
     elements_per_segment, order : see :func:`~.assembly.mesh_vehicle`.
-
-    Returns
-    -------
-    ModalSystem
-
-    References
-    ----------
-    .. [1] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, 1964, sec. 8 (modal
-       reduction of parametrically loaded systems).
     """
     return labelled_modal_system(vehicle, k, n_modes, F0,
                                  supported_forward_end=supported_forward_end, rigid=rigid,
@@ -712,26 +649,13 @@ def labelled_modal_system(
     supported_forward_end: bool | None = None, rigid: bool = False, loaded: bool = True,
     elements_per_segment: int | tuple | None = None, order: int = DEFAULT_ORDER,
 ) -> tuple[ModalSystem, Callable[[], tuple[np.ndarray, np.ndarray]]]:
-    """:func:`modal_system` and the labels of its elastic basis modes (order and type).
+    """:func:`modal_system` and ``labels() -> (order, type)`` of its elastic basis modes, each
+    (n - n_rigid,), evaluated when called (an omega^2 <= 0 raises then).
 
     Parameters
     ----------
     vehicle, k, n_modes, F0, supported_forward_end, rigid, loaded, elements_per_segment, order
         As :func:`modal_system`.
-
-    Returns
-    -------
-    ModalSystem
-        As :func:`modal_system` returns it.
-    labels : callable
-        labels() -> (order, type), each shape (n - n_rigid,): the labels of the elastic basis
-        modes (as :func:`vehicle_modes` labels a mode), with its errors (an omega^2 <= 0
-        raises); called when needed (after the caller's own checks).
-
-    References
-    ----------
-    .. [1] V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, 1964, sec. 8 (modal
-       reduction of parametrically loaded systems).
     """
     _, F0 = _check_common(vehicle, 0, F0)
     k = count("k", k, 0, K_MAX)
@@ -784,37 +708,24 @@ def buckling_load(
     supported_forward_end: bool | None = None, elements_per_segment: int | tuple | None = None,
     order: int = DEFAULT_ORDER, points_per_element: int = 9,
 ) -> BucklingLoad:
-    """Linear buckling load factors of harmonic k: K_e x = -lambda K_g(F0) x.
+    """Linear buckling load factors of harmonic k, K_e x = -lambda K_g(F0) x (Brush & Almroth
+    1975, ch. 5); ValueError with fewer than ``n_modes`` positive factors.
 
     Parameters
     ----------
     vehicle : Vehicle
         The vehicle.
     k : int
-        Circumferential wave number (dimensionless), 0..200.
+        Circumferential wave number, 0..200.
     F0 : float
         Reference thrust (N), > 0.
     n_modes : int
-        Number of load factors returned (dimensionless), 1..200.
+        Number of load factors returned, 1..200.
     supported_forward_end : bool or None
-        Load path of the thrust (:func:`~.assembly.thrust_prestate`): None from the ends.
+        Load path of the thrust (:func:`~.assembly.thrust_prestate`).
     elements_per_segment, order : see :func:`~.assembly.mesh_vehicle`.
     points_per_element : int
-        Shape samples per element (dimensionless), 2..50.
-
-    Returns
-    -------
-    BucklingLoad
-
-    Raises
-    ------
-    ValueError
-        If the harmonic has fewer than ``n_modes`` positive load factors.
-
-    References
-    ----------
-    .. [1] Brush & Almroth 1975, ch. 5 (classical linear buckling); Bathe 1996, ch. 6
-       (linearised buckling).
+        Shape samples per element, 2..50.
     """
     F0 = positive("F0", F0)
     k = count("k", k, 0, K_MAX)

@@ -1,39 +1,14 @@
 """The axisymmetric membrane prestate of a vehicle under its thrust and other axisymmetric loads.
 
-A load case is the axial force ``aft_force`` on the aft edge plus surface loads per unit area
-at the Gauss points, p_x (axial, + forward) and p_r (radial, + outward); a pressure p on a
-segment of meridian angle phi is p_x = -p sin(phi), p_r = p cos(phi).  The load path
-(:data:`LOAD_PATHS`, :func:`load_path`) decides what balances them:
+A load case is an axial force on the aft edge plus surface loads p_x, p_r at the Gauss
+points; the load path (:data:`LOAD_PATHS`) balances them by inertia relief or an end support.
+The membrane state is then statically determinate: F(s) = F(0) + int_0^s 2 pi r p_x ds',
+N_s = -F / (2 pi r cos(phi)), N_theta = r p_n / cos(phi), and where the meridian turns a ring
+carries H = r (N_s^fwd sin(phi_fwd) - N_s^aft sin(phi_aft)). Every K_g of the package is built
+from (N_s, N_theta, H). Theory: docs/theory/shell-of-revolution.md.
 
-* ``"inertia relief"`` (no end restrains the axial motion): the vehicle accelerates at
-  a = P / m (P the net applied axial force, m the shell mass), which adds the body load
-  p_x = -rho h a;
-* ``"forward support"`` (a hinged or clamped forward end): the nose reacts P, no acceleration;
-* ``"aft support"`` (a hinged or clamped aft end): the aft support reacts P; the thrust, applied
-  at the supported edge, goes into the support.
-
-The membrane state of a shell of revolution is then statically determinate (Flügge 1973,
-sec. 2.2): the axial force carried at a station (compression > 0),
-
-    F(s) = F(0) + int_0^s 2 pi r p_x ds',      F(0) = aft_force (or the aft reaction),
-
-gives the meridional resultant N_s = -F / (2 pi r cos(phi)), the normal equilibrium
-(1/R_s = 0) the hoop resultant N_theta = r p_n / cos(phi), p_n = -p_x sin(phi) + p_r cos(phi);
-the meridional equilibrium d(r N_s)/ds = N_theta sin(phi) - r p_s then holds identically.
-Where the meridian turns (a junction between segments of different phi, or an end of a cone)
-the meridional forces leave a radial resultant that a ring carries as the hoop force
-
-    H = r (N_s^fwd sin(phi_fwd) - N_s^aft sin(phi_aft))      (N, tension > 0)
-
-(a continuous junction: one ring; a bulkhead or an end: a ring at each shell edge).  Every
-geometric stiffness K_g of the package is built from (N_s, N_theta, H) (``assembly``).
-
-References
-----------
-.. [1] W. Flügge, *Stresses in Shells*, 2nd ed., Springer, 1973, sec. 2.2 (membrane forces of
-   shells of revolution under axisymmetric loads; cones: N_s = -F / (2 pi r cos(phi))).
-.. [2] D. O. Brush, B. O. Almroth, *Buckling of Bars, Plates and Shells*, 1975, sec. 5.3
-   (membrane prebuckling state).
+References: W. Fluegge, *Stresses in Shells*, 1973, sec. 2.2; D. O. Brush, B. O. Almroth,
+*Buckling of Bars, Plates and Shells*, 1975, sec. 5.3.
 """
 
 from __future__ import annotations
@@ -61,22 +36,16 @@ LOAD_PATHS = ("inertia relief", "forward support", "aft support")
 
 
 def load_path(vehicle: Vehicle, supported_forward_end: bool | None = None) -> str:
-    """The load path of the thrust: from the end conditions, or as given.
+    """The load path of the thrust, one of :data:`LOAD_PATHS`.
 
     Parameters
     ----------
     vehicle : Vehicle
         The vehicle (its ``aft_end`` and ``fwd_end``).
     supported_forward_end : bool or None
-        None: from the ends (an aft end in :data:`AXIAL_SUPPORTS`: ``"aft support"``; else a
-        forward end in it: ``"forward support"``; else ``"inertia relief"``).  True: the nose
-        reacts the thrust as a dead load whatever the ends (``"forward support"``, the
-        classical uniformly compressed shell); False: ``"inertia relief"``.
-
-    Returns
-    -------
-    str
-        One of :data:`LOAD_PATHS`.
+        None: from the ends (aft end in :data:`AXIAL_SUPPORTS`: "aft support"; else forward end
+        in it: "forward support"; else "inertia relief"). True: "forward support" whatever the
+        ends; False: "inertia relief".
     """
     if supported_forward_end is not None:
         if not isinstance(supported_forward_end, bool | np.bool_):
@@ -102,12 +71,9 @@ class Prestate:
         N_s and N_theta (N/m, tension positive).
     ring_node : ndarray of int, shape (m,)
         Full DOF index of the first DOF of each ring's node.
-    ring_frame : ndarray, shape (m,)
-        Angle of that node's frame (rad): 0 for global (u_x, v, u_r, chi), phi for local.
-    ring_radius : ndarray, shape (m,)
-        Radius of each ring (m).
-    ring_force : ndarray, shape (m,)
-        Hoop force H of each ring (N, tension positive).
+    ring_frame, ring_radius, ring_force : ndarray, shape (m,)
+        Angle of the node's frame (rad; 0 global, phi local), radius (m) and hoop force H (N,
+        tension positive) of each ring.
     """
 
     load_path: str
@@ -134,7 +100,8 @@ def _cumulative(order: int) -> np.ndarray:
 def membrane_prestate(mesh: Mesh, path: str, *, aft_force: float,
                       axial: np.ndarray | None = None, radial: np.ndarray | None = None
                       ) -> Prestate:
-    """Membrane resultants and ring forces of one axisymmetric load case (module docstring).
+    """Membrane resultants and ring forces of one axisymmetric load case (Fluegge 1973, sec. 2.2);
+    ValueError for a loaded flat plate (no membrane state) or bad input.
 
     Parameters
     ----------
@@ -145,21 +112,7 @@ def membrane_prestate(mesh: Mesh, path: str, *, aft_force: float,
     aft_force : float
         Axial force on the aft edge (N), forward positive (the thrust F0).
     axial, radial : ndarray, shape (e, g), optional
-        Surface loads p_x, p_r at the Gauss points (Pa); integrated as the polynomials of
-        degree < g through those values.
-
-    Returns
-    -------
-    Prestate
-
-    Raises
-    ------
-    ValueError
-        A flat annular plate (cos(phi) = 0) under a load (no membrane state), or bad input.
-
-    References
-    ----------
-    .. [1] Flügge 1973, sec. 2.2 (axial and normal equilibrium of the membrane).
+        Surface loads p_x, p_r at the Gauss points (Pa), integrated as polynomials of degree < g.
     """
     if path not in LOAD_PATHS:
         raise ValueError(f"path = {path!r}: must be one of {LOAD_PATHS}")

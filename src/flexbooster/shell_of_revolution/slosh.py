@@ -1,22 +1,12 @@
 """The first lateral slosh mode of a tank's liquid and its spring-mass analogy.
 
-Under the axial acceleration a (the liquid settled aft) the free surface x = x_s carries the
-linearised condition dPhi/dx = kappa Phi, kappa = omega^2 / a; walls and ends are rigid.  For
-k = 1 the Steklov eigenproblem H Phi = kappa S Phi (H of :mod:`.liquid_mesh`, S = int psi psi
-r dr on the surface) is condensed on the surface nodes and its smallest kappa taken.  The
-slosh mass follows from the mode's lateral force on the tank: with Gamma = int_S y Phi dS and
-N = int_S Phi^2 dS, m_1 = rho_L kappa Gamma^2 / N (for a cylinder Abramson's
-2 R tanh(xi_1 h / R) m_L / (xi_1 (xi_1^2 - 1) h)); the rest of the liquid, m_L - m_1, is the
-fixed mass of the one-mode model.
+Under the axial acceleration a the free surface carries dPhi/dx = kappa Phi, kappa =
+omega^2 / a; for k = 1 the Steklov problem H Phi = kappa S Phi is condensed on the surface and
+its smallest kappa taken; m_1 = rho_L kappa Gamma^2 / N, Gamma = int_S y Phi dS,
+N = int_S Phi^2 dS; m_L - m_1 is the fixed mass. Theory: docs/theory/liquid.md.
 
-References
-----------
-.. [1] H. N. Abramson (ed.), NASA SP-106, 1966, ch. 2 (omega^2 = (a xi_1 / R)
-   tanh(xi_1 h / R)), ch. 6 (spring-mass analogy).
-.. [2] F. T. Dodge, *The New "Dynamic Behavior of Liquids in Moving Containers"*, SwRI, 2000,
-   ch. 1-3.
-.. [3] R. A. Ibrahim, *Liquid Sloshing Dynamics*, Cambridge, 2005, ch. 2 (modal analysis),
-   ch. 9 (equivalent mechanical models).
+References: H. N. Abramson (ed.), NASA SP-106, 1966, ch. 2, 6; F. T. Dodge, SwRI, 2000,
+ch. 1-3; R. A. Ibrahim, *Liquid Sloshing Dynamics*, 2005, ch. 2, 9.
 """
 
 from __future__ import annotations
@@ -42,12 +32,8 @@ class SloshMode:
     ----------
     omega : float
         Circular frequency (rad/s); ``hz`` the same in Hz.
-    mass : float
-        Slosh mass m_1 (kg): rho_L kappa (int_S y Phi dS)^2 / int_S Phi^2 dS (Abramson ch. 6).
-    fixed_mass : float
-        The rest of the liquid, m_L - m_1 (kg), rigidly attached to the tank.
-    liquid_mass : float
-        m_L (kg).
+    mass, fixed_mass, liquid_mass : float
+        Slosh mass m_1, the rest m_L - m_1 (rigidly attached) and m_L (kg).
     acceleration : float
         The axial acceleration that settles the liquid (m/s^2).
     """
@@ -70,28 +56,15 @@ class SloshMode:
 
 
 def slosh_mode(mesh: LiquidMesh, acceleration: float) -> SloshMode | None:
-    """First k = 1 slosh mode under the axial acceleration ``acceleration``.
-
-    kappa = omega^2 / a is the smallest eigenvalue of H Phi = kappa S Phi (rigid walls and
-    ends, dPhi/dx = kappa Phi on the free surface), condensed on the surface nodes; the slosh
-    mass follows from the mode's lateral force (spring-mass analogy).
+    """First k = 1 slosh mode under the axial acceleration, or None without a free surface
+    (``fill`` 0 or 1) (Abramson 1966 ch. 2, 6; Dodge 2000 ch. 3).
 
     Parameters
     ----------
     mesh : LiquidMesh
         The tank's liquid.
     acceleration : float
-        Axial acceleration a (m/s^2), > 0 (the thrust's, liquid settled aft).
-
-    Returns
-    -------
-    SloshMode or None
-        None when there is no free surface (``fill`` 0 or 1).
-
-    References
-    ----------
-    .. [1] Abramson 1966 ch. 2 (omega^2 = (a xi_1 / R) tanh(xi_1 h / R) for a cylinder),
-       ch. 6 (m_n = rho kappa_n Gamma_n^2 / N_n); Dodge 2000 ch. 3.
+        Axial acceleration a (m/s^2), > 0 (liquid settled aft).
     """
     a = positive("acceleration", acceleration)
     tank = mesh.tank

@@ -1,16 +1,5 @@
-"""The vehicle modes of a case, with the data of their figures (meridian and unrolled views).
-
-:func:`vehicle_survey` runs :func:`~flexbooster.shell_of_revolution.modes.vehicle_modes` for
-k = 0..k_max and keeps, for the figures, the deformed meridian of the lowest modes of the
-lowest harmonics and the normal displacement w(s, theta) of a few modes on the unrolled
-surface (:func:`mode_shape_views`); :class:`VehicleSurvey` is what ``flexbooster modes`` and
-``flexbooster run`` store (``results.json`` key ``vehicle_modes``).  Numerical core: numpy
-only.
-
-References
-----------
-.. [1] H. Kraus, *Thin Elastic Shells*, Wiley, 1967, ch. 2 (shells of revolution: the meridian
-   angle phi, the local meridional u and normal w displacements).
+"""The vehicle modes of a case, with the data of their figures (meridian and unrolled views):
+what ``flexbooster modes`` and ``run`` store (``results.json`` key ``vehicle_modes``).
 """
 
 from __future__ import annotations
@@ -57,25 +46,21 @@ class ModeShapeViews:
     harmonics : ndarray of int, shape (n_h,)
         Harmonics k shown in the meridian view, ascending.
     index : ndarray of int, shape (n_v,)
-        Row of each shown mode in :class:`VehicleModes` (grouped by k, ascending frequency).
+        Row of each shown mode in :class:`VehicleModes`.
     k, hz : ndarray, shape (n_v,)
-        Harmonic (dimensionless) and frequency (Hz) of each shown mode.
+        Harmonic and frequency (Hz) of each shown mode.
     label : tuple of str
         "k = 2, 3.18 Hz, radial, order 0" for each shown mode.
     x, r : ndarray, shape (n_pts,)
         Undeformed meridian: axial station and radius of the samples (m).
     x_deformed, r_deformed : ndarray, shape (n_v, n_pts)
-        The meridian in the plane theta = 0 displaced by ``scale`` times the mode (m).
+        The meridian at theta = 0 displaced by ``scale`` times the mode (m).
     scale : float
         Displacement of the largest modal component drawn (m): 8 % of the vehicle length.
-    unrolled_index : ndarray of int, shape (n_u,)
-        Rows of the modes drawn on the unrolled surface.
-    unrolled_label : tuple of str
-        Label of each.
-    theta : ndarray, shape (n_theta,)
-        Circumferential angle of the unrolled grid (rad), 0..2 pi.
-    s : ndarray, shape (n_s,)
-        Meridian arc length of the unrolled grid (m), 0 at the aft edge.
+    unrolled_index, unrolled_label : ndarray of int, tuple of str
+        Rows and labels of the modes drawn on the unrolled surface.
+    theta, s : ndarray
+        The unrolled grid: angle (rad, 0..2 pi) and meridian arc length (m, 0 at the aft edge).
     w : ndarray, shape (n_u, n_s, n_theta)
         Normal displacement W(s) cos(k theta) (max |W| over the three components = 1).
     """
@@ -115,38 +100,21 @@ def _label(modes: VehicleModes, i: int) -> str:
 def mode_shape_views(modes: VehicleModes, *, per_k: int = SHAPES_PER_K,
                      n_harmonics: int = SHAPE_HARMONICS, n_unrolled: int = UNROLLED_MODES,
                      n_theta: int = 73, n_s: int = 61) -> ModeShapeViews:
-    """The meridian and unrolled views of the lowest vehicle modes.
+    """The meridian (theta = 0) and unrolled views of the lowest vehicle modes; u_x = u cos phi -
+    w sin phi, u_r = u sin phi + w cos phi (Kraus 1967, ch. 2).
 
     Parameters
     ----------
     modes : VehicleModes
         From :func:`~flexbooster.shell_of_revolution.modes.vehicle_modes` (with shapes).
     per_k : int
-        Modes per harmonic in the meridian view (dimensionless), 1..20.
+        Modes per harmonic in the meridian view, 1..20.
     n_harmonics : int
-        Harmonics in the meridian view (dimensionless), 1..50: those whose lowest frequency is
-        lowest.
+        Harmonics in the meridian view, 1..50: those whose lowest frequency is lowest.
     n_unrolled : int
-        Modes on the unrolled surface (dimensionless), 0..20: the lowest of each of the first
-        harmonics of the meridian view, in ascending frequency.
+        Modes on the unrolled surface, 0..20: the lowest of each of the first harmonics.
     n_theta, n_s : int
-        Points of the unrolled grid around and along the meridian (dimensionless), 3..1000.
-
-    Returns
-    -------
-    ModeShapeViews
-
-    Notes
-    -----
-    The local meridional u and normal w displacements become axial and radial ones with the
-    element's meridian angle phi (dx/ds = cos phi, dr/ds = sin phi): u_x = u cos phi -
-    w sin phi, u_r = u sin phi + w cos phi (Kraus 1967, ch. 2).  The meridian view is the
-    plane theta = 0, where u and w (both ~ cos k theta) are largest and v (~ sin k theta)
-    vanishes: a torsional mode looks undeformed there.
-
-    References
-    ----------
-    .. [1] H. Kraus, *Thin Elastic Shells*, 1967, ch. 2.
+        Points of the unrolled grid around and along the meridian, 3..1000.
     """
     if not isinstance(modes, VehicleModes):
         raise ValueError(f"modes = {type(modes).__name__}: must be a VehicleModes")
@@ -205,18 +173,15 @@ class VehicleSurvey:
     vehicle : Vehicle
         The vehicle analysed.
     source : str
-        ``"vehicle"`` (the case's ``[[vehicle.segments]]``) or ``"memo"`` (built from
-        ``[booster]``).
+        ``"vehicle"`` (``[[vehicle.segments]]``) or ``"memo"`` (built from ``[booster]``).
     modes : VehicleModes
         Frequencies, labels and shapes for k = 0..k_max.
     k_max : int
-        Highest harmonic (dimensionless).
+        Highest harmonic.
     f_max : float or None
         Frequency bound (Hz); None: the band up to 5 times the lowest elastic frequency.
-    prestressed : bool
-        Whether the frequencies include the thrust prestress.
-    prestress_F0 : float
-        Thrust of the prestress (N), 0 when not prestressed.
+    prestressed, prestress_F0 : bool, float
+        Whether the frequencies include the thrust prestress, and its thrust (N).
     note : str
         One line on the prestress, for the output.
     views : ModeShapeViews or None
@@ -234,12 +199,7 @@ class VehicleSurvey:
     views: ModeShapeViews | None = None
 
     def rows(self) -> list[dict]:
-        """One JSON-ready mapping per mode: k, hz, rad_s, order, type, segment, kinetic shares.
-
-        Returns
-        -------
-        list of dict
-        """
+        """One JSON-ready mapping per mode: k, hz, rad_s, order, type, segment, kinetic shares."""
         m = self.modes
         return [{"k": int(m.k[i]), "hz": float(m.hz[i]), "rad_s": float(m.omega[i]),
                  "order": int(m.order[i]), "type": str(m.type[i]),
@@ -249,13 +209,7 @@ class VehicleSurvey:
                  "kinetic_w": float(m.kinetic_share[i, 2])} for i in range(len(m))]
 
     def to_columns(self) -> dict[str, list]:
-        """The table of ``vehicle-modes.csv`` as parallel columns.
-
-        Returns
-        -------
-        dict of str to list
-            Columns k, hz, rad_s, order, type, segment, kinetic_u, kinetic_v, kinetic_w.
-        """
+        """The table of ``vehicle-modes.csv`` as parallel columns."""
         m = self.modes
         return {"k": m.k.tolist(), "hz": m.hz.tolist(), "rad_s": m.omega.tolist(),
                 "order": m.order.tolist(), "type": m.type.tolist(),
@@ -270,10 +224,6 @@ class VehicleSurvey:
         ----------
         figures : bool
             Include the figure data (``figures``: None without it or without views).
-
-        Returns
-        -------
-        dict
         """
         m = self.modes
         return {
@@ -301,10 +251,6 @@ def has_flat_plate(vehicle: Vehicle) -> bool:
     ----------
     vehicle : Vehicle
         The vehicle.
-
-    Returns
-    -------
-    bool
     """
     return any(isinstance(seg, Cone) and seg.length == 0.0 for seg in vehicle.segments)
 
@@ -312,42 +258,27 @@ def has_flat_plate(vehicle: Vehicle) -> bool:
 def vehicle_survey(vehicle: Vehicle, *, k_max: int, F0: float, f_max: float | None = None,
                    prestress: bool = True, views: bool = True,
                    source: str = "vehicle") -> VehicleSurvey:
-    """Vehicle modes for k = 0..k_max, prestressed by the thrust by default.
+    """Vehicle modes for k = 0..k_max, prestressed by the thrust by default; ValueError for invalid
+    arguments or a prestress beyond a buckling load (Fluegge 1973, sec. 2.2.2).
 
     Parameters
     ----------
     vehicle : Vehicle
         The vehicle.
     k_max : int
-        Highest circumferential wave number (dimensionless), 0..200.
+        Highest circumferential wave number, 0..200.
     F0 : float
-        Steady thrust (N), > 0: the prestress, with the load path of the vehicle's ends
-        (:func:`.prestress.load_path`: inertia relief, F0 at the aft edge falling to 0 at the
-        nose in proportion to the mass ahead, unless a hinged or clamped end reacts it).
+        Steady thrust (N), > 0, with the load path of the vehicle's ends
+        (:func:`.prestress.load_path`).
     f_max : float, optional
         Keep the modes up to this frequency (Hz), > 0; default the band up to 5 times the
-        lowest elastic frequency over all k.
+        lowest elastic frequency.
     prestress : bool
-        Include the prestress; it is left out (and :attr:`VehicleSurvey.note` says so) for a
-        vehicle with a flat plate, which cannot carry the thrust as a membrane.
+        Include the prestress (left out, with a note, for a vehicle with a flat plate).
     views : bool
         Compute the figure data (:func:`mode_shape_views`).
     source : str
         ``"vehicle"`` or ``"memo"``, recorded in the result.
-
-    Returns
-    -------
-    VehicleSurvey
-
-    Raises
-    ------
-    ValueError
-        For invalid arguments, or a prestress beyond a buckling load of the vehicle.
-
-    References
-    ----------
-    .. [1] Flügge, *Stresses in Shells*, 1973, sec. 2.2.2 (membrane force of the prestress);
-       the package docs, ``docs/theory/shell-of-revolution.md``.
     """
     F0 = positive("F0", F0)
     if f_max is not None:

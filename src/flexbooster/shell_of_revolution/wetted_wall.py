@@ -1,15 +1,5 @@
-"""A tank's liquid on the shell-of-revolution model: its wetted wall in the shell's DOFs.
-
-Adapter between :mod:`.liquid` (geometry and quadrature in, added mass out) and the shell's
-mesh: the wall quadrature of the wetted part of the meridian, the normal displacement w of
-every reduced shell DOF at its points (the element shape functions, the node frames and the
-constraint map of :func:`.assembly.dof_map`), the tank ends' axial motion, and the wet system
-M + M_a of :func:`.assembly.system_matrices`.
-
-References
-----------
-.. [1] O. C. Zienkiewicz, R. L. Taylor, *The Finite Element Method*, vol. 2, 5th ed., 2000,
-   sec. 10.3 (node frames); H. N. Abramson, NASA SP-106, 1966 (the liquid).
+"""A tank's liquid on the shell-of-revolution model: the wetted wall in the shell's reduced DOFs
+(quadrature, normal displacement, the ends' axial motion) and the wet system M + M_a.
 """
 
 from __future__ import annotations
@@ -38,15 +28,12 @@ def vehicle_tank(vehicle: Vehicle, *, aft: float, fwd: float, fill: float, densi
     Parameters
     ----------
     vehicle : Vehicle
+        The vehicle.
     aft, fwd : float
-        Tank end stations (m from the aft edge), each a segment boundary or a vehicle end,
-        aft < fwd; the wall between them must be continuous (no plate, no radius step).
+        Tank end stations (m from the aft edge), segment boundaries or vehicle ends, aft < fwd;
+        the wall between them continuous (no plate, no radius step).
     fill, density, ends
         As :class:`.liquid.Tank`.
-
-    Returns
-    -------
-    Tank
     """
     bounds = np.concatenate(([0.0], np.cumsum([s.length for s in vehicle.segments])))
     tol = STATION_RTOL * bounds[-1]
@@ -74,10 +61,11 @@ class WettedWall:
     Attributes
     ----------
     wall : WallQuadrature
+        The quadrature points.
     displacement : ndarray, shape (n_points, n)
         Normal displacement w (m per unit reduced DOF) at the points.
     aft_end, fwd_end : ndarray, shape (n,)
-        Axial displacement u_x / r^k of the shell edge at the tank's ends (k <= 1; zero else).
+        Axial displacement u_x / r^k of the shell edge at the tank's ends (k <= 1; else zero).
     """
 
     wall: WallQuadrature
@@ -93,21 +81,17 @@ def wetted_wall(vehicle: Vehicle, mesh: Mesh, tank: Tank, k: int, *,
     Parameters
     ----------
     vehicle : Vehicle
+        The vehicle.
     mesh : Mesh
         The shell's mesh (:func:`.assembly.mesh_vehicle`).
     tank : Tank
         Its wall must be the vehicle's (:func:`vehicle_tank`).
     k : int
-        Circumferential harmonic (dimensionless), 0..200.
+        Circumferential harmonic, 0..200.
     breaks : array_like
-        Further stations (m) at which to cut the quadrature (the liquid mesh's
-        ``x_breaks``, so that every interval integrates a polynomial).
+        Further stations (m) at which to cut the quadrature (the liquid mesh's ``x_breaks``).
     points : int
-        Gauss points per interval (dimensionless), 1..40.
-
-    Returns
-    -------
-    WettedWall
+        Gauss points per interval, 1..40.
     """
     k = count("k", k, 0, 200)
     points = count("points", points, 1, 40)
@@ -183,7 +167,7 @@ class WetSystem:
         Sum of the tanks' M_a on the reduced shell DOFs (kg).
     basis : ndarray, shape (n, m), or None
         Orthonormal basis of the motions that keep every closed full tank's volume (k = 0);
-        None (q_c = q) when no tank constrains the motion.
+        None when no tank constrains the motion.
     """
 
     mass: np.ndarray
@@ -201,8 +185,9 @@ def wet_system_matrices(vehicle: Vehicle, k: int, tanks: tuple, *, mesh: Mesh | 
     Parameters
     ----------
     vehicle : Vehicle
+        The vehicle.
     k : int
-        Circumferential harmonic (dimensionless), 0..200.
+        Circumferential harmonic, 0..200.
     tanks : sequence of Tank
         The tanks (:func:`vehicle_tank`).
     mesh : Mesh, optional
@@ -211,10 +196,6 @@ def wet_system_matrices(vehicle: Vehicle, k: int, tanks: tuple, *, mesh: Mesh | 
         One per tank (default :func:`.liquid.liquid_mesh`), to reuse over k.
     prestress_F0, supported_forward_end
         As :func:`.assembly.system_matrices`.
-
-    Returns
-    -------
-    WetSystem
     """
     mesh = mesh_vehicle(vehicle) if mesh is None else mesh
     tanks = tuple(tanks)

@@ -1,20 +1,9 @@
 """Design sweeps: one analysis per point of a grid over case fields, on Dask, to an xarray Dataset.
 
-::
-
-    import flexbooster.sweep
-    ds = flexbooster.sweep.sweep("base.toml", {"thrust.gamma": [0.0, 0.05], "thrust.K": [0.2, 1]})
-    ds["max_growth_rate"]                 # xarray.DataArray over (thrust.gamma, thrust.K)
-
-Modules: :mod:`.spec` (sweep files, validation), :mod:`.run` (execution, serial or on Dask),
-:mod:`.store` (netCDF / zarr, resume), :mod:`.plot` (figure), :mod:`.page` (HTML page),
-:mod:`.command` (the ``flexbooster sweep`` command).
-
-The package itself is callable, ``flexbooster.sweep(base_case, axes, client=None)`` being
-:func:`flexbooster.sweep.run.sweep`: importing any submodule binds the attribute
-``flexbooster.sweep`` to this package, so a lazily exposed top-level *function* of the same
-name would be shadowed by it after the first use.  Importing this package imports neither dask
-nor xarray (they come with :mod:`.run`).
+``flexbooster.sweep.sweep("base.toml", {"thrust.gamma": [0.0, 0.05]})``; modules :mod:`.spec`,
+:mod:`.run`, :mod:`.store`, :mod:`.plot`, :mod:`.page`, :mod:`.command`. The package is
+callable as :func:`flexbooster.sweep.run.sweep` (a function of that name would be shadowed by
+the package once a submodule is imported); importing it imports neither dask nor xarray.
 """
 
 from __future__ import annotations

@@ -71,26 +71,10 @@ class _RateColumn(ProgressColumn):
 
 
 def local_cluster_config() -> dict:
-    """Dask settings of the local cluster: less bookkeeping CPU on the client and workers.
-
-    Returns
-    -------
-    dict
-        For ``dask.config.set``.  (1) The workers' statistical profiler samples every thread's
-        stack every 10 ms under the GIL, which the analysis (many small numpy calls) pays for;
-        the dashboard's profile page stays empty.  (2) The nanny starts workers with
-        ``MALLOC_TRIM_THRESHOLD_=65536`` (to hand memory back to the OS), which makes glibc
-        shrink and regrow the heap around the analysis' many small arrays: measured +0.35 s of
-        system time per 16 points (+15 % CPU); the variable is left unset.  The one-thread BLAS
-        settings (``OPENBLAS_NUM_THREADS=1`` ...) are kept.  (3) The event loops' periodic
-        work is spaced out (admin tick 20 ms -> 200 ms, worker memory monitor 100 ms -> 1 s,
-        system monitor 500 ms -> 2 s): an idle client + scheduler + worker used 0.05 CPU-s per
-        second, 0.015 after (memory limits are then enforced within 1 s).
-
-    References
-    ----------
-    Dask distributed configuration, ``distributed.worker.profile`` and
-    ``distributed.nanny.pre-spawn-environ``; glibc manual, ``mallopt`` (M_TRIM_THRESHOLD).
+    """Dask settings (for ``dask.config.set``) of the local cluster, for less bookkeeping CPU: no
+    statistical profiler on the workers, ``MALLOC_TRIM_THRESHOLD_`` left unset (glibc heap
+    churn: +15 % CPU measured), the one-thread BLAS settings kept, and the event loops' periodic
+    work spaced out (admin tick 200 ms, memory monitor 1 s, system monitor 2 s).
     """
     import dask
 
@@ -282,16 +266,12 @@ def _write_report(ds, output: Path) -> list[Path]:  # noqa: ANN001
 
 
 def main(argv: list[str] | None = None) -> None:
-    """Entry point of ``python -m flexbooster.sweep.command`` (same exit codes as the CLI).
+    """Entry point of ``python -m flexbooster.sweep.command`` (the CLI's exit codes).
 
     Parameters
     ----------
     argv : list of str, optional
         Command-line arguments (default: ``sys.argv[1:]``).
-
-    References
-    ----------
-    flexbooster README, "Command line" (exit codes).
     """
     try:
         sweep_command.main(args=argv, prog_name="flexbooster sweep", standalone_mode=False)

@@ -71,7 +71,7 @@ def _point_label(ds, flat: int) -> list:  # noqa: ANN001
 
 
 def sweep_page(ds, *, svg: str | None = None, title: str | None = None, max_rows: int = 50) -> str:  # noqa: ANN001
-    """The sweep report as one self-contained HTML page.
+    """The sweep report as one self-contained HTML page (no script, no external resource).
 
     Parameters
     ----------
@@ -82,16 +82,7 @@ def sweep_page(ds, *, svg: str | None = None, title: str | None = None, max_rows
     title : str, optional
         Page title (default: from the dataset).
     max_rows : int
-        Most rows of the "most unstable" and "failed" tables (dimensionless, >= 1).
-
-    Returns
-    -------
-    str
-        The HTML document (no script, no external resource).
-
-    References
-    ----------
-    Tech Memo 104, sections 4.1-4.2 (growth rates), 7.3 (unstable thrust frequencies).
+        Most rows of the "most unstable" and "failed" tables, >= 1.
     """
     if not isinstance(max_rows, int) or max_rows < 1:
         raise ValueError(f"max_rows = {max_rows!r}: must be a positive integer")

@@ -1,10 +1,6 @@
-"""The sweep figure: a map of the largest growth rate over two axes, or curves over one.
-
-Two or more axes (product mode): the first two axes span the plane, any further axes are
-reduced by the maximum; each cell shows the largest growth rate (1/s) of the point, "stable"
-cells (growth rate 0: every exponent on the Omega grid has a non-positive real part) in green,
-failed or not yet computed points in grey.  One axis, or a zip sweep (the first axis as
-abscissa): curves of the pitch and beam-action growth rates, failed points marked on the axis.
+"""The sweep figure: the largest growth rate (1/s) over the first two axes (further axes
+reduced by the maximum; stable cells green, failed or pending grey), or the pitch and
+beam-action growth rates along one axis (failed points marked).
 """
 
 from __future__ import annotations
@@ -115,15 +111,6 @@ def sweep_figure(ds, *, variable: str = "max_growth_rate", ax=None):  # noqa: AN
         The growth-rate variable of the map (1/s), default the largest of pitch and beam action.
     ax : matplotlib.axes.Axes, optional
         Axes to draw in; a new figure if omitted.
-
-    Returns
-    -------
-    matplotlib.figure.Figure
-        The figure.
-
-    References
-    ----------
-    Tech Memo 104, sections 4.1 (beam action) and 4.2 (rigid-body pitch): the growth rates.
     """
     if variable not in ds:
         raise ValueError(f"variable = {variable!r}: not in the dataset")
@@ -140,21 +127,12 @@ def sweep_figure(ds, *, variable: str = "max_growth_rate", ax=None):  # noqa: AN
 
 
 def figure_svg(fig) -> str:  # noqa: ANN001
-    """The figure as SVG text.
+    """The figure as a standalone SVG document (no date in its metadata: reproducible).
 
     Parameters
     ----------
     fig : matplotlib.figure.Figure
         The figure.
-
-    Returns
-    -------
-    str
-        A standalone SVG document (no date in its metadata: reproducible).
-
-    References
-    ----------
-    W3C, Scalable Vector Graphics (SVG) 1.1.
     """
     buffer = io.StringIO()
     fig.savefig(buffer, format="svg", metadata={"Date": None})  # reproducible: no date

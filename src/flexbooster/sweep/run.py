@@ -1,12 +1,9 @@
 """Running a sweep: every point is one :func:`flexbooster.analyze`, serially or on Dask.
 
-Points are validated up front (:func:`flexbooster.sweep.spec.point_cases`; an invalid point
-stops the sweep before anything runs), then analysed in batches: on a Dask cluster each task
-analyses a batch of points sized to take about :data:`TARGET_TASK_SECONDS` (the first tasks hold
-one point each, to measure; the last ones are smaller, to keep every worker busy to the end).
-An exception inside a point's analysis (or a non-finite result) is recorded in that point's
-``status``/``message`` and the sweep goes on; so is a batch whose worker died.  Each point is
-computed by the same code as a serial ``analyze(case)``, hence bit-identical to it.
+Points are validated up front, then analysed in batches of about
+:data:`TARGET_TASK_SECONDS` per Dask task; an exception or non-finite result in a point (or
+a dead worker's batch) is recorded in its ``status`` / ``message`` and the sweep goes on.
+Each point is bit-identical to a serial ``analyze(case)``.
 """
 
 from __future__ import annotations
@@ -65,21 +62,12 @@ _STABILITY_VARIABLES = {"stability_count", "stability_active"}
 
 
 def result_variables(*, beam_action: bool = True, stability: bool = True) -> dict:
-    """The result variables a sweep with these analysis stages stores.
+    """Name -> (units, description) of the result variables a sweep with these stages stores.
 
     Parameters
     ----------
     beam_action, stability : bool
-        The stages computed (see :func:`flexbooster.analyze`); stability needs beam_action.
-
-    Returns
-    -------
-    dict
-        Name -> (units, description), a subset of :data:`RESULT_VARIABLES`.
-
-    References
-    ----------
-    Tech Memo 104, sections 4.1 (beam action) and 7.3 (unstable thrust frequencies).
+        The stages computed; stability needs beam_action.
     """
     skip = set()
     if not beam_action:
@@ -90,25 +78,13 @@ def result_variables(*, beam_action: bool = True, stability: bool = True) -> dic
 
 
 def point_scalars(data: Mapping[str, Any]) -> dict[str, float]:
-    """The scalar results of one analysis, read from ``Results.to_dict()`` (results.json).
-
-    The one place that maps the results.json schema to the sweep's variables: extend it when
-    the analysis grows new summary numbers (instability regions, severities).
+    """The scalar results of one analysis (SI: rad/s, 1/s, counts), read from results.json: the
+    one place that maps its schema to the sweep's variables.
 
     Parameters
     ----------
     data : Mapping
         ``flexbooster.analyze(case).to_dict()``.
-
-    Returns
-    -------
-    dict
-        Variable name -> float (SI: rad/s, 1/s, counts); only the stages computed.
-
-    References
-    ----------
-    Tech Memo 104: omega_1 eq. (4.2-8b), rigid-body pitch 4.2, beam action 4.1, shell
-    frequencies 5.4/6.2, unstable thrust frequencies 7.3; results.json schema, README.
     """
     freq, pitch = data["frequencies"], data["pitch"]
     # instability from the bands (exact edges), never from grid samples
@@ -140,9 +116,6 @@ def point_scalars(data: Mapping[str, Any]) -> dict[str, float]:
 def _analysis_options(analyze: Callable, *, beam_action: bool, stability: bool) -> dict:
     """Keyword arguments of ``analyze`` for a sweep point: the stages, no figure data and no
     vehicle regions (not stored by a sweep).
-
-    ``figures=False`` where ``analyze`` takes it (the figure data, e.g. the beam-action
-    (Omega, gamma) chart, cost more than the point's numbers and are not stored by a sweep).
     """
     options = {"beam_action": beam_action, "stability": stability}
     parameters = inspect.signature(analyze).parameters
@@ -156,26 +129,17 @@ def _analysis_options(analyze: Callable, *, beam_action: bool, stability: bool) 
 def analyze_point(
     index: int, case: Any, *, beam_action: bool = True, stability: bool = True
 ) -> PointResult:
-    """Analyse one point; an exception or a non-finite result becomes an ``error`` status.
+    """Analyse one point: ``ok`` with :func:`point_scalars`, or ``error`` with ``"ExceptionType:
+    message"`` (also for a non-finite number).
 
     Parameters
     ----------
     index : int
-        Flat index of the point (dimensionless).
+        Flat index of the point.
     case : flexbooster.Case
         The validated case.
     beam_action, stability : bool
         Stages passed to :func:`flexbooster.analyze`.
-
-    Returns
-    -------
-    PointResult
-        ``ok`` with :func:`point_scalars`, or ``error`` with ``"ExceptionType: message"``
-        (also for a stored number that is not finite).
-
-    References
-    ----------
-    Tech Memo 104 (the analysis); see :func:`flexbooster.analyze`.
     """
     from ..analysis import analyze
 
@@ -198,7 +162,7 @@ def analyze_point(
 def analyze_batch(
     indices: Sequence[int], cases: Sequence[Any], *, beam_action: bool, stability: bool
 ) -> list[PointResult]:
-    """Analyse a batch of points (one Dask task).
+    """Analyse a batch of points (one Dask task), one PointResult per point in order.
 
     Parameters
     ----------
@@ -208,15 +172,6 @@ def analyze_batch(
         Their validated cases.
     beam_action, stability : bool
         Stages passed to :func:`flexbooster.analyze`.
-
-    Returns
-    -------
-    list of PointResult
-        One per point, in order.
-
-    References
-    ----------
-    Dask distributed, ``Client.submit`` (one task per batch).
     """
     return [
         analyze_point(i, c, beam_action=beam_action, stability=stability)
@@ -320,7 +275,9 @@ def run_sweep(
     batch_size: int | None = None,
     cases: Sequence[Any] | None = None,
 ) -> Any:
-    """Run a parsed sweep: validate every point, analyse the ones not stored, store the results.
+    """Run a parsed sweep: validate every point, analyse the ones not stored, store the results
+    (layout in :mod:`flexbooster.sweep.store`). CaseError before anything runs for an invalid
+    point or a store of another sweep; ValueError for a bad ``batch_size``.
 
     Parameters
     ----------
@@ -331,30 +288,13 @@ def run_sweep(
     store : str or pathlib.Path, optional
         ``*.nc`` or ``*.zarr`` output (zarr: streamed per batch); None: memory only.
     resume : bool
-        Keep the points already in ``store`` (of the same sweep) and compute only the others.
+        Keep the points already in ``store`` (of the same sweep).
     progress : callable, optional
-        ``progress(done, failed, total)`` (points), called at the start and after each batch.
+        ``progress(done, failed, total)``, at the start and after each batch.
     batch_size : int, optional
-        Points per task (dimensionless, >= 1); default: sized to about
-        :data:`TARGET_TASK_SECONDS` per task from the measured time per point.
+        Points per task, >= 1; default about :data:`TARGET_TASK_SECONDS` per task.
     cases : sequence of flexbooster.Case, optional
         The points' validated cases if already made by :func:`point_cases`.
-
-    Returns
-    -------
-    xarray.Dataset
-        The results (layout in :mod:`flexbooster.sweep.store`).
-
-    Raises
-    ------
-    CaseError
-        Before anything runs, for an invalid point or a store of another sweep.
-    ValueError
-        For a ``batch_size`` that is not a positive integer.
-
-    References
-    ----------
-    Dask distributed, ``Client.submit`` and ``as_completed``; docs/sweeps.md, "Execution".
     """
     if batch_size is not None and (
         isinstance(batch_size, bool) or not isinstance(batch_size, int) or batch_size < 1
@@ -396,19 +336,20 @@ def sweep(
     progress: Callable[[int, int, int], None] | None = None,
     batch_size: int | None = None,
 ) -> Any:
-    """A design sweep: analyse the base case at every point of the axes.
+    """A design sweep: the base case analysed at every point of the axes, as an xarray Dataset
+    (one dimension per axis, a variable per scalar result, ``status``, ``message``,
+    ``computed``); CaseError before anything runs for an invalid value (docs/sweeps.md).
 
     Parameters
     ----------
     base_case : flexbooster.Case or Mapping or str or pathlib.Path
-        The base case: validated, as a raw mapping (TOML values, units allowed) or a case file.
+        The base case: validated, a raw mapping (units allowed) or a case file.
     axes : Mapping
-        Dotted case field -> list of values (SI numbers or strings with units), or
-        ``{start, stop, num}`` with optional ``scale = "log"``.
+        Dotted case field -> list of values, or ``{start, stop, num}`` with ``scale = "log"``.
     client : distributed.Client, optional
         Run on this Dask cluster; None: serially in this process.
     mode : str
-        ``"product"`` (every combination, one dimension per axis) or ``"zip"``.
+        ``"product"`` (one dimension per axis) or ``"zip"``.
     beam_action, stability : bool
         Stages passed to :func:`flexbooster.analyze` for every point.
     store : str or pathlib.Path, optional
@@ -419,21 +360,6 @@ def sweep(
         ``progress(done, failed, total)``.
     batch_size : int, optional
         Points per Dask task (default: automatic, about 0.5 s per task).
-
-    Returns
-    -------
-    xarray.Dataset
-        One dimension per axis (SI coordinates with ``units``), a variable per scalar result
-        (:data:`RESULT_VARIABLES`), ``status``, ``message`` and ``computed`` per point.
-
-    Raises
-    ------
-    CaseError
-        Before anything runs, naming the axis and the point, for an invalid value.
-
-    References
-    ----------
-    Tech Memo 104 (each point's analysis); Dask distributed, ``Client.submit``/``as_completed``.
     """
     spec = make_spec(base_case, axes, mode=mode, beam_action=beam_action, stability=stability)
     return run_sweep(

@@ -1,21 +1,11 @@
 """Sweep files: a base case and axes over its fields, parsed and validated before anything runs.
 
-A sweep file is TOML::
-
-    case = "base.toml"                # relative to the sweep file, or an inline [case] table
-    mode = "product"                  # or "zip" (may also be written inside [axes])
-    beam_action = true                # analysis stages, as flexbooster.analyze's flags
-    stability = true
-
-    [axes]                            # any case field by its dotted name; units as in case files
-    "thrust.gamma" = [0.0, 0.05, 0.1]
-    "thrust.K" = {start = 0.2, stop = 1.0, num = 5}              # linspace
-    "thrust.omega_max" = {start = "100 Hz", stop = "1 kHz", num = 4, scale = "log"}
-    "booster.thickness" = ["10 mm", "20 mm"]
-
-Every point is the base case's *raw* TOML mapping with each axis value set at its dotted path
-(``thrust.F0`` and ``thrust.T0`` replace each other, since a case holds exactly one), validated by
-:func:`flexbooster.load_case`.  This module imports neither dask nor xarray.
+A sweep file (docs/sweeps.md) names a base case (``case``, a path or an inline table), the
+``mode`` ("product" or "zip"), the analysis stages and ``[axes]``: dotted case fields with a
+list of values or ``{start, stop, num[, scale]}``, units as in case files. Every point is the
+base case's raw TOML mapping with each axis value set at its path (``thrust.F0`` and
+``thrust.T0`` replace each other), validated by :func:`flexbooster.load_case`. Imports
+neither dask nor xarray.
 """
 
 from __future__ import annotations
@@ -76,22 +66,13 @@ _NUMBER_WITH_UNIT = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)
 
 
 def axis_units(name: str) -> str:
-    """SI unit of a case field, as the sweep output's ``units`` attribute.
+    """SI unit of a case field: ``"m"``, ``"Pa"``, ``"rad/s"`` ..., ``"1"`` for dimensionless
+    numbers and counts, ``""`` for text.
 
     Parameters
     ----------
     name : str
         Dotted case field, e.g. ``"booster.thickness"``.
-
-    Returns
-    -------
-    str
-        ``"m"``, ``"Pa"``, ``"rad/s"`` ..., ``"1"`` for dimensionless numbers and counts
-        (``truncation.*``), ``""`` for text (``name``).
-
-    References
-    ----------
-    Tech Memo 104, section 2.2 (the case's quantities); flexbooster README, "Case files".
     """
     if name.startswith("truncation."):
         return "1"
@@ -107,7 +88,7 @@ class Axis:
     name : str
         Dotted case field, e.g. ``"thrust.gamma"``.
     values : tuple
-        The values, in order, as the case file would hold them (SI number or unit string).
+        The values, in order, as the case file would hold them.
     """
 
     name: str
@@ -130,12 +111,12 @@ class SweepSpec:
     Attributes
     ----------
     base : dict
-        The base case as its raw TOML mapping (numbers in SI or strings with units).
+        The base case as its raw TOML mapping.
     axes : tuple of Axis
         The axes, in file order.
     mode : str
-        ``"product"`` (every combination; one dimension per axis) or ``"zip"`` (axes of equal
-        length taken element by element; one dimension ``point``).
+        ``"product"`` (one dimension per axis) or ``"zip"`` (equal-length axes element by
+        element; one dimension ``point``).
     beam_action, stability : bool
         Flags passed to :func:`flexbooster.analyze` for every point.
     """
@@ -251,29 +232,15 @@ def _range(name: str, table: Mapping[str, Any]) -> tuple:
 
 
 def parse_axes(axes: Mapping[str, Any]) -> tuple[Axis, ...]:
-    """Axes from the ``[axes]`` table: a list of values or ``{start, stop, num[, scale]}``.
+    """Axes from the ``[axes]`` table, in its order (numpy linspace / logspace for ranges);
+    CaseError naming ``axes.<field>`` for an empty list, a bad value, a malformed range, or both
+    ``thrust.F0`` and ``thrust.T0``.
 
     Parameters
     ----------
     axes : Mapping
-        Dotted case field -> list of values (numbers in SI or strings with units), or a table
-        ``{start, stop, num}`` with optional ``scale = "linear"`` (default) or ``"log"``
-        (start and stop: numbers, or strings with the same unit, e.g. ``"10 mm"``).
-
-    Returns
-    -------
-    tuple of Axis
-        In the order of the mapping.
-
-    Raises
-    ------
-    CaseError
-        Naming ``axes.<field>`` for an empty list, a value that is neither a number nor a
-        string, a malformed range, or both ``thrust.F0`` and ``thrust.T0`` as axes.
-
-    References
-    ----------
-    numpy.linspace / numpy.logspace (the grid formulas).
+        Dotted case field -> list of values (SI numbers or strings with units), or
+        ``{start, stop, num}`` with ``scale = "linear"`` (default) or ``"log"``.
     """
     if not isinstance(axes, Mapping) or not axes:
         raise CaseError("axes", axes, "must be a non-empty table of case field = values")
@@ -306,13 +273,14 @@ def make_spec(
     stability: bool = True,
     base_dir: str | Path | None = None,
 ) -> SweepSpec:
-    """Build and check a :class:`SweepSpec` (the axes' values are checked by :func:`point_cases`).
+    """Build and check a :class:`SweepSpec` (point values are checked by :func:`point_cases`);
+    CaseError for a missing or unreadable case file, an unknown mode, bad axes, zip axes of
+    unequal length, or more than :data:`MAX_POINTS` points.
 
     Parameters
     ----------
     base : Mapping or str or pathlib.Path
-        Raw case mapping (as parsed from TOML), a validated ``Case`` (converted to its SI
-        mapping), or the path of a case TOML file (relative to ``base_dir``).
+        Raw case mapping, a validated ``Case`` (its SI mapping), or a case file path.
     axes : Mapping
         See :func:`parse_axes`.
     mode : str
@@ -321,21 +289,6 @@ def make_spec(
         Analysis stages (see :func:`flexbooster.analyze`).
     base_dir : str or pathlib.Path, optional
         Folder against which a relative case path is resolved (default: the working folder).
-
-    Returns
-    -------
-    SweepSpec
-        The sweep.
-
-    Raises
-    ------
-    CaseError
-        For a missing or unreadable case file, an unknown mode, bad axes, zip axes of unequal
-        length, or more than :data:`MAX_POINTS` points.
-
-    References
-    ----------
-    flexbooster README, "Case files" (the base case); docs/sweeps.md (the sweep file).
     """
     raw = _base_mapping(base, base_dir)
     if mode not in MODES:
@@ -375,28 +328,14 @@ def _base_mapping(base: Any, base_dir: str | Path | None) -> dict:
 
 
 def load_sweep(source: str | Path | Mapping[str, Any]) -> SweepSpec:
-    """Parse a sweep file (or its parsed mapping) into a :class:`SweepSpec`.
+    """Parse a sweep file (or its parsed mapping) into a :class:`SweepSpec`; CaseError for a
+    missing or malformed file, an unknown key, or any rule of :func:`make_spec`.
 
     Parameters
     ----------
     source : str or pathlib.Path or Mapping
-        Path of the sweep TOML file, or the parsed mapping (a relative ``case`` path is then
-        resolved against the working folder).
-
-    Returns
-    -------
-    SweepSpec
-        The sweep; its points are validated by :func:`point_cases`.
-
-    Raises
-    ------
-    CaseError
-        For a missing or malformed sweep file, an unknown key, or any rule of
-        :func:`make_spec`.
-
-    References
-    ----------
-    TOML v1.0 (tomllib); docs/sweeps.md, "Sweep file".
+        Path of the sweep TOML file, or the parsed mapping (a relative ``case`` path then
+        against the working folder).
     """
     base_dir: Path | None = None
     if isinstance(source, Mapping):
@@ -463,27 +402,13 @@ def _describe(spec: SweepSpec, flat: int) -> str:
 
 
 def point_cases(spec: SweepSpec) -> list:
-    """Validate every point of the sweep (before anything runs) and return its cases.
+    """Validate every point before anything runs: one case per point in flat C order; CaseError
+    at the first invalid point (field, value, rule, the point's index and axis values).
 
     Parameters
     ----------
     spec : SweepSpec
         The sweep.
-
-    Returns
-    -------
-    list of flexbooster.Case
-        One validated case per point, in flat C order of :attr:`SweepSpec.shape`.
-
-    Raises
-    ------
-    CaseError
-        At the first invalid point: the field (``axes.<name>`` when an axis value broke the
-        rule), the value and the rule, followed by the point's index and axis values.
-
-    References
-    ----------
-    flexbooster README, "Case files": the rules of :func:`flexbooster.load_case`.
     """
     from ..case import load_case
 
@@ -509,7 +434,7 @@ def point_cases(spec: SweepSpec) -> list:
 
 
 def si_value(case: Any, name: str) -> Any:
-    """The SI value of a dotted field of a validated case.
+    """The SI value of a dotted field of a validated case (``Case.to_si_dict``: F0 and T0 both).
 
     Parameters
     ----------
@@ -517,15 +442,6 @@ def si_value(case: Any, name: str) -> Any:
         A validated case.
     name : str
         Dotted field, e.g. ``"booster.thickness"``.
-
-    Returns
-    -------
-    float or int or str
-        The value in SI (``Case.to_si_dict``: thrust F0 and T0 both present).
-
-    References
-    ----------
-    Tech Memo 104, section 2.2 (F0 = 2 pi R1 T0); flexbooster README, "Case files".
     """
     node: Any = case.to_si_dict()
     for part in name.split("."):

@@ -1,19 +1,11 @@
 """Where sweep results go: memory, a netCDF file (h5netcdf) or a zarr store streamed per batch.
 
-Layout (the same in all three): one dimension per axis (product mode; coordinate = the axis
-values in SI, ``units`` attribute) or one dimension ``point`` with the axes as coordinates along
-it (zip mode); one float64 variable per scalar result (NaN where the point failed or is not yet
-computed); ``status`` (``"pending"``, ``"ok"`` or ``"error"``), ``message`` (the error, else
-``""``) and ``computed`` (how many times the point was analysed: 1 everywhere after a complete
-sweep, whether or not it was interrupted and resumed).  The attributes record the sweep
-(``sweep_json``) and its ``sweep_fingerprint``: ``--resume`` refuses a store of another sweep.
-
-A zarr store is created up front and every finished batch is written into it at once (the
-``status`` last, so a point counts as stored only once its numbers are), with Ctrl-C deferred
-until the batch is written; an interrupted zarr sweep resumes from what is stored.  A netCDF file
-cannot be streamed into: it is written (atomically, temporary name then rename) when the sweep
-ends, and also when it is interrupted, with the points not yet computed marked ``pending``, so
-that ``--resume`` works for it too.
+One layout for all three (docs/sweeps.md): a dimension per axis (or ``point`` in zip mode),
+a float64 variable per scalar result (NaN: failed or pending), ``status``, ``message``,
+``computed``, and the attributes ``sweep_json`` and ``sweep_fingerprint`` (``--resume``
+refuses another sweep's store). A zarr store takes each batch at once (status last, Ctrl-C
+held); a netCDF file is written atomically at the end or on interruption, unfinished points
+``pending``.
 """
 
 from __future__ import annotations
@@ -67,9 +59,9 @@ class PointResult:
     message : str
         The error message (``""`` when ok).
     values : dict
-        Scalar result name -> float (SI; see ``flexbooster.sweep.run.RESULT_VARIABLES``).
+        Scalar result name -> float (SI).
     seconds : float
-        Wall time of the analysis on the worker (s); used to size batches, not stored.
+        Wall time of the analysis on the worker (s), to size batches; not stored.
     """
 
     index: int
@@ -98,7 +90,8 @@ def _coordinate(values: Sequence) -> np.ndarray:
 def build_template(
     spec: SweepSpec, cases: Sequence, *, variables: Mapping[str, tuple[str, str]]
 ) -> xr.Dataset:
-    """The empty result dataset of a sweep: coordinates, every point ``pending``.
+    """The empty result dataset of a sweep: result variables NaN, ``status`` ``"pending"``,
+    ``message`` ``""``, ``computed`` 0 (CF ``units`` / ``long_name`` attributes).
 
     Parameters
     ----------
@@ -108,16 +101,6 @@ def build_template(
         The validated case of every point (flat C order), for the SI axis values.
     variables : Mapping
         Result variable name -> (units, description).
-
-    Returns
-    -------
-    xarray.Dataset
-        Result variables all NaN, ``status`` ``"pending"``, ``message`` ``""``, ``computed`` 0.
-
-    References
-    ----------
-    NetCDF Climate and Forecast (CF) conventions, ``units``/``long_name`` attributes;
-    xarray data model (dimensions, coordinates).
     """
     shape, dims = spec.shape, spec.dims
     coords: dict[str, xr.Variable] = {}
@@ -325,9 +308,8 @@ class ZarrSink(MemorySink):
     path : pathlib.Path
         The ``.zarr`` folder.
     resume : bool
-        Open the existing store (if any) and keep its stored points; otherwise the store is
-        created anew (an existing zarr store at ``path`` is replaced; any other existing folder
-        is refused).
+        Keep the existing store's points; otherwise the store is created anew (an existing
+        zarr store replaced, any other folder refused).
     """
 
     def __init__(self, template: xr.Dataset, path: Path, *, resume: bool) -> None:
@@ -385,30 +367,18 @@ class ZarrSink(MemorySink):
 
 
 def open_sink(path: str | Path | None, template: xr.Dataset, *, resume: bool = False) -> MemorySink:
-    """The sink for an output path, chosen by its suffix.
+    """The sink for an output path by its suffix (:class:`MemorySink`, :class:`NetcdfSink` or
+    :class:`ZarrSink`); CaseError for another suffix, another sweep's store, or a folder that is
+    not a zarr store.
 
     Parameters
     ----------
     path : str or pathlib.Path or None
-        ``*.nc`` (netCDF, h5netcdf), ``*.zarr`` (zarr store) or None (memory only).
+        ``*.nc`` (netCDF), ``*.zarr`` (zarr store) or None (memory only).
     template : xarray.Dataset
         From :func:`build_template`.
     resume : bool
         Keep the points already stored at ``path``.
-
-    Returns
-    -------
-    MemorySink
-        A :class:`MemorySink`, :class:`NetcdfSink` or :class:`ZarrSink`.
-
-    Raises
-    ------
-    CaseError
-        For another suffix, a store of another sweep, or a folder that is not a zarr store.
-
-    References
-    ----------
-    netCDF-4 / HDF5 via h5netcdf; zarr storage specification, version 2.
     """
     if path is None:
         return MemorySink(template)

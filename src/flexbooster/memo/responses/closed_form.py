@@ -1,11 +1,4 @@
-"""The memo's closed-form responses (6.2, errata fixed) and the resonance-safe kernel.
-
-Part of :mod:`flexbooster.memo.responses`; see its docstring for the model.
-
-References
-----------
-.. [1] Tech Memo 104, sections 4.1, 4.2, 5.2-5.4, 6.1, 6.2, 7.1.
-"""
+"""The memo's closed-form responses (6.2, errata fixed) and the resonance-safe kernel."""
 
 from __future__ import annotations
 
@@ -24,14 +17,9 @@ __all__ = [
     "harmonic_response",
 ]
 
-# --------------------------------------------------------------------------------------------
-# The memo's closed forms (errata fixed) and the resonance-safe kernel
-# --------------------------------------------------------------------------------------------
 def _convolution(omega: np.ndarray, nu: np.ndarray, f: np.ndarray, tau: np.ndarray) -> np.ndarray:
-    """(1/omega) int_0^tau Re sum_h f_h e^{i nu_h eta} sin omega (tau - eta) d eta, memo form.
-
-    omega (n,), nu (H,), f (n, H) -> (n, nt); the bracket of 6.2-3 / 6.2-28:
-    [e^{i nu tau} - cos omega tau - i (nu/omega) sin omega tau] / (omega^2 - nu^2).
+    """(1/omega) int_0^tau Re sum_h f_h e^{i nu_h eta} sin omega (tau - eta) d eta, memo form:
+    the bracket of 6.2-3 / 6.2-28, omega (n,), nu (H,), f (n, H) -> (n, nt).
     """
     w = omega[:, None, None]
     v = nu[None, :, None]
@@ -41,7 +29,8 @@ def _convolution(omega: np.ndarray, nu: np.ndarray, f: np.ndarray, tau: np.ndarr
 
 
 def closed_form_0k(omega: Any, u0: Any, nu: Any, P: Any, tau: Any) -> np.ndarray:
-    """U_0k(tau) of eq. (6.2-3), errata fixed: U'' + omega^2 U = P, U(0) = u0, U'(0) = 0.
+    """U_0k(tau) (units of L), shape (n, nt), of eq. (6.2-3): U'' + omega^2 U = P, U(0) = u0,
+    U'(0) = 0; errata R-1, R-2 (docs/memo-errata.md).
 
     Parameters
     ----------
@@ -55,23 +44,6 @@ def closed_form_0k(omega: Any, u0: Any, nu: Any, P: Any, tau: Any) -> np.ndarray
         Shape (n, H) complex, P_0k = Re sum_h P_h e^{i nu_h tau} (per unit mass).
     tau : array_like
         Output times.
-
-    Returns
-    -------
-    numpy.ndarray
-        Shape (n, nt), U_0k in units of L.
-
-    Notes
-    -----
-    6.2-3: u0 cos omega tau + sum_h P_h/(nu_h^2 - omega^2) [cos omega tau
-    + i (nu_h/omega) sin omega tau - e^{i nu_h tau}] (real part): the psi'' terms
-    (nu = Omega_i, P = -A_i Omega_i^2 / lambda) and the beam terms
-    (nu = (alpha_r + s) Omega_bar, P = lambda/(2(1+nu) mu) [C_B + C_n [phi_n]_a^c / (c - a)]).
-    Errata R-1 (6.2-1: g* for g*'), R-2 (6.2-3: the sum over n also multiplies C_B).
-
-    References
-    ----------
-    Tech Memo 104, eqs. (6.2-1)..(6.2-3).
     """
     omega = np.atleast_1d(finite_array("omega", omega, positive=True))
     tau = checked_times(tau)
@@ -88,7 +60,9 @@ def closed_form_0k(omega: Any, u0: Any, nu: Any, P: Any, tau: Any) -> np.ndarray
 
 def closed_form_j0(coef: dict, u0: Any, w0: Any, nu: Any, P1: Any, P2: Any,
                    tau: Any, form: str = "corrected") -> tuple[np.ndarray, np.ndarray]:
-    """U_j0, W_j0 of eqs. (6.2-8), (6.2-9) (evaluated: 6.2-11, 6.2-12), errata fixed.
+    """U_j0, W_j0 (units of L), each (n, nt), of eqs. (6.2-8), (6.2-9) (evaluated: 6.2-11, 6.2-12),
+    with omega_m^2 of 6.2-6 (E6) and the convolutions I_m; errata R-3 (factor 1/(a_j0 j_j0)),
+    R-4 ((b_j0) w_j0 for (h_j0) w_j0).
 
     Parameters
     ----------
@@ -103,33 +77,7 @@ def closed_form_j0(coef: dict, u0: Any, w0: Any, nu: Any, P1: Any, P2: Any,
     tau : array_like
         Output times.
     form : {"corrected", "printed"}
-        ``"printed"`` keeps the memo's 6.2-8/9 as printed: no factor 1/(a) and (h_j0) w_j0 in
-        the second term of 6.2-9 (errata R-3, R-4).
-
-    Returns
-    -------
-    U, W : numpy.ndarray
-        Shape (n, nt) each, units of L.
-
-    Notes
-    -----
-    With (a) = a j, (b) = c j + a k - h b, (c) = c k - h d (6.2-7), omega_m^2 = [(b) -+
-    sqrt((b)^2 - 4 (a)(c))] / (2 (a)) (6.2-6 with erratum E6), and I_m = (1/omega_m) int P
-    sin omega_m (tau - eta):
-
-    U = sum_m (-1)^m / ((omega_1^2 - omega_2^2)(a)) { [j (a3 - omega_m^2)(a u0 + b w0)
-        - b (a2 - omega_m^2) j w0] cos omega_m tau + j (a3 - omega_m^2) I_m[P1]
-        - b (a2 - omega_m^2) I_m[P2] }
-    W = sum_m (-1)^m / ((omega_1^2 - omega_2^2)(a)) { [a (a1 - omega_m^2) j w0
-        - h (a u0 + b w0)] cos omega_m tau + a (a1 - omega_m^2) I_m[P2] - h I_m[P1] }
-
-    with b (a2 - omega^2) = d - b omega^2 etc. (so b = 0, the zero phase, is allowed).
-    Errata R-3 (the factor 1/(a) = 1/(a_j0 j_j0) is missing in 6.2-8, -9, -11, -12) and R-4
-    (6.2-9: (h_j0) w_j0 printed for (b_j0) w_j0).
-
-    References
-    ----------
-    Tech Memo 104, eqs. (6.2-4)..(6.2-12).
+        ``"printed"``: 6.2-8/9 as printed (without the R-3, R-4 corrections).
     """
     a, b, c, d, h, j, k = (np.atleast_1d(np.asarray(coef[x], dtype=float))
                            for x in ("a", "b", "c", "d", "h", "j", "k"))
@@ -176,42 +124,22 @@ def _adjugate3(A: np.ndarray) -> np.ndarray:
 
 def closed_form_jk(mass: Any, stiff: Any, x0: Any, nu: Any, Q: Any,
                    tau: Any) -> np.ndarray:
-    """U_jk, V_jk, W_jk of eq. (6.2-20) with the convolutions (6.2-25..30), errata fixed.
+    """(U, V, W)_jk (units of L), shape (n, 3, nt), of eq. (6.2-20) with the convolutions
+    (6.2-25..30): x = sum_m adj(K - omega_m^2 M) / (det M D_m) [M x0 cos omega_m tau + I_m[Q]],
+    D_m = prod_{i != m} (omega_i^2 - omega_m^2) (6.2-21); erratum R-5.
 
     Parameters
     ----------
     mass, stiff : array_like
         Shape (n, 3, 3), M and K of (5.4-8).
     x0 : array_like
-        Shape (n, 3), initial displacements (u_jk, v_jk, w_jk) (units of L), zero velocities.
+        Shape (n, 3), initial displacements (units of L), zero velocities.
     nu : array_like
         Shape (H,), forcing frequencies (units of omega_1).
     Q : array_like
         Shape (n, 3, H) complex: [Q_jk]_1..3 = Re sum_h Q_h e^{i nu_h tau}.
     tau : array_like
         Output times.
-
-    Returns
-    -------
-    numpy.ndarray
-        Shape (n, 3, nt), (U, V, W) in units of L.
-
-    Notes
-    -----
-    The Laplace solution 6.2-14 is x(s) = adj(M s^2 + K) [Q(s) + s M x0] / Delta(s) with
-    Delta = det M prod_m (s^2 + omega_m^2) (6.2-15, E6).  adj(M s^2 + K) is of degree 2 in
-    s^2, so the partial fractions are
-
-        x = sum_m adj(K - omega_m^2 M) / (det M D_m) [M x0 cos omega_m tau + I_m[Q]],
-        D_m = prod_{i != m} (omega_i^2 - omega_m^2)   (6.2-21),
-
-    the boxed numbers of 6.2-20..24 being the entries of adj(K - omega_m^2 M) M x0 and of
-    adj(K - omega_m^2 M); the convolutions I_m are those of 6.2-28..30.  Errata R-5
-    (6.2-20: sum over i printed for the sum over m, 1/(A)_d = 1/det M missing).
-
-    References
-    ----------
-    Tech Memo 104, eqs. (6.2-13)..(6.2-30).
     """
     mass, stiff = finite_array("mass", mass), finite_array("stiff", stiff)
     if mass.size % 9 or stiff.shape != mass.shape:
@@ -249,11 +177,9 @@ def _E(y: np.ndarray) -> np.ndarray:
 
 
 def _kernel(omega: np.ndarray, nu: np.ndarray, tau: np.ndarray) -> np.ndarray:
-    """Response of y'' + omega^2 y = e^{i nu tau} from rest, finite for every nu.
-
+    """Response of y'' + omega^2 y = e^{i nu tau} from rest, finite for every nu:
     y = tau / (2 i omega) [e^{i omega tau} E(i(nu - omega) tau) - e^{-i omega tau}
-    E(i(nu + omega) tau)], E(z) = (e^z - 1)/z: equal to the bracket of 6.2-3 off resonance,
-    -i tau e^{i omega tau} / (2 omega) + i sin(omega tau) / (2 omega^2) at nu = omega.
+    E(i(nu + omega) tau)], E(z) = (e^z - 1)/z (the bracket of 6.2-3 off resonance).
     """
     w = omega[..., None, None]
     v = nu[:, None]
@@ -264,32 +190,21 @@ def _kernel(omega: np.ndarray, nu: np.ndarray, tau: np.ndarray) -> np.ndarray:
 
 def harmonic_response(group: ModalGroup, ex: Excitation, tau: Any,
                       x0: Any = None) -> np.ndarray:
-    """Exact response of every mode of a group to the harmonic forcing, safe at resonance.
+    """Exact response (units of L), shape (n, p, nt), of every mode of a group to the harmonic
+    forcing, growing like tau at an exact resonance (6.2-3, 6.2-11, 6.2-12, 6.2-20): the bracket
+    of 6.2-3 as one matrix product off resonance, :func:`_kernel` within (|nu| - omega) tau_max
+    < 1e-2.
 
     Parameters
     ----------
     group : ModalGroup
+        The stacked systems.
     ex : Excitation
+        The time functions.
     tau : array_like
         Output times (>= 0).
     x0 : array_like, optional
         Shape (n, p), initial displacements (units of L), zero velocities.
-    Returns
-    -------
-    numpy.ndarray
-        Shape (n, p, nt), units of L.  At an exact resonance the response grows like tau
-        (no division by zero).
-
-    Notes
-    -----
-    Off resonance (|nu| - omega) tau_max >= 1e-2) the bracket of 6.2-3 is summed as one
-    matrix product; the few harmonics nearer resonance use the kernel
-    tau/(2 i omega) [e^{i omega tau} E(i(nu - omega) tau) - e^{-i omega tau}
-    E(i(nu + omega) tau)], E(z) = (e^z - 1)/z, which is finite at nu = +-omega.
-
-    References
-    ----------
-    Tech Memo 104, eqs. (6.2-3), (6.2-11), (6.2-12), (6.2-20); Meirovitch (1986) ch. 4.
     """
     tau = checked_times(tau)
     n, p = group.j.size, group.mass.shape[-1]

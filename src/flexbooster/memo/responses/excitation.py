@@ -1,11 +1,4 @@
-"""Excitation of the shells: psi(tau), T(tau) and the beam coordinates (memo 4.1-10, 4.2-6).
-
-Part of :mod:`flexbooster.memo.responses`; see its docstring for the model.
-
-References
-----------
-.. [1] Tech Memo 104, sections 4.1, 4.2, 5.2-5.4, 6.1, 6.2, 7.1.
-"""
+"""Excitation of the shells: psi(tau), T(tau) and the beam coordinates (memo 4.1-10, 4.2-6)."""
 
 from __future__ import annotations
 
@@ -44,21 +37,13 @@ BASIS = ("F_T", "u_T", "u_T_dd", "psi_dd", "psi_d_sq", "F_T_psi")
 N_BASIS = len(BASIS)
 
 
-# --------------------------------------------------------------------------------------------
-# Checks
-# --------------------------------------------------------------------------------------------
 def checked_times(tau: Any) -> np.ndarray:
-    """Times tau as a checked 1-D array.
+    """Times tau as a checked 1-D float array.
 
     Parameters
     ----------
     tau : array_like
         Dimensionless times tau = omega_1 t, finite, >= 0, non-decreasing, non-empty.
-
-    Returns
-    -------
-    numpy.ndarray
-        tau as floats, shape (n,).
     """
     tau = np.atleast_1d(np.asarray(tau, dtype=float))
     if tau.ndim != 1 or tau.size == 0 or not np.all(np.isfinite(tau)) or np.any(tau < 0):
@@ -68,35 +53,23 @@ def checked_times(tau: Any) -> np.ndarray:
     return tau
 
 
-# --------------------------------------------------------------------------------------------
-# Excitation: psi(tau), T(tau), beam coordinates
-# --------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class Excitation:
     """Time functions that force the shell modes at one thrust frequency Omega.
 
     Attributes
     ----------
-    Omega_bar : float
-        Omega / omega_1 (dimensionless).
-    gamma : float
-        Thrust pulsation amplitude (dimensionless).
-    K : float
-        Gimbal gain (dimensionless).
-    T0_bar : float
-        T0 / (rho h L^2 omega_1^2) (3.0-4b).
-    strain : float
-        (1 - nu^2) T0 / (E h), the axial strain scale of u* (5.3-4a) (dimensionless).
+    Omega_bar, gamma, K : float
+        Omega / omega_1, thrust pulsation amplitude, gimbal gain.
+    T0_bar, strain : float
+        T0 / (rho h L^2 omega_1^2) (3.0-4b) and (1 - nu^2) T0 / (E h) (5.3-4a).
     beta : float
         Pitch exponent beta (real, 4.2-9).
-    A : numpy.ndarray
-        Shape (3,), A_1..A_3 of psi (4.2-7) (rad).
-    Omega_i : numpy.ndarray
-        Shape (3,), Omega_i = [(i-2)^2 + eps_i beta] Omega_bar (7.2-6), units of omega_1.
-    beam_freq : numpy.ndarray
-        Shape (C,), (alpha_r + s) Omega_bar of the beam harmonics (4.1-10/11).
-    beam_amp : numpy.ndarray
-        Shape (C, N + 1) complex, C_n^(s) (rows q_1..q_N, q_B, 4.1-12); q = Re sum.
+    A, Omega_i : numpy.ndarray
+        Shape (3,): A_1..A_3 of psi (4.2-7) (rad) and Omega_i = [(i-2)^2 + eps_i beta] Omega_bar
+        (7.2-6), units of omega_1.
+    beam_freq, beam_amp : numpy.ndarray
+        (alpha_r + s) Omega_bar, shape (C,), and C_n^(s), shape (C, N + 1) complex (4.1-10..12).
     N : int
         Beam modes.
     alpha : complex
@@ -144,9 +117,7 @@ class Excitation:
         return np.real(amp.T @ e)  # eqs. (4.1-10), (4.1-11)
 
     def time_functions(self, tau: np.ndarray) -> np.ndarray:
-        """All basis functions evaluated in the time domain, shape (6 + 2(N + 1), nt).
-
-        Rows: T0_bar T/2, eps T, eps T'', psi'', psi'^2, K T0_bar T psi/2 (:data:`BASIS`), then
+        """All basis functions in the time domain, shape (6 + 2(N + 1), nt): :data:`BASIS`, then
         q_1..q_N, q_B, then their second derivatives.
         """
         tau = np.atleast_1d(np.asarray(tau, dtype=float))
@@ -157,21 +128,9 @@ class Excitation:
         return np.concatenate([np.stack(rows), self.beam(tau), self.beam(tau, 2)])
 
     def harmonics(self) -> tuple[np.ndarray, np.ndarray]:
-        """The basis functions as sums of harmonics: f_b(tau) = Re sum_h c[b, h] e^{i nu_h tau}.
-
-        Returns
-        -------
-        nu : numpy.ndarray
-            Shape (H,), frequencies (units of omega_1; may be negative or zero).
-        c : numpy.ndarray
-            Shape (6 + 2(N + 1), H), complex amplitudes.
-
-        Notes
-        -----
-        psi'^2 = sum_ip A_i A_p Omega_i Omega_p sin sin = 1/2 sum [cos(Omega_i - Omega_p)
-        - cos(Omega_i + Omega_p)]; T psi = sum A_i cos Omega_i - gamma/2 sum A_i
-        [cos(Omega_bar + Omega_i) + cos(Omega_bar - Omega_i)] (the products behind the
-        families 4-6, 8-12 of memo 7.3).
+        """The basis functions as f_b(tau) = Re sum_h c[b, h] e^{i nu_h tau}: nu (H,) (units of
+        omega_1) and c (6 + 2(N + 1), H); the products psi'^2 and T psi expand into the sum and
+        difference frequencies of memo 7.3.
         """
         Ob, g, A, W = self.Omega_bar, self.gamma, self.A, self.Omega_i
         tf, eps, kt = 0.5 * self.T0_bar, self.strain, 0.5 * self.K * self.T0_bar
@@ -209,26 +168,19 @@ class Excitation:
 
 @dataclass(frozen=True)
 class ExcitationParameters:
-    """beta(Omega_bar) and alpha_r(Omega_bar): the one parameter function of the forcing.
-
-    The stability roots (:func:`flexbooster.memo.stability.unstable_frequencies`) and the
-    forcing of :func:`make_excitation` (hence :func:`flexbooster.memo.responses.simulate`) both
-    use it, so a simulation at a root of the table is exactly resonant.
+    """beta(Omega_bar) and alpha_r(Omega_bar): the one parameter function of the forcing, shared by
+    the stability roots and :func:`make_excitation` (a simulation at a root is exactly resonant).
 
     Attributes
     ----------
-    omega_psi : float
-        Rigid-body pitch frequency (rad/s).
+    omega_psi, omega_1 : float
+        Rigid-body pitch and reference frequencies (rad/s).
     gamma : float
-        Pulsation amplitude (dimensionless).
-    omega_1 : float
-        Reference frequency (rad/s).
+        Pulsation amplitude.
     Omega_bar : numpy.ndarray
-        Shape (G,), increasing, the grid on which the beam exponents were computed
-        (units of omega_1).
+        Shape (G,), increasing, the grid of the beam exponents (units of omega_1).
     alpha_Omega : numpy.ndarray
-        Shape (G, R), Re alpha_r Omega_bar on that grid (units of omega_1), the quantity that
-        is interpolated (nearly constant: it tends to the loaded-beam frequency as gamma -> 0).
+        Shape (G, R), Re alpha_r Omega_bar on that grid (units of omega_1), interpolated.
     """
 
     omega_psi: float
@@ -239,79 +191,51 @@ class ExcitationParameters:
     _spline: Any = field(repr=False, compare=False)
 
     def beta(self, Omega_bar: Any) -> np.ndarray:
-        """Exact characteristic exponent beta (complex; Hill's determinant) at Omega_bar.
+        """Exact characteristic exponent beta (complex; Hill's determinant) at Omega_bar (4.2-9).
 
         Parameters
         ----------
         Omega_bar : array_like
-            Omega / omega_1 (dimensionless), > 0.
-
-        Returns
-        -------
-        numpy.ndarray
-            beta, complex: its real part is the band index inside a pitch tongue (4.2-9).
+            Omega / omega_1, > 0.
         """
         x = np.atleast_1d(np.asarray(Omega_bar, dtype=float))
         a, q = mathieu_parameters(x * self.omega_1, self.omega_psi, self.gamma)  # (4.2-4)
         return characteristic_exponent(a, q, method="hill")
 
     def alpha(self, Omega_bar: Any) -> np.ndarray:
-        """Re alpha_r (r = 1..R) at Omega_bar: the cubic spline of alpha_r Omega_bar.
+        """Re alpha_r (r = 1..R) at Omega_bar, shape (n, R): the cubic spline of alpha_r Omega_bar.
 
         Parameters
         ----------
         Omega_bar : array_like
-            Omega / omega_1 (dimensionless), > 0; held constant outside the grid.
-
-        Returns
-        -------
-        numpy.ndarray
-            Shape (n, R) (dimensionless).
+            Omega / omega_1, > 0; held constant outside the grid.
         """
         x = np.atleast_1d(np.asarray(Omega_bar, dtype=float))
         lo, hi = self.Omega_bar[0], self.Omega_bar[-1]
         return self._spline(np.clip(x, lo, hi)) / x[:, None]
 
     def __call__(self, Omega_bar: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """(Re beta, Re alpha_r) at Omega_bar, the ``params`` of the stability solver.
+        """(Re beta (n,), Re alpha_r (n, R)) at Omega_bar, the ``params`` of the stability solver.
 
         Parameters
         ----------
         Omega_bar : numpy.ndarray
-            Shape (n,), Omega / omega_1 (dimensionless), > 0.
-
-        Returns
-        -------
-        beta : numpy.ndarray
-            Shape (n,), Re beta (dimensionless).
-        alpha : numpy.ndarray
-            Shape (n, R), Re alpha_r (dimensionless).
+            Shape (n,), Omega / omega_1, > 0.
         """
         return self.beta(Omega_bar).real, self.alpha(Omega_bar)
 
 
 def excitation_parameters(model: BoosterModel,
                           beam_action: BeamActionResult) -> ExcitationParameters:
-    """The parameter function beta(Omega_bar), alpha_r(Omega_bar) of a booster.
+    """The parameter function of a booster (4.1-10, 4.1-11, 4.2-4, 4.2-9): beta exact (Hill) at any
+    Omega, alpha_r Omega_bar a cubic spline of the grid's exponents, constant outside.
 
     Parameters
     ----------
     model : BoosterModel
         The derived model (omega_psi, gamma, omega_1).
     beam_action : BeamActionResult
-        Beam-action exponents on the case's Omega grid (natural branch): its ``Omega_bar``
-        and ``alpha`` alone are used.
-
-    Returns
-    -------
-    ExcitationParameters
-        beta is the exact characteristic exponent (Hill's determinant) at any Omega; alpha_r
-        comes from the beam-action exponents on the grid, interpolated as alpha_r Omega_bar by
-        a cubic spline, held constant outside the grid.
-
-    References
-    ----------
-    Tech Memo 104, eqs. (4.1-10), (4.1-11), (4.2-4), (4.2-9).
+        Beam-action exponents on the Omega grid: ``Omega_bar`` and ``alpha`` alone are used.
     """
     x = beam_action.Omega_bar
     order = np.argsort(x)
@@ -329,21 +253,17 @@ class CubicSplineData:
     Attributes
     ----------
     x : numpy.ndarray
-        Shape (n,), the breakpoints, increasing (the unit of the abscissa).
+        Shape (n,), the breakpoints, increasing.
     c : numpy.ndarray
-        Shape (4, n - 1, m), the coefficients, highest power first (the unit of y per unit
-        of x to the power).
+        Shape (4, n - 1, m), the coefficients, highest power first.
     """
 
     x: np.ndarray
     c: np.ndarray
 
     def __call__(self, xi: np.ndarray) -> np.ndarray:
-        """The spline at ``xi``, shape (k,) (the unit of x); returns shape (k, m).
-
-        The first and last pieces extend beyond the breakpoints.  The operations are those of
-        scipy's ``PPoly`` (powers of s = x - x_i by repeated products, summed from the
-        constant term), so the values are the same, bit for bit.
+        """The spline at ``xi``, shape (k,) -> (k, m); the end pieces extend beyond the breakpoints;
+        the arithmetic of scipy's ``PPoly``, bit for bit.
         """
         i = np.clip(np.searchsorted(self.x, xi, side="right") - 1, 0, self.x.size - 2)
         s = (xi - self.x[i])[:, None]
@@ -358,34 +278,18 @@ class CubicSplineData:
 
 
 def cubic_spline(x: np.ndarray, y: np.ndarray) -> CubicSplineData:
-    """The cubic spline interpolant of y(x) with not-a-knot ends.
+    """The not-a-knot cubic spline of y(x) (de Boor, *A Practical Guide to Splines*, 2001, ch. IV).
+
+    The knot slopes solve the tridiagonal C2 system by ``solve_banded``; three knots give the
+    parabola, two the line: the arithmetic of ``scipy.interpolate.CubicSpline`` without
+    importing scipy.interpolate (and scipy.optimize) at start.
 
     Parameters
     ----------
     x : numpy.ndarray
-        Shape (n,), n >= 2, strictly increasing, finite (any unit).
+        Shape (n,), n >= 2, strictly increasing, finite.
     y : numpy.ndarray
-        Shape (n, m), finite (any unit).
-
-    Returns
-    -------
-    CubicSplineData
-        Callable on an array of abscissae.
-
-    Notes
-    -----
-    The slopes s_i at the knots solve the tridiagonal system of C2 continuity with the
-    not-a-knot end conditions (de Boor [1]_, ch. IV: the third derivative continuous at x_1 and
-    x_(n-2)), by ``scipy.linalg.solve_banded``; the pieces are the cubic Hermite polynomials of
-    (y_i, s_i).  With three knots both conditions are one, and the spline is the parabola
-    through them; with two, the line.  These are the systems and the arithmetic of
-    ``scipy.interpolate.CubicSpline`` (a test checks that the values agree), without the
-    import of ``scipy.interpolate``, which imports ``scipy.optimize``: together a sixth of a
-    run's start.
-
-    References
-    ----------
-    .. [1] C. de Boor, *A Practical Guide to Splines*, revised ed., Springer, 2001, ch. IV.
+        Shape (n, m), finite.
     """
     x = np.asarray(x, dtype=float)
     y = np.asarray(y, dtype=float)
@@ -430,21 +334,17 @@ def cubic_spline(x: np.ndarray, y: np.ndarray) -> CubicSplineData:
 
 
 def beam_exponents_on(model: BoosterModel, x: np.ndarray, N: int, S: int) -> tuple:
-    """Hill's exponents of the beam-action system and their natural branch on a grid.
+    """(HillResult, natural-branch exponents (G, N + 1)) of the beam-action system on a grid (memo
+    4.1-10, 4.1-11).
 
     Parameters
     ----------
     model : BoosterModel
         The derived model (omega_1, gamma).
     x : numpy.ndarray
-        Omega / omega_1 (dimensionless), shape (G,).
+        Omega / omega_1, shape (G,).
     N, S : int
         Elastic beam modes and Hill harmonics s = -S..S.
-
-    Returns
-    -------
-    tuple
-        (HillResult, natural-branch exponents of shape (G, N + 1)) (memo 4.1-10, 4.1-11).
     """
     system = beam_system(model, N)
     hill = hill_exponents(system, x * model.omega_1, np.full(x.shape, model.gamma), S)
@@ -456,7 +356,12 @@ def make_excitation(model: BoosterModel, Omega: float, *, psi0: float = 0.01,
                     beam_amplitude: float = 1e-4, beam_mode: int = 1, N: int | None = None,
                     S: int | None = None, params: ExcitationParameters | None = None
                     ) -> Excitation:
-    """The time functions that force the shells at the thrust frequency Omega.
+    """The time functions that force the shells at the thrust frequency Omega (memo 4.1-10..12,
+    4.2-6..9).
+
+    A_i from (4.2-7b..d) with the exact beta; the beam vector from Hill's determinant at the
+    exponent nearest alpha_r; a complex alpha_r is used by its real part and recorded in
+    ``warnings``. ValueError for bad input or an unbounded pitch (complex beta).
 
     Parameters
     ----------
@@ -467,38 +372,14 @@ def make_excitation(model: BoosterModel, Omega: float, *, psi0: float = 0.01,
     psi0 : float
         Initial pitch angle psi(0) (rad) (4.2-8a); 0 switches the rigid-body terms off.
     beam_amplitude : float
-        Euclidean norm of the Floquet vector (C^(s))_s of the beam motion (dimensionless, g* is
-        in units of L); 0 switches the beam terms off.
+        Norm of the beam's Floquet vector (units of L); 0 switches the beam terms off.
     beam_mode : int
         Which beam exponent alpha_r (r = 1..N + 1, natural branch) moves the beam.
     N, S : int, optional
         Beam modes and Hill harmonics (default: the case's truncation).
     params : ExcitationParameters, optional
-        The pipeline's parameter function: beta and the beam exponent alpha_r are taken from
-        it (the values the stability roots solve with), so that a simulation at a root is
-        exactly resonant.  Without it, beta is the exact exponent (Hill) and alpha_r comes
-        from Hill's determinant at Omega.
-
-    Returns
-    -------
-    Excitation
-
-    Raises
-    ------
-    ValueError
-        Bad input, or a pitch motion that is not bounded (complex beta: the three-term psi of
-        4.2-6 does not exist).
-
-    Notes
-    -----
-    A_i from (4.2-7b..d) with the exact beta; the beam vector from Hill's determinant at the
-    exponent of the Hill set nearest alpha_r of the natural branch.  A beam exponent with an
-    imaginary part (flutter or a parametric region of the beam) is used with its real part
-    only and recorded in ``warnings``.
-
-    References
-    ----------
-    Tech Memo 104, eqs. (4.1-10)..(4.1-12), (4.2-6)..(4.2-9).
+        The pipeline's parameter function (beta, alpha_r as the stability roots use them);
+        without it, both from Hill's determinant at Omega.
     """
     N = count("N", model.truncation.N if N is None else N, 0)
     S = count("S", model.truncation.S if S is None else S, 0)
@@ -528,10 +409,6 @@ def excitation_at(model: BoosterModel, Omega: float, psi0: float, beam_amplitude
         Precomputed exponents along Omega (None: computed here).
     beam_pre : tuple, optional
         :func:`beam_exponents_on` at this Omega, computed before.
-
-    Returns
-    -------
-    Excitation
     """
     Omega = positive("Omega", Omega)
     psi0 = finite("psi0", psi0)

@@ -1,11 +1,4 @@
-"""Physical displacement fields u, v, w in metres (memo 5.2-1 with 5.3-4) and edge conditions.
-
-Part of :mod:`flexbooster.memo.responses`; see its docstring for the model.
-
-References
-----------
-.. [1] Tech Memo 104, sections 4.1, 4.2, 5.2-5.4, 6.1, 6.2, 7.1.
-"""
+"""Physical displacement fields u, v, w in metres (memo 5.2-1 with 5.3-4) and edge conditions."""
 
 from __future__ import annotations
 
@@ -23,9 +16,6 @@ __all__ = [
     "edge_conditions",
 ]
 
-# --------------------------------------------------------------------------------------------
-# Physical displacement fields (5.2-1 with 5.3-4)
-# --------------------------------------------------------------------------------------------
 def _axial_shape(p: ShellParameters, d: int, j: np.ndarray, xi: np.ndarray, kind: str,
                  phase: str, order: int) -> np.ndarray:
     """order-th xi-derivative of cos s (kind "cos") or sin s ("sin") of modes j at xi."""
@@ -49,7 +39,8 @@ def _mask(p: ShellParameters, d: int, xi: np.ndarray, side: str) -> np.ndarray:
 def displacement_fields(result: SimulationResult, xi: Any, theta: Any,
                         instants: Any = None, order: int = 0, part: str = "total",
                         junction: str = "forward") -> tuple[np.ndarray, ...]:
-    """u, v, w (xi_bar, theta, tau) in metres from the modal sums (5.2-1) and the beam part (5.3-4).
+    """u, v, w (xi_bar, theta, instant) in metres, each (nx, nq, ni), from the modal sums (5.2-1)
+    and the beam part (4.1-3..7, 5.3-4); axial, circumferential, radial inward (memo 3.0).
 
     Parameters
     ----------
@@ -62,20 +53,11 @@ def displacement_fields(result: SimulationResult, xi: Any, theta: Any,
     instants : array_like of int, optional
         Indices into ``result.tau`` (default all).
     order : int
-        Derivative order 0..4 with respect to xi_bar (metres per unit xi_bar^order).
+        Derivative order 0..4 in xi_bar (metres per unit xi_bar^order).
     part : {"total", "shell", "beam"}
         The modal sums, the beam part u*, v*, w*, or both.
     junction : {"forward", "aft"}
         Which cylinder's modes the junction xi = c takes (the fields jump there).
-
-    Returns
-    -------
-    u, v, w : numpy.ndarray
-        Shape (nx, nq, ni), metres (axial, circumferential, radial inward, memo 3.0).
-
-    References
-    ----------
-    Tech Memo 104, eqs. (4.1-3)..(4.1-7), (5.2-1), (5.3-2)..(5.3-4).
     """
     p = result.params
     xi = np.atleast_1d(finite_array("xi", xi))
@@ -120,40 +102,20 @@ def displacement_fields(result: SimulationResult, xi: Any, theta: Any,
 
 
 def edge_conditions(result: SimulationResult, n_theta: int = 24) -> dict[str, float]:
-    """How well the rebuilt fields meet the edge conditions (5.3-1) at the ends and junction.
+    """How well the rebuilt fields meet the edge conditions (5.3-1) at the ends and junction:
+    largest values over the instants and angles (theta derivatives by FFT).
+
+    Keys: ``shell_v_edges``, ``shell_w_edges`` (m), ``shell_u_xi_edges``,
+    ``shell_w_xixi_edges`` (zero in the zero phase), ``scale`` (largest |u|, |v|, |w|),
+    ``v_xi_ends``, ``w_xi_ends`` (5.3-1a, b), ``N_aft_error``, ``N_nose`` (5.3-1d, e; Donnell
+    N_x, Leissa 1973 eq. 1.3), ``M_shell_ends``, ``M_beam_ends`` (5.3-1c, m^-1).
 
     Parameters
     ----------
     result : SimulationResult
+        The simulation.
     n_theta : int
         Angles at which the conditions are sampled.
-
-    Returns
-    -------
-    dict of str to float
-        Largest values over the instants and angles (metres unless said):
-
-        * ``shell_v_edges``, ``shell_w_edges``: v, w of the modal sums at xi = a, c (both
-          sides), b (zero by the shape functions: shear diaphragm);
-        * ``shell_u_xi_edges`` (m per unit xi), ``shell_w_xixi_edges`` (m per unit xi^2):
-          u' and w'' of the modal sums there (zero in the zero phase);
-        * ``scale``: largest |u|, |v|, |w| over the cylinders;
-        * ``v_xi_ends``, ``w_xi_ends``: v', w' of the total field at a and b (5.3-1a, b: the
-          shape functions do not make them vanish, erratum S-531 of the shell errata);
-        * ``N_aft_error``, ``N_nose``: N_xixi / (T0 T(tau)) + 1 at a and N_xixi / T0 at b
-          (5.3-1d, e; Donnell N_x = E h/(1 - nu^2) [u_x + nu (v_theta - w)/R], compression
-          negative);
-        * ``M_shell_ends``: the modal sums' share of M_xixi / D (w_xx + nu w_thth/R^2, m^-1)
-          at a and b (5.3-1c); ``M_beam_ends``: the beam part's, which is nu g* cos theta / R^2
-          in magnitude (the free-free modes have g*'' = 0 at the ends, but w* = g* cos theta
-          bends the section).
-
-    Theta derivatives are spectral (FFT on n_theta >= 2 max k + 8 points).
-
-    References
-    ----------
-    Tech Memo 104, eqs. (5.3-1)..(5.3-4); Leissa, NASA SP-288 (1973), eq. (1.3) (Donnell
-    stress resultants).
     """
     p = result.params
     kmax = int(result.k.max()) if result.k.size else 1

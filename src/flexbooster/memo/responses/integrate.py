@@ -1,10 +1,5 @@
-"""Numerical integration of the modal systems: solve_ivp and the exact-propagation Duhamel scheme.
-
-Part of :mod:`flexbooster.memo.responses`; see its docstring for the model.
-
-References
-----------
-.. [1] Tech Memo 104, sections 4.1, 4.2, 5.2-5.4, 6.1, 6.2, 7.1.
+"""Numerical integration of the modal systems: solve_ivp and the exact-propagation Duhamel scheme
+(Meirovitch 1986, ch. 4; Hairer, Norsett, Wanner 1993, DOP853).
 """
 
 from __future__ import annotations
@@ -23,51 +18,31 @@ __all__ = [
     "integrate",
 ]
 
-# --------------------------------------------------------------------------------------------
-# Numerical integration
-# --------------------------------------------------------------------------------------------
-def _force(group: ModalGroup, ex: Excitation, tau: np.ndarray) -> np.ndarray:
-    """Forcing (n, p, nt) at the times tau, from the time functions evaluated directly."""
-    return np.einsum("bt,bnp->npt", ex.time_functions(tau), group.forcing)
-
-
 def integrate(group: ModalGroup, ex: Excitation, tau: Any, x0: Any = None,
               method: str = "DOP853", rtol: float = 1e-12, atol: float | None = None,
               return_normal: bool = False) -> np.ndarray:
-    """Response of every mode of a group by numerical integration, zero initial velocity.
+    """Response of every mode of a group by numerical integration from rest in velocity: U, (U, W)
+    or (U, V, W) (units of L), shape (n, p, nt) (and Z if requested) (memo 6.1-2..6.1-4).
 
     Parameters
     ----------
     group : ModalGroup
+        The stacked systems.
     ex : Excitation
+        The time functions.
     tau : array_like
         Output times tau = omega_1 t, non-decreasing, >= 0 (integration starts at 0).
     x0 : array_like, optional
         Shape (n, p), initial displacements (units of L); default zero.
     method : {"DOP853", "Radau", "duhamel"}
-        ``"DOP853"``/``"Radau"``: scipy solve_ivp on the stacked first-order system
-        (rtol, atol); ``"duhamel"``: each normal coordinate propagated exactly, with the
-        Duhamel integral int f(eta) e^{-i omega eta} d eta by 8-point Gauss-Legendre
-        quadrature on steps of phase at most 2 rad (any length of time).
+        solve_ivp on the stacked first-order system, or each normal coordinate propagated
+        exactly with the Duhamel integral by 8-point Gauss-Legendre on steps of phase <= 2 rad.
     rtol : float
         Relative tolerance of solve_ivp.
     atol : float, optional
-        Absolute tolerance of solve_ivp (default rtol times 1e-3 of the static scale
-        max |M^-1 F| / min omega^2).
+        Absolute tolerance of solve_ivp (default rtol 1e-3 max |M^-1 F| / min omega^2).
     return_normal : bool
-        ``"duhamel"`` only: also return Z = y' + i omega y times e^{-i omega tau}, shape
-        (n, p, nt), for each normal coordinate.
-
-    Returns
-    -------
-    numpy.ndarray
-        Shape (n, p, nt): U, (U, W) or (U, V, W) in units of L (and Z if requested).
-
-    References
-    ----------
-    Tech Memo 104, eqs. (6.1-2)..(6.1-4); Meirovitch (1986) ch. 4 (Duhamel integral);
-    E. Hairer, S. P. Norsett, G. Wanner, *Solving Ordinary Differential Equations I*,
-    Springer, 1993 (DOP853).
+        ``"duhamel"`` only: also return Z = (y' + i omega y) e^{-i omega tau}, (n, p, nt).
     """
     tau = checked_times(tau)
     n, p = group.j.size, group.mass.shape[-1]

@@ -1,11 +1,4 @@
-"""Modal systems of the shells and their forcing, by quadrature (memo 5.2-5.4, 6.1).
-
-Part of :mod:`flexbooster.memo.responses`; see its docstring for the model.
-
-References
-----------
-.. [1] Tech Memo 104, sections 4.1, 4.2, 5.2-5.4, 6.1, 6.2, 7.1.
-"""
+"""Modal systems of the shells and their forcing, by quadrature (memo 5.2-5.4, 6.1)."""
 
 from __future__ import annotations
 
@@ -29,9 +22,6 @@ __all__ = [
     "forcing_harmonics",
 ]
 
-# --------------------------------------------------------------------------------------------
-# Modal systems and their forcing (by quadrature of the definitions)
-# --------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class ModalGroup:
     """Stacked modal systems of one kind of one cylinder, M x'' + K x = sum_b F_b f_b(tau).
@@ -39,8 +29,7 @@ class ModalGroup:
     Attributes
     ----------
     kind : str
-        ``"0k"`` (x = U_0k, 6.1-2), ``"j0"`` (x = (U, W), 6.1-3) or ``"jk"`` (x = (U, V, W),
-        6.1-4).
+        ``"0k"`` (x = U_0k, 6.1-2), ``"j0"`` (U, W; 6.1-3) or ``"jk"`` (U, V, W; 6.1-4).
     cylinder : int
         1 (aft) or 2 (forward).
     j, k : numpy.ndarray
@@ -48,8 +37,7 @@ class ModalGroup:
     mass, stiff : numpy.ndarray
         Shape (n, p, p), mass and stiffness matrices (appendix A normalisation).
     forcing : numpy.ndarray
-        Shape (6 + 2(N + 1), n, p): the forcing per unit basis function (:data:`BASIS`, then
-        q_1..q_N, q_B, then their second derivatives).
+        Shape (6 + 2(N + 1), n, p): the forcing per unit basis function.
     components : tuple of str
         Names of the p unknowns.
     """
@@ -86,21 +74,17 @@ def _quad_nodes(p: ShellParameters, d: int, M: int, N: int) -> tuple[np.ndarray,
 
 
 def beam_shapes_at(p: ShellParameters, xi: np.ndarray, N: int) -> dict[str, np.ndarray]:
-    """g and its xi-derivatives of each beam coordinate (rows q_1..q_N, q_B) (4.1-3..7).
+    """g and its xi-derivatives of each beam coordinate (rows q_1..q_N, q_B) (4.1-3..7): keys
+    "g", "g1".."g4", each (N + 1, len(xi)).
 
     Parameters
     ----------
     p : ShellParameters
         Shell parameters (coordinates a, c, b).
     xi : numpy.ndarray
-        Axial coordinate xi_bar (dimensionless).
+        Axial coordinate xi_bar.
     N : int
         Elastic beam modes.
-
-    Returns
-    -------
-    dict of str to numpy.ndarray
-        Keys "g", "g1".."g4", each of shape (N + 1, len(xi)).
     """
     xi = np.asarray(xi, dtype=float)
     zeta = xi - p.a  # zeta = xi_bar - d4/L + 1 = xi_bar + x_cm / L (C-6)
@@ -117,7 +101,7 @@ def beam_shapes_at(p: ShellParameters, xi: np.ndarray, N: int) -> dict[str, np.n
 
 
 def edge_argument(p: ShellParameters, d: int, j: np.ndarray, phase: str) -> np.ndarray:
-    """The argument of the axial shape functions at the aft edge of cylinder d (App. B).
+    """The argument (rad) of the axial shape functions at the aft edge of cylinder d, per j.
 
     Parameters
     ----------
@@ -129,11 +113,6 @@ def edge_argument(p: ShellParameters, d: int, j: np.ndarray, phase: str) -> np.n
         Axial indices.
     phase : str
         Phase convention of :func:`flexbooster.memo.shell_coefficients.edge_arguments`.
-
-    Returns
-    -------
-    numpy.ndarray
-        The argument for each j (rad).
     """
     from ..shell_coefficients import edge_arguments
 
@@ -142,7 +121,9 @@ def edge_argument(p: ShellParameters, d: int, j: np.ndarray, phase: str) -> np.n
 
 def modal_groups(p: ShellParameters, M: tuple[int, int], Nk: tuple[int, int], N: int,
                  phase: str = "zero") -> tuple[ModalGroup, ...]:
-    """Modal systems 6.1-2..4 of both cylinders with their forcing built from its definition.
+    """Modal systems 6.1-2..4 of both cylinders with their forcing built from its definition
+    (3.0-2, 3.0-3, 4.1-3..7, 5.2-1, 5.3-4, 5.4-3..9): (0k, j0, jk) of cylinder 1, then 2. The
+    forcing per basis function is tabulated in docs/theory/responses.md.
 
     Parameters
     ----------
@@ -153,32 +134,7 @@ def modal_groups(p: ShellParameters, M: tuple[int, int], Nk: tuple[int, int], N:
     N : int
         Beam modes in g* (0..500).
     phase : {"zero", "printed"}
-        Shape-function phase (erratum E10); the forcing projections use the same phase.
-
-    Returns
-    -------
-    tuple of ModalGroup
-        (0k, j0, jk) of cylinder 1, then of cylinder 2.
-
-    Notes
-    -----
-    Forcing per unit basis function (theta integrals by orthogonality, each row divided by
-    its theta integral and by (1 - nu^2) mu; C = cos s, S = sin s on the cylinder,
-    Xi = xi - (xi - b + 1)^2 / 2, g0 = 1 / ((1 - nu^2) mu)):
-
-    * j0, u row: F_T -int C; u_T g0/2 int C (u*''); u_T_dd int Xi C / 2 (-u*_tt);
-      psi'^2 int xi C;  w row: psi'^2 -int S / (2 lambda); u_T -nu lambda g0 int (b - xi) S / 2;
-    * jk, k = 1: u row psi'' int C / lambda, q_b lambda/(2(1+nu) mu) int g_b' C;
-      v and w rows: F_T_psi int S, psi'' int xi S, q_b'' -int g_b S; q_b: v row
-      g0 (1-nu)/2 int g_b'' S, w row -g0 sigma^2/12 int (g'''' - 2 lambda^2 g'' + lambda^4 g) S;
-    * jk, k = 2: v and w rows psi'^2 -int S / (2 lambda);
-    * 0k, k = 1 (u = cos theta over the cylinder of length ell): psi'' ell / lambda,
-      q_b lambda/(2(1+nu) mu) int g_b'.
-
-    References
-    ----------
-    Tech Memo 104, eqs. (3.0-2), (3.0-3), (4.1-3..7), (5.2-1), (5.3-4), (5.4-3), (5.4-4),
-    (5.4-7), (5.4-9).
+        Shape-function phase (erratum E10), also of the forcing projections.
     """
     N = count("N", N, 0)
     out: list[ModalGroup] = []
@@ -205,10 +161,6 @@ def cylinder_groups(p: ShellParameters, d: int, M: int, Nk: int, N: int,
         Elastic beam modes.
     phase : str
         Phase convention of the axial shape functions.
-
-    Returns
-    -------
-    list of ModalGroup
     """
     nu, mu, sg = p.nu, p.mu, p.sigma
     lam = p.lam(d)
@@ -278,31 +230,14 @@ def cylinder_groups(p: ShellParameters, d: int, M: int, Nk: int, N: int,
 
 
 def modal_basis(group: ModalGroup) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Natural frequencies and normal coordinates of stacked systems M x'' + K x = F.
+    """Natural frequencies omega (n, p) (units of omega_1, ascending), eigenvectors Phi (x = Phi y)
+    and P = Phi^-1 M^-1 (y'' + omega^2 y = P F) of stacked systems (6.2-5, 6.2-15). ValueError
+    for a complex or non-positive omega^2 (printed phase only).
 
     Parameters
     ----------
     group : ModalGroup
-
-    Returns
-    -------
-    omega : numpy.ndarray
-        Shape (n, p), natural frequencies (units of omega_1), ascending per mode (branch
-        m = 1..p).
-    Phi : numpy.ndarray
-        Shape (n, p, p), eigenvectors of M^-1 K (columns): x = Phi y.
-    P : numpy.ndarray
-        Shape (n, p, p), Phi^-1 M^-1: y'' + omega^2 y = P F.
-
-    Raises
-    ------
-    ValueError
-        If a system has a complex or non-positive omega^2 (possible only with the printed
-        phase, erratum E10): it has no undamped normal coordinates.
-
-    References
-    ----------
-    Tech Memo 104, eqs. (6.2-5), (6.2-15) (Delta(s) = det(M s^2 + K)).
+        The stacked systems.
     """
     Minv = np.linalg.inv(group.mass)
     lam, vec = np.linalg.eig(Minv @ group.stiff)
@@ -316,23 +251,15 @@ def modal_basis(group: ModalGroup) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 
 
 def forcing_harmonics(group: ModalGroup, ex: Excitation) -> tuple[np.ndarray, np.ndarray]:
-    """The forcing of every mode of a group as a sum of harmonics, Re sum_h f_h e^{i nu_h tau}.
+    """The forcing of every mode as Re sum_h f_h e^{i nu_h tau}: nu (H,) (units of omega_1) and
+    f (n, p, H) (4.2-6, 4.1-10/11, 5.4-3..9).
 
     Parameters
     ----------
     group : ModalGroup
+        The stacked systems.
     ex : Excitation
-
-    Returns
-    -------
-    nu : numpy.ndarray
-        Shape (H,), distinct frequencies (units of omega_1).
-    f : numpy.ndarray
-        Shape (n, p, H) complex, the forcing amplitudes (right-hand sides P, Q of 5.4).
-
-    References
-    ----------
-    Tech Memo 104, eqs. (4.2-6), (4.1-10/11), (5.4-3..9).
+        The time functions.
     """
     nu, c = ex.harmonics()
     if c.shape[0] != group.forcing.shape[0]:

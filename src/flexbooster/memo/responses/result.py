@@ -1,9 +1,5 @@
 """The result of :func:`flexbooster.memo.responses.simulate`: time histories of the forced shell
-modes at one thrust frequency (memo 6.2).
-
-References
-----------
-.. [1] Tech Memo 104, sections 6.1, 6.2.
+modes at one thrust frequency (memo 6.1, 6.2).
 """
 
 from __future__ import annotations
@@ -24,14 +20,10 @@ class SimulationResult:
 
     Attributes
     ----------
-    Omega : float
-        Thrust pulsation frequency (rad/s).
-    omega_1 : float
-        Reference frequency (rad/s); tau = omega_1 t.
-    tau : numpy.ndarray
-        Shape (nt,), dimensionless times.
-    t : numpy.ndarray
-        Shape (nt,), times (s).
+    Omega, omega_1 : float
+        Thrust pulsation and reference frequency (rad/s); tau = omega_1 t.
+    tau, t : numpy.ndarray
+        Shape (nt,), dimensionless times and times (s).
     psi : numpy.ndarray
         Shape (nt,), rigid-body pitch angle (rad), eq. (4.2-6).
     q : numpy.ndarray
@@ -46,18 +38,16 @@ class SimulationResult:
         The shells' dimensionless parameters.
     excitation : Excitation
         The forcing time functions.
-    phase : str
-        Shape-function phase.
-    method : str
-        How the responses were computed.
+    phase, method : str
+        Shape-function phase; how the responses were computed.
     T0 : float
         Steady thrust per unit circumference (N/m).
     radii : tuple of float
         R1, R2 (m).
     snapshots : dict
-        ``xi`` (nx,), ``theta`` (nq,), ``index`` (ns,), ``u``, ``v``, ``w`` (ns, nx, nq) in
-        metres: the deformed booster at chosen instants.
+        ``xi``, ``theta``, ``index``, ``u``, ``v``, ``w`` (ns, nx, nq) in metres.
     warnings : tuple of str
+        Conditions of the excitation.
     """
 
     Omega: float

@@ -1,11 +1,4 @@
-"""Secular growth of a shell mode at a root of the stability table (memo 7.1).
-
-Part of :mod:`flexbooster.memo.responses`; see its docstring for the model.
-
-References
-----------
-.. [1] Tech Memo 104, sections 4.1, 4.2, 5.2-5.4, 6.1, 6.2, 7.1.
-"""
+"""Secular growth of a shell mode at a root of the stability table (memo 7.1)."""
 
 from __future__ import annotations
 
@@ -32,9 +25,6 @@ __all__ = [
     "secular_rates",
 ]
 
-# --------------------------------------------------------------------------------------------
-# Secular growth at a root
-# --------------------------------------------------------------------------------------------
 @dataclass(frozen=True)
 class SecularGrowth:
     """Growth of one normal coordinate of one shell mode under the forcing at Omega.
@@ -50,22 +40,16 @@ class SecularGrowth:
     tau_max : float
         Length of the simulation (tau units).
     slope : float
-        |least-squares slope| of Z(tau) = (y' + i omega y) e^{-i omega tau} against tau, from
-        the integration, weighted by sin^4(pi tau / tau_max): the resonant forcing amplitude.
-        A harmonic detuned by Delta leaks into it like (Delta tau_max)^-5, so a bounded
-        motion gives a slope near 0 and a weak secular term is measured under a large
-        bounded response.
+        |least-squares slope| of Z = (y' + i omega y) e^{-i omega tau} against tau, weighted by
+        sin^4(pi tau / tau_max) (a detuned harmonic leaks like (Delta tau_max)^-5).
     predicted_slope : float
-        The same from the harmonic decomposition of the forcing: |sum of the amplitudes at
-        nu = +-omega| / 2 (0 off resonance).
+        The same from the forcing's harmonics: |sum of the amplitudes at nu = +-omega| / 2.
     growth_rate : float
-        slope / omega: growth of the amplitude of y per unit tau (like tau at a root).
+        slope / omega: growth of the amplitude of y per unit tau.
     index : float
-        slope tau_max / max |Z - Z(0)|: about 1 for secular growth, << 1 for a bounded
-        response (about 1/(detuning tau_max)).
+        slope tau_max / max |Z - Z(0)|: about 1 for secular growth, << 1 bounded.
     envelope_ratio : float
-        max |y| over the last quarter / max |y| over the first quarter of [0, tau_max] (about
-        4 / 1 for growth like tau, about 1 bounded).
+        max |y| over the last quarter over that of the first (about 4 for growth like tau).
     amplitude : float
         max |y| over [0, tau_max] (units of L).
     """
@@ -96,7 +80,8 @@ def secular_growth(model: BoosterModel, Omega: float, cylinder: int, j: int, k: 
                    S: int | None = None, phase: str = "zero",
                    resonance_tol: float = 1e-8,
                    params: ExcitationParameters | None = None) -> SecularGrowth:
-    """Integrate one shell mode's forced modal ODE at Omega and measure its secular growth.
+    """Integrate one shell mode's forced modal ODE at Omega (:func:`integrate`, "duhamel") and
+    measure the drift of Z' = f e^{-i omega tau}: linear at a resonant harmonic (memo 7.1).
 
     Parameters
     ----------
@@ -115,28 +100,9 @@ def secular_growth(model: BoosterModel, Omega: float, cylinder: int, j: int, k: 
     phase : {"zero", "printed"}
         Shape-function phase.
     resonance_tol : float
-        |nu -+ omega| / omega below which a forcing harmonic counts as resonant for
-        ``predicted_slope``.
+        |nu -+ omega| / omega below which a harmonic counts as resonant for ``predicted_slope``.
     params : ExcitationParameters, optional
-        The pipeline's parameter function (as the stability roots use it); see
-        :func:`make_excitation`.
-
-    Returns
-    -------
-    SecularGrowth
-
-    Notes
-    -----
-    The mode's system M x'' + K x = F(tau) is integrated with the ``"duhamel"`` method of
-    :func:`integrate` (forcing evaluated in the time domain), and its normal coordinate y of
-    the chosen branch obeys y'' + omega^2 y = f(tau), so Z' = f e^{-i omega tau}: a forcing
-    harmonic at nu = omega makes Z drift linearly (y grows like tau), every other harmonic
-    leaves Z bounded.
-
-    References
-    ----------
-    Tech Memo 104, section 7.1 (vanishing denominators = unbounded displacements); Bolotin
-    (1964) ch. 1; reading guide section 5.
+        The pipeline's parameter function (as the stability roots use it).
     """
     tau_max = positive("tau_max", tau_max)
     n_out = count("n_out", n_out, 16, 200_000)
@@ -192,25 +158,13 @@ def modal_forcing_spectrum(model: BoosterModel, Omega: float, cylinder: int, j: 
                            beam_mode: int = 1, N: int | None = None, S: int | None = None,
                            phase: str = "zero", params: ExcitationParameters | None = None
                            ) -> tuple[np.ndarray, np.ndarray, float]:
-    """Harmonics of the forcing of one normal coordinate: f(tau) = Re sum_h g_h e^{i nu_h tau}.
+    """Harmonics of the forcing of one normal coordinate, f = Re sum_h g_h e^{i nu_h tau}: nu (H,)
+    (units of omega_1), g (H,) (units of L omega_1^2) and the branch's omega (memo 7.1).
 
     Parameters
     ----------
     model, Omega, cylinder, j, k, branch, psi0, beam_amplitude, beam_mode, N, S, phase, params :
         As :func:`secular_growth`.
-
-    Returns
-    -------
-    nu : numpy.ndarray
-        Shape (H,), frequencies (units of omega_1).
-    g : numpy.ndarray
-        Shape (H,) complex, amplitudes (y'' + omega^2 y = f, units of L omega_1^2).
-    omega : float
-        The natural frequency of the branch (units of omega_1).
-
-    References
-    ----------
-    Tech Memo 104, section 7.1; eqs. (6.2-3), (6.2-11), (6.2-12), (6.2-28..30).
     """
     g, ex, branch = _single_mode(model, Omega, cylinder, j, k, branch, psi0, beam_amplitude,
                                  beam_mode, N, S, phase, params)
@@ -224,15 +178,19 @@ def secular_rates(model: BoosterModel, rows: list[dict], psi0: float = 0.01,
                   beam_amplitude: float = 1e-4, N: int | None = None, S: int | None = None,
                   phase: str = "zero", params: ExcitationParameters | None = None
                   ) -> list[dict]:
-    """Resonant forcing of the shell mode at every root of a stability table.
+    """Resonant forcing of the shell mode at every root of a stability table (memo 6.2, 7.1), the
+    beam exponents of all roots from one batched Hill computation.
+
+    Per row: ``secular_rate`` (|resonant forcing| / (2 omega), units of L per unit tau),
+    ``relative`` (over the largest forcing harmonic of all the rows' modes: ~1e-19 for a
+    structural zero, above 1e-15 for genuine weak terms) and ``forced`` (relative > 1e-18).
 
     Parameters
     ----------
     model : BoosterModel
         The derived model.
     rows : list of dict
-        :meth:`flexbooster.memo.stability.StabilityTable.to_rows` (keys ``Omega_rad_s``,
-        ``cylinder``, ``j``, ``k``, ``branch``, ``r``).
+        :meth:`flexbooster.memo.stability.StabilityTable.to_rows`.
     psi0 : float
         Initial pitch angle (rad) of the rigid-body forcing.
     beam_amplitude : float
@@ -243,28 +201,6 @@ def secular_rates(model: BoosterModel, rows: list[dict], psi0: float = 0.01,
         Shape-function phase.
     params : ExcitationParameters, optional
         The pipeline's parameter function (as the stability roots use it).
-
-    Returns
-    -------
-    list of dict
-        Per row: ``secular_rate`` (growth of the normal coordinate's amplitude per unit tau,
-        units of L: |resonant forcing| / (2 omega)), ``relative`` (resonant forcing over the
-        largest forcing harmonic of all the rows' modes: about 1e-19, round-off, where the
-        projection is a structural zero; above 1e-15 for genuine but weak terms such as
-        q^2 A_1 A_3 or high Floquet harmonics) and ``forced`` (relative > 1e-18).
-
-    Notes
-    -----
-    The stability table's "active" flag follows the Kronecker deltas of section 6 only.  The
-    projections add selection rules of their own: in the zero phase int cos s = 0 for every
-    j >= 1 (the thrust term of F1 and u*'' do not reach U_j0) and int sin s = 0 for even j
-    (the psi'^2 terms of F2, F3 and the K T psi terms do not reach even j).  This function
-    measures the resonant forcing itself, with the beam exponents of all roots from one
-    batched Hill computation.
-
-    References
-    ----------
-    Tech Memo 104, sections 6.2, 7.1; reading guide section 5.
     """
     N = count("N", model.truncation.N if N is None else N, 0)
     S = count("S", model.truncation.S if S is None else S, 0)

@@ -1,11 +1,4 @@
-"""Pipeline entry: time histories of every forced shell mode at one thrust frequency (memo 6.2).
-
-Part of :mod:`flexbooster.memo.responses`; see its docstring for the model.
-
-References
-----------
-.. [1] Tech Memo 104, sections 4.1, 4.2, 5.2-5.4, 6.1, 6.2, 7.1.
-"""
+"""Pipeline entry: time histories of every forced shell mode at one thrust frequency (memo 6.2)."""
 
 from __future__ import annotations
 
@@ -25,16 +18,14 @@ from .result import SimulationResult
 
 __all__ = ["simulate"]
 
-# --------------------------------------------------------------------------------------------
-# Pipeline: simulate
-# --------------------------------------------------------------------------------------------
 def simulate(model: BoosterModel, Omega: float, tau_max: float, n_out: int = 401,
              modes: tuple[int, int, int, int] | None = None, psi0: float = 0.01,
              beam_amplitude: float = 1e-4, beam_mode: int = 1, initial: dict | None = None,
              method: str = "closed-form", n_snapshots: int = 4, n_xi: int = 61,
              n_theta: int = 49, phase: str = "zero",
              params: ExcitationParameters | None = None) -> SimulationResult:
-    """Time histories of every forced shell mode at the thrust frequency Omega (pipeline entry).
+    """Time histories of every forced shell mode at the thrust frequency Omega (memo 4.1-10/11,
+    4.2-6, 5.2-1, 5.3-4, 6.1, 6.2); ValueError for bad input or an unbounded pitch motion.
 
     Parameters
     ----------
@@ -43,7 +34,7 @@ def simulate(model: BoosterModel, Omega: float, tau_max: float, n_out: int = 401
     Omega : float
         Thrust pulsation frequency (rad/s), > 0.
     tau_max : float
-        Last time tau = omega_1 t (dimensionless), > 0, at most 1e6.
+        Last time tau = omega_1 t, > 0, at most 1e6.
     n_out : int
         Output times, uniform on [0, tau_max], 2..100000.
     modes : (M1, N1, M2, N2), optional
@@ -57,31 +48,16 @@ def simulate(model: BoosterModel, Omega: float, tau_max: float, n_out: int = 401
     initial : dict, optional
         Initial displacements {(cylinder, j, k, component): value (units of L)}.
     method : {"closed-form", "duhamel", "DOP853", "Radau"}
-        ``"closed-form"``: :func:`harmonic_response` (exact for the linearised forcing, finite
-        at resonance, any tau); the others: :func:`integrate`.
+        ``"closed-form"``: :func:`harmonic_response` (finite at resonance, any tau); the others:
+        :func:`integrate`.
     n_snapshots : int
-        Instants (evenly spread over the output) at which the fields are rebuilt, 0..50.
+        Instants (evenly spread) at which the fields are rebuilt, 0..50.
     n_xi, n_theta : int
         Grid of the snapshots, 2..2001.
     phase : {"zero", "printed"}
         Shape-function phase (E10).
     params : ExcitationParameters, optional
-        The pipeline's parameter function (beta, alpha_r), as used by the stability roots:
-        with it a simulation at a root of the table is exactly resonant (see
-        :func:`make_excitation`).
-
-    Returns
-    -------
-    SimulationResult
-
-    Raises
-    ------
-    ValueError
-        Bad input (named), or a pitch motion that is not bounded at Omega.
-
-    References
-    ----------
-    Tech Memo 104, sections 4, 5, 6 (eqs. 4.1-10/11, 4.2-6, 5.2-1, 5.3-4, 6.1-1..4, 6.2).
+        The pipeline's parameter function: with it a simulation at a root is exactly resonant.
     """
     Omega = positive("Omega", Omega)
     tau_max = positive("tau_max", tau_max)

@@ -14,28 +14,17 @@ __all__ = ["plot_band_chart"]
 
 def plot_band_chart(chart: BandChart, ax: Axes | None = None, *,
                     omega_1: float | None = None) -> Figure:
-    """Shade each region between its traced edges, Omega in Hz against gamma.
+    """Shade each region between its traced edges, Omega in Hz (log) against gamma, the operating
+    gamma dashed (Bolotin 1964, ch. 1; memo 4.1-4.2).
 
     Parameters
     ----------
     chart : BandChart
-        From :func:`flexbooster.memo.charts.pitch_band_chart` or
-        :func:`flexbooster.memo.charts.beam_action_chart` (edges in rad/s, drawn in Hz).
+        From :func:`flexbooster.memo.charts.pitch_band_chart` or ``beam_action_chart``.
     ax : matplotlib.axes.Axes, optional
         Axes to draw on; a new figure is made when None.
     omega_1 : float, optional
         First bending frequency (rad/s), > 0: adds a secondary axis Omega / omega_1 on top.
-
-    Returns
-    -------
-    matplotlib.figure.Figure
-        Regions shaded between omega_lo(gamma) and omega_hi(gamma) (the stored points joined
-        by straight lines, the tip at the critical gamma), the operating gamma as a dashed
-        horizontal line; logarithmic Omega axis over the case's range.
-
-    References
-    ----------
-    Bolotin (1964), ch. 1 (regions in the (Omega, mu) plane); Tech Memo 104, 4.1-4.2.
     """
     fig, ax = new_axes(ax, (6.4, 4.8))
     to_hz = 1.0 / (2.0 * np.pi)

@@ -13,7 +13,8 @@ __all__ = ["mode_shape_plot"]
 
 
 def mode_shape_plot(data: BeamModeShapes, ax: Axes | None = None) -> Figure:
-    """phi_n(zeta) over the beam coordinate zeta in [0, 2] (C-1, C-6), junction and CM marked.
+    """phi_n(zeta) over the beam coordinate zeta in [0, 2], junction and CM marked (memo 4.1-2,
+    C-1, C-6..C-9).
 
     Parameters
     ----------
@@ -21,15 +22,6 @@ def mode_shape_plot(data: BeamModeShapes, ax: Axes | None = None) -> Figure:
         From :func:`flexbooster.memo.charts.beam_mode_shapes`.
     ax : matplotlib.axes.Axes, optional
         Axes to draw on; a new figure is made when None.
-
-    Returns
-    -------
-    matplotlib.figure.Figure
-        The figure.
-
-    References
-    ----------
-    Tech Memo 104, eqs. (4.1-2), (C-1), (C-6)..(C-9).
     """
     fig, ax = new_axes(ax, (6.4, 3.6))
     for n, (phi, lam) in enumerate(zip(data.phi, data.lambda_n, strict=True), start=1):

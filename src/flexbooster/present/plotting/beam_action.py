@@ -15,26 +15,17 @@ __all__ = ["plot_stability_chart"]
 
 def plot_stability_chart(chart: StabilityChart, normalised: bool = True,
                          ax: Axes | None = None) -> Figure:
-    """Shade the instability regions of the beam-action system (gamma against Omega).
+    """Unstable points of the beam-action system coloured by the growth rate (1/s, log), gamma
+    against Omega (Bolotin 1964, ch. 3; memo 4.1).
 
     Parameters
     ----------
     chart : StabilityChart
         Result of :func:`flexbooster.memo.beam_action.stability_chart`.
     normalised : bool
-        Plot Omega / omega_1 (True) or Omega in rad/s (False) on the horizontal axis.
+        Plot Omega / omega_1 (True) or Omega in rad/s on the horizontal axis.
     ax : matplotlib.axes.Axes, optional
         Axes to draw on; a new figure is made when None.
-
-    Returns
-    -------
-    matplotlib.figure.Figure
-        The figure: unstable points coloured by the growth rate max |Im alpha| Omega (1/s,
-        logarithmic scale), stable points blank.
-
-    References
-    ----------
-    Bolotin (1964), ch. 3 (instability regions); Tech Memo 104, section 4.1.
     """
     x = chart.Omega / chart.omega_1 if normalised else chart.Omega
     growth = np.where(chart.stable, np.nan, chart.growth_rate)

@@ -42,13 +42,9 @@ def band_tooltip(rank: int, band: RankedBand) -> str:
     Parameters
     ----------
     rank : int
-        1-based rank in the danger list (dimensionless).
+        1-based rank in the danger list.
     band : RankedBand
         The band.
-
-    Returns
-    -------
-    str
     """
     lo_hz, hi_hz = band.hz
     level = (f"growth rate {band.growth_rate:.3g} 1/s" if band.growth_rate is not None
@@ -61,7 +57,10 @@ def band_tooltip(rank: int, band: RankedBand) -> str:
 
 def danger_map(danger: DangerSummary, *, omega_1: float | None = None,
                ax: Axes | None = None) -> Figure:
-    """Draw the danger map of an analysis from its :class:`~flexbooster.danger.DangerSummary`.
+    """Draw the danger map from a :class:`~flexbooster.danger.DangerSummary`: log Omega (Hz) over
+    the operating range, regions as bands of height and colour their growth rate, the five most
+    dangerous numbered, resonances as stems on a log severity axis; the figure's
+    :data:`SVG_TITLES_ATTRIBUTE` maps each group id to its tooltip.
 
     Parameters
     ----------
@@ -71,19 +70,6 @@ def danger_map(danger: DangerSummary, *, omega_1: float | None = None,
         First bending frequency (rad/s), > 0: adds a secondary x axis Omega / omega_1.
     ax : matplotlib.axes.Axes, optional
         Axes to draw on; a new figure is made when None.
-
-    Returns
-    -------
-    matplotlib.figure.Figure
-        Logarithmic Omega (Hz) axis over the operating range (widened to show every band);
-        regions as bands of height growth rate coloured by it (with a colour bar), the five
-        most dangerous numbered; resonances as stems on a log severity axis (right) when
-        present.  The figure's attribute :data:`SVG_TITLES_ATTRIBUTE` maps the group id of
-        each band and stem to its tooltip.
-
-    References
-    ----------
-    Tech Memo 104, secs. 4.1, 4.2, 7.3; Bolotin (1964), ch. 1-2.
     """
     bands = danger.bands
     regions = [(n, b) for n, b in enumerate(bands) if b.growth_rate is not None]
@@ -165,7 +151,7 @@ def danger_map(danger: DangerSummary, *, omega_1: float | None = None,
 
 
 def add_svg_titles(svg: str, titles: dict[str, str]) -> str:
-    """Insert ``<title>`` tooltips into the groups of a matplotlib SVG, by group id.
+    """The SVG with ``<title>text</title>`` as the first child of each ``<g>`` of a given id.
 
     Parameters
     ----------
@@ -173,11 +159,6 @@ def add_svg_titles(svg: str, titles: dict[str, str]) -> str:
         SVG text from ``Figure.savefig(format="svg")``.
     titles : dict of str to str
         Group id (``Artist.set_gid``) -> tooltip text.
-
-    Returns
-    -------
-    str
-        The SVG with ``<title>text</title>`` as the first child of each such ``<g>``.
     """
     if not titles:
         return svg

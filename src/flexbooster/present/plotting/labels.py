@@ -1,8 +1,5 @@
-"""Plain-text labels and tick formats shared by the figures (no mathtext).
-
-Unicode sub- and superscripts (all in matplotlib's bundled DejaVu Sans) instead of TeX-like
-mathtext: the figures read the same, and each label is laid out as plain text, which costs a
-fraction of mathtext's parse and layout (about 1 s of CPU over the figures of a default run).
+"""Plain-text labels and tick formats shared by the figures: Unicode sub- and superscripts
+(DejaVu Sans) instead of mathtext, laid out as plain text.
 """
 
 from __future__ import annotations
@@ -16,7 +13,7 @@ _SUP = str.maketrans("0123456789+-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻")
 
 
 def subscript(base: str, index: object) -> str:
-    """``base`` with ``index`` written as Unicode subscripts, e.g. ("φ", 2) -> "φ₂".
+    """``base`` with ``index`` as Unicode subscripts, e.g. ("φ", 2) -> "φ₂".
 
     Parameters
     ----------
@@ -24,11 +21,6 @@ def subscript(base: str, index: object) -> str:
         The symbol.
     index : object
         The index (its ``str``); characters without a subscript form follow an underscore.
-
-    Returns
-    -------
-    str
-        The label.
     """
     text = str(index)
     sub = text.translate(_SUB)
@@ -42,31 +34,21 @@ def superscript(text: object) -> str:
     ----------
     text : object
         The exponent (its ``str``).
-
-    Returns
-    -------
-    str
-        The superscript.
     """
     return str(text).translate(_SUP)
 
 
 def plain_log_ticks(axis, *, minor_marks: bool = True) -> None:
-    """Plain numbers ("0.5", "10", "200") on a logarithmic axis, no minor labels.
+    """Plain numbers ("0.5", "10", "200") on a logarithmic axis, no minor labels, ticks in the
+    view only.
 
     Parameters
     ----------
     axis : matplotlib.axis.Axis
         E.g. ``ax.xaxis`` of an axes with a log scale.
     minor_marks : bool
-        Draw the minor ticks as one artist of tick marks
-        (:class:`~flexbooster.present.plotting.ticks.MinorTickMarks`, no tick objects); False:
-        matplotlib's minor ticks (needed for grid lines at the minor ticks).
-
-    Notes
-    -----
-    Easier to read than 10^n and faster to draw (no mathtext layout).  Only the ticks in the
-    view are made (:func:`~flexbooster.present.plotting.ticks.in_view_log_locator`).
+        Minor ticks as one artist of marks (:class:`~.ticks.MinorTickMarks`); False:
+        matplotlib's minor ticks (for grid lines at them).
     """
     from matplotlib.ticker import FuncFormatter
 
@@ -78,16 +60,13 @@ def plain_log_ticks(axis, *, minor_marks: bool = True) -> None:
 
 
 def power_log_ticks(axis) -> None:
-    """Decades written 10⁻⁸, 10⁰, 10³ (plain text) on a logarithmic axis spanning many decades.
+    """Decades written 10⁻⁸, 10⁰, 10³ (plain text) on a logarithmic axis; minor ticks as
+    :func:`plain_log_ticks`.
 
     Parameters
     ----------
     axis : matplotlib.axis.Axis
         E.g. ``ax2.yaxis`` of an axes with a log scale.
-
-    Notes
-    -----
-    The minor ticks are drawn as in :func:`plain_log_ticks`.
     """
     from matplotlib.ticker import FuncFormatter
 

@@ -1,15 +1,8 @@
-"""The figures' layout: made once per figure, before the SVG and the PNG are drawn.
+"""The figures' layout, made once per figure before the SVG and the PNG are drawn.
 
-Every figure of this package is made by :func:`new_figure` with a tight layout engine
-(matplotlib's ``tight_layout``: the axes fitted to their labels in one measuring pass), and its
-colour bar, if any, in a column of its own (:func:`axes_with_colorbar`), so that the engine
-places it beside every label of the axes (a twin axis' labels too).  A figure saved directly
-(``fig.savefig``) is laid out by that engine as usual.
-
-:func:`lay_out_once` (used by :func:`flexbooster.present.figure_files.render_figure`)
-runs the engine once, fixes the titles where matplotlib placed them and removes the engine: the
-SVG and the PNG are then drawn once each, without the layout pass and the title placement that
-each save would otherwise repeat (about half of the CPU of the figures of a default run).
+:func:`new_figure` gives a tight layout engine and :func:`axes_with_colorbar` a colour bar
+column of its own; :func:`lay_out_once` runs the engine once, fixes the titles and labels
+where it placed them and removes it, so each save draws without a layout pass.
 """
 
 from __future__ import annotations
@@ -45,16 +38,12 @@ def new_figure(figsize: tuple[float, float]) -> Figure:
     ----------
     figsize : tuple of float
         Width and height (in).
-
-    Returns
-    -------
-    matplotlib.figure.Figure
     """
     return Figure(figsize=figsize, layout=_engine())
 
 
 def new_axes(ax: Axes | None, figsize: tuple[float, float]) -> tuple[Figure, Axes]:
-    """``ax`` and its figure, or a new figure (:func:`new_figure`) with one axes.
+    """(figure, axes): ``ax`` and its figure, or a new figure with one axes.
 
     Parameters
     ----------
@@ -62,10 +51,6 @@ def new_axes(ax: Axes | None, figsize: tuple[float, float]) -> tuple[Figure, Axe
         Axes to draw on; a new figure is made when None.
     figsize : tuple of float
         Size of the new figure (in).
-
-    Returns
-    -------
-    tuple of (matplotlib.figure.Figure, matplotlib.axes.Axes)
     """
     if ax is None:
         fig = new_figure(figsize)
@@ -75,7 +60,8 @@ def new_axes(ax: Axes | None, figsize: tuple[float, float]) -> tuple[Figure, Axe
 
 def axes_with_colorbar(ax: Axes | None, figsize: tuple[float, float], *,
                        colorbar: bool = True) -> tuple[Figure, Axes, Axes | None]:
-    """Axes and, for a new figure, the axes of its colour bar in a column to the right.
+    """(figure, axes, colour bar axes): for a new figure the colour bar in a column to the right;
+    None for a given ``ax`` (the colour bar takes its space from it) or without a colour bar.
 
     Parameters
     ----------
@@ -84,14 +70,7 @@ def axes_with_colorbar(ax: Axes | None, figsize: tuple[float, float], *,
     figsize : tuple of float
         Size of the new figure (in).
     colorbar : bool
-        False: no colour bar (the new figure has the axes alone).
-
-    Returns
-    -------
-    tuple of (matplotlib.figure.Figure, matplotlib.axes.Axes, matplotlib.axes.Axes or None)
-        The figure, the axes and the colour bar's axes (``Figure.colorbar(..., cax=cax)``);
-        None for a given ``ax`` (then ``Figure.colorbar(..., ax=ax)`` takes the space from it)
-        or without a colour bar.
+        False: no colour bar.
     """
     if ax is not None or not colorbar:
         return (*new_axes(ax, figsize), None)
@@ -101,29 +80,17 @@ def axes_with_colorbar(ax: Axes | None, figsize: tuple[float, float], *,
 
 
 def lay_out_once(fig: Figure, dpi: float | None = None) -> None:
-    """Lay ``fig`` out once and remove its layout engine (the axes keep their places).
+    """Lay ``fig`` out once and remove its layout engine, keeping the axes, titles and axis labels
+    at the places the engine measured (as distances from the axes' edges); axes the engine
+    does not measure keep the automatic placement.
 
     Parameters
     ----------
     fig : matplotlib.figure.Figure
-        A figure of this package (a tight layout engine), or any figure: one without an engine
-        gets the package's tight layout, one with another engine (e.g. constrained layout) is
-        laid out by it.
+        A figure (without an engine: the package's tight layout; another engine lays it out).
     dpi : float, optional
-        Resolution (dots per inch) at which the figure will be saved as PNG: the figure's
-        ``dpi`` is set to it and the layout measured with the Agg renderer that the PNG's save
-        then reuses, with the text sizes measured here (matplotlib caches them per renderer).
-
-    Notes
-    -----
-    The tight layout measures each axes as drawn, which places its title (above the tick
-    labels of a secondary or top axis) and its axis labels (beside the tick labels), then moves
-    the axes.  Those places are kept, as the same distances (in pixels) from the moved axes'
-    edges, so that the saves do not measure the axes again for them at every draw
-    (matplotlib's ``Axis.set_label_coords``; a title given its height).  Positions are
-    fractions of the axes, the same at the SVG's and the PNG's resolution.  An axes that the
-    engine does not measure (not in a grid of subplots; a secondary axis) keeps the automatic
-    placement, and so does every axes of a figure with another engine.
+        Resolution of the PNG save: the figure's ``dpi`` is set to it and the layout measured
+        with the Agg renderer the save reuses.
     """
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 

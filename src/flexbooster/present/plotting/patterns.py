@@ -1,12 +1,6 @@
-"""Nodal patterns of the shell modes on the unrolled cylinder surfaces (memo Fig. 4).
-
-The radial shape function of cylinder d is h_jk = sin(j pi s / 2) cos(k theta) (eqs. 5.3-2d,
-5.3-3d) with the local axial coordinate s = 0 at the cylinder's aft edge and s = 2 at its
-forward edge (the zero-phase default of :mod:`flexbooster.memo.shell`; erratum E10 explains why
-the printed phase is not used).  Its nodal lines (computed by
-:func:`flexbooster.memo.charts.nodal_pattern_data`) are the j + 1 circles s = 2 i / j and the
-2k generators theta = (2 i + 1) pi / (2 k); the cells between them alternate in sign, the
-chequerboard of memo Fig. 4.
+"""Nodal patterns of the shell modes on the unrolled cylinder surfaces (memo Fig. 4): the
+nodal circles and generators of sin(j pi s / 2) cos(k theta) (5.3-2d, 5.3-3d) and the
+chequerboard of signs between them.
 """
 
 from __future__ import annotations
@@ -22,7 +16,8 @@ __all__ = ["nodal_pattern", "nodal_patterns"]
 
 
 def nodal_pattern(data: NodalPattern, ax: Axes | None = None) -> Figure:
-    """The (j, k) nodal pattern of one cylinder on its unrolled surface (memo Fig. 4).
+    """The (j, k) nodal pattern of one cylinder on its unrolled surface, w > 0 red, w < 0 blue,
+    nodal lines black (memo Fig. 4).
 
     Parameters
     ----------
@@ -30,15 +25,6 @@ def nodal_pattern(data: NodalPattern, ax: Axes | None = None) -> Figure:
         The mode's nodal lines and cell signs, radius and half-length (m).
     ax : matplotlib.axes.Axes, optional
         Axes to draw on; a new figure is made when None.
-
-    Returns
-    -------
-    matplotlib.figure.Figure
-        Cells where w > 0 shaded red, w < 0 blue; nodal lines in black.
-
-    References
-    ----------
-    Tech Memo 104, eqs. (5.3-2d), (5.3-3d), Fig. 4.
     """
     fig, ax = new_axes(ax, (6.4, 3.4))
     R, L = data.radius, data.half_length
@@ -66,14 +52,6 @@ def nodal_patterns(patterns: tuple[NodalPattern, ...] | list[NodalPattern]) -> F
     ----------
     patterns : sequence of NodalPattern
         One per panel, cylinder 1 (aft) first.
-
-    Returns
-    -------
-    matplotlib.figure.Figure
-
-    References
-    ----------
-    Tech Memo 104, Fig. 4, eqs. (5.3-2d), (5.3-3d).
     """
     fig = new_figure((7.0, 3.0 * len(patterns)))
     axes = np.atleast_1d(fig.subplots(len(patterns), 1))

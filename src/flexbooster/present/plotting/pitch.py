@@ -15,29 +15,18 @@ __all__ = ["ince_strutt_chart", "beta_comparison_plot"]
 
 def ince_strutt_chart(data: InceStruttData, ax: Axes | None = None, *,
                       Omega: np.ndarray | None = None) -> Figure:
-    """Ince-Strutt chart (a against q) with the booster's operating path.
+    """Ince-Strutt chart (a against q) with the operating path (4.2-4): the tongues shaded from
+    their boundaries, the path's unstable points red, labelled in Hz with ``Omega`` (A&S fig.
+    20.1).
 
     Parameters
     ----------
     data : InceStruttData
-        Transition curves a_r(q), b_r(q) and the operating path (a(Omega), q(Omega)) of
-        eq. (4.2-4), from :func:`flexbooster.memo.charts.ince_strutt_data`.
+        From :func:`flexbooster.memo.charts.ince_strutt_data`.
     ax : matplotlib.axes.Axes, optional
         Axes to draw on; a new figure is made when None.
     Omega : numpy.ndarray, optional
-        Shape like ``data.a_path``: the thrust frequency (rad/s) of each point of the path
-        (``results.pitch.Omega``); labels the path in Hz at round values.
-
-    Returns
-    -------
-    matplotlib.figure.Figure
-        The unstable regions (tongue r between b_r and a_r; a < a_0) shaded from their
-        boundaries, the transition curves, and the path (unstable points in red), labelled
-        with Omega in Hz when ``Omega`` is given.
-
-    References
-    ----------
-    Abramowitz & Stegun (1964), fig. 20.1; Tech Memo 104, eqs. (4.2-3)..(4.2-5).
+        Shape like ``data.a_path``: the thrust frequency (rad/s) of each point of the path.
     """
     fig, ax = new_axes(ax, (6.4, 4.8))
     q, curves = data.q, data.curves
@@ -98,26 +87,17 @@ def _label_path(ax: Axes, data: InceStruttData, hz: np.ndarray,
 
 
 def beta_comparison_plot(q: np.ndarray, errors: dict, ax: Axes | None = None) -> Figure:
-    """|beta_memo - beta_exact| against q (log-log): eq. (4.2-9) corrected and as printed.
+    """|beta_memo - beta_exact| against q (log-log) for eq. (4.2-9) corrected (E4, slope 4, solid)
+    and as printed (slope 2, dashed), with q^4 and q^2 guides.
 
     Parameters
     ----------
     q : numpy.ndarray
-        Shape (n,), Mathieu q (dimensionless), > 0.
+        Shape (n,), Mathieu q, > 0.
     errors : dict of float to (numpy.ndarray, numpy.ndarray)
-        a -> (|corrected - exact|, |printed - exact|), each shape (n,) (dimensionless).
+        a -> (|corrected - exact|, |printed - exact|), each shape (n,).
     ax : matplotlib.axes.Axes, optional
         Axes to draw on; a new figure is made when None.
-
-    Returns
-    -------
-    matplotlib.figure.Figure
-        Solid: corrected (erratum E4), slope 4; dashed: printed, slope 2; dotted guides
-        proportional to q^4 and q^2.
-
-    References
-    ----------
-    Tech Memo 104, eq. (4.2-9); reading guide erratum E4; A&S (1964) 20.3.15.
     """
     fig, ax = new_axes(ax, (5.6, 4.2))
     q = np.asarray(q, dtype=float)

@@ -19,17 +19,13 @@ _COMPONENT_WORDS = {"U": "axial", "V": "circumferential", "W": "radial"}
 
 
 def mode_names(result: SimulationResult) -> list[str]:
-    """The modal coordinates in words, e.g. "cylinder 1 radial W, j = 2, k = 0".
+    """The modal coordinates in words, one per row of ``result.amplitude``, e.g. "cylinder 1
+    radial W, j = 2, k = 0".
 
     Parameters
     ----------
     result : SimulationResult
         From :func:`flexbooster.memo.responses.simulate`.
-
-    Returns
-    -------
-    list of str
-        One per row of ``result.amplitude``.
     """
     return [f"cylinder {d} {_COMPONENT_WORDS.get(str(c), str(c))} {c}, j = {j}, k = {k}"
             for c, d, j, k in zip(result.component, result.cylinder, result.j, result.k,
@@ -37,18 +33,13 @@ def mode_names(result: SimulationResult) -> list[str]:
 
 
 def mode_verdicts(result: SimulationResult) -> list[tuple[str, str, float]]:
-    """(name, "growing" or "bounded", peak |amplitude| in m) per modal coordinate.
+    """(name, "growing" or "bounded", peak |amplitude| in m) per modal coordinate: growing when the
+    peak of the last third exceeds :data:`GROWTH_RATIO` times that of the first.
 
     Parameters
     ----------
     result : SimulationResult
         From :func:`flexbooster.memo.responses.simulate` (at least 3 output times).
-
-    Returns
-    -------
-    list of (str, str, float)
-        "growing" when the peak over the last third of the window exceeds
-        :data:`GROWTH_RATIO` times the peak over the first third.
     """
     amp = np.abs(np.asarray(result.amplitude, dtype=float)) * result.params.L  # units of L -> m
     n = amp.shape[1] if amp.ndim == 2 else 0
@@ -62,26 +53,16 @@ def mode_verdicts(result: SimulationResult) -> list[tuple[str, str, float]]:
 
 
 def modal_amplitudes(result: SimulationResult, top: int = 8, ax=None) -> Figure:
-    """The largest modal amplitudes U_jk, V_jk, W_jk against tau (memo 6.2).
+    """The largest modal amplitudes (mm) against t (s), tau on the top axis (memo 6.2).
 
     Parameters
     ----------
     result : SimulationResult
         From :func:`flexbooster.memo.responses.simulate`.
     top : int
-        Number of coordinates drawn (those with the largest peak |amplitude|), >= 1.
+        Number of coordinates drawn (the largest peaks), >= 1.
     ax : matplotlib.axes.Axes, optional
         Where to draw; a new figure when None.
-
-    Returns
-    -------
-    matplotlib.figure.Figure
-        One line per coordinate (named in words), amplitude in millimetres against the time
-        t (s), tau = omega_1 t on the top axis; the legend outside, to the right.
-
-    References
-    ----------
-    Tech Memo 104, eqs. (6.2-3), (6.2-11), (6.2-12), (6.2-20).
     """
     if int(top) < 1:
         raise ValueError(f"top = {top!r}: must be >= 1")
@@ -107,30 +88,20 @@ def modal_amplitudes(result: SimulationResult, top: int = 8, ax=None) -> Figure:
 
 def deformed_booster(result: SimulationResult, instant: int = -1, scale: float | None = None,
                      ax=None) -> Figure:
-    """Side view (theta = 0 and pi) of the booster deformed at one snapshot instant.
+    """Side view (theta = 0 and pi) of the booster at one snapshot: outline grey, deformed
+    x = x_cm + L xi + s u, z = +-(R_d - s w) (m; memo 5.2-1, 5.3-4).
 
     Parameters
     ----------
     result : SimulationResult
-        With snapshots (``n_snapshots >= 1`` in :func:`flexbooster.memo.responses.simulate`).
+        With snapshots (``n_snapshots >= 1``).
     instant : int
         Index into the snapshots (default the last).
     scale : float, optional
-        Displacement magnification (dimensionless); default a round number (1, 2 or 5 times
-        a power of ten) that draws the largest displacement as about 10 % of the smaller
-        radius.
+        Displacement magnification; default a round number drawing the largest displacement
+        as about 10 % of the smaller radius.
     ax : matplotlib.axes.Axes, optional
         Where to draw; a new figure when None.
-
-    Returns
-    -------
-    matplotlib.figure.Figure
-        The undeformed outline (grey) and the deformed one: x = x_cm + L xi + s u,
-        z = +-(R_d - s w) (w positive inward, memo 3.0), in metres.
-
-    References
-    ----------
-    Tech Memo 104, eqs. (5.2-1), (5.3-4).
     """
     snaps = result.snapshots
     if not snaps or len(snaps["index"]) == 0:

@@ -19,7 +19,8 @@ def frequency_curves(
     unit: str = "hz",
     ax=None,
 ) -> Figure:
-    """The classic shell frequency curves of one cylinder: f(k), one line per j.
+    """The shell frequency curves of one cylinder, f(k) on a log axis, one line per j >= 1 (gaps
+    where ``table.excluded``); ValueError for a bad cylinder, branch or unit.
 
     Parameters
     ----------
@@ -28,22 +29,11 @@ def frequency_curves(
     cylinder : int
         1 (aft) or 2 (forward).
     branch : int
-        Which root per (j, k) to draw (1 = lowest; for k = 0 the lowest of the two).
+        Which root per (j, k) to draw (1 = lowest).
     unit : {"hz", "rad_s", "omega_bar"}
-        Frequency axis: Hz, rad/s or units of omega_1.
+        Frequency axis.
     ax : matplotlib.axes.Axes, optional
         Where to draw; a new figure when None.
-
-    Returns
-    -------
-    matplotlib.figure.Figure
-        One line per axial index j >= 1 through the points (k, f) that the table holds
-        (modes without a real frequency, ``table.excluded``, leave gaps), log frequency axis.
-
-    Raises
-    ------
-    ValueError
-        For a cylinder, branch or unit outside the allowed values.
     """
     if cylinder not in (1, 2):
         raise ValueError(f"cylinder = {cylinder!r}: must be 1 or 2")

@@ -25,29 +25,17 @@ _STYLE = {  # family (memo 7.4 numbering) -> (label, colour)
 
 
 def campbell_diagram(data: CampbellData, ax=None, *, significant=None) -> Figure:
-    """Excitation curves against Omega (Hz), the shell frequencies and the significant roots.
+    """Excitation curves against Omega (Hz, log), one colour per family, the shell frequencies of
+    the significant roots grey and the roots red (memo 7.3).
 
     Parameters
     ----------
     data : CampbellData
-        From :func:`flexbooster.memo.charts.campbell_data` (frequencies in units of
-        omega_1, drawn in Hz).
+        From :func:`flexbooster.memo.charts.campbell_data`.
     ax : matplotlib.axes.Axes, optional
         Where to draw; a new figure when None.
     significant : numpy.ndarray of bool, optional
-        Shape like ``data.root_active``: the roots to draw (and the shell frequencies they
-        sit on); default the roots with active forcing (a severity threshold can replace it).
-
-    Returns
-    -------
-    matplotlib.figure.Figure
-        Logarithmic Hz axes (Omega / omega_1 on top), one colour per family of curves, the
-        shell frequencies of the significant roots as thin grey lines, the significant roots
-        as red points; the legend outside the axes, to the right.
-
-    References
-    ----------
-    Tech Memo 104, eqs. (7.3-1)..(7.3-35).
+        Shape like ``data.root_active``: the roots to draw (default the active ones).
     """
     fig, ax = new_axes(ax, (9.0, 5.6))
     mask = data.root_active if significant is None else np.asarray(significant, dtype=bool)

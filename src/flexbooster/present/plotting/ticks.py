@@ -1,12 +1,6 @@
-"""Cheaper ticks of the logarithmic axes: only those in the view, the minor ones as marks.
-
-A matplotlib tick is an object of five artists (two tick lines, a grid line, two labels), made
-once per tick location and updated at every draw and layout pass; a log axis has about three
-times as many minor ticks as major ones.  :func:`in_view_log_locator` makes the axis create no
-tick beyond its view (``LogLocator`` returns a decade more on each side, never drawn), and
-:class:`MinorTickMarks` draws all the minor ticks of an axis as one line of tick markers (the
-marker, size, width and colour of matplotlib's minor ticks), with no tick objects at all.  The
-ticks drawn are the same.
+"""Cheaper ticks of the logarithmic axes: only those in the view (:func:`in_view_log_locator`),
+the minor ones as one line of markers (:class:`MinorTickMarks`, no tick objects); the ticks
+drawn are the same.
 """
 
 from __future__ import annotations
@@ -68,22 +62,14 @@ def in_view_log_locator(subs) -> _InViewLogLocator:
     ----------
     subs : sequence of float or {"auto", "all"}
         As ``matplotlib.ticker.LogLocator``'s.
-
-    Returns
-    -------
-    _InViewLogLocator
     """
     return _InViewLogLocator(base=10.0, subs=subs)
 
 
 class MinorTickMarks(Artist):
-    """The minor ticks of a logarithmic axis as one line of tick markers.
-
-    Drawn with the axis (its z-order): at each draw the minor tick locations of
-    ``LogLocator(subs="auto")`` in the view, less those on a major tick, as markers on the
-    sides where the axis' major ticks are, with matplotlib's minor tick marker, size, width
-    and colour (rcParams ``xtick.minor.size``, ``xtick.minor.width``, ``xtick.direction``,
-    ``xtick.color`` and the ``ytick`` ones).  No label, no grid line.
+    """The minor ticks of a logarithmic axis as one line of tick markers, drawn with the axis: the
+    locations of ``LogLocator(subs="auto")`` in the view less the major ones, with matplotlib's
+    minor tick marker, size, width and colour (rcParams); no label, no grid line.
 
     Parameters
     ----------
@@ -148,8 +134,7 @@ def log_minor_ticks(axis, *, marks: bool = True) -> None:
     axis : matplotlib.axis.Axis
         A logarithmic axis.
     marks : bool
-        True: no minor tick objects, a :class:`MinorTickMarks` added to the axes instead;
-        False: matplotlib's minor ticks (with grid lines when the grid is on for them).
+        True: a :class:`MinorTickMarks` instead of tick objects; False: matplotlib's.
     """
     axis.set_minor_formatter(NullFormatter())
     if not marks:

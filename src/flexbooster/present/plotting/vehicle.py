@@ -18,21 +18,13 @@ __all__ = ["meridian_shapes", "unrolled_modes"]
 
 
 def meridian_shapes(views: ModeShapeViews) -> Figure:
-    """Deformed meridians (plane theta = 0) of the lowest modes, one panel per harmonic k.
+    """Deformed meridians (theta = 0) of the lowest modes, one panel per harmonic k, displaced by
+    ``views.scale`` (m) over the undeformed one (Kraus 1967, ch. 2).
 
     Parameters
     ----------
     views : ModeShapeViews
         The stored figure data.
-
-    Returns
-    -------
-    matplotlib.figure.Figure
-        Undeformed meridian dashed grey; each mode displaced by ``views.scale`` (m).
-
-    References
-    ----------
-    H. Kraus, *Thin Elastic Shells*, 1967, ch. 2 (meridian, local displacements).
     """
     ks = [int(k) for k in views.harmonics]
     ncol = min(2, max(1, len(ks)))
@@ -56,17 +48,12 @@ def meridian_shapes(views: ModeShapeViews) -> Figure:
 
 
 def unrolled_modes(views: ModeShapeViews) -> Figure:
-    """Normal displacement w(s, theta) of a few modes on the unrolled vehicle surface.
+    """Normal displacement w(s, theta) of a few modes on the unrolled surface, one panel each.
 
     Parameters
     ----------
     views : ModeShapeViews
         The stored figure data (``theta``, ``s``, ``w``).
-
-    Returns
-    -------
-    matplotlib.figure.Figure
-        One panel per mode, red w > 0, blue w < 0, theta in degrees across, s along.
     """
     n = max(1, views.unrolled_index.size)
     fig = new_figure((3.2 * n, 3.6))

@@ -34,28 +34,16 @@ def _top(regions) -> float:
 
 
 def vehicle_region_chart(regions: VehicleRegions, ax: Axes | None = None) -> Figure:
-    """Shade each region between its boundary curves, Omega in Hz against gamma.
+    """Shade each region between its boundary curves, Omega in Hz (log) against gamma, coloured by
+    the largest growth rate (1/s) at the case's gamma (grey where it does not reach it), the
+    case's gamma dashed (Bolotin 1964, ch. 1, sec. 6).
 
     Parameters
     ----------
     regions : VehicleRegions
-        The stored regions (edges in rad/s, drawn in Hz); the curves are those traced by the
-        pipeline (``boundaries=True``), empty when no region exists up to the chart's gamma.
+        The stored regions and curves (rad/s, drawn in Hz).
     ax : matplotlib.axes.Axes, optional
         Axes to draw on; a new figure is made when None.
-
-    Returns
-    -------
-    matplotlib.figure.Figure
-        Regions shaded between omega_lo(gamma) and omega_hi(gamma) (the stored levels joined
-        by straight lines from the tip at the critical gamma), coloured by the largest growth
-        rate (1/s) at the case's gamma, grey where the region does not reach that gamma; the
-        case's gamma as a dashed line with the regions found there marked at their largest
-        growth rate; logarithmic Omega axis over the case's range.
-
-    References
-    ----------
-    Bolotin (1964), ch. 1 (regions in the (Omega, mu) plane), sec. 6 (damping).
     """
     fig, ax, cax = axes_with_colorbar(ax, (6.4, 4.8), colorbar=bool(regions.regions))
     growth = {_key(r.k, r.kind, r.order, tuple(m.index for m in r.modes)): r.growth_rate_max

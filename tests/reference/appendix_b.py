@@ -17,8 +17,8 @@ from typing import Any
 
 import numpy as np
 
-from ..checks import count
-from ..memo.beam import (
+from flexbooster.checks import count
+from flexbooster.memo.beam import (
     alpha_from_eigenvalues,
     free_free_eigenvalues,
     mode_shape,

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..memo.shell import ShellFrequencies
+from flexbooster.memo.shell import ShellFrequencies
 
 __all__ = [
     "donnell_frequencies",
