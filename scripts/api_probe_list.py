@@ -1,8 +1,8 @@
 """List the public functions of flexbooster (the ``__all__`` of every module) and whether
-tests/test_robustness.py probes them with a bad argument (issue 18 item 6).
+tests/test_api_validation.py probes them with a bad argument.
 
 Run: ``PYTHONPATH=src python scripts/api_probe_list.py``.  A function counts as probed when
-its name is called (``name(``) in BAD_CALLS or API_CALLS of tests/test_robustness.py.  The
+its name is called (``name(``) in BAD_CALLS or API_CALLS of tests/test_api_validation.py.  The
 command line (cli), the presentation layer (present) and the sweep layer are left out: their
 inputs are the case file and the options, probed through the command.
 """
@@ -44,7 +44,7 @@ def public_functions() -> list[tuple[str, str, list[str]]]:
 
 def main() -> None:
     """Print one line per public function: probed (Y) or not (-), module, name, parameters."""
-    tests = (Path(__file__).parents[1] / "tests" / "test_robustness.py").read_text()
+    tests = (Path(__file__).parents[1] / "tests" / "test_api_validation.py").read_text()
     rows = public_functions()
     probed = 0
     for module, name, params in rows:

@@ -320,7 +320,7 @@ def test_damped_region_against_harmonic_balance():
 
 
 def test_damped_march_stays_inside_the_range():
-    # reproducer of the fuzz failure (tests/test_robustness.py _FUZZ_FLOQUET): the damped
+    # reproducer of the fuzz failure (tests/test_fuzz_reproducers.py _FUZZ_FLOQUET): the damped
     # search marched 4 undamped widths below a wide region and evaluated the monodromy at
     # Omega < 0 (ValueError).  Damped Mathieu mu = 0.8, eps = 0.01 on [1, 3]: the principal
     # region (undamped width ~1.4) and the j = 2 region (unstable down to the range end).

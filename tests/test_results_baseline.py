@@ -1,8 +1,8 @@
-"""Issue 11 acceptance: the redesign changed no number, and every figure is drawn from the
-results alone.
+"""Stored baselines: no number changed unintentionally, and every figure is drawn from
+the results alone.
 
 The baselines ``tests/data/baseline/*.json.gz`` are the results.json of three cases written by
-commit 045ce06 (the code before the redesign) with the script in the docstring of
+commit 045ce06 with the script in the docstring of
 :func:`_case`: the default case, a case with the CM in cylinder 2 and an inch-pound case, each
 with a reduced truncation (60 Omega points; M = N = 4 shell modes, N = 4 beam modes, S = 3,
 R = 3) so that the files stay small.  Every key of the baseline must be in today's results
@@ -42,17 +42,17 @@ def _case(name: str):
     return flexbooster.load_case(d)
 
 
-#: Keys that issue 12 changed on purpose: the intervals are the exact band edges (not runs of
-#: unstable grid points), the verdicts and the largest growth rates follow from the bands
-#: (docs/theory/bands.md).
-CHANGED_BY_ISSUE_12 = {".pitch.unstable_intervals", ".pitch.verdict", ".beam_action.verdict",
+#: Keys changed on purpose when bands became exact: the intervals are the exact band edges
+#: (not runs of unstable grid points), the verdicts and the largest growth rates follow from
+#: the bands (docs/theory/bands.md).
+CHANGED_EXACT_BANDS = {".pitch.unstable_intervals", ".pitch.verdict", ".beam_action.verdict",
                        ".pitch.max_growth_rate", ".beam_action.max_growth_rate",
                        ".beam_action.Omega_at_max"}
 
-#: Keys that issue 13 changed on purpose: "active" is severity_rel >= threshold (the secular
-#: growth rate of each root, docs/theory/severity.md), no longer the Kronecker deltas and
-#: parity alone; the table gained the columns severity and severity_rel.
-CHANGED_BY_ISSUE_13 = {".stability.active", ".stability.columns", ".stability.table.forcing"}
+#: Keys changed on purpose by the secular severity: "active" is severity_rel >= threshold
+#: (the secular growth rate of each root, docs/theory/severity.md), no longer the
+#: Kronecker deltas and parity alone; the table gained the columns severity and severity_rel.
+CHANGED_SEVERITY = {".stability.active", ".stability.columns", ".stability.table.forcing"}
 
 
 #: Keys compared to an absolute tolerance instead of 1e-12 relative: the beam-action exponents
@@ -67,7 +67,7 @@ PLATFORM_ROUND_OFF = {".beam_action.alpha_real": 1e-10, ".beam_action.alpha_imag
 
 
 def _diff(old, new, path="", atol=0.0):
-    if path in CHANGED_BY_ISSUE_12 | CHANGED_BY_ISSUE_13:
+    if path in CHANGED_EXACT_BANDS | CHANGED_SEVERITY:
         return
     atol = PLATFORM_ROUND_OFF.get(path, atol)
     if isinstance(old, dict):
@@ -96,8 +96,7 @@ def test_results_equal_the_baseline_before_the_redesign(name):
         old.pop(key)
     diffs = list(_diff(old, new))
     assert not diffs, f"{len(diffs)} values changed, e.g. {diffs[:3]}"
-    # added since: the figure data (issue 11), the vehicle's parametric regions (issue 15),
-    # the ranked danger bands (issue 17)
+    # added since: the figure data, the vehicle's parametric regions, the ranked danger bands
     assert set(new) - set(old) - {"flexbooster_version", "units"} == {"figures",
                                                                        "vehicle_regions",
                                                                        "danger"}

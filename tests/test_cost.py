@@ -1,0 +1,198 @@
+"""Bounded cost: the up-front estimate grows with the fields that drive it, limits are gaps,
+caps bound the work.
+
+Sources: the monodromy with 4x the steps (the cap's error); Hill continuant identities.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import signal
+import warnings
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import flexbooster
+from conftest import dump_toml
+from flexbooster import cost
+from flexbooster.analysis import analyze
+from flexbooster.cli import main
+from flexbooster.errors import CaseError
+from flexbooster.floquet import mathieu
+from flexbooster.memo import beam_action as ba
+from flexbooster.model import model_from_case
+from test_case import _set
+
+nan, inf = math.nan, math.inf
+SRC = str(Path(flexbooster.__file__).parents[1])
+
+
+def run_cli(argv):
+    """Run the command in-process; return the exit code."""
+    with pytest.raises(SystemExit) as info:
+        main(argv)
+    return info.value.code
+
+
+@pytest.fixture
+def alarm():
+    """A call that hangs fails instead of blocking the suite: a hang guard (10 min, far above
+    any machine's load), not a measurement; the bounds themselves are the deterministic caps
+    tested below."""
+    def handler(signum, frame):
+        raise TimeoutError("the call did not return within 600 s")
+
+    previous = signal.signal(signal.SIGALRM, handler)
+    signal.alarm(600)
+    yield
+    signal.alarm(0)
+    signal.signal(signal.SIGALRM, previous)
+
+
+def _case(case_dict, **fields):
+    for dotted, value in fields.items():
+        _set(case_dict, dotted.replace("__", "."), value)
+    return flexbooster.load_case(case_dict)
+
+
+def test_estimate_grows_with_the_fields_that_drive_it(case_dict):
+    """Invariant: each kernel's estimate grows with its driving field (monodromy ~1/Omega,
+    Hill ~(N (2 S + 1))^3), and the refusal names those fields once each."""
+    def mono(omega_min):
+        case = _case(case_dict, thrust__n_omega=2, thrust__omega_min=omega_min)
+        return cost.estimate_cost(model_from_case(case)).parts["beam-action monodromy"]
+
+    assert mono(5.0) > 3.0 * mono(20.0)  # ~1/Omega above the cap
+    assert mono(0.05) == mono(0.5)  # bounded below it (MONODROMY_MAX_STEPS)
+    base = cost.estimate_cost(model_from_case(_case(case_dict)))
+    big = cost.estimate_cost(model_from_case(_case(case_dict, truncation__S=40)))
+    ratio = big.parts["Hill determinant"] / base.parts["Hill determinant"]
+    assert ratio == pytest.approx((81 / 21) ** 3, rel=1e-12)  # the cost model's own law
+    assert set(base.to_dict()) >= {"seconds", "parts", "drivers", "capped_points"}
+
+
+def _tongue_case(case_dict, **fields):
+    """The default booster with its Omega range below omega_1 / 4 (113.5 rad/s / 4): the
+    rigid-pitch tongues r = 1..4 (tips 2.39 / r rad/s) are searched by harmonic balance."""
+    base = dict(thrust__omega_min=0.5, thrust__omega_max=20.0, thrust__n_omega=4,
+                thrust__gamma=0.5, truncation__N=4)
+    return model_from_case(_case(case_dict, **{**base, **fields}))
+
+
+def test_tongue_estimate_grows_with_the_fields_that_drive_it(case_dict):
+    """Invariants of the pitch-tongue term (cost.TONGUE_PART): none above
+    omega_1 / 4 or without pulsation; more with more beam modes (eigenproblems of order
+    ~ (N + 1) K) and with pitch damping (the critical gamma's bisection); named fields."""
+    import copy as _copy
+
+    def part(**fields):
+        est = cost.estimate_cost(_tongue_case(_copy.deepcopy(case_dict), **fields))
+        return est.parts.get(cost.TONGUE_PART, 0.0), est
+
+    base, est = part()
+    assert base > 0.0 and "truncation.N" in est.drivers[cost.TONGUE_PART]
+    assert part(thrust__gamma=0.0)[0] == 0.0
+    assert part(thrust__omega_min=30.0, thrust__omega_max=60.0)[0] == 0.0  # above 28.4 rad/s
+    assert part(truncation__N=8)[0] > 2.0 * base
+    assert part(damping={"pitch_ratio": 0.02})[0] > base  # fewer tongues, each bisected
+
+
+def test_tongue_search_limit_is_a_gap_a_warning_and_no_stable_verdict(monkeypatch,
+                                                                        case_dict):
+    """A tongue search cut by its order limit (TONGUE_MAX_ORDER, set to 0 here: no tongue
+    searched) leaves a SearchGap in the result (stage, limit, first order left out, its
+    Omega range), a warning (code beam-action-not-fully-searched, field the limit) and the
+    verdict "not fully searched", never "stable"; results.json holds the gap."""
+    monkeypatch.setattr(ba, "TONGUE_MAX_ORDER", 0)
+    case_dict["truncation"].update(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)
+    case_dict["thrust"].update(omega_min=0.5, omega_max=20.0, n_omega=4)
+    res = analyze(flexbooster.load_case(case_dict), figures=False, vehicle=False)
+    (gap,) = res.beam_action.gaps
+    assert (gap.stage, gap.limit, gap.order) == ("beam_action", "TONGUE_MAX_ORDER", 1)
+    assert gap.Omega_lo == 0.5 and 0.5 < gap.Omega_hi <= 20.0 and not res.beam_action.bands
+    (w,) = [w for w in res.warnings if w.code == "beam-action-not-fully-searched"]
+    assert w.field == "TONGUE_MAX_ORDER" and w.message == gap.reason and "\n" not in w.message
+    assert res.beam_action.verdict == "not fully searched: " + gap.reason
+    assert res.to_dict()["beam_action"]["gaps"] == [gap.to_dict()]
+
+
+def test_huge_truncation_is_refused_up_front_in_one_line(case_dict, tmp_path, capsys):
+    """A reported M = N = 100, beam N = 50, S = 50 case (9 minutes, 8 GB, no output) is
+    refused before any solver runs: exit 2, one line, estimate and driving fields."""
+    case_dict["truncation"].update(M1=100, N1=100, M2=100, N2=100, N=50, S=50)
+    path = tmp_path / "huge.toml"
+    path.write_text(dump_toml(case_dict))
+    assert run_cli(["run", str(path), "-q", "-o", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and err.count("max_seconds") == 1
+    assert "Hill determinant" in err and "truncation.S" in err
+    assert not (tmp_path / "out" / "results.json").exists()
+
+
+def test_budget_option_refuses_and_case_field_is_used(case_dict, tmp_path, capsys):
+    assert run_cli(["run", "-q", "--max-seconds", "0.5", "-o", str(tmp_path)]) == 2
+    assert "estimated run time" in capsys.readouterr().err
+    with pytest.raises(CaseError, match="max_seconds"):
+        analyze(_case(case_dict, max_seconds=0.5))
+
+
+def test_monodromy_cap_error_against_four_times_the_steps():
+    """Source: the same monodromy with 4x the steps; tolerance 1e-6 on the reduced exponents
+    (measured 1.6e-7 with a cap of 2048 at Omega_bar = 0.005, where the rule asks 2e4)."""
+    model = model_from_case(flexbooster.default_case())
+    system = ba.beam_system(model, N=4)
+    Om = np.array([0.005 * system.omega_1])
+    assert ba.monodromy_steps(system, Om, model.gamma)[0] > 2048
+    capped = ba.monodromy_exponents(system, Om, model.gamma, max_steps=2048)
+    fine = ba.monodromy_exponents(system, Om, model.gamma, n_steps=8192)
+    err = np.abs(ba.reduced_exponents(capped) - ba.reduced_exponents(fine))
+    assert np.max(err) < 1e-6
+
+
+@pytest.mark.slow
+def test_low_omega_runs_bounded_with_a_warning(case_dict, alarm):
+    """A reported omega_min = 0.05 rad/s case (39 s in the monodromy alone): capped steps,
+    finite results and the warning that names the cap."""
+    case = _case(case_dict, thrust__omega_min=0.05, thrust__n_omega=3, thrust__omega_max=50.0,
+                 truncation__N=2, truncation__S=2, truncation__R=2)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        res = analyze(case, stability=False, figures=False)
+    codes = {w.code for w in res.warnings}
+    assert "beam-action-step-cap" in codes
+    json.dumps(res.to_dict(), allow_nan=False)
+
+
+@pytest.mark.slow
+def test_hill_continuant_does_not_overflow_at_large_a():
+    """Found by `make fuzz` (omega_min = 0.32 rad/s, gamma = 9e-5): the continuant of
+    Hill's determinant (pitch._hill) multiplied rows (1 - a/m^2) past 1e308 at a ~ 1e5, with
+    an overflow warning and a beta wrong by 0.4 (a review's "finite results after numpy
+    overflow warnings", pitch.py).  Source: the Floquet (Magnus) method, an independent
+    integration; tolerance 1e-10 (measured 1e-13), no RuntimeWarning."""
+    a = np.array([3e5, 6.5e5])
+    q = 0.5 * 9e-5 * a  # q = gamma a / 2 (memo 4.2-4)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        hill = mathieu.characteristic_exponent(a, q, method="hill")
+    floquet = mathieu.characteristic_exponent(a, q, method="floquet")
+    assert np.max(np.abs(hill - floquet)) < 1e-10
+
+
+def test_hill_continuant_zero_pivot_does_not_overflow():
+    """Found by the pitch-band search of a fuzz case (omega_psi = 66.18 rad/s, gamma = 0.95):
+    at this (a, q), on the edge of tongue 6, a pivot of the continuant is zero to round-off
+    and off^2 / pivot overflowed (the old floor was the smallest normal double).  Source: the
+    Floquet (Magnus) method; tolerance 1e-6 on beta (at a tongue edge beta ~ 6 - c sqrt(da):
+    a discriminant error of 1e-14 moves beta by ~1e-7; measured 1.5e-7), no RuntimeWarning."""
+    a, q = np.array([40.339860816349514]), np.array([19.169101528377368])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        hill = mathieu.characteristic_exponent(a, q, method="hill")
+    floquet = mathieu.characteristic_exponent(a, q, method="floquet")
+    assert np.max(np.abs(hill - floquet)) < 1e-6
+
+

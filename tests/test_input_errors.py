@@ -1,0 +1,176 @@
+"""Bad input: one line, exit 2, the field named once; loads beyond the structure are case errors.
+
+Source of the buckling load: 2 pi E h^2 / sqrt(3 (1 - nu^2)) (Timoshenko & Gere 1961,
+eq. 11-17).
+"""
+
+from __future__ import annotations
+
+import math
+import signal
+from pathlib import Path
+
+import pytest
+
+import flexbooster
+from conftest import dump_toml
+from flexbooster import cost
+from flexbooster.analysis import analyze
+from flexbooster.cli import main
+from flexbooster.errors import CaseError
+from flexbooster.model import model_from_case
+from test_case import BAD_INPUTS, _set
+
+nan, inf = math.nan, math.inf
+SRC = str(Path(flexbooster.__file__).parents[1])
+
+
+def run_cli(argv):
+    """Run the command in-process; return the exit code."""
+    with pytest.raises(SystemExit) as info:
+        main(argv)
+    return info.value.code
+
+
+@pytest.fixture
+def alarm():
+    """A call that hangs fails instead of blocking the suite: a hang guard (10 min, far above
+    any machine's load), not a measurement; the bounds themselves are the deterministic caps
+    tested below."""
+    def handler(signum, frame):
+        raise TimeoutError("the call did not return within 600 s")
+
+    previous = signal.signal(signal.SIGALRM, handler)
+    signal.alarm(600)
+    yield
+    signal.alarm(0)
+    signal.signal(signal.SIGALRM, previous)
+
+
+def _case(case_dict, **fields):
+    for dotted, value in fields.items():
+        _set(case_dict, dotted.replace("__", "."), value)
+    return flexbooster.load_case(case_dict)
+
+# --------------------------------------------------------------------------------------------
+@pytest.mark.parametrize(("F0", "word"), [(1e12, "flutter"), (1e10, "divergence")],
+                         ids=["F0=1e12-flutter", "F0=1e10-divergence"])
+def test_load_beyond_the_structure_is_a_case_error(case_dict, F0, word):
+    """Source: the eigenvalues of the steady system Lambda + B (complex at 1e12 N, negative
+    at 1e10 N for the default booster): a CaseError naming thrust.F0, not a LinAlgError."""
+    with pytest.raises(CaseError) as info:
+        analyze(_case(case_dict, thrust__F0=F0), figures=False)
+    assert info.value.field == "thrust.F0" and word in str(info.value)
+
+
+def test_shell_buckling_is_a_named_warning(case_dict):
+    """Source: 2 pi E h^2 / sqrt(3 (1 - nu^2)) (Timoshenko & Gere 11-17), exact formula."""
+    model = model_from_case(_case(case_dict))
+    f_cr = 2 * math.pi * model.E * model.h**2 / math.sqrt(3 * (1 - model.nu**2))
+    assert cost.physical_warnings(model) == []
+    above = model_from_case(_case(case_dict, thrust__F0=1.01 * f_cr))
+    assert [w.code for w in cost.physical_warnings(above)] == ["shell-buckling"]
+
+
+# --------------------------------------------------------------------------------------------
+# The bad-input CLI table (74 probes, each exit 2, one line, the field named once)
+# --------------------------------------------------------------------------------------------
+#: Extra probes of a review's list (the rest is tests/test_case.py's table).
+EXTRA_PROBES = [
+    ("booster.cylinder1.radius", 1e300, "booster"),  # once an OverflowError
+    ("booster.thickness", 1e-300, "thrust.F0"),  # an absurd Mathieu a
+    ("booster.rho", 1e-300, "booster"),  # omega_1 overflows
+    ("thrust.F0", 1e300, "thrust.F0"),
+    ("thrust.F0", 1e12, "thrust.F0"),
+    ("thrust.K", 1e300, "thrust.F0"),
+    ("thrust.n_omega", 10**400, "thrust.n_omega"),  # a 400-digit integer literal
+    ("thrust.gamma", nan, "thrust.gamma"),
+    ("thrust.omega_max", inf, "thrust.omega_max"),
+    ("booster.E", "1e999 Pa", "booster.E"),
+    ("max_seconds", -1.0, "max_seconds"),
+    ("max_seconds", 1e-9, "max_seconds"),
+]
+_PROBES = [(p, v, f) for p, v, f, _ in BAD_INPUTS] + EXTRA_PROBES
+
+
+@pytest.mark.parametrize(("path", "value", "field"), _PROBES,
+                         ids=[f"{p}={'<deleted>' if type(v) is object else repr(v)}"[:40]
+                              for p, v, _ in _PROBES])  # stable ids (pytest-xdist collects twice)
+def test_bad_case_probe_exit_2_one_line(case_dict, tmp_path, capsys, path, value, field):
+    _set(case_dict, path, value)
+    case = tmp_path / "bad.toml"
+    case.write_text(dump_toml(case_dict))
+    assert run_cli(["run", str(case), "-q", "--no-figures", "-o", str(tmp_path / "o")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and err.startswith("flexbooster: error: ")
+    assert err.count(field) >= 1
+    head = err.removeprefix("flexbooster: error: ").split(" = ")[0]
+    assert err.count(head + " ") + err.count(head + ":") <= 2  # the field once (plus rule)
+
+
+CLI_PROBES = [
+    (["run", "--format", "xml"], "--format"),
+    (["run", "--bogus"], "--bogus"),
+    (["run", "--max-seconds", "abc"], "--max-seconds"),
+    (["run", "--max-seconds", "nan"], "--max-seconds"),
+    (["stability", "--omega-min", "3000"], "--omega-min"),  # above the case's omega_max
+    (["modes", "--k-max", "999"], "--k-max"),
+    (["modes", "--f-max", "-3"], "--f-max"),
+    # the rest of the command-line probes ({tmp}: a folder with the files of _probe_files)
+    (["nosuch"], "nosuch"),
+    (["--bogus"], "--bogus"),
+    (["stability", "--omega-min"], "--omega-min"),  # an option without its argument
+    (["run", "--format"], "--format"),
+    (["run", "--jobs", "2"], "--jobs"),  # no such option: one line, exit 2
+    (["run", "--max-seconds", "inf"], "--max-seconds"),
+    (["run", "--max-seconds", "-1"], "--max-seconds"),
+    (["run", "{tmp}/nonexistent.toml"], "case file"),
+    (["run", "{tmp}/badsyntax.toml"], "case file"),
+    (["run", "{tmp}/binary.toml"], "case file"),
+    (["run", "{tmp}/empty.toml"], "booster ="),
+    (["stability", "--omega-max", "5 kg"], "--omega-max"),
+    (["stability", "--omega-min", "-5"], "--omega-min"),
+    (["simulate"], "--omega"),
+    (["simulate", "--omega", "-1", "--tau-max", "10"], "--omega"),
+    (["simulate", "--omega", "300"], "--t-max/--tau-max"),
+    (["simulate", "--omega", "300", "--t-max", "-1"], "--t-max"),
+    (["simulate", "--omega", "300", "--tau-max", "nan"], "--tau-max"),
+    (["simulate", "--omega", "300", "--tau-max", "10", "--n-out", "1"], "--n-out"),
+    (["modes", "--k-max", "abc"], "--k-max"),
+    (["init", "{tmp}/existing"], "PATH"),
+    (["run", "-o", "{tmp}/afile"], "--output"),
+]
+
+
+def _probe_files(folder: Path) -> None:
+    (folder / "badsyntax.toml").write_text('name = "x"\n[thrust\n')
+    (folder / "binary.toml").write_bytes(b"\xff\xfe\x00 not text")
+    (folder / "empty.toml").write_text("")
+    (folder / "existing").write_text("x")
+    (folder / "afile").write_text("x")
+
+
+@pytest.mark.parametrize(("argv", "field"), CLI_PROBES, ids=[" ".join(a) for a, _ in CLI_PROBES])
+def test_bad_option_probe_exit_2_one_line(capsys, tmp_path, argv, field):
+    _probe_files(tmp_path)
+    assert run_cli([a.replace("{tmp}", str(tmp_path)) for a in argv]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and err.startswith("flexbooster: error: ")
+    assert err.count(field) == 1, err
+
+
+def test_the_bad_input_table_has_the_issues_74_probes():
+    """Acceptance "74/74 one line, exit 2, field named once": the case-field probes
+    (test_case.BAD_INPUTS and EXTRA_PROBES), the command-line probes (CLI_PROBES) and the two
+    paths of test_directory_as_case_file_and_file_as_output, each a parametrized test."""
+    assert len(_PROBES) + len(CLI_PROBES) + 2 == 74
+
+
+def test_directory_as_case_file_and_file_as_output(tmp_path, capsys):
+    afile = tmp_path / "afile"
+    afile.write_text("x")
+    for argv in (["run", str(tmp_path)], ["run", "-o", str(afile / "sub")]):
+        assert run_cli(argv) == 2
+        assert len(capsys.readouterr().err.strip().splitlines()) == 1
+
+
