@@ -73,7 +73,7 @@ def main() -> None:
         return np.max(np.abs(alpha.imag), axis=1) > 1e-9
 
     flags, t_s, c_s = best_of(scan, 1)
-    seen = sum(bool(np.any(flags[(grid >= b.omega_lo) & (grid <= b.omega_hi)])) for b in bands)
+    seen = sum(bool(np.any(flags[(grid >= b.Omega_lo) & (grid <= b.Omega_hi)])) for b in bands)
     print(f"1. band search: {len(bands)} bands, {t_b:.3f} s wall ({c_b:.3f} s CPU)")
     print(f"   baseline scan of {args.scan} points: {t_s:.3f} s wall ({c_s:.3f} s CPU), "
           f"sees {seen} of the {len(bands)} bands; ratio scan / search = {t_s / t_b:.1f}")

@@ -2,14 +2,14 @@
 
 Times ``pitch_analysis`` and ``beam_action_analysis`` (exponents on the grid, bands, Hill
 check) of the default case and of the inch-pound Titan-class case (tests/data), in this tree
-and in commit ``--baseline`` (default the tag ``pre-simplify``), each in a child process with
-one BLAS thread, alternating tree and baseline ``--rounds`` times; prints the best CPU time
-of each (less sensitive than wall time to other processes on the machine) and the ratio
-baseline / this tree (> 1: this tree is faster).
+and in commit ``--baseline`` (default 66f93aa, the code before the sequential pipeline), each
+in a child process with one BLAS thread, alternating tree and baseline ``--rounds`` times;
+prints the best CPU time of each (less sensitive than wall time to other processes on the
+machine) and the ratio baseline / this tree (> 1: this tree is faster).
 
 Usage (repository root)::
 
-    python benchmarks/bench_beam_action.py [--rounds 3] [--baseline pre-simplify]
+    python benchmarks/bench_beam_action.py [--rounds 3] [--baseline 66f93aa]
 """
 
 from __future__ import annotations
@@ -58,7 +58,7 @@ def _run(src: Path, case: Path | None) -> dict:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--rounds", type=int, default=3)
-    parser.add_argument("--baseline", default="pre-simplify", help="commit to compare with")
+    parser.add_argument("--baseline", default="66f93aa", help="commit to compare with")
     args = parser.parse_args()
     best: dict = {}
     with tempfile.TemporaryDirectory() as tmp:

@@ -1,6 +1,6 @@
 """End-to-end speed of ``flexbooster run`` on the default case against a baseline commit.
 
-The baseline (default: the tag ``pre-simplify``, the code with worker processes) is checked out
+The baseline (default: commit 66f93aa, the code with worker processes) is checked out
 side by side with ``git worktree`` and run with the same Python and packages, alternating with
 the current code (``--repeats`` rounds, each running every code once, so that a slow spell of
 the machine falls on all alike), as a user runs it (OPENBLAS_NUM_THREADS unset, the summary
@@ -31,7 +31,7 @@ from baseline_checkout import baseline_checkout
 __all__ = ["BASELINE", "GOAL", "main"]
 
 #: The code before the pipeline became a plain sequence of stages.
-BASELINE = "pre-simplify"
+BASELINE = "66f93aa"
 #: The largest ratio of the wall time now over the baseline's that meets the goal.
 GOAL = 1.5
 REPEATS = 3

@@ -4,13 +4,15 @@ Work timed (best of ``--repeat``, ``time.perf_counter``), on the default case's 
 (k = 2..10, F0 = 2.8 MN, gamma = 0.05, Omega 5..2000 rad/s, damping 0.01) with ``--n-modes``
 modes per k (default 4):
 
-1. ``analyze_vehicle_regions(case, boundaries=False)`` (what ``analyze(..., figures=False)``
-   runs) against the bare ``flexbooster.dynamics.vehicle_regions`` with the same settings: the
-   overhead of the case layer (ratio close to 1 is the goal);
-2. ``analyze_vehicle_regions(case, boundaries=True)`` (what ``flexbooster run`` runs: a search
-   at the chart's gamma first, the boundary curves only when a region exists there) against
-   ``vehicle_regions(..., boundaries=True)`` called directly (the curves traced
-   unconditionally): the saving of the probe on a case where damping closes every region.
+1. ``analyze_vehicle_regions(case, k_min=2, k_max=10, boundaries=False)`` (the stage that
+   ``analyze(..., figures=False)`` runs, on the same harmonics) against the bare
+   ``flexbooster.dynamics.vehicle_regions`` with the same settings: the overhead of the case
+   layer (ratio close to 1 is the goal);
+2. ``analyze_vehicle_regions(case, k_min=2, k_max=10, boundaries=True)`` (the stage that
+   ``flexbooster run`` runs: a search at the chart's gamma first, the boundary curves only when
+   a region exists there) against ``vehicle_regions(..., boundaries=True)`` called directly
+   (the curves traced unconditionally): the saving of the probe on a case where damping closes
+   every region.
 
 Run:  PYTHONPATH=src python benchmarks/bench_vehicle_pipeline.py [--n-modes 4] [--repeat 2]
 """
@@ -47,11 +49,12 @@ def main() -> None:
     t = case.thrust
     kw = dict(F0=case.F0, gamma=t.gamma, omega_min=t.omega_min, omega_max=t.omega_max,
               k_min=2, k_max=10, n_modes=args.n_modes, damping_ratio=0.01)
-    t_stage = best(lambda: analyze_vehicle_regions(case, boundaries=False), args.repeat)
+    ks = dict(k_min=2, k_max=10)
+    t_stage = best(lambda: analyze_vehicle_regions(case, boundaries=False, **ks), args.repeat)
     t_bare = best(lambda: vehicle_regions(vehicle, **kw), args.repeat)
     print(f"1. stage without curves: {t_stage:.3f} s; bare vehicle_regions: {t_bare:.3f} s; "
           f"ratio {t_stage / t_bare:.3f}")
-    t_probe = best(lambda: analyze_vehicle_regions(case, boundaries=True), args.repeat)
+    t_probe = best(lambda: analyze_vehicle_regions(case, boundaries=True, **ks), args.repeat)
     t_curves = best(lambda: vehicle_regions(vehicle, boundaries=True,
                                             gamma_max=VEHICLE_CHART_GAMMA_MAX,
                                             n_gamma=VEHICLE_CHART_LEVELS, **kw), args.repeat)
