@@ -1,13 +1,13 @@
-"""Benchmark: the band search and the band charts of issue 12 on the default case.
+"""Benchmark: the band search and the band charts on the default case.
 
 Times, in the same run (best of ``--repeat``, wall and CPU):
   1. the pipeline's beam-action band search (``beam_action_bands`` over
      [max(omega_min, omega_1 / 4), omega_max] at the case's gamma) against the baseline, a
      uniform monodromy scan (``monodromy_exponents``, the beam-action module's own kernel) of
-     ``--scan`` points over the same range, which is what issue 12 did (20,000 points; it still
-     misses the regions narrower than its spacing: the count is printed);
-  2. the new beam-action chart (``charts.beam_action_chart``: boundaries from
-     ``floquet.region_boundaries``) against the old monodromy grid chart it replaces
+     ``--scan`` points over the same range, which the exact band search replaced (20,000
+     points; it misses the regions narrower than its spacing: the count is printed);
+  2. the beam-action chart (``charts.beam_action_chart``: boundaries from
+     ``floquet.region_boundaries``) against the monodromy grid chart it replaced
      (``stability_chart`` on 80 log-spaced Omega x 30 gamma in [0, 0.9], step_phase 0.25);
   3. the pitch bands and the pitch band chart;
   4. one ``analyze(default_case())``, and the same without figures.
@@ -94,7 +94,7 @@ def main() -> None:
     _, t_n, c_n = best_of(lambda: analyze(case, figures=False), args.repeat)
     print(f"4. analyze(default_case()): {t_a:.3f} s wall ({c_a:.3f} s CPU); without figures "
           f"{t_n:.3f} s wall ({c_n:.3f} s CPU)")
-    print(f"   before issue 12 (no band search, the old chart instead of the two new ones), "
+    print(f"   before the band search (none, the old chart instead of the two new ones), "
           f"estimated from the CPU times above: {c_a - c_b - c_new + c_old:.3f} s CPU")
 
 

@@ -1,6 +1,6 @@
 """Benchmark: band search and damped chart of the default case against the code before them.
 
-Issue 12 leftovers.  Times, in the same run (best of ``--repeat``, wall and CPU of a child
+Times, in the same run (best of ``--repeat``, wall and CPU of a child
 process), in this tree and in commit ``BASELINE`` (checked out side by side with
 ``git worktree`` into a temporary folder and run with the same Python, as
 ``benchmarks/bench_run.py`` does):

@@ -1,4 +1,4 @@
-"""Benchmark: the cost model of issue 18 against the measured run time, and the low-Omega cap.
+"""Benchmark: the cost model against the measured run time, and the low-Omega cap.
 
 Times, in the same run, for a few cases:
   * the estimate (``flexbooster.cost.estimate_cost``: no solver is run),

@@ -1,4 +1,4 @@
-"""Benchmark: flexbooster.dynamics.forced_response on the README's [vehicle] example (issue 34).
+"""Benchmark: flexbooster.dynamics.forced_response on the README's [vehicle] example.
 
 Work: README.md's vehicle (cylinder R 1.5 m x 6 m and a cone to R 1.0 m over 1 m, 16 mm walls,
 E = 70 GPa, nu = 0.3, rho = 2700 kg/m^3, free-free, automatic mesh), F0 = 2.8 MN (the default

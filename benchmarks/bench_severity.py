@@ -1,4 +1,4 @@
-"""Benchmark: the severity of every root of the default stability table (issue 13), vectorised,
+"""Benchmark: the severity of every root of the default stability table, vectorised,
 against the per-root ``responses.secular_rates`` baseline.
 
 Case: the default booster (M = N = 10 shell modes per cylinder, N = 10 beam modes, S = 10,

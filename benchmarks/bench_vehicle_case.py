@@ -1,4 +1,4 @@
-"""Benchmark: the vehicle stage of the pipeline (issue 14) against its baselines, same run.
+"""Benchmark: the vehicle stage of the pipeline against its baselines, same run.
 
 Work timed (best of REPEATS, ``time.perf_counter``):
 

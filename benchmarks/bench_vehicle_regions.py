@@ -1,4 +1,4 @@
-"""Benchmark: flexbooster.dynamics.vehicle_regions on the default case's vehicle (issue 15).
+"""Benchmark: flexbooster.dynamics.vehicle_regions on the default case's vehicle.
 
 The vehicle of ``flexbooster.model.vehicle_from_case(flexbooster.default_case())`` (the memo's
 two cylinders, memo bulkhead, shear-diaphragm ends, inertia relief), F0 = 2.8 MN, k = 1..20

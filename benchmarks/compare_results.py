@@ -1,4 +1,4 @@
-"""Compare two results.json files key by key (issue 11 acceptance: no number changed).
+"""Compare two results.json files key by key (no number changed beyond a tolerance).
 
 Usage::
 
