@@ -22,9 +22,9 @@ import numpy as np
 
 from ..checks import count, finite
 from .elements import einsum, element_matrices, reference_element, theta_weight
-from .geometry import Cylinder, Vehicle
+from .geometry import Cylinder, Vehicle, stiffener_matrix, wall_masses
 from .mesh import Mesh
-from .prestress import Prestate, load_path, membrane_prestate
+from .prestress import Prestate, load_path, membrane_prestate, pressure_resultants
 
 __all__ = [
     "DEFAULT_ORDER",
@@ -162,12 +162,30 @@ def mesh_vehicle(
     ends = (end_nodes[0][0], end_nodes[-1][1]) + tuple(
         (end_nodes[i][1], end_nodes[i + 1][0]) for i in range(nseg - 1))
     assert ref.n_dof == dofs[0].shape[1]
-    return Mesh(order=order, segment=cat["segment"].astype(int), s1=cat["s1"], x1=cat["x1"],
+    seg_of = cat["segment"].astype(int)
+    return Mesh(**_wall_extras(segs, seg_of), order=order, segment=seg_of, s1=cat["s1"],
+                x1=cat["x1"],
                 r1=cat["r1"], length=cat["length"], sin_phi=cat["sin"], cos_phi=cat["cos"],
                 phi=np.arctan2(cat["sin"], cat["cos"]), thickness=cat["h"], E=cat["E"],
                 nu=cat["nu"], rho=cat["rho"], elements_per_segment=counts,
                 dofs=np.concatenate(dofs), frame=np.concatenate(frames), n_full=offset,
                 end_nodes=ends)
+
+
+def _wall_extras(segs, seg_of: np.ndarray) -> dict:
+    """Mesh fields of the optional wall data (areal mass, pressure, stiffening), only where a
+    segment has them (the bare shell's arrays stay None)."""
+    out = {}
+    areal = np.array([sum(wall_masses(seg)) for seg in segs])
+    if any(seg.nonstructural_mass or seg.rings or seg.stringers for seg in segs):
+        out["areal_mass"] = areal[seg_of]
+    if any(seg.pressure for seg in segs):
+        out["pressure"] = np.array([seg.pressure for seg in segs])[seg_of]
+    stiff = [stiffener_matrix(seg) for seg in segs]
+    if any(m is not None for m in stiff):
+        out["stiffening"] = np.array([np.zeros((6, 6)) if m is None else m
+                                      for m in stiff])[seg_of]
+    return out
 
 
 @dataclass(frozen=True)
@@ -318,7 +336,9 @@ def thrust_prestate(vehicle: Vehicle, mesh: Mesh, F0: float, *,
 
 def element_set(vehicle: Vehicle, mesh: Mesh, k: int, *, prestate: Prestate | None = None):
     """Element matrices M (kg), K_e, K_g (N/m) of harmonic k in the node frames (T^T K T), each
-    (e, n_dof, n_dof); K_g None without ``prestate`` (rings: :func:`ring_matrix`).
+    (e, n_dof, n_dof); K_g None without ``prestate`` (rings: :func:`ring_matrix`). K_e holds
+    the geometric stiffness of the internal pressure (:func:`.prestress.pressure_resultants`),
+    which does not scale with the thrust.
 
     Parameters
     ----------
@@ -338,7 +358,9 @@ def element_set(vehicle: Vehicle, mesh: Mesh, k: int, *, prestate: Prestate | No
     m, ke, kg = element_matrices(ref, k, r1=mesh.r1, length=mesh.length,
                                  sin_phi=mesh.sin_phi, cos_phi=mesh.cos_phi,
                                  thickness=mesh.thickness, E=mesh.E, nu=mesh.nu, rho=mesh.rho,
-                                 theory=vehicle.theory, ns0=ns0, nt0=nt0)
+                                 theory=vehicle.theory, ns0=ns0, nt0=nt0,
+                                 areal_mass=mesh.areal_mass, stiffening=mesh.stiffening,
+                                 fixed_prestress=pressure_resultants(mesh))
     T = node_transform(mesh)
     out = []
     for mat in (m, ke, kg):

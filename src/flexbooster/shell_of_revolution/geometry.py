@@ -30,6 +30,7 @@ __all__ = [
     "LumpedMass",
     "ShellWarning",
     "Stiffeners",
+    "stiffener_matrix",
     "wall_masses",
     "Vehicle",
     "VehicleTank",
@@ -242,6 +243,35 @@ def wall_masses(seg: Cylinder | Cone) -> tuple[float, float, float]:
     stiff = sum(seg.rho * st.area / st.spacing for st in (seg.rings, seg.stringers)
                 if st is not None)
     return seg.rho * seg.thickness, seg.nonstructural_mass, float(stiff)
+
+
+def stiffener_matrix(seg: Cylinder | Cone) -> np.ndarray | None:
+    """Smeared-stiffener terms of the constitutive matrix diag(A, D), shape (6, 6), in the order
+    (eps_s, eps_theta, gamma, kappa_s, kappa_theta, tau); None without stiffeners.
+
+    A family of spacing d, area A_st, inertia I_st and eccentricity e (centroid strain
+    eps + e kappa) adds E A_st / d to the extensional, E A_st e / d to the coupling and
+    E (I_st + A_st e^2) / d to the bending stiffness of its direction: stringers along the
+    meridian (s), rings around it (theta); their torsional stiffness is neglected
+    (Baruch and Singer 1963, eq. 1-3; Brush and Almroth 1975, sec. 5.6).
+
+    Parameters
+    ----------
+    seg : Cylinder or Cone
+        The segment (its E and stiffeners).
+    """
+    if seg.rings is None and seg.stringers is None:
+        return None
+    out = np.zeros((6, 6))
+    for st, i in ((seg.stringers, 0), (seg.rings, 1)):
+        if st is None:
+            continue
+        ea = seg.E * st.area / st.spacing
+        out[i, i] += ea
+        out[i, i + 3] += ea * st.eccentricity
+        out[i + 3, i] += ea * st.eccentricity
+        out[i + 3, i + 3] += seg.E * (st.inertia + st.area * st.eccentricity**2) / st.spacing
+    return out
 
 
 @dataclass(frozen=True)

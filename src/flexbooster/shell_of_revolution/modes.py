@@ -32,7 +32,7 @@ from .assembly import (
 )
 from .elements import element_energies, element_fields, reference_element
 from .geometry import Vehicle
-from .prestress import Prestate, load_path
+from .prestress import Prestate, load_path, pressure_resultants
 
 __all__ = [
     "MODE_TYPES",
@@ -371,11 +371,16 @@ def _rayleigh(h: _Harmonic, vecs: np.ndarray, *, loaded: bool) -> np.ndarray:
     mesh = h.mesh
     fields = element_fields(reference_element(mesh.order), h.k, r1=mesh.r1,
                             length=mesh.length, sin_phi=mesh.sin_phi, cos_phi=mesh.cos_phi,
-                            thickness=mesh.thickness, E=mesh.E, nu=mesh.nu, theory=h.theory)
+                            thickness=mesh.thickness, E=mesh.E, nu=mesh.nu, theory=h.theory,
+                            stiffening=mesh.stiffening)
     pre = h.prestate if loaded else None
-    energy = element_energies(fields, _local(mesh, h.dmap, vecs),
-                              ns0=None if pre is None else pre.meridional,
-                              nt0=None if pre is None else pre.hoop)
+    resultants = [] if pre is None else [(pre.meridional, pre.hoop)]
+    fixed = pressure_resultants(mesh)
+    if fixed is not None:
+        resultants.append(fixed)
+    ns0 = sum(n for n, _ in resultants) if resultants else None
+    nt0 = sum(n for _, n in resultants) if resultants else None
+    energy = element_energies(fields, _local(mesh, h.dmap, vecs), ns0=ns0, nt0=nt0)
     if pre is not None and pre.ring_node.size:
         ring = ring_matrix(h.theory, h.dmap, pre, h.k)
         energy = energy + np.einsum("am,ab,bm->m", vecs, ring, vecs)
@@ -402,7 +407,7 @@ def _labels(mesh: Mesh, h: _Harmonic, vecs: np.ndarray, k: int, n_pts_per_el: in
     gs = _sample(mesh, h.dmap, vecs, ref.xi)  # (m, 3, e, g)
     r_g = mesh.r1[:, None] + 0.5 * (1 + ref.xi)[None, :] * mesh.length[:, None] * \
         mesh.sin_phi[:, None]
-    wgt = (mesh.rho * mesh.thickness * 0.5 * mesh.length)[:, None] * ref.weight[None] * r_g
+    wgt = (mesh.wall_mass * 0.5 * mesh.length)[:, None] * ref.weight[None] * r_g
     kin = np.einsum("mceg,eg->mc", gs**2, wgt)
     share = kin / kin.sum(axis=1, keepdims=True)
     # strain energy per segment

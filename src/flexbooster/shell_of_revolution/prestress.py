@@ -27,7 +27,8 @@ from .mesh import Mesh
 if TYPE_CHECKING:
     from .geometry import Vehicle
 
-__all__ = ["AXIAL_SUPPORTS", "LOAD_PATHS", "Prestate", "load_path", "membrane_prestate"]
+__all__ = ["AXIAL_SUPPORTS", "LOAD_PATHS", "Prestate", "load_path", "membrane_prestate",
+           "pressure_resultants"]
 
 #: End conditions that restrain the axial motion of an edge (u = 0).
 AXIAL_SUPPORTS = ("hinged", "clamped")
@@ -129,7 +130,7 @@ def membrane_prestate(mesh: Mesh, path: str, *, aft_force: float,
         return (2.0 * np.pi * r * f * half) @ ref.weight
 
     if path == "inertia relief":  # a = P / m: the body load -rho h a (d'Alembert)
-        rho_h = mesh.rho * mesh.thickness
+        rho_h = mesh.wall_mass
         accel = (aft_force + integral(px).sum()) / integral(rho_h[:, None] + zeros).sum()
         px = px - rho_h[:, None] * accel
     line = 2.0 * np.pi * r * px  # axial load per unit meridian length (N/m)
@@ -169,3 +170,23 @@ def membrane_prestate(mesh: Mesh, path: str, *, aft_force: float,
     return Prestate(load_path=path, force=force, meridional=meridional, hoop=hoop,
                     ring_node=np.array(nodes, dtype=int), ring_frame=np.array(frames),
                     ring_radius=np.array(radii), ring_force=np.array(hoops))
+
+
+def pressure_resultants(mesh: Mesh) -> tuple[np.ndarray, np.ndarray] | None:
+    """Membrane resultants (N_s, N_theta) at the Gauss points (N/m) of each element's internal
+    gauge pressure p in a closed tank: N_theta = p r / cos(phi), N_s = p r / (2 cos(phi))
+    (Fluegge 1973, sec. 2.2; 0 on a flat plate, which carries its pressure in bending); None
+    without pressure.
+
+    Parameters
+    ----------
+    mesh : Mesh
+        Mesh of the vehicle (its ``pressure``).
+    """
+    if mesh.pressure is None:
+        return None
+    ref = reference_element(mesh.order)
+    r = mesh.r1[:, None] + (0.5 * (1.0 + ref.xi))[None, :] * (mesh.length * mesh.sin_phi)[:, None]
+    flat = np.abs(mesh.cos_phi) < 1e-12
+    hoop = np.where(flat, 0.0, mesh.pressure / np.where(flat, 1.0, mesh.cos_phi))[:, None] * r
+    return 0.5 * hoop, hoop
