@@ -37,6 +37,8 @@ __all__ = [
     "rigid_body_fields",
     "element_set",
     "ring_matrix",
+    "ring_rows",
+    "lumped_mass_matrix",
     "node_transform",
     "thrust_prestate",
     "HarmonicMatrices",
@@ -400,6 +402,78 @@ def ring_matrix(theory: str, dmap: DofMap, prestate: Prestate, k: int) -> np.nda
     return out
 
 
+def ring_rows(mesh: Mesh, dmap: DofMap, station: float) -> tuple[np.ndarray, float]:
+    """Rows (3, n) over the reduced DOFs giving the amplitudes (u_x, u_r, v) of the wall's ring
+    at an axial station (m from the aft edge), from the shape functions of the (first) non-flat
+    element that contains it, and the ring's radius (m).
+
+    Parameters
+    ----------
+    mesh : Mesh
+        Mesh of the vehicle.
+    dmap : DofMap
+        Constraint map of the harmonic.
+    station : float
+        Axial station x (m), within the vehicle.
+    """
+    x2 = mesh.x1 + mesh.length * mesh.cos_phi
+    tol = 1e-9 * x2.max()
+    at = np.flatnonzero((mesh.x1 - tol <= station) & (station <= x2 + tol) & (mesh.cos_phi > 0))
+    if at.size == 0:
+        raise ValueError(f"station = {station!r}: not on the vehicle's wall")
+    e = int(at[0])
+    ref = reference_element(mesh.order)
+    xi = np.clip(2.0 * (station - mesh.x1[e]) / (x2[e] - mesh.x1[e]) - 1.0, -1.0, 1.0)
+    nuv, nw = (a[0] for a in ref.evaluate(np.array([xi])))
+    nw = nw.copy()
+    nw[ref.slope] *= 0.5 * mesh.length[e]  # slope DOFs are dw/ds
+    u, v, w = (np.zeros(ref.n_dof) for _ in range(3))
+    u[ref.iu], v[ref.iv], w[ref.iw] = nuv, nuv, nw
+    c, sn = mesh.cos_phi[e], mesh.sin_phi[e]
+    local = np.array([u * c - w * sn, u * sn + w * c, v])  # (u_x, u_r, v) in the element frame
+    rows = local @ node_transform(mesh)[e]
+    idx, cof = dmap.index[mesh.dofs[e]], dmap.coef[mesh.dofs[e]]
+    keep = idx >= 0
+    out = np.zeros((3, dmap.n))
+    for i in range(3):
+        np.add.at(out[i], idx[keep], (rows[i] * cof)[keep])
+    return out, float(mesh.r1[e] + 0.5 * (1.0 + xi) * mesh.length[e] * sn)
+
+
+def lumped_mass_matrix(vehicle: Vehicle, mesh: Mesh, dmap: DofMap, k: int) -> np.ndarray | None:
+    """Mass matrix (kg, reduced (n, n)) of the vehicle's rigid lumped masses for harmonic k, or
+    None (no masses, or k >= 2). Each mass m, attached to the ring at its station with its
+    centre of mass ``offset`` forward, adds m u_x^2 for k = 0 (axial translation) and
+    m (D + e psi)^2 + I psi^2 for k = 1, D = (u_r - v) / 2 the ring's lateral translation and
+    psi = -u_x / r its tilt (the amplitudes of the rigid-body fields of
+    :func:`rigid_body_fields`; theta weights as the shell's, so that a rigid motion's
+    q^T M q is its kinetic energy times 2).
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        The vehicle (its ``masses``).
+    mesh : Mesh
+        Mesh of the vehicle.
+    dmap : DofMap
+        Constraint map of harmonic k.
+    k : int
+        Circumferential wave number.
+    """
+    if not vehicle.masses or k >= 2:
+        return None
+    out = np.zeros((dmap.n, dmap.n))
+    for lm in vehicle.masses:
+        (ux, ur, v), r = ring_rows(mesh, dmap, lm.station)
+        if k == 0:
+            out += lm.mass * np.outer(ux, ux)
+            continue
+        psi = -ux / r
+        t = 0.5 * (ur - v) + lm.offset * psi
+        out += lm.mass * np.outer(t, t) + lm.transverse_inertia * np.outer(psi, psi)
+    return out
+
+
 def assemble(mesh: Mesh, dmap: DofMap, element: np.ndarray) -> np.ndarray:
     """Scatter element matrices (node frames) into the dense reduced matrix (n, n).
 
@@ -450,7 +524,8 @@ class HarmonicMatrices:
 
 def harmonic_matrices(vehicle: Vehicle, mesh: Mesh, k: int, *,
                       prestate: Prestate | None = None) -> HarmonicMatrices:
-    """M, K_e and K_g (elements and rings) of harmonic k on a mesh.
+    """M (with the lumped masses, :func:`lumped_mass_matrix`), K_e and K_g (elements and rings)
+    of harmonic k on a mesh.
 
     Parameters
     ----------
@@ -469,9 +544,12 @@ def harmonic_matrices(vehicle: Vehicle, mesh: Mesh, k: int, *,
     geo = None
     if prestate is not None:
         geo = assemble(mesh, dmap, kg) + ring_matrix(vehicle.theory, dmap, prestate, k)
-    return HarmonicMatrices(k=k, dmap=dmap, mass=assemble(mesh, dmap, m),
-                            stiffness=assemble(mesh, dmap, ke), geometric=geo,
-                            element_stiffness=ke)
+    mass = assemble(mesh, dmap, m)
+    lumped = lumped_mass_matrix(vehicle, mesh, dmap, k)
+    if lumped is not None:
+        mass = mass + lumped
+    return HarmonicMatrices(k=k, dmap=dmap, mass=mass, stiffness=assemble(mesh, dmap, ke),
+                            geometric=geo, element_stiffness=ke)
 
 
 def system_matrices(
