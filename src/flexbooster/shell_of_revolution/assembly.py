@@ -24,7 +24,14 @@ from ..checks import count, finite
 from .elements import einsum, element_matrices, reference_element, theta_weight
 from .geometry import Cylinder, Vehicle, stiffener_matrix, wall_masses
 from .mesh import Mesh
-from .prestress import Prestate, load_path, membrane_prestate, pressure_resultants
+from .prestress import (
+    Prestate,
+    attached_loads,
+    load_path,
+    membrane_prestate,
+    pressure_resultants,
+    total_mass,
+)
 
 __all__ = [
     "DEFAULT_ORDER",
@@ -314,7 +321,9 @@ def node_transform(mesh: Mesh) -> np.ndarray:
 
 def thrust_prestate(vehicle: Vehicle, mesh: Mesh, F0: float, *,
                     supported_forward_end: bool | None = None) -> Prestate:
-    """The membrane prestate of the steady thrust F0 at the aft edge (:mod:`.prestress`).
+    """The membrane prestate of the steady thrust F0 at the aft edge (:mod:`.prestress`); under
+    inertia relief with lumped masses or tanks, their loads at the acceleration
+    a = F0 / m_total (:func:`.prestress.attached_loads`: the liquid's hydrostatic head).
 
     Parameters
     ----------
@@ -333,7 +342,11 @@ def thrust_prestate(vehicle: Vehicle, mesh: Mesh, F0: float, *,
     if F0 != 0.0 and np.any(np.abs(mesh.cos_phi) < 1e-12):
         raise ValueError(f"prestress_F0 = {F0!r}: a flat annular plate cannot carry the axial "
                          "force as a membrane (N_s = -F / (2 pi r cos(phi)))")
-    return membrane_prestate(mesh, path, aft_force=F0)
+    if path != "inertia relief" or not (vehicle.masses or vehicle.tanks):
+        return membrane_prestate(mesh, path, aft_force=F0)
+    loads = attached_loads(vehicle, mesh, acceleration=F0 / total_mass(vehicle, mesh))
+    return membrane_prestate(mesh, path, aft_force=F0, axial=loads.axial, radial=loads.radial,
+                             point_forces=loads.point_forces)
 
 
 def element_set(vehicle: Vehicle, mesh: Mesh, k: int, *, prestate: Prestate | None = None):

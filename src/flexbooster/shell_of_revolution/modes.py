@@ -33,6 +33,7 @@ from .assembly import (
 from .elements import element_energies, element_fields, reference_element
 from .geometry import Vehicle
 from .prestress import Prestate, load_path, pressure_resultants
+from .wetted_wall import tank_added_mass
 
 __all__ = [
     "MODE_TYPES",
@@ -287,10 +288,16 @@ def _harmonic(vehicle: Vehicle, mesh: Mesh, k: int, *, F0: float, supported: boo
     hm = harmonic_matrices(vehicle, mesh, k, prestate=pre)
     M, K, G, dmap, ke = hm.mass, hm.stiffness, hm.geometric, hm.dmap, hm.element_stiffness
     R = _rigid_subspace(mesh, dmap, k)
-    Q = None
+    liquid = tank_added_mass(vehicle, mesh, k)
+    Z = None
+    if liquid is not None:
+        M = M + liquid.matrix
+        Z = liquid.basis  # the volume-keeping motions of full closed tanks (k = 0), or None
+    Q = Z
     if R.shape[1]:
-        q_full, _ = np.linalg.qr(M @ R, mode="complete")
-        Q = q_full[:, R.shape[1]:]  # Q^T M R = 0: the M-orthogonal complement (Bathe 10.2)
+        q_full, _ = np.linalg.qr(M @ R if Z is None else Z.T @ M @ R, mode="complete")
+        # Q^T M R = 0: the M-orthogonal complement (Bathe 10.2), within the admissible motions
+        Q = q_full[:, R.shape[1]:] if Z is None else Z @ q_full[:, R.shape[1]:]
     return _Harmonic(k=k, mesh=mesh, theory=vehicle.theory, prestate=pre, M=M, K=K, G=G, Q=Q,
                      R=R, dmap=dmap, elem_k=ke)
 
