@@ -4,9 +4,9 @@ Evidence: a free-free slender tube with a lumped mass at each end.
 * k = 0 against the exact rod with end masses: (mu_1 mu_2 z^2 - 1) sin z = (mu_1 + mu_2) z
   cos z, z = omega L / c, mu_i = M_i / (rho A L) (separation of variables; Poisson's ratio 0,
   so that the shell's axial motion is exactly the rod's), brentq; 1 %.
-* k = 1 against an independent Timoshenko beam (finite elements written here: linear w and
-  theta, one-point shear integration, rotary inertia, Cowper's thin-tube shear coefficient
-  2 (1 + nu) / (4 + 3 nu)) with the end masses, their offsets and transverse inertias; 1 %.
+* k = 1 against an independent Timoshenko beam (tests/reference/timoshenko.py: linear w and
+  theta, one-point shear integration, rotary inertia, Cowper's thin-tube shear coefficient)
+  with the end masses, their offsets and transverse inertias; 1 %.
 """
 
 from __future__ import annotations
@@ -15,7 +15,6 @@ import math
 
 import numpy as np
 import pytest
-import scipy.linalg as sla
 from scipy.optimize import brentq
 
 from flexbooster.shell_of_revolution import Cylinder, LumpedMass, Vehicle, vehicle_modes
@@ -25,6 +24,7 @@ from flexbooster.shell_of_revolution.assembly import (
     mesh_vehicle,
     rigid_body_fields,
 )
+from reference.timoshenko import tube_bending_frequencies
 
 E, RHO = 70e9, 2700.0
 R, L, H = 0.5, 20.0, 0.005
@@ -58,44 +58,15 @@ def test_axial_k0_matches_rod_with_end_masses():
     np.testing.assert_allclose(axial, expected, rtol=1e-2)
 
 
-def _timoshenko(nu: float, end_masses, n_el: int = 800, count: int = 3) -> np.ndarray:
-    """Elastic omega (rad/s) of the free-free thin tube as a Timoshenko beam with rigid end
-    bodies (m, offset e, I): each adds m (w + e theta)^2 + I theta^2 to the kinetic form."""
-    ei = E * math.pi * R**3 * H
-    area = 2.0 * math.pi * R * H
-    kga = 2.0 * (1.0 + nu) / (4.0 + 3.0 * nu) * E / (2.0 * (1.0 + nu)) * area
-    rho_a, rho_i = RHO * area, RHO * math.pi * R**3 * H
-    le = L / n_el
-    n = 2 * (n_el + 1)
-    K, M = np.zeros((n, n)), np.zeros((n, n))
-    lin = np.array([[1.0, 0.5], [0.5, 1.0]]) * le / 3.0  # consistent linear mass
-    for e in range(n_el):
-        w = [2 * e, 2 * e + 2]
-        t = [2 * e + 1, 2 * e + 3]
-        K[np.ix_(t, t)] += ei / le * np.array([[1.0, -1.0], [-1.0, 1.0]])
-        g = np.array([-1.0 / le, 0.0, 1.0 / le, 0.0]), np.array([0.0, 0.5, 0.0, 0.5])
-        shear = g[0] - g[1]  # gamma = w' - theta at the midpoint
-        d = [2 * e, 2 * e + 1, 2 * e + 2, 2 * e + 3]
-        K[np.ix_(d, d)] += kga * le * np.outer(shear, shear)
-        M[np.ix_(w, w)] += rho_a * lin
-        M[np.ix_(t, t)] += rho_i * lin
-    for node, (m, off, inertia) in end_masses:
-        row = np.zeros(n)
-        row[2 * node], row[2 * node + 1] = 1.0, off
-        rot = np.zeros(n)
-        rot[2 * node + 1] = 1.0
-        M += m * np.outer(row, row) + inertia * np.outer(rot, rot)
-    vals = sla.eigh(K, M, subset_by_index=(0, count + 1), eigvals_only=True)
-    return np.sqrt(vals[2:2 + count])  # two rigid-body modes first
-
-
 def test_bending_k1_matches_timoshenko_beam_with_end_masses():
     """k = 1 elastic frequencies 1-3 of the tube (nu = 0.3) with an engine-like aft mass
     (400 kg, centre 0.6 m aft, 90 kg m^2) and a payload-like forward mass (150 kg, 0.8 m
     forward, 40 kg m^2) equal the independent Timoshenko beam model; 1 %."""
     masses = (LumpedMass(0.0, 400.0, transverse_inertia=90.0, offset=-0.6),
               LumpedMass(L, 150.0, transverse_inertia=40.0, offset=0.8))
-    expected = _timoshenko(0.3, [(0, (400.0, -0.6, 90.0)), (800, (150.0, 0.8, 40.0))])
+    expected = tube_bending_frequencies(radius=R, length=L, thickness=H, E=E, nu=0.3, rho=RHO,
+                                        bodies=[(0, (400.0, -0.6, 90.0)),
+                                                (800, (150.0, 0.8, 40.0))])
     modes = vehicle_modes(_tube(0.3, masses), k_min=1, k_max=1, n_modes=3)
     np.testing.assert_allclose(modes.omega[:3], expected, rtol=1e-2)
 
