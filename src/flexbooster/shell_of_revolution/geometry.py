@@ -16,7 +16,7 @@ from dataclasses import KW_ONLY, dataclass, field
 
 import numpy as np
 
-from ..checks import choice, finite, nonnegative, positive
+from ..checks import FieldValueError, choice, finite, nonnegative, positive
 from .liquid_mesh import Tank
 
 __all__ = [
@@ -478,13 +478,13 @@ class Vehicle:
         length = self.total_length
         for i, m in enumerate(masses):
             if not isinstance(m, LumpedMass):
-                raise ValueError(f"masses[{i}] = {m!r}: must be a LumpedMass")
+                raise FieldValueError(f"masses[{i}]", m, "must be a LumpedMass")
             if m.station > length * (1.0 + STATION_RTOL):
-                raise ValueError(f"masses[{i}].station = {m.station!r}: must be within the "
-                                 f"vehicle, 0 .. {length:g} m")
+                raise FieldValueError(f"masses[{i}].station", m.station,
+                                      f"must be within the vehicle, 0 .. {length:g} m")
         for i, t in enumerate(tanks):
             if not isinstance(t, VehicleTank):
-                raise ValueError(f"tanks[{i}] = {t!r}: must be a VehicleTank")
+                raise FieldValueError(f"tanks[{i}]", t, "must be a VehicleTank")
             tank_liquid(self, t, prefix=f"tanks[{i}].")
         object.__setattr__(self, "masses", masses)
         object.__setattr__(self, "tanks", tanks)
@@ -537,15 +537,16 @@ def tank_wall(vehicle: Vehicle, aft: float, fwd: float, *,
     i_a, i_f = (int(np.argmin(np.abs(bounds - v))) for v in (aft, fwd))
     for name, v, i in (("aft", aft, i_a), ("fwd", fwd, i_f)):
         if not (np.isfinite(v) and abs(bounds[i] - v) <= tol):
-            raise ValueError(f"{prefix}{name} = {v!r}: must be a segment boundary or a vehicle "
-                             f"end ({', '.join(f'{b:g}' for b in bounds)} m)")
+            raise FieldValueError(f"{prefix}{name}", v, "must be a segment boundary or a "
+                                  f"vehicle end ({', '.join(f'{b:g}' for b in bounds)} m)")
     if i_f <= i_a:
-        raise ValueError(f"{prefix}fwd = {fwd!r}: must be forward of aft = {aft!r}")
+        raise FieldValueError(f"{prefix}fwd", fwd, f"must be forward of aft = {aft!r}")
     segs = vehicle.segments[i_a:i_f]
     for a, b in zip(segs[:-1], segs[1:], strict=True):
         if a.length == 0.0 or b.length == 0.0 or a.radius_fwd != b.radius_aft:
-            raise ValueError(f"{prefix}fwd = {fwd!r}: the tank's wall from aft = {aft!r} must "
-                             "be one continuous meridian (no flat plate, no radius step)")
+            raise FieldValueError(f"{prefix}fwd", fwd, f"the tank's wall from aft = {aft!r} "
+                                  "must be one continuous meridian (no flat plate, no radius "
+                                  "step)")
     radii = [s.radius_aft for s in segs] + [segs[-1].radius_fwd]
     return tuple(float(b) for b in bounds[i_a:i_f + 1]), tuple(radii)
 
@@ -567,5 +568,5 @@ def tank_liquid(vehicle: Vehicle, tank: VehicleTank, *, prefix: str = "") -> Tan
     stations, radii = tank_wall(vehicle, tank.aft, tank.fwd, prefix=prefix)
     try:
         return Tank(stations=stations, radii=radii, fill=tank.fill, density=tank.density)
-    except ValueError as exc:  # the depth rule of the liquid mesh, with the field's full name
-        raise ValueError(f"{prefix}{exc}") from exc
+    except ValueError as exc:  # the depth rule of the liquid mesh, under the field's full name
+        raise FieldValueError(f"{prefix}fill", tank.fill, str(exc)) from exc
