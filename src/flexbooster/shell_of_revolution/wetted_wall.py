@@ -223,11 +223,16 @@ def _added(vehicle: Vehicle, mesh: Mesh, k: int, tanks: tuple, lms: tuple, n: in
     cons = []
     for t, lm in zip(tanks, lms, strict=True):
         ww = wetted_wall(vehicle, mesh, t, k, breaks=lm.x_breaks)
-        am = added_mass(lm, k, ww.wall, ww.displacement, aft_end=ww.aft_end,
-                        fwd_end=ww.fwd_end)
-        Ma += am.matrix
+        # only the DOFs that move the wetted wall or the tank's ends (the rest add zeros)
+        cols = np.flatnonzero(np.any(ww.displacement != 0.0, axis=0) | (ww.aft_end != 0.0)
+                              | (ww.fwd_end != 0.0))
+        am = added_mass(lm, k, ww.wall, ww.displacement[:, cols], aft_end=ww.aft_end[cols],
+                        fwd_end=ww.fwd_end[cols])
+        Ma[np.ix_(cols, cols)] += am.matrix
         if am.constraint is not None:
-            cons.append(am.constraint)
+            full = np.zeros(n)
+            full[cols] = am.constraint
+            cons.append(full)
     if not cons:
         return TankMass(Ma, None)
     C = np.array(cons)
