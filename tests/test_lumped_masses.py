@@ -95,3 +95,25 @@ def test_rigid_k1_mass_centre(station):
     red[dmap.index[keep]] = (full * dmap.coef)[keep]
     total = veh.mass() + 250.0
     assert red @ hm.mass @ red == pytest.approx(total, rel=1e-9)
+
+
+def test_bending_rigid_pitch_sees_the_vehicle_mass_properties():
+    """The k = 1 system of dynamics.bending (what the regions and the gimbal loop use) carries
+    the lumped masses, the non-structural mass and the stiffeners: its M-normalised rigid
+    rotation psi gives I_cm = 1 / psi^2 and x_cm = -y_aft / psi equal to mass_properties (the
+    quadrature of tests/test_vehicle_mass.py, itself checked to 1e-10); rel. 1e-8."""
+    from flexbooster.dynamics import bending_system
+    from flexbooster.shell_of_revolution import Stiffeners, mass_properties
+
+    rings = Stiffeners(spacing=0.5, area=3e-4, inertia=4e-8, eccentricity=0.02)
+    veh = Vehicle([Cylinder(R, 8.0, H, E=E, nu=0.3, rho=RHO, nonstructural_mass=4.0,
+                            rings=rings),
+                   Cylinder(R, 12.0, H, E=E, nu=0.3, rho=RHO)],
+                  masses=(LumpedMass(0.0, 400.0, transverse_inertia=90.0, offset=-0.6),
+                          LumpedMass(13.0, 80.0, transverse_inertia=5.0),
+                          LumpedMass(L, 150.0, transverse_inertia=40.0, offset=0.8)))
+    system = bending_system(veh, F0=1.0e3, n_modes=4)
+    psi, y = system.aft_rotation[0], system.aft_lateral[0]
+    props = mass_properties(veh)
+    assert 1.0 / psi**2 == pytest.approx(props.I_cm_kg_m2, rel=1e-8)
+    assert -y / psi == pytest.approx(props.cm_m, rel=1e-8)

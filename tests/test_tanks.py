@@ -127,3 +127,26 @@ def test_prestate_hydrostatic_head_and_axial_load():
     force = F0 - a * (2000.0 + m_liquid + mu * x)
     np.testing.assert_allclose(pre.force, force, rtol=1e-9)
     assert pre.force[-1, -1] == pytest.approx(a * (500.0 + mu * (length - x[-1, -1])), rel=1e-9)
+
+
+def test_full_tank_k0_volume_constraint_with_rigid_motion():
+    """k = 0 of a shear-diaphragm cylinder full of water (u free at the ends: the axial
+    translation is rigid, the tank's end walls move with the edges): vehicle_modes, which seeks
+    the modes among the volume-keeping motions M-orthogonal to the rigid ones, gives the
+    nonzero eigenvalues of the constrained wet system of wet_system_matrices (the null space of
+    the volume constraint, no deflation; the liquid-level tests check it against the series):
+    the lowest 4 elastic frequencies, rel. 1e-8; one rigid mode, the axial translation (v = 0
+    at the diaphragms: no rigid torsion)."""
+    import scipy.linalg as sla
+
+    from flexbooster.shell_of_revolution.geometry import tank_liquid
+    from flexbooster.shell_of_revolution.wetted_wall import wet_system_matrices
+
+    veh = Vehicle([Cylinder(R, L, H, **STEEL)], **SD,
+                  tanks=(VehicleTank(0.0, L, 1.0, WATER),))
+    modes = vehicle_modes(veh, k_min=0, k_max=0, n_modes=4)
+    ws = wet_system_matrices(veh, 0, [tank_liquid(veh, veh.tanks[0])], mesh=mesh_vehicle(veh))
+    w = np.sqrt(np.abs(sla.eigh(ws.stiffness, ws.mass, eigvals_only=True)))
+    ref = np.sort(w[w > 1e-6 * w.max()])[:4]
+    np.testing.assert_allclose(modes.omega, ref, rtol=1e-8)
+    assert modes.rigid_modes[0] == 1
