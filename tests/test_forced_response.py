@@ -531,3 +531,30 @@ def test_acceleration_is_minus_omega_squared_displacement():
     np.testing.assert_allclose(res.acceleration, -(res.omega**2) * res.displacement,
                                rtol=1e-14)
     assert STANDARD_GRAVITY == 9.80665
+
+
+def test_cut_vehicle_keeps_the_wall_fields_masses_and_tanks():
+    """Cutting a segment at a station (for an output station) keeps its pressure, non-structural
+    mass and stiffeners in every piece and the vehicle's masses and tanks (exact equality); the
+    forced response refuses a vehicle with masses or tanks, naming the field."""
+    from flexbooster.checks import FieldValueError
+    from flexbooster.dynamics.forced_model import cut_vehicle, full_model
+    from flexbooster.shell_of_revolution import LumpedMass, Stiffeners, VehicleTank
+
+    rings = Stiffeners(spacing=0.5, area=3e-4, inertia=4e-8, eccentricity=0.02)
+    mat = {"E": 70e9, "nu": 0.3, "rho": 2700.0}
+    veh = Vehicle([Cylinder(1.0, 6.0, 0.004, **mat, pressure=1e5, nonstructural_mass=2.0,
+                            rings=rings),
+                   Cone(1.0, 0.5, 2.0, 0.003, **mat, pressure=5e4)],
+                  masses=(LumpedMass(0.0, 300.0),), tanks=(VehicleTank(0.0, 6.0, 0.5, 800.0),))
+    cut, _, starts = cut_vehicle(veh, [2.5, 7.0], None)
+    assert len(cut.segments) == 4 and starts == (0, 2)
+    for piece, seg in zip(cut.segments, (0, 0, 1, 1), strict=True):
+        src = veh.segments[seg]
+        assert (piece.pressure, piece.nonstructural_mass, piece.rings, piece.stringers) == (
+            src.pressure, src.nonstructural_mass, src.rings, src.stringers)
+    assert cut.masses == veh.masses and cut.tanks == veh.tanks
+    with pytest.raises(FieldValueError) as info:
+        full_model(cut, mesh_vehicle(cut), 0, F0=1e5, share=1.0, n_modes=4, omega_max=100.0,
+                   gimbal_gain=0.0, supported_forward_end=False)
+    assert info.value.field == "masses"

@@ -17,12 +17,13 @@ eq. 2.2-2.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 import scipy.linalg as sla
 
-from ..shell_of_revolution import Cone, Cylinder, Vehicle
+from ..checks import FieldValueError
+from ..shell_of_revolution import Cylinder, Vehicle
 from ..shell_of_revolution.assembly import (
     assemble,
     dof_map,
@@ -169,14 +170,13 @@ def cut_vehicle(vehicle: Vehicle, xs: list, counts) -> tuple[Vehicle, tuple | No
         edges = [0.0] + sorted({x - x0 for x in xs if x0 + tol < x < x0 + L - tol}) + [L]
         starts.append(len(segs))
         for a, b in zip(edges[:-1], edges[1:], strict=True):
-            mat = {"E": seg.E, "nu": seg.nu, "rho": seg.rho}
             if len(edges) == 2:
                 piece = seg
             elif isinstance(seg, Cylinder):
-                piece = Cylinder(seg.radius, b - a, seg.thickness, **mat)
+                piece = replace(seg, length=b - a)  # material and wall fields kept
             else:
                 r = [seg.radius_aft + (seg.radius_fwd - seg.radius_aft) * t / L for t in (a, b)]
-                piece = Cone(r[0], r[1], b - a, seg.thickness, **mat)
+                piece = replace(seg, radius_aft=r[0], radius_fwd=r[1], length=b - a)
             if segs:
                 juncs.append(vehicle.junctions[i - 1] if a == 0.0 else "continuous")
             segs.append(piece)
@@ -184,7 +184,8 @@ def cut_vehicle(vehicle: Vehicle, xs: list, counts) -> tuple[Vehicle, tuple | No
                 pieces.append(counts[i] if L == 0.0 else max(1, round(counts[i] * (b - a) / L)))
         x0 += L
     cut = Vehicle(segments=tuple(segs), junctions=tuple(juncs), aft_end=vehicle.aft_end,
-                  fwd_end=vehicle.fwd_end, theory=vehicle.theory)
+                  fwd_end=vehicle.fwd_end, theory=vehicle.theory, masses=vehicle.masses,
+                  tanks=vehicle.tanks)
     return cut, None if counts is None else tuple(pieces), tuple(starts)
 
 
@@ -372,6 +373,10 @@ def full_model(
     supported_forward_end : bool
         Prestress reacted at the nose.
     """
+    if vehicle.masses or vehicle.tanks:
+        raise FieldValueError("masses" if vehicle.masses else "tanks", "(given)",
+                              "the forced response models the shell's own mass only "
+                              "(docs/theory/vehicle-physics.md, limitations)")
     dmap = dof_map(vehicle, mesh, k)
     pre = thrust_prestate(vehicle, mesh, F0, supported_forward_end=supported_forward_end)
     mats = element_set(vehicle, mesh, k, prestate=pre)

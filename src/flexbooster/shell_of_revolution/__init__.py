@@ -18,9 +18,13 @@ from .geometry import (
     THEORIES,
     Cone,
     Cylinder,
+    LumpedMass,
     ShellWarning,
+    Stiffeners,
     Vehicle,
+    VehicleTank,
 )
+from .mass_properties import MassContribution, MassProperties, mass_properties
 from .modes import (
     BAND_FACTOR,
     MODE_TYPES,
@@ -33,6 +37,8 @@ from .modes import (
     modal_system,
     vehicle_modes,
 )
+from .slosh import SloshMode
+from .wetted_wall import slosh_modes
 
 __all__ = [
     "BAND_FACTOR",
@@ -45,15 +51,23 @@ __all__ = [
     "BucklingLoad",
     "Cone",
     "Cylinder",
+    "LumpedMass",
+    "MassContribution",
+    "MassProperties",
     "Mesh",
     "ModalSystem",
     "ShellWarning",
+    "SloshMode",
+    "Stiffeners",
     "Vehicle",
+    "VehicleTank",
     "VehicleModes",
     "buckling_load",
     "labelled_modal_system",
+    "mass_properties",
     "mesh_vehicle",
     "modal_system",
+    "slosh_modes",
     "system_matrices",
     "vehicle_modes",
 ]
