@@ -1,0 +1,165 @@
+"""Mode tracking across frozen times by the modal assurance criterion (MAC): each mode of one
+time is assigned to one mode of the next by the Hungarian method on 1 - MAC, so a mode keeps
+its identity where frequencies cross. Theory: docs/theory/flight.md.
+
+References: R. J. Allemang, D. L. Brown, "A correlation coefficient for modal vector analysis",
+Proc. 1st IMAC (1982) 110-116; R. J. Allemang, Sound and Vibration 37 (2003) 14-23; H. W. Kuhn,
+Naval Res. Logist. Q. 2 (1955) 83-97 (assignment).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from scipy.optimize import linear_sum_assignment
+
+from ..checks import finite_array
+
+__all__ = ["TrackedModes", "mac_matrix", "track_modes"]
+
+
+def mac_matrix(a: Any, b: Any, *, mass: Any = None) -> np.ndarray:
+    """MAC_ij = |a_i^T M b_j|^2 / ((a_i^T M a_i)(b_j^T M b_j)) (Allemang & Brown 1982), in
+    [0, 1]; M = I without ``mass``.
+
+    Parameters
+    ----------
+    a, b : array_like
+        Mode shapes as columns, (n_dof, m_a) and (n_dof, m_b), real or complex, no zero column.
+    mass : array_like, optional
+        Symmetric positive definite (n_dof, n_dof) weight (the mass matrix).
+    """
+    a = _shapes("a", a)
+    b = _shapes("b", b)
+    if a.shape[0] != b.shape[0]:
+        raise ValueError(f"a, b: {a.shape[0]} and {b.shape[0]} rows, must be the same DOFs")
+    Mb = b if mass is None else _mass(mass, a.shape[0]) @ b
+    Ma = a if mass is None else _mass(mass, a.shape[0]) @ a
+    cross = np.abs(a.conj().T @ Mb) ** 2  # |a_i^H M b_j|^2
+    na = np.real(np.einsum("ij,ij->j", a.conj(), Ma))
+    nb = np.real(np.einsum("ij,ij->j", b.conj(), Mb))
+    if np.any(na <= 0.0) or np.any(nb <= 0.0):
+        raise ValueError("a, b: every shape needs a positive norm a^T M a (no zero column)")
+    return np.clip(cross / np.outer(na, nb), 0.0, 1.0)
+
+
+def _shapes(name: str, value: Any) -> np.ndarray:
+    try:
+        arr = np.asarray(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} = {value!r:.60}: must be an (n_dof, n_modes) array") from None
+    if arr.ndim != 2 or 0 in arr.shape:
+        raise ValueError(f"{name} = shape {arr.shape}: must be a non-empty (n_dof, n_modes) "
+                         "array")
+    if np.iscomplexobj(arr):
+        if not np.all(np.isfinite(arr)):
+            raise ValueError(f"{name}: must be finite")
+        return arr
+    return finite_array(name, arr)
+
+
+def _mass(value: Any, n: int) -> np.ndarray:
+    M = finite_array("mass", value)
+    if M.shape != (n, n):
+        raise ValueError(f"mass = shape {M.shape}: must be ({n}, {n})")
+    return M
+
+
+@dataclass(frozen=True)
+class TrackedModes:
+    """Mode identities across frozen times.
+
+    Attributes
+    ----------
+    order : numpy.ndarray
+        (T, m) int: ``order[t, j]`` is the column, in the shapes given at time t, of tracked
+        mode j; tracked mode j is the j-th lowest mode at the first time.
+    mac : numpy.ndarray
+        (T - 1, m): MAC between tracked mode j at times t and t + 1.
+    frequencies : numpy.ndarray
+        (T, m): the frequency of tracked mode j at time t (units of the input).
+    """
+
+    order: np.ndarray
+    mac: np.ndarray
+    frequencies: np.ndarray
+
+    @property
+    def min_mac(self) -> float:
+        """The smallest MAC of any assignment (1.0 for a single time)."""
+        return float(self.mac.min()) if self.mac.size else 1.0
+
+    def crossings(self) -> list[tuple[int, int, int]]:
+        """(t, i, j): tracked modes i < j swap frequency order between times t and t + 1."""
+        f = self.frequencies
+        out = []
+        for t in range(f.shape[0] - 1):
+            d0 = f[t][:, None] - f[t][None, :]
+            d1 = f[t + 1][:, None] - f[t + 1][None, :]
+            i, j = np.nonzero(np.triu(d0 * d1 < 0.0, 1))
+            out += [(t, int(a), int(b)) for a, b in zip(i, j, strict=True)]
+        return out
+
+
+def track_modes(shapes_per_time: Any, frequencies_per_time: Any, *,
+                mass: Any = None) -> TrackedModes:
+    """Follow the modes through the frozen times: at each step the assignment of the next
+    time's modes to the tracked ones that maximises the total MAC (Hungarian method,
+    scipy.optimize.linear_sum_assignment on 1 - MAC, Kuhn 1955).
+
+    Parameters
+    ----------
+    shapes_per_time : sequence of array_like
+        Per frozen time, the mode shapes as columns (n_dof, m) on a common set of DOFs
+        (the same m at every time; n_dof may not change).
+    frequencies_per_time : sequence of array_like
+        Per frozen time, the m frequencies of those columns (any unit, finite).
+    mass : array_like or sequence of array_like, optional
+        One mass matrix, or one per frozen time; the MAC between times t and t + 1 is
+        weighted by their mean (M_t + M_t+1) / 2. Without it the plain MAC.
+    """
+    shapes = [_shapes(f"shapes_per_time[{t}]", s) for t, s in enumerate(shapes_per_time)]
+    freqs = [finite_array(f"frequencies_per_time[{t}]", f).ravel()
+             for t, f in enumerate(frequencies_per_time)]
+    if not shapes:
+        raise ValueError("shapes_per_time: empty, need at least one frozen time")
+    if len(freqs) != len(shapes):
+        raise ValueError(f"frequencies_per_time: {len(freqs)} times, must be {len(shapes)} "
+                         "like shapes_per_time")
+    n_dof, m = shapes[0].shape
+    for t, (s, f) in enumerate(zip(shapes, freqs, strict=True)):
+        if s.shape != (n_dof, m):
+            raise ValueError(f"shapes_per_time[{t}] = shape {s.shape}: must be ({n_dof}, {m}) "
+                             "like the first time")
+        if f.size != m:
+            raise ValueError(f"frequencies_per_time[{t}]: {f.size} values, must be {m}")
+    masses = _masses(mass, len(shapes), n_dof)
+    T = len(shapes)
+    order = np.empty((T, m), dtype=int)
+    order[0] = np.argsort(freqs[0], kind="stable")  # identities: ascending at the first time
+    macs = np.empty((T - 1, m))
+    for t in range(T - 1):
+        weight = None if masses is None else 0.5 * (masses[t] + masses[t + 1])
+        mac = mac_matrix(shapes[t][:, order[t]], shapes[t + 1], mass=weight)
+        rows, cols = linear_sum_assignment(1.0 - mac)  # maximal total MAC
+        order[t + 1, rows] = cols
+        macs[t] = mac[rows, cols]
+    frequencies = np.stack([freqs[t][order[t]] for t in range(T)])
+    return TrackedModes(order=order, mac=macs, frequencies=frequencies)
+
+
+def _masses(mass: Any, T: int, n: int) -> list[np.ndarray] | None:
+    if mass is None:
+        return None
+    if np.ndim(mass) == 2:
+        M = _mass(mass, n)
+        return [M] * T
+    masses = [finite_array(f"mass[{t}]", M) for t, M in enumerate(mass)]
+    if len(masses) != T:
+        raise ValueError(f"mass: {len(masses)} matrices, must be one or {T} (one per time)")
+    for t, M in enumerate(masses):
+        if M.shape != (n, n):
+            raise ValueError(f"mass[{t}] = shape {M.shape}: must be ({n}, {n})")
+    return masses
