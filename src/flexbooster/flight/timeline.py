@@ -140,7 +140,7 @@ class Timeline:
         w = (t - a.time) / (b.time - a.time)  # linear interpolation weight
 
         def mix(x: float, y: float) -> float:
-            return x + w * (y - x)
+            return (1.0 - w) * x + w * y  # exact at both ends
 
         return FlightPoint(
             time=t, F0=mix(a.F0, b.F0),

@@ -15,7 +15,7 @@ from typing import Any
 import numpy as np
 from scipy.optimize import linear_sum_assignment
 
-from ..checks import finite_array
+from ..checks import finite, finite_array
 
 __all__ = ["TrackedModes", "mac_matrix", "track_modes"]
 
@@ -71,15 +71,20 @@ def _mass(value: Any, n: int) -> np.ndarray:
 class TrackedModes:
     """Mode identities across frozen times.
 
+    Identity j is the j-th lowest mode at the first time for j < m; a mode that enters the
+    computed set later (a higher mode coming down, or one without a continuation) gets the
+    next identity, and an identity ends where its best assignment has MAC < ``min_mac``.
+
     Attributes
     ----------
     order : numpy.ndarray
-        (T, m) int: ``order[t, j]`` is the column, in the shapes given at time t, of tracked
-        mode j; tracked mode j is the j-th lowest mode at the first time.
+        (T, N) int: ``order[t, j]`` is the column, in the shapes given at time t, of identity
+        j; -1 where identity j is not in the set at time t.
     mac : numpy.ndarray
-        (T - 1, m): MAC between tracked mode j at times t and t + 1.
+        (T - 1, N): MAC between identity j at times t and t + 1; NaN where it is absent at
+        either.
     frequencies : numpy.ndarray
-        (T, m): the frequency of tracked mode j at time t (units of the input).
+        (T, N): the frequency of identity j at time t (units of the input); NaN where absent.
     """
 
     order: np.ndarray
@@ -87,38 +92,50 @@ class TrackedModes:
     frequencies: np.ndarray
 
     @property
+    def present(self) -> np.ndarray:
+        """(T, N) bool: identity j is in the set at time t."""
+        return self.order >= 0
+
+    @property
     def min_mac(self) -> float:
-        """The smallest MAC of any assignment (1.0 for a single time)."""
-        return float(self.mac.min()) if self.mac.size else 1.0
+        """The smallest MAC of any continued identity (1.0 where none is continued)."""
+        values = self.mac[np.isfinite(self.mac)]
+        return float(values.min()) if values.size else 1.0
 
     def crossings(self) -> list[tuple[int, int, int]]:
-        """(t, i, j): tracked modes i < j swap frequency order between times t and t + 1."""
+        """(t, i, j): identities i < j, present at t and t + 1, swap frequency order between
+        times t and t + 1."""
         f = self.frequencies
         out = []
         for t in range(f.shape[0] - 1):
             d0 = f[t][:, None] - f[t][None, :]
             d1 = f[t + 1][:, None] - f[t + 1][None, :]
-            i, j = np.nonzero(np.triu(d0 * d1 < 0.0, 1))
+            with np.errstate(invalid="ignore"):
+                swapped = np.triu(d0 * d1 < 0.0, 1)
+            i, j = np.nonzero(swapped)
             out += [(t, int(a), int(b)) for a, b in zip(i, j, strict=True)]
         return out
 
 
-def track_modes(shapes_per_time: Any, frequencies_per_time: Any, *,
-                mass: Any = None) -> TrackedModes:
+def track_modes(shapes_per_time: Any, frequencies_per_time: Any, *, mass: Any = None,
+                min_mac: float = 0.5) -> TrackedModes:
     """Follow the modes through the frozen times: at each step the assignment of the next
-    time's modes to the tracked ones that maximises the total MAC (Hungarian method,
-    scipy.optimize.linear_sum_assignment on 1 - MAC, Kuhn 1955).
+    time's modes to the present identities that maximises the total MAC (Hungarian method,
+    scipy.optimize.linear_sum_assignment on 1 - MAC, Kuhn 1955); an assignment with
+    MAC < ``min_mac`` is no continuation (the mode left the computed set and another entered).
 
     Parameters
     ----------
     shapes_per_time : sequence of array_like
-        Per frozen time, the mode shapes as columns (n_dof, m) on a common set of DOFs
-        (the same m at every time; n_dof may not change).
+        Per frozen time, the mode shapes as columns (n_dof, m_t) on a common set of DOFs
+        (n_dof fixed, the number of modes m_t may change).
     frequencies_per_time : sequence of array_like
-        Per frozen time, the m frequencies of those columns (any unit, finite).
+        Per frozen time, the m_t frequencies of those columns (any unit, finite).
     mass : array_like or sequence of array_like, optional
         One mass matrix, or one per frozen time; the MAC between times t and t + 1 is
         weighted by their mean (M_t + M_t+1) / 2. Without it the plain MAC.
+    min_mac : float
+        Smallest MAC of a continuation, in (0, 1].
     """
     shapes = [_shapes(f"shapes_per_time[{t}]", s) for t, s in enumerate(shapes_per_time)]
     freqs = [finite_array(f"frequencies_per_time[{t}]", f).ravel()
@@ -128,25 +145,54 @@ def track_modes(shapes_per_time: Any, frequencies_per_time: Any, *,
     if len(freqs) != len(shapes):
         raise ValueError(f"frequencies_per_time: {len(freqs)} times, must be {len(shapes)} "
                          "like shapes_per_time")
-    n_dof, m = shapes[0].shape
+    min_mac = finite("min_mac", min_mac)
+    if not 0.0 < min_mac <= 1.0:
+        raise ValueError(f"min_mac = {min_mac!r}: must be in (0, 1]")
+    n_dof = shapes[0].shape[0]
     for t, (s, f) in enumerate(zip(shapes, freqs, strict=True)):
-        if s.shape != (n_dof, m):
-            raise ValueError(f"shapes_per_time[{t}] = shape {s.shape}: must be ({n_dof}, {m}) "
-                             "like the first time")
-        if f.size != m:
-            raise ValueError(f"frequencies_per_time[{t}]: {f.size} values, must be {m}")
+        if s.shape[0] != n_dof:
+            raise ValueError(f"shapes_per_time[{t}] = shape {s.shape}: must have {n_dof} rows "
+                             "(DOFs) like the first time")
+        if f.size != s.shape[1]:
+            raise ValueError(f"frequencies_per_time[{t}]: {f.size} values, must be "
+                             f"{s.shape[1]} like its shapes' columns")
     masses = _masses(mass, len(shapes), n_dof)
     T = len(shapes)
-    order = np.empty((T, m), dtype=int)
-    order[0] = np.argsort(freqs[0], kind="stable")  # identities: ascending at the first time
-    macs = np.empty((T - 1, m))
+    first = np.argsort(freqs[0], kind="stable")  # identities: ascending at the first time
+    history = {j: [(0, int(c))] for j, c in enumerate(first)}  # identity -> (time, column)
+    links: list[list[tuple[int, float]]] = [[] for _ in first]  # identity -> (time, MAC)
+    active = list(range(first.size))  # the identities present at the current time
     for t in range(T - 1):
         weight = None if masses is None else 0.5 * (masses[t] + masses[t + 1])
-        mac = mac_matrix(shapes[t][:, order[t]], shapes[t + 1], mass=weight)
+        cols_now = [history[j][-1][1] for j in active]
+        mac = mac_matrix(shapes[t][:, cols_now], shapes[t + 1], mass=weight)
         rows, cols = linear_sum_assignment(1.0 - mac)  # maximal total MAC
-        order[t + 1, rows] = cols
-        macs[t] = mac[rows, cols]
-    frequencies = np.stack([freqs[t][order[t]] for t in range(T)])
+        taken = set()
+        continued = []
+        for r, c in zip(rows, cols, strict=True):
+            if mac[r, c] >= min_mac:
+                j = active[r]
+                history[j].append((t + 1, int(c)))
+                links[j].append((t, float(mac[r, c])))
+                continued.append(j)
+                taken.add(int(c))
+        entering = [c for c in np.argsort(freqs[t + 1], kind="stable") if int(c) not in taken]
+        for c in entering:  # a new identity for each mode without a continuation
+            j = len(history)
+            history[j] = [(t + 1, int(c))]
+            links.append([])
+            continued.append(j)
+        active = continued
+    N = len(history)
+    order = np.full((T, N), -1, dtype=int)
+    macs = np.full((T - 1, N), np.nan)
+    frequencies = np.full((T, N), np.nan)
+    for j, visits in history.items():
+        for t, c in visits:
+            order[t, j] = c
+            frequencies[t, j] = freqs[t][c]
+        for t, value in links[j]:
+            macs[t, j] = value
     return TrackedModes(order=order, mac=macs, frequencies=frequencies)
 
 
