@@ -315,21 +315,24 @@ def resonance_events(times: Any, omega: Any, oscillation: Any, *, zeta: float,
     events = []
     for run in _merge(pieces):
         idx = sorted({i for _, _, i in run} | {i + 1 for _, _, i in run})
-        g = float(np.max(peak[idx]))  # largest steady peak over the run's frozen times
+        g = float(np.max(peak[idx]))  # a band: the largest steady peak of the run
         ratio = 1.0
         if np.all(osc[idx, 0] == osc[idx, 1]):
-            # a known frequency: the relative sweep rate where Omega crosses omega
-            etas = []
+            # a known frequency: where Omega / omega = 1, the steady peak there and the
+            # relative sweep rate
+            crossings = []
             for _, _, i in run:
                 h = t[i + 1] - t[i]
                 r0, r1 = osc[i, 0] / om[i], osc[i + 1, 0] / om[i + 1]
                 if (r0 - 1.0) * (r1 - 1.0) <= 0.0 and r0 != r1:
-                    w_mid = 0.5 * (om[i] + om[i + 1])
-                    etas.append((r1 - r0) / h / w_mid)  # eta = d(Omega/omega)/dt / omega
-            if etas:
-                slowest = min(etas, key=abs)
+                    s = (1.0 - r0) / (r1 - r0)  # Omega / omega linear in the segment
+                    w_c = om[i] + s * (om[i + 1] - om[i])
+                    g_c = peak[i] + s * (peak[i + 1] - peak[i])
+                    crossings.append(((r1 - r0) / h / w_c, g_c))  # eta = d(Omega/omega)/dt / w
+            if crossings:
+                eta, g = min(crossings, key=lambda c: abs(c[0]))
                 try:
-                    ratio = peak_ratio(zeta, slowest)
+                    ratio = peak_ratio(zeta, eta)
                 except StepLimitError:  # too slow to integrate: the steady peak bounds it
                     ratio = 1.0
         events.append(FlightEvent(
