@@ -16,14 +16,17 @@ import math
 
 import numpy as np
 import pytest
+import scipy.linalg
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 from scipy.special import fresnel, mathieu_a, mathieu_b
 
 from flexbooster.flight import (
     accumulated_growth,
+    crossing_peak_ratio,
     peak_ratio,
     steady_peak,
+    step_maps,
     sweep_passage,
     sweep_response,
 )
@@ -194,7 +197,7 @@ def test_undamped_sweep_peak_is_the_fresnel_envelope(alpha):
     S, C = fresnel(x)
     g_max = float(np.max(np.abs(C + 0.5 + 1j * (S + 0.5))))
     half = 12.0 * math.sqrt(alpha)
-    _, q = sweep_response(omega=1.0, zeta=0.0, force=1.0, Omega_start=1.0 - half,
+    _, q, _ = sweep_response(omega=1.0, zeta=0.0, force=1.0, Omega_start=1.0 - half,
                           Omega_end=1.0 + half, duration=2.0 * half / alpha)
     assert np.max(np.abs(q)) == pytest.approx(0.5 * math.sqrt(math.pi / alpha) * g_max,
                                               rel=0.02)
@@ -211,6 +214,52 @@ def test_peak_tends_to_the_steady_peak_as_the_sweep_slows():
     assert ratios[0] < 0.5
     # the same rate downward: within 5 % of the upward one (the direction matters little)
     assert peak_ratio(0.02, -1e-3) == pytest.approx(ratios[1], rel=0.05)
+
+
+@pytest.mark.parametrize("w, zeta, h", [(2.0, 0.02, 0.05), (30.0, 0.0, 0.01), (1.0, 0.3, 0.2)])
+def test_step_maps_equal_the_matrix_exponential(w, zeta, h):
+    """Independent method: the closed-form first-order-hold maps against
+    scipy.linalg.expm of the augmented matrix [[A h, B h, 0], [0, 0, 1], [0, 0, 0]]
+    (Franklin, Powell, Workman sec. 6.3: blocks Phi, F1, F2); tolerance 1e-13 absolute on
+    entries of order 1 / w^2..1."""
+    Phi, Ga, Gb = step_maps([w], zeta, h)
+    aug = np.zeros((4, 4))
+    aug[:2, :2] = np.array([[0.0, 1.0], [-w * w, -2.0 * zeta * w]]) * h
+    aug[1, 2] = h
+    aug[2, 3] = 1.0
+    E = scipy.linalg.expm(aug)
+    np.testing.assert_allclose(Phi[0], E[:2, :2], atol=1e-13)
+    np.testing.assert_allclose(Gb[0], E[:2, 3], atol=1e-13)
+    np.testing.assert_allclose(Ga[0], E[:2, 2] - E[:2, 3], atol=1e-13)
+
+
+def test_drifting_mode_sweep_matches_direct_integration():
+    """Independent model: a mode drifting from 1.6 to 2.4 rad/s under a forcing sweeping from
+    2.2 down to 1.8 rad/s in 80 s (zeta = 0.03): the peak |q| and |q''| of the stepped
+    drifting equation (w at each step's midpoint) against solve_ivp DOP853 rtol 1e-10;
+    tolerance 2 %; crossing_peak_ratio of the same drift within 2 % of the direct peak
+    acceleration over its steady value."""
+    kw = dict(omega=1.6, omega_end=2.4, zeta=0.03, force=1.0, Omega_start=2.2,
+              Omega_end=1.8, duration=80.0)
+    r = sweep_passage(**kw)
+    wr, Wr = 0.8 / 80.0, -0.4 / 80.0
+    H = 1.0 / (1.6 ** 2 - 2.2 ** 2 + 2j * 0.03 * 1.6 * 2.2)
+
+    def rhs(t, y):
+        w = 1.6 + wr * t
+        return [y[1], math.cos(2.2 * t + 0.5 * Wr * t * t) - 2 * 0.03 * w * y[1] - w * w * y[0]]
+
+    sol = solve_ivp(rhs, (0.0, 80.0), [H.real, (1j * 2.2 * H).real], method="DOP853",
+                    rtol=1e-10, atol=1e-14, dense_output=True)
+    tt = np.linspace(0.0, 80.0, 40001)
+    q, v = sol.sol(tt)
+    w = 1.6 + wr * tt
+    acc = np.cos(2.2 * tt + 0.5 * Wr * tt * tt) - 2 * 0.03 * w * v - w * w * q
+    assert r.peak == pytest.approx(np.max(np.abs(q)), rel=0.02)
+    assert r.peak_acceleration == pytest.approx(np.max(np.abs(acc)), rel=0.02)
+    # the crossing: 1.6 + wr t = 2.2 + Wr t at t = 40 s, w = 2.0
+    ratio = crossing_peak_ratio(zeta=0.03, omega=2.0, omega_rate=wr, Omega_rate=Wr)
+    assert ratio == pytest.approx(np.max(np.abs(acc)) / r.steady_peak_acceleration, rel=0.02)
 
 
 def test_steps_per_cycle_converges():
@@ -239,6 +288,10 @@ def test_sweep_bad_input():
         sweep_passage(**kw, max_steps=1000)
     with pytest.raises(ValueError, match="^eta"):
         peak_ratio(0.02, 0.0)
+    with pytest.raises(ValueError, match="^omega_rate, Omega_rate"):
+        crossing_peak_ratio(zeta=0.02, omega=2.0, omega_rate=0.1, Omega_rate=0.1)
+    with pytest.raises(ValueError, match="^omega_end"):
+        sweep_passage(**kw, omega_end=-1.0)
     with pytest.raises(ValueError, match="^sigma"):
         accumulated_growth([0.0, 1.0], [0.0, float("nan")])
     with pytest.raises(ValueError, match="^times"):

@@ -19,8 +19,10 @@ from .passage import (
     Passage,
     ResonancePassage,
     accumulated_growth,
+    crossing_peak_ratio,
     peak_ratio,
     steady_peak,
+    step_maps,
     sweep_passage,
     sweep_response,
 )
@@ -29,6 +31,6 @@ from .tracking import TrackedModes, mac_matrix, track_modes
 
 __all__ = ["FlightPoint", "Timeline", "frozen_times", "TrackedModes", "mac_matrix",
            "track_modes", "MAX_SWEEP_STEPS", "SWEEP_WINDOW", "Passage", "ResonancePassage",
-           "accumulated_growth", "peak_ratio", "steady_peak", "sweep_passage",
-           "sweep_response", "EVENT_COLUMNS", "FlightEvent", "band_events", "band_key",
-           "meeting_intervals", "resonance_events", "worst_first"]
+           "accumulated_growth", "crossing_peak_ratio", "peak_ratio", "steady_peak",
+           "step_maps", "sweep_passage", "sweep_response", "EVENT_COLUMNS", "FlightEvent",
+           "band_events", "band_key", "meeting_intervals", "resonance_events", "worst_first"]

@@ -18,7 +18,7 @@ import numpy as np
 from ..bands import Band
 from ..checks import finite_array, positive
 from ..floquet import StepLimitError
-from .passage import Passage, accumulated_growth, peak_ratio
+from .passage import Passage, accumulated_growth, crossing_peak_ratio
 
 __all__ = ["FlightEvent", "EVENT_COLUMNS", "band_key", "band_events", "resonance_events",
            "meeting_intervals", "worst_first"]
@@ -276,12 +276,11 @@ def resonance_events(times: Any, omega: Any, oscillation: Any, *, zeta: float,
                      station: str | None = None) -> tuple[FlightEvent, ...]:
     """The intervals in which a tracked mode's half-power band omega (1 -+ zeta) meets the
     oscillation band, with the peak acceleration: a known oscillation frequency (lo == hi)
-    sweeping through the resonance gives the non-stationary peak, :func:`.peak_ratio` at the
-    relative sweep rate eta = d(Omega / omega)/dt / omega at the crossing (the equation with
-    omega(t) drifting under a fixed Omega taken as the one with omega fixed and Omega / omega
-    sweeping at that rate) times the steady peak; a frequency band gives the steady peak
-    (the oscillation may dwell at the resonance). Where the sweep is too slow for
-    :data:`.MAX_SWEEP_STEPS`, the steady peak.
+    crossing the mode's frequency gives the non-stationary peak, the steady peak at the
+    crossing times :func:`.crossing_peak_ratio` of the mode and the forcing drifting at
+    their rates in that segment (the largest over the run's crossings); a frequency band
+    gives the largest steady peak of the run (the oscillation may dwell at the resonance).
+    Where the crossing is too slow for :data:`.MAX_SWEEP_STEPS`, the steady peak (a bound).
 
     Parameters
     ----------
@@ -316,29 +315,31 @@ def resonance_events(times: Any, omega: Any, oscillation: Any, *, zeta: float,
     for run in _merge(pieces):
         idx = sorted({i for _, _, i in run} | {i + 1 for _, _, i in run})
         g = float(np.max(peak[idx]))  # a band: the largest steady peak of the run
-        ratio = 1.0
         if np.all(osc[idx, 0] == osc[idx, 1]):
-            # a known frequency: where Omega / omega = 1, the steady peak there and the
-            # relative sweep rate
+            # a known frequency: where Omega = omega, the steady peak there and the drift
             crossings = []
             for _, _, i in run:
                 h = t[i + 1] - t[i]
-                r0, r1 = osc[i, 0] / om[i], osc[i + 1, 0] / om[i + 1]
-                if (r0 - 1.0) * (r1 - 1.0) <= 0.0 and r0 != r1:
-                    s = (1.0 - r0) / (r1 - r0)  # Omega / omega linear in the segment
-                    w_c = om[i] + s * (om[i + 1] - om[i])
-                    g_c = peak[i] + s * (peak[i + 1] - peak[i])
-                    crossings.append(((r1 - r0) / h / w_c, g_c))  # eta = d(Omega/omega)/dt / w
-            if crossings:
-                eta, g = min(crossings, key=lambda c: abs(c[0]))
+                d0, d1 = osc[i, 0] - om[i], osc[i + 1, 0] - om[i + 1]
+                if d0 * d1 <= 0.0 and d0 != d1:
+                    s = d0 / (d0 - d1)  # Omega - omega linear in the segment
+                    crossings.append((om[i] + s * (om[i + 1] - om[i]),
+                                      (om[i + 1] - om[i]) / h, (osc[i + 1, 0] - osc[i, 0]) / h,
+                                      peak[i] + s * (peak[i + 1] - peak[i])))
+            ratios = []
+            for w_c, w_rate, W_rate, g_c in crossings:
                 try:
-                    ratio = peak_ratio(zeta, eta)
+                    ratio = crossing_peak_ratio(zeta=zeta, omega=w_c, omega_rate=w_rate,
+                                                Omega_rate=W_rate)
                 except StepLimitError:  # too slow to integrate: the steady peak bounds it
                     ratio = 1.0
+                ratios.append(ratio * g_c)
+            if ratios:
+                g = max(ratios)
         events.append(FlightEvent(
             mechanism="forced", k=k, modes=modes, t_start_s=run[0][0], t_end_s=run[-1][1],
             max_growth_1_s=0.0, efolds=0.0, amplification=1.0,
-            peak_acceleration_g=ratio * g, station=station))
+            peak_acceleration_g=float(g), station=station))
     return tuple(events)
 
 

@@ -3,18 +3,19 @@
 * Slow passage through a region: with sigma(t) the frozen-time Floquet growth rate, the
   amplitude grows by exp(integral of max(sigma, 0) dt) (the e-folds); sigma is linear between
   the frozen times and the integral of its positive part is exact on that schedule.
-* Passage through a damped resonance under a linear sweep: q'' + 2 zeta omega q' + omega^2 q =
-  f cos(phi(t)), phi' = Omega(t) linear in t, integrated exactly for the forcing linear between
-  samples (first-order hold: the state transition and the two input matrices from one matrix
-  exponential, then a first-order complex recursion run by scipy.signal.lfilter), starting in
-  the steady state of the first frequency. The peak is lower than the steady one,
-  f / (2 zeta sqrt(1 - zeta^2) omega^2), and tends to it as the sweep slows.
+* Passage through a damped resonance under a linear sweep: q'' + 2 zeta w q' + w^2 q =
+  f cos(phi(t)), phi' = Omega(t) linear in t and w constant or linear in t, stepped exactly
+  for the forcing linear between samples (first-order hold; the step maps in closed form, w
+  at each step's midpoint), the affine recursion run as a vectorised scan, from the steady
+  state at the start. The peak is lower than the steady one,
+  f / (2 zeta sqrt(1 - zeta^2) w^2), and tends to it as the sweep slows.
 
 Theory: docs/theory/flight.md. References: V. V. Bolotin, *The Dynamic Stability of Elastic
 Systems*, 1964 (frozen-coefficient growth); F. M. Lewis, Trans. ASME 54 (1932) 253-261;
 R. Markert, M. Seidler, Mech. Syst. Signal Process. 15 (2001) 1281-1291 (passage through
 resonance); G. F. Franklin, J. D. Powell, M. Workman, *Digital Control of Dynamic Systems*,
-1998, sec. 6.3 (first-order hold).
+1998, sec. 6.3 (first-order hold); W. D. Hillis, G. L. Steele, Commun. ACM 29 (1986)
+1170-1183 (scan).
 """
 
 from __future__ import annotations
@@ -25,14 +26,12 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-import scipy.linalg
-import scipy.signal
 
 from ..checks import count, finite, finite_array, nonnegative, positive
 from ..floquet import StepLimitError
 
-__all__ = ["Passage", "accumulated_growth", "ResonancePassage", "sweep_response",
-           "sweep_passage", "steady_peak", "peak_ratio", "MAX_SWEEP_STEPS",
+__all__ = ["Passage", "accumulated_growth", "ResonancePassage", "step_maps", "sweep_response",
+           "sweep_passage", "steady_peak", "peak_ratio", "crossing_peak_ratio", "MAX_SWEEP_STEPS",
            "SWEEP_WINDOW"]
 
 #: Default cap on the samples of one sweep (about 160 MB of work arrays).
@@ -152,7 +151,12 @@ class ResonancePassage:
     Omega_at_peak : float
         The forcing pulsation then (rad/s).
     steady_peak : float
-        f / (2 zeta sqrt(1 - zeta^2) omega^2), the stationary peak.
+        f / (2 zeta sqrt(1 - zeta^2) omega^2), the stationary peak, omega the mode's frequency
+        at ``t_peak``.
+    peak_acceleration : float
+        Largest |q''| over the sweep (units of f).
+    steady_peak_acceleration : float
+        f / (2 zeta sqrt(1 - zeta^2)), the largest stationary |q''| (at any omega).
     steps : int
         Samples of the forcing (first-order hold).
     """
@@ -161,6 +165,8 @@ class ResonancePassage:
     t_peak: float
     Omega_at_peak: float
     steady_peak: float
+    peak_acceleration: float
+    steady_peak_acceleration: float
     steps: int
 
     @property
@@ -168,10 +174,16 @@ class ResonancePassage:
         """peak / steady_peak (< 1 for a sweep that does not dwell)."""
         return self.peak / self.steady_peak
 
+    @property
+    def acceleration_ratio(self) -> float:
+        """peak_acceleration / steady_peak_acceleration."""
+        return self.peak_acceleration / self.steady_peak_acceleration
 
-def _sweep_args(omega, zeta, force, Omega_start, Omega_end, duration, steps_per_cycle,
-                max_steps) -> tuple[float, float, float, float, float, float, int]:
+
+def _sweep_args(omega, omega_end, zeta, force, Omega_start, Omega_end, duration,
+                steps_per_cycle, max_steps):
     omega = positive("omega", omega)
+    omega_end = omega if omega_end is None else positive("omega_end", omega_end)
     zeta = nonnegative("zeta", zeta)
     if zeta >= 1.0:
         raise ValueError(f"zeta = {zeta!r}: must be in [0, 1) (an oscillating mode)")
@@ -181,26 +193,101 @@ def _sweep_args(omega, zeta, force, Omega_start, Omega_end, duration, steps_per_
     duration = positive("duration", duration)
     spc = count("steps_per_cycle", steps_per_cycle, low=8, high=10_000)
     max_steps = count("max_steps", max_steps, low=16, high=None)
-    cycles = max(omega, Om0, Om1) * duration / (2.0 * math.pi)
+    cycles = max(omega, omega_end, Om0, Om1) * duration / (2.0 * math.pi)
     steps = int(math.ceil(spc * cycles))
     if steps > max_steps:
         raise StepLimitError(f"steps = {steps}: a sweep of {cycles:.4g} cycles at "
                              f"{spc} steps per cycle exceeds max_steps = {max_steps}")
-    return omega, zeta, force, Om0, Om1, duration, max(steps, 16)
+    return omega, omega_end, zeta, force, Om0, Om1, duration, max(steps, 16)
+
+
+def step_maps(omega: Any, zeta: float, h: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Exact one-step maps of x' = A x + (0, u)^T, A = [[0, 1], [-w^2, -2 zeta w]], for u
+    linear over the step (first-order hold): x_1 = Phi x_0 + Ga u_0 + Gb u_1, with
+    F1 = A^-1 (Phi - I) B, F2 = F1 - A^-1 Phi B + A^-2 (Phi - I) B / h, Ga = F1 - F2, Gb = F2
+    (Franklin, Powell, Workman 1998, sec. 6.3; Phi in closed form, Meirovitch 1986, sec. 3.1).
+
+    Parameters
+    ----------
+    omega : array_like
+        Natural frequencies w (rad/s), > 0, one per step, shape (N,).
+    zeta : float
+        Damping ratio, 0 <= zeta < 1.
+    h : float
+        Step (s), > 0.
+
+    Returns
+    -------
+    Phi, Ga, Gb : numpy.ndarray
+        (N, 2, 2), (N, 2), (N, 2).
+    """
+    w = finite_array("omega", omega, positive=True).ravel()
+    h = positive("h", h)
+    wd = w * math.sqrt(1.0 - zeta * zeta)
+    e = np.exp(-zeta * w * h)
+    c, s = np.cos(wd * h), np.sin(wd * h)
+    Phi = np.empty((w.size, 2, 2))
+    Phi[:, 0, 0] = e * (c + zeta * w / wd * s)  # free damped oscillator over h
+    Phi[:, 0, 1] = e * s / wd
+    Phi[:, 1, 0] = -e * w * w / wd * s
+    Phi[:, 1, 1] = e * (c - zeta * w / wd * s)
+    Ainv = np.empty((w.size, 2, 2))  # A^-1 = [[-2 zeta / w, -1 / w^2], [1, 0]]
+    Ainv[:, 0, 0] = -2.0 * zeta / w
+    Ainv[:, 0, 1] = -1.0 / (w * w)
+    Ainv[:, 1, 0] = 1.0
+    Ainv[:, 1, 1] = 0.0
+    dB = Phi[:, :, 1] - np.array([0.0, 1.0])  # (Phi - I) B, B = (0, 1)
+    F1 = np.einsum("nij,nj->ni", Ainv, dB)
+    F2 = F1 - np.einsum("nij,nj->ni", Ainv, Phi[:, :, 1]) + np.einsum(
+        "nij,nj->ni", Ainv, F1) / h
+    return Phi, F1 - F2, F2
+
+
+#: Steps per block of the affine scan (bounds the work arrays).
+_SCAN_BLOCK = 1 << 15
+
+
+def _affine_scan(Phi: np.ndarray, g: np.ndarray, x0: np.ndarray) -> np.ndarray:
+    """States x_0..x_N of x_{n+1} = Phi_n x_n + g_n: per block an inclusive scan of the affine
+    maps (Hillis & Steele 1986; log2(block) vectorised passes on the six components of the
+    2 x 2 maps), blocks chained."""
+    N = g.shape[0]
+    out = np.empty((N + 1, 2))
+    out[0] = x = x0
+    for lo in range(0, N, _SCAN_BLOCK):
+        hi = min(lo + _SCAN_BLOCK, N)
+        a, b = Phi[lo:hi, 0, 0].copy(), Phi[lo:hi, 0, 1].copy()
+        c, d = Phi[lo:hi, 1, 0].copy(), Phi[lo:hi, 1, 1].copy()
+        e, f = g[lo:hi, 0].copy(), g[lo:hi, 1].copy()
+        k = 1
+        while k < hi - lo:  # map[i] <- map[i] o map[i - k]: (A_i A_j, A_i g_j + g_i)
+            a2, b2, c2, d2 = a[:-k], b[:-k], c[:-k], d[:-k]
+            e2, f2 = e[:-k], f[:-k]
+            a1, b1, c1, d1 = a[k:], b[k:], c[k:], d[k:]
+            e[k:], f[k:] = a1 * e2 + b1 * f2 + e[k:], c1 * e2 + d1 * f2 + f[k:]
+            a[k:], b[k:], c[k:], d[k:] = (a1 * a2 + b1 * c2, a1 * b2 + b1 * d2,
+                                          c1 * a2 + d1 * c2, c1 * b2 + d1 * d2)
+            k *= 2
+        out[lo + 1:hi + 1, 0] = a * x[0] + b * x[1] + e
+        out[lo + 1:hi + 1, 1] = c * x[0] + d * x[1] + f
+        x = out[hi].copy()
+    return out
 
 
 def sweep_response(*, omega: float, zeta: float, force: float, Omega_start: float,
-                   Omega_end: float, duration: float, phase: float = 0.0,
-                   steps_per_cycle: int = 64,
-                   max_steps: int = MAX_SWEEP_STEPS) -> tuple[np.ndarray, np.ndarray]:
-    """Response q(t) of q'' + 2 zeta omega q' + omega^2 q = f cos(phi(t)),
-    phi = phase + Omega_start t + (Omega_end - Omega_start) t^2 / (2 duration), from the
-    steady state of Omega_start: exact for the forcing linear between the samples.
+                   Omega_end: float, duration: float, omega_end: float | None = None,
+                   phase: float = 0.0, steps_per_cycle: int = 64,
+                   max_steps: int = MAX_SWEEP_STEPS
+                   ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Response of q'' + 2 zeta w(t) q' + w(t)^2 q = f cos(phi(t)),
+    phi = phase + Omega_start t + (Omega_end - Omega_start) t^2 / (2 duration), w linear from
+    ``omega`` to ``omega_end``, from the steady state at the start. Each step is exact for the
+    forcing linear over it and w at its midpoint (:func:`step_maps`; exact for a constant w).
 
     Parameters
     ----------
     omega : float
-        Natural frequency (rad/s), > 0.
+        Natural frequency at the start (rad/s), > 0.
     zeta : float
         Damping ratio, 0 <= zeta < 1.
     force : float
@@ -209,79 +296,84 @@ def sweep_response(*, omega: float, zeta: float, force: float, Omega_start: floa
         Forcing pulsation at the start and at the end (rad/s), > 0.
     duration : float
         Sweep time (s), > 0.
+    omega_end : float, optional
+        Natural frequency at the end (rad/s), > 0; default ``omega`` (a constant mode).
     phase : float
         phi(0) (rad).
     steps_per_cycle : int
-        Samples per period of the fastest of omega and Omega (8..10000): the deterministic
+        Samples per period of the fastest of w and Omega (8..10000): the deterministic
         accuracy limit; the forcing's interpolation error is about (2 pi / steps)^2 / 12.
     max_steps : int
         Cap on the samples (:class:`flexbooster.floquet.StepLimitError` beyond).
 
     Returns
     -------
-    t, q : numpy.ndarray
-        Sample times (s) and displacements.
+    t, q, a : numpy.ndarray
+        Sample times (s), displacements q and accelerations q''.
     """
-    omega, zeta, force, Om0, Om1, duration, steps = _sweep_args(
-        omega, zeta, force, Omega_start, Omega_end, duration, steps_per_cycle, max_steps)
+    omega, omega_end, zeta, force, Om0, Om1, duration, steps = _sweep_args(
+        omega, omega_end, zeta, force, Omega_start, Omega_end, duration, steps_per_cycle,
+        max_steps)
     phase = finite("phase", phase)
     h = duration / steps
     t = np.linspace(0.0, duration, steps + 1)
     alpha = (Om1 - Om0) / duration
     u = force * np.cos(phase + Om0 * t + 0.5 * alpha * t * t)  # f cos(phi(t))
-    A = np.array([[0.0, 1.0], [-omega * omega, -2.0 * zeta * omega]])
-    aug = np.zeros((4, 4))
-    aug[:2, :2] = A * h
-    aug[1, 2] = h
-    aug[2, 3] = 1.0
-    E = scipy.linalg.expm(aug)  # first-order hold (Franklin, Powell, Workman sec. 6.3)
-    Phi, F1, F2 = E[:2, :2], E[:2, 2], E[:2, 3]
-    # x_{n+1} = Phi x_n + (F1 - F2) u_n + F2 u_{n+1}; diagonalise Phi (complex pair)
-    mu, V = np.linalg.eig(Phi)
-    W = np.linalg.inv(V)
-    k = int(np.argmax(mu.imag)) if np.any(mu.imag != 0.0) else 0
-    w, v = W[k], V[:, k]
-    H = force / (omega * omega - Om0 * Om0 + 2j * zeta * omega * Om0)  # steady at Omega_start
+    w_of = (omega_end - omega) / duration
+    if omega_end == omega:
+        Phi, Ga, Gb = step_maps([omega], zeta, h)
+        Phi, Ga, Gb = (np.broadcast_to(a, (steps,) + a.shape[1:]) for a in (Phi, Ga, Gb))
+    else:
+        Phi, Ga, Gb = step_maps(omega + w_of * (t[:-1] + 0.5 * h), zeta, h)  # midpoint w
+    g = Ga * u[:-1, None] + Gb * u[1:, None]
+    H = force / (omega * omega - Om0 * Om0 + 2j * zeta * omega * Om0)  # steady at the start
     x0 = np.array([np.real(H * np.exp(1j * phase)), np.real(1j * Om0 * H * np.exp(1j * phase))])
-    if np.any(mu.imag != 0.0):
-        b = [w @ F2, w @ (F1 - F2)]
-        y0 = w @ x0
-        y, _ = scipy.signal.lfilter(b, [1.0, -mu[k]], u.astype(complex),
-                                    zi=[y0 - b[0] * u[0]])
-        q = 2.0 * np.real(v[0] * y)  # x = v y + conj(v y)
-    else:  # zeta = 0 with omega h a multiple of pi cannot occur: steps_per_cycle >= 8
-        raise ValueError(f"zeta = {zeta!r}: the state transition has no complex pair")
-    return t, q
+    x = _affine_scan(Phi, g, x0)
+    w = omega + w_of * t
+    acc = u - 2.0 * zeta * w * x[:, 1] - w * w * x[:, 0]  # q'' from the equation of motion
+    return t, x[:, 0], acc
 
 
-def sweep_passage(*, omega: float, zeta: float, force: float, Omega_start: float,
-                  Omega_end: float, duration: float, phase: float = 0.0,
-                  steps_per_cycle: int = 64,
-                  max_steps: int = MAX_SWEEP_STEPS) -> ResonancePassage:
-    """The largest |q| of :func:`sweep_response`, refined by the parabola through the largest
-    sample and its neighbours, against the steady peak.
-
-    Parameters
-    ----------
-    omega, zeta, force, Omega_start, Omega_end, duration, phase, steps_per_cycle, max_steps
-        As :func:`sweep_response`; here 0 < zeta < 1/sqrt(2).
-    """
-    t, q = sweep_response(omega=omega, zeta=zeta, force=force, Omega_start=Omega_start,
-                          Omega_end=Omega_end, duration=duration, phase=phase,
-                          steps_per_cycle=steps_per_cycle, max_steps=max_steps)
-    stat = steady_peak(omega, zeta, abs(finite("force", force)))
-    a = np.abs(q)
+def _peak(t: np.ndarray, y: np.ndarray) -> tuple[float, float]:
+    """max |y| and where, refined by the parabola through the largest sample and its two
+    neighbours (vertex offset within half a step)."""
+    a = np.abs(y)
     i = int(np.clip(np.argmax(a), 1, a.size - 2))
     y0, y1, y2 = a[i - 1], a[i], a[i + 1]
     den = y0 - 2.0 * y1 + y2
-    s = 0.5 * (y0 - y2) / den if den < 0.0 else 0.0  # vertex of the parabola, |s| <= 1/2
-    s = float(np.clip(s, -0.5, 0.5))
-    peak = float(y1 - 0.25 * (y0 - y2) * s)
-    h = t[1] - t[0]
-    t_peak = float(t[i] + s * h)
+    s = float(np.clip(0.5 * (y0 - y2) / den, -0.5, 0.5)) if den < 0.0 else 0.0
+    return float(y1 - 0.25 * (y0 - y2) * s), float(t[i] + s * (t[1] - t[0]))
+
+
+def sweep_passage(*, omega: float, zeta: float, force: float, Omega_start: float,
+                  Omega_end: float, duration: float, omega_end: float | None = None,
+                  phase: float = 0.0, steps_per_cycle: int = 64,
+                  max_steps: int = MAX_SWEEP_STEPS) -> ResonancePassage:
+    """The largest |q| and |q''| of :func:`sweep_response`, each refined by a parabola through
+    the largest sample and its neighbours, against the steady peaks.
+
+    Parameters
+    ----------
+    omega, zeta, force, Omega_start, Omega_end, duration, omega_end
+        As :func:`sweep_response`; here 0 < zeta < 1/sqrt(2).
+    phase, steps_per_cycle, max_steps
+        As :func:`sweep_response`.
+    """
+    t, q, acc = sweep_response(omega=omega, zeta=zeta, force=force, Omega_start=Omega_start,
+                               Omega_end=Omega_end, duration=duration, omega_end=omega_end,
+                               phase=phase, steps_per_cycle=steps_per_cycle,
+                               max_steps=max_steps)
+    f = abs(finite("force", force))
+    peak, t_peak = _peak(t, q)
+    peak_acc, _ = _peak(t, acc)
+    w_end = omega if omega_end is None else omega_end
+    w_peak = omega + (w_end - omega) * t_peak / duration
+    stat = steady_peak(w_peak, zeta, f)
     Om_peak = float(Omega_start + (Omega_end - Omega_start) * t_peak / duration)
     return ResonancePassage(peak=peak, t_peak=t_peak, Omega_at_peak=Om_peak,
-                            steady_peak=float(stat), steps=int(t.size - 1))
+                            steady_peak=float(stat), peak_acceleration=peak_acc,
+                            steady_peak_acceleration=float(stat * w_peak * w_peak),
+                            steps=int(t.size - 1))
 
 
 def peak_ratio(zeta: float, eta: float, *, steps_per_cycle: int = 64,
@@ -314,3 +406,44 @@ def peak_ratio(zeta: float, eta: float, *, steps_per_cycle: int = 64,
                            duration=(hi - lo) / rate, steps_per_cycle=steps_per_cycle,
                            max_steps=max_steps)
     return result.ratio
+
+
+def crossing_peak_ratio(*, zeta: float, omega: float, omega_rate: float, Omega_rate: float,
+                        steps_per_cycle: int = 64, max_steps: int = MAX_SWEEP_STEPS) -> float:
+    """Peak |q''| over its steady peak f / (2 zeta sqrt(1 - zeta^2)) where a mode drifting at
+    ``omega_rate`` meets a forcing drifting at ``Omega_rate`` (both linear in time, equal
+    to ``omega`` at the crossing): the drifting equation of :func:`sweep_response` through
+    a window where Omega / omega runs over 1 -+ SWEEP_WINDOW (zeta + sqrt|eta|),
+    eta = (Omega_rate - omega_rate) / omega^2, both frequencies kept >= omega / 2.
+
+    Parameters
+    ----------
+    zeta : float
+        Damping ratio, 0 < zeta < 1/sqrt(2).
+    omega : float
+        The mode's frequency at the crossing (rad/s), > 0.
+    omega_rate, Omega_rate : float
+        d omega / dt and d Omega / dt (rad/s^2), different (a crossing, not a dwell).
+    steps_per_cycle, max_steps : int
+        As :func:`sweep_response`.
+    """
+    zeta = positive("zeta", zeta)
+    w = positive("omega", omega)
+    wr = finite("omega_rate", omega_rate)
+    Wr = finite("Omega_rate", Omega_rate)
+    eta = (Wr - wr) / (w * w)  # d(Omega / omega)/dt / omega at Omega = omega
+    if eta == 0.0:
+        raise ValueError("omega_rate, Omega_rate: equal, the forcing dwells at the resonance")
+    span = SWEEP_WINDOW * (zeta + math.sqrt(abs(eta))) / (abs(eta) * w)  # time to +-window
+    before = after = span
+    for rate in (wr, Wr):  # keep both frequencies >= omega / 2 over the window
+        if rate > 0.0:
+            before = min(before, 0.5 * w / rate)
+        elif rate < 0.0:
+            after = min(after, 0.5 * w / -rate)
+    duration = before + after
+    result = sweep_passage(omega=w - wr * before, omega_end=w + wr * after, zeta=zeta,
+                           force=1.0, Omega_start=w - Wr * before, Omega_end=w + Wr * after,
+                           duration=duration, steps_per_cycle=steps_per_cycle,
+                           max_steps=max_steps)
+    return result.acceleration_ratio
