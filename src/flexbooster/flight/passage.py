@@ -12,7 +12,7 @@
 
 Theory: docs/theory/flight.md. References: V. V. Bolotin, *The Dynamic Stability of Elastic
 Systems*, 1964 (frozen-coefficient growth); F. M. Lewis, Trans. ASME 54 (1932) 253-261;
-R. Markert, M. Seidler, Mech. Syst. Signal Process. 15 (2001) 1281-1291 (passage through
+R. Markert, M. Seidler, Int. J. Solids Struct. 38 (2001) 1975-1992 (passage through
 resonance); G. F. Franklin, J. D. Powell, M. Workman, *Digital Control of Dynamic Systems*,
 1998, sec. 6.3 (first-order hold); W. D. Hillis, G. L. Steele, Commun. ACM 29 (1986)
 1170-1183 (scan).
