@@ -34,8 +34,8 @@ __all__ = ["Passage", "accumulated_growth", "ResonancePassage", "step_maps", "sw
            "sweep_passage", "steady_peak", "peak_ratio", "crossing_peak_ratio", "MAX_SWEEP_STEPS",
            "SWEEP_WINDOW"]
 
-#: Default cap on the samples of one sweep (about 160 MB of work arrays).
-MAX_SWEEP_STEPS = 10_000_000
+#: Default cap on the samples of one sweep (about 100 MB of work arrays).
+MAX_SWEEP_STEPS = 2_000_000
 #: Half-width of the dimensionless sweep window of :func:`peak_ratio`, in units of
 #: zeta + sqrt(eta) around Omega / omega = 1.
 SWEEP_WINDOW = 12.0
@@ -248,30 +248,22 @@ _SCAN_BLOCK = 1 << 15
 
 
 def _affine_scan(Phi: np.ndarray, g: np.ndarray, x0: np.ndarray) -> np.ndarray:
-    """States x_0..x_N of x_{n+1} = Phi_n x_n + g_n: per block an inclusive scan of the affine
-    maps (Hillis & Steele 1986; log2(block) vectorised passes on the six components of the
-    2 x 2 maps), blocks chained."""
-    N = g.shape[0]
-    out = np.empty((N + 1, 2))
-    out[0] = x = x0
-    for lo in range(0, N, _SCAN_BLOCK):
-        hi = min(lo + _SCAN_BLOCK, N)
-        a, b = Phi[lo:hi, 0, 0].copy(), Phi[lo:hi, 0, 1].copy()
-        c, d = Phi[lo:hi, 1, 0].copy(), Phi[lo:hi, 1, 1].copy()
-        e, f = g[lo:hi, 0].copy(), g[lo:hi, 1].copy()
-        k = 1
-        while k < hi - lo:  # map[i] <- map[i] o map[i - k]: (A_i A_j, A_i g_j + g_i)
-            a2, b2, c2, d2 = a[:-k], b[:-k], c[:-k], d[:-k]
-            e2, f2 = e[:-k], f[:-k]
-            a1, b1, c1, d1 = a[k:], b[k:], c[k:], d[k:]
-            e[k:], f[k:] = a1 * e2 + b1 * f2 + e[k:], c1 * e2 + d1 * f2 + f[k:]
-            a[k:], b[k:], c[k:], d[k:] = (a1 * a2 + b1 * c2, a1 * b2 + b1 * d2,
-                                          c1 * a2 + d1 * c2, c1 * b2 + d1 * d2)
-            k *= 2
-        out[lo + 1:hi + 1, 0] = a * x[0] + b * x[1] + e
-        out[lo + 1:hi + 1, 1] = c * x[0] + d * x[1] + f
-        x = out[hi].copy()
-    return out
+    """States x_1..x_N of x_{n+1} = Phi_n x_n + g_n: an inclusive scan of the affine maps
+    (Hillis & Steele 1986; log2(N) vectorised passes on the six components of the 2 x 2
+    maps), applied to x_0."""
+    a, b = Phi[:, 0, 0].copy(), Phi[:, 0, 1].copy()
+    c, d = Phi[:, 1, 0].copy(), Phi[:, 1, 1].copy()
+    e, f = g[:, 0].copy(), g[:, 1].copy()
+    k = 1
+    while k < e.size:  # map[i] <- map[i] o map[i - k]: (A_i A_j, A_i g_j + g_i)
+        a2, b2, c2, d2 = a[:-k], b[:-k], c[:-k], d[:-k]
+        e2, f2 = e[:-k], f[:-k]
+        a1, b1, c1, d1 = a[k:], b[k:], c[k:], d[k:]
+        e[k:], f[k:] = a1 * e2 + b1 * f2 + e[k:], c1 * e2 + d1 * f2 + f[k:]
+        a[k:], b[k:], c[k:], d[k:] = (a1 * a2 + b1 * c2, a1 * b2 + b1 * d2,
+                                      c1 * a2 + d1 * c2, c1 * b2 + d1 * d2)
+        k *= 2
+    return np.stack([a * x0[0] + b * x0[1] + e, c * x0[0] + d * x0[1] + f], axis=1)
 
 
 def sweep_response(*, omega: float, zeta: float, force: float, Omega_start: float,
@@ -320,15 +312,18 @@ def sweep_response(*, omega: float, zeta: float, force: float, Omega_start: floa
     alpha = (Om1 - Om0) / duration
     u = force * np.cos(phase + Om0 * t + 0.5 * alpha * t * t)  # f cos(phi(t))
     w_of = (omega_end - omega) / duration
-    if omega_end == omega:
-        Phi, Ga, Gb = step_maps([omega], zeta, h)
-        Phi, Ga, Gb = (np.broadcast_to(a, (steps,) + a.shape[1:]) for a in (Phi, Ga, Gb))
-    else:
-        Phi, Ga, Gb = step_maps(omega + w_of * (t[:-1] + 0.5 * h), zeta, h)  # midpoint w
-    g = Ga * u[:-1, None] + Gb * u[1:, None]
     H = force / (omega * omega - Om0 * Om0 + 2j * zeta * omega * Om0)  # steady at the start
-    x0 = np.array([np.real(H * np.exp(1j * phase)), np.real(1j * Om0 * H * np.exp(1j * phase))])
-    x = _affine_scan(Phi, g, x0)
+    x = np.empty((steps + 1, 2))
+    x[0] = np.real(H * np.exp(1j * phase)), np.real(1j * Om0 * H * np.exp(1j * phase))
+    constant = step_maps([omega], zeta, h) if omega_end == omega else None
+    for lo in range(0, steps, _SCAN_BLOCK):  # blocks bound the work arrays
+        hi = min(lo + _SCAN_BLOCK, steps)
+        if constant is not None:
+            Phi, Ga, Gb = (np.broadcast_to(m, (hi - lo,) + m.shape[1:]) for m in constant)
+        else:
+            Phi, Ga, Gb = step_maps(omega + w_of * (t[lo:hi] + 0.5 * h), zeta, h)  # midpoint
+        g = Ga * u[lo:hi, None] + Gb * u[lo + 1:hi + 1, None]
+        x[lo + 1:hi + 1] = _affine_scan(Phi, g, x[lo])
     w = omega + w_of * t
     acc = u - 2.0 * zeta * w * x[:, 1] - w * w * x[:, 0]  # q'' from the equation of motion
     return t, x[:, 0], acc

@@ -177,7 +177,7 @@ def track_modes(shapes_per_time: Any, frequencies_per_time: Any, *, mass: Any = 
                 continued.append(j)
                 taken.add(int(c))
         entering = [c for c in np.argsort(freqs[t + 1], kind="stable") if int(c) not in taken]
-        for c in entering:  # a new identity for each mode without a continuation
+        for c in entering:  # an identity of its own for each mode without a continuation
             j = len(history)
             history[j] = [(t + 1, int(c))]
             links.append([])
