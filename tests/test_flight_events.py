@@ -22,6 +22,7 @@ from flexbooster.flight import (
     EVENT_COLUMNS,
     FlightEvent,
     band_events,
+    band_rate,
     meeting_intervals,
     resonance_events,
 )
@@ -106,6 +107,36 @@ def test_constant_system_and_oscillation_efolds_are_rate_times_duration():
     (event,) = band_events(times, bands, np.full((9, 2), 2 * w))
     assert event.efolds == pytest.approx(sigma * 80.0, rel=1e-12)
     assert (event.t_start_s, event.t_end_s) == (0.0, 80.0)
+
+
+def test_band_rate_is_the_largest_rate_inside_the_overlap():
+    """Independent method: the largest Floquet growth rate of the damped Mathieu mode
+    (w = 30 rad/s, mu = 0.1, zeta = 0.01) over the overlap of its principal region with an
+    oscillation band, by :func:`band_rate` (one evaluation) against a 2001-point scan of
+    floquet.growth_rate over the overlap: 1e-9 relative where the largest is at an end of the
+    overlap (the scan includes the ends), 1e-6 where the overlap holds the band's maximum (the
+    test's band takes it from a 4001-point grid, error quadratic in the spacing); None for a
+    band outside the region."""
+    w, mu, zeta = 30.0, 0.1, 0.01
+
+    def growth(Om):
+        Om = np.atleast_1d(np.asarray(Om, dtype=float))
+        return growth_rate(np.eye(1), 2 * zeta * w * np.eye(1), w * w * np.eye(1),
+                           -2 * mu * w * w * np.eye(1), Om)
+
+    grid = np.linspace(2 * w * 0.9, 2 * w * 1.1, 4001)
+    rates = growth(grid)
+    inside = grid[rates > 0.0]
+    i_max = int(np.argmax(rates))
+    band = _band(float(inside[0]), float(inside[-1]), float(rates[i_max]))
+    band = Band(**{**band.__dict__, "Omega_at_max": float(grid[i_max])})
+    for lo, hi in [(55.0, 61.0), (59.0, 60.5), (61.2, 70.0), (50.0, 57.5)]:
+        got = band_rate(band, lo, hi, lambda Om: float(growth(Om)[0]))
+        a, b = max(lo, band.Omega_lo), min(hi, band.Omega_hi)
+        scan = float(np.max(growth(np.linspace(a, b, 2001))))
+        holds_max = a <= band.Omega_at_max <= b
+        assert got == pytest.approx(scan, rel=1e-6 if holds_max else 1e-9), (lo, hi)
+    assert band_rate(band, 10.0, 20.0, lambda Om: 1.0) is None
 
 
 def test_band_present_at_one_end_is_held_over_the_segment():

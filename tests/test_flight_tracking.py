@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 import scipy.linalg
 
-from flexbooster.flight import mac_matrix, track_modes
+from flexbooster.flight import MODE_COLUMNS, mac_matrix, mode_rows, track_modes
 
 
 def test_mac_closed_form():
@@ -53,6 +53,11 @@ def test_two_dof_crossing_frequencies_keep_identities():
     # plain MAC (no mass) keeps the identities too: the shapes are distinct
     plain = track_modes(shapes, freqs)
     assert plain.order.tolist() == tracked.order.tolist()
+    # the flight-modes.csv rows: one per time and mode, hz = omega / (2 pi)
+    rows = mode_rows(times, tracked, k=0, types=["axial", "bending"])
+    assert len(rows) == 24 and tuple(rows[0]) == MODE_COLUMNS
+    assert rows[-1] == {"time_s": 1.0, "k": 0, "mode": 1, "hz": pytest.approx(
+        np.sqrt(2.0) / (2 * np.pi), rel=1e-10), "type": "bending"}
 
 
 def _rod(n_el: int, added: float, tip: float):

@@ -9,6 +9,7 @@ from .events import (
     FlightEvent,
     band_events,
     band_key,
+    band_rate,
     meeting_intervals,
     resonance_events,
     worst_first,
@@ -27,10 +28,11 @@ from .passage import (
     sweep_response,
 )
 from .timeline import FlightPoint, Timeline, frozen_times
-from .tracking import TrackedModes, mac_matrix, track_modes
+from .tracking import MODE_COLUMNS, TrackedModes, mac_matrix, mode_rows, track_modes
 
-__all__ = ["FlightPoint", "Timeline", "frozen_times", "TrackedModes", "mac_matrix",
-           "track_modes", "MAX_SWEEP_STEPS", "SWEEP_WINDOW", "Passage", "ResonancePassage",
-           "accumulated_growth", "crossing_peak_ratio", "peak_ratio", "steady_peak",
-           "step_maps", "sweep_passage", "sweep_response", "EVENT_COLUMNS", "FlightEvent",
-           "band_events", "band_key", "meeting_intervals", "resonance_events", "worst_first"]
+__all__ = ["FlightPoint", "Timeline", "frozen_times", "TrackedModes", "MODE_COLUMNS",
+           "mac_matrix", "mode_rows", "track_modes", "MAX_SWEEP_STEPS", "SWEEP_WINDOW",
+           "Passage", "ResonancePassage", "accumulated_growth", "crossing_peak_ratio",
+           "peak_ratio", "steady_peak", "step_maps", "sweep_passage", "sweep_response",
+           "EVENT_COLUMNS", "FlightEvent", "band_events", "band_key", "band_rate",
+           "meeting_intervals", "resonance_events", "worst_first"]

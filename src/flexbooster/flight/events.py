@@ -20,8 +20,8 @@ from ..checks import finite_array, positive
 from ..floquet import StepLimitError
 from .passage import Passage, accumulated_growth, crossing_peak_ratio
 
-__all__ = ["FlightEvent", "EVENT_COLUMNS", "band_key", "band_events", "resonance_events",
-           "meeting_intervals", "worst_first"]
+__all__ = ["FlightEvent", "EVENT_COLUMNS", "band_key", "band_events", "band_rate",
+           "resonance_events", "meeting_intervals", "worst_first"]
 
 #: Columns of flight-events.csv, in order (the keys of :meth:`FlightEvent.to_dict`).
 EVENT_COLUMNS = ("mechanism", "k", "modes", "t_start_s", "t_end_s", "max_growth_1_s",
@@ -93,6 +93,36 @@ def band_key(band: Band) -> Hashable:
     """
     return (band.mechanism, band.k, band.kind, band.order,
             tuple(m.label for m in band.modes))
+
+
+def band_rate(band: Band, osc_lo: float, osc_hi: float,
+              growth_at: Callable[[float], float]) -> float | None:
+    """The largest growth rate of a region inside the oscillation band [osc_lo, osc_hi] at one
+    frozen time (1/s), for ``rates_per_time`` of :func:`band_events`; None where they do not
+    meet. The growth rate is taken unimodal across the region (it rises from 0 at one edge to
+    ``growth_rate_max`` at ``Omega_at_max`` and falls to 0 at the other, as in a Mathieu
+    tongue): inside the overlap the largest is ``growth_rate_max`` where the overlap holds
+    ``Omega_at_max``, else the rate at the overlap's end nearer to it (one evaluation).
+
+    Parameters
+    ----------
+    band : Band
+        The region at this frozen time.
+    osc_lo, osc_hi : float
+        The oscillation band (rad/s), osc_lo <= osc_hi.
+    growth_at : callable
+        Omega (rad/s) -> the region's growth rate there (1/s), the caller's Floquet analysis.
+    """
+    lo, hi = max(band.Omega_lo, float(osc_lo)), min(band.Omega_hi, float(osc_hi))
+    if lo > hi:
+        return None
+    if lo <= band.Omega_at_max <= hi:
+        return float(band.growth_rate_max)
+    end = hi if hi < band.Omega_at_max else lo  # the overlap's end nearer the maximum
+    rate = float(growth_at(end))
+    if not math.isfinite(rate):
+        raise ValueError(f"growth_at({end!r}) = {rate!r}: must be finite")
+    return rate
 
 
 def _linear_nonnegative(g0: float, g1: float) -> tuple[float, float] | None:

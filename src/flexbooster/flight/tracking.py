@@ -17,7 +17,10 @@ from scipy.optimize import linear_sum_assignment
 
 from ..checks import finite, finite_array
 
-__all__ = ["TrackedModes", "mac_matrix", "track_modes"]
+__all__ = ["MODE_COLUMNS", "TrackedModes", "mac_matrix", "mode_rows", "track_modes"]
+
+#: Columns of flight-modes.csv, in order (the keys of :func:`mode_rows`).
+MODE_COLUMNS = ("time_s", "k", "mode", "hz", "type")
 
 
 def mac_matrix(a: Any, b: Any, *, mass: Any = None) -> np.ndarray:
@@ -209,3 +212,30 @@ def _masses(mass: Any, T: int, n: int) -> list[np.ndarray] | None:
         if M.shape != (n, n):
             raise ValueError(f"mass[{t}] = shape {M.shape}: must be ({n}, {n})")
     return masses
+
+
+def mode_rows(times: Any, tracked: TrackedModes, *, k: int,
+              types: Any = None) -> list[dict[str, Any]]:
+    """The rows of flight-modes.csv (:data:`MODE_COLUMNS`) of one harmonic: one per frozen
+    time and present identity, ``mode`` the identity, ``hz`` its frequency / (2 pi).
+
+    Parameters
+    ----------
+    times : array_like
+        The frozen times (s), one per row of ``tracked.order``.
+    tracked : TrackedModes
+        The identities, frequencies in rad/s.
+    k : int
+        The circumferential harmonic.
+    types : array_like of str, optional
+        (T, N) or (N,): each identity's type ("axial", "bending", ...); default None.
+    """
+    t = finite_array("times", times).ravel()
+    T, N = tracked.order.shape
+    if t.size != T:
+        raise ValueError(f"times: {t.size} values, must be {T} like tracked.order")
+    kinds = None if types is None else np.broadcast_to(np.asarray(types, dtype=object), (T, N))
+    return [{"time_s": float(t[i]), "k": int(k), "mode": int(j),
+             "hz": float(tracked.frequencies[i, j] / (2.0 * np.pi)),
+             "type": None if kinds is None else kinds[i, j]}
+            for i in range(T) for j in range(N) if tracked.order[i, j] >= 0]
