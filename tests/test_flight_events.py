@@ -55,7 +55,8 @@ def test_moving_band_meets_a_known_frequency_at_the_edge_crossings():
 def test_rate_linear_in_time_is_integrated_exactly():
     """Closed form: the same band with growth rate 0.1 t 1/s at the frozen times (linear in
     between): e-folds = integral of 0.1 t over [4, 5] = 0.45, the largest rate 0.5 at t = 5;
-    rates_per_time overrides growth_rate_max (here 2 x 0.1 t: 0.9 e-folds). Tolerance 1e-12."""
+    rates_per_time overrides growth_rate_max (here 2 x 0.1 t: 0.9 e-folds), None entries
+    fall back to it. Tolerance 1e-12."""
     bands = [[_band(10 + 2 * t, 12 + 2 * t, 0.1 * t)] for t in TIMES]
     osc = np.full((TIMES.size, 2), 20.0)
     (event,) = band_events(TIMES, bands, osc)
@@ -63,6 +64,9 @@ def test_rate_linear_in_time_is_integrated_exactly():
     assert event.max_growth_1_s == pytest.approx(0.5, rel=1e-12)
     (twice,) = band_events(TIMES, bands, osc, rates_per_time=[[0.2 * t] for t in TIMES])
     assert twice.efolds == pytest.approx(0.9, rel=1e-12)
+    # None (the bands do not meet at that frozen time): the band's growth_rate_max
+    (same,) = band_events(TIMES, bands, osc, rates_per_time=[[None] for _ in TIMES])
+    assert same.efolds == pytest.approx(0.45, rel=1e-12)
 
 
 def test_moving_oscillation_band_meets_a_fixed_band():

@@ -248,9 +248,10 @@ def band_events(times: Any, bands_per_time: Sequence[Sequence[Band]], oscillatio
         Per frozen time, the bands of every mechanism (keys unique within a time).
     oscillation : array_like
         (T, 2): the oscillation band (lo, hi) at each frozen time (rad/s).
-    rates_per_time : sequence of sequence of float, optional
+    rates_per_time : sequence of sequence of float or None, optional
         Per frozen time and band, the growth rate to integrate (1/s): the largest inside the
-        band and the oscillation band. Default each band's ``growth_rate_max``, an upper
+        band and the oscillation band (:func:`band_rate`). Default, and where an entry is
+        None (the bands do not meet at that time), the band's ``growth_rate_max``, an upper
         bound where the oscillation band holds only part of the band.
     key : callable
         Band -> hashable identity across times (default :func:`band_key`).
@@ -275,7 +276,7 @@ def band_events(times: Any, bands_per_time: Sequence[Sequence[Band]], oscillatio
             row = table.setdefault(kb, [None] * t.size)
             if row[j] is not None:
                 raise ValueError(f"bands_per_time[{j}]: two bands with the key {kb!r:.80}")
-            rate = band.growth_rate_max if rates is None else rates[n]
+            rate = band.growth_rate_max if rates is None or rates[n] is None else rates[n]
             if not math.isfinite(float(rate)):
                 raise ValueError(f"rates_per_time[{j}][{n}] = {rate!r}: must be finite")
             row[j] = (band, float(rate))
