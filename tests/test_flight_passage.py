@@ -262,6 +262,20 @@ def test_drifting_mode_sweep_matches_direct_integration():
     assert ratio == pytest.approx(np.max(np.abs(acc)) / r.steady_peak_acceleration, rel=0.02)
 
 
+def test_sweep_window_is_wide_enough(monkeypatch):
+    """Invariant (range independence): doubling SWEEP_WINDOW (the sweep's start further below
+    and its end further above the resonance) changes peak_ratio and crossing_peak_ratio by
+    less than 1e-3 relative (zeta = 0.02, eta = 1e-3; measured 3e-4)."""
+    from flexbooster.flight import passage
+
+    base = (peak_ratio(0.02, 1e-3),
+            crossing_peak_ratio(zeta=0.02, omega=1.0, omega_rate=1e-3, Omega_rate=0.0))
+    monkeypatch.setattr(passage, "SWEEP_WINDOW", 2.0 * passage.SWEEP_WINDOW)
+    wide = (peak_ratio(0.02, 1e-3),
+            crossing_peak_ratio(zeta=0.02, omega=1.0, omega_rate=1e-3, Omega_rate=0.0))
+    np.testing.assert_allclose(base, wide, rtol=1e-3)
+
+
 def test_steps_per_cycle_converges():
     """Invariant: the sampled forcing's error falls like (2 pi / steps)^2; 64 and 512 steps per
     cycle agree to 1e-3 relative."""
