@@ -28,7 +28,7 @@ LAYER = {
     "errors": "input", "units": "input", "checks": "input", "case": "input",
     "vehicle_case": "input",
     "memo": "core", "floquet": "core", "bands": "core", "shell_of_revolution": "core",
-    "dynamics": "core",
+    "dynamics": "core", "flight": "core",
     "model": "model", "cost": "model", "_threads": "pipeline",
     "results": "results", "danger": "results", "analysis": "pipeline",
     "present": "present", "sweep": "sweep", "cli": "cli", "__init__": "api", "__main__": "cli",
