@@ -7,6 +7,7 @@ eq. 11-17).
 from __future__ import annotations
 
 import math
+import os
 import signal
 from pathlib import Path
 
@@ -16,6 +17,7 @@ import flexbooster
 from conftest import dump_toml
 from flexbooster import cost
 from flexbooster.analysis import analyze
+from flexbooster.case import default_case_text
 from flexbooster.cli import main
 from flexbooster.errors import CaseError
 from flexbooster.model import model_from_case
@@ -174,3 +176,46 @@ def test_directory_as_case_file_and_file_as_output(tmp_path, capsys):
         assert len(capsys.readouterr().err.strip().splitlines()) == 1
 
 
+
+
+# --------------------------------------------------------------------------------------------
+# Case files that are not plain files (issue 36): one line, exit 2, never a block
+# --------------------------------------------------------------------------------------------
+def _special_case_file(folder: Path, kind: str) -> Path:
+    path = folder / f"{kind}.toml"
+    if kind == "symlink-loop":
+        path.symlink_to(folder / "other.toml")
+        (folder / "other.toml").symlink_to(path)
+    elif kind == "fifo":
+        os.mkfifo(path)
+    elif kind == "device":
+        path = Path("/dev/zero")
+    return path
+
+
+@pytest.mark.parametrize("kind", ["symlink-loop", "fifo", "device"])
+def test_case_file_that_is_not_a_regular_file_is_refused(tmp_path, capsys, alarm, kind):
+    """Source: POSIX (open() of a FIFO blocks until a writer; a symlink loop is ELOOP): the path
+    is refused before it is opened, exit 2, one line naming the case file (the alarm fixture
+    turns a block into a failure)."""
+    path = _special_case_file(tmp_path, kind)
+    assert run_cli(["run", str(path), "-q", "-o", str(tmp_path / "o")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and err.startswith("flexbooster: error: case file = ")
+    assert str(path) in err
+
+
+def test_case_file_with_a_utf8_byte_order_mark_is_read(tmp_path):
+    """Source: the Unicode standard (U+FEFF at the start of a UTF-8 file is a signature, not
+    content): the same case as without the mark, field for field."""
+    text = default_case_text()
+    path = tmp_path / "bom.toml"
+    path.write_bytes(b"\xef\xbb\xbf" + text.encode("utf-8"))
+    assert flexbooster.load_case(path) == flexbooster.default_case()
+
+
+@pytest.mark.parametrize("source", [42, None, 3.5, b"case.toml"])
+def test_load_case_of_a_wrong_type_is_a_type_error_naming_source(source):
+    """Source: the signature (a path or a mapping): TypeError naming ``source``."""
+    with pytest.raises(TypeError, match=r"^source = "):
+        flexbooster.load_case(source)
