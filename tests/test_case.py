@@ -43,6 +43,10 @@ PSI = LBF / INCH**2
         ("1.5 g", "acceleration", 1.5 * 9.80665),  # standard gravity, exact (CGPM 1901)
         ("2 m/s^2", "acceleration", 2.0),
         ("3 g", "mass", 0.003),  # a gram where a mass is asked
+        ("1e20 Pa", "pressure", 1e20),  # the ends of units.MAGNITUDE_RANGE
+        ("1e-20 m", "length", 1e-20),
+        (0.0, "length", 0.0),  # zero: its sign rule is the field's
+        (1e-300, "dimensionless", 1e-300),  # no range for a ratio (a gimbal gain K ~ 0)
     ],
 )
 def test_unit_conversion(value, kind, expected):
@@ -73,6 +77,10 @@ def test_unit_conversion(value, kind, expected):
         (float("inf"), "pressure", "must be finite"),
         (10**400, "length", "must be finite"),  # a 400-digit TOML integer: OverflowError
         ("1e400 m", "length", "must be finite"),
+        # units.MAGNITUDE_RANGE (1e-20..1e20 SI) for dimensional values
+        (1.7e308, "pressure", "magnitude must lie in 1e-20..1e+20 Pa"),
+        ("1e-21 m", "length", "magnitude"),
+        (-1e21, "force", "magnitude"),
     ],
 )
 def test_unit_errors_name_field_value_rule(value, kind, rule):

@@ -80,11 +80,11 @@ def test_shell_buckling_is_a_named_warning(case_dict):
 #: Extra probes of a review's list (the rest is tests/test_case.py's table).
 EXTRA_PROBES = [
     ("booster.cylinder1.radius", 1e300, "booster"),  # once an OverflowError
-    ("booster.thickness", 1e-300, "thrust.F0"),  # an absurd Mathieu a
-    ("booster.rho", 1e-300, "booster"),  # omega_1 overflows
+    ("booster.thickness", 1e-300, "booster.thickness"),  # units.MAGNITUDE_RANGE
+    ("booster.rho", 1e-300, "booster.rho"),  # omega_1 overflows: units.MAGNITUDE_RANGE
     ("thrust.F0", 1e300, "thrust.F0"),
     ("thrust.F0", 1e12, "thrust.F0"),
-    ("thrust.K", 1e300, "thrust.F0"),
+    ("thrust.K", 1e300, "thrust.F0"),  # dimensionless: no magnitude range, the load check
     ("thrust.n_omega", 10**400, "thrust.n_omega"),  # a 400-digit integer literal
     ("thrust.gamma", nan, "thrust.gamma"),
     ("thrust.omega_max", inf, "thrust.omega_max"),
@@ -108,6 +108,35 @@ def test_bad_case_probe_exit_2_one_line(case_dict, tmp_path, capsys, path, value
     assert err.count(field) >= 1
     head = err.removeprefix("flexbooster: error: ").split(" = ")[0]
     assert err.count(head + " ") + err.count(head + ":") <= 2  # the field once (plus rule)
+
+
+#: Issue 36's bad inputs that were accepted silently or failed as internal errors: (path, value,
+#: the rule's words). Source of each "silently wrong" reading: pint 0.24 ("5,05 m" -> 505 m,
+#: "mm 20" -> 0.02 m, "5\u200b m" -> 5 m, "psi" -> 1 psi).
+ISSUE36_PROBES = [
+    ("booster.cylinder2.radius", "5,05 m", "comma"),
+    ("booster.cylinder2.radius", "mm 20", "must start with a number"),
+    ("booster.cylinder2.radius", "5\u200b m", "invisible"),
+    ("booster.E", "psi", "must start with a number"),
+    ("booster.E", 1.7e308, "magnitude"),  # was 7 lines: RuntimeWarning, internal error
+    ("booster.E", 1e80, "magnitude"),  # was an overflow in the Floquet step count
+    ("booster.rho", "1e-300 kg/m^3", "magnitude"),
+]
+
+
+@pytest.mark.parametrize(("path", "value", "rule"), ISSUE36_PROBES,
+                         ids=[f"{p}={v!r}" for p, v, _ in ISSUE36_PROBES])
+def test_issue36_bad_value_is_one_line_naming_field_value_rule(case_dict, tmp_path, capsys,
+                                                               path, value, rule):
+    """Source: the issue's list; each refused before any solver (exit 2, one line, no
+    RuntimeWarning) with the field, the value as written and the rule."""
+    _set(case_dict, path, value)
+    case = tmp_path / "bad.toml"
+    case.write_text(dump_toml(case_dict))
+    assert run_cli(["run", str(case), "-q", "--no-figures", "-o", str(tmp_path / "o")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1, err
+    assert err.startswith(f"flexbooster: error: {path} = {value!r}: ") and rule in err
 
 
 CLI_PROBES = [

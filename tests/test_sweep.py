@@ -44,7 +44,7 @@ from flexbooster.sweep import command  # noqa: E402
 from flexbooster.sweep.spec import load_sweep, make_spec, parse_axes, point_cases  # noqa: E402
 
 RTOL = 1e-12  # sweep point vs serial analyze: same code on the workers (brief: 1e-12)
-GOOD_E, BAD_E = "10.5e6 psi", "1e-300 Pa"  # BAD_E: valid for the case model (E > 0), but the
+GOOD_E, BAD_E = "10.5e6 psi", "1e-15 Pa"  # BAD_E: valid for the case model (E > 0), but the
 # analysis refuses it (issue 18: the thrust is above the divergence load of the steady system)
 SOFT_E = "1e8 Pa"  # a soft booster: strong beam-action bands (growth 0.1 1/s at gamma = 0.3)
 

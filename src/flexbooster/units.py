@@ -21,7 +21,7 @@ from .errors import CaseError
 if TYPE_CHECKING:
     import pint
 
-__all__ = ["EXTRA_UNITS", "SI_UNITS", "US_UNITS", "to_si", "to_us"]
+__all__ = ["EXTRA_UNITS", "MAGNITUDE_RANGE", "SI_UNITS", "US_UNITS", "to_si", "to_us"]
 
 #: The inch-pound unit shown beside each SI unit when ``[output] units = "US"``.
 US_UNITS: dict[str, str] = {
@@ -47,6 +47,12 @@ SI_UNITS: dict[str, str] = {
     "acceleration": "m/s^2",
     "dimensionless": "",
 }
+
+#: Smallest and largest magnitude of a non-zero dimensional value in SI: wider than any
+#: structure, load or frequency this tool models, narrow enough that the solvers' products of
+#: frequencies, stiffnesses and times stay in double precision (E = 1e80 Pa overflows the
+#: Floquet step count).
+MAGNITUDE_RANGE: tuple[float, float] = (1e-20, 1e20)
 
 #: Aerospace units that pint does not define, added to its registry (name = definition).
 EXTRA_UNITS: tuple[str, ...] = ("Msi = 1e6 * psi", "lbm = pound")
@@ -119,7 +125,8 @@ def to_si(field: str, value: object, kind: str) -> float:
     """Convert a case value to a float in the SI unit of ``kind`` (rad/s for angular frequencies).
     CaseError for a boolean, an unparsable string, an unknown or wrong-dimension unit, a
     string that pint would read other than as meant (a comma, an invisible character, no
-    leading number), or a non-finite value; ValueError for an unknown ``kind``. Beyond pint's
+    leading number), or a non-finite value or a dimensional one of a magnitude outside
+    :data:`MAGNITUDE_RANGE`; ValueError for an unknown ``kind``. Beyond pint's
     units: Msi and lbm (:data:`EXTRA_UNITS`), and "g" as standard gravity where ``kind`` is
     "acceleration".
 
@@ -172,6 +179,10 @@ def to_si(field: str, value: object, kind: str) -> float:
         )
     if not math.isfinite(result):
         raise CaseError(field, value, "must be finite")
+    low, high = MAGNITUDE_RANGE
+    if target and result != 0.0 and not low <= abs(result) <= high:
+        raise CaseError(field, value, f"magnitude must lie in {low:g}..{high:g} {target} "
+                        "(or be 0): beyond any structure this tool models")
     return result
 
 
