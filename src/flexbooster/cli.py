@@ -328,7 +328,8 @@ def stability(
     with _progress(len(STAGES), quiet) as step:
         results = analyze(case, progress=step, vehicle=False,  # the memo table only
                           on_estimate=getattr(step, "estimate", None))
-    _report(results, fmt, quiet, print_stability)
+    _report(results, fmt, quiet, lambda res, console: print_stability(
+        res, console, roots_file=STABILITY_FILES[0], bands_file=None))
     if results.stability is None:  # a resource limit: the warning says which
         raise CaseError("truncation", "stability", "; ".join(w.message for w in results.warnings
                                                           if w.code == "stability-skipped"))
@@ -460,9 +461,12 @@ def simulate(
         click.echo(f"{n_grow} of {len(relevant)} modal coordinates growing over the window\n"
                    f"({len(verdicts) - len(relevant)} below 1e-9 of the largest left out); "
                    f"the {min(10, len(relevant))} largest:")
-        shown = relevant[:10] + [v for v in relevant[10:] if v[1] == "growing"][:3]
-        for name, verdict, peak in shown:
+        for name, verdict, peak in relevant[:10]:
             click.echo(f"  {name}: {verdict} (peak {peak:.3g} m)")
+        below = [v for v in relevant[10:] if v[1] == "growing"]
+        if below:  # one line after the list, never more rows in it
+            click.echo(f"{len(below)} growing below these (the largest: {below[0][0]}, peak "
+                       f"{below[0][2]:.3g} m); every coordinate in time-histories.csv")
         peak = res.max_displacement()
         click.echo("max displacement (m): " + ", ".join(f"{c} {v:.4g}" for c, v in peak.items()))
     _wrote(written, fmt, quiet)
