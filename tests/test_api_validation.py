@@ -485,3 +485,77 @@ def test_public_function_rejects_bad_argument_naming_it(alarm, name, call):
     assert name in str(info.value) and "\n" not in str(info.value), str(info.value)
 
 
+
+
+#: Issue 36's bad library calls (an independent review's 103): (id, exception type, the
+#: parameter the message must name, call). Each was accepted, returned inf, hung, or raised
+#: another type (noted); the expected rule is the function's documented contract.
+ISSUE36_CALLS = [
+    ("mass_properties-h-above-R", ValueError, "h",
+     lambda: geo.mass_properties(**{**_G, "h": 6.0})),  # accepted: h > R1 = 5
+    ("mass_properties-R1-str", ValueError, "R1",
+     lambda: geo.mass_properties(**{**_G, "R1": "5"})),  # accepted: float("5")
+    ("Cylinder-thickness-above-radius", ValueError, "thickness",
+     lambda: sor_geometry.Cylinder(1.0, 1.0, 2.0, E=7e10, nu=0.3, rho=2700.0)),
+    ("Cone-thickness-above-radius", ValueError, "thickness",
+     lambda: sor_geometry.Cone(1.0, 0.5, 1.0, 0.6, E=7e10, nu=0.3, rho=2700.0)),
+    ("floquet.hill_exponents-M-complex", ValueError, "M",  # imaginary part dropped
+     lambda: fhill.hill_exponents(np.eye(2) * (1 + 1j), None, _A2, _B2, [1.0])),
+    ("excitation-alpha-shape", ValueError, "alpha",  # reshaped (2, 3) -> (3, 2)
+     lambda: stability.excitation(stability.excitation_curves(2, 1), np.array([1., 2., 3.]),
+                                  np.zeros(3), np.zeros((2, 3)))),
+    ("mode_shape-derivative-7", ValueError, "derivative",
+     lambda: beam.mode_shape(1, np.array([0.5]), derivative=7)),
+    ("pitch_frequency-overflow", ValueError, "F0",  # returned inf
+     lambda: pitch.pitch_frequency(F0=1e308, d2=1.0, K=1e308, I_cm=1.0)),
+    ("mathieu_parameters-Omega-denormal", ValueError, "Omega",  # returned inf
+     lambda: pitch.mathieu_parameters(Omega=[5e-324], omega_psi=1.0, gamma=0.1)),
+    ("load_case-int", TypeError, "source", lambda: flexbooster.load_case(42)),
+    ("analyze-str", TypeError, "case", lambda: analyze("x")),  # AttributeError
+    ("analyze_vehicle-str", TypeError, "case", lambda: analysis.analyze_vehicle("x")),
+    ("simulate_case-str", TypeError, "case",
+     lambda: analysis.simulate_case("x", 10.0, tau_max=1.0)),
+    ("transition_curves-r_max-huge", ValueError, "r_max",  # MemoryError (7 TiB)
+     lambda: mathieu.transition_curves([0.5], r_max=10**6)),
+    ("transition_curves-q-huge", ValueError, "q",
+     lambda: mathieu.transition_curves([1e12], r_max=2)),
+    ("excitation_curves-huge", ValueError, "R",  # hung
+     lambda: stability.excitation_curves(R=10**6, S=10**6)),
+    ("characteristic_exponent-shapes", ValueError, "a, q",  # numpy's broadcast message
+     lambda: mathieu.characteristic_exponent([1.0, 2.0], [0.1, 0.2, 0.3])),
+    ("monodromy_exponents-shapes", ValueError, "Omega, gamma",
+     lambda: ba.monodromy_exponents(_system(), [10.0, 20.0], [0.1, 0.2, 0.3])),
+]
+
+
+@pytest.mark.parametrize(("kind", "name", "call"), [c[1:] for c in ISSUE36_CALLS],
+                         ids=[c[0] for c in ISSUE36_CALLS])
+def test_issue36_bad_call_raises_the_documented_type_naming_the_parameter(alarm, kind, name,
+                                                                          call):
+    """Source: issue 36's list; a ValueError (a TypeError for a wrong type) on one line naming
+    the parameter, without a RuntimeWarning (no silent inf) and without a hang (alarm)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        with pytest.raises(Exception) as info:  # noqa: PT011 - the exact type is checked below
+            call()
+    assert type(info.value) is kind or (kind is ValueError and isinstance(info.value, kind)), \
+        repr(info.value)
+    assert name in str(info.value) and "\n" not in str(info.value), str(info.value)
+
+
+def test_transition_curves_within_the_bounds_match_the_tables():
+    """Source: scipy.special.mathieu_a / mathieu_b (an independent continued-fraction
+    implementation; A&S table 20.1 at q = 1: a0 = -0.45513860, b1 = -0.11024882,
+    a1 = 1.85910807), tolerance 1e-9 relative; the batched solve (several batches of
+    _TRANSITION_ENTRIES) gives the same values as scipy over a grid of 1500 q."""
+    from scipy.special import mathieu_a, mathieu_b
+
+    curves = mathieu.transition_curves(np.ones(3), r_max=1)
+    assert curves["a0"] == pytest.approx([-0.45513860] * 3, abs=1e-8)
+    assert curves["b1"] == pytest.approx([-0.11024882] * 3, abs=1e-8)
+    assert curves["a1"] == pytest.approx([1.85910807] * 3, abs=1e-8)
+    q = np.linspace(0.0, 4.0, 1500)  # two batches of 1438 (54 x 54 matrices)
+    big = mathieu.transition_curves(q, r_max=40)
+    every = slice(None, None, 97)  # points of each batch
+    assert big["a40"][every] == pytest.approx(mathieu_a(40, q[every]), rel=1e-9)
+    assert big["b7"][every] == pytest.approx(mathieu_b(7, q[every]), rel=1e-9)

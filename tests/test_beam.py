@@ -350,7 +350,8 @@ def test_phase_choice_changes_integrals():
     zero = appendix_b.coefficient_integrals(p, 5, 5, 1, "closed", "zero")
     memo = appendix_b.coefficient_integrals(p, 5, 5, 1, "closed", "memo")
     assert np.max(np.abs(zero.s - memo.s)) > 0.1
-    p_sym = mass_properties(1.0, 3.0, 1e-9, 1e-9, 0.02, 2768.0)  # L2 -> 0: d1 = d2
+    # L2 -> 0: d1 = d2 (R2 = 0: no second shell; a thin shell needs h < R2 where R2 > 0)
+    p_sym = mass_properties(1.0, 3.0, 0.0, 1e-9, 0.02, 2768.0)
     zero = appendix_b.coefficient_integrals(p_sym, 5, 5, 1, "closed", "zero")
     memo = appendix_b.coefficient_integrals(p_sym, 5, 5, 1, "closed", "memo")
     np.testing.assert_allclose(memo.s, zero.s, rtol=0, atol=1e-8)

@@ -35,6 +35,18 @@ PSI = LBF / INCH**2
         ("1 kHz", "angular_frequency", 2000 * math.pi),
         ("60 rpm", "angular_frequency", 2 * math.pi),
         ("0.33", "dimensionless", 0.33),
+        # aerospace units beyond pint's own (units.EXTRA_UNITS): exact definitions
+        ("10.5 Msi", "pressure", 10.5e6 * PSI),
+        ("10 ksi", "pressure", 10e3 * PSI),
+        ("3 lbm", "mass", 3 * 0.45359237),  # the international pound, exact
+        ("2 slug", "mass", 2 * LBF / 0.3048),  # 1 slug = 1 lbf s^2/ft
+        ("1.5 g", "acceleration", 1.5 * 9.80665),  # standard gravity, exact (CGPM 1901)
+        ("2 m/s^2", "acceleration", 2.0),
+        ("3 g", "mass", 0.003),  # a gram where a mass is asked
+        ("1e20 Pa", "pressure", 1e20),  # the ends of units.MAGNITUDE_RANGE
+        ("1e-20 m", "length", 1e-20),
+        (0.0, "length", 0.0),  # zero: its sign rule is the field's
+        (1e-300, "dimensionless", 1e-300),  # no range for a ratio (a gimbal gain K ~ 0)
     ],
 )
 def test_unit_conversion(value, kind, expected):
@@ -47,13 +59,28 @@ def test_unit_conversion(value, kind, expected):
         ("12 furlongz", "length", "unknown unit"),
         ("12 s", "length", "wrong dimension"),
         ("3 kg", "pressure", "wrong dimension"),
-        ("abc def ++", "length", "cannot read"),
+        ("12 ++ //", "length", "cannot read"),
+        # what pint would read other than as meant (issue 36)
+        ("5,05 m", "length", "comma"),  # pint: 505 m
+        ("1,5e6 psi", "pressure", "comma"),
+        ("mm 20", "length", "must start with a number"),  # pint: 0.02 m
+        ("psi", "pressure", "must start with a number"),  # pint: 1 psi
+        ("abc def ++", "length", "must start with a number"),
+        ("5\u200b m", "length", "invisible"),  # zero-width space; pint: 5 m
+        ("5 \u200dm", "length", "invisible"),  # zero-width joiner
+        ("\ufeff5 m", "length", "invisible"),  # a byte-order mark inside the value
+        ("5\u00a0m", "length", "non-standard space"),
+        ("5\tm", "length", "invisible"),
         (True, "length", "must be a number"),
         ([1, 2], "length", "must be a number"),
         (float("nan"), "length", "must be finite"),
         (float("inf"), "pressure", "must be finite"),
         (10**400, "length", "must be finite"),  # a 400-digit TOML integer: OverflowError
         ("1e400 m", "length", "must be finite"),
+        # units.MAGNITUDE_RANGE (1e-20..1e20 SI) for dimensional values
+        (1.7e308, "pressure", "magnitude must lie in 1e-20..1e+20 Pa"),
+        ("1e-21 m", "length", "magnitude"),
+        (-1e21, "force", "magnitude"),
     ],
 )
 def test_unit_errors_name_field_value_rule(value, kind, rule):

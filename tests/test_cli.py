@@ -310,7 +310,8 @@ def _edited_default(tmp_path, old: str, new: str):
                      "booster.cylinder1.radius = '60 furlongz': unknown unit (furlongz)",
                      id="value-once"),
         pytest.param(None, ["stability", "--omega-min", "abc"],
-                     "--omega-min = 'abc': unknown unit (abc)", id="option-named"),
+                     "--omega-min = 'abc': must start with a number, the unit after it (20 mm)",
+                     id="option-named"),
         pytest.param(None, ["stability", "--omega-max", "5 m"],
                      "--omega-max = '5 m': wrong dimension: expected units of rad/s",
                      id="option-dimension"),
@@ -443,3 +444,42 @@ def test_a_fault_of_the_summary_loses_no_result(tmp_path, capsys, monkeypatch, s
     assert "internal error: RuntimeError: summary fault" in err
     assert json.loads((out / "results.json").read_text())["stability"]["count"] > 0
     assert (out / "manifest.json").exists()
+
+
+def test_stability_names_the_files_it_writes(tmp_path, capsys, small_case_file):
+    """Source: the files in the output folder after ``flexbooster stability`` (issue 36: the
+    summary named unstable-frequencies.csv and resonance-bands.csv, which it does not write):
+    every .csv name the summary prints exists there."""
+    import re
+
+    out = tmp_path / "out"
+    assert run_cli(["stability", str(small_case_file), "-o", str(out)]) == 0
+    text = " ".join(capsys.readouterr().out.split())
+    named = set(re.findall(r"[\w.-]+\.csv", text))
+    assert "stability-unstable-frequencies.csv" in named
+    assert named <= {p.name for p in out.iterdir()}, named
+
+
+def test_simulate_lists_the_10_largest_in_10_lines(tmp_path, capsys, small_case_file):
+    """Source: the header "the N largest" (issue 36: 13 lines under "the 10 largest"): exactly
+    min(10, relevant) indented rows follow it."""
+    out = tmp_path / "sim"
+    assert run_cli(["simulate", str(small_case_file), "--omega", "300", "--tau-max", "50",
+                    "-o", str(out)]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    (head,) = [i for i, x in enumerate(lines) if x.endswith("largest:")]
+    n = int(lines[head].split("the ")[-1].split()[0])
+    rows = [x for x in lines[head + 1:] if x.startswith("  ")]
+    assert n == 10 and len(rows) == 10
+
+
+def test_simulate_inside_a_beam_action_band_is_refused(tmp_path, capsys, small_case_file):
+    """Source: the small case's beam-action band 114.6729..114.6843 rad/s (growth 2.8e-3 1/s,
+    beam_action_bands): alpha_1 is complex there, the motion grows and the bounded Floquet
+    form cannot show it (issue 36: its real part was used, showing the motion bounded). One
+    line naming --omega, exit 2."""
+    assert run_cli(["simulate", str(small_case_file), "--omega", "114.678", "--tau-max", "50",
+                    "-o", str(tmp_path / "sim")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and err.startswith("flexbooster: error: --omega = ")
+    assert "instability band" in err and "grows" in err

@@ -100,6 +100,13 @@ def valid_cases(draw) -> dict:
     }
     if draw(st.integers(0, 2)) == 0:
         case["vehicle"] = draw(vehicle_tables(r1, r2, h))
+    if draw(st.booleans()):  # the optional tables too: every table of a case file
+        case["output"] = {"units": draw(st.sampled_from(["SI", "US"]))}
+    if draw(st.integers(0, 2)) == 0:
+        case["severity"] = {"psi0": draw(st.floats(-0.1, 0.1)),
+                            "beam_amplitude": draw(st.sampled_from([0.0, 1e-6, 1e-4, 1e-2])),
+                            "threshold": draw(st.floats(0.0, 1.0)),
+                            "resolution": draw(st.floats(1e-4, 0.5))}
     return {**case, "_regions": regions}
 
 
@@ -179,13 +186,23 @@ def _outcome(data: dict, regions: bool = False) -> str:
 BUDGET_WARNINGS = ("cost-estimate",)
 
 
+#: A run may take up to this multiple of its up-front estimate unwarned (issue 36 acceptance:
+#: at most 0.5 % of the valid cases beyond it).
+ESTIMATE_FACTOR = 1.5
+#: Shortest CPU time (s) judged against the estimate: below it the start-up and timer
+#: resolution, not the cost model, decide the ratio.
+ESTIMATE_FLOOR = 1.0
+
+
 def _run(data: dict, start: float, regions: bool = False) -> str:
     """The outcome of one case; ``start`` is the process CPU time before it."""
+    estimate = []
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("error", RuntimeWarning)  # numpy overflow is a failure
             case = flexbooster.load_case(data)
-            res = analyze(case, figures=False, vehicle=regions)
+            res = analyze(case, figures=False, vehicle=regions,
+                          on_estimate=lambda est, budget: estimate.append(est.seconds))
             dumps_finite(res.to_dict())
     except CaseError as exc:
         if "\n" in str(exc):
@@ -204,8 +221,11 @@ def _run(data: dict, start: float, regions: bool = False) -> str:
     if PROFILE != "long":  # the CPU time is a measurement of the cost model: `make fuzz` only
         return "ok"
     elapsed = time.process_time() - start  # CPU time: a loaded machine does not count
-    if elapsed > case.max_seconds and not any(w.code in BUDGET_WARNINGS for w in res.warnings):
+    warned = any(w.code in BUDGET_WARNINGS for w in res.warnings)
+    if elapsed > case.max_seconds and not warned:
         return f"over-budget: {elapsed:.1f} s CPU"
+    if elapsed > max(ESTIMATE_FACTOR * estimate[0], ESTIMATE_FLOOR) and not warned:
+        return f"over-estimate: {elapsed:.1f} s CPU against {estimate[0]:.2f} s estimated"
     return "ok"
 
 
@@ -234,7 +254,9 @@ def test_valid_case_gives_finite_results_or_a_documented_error(data):
 TALLY_DETAILS: list = []
 FIELDS: collections.Counter = collections.Counter()
 
-_BAD_FLOATS = [math.nan, math.inf, -1.0, "xyz", "5 kg", 10**400]  # 10**400: a 400-digit TOML int
+_BAD_FLOATS = [math.nan, math.inf, -1.0, "xyz", "5 kg", 10**400,  # a 400-digit TOML int
+               # what pint would read other than as meant (issue 36)
+               "5,05", "mm 20", "psi", "5\u200b", "\ufeff5", "5\u00a0m"]
 _BAD_INTS = [-1, 2.5, "ten", 10**6]
 _FLOAT_FIELDS = ["booster.cylinder1.radius", "booster.cylinder2.half_length",
                  "booster.thickness", "booster.E", "booster.nu", "booster.rho", "thrust.gamma",
@@ -273,10 +295,13 @@ def _report() -> None:
 
 
 def test_long_profile_report():
-    """Long profile only: 0 internal errors, 0 NaN, 0 over the budget (issue 18 acceptance)."""
+    """Long profile only: 0 internal errors, 0 NaN, 0 over the budget (issue 18 acceptance),
+    at most 0.5 % of the cases over 1.5x their estimate unwarned (issue 36 acceptance)."""
     if PROFILE != "long":
         pytest.skip("the long profile is `make fuzz`")
     _report()
-    bad = {k: v for k, v in TALLY.items() if k not in ("ok", "documented")}
+    bad = {k: v for k, v in TALLY.items() if k not in ("ok", "documented", "over-estimate")}
     assert not bad, bad
+    over = TALLY["over-estimate"]  # at most 0.5 % of the valid cases beyond 1.5x the estimate
+    assert over <= 0.005 * sum(TALLY.values()), f"{over} cases over 1.5x their estimate"
 

@@ -509,3 +509,33 @@ def test_a_band_search_past_the_toolkit_limits_is_a_case_error(monkeypatch):
     model = model_from_case(flexbooster.default_case())
     with pytest.raises(CaseError, match=r"^truncation\.N = 10: the beam-action band search"):
         analysis._beam_action(model)
+
+
+def test_fuzz_reproducer_memo_vehicle_70_km_forward_cylinder():
+    """Found by an independent fuzz (issue 36): a memo vehicle with a 70 km forward cylinder
+    (R2 = 3.3 m: 21,000 radii) gave "refinement = 1: more than 400 elements in a segment"
+    (exit 1) from the cost estimate. Source of the expectation: the automatic mesh's element
+    count (shell_of_revolution.auto_element_counts: 3 radii per element, 7076 > MAX_ELEMENTS =
+    400): a one-line CaseError on booster.cylinder2.half_length with a [vehicle] table (its
+    modes are asked for), a vehicle-regions-skipped warning naming that field without one (the
+    memo's own analysis stands)."""
+    from flexbooster.shell_of_revolution.assembly import MAX_ELEMENTS, auto_element_counts
+
+    data = copy.deepcopy(flexbooster.default_case().model_dump(exclude_none=True))
+    data["booster"]["cylinder2"]["half_length"] = 35_000.0
+    data["thrust"].update(F0=1000.0, n_omega=20)
+    data["truncation"].update(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)
+    case = flexbooster.load_case(data)
+    with pytest.raises(CaseError) as info:
+        vehicle_from_case(case)
+    assert info.value.field == "booster.cylinder2.half_length" and "\n" not in str(info.value)
+    assert info.value.value == 35_000.0 and str(MAX_ELEMENTS) in info.value.rule
+    res = analyze(case, figures=False)
+    (w,) = [w for w in res.warnings if w.code == "vehicle-regions-skipped"]
+    assert w.field == "booster.cylinder2.half_length" and res.vehicle_regions is None
+    data["vehicle"] = {"k_max": 3}
+    with pytest.raises(CaseError) as info:
+        analyze(flexbooster.load_case(data), figures=False)
+    assert info.value.field == "booster.cylinder2.half_length"
+    # the default vehicle is within the limit
+    assert max(auto_element_counts(vehicle_from_case(flexbooster.default_case()))) <= MAX_ELEMENTS

@@ -7,6 +7,7 @@ eq. 11-17).
 from __future__ import annotations
 
 import math
+import os
 import signal
 from pathlib import Path
 
@@ -16,6 +17,7 @@ import flexbooster
 from conftest import dump_toml
 from flexbooster import cost
 from flexbooster.analysis import analyze
+from flexbooster.case import default_case_text
 from flexbooster.cli import main
 from flexbooster.errors import CaseError
 from flexbooster.model import model_from_case
@@ -78,11 +80,11 @@ def test_shell_buckling_is_a_named_warning(case_dict):
 #: Extra probes of a review's list (the rest is tests/test_case.py's table).
 EXTRA_PROBES = [
     ("booster.cylinder1.radius", 1e300, "booster"),  # once an OverflowError
-    ("booster.thickness", 1e-300, "thrust.F0"),  # an absurd Mathieu a
-    ("booster.rho", 1e-300, "booster"),  # omega_1 overflows
+    ("booster.thickness", 1e-300, "booster.thickness"),  # units.MAGNITUDE_RANGE
+    ("booster.rho", 1e-300, "booster.rho"),  # omega_1 overflows: units.MAGNITUDE_RANGE
     ("thrust.F0", 1e300, "thrust.F0"),
     ("thrust.F0", 1e12, "thrust.F0"),
-    ("thrust.K", 1e300, "thrust.F0"),
+    ("thrust.K", 1e300, "thrust.F0"),  # dimensionless: no magnitude range, the load check
     ("thrust.n_omega", 10**400, "thrust.n_omega"),  # a 400-digit integer literal
     ("thrust.gamma", nan, "thrust.gamma"),
     ("thrust.omega_max", inf, "thrust.omega_max"),
@@ -106,6 +108,35 @@ def test_bad_case_probe_exit_2_one_line(case_dict, tmp_path, capsys, path, value
     assert err.count(field) >= 1
     head = err.removeprefix("flexbooster: error: ").split(" = ")[0]
     assert err.count(head + " ") + err.count(head + ":") <= 2  # the field once (plus rule)
+
+
+#: Issue 36's bad inputs that were accepted silently or failed as internal errors: (path, value,
+#: the rule's words). Source of each "silently wrong" reading: pint 0.24 ("5,05 m" -> 505 m,
+#: "mm 20" -> 0.02 m, "5\u200b m" -> 5 m, "psi" -> 1 psi).
+ISSUE36_PROBES = [
+    ("booster.cylinder2.radius", "5,05 m", "comma"),
+    ("booster.cylinder2.radius", "mm 20", "must start with a number"),
+    ("booster.cylinder2.radius", "5\u200b m", "invisible"),
+    ("booster.E", "psi", "must start with a number"),
+    ("booster.E", 1.7e308, "magnitude"),  # was 7 lines: RuntimeWarning, internal error
+    ("booster.E", 1e80, "magnitude"),  # was an overflow in the Floquet step count
+    ("booster.rho", "1e-300 kg/m^3", "magnitude"),
+]
+
+
+@pytest.mark.parametrize(("path", "value", "rule"), ISSUE36_PROBES,
+                         ids=[f"{p}={v!r}" for p, v, _ in ISSUE36_PROBES])
+def test_issue36_bad_value_is_one_line_naming_field_value_rule(case_dict, tmp_path, capsys,
+                                                               path, value, rule):
+    """Source: the issue's list; each refused before any solver (exit 2, one line, no
+    RuntimeWarning) with the field, the value as written and the rule."""
+    _set(case_dict, path, value)
+    case = tmp_path / "bad.toml"
+    case.write_text(dump_toml(case_dict))
+    assert run_cli(["run", str(case), "-q", "--no-figures", "-o", str(tmp_path / "o")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1, err
+    assert err.startswith(f"flexbooster: error: {path} = {value!r}: ") and rule in err
 
 
 CLI_PROBES = [
@@ -174,3 +205,46 @@ def test_directory_as_case_file_and_file_as_output(tmp_path, capsys):
         assert len(capsys.readouterr().err.strip().splitlines()) == 1
 
 
+
+
+# --------------------------------------------------------------------------------------------
+# Case files that are not plain files (issue 36): one line, exit 2, never a block
+# --------------------------------------------------------------------------------------------
+def _special_case_file(folder: Path, kind: str) -> Path:
+    path = folder / f"{kind}.toml"
+    if kind == "symlink-loop":
+        path.symlink_to(folder / "other.toml")
+        (folder / "other.toml").symlink_to(path)
+    elif kind == "fifo":
+        os.mkfifo(path)
+    elif kind == "device":
+        path = Path("/dev/zero")
+    return path
+
+
+@pytest.mark.parametrize("kind", ["symlink-loop", "fifo", "device"])
+def test_case_file_that_is_not_a_regular_file_is_refused(tmp_path, capsys, alarm, kind):
+    """Source: POSIX (open() of a FIFO blocks until a writer; a symlink loop is ELOOP): the path
+    is refused before it is opened, exit 2, one line naming the case file (the alarm fixture
+    turns a block into a failure)."""
+    path = _special_case_file(tmp_path, kind)
+    assert run_cli(["run", str(path), "-q", "-o", str(tmp_path / "o")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and err.startswith("flexbooster: error: case file = ")
+    assert str(path) in err
+
+
+def test_case_file_with_a_utf8_byte_order_mark_is_read(tmp_path):
+    """Source: the Unicode standard (U+FEFF at the start of a UTF-8 file is a signature, not
+    content): the same case as without the mark, field for field."""
+    text = default_case_text()
+    path = tmp_path / "bom.toml"
+    path.write_bytes(b"\xef\xbb\xbf" + text.encode("utf-8"))
+    assert flexbooster.load_case(path) == flexbooster.default_case()
+
+
+@pytest.mark.parametrize("source", [42, None, 3.5, b"case.toml"])
+def test_load_case_of_a_wrong_type_is_a_type_error_naming_source(source):
+    """Source: the signature (a path or a mapping): TypeError naming ``source``."""
+    with pytest.raises(TypeError, match=r"^source = "):
+        flexbooster.load_case(source)

@@ -281,3 +281,71 @@ def test_two_concurrent_runs_give_one_consistent_set(tmp_path, case_dict):
     assert _set_name(out) in ("case-a", "case-b")
     assert set(json.loads((out / MANIFEST).read_text())["files"]) <= {
         p.name for p in out.iterdir()}
+
+
+# --------------------------------------------------------------------------------------------
+# Outputs checked before the analysis (issue 36): one line, the path, exit 2
+# --------------------------------------------------------------------------------------------
+def _no_analysis(*args, **kwargs):
+    raise AssertionError("the analysis started before the output was checked")
+
+
+@pytest.mark.parametrize(("command", "kind"), [
+    ("run", "empty"), ("run", "proc"), ("run", "results.json"), ("run", "report.html"),
+    ("run", "danger-map.svg"), ("stability", "stability.json"), ("stability", "proc"),
+    ("simulate", "simulation.json"),
+])
+def test_unwritable_output_is_refused_before_the_analysis(tmp_path, capsys, monkeypatch,
+                                                          command, kind):
+    """Source: POSIX (os.replace onto a folder fails, nothing can be made in /proc, '' is no
+    path): each refused at once (the analysis is replaced by a failure), exit 2, one line with
+    --output and the path."""
+    import flexbooster.analysis
+
+    monkeypatch.setattr(flexbooster.analysis, "analyze", _no_analysis)
+    monkeypatch.setattr(flexbooster.analysis, "simulate_case", _no_analysis)
+    out = tmp_path / "out"
+    if kind == "empty":
+        target = ""
+    elif kind == "proc":
+        target = "/proc/flexbooster-x"
+    else:
+        (out / kind).mkdir(parents=True)
+        target = str(out)
+    extra = ["--omega", "300", "--tau-max", "10"] if command == "simulate" else ["-q"]
+    assert run_cli([command, *extra, "-o", target]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and err.startswith("flexbooster: error: --output = ")
+    assert f"'{target}'" in err and (kind in err or kind in ("empty", "proc"))
+
+
+@pytest.mark.slow
+def test_run_output_names_are_all_checked_up_front(tmp_path, small_case_file):
+    """Source: the files a real run writes (every stage, figures included): each is one of
+    SET_NAMES, the names check_output_folder looks at before the analysis."""
+    from flexbooster.present.outputs import SET_NAMES
+
+    out = tmp_path / "out"
+    assert run_cli(["run", str(small_case_file), "-q", "-o", str(out)]) == 0
+    written = {p.name for p in out.iterdir()}
+    assert written - set(SET_NAMES) == set() and "danger-map.svg" in written
+
+
+def test_full_disk_names_the_file_exit_2(tmp_path, capsys, monkeypatch, small_case_file):
+    """Source: POSIX write(2)/fsync(2) report ENOSPC without a file name; the message names the
+    file being written (exit 2, one line) and the folder keeps no part file."""
+    import errno
+
+    import flexbooster.present.io as io
+
+    def full(fd):
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+
+    monkeypatch.setattr(io.os, "fsync", full)
+    out = tmp_path / "out"
+    assert run_cli(["run", str(small_case_file), "-q", "--no-figures", "-o", str(out)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1, err
+    assert err.startswith("flexbooster: error: ") and err.endswith(
+        "results.json: No space left on device")
+    assert not list(out.rglob("*.part"))

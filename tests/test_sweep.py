@@ -17,16 +17,20 @@ under a minute.
 
 from __future__ import annotations
 
+import contextlib
 import copy
 import inspect
 import itertools
 import math
 import os
 import re
+import signal
 import socket
 import subprocess
 import sys
+import time
 import tomllib
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -43,8 +47,10 @@ from flexbooster.errors import CaseError  # noqa: E402
 from flexbooster.sweep import command  # noqa: E402
 from flexbooster.sweep.spec import load_sweep, make_spec, parse_axes, point_cases  # noqa: E402
 
+SRC = str(Path(flexbooster.__file__).parents[1])
+
 RTOL = 1e-12  # sweep point vs serial analyze: same code on the workers (brief: 1e-12)
-GOOD_E, BAD_E = "10.5e6 psi", "1e-300 Pa"  # BAD_E: valid for the case model (E > 0), but the
+GOOD_E, BAD_E = "10.5e6 psi", "1e-15 Pa"  # BAD_E: valid for the case model (E > 0), but the
 # analysis refuses it (issue 18: the thrust is above the divergence load of the steady system)
 SOFT_E = "1e8 Pa"  # a soft booster: strong beam-action bands (growth 0.1 1/s at gamma = 0.3)
 
@@ -628,3 +634,60 @@ def test_figure_and_page(tmp_path):
         tiny_case(), {"thrust.K": [0.5], "thrust.gamma": [0.0]}, stability=False
     )
     assert "stable everywhere" in sweep_figure(stable).axes[0].get_title()
+
+
+def _finished_count(path) -> int:
+    """Points of a zarr store whose status is final ("ok" or "error"); 0 before it exists."""
+    import zarr
+
+    try:
+        status = np.asarray(zarr.open_group(str(path), mode="r")["status"][...]).reshape(-1)
+    except Exception:  # noqa: BLE001 - not created yet, or being created
+        return 0
+    return sum(s in ("ok", "error") for s in status.tolist())
+
+
+@pytest.mark.slow
+def test_ctrl_c_at_the_terminal_stops_the_cluster_in_one_line(tmp_path):
+    """Source: a terminal's Ctrl-C (SIGINT to the whole foreground process group: the command
+    and the local cluster's worker processes), sent once the store holds 5 finished points (an
+    event read from the store, not a sleep). Expected (README: 130 interrupted): exit 130, with
+    -q a single stderr line and no traceback (issue 36: "IOLoop is closed", 70 lines of worker
+    tracebacks), no process of the run left, the finished points kept for --resume."""
+    psutil = pytest.importorskip("psutil")
+    path = write_sweep(
+        tmp_path,
+        '"thrust.gamma" = {start = 0.0, stop = 0.3, num = 10}\n"thrust.K" = [0.5, 1.0, 1.5, 2.0]',
+        extra="stability = false",
+    )
+    out = tmp_path / "run.zarr"
+    env = dict(os.environ, OPENBLAS_NUM_THREADS="1", PYTHONPATH=SRC)
+    process = subprocess.Popen(
+        [sys.executable, "-m", "flexbooster", "sweep", path, "-o", str(out), "--workers", "2",
+         "--batch-size", "1", "--no-report", "-q"],
+        env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+        start_new_session=True,  # its own process group, as a terminal's foreground job
+    )
+    try:
+        deadline = time.monotonic() + 900  # a hang guard, not a measurement
+        while _finished_count(out) < 5 and process.poll() is None:
+            assert time.monotonic() < deadline, "no 5 points stored"
+            time.sleep(0.05)
+        assert process.poll() is None, process.communicate()[1]
+        family = [process.pid] + [c.pid for c in
+                                  psutil.Process(process.pid).children(recursive=True)]
+        os.killpg(process.pid, signal.SIGINT)
+        _, err = process.communicate(timeout=900)
+    finally:
+        stop(process)
+    assert process.returncode == 130, err
+    assert err.strip().splitlines() == ["flexbooster: error: interrupted"], err
+    alive = []
+    for pid in family:
+        with contextlib.suppress(psutil.NoSuchProcess):
+            alive.append(psutil.Process(pid))
+    # the resource tracker ends when it reads the end of its pipe: a moment after its parent
+    _, left = psutil.wait_procs(alive, timeout=10)
+    left = [p for p in left if p.status() != psutil.STATUS_ZOMBIE]
+    assert left == [], [" ".join(p.cmdline()) for p in left]
+    assert _finished_count(out) >= 5

@@ -106,6 +106,13 @@ def _warnings(model: BoosterModel, a: np.ndarray, q: np.ndarray) -> list[Analysi
     return out
 
 
+def _check_case(case: object) -> None:
+    """TypeError naming ``case`` unless it is a validated :class:`~flexbooster.case.Case`."""
+    if not isinstance(case, Case):
+        raise TypeError(f"case = {case!r:.60}: must be a Case (flexbooster.load_case or "
+                        f"default_case), not {type(case).__name__}")
+
+
 def analyze(
     case: Case,
     beam_action: bool = True,
@@ -135,6 +142,7 @@ def analyze(
     on_estimate : callable, optional
         Called before any solver runs with the cost estimate and ``case.max_seconds`` (s).
     """
+    _check_case(case)
     step = progress or (lambda stage: None)
     with blas_threads(1):  # many small eigenproblems: one BLAS thread is the fastest
         step(STAGES[0])
@@ -289,6 +297,7 @@ def simulate_case(case: Case, Omega: float, *, tau_max: float, n_out: int = 401,
         Initial pitch angle (rad).
     """
     # the cheap argument checks of simulate first, before the beam-action analysis
+    _check_case(case)
     Omega, tau_max, psi0 = (positive("Omega", Omega), positive("tau_max", tau_max),
                             finite("psi0", psi0))
     n_out = count("n_out", n_out, 2, 100_000)
@@ -339,6 +348,7 @@ def analyze_vehicle(case: Case, *, k_max: int | None = None, f_max: float | None
     """
     from .errors import CaseError
 
+    _check_case(case)
     table = case.vehicle
     k_max = (table.k_max if table is not None else 20) if k_max is None else k_max
     source = "vehicle" if table is not None and table.segments is not None else "memo"
@@ -455,6 +465,7 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
     from .errors import CaseError
     from .vehicle_case import VehicleTable
 
+    _check_case(case)
     table = case.vehicle if case.vehicle is not None else VehicleTable()
     k_max = table.k_max if k_max is None else k_max
     if k_max < k_min:

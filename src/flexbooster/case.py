@@ -9,6 +9,8 @@ value is an SI number or a string with units. Invalid input raises
 from __future__ import annotations
 
 import math
+import os
+import stat
 import tomllib
 from collections.abc import Mapping
 from importlib import resources
@@ -467,8 +469,10 @@ def _validate(data: Mapping[str, Any]) -> Case:
 
 
 def load_case(source: str | Path | Mapping[str, Any]) -> Case:
-    """Load and validate a case from a TOML file or a mapping (CaseError for a missing file, a file
-    that is not TOML, or any invalid field).
+    """Load and validate a case from a TOML file or a mapping (CaseError for a missing file, a
+    path that is not a regular file (a folder, a FIFO, a device, a symlink loop), a file that is
+    not UTF-8 TOML, or any invalid field; a leading UTF-8 byte-order mark is skipped; TypeError
+    for a ``source`` of another type).
 
     Parameters
     ----------
@@ -477,17 +481,23 @@ def load_case(source: str | Path | Mapping[str, Any]) -> Case:
     """
     if isinstance(source, Mapping):
         return _validate(source)
+    if not isinstance(source, str | os.PathLike):
+        raise TypeError(f"source = {source!r:.60}: must be a path (str or os.PathLike) or a "
+                        f"mapping, not {type(source).__name__}")
     path = Path(source)
     try:
+        # stat first: opening a FIFO or a device would block or read without end
+        if not stat.S_ISREG(path.stat().st_mode):
+            raise CaseError("case file", str(path), "must be a regular file (not a folder, a "
+                            "FIFO or a device)")
         text = path.read_text(encoding="utf-8")
     except FileNotFoundError:
         raise CaseError("case file", str(path), "file not found") from None
-    except (IsADirectoryError, PermissionError, UnicodeDecodeError) as exc:
-        raise CaseError(
-            "case file", str(path), f"cannot be read as text ({type(exc).__name__})"
-        ) from None
+    except (OSError, UnicodeDecodeError) as exc:  # a symlink loop, a name too long, no access
+        reason = exc.strerror if isinstance(exc, OSError) and exc.strerror else type(exc).__name__
+        raise CaseError("case file", str(path), f"cannot be read as text ({reason})") from None
     try:
-        data = tomllib.loads(text)
+        data = tomllib.loads(text.removeprefix("\ufeff"))  # a byte-order mark (some editors)
     except tomllib.TOMLDecodeError as exc:
         raise CaseError("case file", str(path), f"not a valid TOML file ({exc})") from None
     return _validate(data)

@@ -37,7 +37,7 @@ class FieldValueError(ValueError):
 
 
 def finite(name: str, value: Any) -> float:
-    """``value`` as a finite float.
+    """``value`` as a finite float (a string is refused, not parsed).
 
     Parameters
     ----------
@@ -46,6 +46,8 @@ def finite(name: str, value: Any) -> float:
     value : float-like
         The value to check.
     """
+    if isinstance(value, str | bytes):  # float("5") would read a string as a number
+        raise ValueError(f"{name} = {value!r}: must be a finite number, not a string")
     try:
         result = float(value)
     except (TypeError, ValueError):

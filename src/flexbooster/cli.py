@@ -1,7 +1,8 @@
 """Command line: ``flexbooster run``, ``stability``, ``simulate``, ``modes``, ``init``.
 
-Exit codes: 0 success; 1 an unexpected internal error or a file that cannot be written;
-2 invalid input (a one-line message naming the field, the value and the rule, no traceback);
+Exit codes: 0 success; 1 an unexpected internal error; 2 invalid input (a one-line message
+naming the field, the value and the rule, no traceback) or an output that cannot be written
+(the path named);
 130 interrupted.  ``run`` and ``stability`` show progress bars (rich, on standard error, only on
 a terminal), ``--quiet`` silences everything but errors and ``--format json`` prints
 ``results.to_dict()`` as JSON on standard output.
@@ -35,8 +36,9 @@ def _fail(message: str, code: int) -> None:
 _EXIT_CODES = """\b
 Exit codes:
   0    success
-  1    internal error, or an output file that cannot be written
-  2    invalid input: one line naming the field, the value and the rule
+  1    internal error
+  2    invalid input: one line naming the field, the value and the rule;
+       or an output that cannot be written: one line naming the path
   130  interrupted (Ctrl-C)"""
 
 
@@ -85,22 +87,20 @@ def _load(case_file: Path | None):
 _CASE_ARG = click.argument(
     "case_file", required=False, type=click.Path(dir_okay=False, path_type=Path)
 )
-def _check_output(ctx: click.Context, param: click.Parameter, value: Path) -> Path:
-    """The output folder, checked before any analysis: not a file, under no file, writable."""
-    rule = None
-    if value.exists() and not value.is_dir():
-        rule = "is a file, not a folder"
-    else:
-        parent = value
-        while not parent.exists() and parent != parent.parent:
-            parent = parent.parent
-        if not parent.is_dir():
-            rule = f"cannot be created: {parent} is a file"
-        elif not os.access(parent, os.W_OK | os.X_OK):
-            rule = f"cannot be written: {parent} is not writable"
-    if rule:
-        raise CaseError("--output", str(value), rule)
-    return value
+def _check_output(ctx: click.Context, param: click.Parameter, value: str) -> Path:
+    """The output folder, checked before any analysis
+    (:func:`flexbooster.present.outputs.check_output_folder`: not empty, not a file, under no
+    file, a folder can be made there); each command then checks the names it writes."""
+    from .present.outputs import check_output_folder
+
+    return check_output_folder(value, (), field="--output")
+
+
+def _check_names(output: Path, names: tuple[str, ...]) -> None:
+    """Before the analysis: no file name of the command's output is taken by a folder."""
+    from .present.outputs import check_output_folder
+
+    check_output_folder(output, names, field="--output")
 
 
 _OUTPUT = click.option(
@@ -109,7 +109,7 @@ _OUTPUT = click.option(
     "output",
     default="flexbooster-results",
     show_default=True,
-    type=click.Path(path_type=Path),
+    type=click.Path(),
     callback=_check_output,
     help="Folder for the results.",
 )
@@ -241,9 +241,10 @@ def run(case_file: Path | None, output: Path, no_figures: bool, no_vehicle: bool
       flexbooster run -q --format json | python -m json.tool | head
     """
     from .analysis import STAGES, analyze
-    from .present.outputs import OUTPUT_STAGES, write_outputs
+    from .present.outputs import OUTPUT_STAGES, SET_NAMES, write_outputs
     from .present.summary import print_summary
 
+    _check_names(output, SET_NAMES)
     case = _with_budget(_load(case_file), max_seconds)
     n_stages = len(STAGES) + (case.vehicle is not None) + (not no_vehicle) + len(OUTPUT_STAGES)
     with _progress(n_stages, quiet) as step:
@@ -322,11 +323,13 @@ def stability(
     from .present.io import write_csv_atomic, write_json_atomic
     from .present.summary import print_stability
 
+    _check_names(output, STABILITY_FILES)
     case = _with_budget(_case_with_range(_load(case_file), omega_min, omega_max), max_seconds)
     with _progress(len(STAGES), quiet) as step:
         results = analyze(case, progress=step, vehicle=False,  # the memo table only
                           on_estimate=getattr(step, "estimate", None))
-    _report(results, fmt, quiet, print_stability)
+    _report(results, fmt, quiet, lambda res, console: print_stability(
+        res, console, roots_file=STABILITY_FILES[0], bands_file=None))
     if results.stability is None:  # a resource limit: the warning says which
         raise CaseError("truncation", "stability", "; ".join(w.message for w in results.warnings
                                                           if w.code == "stability-skipped"))
@@ -364,6 +367,11 @@ def _tau_max(case, t_max: str | None, tau_max: float | None) -> float:
     if not (math.isfinite(seconds) and seconds > 0.0):
         raise CaseError("--t-max", t_max, "must be a positive time (s if no unit)")
     return seconds * model_from_case(case).omega_1  # tau = omega_1 t (memo 3.0)
+
+
+#: Files written by ``flexbooster simulate`` (and deformed-<i>.svg/.png per snapshot).
+SIMULATE_FILES = ("time-histories.csv", "simulation.json", "modal-amplitudes.svg",
+                  "modal-amplitudes.png")
 
 
 @cli.command(epilog=_EXIT_CODES)
@@ -408,6 +416,7 @@ def simulate(
     from .present.io import dumps_finite, write_csv_atomic, write_json_atomic
     from .units import to_si
 
+    _check_names(output, SIMULATE_FILES)
     case = _load(case_file)
     try:
         value = float(omega)
@@ -452,9 +461,12 @@ def simulate(
         click.echo(f"{n_grow} of {len(relevant)} modal coordinates growing over the window\n"
                    f"({len(verdicts) - len(relevant)} below 1e-9 of the largest left out); "
                    f"the {min(10, len(relevant))} largest:")
-        shown = relevant[:10] + [v for v in relevant[10:] if v[1] == "growing"][:3]
-        for name, verdict, peak in shown:
+        for name, verdict, peak in relevant[:10]:
             click.echo(f"  {name}: {verdict} (peak {peak:.3g} m)")
+        below = [v for v in relevant[10:] if v[1] == "growing"]
+        if below:  # one line after the list, never more rows in it
+            click.echo(f"{len(below)} growing below these (the largest: {below[0][0]}, peak "
+                       f"{below[0][2]:.3g} m); every coordinate in time-histories.csv")
         peak = res.max_displacement()
         click.echo("max displacement (m): " + ", ".join(f"{c} {v:.4g}" for c, v in peak.items()))
     _wrote(written, fmt, quiet)
@@ -475,6 +487,10 @@ def _f_max(text: str | None) -> float | None:
     return value
 
 
+#: Data files written by ``flexbooster modes -o`` (and the figures).
+MODES_FILES = ("modes.json", "vehicle-modes.csv")
+
+
 @cli.command(epilog=_EXIT_CODES)
 @_CASE_ARG
 @click.option("--k-max", type=int, default=None,
@@ -484,7 +500,7 @@ def _f_max(text: str | None) -> float | None:
                    "[default: up to 5x the lowest elastic frequency].")
 @click.option("--no-prestress", is_flag=True,
               help="Unloaded frequencies (default: prestressed by the thrust F0, inertia relief).")
-@click.option("-o", "--output", "output", default=None, type=click.Path(path_type=Path),
+@click.option("-o", "--output", "output", default=None, type=click.Path(),
               callback=lambda ctx, param, value: None if value is None
               else _check_output(ctx, param, value),
               help="Also write OUTPUT/modes.json, OUTPUT/vehicle-modes.csv and the figures.")
@@ -510,6 +526,8 @@ def modes(case_file: Path | None, k_max: int | None, f_max: str | None, no_prest
     """
     from .analysis import analyze_vehicle
 
+    if output is not None:
+        _check_names(output, MODES_FILES)
     case = _load(case_file)
     if k_max is not None and not 0 <= k_max <= 200:
         raise CaseError("--k-max", k_max, "must be an integer in [0, 200]")
@@ -598,8 +616,8 @@ def main(argv: list[str] | None = None) -> None:
         if isinstance(exc, click.UsageError) and ctx is not None:
             message += f" (see '{ctx.command_path} --help')"
         _fail(message, EXIT_INPUT if isinstance(exc, click.UsageError) else exc.exit_code)
-    except OSError as exc:
-        _fail(f"{exc.filename or ''}: {exc.strerror or exc}", EXIT_INTERNAL)
+    except OSError as exc:  # an output that cannot be written (a full disk): the path named
+        _fail(f"{exc.filename or 'output'}: {exc.strerror or exc}", EXIT_INPUT)
     except Exception as exc:  # pragma: no cover - a bug; keep the traceback reachable
         if os.environ.get("FLEXBOOSTER_DEBUG"):
             raise

@@ -393,6 +393,10 @@ _SEARCH_FIXED, _SEARCH_PER_N4, _SEARCH_LOG_RANGE = 0.1, 6e-5, float(np.log(400.0
 # gamma of each (measured 2.4x the README example's k = 2 and 3.8x the free-free default
 # vehicle's k = 1 estimate); with the chart's curves: the search and 3 more levels.
 _DAMPED_UPFRONT_FACTOR, _BOUNDARY_SEARCH_FACTOR = 3.0, 4.0
+# the stability certificate of a damped harmonic (floquet.bounds: a bounded count of dense
+# 2n x 2n LAPACK operations): s per (2n)^3, one core (3.4e-9 at n = 200, 3.6e-9 at n = 120,
+# CPU time); computed for the map, again by the search, and once more for the chart's curves
+_C_CERTIFICATE = 3.5e-9
 
 
 def search_seconds(n_modes: int, omega_min: float, omega_max: float, *, damped: bool,
@@ -503,6 +507,11 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
         drivers["vehicle regions"] = ("vehicle.n_modes", "vehicle.damping_ratio",
                                       "vehicle.k_max", "thrust.omega_min", "thrust.omega_max",
                                       "vehicle.segments")
+        if damped:  # the certificates: map, search, chart (none undamped: no certificate)
+            calls = 2 + bool(figures)
+            parts["vehicle certificates"] = n_k * calls * _C_CERTIFICATE * (
+                2.0 * max(n_modes, 3)) ** 3
+            drivers["vehicle certificates"] = ("vehicle.n_modes", "vehicle.k_max")
     return CostEstimate(seconds=float(sum(parts.values())), parts=parts, drivers=drivers)
 
 

@@ -11,6 +11,7 @@ import numpy as np
 from .checks import FieldValueError
 from .errors import CaseError
 from .memo.model import BoosterModel, Truncation, booster_model
+from .shell_of_revolution.assembly import MAX_ELEMENTS, auto_element_counts
 from .shell_of_revolution.geometry import (
     Cone,
     Cylinder,
@@ -56,7 +57,9 @@ def vehicle_from_case(case: Case) -> Vehicle:
     """The vehicle of a case as one shell of revolution: its ``[[vehicle.segments]]`` (material
     from the segment, ``[vehicle]`` or ``[booster]``), or the memo vehicle (Fig. 1): the two
     cylinders of ``[booster]`` joined by a "memo-bulkhead" with "shear-diaphragm" ends (5.3-2,
-    5.3-3), junction, ends and theory overridable by ``[vehicle]``.
+    5.3-3), junction, ends and theory overridable by ``[vehicle]``. CaseError on a segment's
+    length when its automatic mesh needs more than ``MAX_ELEMENTS`` elements (a segment over
+    about 1200 radii long).
 
     Parameters
     ----------
@@ -71,11 +74,14 @@ def vehicle_from_case(case: Case) -> Vehicle:
         c1, c2 = b.cylinder1, b.cylinder2
         segments = [Cylinder(c1.radius, 2.0 * c1.half_length, b.thickness, **mat),  # Fig. 1
                     Cylinder(c2.radius, 2.0 * c2.half_length, b.thickness, **mat)]
-        return Vehicle(segments,
-                       junctions=((table.junction if table else None) or MEMO_JUNCTION,),
-                       aft_end=(table.aft_end if table else None) or MEMO_END,
-                       fwd_end=(table.fwd_end if table else None) or MEMO_END,
-                       theory=table.theory if table else "sanders")
+        return _meshable(Vehicle(segments,
+                                 junctions=((table.junction if table else None)
+                                            or MEMO_JUNCTION,),
+                                 aft_end=(table.aft_end if table else None) or MEMO_END,
+                                 fwd_end=(table.fwd_end if table else None) or MEMO_END,
+                                 theory=table.theory if table else "sanders"),
+                         [(f"booster.cylinder{i}.half_length", c.half_length)
+                          for i, c in ((1, c1), (2, c2))])
     segments = []
     for seg in table.segments:
         mat = {name: next(v for v in (getattr(seg, name), getattr(table, name),
@@ -98,8 +104,23 @@ def vehicle_from_case(case: Case) -> Vehicle:
     tanks = tuple(VehicleTank(t.aft, t.fwd, t.fill, t.density, name=t.name or f"tank {i}")
                   for i, t in enumerate(table.tanks))
     try:
-        return Vehicle(segments, junctions=junctions, aft_end=table.aft_end or "free",
-                       fwd_end=table.fwd_end or "free", theory=table.theory, masses=masses,
-                       tanks=tanks)
+        vehicle = Vehicle(segments, junctions=junctions, aft_end=table.aft_end or "free",
+                          fwd_end=table.fwd_end or "free", theory=table.theory, masses=masses,
+                          tanks=tanks)
     except FieldValueError as exc:  # a station that does not fit the segments
         raise CaseError(f"vehicle.{exc.field}", exc.value, exc.rule) from None
+    return _meshable(vehicle, [(f"vehicle.segments[{i}].length", seg.length)
+                               for i, seg in enumerate(table.segments)])
+
+
+def _meshable(vehicle: Vehicle, lengths: list[tuple[str, float]]) -> Vehicle:
+    """``vehicle``, or CaseError on the first segment (its length field and value) whose
+    automatic mesh needs more than ``MAX_ELEMENTS`` elements."""
+    for (field, value), n, seg in zip(lengths, auto_element_counts(vehicle), vehicle.segments,
+                                      strict=True):
+        if n > MAX_ELEMENTS:
+            radius = max(seg.radius_aft, seg.radius_fwd)
+            raise CaseError(field, value, f"a segment {seg.length / radius:.4g} radii long needs "
+                            f"{n} shell elements, more than {MAX_ELEMENTS}: shorten it or "
+                            "split it into [[vehicle.segments]]")
+    return vehicle

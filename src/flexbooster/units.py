@@ -9,7 +9,9 @@ conversion to rad/s (pint would take 2 Hz as 2 rad/s). Input layer; only
 from __future__ import annotations
 
 import math
+import re
 import sys
+import unicodedata
 from functools import lru_cache
 from typing import TYPE_CHECKING
 
@@ -19,7 +21,7 @@ from .errors import CaseError
 if TYPE_CHECKING:
     import pint
 
-__all__ = ["SI_UNITS", "US_UNITS", "to_si", "to_us"]
+__all__ = ["EXTRA_UNITS", "MAGNITUDE_RANGE", "SI_UNITS", "US_UNITS", "to_si", "to_us"]
 
 #: The inch-pound unit shown beside each SI unit when ``[output] units = "US"``.
 US_UNITS: dict[str, str] = {
@@ -46,8 +48,24 @@ SI_UNITS: dict[str, str] = {
     "force_per_length": "N/m",
     "angular_frequency": "rad/s",
     "time": "s",
+    "acceleration": "m/s^2",
     "dimensionless": "",
 }
+
+#: Smallest and largest magnitude of a non-zero dimensional value in SI: wider than any
+#: structure, load or frequency this tool models, narrow enough that the solvers' products of
+#: frequencies, stiffnesses and times stay in double precision (E = 1e80 Pa overflows the
+#: Floquet step count).
+MAGNITUDE_RANGE: tuple[float, float] = (1e-20, 1e20)
+
+#: Aerospace units that pint does not define, added to its registry (name = definition).
+EXTRA_UNITS: tuple[str, ...] = ("Msi = 1e6 * psi", "lbm = pound")
+
+# A quantity string: a number first (sign, digits, optional fraction and exponent), then units.
+_LEADING_NUMBER = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?")
+# "g" as a unit on its own (not a prefix of "gram" or part of "kg"): standard gravity where an
+# acceleration is asked.
+_GRAVITY = re.compile(r"(?<![A-Za-z_])g(?![A-Za-z_0-9])")
 
 
 @lru_cache(maxsize=1)
@@ -73,19 +91,48 @@ def _registry() -> pint.UnitRegistry:
     # cache cannot be used
     pint = _pint()
     try:
-        return pint.UnitRegistry(cache_folder=":auto:")
+        registry = pint.UnitRegistry(cache_folder=":auto:")
     except Exception:  # noqa: BLE001 - any cache problem: the uncached registry is equivalent
-        return pint.UnitRegistry()
+        registry = pint.UnitRegistry()
+    for definition in EXTRA_UNITS:
+        registry.define(definition)
+    return registry
 
 
 def _is_hertz(quantity: pint.Quantity) -> bool:
     return any("hertz" in name for name in quantity._units)  # noqa: SLF001
 
 
+def _checked_text(field: str, value: str) -> str:
+    """The stripped quantity string, or CaseError for what pint would read other than as meant:
+    an invisible or control character ("5\\u200b m" read as 5 m), a comma ("5,05 m" read as
+    505 m), or a string that does not start with a number ("mm 20" read as 20 mm, "psi" as 1 psi).
+    """
+    text = value.strip()
+    for char in text:
+        category = unicodedata.category(char)
+        if category in ("Cc", "Cf", "Co", "Cn", "Zl", "Zp") or (
+            category == "Zs" and char != " "
+        ):
+            rule = f"contains an invisible or non-standard space character (U+{ord(char):04X})"
+            raise CaseError(field, value, rule)
+    if "," in text:
+        raise CaseError(
+            field, value, "contains a comma: write the decimal point as '.' (5.05 m)"
+        )
+    if not _LEADING_NUMBER.match(text):
+        raise CaseError(field, value, "must start with a number, the unit after it (20 mm)")
+    return text
+
+
 def to_si(field: str, value: object, kind: str) -> float:
     """Convert a case value to a float in the SI unit of ``kind`` (rad/s for angular frequencies).
-    CaseError for a boolean, an unparsable string, an unknown or wrong-dimension unit, or a
-    non-finite value; ValueError for an unknown ``kind``.
+    CaseError for a boolean, an unparsable string, an unknown or wrong-dimension unit, a
+    string that pint would read other than as meant (a comma, an invisible character, no
+    leading number), or a non-finite value or a dimensional one of a magnitude outside
+    :data:`MAGNITUDE_RANGE`; ValueError for an unknown ``kind``. Beyond pint's
+    units: Msi and lbm (:data:`EXTRA_UNITS`), and "g" as standard gravity where ``kind`` is
+    "acceleration".
 
     Parameters
     ----------
@@ -109,8 +156,11 @@ def to_si(field: str, value: object, kind: str) -> float:
     elif isinstance(value, str):
         ureg = _registry()
         pint = _pint()
+        text = _checked_text(field, value)
+        if kind == "acceleration":
+            text = _GRAVITY.sub("g_0", text)
         try:
-            quantity = ureg.Quantity(value.strip())
+            quantity = ureg.Quantity(text)
         except pint.errors.UndefinedUnitError as exc:
             raise CaseError(
                 field, value, f"unknown unit ({exc.unit_names[0] if exc.unit_names else exc})"
@@ -133,6 +183,10 @@ def to_si(field: str, value: object, kind: str) -> float:
         )
     if not math.isfinite(result):
         raise CaseError(field, value, "must be finite")
+    low, high = MAGNITUDE_RANGE
+    if target and result != 0.0 and not low <= abs(result) <= high:
+        raise CaseError(field, value, f"magnitude must lie in {low:g}..{high:g} {target} "
+                        "(or be 0): beyond any structure this tool models")
     return result
 
 

@@ -3,7 +3,9 @@
 In the steady first-order eigenbasis, y' = (Lambda + cos(Omega t) G) y; the weighted
 logarithmic norm mu_d = max_i (-delta_i + sum_j |G_ij| d_j / d_i) bounds every Floquet
 exponent; the Perron vector of Q = diag(1 / delta) |G| is the best d, and mu_d < 0 exactly
-when rho(Q) < 1 (docs/theory/floquet.md sec. 4). Conservative, one 2n x 2n eigenproblem.
+when rho(Q) < 1 (docs/theory/floquet.md sec. 4). Conservative; its work is bounded: two
+2n x 2n eigenproblems with vectors, a condition number and a solve (about
+:data:`CERTIFICATE_FLOPS_PER_N3` (2n)^3 floating-point operations), whatever the system.
 
 References: G. Dahlquist (1959), logarithmic norm; C. A. Desoer, M. Vidyasagar, *Feedback
 Systems*, 1975, sec. 2.8; R. A. Horn, C. R. Johnson, *Matrix Analysis*, 1985, sec. 8.3.
@@ -17,7 +19,12 @@ import numpy as np
 
 from .multipliers import LinearPeriodicSystem, periodic_system
 
-__all__ = ["StabilityCertificate", "stability_certificate"]
+__all__ = ["StabilityCertificate", "stability_certificate", "CERTIFICATE_FLOPS_PER_N3"]
+
+#: Floating-point operations of :func:`stability_certificate` per (2n)^3, LAPACK's counts
+#: (Golub & Van Loan, sec. 7.5.6 and 8.6): eig with vectors 25, twice; the SVD of the condition
+#: number 12; the solve and the product G = W^-1 N W 3.
+CERTIFICATE_FLOPS_PER_N3 = 65.0
 
 #: Largest condition number of the steady eigenvector matrix W accepted (beyond it the
 #: round-off of G = W^-1 N W could spoil the bound: no certificate).
@@ -89,7 +96,7 @@ def stability_certificate(M, C, A, B) -> StabilityCertificate:
     p = int(np.argmax(ev.real))
     d = np.abs(vec[:, p].real)
     d = np.maximum(d, 1e-300)
-    rho = float(np.max(np.abs(np.linalg.eigvals(Q))))
+    rho = float(np.max(np.abs(ev)))  # the same spectrum: no second eigenproblem
     # mu_d = max_i (-delta_i + (|G| d)_i / d_i)   (Desoer & Vidyasagar sec. 2.8, infinity norm)
     mu = float(np.max(-delta + (G @ d) / d))
     return StabilityCertificate(rho=rho, growth_bound=mu, certified=bool(mu < 0.0),

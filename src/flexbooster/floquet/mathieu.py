@@ -19,6 +19,7 @@ from typing import Any
 import numpy as np
 from scipy import special
 
+from ..checks import count
 from .optimize import expand_bracket
 
 __all__ = ["MATHIEU_SCALE_MAX", "characteristic_exponent", "floquet_discriminant",
@@ -29,6 +30,8 @@ _METHODS = ("floquet", "hill")
 #: Largest sqrt(|a| + 2|q|) of both methods: their cost grows like it (24 + 16 sqrt(a)
 #: Magnus steps, 4 sqrt(a) Hill rows), so it is bounded (a up to about 1e6).
 MATHIEU_SCALE_MAX = 1000.0
+#: Matrix entries per batch of :func:`transition_curves` (32 MB of float64).
+_TRANSITION_ENTRIES = 1 << 22
 _EPS = np.finfo(float).eps
 
 
@@ -39,7 +42,11 @@ def _as_grid(a: Any, q: Any) -> tuple[np.ndarray, np.ndarray]:
         raise ValueError("a: every value must be finite")
     if not np.all(np.isfinite(q)):
         raise ValueError("q: every value must be finite")
-    a, q = np.broadcast_arrays(a, q)
+    try:
+        a, q = np.broadcast_arrays(a, q)
+    except ValueError:
+        raise ValueError(f"a, q: shapes {a.shape} and {q.shape} must broadcast together"
+                         ) from None
     return a, np.abs(q)  # the exponent is even in q (shift tau_1 by pi/2)
 
 
@@ -344,26 +351,35 @@ def transition_curves(q: Any, r_max: int = 4) -> dict[str, np.ndarray]:
     q : array_like
         q >= 0 (dimensionless), 1-D.
     r_max : int
-        Highest order, >= 1.
+        Highest order, 1..MATHIEU_SCALE_MAX; q with sqrt(2 q) <= MATHIEU_SCALE_MAX (bounded
+        work: matrices of r_max + 12 + sqrt(q) rows, solved in batches of bounded memory).
     """
     q = np.atleast_1d(np.asarray(q, dtype=float))
     if q.ndim != 1 or not np.all(np.isfinite(q)) or np.any(q < 0):
         raise ValueError(f"q = {q!r}: must be a 1-D array of finite values >= 0")
-    if int(r_max) != r_max or r_max < 1:
-        raise ValueError(f"r_max = {r_max!r}: must be an integer >= 1")
-    r_max = int(r_max)
-    size = r_max + 12 + int(np.ceil(np.sqrt(float(np.max(q)) if q.size else 0.0)))
+    r_max = count("r_max", r_max, 1, int(MATHIEU_SCALE_MAX))  # a_r ~ r^2: bounded like a
+    q_max = float(np.max(q)) if q.size else 0.0
+    if np.sqrt(2.0 * q_max) > MATHIEU_SCALE_MAX:
+        raise ValueError(f"q = {q_max:.6g} (the largest): sqrt(2 q) exceeds "
+                         f"{MATHIEU_SCALE_MAX:g}")
+    size = r_max + 12 + int(np.ceil(np.sqrt(q_max)))
+    chunk = max(1, _TRANSITION_ENTRIES // (size * size))  # bounded memory per eigen-solve
 
     def eig(diag: np.ndarray, first: Any, off_first: Any) -> np.ndarray:
-        mats = np.zeros((q.size, size, size))
+        first = np.broadcast_to(np.asarray(first, dtype=float), q.shape)
+        out = np.empty((q.size, size))
         idx = np.arange(size)
-        mats[:, idx, idx] = diag
-        mats[:, idx[:-1], idx[1:]] = q[:, None]
-        mats[:, idx[1:], idx[:-1]] = q[:, None]
-        mats[:, 0, 0] += first
-        mats[:, 0, 1] *= off_first
-        mats[:, 1, 0] *= off_first
-        return np.linalg.eigvalsh(mats)
+        for lo in range(0, q.size, chunk):
+            qc = q[lo:lo + chunk]
+            mats = np.zeros((qc.size, size, size))
+            mats[:, idx, idx] = diag
+            mats[:, idx[:-1], idx[1:]] = qc[:, None]
+            mats[:, idx[1:], idx[:-1]] = qc[:, None]
+            mats[:, 0, 0] += first[lo:lo + chunk]
+            mats[:, 0, 1] *= off_first
+            mats[:, 1, 0] *= off_first
+            out[lo:lo + chunk] = np.linalg.eigvalsh(mats)
+        return out
 
     n = np.arange(size)
     a_even = eig((2.0 * n) ** 2, 0.0, np.sqrt(2.0))  # a_0, a_2, a_4, ...: cos 2nt, A&S 20.2.21

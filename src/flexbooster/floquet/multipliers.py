@@ -46,6 +46,9 @@ class PeriodMapOverflowError(ValueError):
 
 
 def _matrix(name: str, value, n: int | None) -> np.ndarray:
+    if np.iscomplexobj(value):  # float() would drop the imaginary part
+        raise ValueError(f"{name} = {_one_line(value)}: must be a real square matrix (complex "
+                         "entries)")
     try:
         a = np.asarray(value, dtype=float)
     except (TypeError, ValueError):

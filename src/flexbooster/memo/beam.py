@@ -120,12 +120,13 @@ def mode_shape(n: int | np.ndarray, zeta: np.ndarray, derivative: int = 0) -> np
     zeta : array_like
         Beam coordinate (C-6), 0 at the aft edge, 2 at the nose.
     derivative : int
-        Order k >= 0 of the derivative in X = lambda_n zeta / 2; d/dzeta adds (lambda_n / 2)^k.
+        Order k of the derivative in X = lambda_n zeta / 2, 0..4 (the orders of the beam
+        equation, 4.1-4..7); d/dzeta adds (lambda_n / 2)^k.
     """
     n = np.asarray(n)
     if n.size == 0 or not np.issubdtype(n.dtype, np.integer) or np.min(n) < 1:
         raise ValueError(f"n = {n!r}: mode numbers must be integers >= 1")
-    derivative = _check_count("derivative", derivative, minimum=0)
+    derivative = count("derivative", derivative, 0, 4)  # the orders of the beam equation
     zeta = np.asarray(zeta, dtype=float)
     if not np.all(np.isfinite(zeta)):
         raise ValueError("zeta: must be finite")

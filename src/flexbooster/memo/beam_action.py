@@ -384,7 +384,11 @@ def _grid(Omega: np.ndarray, gamma: np.ndarray, omega_1: float) -> tuple[np.ndar
         raise ValueError(f"Omega = {Omega!r}: must be non-empty, finite and > 0 (rad/s)")
     if not np.all(np.isfinite(gamma)) or np.any(gamma < 0.0) or np.any(gamma >= 1.0):
         raise ValueError(f"gamma = {gamma!r}: must satisfy 0 <= gamma < 1")
-    Omega, gamma = np.broadcast_arrays(Omega, gamma)
+    try:
+        Omega, gamma = np.broadcast_arrays(Omega, gamma)
+    except ValueError:
+        raise ValueError(f"Omega, gamma: shapes {Omega.shape} and {gamma.shape} must broadcast "
+                         "together") from None
     return Omega.ravel() / omega_1, gamma.ravel(), Omega.shape
 
 

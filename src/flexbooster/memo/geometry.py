@@ -85,13 +85,16 @@ def mass_properties(
     L1, L2 : float
         Half-lengths of cylinder 1 and 2 (m); ``L2 = 0`` gives the single cylinder.
     h : float
-        Shell thickness (m).
+        Shell thickness (m), 0 < h < R1 and R2 (where R2 > 0).
     rho : float
         Mass density (kg/m^3).
     """
     R1, L1, h, rho = (positive(n, v) for n, v in (("R1", R1), ("L1", L1), ("h", h),
                                                    ("rho", rho)))
     R2, L2 = nonnegative("R2", R2), nonnegative("L2", L2)  # 0: the single-cylinder limit
+    for name, radius in (("R1", R1), ("R2", R2)):
+        if radius > 0.0 and not h < radius:  # a thin shell: the wall inside the radius
+            raise ValueError(f"h = {h!r}: must be < {name} = {radius!r} (a thin shell)")
     m1 = 2.0 * np.pi * rho * h * R1 * (2.0 * L1)
     m2 = 2.0 * np.pi * rho * h * R2 * (2.0 * L2)
     mass = m1 + m2

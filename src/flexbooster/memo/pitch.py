@@ -43,7 +43,11 @@ def pitch_frequency(F0: float, d2: float, K: float, I_cm: float) -> float:
     """
     F0, K = nonnegative("F0", F0), nonnegative("K", K)
     d2, I_cm = positive("d2", d2), positive("I_cm", I_cm)
-    return float(np.sqrt(F0 * d2 * K / I_cm))  # eq. (4.2-1), sin(K psi) ~ K psi
+    with np.errstate(over="ignore"):
+        result = float(np.sqrt(np.float64(F0) * d2 * K / I_cm))  # eq. (4.2-1), sin(K psi) ~ K psi
+    if not np.isfinite(result):
+        raise ValueError(f"F0 = {F0!r}, K = {K!r}: F0 d2 K / I_cm overflows double precision")
+    return result
 
 
 def mathieu_parameters(
@@ -65,8 +69,13 @@ def mathieu_parameters(
         raise ValueError(f"omega_psi = {omega_psi!r}: must be finite and >= 0")
     if not (np.isfinite(gamma) and gamma >= 0):
         raise ValueError(f"gamma = {gamma!r}: must be finite and >= 0")
-    a = 4.0 * omega_psi**2 / Omega**2  # eq. (4.2-4): 8 pi R1 d2 K T0 / (I_cm Omega^2)
-    q = gamma * a / 2.0  # eq. (4.2-4)
+    with np.errstate(over="ignore", divide="ignore", invalid="ignore"):
+        a = 4.0 * omega_psi**2 / Omega**2  # eq. (4.2-4): 8 pi R1 d2 K T0 / (I_cm Omega^2)
+        q = gamma * a / 2.0  # eq. (4.2-4)
+    if not (np.all(np.isfinite(a)) and np.all(np.isfinite(q))):
+        low = float(np.min(Omega))
+        raise ValueError(f"Omega = {low!r} (the smallest): a = 4 omega_psi^2 / Omega^2 or q = "
+                         f"gamma a / 2 overflows double precision (omega_psi = {omega_psi!r})")
     return a, q
 
 

@@ -30,7 +30,11 @@ __all__ = [
     "excitation",
     "unstable_frequencies",
     "TooManyRootsError",
+    "MAX_CURVE_INDEX",
 ]
+
+#: Largest R and S of :func:`excitation_curves` (the case's truncation limit, 500).
+MAX_CURVE_INDEX = 500
 
 #: eps_i of eq. (7.2-5), i = 1, 2, 3.
 EPS = (-0.5, 0.5, 0.5)
@@ -97,12 +101,12 @@ def excitation_curves(R: int, S: int) -> ExcitationCurves:
     Parameters
     ----------
     R : int
-        Number of beam exponents alpha_r (r = 1..R).
+        Number of beam exponents alpha_r (r = 1..R), 0..MAX_CURVE_INDEX (the case's limit).
     S : int
-        Harmonics s = -S..S.
+        Harmonics s = -S..S, 0..MAX_CURVE_INDEX.
     """
-    R = count("R", R, 0, None)
-    S = count("S", S, 0, None)
+    R = count("R", R, 0, MAX_CURVE_INDEX)  # bounded work: 13 + R (2 S + 1) curves at most
+    S = count("S", S, 0, MAX_CURVE_INDEX)
     rows: list[tuple[int, int, int, int, int, float, float, float]] = []
     idx = (1, 2, 3)
     for fam, (_, _, _, kind) in FAMILIES.items():
@@ -164,7 +168,11 @@ def excitation(
     """
     Omega_bar = np.asarray(Omega_bar, dtype=float)
     beta = np.asarray(beta, dtype=float)
-    alpha = np.asarray(alpha, dtype=float).reshape(Omega_bar.size, -1)
+    alpha = np.asarray(alpha, dtype=float)
+    r_max = int(np.max(curves.r, initial=0))
+    if alpha.ndim != 2 or alpha.shape[0] != Omega_bar.size or alpha.shape[1] < r_max:
+        raise ValueError(f"alpha: shape {alpha.shape} must be (n, R) with n = "
+                         f"{Omega_bar.size} (Omega_bar's size) and R >= {r_max} (the curves' r)")
     for name, value in (("Omega_bar", Omega_bar), ("beta", beta), ("alpha", alpha)):
         if not np.all(np.isfinite(value)):
             raise ValueError(f"{name}: must be finite (got {value.ravel()[:4]!r} ...)")

@@ -18,6 +18,7 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from ..errors import CaseError
 from ..results import Results
 from .figure_files import render_figure
 from .io import (
@@ -35,7 +36,8 @@ if TYPE_CHECKING:
 
 __all__ = ["OUTPUT_STAGES", "write_outputs", "make_figures", "figure_svgs",
            "figure_names", "render_figures", "MANIFEST", "STAGING_PREFIX", "publish_set",
-           "check_output_set"]
+           "check_output_set", "check_output_folder", "SET_NAMES", "FIGURE_STEMS",
+           "TABLE_NAMES"]
 
 #: The stages of :func:`write_outputs`, as passed to its ``progress`` callback.
 OUTPUT_STAGES = ("results.json and CSV", "figures", "report.html")
@@ -45,6 +47,61 @@ MANIFEST = "manifest.json"
 
 #: Prefix of the staging folder that :func:`write_outputs` makes inside the output folder.
 STAGING_PREFIX = ".flexbooster-staging-"
+#: The data files a set may hold (each written only when its result exists).
+TABLE_NAMES = ("results.json", "shell-frequencies.csv", "unstable-frequencies.csv",
+               "resonance-bands.csv", "vehicle-modes.csv", "vehicle-regions.csv", "report.html")
+#: Every figure :func:`figure_names` may name (each saved as .svg and .png).
+FIGURE_STEMS = ("danger-map", "ince-strutt", "beam-modes", "shell-frequencies-cylinder1",
+                "shell-frequencies-cylinder2", "nodal-patterns", "pitch-band-chart",
+                "beam-action-chart", "campbell", "vehicle-regions", "vehicle-mode-shapes",
+                "vehicle-unrolled")
+#: Every name a set of :func:`write_outputs` may use in its folder.
+SET_NAMES = (TABLE_NAMES + tuple(f"{stem}.{ext}" for stem in FIGURE_STEMS
+                                 for ext in ("svg", "png")) + (MANIFEST, ".flexbooster.lock"))
+
+
+def check_output_folder(folder: str | Path, names: tuple[str, ...] = SET_NAMES, *,
+                        field: str = "folder") -> Path:
+    """``folder`` as a Path once it is known to take the files ``names``, before any work:
+    CaseError naming ``field``, the path and the rule for an empty path, a folder that is a file
+    or lies under one, a folder where no file can be created (read-only, ``/proc``: probed by
+    making and removing a temporary folder there or in its nearest existing parent), or a name
+    of the set that exists as anything but a regular file (a ``results.json`` folder). What can
+    only fail later (a full disk) is an OSError naming the file
+    (:func:`flexbooster.present.io.write_bytes_atomic`).
+
+    Parameters
+    ----------
+    folder : str or pathlib.Path
+        The output folder (created later if missing).
+    names : tuple of str
+        File names the output will use in ``folder`` (default: every name of a
+        :func:`write_outputs` set).
+    field : str
+        The name of the folder in the message (a command-line option, or ``folder``).
+    """
+    if not isinstance(folder, str | os.PathLike):
+        raise TypeError(f"folder = {folder!r:.60}: must be a path (str or os.PathLike)")
+    if not os.fspath(folder):
+        raise CaseError(field, "", "must not be empty (use '.' for the current folder)")
+    path = Path(folder)
+    if path.exists() and not path.is_dir():
+        raise CaseError(field, str(path), "is a file, not a folder")
+    parent = path
+    while not parent.exists() and parent != parent.parent:
+        parent = parent.parent
+    if not parent.is_dir():
+        raise CaseError(field, str(path), f"cannot be created: {parent} is a file")
+    try:
+        os.rmdir(tempfile.mkdtemp(prefix=STAGING_PREFIX, dir=parent))
+    except OSError as exc:
+        raise CaseError(field, str(path), f"cannot be written: no folder can be made in {parent} "
+                        f"({exc.strerror or type(exc).__name__})") from None
+    for name in names:
+        target = path / name
+        if (target.exists() or target.is_symlink()) and not target.is_file():
+            raise CaseError(field, str(path), f"{target} exists and is not a regular file")
+    return path
 
 
 def publish_set(stage: str | Path, folder: str | Path, names: list[str]) -> list[Path]:
@@ -119,13 +176,13 @@ def write_outputs(
     results : Results
         The analysis.
     folder : str or pathlib.Path
-        Output folder (created if needed).
+        Output folder (created if needed; checked first by :func:`check_output_folder`).
     figures : bool
         Also draw and save the figures (SVG and PNG); the report then embeds them.
     progress : callable, optional
         Called with the name of each stage (:data:`OUTPUT_STAGES`) as it starts.
     """
-    folder = Path(folder)
+    folder = check_output_folder(folder)
     folder.mkdir(parents=True, exist_ok=True)
     stage = Path(tempfile.mkdtemp(prefix=STAGING_PREFIX, dir=folder))
     try:

@@ -220,7 +220,9 @@ def _print_beam_action(results: Results, console: Console) -> None:
     console.print(_table("Beam action (memo 4.1, Floquet exponents alpha_r)", rows))
 
 
-def print_stability(results: Results, console: Console) -> None:
+def print_stability(results: Results, console: Console, *,
+                    roots_file: str = "unstable-frequencies.csv",
+                    bands_file: str | None = "resonance-bands.csv") -> None:
     """Print the 10 most severe bands of unstable thrust frequencies.
 
     Parameters
@@ -229,6 +231,9 @@ def print_stability(results: Results, console: Console) -> None:
         The analysis.
     console : rich.console.Console
         Where to print.
+    roots_file, bands_file : str, str or None
+        The names of the files that hold every root and every band (None: not written), as
+        the caption names them.
     """
     st = results.stability
     if st is None:
@@ -238,8 +243,8 @@ def print_stability(results: Results, console: Console) -> None:
     table = Table(
         title=(
             "Unstable thrust frequencies (memo 7.3), the 10 most severe bands: "
-            f"{severity_caption(results)} All roots in unstable-frequencies.csv, all bands in "
-            "resonance-bands.csv."
+            f"{severity_caption(results)} All roots in {roots_file}"
+            + (f", all bands in {bands_file}." if bands_file else ".")
         ),
         title_justify="left",
         header_style="bold",

@@ -47,6 +47,8 @@ __all__ = [
     "ring_rows",
     "lumped_mass_matrix",
     "node_transform",
+    "auto_element_counts",
+    "MAX_ELEMENTS",
     "thrust_prestate",
     "HarmonicMatrices",
     "harmonic_matrices",
@@ -85,6 +87,23 @@ def _auto_breaks(seg, meridian: float, order: int) -> np.ndarray:
     breaks = np.concatenate(([0.0], np.cumsum(lengths)))
     breaks[-1] = meridian
     return breaks
+
+
+def auto_element_counts(vehicle: Vehicle, *, order: int = DEFAULT_ORDER) -> tuple[int, ...]:
+    """Element count per segment of the automatic (graded) mesh of :func:`mesh_vehicle`,
+    without building it: a segment longer than about ``MAX_ELEMENTS * MAX_ELEMENT_RADII`` radii
+    needs more than :data:`MAX_ELEMENTS`, which :func:`mesh_vehicle` refuses.
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        The vehicle.
+    order : int
+        Polynomial degree p, 3..12.
+    """
+    order = count("order", order, 3, 12)
+    return tuple(_auto_breaks(seg, lm, order).size - 1
+                 for seg, lm in zip(vehicle.segments, vehicle.meridian_lengths(), strict=True))
 
 
 def mesh_vehicle(

@@ -111,6 +111,13 @@ def _extras_dict(seg) -> dict:
         if getattr(seg, name) is not None:
             out[name] = getattr(seg, name).to_dict()
     return out
+def _thin(name: str, thickness: float, radius: float) -> float:
+    """``thickness`` > 0 and below ``radius`` (a thin shell: the wall inside the radius)."""
+    h = positive(name, thickness)
+    if not h < radius:
+        raise ValueError(f"{name} = {thickness!r}: must be < the radius {radius!r} (a thin "
+                         "shell)")
+    return h
 
 
 def _material(E: float, nu: float, rho: float) -> tuple[float, float, float]:
@@ -129,7 +136,7 @@ class Cylinder:
     Parameters
     ----------
     radius, length, thickness : float
-        Mid-surface radius, axial length and wall thickness (m), > 0.
+        Mid-surface radius, axial length and wall thickness (m), > 0; thickness < radius.
     E, nu, rho : float
         Young's modulus (Pa) > 0, Poisson's ratio in [0, 0.5), density (kg/m^3) > 0
         (keyword-only).
@@ -157,7 +164,8 @@ class Cylinder:
     def __post_init__(self) -> None:
         object.__setattr__(self, "radius", positive("radius", self.radius))
         object.__setattr__(self, "length", positive("length", self.length))
-        object.__setattr__(self, "thickness", positive("thickness", self.thickness))
+        object.__setattr__(self, "thickness", _thin("thickness", self.thickness,
+                                                     min(self.radius_aft, self.radius_fwd)))
         E, nu, rho = _material(self.E, self.nu, self.rho)
         object.__setattr__(self, "E", E)
         object.__setattr__(self, "nu", nu)
@@ -192,7 +200,7 @@ class Cone:
     length : float
         Axial length (m), >= 0.
     thickness : float
-        Wall thickness h (m), > 0.
+        Wall thickness h (m), > 0 and < the smaller radius.
     E, nu, rho : float
         Young's modulus (Pa) > 0, Poisson's ratio in [0, 0.5), density (kg/m^3) > 0
         (keyword-only).
@@ -217,7 +225,8 @@ class Cone:
         object.__setattr__(self, "radius_aft", positive("radius_aft", self.radius_aft))
         object.__setattr__(self, "radius_fwd", positive("radius_fwd", self.radius_fwd))
         object.__setattr__(self, "length", nonnegative("length", self.length))
-        object.__setattr__(self, "thickness", positive("thickness", self.thickness))
+        object.__setattr__(self, "thickness", _thin("thickness", self.thickness,
+                                                     min(self.radius_aft, self.radius_fwd)))
         E, nu, rho = _material(self.E, self.nu, self.rho)
         object.__setattr__(self, "E", E)
         object.__setattr__(self, "nu", nu)

@@ -7,16 +7,22 @@ process (``--workers 0``).  Results go to OUT (``.nc``: netCDF; ``.zarr``: zarr,
 batch), with OUT's stem ``.svg`` (the sweep figure) and ``.html`` (the sweep page) beside it.
 
 Exit codes as for every flexbooster command: 0 success (also when some points failed: they are
-recorded in the output's ``status``/``message``), 1 internal error or a file that cannot be
-written, 2 invalid input, 130 interrupted (what was finished is stored: ``--resume``).
+recorded in the output's ``status``/``message``), 1 internal error, 2 invalid input or a file
+that cannot be written (its path named), 130 interrupted (what was finished is stored:
+``--resume``).
 """
 
 from __future__ import annotations
 
+import contextlib
 import importlib.util
+import logging
 import os
+import signal
 import sys
-from contextlib import ExitStack
+import threading
+from collections.abc import Iterator
+from contextlib import ExitStack, contextmanager
 from pathlib import Path
 
 import click
@@ -57,8 +63,9 @@ Examples:
 \b
 Exit codes:
   0    success (failed points are recorded in the output, not fatal)
-  1    internal error, or an output file that cannot be written
-  2    invalid input: one line naming the field (axis), the value, the rule and the point
+  1    internal error
+  2    invalid input: one line naming the field (axis), the value, the rule and the point;
+       or an output file that cannot be written: one line naming its path
   130  interrupted (Ctrl-C); the finished points are stored, rerun with --resume"""
 
 
@@ -101,16 +108,66 @@ def _start_client(stack: ExitStack, scheduler: str | None, workers: int | None):
             raise CaseError("--scheduler", scheduler, f"cannot connect ({exc})") from None
     n = workers or os.cpu_count() or 1
     stack.enter_context(dask.config.set(local_cluster_config()))
-    cluster = stack.enter_context(
-        LocalCluster(
+    with _sigint_ignored():  # inherited by the worker processes spawned meanwhile
+        cluster = LocalCluster(
             n_workers=n,
             threads_per_worker=1,
             processes=True,
             host="127.0.0.1",
             dashboard_address=":0",  # a free port: never collides with another cluster
         )
-    )
-    return stack.enter_context(Client(cluster))
+    stack.push(lambda kind, error, trace: _close_cluster(cluster, kind is not None))
+    client = stack.enter_context(Client(cluster))
+    stack.push(lambda kind, error, trace: _stop_workers(cluster, kind is not None))
+    return client
+
+
+def _stop_workers(cluster, failed: bool) -> None:  # noqa: ANN001
+    """On an error or Ctrl-C, before the client and the cluster close: kill the worker
+    processes (SIGKILL, no restart) and silence the shutdown's log lines; a graceful close
+    would wait for the running tasks and print each cancelled one."""
+    if not failed:
+        return
+    logging.getLogger("distributed").setLevel(logging.CRITICAL)
+    for nanny in list(cluster.workers.values()):
+        nanny.auto_restart = False
+        pid = getattr(getattr(nanny, "process", None), "pid", None)
+        if pid:
+            with contextlib.suppress(ProcessLookupError):
+                os.kill(pid, signal.SIGKILL)
+
+
+def _close_cluster(cluster, failed: bool) -> None:  # noqa: ANN001
+    """Close the local cluster: gracefully after a finished sweep, within
+    :data:`_STOP_SECONDS` after an error or Ctrl-C (its workers are dead by then: the rest
+    lives in this process and ends with it)."""
+    if not failed:
+        cluster.close()
+        return
+    with contextlib.suppress(Exception):
+        cluster.close(timeout=_STOP_SECONDS)
+
+
+#: Longest wait (s) for the local cluster's close after an error or Ctrl-C.
+_STOP_SECONDS = 0.5
+
+
+@contextmanager
+def _sigint_ignored() -> Iterator[None]:
+    """SIGINT ignored while the block runs (in the main thread; elsewhere a no-op). A process
+    spawned meanwhile starts with SIGINT ignored, and Python then installs no KeyboardInterrupt
+    handler in it: a Ctrl-C at the terminal, which signals the whole process group, reaches
+    this process alone, which stops the workers itself (no worker tracebacks)."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
+
+
 
 
 def _dashboard(client) -> str | None:  # noqa: ANN001
@@ -282,8 +339,8 @@ def main(argv: list[str] | None = None) -> None:
     except click.ClickException as exc:
         exc.show()
         sys.exit(EXIT_INPUT if isinstance(exc, click.UsageError) else exc.exit_code)
-    except OSError as exc:
-        _fail(f"{exc.filename or ''}: {exc.strerror or exc}", EXIT_INTERNAL)
+    except OSError as exc:  # an output that cannot be written: its path named
+        _fail(f"{exc.filename or 'output'}: {exc.strerror or exc}", EXIT_INPUT)
     except Exception as exc:  # pragma: no cover - a bug; keep the traceback reachable
         if os.environ.get("FLEXBOOSTER_DEBUG"):
             raise

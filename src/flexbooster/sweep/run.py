@@ -8,6 +8,7 @@ Each point is bit-identical to a serial ``analyze(case)``.
 
 from __future__ import annotations
 
+import contextlib
 import inspect
 import math
 import time
@@ -313,9 +314,12 @@ def run_sweep(
             batches = _serial(todo, cases, spec, batch_size)
         else:
             batches = _distributed(todo, cases, spec, client, batch_size)
-        for results in batches:
-            sink.write(results)
-            report(*sink.counts(), spec.n_points)
+        # closed here, on any exit (Ctrl-C included): its tasks are cancelled while the
+        # client is open, never later by the garbage collector
+        with contextlib.closing(batches):
+            for results in batches:
+                sink.write(results)
+                report(*sink.counts(), spec.n_points)
     finally:
         sink.close()
     ds = sink.dataset()

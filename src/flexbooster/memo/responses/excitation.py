@@ -360,8 +360,8 @@ def make_excitation(model: BoosterModel, Omega: float, *, psi0: float = 0.01,
     4.2-6..9).
 
     A_i from (4.2-7b..d) with the exact beta; the beam vector from Hill's determinant at the
-    exponent nearest alpha_r; a complex alpha_r is used by its real part and recorded in
-    ``warnings``. ValueError for bad input or an unbounded pitch (complex beta).
+    exponent nearest alpha_r. ValueError for bad input, an unbounded pitch (complex beta) or
+    an unbounded beam (complex alpha_r: Omega inside a beam-action instability band).
 
     Parameters
     ----------
@@ -446,9 +446,13 @@ def excitation_at(model: BoosterModel, Omega: float, psi0: float, beam_amplitude
         dist = np.abs(shift) + np.abs(cand.imag - target.imag)
         e = int(np.argmin(dist))
         alpha = complex(cand[e])
-        if abs(alpha.imag) > 1e-9:
-            warnings.append(f"beam exponent alpha_{beam_mode} = {alpha:.6g} is complex at "
-                            f"Omega = {Omega:.6g} rad/s: its real part is used")
+        if abs(alpha.imag) > 1e-9:  # q ~ exp(i alpha Omega t): grows, no bounded form
+            raise ValueError(
+                f"Omega = {Omega!r}: inside an instability band of the beam action (alpha_"
+                f"{beam_mode} = {alpha:.6g} is complex): the beam motion grows like exp("
+                f"{abs(alpha.imag) * Omega:.4g} t / s), which the bounded Floquet form "
+                "(4.1-10) cannot show; choose an Omega outside the band "
+                "(flexbooster stability lists them) or beam_amplitude = 0")
         if params is not None:  # the parameter function's value, in Hill's representative
             alpha = complex(alpha.real - shift[e], alpha.imag)
         s = np.arange(-S, S + 1)
