@@ -15,7 +15,13 @@ from .shell_of_revolution.geometry import Cone, Cylinder, Vehicle
 if TYPE_CHECKING:
     from .case import Case
 
-__all__ = ["model_from_case", "vehicle_from_case"]
+__all__ = ["MEMO_NOT_APPLICABLE", "model_from_case", "vehicle_from_case"]
+
+#: Why the memo's method (beam, Galerkin shells, beam action, the 13-family table, its charts)
+#: does not apply to a case whose vehicle is ``[[vehicle.segments]]``.
+MEMO_NOT_APPLICABLE = ("the memo's method (Tech Memo 104: free-free beam, Galerkin shells, beam "
+                       "action, the 13-family table) models the two bare cylinders of [booster] "
+                       "only")
 
 
 def model_from_case(case: Case) -> BoosterModel:
@@ -29,6 +35,9 @@ def model_from_case(case: Case) -> BoosterModel:
         From :func:`flexbooster.load_case` or :func:`flexbooster.default_case` (SI).
     """
     b, t, n = case.booster, case.thrust, case.truncation
+    if b is None:
+        raise CaseError("booster", None, f"{MEMO_NOT_APPLICABLE} (this case's vehicle is "
+                        "[[vehicle.segments]])")
     try:
         with np.errstate(over="raise", invalid="raise"):
             return booster_model(
@@ -71,7 +80,7 @@ def vehicle_from_case(case: Case) -> Vehicle:
     segments = []
     for seg in table.segments:
         mat = {name: next(v for v in (getattr(seg, name), getattr(table, name),
-                                      getattr(b, name)) if v is not None)
+                                      getattr(b, name, None)) if v is not None)
                for name in ("E", "nu", "rho")}
         if seg.kind == "cylinder":
             segments.append(Cylinder(seg.radius, seg.length, seg.thickness, **mat))
