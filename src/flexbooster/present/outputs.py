@@ -144,8 +144,10 @@ def _write_files(results: Results, folder: Path, figures: bool,
     names = figure_names(results) if figures else ()
     with _drawn(results, names, _usable_cpus()) as drawn:
         step(OUTPUT_STAGES[0])
-        written = [write_json_atomic(folder / "results.json", results.to_dict()),
-                   write_csv_atomic(folder / "shell-frequencies.csv", results.shell.to_rows())]
+        written = [write_json_atomic(folder / "results.json", results.to_dict())]
+        if results.shell is not None:  # the memo's shells ([booster] only)
+            written.append(write_csv_atomic(folder / "shell-frequencies.csv",
+                                            results.shell.to_rows()))
         if results.stability is not None:
             written.append(write_csv_atomic(folder / "unstable-frequencies.csv",
                                             results.stability.to_columns()))
