@@ -322,7 +322,10 @@ def stability(
     from .present.io import write_csv_atomic, write_json_atomic
     from .present.summary import print_stability
 
+    from .model import check_memo_applies
+
     case = _with_budget(_case_with_range(_load(case_file), omega_min, omega_max), max_seconds)
+    check_memo_applies(case)  # the memo's table: [booster] only
     with _progress(len(STAGES), quiet) as step:
         results = analyze(case, progress=step, vehicle=False,  # the memo table only
                           on_estimate=getattr(step, "estimate", None))
