@@ -319,10 +319,9 @@ def stability(
       flexbooster stability my.toml --omega-min 5 --omega-max 500 -o out/
     """
     from .analysis import STAGES, analyze
+    from .model import check_memo_applies
     from .present.io import write_csv_atomic, write_json_atomic
     from .present.summary import print_stability
-
-    from .model import check_memo_applies
 
     case = _with_budget(_case_with_range(_load(case_file), omega_min, omega_max), max_seconds)
     check_memo_applies(case)  # the memo's table: [booster] only
