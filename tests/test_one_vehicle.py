@@ -23,6 +23,7 @@ import dataclasses
 import json
 import math
 import tomllib
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -44,6 +45,7 @@ from flexbooster.shell_of_revolution import (
     VehicleTank,
     mass_properties,
 )
+from flexbooster.vehicle_case import VehicleSegment
 
 SEGMENT_TOML = """
 name = "the default case as vehicle segments"
@@ -307,3 +309,34 @@ def test_run_a_segment_case_writes_its_files(tmp_path, capsys):
     assert "shell-frequencies.csv" not in names
     out = json.loads((tmp_path / "out" / "results.json").read_text())
     assert out["beam_action"]["not_applicable"].startswith("not applicable")
+
+
+# --------------------------------------------------------------------------- the example
+
+EXAMPLE = Path(__file__).parents[1] / "examples" / "two-stage-liquid.toml"
+#: The example's fields of issue 32 (pressure, stiffeners, masses, tanks) exist in the input.
+_PHYSICS_FIELDS = "pressure" in VehicleSegment.model_fields
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(not _PHYSICS_FIELDS, reason="the [vehicle] fields of issue 32 (pressure, "
+                    "rings, [[vehicle.masses]], [[vehicle.tanks]]) are not in vehicle_case.py")
+def test_example_two_stage_liquid_modes(capsys):
+    """`flexbooster modes examples/two-stage-liquid.toml`: exit 0; k = 0..20; the mass
+    properties list the three lumped masses (2000, 600, 3600 kg, exact) and the four tanks,
+    each liquid pi R^2 (fwd - aft) fill rho within 1 % (R = 1.52 m, the mid-surface: the
+    liquid's radius lies between it and the inner wall, h / R = 0.26 %)."""
+    assert run_cli(["modes", str(EXAMPLE), "--format", "json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["k_max"] == 20 and {m["k"] for m in out["modes"]} <= set(range(21))
+    assert all(math.isfinite(m["hz"]) and m["hz"] > 0.0 for m in out["modes"])
+    parts = {c["name"]: c for c in out["mass_properties"]["contributions"]}
+    for name, mass in (("first-stage engine (LR87)", 2000.0),
+                       ("second-stage engine (LR91)", 600.0), ("payload", 3600.0)):
+        assert parts[name]["mass_kg"] == pytest.approx(mass, rel=1e-12)
+    for name, length, fill, rho in (("stage-1 fuel", 6.5, 0.94, 903.0),
+                                    ("stage-1 oxidiser", 8.0, 0.96, 1440.0),
+                                    ("stage-2 fuel", 2.0, 0.80, 903.0),
+                                    ("stage-2 oxidiser", 2.5, 0.80, 1440.0)):
+        liquid = math.pi * 1.52**2 * length * fill * rho
+        assert parts[name]["mass_kg"] == pytest.approx(liquid, rel=0.01)
