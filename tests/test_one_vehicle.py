@@ -340,3 +340,13 @@ def test_example_two_stage_liquid_modes(capsys):
                                     ("stage-2 oxidiser", 2.5, 0.80, 1440.0)):
         liquid = math.pi * 1.52**2 * length * fill * rho
         assert parts[name]["mass_kg"] == pytest.approx(liquid, rel=0.01)
+
+
+def test_sweep_scalars_of_a_segments_case_name_the_reason(segment_results):
+    """A sweep's variables are the memo's (omega_1, shell frequencies, beam action, table): a
+    segments case's point is a ValueError naming omega_1 and the reason (recorded per point by
+    the sweep), not a TypeError on the not-applicable mapping."""
+    from flexbooster.sweep.run import point_scalars
+
+    with pytest.raises(ValueError, match=r"^omega_1: .*not applicable: the memo's method"):
+        point_scalars(segment_results.to_dict())
