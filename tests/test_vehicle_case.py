@@ -495,3 +495,165 @@ def test_flat_plate_leaves_out_the_prestress():
                                         "thickness": "8 mm"})
     survey = analyze_vehicle(load_case(data), views=False)
     assert survey.prestressed is False and "flat plate" in survey.note
+
+
+# ------------------------------------------------ issue 32: masses, tanks, pressure, stiffeners
+
+#: A two-segment vehicle with every issue-32 field, in units.
+PHYSICS_TABLE = """
+[vehicle]
+E = "70 GPa"
+nu = 0.3
+rho = "2700 kg/m^3"
+[[vehicle.segments]]
+kind = "cylinder"
+radius = "1.5 m"
+length = "6 m"
+thickness = "4 mm"
+nonstructural_mass = "0.2 lb/ft^2"
+pressure = "30 psi"
+rings = { spacing = "50 cm", area = "4 cm^2", inertia = "2 cm^4", eccentricity = "-2 cm" }
+[[vehicle.segments]]
+kind = "cylinder"
+radius = "1.5 m"
+length = "4 m"
+thickness = "4 mm"
+junction = "rigid-bulkhead"
+stringers = { spacing = "0.2 m", area = 1e-4, inertia = 1e-9, eccentricity = 0.01 }
+[[vehicle.masses]]
+station = 0.0
+mass = "2 t"
+transverse_inertia = "800 kg*m^2"
+offset = "-1 m"
+name = "engine"
+[[vehicle.masses]]
+station = "10 m"
+mass = 500
+[[vehicle.tanks]]
+aft = 0.0
+fwd = "6 m"
+fill = 0.6
+density = "1140 kg/m^3"
+name = "lox"
+"""
+
+
+def _physics_case(**changes) -> dict:
+    data = _base()
+    data["thrust"]["F0"] = "0.3 MN"
+    data.update(tomllib.loads(PHYSICS_TABLE))
+    data["vehicle"].update(changes)
+    return data
+
+
+def test_physics_fields_units_and_vehicle():
+    """Every issue-32 field reaches the core Vehicle in SI (pint conversions: 0.2 lb/ft^2 =
+    0.976484 kg/m^2, 30 psi = 206842.7 Pa, 4 cm^2 = 4e-4 m^2, 2 cm^4 = 2e-8 m^4, 2 t = 2000 kg;
+    rel. 1e-6); defaults: inertia and eccentricity 0, names "mass 1"."""
+    veh = vehicle_from_case(load_case(_physics_case()))
+    s0, s1 = veh.segments
+    assert s0.nonstructural_mass == pytest.approx(0.2 * 0.45359237 / 0.3048**2, rel=1e-6)
+    assert s0.pressure == pytest.approx(30 * 6894.757293168361, rel=1e-6)
+    assert (s0.rings.spacing, s0.rings.area, s0.rings.inertia) == pytest.approx(
+        (0.5, 4e-4, 2e-8), rel=1e-9)
+    assert s0.rings.eccentricity == pytest.approx(-0.02, rel=1e-9) and s0.stringers is None
+    assert s1.stringers.eccentricity == 0.01 and s1.rings is None and s1.pressure == 0.0
+    engine, payload = veh.masses
+    assert (engine.station, engine.offset, engine.name) == (0.0, -1.0, "engine")
+    assert (engine.mass, engine.transverse_inertia) == pytest.approx((2000.0, 800.0), rel=1e-9)
+    assert (payload.station, payload.mass, payload.transverse_inertia, payload.offset,
+            payload.name) == (10.0, 500.0, 0.0, 0.0, "mass 1")
+    (tank,) = veh.tanks
+    assert (tank.aft, tank.fwd, tank.fill, tank.name) == (0.0, 6.0, 0.6, "lox")
+    assert tank.density == pytest.approx(1140.0, rel=1e-12)
+
+
+PHYSICS_BAD = [  # (table changes, field, words of the rule)
+    (lambda d: d["vehicle"]["segments"][0].update(nonstructural_mass=-1.0),
+     "vehicle.segments[0].nonstructural_mass", ">= 0"),
+    (lambda d: d["vehicle"]["segments"][0].update(pressure="3 m"),
+     "vehicle.segments[0].pressure", "wrong dimension"),
+    (lambda d: d["vehicle"]["segments"][0]["rings"].update(spacing=0.0),
+     "vehicle.segments[0].rings.spacing", "positive"),
+    (lambda d: d["vehicle"]["segments"][0]["rings"].update(area="4 cm"),
+     "vehicle.segments[0].rings.area", "wrong dimension"),
+    (lambda d: d["vehicle"]["segments"][0]["rings"].update(inertia=-1e-9),
+     "vehicle.segments[0].rings.inertia", ">= 0"),
+    (lambda d: d["vehicle"]["segments"][1]["stringers"].update(colour="red"),
+     "vehicle.segments[1].stringers.colour", "unknown key"),
+    (lambda d: d["vehicle"]["masses"][0].update(mass=0), "vehicle.masses[0].mass", "positive"),
+    (lambda d: d["vehicle"]["masses"][1].update(station=-1.0),
+     "vehicle.masses[1].station", ">= 0"),
+    (lambda d: d["vehicle"]["masses"][0].update(transverse_inertia="3 kg"),
+     "vehicle.masses[0].transverse_inertia", "wrong dimension"),
+    (lambda d: d["vehicle"]["tanks"][0].update(fill=1.5), "vehicle.tanks[0].fill", "[0, 1]"),
+    (lambda d: d["vehicle"]["tanks"][0].update(density=0), "vehicle.tanks[0].density",
+     "positive"),
+    (lambda d: d["vehicle"]["tanks"][0].pop("fwd"), "vehicle.tanks[0].fwd", "missing"),
+]
+
+
+@pytest.mark.parametrize("change, field, rule", PHYSICS_BAD,
+                         ids=[b[1] + ": " + b[2] for b in PHYSICS_BAD])
+def test_bad_physics_field_is_one_line_naming_it(change, field, rule):
+    """Each invalid issue-32 field: one CaseError line naming the field and the rule."""
+    data = _physics_case()
+    change(data)
+    with pytest.raises(CaseError) as info:
+        load_case(data)
+    assert info.value.field == field
+    assert rule in info.value.rule
+    assert "\n" not in str(info.value) and str(info.value).startswith(field)
+
+
+@pytest.mark.parametrize("change, field, rule", [
+    (lambda d: d["vehicle"]["tanks"][0].update(aft="1 m"), "vehicle.tanks[0].aft",
+     "segment boundary"),
+    (lambda d: d["vehicle"]["tanks"][0].update(aft="6 m", fwd="6 m"), "vehicle.tanks[0].fwd",
+     "forward of aft"),
+    (lambda d: d["vehicle"]["masses"][1].update(station="11 m"), "vehicle.masses[1].station",
+     "within the vehicle"),
+])
+def test_stations_that_do_not_fit_the_segments(change, field, rule):
+    """Stations checked against the segments when the vehicle is built: CaseError naming the
+    case's field (vehicle.tanks[0].aft, ...)."""
+    data = _physics_case()
+    change(data)
+    with pytest.raises(CaseError) as info:
+        vehicle_from_case(load_case(data))
+    assert info.value.field == field and rule in info.value.rule
+
+
+def test_masses_need_segments():
+    """[[vehicle.masses]] on the memo vehicle (no segments): CaseError naming vehicle.masses."""
+    data = _base()
+    data["vehicle"] = {"masses": [{"station": 1.0, "mass": 10.0}]}
+    with pytest.raises(CaseError) as info:
+        load_case(data)
+    assert info.value.field == "vehicle.masses" and "only with" in info.value.rule
+
+
+def test_modes_json_has_mass_properties_and_slosh(tmp_path, capsys):
+    """`modes --format json` of the physics case: "mass_properties" equals
+    shell_of_revolution.mass_properties of the case's vehicle (exact, same computation) with
+    its contributions; "slosh" lists the LOX tank with Abramson's frequency at a = F0 / m
+    (omega^2 = (a xi_1 / R) tanh(xi_1 h / R), h = 3.6 m, xi_1 = 1.8412; 0.1 %)."""
+    from flexbooster.shell_of_revolution import mass_properties
+
+    path = tmp_path / "physics.toml"
+    data = _small(_base())
+    data["thrust"]["F0"] = "0.3 MN"
+    table = PHYSICS_TABLE.replace("[vehicle]\n", "[vehicle]\nk_max = 2\n")
+    path.write_text(dump_case(data) + table)
+    assert run_cli(["modes", str(path), "--format", "json", "--f-max", "60"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    props = mass_properties(vehicle_from_case(load_case(path)))
+    assert data["mass_properties"] == json.loads(json.dumps(props.to_dict()))
+    assert [c["kind"] for c in data["mass_properties"]["contributions"]] == [
+        "shell", "nonstructural", "stiffeners", "lumped", "lumped", "tank"]
+    (slosh,) = data["slosh"]
+    a = 3.0e5 / props.mass_kg
+    xi = 1.8412
+    hz = math.sqrt(a * xi / 1.5 * math.tanh(xi * 3.6 / 1.5)) / (2 * math.pi)
+    assert slosh["tank"] == "lox" and slosh["hz"] == pytest.approx(hz, rel=1e-3)
+    assert slosh["mass_kg"] > 0.0

@@ -11,7 +11,29 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["choice", "count", "finite", "finite_array", "nonnegative", "positive"]
+__all__ = ["FieldValueError", "choice", "count", "finite", "finite_array", "nonnegative",
+           "positive"]
+
+
+class FieldValueError(ValueError):
+    """A ValueError that names the field (a path such as ``"tanks[0].aft"``), the value and the
+    rule, so that the input layer can report it under the case's own field name.
+
+    Parameters
+    ----------
+    field : str
+        Path of the field in the object checked.
+    value : object
+        The value given.
+    rule : str
+        The rule it breaks, in words.
+    """
+
+    def __init__(self, field: str, value: Any, rule: str) -> None:
+        self.field = field
+        self.value = value
+        self.rule = rule
+        super().__init__(f"{field} = {value!r}: {rule}")
 
 
 def finite(name: str, value: Any) -> float:

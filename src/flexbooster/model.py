@@ -8,9 +8,17 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from .checks import FieldValueError
 from .errors import CaseError
 from .memo.model import BoosterModel, Truncation, booster_model
-from .shell_of_revolution.geometry import Cone, Cylinder, Vehicle
+from .shell_of_revolution.geometry import (
+    Cone,
+    Cylinder,
+    LumpedMass,
+    Stiffeners,
+    Vehicle,
+    VehicleTank,
+)
 
 if TYPE_CHECKING:
     from .case import Case
@@ -94,11 +102,25 @@ def vehicle_from_case(case: Case) -> Vehicle:
         mat = {name: next(v for v in (getattr(seg, name), getattr(table, name),
                                       getattr(b, name, None)) if v is not None)
                for name in ("E", "nu", "rho")}
+        wall = {"nonstructural_mass": seg.nonstructural_mass, "pressure": seg.pressure,
+                **{name: None if st is None else Stiffeners(
+                    spacing=st.spacing, area=st.area, inertia=st.inertia,
+                    eccentricity=st.eccentricity)
+                   for name, st in (("rings", seg.rings), ("stringers", seg.stringers))}}
         if seg.kind == "cylinder":
-            segments.append(Cylinder(seg.radius, seg.length, seg.thickness, **mat))
+            segments.append(Cylinder(seg.radius, seg.length, seg.thickness, **mat, **wall))
         else:
             segments.append(Cone(seg.radius_aft, seg.radius_fwd, seg.length, seg.thickness,
-                                 **mat))
+                                 **mat, **wall))
     junctions = tuple(seg.junction or "continuous" for seg in table.segments[1:])
-    return Vehicle(segments, junctions=junctions, aft_end=table.aft_end or "free",
-                   fwd_end=table.fwd_end or "free", theory=table.theory)
+    masses = tuple(LumpedMass(m.station, m.mass, transverse_inertia=m.transverse_inertia,
+                              offset=m.offset, name=m.name or f"mass {i}")
+                   for i, m in enumerate(table.masses))
+    tanks = tuple(VehicleTank(t.aft, t.fwd, t.fill, t.density, name=t.name or f"tank {i}")
+                  for i, t in enumerate(table.tanks))
+    try:
+        return Vehicle(segments, junctions=junctions, aft_end=table.aft_end or "free",
+                       fwd_end=table.fwd_end or "free", theory=table.theory, masses=masses,
+                       tanks=tanks)
+    except FieldValueError as exc:  # a station that does not fit the segments
+        raise CaseError(f"vehicle.{exc.field}", exc.value, exc.rule) from None

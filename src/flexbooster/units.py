@@ -35,6 +35,11 @@ US_UNITS: dict[str, str] = {
 #: SI unit of each kind of quantity that a case file may hold.
 SI_UNITS: dict[str, str] = {
     "length": "m",
+    "area": "m^2",
+    "second_moment": "m^4",
+    "mass": "kg",
+    "areal_density": "kg/m^2",
+    "moment_of_inertia": "kg*m^2",
     "pressure": "Pa",
     "density": "kg/m^3",
     "force": "N",

@@ -31,7 +31,10 @@ __all__ = [
     "REGION_DAMPING_RATIO",
     "REGION_N_MODES",
     "REGION_N_MODES_LIMIT",
+    "VehicleStiffeners",
     "VehicleSegment",
+    "VehicleMass",
+    "VehicleTankTable",
     "VehicleTable",
     "check_vehicle",
 ]
@@ -92,6 +95,23 @@ def _material(cls, value: Any, info) -> float | None:  # noqa: ANN001
     return result
 
 
+def _quantity(kind: str, rule: str):
+    """Validator: ``to_si`` of ``kind``, then ``rule`` (">0", ">=0", "any", "0..1")."""
+    def convert(cls, value: Any, info) -> float | None:  # noqa: ANN001
+        if value is None:
+            return None
+        result = to_si(info.field_name, value, kind)
+        if rule == ">0" and not result > 0.0:
+            raise ValueError("must be positive")
+        if rule == ">=0" and not result >= 0.0:
+            raise ValueError("must be >= 0")
+        if rule == "0..1" and not 0.0 <= result <= 1.0:
+            raise ValueError("must lie in [0, 1]")
+        return result
+
+    return convert
+
+
 def _one_of(options: tuple[str, ...]):
     def check(cls, value: Any) -> Any:  # noqa: ANN001
         if value is not None and value not in options:
@@ -99,6 +119,35 @@ def _one_of(options: tuple[str, ...]):
         return value
 
     return check
+
+
+class VehicleStiffeners(BaseModel):
+    """``rings`` or ``stringers`` of a segment: one family of equally spaced stiffeners of the
+    segment's material, smeared over the wall (Baruch-Singer).
+
+    Attributes
+    ----------
+    spacing : float
+        Distance between neighbours (m), > 0: along the axis for rings, around the
+        circumference for stringers.
+    area : float
+        Cross-section area (m^2), > 0.
+    inertia : float
+        Second moment of the cross-section about its own centroid (m^4), >= 0, default 0.
+    eccentricity : float
+        Centroid's distance from the wall's mid-surface (m), positive outward, default 0.
+    """
+
+    model_config = _FROZEN
+    spacing: float
+    area: float
+    inertia: float = 0.0
+    eccentricity: float = 0.0
+
+    _spacing = field_validator("spacing", mode="before")(_quantity("length", ">0"))
+    _area = field_validator("area", mode="before")(_quantity("area", ">0"))
+    _inertia = field_validator("inertia", mode="before")(_quantity("second_moment", ">=0"))
+    _ecc = field_validator("eccentricity", mode="before")(_quantity("length", "any"))
 
 
 class VehicleSegment(BaseModel):
@@ -122,6 +171,13 @@ class VehicleSegment(BaseModel):
     junction : str or None
         Junction with the previous segment: ``"continuous"`` (default), ``"rigid-bulkhead"`` or
         ``"memo-bulkhead"``; not on the first segment.
+    nonstructural_mass : float
+        Smeared mass on the wall (kg/m^2), >= 0, default 0: insulation, equipment.
+    pressure : float
+        Internal gauge pressure (Pa), default 0: membrane pre-stress N_theta = p R,
+        N_x = p R / 2.
+    rings, stringers : VehicleStiffeners or None
+        Smeared stiffeners.
     """
 
     model_config = _FROZEN
@@ -135,7 +191,14 @@ class VehicleSegment(BaseModel):
     nu: float | None = None
     rho: float | None = None
     junction: str | None = None
+    nonstructural_mass: float = 0.0
+    pressure: float = 0.0
+    rings: VehicleStiffeners | None = None
+    stringers: VehicleStiffeners | None = None
 
+    _nsm = field_validator("nonstructural_mass", mode="before")(
+        _quantity("areal_density", ">=0"))
+    _pressure = field_validator("pressure", mode="before")(_quantity("pressure", "any"))
     _kind = field_validator("kind", mode="before")(_one_of(SEGMENT_KINDS))
     _radii = field_validator("radius", "radius_aft", "radius_fwd", "thickness",
                              mode="before")(_length(True))
@@ -152,6 +215,68 @@ class VehicleSegment(BaseModel):
     def r_fwd(self) -> float:
         """Radius at the forward edge (m)."""
         return self.radius if self.kind == "cylinder" else self.radius_fwd
+
+
+class VehicleMass(BaseModel):
+    """One ``[[vehicle.masses]]`` entry: a rigid mass attached to the wall's ring at a station
+    (engines, payload, avionics, interstage hardware); it acts on k = 0 and k = 1.
+
+    Attributes
+    ----------
+    station : float
+        Axial distance of the attachment from the aft edge (m), >= 0, within the vehicle.
+    mass : float
+        Mass (kg), > 0.
+    transverse_inertia : float
+        Moment of inertia about a transverse axis through its centre of mass (kg m^2), >= 0,
+        default 0.
+    offset : float
+        Axial distance of its centre of mass forward of ``station`` (m), default 0.
+    name : str
+        Label in the outputs (default "mass i").
+    """
+
+    model_config = _FROZEN
+    station: float
+    mass: float
+    transverse_inertia: float = 0.0
+    offset: float = 0.0
+    name: str = ""
+
+    _station = field_validator("station", mode="before")(_quantity("length", ">=0"))
+    _mass = field_validator("mass", mode="before")(_quantity("mass", ">0"))
+    _inertia = field_validator("transverse_inertia", mode="before")(
+        _quantity("moment_of_inertia", ">=0"))
+    _offset = field_validator("offset", mode="before")(_quantity("length", "any"))
+
+
+class VehicleTankTable(BaseModel):
+    """One ``[[vehicle.tanks]]`` entry: liquid propellant between two stations, settled aft.
+
+    Attributes
+    ----------
+    aft, fwd : float
+        Stations of the tank's ends from the aft edge (m): each a segment boundary or a vehicle
+        end, aft < fwd, the wall between them one continuous meridian.
+    fill : float
+        Liquid height as a fraction of the tank's length, 0..1 (1: full).
+    density : float
+        Liquid density (kg/m^3), > 0.
+    name : str
+        Label in the outputs (default "tank i").
+    """
+
+    model_config = _FROZEN
+    aft: float
+    fwd: float
+    fill: float
+    density: float
+    name: str = ""
+
+    _aft = field_validator("aft", mode="before")(_quantity("length", ">=0"))
+    _fwd = field_validator("fwd", mode="before")(_quantity("length", ">0"))
+    _fill = field_validator("fill", mode="before")(_quantity("dimensionless", "0..1"))
+    _density = field_validator("density", mode="before")(_quantity("density", ">0"))
 
 
 class VehicleTable(BaseModel):
@@ -179,6 +304,10 @@ class VehicleTable(BaseModel):
     n_modes : int
         Modes per harmonic in the regions' basis, 1..:data:`REGION_N_MODES_LIMIT`, default
         :data:`REGION_N_MODES`.
+    masses : tuple of VehicleMass
+        ``[[vehicle.masses]]`` (only with segments).
+    tanks : tuple of VehicleTankTable
+        ``[[vehicle.tanks]]`` (only with segments).
     """
 
     model_config = _FROZEN
@@ -193,6 +322,8 @@ class VehicleTable(BaseModel):
     segments: tuple[VehicleSegment, ...] | None = None
     damping_ratio: float = REGION_DAMPING_RATIO
     n_modes: StrictInt = REGION_N_MODES
+    masses: tuple[VehicleMass, ...] = ()
+    tanks: tuple[VehicleTankTable, ...] = ()
 
     _mat = field_validator("E", "nu", "rho", mode="before")(_material)
     _ends = field_validator("aft_end", "fwd_end", mode="before")(_one_of(VEHICLE_ENDS))
@@ -250,6 +381,10 @@ def check_vehicle(table: VehicleTable | None, *, booster_radii: tuple[float, flo
                 raise CaseError(f"vehicle.{name}", getattr(table, name),
                                 "only with [[vehicle.segments]] (the memo vehicle takes the "
                                 "material of [booster])")
+        for name in ("masses", "tanks"):
+            if getattr(table, name):
+                raise CaseError(f"vehicle.{name}", "[...]", "only with [[vehicle.segments]] "
+                                "(stations refer to the segments)")
         return
     if table.junction is not None:
         raise CaseError("vehicle.junction", table.junction,
@@ -257,6 +392,10 @@ def check_vehicle(table: VehicleTable | None, *, booster_radii: tuple[float, flo
                         "(at its aft edge) instead")
     if len(table.segments) == 0:
         raise CaseError("vehicle.segments", [], "at least one segment is needed")
+    for i, tank in enumerate(table.tanks):
+        if not tank.fwd > tank.aft:
+            raise CaseError(f"vehicle.tanks[{i}].fwd", tank.fwd,
+                            f"must be forward of aft = {tank.aft!r} m")
     for i, seg in enumerate(table.segments):
         _check_segment(i, seg)
         if i == 0:

@@ -418,7 +418,9 @@ def donnell_reference(table: ShellFrequencies, R1: float, L1: float, R2: float, 
 
 
 def sd_cylinder_stiffness(length: float, radius: float, thickness: float, E: float, nu: float,
-                          m: int, n: int, theory: str = "sanders") -> np.ndarray:
+                          m: int, n: int, theory: str = "sanders", *,
+                          stiffening: np.ndarray | None = None,
+                          prestress: tuple[float, float] = (0.0, 0.0)) -> np.ndarray:
     """Stiffness per unit area of the shear-diaphragm cylinder's mode (m, n), Sanders or Donnell.
 
     Parameters
@@ -430,6 +432,13 @@ def sd_cylinder_stiffness(length: float, radius: float, thickness: float, E: flo
     m, n : int
         Axial half-waves (>= 0) and circumferential waves (>= 0).
     theory : {"sanders", "donnell"}
+    stiffening : ndarray, shape (6, 6), optional
+        Added to diag(A, D) in the strain order (eps_x, eps_t, gamma, kappa_x, kappa_t, tau):
+        smeared stiffeners (Baruch and Singer 1963).
+    prestress : (float, float)
+        Membrane resultants (N_x, N_theta) (N/m, tension > 0): the Donnell geometric stiffness
+        N_x w_x^2 + N_theta (w_t / R)^2 adds N_x lam^2 + N_theta n^2 / R^2 to K[2, 2]
+        (Brush and Almroth 1975, sec. 5.3).
 
     Returns
     -------
@@ -459,4 +468,9 @@ def sd_cylinder_stiffness(length: float, radius: float, thickness: float, E: flo
     ben = np.array([[0, 0, lam**2], [0, c * n / R**2, n**2 / R**2],
                     [c * 0.5 * n / R**2, c * 1.5 * lam / R, 2 * n * lam / R]])
     cm = np.array([[1, nu, 0], [nu, 1, 0], [0, 0, (1 - nu) / 2]])
-    return a * mem.T @ cm @ mem + d * ben.T @ cm @ ben
+    out = a * mem.T @ cm @ mem + d * ben.T @ cm @ ben
+    if stiffening is not None:
+        strains = np.vstack([mem, ben])
+        out = out + strains.T @ stiffening @ strains
+    out[2, 2] += prestress[0] * lam**2 + prestress[1] * n**2 / R**2
+    return out

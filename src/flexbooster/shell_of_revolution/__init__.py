@@ -37,6 +37,8 @@ from .modes import (
     modal_system,
     vehicle_modes,
 )
+from .slosh import SloshMode
+from .wetted_wall import slosh_modes
 
 __all__ = [
     "BAND_FACTOR",
@@ -55,6 +57,7 @@ __all__ = [
     "Mesh",
     "ModalSystem",
     "ShellWarning",
+    "SloshMode",
     "Stiffeners",
     "Vehicle",
     "VehicleTank",
@@ -64,6 +67,7 @@ __all__ = [
     "mass_properties",
     "mesh_vehicle",
     "modal_system",
+    "slosh_modes",
     "system_matrices",
     "vehicle_modes",
 ]

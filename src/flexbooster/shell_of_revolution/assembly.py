@@ -22,9 +22,16 @@ import numpy as np
 
 from ..checks import count, finite
 from .elements import einsum, element_matrices, reference_element, theta_weight
-from .geometry import Cylinder, Vehicle
+from .geometry import Cylinder, Vehicle, stiffener_matrix, wall_masses
 from .mesh import Mesh
-from .prestress import Prestate, load_path, membrane_prestate
+from .prestress import (
+    Prestate,
+    attached_loads,
+    load_path,
+    membrane_prestate,
+    pressure_resultants,
+    total_mass,
+)
 
 __all__ = [
     "DEFAULT_ORDER",
@@ -37,6 +44,8 @@ __all__ = [
     "rigid_body_fields",
     "element_set",
     "ring_matrix",
+    "ring_rows",
+    "lumped_mass_matrix",
     "node_transform",
     "thrust_prestate",
     "HarmonicMatrices",
@@ -162,12 +171,30 @@ def mesh_vehicle(
     ends = (end_nodes[0][0], end_nodes[-1][1]) + tuple(
         (end_nodes[i][1], end_nodes[i + 1][0]) for i in range(nseg - 1))
     assert ref.n_dof == dofs[0].shape[1]
-    return Mesh(order=order, segment=cat["segment"].astype(int), s1=cat["s1"], x1=cat["x1"],
+    seg_of = cat["segment"].astype(int)
+    return Mesh(**_wall_extras(segs, seg_of), order=order, segment=seg_of, s1=cat["s1"],
+                x1=cat["x1"],
                 r1=cat["r1"], length=cat["length"], sin_phi=cat["sin"], cos_phi=cat["cos"],
                 phi=np.arctan2(cat["sin"], cat["cos"]), thickness=cat["h"], E=cat["E"],
                 nu=cat["nu"], rho=cat["rho"], elements_per_segment=counts,
                 dofs=np.concatenate(dofs), frame=np.concatenate(frames), n_full=offset,
                 end_nodes=ends)
+
+
+def _wall_extras(segs, seg_of: np.ndarray) -> dict:
+    """Mesh fields of the optional wall data (areal mass, pressure, stiffening), only where a
+    segment has them (the bare shell's arrays stay None)."""
+    out = {}
+    areal = np.array([sum(wall_masses(seg)) for seg in segs])
+    if any(seg.nonstructural_mass or seg.rings or seg.stringers for seg in segs):
+        out["areal_mass"] = areal[seg_of]
+    if any(seg.pressure for seg in segs):
+        out["pressure"] = np.array([seg.pressure for seg in segs])[seg_of]
+    stiff = [stiffener_matrix(seg) for seg in segs]
+    if any(m is not None for m in stiff):
+        out["stiffening"] = np.array([np.zeros((6, 6)) if m is None else m
+                                      for m in stiff])[seg_of]
+    return out
 
 
 @dataclass(frozen=True)
@@ -294,7 +321,9 @@ def node_transform(mesh: Mesh) -> np.ndarray:
 
 def thrust_prestate(vehicle: Vehicle, mesh: Mesh, F0: float, *,
                     supported_forward_end: bool | None = None) -> Prestate:
-    """The membrane prestate of the steady thrust F0 at the aft edge (:mod:`.prestress`).
+    """The membrane prestate of the steady thrust F0 at the aft edge (:mod:`.prestress`); under
+    inertia relief with lumped masses or tanks, their loads at the acceleration
+    a = F0 / m_total (:func:`.prestress.attached_loads`: the liquid's hydrostatic head).
 
     Parameters
     ----------
@@ -313,12 +342,18 @@ def thrust_prestate(vehicle: Vehicle, mesh: Mesh, F0: float, *,
     if F0 != 0.0 and np.any(np.abs(mesh.cos_phi) < 1e-12):
         raise ValueError(f"prestress_F0 = {F0!r}: a flat annular plate cannot carry the axial "
                          "force as a membrane (N_s = -F / (2 pi r cos(phi)))")
-    return membrane_prestate(mesh, path, aft_force=F0)
+    if path != "inertia relief" or not (vehicle.masses or vehicle.tanks):
+        return membrane_prestate(mesh, path, aft_force=F0)
+    loads = attached_loads(vehicle, mesh, acceleration=F0 / total_mass(vehicle, mesh))
+    return membrane_prestate(mesh, path, aft_force=F0, axial=loads.axial, radial=loads.radial,
+                             point_forces=loads.point_forces)
 
 
 def element_set(vehicle: Vehicle, mesh: Mesh, k: int, *, prestate: Prestate | None = None):
     """Element matrices M (kg), K_e, K_g (N/m) of harmonic k in the node frames (T^T K T), each
-    (e, n_dof, n_dof); K_g None without ``prestate`` (rings: :func:`ring_matrix`).
+    (e, n_dof, n_dof); K_g None without ``prestate`` (rings: :func:`ring_matrix`). K_e holds
+    the geometric stiffness of the internal pressure (:func:`.prestress.pressure_resultants`),
+    which does not scale with the thrust.
 
     Parameters
     ----------
@@ -338,7 +373,9 @@ def element_set(vehicle: Vehicle, mesh: Mesh, k: int, *, prestate: Prestate | No
     m, ke, kg = element_matrices(ref, k, r1=mesh.r1, length=mesh.length,
                                  sin_phi=mesh.sin_phi, cos_phi=mesh.cos_phi,
                                  thickness=mesh.thickness, E=mesh.E, nu=mesh.nu, rho=mesh.rho,
-                                 theory=vehicle.theory, ns0=ns0, nt0=nt0)
+                                 theory=vehicle.theory, ns0=ns0, nt0=nt0,
+                                 areal_mass=mesh.areal_mass, stiffening=mesh.stiffening,
+                                 fixed_prestress=pressure_resultants(mesh))
     T = node_transform(mesh)
     out = []
     for mat in (m, ke, kg):
@@ -375,6 +412,78 @@ def ring_matrix(theory: str, dmap: DofMap, prestate: Prestate, k: int) -> np.nda
         sel = idx[keep]
         vals = (local * cof[:, None] * cof[None, :])[np.ix_(keep, keep)]
         np.add.at(out, (np.repeat(sel, sel.size), np.tile(sel, sel.size)), vals.ravel())
+    return out
+
+
+def ring_rows(mesh: Mesh, dmap: DofMap, station: float) -> tuple[np.ndarray, float]:
+    """Rows (3, n) over the reduced DOFs giving the amplitudes (u_x, u_r, v) of the wall's ring
+    at an axial station (m from the aft edge), from the shape functions of the (first) non-flat
+    element that contains it, and the ring's radius (m).
+
+    Parameters
+    ----------
+    mesh : Mesh
+        Mesh of the vehicle.
+    dmap : DofMap
+        Constraint map of the harmonic.
+    station : float
+        Axial station x (m), within the vehicle.
+    """
+    x2 = mesh.x1 + mesh.length * mesh.cos_phi
+    tol = 1e-9 * x2.max()
+    at = np.flatnonzero((mesh.x1 - tol <= station) & (station <= x2 + tol) & (mesh.cos_phi > 0))
+    if at.size == 0:
+        raise ValueError(f"station = {station!r}: not on the vehicle's wall")
+    e = int(at[0])
+    ref = reference_element(mesh.order)
+    xi = np.clip(2.0 * (station - mesh.x1[e]) / (x2[e] - mesh.x1[e]) - 1.0, -1.0, 1.0)
+    nuv, nw = (a[0] for a in ref.evaluate(np.array([xi])))
+    nw = nw.copy()
+    nw[ref.slope] *= 0.5 * mesh.length[e]  # slope DOFs are dw/ds
+    u, v, w = (np.zeros(ref.n_dof) for _ in range(3))
+    u[ref.iu], v[ref.iv], w[ref.iw] = nuv, nuv, nw
+    c, sn = mesh.cos_phi[e], mesh.sin_phi[e]
+    local = np.array([u * c - w * sn, u * sn + w * c, v])  # (u_x, u_r, v) in the element frame
+    rows = local @ node_transform(mesh)[e]
+    idx, cof = dmap.index[mesh.dofs[e]], dmap.coef[mesh.dofs[e]]
+    keep = idx >= 0
+    out = np.zeros((3, dmap.n))
+    for i in range(3):
+        np.add.at(out[i], idx[keep], (rows[i] * cof)[keep])
+    return out, float(mesh.r1[e] + 0.5 * (1.0 + xi) * mesh.length[e] * sn)
+
+
+def lumped_mass_matrix(vehicle: Vehicle, mesh: Mesh, dmap: DofMap, k: int) -> np.ndarray | None:
+    """Mass matrix (kg, reduced (n, n)) of the vehicle's rigid lumped masses for harmonic k, or
+    None (no masses, or k >= 2). Each mass m, attached to the ring at its station with its
+    centre of mass ``offset`` forward, adds m u_x^2 for k = 0 (axial translation) and
+    m (D + e psi)^2 + I psi^2 for k = 1, D = (u_r - v) / 2 the ring's lateral translation and
+    psi = -u_x / r its tilt (the amplitudes of the rigid-body fields of
+    :func:`rigid_body_fields`; theta weights as the shell's, so that a rigid motion's
+    q^T M q is its kinetic energy times 2).
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        The vehicle (its ``masses``).
+    mesh : Mesh
+        Mesh of the vehicle.
+    dmap : DofMap
+        Constraint map of harmonic k.
+    k : int
+        Circumferential wave number.
+    """
+    if not vehicle.masses or k >= 2:
+        return None
+    out = np.zeros((dmap.n, dmap.n))
+    for lm in vehicle.masses:
+        (ux, ur, v), r = ring_rows(mesh, dmap, lm.station)
+        if k == 0:
+            out += lm.mass * np.outer(ux, ux)
+            continue
+        psi = -ux / r
+        t = 0.5 * (ur - v) + lm.offset * psi
+        out += lm.mass * np.outer(t, t) + lm.transverse_inertia * np.outer(psi, psi)
     return out
 
 
@@ -428,7 +537,8 @@ class HarmonicMatrices:
 
 def harmonic_matrices(vehicle: Vehicle, mesh: Mesh, k: int, *,
                       prestate: Prestate | None = None) -> HarmonicMatrices:
-    """M, K_e and K_g (elements and rings) of harmonic k on a mesh.
+    """M (with the lumped masses, :func:`lumped_mass_matrix`), K_e and K_g (elements and rings)
+    of harmonic k on a mesh.
 
     Parameters
     ----------
@@ -447,9 +557,12 @@ def harmonic_matrices(vehicle: Vehicle, mesh: Mesh, k: int, *,
     geo = None
     if prestate is not None:
         geo = assemble(mesh, dmap, kg) + ring_matrix(vehicle.theory, dmap, prestate, k)
-    return HarmonicMatrices(k=k, dmap=dmap, mass=assemble(mesh, dmap, m),
-                            stiffness=assemble(mesh, dmap, ke), geometric=geo,
-                            element_stiffness=ke)
+    mass = assemble(mesh, dmap, m)
+    lumped = lumped_mass_matrix(vehicle, mesh, dmap, k)
+    if lumped is not None:
+        mass = mass + lumped
+    return HarmonicMatrices(k=k, dmap=dmap, mass=mass, stiffness=assemble(mesh, dmap, ke),
+                            geometric=geo, element_stiffness=ke)
 
 
 def system_matrices(

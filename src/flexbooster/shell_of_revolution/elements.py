@@ -212,6 +212,7 @@ def element_fields(
     E: np.ndarray,
     nu: np.ndarray,
     theory: str = "sanders",
+    stiffening: np.ndarray | None = None,
 ) -> ElementFields:
     """The operators of :func:`element_matrices` (Sanders or Donnell).
 
@@ -229,6 +230,8 @@ def element_fields(
         Wall thickness (m), Young's modulus (Pa), Poisson's ratio.
     theory : str
         ``"sanders"`` or ``"donnell"``.
+    stiffening : ndarray, shape (e, 6, 6), optional
+        Added to the constitutive matrix (smeared stiffeners, Baruch-Singer 1963).
     """
     c = 1.0 if theory == "sanders" else 0.0
     U, dU, V, dV, W, dW, d2W = _operators(ref, length)
@@ -255,6 +258,8 @@ def element_fields(
         mat[:, off, off] = mat[:, off + 1, off + 1] = val
         mat[:, off, off + 1] = mat[:, off + 1, off] = nu * val
         mat[:, off + 2, off + 2] = 0.5 * (1.0 - nu) * val
+    if stiffening is not None:
+        mat = mat + stiffening
     return ElementFields(
         strains=strains, material=mat, displacement=np.stack([U, V, W], axis=2),
         meridional_rotation=np.stack([-dW, c * phi_n], axis=2),  # beta_s, Phi (Sanders)
@@ -277,6 +282,9 @@ def element_matrices(
     theory: str = "sanders",
     ns0: np.ndarray | None = None,
     nt0: np.ndarray | None = None,
+    areal_mass: np.ndarray | None = None,
+    stiffening: np.ndarray | None = None,
+    fixed_prestress: tuple | None = None,
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
     """Consistent mass (kg), elastic stiffness (N/m) and geometric stiffness (N/m, None without
     ``ns0``) N_s (beta_s^2 + c Phi^2) + N_theta (beta_theta^2 + c Phi^2) of all elements for
@@ -291,21 +299,35 @@ def element_matrices(
     ns0, nt0 : ndarray, shape (e, g), optional
         Meridional and hoop prestress resultants at the Gauss points (N/m, compression < 0);
         ``nt0`` None: 0.
+    areal_mass : ndarray, shape (e,), optional
+        Mass per unit wall area (kg/m^2); None: rho h.
+    stiffening : ndarray, shape (e, 6, 6), optional
+        As :func:`element_fields`.
+    fixed_prestress : (ndarray, ndarray), optional
+        (N_s, N_theta) at the Gauss points (N/m) of loads that do not scale with the thrust
+        (internal pressure): their geometric stiffness is added to the elastic one.
     """
     f = element_fields(ref, k, r1=r1, length=length, sin_phi=sin_phi, cos_phi=cos_phi,
-                       thickness=thickness, E=E, nu=nu, theory=theory)
+                       thickness=thickness, E=E, nu=nu, theory=theory, stiffening=stiffening)
+    mu = rho * thickness if areal_mass is None else areal_mass
     dvol = f.volume
     stiff = einsum("egia,eij,egjb,eg->eab", f.strains, f.material, f.strains, dvol)
     mass = einsum("egia,egib,eg->eab", f.displacement, f.displacement,
-                  (rho * thickness)[:, None] * dvol)
-    geo = None
-    if ns0 is not None:
-        rot = f.meridional_rotation
-        geo = einsum("egia,egib,eg->eab", rot, rot, ns0 * dvol)
-        if nt0 is not None:
-            rot = f.hoop_rotation
-            geo = geo + einsum("egia,egib,eg->eab", rot, rot, nt0 * dvol)
+                  mu[:, None] * dvol)
+    geo = None if ns0 is None else _geometric(f, ns0, nt0)
+    if fixed_prestress is not None:
+        stiff = stiff + _geometric(f, *fixed_prestress)
     return mass, stiff, geo
+
+
+def _geometric(f: ElementFields, ns0: np.ndarray, nt0: np.ndarray | None) -> np.ndarray:
+    """N_s (beta_s^2 + c Phi^2) + N_theta (beta_theta^2 + c Phi^2) per element (N/m)."""
+    rot = f.meridional_rotation
+    geo = einsum("egia,egib,eg->eab", rot, rot, ns0 * f.volume)
+    if nt0 is not None:
+        rot = f.hoop_rotation
+        geo = geo + einsum("egia,egib,eg->eab", rot, rot, nt0 * f.volume)
+    return geo
 
 
 def element_energies(fields: ElementFields, local: np.ndarray, *,

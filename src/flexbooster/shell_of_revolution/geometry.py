@@ -16,7 +16,8 @@ from dataclasses import KW_ONLY, dataclass, field
 
 import numpy as np
 
-from ..checks import choice, finite, nonnegative, positive
+from ..checks import FieldValueError, choice, finite, nonnegative, positive
+from .liquid_mesh import Tank
 
 __all__ = [
     "END_CONDITIONS",
@@ -30,6 +31,9 @@ __all__ = [
     "LumpedMass",
     "ShellWarning",
     "Stiffeners",
+    "stiffener_matrix",
+    "tank_liquid",
+    "tank_wall",
     "wall_masses",
     "Vehicle",
     "VehicleTank",
@@ -244,6 +248,35 @@ def wall_masses(seg: Cylinder | Cone) -> tuple[float, float, float]:
     return seg.rho * seg.thickness, seg.nonstructural_mass, float(stiff)
 
 
+def stiffener_matrix(seg: Cylinder | Cone) -> np.ndarray | None:
+    """Smeared-stiffener terms of the constitutive matrix diag(A, D), shape (6, 6), in the order
+    (eps_s, eps_theta, gamma, kappa_s, kappa_theta, tau); None without stiffeners.
+
+    A family of spacing d, area A_st, inertia I_st and eccentricity e (centroid strain
+    eps + e kappa) adds E A_st / d to the extensional, E A_st e / d to the coupling and
+    E (I_st + A_st e^2) / d to the bending stiffness of its direction: stringers along the
+    meridian (s), rings around it (theta); their torsional stiffness is neglected
+    (Baruch and Singer 1963, eq. 1-3; Brush and Almroth 1975, sec. 5.6).
+
+    Parameters
+    ----------
+    seg : Cylinder or Cone
+        The segment (its E and stiffeners).
+    """
+    if seg.rings is None and seg.stringers is None:
+        return None
+    out = np.zeros((6, 6))
+    for st, i in ((seg.stringers, 0), (seg.rings, 1)):
+        if st is None:
+            continue
+        ea = seg.E * st.area / st.spacing
+        out[i, i] += ea
+        out[i, i + 3] += ea * st.eccentricity
+        out[i + 3, i] += ea * st.eccentricity
+        out[i + 3, i + 3] += seg.E * (st.inertia + st.area * st.eccentricity**2) / st.spacing
+    return out
+
+
 @dataclass(frozen=True)
 class LumpedMass:
     """A rigid mass attached to the wall's ring at one station (engines, payload, avionics).
@@ -442,37 +475,19 @@ class Vehicle:
 
     def _check_masses_and_tanks(self) -> None:
         masses, tanks = tuple(self.masses), tuple(self.tanks)
-        bounds = self.boundaries()
+        length = self.total_length
         for i, m in enumerate(masses):
             if not isinstance(m, LumpedMass):
-                raise ValueError(f"masses[{i}] = {m!r}: must be a LumpedMass")
-            if m.station > bounds[-1] * (1.0 + STATION_RTOL):
-                raise ValueError(f"masses[{i}].station = {m.station!r}: must be within the "
-                                 f"vehicle, 0 .. {bounds[-1]:g} m")
+                raise FieldValueError(f"masses[{i}]", m, "must be a LumpedMass")
+            if m.station > length * (1.0 + STATION_RTOL):
+                raise FieldValueError(f"masses[{i}].station", m.station,
+                                      f"must be within the vehicle, 0 .. {length:g} m")
         for i, t in enumerate(tanks):
             if not isinstance(t, VehicleTank):
-                raise ValueError(f"tanks[{i}] = {t!r}: must be a VehicleTank")
-            ends = []
-            for name in ("aft", "fwd"):
-                v = getattr(t, name)
-                j = int(np.argmin(np.abs(bounds - v)))
-                if abs(bounds[j] - v) > STATION_RTOL * bounds[-1]:
-                    raise ValueError(f"tanks[{i}].{name} = {v!r}: must be a segment boundary "
-                                     f"or a vehicle end ({', '.join(f'{b:g}' for b in bounds)} m)")
-                ends.append(j)
-            segs = self.segments[ends[0]:ends[1]]
-            for a, b in zip(segs[:-1], segs[1:], strict=True):
-                if a.length == 0.0 or b.length == 0.0 or a.radius_fwd != b.radius_aft:
-                    raise ValueError(f"tanks[{i}].fwd = {t.fwd!r}: the tank's wall from aft = "
-                                     f"{t.aft!r} must be one continuous meridian (no flat "
-                                     "plate, no radius step)")
+                raise FieldValueError(f"tanks[{i}]", t, "must be a VehicleTank")
+            tank_liquid(self, t, prefix=f"tanks[{i}].")
         object.__setattr__(self, "masses", masses)
         object.__setattr__(self, "tanks", tanks)
-
-    def tank_segments(self, tank: VehicleTank) -> tuple[int, int]:
-        """Indices (first, last + 1) of the segments that form the wall of ``tank``."""
-        bounds = self.boundaries()
-        return tuple(int(np.argmin(np.abs(bounds - v))) for v in (tank.aft, tank.fwd))
 
     @property
     def total_length(self) -> float:
@@ -499,3 +514,59 @@ class Vehicle:
                 "warnings": [w.to_dict() for w in self.warnings],
                 **({"masses": [m.to_dict() for m in self.masses]} if self.masses else {}),
                 **({"tanks": [t.to_dict() for t in self.tanks]} if self.tanks else {})}
+
+
+def tank_wall(vehicle: Vehicle, aft: float, fwd: float, *,
+              prefix: str = "") -> tuple[tuple, tuple]:
+    """Stations and radii (m) of the wall of a tank between two stations of the vehicle;
+    ValueError naming ``prefix + "aft"`` or ``"fwd"`` unless each is a segment boundary or a
+    vehicle end (within :data:`STATION_RTOL` of the length), aft < fwd, and the wall between
+    them one continuous meridian (no flat plate, no radius step).
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        The vehicle.
+    aft, fwd : float
+        Tank end stations (m from the aft edge).
+    prefix : str
+        Put before the field names in the messages (e.g. ``"tanks[0]."``).
+    """
+    bounds = vehicle.boundaries()
+    tol = STATION_RTOL * bounds[-1]
+    i_a, i_f = (int(np.argmin(np.abs(bounds - v))) for v in (aft, fwd))
+    for name, v, i in (("aft", aft, i_a), ("fwd", fwd, i_f)):
+        if not (np.isfinite(v) and abs(bounds[i] - v) <= tol):
+            raise FieldValueError(f"{prefix}{name}", v, "must be a segment boundary or a "
+                                  f"vehicle end ({', '.join(f'{b:g}' for b in bounds)} m)")
+    if i_f <= i_a:
+        raise FieldValueError(f"{prefix}fwd", fwd, f"must be forward of aft = {aft!r}")
+    segs = vehicle.segments[i_a:i_f]
+    for a, b in zip(segs[:-1], segs[1:], strict=True):
+        if a.length == 0.0 or b.length == 0.0 or a.radius_fwd != b.radius_aft:
+            raise FieldValueError(f"{prefix}fwd", fwd, f"the tank's wall from aft = {aft!r} "
+                                  "must be one continuous meridian (no flat plate, no radius "
+                                  "step)")
+    radii = [s.radius_aft for s in segs] + [segs[-1].radius_fwd]
+    return tuple(float(b) for b in bounds[i_a:i_f + 1]), tuple(radii)
+
+
+def tank_liquid(vehicle: Vehicle, tank: VehicleTank, *, prefix: str = "") -> Tank:
+    """The :class:`.liquid_mesh.Tank` (wall stations and radii, fill, density; rigid ends) of a
+    vehicle's tank; ValueError naming ``prefix`` + the field (:func:`tank_wall`, and a liquid
+    depth below :data:`.liquid_mesh.MIN_DEPTH_RADII` of the radius).
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        The vehicle.
+    tank : VehicleTank
+        One of its tanks.
+    prefix : str
+        Put before the field names in the messages.
+    """
+    stations, radii = tank_wall(vehicle, tank.aft, tank.fwd, prefix=prefix)
+    try:
+        return Tank(stations=stations, radii=radii, fill=tank.fill, density=tank.density)
+    except ValueError as exc:  # the depth rule of the liquid mesh, under the field's full name
+        raise FieldValueError(f"{prefix}fill", tank.fill, str(exc)) from exc

@@ -38,6 +38,14 @@ class Mesh:
     end_nodes : tuple
         Full DOF index of the first node DOF at the aft end, forward end and each junction
         (aft side, forward side).
+    areal_mass : ndarray or None
+        Mass per unit wall area of each element (kg/m^2): rho h plus the non-structural and
+        smeared stiffener masses; None: rho h.
+    pressure : ndarray or None
+        Internal gauge pressure of each element (Pa); None: 0.
+    stiffening : ndarray, shape (e, 6, 6), or None
+        Smeared-stiffener terms added to the constitutive matrix diag(A, D) (N/m, N, N m);
+        None: none.
     """
 
     order: int
@@ -58,6 +66,14 @@ class Mesh:
     frame: np.ndarray
     n_full: int
     end_nodes: tuple
+    areal_mass: np.ndarray | None = None
+    pressure: np.ndarray | None = None
+    stiffening: np.ndarray | None = None
+
+    @property
+    def wall_mass(self) -> np.ndarray:
+        """Mass per unit wall area of each element (kg/m^2)."""
+        return self.rho * self.thickness if self.areal_mass is None else self.areal_mass
 
     @property
     def n_elements(self) -> int:

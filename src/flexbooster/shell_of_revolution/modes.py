@@ -32,7 +32,8 @@ from .assembly import (
 )
 from .elements import element_energies, element_fields, reference_element
 from .geometry import Vehicle
-from .prestress import Prestate, load_path
+from .prestress import Prestate, load_path, pressure_resultants
+from .wetted_wall import tank_added_mass
 
 __all__ = [
     "MODE_TYPES",
@@ -287,10 +288,16 @@ def _harmonic(vehicle: Vehicle, mesh: Mesh, k: int, *, F0: float, supported: boo
     hm = harmonic_matrices(vehicle, mesh, k, prestate=pre)
     M, K, G, dmap, ke = hm.mass, hm.stiffness, hm.geometric, hm.dmap, hm.element_stiffness
     R = _rigid_subspace(mesh, dmap, k)
-    Q = None
+    liquid = tank_added_mass(vehicle, mesh, k)
+    Z = None
+    if liquid is not None:
+        M = M + liquid.matrix
+        Z = liquid.basis  # the volume-keeping motions of full closed tanks (k = 0), or None
+    Q = Z
     if R.shape[1]:
-        q_full, _ = np.linalg.qr(M @ R, mode="complete")
-        Q = q_full[:, R.shape[1]:]  # Q^T M R = 0: the M-orthogonal complement (Bathe 10.2)
+        q_full, _ = np.linalg.qr(M @ R if Z is None else Z.T @ M @ R, mode="complete")
+        # Q^T M R = 0: the M-orthogonal complement (Bathe 10.2), within the admissible motions
+        Q = q_full[:, R.shape[1]:] if Z is None else Z @ q_full[:, R.shape[1]:]
     return _Harmonic(k=k, mesh=mesh, theory=vehicle.theory, prestate=pre, M=M, K=K, G=G, Q=Q,
                      R=R, dmap=dmap, elem_k=ke)
 
@@ -371,11 +378,16 @@ def _rayleigh(h: _Harmonic, vecs: np.ndarray, *, loaded: bool) -> np.ndarray:
     mesh = h.mesh
     fields = element_fields(reference_element(mesh.order), h.k, r1=mesh.r1,
                             length=mesh.length, sin_phi=mesh.sin_phi, cos_phi=mesh.cos_phi,
-                            thickness=mesh.thickness, E=mesh.E, nu=mesh.nu, theory=h.theory)
+                            thickness=mesh.thickness, E=mesh.E, nu=mesh.nu, theory=h.theory,
+                            stiffening=mesh.stiffening)
     pre = h.prestate if loaded else None
-    energy = element_energies(fields, _local(mesh, h.dmap, vecs),
-                              ns0=None if pre is None else pre.meridional,
-                              nt0=None if pre is None else pre.hoop)
+    resultants = [] if pre is None else [(pre.meridional, pre.hoop)]
+    fixed = pressure_resultants(mesh)
+    if fixed is not None:
+        resultants.append(fixed)
+    ns0 = sum(n for n, _ in resultants) if resultants else None
+    nt0 = sum(n for _, n in resultants) if resultants else None
+    energy = element_energies(fields, _local(mesh, h.dmap, vecs), ns0=ns0, nt0=nt0)
     if pre is not None and pre.ring_node.size:
         ring = ring_matrix(h.theory, h.dmap, pre, h.k)
         energy = energy + np.einsum("am,ab,bm->m", vecs, ring, vecs)
@@ -402,7 +414,7 @@ def _labels(mesh: Mesh, h: _Harmonic, vecs: np.ndarray, k: int, n_pts_per_el: in
     gs = _sample(mesh, h.dmap, vecs, ref.xi)  # (m, 3, e, g)
     r_g = mesh.r1[:, None] + 0.5 * (1 + ref.xi)[None, :] * mesh.length[:, None] * \
         mesh.sin_phi[:, None]
-    wgt = (mesh.rho * mesh.thickness * 0.5 * mesh.length)[:, None] * ref.weight[None] * r_g
+    wgt = (mesh.wall_mass * 0.5 * mesh.length)[:, None] * ref.weight[None] * r_g
     kin = np.einsum("mceg,eg->mc", gs**2, wgt)
     share = kin / kin.sum(axis=1, keepdims=True)
     # strain energy per segment

@@ -22,12 +22,14 @@ from numpy.polynomial import legendre as leg
 
 from ..checks import finite, finite_array
 from .elements import reference_element
+from .geometry import tank_liquid
 from .mesh import Mesh
 
 if TYPE_CHECKING:
     from .geometry import Vehicle
 
-__all__ = ["AXIAL_SUPPORTS", "LOAD_PATHS", "Prestate", "load_path", "membrane_prestate"]
+__all__ = ["AXIAL_SUPPORTS", "LOAD_PATHS", "Prestate", "AttachedLoads", "attached_loads",
+           "load_path", "membrane_prestate", "pressure_resultants", "total_mass"]
 
 #: End conditions that restrain the axial motion of an edge (u = 0).
 AXIAL_SUPPORTS = ("hinged", "clamped")
@@ -98,8 +100,8 @@ def _cumulative(order: int) -> np.ndarray:
 
 
 def membrane_prestate(mesh: Mesh, path: str, *, aft_force: float,
-                      axial: np.ndarray | None = None, radial: np.ndarray | None = None
-                      ) -> Prestate:
+                      axial: np.ndarray | None = None, radial: np.ndarray | None = None,
+                      point_forces: tuple = ()) -> Prestate:
     """Membrane resultants and ring forces of one axisymmetric load case (Fluegge 1973, sec. 2.2);
     ValueError for a loaded flat plate (no membrane state) or bad input.
 
@@ -113,6 +115,9 @@ def membrane_prestate(mesh: Mesh, path: str, *, aft_force: float,
         Axial force on the aft edge (N), forward positive (the thrust F0).
     axial, radial : ndarray, shape (e, g), optional
         Surface loads p_x, p_r at the Gauss points (Pa), integrated as polynomials of degree < g.
+    point_forces : sequence of (float, float)
+        Axial forces (N, forward positive) on the wall's ring at axial stations (m): the
+        d'Alembert loads of attached masses, a tank's liquid on its aft end.
     """
     if path not in LOAD_PATHS:
         raise ValueError(f"path = {path!r}: must be one of {LOAD_PATHS}")
@@ -128,15 +133,28 @@ def membrane_prestate(mesh: Mesh, path: str, *, aft_force: float,
     def integral(f):  # int 2 pi r f ds over each element (Gauss: exact for r f of degree < 2g)
         return (2.0 * np.pi * r * f * half) @ ref.weight
 
+    points = np.array([(finite("point_forces", x), finite("point_forces", f))
+                       for x, f in point_forces]).reshape(-1, 2)
+    x_g = mesh.x1[:, None] + t * mesh.cos_phi[:, None]
+    x_end = mesh.x1 + mesh.length * mesh.cos_phi
+
+    def carried(x, strict=False):  # the point forces aft of x (or at x), summed (N)
+        aft = points[:, 0] < x[..., None] if strict else points[:, 0] <= x[..., None]
+        return (points[:, 1] * aft).sum(axis=-1)
+
     if path == "inertia relief":  # a = P / m: the body load -rho h a (d'Alembert)
-        rho_h = mesh.rho * mesh.thickness
-        accel = (aft_force + integral(px).sum()) / integral(rho_h[:, None] + zeros).sum()
+        rho_h = mesh.wall_mass
+        accel = ((aft_force + integral(px).sum() + points[:, 1].sum())
+                 / integral(rho_h[:, None] + zeros).sum())
         px = px - rho_h[:, None] * accel
     line = 2.0 * np.pi * r * px  # axial load per unit meridian length (N/m)
     total = integral(px)
     before = np.concatenate(([0.0], np.cumsum(total)[:-1]))
-    start = -total.sum() if path == "aft support" else aft_force  # F just ahead of the aft edge
+    start = -total.sum() - points[:, 1].sum() if path == "aft support" else aft_force
+    # F just ahead of the aft edge, then the distributed and the point loads aft of each point
     force = start + before[:, None] + half * (line @ _cumulative(mesh.order).T)
+    if points.size:
+        force = force + carried(x_g)
     p_n = -px * mesh.sin_phi[:, None] + pr * mesh.cos_phi[:, None]
     flat = np.abs(mesh.cos_phi) < 1e-12
     scale = max(abs(aft_force), float(np.max(np.abs(line), initial=0.0)) * mesh.length.sum())
@@ -148,7 +166,7 @@ def membrane_prestate(mesh: Mesh, path: str, *, aft_force: float,
     meridional = np.where(flat[:, None], 0.0, -force / (2.0 * np.pi * r * cos))  # Flügge 2.2
     hoop = np.where(flat[:, None], 0.0, r * p_n / cos)  # normal equilibrium, 1/R_s = 0
     # rings where the meridian turns: each segment's edges (inside a segment phi is constant)
-    f_end = start + before + total
+    f_end = start + before + total + (carried(x_end, True) if points.size else 0.0)
     r_end = mesh.r1 + mesh.length * mesh.sin_phi
     nodes, frames, radii, hoops = [], [], [], []
     for i in range(len(mesh.elements_per_segment)):
@@ -157,9 +175,10 @@ def membrane_prestate(mesh: Mesh, path: str, *, aft_force: float,
         sin, cos_i = mesh.sin_phi[first], (1.0 if flat[first] else mesh.cos_phi[first])
         if sin == 0.0 or flat[first]:
             continue
+        f_aft = start + before[first] + (
+            carried(np.asarray(mesh.x1[first])) if points.size else 0.0)
         for node, frame, rad, fax, sign in (
-                (mesh.dofs[first, 0], mesh.frame[first, 0], mesh.r1[first], start + before[first],
-                 1.0),
+                (mesh.dofs[first, 0], mesh.frame[first, 0], mesh.r1[first], f_aft, 1.0),
                 (mesh.dofs[last, 4], mesh.frame[last, 1], r_end[last], f_end[last], -1.0)):
             ns = -fax / (2.0 * np.pi * rad * cos_i)
             nodes.append(node)
@@ -169,3 +188,101 @@ def membrane_prestate(mesh: Mesh, path: str, *, aft_force: float,
     return Prestate(load_path=path, force=force, meridional=meridional, hoop=hoop,
                     ring_node=np.array(nodes, dtype=int), ring_frame=np.array(frames),
                     ring_radius=np.array(radii), ring_force=np.array(hoops))
+
+
+def pressure_resultants(mesh: Mesh) -> tuple[np.ndarray, np.ndarray] | None:
+    """Membrane resultants (N_s, N_theta) at the Gauss points (N/m) of each element's internal
+    gauge pressure p in a closed tank: N_theta = p r / cos(phi), N_s = p r / (2 cos(phi))
+    (Fluegge 1973, sec. 2.2; 0 on a flat plate, which carries its pressure in bending); None
+    without pressure.
+
+    Parameters
+    ----------
+    mesh : Mesh
+        Mesh of the vehicle (its ``pressure``).
+    """
+    if mesh.pressure is None:
+        return None
+    ref = reference_element(mesh.order)
+    r = mesh.r1[:, None] + (0.5 * (1.0 + ref.xi))[None, :] * (mesh.length * mesh.sin_phi)[:, None]
+    flat = np.abs(mesh.cos_phi) < 1e-12
+    hoop = np.where(flat, 0.0, mesh.pressure / np.where(flat, 1.0, mesh.cos_phi))[:, None] * r
+    return 0.5 * hoop, hoop
+
+
+def _gauss_points(mesh: Mesh) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Axial station x, radius r (m) and weight 2 pi r ds (m^2) of every element's Gauss points,
+    each (e, g)."""
+    ref = reference_element(mesh.order)
+    t = (0.5 * (1.0 + ref.xi))[None, :] * mesh.length[:, None]
+    r = mesh.r1[:, None] + t * mesh.sin_phi[:, None]
+    x = mesh.x1[:, None] + t * mesh.cos_phi[:, None]
+    return x, r, 2.0 * np.pi * r * (0.5 * mesh.length)[:, None] * ref.weight[None, :]
+
+
+def total_mass(vehicle: Vehicle, mesh: Mesh) -> float:
+    """Mass of the walls (Gauss quadrature of the areal mass, exact), the lumped masses and the
+    tanks' liquid (kg).
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        The vehicle.
+    mesh : Mesh
+        Its mesh.
+    """
+    wall = float((mesh.wall_mass[:, None] * _gauss_points(mesh)[2]).sum())
+    return (wall + sum(m.mass for m in vehicle.masses)
+            + sum(tank_liquid(vehicle, t).liquid_mass() for t in vehicle.tanks))
+
+
+@dataclass(frozen=True)
+class AttachedLoads:
+    """Loads on the wall of the masses and liquid attached to it under an axial acceleration.
+
+    Attributes
+    ----------
+    axial, radial : ndarray, shape (e, g)
+        Surface loads p_x, p_r (Pa) at the Gauss points (the liquid's hydrostatic head).
+    point_forces : tuple of (float, float)
+        (station m, axial force N, forward positive): -m a of each lumped mass at its station,
+        -p(x_a) A(x_a) of each tank's liquid on its aft end.
+    """
+
+    axial: np.ndarray
+    radial: np.ndarray
+    point_forces: tuple
+
+
+def attached_loads(vehicle: Vehicle, mesh: Mesh, *, acceleration: float) -> AttachedLoads:
+    """d'Alembert loads of the lumped masses and the hydrostatic head p = rho_L a (x_s - x) of
+    each tank's liquid on its wetted wall (normal pressure: p_x = -p sin(phi),
+    p_r = p cos(phi)) and aft end, under the forward acceleration a (Abramson 1966, ch. 1;
+    Fluegge 1973, sec. 2.2). The liquid's loads sum to -m_L a (divergence theorem).
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        The vehicle (its masses and tanks).
+    mesh : Mesh
+        Its mesh.
+    acceleration : float
+        Forward axial acceleration a (m/s^2).
+    """
+    a = finite("acceleration", acceleration)
+    x, _, _ = _gauss_points(mesh)
+    axial, radial = np.zeros_like(x), np.zeros_like(x)
+    points = [(m.station, -m.mass * a) for m in vehicle.masses]
+    x_end = mesh.x1 + mesh.length * mesh.cos_phi
+    tol = 1e-9 * max(float(x_end.max()), 1e-300)
+    for t in vehicle.tanks:
+        if t.fill == 0.0:
+            continue
+        liquid = tank_liquid(vehicle, t)
+        wall = (mesh.cos_phi > 1e-12) & (mesh.x1 >= t.aft - tol) & (x_end <= t.fwd + tol)
+        p = np.where(wall[:, None], t.density * a * np.clip(liquid.surface - x, 0.0, None), 0.0)
+        axial -= p * mesh.sin_phi[:, None]
+        radial += p * mesh.cos_phi[:, None]
+        r_a = float(liquid.radius(t.aft))
+        points.append((t.aft, -t.density * a * (liquid.surface - t.aft) * np.pi * r_a**2))
+    return AttachedLoads(axial=axial, radial=radial, point_forces=tuple(points))

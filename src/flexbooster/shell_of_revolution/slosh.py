@@ -36,6 +36,8 @@ class SloshMode:
         Slosh mass m_1, the rest m_L - m_1 (rigidly attached) and m_L (kg).
     acceleration : float
         The axial acceleration that settles the liquid (m/s^2).
+    tank : str
+        The tank's label ("" when not from a vehicle).
     """
 
     omega: float
@@ -43,6 +45,12 @@ class SloshMode:
     fixed_mass: float
     liquid_mass: float
     acceleration: float
+    tank: str = ""
+
+    @property
+    def mass_kg(self) -> float:
+        """Slosh mass m_1 (kg)."""
+        return self.mass
 
     @property
     def hz(self) -> float:
@@ -51,7 +59,8 @@ class SloshMode:
 
     def to_dict(self) -> dict:
         """JSON-ready mapping (SI units in the keys)."""
-        return {"hz": self.hz, "mass_kg": self.mass, "fixed_mass_kg": self.fixed_mass,
+        return {"tank": self.tank, "hz": self.hz, "mass_kg": self.mass,
+                "fixed_mass_kg": self.fixed_mass,
                 "liquid_mass_kg": self.liquid_mass, "acceleration_m_s2": self.acceleration}
 
 

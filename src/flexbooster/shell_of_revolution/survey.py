@@ -10,8 +10,10 @@ import numpy as np
 
 from ..checks import count, finite, positive
 from .geometry import Cone, Vehicle
+from .mass_properties import MassProperties, mass_properties
 from .modes import VehicleModes, vehicle_modes
 from .prestress import load_path
+from .wetted_wall import slosh_modes
 
 __all__ = [
     "SHAPES_PER_K",
@@ -186,6 +188,10 @@ class VehicleSurvey:
         One line on the prestress, for the output.
     views : ModeShapeViews or None
         Figure data; None when the figures are not wanted.
+    mass_properties : MassProperties or None
+        Mass, centre of mass and pitch inertia of the vehicle, by contribution.
+    slosh : tuple of SloshMode
+        Each partly filled tank's first slosh mode under the thrust's acceleration F0 / m.
     """
 
     vehicle: Vehicle
@@ -197,6 +203,8 @@ class VehicleSurvey:
     prestress_F0: float
     note: str
     views: ModeShapeViews | None = None
+    mass_properties: MassProperties | None = None
+    slosh: tuple = ()
 
     def rows(self) -> list[dict]:
         """One JSON-ready mapping per mode: k, hz, rad_s, order, type, segment, kinetic shares."""
@@ -241,6 +249,10 @@ class VehicleSurvey:
             "modes": self.rows(),
             "warnings": [w.to_dict() for w in m.warnings],
             "figures": self.views.to_dict() if figures and self.views is not None else None,
+            **({} if self.mass_properties is None else
+               {"mass_properties": self.mass_properties.to_dict()}),
+            **({"slosh": [{"tank": m.tank, "hz": m.hz, "mass_kg": m.mass_kg}
+                          for m in self.slosh]} if self.vehicle.tanks else {}),
         }
 
 
@@ -298,6 +310,10 @@ def vehicle_survey(vehicle: Vehicle, *, k_max: int, F0: float | None,
         load = finite("F0", F0)
         note = f"prestressed by the thrust F0 = {F0:.6g} N ({_PATH_NOTES[load_path(vehicle)]})"
     modes = vehicle_modes(vehicle, k_max=k_max, f_max=f_max, prestress_F0=load)
+    props = mass_properties(vehicle)
     return VehicleSurvey(vehicle=vehicle, source=source, modes=modes, k_max=int(k_max),
                          f_max=f_max, prestressed=load > 0.0, prestress_F0=load, note=note,
-                         views=mode_shape_views(modes) if views and len(modes) else None)
+                         views=mode_shape_views(modes) if views and len(modes) else None,
+                         mass_properties=props,
+                         slosh=() if F0 is None  # no thrust: no settled liquid
+                         else slosh_modes(vehicle, acceleration=F0 / props.mass_kg))

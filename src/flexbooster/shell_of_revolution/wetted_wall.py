@@ -4,7 +4,8 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from functools import lru_cache
 
 import numpy as np
 from numpy.polynomial import legendre as leg
@@ -12,13 +13,13 @@ from numpy.polynomial import legendre as leg
 from ..checks import count
 from .assembly import Mesh, dof_map, mesh_vehicle, system_matrices
 from .elements import reference_element
-from .geometry import Vehicle
+from .geometry import STATION_RTOL, Vehicle, tank_liquid, tank_wall
 from .liquid import LiquidMesh, Tank, WallQuadrature, added_mass, liquid_mesh
+from .slosh import SloshMode, slosh_mode
 
-__all__ = ["WettedWall", "WetSystem", "vehicle_tank", "wetted_wall", "wet_system_matrices"]
+__all__ = ["WettedWall", "WetSystem", "vehicle_tank", "wetted_wall", "wet_system_matrices",
+           "TankMass", "tank_added_mass", "slosh_modes"]
 
-#: Relative tolerance of a tank end on a segment boundary (of the vehicle's length).
-STATION_RTOL = 1e-9
 
 
 def vehicle_tank(vehicle: Vehicle, *, aft: float, fwd: float, fill: float, density: float,
@@ -35,23 +36,8 @@ def vehicle_tank(vehicle: Vehicle, *, aft: float, fwd: float, fill: float, densi
     fill, density, ends
         As :class:`.liquid.Tank`.
     """
-    bounds = np.concatenate(([0.0], np.cumsum([s.length for s in vehicle.segments])))
-    tol = STATION_RTOL * bounds[-1]
-    i_a, i_f = (int(np.argmin(np.abs(bounds - v))) for v in (aft, fwd))
-    for name, v, i in (("aft", aft, i_a), ("fwd", fwd, i_f)):
-        if not (np.isfinite(v) and abs(bounds[i] - v) <= tol):
-            raise ValueError(f"{name} = {v!r}: must be a segment boundary or a vehicle end "
-                             f"({', '.join(f'{b:g}' for b in bounds)} m)")
-    if i_f <= i_a:
-        raise ValueError(f"fwd = {fwd!r}: must be forward of aft = {aft!r}")
-    segs = vehicle.segments[i_a:i_f]
-    for a, b in zip(segs[:-1], segs[1:], strict=True):
-        if a.length == 0.0 or b.length == 0.0 or a.radius_fwd != b.radius_aft:
-            raise ValueError(f"aft = {aft!r}, fwd = {fwd!r}: the tank's wall must be one "
-                             "continuous meridian (no flat plate, no radius step)")
-    radii = [s.radius_aft for s in segs] + [segs[-1].radius_fwd]
-    return Tank(stations=tuple(bounds[i_a:i_f + 1]), radii=tuple(radii), fill=fill,
-                density=density, ends=ends)
+    stations, radii = tank_wall(vehicle, aft, fwd)
+    return Tank(stations=stations, radii=radii, fill=fill, density=density, ends=ends)
 
 
 @dataclass(frozen=True)
@@ -206,7 +192,34 @@ def wet_system_matrices(vehicle: Vehicle, k: int, tanks: tuple, *, mesh: Mesh | 
         raise ValueError("liquid_meshes: need one LiquidMesh of each tank, in order")
     M, K, G = system_matrices(vehicle, k, mesh=mesh, prestress_F0=prestress_F0,
                               supported_forward_end=supported_forward_end)
-    Ma = np.zeros_like(M)
+    wet = _added(vehicle, mesh, k, tanks, lms, M.shape[0])
+    Ma = wet.matrix
+    if wet.basis is None:
+        return WetSystem(M + Ma, K, G, Ma, None)
+    Z = wet.basis
+    return WetSystem(Z.T @ (M + Ma) @ Z, Z.T @ K @ Z, Z.T @ G @ Z, Ma, Z)
+
+
+@dataclass(frozen=True)
+class TankMass:
+    """The liquid of a vehicle's tanks on the shell's reduced DOFs, one harmonic.
+
+    Attributes
+    ----------
+    matrix : ndarray, shape (n, n)
+        Sum of the tanks' added-mass matrices M_a (kg).
+    basis : ndarray, shape (n, m), or None
+        Orthonormal basis of the motions that keep every closed full tank's volume (k = 0);
+        None when no tank constrains the motion.
+    """
+
+    matrix: np.ndarray
+    basis: np.ndarray | None
+
+
+def _added(vehicle: Vehicle, mesh: Mesh, k: int, tanks: tuple, lms: tuple, n: int) -> TankMass:
+    """Added mass and volume-constraint basis of the tanks ``tanks`` (their liquid meshes)."""
+    Ma = np.zeros((n, n))
     cons = []
     for t, lm in zip(tanks, lms, strict=True):
         ww = wetted_wall(vehicle, mesh, t, k, breaks=lm.x_breaks)
@@ -216,8 +229,57 @@ def wet_system_matrices(vehicle: Vehicle, k: int, tanks: tuple, *, mesh: Mesh | 
         if am.constraint is not None:
             cons.append(am.constraint)
     if not cons:
-        return WetSystem(M + Ma, K, G, Ma, None)
+        return TankMass(Ma, None)
     C = np.array(cons)
     Q = np.linalg.qr(C.T, mode="complete")[0]
-    Z = Q[:, np.linalg.matrix_rank(C):]  # the motions with C q = 0
-    return WetSystem(Z.T @ (M + Ma) @ Z, Z.T @ K @ Z, Z.T @ G @ Z, Ma, Z)
+    return TankMass(Ma, Q[:, np.linalg.matrix_rank(C):])  # the motions with C q = 0
+
+
+@lru_cache(maxsize=32)
+def _liquid_mesh(tank: Tank) -> LiquidMesh:
+    """The liquid mesh of a tank, built once per tank (k-independent)."""
+    return liquid_mesh(tank)
+
+
+def tank_added_mass(vehicle: Vehicle, mesh: Mesh, k: int) -> TankMass | None:
+    """The liquid of the vehicle's tanks (``Vehicle.tanks``, rigid ends, free surface p = 0) on
+    the reduced DOFs of harmonic k: added mass per k through the wall pressure, the ends'
+    axial motion for k <= 1 (the liquid on the aft bulkhead, moving with the tank in bending)
+    and the volume constraint of a full closed tank at k = 0; None without liquid
+    (docs/theory/liquid.md; Abramson 1966, ch. 2).
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        The vehicle.
+    mesh : Mesh
+        Its mesh (:func:`.assembly.mesh_vehicle`).
+    k : int
+        Circumferential harmonic, 0..200.
+    """
+    tanks = tuple(tank_liquid(vehicle, t) for t in vehicle.tanks if t.fill > 0.0)
+    if not tanks:
+        return None
+    return _added(vehicle, mesh, k, tanks, tuple(_liquid_mesh(t) for t in tanks),
+                  dof_map(vehicle, mesh, k).n)
+
+
+def slosh_modes(vehicle: Vehicle, *, acceleration: float) -> tuple[SloshMode, ...]:
+    """The first lateral slosh mode of each partly filled tank of the vehicle under the axial
+    acceleration (Abramson 1966, NASA SP-106, ch. 2 and 6: spring-mass analogy; for a flat-
+    bottomed cylinder omega^2 = (a xi_1 / R) tanh(xi_1 h / R), xi_1 = 1.8412), labelled with
+    the tank's name; a full or empty tank has none.
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        The vehicle.
+    acceleration : float
+        Axial acceleration a (m/s^2), > 0.
+    """
+    out = []
+    for i, t in enumerate(vehicle.tanks):
+        if 0.0 < t.fill < 1.0:
+            mode = slosh_mode(_liquid_mesh(tank_liquid(vehicle, t)), acceleration)
+            out.append(replace(mode, tank=t.name or f"tank {i}"))
+    return tuple(out)

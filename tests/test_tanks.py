@@ -1,0 +1,129 @@
+"""Tanks in the vehicle (Vehicle ``tanks``, VehicleTank): the liquid in the vehicle's modes, its
+loads in the thrust prestate, and each tank's slosh mode.
+
+Evidence:
+* a full tank between rigid bulkheads in a shear-diaphragm cylinder, at vehicle level
+  (vehicle_modes), against the cosine-series Galerkin of tests/test_liquid.py
+  (bulkhead_series_reference: separation of variables of the potential); 0.5 %;
+* the long-wave limit n = 1, lam R -> 0: the liquid moves with the tank, mass rho_L pi R^2 per
+  unit length: the first bending frequency of a slender full tube against the independent
+  Timoshenko beam (tests/reference/timoshenko.py) with that mass; 1 %;
+* the slosh frequency of a closed cylindrical tank, Abramson SP-106:
+  omega^2 = (a xi_1 / R) tanh(xi_1 h / R), xi_1 = 1.8412; 0.1 %;
+* the hydrostatic head and the axial load in the prestate: p = rho_L a (x_s - x),
+  N_theta = p R, and the axial force from Newton's law on the parts aft of a station; 1e-9.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy.special import jnp_zeros
+
+from flexbooster.shell_of_revolution import (
+    Cylinder,
+    LumpedMass,
+    Vehicle,
+    VehicleTank,
+    mesh_vehicle,
+    vehicle_modes,
+)
+from flexbooster.shell_of_revolution.assembly import thrust_prestate
+from flexbooster.shell_of_revolution.elements import reference_element
+from flexbooster.shell_of_revolution.wetted_wall import slosh_modes
+from reference.timoshenko import tube_bending_frequencies
+from test_liquid import (
+    RHO,
+    SD,
+    STEEL,
+    WATER,
+    H,
+    L,
+    R,
+    bulkhead_series_reference,
+)
+
+XI_1 = jnp_zeros(1, 1)[0]
+
+
+@pytest.mark.parametrize("n", [2, 3])
+def test_full_tank_between_bulkheads_vehicle_level(n):
+    """SD-SD cylinder full of water (VehicleTank 0..L, fill 1): the lowest 4 wet frequencies
+    of harmonic n from vehicle_modes equal the cosine-series Galerkin with the bulkheads at rest
+    (for n >= 2 the ends do not move axially); 0.5 %."""
+    veh = Vehicle([Cylinder(R, L, H, **STEEL)], **SD,
+                  tanks=(VehicleTank(0.0, L, 1.0, WATER),))
+    got = vehicle_modes(veh, k_min=n, k_max=n, n_modes=4).omega
+    np.testing.assert_allclose(got, bulkhead_series_reference(n)[:4], rtol=5e-3)
+
+
+@pytest.mark.slow
+def test_slender_full_tube_bending_tends_to_liquid_moving_with_tank():
+    """Free-free tube, R = 0.25 m, L = 20 m (lam R = 0.06 for the first mode), full of water:
+    the first k = 1 frequency equals the Timoshenko beam with rho_L pi R^2 added per unit length
+    (the n = 1, lam R -> 0 limit of the added mass); 1 %."""
+    radius, length, h, e_mod, rho = 0.25, 20.0, 0.005, 70e9, 2700.0
+    veh = Vehicle([Cylinder(radius, length, h, E=e_mod, nu=0.3, rho=rho)],
+                  tanks=(VehicleTank(0.0, length, 1.0, WATER),))
+    got = vehicle_modes(veh, k_min=1, k_max=1, n_modes=1).omega[0]
+    ref = tube_bending_frequencies(radius=radius, length=length, thickness=h, E=e_mod, nu=0.3,
+                                   rho=rho, extra_mass_per_length=WATER * math.pi * radius**2,
+                                   count=1)[0]
+    assert got == pytest.approx(ref, rel=1e-2)
+    dry = vehicle_modes(Vehicle([Cylinder(radius, length, h, E=e_mod, nu=0.3, rho=rho)]),
+                        k_min=1, k_max=1, n_modes=1).omega[0]
+    assert got < 0.5 * dry  # the liquid (3.7 times the wall's mass) matters
+
+
+@pytest.mark.parametrize("fill", [0.1, 0.5, 0.8])
+def test_slosh_modes_of_a_closed_cylindrical_tank(fill):
+    """Tank 1..5 m in a cylinder of radius 1 m, depth h = 4 fill, a = 29.4 m/s^2:
+    omega^2 = (a xi_1 / R) tanh(xi_1 h / R) (Abramson SP-106 ch. 2); 0.1 %; the mode carries
+    the tank's name."""
+    a = 29.4
+    veh = Vehicle([Cylinder(R, 1.0, H, **STEEL), Cylinder(R, 4.0, H, **STEEL)],
+                  junctions=("rigid-bulkhead",),
+                  tanks=(VehicleTank(1.0, 5.0, fill, 1140.0, name="lox"),))
+    (mode,) = slosh_modes(veh, acceleration=a)
+    h = 4.0 * fill
+    expected = math.sqrt(a * XI_1 / R * math.tanh(XI_1 * h / R))
+    assert mode.omega == pytest.approx(expected, rel=1e-3)
+    assert mode.tank == "lox"
+    assert mode.mass_kg == mode.mass
+
+
+def test_full_and_empty_tanks_have_no_slosh_mode():
+    """A full tank (no free surface) and an empty one give no slosh mode."""
+    veh = Vehicle([Cylinder(R, 1.0, H, **STEEL), Cylinder(R, 4.0, H, **STEEL)],
+                  junctions=("rigid-bulkhead",),
+                  tanks=(VehicleTank(0.0, 1.0, 1.0, 800.0), VehicleTank(1.0, 5.0, 0.0, 800.0)))
+    assert slosh_modes(veh, acceleration=9.81) == ()
+
+
+def test_prestate_hydrostatic_head_and_axial_load():
+    """Free cylinder (inertia relief), an engine of 2 t at the aft edge, a tank 0..6 m half
+    full of LOX, a payload of 0.5 t at the nose; thrust F0: a = F0 / m_total; at every Gauss
+    point of the wetted wall N_theta = rho_L a (x_s - x) R (and 0 above the surface), and the
+    compressive force F(x) = F0 - a (m_engine + m_liquid + m_wall(0..x)) (Newton on the parts
+    aft of x, the liquid carried by the aft end); rel. 1e-9."""
+    length, radius, h = 10.0, 1.5, 0.004
+    veh = Vehicle([Cylinder(radius, 6.0, h, **STEEL), Cylinder(radius, 4.0, h, **STEEL)],
+                  junctions=("rigid-bulkhead",),
+                  masses=(LumpedMass(0.0, 2000.0), LumpedMass(length, 500.0)),
+                  tanks=(VehicleTank(0.0, 6.0, 0.5, 1140.0),))
+    mesh = mesh_vehicle(veh)
+    mu = RHO * h * 2.0 * math.pi * radius  # wall mass per unit length
+    m_liquid = 1140.0 * math.pi * radius**2 * 3.0
+    m_total = mu * length + 2000.0 + 500.0 + m_liquid
+    F0 = 1.0e6
+    a = F0 / m_total
+    pre = thrust_prestate(veh, mesh, F0)
+    xi = reference_element(mesh.order).xi
+    x = mesh.x1[:, None] + 0.5 * (1.0 + xi)[None, :] * mesh.length[:, None]
+    hoop = 1140.0 * a * np.clip(3.0 - x, 0.0, None) * radius
+    np.testing.assert_allclose(pre.hoop, hoop, rtol=1e-9, atol=1e-9 * hoop.max())
+    force = F0 - a * (2000.0 + m_liquid + mu * x)
+    np.testing.assert_allclose(pre.force, force, rtol=1e-9)
+    assert pre.force[-1, -1] == pytest.approx(a * (500.0 + mu * (length - x[-1, -1])), rel=1e-9)
