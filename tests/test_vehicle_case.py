@@ -540,6 +540,7 @@ name = "lox"
 
 def _physics_case(**changes) -> dict:
     data = _base()
+    del data["booster"]  # one vehicle per case: the segments
     data["thrust"]["F0"] = "0.3 MN"
     data.update(tomllib.loads(PHYSICS_TABLE))
     data["vehicle"].update(changes)
@@ -642,6 +643,7 @@ def test_modes_json_has_mass_properties_and_slosh(tmp_path, capsys):
 
     path = tmp_path / "physics.toml"
     data = _small(_base())
+    del data["booster"]  # one vehicle per case: the segments
     data["thrust"]["F0"] = "0.3 MN"
     table = PHYSICS_TABLE.replace("[vehicle]\n", "[vehicle]\nk_max = 2\n")
     path.write_text(dump_case(data) + table)

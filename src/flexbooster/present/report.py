@@ -49,6 +49,7 @@ from .rows import (
     memo_root_rows,
     not_applicable_text,
     severity_caption,
+    slosh_rows,
     vehicle_region_rows,
     vehicle_region_table,
     vehicle_region_verdict,
@@ -507,6 +508,9 @@ def _vehicle(results: Results, svgs: Mapping[str, str] | None) -> str:
         rows.append((kk, idx.size, m.hz[i], m.omega[i], m.type[i], m.order[i], m.segment[i]))
     out.append(_table(("k", "modes", "lowest Hz", "rad/s", "type", "order", "segment"), rows,
                       (True, True, True, True, False, True, True)))
+    if getattr(sv, "slosh", ()):
+        out.append("<p>Slosh: each tank's first mode under the thrust's acceleration "
+                   "(Abramson, NASA SP-106):</p>" + _qvu(slosh_rows(sv.slosh)))
     for name, caption in VEHICLE_FIGURES.items():
         if svgs and name in svgs:
             svg = inline_svg(svgs[name], f"fig-{name}", caption)

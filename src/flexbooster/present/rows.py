@@ -16,6 +16,8 @@ __all__ = [
     "input_rows",
     "mass_rows",
     "mass_title",
+    "vehicle_mass_rows",
+    "slosh_rows",
     "frequency_rows",
     "not_applicable_text",
     "REGION_HEADER",
@@ -162,7 +164,7 @@ def mass_rows(results: Results) -> list[Row]:
         The analysis.
     """
     if results.vehicle_mass is not None:
-        return with_us_units(results, _vehicle_mass_rows(results.vehicle_mass))
+        return with_us_units(results, vehicle_mass_rows(results.vehicle_mass))
     m = results.mass
 
     def g(x: float) -> str:
@@ -195,17 +197,38 @@ def mass_title(results: Results) -> str:
     return "Mass properties (memo 2.2, Fig. 1; I_cm per erratum E1)"
 
 
-def _vehicle_mass_rows(mp) -> list[Row]:
-    """Total mass, centre of mass, pitch inertia and every contribution of the vehicle."""
+def vehicle_mass_rows(mp) -> list[Row]:
+    """Total mass, centre of mass, pitch inertia and every contribution of the vehicle.
+
+    Parameters
+    ----------
+    mp : flexbooster.shell_of_revolution.MassProperties
+        The vehicle's mass properties.
+    """
     rows: list[Row] = [
         ("total mass", mp.mass_kg, "kg"),
         ("centre of mass from the aft edge", mp.cm_m, "m"),
         ("pitch moment of inertia about the centre of mass, I_cm", mp.I_cm_kg_m2, "kg m^2"),
     ]
-    rows += [(f"{c.kind}: {c.name} (mass / its centre of mass / its own I_cm)",
+    rows.append(("each contribution below: mass / its centre of mass / its own I_cm", "-",
+                 "kg / m / kg m^2"))
+    rows += [(c.kind if c.name == c.kind else f"{c.kind}: {c.name}",
               f"{c.mass_kg:.6g} / {c.cm_m:.6g} / {c.I_cm_kg_m2:.6g}", "kg / m / kg m^2")
              for c in mp.contributions]
     return rows
+
+
+def slosh_rows(slosh) -> list[Row]:
+    """Each tank's first slosh frequency under the thrust's acceleration and its slosh mass
+    (Abramson, NASA SP-106, spring-mass analogy).
+
+    Parameters
+    ----------
+    slosh : sequence of SloshMode
+        ``VehicleSurvey.slosh``.
+    """
+    return [(f"tank {m.tank}: first slosh frequency / slosh mass",
+             f"{m.hz:.6g} / {m.mass_kg:.6g}", "Hz / kg") for m in slosh]
 
 
 def frequency_rows(results: Results) -> list[Row]:
