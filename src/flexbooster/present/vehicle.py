@@ -121,9 +121,9 @@ def print_vehicle_mass(survey: VehicleSurvey, console: Console, *, mass: bool = 
     Parameters
     ----------
     survey : VehicleSurvey
-        The stored vehicle modes.
+        Its ``mass_properties`` and ``slosh`` are printed.
     console : rich.console.Console
-        Where to print.
+        The output.
     mass : bool
         Also the mass properties (``run`` prints them in its own table).
     """
