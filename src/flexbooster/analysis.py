@@ -4,7 +4,9 @@ A plain sequence of stages in the memo's order, each from the one model built fr
 (:func:`flexbooster.model.model_from_case`): beam modes, rigid-body pitch, shell frequencies,
 beam action, unstable thrust frequencies (memo 7.3) and their severity, figure data, then the
 vehicle's modes and parametric instability regions (:mod:`flexbooster.dynamics`) with the
-memo-table roots inside each region; and the warnings under which the analysis goes on.
+memo-table roots inside each region; and the warnings under which the analysis goes on. For a
+``[[vehicle.segments]]`` case the memo's stages do not apply: the vehicle's mass properties, its
+rigid-body pitch, modes and regions (``Results.not_applicable`` holds the reason).
 """
 
 from __future__ import annotations
