@@ -29,7 +29,7 @@ import warnings
 import pytest
 
 hypothesis = pytest.importorskip("hypothesis")
-from hypothesis import HealthCheck, given, settings  # noqa: E402
+from hypothesis import HealthCheck, assume, given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 
 import flexbooster  # noqa: E402
@@ -100,6 +100,9 @@ def valid_cases(draw) -> dict:
     }
     if draw(st.integers(0, 2)) == 0:
         case["vehicle"] = draw(vehicle_tables(r1, r2, h))
+        if "segments" in case["vehicle"]:  # one vehicle per case: the segments, with the
+            b = case.pop("booster")        # drawn material on [vehicle]
+            case["vehicle"].update({k: b[k] for k in ("E", "nu", "rho")})
     if draw(st.booleans()):  # the optional tables too: every table of a case file
         case["output"] = {"units": draw(st.sampled_from(["SI", "US"]))}
     if draw(st.integers(0, 2)) == 0:
@@ -273,6 +276,9 @@ _INT_FIELDS = ["thrust.n_omega", "truncation.M1", "truncation.N2", "truncation.N
 def test_invalid_case_is_a_one_line_case_error(data, bad):
     field, value = bad
     data.pop("_regions")
+    if "booster" not in data and field.startswith("booster."):  # a [[vehicle.segments]] case
+        assume(field.split(".")[1] in ("E", "nu", "rho"))
+        field = "vehicle." + field.split(".", 1)[1]
     *parents, last = field.split(".")
     table = data
     for key in parents:

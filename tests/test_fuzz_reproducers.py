@@ -397,6 +397,15 @@ _FUZZ_VEHICLE_BASE = {
 }
 
 
+def _one_vehicle(data: dict) -> dict:
+    """The fuzz case as one vehicle: its [[vehicle.segments]] with [booster]'s material on
+    [vehicle] ([booster] and segments together are refused; the fuzz drew them together, the
+    aft radius, which turns T0 into F0, is the same)."""
+    b = data.pop("booster")
+    data["vehicle"].update({k: b[k] for k in ("E", "nu", "rho")})
+    return data
+
+
 def test_fuzz_reproducer_vehicle_modes_all_buckled():
     """Found by the fuzz: a 0.1 mm cone (one segment, k = 0 only) under F0 = 100 N: every
     omega^2 of the band's first harmonic is negative, so the band bound was never set and
@@ -408,7 +417,7 @@ def test_fuzz_reproducer_vehicle_modes_all_buckled():
     data["vehicle"] = {"k_max": 0, "n_modes": 1, "damping_ratio": 0.0, "segments": [
         {"kind": "cone", "radius_aft": 1.0, "radius_fwd": 1.0, "length": 1.0,
          "thickness": 0.0001}]}
-    case = flexbooster.load_case(data)
+    case = flexbooster.load_case(_one_vehicle(data))
     with pytest.raises(ValueError, match=r"^prestress_F0 = 100\.0: k = 0 has a non-positive"):
         vehicle_modes(vehicle_from_case(case), k_max=0, prestress_F0=case.F0)
     with pytest.raises(CaseError) as info:
@@ -446,7 +455,7 @@ def test_fuzz_reproducer_vehicle_n_modes_above_the_axial_modes():
     the DOFs) asked the forced axial modes for 140 ("the mesh has only 138 modes for k = 0").
     Now 138 per harmonic, the forced axial resonances computed, a vehicle-modes-clipped
     warning."""
-    case = flexbooster.load_case({
+    case = flexbooster.load_case(_one_vehicle({
         "name": "fuzz", "max_seconds": 20.0,
         "booster": {"cylinder1": {"radius": 8.45, "half_length": 35.9},
                     "cylinder2": {"radius": 12.6, "half_length": 1.0}, "thickness": 0.845,
@@ -460,7 +469,7 @@ def test_fuzz_reproducer_vehicle_n_modes_above_the_axial_modes():
             {"kind": "cone", "radius_aft": 8.45, "radius_fwd": 2.74, "length": 1.0,
              "thickness": 0.274},
             {"kind": "cone", "radius_aft": 2.74, "radius_fwd": 2.7400001, "length": 1.0,
-             "thickness": 0.274}]}})
+             "thickness": 0.274}]}}))
     assert cost.region_modes(case, k_max=4) == (138, 138)
     res = analyze(case, figures=False)
     assert res.vehicle_regions.forced_axial is not None
@@ -474,7 +483,7 @@ def test_fuzz_reproducer_vehicle_regions_of_a_flat_plate():
     basis of the regions.  The modes survey goes on unloaded (vehicle-prestress warning);
     the regions, which need that prestress, are now skipped with a one-line warning naming
     vehicle.segments, and the rest of the analysis stands."""
-    case = flexbooster.load_case({
+    case = flexbooster.load_case(_one_vehicle({
         "name": "fuzz", "max_seconds": 20.0,
         "booster": {"cylinder1": {"radius": 1.0, "half_length": 1.0125},
                     "cylinder2": {"radius": 23.89, "half_length": 0.822}, "thickness": 0.0794,
@@ -489,7 +498,7 @@ def test_fuzz_reproducer_vehicle_regions_of_a_flat_plate():
                         {"kind": "cone", "radius_aft": 3.0, "radius_fwd": 3.117,
                          "length": 2.32, "thickness": 0.238},
                         {"kind": "cone", "radius_aft": 1.0, "radius_fwd": 1.139,
-                         "length": 10.88, "thickness": 0.0794, "junction": "memo-bulkhead"}]}})
+                         "length": 10.88, "thickness": 0.0794, "junction": "memo-bulkhead"}]}}))
     res = analyze(case, figures=False)
     assert res.vehicle_regions is None and res.vehicle is not None
     skipped = [w for w in res.warnings if w.code == "vehicle-regions-skipped"]

@@ -72,9 +72,11 @@ def _small(data: dict) -> dict:
 
 
 def _with_issue_table(**changes) -> dict:
-    """The default case with the issue's [vehicle] table and F0 = 0.3 MN (2.8 MN would exceed
-    the k = 2 buckling load of this small free-free vehicle)."""
+    """The default case with the issue's [vehicle] table in place of [booster] (one vehicle per
+    case) and F0 = 0.3 MN (2.8 MN would exceed the k = 2 buckling load of this small free-free
+    vehicle)."""
     data = _base()
+    del data["booster"]
     data["thrust"]["F0"] = "0.3 MN"
     data.update(tomllib.loads(ISSUE_TABLE))
     data["vehicle"].update(changes)
@@ -145,19 +147,19 @@ def test_issue_table_units_and_defaults():
 
 
 def test_defaults_material_fallback_and_rigid_bulkhead():
-    """Without table material, a segment takes [booster]'s (the default case: 10.5e6 psi,
-    rel. 1e-12); a per-segment E overrides; ends default "free", k_max 20, theory sanders;
-    junction = "rigid-bulkhead" joins radii that differ (1.5 m to 1.2 m)."""
+    """A segment without material takes [vehicle]'s (70 GPa, 0.3, 2700 kg/m^3, rel. 1e-12); a
+    per-segment E overrides; ends default "free", k_max 20, theory sanders; junction =
+    "rigid-bulkhead" joins radii that differ (1.5 m to 1.2 m)."""
     data = _base()
-    data["vehicle"] = {"segments": [
+    del data["booster"]
+    data["vehicle"] = {"E": "70 GPa", "nu": 0.3, "rho": "2700 kg/m^3", "segments": [
         {"kind": "cylinder", "radius": "1.5 m", "length": "6 m", "thickness": "8 mm"},
         {"kind": "cylinder", "radius": "1.2 m", "length": "3 m", "thickness": "6 mm",
          "E": "200 GPa", "junction": "rigid-bulkhead"}]}
     case = load_case(data)
     veh = vehicle_from_case(case)
-    booster = case.booster
-    np.testing.assert_allclose(veh.segments[0].E, 10.5e6 * 6894.757293168361, rtol=1e-12)
-    assert veh.segments[0].rho == booster.rho and veh.segments[0].nu == booster.nu
+    np.testing.assert_allclose([veh.segments[0].E, veh.segments[0].nu, veh.segments[0].rho],
+                               [70e9, 0.3, 2700.0], rtol=1e-12)
     assert veh.segments[1].E == pytest.approx(200e9, rel=1e-12)
     assert veh.junctions == ("rigid-bulkhead",)
     assert (veh.aft_end, veh.fwd_end, veh.theory, case.vehicle.k_max) == (
@@ -542,6 +544,7 @@ name = "lox"
 
 def _physics_case(**changes) -> dict:
     data = _base()
+    del data["booster"]  # one vehicle per case: the segments
     data["thrust"]["F0"] = "0.3 MN"
     data.update(tomllib.loads(PHYSICS_TABLE))
     data["vehicle"].update(changes)
@@ -640,6 +643,7 @@ def test_modes_json_has_mass_properties_and_slosh(tmp_path, capsys):
 
     path = tmp_path / "physics.toml"
     data = _small(_base())
+    del data["booster"]  # one vehicle per case: the segments
     data["thrust"]["F0"] = "0.3 MN"
     table = PHYSICS_TABLE.replace("[vehicle]\n", "[vehicle]\nk_max = 2\n")
     path.write_text(dump_case(data) + table)

@@ -235,7 +235,9 @@ def test_the_case_passes_the_ends_to_the_load_path(fwd_end, path):
     an axially restrained forward end (clamped, hinged) reacts the thrust, a shear diaphragm
     (axially free) does not; results.json's vehicle_regions say which."""
     data = tomllib.loads(default_case_text())
-    data["vehicle"] = {"aft_end": "shear-diaphragm", "fwd_end": fwd_end, "k_max": 2,
+    b = data.pop("booster")  # one vehicle per case: the segment, [booster]'s material
+    data["vehicle"] = {"E": b["E"], "nu": b["nu"], "rho": b["rho"],
+                       "aft_end": "shear-diaphragm", "fwd_end": fwd_end, "k_max": 2,
                        "n_modes": 2, "segments": [{"kind": "cylinder", "radius": 1.0,
                                                    "length": 2.0, "thickness": 0.01}]}
     found = analyze_vehicle_regions(load_case(data), k_min=2, boundaries=False)

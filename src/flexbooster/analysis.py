@@ -4,7 +4,9 @@ A plain sequence of stages in the memo's order, each from the one model built fr
 (:func:`flexbooster.model.model_from_case`): beam modes, rigid-body pitch, shell frequencies,
 beam action, unstable thrust frequencies (memo 7.3) and their severity, figure data, then the
 vehicle's modes and parametric instability regions (:mod:`flexbooster.dynamics`) with the
-memo-table roots inside each region; and the warnings under which the analysis goes on.
+memo-table roots inside each region; and the warnings under which the analysis goes on. For a
+``[[vehicle.segments]]`` case the memo's stages do not apply: the vehicle's mass properties, its
+rigid-body pitch, modes and regions (``Results.not_applicable`` holds the reason).
 """
 
 from __future__ import annotations
@@ -25,14 +27,14 @@ from .memo import charts
 from .memo.beam import beam_modes
 from .memo.beam_action import PeriodMapOverflowError, beam_action_analysis
 from .memo.model import BoosterModel
-from .memo.pitch import pitch_analysis
+from .memo.pitch import pitch_analysis, pitch_frequency
 from .memo.responses import SimulationResult, excitation_parameters, simulate
 from .memo.severity import severity_analysis
 from .memo.shell import natural_frequencies
 from .memo.stability import ShellModes, StabilityTable, TooManyRootsError, unstable_frequencies
-from .model import model_from_case, vehicle_from_case
+from .model import MEMO_NOT_APPLICABLE, model_from_case, vehicle_from_case
 from .results import SCHEMA_VERSION, UNITS, MemoRootsInRegions, Results
-from .shell_of_revolution import BucklingError
+from .shell_of_revolution import BucklingError, mass_properties
 from .shell_of_revolution.survey import VehicleSurvey, has_flat_plate, vehicle_survey
 
 __all__ = [
@@ -90,19 +92,26 @@ def _warnings(model: BoosterModel, a: np.ndarray, q: np.ndarray) -> list[Analysi
                            f"h/R{d} = {model.h / radius:.4g} exceeds 1/20: thin-shell (Donnell) "
                            "theory of memo 2.3 is not reliable")
            for d, radius in ((1, model.R1), (2, model.R2)) if model.h / radius > THIN_SHELL_LIMIT]
+    return out + _mathieu_warnings(model.Omega, model.omega_psi, a, q)
+
+
+def _mathieu_warnings(Omega: np.ndarray, omega_psi: float, a: np.ndarray, q: np.ndarray
+                      ) -> list[AnalysisWarning]:
+    """Mathieu a, q of the rigid pitch outside the memo's range (eq. 4.2-5)."""
+    out = []
     bad_a = ~((a > MATHIEU_A_RANGE[0]) & (a < MATHIEU_A_RANGE[1]))
     if bad_a.any():
         out.append(AnalysisWarning(
             "mathieu-a-range", "thrust",
             f"Mathieu a outside the memo's range 0 < a < 1 (eq. 4.2-5) at "
-            f"{_range_text(model.Omega, bad_a)}; a = 4 omega_psi^2/Omega^2 with "
-            f"omega_psi = {model.omega_psi:.6g} rad/s"))
+            f"{_range_text(Omega, bad_a)}; a = 4 omega_psi^2/Omega^2 with "
+            f"omega_psi = {omega_psi:.6g} rad/s"))
     bad_q = ~((q > 0.0) & (q <= MATHIEU_Q_MAX))
     if bad_q.any():
         out.append(AnalysisWarning(
             "mathieu-q-range", "thrust",
             f"Mathieu q outside the memo's range 0 < q <= 0.05 (eq. 4.2-5) at "
-            f"{_range_text(model.Omega, bad_q)}; q = gamma a / 2"))
+            f"{_range_text(Omega, bad_q)}; q = gamma a / 2"))
     return out
 
 
@@ -144,6 +153,10 @@ def analyze(
     """
     _check_case(case)
     step = progress or (lambda stage: None)
+    case.required_thrust()  # a one-line CaseError on thrust before any stage
+    if case.has_segments:  # the memo's method does not apply: the vehicle's stages only
+        return _analyze_segments(case, step, figures=figures, regions=vehicle,
+                                 on_estimate=on_estimate)
     with blas_threads(1):  # many small eigenproblems: one BLAS thread is the fastest
         step(STAGES[0])
         model = model_from_case(case)
@@ -210,6 +223,47 @@ def analyze(
         danger=_danger(model, pitch, action, regions, severity),
         severity=severity,
     )
+
+
+def _analyze_segments(case: Case, step: Callable[[str], None], *, figures: bool,
+                      regions: bool, on_estimate: Callable | None) -> Results:
+    """:func:`analyze` of a ``[[vehicle.segments]]`` case: the vehicle's mass properties, its
+    rigid-body pitch (omega_psi = sqrt(F0 d K / I_cm), memo eq. 4.2-1, d the centre of mass
+    from the aft edge, on the memo's Mathieu numerics), modes and regions; the memo's stages
+    are not applicable (``Results.not_applicable``)."""
+    with blas_threads(1):
+        step(STAGES[0])
+        structure = vehicle_from_case(case)
+        mass = mass_properties(structure)
+        est = cost.check_case_cost(None, case.max_seconds, vehicle=cost.estimate_vehicle_cost(
+            case, regions=regions, figures=figures))
+        if on_estimate is not None:
+            on_estimate(est, case.max_seconds)
+        step(STAGES[1])
+        t, Omega = case.thrust, case.omega_grid()
+        omega_psi = pitch_frequency(case.F0, mass.cm_m, t.K, mass.I_cm_kg_m2)  # eq. (4.2-1)
+        pitch = pitch_analysis(Omega, omega_psi, t.gamma, damping_ratio=case.damping.pitch_ratio)
+        extra = _mathieu_warnings(Omega, omega_psi, pitch.a, pitch.q)
+        step(VEHICLE_STAGE)
+        survey = analyze_vehicle(case, views=figures)
+        extra += vehicle_warnings(survey)
+        found = None
+        if regions:
+            step(VEHICLE_REGIONS_STAGE)
+            found, skipped = _vehicle_regions_stage(case, boundaries=figures)
+            extra += skipped
+    danger = danger_summary(
+        operating_range=(t.omega_min, t.omega_max),
+        bands={"pitch": pitch.bands, **({} if found is None else {"vehicle": found.regions})},
+        gaps=list(pitch.gaps) + ([] if found is None else list(found.gaps)))
+    memo = {"beam_action", "resonance"}  # the memo's mechanisms: not applicable, never stable
+    danger = dataclasses.replace(danger, verdicts=tuple(
+        (key, words, f"not applicable: {MEMO_NOT_APPLICABLE}" if key in memo else verdict)
+        for key, words, verdict in danger.verdicts))
+    return Results(case=case, mass=None, omega_1=None, omega_psi=omega_psi, groups=None,
+                   beam=None, pitch=pitch, shell=None, warnings=tuple(extra), vehicle=survey,
+                   vehicle_regions=found, danger=danger, vehicle_mass=mass,
+                   not_applicable=MEMO_NOT_APPLICABLE)
 
 
 def _danger(model: BoosterModel, pitch, action, regions, severity):
@@ -329,8 +383,9 @@ def _beam_action(model: BoosterModel):
 
 def analyze_vehicle(case: Case, *, k_max: int | None = None, f_max: float | None = None,
                     prestress: bool = True, views: bool = True) -> VehicleSurvey:
-    """The vehicle modes of a case (``flexbooster modes``); CaseError on ``thrust.F0`` when the
-    prestress exceeds a buckling load (docs/theory/vehicle-case.md).
+    """The vehicle modes of a case (``flexbooster modes``), unloaded for a case without
+    ``[thrust]``; CaseError on ``thrust.F0`` when the prestress exceeds a buckling load
+    (docs/theory/vehicle-case.md).
 
     Parameters
     ----------
@@ -355,7 +410,8 @@ def analyze_vehicle(case: Case, *, k_max: int | None = None, f_max: float | None
     with blas_threads(1):
         vehicle = vehicle_from_case(case)
         try:
-            return vehicle_survey(vehicle, k_max=k_max, F0=case.F0, f_max=f_max,
+            F0 = None if case.thrust is None else case.F0  # no [thrust]: unloaded
+            return vehicle_survey(vehicle, k_max=k_max, F0=F0, f_max=f_max,
                                   prestress=prestress, views=views, source=source)
         except BucklingError as exc:
             raise CaseError("thrust.F0", case.F0, "the thrust prestress exceeds a "

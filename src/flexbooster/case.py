@@ -1,7 +1,9 @@
 """Case files: TOML input validated by pydantic, physical values converted to SI by pint.
 
-Tables ``[booster]`` (``cylinder1``, ``cylinder2``), ``[thrust]``, ``[truncation]`` and the
-optional ones; the embedded default case (``flexbooster init``) documents every field. A
+One vehicle per case: ``[booster]`` (``cylinder1``, ``cylinder2``: the memo's two bare
+cylinders) or ``[vehicle]`` with ``[[vehicle.segments]]``, never both; then ``[thrust]``
+(needed by ``run``, not by ``modes``), ``[truncation]`` and the optional tables. The embedded
+default case (``flexbooster init``) documents every field. A
 value is an SI number or a string with units. Invalid input raises
 :class:`~flexbooster.errors.CaseError` naming the field, the value and the rule.
 """
@@ -288,8 +290,13 @@ class Case(BaseModel):
     ----------
     name : str
         A label for reports.
-    booster, thrust, truncation : Booster, Thrust, Truncation
-        The required tables.
+    booster : Booster or None
+        The memo's two bare cylinders; None for a case whose vehicle is
+        ``[[vehicle.segments]]`` (exactly one of the two is given).
+    thrust : Thrust or None
+        The pulsating thrust; None only for the unloaded modes (``flexbooster modes``).
+    truncation : Truncation
+        Series truncation of the memo's method.
     damping, severity : Damping, SeverityTable
         Optional tables (no damping by default).
     vehicle : VehicleTable or None
@@ -304,8 +311,8 @@ class Case(BaseModel):
     model_config = _FROZEN
     name: str = "case"
     max_seconds: float = 300.0
-    booster: Booster
-    thrust: Thrust
+    booster: Booster | None = None
+    thrust: Thrust | None = None
     truncation: Truncation = Truncation()
     damping: Damping = Damping()
     vehicle: VehicleTable | None = None
@@ -321,29 +328,56 @@ class Case(BaseModel):
     severity: SeverityTable = SeverityTable()
 
     @property
+    def has_segments(self) -> bool:
+        """True when the vehicle is ``[[vehicle.segments]]`` (not the memo's ``[booster]``)."""
+        return self.vehicle is not None and self.vehicle.segments is not None
+
+    @property
+    def aft_radius(self) -> float:
+        """Mid-surface radius of the aft edge, where the thrust acts (m): R1 of ``[booster]`` or
+        the first segment's aft radius."""
+        if self.booster is not None:
+            return self.booster.cylinder1.radius
+        return self.vehicle.segments[0].r_aft
+
+    @property
     def F0(self) -> float:
-        """Total steady thrust F0 = 2 pi R1 T0 (N)."""
-        if self.thrust.F0 is not None:
-            return self.thrust.F0
-        return 2.0 * math.pi * self.booster.cylinder1.radius * self.thrust.T0
+        """Total steady thrust F0 = 2 pi R_aft T0 (N); CaseError on ``thrust`` without it."""
+        t = self.required_thrust()
+        if t.F0 is not None:
+            return t.F0
+        return 2.0 * math.pi * self.aft_radius * t.T0
 
     @property
     def T0(self) -> float:
-        """Steady thrust per unit circumference of the aft edge (N/m)."""
-        if self.thrust.T0 is not None:
-            return self.thrust.T0
-        return self.thrust.F0 / (2.0 * math.pi * self.booster.cylinder1.radius)
+        """Steady thrust per unit circumference of the aft edge (N/m); CaseError on ``thrust``
+        without it."""
+        t = self.required_thrust()
+        if t.T0 is not None:
+            return t.T0
+        return t.F0 / (2.0 * math.pi * self.aft_radius)
+
+    def required_thrust(self) -> Thrust:
+        """The ``[thrust]`` table; CaseError on ``thrust`` when the case has none."""
+        if self.thrust is None:
+            raise CaseError("thrust", None, "required field is missing (the analysis needs "
+                            "the thrust; 'flexbooster modes' gives the unloaded modes without)")
+        return self.thrust
 
     def omega_grid(self) -> np.ndarray:
         """The uniform grid of thrust pulsation frequencies Omega (rad/s)."""
-        t = self.thrust
+        t = self.required_thrust()
         return np.linspace(t.omega_min, t.omega_max, t.n_omega)
 
     def to_si_dict(self) -> dict[str, Any]:
         """The case as plain SI numbers (what results.json records as its input)."""
         data = self.model_dump()
-        data["thrust"]["F0"] = self.F0
-        data["thrust"]["T0"] = self.T0
+        for key in ("booster", "thrust"):  # the one vehicle: [booster] or [vehicle] segments
+            if data.get(key) is None:
+                data.pop(key, None)
+        if self.thrust is not None:
+            data["thrust"]["F0"] = self.F0
+            data["thrust"]["T0"] = self.T0
         if data.get("vehicle") is None:  # no [vehicle]: results.json as before
             data.pop("vehicle", None)
         if data.get("output") == {"units": "SI"}:  # the default [output]: as before
@@ -427,22 +461,23 @@ def _from_validation_error(exc: ValidationError) -> CaseError:
 
 def _cross_checks(case: Case) -> None:
     """Rules that involve more than one field."""
+    _one_vehicle(case)
     b, t, n = case.booster, case.thrust, case.truncation
-    if (t.F0 is None) == (t.T0 is None):
+    if t is not None and (t.F0 is None) == (t.T0 is None):
         given = "both" if t.F0 is not None else "neither"
         raise CaseError(
             "thrust.F0/thrust.T0",
             given,
             "give exactly one of F0 (total) and T0 (per unit circumference)",
         )
-    for d, cyl in ((1, b.cylinder1), (2, b.cylinder2)):
+    for d, cyl in () if b is None else ((1, b.cylinder1), (2, b.cylinder2)):
         if not b.thickness < cyl.radius:
             raise CaseError(
                 "booster.thickness",
                 b.thickness,
                 f"must be smaller than cylinder{d}.radius = {cyl.radius!r} m",
             )
-    if not t.omega_min < t.omega_max:
+    if t is not None and not t.omega_min < t.omega_max:
         raise CaseError(
             "thrust.omega_min",
             t.omega_min,
@@ -454,7 +489,35 @@ def _cross_checks(case: Case) -> None:
             n.R,
             f"must not exceed N + 1 = {n.N + 1} (rigid rotation plus N elastic modes)",
         )
-    check_vehicle(case.vehicle, booster_radii=(b.cylinder1.radius, b.cylinder2.radius))
+    # without [booster] the table has segments, which do not read the radii
+    radii = (math.nan, math.nan) if b is None else (b.cylinder1.radius, b.cylinder2.radius)
+    check_vehicle(case.vehicle, booster_radii=radii)
+    if b is None:
+        _segment_materials(case.vehicle)
+
+
+def _one_vehicle(case: Case) -> None:
+    """One vehicle per case: ``[booster]`` or ``[vehicle]`` with segments, never both, never
+    neither (a ``[vehicle]`` without segments only tunes the memo vehicle of ``[booster]``)."""
+    if case.booster is not None and case.has_segments:
+        raise CaseError("booster/vehicle.segments", "both",
+                        "a case describes one vehicle: give [booster] (the memo's two bare "
+                        "cylinders) or [vehicle] with [[vehicle.segments]], not both")
+    if case.booster is None and not case.has_segments:
+        raise CaseError("booster", None, "required field is missing (or give [vehicle] with "
+                        "[[vehicle.segments]])")
+
+
+def _segment_materials(table: VehicleTable) -> None:
+    """Without ``[booster]`` every segment needs E, nu and rho, its own or ``[vehicle]``'s."""
+    for name in ("E", "nu", "rho"):
+        if getattr(table, name) is not None:
+            continue
+        for i, seg in enumerate(table.segments):
+            if getattr(seg, name) is None:
+                raise CaseError(f"vehicle.segments[{i}].{name}", None,
+                                f"required field is missing (or give vehicle.{name} for every "
+                                "segment; a case without [booster] has no default material)")
 
 
 def _validate(data: Mapping[str, Any]) -> Case:

@@ -320,11 +320,13 @@ def stability(
       flexbooster stability my.toml --omega-min 5 --omega-max 500 -o out/
     """
     from .analysis import STAGES, analyze
+    from .model import check_memo_applies
     from .present.io import write_csv_atomic, write_json_atomic
     from .present.summary import print_stability
 
     _check_names(output, STABILITY_FILES)
     case = _with_budget(_case_with_range(_load(case_file), omega_min, omega_max), max_seconds)
+    check_memo_applies(case)  # the memo's table: [booster] only
     with _progress(len(STAGES), quiet) as step:
         results = analyze(case, progress=step, vehicle=False,  # the memo table only
                           on_estimate=getattr(step, "estimate", None))

@@ -515,15 +515,15 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
     return CostEstimate(seconds=float(sum(parts.values())), parts=parts, drivers=drivers)
 
 
-def check_case_cost(model: BoosterModel, max_seconds: float, *,
+def check_case_cost(model: BoosterModel | None, max_seconds: float, *,
                     vehicle: CostEstimate | None = None, **stages: bool) -> CostEstimate:
     """The cost estimate (the vehicle parts included), or a ``CaseError`` on ``max_seconds`` with
     the estimate and its fields when it exceeds the budget.
 
     Parameters
     ----------
-    model : BoosterModel
-        The derived model.
+    model : BoosterModel or None
+        The derived model; None for a ``[[vehicle.segments]]`` case (no memo stage).
     max_seconds : float
         Budget (s), > 0.
     vehicle : CostEstimate, optional
@@ -532,7 +532,7 @@ def check_case_cost(model: BoosterModel, max_seconds: float, *,
         ``beam_action``, ``stability``, ``figures`` as for :func:`estimate_cost`.
     """
     max_seconds = positive("max_seconds", max_seconds)
-    est = estimate_cost(model, **stages)
+    est = CostEstimate(seconds=0.0) if model is None else estimate_cost(model, **stages)
     if vehicle is not None and vehicle.parts:
         est = CostEstimate(seconds=est.seconds + vehicle.seconds,
                            parts={**est.parts, **vehicle.parts},

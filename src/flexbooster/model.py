@@ -24,7 +24,27 @@ from .shell_of_revolution.geometry import (
 if TYPE_CHECKING:
     from .case import Case
 
-__all__ = ["model_from_case", "vehicle_from_case"]
+__all__ = ["MEMO_NOT_APPLICABLE", "check_memo_applies", "model_from_case", "vehicle_from_case"]
+
+#: Why the memo's method (beam, Galerkin shells, beam action, the 13-family table, its charts)
+#: does not apply to a case whose vehicle is ``[[vehicle.segments]]``.
+MEMO_NOT_APPLICABLE = ("the memo's method (Tech Memo 104: free-free beam, Galerkin shells, beam "
+                       "action, the 13-family table) models the two bare cylinders of [booster] "
+                       "only")
+
+
+def check_memo_applies(case: Case) -> None:
+    """CaseError on ``booster`` (with :data:`MEMO_NOT_APPLICABLE`) for a case whose vehicle is
+    ``[[vehicle.segments]]``: the memo's method needs ``[booster]``.
+
+    Parameters
+    ----------
+    case : Case
+        A validated case.
+    """
+    if case.booster is None:
+        raise CaseError("booster", None, f"{MEMO_NOT_APPLICABLE} (this case's vehicle is "
+                        "[[vehicle.segments]])")
 
 
 def model_from_case(case: Case) -> BoosterModel:
@@ -37,6 +57,7 @@ def model_from_case(case: Case) -> BoosterModel:
     case : Case
         From :func:`flexbooster.load_case` or :func:`flexbooster.default_case` (SI).
     """
+    check_memo_applies(case)
     b, t, n = case.booster, case.thrust, case.truncation
     try:
         with np.errstate(over="raise", invalid="raise"):
@@ -85,7 +106,7 @@ def vehicle_from_case(case: Case) -> Vehicle:
     segments = []
     for seg in table.segments:
         mat = {name: next(v for v in (getattr(seg, name), getattr(table, name),
-                                      getattr(b, name)) if v is not None)
+                                      getattr(b, name, None)) if v is not None)
                for name in ("E", "nu", "rho")}
         wall = {"nonstructural_mass": seg.nonstructural_mass, "pressure": seg.pressure,
                 **{name: None if st is None else Stiffeners(

@@ -23,12 +23,13 @@ from .memo.pitch import PitchResult
 from .memo.severity import SeverityResult
 from .memo.shell import ShellFrequencies
 from .memo.stability import StabilityTable
+from .shell_of_revolution.mass_properties import MassProperties as VehicleMassProperties
 from .shell_of_revolution.survey import VehicleSurvey
 
 if TYPE_CHECKING:
     from .case import Case
 
-__all__ = ["Results", "MemoRootsInRegions", "SCHEMA_VERSION", "UNITS"]
+__all__ = ["Results", "MemoRootsInRegions", "SCHEMA_VERSION", "UNITS", "MEMO_SECTIONS"]
 
 #: Version of the layout of results.json; bumped when a key changes meaning or disappears.
 SCHEMA_VERSION = "1.0"
@@ -103,6 +104,16 @@ UNITS: dict[str, str] = {
     "danger.bands.growth_rate": "1/s",
     "danger.bands.severity": "m/s (memo resonances)",
 }
+UNITS.update({
+    "mass_properties.mass_kg, contributions.mass_kg": "kg ([vehicle] segments)",
+    "mass_properties.cm_m, contributions.cm_m": "m from the aft edge ([vehicle] segments)",
+    "mass_properties.I_cm_kg_m2, contributions.I_cm_kg_m2": "kg m^2 ([vehicle] segments)",
+})
+#: The results.json keys of the memo's method alone: for a case whose vehicle is
+#: ``[[vehicle.segments]]`` each holds ``{"not_applicable": "<reason>"}`` (as do
+#: ``frequencies.omega_1`` and ``frequencies.omega_1_hz``).
+MEMO_SECTIONS = ("dimensionless", "beam_modes", "shell_frequencies", "beam_action", "stability",
+                 "figures")
 # The bands of every mechanism (flexbooster.bands.Band.to_dict), wherever they are stored.
 for _where in ("pitch.bands", "beam_action.bands", "vehicle_regions.regions",
                "stability.severity.bands"):
@@ -124,18 +135,22 @@ class Results:
     ----------
     case : Case
         The validated input.
-    mass : MassProperties
-        Geometry and mass properties (memo 2.2, Fig. 1-2).
-    omega_1, omega_psi : float
-        First free-free bending frequency (4.2-8b) and rigid pitch frequency (rad/s).
-    groups : DimensionlessGroups
-        mu, lambda_d, sigma, T0_bar (memo 3.0).
-    beam : BeamModes
-        lambda_n, alpha_n, omega_n of the first N free-free modes (appendix C).
+    mass : MassProperties or None
+        Geometry and mass properties (memo 2.2, Fig. 1-2); None where the memo's method does
+        not apply (``not_applicable``).
+    omega_1 : float or None
+        First free-free bending frequency (4.2-8b, rad/s); None as ``mass``.
+    omega_psi : float
+        Rigid pitch frequency sqrt(F0 d K / I_cm) (4.2-1, rad/s), of the memo's cylinders or of
+        ``vehicle_mass``.
+    groups : DimensionlessGroups or None
+        mu, lambda_d, sigma, T0_bar (memo 3.0); None as ``mass``.
+    beam : BeamModes or None
+        lambda_n, alpha_n, omega_n of the first N free-free modes (appendix C); None as ``mass``.
     pitch : PitchResult
         The rigid-body pitch (4.2).
-    shell : ShellFrequencies
-        Shell natural frequencies of both cylinders (5.4, 6.2).
+    shell : ShellFrequencies or None
+        Shell natural frequencies of both cylinders (5.4, 6.2); None as ``mass``.
     model : BoosterModel
         The derived model the stages were computed from.
     figures : FigureData
@@ -155,16 +170,23 @@ class Results:
         One verdict per mechanism and the ranked bands (the first screen).
     severity : SeverityResult or None
         Severity of the roots and their bands (results.json ``stability.severity``).
+    vehicle_mass : shell_of_revolution.MassProperties or None
+        Mass properties of a ``[[vehicle.segments]]`` vehicle, each contribution listed
+        (results.json ``mass_properties``); None for ``[booster]``.
+    not_applicable : str or None
+        Why the memo's method does not apply (a ``[[vehicle.segments]]`` vehicle): its results
+        are None and its results.json keys (:data:`MEMO_SECTIONS`) hold
+        ``{"not_applicable": reason}``; None for ``[booster]``.
     """
 
     case: Case
-    mass: MassProperties
-    omega_1: float
+    mass: MassProperties | None
+    omega_1: float | None
     omega_psi: float
-    groups: DimensionlessGroups
-    beam: BeamModes
+    groups: DimensionlessGroups | None
+    beam: BeamModes | None
     pitch: PitchResult
-    shell: ShellFrequencies
+    shell: ShellFrequencies | None
     model: BoosterModel | None = None
     figures: FigureData | None = None
     beam_action: BeamActionResult | None = None
@@ -175,6 +197,8 @@ class Results:
     memo_roots_in_regions: MemoRootsInRegions | None = None
     danger: DangerSummary | None = None
     severity: SeverityResult | None = None
+    vehicle_mass: VehicleMassProperties | None = None
+    not_applicable: str | None = None
 
     @property
     def Omega(self) -> np.ndarray:
@@ -198,17 +222,17 @@ class Results:
             "flexbooster_version": __version__,
             "units": dict(UNITS),
             "case": self.case.to_si_dict(),
-            "mass_properties": self.mass.to_dict(),
+            "mass_properties": None if self.mass is None else self.mass.to_dict(),
             "frequencies": {
                 "omega_1": self.omega_1,
-                "omega_1_hz": self.omega_1 / (2.0 * np.pi),
+                "omega_1_hz": None if self.omega_1 is None else self.omega_1 / (2.0 * np.pi),
                 "omega_psi": self.omega_psi,
                 "omega_psi_hz": self.omega_psi / (2.0 * np.pi),
             },
-            "dimensionless": self.groups.to_dict(),
-            "beam_modes": self.beam.to_dict(),
+            "dimensionless": None if self.groups is None else self.groups.to_dict(),
+            "beam_modes": None if self.beam is None else self.beam.to_dict(),
             "pitch": self.pitch.to_dict(),
-            "shell_frequencies": self.shell.to_dict(),
+            "shell_frequencies": None if self.shell is None else self.shell.to_dict(),
             "beam_action": None if self.beam_action is None else self.beam_action.to_dict(),
             "stability": None if self.stability is None else self.stability.to_dict(),
             "warnings": [w.to_dict() for w in self.warnings],
@@ -220,6 +244,15 @@ class Results:
         if self.vehicle is not None:  # only for a case with [vehicle] (units inside)
             out["vehicle_modes"] = self.vehicle.to_dict()
         out["vehicle_regions"] = self._vehicle_regions_dict()
+        return out if self.not_applicable is None else self._memo_not_applicable(out)
+
+    def _memo_not_applicable(self, out: dict[str, Any]) -> dict[str, Any]:
+        """results.json of a ``[[vehicle.segments]]`` case: the vehicle's mass properties; the
+        memo's keys present, each ``{"not_applicable": reason}``."""
+        na = {"not_applicable": f"not applicable: {self.not_applicable}"}
+        out["mass_properties"] = self.vehicle_mass.to_dict()
+        out["frequencies"].update(omega_1=dict(na), omega_1_hz=dict(na))
+        out.update({key: dict(na) for key in MEMO_SECTIONS})
         return out
 
     def _vehicle_regions_dict(self) -> dict[str, Any] | None:

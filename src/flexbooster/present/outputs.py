@@ -201,8 +201,10 @@ def _write_files(results: Results, folder: Path, figures: bool,
     names = figure_names(results) if figures else ()
     with _drawn(results, names, _usable_cpus()) as drawn:
         step(OUTPUT_STAGES[0])
-        written = [write_json_atomic(folder / "results.json", results.to_dict()),
-                   write_csv_atomic(folder / "shell-frequencies.csv", results.shell.to_rows())]
+        written = [write_json_atomic(folder / "results.json", results.to_dict())]
+        if results.shell is not None:  # the memo's shells ([booster] only)
+            written.append(write_csv_atomic(folder / "shell-frequencies.csv",
+                                            results.shell.to_rows()))
         if results.stability is not None:
             written.append(write_csv_atomic(folder / "unstable-frequencies.csv",
                                             results.stability.to_columns()))
@@ -324,16 +326,17 @@ def figure_names(results: Results) -> tuple[str, ...]:
         The analysis.
     """
     data = results.figures
-    if data is None:
+    if data is None and results.not_applicable is None:
         return ()
     names = ["danger-map"] if results.danger is not None else []  # the answer first
-    names += ["ince-strutt", "beam-modes", "shell-frequencies-cylinder1",
-              "shell-frequencies-cylinder2", "nodal-patterns"]
-    for name, part in (("pitch-band-chart", data.pitch_band_chart),
-                       ("beam-action-chart", data.beam_action_chart),
-                       ("campbell", data.campbell)):
-        if part is not None:
-            names.append(name)
+    if data is not None:  # the memo's figures ([booster] only)
+        names += ["ince-strutt", "beam-modes", "shell-frequencies-cylinder1",
+                  "shell-frequencies-cylinder2", "nodal-patterns"]
+        for name, part in (("pitch-band-chart", data.pitch_band_chart),
+                           ("beam-action-chart", data.beam_action_chart),
+                           ("campbell", data.campbell)):
+            if part is not None:
+                names.append(name)
     if results.vehicle_regions is not None:  # the vehicle's (Omega, gamma) chart
         names.append("vehicle-regions")
     if results.vehicle is not None:  # a case with [vehicle] only
@@ -369,7 +372,7 @@ def make_figures(results: Results, *, names=None) -> dict[str, Figure]:
     from .vehicle import vehicle_region_figures
 
     data = results.figures
-    if data is None:
+    if data is None and results.not_applicable is None:
         raise ValueError("results.figures: no figure data (the results were not made by analyze)")
     available = figure_names(results)
     wanted = available if names is None else tuple(names)

@@ -47,7 +47,9 @@ from .rows import (
     input_rows,
     mass_rows,
     memo_root_rows,
+    not_applicable_text,
     severity_caption,
+    slosh_rows,
     vehicle_region_rows,
     vehicle_region_table,
     vehicle_region_verdict,
@@ -59,6 +61,7 @@ __all__ = [
     "FIGURES",
     "VERIFICATION",
     "MAX_UNSTABLE_ROWS",
+    "MEMO_SECTIONS",
     "ROUND_OFF",
     "inline_svg",
     "render_report",
@@ -82,6 +85,10 @@ SECTIONS: tuple[tuple[str, str], ...] = (
     ("verification", "Verification summary"),
     ("warnings", "Warnings"),
 )
+#: The sections of the memo's method alone: "not applicable" with the reason for a
+#: ``[[vehicle.segments]]`` case.
+MEMO_SECTIONS = ("beam-modes", "beam-action", "shell-frequencies", "nodal-patterns",
+                 "unstable-frequencies", "campbell")
 
 #: Figure name (the file stem written by
 #: :func:`flexbooster.present.outputs.write_outputs`) -> section
@@ -501,6 +508,9 @@ def _vehicle(results: Results, svgs: Mapping[str, str] | None) -> str:
         rows.append((kk, idx.size, m.hz[i], m.omega[i], m.type[i], m.order[i], m.segment[i]))
     out.append(_table(("k", "modes", "lowest Hz", "rad/s", "type", "order", "segment"), rows,
                       (True, True, True, True, False, True, True)))
+    if getattr(sv, "slosh", ()):
+        out.append("<p>Slosh: each tank's first mode under the thrust's acceleration "
+                   "(Abramson, NASA SP-106):</p>" + _qvu(slosh_rows(sv.slosh)))
     for name, caption in VEHICLE_FIGURES.items():
         if svgs and name in svgs:
             svg = inline_svg(svgs[name], f"fig-{name}", caption)
@@ -599,12 +609,13 @@ def _first_screen(results: Results, svgs: Mapping[str, str] | None) -> str:
 
 def _summary(results: Results) -> str:
     ba, st, p = results.beam_action, results.stability, results.pitch
+    na = not_applicable_text(results)
     rows = [
-        ("first bending frequency omega_1", f"{_fmt(results.omega_1)} rad/s "
+        ("first bending frequency omega_1", na or f"{_fmt(results.omega_1)} rad/s "
          f"({_fmt(_hz(results.omega_1))} Hz)"),
         ("rigid-body pitch", p.verdict),
-        ("beam action", "not computed" if ba is None else ba.verdict),
-        ("unstable thrust frequencies", "not computed (see the warnings)" if st is None else
+        ("beam action", na or "not computed" if ba is None else ba.verdict),
+        ("unstable thrust frequencies", na or "not computed (see the warnings)" if st is None else
          f"{len(st)} roots, {int(np.sum(st.active))} active"),
         ("vehicle parametric instability regions", vehicle_region_verdict(results)[0]),
         ("warnings", str(len(results.warnings))),
@@ -662,6 +673,9 @@ def render_report(results: Results, svgs: Mapping[str, str] | None = None,
         "warnings": lambda: _warnings(results),
         "vehicle-modes": lambda: _vehicle(results, svgs),
     }
+    na = not_applicable_text(results)
+    if na is not None:  # a [[vehicle.segments]] case: the memo's sections say why not
+        body.update({sid: (lambda: f'<p class="note">{_e(na)}.</p>') for sid in MEMO_SECTIONS})
     sections = SECTIONS
     if results.vehicle is not None:  # a case with [vehicle]: before the verification summary
         sections = (*SECTIONS[:-2], ("vehicle-modes", "Vehicle modes (shell of revolution)"),

@@ -15,7 +15,11 @@ __all__ = [
     "Row",
     "input_rows",
     "mass_rows",
+    "mass_title",
+    "vehicle_mass_rows",
+    "slosh_rows",
     "frequency_rows",
+    "not_applicable_text",
     "REGION_HEADER",
     "MEMO_ROOT_HEADER",
     "region_modes_words",
@@ -59,6 +63,8 @@ def input_rows(results: Results) -> list[Row]:
         The analysis.
     """
     case = results.case
+    if case.booster is None:
+        return with_us_units(results, _segment_input_rows(results))
     b, t, n = case.booster, case.thrust, case.truncation
     rows: list[Row] = [
         ("cylinder 1 (aft) radius R1", b.cylinder1.radius, "m"),
@@ -85,6 +91,40 @@ def input_rows(results: Results) -> list[Row]:
         rows.append(("damping ratio: beam modes / rigid-body pitch",
                      f"{damping.beam_modal_ratio:g} / {damping.pitch_ratio:g}", "-"))
     return with_us_units(results, rows)
+
+
+def _segment_input_rows(results: Results) -> list[Row]:
+    """The input of a ``[[vehicle.segments]]`` case: the thrust and the vehicle's size (its
+    segments are listed with the vehicle modes)."""
+    case = results.case
+    t, table = case.thrust, case.vehicle
+    rows: list[Row] = [
+        ("vehicle: [[vehicle.segments]] from the aft edge", str(len(table.segments)), "-"),
+        ("vehicle length", sum(seg.length for seg in table.segments), "m"),
+        ("aft radius R_aft (the thrust acts around its edge)", case.aft_radius, "m"),
+        ("steady thrust F0", case.F0, "N"),
+        ("thrust per unit circumference T0 = F0 / (2 pi R_aft)", case.T0, "N/m"),
+        ("pulsation amplitude gamma, T = T0 (1 - gamma cos Omega t)", t.gamma, "-"),
+        ("gimbal gain K", t.K, "-"),
+        ("Omega grid: lowest", t.omega_min, "rad/s"),
+        ("Omega grid: highest", t.omega_max, "rad/s"),
+        ("Omega grid: points", t.n_omega, "-"),
+        ("damping ratio: rigid-body pitch", case.damping.pitch_ratio, "-"),
+    ]
+    return rows
+
+
+def not_applicable_text(results: Results) -> str | None:
+    """"not applicable: <reason>" for the memo's sections of a ``[[vehicle.segments]]`` case;
+    None where the memo's method applies (``[booster]``).
+
+    Parameters
+    ----------
+    results : Results
+        The analysis.
+    """
+    reason = results.not_applicable
+    return None if reason is None else f"not applicable: {reason}"
 
 
 def with_us_units(results: Results, rows: list[Row]) -> list[Row]:
@@ -123,6 +163,8 @@ def mass_rows(results: Results) -> list[Row]:
     results : Results
         The analysis.
     """
+    if results.vehicle_mass is not None:
+        return with_us_units(results, vehicle_mass_rows(results.vehicle_mass))
     m = results.mass
 
     def g(x: float) -> str:
@@ -142,6 +184,53 @@ def mass_rows(results: Results) -> list[Row]:
     return with_us_units(results, rows)
 
 
+def mass_title(results: Results) -> str:
+    """The title of the mass-properties table: the memo's (``[booster]``) or the vehicle's.
+
+    Parameters
+    ----------
+    results : Results
+        The analysis.
+    """
+    if results.vehicle_mass is not None:
+        return "Mass properties of the vehicle (each contribution; from the aft edge)"
+    return "Mass properties (memo 2.2, Fig. 1; I_cm per erratum E1)"
+
+
+def vehicle_mass_rows(mp) -> list[Row]:
+    """Total mass, centre of mass, pitch inertia and every contribution of the vehicle.
+
+    Parameters
+    ----------
+    mp : flexbooster.shell_of_revolution.MassProperties
+        The vehicle's mass properties.
+    """
+    rows: list[Row] = [
+        ("total mass", mp.mass_kg, "kg"),
+        ("centre of mass from the aft edge", mp.cm_m, "m"),
+        ("pitch moment of inertia about the centre of mass, I_cm", mp.I_cm_kg_m2, "kg m^2"),
+    ]
+    rows.append(("each contribution below: mass / its centre of mass / its own I_cm", "-",
+                 "kg / m / kg m^2"))
+    rows += [(c.kind if c.name == c.kind else f"{c.kind}: {c.name}",
+              f"{c.mass_kg:.6g} / {c.cm_m:.6g} / {c.I_cm_kg_m2:.6g}", "kg / m / kg m^2")
+             for c in mp.contributions]
+    return rows
+
+
+def slosh_rows(slosh) -> list[Row]:
+    """Each tank's first slosh frequency under the thrust's acceleration and its slosh mass
+    (Abramson, NASA SP-106, spring-mass analogy).
+
+    Parameters
+    ----------
+    slosh : sequence of SloshMode
+        ``VehicleSurvey.slosh``.
+    """
+    return [(f"tank {m.tank}: first slosh frequency / slosh mass",
+             f"{m.hz:.6g} / {m.mass_kg:.6g}", "Hz / kg") for m in slosh]
+
+
 def frequency_rows(results: Results) -> list[Row]:
     """omega_1, omega_psi and the dimensionless groups (memo 3.0, 4.2).
 
@@ -150,8 +239,20 @@ def frequency_rows(results: Results) -> list[Row]:
     results : Results
         The analysis.
     """
-    g = results.groups
     two_pi = 2.0 * math.pi
+    na = not_applicable_text(results)
+    if na is not None:
+        return [
+            ("first free-free bending frequency omega_1 (4.2-8b)", na, "-"),
+            ("rigid-body pitch frequency omega_psi = sqrt(F0 d K / I_cm), d = centre of mass "
+             "from the aft edge", results.omega_psi, "rad/s"),
+            ("  in Hz", results.omega_psi / two_pi, "Hz"),
+            ("Mathieu a over the Omega grid",
+             f"{float(results.a.min()):.6g} .. {float(results.a.max()):.6g}", "-"),
+            ("Mathieu q over the Omega grid",
+             f"{float(results.q.min()):.6g} .. {float(results.q.max()):.6g}", "-"),
+        ]
+    g = results.groups
     return [
         ("first free-free bending frequency omega_1 (4.2-8b)", results.omega_1, "rad/s"),
         ("  in Hz", results.omega_1 / two_pi, "Hz"),

@@ -22,6 +22,8 @@ from .rows import (
     frequency_rows,
     input_rows,
     mass_rows,
+    mass_title,
+    not_applicable_text,
     range_text,
     severity_caption,
     verdict_rows,
@@ -123,16 +125,22 @@ def print_summary(results: Results, console: Console | None = None) -> None:
     console.print(f"[bold]flexbooster[/bold] - {results.case.name}")
     print_first_screen(results, console)
     for title, rows in (("Input (SI)", input_rows(results)),
-                        ("Mass properties (memo 2.2, Fig. 1; I_cm per erratum E1)",
-                         mass_rows(results)),
+                        (mass_title(results), mass_rows(results)),
                         ("Frequencies and dimensionless groups (memo 3.0, 4.2)",
                          frequency_rows(results))):
-        console.print(_table(title, [(q, v if isinstance(v, str) else _g(v), u)
+        console.print(_table(title, [(q, escape(v) if isinstance(v, str) else _g(v), u)
                                      for q, v, u in rows]))
-    _print_beam_and_pitch(results, console)
-    _print_shell(results, console)
-    _print_beam_action(results, console)
-    print_stability(results, console)
+    na = not_applicable_text(results)
+    if na is not None:  # a [[vehicle.segments]] case: the memo's sections say why not
+        for title in ("Free-free beam modes", "Shell natural frequencies", "Beam action",
+                      "Unstable thrust frequencies (memo 7.3)"):
+            console.print(f"{title}: {escape(na)}.")
+        _print_pitch(results, console)
+    else:
+        _print_beam_and_pitch(results, console)
+        _print_shell(results, console)
+        _print_beam_action(results, console)
+        print_stability(results, console)
     if results.vehicle is not None:  # a case with [vehicle] only
         from .vehicle import print_vehicle_summary
 
@@ -163,6 +171,10 @@ def _print_beam_and_pitch(results: Results, console: Console) -> None:
     console.print(
         _table(f"Free-free beam modes (appendix C; first {n_show} of {beam.lambda_n.size})", rows)
     )
+    _print_pitch(results, console)
+
+
+def _print_pitch(results: Results, console: Console) -> None:
     p = results.pitch
     rows = [
         ("verdict", p.verdict, ""),

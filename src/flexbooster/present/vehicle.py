@@ -26,6 +26,8 @@ from .rows import (
     REGION_HEADER,
     memo_root_rows,
     region_modes_words,
+    slosh_rows,
+    vehicle_mass_rows,
     vehicle_region_rows,
     vehicle_region_table,
 )
@@ -43,6 +45,7 @@ __all__ = [
     "vehicle_region_figures",
     "print_vehicle_modes",
     "print_vehicle_summary",
+    "print_vehicle_mass",
     "vehicle_figures",
     "write_vehicle_files",
 ]
@@ -98,6 +101,40 @@ def print_vehicle_modes(survey: VehicleSurvey, console: Console | None = None) -
         console.print(table)
     if not len(m):
         console.print("No modes in the requested range.")
+    print_vehicle_mass(survey, console)
+
+
+def _rows_table(title: str, rows) -> Table:
+    table = Table(title=title, title_justify="left", header_style="bold")
+    for col in ("quantity", "value", "unit"):
+        table.add_column(col, justify="right" if col == "value" else "left")
+    for quantity, value, unit in rows:
+        table.add_row(escape(quantity), escape(value if isinstance(value, str) else _g(value)),
+                      unit)
+    return table
+
+
+def print_vehicle_mass(survey: VehicleSurvey, console: Console, *, mass: bool = True) -> None:
+    """Print the vehicle's mass properties (each contribution) and each tank's first slosh
+    mode, where the survey has them.
+
+    Parameters
+    ----------
+    survey : VehicleSurvey
+        Its ``mass_properties`` and ``slosh`` are printed.
+    console : rich.console.Console
+        The output.
+    mass : bool
+        Also the mass properties (``run`` prints them in its own table).
+    """
+    mp = getattr(survey, "mass_properties", None)
+    if mass and mp is not None:
+        console.print(_rows_table("Mass properties of the vehicle (from the aft edge)",
+                                  vehicle_mass_rows(mp)))
+    slosh = getattr(survey, "slosh", ())
+    if slosh:
+        console.print(_rows_table("Slosh: each tank's first mode under the thrust's "
+                                  "acceleration (Abramson, NASA SP-106)", slosh_rows(slosh)))
 
 
 def print_vehicle_summary(survey: VehicleSurvey, console: Console) -> None:
@@ -122,6 +159,7 @@ def print_vehicle_summary(survey: VehicleSurvey, console: Console) -> None:
         table.add_row(str(kk), str(rows.size), _g(m.hz[i]), _g(m.omega[i]), str(m.type[i]),
                       str(m.order[i]), str(m.segment[i]))
     console.print(table)
+    print_vehicle_mass(survey, console, mass=False)
 
 
 def vehicle_figure_names(survey: VehicleSurvey) -> tuple[str, ...]:

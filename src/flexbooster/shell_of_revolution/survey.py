@@ -267,7 +267,8 @@ def has_flat_plate(vehicle: Vehicle) -> bool:
     return any(isinstance(seg, Cone) and seg.length == 0.0 for seg in vehicle.segments)
 
 
-def vehicle_survey(vehicle: Vehicle, *, k_max: int, F0: float, f_max: float | None = None,
+def vehicle_survey(vehicle: Vehicle, *, k_max: int, F0: float | None,
+                   f_max: float | None = None,
                    prestress: bool = True, views: bool = True,
                    source: str = "vehicle") -> VehicleSurvey:
     """Vehicle modes for k = 0..k_max, prestressed by the thrust by default; ValueError for invalid
@@ -279,9 +280,9 @@ def vehicle_survey(vehicle: Vehicle, *, k_max: int, F0: float, f_max: float | No
         The vehicle.
     k_max : int
         Highest circumferential wave number, 0..200.
-    F0 : float
+    F0 : float or None
         Steady thrust (N), > 0, with the load path of the vehicle's ends
-        (:func:`.prestress.load_path`).
+        (:func:`.prestress.load_path`); None: no thrust, the unloaded modes.
     f_max : float, optional
         Keep the modes up to this frequency (Hz), > 0; default the band up to 5 times the
         lowest elastic frequency.
@@ -292,13 +293,15 @@ def vehicle_survey(vehicle: Vehicle, *, k_max: int, F0: float, f_max: float | No
     source : str
         ``"vehicle"`` or ``"memo"``, recorded in the result.
     """
-    F0 = positive("F0", F0)
+    F0 = None if F0 is None else positive("F0", F0)
     if f_max is not None:
         f_max = positive("f_max", f_max)
     if source not in ("vehicle", "memo"):
         raise ValueError(f"source = {source!r}: must be 'vehicle' or 'memo'")
     load = 0.0
-    if not prestress:
+    if F0 is None:
+        note = "unloaded: the case has no thrust"
+    elif not prestress:
         note = "unloaded: no thrust prestress (--no-prestress)"
     elif has_flat_plate(vehicle):
         note = ("unloaded: the vehicle has a flat plate, which cannot carry the thrust as a "
@@ -312,4 +315,5 @@ def vehicle_survey(vehicle: Vehicle, *, k_max: int, F0: float, f_max: float | No
                          f_max=f_max, prestressed=load > 0.0, prestress_F0=load, note=note,
                          views=mode_shape_views(modes) if views and len(modes) else None,
                          mass_properties=props,
-                         slosh=slosh_modes(vehicle, acceleration=F0 / props.mass_kg))
+                         slosh=() if F0 is None  # no thrust: no settled liquid
+                         else slosh_modes(vehicle, acceleration=F0 / props.mass_kg))

@@ -88,6 +88,9 @@ def point_scalars(data: Mapping[str, Any]) -> dict[str, float]:
         ``flexbooster.analyze(case).to_dict()``.
     """
     freq, pitch = data["frequencies"], data["pitch"]
+    if isinstance(freq["omega_1"], Mapping):  # {"not_applicable": reason}: a segments case
+        raise ValueError(f"omega_1: the sweep's variables are the memo's, "
+                         f"{freq['omega_1']['not_applicable']}")
     # instability from the bands (exact edges), never from grid samples
     out = {
         "omega_1": float(freq["omega_1"]),
