@@ -27,6 +27,9 @@ def _case(**vehicle):
     data = tomllib.loads(default_case_text())
     if vehicle:
         data["vehicle"] = dict(vehicle)
+        if "segments" in vehicle:  # one vehicle per case: the segments, the booster's material
+            booster = data.pop("booster")
+            data["vehicle"].update({k: booster[k] for k in ("E", "nu", "rho")})
     return load_case(data)
 
 
