@@ -193,12 +193,12 @@ def test_help_has_examples_and_exit_codes(capsys, argv):
 
 
 def test_progress_reports_every_stage_in_order(small_case_file):
-    from flexbooster.analysis import STAGES, VEHICLE_REGIONS_STAGE, analyze
+    from flexbooster.analysis import FORCED_STAGE, STAGES, VEHICLE_REGIONS_STAGE, analyze
     from flexbooster.case import load_case
 
     seen = []
     analyze(load_case(small_case_file), progress=seen.append)
-    assert seen == [*STAGES, VEHICLE_REGIONS_STAGE]  # the vehicle regions last (issue 15)
+    assert seen == [*STAGES, VEHICLE_REGIONS_STAGE, FORCED_STAGE]  # the vehicle stages last
     seen.clear()
     analyze(load_case(small_case_file), beam_action=False, progress=seen.append,
             vehicle=False)

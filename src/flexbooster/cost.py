@@ -393,6 +393,10 @@ _SEARCH_FIXED, _SEARCH_PER_N4, _SEARCH_LOG_RANGE = 0.1, 6e-5, float(np.log(400.0
 # gamma of each (measured 2.4x the README example's k = 2 and 3.8x the free-free default
 # vehicle's k = 1 estimate); with the chart's curves: the search and 3 more levels.
 _DAMPED_UPFRONT_FACTOR, _BOUNDARY_SEARCH_FACTOR = 3.0, 4.0
+# The forced response (k = 0 and 1, with the half-basis convergence run of each forced
+# harmonic): the default case's memo vehicle, 400 Omega points, 0.87 s axial only, 1.83 s with
+# a misalignment (the lateral harmonic forced too); the README's [vehicle] 0.15 s / 0.23 s.
+_C_FORCED = 0.9
 
 
 def search_seconds(n_modes: int, omega_min: float, omega_max: float, *, damped: bool,
@@ -455,7 +459,7 @@ def region_modes(case: Any, vehicle: Any = None, *, k_max: int = 10) -> tuple[in
 
 def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
                           regions: bool = True, figures: bool = True,
-                          certified: bool = True) -> CostEstimate:
+                          certified: bool = True, forced: bool = False) -> CostEstimate:
     """The predicted time of the vehicle stages of :func:`flexbooster.analysis.analyze`: "vehicle
     modes" (``[vehicle]`` only) and "vehicle regions" (:func:`search_seconds` per harmonic not
     certified), with their fields; no solver is run.
@@ -473,6 +477,9 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
     certified : bool
         Assume that damping certifies every harmonic stable (the lower bound); False: every
         harmonic searched (the upper bound).
+    forced : bool
+        The vehicle's forced response is computed ("vehicle forced response": the FE models of
+        k = 0 and 1, twice for each harmonic forced; dense, like the DOFs cubed).
     """
     from .model import vehicle_from_case
     from .vehicle_case import VehicleTable
@@ -503,6 +510,10 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
         drivers["vehicle regions"] = ("vehicle.n_modes", "vehicle.damping_ratio",
                                       "vehicle.k_max", "thrust.omega_min", "thrust.omega_max",
                                       "vehicle.segments")
+    if forced:
+        parts["vehicle forced response"] = _C_FORCED * dofs * (
+            1.0 + (getattr(t, "misalignment", 0.0) != 0.0))
+        drivers["vehicle forced response"] = ("vehicle.segments", "thrust.misalignment")
     return CostEstimate(seconds=float(sum(parts.values())), parts=parts, drivers=drivers)
 
 
