@@ -566,7 +566,7 @@ def _check_forced_inputs(case: Case) -> None:
         case.vehicle.segments)
     taken = {"aft-edge", "forward-edge"} | {f"junction-{i}" for i in range(1, n_seg)}
     for i, st in enumerate(case.output.stations):
-        if not st.station <= length:
+        if not 0.0 <= st.station <= length:
             raise CaseError(f"output.stations[{i}].station", st.station,
                             f"must lie on the vehicle: 0 <= station <= {length!r} m (its "
                             "length)")

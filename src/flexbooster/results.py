@@ -313,12 +313,12 @@ class MemoRootsInRegions:
 
 
 
-#: Quantities of the forced response in the outputs: (name in ForcedResponse, column, factor).
+#: Quantities of the forced response in the outputs: (name in ForcedResponse, column, divisor).
 _FORCED_COLUMNS = (("displacement", "displacement_m", 1.0),
-                   ("acceleration", "acceleration_g", 1.0 / STANDARD_GRAVITY),
+                   ("acceleration", "acceleration_g", STANDARD_GRAVITY),
                    ("axial_force", "axial_force_N", 1.0),
-                   ("shear_force", "shear_force_N", 1.0),
-                   ("bending_moment", "bending_moment_Nm", 1.0))
+                   ("bending_moment", "bending_moment_Nm", 1.0),
+                   ("shear_force", "shear_force_N", 1.0))
 
 
 @dataclass(frozen=True)
@@ -442,7 +442,7 @@ class ForcedLoads:
                 cols["station_m"] += [float(s.x)] * r.omega.size
                 cols["k"] += [int(k)] * r.omega.size
                 for q, c, f in _FORCED_COLUMNS:
-                    cols[c] += (np.abs(getattr(r, q)[ik, js]) * f).tolist()
+                    cols[c] += (np.abs(getattr(r, q)[ik, js]) / f).tolist()
         return cols
 
     def to_dict(self) -> dict[str, Any]:
@@ -460,7 +460,7 @@ class ForcedLoads:
                         p = r.peak(k, s.name, q)
                     except KeyError:  # not a quantity of this harmonic
                         continue
-                    row[c] = p.value * f
+                    row[c] = p.value / f
                     row[f"Omega_{q}"] = p.omega
                     row[f"Omega_{q}_hz"] = p.omega / (2.0 * np.pi)
                 if scale is not None:
