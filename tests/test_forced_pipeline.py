@@ -323,6 +323,7 @@ def test_no_vehicle_skips_the_stage(small_case_file):
     assert res.to_dict()["forced_response"] is None
 
 
+@pytest.mark.slow
 def test_summary_report_and_figures_read_the_stored_data(case_dict, tmp_path):
     """The summary and report sections show the stored peaks; the figures draw the stored
     curves (compute -> data -> plot): the acceleration lines equal |a| / g at the stations, the
