@@ -103,7 +103,7 @@ def forced_envelope_chart(loads: ForcedLoads, ax: Axes | None = None) -> Figure:
                   label=f"{quantity.replace('_', ' ')} at {env.worst_omega * _TO_HZ:.4g} Hz")
         axis.plot(env.x, env.peak, ":", color=colour, label="peak over the range")
         axis.set_ylabel(label, color=colour)
-        axis.legend(loc="upper right" if k == 0 else "upper center", fontsize="x-small")
+        axis.legend(loc="upper left" if k == 0 else "lower center", fontsize="x-small")
     for s in r.stations:
         ax.axvline(s.x, color="0.8", lw=0.6)
     ax.set_xlabel("station: distance from the aft edge (m)")
