@@ -387,3 +387,18 @@ def test_example_crew_module_acceleration_per_percent(tmp_path):
     js = [s.name for s in direct.stations].index("crew-module")
     assert [float(r["acceleration_g"]) for r in rows] == (
         np.abs(direct.acceleration[0, js]) / STANDARD_GRAVITY).tolist()
+
+
+def test_no_oscillation_is_zero_and_said(tmp_path):
+    """gamma = 0: the response is zero (source: linearity, Delta F = 0), no harmonic is ranked,
+    "per 1 %" is not defined, and the summary says so instead of a table of zeros."""
+    from flexbooster.present.forced import FORCED_ZERO, print_forced_response
+
+    case, _ = _load(tmp_path, _case_text("misalignment = 0.01").replace(
+        "\ngamma = 0.05", "\ngamma = 0.0", 1))
+    loads = analyze_forced_response(case)
+    assert not np.any(loads.response.acceleration) and loads.ranked_peaks() == ()
+    assert loads.per_percent is None and loads.convergence == (None, None)
+    console = Console(record=True, width=200)
+    print_forced_response(types.SimpleNamespace(forced_response=loads), console)
+    assert FORCED_ZERO in console.export_text().replace("\n", " ")

@@ -18,7 +18,7 @@ from ..results import Results
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
-__all__ = ["FORCED_CSV", "FORCED_FIGURES", "FORCED_HEADER", "forced_basis_text",
+__all__ = ["FORCED_CSV", "FORCED_FIGURES", "FORCED_HEADER", "FORCED_ZERO", "forced_basis_text",
            "forced_rows", "forced_worst_lines", "forced_figure_names", "forced_figures",
            "print_forced_response"]
 
@@ -31,6 +31,9 @@ FORCED_FIGURES = {
     "forced-envelopes": "Axial force and bending moment amplitudes along the vehicle at the "
                         "Omega where each is largest, and their peak over the range",
 }
+#: Said instead of the table when no harmonic is forced.
+FORCED_ZERO = ("No thrust oscillation (gamma = 0, or every spectrum line of amplitude 0): the "
+               "forced response is zero.")
 #: Columns of :func:`forced_rows`.
 FORCED_HEADER = ("station", "x (m)", "k", "peak acceleration (g)", "per 1 % of F0 (g)",
                  "at (Hz)", "peak axial force (N)", "at (Hz)", "peak bending moment (N m)",
@@ -146,9 +149,10 @@ def print_forced_response(results: Results, console: Console) -> None:
                   f"{FORCED_CSV})", title_justify="left", header_style="bold")
     for col in FORCED_HEADER:
         table.add_column(col, justify="left" if col == "station" else "right")
-    for row in forced_rows(results):
+    rows = forced_rows(results)
+    for row in rows:
         table.add_row(*(escape(_cell(v)) for v in row))
-    console.print(table)
+    console.print(table if rows else FORCED_ZERO)
     console.print(escape(f"Basis: {forced_basis_text(results)}"), highlight=False)
     for line in forced_worst_lines(results):
         console.print(escape(line), highlight=False)

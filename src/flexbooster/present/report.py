@@ -35,6 +35,7 @@ from .forced import (
     FORCED_CSV,
     FORCED_FIGURES,
     FORCED_HEADER,
+    FORCED_ZERO,
     forced_basis_text,
     forced_rows,
     forced_worst_lines,
@@ -576,7 +577,8 @@ def _forced_response(results: Results, svgs: Mapping[str, str] | None) -> str:
            f"{_e(_fmt(r.gimbal_gain))}; modal damping {_e(_fmt(r.damping_ratio))}. Peaks are "
            f"amplitudes over the range; every curve is in {FORCED_CSV}.</p>",
            _table(FORCED_HEADER, forced_rows(results),
-                  (False, True, True, True, True, True, True, True, True, True)),
+                  (False, True, True, True, True, True, True, True, True, True))
+           if forced_rows(results) else f"<p>{_e(FORCED_ZERO)}</p>",
            f"<p>Basis: {_e(forced_basis_text(results))}.</p>"]
     lines = forced_worst_lines(results)
     if lines:
