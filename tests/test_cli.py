@@ -36,8 +36,9 @@ def test_run_default_writes_results(tmp_path, capsys):
     report = (tmp_path / "report.html").read_text()
     assert {"pitch-band-chart.svg", "beam-action-chart.svg"} <= names  # issue 12 charts
     assert {"vehicle-regions.csv", "vehicle-regions.svg"} <= names  # issue 15
-    # 9 figures + the danger map (issue 17)
-    assert report.count("<svg") == 10 and 'id="unstable-frequencies"' in report
+    assert {"forced-response.csv", "forced-acceleration.svg", "forced-envelopes.svg"} <= names
+    # 9 figures + the danger map (issue 17) + the forced response's two (issue 34)
+    assert report.count("<svg") == 12 and 'id="unstable-frequencies"' in report
     assert not [n for n in names if n.endswith(".part")]  # no temporary leftovers
 
 
