@@ -9,6 +9,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 import numpy as np
+from rich import box
 from rich.console import Console
 from rich.markup import escape
 from rich.table import Table
@@ -40,6 +41,9 @@ FORCED_HEADER = ("station", "x (m)", "k", "peak acceleration (g)", "per 1 % of F
                  "at (Hz)")
 
 _TO_HZ = 1.0 / (2.0 * np.pi)
+#: The terminal's columns (80 wide): the report's, with one load column per harmonic.
+_TERMINAL_HEADER = ("station", "x (m)", "k", "peak (g)", "per 1 % (g)", "at (Hz)", "peak load",
+                    "at (Hz)")
 
 
 def forced_basis_text(results: Results) -> str:
@@ -145,13 +149,17 @@ def print_forced_response(results: Results, console: Console) -> None:
     load = ("the spectrum's lines" if r.combination == "spectrum" else
             f"gamma = {r.amplitude[0]:g} over the Omega range")
     table = Table(title=f"Forced response to the thrust oscillation ({load}, zeta = "
-                  f"{r.damping_ratio:g}, misalignment {r.misalignment:g} rad; curves in "
-                  f"{FORCED_CSV})", title_justify="left", header_style="bold")
-    for col in FORCED_HEADER:
-        table.add_column(col, justify="left" if col == "station" else "right")
+                  f"{r.damping_ratio:g}, misalignment {r.misalignment:g} rad; load: axial "
+                  f"force in N for k = 0, bending moment in N m for k = 1; curves in "
+                  f"{FORCED_CSV})", title_justify="left", header_style="bold",
+                  box=box.SIMPLE_HEAD, pad_edge=False, collapse_padding=True)
+    for col in _TERMINAL_HEADER:  # 80 columns: folded, never cut
+        table.add_column(col, justify="left" if col == "station" else "right",
+                         overflow="fold", no_wrap=col != "station")
     rows = forced_rows(results)
-    for row in rows:
-        table.add_row(*(escape(_cell(v)) for v in row))
+    for row in rows:  # the load of the harmonic: axial force (k = 0) or bending moment (k = 1)
+        load_cells = row[6:8] if row[2] == 0 else row[8:10]
+        table.add_row(*(escape(_cell(v)) for v in (*row[:6], *load_cells)))
     console.print(table if rows else FORCED_ZERO)
     console.print(escape(f"Basis: {forced_basis_text(results)}"), highlight=False)
     for line in forced_worst_lines(results):
