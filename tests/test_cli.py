@@ -36,8 +36,9 @@ def test_run_default_writes_results(tmp_path, capsys):
     report = (tmp_path / "report.html").read_text()
     assert {"pitch-band-chart.svg", "beam-action-chart.svg"} <= names  # issue 12 charts
     assert {"vehicle-regions.csv", "vehicle-regions.svg"} <= names  # issue 15
-    # 9 figures + the danger map (issue 17)
-    assert report.count("<svg") == 10 and 'id="unstable-frequencies"' in report
+    assert {"forced-response.csv", "forced-acceleration.svg", "forced-envelopes.svg"} <= names
+    # 9 figures + the danger map (issue 17) + the forced response's two (issue 34)
+    assert report.count("<svg") == 12 and 'id="unstable-frequencies"' in report
     assert not [n for n in names if n.endswith(".part")]  # no temporary leftovers
 
 
@@ -193,12 +194,12 @@ def test_help_has_examples_and_exit_codes(capsys, argv):
 
 
 def test_progress_reports_every_stage_in_order(small_case_file):
-    from flexbooster.analysis import STAGES, VEHICLE_REGIONS_STAGE, analyze
+    from flexbooster.analysis import FORCED_STAGE, STAGES, VEHICLE_REGIONS_STAGE, analyze
     from flexbooster.case import load_case
 
     seen = []
     analyze(load_case(small_case_file), progress=seen.append)
-    assert seen == [*STAGES, VEHICLE_REGIONS_STAGE]  # the vehicle regions last (issue 15)
+    assert seen == [*STAGES, VEHICLE_REGIONS_STAGE, FORCED_STAGE]  # the vehicle stages last
     seen.clear()
     analyze(load_case(small_case_file), beam_action=False, progress=seen.append,
             vehicle=False)

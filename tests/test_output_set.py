@@ -16,7 +16,7 @@ import pytest
 
 import flexbooster
 from conftest import dump_toml
-from flexbooster.analysis import STAGES, VEHICLE_REGIONS_STAGE
+from flexbooster.analysis import FORCED_STAGE, STAGES, VEHICLE_REGIONS_STAGE
 from flexbooster.cli import main
 from flexbooster.present.outputs import (
     MANIFEST,
@@ -115,9 +115,9 @@ def _no_leftovers(folder: Path) -> None:
     assert not [n for n in names if n.endswith(".part") or n.startswith(STAGING_PREFIX)], names
 
 
-#: The ten moments of a run at which a signal is sent: the start of every stage of analyze
-#: (analysis.STAGES, then the vehicle regions) and of write_outputs (OUTPUT_STAGES).
-MOMENTS = (*STAGES, VEHICLE_REGIONS_STAGE, *OUTPUT_STAGES)
+#: The moments of a run at which a signal is sent: the start of every stage of analyze
+#: (analysis.STAGES, then the vehicle regions and forced response) and of write_outputs.
+MOMENTS = (*STAGES, VEHICLE_REGIONS_STAGE, FORCED_STAGE, *OUTPUT_STAGES)
 
 
 @pytest.mark.slow

@@ -170,7 +170,7 @@ def test_figures_drawn_in_processes_are_the_figures_drawn_here(results):
     from flexbooster.present.outputs import figure_names, render_figures
 
     here = render_figures(results, processes=1)
-    assert list(here) == list(figure_names(results)) and len(here) == 10
+    assert list(here) == list(figure_names(results)) and len(here) == 12
     assert render_figures(results, processes=2) == here
 
 

@@ -96,14 +96,16 @@ def test_results_equal_the_baseline_before_the_redesign(name):
         old.pop(key)
     diffs = list(_diff(old, new))
     assert not diffs, f"{len(diffs)} values changed, e.g. {diffs[:3]}"
-    # added since: the figure data, the vehicle's parametric regions, the ranked danger bands
+    # added since: the figure data, the vehicle's parametric regions, the ranked danger bands,
+    # the vehicle's forced response (issue 34)
     assert set(new) - set(old) - {"flexbooster_version", "units"} == {"figures",
                                                                        "vehicle_regions",
-                                                                       "danger"}
+                                                                       "danger",
+                                                                       "forced_response"}
 
 
 def _solver_modules():
-    for package in ("flexbooster.memo", "flexbooster.floquet"):
+    for package in ("flexbooster.memo", "flexbooster.floquet", "flexbooster.dynamics"):
         pkg = importlib.import_module(package)
         for info in pkgutil.walk_packages(pkg.__path__, prefix=f"{package}."):
             yield importlib.import_module(info.name)
@@ -132,6 +134,7 @@ def test_every_figure_is_drawn_from_the_results_alone(monkeypatch):
     assert set(svgs) == {"ince-strutt", "beam-modes", "shell-frequencies-cylinder1",
                          "shell-frequencies-cylinder2", "nodal-patterns",
                          "pitch-band-chart", "beam-action-chart", "campbell",
-                         "vehicle-regions", "danger-map"}
+                         "vehicle-regions", "danger-map", "forced-acceleration",
+                         "forced-envelopes"}
     html = render_report(results, svgs)
     assert "<svg" in html

@@ -19,9 +19,16 @@ import numpy as np
 from . import cost, floquet
 from ._threads import blas_threads
 from .case import Case
-from .checks import count, finite, positive
+from .checks import FieldValueError, count, finite, positive
 from .danger import danger_summary
-from .dynamics import VehicleRegions, region_curves, vehicle_regions
+from .dynamics import (
+    ThrustSpectrum,
+    UndampedResonanceError,
+    VehicleRegions,
+    forced_response,
+    region_curves,
+    vehicle_regions,
+)
 from .errors import AnalysisWarning
 from .memo import charts
 from .memo.beam import beam_modes
@@ -33,7 +40,7 @@ from .memo.severity import severity_analysis
 from .memo.shell import natural_frequencies
 from .memo.stability import ShellModes, StabilityTable, TooManyRootsError, unstable_frequencies
 from .model import MEMO_NOT_APPLICABLE, model_from_case, vehicle_from_case
-from .results import SCHEMA_VERSION, UNITS, MemoRootsInRegions, Results
+from .results import SCHEMA_VERSION, UNITS, ForcedLoads, MemoRootsInRegions, Results
 from .shell_of_revolution import BucklingError, mass_properties
 from .shell_of_revolution.survey import VehicleSurvey, has_flat_plate, vehicle_survey
 
@@ -42,6 +49,10 @@ __all__ = [
     "analyze_vehicle",
     "vehicle_warnings",
     "analyze_vehicle_regions",
+    "analyze_forced_response",
+    "forced_settings",
+    "forced_stations",
+    "modal_damping_ratio",
     "memo_roots_in_regions",
     "simulate_case",
     "SCHEMA_VERSION",
@@ -49,6 +60,7 @@ __all__ = [
     "STAGES",
     "VEHICLE_STAGE",
     "VEHICLE_REGIONS_STAGE",
+    "FORCED_STAGE",
     "VEHICLE_REGIONS_K_MIN",
     "THIN_SHELL_LIMIT",
     "MATHIEU_A_RANGE",
@@ -69,6 +81,9 @@ VEHICLE_STAGE = "vehicle modes"
 #: The stage announced last, unless ``analyze(..., vehicle=False)``: the vehicle's parametric
 #: instability regions (every case: ``[vehicle]`` or the memo's two cylinders).
 VEHICLE_REGIONS_STAGE = "vehicle instability regions"
+#: The stage announced after :data:`VEHICLE_REGIONS_STAGE`, unless ``analyze(..., vehicle=False)``:
+#: the vehicle's forced response to the thrust oscillation (k = 0 and 1).
+FORCED_STAGE = "vehicle forced response"
 #: Harmonics k of the vehicle regions: k = VEHICLE_REGIONS_K_MIN..vehicle.k_max (default 20,
 #: also for the memo vehicle of a case without ``[vehicle]``); k = 1 is the bending harmonic
 #: with the rigid pitch, the gimbal control and the follower thrust
@@ -203,6 +218,11 @@ def analyze(
             extra += skipped
             if regions is not None and table is not None:
                 matches = memo_roots_in_regions(table, regions)
+        forced = None
+        if vehicle:
+            step(FORCED_STAGE)
+            forced, skipped = _forced_stage(case)
+            extra += skipped
     return Results(
         case=case,
         mass=model.mass,
@@ -222,6 +242,7 @@ def analyze(
         memo_roots_in_regions=matches,
         danger=_danger(model, pitch, action, regions, severity),
         severity=severity,
+        forced_response=forced,
     )
 
 
@@ -236,7 +257,7 @@ def _analyze_segments(case: Case, step: Callable[[str], None], *, figures: bool,
         structure = vehicle_from_case(case)
         mass = mass_properties(structure)
         est = cost.check_case_cost(None, case.max_seconds, vehicle=cost.estimate_vehicle_cost(
-            case, regions=regions, figures=figures))
+            case, regions=regions, figures=figures, forced=regions))
         if on_estimate is not None:
             on_estimate(est, case.max_seconds)
         step(STAGES[1])
@@ -252,6 +273,11 @@ def _analyze_segments(case: Case, step: Callable[[str], None], *, figures: bool,
             step(VEHICLE_REGIONS_STAGE)
             found, skipped = _vehicle_regions_stage(case, boundaries=figures)
             extra += skipped
+        forced = None
+        if regions:
+            step(FORCED_STAGE)
+            forced, skipped = _forced_stage(case)
+            extra += skipped
     danger = danger_summary(
         operating_range=(t.omega_min, t.omega_max),
         bands={"pitch": pitch.bands, **({} if found is None else {"vehicle": found.regions})},
@@ -263,7 +289,7 @@ def _analyze_segments(case: Case, step: Callable[[str], None], *, figures: bool,
     return Results(case=case, mass=None, omega_1=None, omega_psi=omega_psi, groups=None,
                    beam=None, pitch=pitch, shell=None, warnings=tuple(extra), vehicle=survey,
                    vehicle_regions=found, danger=danger, vehicle_mass=mass,
-                   not_applicable=MEMO_NOT_APPLICABLE)
+                   not_applicable=MEMO_NOT_APPLICABLE, forced_response=forced)
 
 
 def _danger(model: BoosterModel, pitch, action, regions, severity):
@@ -302,7 +328,7 @@ def _feasibility(case: Case, model: BoosterModel, *, with_regions: bool = True,
     runs; the estimate, and the warnings of the budget and of the load."""
     cost.check_physical(model)
     # the vehicle stages too: modes survey, regions (lower bound with damping)
-    veh = dict(regions=with_regions, figures=stages.get("figures", True))
+    veh = dict(regions=with_regions, forced=with_regions, figures=stages.get("figures", True))
     est = cost.check_case_cost(model, case.max_seconds,
                                vehicle=cost.estimate_vehicle_cost(case, **veh), **stages)
     out = cost.physical_warnings(model) + cost.capped_steps_warning(est, model)
@@ -628,3 +654,148 @@ def memo_roots_in_regions(table: StabilityTable, regions: VehicleRegions, *,
         without_root=np.flatnonzero(n_in == 0).astype(int),
         without_active_root=np.flatnonzero(~has_active).astype(int),
         n_regions=len(regs), rtol=rtol)
+
+
+def modal_damping_ratio(case: Case) -> float:
+    """The modal damping ratio zeta of the vehicle's elastic modes in the forced response:
+    ``vehicle.damping_ratio`` (default :data:`flexbooster.vehicle_case.REGION_DAMPING_RATIO`).
+
+    Parameters
+    ----------
+    case : Case
+        The validated case.
+    """
+    from .vehicle_case import VehicleTable
+
+    return (case.vehicle if case.vehicle is not None else VehicleTable()).damping_ratio
+
+
+def forced_stations(case: Case, vehicle=None) -> tuple[tuple[tuple[str, float], ...], tuple]:
+    """The caller's stations of the forced response: every lumped mass of the vehicle (its name,
+    else "mass-i") then every ``[[output.stations]]``, as (name, station in m); and the names of
+    the masses' stations. The edges and junctions are added by
+    :func:`flexbooster.dynamics.forced_response`.
+
+    Parameters
+    ----------
+    case : Case
+        The validated case.
+    vehicle : Vehicle, optional
+        Its vehicle (:func:`flexbooster.model.vehicle_from_case`), when already built.
+    """
+    vehicle = vehicle_from_case(case) if vehicle is None else vehicle
+    users = [(st.name, st.station) for st in case.output.stations]
+    taken = {name for name, _ in users}
+    masses = []
+    for i, m in enumerate(getattr(vehicle, "masses", ())):
+        name = m.name or f"mass-{i + 1}"
+        if name in taken:
+            name = f"{name} (mass {i + 1})"
+        taken.add(name)
+        masses.append((name, float(m.station)))
+    return tuple(masses + users), tuple(name for name, _ in masses)
+
+
+def forced_settings(case: Case) -> dict:
+    """The keyword arguments of :func:`flexbooster.dynamics.forced_response` for a case, but the
+    vehicle and its stations: F0; gamma over the case's Omega grid or the ``[[thrust.spectrum]]``
+    lines; the modal damping (:func:`modal_damping_ratio`), ``damping.pitch_ratio``,
+    ``thrust.misalignment`` and the gimbal gain ``thrust.K``; k = 0 and 1.
+
+    Parameters
+    ----------
+    case : Case
+        The validated case (SI).
+    """
+    t = case.thrust
+    if t.spectrum is not None:
+        load = dict(amplitude=ThrustSpectrum(
+            frequency=np.array([line.frequency for line in t.spectrum]),
+            amplitude=np.array([line.amplitude for line in t.spectrum])), Omega=None)
+    else:
+        load = dict(amplitude=t.gamma, Omega=case.omega_grid())
+    return dict(F0=case.F0, damping_ratio=modal_damping_ratio(case),
+                misalignment=t.misalignment, gimbal_gain=t.K,
+                pitch_damping_ratio=case.damping.pitch_ratio, harmonics=(0, 1), **load)
+
+
+def _convergence(vehicle, settings: dict, stations, found) -> tuple:
+    """Per harmonic: (elastic modes of half the basis, the largest change of a station peak with
+    that basis relative to the largest peak of its quantity), None where it is not forced."""
+    out = []
+    for model in found.models:
+        k = model.k
+        n = model.omega_modes.size - model.n_rigid
+        share = np.cos(settings["misalignment"]) if k == 0 else np.sin(settings["misalignment"])
+        if share == 0.0 or not np.any(found.amplitude):
+            out.append(None)
+            continue
+        half = max(1, n // 2)
+        small = forced_response(vehicle, **dict(settings, harmonics=(k,), n_modes=half),
+                                stations=stations)
+        change = 0.0
+        for q in {p.quantity for p in small.peaks}:
+            a = np.array([found.peak(k, s.name, q).value for s in found.stations])
+            b = np.array([small.peak(k, s.name, q).value for s in found.stations])
+            if a.max() > 0.0:
+                change = max(change, float(np.max(np.abs(a - b)) / a.max()))
+        out.append((half, change))
+    return tuple(out)
+
+
+def analyze_forced_response(case: Case) -> ForcedLoads:
+    """The forced response of the case's vehicle to the thrust oscillation (k = 0 and 1) at its
+    stations (the edges, junctions, lumped masses and ``[[output.stations]]``), all the modes
+    below 4 Omega_max (at least 4) with the static correction of the others, and its convergence
+    against half the basis; CaseError on ``thrust.F0`` (the thrust buckles the vehicle),
+    ``vehicle.damping_ratio`` or ``damping.pitch_ratio`` (an undamped resonance in the range)
+    or ``vehicle.segments`` (a flat plate). Theory: docs/theory/forced-response.md.
+
+    Parameters
+    ----------
+    case : Case
+        The validated case (SI).
+    """
+    from .errors import CaseError
+
+    vehicle = vehicle_from_case(case)
+    if has_flat_plate(vehicle):
+        raise CaseError("vehicle.segments", "a cone of length 0",
+                        "a flat annular plate cannot carry the thrust as a membrane: no "
+                        "forced response (give the plate an axial length: a cone)")
+    settings = forced_settings(case)
+    stations, masses = forced_stations(case, vehicle)
+    with blas_threads(1):
+        try:
+            found = forced_response(vehicle, stations=stations, **settings)
+            convergence = _convergence(vehicle, settings, stations, found)
+        except BucklingError as exc:
+            raise CaseError("thrust.F0", case.F0, "the steady thrust buckles the vehicle "
+                            f"({exc}): no forced response") from None
+        except UndampedResonanceError as exc:
+            field = ("damping.pitch_ratio" if exc.parameter == "pitch_damping_ratio"
+                     else "vehicle.damping_ratio")
+            value = (case.damping.pitch_ratio if exc.parameter == "pitch_damping_ratio"
+                     else modal_damping_ratio(case))
+            raise CaseError(field, value, f"the k = {exc.k} mode at {exc.omega:.6g} rad/s "
+                            f"({exc.omega / (2.0 * np.pi):.6g} Hz) is not damped and resonates "
+                            "in the thrust's range: no bounded forced response; give it "
+                            "damping > 0") from None
+        except FieldValueError as exc:  # a vehicle the forced model does not represent
+            raise CaseError(f"vehicle.{exc.field}", exc.value, exc.rule) from None
+    n_modes = tuple(m.omega_modes.size - m.n_rigid for m in found.models)
+    t = case.thrust
+    return ForcedLoads(response=found, n_modes=n_modes, convergence=convergence,
+                       mass_stations=masses, operating_range=(t.omega_min, t.omega_max))
+
+
+def _forced_stage(case: Case) -> tuple[ForcedLoads | None, list[AnalysisWarning]]:
+    """:func:`analyze_forced_response`, or None and a ``forced-response-skipped`` warning naming
+    the field where it cannot be computed (the rest of the analysis stands)."""
+    from .errors import CaseError
+
+    try:
+        return analyze_forced_response(case), []
+    except CaseError as exc:
+        return None, [AnalysisWarning("forced-response-skipped", exc.field,
+                                      f"{exc.field} = {exc.value!r}: {exc.rule}")]

@@ -32,10 +32,13 @@ __all__ = [
     "Thrust",
     "Truncation",
     "Damping",
+    "SpectrumLine",
+    "OutputStation",
     "Output",
     "SeverityTable",
     "Case",
     "MAX_MODES",
+    "vehicle_length",
     "load_case",
     "default_case",
     "default_case_text",
@@ -56,6 +59,18 @@ def _quantity(kind: str, positive: bool = True):
         result = to_si(info.field_name, value, kind)
         if positive and not result > 0.0:
             raise ValueError("must be positive")
+        return result
+
+    return convert
+
+
+def _fraction(rule: str):
+    """A 'before' validator: a dimensionless number in [0, 1), else ``rule``."""
+
+    def convert(cls, value: Any, info) -> float:  # noqa: ANN001
+        result = to_si(info.field_name, value, "dimensionless")
+        if not 0.0 <= result < 1.0:
+            raise ValueError(rule)
         return result
 
     return convert
@@ -113,6 +128,26 @@ class Booster(BaseModel):
         return result
 
 
+class SpectrumLine(BaseModel):
+    """One ``[[thrust.spectrum]]`` row: a line of the oscillation, Delta F = a F0 cos(Omega t).
+
+    Attributes
+    ----------
+    frequency : float
+        Omega of the line (rad/s; "Hz" values are cyclic, times 2 pi), > 0.
+    amplitude : float
+        a, the line's amplitude as a fraction of F0, 0 <= a < 1.
+    """
+
+    model_config = _FROZEN
+    frequency: float
+    amplitude: float
+
+    _frequency = field_validator("frequency", mode="before")(_quantity("angular_frequency"))
+    _amplitude = field_validator("amplitude", mode="before")(
+        _fraction("must lie in [0, 1) (a fraction of F0)"))
+
+
 class Thrust(BaseModel):
     """The gimbaled pulsating end thrust T(t) = T0 (1 - gamma cos Omega t) (memo 2.2-2); exactly
     one of ``F0`` and ``T0`` (F0 = 2 pi R1 T0).
@@ -129,6 +164,12 @@ class Thrust(BaseModel):
         Range of Omega (rad/s; "Hz" values are cyclic, times 2 pi), 0 < omega_min < omega_max.
     n_omega : int
         Points of the uniform Omega grid, 2..100000.
+    misalignment : float
+        Angle delta between the thrust line and the axis (rad; "deg" accepted), |delta| < pi/2,
+        default 0: the forced response's lateral (k = 1) load is sin(delta) Delta F.
+    spectrum : tuple of SpectrumLine or None
+        Lines of the thrust oscillation for the forced response, instead of gamma over the
+        Omega range; frequencies strictly increasing.
     """
 
     model_config = _FROZEN
@@ -139,6 +180,16 @@ class Thrust(BaseModel):
     omega_min: float
     omega_max: float
     n_omega: StrictInt = 401
+    misalignment: float = 0.0
+    spectrum: tuple[SpectrumLine, ...] | None = None
+
+    @field_validator("misalignment", mode="before")
+    @classmethod
+    def _misalignment(cls, value: Any) -> float:
+        result = to_si("misalignment", value, "dimensionless")  # radians
+        if not abs(result) < math.pi / 2.0:
+            raise ValueError("must be an angle in (-pi/2, pi/2) rad")
+        return result
 
     _F0 = field_validator("F0", mode="before")(_quantity("force"))
     _T0 = field_validator("T0", mode="before")(_quantity("force_per_length"))
@@ -146,13 +197,8 @@ class Thrust(BaseModel):
         _quantity("angular_frequency")
     )
 
-    @field_validator("gamma", mode="before")
-    @classmethod
-    def _gamma(cls, value: Any) -> float:
-        result = to_si("gamma", value, "dimensionless")
-        if not 0.0 <= result < 1.0:
-            raise ValueError("must lie in [0, 1) so that the thrust stays positive")
-        return result
+    _gamma = field_validator("gamma", mode="before")(
+        _fraction("must lie in [0, 1) so that the thrust stays positive"))
 
     @field_validator("K", mode="before")
     @classmethod
@@ -235,6 +281,32 @@ class Damping(BaseModel):
         return result
 
 
+class OutputStation(BaseModel):
+    """One ``[[output.stations]]`` row: a station of the forced response.
+
+    Attributes
+    ----------
+    name : str
+        Label in the outputs, unique, not one of the automatic names ("aft-edge",
+        "forward-edge", "junction-i").
+    station : float
+        Axial distance from the aft edge (m), in [0, the vehicle's length].
+    """
+
+    model_config = _FROZEN
+    name: str
+    station: float
+
+    _station = field_validator("station", mode="before")(_quantity("length", positive=False))
+
+    @field_validator("name")
+    @classmethod
+    def _name(cls, value: str) -> str:
+        if not value.strip():
+            raise ValueError("must be a non-empty name")
+        return value
+
+
 class Output(BaseModel):
     """How the summary and the report show values (``[output]``).
 
@@ -243,10 +315,13 @@ class Output(BaseModel):
     units : str
         ``"SI"`` (default): SI only; ``"US"``: the inputs and mass properties also in
         inch-pound units (in, psi, lbf, lb, ...) beside SI.  The analysis is SI either way.
+    stations : tuple of OutputStation
+        Stations of the forced response besides the edges, junctions and lumped masses.
     """
 
     model_config = _FROZEN
     units: Literal["SI", "US"] = "SI"
+    stations: tuple[OutputStation, ...] = ()
 class SeverityTable(BaseModel):
     """Optional reference amplitudes and thresholds of the severity (table ``[severity]``;
     docs/theory/severity.md).
@@ -380,6 +455,8 @@ class Case(BaseModel):
             data["thrust"]["T0"] = self.T0
         if data.get("vehicle") is None:  # no [vehicle]: results.json as before
             data.pop("vehicle", None)
+        if not data.get("output", {}).get("stations", True):
+            data["output"].pop("stations")
         if data.get("output") == {"units": "SI"}:  # the default [output]: as before
             data.pop("output", None)
         return data
@@ -494,6 +571,7 @@ def _cross_checks(case: Case) -> None:
     check_vehicle(case.vehicle, booster_radii=radii)
     if b is None:
         _segment_materials(case.vehicle)
+    _check_forced_inputs(case)
 
 
 def _one_vehicle(case: Case) -> None:
@@ -518,6 +596,50 @@ def _segment_materials(table: VehicleTable) -> None:
                 raise CaseError(f"vehicle.segments[{i}].{name}", None,
                                 f"required field is missing (or give vehicle.{name} for every "
                                 "segment; a case without [booster] has no default material)")
+
+
+def vehicle_length(case: Case) -> float:
+    """Axial length of the case's vehicle (m): the sum of its segments' lengths, or 2 (L1 + L2)
+    of the memo vehicle.
+
+    Parameters
+    ----------
+    case : Case
+        A validated case.
+    """
+    table, b = case.vehicle, case.booster
+    if table is None or table.segments is None:
+        return 2.0 * (b.cylinder1.half_length + b.cylinder2.half_length)
+    return float(sum(seg.length for seg in table.segments))
+
+
+def _check_forced_inputs(case: Case) -> None:
+    """``[[thrust.spectrum]]`` frequencies strictly increasing; ``[[output.stations]]`` on the
+    vehicle with names of their own."""
+    lines = None if case.thrust is None else case.thrust.spectrum
+    if lines is not None:
+        if not lines:
+            raise CaseError("thrust.spectrum", [], "at least one line is needed")
+        for i in range(1, len(lines)):
+            if not lines[i].frequency > lines[i - 1].frequency:
+                raise CaseError(f"thrust.spectrum[{i}].frequency", lines[i].frequency,
+                                "must be larger than the previous line's "
+                                f"({lines[i - 1].frequency!r} rad/s): lines in increasing "
+                                "frequency, each once")
+    length = vehicle_length(case)
+    n_seg = 2 if case.vehicle is None or case.vehicle.segments is None else len(
+        case.vehicle.segments)
+    taken = {"aft-edge", "forward-edge"} | {f"junction-{i}" for i in range(1, n_seg)}
+    for i, st in enumerate(case.output.stations):
+        if not 0.0 <= st.station <= length:
+            raise CaseError(f"output.stations[{i}].station", st.station,
+                            f"must lie on the vehicle: 0 <= station <= {length!r} m (its "
+                            "length)")
+        if st.name in taken:
+            raise CaseError(f"output.stations[{i}].name", st.name,
+                            "must differ from the other stations' names (and from aft-edge, "
+                            "forward-edge, junction-i)")
+        taken.add(st.name)
 
 
 def _validate(data: Mapping[str, Any]) -> Case:

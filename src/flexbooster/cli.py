@@ -246,7 +246,8 @@ def run(case_file: Path | None, output: Path, no_figures: bool, no_vehicle: bool
 
     _check_names(output, SET_NAMES)
     case = _with_budget(_load(case_file), max_seconds)
-    n_stages = len(STAGES) + (case.vehicle is not None) + (not no_vehicle) + len(OUTPUT_STAGES)
+    n_stages = (len(STAGES) + (case.vehicle is not None) + 2 * (not no_vehicle)
+                + len(OUTPUT_STAGES))
     with _progress(n_stages, quiet) as step:
         results = analyze(case, progress=step, figures=not no_figures, vehicle=not no_vehicle,
                           on_estimate=getattr(step, "estimate", None))

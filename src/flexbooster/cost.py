@@ -397,6 +397,10 @@ _DAMPED_UPFRONT_FACTOR, _BOUNDARY_SEARCH_FACTOR = 3.0, 4.0
 # 2n x 2n LAPACK operations): s per (2n)^3, one core (3.4e-9 at n = 200, 3.6e-9 at n = 120,
 # CPU time); computed for the map, again by the search, and once more for the chart's curves
 _C_CERTIFICATE = 3.5e-9
+# The forced response (k = 0 and 1, with the half-basis convergence run of each forced
+# harmonic): the default case's memo vehicle, 400 Omega points, 0.87 s axial only, 1.83 s with
+# a misalignment (the lateral harmonic forced too); the README's [vehicle] 0.15 s / 0.23 s.
+_C_FORCED = 0.9
 
 
 def search_seconds(n_modes: int, omega_min: float, omega_max: float, *, damped: bool,
@@ -459,7 +463,7 @@ def region_modes(case: Any, vehicle: Any = None, *, k_max: int = 10) -> tuple[in
 
 def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
                           regions: bool = True, figures: bool = True,
-                          certified: bool = True) -> CostEstimate:
+                          certified: bool = True, forced: bool = False) -> CostEstimate:
     """The predicted time of the vehicle stages of :func:`flexbooster.analysis.analyze`: "vehicle
     modes" (``[vehicle]`` only) and "vehicle regions" (:func:`search_seconds` per harmonic not
     certified), with their fields; no solver is run.
@@ -477,6 +481,9 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
     certified : bool
         Assume that damping certifies every harmonic stable (the lower bound); False: every
         harmonic searched (the upper bound).
+    forced : bool
+        The vehicle's forced response is computed ("vehicle forced response": the FE models of
+        k = 0 and 1, twice for each harmonic forced; dense, like the DOFs cubed).
     """
     from .model import vehicle_from_case
     from .vehicle_case import VehicleTable
@@ -512,6 +519,10 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
             parts["vehicle certificates"] = n_k * calls * _C_CERTIFICATE * (
                 2.0 * max(n_modes, 3)) ** 3
             drivers["vehicle certificates"] = ("vehicle.n_modes", "vehicle.k_max")
+    if forced:
+        parts["vehicle forced response"] = _C_FORCED * dofs * (
+            1.0 + (getattr(t, "misalignment", 0.0) != 0.0))
+        drivers["vehicle forced response"] = ("vehicle.segments", "thrust.misalignment")
     return CostEstimate(seconds=float(sum(parts.values())), parts=parts, drivers=drivers)
 
 

@@ -12,7 +12,8 @@ import numpy as np
 
 from . import __version__
 from .danger import DangerSummary
-from .dynamics import VehicleRegions
+from .dynamics import ForcedResponse, VehicleRegions
+from .dynamics.forced import STANDARD_GRAVITY
 from .errors import AnalysisWarning
 from .memo.beam import BeamModes
 from .memo.beam_action import BeamActionResult
@@ -29,7 +30,8 @@ from .shell_of_revolution.survey import VehicleSurvey
 if TYPE_CHECKING:
     from .case import Case
 
-__all__ = ["Results", "MemoRootsInRegions", "SCHEMA_VERSION", "UNITS", "MEMO_SECTIONS"]
+__all__ = ["Results", "MemoRootsInRegions", "ForcedLoads", "ForcedLoadPeak", "SCHEMA_VERSION",
+           "UNITS", "MEMO_SECTIONS"]
 
 #: Version of the layout of results.json; bumped when a key changes meaning or disappears.
 SCHEMA_VERSION = "1.0"
@@ -103,6 +105,17 @@ UNITS: dict[str, str] = {
     "danger.bands.Omega_lo_hz, Omega_hi_hz": "Hz",
     "danger.bands.growth_rate": "1/s",
     "danger.bands.severity": "m/s (memo resonances)",
+    "forced_response.F0, peaks.axial_force_N, peaks.shear_force_N": "N",
+    "forced_response.amplitude, damping_ratio, pitch_damping_ratio, gimbal_gain": "1",
+    "forced_response.misalignment": "rad",
+    "forced_response.omega, peaks.Omega, envelopes.worst_Omega": "rad/s",
+    "forced_response.omega_hz, peaks.Omega_hz, envelopes.worst_Omega_hz": "Hz",
+    "forced_response.stations.station_m, peaks.station_m, envelopes.station_m": "m",
+    "forced_response.peaks.displacement_m": "m",
+    "forced_response.peaks.acceleration_g, acceleration_g_per_percent": "1 (units of g)",
+    "forced_response.peaks.bending_moment_Nm": "N m",
+    "forced_response.envelopes.peak, at_worst": "N (axial, shear force) or N m (moment)",
+    "forced_response.convergence.max_change": "1 (relative to the largest peak)",
 }
 UNITS.update({
     "mass_properties.mass_kg, contributions.mass_kg": "kg ([vehicle] segments)",
@@ -177,6 +190,9 @@ class Results:
         Why the memo's method does not apply (a ``[[vehicle.segments]]`` vehicle): its results
         are None and its results.json keys (:data:`MEMO_SECTIONS`) hold
         ``{"not_applicable": reason}``; None for ``[booster]``.
+    forced_response : ForcedLoads or None
+        The vehicle's forced response to the thrust oscillation; None when not asked for or
+        not computable (see the warnings).
     """
 
     case: Case
@@ -199,6 +215,7 @@ class Results:
     severity: SeverityResult | None = None
     vehicle_mass: VehicleMassProperties | None = None
     not_applicable: str | None = None
+    forced_response: ForcedLoads | None = None
 
     @property
     def Omega(self) -> np.ndarray:
@@ -244,6 +261,8 @@ class Results:
         if self.vehicle is not None:  # only for a case with [vehicle] (units inside)
             out["vehicle_modes"] = self.vehicle.to_dict()
         out["vehicle_regions"] = self._vehicle_regions_dict()
+        out["forced_response"] = (None if self.forced_response is None
+                                  else self.forced_response.to_dict())
         return out if self.not_applicable is None else self._memo_not_applicable(out)
 
     def _memo_not_applicable(self, out: dict[str, Any]) -> dict[str, Any]:
@@ -325,3 +344,179 @@ class MemoRootsInRegions:
         }
 
 
+
+
+#: Quantities of the forced response in the outputs: (name in ForcedResponse, column, divisor).
+_FORCED_COLUMNS = (("displacement", "displacement_m", 1.0),
+                   ("acceleration", "acceleration_g", STANDARD_GRAVITY),
+                   ("axial_force", "axial_force_N", 1.0),
+                   ("bending_moment", "bending_moment_Nm", 1.0),
+                   ("shear_force", "shear_force_N", 1.0))
+
+
+@dataclass(frozen=True)
+class ForcedLoadPeak:
+    """The forced peaks at one station and harmonic, in the form the overall verdict ranks.
+
+    Attributes
+    ----------
+    k : int
+        Harmonic (0 axial, 1 lateral).
+    station, station_m : str, float
+        Station name and its axial distance from the aft edge (m).
+    Omega : float
+        Omega of the acceleration peak (rad/s).
+    acceleration_g : float
+        Peak acceleration amplitude (units of g = 9.80665 m/s^2).
+    axial_force_N, bending_moment_Nm : float
+        Peak internal axial force (N; k = 0) and bending moment (N m; k = 1) at the station,
+        0 where the harmonic has none.
+    Omega_axial_force, Omega_bending_moment : float
+        Omega of those peaks (rad/s).
+    in_operating_range : bool
+        Omega lies in [omega_min, omega_max] of the case (always, for a sweep).
+    """
+
+    k: int
+    station: str
+    station_m: float
+    Omega: float
+    acceleration_g: float
+    axial_force_N: float
+    bending_moment_Nm: float
+    Omega_axial_force: float
+    Omega_bending_moment: float
+    in_operating_range: bool
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready mapping (Omega also in Hz)."""
+        return {"k": self.k, "station": self.station, "station_m": float(self.station_m),
+                "Omega": float(self.Omega), "Omega_hz": float(self.Omega / (2.0 * np.pi)),
+                "acceleration_g": float(self.acceleration_g),
+                "axial_force_N": float(self.axial_force_N),
+                "bending_moment_Nm": float(self.bending_moment_Nm),
+                "Omega_axial_force": float(self.Omega_axial_force),
+                "Omega_bending_moment": float(self.Omega_bending_moment),
+                "in_operating_range": bool(self.in_operating_range)}
+
+
+@dataclass(frozen=True)
+class ForcedLoads:
+    """The forced response stage: the response, its basis and its convergence.
+
+    Attributes
+    ----------
+    response : ForcedResponse
+        :func:`flexbooster.dynamics.forced_response` of the case's vehicle.
+    n_modes : tuple of int
+        Elastic basis modes of each harmonic (``response.harmonics``), with the static
+        correction of the truncated ones.
+    convergence : tuple of (int, float) or None
+        Per harmonic: the elastic modes of a half basis and the largest change of a station
+        peak with it, relative to the largest peak of that quantity (None: harmonic not forced).
+    mass_stations : tuple of str
+        The stations that are lumped masses.
+    operating_range : tuple of float
+        (omega_min, omega_max) of the case (rad/s).
+    """
+
+    response: ForcedResponse
+    n_modes: tuple
+    convergence: tuple
+    mass_stations: tuple = ()
+    operating_range: tuple = (0.0, np.inf)
+
+    @property
+    def per_percent(self) -> float | None:
+        """Factor from the case's loads to those per 1 % of F0 of thrust oscillation (a sweep
+        with gamma > 0; None for a spectrum or gamma = 0): the response is linear in gamma."""
+        r = self.response
+        if r.combination != "sweep" or not r.amplitude.size or r.amplitude[0] <= 0.0:
+            return None
+        return 0.01 / float(r.amplitude[0])
+
+    def peak_value(self, k: int, station: str, quantity: str) -> tuple[float, float]:
+        """(peak, Omega in rad/s) of a quantity at a station; (0, nan) where k is not computed."""
+        if k not in self.response.harmonics:
+            return 0.0, float("nan")
+        p = self.response.peak(k, station, quantity)
+        return p.value, p.omega
+
+    def ranked_peaks(self) -> tuple[ForcedLoadPeak, ...]:
+        """One :class:`ForcedLoadPeak` per forced harmonic and station, by decreasing peak
+        acceleration."""
+        r, (lo, hi) = self.response, self.operating_range
+        out = []
+        for ik, k in enumerate(r.harmonics):
+            if self.convergence[ik] is None:  # not forced
+                continue
+            for s in r.stations:
+                acc, w = self.peak_value(k, s.name, "acceleration")
+                ax, wa = self.peak_value(k, s.name, "axial_force") if k == 0 else (0.0, w)
+                bm, wb = self.peak_value(k, s.name, "bending_moment") if k == 1 else (0.0, w)
+                out.append(ForcedLoadPeak(
+                    k=k, station=s.name, station_m=s.x, Omega=w,
+                    acceleration_g=acc / STANDARD_GRAVITY, axial_force_N=ax,
+                    bending_moment_Nm=bm, Omega_axial_force=wa, Omega_bending_moment=wb,
+                    in_operating_range=bool(lo <= w <= hi)))
+        return tuple(sorted(out, key=lambda p: -p.acceleration_g))
+
+    def csv_columns(self) -> dict[str, list]:
+        """forced-response.csv in long format: one row per harmonic, station and Omega;
+        amplitudes |X| (the acceleration in g)."""
+        r = self.response
+        cols: dict[str, list] = {"Omega_hz": [], "station": [], "station_m": [], "k": []}
+        cols.update({c: [] for _, c, _ in _FORCED_COLUMNS})
+        hz = (r.omega / (2.0 * np.pi)).tolist()
+        for ik, k in enumerate(r.harmonics):
+            for js, s in enumerate(r.stations):
+                cols["Omega_hz"] += hz
+                cols["station"] += [s.name] * r.omega.size
+                cols["station_m"] += [float(s.x)] * r.omega.size
+                cols["k"] += [int(k)] * r.omega.size
+                for q, c, f in _FORCED_COLUMNS:
+                    cols[c] += (np.abs(getattr(r, q)[ik, js]) / f).tolist()
+        return cols
+
+    def to_dict(self) -> dict[str, Any]:
+        """results.json ``forced_response``: settings, basis and convergence, stations, the peak
+        of every quantity per harmonic and station with its Omega, the load envelopes along the
+        vehicle at the worst Omega and the ranked peaks."""
+        r = self.response
+        scale = self.per_percent
+        peaks = []
+        for k in r.harmonics:
+            for s in r.stations:
+                row = {"k": int(k), "station": s.name, "station_m": float(s.x)}
+                for q, c, f in _FORCED_COLUMNS:
+                    try:
+                        p = r.peak(k, s.name, q)
+                    except KeyError:  # not a quantity of this harmonic
+                        continue
+                    row[c] = p.value / f
+                    row[f"Omega_{q}"] = p.omega
+                    row[f"Omega_{q}_hz"] = p.omega / (2.0 * np.pi)
+                if scale is not None:
+                    row["acceleration_g_per_percent"] = row["acceleration_g"] * scale
+                peaks.append(row)
+        return {
+            "combination": r.combination, "F0": float(r.F0),
+            "omega": r.omega.tolist(), "omega_hz": (r.omega / (2.0 * np.pi)).tolist(),
+            "amplitude": r.amplitude.tolist(), "damping_ratio": float(r.damping_ratio),
+            "pitch_damping_ratio": float(r.pitch_damping_ratio),
+            "misalignment": float(r.misalignment), "gimbal_gain": float(r.gimbal_gain),
+            "harmonics": list(r.harmonics), "standard_gravity": STANDARD_GRAVITY,
+            "basis": {"n_modes": [int(n) for n in self.n_modes], "static_correction": True},
+            "convergence": [None if c is None else {"n_modes": int(c[0]),
+                                                    "max_change": float(c[1])}
+                            for c in self.convergence],
+            "stations": [dict(s.to_dict(), kind="mass" if s.name in self.mass_stations
+                              else s.kind) for s in r.stations],
+            "peaks": peaks,
+            "envelopes": [{"k": e.k, "quantity": e.quantity, "unit": e.unit,
+                           "station_m": e.x.tolist(), "peak": e.peak.tolist(),
+                           "worst_Omega": float(e.worst_omega),
+                           "worst_Omega_hz": float(e.worst_omega / (2.0 * np.pi)),
+                           "at_worst": np.abs(e.at_worst).tolist()} for e in r.envelopes],
+            "ranked": [p.to_dict() for p in self.ranked_peaks()],
+        }

@@ -12,7 +12,14 @@ from .bending import (
     bending_system,
     follower_flutter_thrust,
 )
-from .forced import ForcedPeak, ForcedResponse, LoadEnvelope, ThrustSpectrum, forced_response
+from .forced import (
+    ForcedPeak,
+    ForcedResponse,
+    LoadEnvelope,
+    ThrustSpectrum,
+    UndampedResonanceError,
+    forced_response,
+)
 from .harmonic import HarmonicSystem
 from .regions import (
     RegionCurve,
@@ -37,6 +44,7 @@ __all__ = [
     "ForcedResponse",
     "LoadEnvelope",
     "ThrustSpectrum",
+    "UndampedResonanceError",
     "forced_response",
     "forced_axial",
     "harmonic_system",

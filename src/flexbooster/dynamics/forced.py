@@ -22,7 +22,8 @@ from ..shell_of_revolution import DEFAULT_ORDER, Vehicle, mesh_vehicle
 from .forced_model import ROWS, ModalModel, cut_vehicle, mesh_nodes, modal_model
 
 __all__ = ["STANDARD_GRAVITY", "QUANTITIES", "UNITS", "ThrustSpectrum", "Station",
-           "ForcedPeak", "LoadEnvelope", "ForcedResponse", "forced_response"]
+           "ForcedPeak", "LoadEnvelope", "ForcedResponse", "UndampedResonanceError",
+           "forced_response"]
 
 #: Standard acceleration of gravity g (m/s^2), exact by definition (3rd CGPM, 1901).
 STANDARD_GRAVITY = 9.80665
@@ -37,6 +38,20 @@ UNDAMPED_RTOL = 1e-6
 #: CLUSTER, then GOLDEN_STEPS golden-section steps in the bracket of the largest sample (its
 #: width x 0.618^24 = 1e-5: the peak value to about 1e-10 relative).
 CLUSTER, CLUSTER_DENSITY, GOLDEN_STEPS = 32, 8, 24
+
+
+class UndampedResonanceError(ValueError):
+    """A mode not damped has its resonance in the Omega range (or on a line): no bounded steady
+    response. ``parameter`` is the damping that would bound it ("damping_ratio" or
+    "pitch_damping_ratio"), ``k`` the harmonic, ``omega`` the mode's frequency (rad/s).
+    """
+
+    def __init__(self, message: str, parameter: str, k: int, omega: float):
+        super().__init__(message)
+        self.parameter, self.k, self.omega = parameter, k, omega
+
+    def __reduce__(self):
+        return type(self), (str(self), self.parameter, self.k, self.omega)
 
 
 def _complex(a) -> dict:
@@ -469,9 +484,10 @@ def forced_response(
                 name, val = ("pitch_damping_ratio", zpsi) if j < model.n_rigid else (
                     "damping_ratio", zeta)
                 place = "on a line" if combination == "spectrum" else "in the Omega range"
-                raise ValueError(f"{name} = {val!r}: the k = {k} mode at {hit.imag:.6g} rad/s "
-                                 f"{place} is not damped (growth rate {hit.real:.3g} 1/s): "
-                                 "no bounded steady response")
+                raise UndampedResonanceError(
+                    f"{name} = {val!r}: the k = {k} mode at {hit.imag:.6g} rad/s {place} is "
+                    f"not damped (growth rate {hit.real:.3g} 1/s): no bounded steady response",
+                    name, k, float(hit.imag))
         vals, found, loads = _harmonic(model, om, gam * F0 * (share[k] != 0.0),
                                        combination == "spectrum", rows_s, at)
         for i, q in enumerate(ROWS[k]):

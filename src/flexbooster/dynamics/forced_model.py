@@ -23,7 +23,7 @@ import numpy as np
 import scipy.linalg as sla
 
 from ..checks import FieldValueError
-from ..shell_of_revolution import Cylinder, Vehicle
+from ..shell_of_revolution import BucklingError, Cylinder, Vehicle
 from ..shell_of_revolution.assembly import (
     assemble,
     dof_map,
@@ -391,7 +391,7 @@ def full_model(
     KL = Ke + Kg
     w2, Phi, n_rigid = _basis(KL if k == 0 else Ke, M, n_modes, omega_max)
     if np.any(w2[n_rigid:] <= 0.0):
-        raise ValueError(f"F0 = {F0!r}: the steady thrust buckles harmonic k = {k}")
+        raise BucklingError(f"F0 = {F0!r}: the steady thrust buckles harmonic k = {k}", k, F0)
     if k == 1:
         beta = -D[0, 0] / r[0]  # aft cross-section rotation, beta = -U_x / r
         psi = np.zeros(beta.size)

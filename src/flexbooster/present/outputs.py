@@ -219,6 +219,11 @@ def _write_files(results: Results, folder: Path, figures: bool,
 
             written.append(write_csv_atomic(folder / "vehicle-regions.csv",
                                             vehicle_region_columns(results.vehicle_regions)))
+        if results.forced_response is not None:
+            from .forced import FORCED_CSV
+
+            written.append(write_csv_atomic(folder / FORCED_CSV,
+                                            results.forced_response.csv_columns()))
         svgs: dict[str, str] = {}
         if names:
             step(OUTPUT_STAGES[1])
@@ -343,6 +348,9 @@ def figure_names(results: Results) -> tuple[str, ...]:
         from .vehicle import vehicle_figure_names
 
         names += vehicle_figure_names(results.vehicle)
+    from .forced import forced_figure_names
+
+    names += forced_figure_names(results)
     return tuple(names)
 
 
@@ -350,7 +358,8 @@ def make_figures(results: Results, *, names=None) -> dict[str, Figure]:
     """Draw the figures of an analysis (matplotlib, Agg) from its stored data, by file stem:
     ``danger-map``, ``ince-strutt``, ``beam-modes``, ``shell-frequencies-cylinder1/2``,
     ``nodal-patterns``, ``pitch-band-chart``, ``beam-action-chart``, ``campbell`` and the
-    vehicle's ``vehicle-mode-shapes``, ``vehicle-unrolled``, ``vehicle-regions`` as computed.
+    vehicle's ``vehicle-mode-shapes``, ``vehicle-unrolled``, ``vehicle-regions``,
+    ``forced-acceleration``, ``forced-envelopes`` as computed.
 
     Parameters
     ----------
@@ -394,8 +403,11 @@ def make_figures(results: Results, *, names=None) -> dict[str, Figure]:
         "campbell": lambda: campbell_diagram(data.campbell),
         "vehicle-regions": lambda: vehicle_region_figures(results)["vehicle-regions"],
     }
-    figs: dict[str, Figure] = {}
-    vehicle = [name for name in wanted if name not in makers]
+    from .forced import FORCED_FIGURES, forced_figures
+
+    figs: dict[str, Figure] = forced_figures(
+        results, names=[name for name in wanted if name in FORCED_FIGURES])
+    vehicle = [name for name in wanted if name not in makers and name not in FORCED_FIGURES]
     for name in wanted:
         if name in makers:
             figs[name] = makers[name]()

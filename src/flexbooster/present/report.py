@@ -31,6 +31,15 @@ from ..memo.charts import (
     VEHICLE_CHART_LEVELS,
 )
 from ..results import Results
+from .forced import (
+    FORCED_CSV,
+    FORCED_FIGURES,
+    FORCED_HEADER,
+    FORCED_ZERO,
+    forced_basis_text,
+    forced_rows,
+    forced_worst_lines,
+)
 from .io import write_text_atomic
 from .rows import (
     BAND_COLUMNS,
@@ -82,6 +91,7 @@ SECTIONS: tuple[tuple[str, str], ...] = (
     ("unstable-frequencies", "Unstable thrust frequencies"),
     ("campbell", "Campbell diagram"),
     ("vehicle-regions", "Vehicle parametric instability regions"),
+    ("forced-response", "Forced response to the thrust oscillation"),
     ("verification", "Verification summary"),
     ("warnings", "Warnings"),
 )
@@ -94,6 +104,7 @@ MEMO_SECTIONS = ("beam-modes", "beam-action", "shell-frequencies", "nodal-patter
 #: :func:`flexbooster.present.outputs.write_outputs`) -> section
 #: and caption.
 FIGURES: dict[str, tuple[str, str]] = {
+    **{name: ("forced-response", caption) for name, caption in FORCED_FIGURES.items()},
     "danger-map": (
         "summary",
         "Danger map: every unstable band of the thrust frequency Omega (Hz, logarithmic) of "
@@ -561,6 +572,30 @@ def _vehicle_regions(results: Results, svgs: Mapping[str, str] | None) -> str:
     return "".join(out) + _figure("vehicle-regions", svgs)
 
 
+def _forced_response(results: Results, svgs: Mapping[str, str] | None) -> str:
+    """The forced response: the peaks per station, the basis, the largest loads, the figures."""
+    f = results.forced_response
+    if f is None:
+        return ('<p class="note">Not computed (run without --no-vehicle; see the '
+                "warnings).</p>")
+    r = f.response
+    load = ("the lines of thrust.spectrum" if r.combination == "spectrum" else
+            f"gamma = {_fmt(r.amplitude[0])} over the Omega range")
+    out = [f"<p>Steady response of the vehicle to the thrust oscillation ({_e(load)}) at the "
+           "aft edge, axial (k = 0) and, with a thrust misalignment of "
+           f"{_e(_fmt(r.misalignment))} rad, lateral (k = 1) with the gimbal gain "
+           f"{_e(_fmt(r.gimbal_gain))}; modal damping {_e(_fmt(r.damping_ratio))}. Peaks are "
+           f"amplitudes over the range; every curve is in {FORCED_CSV}.</p>",
+           _table(FORCED_HEADER, forced_rows(results),
+                  (False, True, True, True, True, True, True, True, True, True))
+           if forced_rows(results) else f"<p>{_e(FORCED_ZERO)}</p>",
+           f"<p>Basis: {_e(forced_basis_text(results))}.</p>"]
+    lines = forced_worst_lines(results)
+    if lines:
+        out.append("<ul>" + "".join(f"<li>{_e(x)}</li>" for x in lines) + "</ul>")
+    return "".join(out) + "".join(_figure(name, svgs) for name in FORCED_FIGURES)
+
+
 def _verification() -> str:
     return ("<p>Every number of this report is produced by code that the test suite checks "
             "against an independent computation (not against the memo, which prints no "
@@ -669,6 +704,7 @@ def render_report(results: Results, svgs: Mapping[str, str] | None = None,
         "unstable-frequencies": lambda: _unstable(results),
         "campbell": lambda: _figure("campbell", svgs),
         "vehicle-regions": lambda: _vehicle_regions(results, svgs),
+        "forced-response": lambda: _forced_response(results, svgs),
         "verification": _verification,
         "warnings": lambda: _warnings(results),
         "vehicle-modes": lambda: _vehicle(results, svgs),

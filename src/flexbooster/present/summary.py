@@ -148,6 +148,9 @@ def print_summary(results: Results, console: Console | None = None) -> None:
     from .vehicle import print_vehicle_regions
 
     print_vehicle_regions(results, console)
+    from .forced import print_forced_response
+
+    print_forced_response(results, console)
     if results.warnings:
         console.print(f"[bold yellow]Warnings ({len(results.warnings)}):[/bold yellow]")
         for w in results.warnings:
