@@ -202,7 +202,8 @@ def added_mass(mesh: LiquidMesh, k: int, wall: WallQuadrature, displacement: np.
     # the same product split by where the pressure acts: per wall point, per end
     node_p = np.zeros((nodes.size, n))
     node_p[keep] = P[inv]
-    point_force = trace.T @ node_p[:nx]
+    wr = val * (wall.weight * wall.r)[:, None]  # the nonzeros of trace, point by point
+    point_force = np.einsum("pj,pjn->pn", wr, node_p[:nx][axial])
     end_force = np.zeros((2, n))
     point_volume = end_volume = None
     if constraint is not None:
