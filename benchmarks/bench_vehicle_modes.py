@@ -29,7 +29,6 @@ import time
 import numpy as np
 import scipy.linalg as sla
 
-from flexbooster.shell_of_revolution import modes as modes_module
 from flexbooster.shell_of_revolution import (
     Cone,
     Cylinder,
@@ -40,6 +39,7 @@ from flexbooster.shell_of_revolution import (
     mesh_vehicle,
     vehicle_modes,
 )
+from flexbooster.shell_of_revolution import modes as modes_module
 from flexbooster.shell_of_revolution.geometry import tank_liquid
 from flexbooster.shell_of_revolution.wetted_wall import wet_system_matrices
 
