@@ -27,6 +27,7 @@ from ..shell_of_revolution.assembly import (
     assemble,
     dof_map,
     element_set,
+    pressure_ring_matrix,
     rigid_body_fields,
     ring_matrix,
     ring_rows,
@@ -479,6 +480,9 @@ def full_model(
     rings = ring_matrix(vehicle.theory, dmap, pre, k)[np.ix_(keep, keep)]
     M, Ke, Kg = (assemble(mesh, dmap, a)[np.ix_(keep, keep)] for a in mats)
     Kg = Kg + rings  # the hoop rings where the meridian turns
+    fixed = pressure_ring_matrix(vehicle, mesh, dmap, k)  # and the pressure's
+    if fixed is not None:
+        Ke = Ke + fixed[np.ix_(keep, keep)]
     liquid = tank_added_mass(vehicle, mesh, k)
     Ma, extra, volume = _attached(vehicle, mesh, dmap, keep, k, liquid)
     M = M + Ma

@@ -34,7 +34,7 @@ from .assembly import (
 )
 from .elements import element_energies, element_fields, reference_element
 from .geometry import Vehicle
-from .prestress import Prestate, load_path, pressure_resultants
+from .prestress import Prestate, load_path, pressure_resultants, pressure_rings
 from .wetted_wall import tank_added_mass
 
 __all__ = [
@@ -428,6 +428,10 @@ def _rayleigh(h: _Harmonic, vecs: np.ndarray, *, loaded: bool) -> np.ndarray:
     energy = element_energies(fields, _local(mesh, h.dmap, vecs), ns0=ns0, nt0=nt0)
     if pre is not None and pre.ring_node.size:
         ring = ring_matrix(h.theory, h.dmap, pre, h.k)
+        energy = energy + np.einsum("am,am->m", vecs, ring @ vecs)
+    rings = pressure_rings(mesh)  # the pressure's junction rings, part of K_e
+    if rings is not None:
+        ring = ring_matrix(h.theory, h.dmap, rings, h.k)
         energy = energy + np.einsum("am,am->m", vecs, ring @ vecs)
     return energy / np.einsum("am,am->m", vecs, h.M @ vecs)  # matrix products (BLAS)
 
