@@ -201,6 +201,33 @@ def test_added_mass_symmetric_positive_semidefinite(fill, k):
     assert np.all(np.isfinite(am.matrix))
 
 
+@pytest.mark.parametrize(("fill", "k"), [(0.7, 0), (0.7, 1), (1.0, 0), (1.0, 1)])
+def test_added_mass_split_by_where_the_pressure_acts_sums_to_it(fill, k):
+    """The split of M_a by wall point and end (force summation over a part of the wall) sums to
+    M_a: N^T P_wall + u_aft P_aft + u_fwd P_fwd = M_a (the same product regrouped, 1e-12 of the
+    largest entry); a full tank's volume split sums to the constraint likewise, and the volume
+    of the cone-cylinder tank's axial translation, sum n_x c_0 w r - c_0 R_aft^2 / 2 + c_0
+    R_fwd^2 / 2, vanishes (a rigid motion keeps the volume; exact geometry, 1e-12)."""
+    tank = Tank(stations=(0.0, 1.0, 3.0), radii=(1.5, 1.0, 1.0), fill=fill, density=WATER)
+    lm = liquid_mesh(tank)
+    wall = polyline_wall(tank, lm)
+    rng = np.random.default_rng(5)
+    N = rng.standard_normal((wall.x.size, 9))
+    aft, fwd = rng.standard_normal(9), rng.standard_normal(9)
+    am = added_mass(lm, k, wall, N, aft_end=aft, fwd_end=fwd)
+    fwd = fwd * (fill == 1.0)
+    back = N.T @ am.point_force + np.outer(aft, am.end_force[0]) + np.outer(fwd, am.end_force[1])
+    np.testing.assert_allclose(back, am.matrix, atol=1e-12 * np.abs(am.matrix).max())
+    if am.constraint is None:
+        assert am.point_volume is None and (fill < 1.0 or k > 0)
+        return
+    vol = N.T @ am.point_volume + aft * am.end_volume[0] + fwd * am.end_volume[1]
+    np.testing.assert_allclose(vol, am.constraint, atol=1e-12 * np.abs(vol).max())
+    rigid = wall.normal[:, 0] @ am.point_volume + am.end_volume.sum()
+    assert abs(rigid) <= 1e-12 * abs(am.end_volume[0])
+    assert am.end_volume[0] == pytest.approx(-np.pi * 1.5**2, rel=1e-12)
+
+
 # --------------------------------------------------------------------------- the wet shell
 
 

@@ -120,3 +120,29 @@ def test_certificates_are_counted_and_refused_up_front():
     msg = str(info.value)
     assert info.value.field == "max_seconds" and "vehicle certificates" in msg
     assert "vehicle.n_modes" in msg and "\n" not in msg
+def _tank_case(n_tanks: int, n_masses: int = 0):
+    """The default case with a [vehicle] of three 2 m cylinders (R 1.5 m, 4 mm aluminium) and
+    the first ``n_tanks`` of its three segments filled to 60 %, ``n_masses`` masses of 500 kg."""
+    data = tomllib.loads(default_case_text())
+    cyl = {"kind": "cylinder", "radius": 1.5, "length": 2.0, "thickness": 0.004}
+    data["vehicle"] = {
+        "E": 70e9, "nu": 0.3, "rho": 2700.0, "segments": [dict(cyl) for _ in range(3)],
+        "tanks": [{"aft": 2.0 * i, "fwd": 2.0 * i + 2.0, "fill": 0.6, "density": 1140.0}
+                  for i in range(n_tanks)],
+        "masses": [{"station": 1.0 * i, "mass": 500.0} for i in range(n_masses)]}
+    return load_case(data)
+
+
+def test_vehicle_estimate_grows_with_the_tanks_and_the_masses():
+    """Each tank adds its liquid mesh and an added mass per harmonic to the modes and the
+    regions, each lumped mass its matrices of k <= 1 (the estimate is monotone in both; the
+    fields that drive it are named)."""
+    est = [cost.estimate_vehicle_cost(_tank_case(n)) for n in range(4)]
+    for part in ("vehicle modes", "vehicle regions"):
+        values = [e.parts[part] for e in est]
+        assert all(b > a for a, b in zip(values, values[1:], strict=False)), (part, values)
+        assert "vehicle.tanks" in est[1].drivers[part]
+        assert "vehicle.tanks" not in est[0].drivers[part]
+    with_masses = cost.estimate_vehicle_cost(_tank_case(1, 3))
+    assert with_masses.seconds > est[1].seconds
+    assert "vehicle.masses" in with_masses.drivers["vehicle modes"]

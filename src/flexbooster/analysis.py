@@ -19,7 +19,7 @@ import numpy as np
 from . import cost, floquet
 from ._threads import blas_threads
 from .case import Case
-from .checks import FieldValueError, count, finite, positive
+from .checks import count, finite, positive
 from .danger import danger_summary
 from .dynamics import (
     ThrustSpectrum,
@@ -781,8 +781,6 @@ def analyze_forced_response(case: Case) -> ForcedLoads:
                             f"({exc.omega / (2.0 * np.pi):.6g} Hz) is not damped and resonates "
                             "in the thrust's range: no bounded forced response; give it "
                             "damping > 0") from None
-        except FieldValueError as exc:  # a vehicle the forced model does not represent
-            raise CaseError(f"vehicle.{exc.field}", exc.value, exc.rule) from None
     n_modes = tuple(m.omega_modes.size - m.n_rigid for m in found.models)
     t = case.thrust
     return ForcedLoads(response=found, n_modes=n_modes, convergence=convergence,

@@ -384,6 +384,11 @@ def tongue_search_seconds(system: Any, gamma: float, *, omega_min: float, omega_
 _C_SURVEY = (0.3, 5e-3)
 _C_HARMONIC_BUILD = 0.02
 _REF_DOFS = 263.0
+# Attached masses (benchmarks/bench_vehicle_modes.py's two-stage vehicle, 691 FE DOFs, one
+# core): the liquid mesh of a tank once (4 tanks: 0.11 s), its added mass per harmonic
+# (0.0133 s per tank and k); a lumped mass's matrix per harmonic k <= 1 (1.7e-3 s).
+_C_TANK = (0.03, 0.015)
+_C_MASS = 2e-3
 # One harmonic's region search, up front (no FE solved): k = 3, gamma = 0.05, undamped, Omega
 # 5..2000 rad/s: 4 modes 0.11 s, 8: 0.53 s, 12: 1.43 s, 20: 9.6 s (-> 0.1 + 6e-5 n^4); 20
 # modes over 5..500 rad/s: 8.0 s (-> the log-range factor).  Blind to the frequencies: the
@@ -466,7 +471,8 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
                           certified: bool = True, forced: bool = False) -> CostEstimate:
     """The predicted time of the vehicle stages of :func:`flexbooster.analysis.analyze`: "vehicle
     modes" (``[vehicle]`` only) and "vehicle regions" (:func:`search_seconds` per harmonic not
-    certified), with their fields; no solver is run.
+    certified), each with the tanks' liquid (a mesh per tank, an added mass per tank and
+    harmonic) and the lumped masses (k <= 1), with their fields; no solver is run.
 
     Parameters
     ----------
@@ -499,10 +505,19 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
         n_modes = region_modes(case, vehicle, k_max=max(n_k, 1))[0]
     except ValueError:  # a vehicle the mesh refuses: the stage says why, not the estimate
         return CostEstimate(seconds=0.0)
+    n_tanks = sum(1 for tank in vehicle.tanks if tank.fill > 0.0)
+    n_masses = len(vehicle.masses)
+    attached = tuple(name for name, n in (("vehicle.tanks", n_tanks),
+                                          ("vehicle.masses", n_masses)) if n)
+
+    def per_harmonic(n_harmonics: int, n_low: int) -> float:  # n harmonics, n_low of k <= 1
+        return n_harmonics * n_tanks * _C_TANK[1] + n_low * n_masses * _C_MASS
+
     if case.vehicle is not None:  # the modes survey, k = 0..k_max
         c0, c1 = _C_SURVEY
-        parts["vehicle modes"] = c0 + c1 * (table.k_max + 1) * dofs
-        drivers["vehicle modes"] = ("vehicle.k_max", "vehicle.segments")
+        parts["vehicle modes"] = (c0 + c1 * (table.k_max + 1) * dofs + n_tanks * _C_TANK[0]
+                                  + per_harmonic(table.k_max + 1, min(table.k_max + 1, 2)))
+        drivers["vehicle modes"] = ("vehicle.k_max", "vehicle.segments") + attached
     if regions and n_k >= 1:
         damped = table.damping_ratio > 0.0
         searched = 0 if (damped and certified) or t.gamma == 0.0 else n_k
@@ -510,10 +525,10 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
         search = searched * search_seconds(max(n_modes, 3), t.omega_min, t.omega_max,
                                            damped=damped, boundaries=figures)
         parts["vehicle regions"] = n_k * _C_HARMONIC_BUILD * dofs * max(
-            1.0, n_modes / 20.0) + search
+            1.0, n_modes / 20.0) + per_harmonic(n_k, 1) + search
         drivers["vehicle regions"] = ("vehicle.n_modes", "vehicle.damping_ratio",
                                       "vehicle.k_max", "thrust.omega_min", "thrust.omega_max",
-                                      "vehicle.segments")
+                                      "vehicle.segments") + attached
         if damped:  # the certificates: map, search, chart (none undamped: no certificate)
             calls = 2 + bool(figures)
             parts["vehicle certificates"] = n_k * calls * _C_CERTIFICATE * (

@@ -22,17 +22,19 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 import scipy.linalg as sla
 
-from ..checks import FieldValueError
 from ..shell_of_revolution import BucklingError, Cylinder, Vehicle
 from ..shell_of_revolution.assembly import (
     assemble,
     dof_map,
     element_set,
+    pressure_ring_matrix,
     rigid_body_fields,
     ring_matrix,
+    ring_rows,
     thrust_prestate,
 )
 from ..shell_of_revolution.elements import reference_element
+from ..shell_of_revolution.wetted_wall import tank_added_mass
 
 __all__ = ["ROWS", "FullModel", "ModalModel", "cut_vehicle", "full_model", "mesh_nodes",
            "modal_model"]
@@ -222,10 +224,11 @@ def _node_displacements(mesh, dmap, keep, elem, end) -> np.ndarray:
     return np.einsum("pji,cpi->pjc", _to_global(mesh.frame[elem, end]), full[:, dofs])
 
 
-def _node_loads(k, mesh, dmap, keep, x, mats, Y) -> np.ndarray:
+def _node_loads(k, mesh, dmap, keep, x, mats, Y, extra=None, add=None) -> np.ndarray:
     """Internal loads (p, len(ROWS[k]) - 1, c) of reduced vectors Y by force summation over the
     part ahead of each node: its rigid motions times the sum of its element forces over its free
-    DOFs; 0 at the nose.
+    DOFs, plus ``extra`` (k + 1, p, n_kept) @ Y (the attached masses and the liquid ahead)
+    and ``add`` (k + 1, p, c); 0 at the nose.
     """
     full = dmap.expand(_embed(keep, Y).T)  # (c, n_full)
     f = np.einsum("eij,cej->eic", mats, full[:, mesh.dofs])  # element forces (e, nd, c)
@@ -233,9 +236,80 @@ def _node_loads(k, mesh, dmap, keep, x, mats, Y) -> np.ndarray:
     rigid = rigid_body_fields(mesh, k)[:1 + k][:, mesh.dofs] * free  # (k + 1, e, nd)
     part = np.einsum("fei,eic->fec", rigid, f)[:, ::-1].cumsum(axis=1)[:, ::-1]  # e' >= e
     part = np.concatenate([part, np.zeros_like(part[:, :1])], axis=1)  # (k + 1, p, c)
+    if extra is not None:
+        part = part + extra @ Y
+    if add is not None:
+        part = part + add
+    return _section(k, x, part)
+
+
+def _section(k, x, part):
+    """Section loads (p, len(ROWS[k]) - 1, ...) from the force and moment (about x = 0) of the
+    part ahead (k + 1, p, ...): N = -F_x (tension > 0); S, M = -M(x)."""
     if k == 0:
-        return -part[0][:, None]  # N = -F_x on the part ahead (tension > 0)
-    return np.stack([part[0], x[:, None] * part[0] - part[1]], axis=1)  # S, M = -M(x)
+        return -part[0][:, None]
+    return np.stack([part[0], x.reshape((-1,) + (1,) * (part.ndim - 2)) * part[0] - part[1]],
+                    axis=1)
+
+
+def _ahead(nodes, rows, p):
+    """Rows (f, p, n) summed over the pieces ahead of each node: piece i (rows[i], shape (f, n))
+    counted at node nodes[i] and at every node aft of it."""
+    out = np.zeros((p,) + rows.shape[1:])
+    np.add.at(out, np.asarray(nodes, dtype=int), rows)
+    return np.moveaxis(out[::-1].cumsum(axis=0)[::-1], 0, 1)
+
+
+def _attached(vehicle, mesh, dmap, keep, k, liquid):
+    """Mass (n_kept, n_kept) of the lumped masses and the liquid (k <= 1), the rows (k + 1, p,
+    n_kept) of their inertia forces on the rigid motions of the part ahead of each node
+    (:func:`_ahead`), and the volume change (p, n_c) of the part ahead's share of each closed
+    full tank's boundary under the axial translation (k = 0; None without such a tank).
+
+    A lumped mass counts at the node of its station (a node's cut is taken just aft of it), a
+    wall point at its element's aft node, a tank end at its edge's node. Lumped masses as
+    :func:`.assembly.lumped_mass_matrix`; rigid fields as :func:`.assembly.rigid_body_fields`
+    (k = 0: u_x = 1; k = 1: (u_x, u_r, v) = (0, 1, -1) and (-r, x, -x)); the liquid's split
+    by :class:`.liquid.AddedMass` (``point_force``, ``end_force``).
+    """
+    n, p = dmap.n, mesh.n_elements + 1
+    M = np.zeros((n, n))
+    nodes, rows = [], []
+    x2 = mesh.x1 + mesh.length * mesh.cos_phi
+    tol = 1e-9 * float(np.max(x2))
+    for lm in vehicle.masses:
+        (ux, ur, v), r = ring_rows(mesh, dmap, lm.station)
+        e = int(np.flatnonzero((mesh.x1 - tol <= lm.station) & (lm.station <= x2 + tol)
+                               & (mesh.cos_phi > 0))[0])
+        nodes.append(e + 1 if lm.station >= x2[e] - tol else e)
+        if k == 0:
+            M += lm.mass * np.outer(ux, ux)
+            rows.append(lm.mass * ux[None])
+        else:
+            psi = -ux / r
+            t = 0.5 * (ur - v) + lm.offset * psi
+            M += lm.mass * np.outer(t, t) + lm.transverse_inertia * np.outer(psi, psi)
+            rows.append(np.stack([lm.mass * t, lm.mass * (lm.station + lm.offset) * t
+                                  + lm.transverse_inertia * psi]))
+    volume = []
+    if liquid is not None:
+        M += liquid.matrix
+        for ww, am, cols in liquid.parts:
+            (nx, nr), xw, rw = ww.wall.normal.T, ww.wall.x, ww.wall.r
+            wn = nx[:, None] if k == 0 else np.column_stack([nr, -rw * nx + xw * nr])
+            ux = np.array([1.0]) if k == 0 else np.array([0.0, -1.0])  # u_x / r^k of the ends
+            at = np.concatenate([ww.element, np.array(ww.end_element) + [0, 1]])
+            local = np.concatenate([wn[:, :, None] * am.point_force[:, None],
+                                    ux[None, :, None] * am.end_force[:, None]])
+            full = np.zeros(local.shape[:2] + (n,))
+            full[:, :, cols] = local
+            nodes += at.tolist()
+            rows += list(full)
+            if am.point_volume is not None:
+                vol = np.concatenate([nx * am.point_volume, am.end_volume])
+                volume.append(_ahead(at, vol[:, None, None], p)[0, :, 0])
+    extra = _ahead(nodes, np.array(rows), p)[:, :, keep] if rows else None
+    return M[np.ix_(keep, keep)], extra, (np.array(volume).T if volume else None)
 
 
 def _element_end_values(values: np.ndarray, order: int) -> np.ndarray:
@@ -245,6 +319,14 @@ def _element_end_values(values: np.ndarray, order: int) -> np.ndarray:
     xi = reference_element(order).xi
     coef = np.polynomial.legendre.legfit(xi, np.asarray(values, dtype=float).T, xi.size - 1)
     return np.polynomial.legendre.legval(np.array([-1.0, 1.0]), coef)  # (e, 2)
+
+
+def _reduced(dmap, full: np.ndarray) -> np.ndarray:
+    """Reduced DOF vector of an admissible full DOF vector (full = coef x reduced[index])."""
+    out = np.zeros(dmap.n)
+    on = dmap.index >= 0
+    out[dmap.index[on]] = full[on] / dmap.coef[on]
+    return out
 
 
 def _embed(keep, Y):
@@ -322,7 +404,8 @@ class FullModel:
         Rigid basis modes.
     parts : tuple
         What :meth:`node_rows` needs (mesh, DOF map, kept DOFs, element matrices, nodes, node
-        functionals, steady axial load P0 at the nodes).
+        functionals, steady axial load P0 at the nodes, the coordinates T (None: X = q), the
+        attached masses' and liquid's force rows, the closed tanks' volume rows).
     """
 
     k: int
@@ -335,24 +418,41 @@ class FullModel:
     parts: tuple = field(repr=False, compare=False)
 
     def node_rows(self, Y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Node rows (p, len(ROWS[k]), c) of vectors Y (n, c): stiffness part - Omega^2 mass
+        """Node rows (p, len(ROWS[k]), c) of vectors Y (m, c): stiffness part - Omega^2 mass
         part, the first row the displacement."""
-        mesh, dmap, keep, mats, (elem, end, x, r), D, P0 = self.parts
+        mesh, dmap, keep, mats, (elem, end, x, r), D, P0, T, extra, volume = self.parts
+        X = Y if T is None else T @ Y
         k, disp = self.k, D[:, 0] if self.k == 0 else 0.5 * (D[:, 2] - D[:, 1])  # u_x or y
-        stiff = np.concatenate([(disp @ Y)[:, None], _node_loads(
-            k, mesh, dmap, keep, x, mats[1] + mats[2], Y)], axis=1)
+        pressure_k = pressure_m = None
+        if volume is not None:  # the closed tanks' uniform pressure mu = L (K X - w^2 M X - F)
+            vol, L, KL, M = volume[:4]
+            pressure_k, pressure_m = -(vol @ L @ KL @ X)[None], -(vol @ L @ M @ X)[None]
+        stiff = np.concatenate([(disp @ X)[:, None], _node_loads(
+            k, mesh, dmap, keep, x, mats[1] + mats[2], X, add=pressure_k)], axis=1)
         mass = np.concatenate([np.zeros_like(stiff[:, :1]), _node_loads(
-            k, mesh, dmap, keep, x, mats[0], Y)], axis=1)
+            k, mesh, dmap, keep, x, mats[0], X, extra=extra, add=pressure_m)], axis=1)
         if k == 1:  # shear normal to the section: less the steady load P0 tilted by beta
-            stiff[:, 1] += (P0 / r)[:, None] * (D[:, 0] @ Y)  # beta = -U_x / r
+            stiff[:, 1] += (P0 / r)[:, None] * (D[:, 0] @ X)  # beta = -U_x / r
         return stiff, mass
+
+    def load_rows(self) -> np.ndarray:
+        """Node rows (p, len(ROWS[k])) per newton of Delta F not carried by the displacement:
+        the closed full tanks' uniform pressure of the load, -L F (k = 0); 0 otherwise."""
+        x, volume = self.parts[4][2], self.parts[-1]
+        out = np.zeros((x.size, len(ROWS[self.k])))
+        if volume is not None:
+            vol, L, F = volume[0], volume[1], volume[4]
+            out[:, 1:] = _section(self.k, x, (vol @ L @ F)[None, :, None])[:, :, 0]
+        return out
 
 
 def full_model(
     vehicle: Vehicle, mesh, k: int, *, F0: float, share: float, n_modes: int | None,
     omega_max: float, gimbal_gain: float, supported_forward_end: bool,
 ) -> FullModel:
-    """The finite-element model of harmonic k (0 or 1) per newton of the thrust oscillation.
+    """The finite-element model of harmonic k (0 or 1) per newton of the thrust oscillation,
+    with the vehicle's lumped masses and its tanks' liquid (added mass per k; at k = 0 the
+    closed full tanks keep their volume: coordinates q with X = T q, T^T T = I).
 
     Parameters
     ----------
@@ -373,10 +473,6 @@ def full_model(
     supported_forward_end : bool
         Prestress reacted at the nose.
     """
-    if vehicle.masses or vehicle.tanks:
-        raise FieldValueError("masses" if vehicle.masses else "tanks", "(given)",
-                              "the forced response models the shell's own mass only "
-                              "(docs/theory/vehicle-physics.md, limitations)")
     dmap = dof_map(vehicle, mesh, k)
     pre = thrust_prestate(vehicle, mesh, F0, supported_forward_end=supported_forward_end)
     mats = element_set(vehicle, mesh, k, prestate=pre)
@@ -384,14 +480,37 @@ def full_model(
     rings = ring_matrix(vehicle.theory, dmap, pre, k)[np.ix_(keep, keep)]
     M, Ke, Kg = (assemble(mesh, dmap, a)[np.ix_(keep, keep)] for a in mats)
     Kg = Kg + rings  # the hoop rings where the meridian turns
+    fixed = pressure_ring_matrix(vehicle, mesh, dmap, k)  # and the pressure's
+    if fixed is not None:
+        Ke = Ke + fixed[np.ix_(keep, keep)]
+    liquid = tank_added_mass(vehicle, mesh, k)
+    Ma, extra, volume = _attached(vehicle, mesh, dmap, keep, k, liquid)
+    M = M + Ma
     nodes = mesh_nodes(mesh)
     r = nodes[3]
     D = _node_displacements(mesh, dmap, keep, nodes[0], nodes[1])
     F = share * (D[0, 0] if k == 0 else 0.5 * (D[0, 2] - D[0, 1]))  # unit aft-edge load
     KL = Ke + Kg
+    T, D_kept = None, D
+    if liquid is not None and liquid.constraint is not None:  # closed full tanks, k = 0
+        C = liquid.constraint[:, keep]
+        L = np.linalg.solve(C @ C.T, C)  # mu = L r: the uniform pressures of a residual r
+        volume = (volume, L, KL, M, F)
+        Q = np.linalg.qr(C.T, mode="complete")[0]
+        T = Q[:, np.linalg.matrix_rank(C):]  # the motions with C X = 0
+        M, KL, Ke, F = T.T @ M @ T, T.T @ KL @ T, T.T @ Ke @ T, T.T @ F
+        D = D @ T
+    else:
+        volume = None
     w2, Phi, n_rigid = _basis(KL if k == 0 else Ke, M, n_modes, omega_max)
     if np.any(w2[n_rigid:] <= 0.0):
         raise BucklingError(f"F0 = {F0!r}: the steady thrust buckles harmonic k = {k}", k, F0)
+    if n_rigid == k + 1:  # the exact rigid fields (M-orthonormal) for the computed ones
+        R = np.array([_reduced(dmap, f)[keep] for f in rigid_body_fields(mesh, k)[:k + 1]]).T
+        R = R if T is None else T.T @ R
+        Lc = np.linalg.cholesky(R.T @ M @ R)
+        Phi = Phi.copy()
+        Phi[:, :n_rigid] = np.linalg.solve(Lc, R.T).T
     if k == 1:
         beta = -D[0, 0] / r[0]  # aft cross-section rotation, beta = -U_x / r
         psi = np.zeros(beta.size)
@@ -407,7 +526,8 @@ def full_model(
     tilt = _element_end_values(pre.force, mesh.order)  # (e, 2) at each element's two ends
     P0 = np.append(tilt[:, 0], tilt[-1, 1])  # steady axial load at each node (N, > 0)
     return FullModel(k=k, mass=M, stiffness=KL, load=F, basis=Phi, omega2=w2,
-                     n_rigid=n_rigid, parts=(mesh, dmap, keep, mats, nodes, D, P0))
+                     n_rigid=n_rigid, parts=(mesh, dmap, keep, mats, nodes, D_kept, P0, T, extra,
+                                             volume))
 
 
 def modal_model(
@@ -431,12 +551,18 @@ def modal_model(
                     supported_forward_end=supported_forward_end)
     Psi, xr, A, f = _condense(fm.stiffness, fm.mass, fm.basis, fm.load, static_correction)
     omega = np.sqrt(fm.omega2)
+    if k == 0:  # K R = R^T K = 0 for the axial translation exactly (gradient forms): drop the
+        A = A.copy()  # round-off of Phi_r^T K Psi, which 1 / Omega^2 amplifies as Omega -> 0
+        A[:fm.n_rigid], A[:, :fm.n_rigid] = 0.0, 0.0
     damp = 2.0 * damping_ratio * omega
     free = np.arange(omega.size) < fm.n_rigid
     if k == 1 and fm.n_rigid == 2 and gimbal_gain > 0.0:  # the gimbaled pitch: an oscillator
         free[0] = False
         damp[0] = 2.0 * pitch_damping_ratio * np.sqrt(max(A[0, 0], 0.0))
     stiff, mass = fm.node_rows(np.column_stack([Psi, xr]))
+    stiff[..., -1] += fm.load_rows()
+    if k == 0:  # no elastic force in the axial translation (its round-off left out)
+        stiff[:, 1:, :fm.n_rigid] = 0.0
     return ModalModel(k=k, omega_modes=omega, n_rigid=fm.n_rigid, free=free, stiffness=A,
                       damping=np.diag(damp), load=f, node_x=fm.parts[4][2], rows=ROWS[k],
                       stiffness_map=stiff[..., :-1], mass_map=mass[..., :-1],

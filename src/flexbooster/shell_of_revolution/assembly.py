@@ -30,6 +30,7 @@ from .prestress import (
     load_path,
     membrane_prestate,
     pressure_resultants,
+    pressure_rings,
     total_mass,
 )
 
@@ -46,6 +47,7 @@ __all__ = [
     "ring_matrix",
     "ring_rows",
     "lumped_mass_matrix",
+    "pressure_ring_matrix",
     "node_transform",
     "auto_element_counts",
     "MAX_ELEMENTS",
@@ -434,6 +436,25 @@ def ring_matrix(theory: str, dmap: DofMap, prestate: Prestate, k: int) -> np.nda
     return out
 
 
+def pressure_ring_matrix(vehicle: Vehicle, mesh: Mesh, dmap: DofMap, k: int) -> np.ndarray | None:
+    """Fixed geometric stiffness (N/m, reduced (n, n)) of the internal pressure's junction rings
+    (:func:`.prestress.pressure_rings`, :func:`ring_matrix`), part of K_e; None without them.
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        The vehicle (its theory).
+    mesh : Mesh
+        Mesh of the vehicle.
+    dmap : DofMap
+        Constraint map of harmonic k.
+    k : int
+        Circumferential wave number, >= 0.
+    """
+    rings = pressure_rings(mesh)
+    return None if rings is None else ring_matrix(vehicle.theory, dmap, rings, k)
+
+
 def ring_rows(mesh: Mesh, dmap: DofMap, station: float) -> tuple[np.ndarray, float]:
     """Rows (3, n) over the reduced DOFs giving the amplitudes (u_x, u_r, v) of the wall's ring
     at an axial station (m from the aft edge), from the shape functions of the (first) non-flat
@@ -577,10 +598,14 @@ def harmonic_matrices(vehicle: Vehicle, mesh: Mesh, k: int, *,
     if prestate is not None:
         geo = assemble(mesh, dmap, kg) + ring_matrix(vehicle.theory, dmap, prestate, k)
     mass = assemble(mesh, dmap, m)
+    stiffness = assemble(mesh, dmap, ke)
+    rings = pressure_ring_matrix(vehicle, mesh, dmap, k)
+    if rings is not None:
+        stiffness = stiffness + rings
     lumped = lumped_mass_matrix(vehicle, mesh, dmap, k)
     if lumped is not None:
         mass = mass + lumped
-    return HarmonicMatrices(k=k, dmap=dmap, mass=mass, stiffness=assemble(mesh, dmap, ke),
+    return HarmonicMatrices(k=k, dmap=dmap, mass=mass, stiffness=stiffness,
                             geometric=geo, element_stiffness=ke)
 
 

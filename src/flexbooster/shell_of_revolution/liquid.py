@@ -105,11 +105,25 @@ class AddedMass:
     constraint : ndarray, shape (n,), or None
         Closed full tank, k = 0: volume change per unit DOF (m^3); the motion must satisfy
         ``constraint @ q = 0``. None otherwise.
+    point_force : ndarray, shape (n_points, n), or None
+        The liquid's pressure force at each wall point per unit DOF acceleration (N s^2 / m per
+        m of normal displacement): ``matrix = displacement.T @ point_force + aft_end[:, None]
+        * end_force[0] + fwd_end[:, None] * end_force[1]``, the split of the inertia force by
+        where the pressure acts (force summation over a part of the wall). None: no liquid.
+    end_force : ndarray, shape (2, n), or None
+        The same on the rigid aft and forward ends (per unit u_x / r^k of the end).
+    point_volume, end_volume : ndarray, shape (n_points,) and (2,), or None
+        Closed full tank, k = 0: ``constraint = displacement.T @ point_volume + aft_end *
+        end_volume[0] + fwd_end * end_volume[1]`` (m^2, m^3 per unit u_x); None otherwise.
     """
 
     k: int
     matrix: np.ndarray
     constraint: np.ndarray | None
+    point_force: np.ndarray | None = None
+    end_force: np.ndarray | None = None
+    point_volume: np.ndarray | None = None
+    end_volume: np.ndarray | None = None
 
 
 def _end_row(name: str, value, n: int) -> np.ndarray:
@@ -160,9 +174,12 @@ def added_mass(mesh: LiquidMesh, k: int, wall: WallQuadrature, displacement: np.
               val * (wall.weight * wall.r)[:, None])
     nodes, W = [np.arange(nx) * ny + ny - 1], [trace @ N]
     moment = radial_moments(mesh, k + 1)
-    for line, sign, row in [(0, -1.0, rows[0])] + [(nx - 1, 1.0, rows[1])] * (tank.fill == 1.0):
+    ends = [(0, -1.0, rows[0])] + [(nx - 1, 1.0, rows[1])] * (tank.fill == 1.0)
+    end_weight = []  # per end: the weight of its nodes (sign R^(k+2) moment)
+    for line, sign, row in ends:
         nodes.append(line * ny + np.arange(ny))
-        W.append(sign * float(tank.radius(mesh.x_nodes[line])) ** (k + 2) * np.outer(moment, row))
+        end_weight.append(sign * float(tank.radius(mesh.x_nodes[line])) ** (k + 2) * moment)
+        W.append(np.outer(end_weight[-1], row))
     nodes, W = np.concatenate(nodes), np.concatenate(W)
     keep = index[nodes] >= 0
     bd, inv = np.unique(index[nodes][keep], return_inverse=True)
@@ -180,5 +197,21 @@ def added_mass(mesh: LiquidMesh, k: int, wall: WallQuadrature, displacement: np.
     rhs = np.zeros((H.shape[0], bd.size))
     rhs[bd, np.arange(bd.size)] = 1.0
     Z = splu(H, permc_spec="MMD_AT_PLUS_A").solve(rhs)[bd]
-    M = tank.density * theta_weight(k) * Gb.T @ (0.5 * (Z + Z.T)) @ Gb
-    return AddedMass(k, 0.5 * (M + M.T), constraint)
+    P = tank.density * theta_weight(k) * (0.5 * (Z + Z.T)) @ Gb  # node pressures x weights
+    M = Gb.T @ P
+    # the same product split by where the pressure acts: per wall point, per end
+    node_p = np.zeros((nodes.size, n))
+    node_p[keep] = P[inv]
+    wr = val * (wall.weight * wall.r)[:, None]  # the nonzeros of trace, point by point
+    point_force = np.einsum("pj,pjn->pn", wr, node_p[:nx][axial])
+    end_force = np.zeros((2, n))
+    point_volume = end_volume = None
+    if constraint is not None:
+        point_volume = theta_weight(0) * wall.weight * wall.r
+        end_volume = np.zeros(2)
+    for i, ((_, _, _), wgt) in enumerate(zip(ends, end_weight, strict=True)):
+        end_force[i] = wgt @ node_p[nx + i * ny:nx + (i + 1) * ny]
+        if constraint is not None:
+            end_volume[i] = theta_weight(0) * wgt.sum()
+    return AddedMass(k, 0.5 * (M + M.T), constraint, point_force, end_force, point_volume,
+                     end_volume)

@@ -17,6 +17,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import scipy.linalg as sla
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
 
 from ..checks import count, finite, positive
 from .assembly import (
@@ -32,7 +34,7 @@ from .assembly import (
 )
 from .elements import element_energies, element_fields, reference_element
 from .geometry import Vehicle
-from .prestress import Prestate, load_path, pressure_resultants
+from .prestress import Prestate, load_path, pressure_resultants, pressure_rings
 from .wetted_wall import tank_added_mass
 
 __all__ = [
@@ -67,6 +69,11 @@ MODE_TYPES = ("axial", "torsional", "breathing", "bending", "radial")
 BAND_FACTOR = 5.0
 #: Largest harmonic accepted.
 K_MAX = 200
+#: Mode shape samples within this fraction of the peak magnitude count as the peak for the sign.
+SIGN_TIE_RTOL = 1e-6
+#: The lowest modes of a harmonic without rigid motions by sparse shift-invert Lanczos
+#: (:func:`_lowest_sparse`) from this many DOFs on, when at most an eighth of them is wanted.
+SPARSE_MIN_DOFS = 200
 #: Shape samples per element of the labels of :func:`labelled_modal_system` (the default
 #: ``points_per_element`` of :func:`vehicle_modes`, whose labels it reproduces).
 _LABEL_POINTS = 9
@@ -326,6 +333,29 @@ def _none_below(stiff: np.ndarray, mass: np.ndarray, w2: float) -> bool:
     return True
 
 
+def _lowest_sparse(A: np.ndarray, B: np.ndarray, count: int) -> tuple | None:
+    """The ``count`` lowest eigenpairs of A x = lambda B x (symmetric, B positive definite),
+    B-normalised, ascending, when A is positive definite (None otherwise): Lanczos in
+    shift-invert mode about 0 (ARPACK; R. B. Lehoucq, D. C. Sorensen, C. Yang, *ARPACK Users'
+    Guide*, 1998, sec. 3.2) on a symmetric sparse LU of A, to machine precision (tol = 0).
+    The pairs of the dense ``eigh``; one sparse factorisation of the banded FE matrix (dense
+    only in the liquid's blocks) instead of a dense tridiagonal reduction. Positive
+    definiteness by Sylvester's law of inertia: the pivots of the symmetric factorisation
+    (no row interchange) are all positive.
+    """
+    As = sp.csc_matrix(A)
+    lu = spla.splu(As, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
+                   options={"SymmetricMode": True})
+    if np.any(lu.perm_r != lu.perm_c) or np.any(lu.U.diagonal() <= 0.0):
+        return None
+    op = spla.LinearOperator(A.shape, matvec=lu.solve, dtype=float)
+    vals, vecs = spla.eigsh(As, k=count, M=sp.csr_matrix(B), sigma=0.0,
+                            OPinv=op, which="LM", tol=0.0, v0=np.ones(A.shape[0]))
+    order = np.argsort(vals)
+    vals, vecs = vals[order], vecs[:, order]
+    return vals, vecs / np.sqrt(np.einsum("ij,ij->j", vecs, B @ vecs))
+
+
 def _solve(h: _Harmonic, *, loaded: bool, n_modes: int | None, w2_max: float | None):
     """Lowest eigenpairs (omega^2, reduced vectors (n, m), M-orthonormal) of K_e x = omega^2
     M x, or of (K_e + K_g) x = omega^2 M x when ``loaded``, on the complement of the rigid
@@ -344,7 +374,15 @@ def _solve(h: _Harmonic, *, loaded: bool, n_modes: int | None, w2_max: float | N
     kw: dict = {"driver": "gvx"}
     if n_modes is not None:
         kw["subset_by_index"] = (0, min(n, n_modes) - 1)
-    if w2_max is not None:
+    sparse = None
+    if n_modes is not None and h.Q is None and n >= SPARSE_MIN_DOFS and n_modes <= n // 8:
+        sparse = _lowest_sparse(A, B, n_modes)
+    if sparse is not None:
+        vals, vecs = sparse
+        if w2_max is not None:
+            sel = vals <= w2_max
+            vals, vecs = vals[sel], vecs[:, sel]
+    elif w2_max is not None:
         if n_modes is not None:
             vals, vecs = sla.eigh(A, B, **kw)
             sel = vals <= w2_max
@@ -390,8 +428,12 @@ def _rayleigh(h: _Harmonic, vecs: np.ndarray, *, loaded: bool) -> np.ndarray:
     energy = element_energies(fields, _local(mesh, h.dmap, vecs), ns0=ns0, nt0=nt0)
     if pre is not None and pre.ring_node.size:
         ring = ring_matrix(h.theory, h.dmap, pre, h.k)
-        energy = energy + np.einsum("am,ab,bm->m", vecs, ring, vecs)
-    return energy / np.einsum("am,ab,bm->m", vecs, h.M, vecs)
+        energy = energy + np.einsum("am,am->m", vecs, ring @ vecs)
+    rings = pressure_rings(mesh)  # the pressure's junction rings, part of K_e
+    if rings is not None:
+        ring = ring_matrix(h.theory, h.dmap, rings, h.k)
+        energy = energy + np.einsum("am,am->m", vecs, ring @ vecs)
+    return energy / np.einsum("am,am->m", vecs, h.M @ vecs)  # matrix products (BLAS)
 
 
 def _sample(mesh: Mesh, dmap, vecs: np.ndarray, xi: np.ndarray):
@@ -431,7 +473,10 @@ def _labels(mesh: Mesh, h: _Harmonic, vecs: np.ndarray, k: int, n_pts_per_el: in
     peak[peak == 0] = 1.0
     sh = sh / peak[:, None, None]
     flat = sh.reshape(m, -1)
-    sign = np.sign(flat[np.arange(m), np.argmax(np.abs(flat), axis=1)])
+    # sign: the first sample within SIGN_TIE_RTOL of the peak is positive (a tie, e.g. a
+    # breathing lobe of +1 and one of -1, decided by position, not by round-off)
+    first = np.argmax(np.abs(flat) >= 1.0 - SIGN_TIE_RTOL, axis=1)
+    sign = np.sign(flat[np.arange(m), first])
     sh = sh * sign[:, None, None]
     dom = np.argmax(share, axis=1)
     comp = sh[np.arange(m), dom]  # (m, pts)

@@ -29,7 +29,8 @@ if TYPE_CHECKING:
     from .geometry import Vehicle
 
 __all__ = ["AXIAL_SUPPORTS", "LOAD_PATHS", "Prestate", "AttachedLoads", "attached_loads",
-           "load_path", "membrane_prestate", "pressure_resultants", "total_mass"]
+           "load_path", "membrane_prestate", "pressure_resultants", "pressure_rings",
+           "total_mass"]
 
 #: End conditions that restrain the axial motion of an edge (u = 0).
 AXIAL_SUPPORTS = ("hinged", "clamped")
@@ -167,27 +168,39 @@ def membrane_prestate(mesh: Mesh, path: str, *, aft_force: float,
     hoop = np.where(flat[:, None], 0.0, r * p_n / cos)  # normal equilibrium, 1/R_s = 0
     # rings where the meridian turns: each segment's edges (inside a segment phi is constant)
     f_end = start + before + total + (carried(x_end, True) if points.size else 0.0)
+
+    def edge_ns(e, end, rad, cos_e):  # N_s of the axial force carried at the edge
+        fax = f_end[e] if end else start + before[e] + (
+            carried(np.asarray(mesh.x1[e])) if points.size else 0.0)
+        return -fax / (2.0 * np.pi * rad * cos_e)
+
+    rings = _junction_rings(mesh, edge_ns)
+    return Prestate(load_path=path, force=force, meridional=meridional, hoop=hoop,
+                    ring_node=rings[0], ring_frame=rings[1], ring_radius=rings[2],
+                    ring_force=rings[3])
+
+
+def _junction_rings(mesh: Mesh, edge_ns) -> tuple:
+    """(node, frame, radius, H) arrays of the rings at both edges of every cone segment (inside
+    a segment phi is constant): H = r N_s sin(phi) of the shell beyond the edge, N_s =
+    ``edge_ns(element, end, r, cos(phi))`` (end 0 aft, 1 forward).
+    """
     r_end = mesh.r1 + mesh.length * mesh.sin_phi
     nodes, frames, radii, hoops = [], [], [], []
     for i in range(len(mesh.elements_per_segment)):
         el = np.nonzero(mesh.segment == i)[0]
         first, last = el[0], el[-1]
-        sin, cos_i = mesh.sin_phi[first], (1.0 if flat[first] else mesh.cos_phi[first])
-        if sin == 0.0 or flat[first]:
+        sin, cos_i = mesh.sin_phi[first], mesh.cos_phi[first]
+        if sin == 0.0 or abs(cos_i) < 1e-12:
             continue
-        f_aft = start + before[first] + (
-            carried(np.asarray(mesh.x1[first])) if points.size else 0.0)
-        for node, frame, rad, fax, sign in (
-                (mesh.dofs[first, 0], mesh.frame[first, 0], mesh.r1[first], f_aft, 1.0),
-                (mesh.dofs[last, 4], mesh.frame[last, 1], r_end[last], f_end[last], -1.0)):
-            ns = -fax / (2.0 * np.pi * rad * cos_i)
+        for e, end, node, frame, rad, sign in (
+                (first, 0, mesh.dofs[first, 0], mesh.frame[first, 0], mesh.r1[first], 1.0),
+                (last, 1, mesh.dofs[last, 4], mesh.frame[last, 1], r_end[last], -1.0)):
             nodes.append(node)
             frames.append(frame)
             radii.append(rad)
-            hoops.append(sign * rad * ns * sin)  # H = r (N_s sin(phi)) of the shell beyond
-    return Prestate(load_path=path, force=force, meridional=meridional, hoop=hoop,
-                    ring_node=np.array(nodes, dtype=int), ring_frame=np.array(frames),
-                    ring_radius=np.array(radii), ring_force=np.array(hoops))
+            hoops.append(sign * rad * edge_ns(e, end, rad, cos_i) * sin)
+    return (np.array(nodes, dtype=int), np.array(frames), np.array(radii), np.array(hoops))
 
 
 def pressure_resultants(mesh: Mesh) -> tuple[np.ndarray, np.ndarray] | None:
@@ -208,6 +221,35 @@ def pressure_resultants(mesh: Mesh) -> tuple[np.ndarray, np.ndarray] | None:
     flat = np.abs(mesh.cos_phi) < 1e-12
     hoop = np.where(flat, 0.0, mesh.pressure / np.where(flat, 1.0, mesh.cos_phi))[:, None] * r
     return 0.5 * hoop, hoop
+
+
+def pressure_rings(mesh: Mesh) -> Prestate | None:
+    """The rings of the internal pressure where the meridian turns: at each edge of a
+    pressurised cone the meridional resultant N_s = p r / (2 cos(phi)) of
+    :func:`pressure_resultants` has the radial component N_s sin(phi), which the junction
+    carries as a hoop force H = r N_s sin(phi) = p r^2 tan(phi) / 2 (aft edge; the opposite
+    sign at the forward edge: the cone lies on the other side), tension positive (membrane
+    equilibrium of the junction ring, Fluegge 1973, sec. 2.2; a cone converging forward puts
+    its aft junction in compression). A :class:`Prestate` with these rings and no resultants
+    (load path "pressure"; its K_g is fixed, as the pressure's), None without a pressurised
+    cone.
+
+    Parameters
+    ----------
+    mesh : Mesh
+        Mesh of the vehicle (its ``pressure``).
+    """
+    if mesh.pressure is None:
+        return None
+    rings = _junction_rings(mesh, lambda e, end, rad, cos_e: mesh.pressure[e] * rad
+                            / (2.0 * cos_e))
+    on = rings[3] != 0.0  # the pressurised cones
+    if not np.any(on):
+        return None
+    nodes, frames, radii, hoops = (a[on] for a in rings)
+    zeros = np.zeros((mesh.n_elements, reference_element(mesh.order).xi.size))
+    return Prestate(load_path="pressure", force=zeros, meridional=zeros, hoop=zeros,
+                    ring_node=nodes, ring_frame=frames, ring_radius=radii, ring_force=hoops)
 
 
 def _gauss_points(mesh: Mesh) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

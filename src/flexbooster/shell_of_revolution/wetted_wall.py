@@ -52,12 +52,18 @@ class WettedWall:
         Normal displacement w (m per unit reduced DOF) at the points.
     aft_end, fwd_end : ndarray, shape (n,)
         Axial displacement u_x / r^k of the shell edge at the tank's ends (k <= 1; else zero).
+    element : ndarray of int, shape (n_points,)
+        The shell element of each point.
+    end_element : tuple of int
+        The shell elements whose edges are the tank's aft and forward ends (-1 for k >= 2).
     """
 
     wall: WallQuadrature
     displacement: np.ndarray
     aft_end: np.ndarray
     fwd_end: np.ndarray
+    element: np.ndarray
+    end_element: tuple
 
 
 def wetted_wall(vehicle: Vehicle, mesh: Mesh, tank: Tank, k: int, *,
@@ -114,6 +120,7 @@ def wetted_wall(vehicle: Vehicle, mesh: Mesh, tank: Tank, k: int, *,
                           normal=np.stack([-mesh.sin_phi[el], mesh.cos_phi[el]], axis=1),
                           weight=wt)
     ends = [np.zeros(dmap.n), np.zeros(dmap.n)]
+    end_el = [-1, -1]
     if k <= 1:
         for i, (station, end) in enumerate(((tank.aft, 0), (tank.fwd, 1))):
             edge = (mesh.x1, x2)[end]  # the element that starts (ends) the tank's wall
@@ -123,12 +130,13 @@ def wetted_wall(vehicle: Vehicle, mesh: Mesh, tank: Tank, k: int, *,
                 raise ValueError(f"tank end at {station!r} m: not an element end of the "
                                  "shell's mesh (make the tank with vehicle_tank)")
             e = int(at[-end])
+            end_el[i] = e
             r = mesh.r1[e] + end * mesh.length[e] * mesh.sin_phi[e]
             fr = mesh.frame[e, end]  # u_x = a cos(frame) - b sin(frame)
             row = np.zeros((1, ref.n_dof))
             row[0, 4 * end], row[0, 4 * end + 2] = np.cos(fr) / r**k, -np.sin(fr) / r**k
             ends[i] = _reduce(dmap, mesh.dofs[e][None], row)[0]
-    return WettedWall(wall, N, ends[0], ends[1])
+    return WettedWall(wall, N, ends[0], ends[1], el, tuple(end_el))
 
 
 def _reduce(dmap, dofs: np.ndarray, rows: np.ndarray) -> np.ndarray:
@@ -211,16 +219,23 @@ class TankMass:
     basis : ndarray, shape (n, m), or None
         Orthonormal basis of the motions that keep every closed full tank's volume (k = 0);
         None when no tank constrains the motion.
+    constraint : ndarray, shape (n_c, n), or None
+        The volume change per unit DOF of each constraining tank (m^3): ``constraint @ q = 0``.
+    parts : tuple of (WettedWall, AddedMass, ndarray)
+        Per tank: its wetted wall, its added mass on the DOFs ``columns`` (the third item) and
+        so the split of its inertia force by where the pressure acts (force summation).
     """
 
     matrix: np.ndarray
     basis: np.ndarray | None
+    constraint: np.ndarray | None = None
+    parts: tuple = ()
 
 
 def _added(vehicle: Vehicle, mesh: Mesh, k: int, tanks: tuple, lms: tuple, n: int) -> TankMass:
     """Added mass and volume-constraint basis of the tanks ``tanks`` (their liquid meshes)."""
     Ma = np.zeros((n, n))
-    cons = []
+    cons, parts = [], []
     for t, lm in zip(tanks, lms, strict=True):
         ww = wetted_wall(vehicle, mesh, t, k, breaks=lm.x_breaks)
         # only the DOFs that move the wetted wall or the tank's ends (the rest add zeros)
@@ -229,15 +244,17 @@ def _added(vehicle: Vehicle, mesh: Mesh, k: int, tanks: tuple, lms: tuple, n: in
         am = added_mass(lm, k, ww.wall, ww.displacement[:, cols], aft_end=ww.aft_end[cols],
                         fwd_end=ww.fwd_end[cols])
         Ma[np.ix_(cols, cols)] += am.matrix
+        parts.append((ww, am, cols))
         if am.constraint is not None:
             full = np.zeros(n)
             full[cols] = am.constraint
             cons.append(full)
     if not cons:
-        return TankMass(Ma, None)
+        return TankMass(Ma, None, None, tuple(parts))
     C = np.array(cons)
     Q = np.linalg.qr(C.T, mode="complete")[0]
-    return TankMass(Ma, Q[:, np.linalg.matrix_rank(C):])  # the motions with C q = 0
+    # the motions with C q = 0
+    return TankMass(Ma, Q[:, np.linalg.matrix_rank(C):], C, tuple(parts))
 
 
 @lru_cache(maxsize=32)
