@@ -124,6 +124,7 @@ def _tank_case(n_tanks: int, n_masses: int = 0):
     """The default case with a [vehicle] of three 2 m cylinders (R 1.5 m, 4 mm aluminium) and
     the first ``n_tanks`` of its three segments filled to 60 %, ``n_masses`` masses of 500 kg."""
     data = tomllib.loads(default_case_text())
+    del data["booster"]  # one vehicle per case: the segments
     cyl = {"kind": "cylinder", "radius": 1.5, "length": 2.0, "thickness": 0.004}
     data["vehicle"] = {
         "E": 70e9, "nu": 0.3, "rho": 2700.0, "segments": [dict(cyl) for _ in range(3)],
