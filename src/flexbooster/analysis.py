@@ -21,6 +21,7 @@ from .checks import count, finite, positive
 from .danger import danger_summary
 from .dynamics import VehicleRegions, region_curves, vehicle_regions
 from .errors import AnalysisWarning
+from .flight_stage import flight_stage
 from .memo import charts
 from .memo.beam import beam_modes
 from .memo.beam_action import PeriodMapOverflowError, beam_action_analysis
@@ -182,6 +183,8 @@ def analyze(
             extra += skipped
             if regions is not None and table is not None:
                 matches = memo_roots_in_regions(table, regions)
+        flight, skipped = flight_stage(case) if vehicle else (None, [])  # [flight] only
+        extra += skipped
     return Results(
         case=case,
         mass=model.mass,
@@ -201,6 +204,7 @@ def analyze(
         memo_roots_in_regions=matches,
         danger=_danger(model, pitch, action, regions, severity),
         severity=severity,
+        flight=flight,
     )
 
 
@@ -241,8 +245,8 @@ def _feasibility(case: Case, model: BoosterModel, *, with_regions: bool = True,
     cost.check_physical(model)
     # the vehicle stages too: modes survey, regions (lower bound with damping)
     veh = dict(regions=with_regions, figures=stages.get("figures", True))
-    est = cost.check_case_cost(model, case.max_seconds,
-                               vehicle=cost.estimate_vehicle_cost(case, **veh), **stages)
+    vehicle = cost.with_flight(case, cost.estimate_vehicle_cost(case, **veh))  # [flight]
+    est = cost.check_case_cost(model, case.max_seconds, vehicle=vehicle, **stages)
     out = cost.physical_warnings(model) + cost.capped_steps_warning(est, model)
     if est.seconds > 0.5 * case.max_seconds:
         out.append(AnalysisWarning("cost-estimate", "max_seconds",

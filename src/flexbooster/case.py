@@ -19,6 +19,7 @@ import numpy as np
 from pydantic import BaseModel, ConfigDict, StrictInt, ValidationError, field_validator
 
 from .errors import CaseError
+from .flight_case import FlightTable, check_flight
 from .units import to_si
 from .vehicle_case import VehicleTable, check_vehicle
 
@@ -307,6 +308,7 @@ class Case(BaseModel):
     truncation: Truncation = Truncation()
     damping: Damping = Damping()
     vehicle: VehicleTable | None = None
+    flight: FlightTable | None = None  # flexbooster.flight_case
     output: Output = Output()
 
     @field_validator("max_seconds", mode="before")
@@ -344,6 +346,8 @@ class Case(BaseModel):
         data["thrust"]["T0"] = self.T0
         if data.get("vehicle") is None:  # no [vehicle]: results.json as before
             data.pop("vehicle", None)
+        if data.get("flight") is None:  # no [flight]: results.json as before
+            data.pop("flight", None)
         if data.get("output") == {"units": "SI"}:  # the default [output]: as before
             data.pop("output", None)
         return data
@@ -453,6 +457,8 @@ def _cross_checks(case: Case) -> None:
             f"must not exceed N + 1 = {n.N + 1} (rigid rotation plus N elastic modes)",
         )
     check_vehicle(case.vehicle, booster_radii=(b.cylinder1.radius, b.cylinder2.radius))
+    check_flight(case.flight, n_tanks=len(case.vehicle.tanks) if case.vehicle else 0,
+                 segments=case.vehicle is not None and case.vehicle.segments is not None)
 
 
 def _validate(data: Mapping[str, Any]) -> Case:

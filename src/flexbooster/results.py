@@ -14,6 +14,7 @@ from . import __version__
 from .danger import DangerSummary
 from .dynamics import VehicleRegions
 from .errors import AnalysisWarning
+from .flight_results import FlightResults
 from .memo.beam import BeamModes
 from .memo.beam_action import BeamActionResult
 from .memo.charts import FigureData
@@ -153,6 +154,8 @@ class Results:
         The memo-table roots inside each region.
     danger : DangerSummary or None
         One verdict per mechanism and the ranked bands (the first screen).
+    flight : FlightResults or None
+        The vehicle through the case's [flight] (:mod:`flexbooster.flight_stage`).
     severity : SeverityResult or None
         Severity of the roots and their bands (results.json ``stability.severity``).
     """
@@ -175,6 +178,7 @@ class Results:
     memo_roots_in_regions: MemoRootsInRegions | None = None
     danger: DangerSummary | None = None
     severity: SeverityResult | None = None
+    flight: FlightResults | None = None  # only for a case with [flight]
 
     @property
     def Omega(self) -> np.ndarray:
@@ -220,6 +224,8 @@ class Results:
         if self.vehicle is not None:  # only for a case with [vehicle] (units inside)
             out["vehicle_modes"] = self.vehicle.to_dict()
         out["vehicle_regions"] = self._vehicle_regions_dict()
+        if self.flight is not None:  # only for a case with [flight]
+            out["flight"] = self.flight.to_dict()
         return out
 
     def _vehicle_regions_dict(self) -> dict[str, Any] | None:
