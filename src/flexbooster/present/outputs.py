@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING
 
 from ..results import Results
 from .figure_files import render_figure
+from .flight import flight_figure_names, write_flight_csvs
 from .io import (
     hold_signals,
     locked_folder,
@@ -160,6 +161,7 @@ def _write_files(results: Results, folder: Path, figures: bool,
 
             written.append(write_csv_atomic(folder / "vehicle-regions.csv",
                                             vehicle_region_columns(results.vehicle_regions)))
+        written += write_flight_csvs(getattr(results, "flight", None), folder)  # [flight]
         svgs: dict[str, str] = {}
         if names:
             step(OUTPUT_STAGES[1])
@@ -283,6 +285,7 @@ def figure_names(results: Results) -> tuple[str, ...]:
         from .vehicle import vehicle_figure_names
 
         names += vehicle_figure_names(results.vehicle)
+    names += flight_figure_names(getattr(results, "flight", None))  # [flight] only
     return tuple(names)
 
 
@@ -305,6 +308,7 @@ def make_figures(results: Results, *, names=None) -> dict[str, Figure]:
     from .plotting.bands import plot_band_chart
     from .plotting.beam import mode_shape_plot
     from .plotting.danger import danger_map
+    from .plotting.flight import flight_campbell
     from .plotting.patterns import nodal_patterns
     from .plotting.pitch import ince_strutt_chart
     from .plotting.shell import frequency_curves
@@ -333,6 +337,7 @@ def make_figures(results: Results, *, names=None) -> dict[str, Figure]:
                                                      omega_1=results.omega_1),
         "campbell": lambda: campbell_diagram(data.campbell),
         "vehicle-regions": lambda: vehicle_region_figures(results)["vehicle-regions"],
+        "flight-campbell": lambda: flight_campbell(results.flight),
     }
     figs: dict[str, Figure] = {}
     vehicle = [name for name in wanted if name not in makers]

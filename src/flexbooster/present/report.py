@@ -31,6 +31,7 @@ from ..memo.charts import (
     VEHICLE_CHART_LEVELS,
 )
 from ..results import Results
+from .flight import flight_report_html
 from .io import write_text_atomic
 from .rows import (
     BAND_COLUMNS,
@@ -87,6 +88,13 @@ SECTIONS: tuple[tuple[str, str], ...] = (
 #: :func:`flexbooster.present.outputs.write_outputs`) -> section
 #: and caption.
 FIGURES: dict[str, tuple[str, str]] = {
+    "flight-campbell": (
+        "flight",
+        "The flight's Campbell diagram: the frequencies of the tracked modes of every harmonic "
+        "k against flight time, the thrust oscillation band shaded grey, and the events (bars "
+        "along the top, numbered worst first: black a parametric region met by the band, red a "
+        "k = 0 resonance crossed).",
+    ),
     "danger-map": (
         "summary",
         "Danger map: every unstable band of the thrust frequency Omega (Hz, logarithmic) of "
@@ -661,11 +669,14 @@ def render_report(results: Results, svgs: Mapping[str, str] | None = None,
         "verification": _verification,
         "warnings": lambda: _warnings(results),
         "vehicle-modes": lambda: _vehicle(results, svgs),
+        "flight": lambda: flight_report_html(results.flight) + _figure("flight-campbell", svgs),
     }
     sections = SECTIONS
     if results.vehicle is not None:  # a case with [vehicle]: before the verification summary
         sections = (*SECTIONS[:-2], ("vehicle-modes", "Vehicle modes (shell of revolution)"),
                     *SECTIONS[-2:])
+    if getattr(results, "flight", None) is not None:  # a case with [flight]: the flight section
+        sections = (*sections[:-2], ("flight", "Through the flight"), *sections[-2:])
     title = f"flexbooster report: {case.name}"
     parts = [
         "<!DOCTYPE html>",

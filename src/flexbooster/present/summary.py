@@ -140,6 +140,12 @@ def print_summary(results: Results, console: Console | None = None) -> None:
     from .vehicle import print_vehicle_regions
 
     print_vehicle_regions(results, console)
+    if getattr(results, "flight", None) is not None:  # a case with [flight] only
+        from .flight import flight_lines
+
+        console.print("[bold]Flight[/bold] (worst moment first)")
+        for line in flight_lines(results.flight):
+            console.print("  " + escape(line))
     if results.warnings:
         console.print(f"[bold yellow]Warnings ({len(results.warnings)}):[/bold yellow]")
         for w in results.warnings:
