@@ -293,6 +293,8 @@ class Case(BaseModel):
         Optional tables (no damping by default).
     vehicle : VehicleTable or None
         The optional ``[vehicle]`` table (:mod:`flexbooster.vehicle_case`).
+    flight : FlightTable or None
+        The optional ``[flight]`` table (:mod:`flexbooster.flight_case`).
     output : Output
         Optional ``[output]``: ``units = "SI" | "US"`` of the summary and report.
     max_seconds : float

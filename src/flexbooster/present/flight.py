@@ -18,7 +18,13 @@ FLIGHT_FIGURES = ("flight-campbell",)
 
 
 def event_text(e) -> str:
-    """One event in words: mechanism, k, modes, interval, growth or peak."""
+    """One event in words: mechanism, k, modes, interval, growth or peak.
+
+    Parameters
+    ----------
+    e : FlightEvent
+        The event.
+    """
     k = "" if e.k is None else f" k = {e.k}"
     what = (f"peak {e.peak_acceleration_g:.3g} g at {e.station}"
             if e.peak_acceleration_g is not None
@@ -29,7 +35,13 @@ def event_text(e) -> str:
 
 
 def flight_lines(flight: FlightResults) -> list[str]:
-    """The summary's "Flight" lines: the worst moment first, then every event, the notes."""
+    """The summary's "Flight" lines: the worst moment first, then every event, the notes.
+
+    Parameters
+    ----------
+    flight : FlightResults
+        The flight.
+    """
     t = flight.times
     out = [f"{t.size} frozen times over t = {t[0]:.4g}..{t[-1]:.4g} s; mass "
            f"{flight.mass[0].mass_kg:.4g} -> {flight.mass[-1].mass_kg:.4g} kg"]
@@ -51,13 +63,27 @@ def flight_lines(flight: FlightResults) -> list[str]:
 
 def flight_report_html(flight: FlightResults) -> str:
     """The report's flight section: the lines of :func:`flight_lines` (the figure is the
-    report's ``flight-campbell``)."""
+    report's ``flight-campbell``).
+
+    Parameters
+    ----------
+    flight : FlightResults
+        The flight.
+    """
     items = "".join(f"<li>{html.escape(line)}</li>" for line in flight_lines(flight))
     return f"<ul>{items}</ul>"
 
 
 def write_flight_csvs(flight: FlightResults | None, folder: Path) -> list[Path]:
-    """flight-modes.csv and flight-events.csv in ``folder`` (none without a flight)."""
+    """flight-modes.csv and flight-events.csv in ``folder`` (none without a flight).
+
+    Parameters
+    ----------
+    flight : FlightResults or None
+        The flight.
+    folder : pathlib.Path
+        The output set's staging folder.
+    """
     if flight is None:
         return []
     modes = flight.mode_rows() or {c: [] for c in MODE_COLUMNS}
@@ -67,5 +93,11 @@ def write_flight_csvs(flight: FlightResults | None, folder: Path) -> list[Path]:
 
 
 def flight_figure_names(flight: FlightResults | None) -> tuple[str, ...]:
-    """The flight's figure names (none without a flight)."""
+    """The flight's figure names (none without a flight).
+
+    Parameters
+    ----------
+    flight : FlightResults or None
+        The flight.
+    """
     return () if flight is None else FLIGHT_FIGURES
