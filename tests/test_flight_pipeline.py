@@ -222,3 +222,25 @@ def test_bad_flight_field_is_one_line_naming_it(change, field, rule, tmp_path, c
     assert code.value.code == 2
     err = capsys.readouterr().err
     assert len(err.strip().splitlines()) == 1 and field in err
+
+
+@pytest.mark.slow
+def test_summary_and_report_show_the_flight_worst_first(constant):
+    """The summary's "Flight" part and the report's section open with the worst moment, the
+    first event of results.json's flight (the same event in every output)."""
+    import io
+
+    from rich.console import Console
+
+    from flexbooster.present.flight import event_text
+    from flexbooster.present.report import render_report
+    from flexbooster.present.summary import print_summary
+
+    buffer = io.StringIO()
+    print_summary(constant, Console(file=buffer, width=400))
+    text = buffer.getvalue()
+    worst = "Worst moment: " + event_text(constant.flight.events[0])
+    assert "Flight (worst moment first)" in text and worst in text
+    page = render_report(constant)
+    assert '<section id="flight">' in page
+    assert page.index(worst.replace("'", "&#x27;")) > page.index('<section id="flight">')

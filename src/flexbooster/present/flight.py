@@ -13,8 +13,14 @@ from .io import write_csv_atomic
 __all__ = ["FLIGHT_FIGURES", "flight_lines", "flight_report_html", "write_flight_csvs",
            "flight_figure_names", "event_text"]
 
-#: The flight's figure (file stem).
-FLIGHT_FIGURES = ("flight-campbell",)
+#: The flight's figure (file stem) and its caption in the report.
+FLIGHT_FIGURES = {
+    "flight-campbell": (
+        "The flight's Campbell diagram: the frequencies of the tracked modes of every harmonic "
+        "k against flight time, the thrust oscillation band shaded grey, and the events (bars "
+        "along the top, numbered worst first: black a parametric region met by the band, red "
+        "a k = 0 resonance crossed)."),
+}
 
 
 def event_text(e) -> str:
@@ -100,4 +106,4 @@ def flight_figure_names(flight: FlightResults | None) -> tuple[str, ...]:
     flight : FlightResults or None
         The flight.
     """
-    return () if flight is None else FLIGHT_FIGURES
+    return () if flight is None else tuple(FLIGHT_FIGURES)

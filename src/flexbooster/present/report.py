@@ -31,7 +31,7 @@ from ..memo.charts import (
     VEHICLE_CHART_LEVELS,
 )
 from ..results import Results
-from .flight import flight_report_html
+from .flight import FLIGHT_FIGURES, flight_report_html
 from .io import write_text_atomic
 from .rows import (
     BAND_COLUMNS,
@@ -88,13 +88,6 @@ SECTIONS: tuple[tuple[str, str], ...] = (
 #: :func:`flexbooster.present.outputs.write_outputs`) -> section
 #: and caption.
 FIGURES: dict[str, tuple[str, str]] = {
-    "flight-campbell": (
-        "flight",
-        "The flight's Campbell diagram: the frequencies of the tracked modes of every harmonic "
-        "k against flight time, the thrust oscillation band shaded grey, and the events (bars "
-        "along the top, numbered worst first: black a parametric region met by the band, red a "
-        "k = 0 resonance crossed).",
-    ),
     "danger-map": (
         "summary",
         "Danger map: every unstable band of the thrust frequency Omega (Hz, logarithmic) of "
@@ -334,8 +327,8 @@ def inline_svg(svg: str, prefix: str, label: str) -> str:
     )
 
 
-def _figure(name: str, svgs: Mapping[str, str] | None) -> str:
-    caption = FIGURES[name][1]
+def _figure(name: str, svgs: Mapping[str, str] | None, caption: str | None = None) -> str:
+    caption = FIGURES[name][1] if caption is None else caption
     if not svgs or name not in svgs:
         return f'<p class="note">Figure "{_e(name)}" was not drawn (run without --no-figures).</p>'
     return (
@@ -669,7 +662,8 @@ def render_report(results: Results, svgs: Mapping[str, str] | None = None,
         "verification": _verification,
         "warnings": lambda: _warnings(results),
         "vehicle-modes": lambda: _vehicle(results, svgs),
-        "flight": lambda: flight_report_html(results.flight) + _figure("flight-campbell", svgs),
+        "flight": lambda: flight_report_html(results.flight) + _figure(
+            "flight-campbell", svgs, FLIGHT_FIGURES["flight-campbell"]),
     }
     sections = SECTIONS
     if results.vehicle is not None:  # a case with [vehicle]: before the verification summary
