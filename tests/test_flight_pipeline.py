@@ -244,3 +244,22 @@ def test_summary_and_report_show_the_flight_worst_first(constant):
     page = render_report(constant)
     assert '<section id="flight">' in page
     assert page.index(worst.replace("'", "&#x27;")) > page.index('<section id="flight">')
+
+
+def test_forced_response_refusal_is_a_warning_not_a_crash():
+    """Brief: where the forced response refuses the vehicle (its masses or tanks), the flight
+    goes on with a ``flight-forced-response`` warning naming why; a bare shell gives none.
+    (k_max = 0: the k = 0 modes only, for speed.)"""
+    data = copy.deepcopy(CASE)
+    data["vehicle"]["k_max"] = 0
+    _, warnings = flight_stage(load_case(data))
+    codes = [w.code for w in warnings]
+    if "flight-forced-response" in codes:
+        (w,) = [w for w in warnings if w.code == "flight-forced-response"]
+        assert "forced response not computed" in w.message
+    data["vehicle"].pop("tanks")
+    data["vehicle"].pop("masses")
+    for p in data["flight"]["points"]:
+        p["fill"] = []
+    _, warnings = flight_stage(load_case(data))
+    assert "flight-forced-response" not in [w.code for w in warnings]

@@ -13,7 +13,7 @@ import numpy as np
 
 from . import cost, floquet
 from .case import Case
-from .dynamics import forced_axial, vehicle_regions
+from .dynamics import forced_axial, forced_response, vehicle_regions
 from .errors import AnalysisWarning, CaseError
 from .flight import band_events, band_key, band_rate, resonance_events, track_modes, worst_first
 from .flight_results import FlightHarmonic, FlightResults
@@ -88,8 +88,7 @@ def flight_stage(case: Case) -> tuple[FlightResults | None, list[AnalysisWarning
     points = [timeline.at(float(t)) for t in times]
     masses, regions_per_time, found_per_time, modes_per_time = [], [], [], []
     for p in points:
-        vehicle = dataclasses.replace(base, tanks=tuple(
-            dataclasses.replace(tank, fill=f) for tank, f in zip(base.tanks, p.fill, strict=True)))
+        vehicle = _vehicle_at(base, p.fill)
         masses.append(mass_properties(vehicle))
         try:
             modes_per_time.append(vehicle_modes(vehicle, k_max=k_max, n_modes=n_modes,
@@ -112,8 +111,10 @@ def flight_stage(case: Case) -> tuple[FlightResults | None, list[AnalysisWarning
     harmonics = _track(times, modes_per_time, k_max)
     osc = np.array([p.oscillation for p in points])
     events = _region_events(times, points, found_per_time, harmonics, modes_per_time, osc)
-    notes = ["the forced response of the bending harmonic k = 1 along the flight is not "
-             "computed; the k = 0 axial resonances are (peak at the aft edge)"]
+    notes = ["the forced response of the bending harmonic k = 1 along the flight is not in "
+             "the events; the k = 0 axial resonances are (peak at the aft edge)"]
+    warnings = _forced_response_check(_vehicle_at(base, points[0].fill), points[0], zeta,
+                                      case.thrust.K)
     if zeta > 0.0:
         events += _axial_events(times, points, found_per_time, harmonics, osc, zeta)
     else:
@@ -122,8 +123,8 @@ def flight_stage(case: Case) -> tuple[FlightResults | None, list[AnalysisWarning
     for found, _ in found_per_time:
         for g in () if found is None else found.gaps:
             gaps.setdefault((g.limit, g.k), g)
-    warnings = [AnalysisWarning("flight-not-fully-searched", "flight", g.reason)
-                for g in gaps.values()]
+    warnings += [AnalysisWarning("flight-not-fully-searched", "flight", g.reason)
+                 for g in gaps.values()]
     result = FlightResults(
         times=times, F0=np.array([p.F0 for p in points]),
         gamma=np.array([p.gamma for p in points]),
@@ -132,6 +133,27 @@ def flight_stage(case: Case) -> tuple[FlightResults | None, list[AnalysisWarning
         harmonics=harmonics, regions=tuple(regions_per_time), omega_range=(lo, hi),
         events=tuple(worst_first(events)), gaps=tuple(gaps.values()), notes=tuple(notes))
     return result, warnings
+
+
+def _vehicle_at(base, fill: tuple):
+    """The vehicle with its tanks filled to ``fill`` (the shell, masses and mesh unchanged)."""
+    return dataclasses.replace(base, tanks=tuple(
+        dataclasses.replace(tank, fill=f) for tank, f in zip(base.tanks, fill, strict=True)))
+
+
+def _forced_response_check(vehicle, point, zeta: float, gain: float
+                           ) -> list[AnalysisWarning]:
+    """A ``flight-forced-response`` warning where :func:`flexbooster.dynamics.forced_response`
+    refuses the vehicle (e.g. its masses or tanks): the forced response is then not computed
+    along the flight; none where it accepts it (one evaluation at the band's lower edge)."""
+    try:
+        forced_response(vehicle, F0=point.F0, amplitude=point.gamma,
+                        Omega=np.array([point.oscillation[0]]), damping_ratio=max(zeta, 1e-3),
+                        gimbal_gain=gain)
+    except ValueError as exc:
+        return [AnalysisWarning("flight-forced-response", "vehicle",
+                                f"forced response not computed along the flight: {exc}")]
+    return []
 
 
 def _track(times: np.ndarray, modes_per_time: list, k_max: int) -> tuple[FlightHarmonic, ...]:
