@@ -459,8 +459,7 @@ def _cross_checks(case: Case) -> None:
             f"must not exceed N + 1 = {n.N + 1} (rigid rotation plus N elastic modes)",
         )
     check_vehicle(case.vehicle, booster_radii=(b.cylinder1.radius, b.cylinder2.radius))
-    check_flight(case.flight, n_tanks=len(case.vehicle.tanks) if case.vehicle else 0,
-                 segments=case.vehicle is not None and case.vehicle.segments is not None)
+    check_flight(case.flight, n_tanks=len(case.vehicle.tanks) if case.vehicle else 0)
 
 
 def _validate(data: Mapping[str, Any]) -> Case:

@@ -156,7 +156,7 @@ class FlightTable(BaseModel):
         return out
 
 
-def check_flight(flight: FlightTable | None, *, n_tanks: int, segments: bool) -> None:
+def check_flight(flight: FlightTable | None, *, n_tanks: int) -> None:
     """Rules of the ``[flight]`` table that involve more than one field (CaseError naming it).
 
     Parameters
@@ -165,8 +165,6 @@ def check_flight(flight: FlightTable | None, *, n_tanks: int, segments: bool) ->
         The validated table (None: nothing to check).
     n_tanks : int
         Number of ``[[vehicle.tanks]]``.
-    segments : bool
-        The case's ``[vehicle]`` has ``[[vehicle.segments]]`` (tanks need them).
     """
     if flight is None:
         return
@@ -197,5 +195,3 @@ def check_flight(flight: FlightTable | None, *, n_tanks: int, segments: bool) ->
         if flight.times[0] < start or flight.times[-1] > end:
             raise CaseError("flight.times", list(flight.times),
                             f"must lie within the points' times [{start!r}, {end!r}] s")
-    if n_tanks and not segments:
-        raise CaseError("flight.points", "fill", "tanks need [[vehicle.segments]]")
