@@ -34,6 +34,7 @@ CASE = {
                "n_omega": 20},
     "truncation": {"M1": 2, "N1": 2, "M2": 2, "N2": 2, "N": 2, "S": 2, "R": 1},
     "vehicle": {"k_max": 2, "n_modes": 4, "damping_ratio": 0.002,
+                "E": 7e10, "nu": 0.3, "rho": 2700.0,
                 "segments": [{"kind": "cylinder", "radius": 1.0, "length": 8.0,
                               "thickness": 0.004}],
                 "masses": [{"station": 8.0, "mass": 500.0}],
