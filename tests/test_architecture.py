@@ -26,11 +26,12 @@ PACKAGE = Path(flexbooster.__file__).parent
 #: Layer of each top-level module or subpackage of flexbooster (docs/architecture.md).
 LAYER = {
     "errors": "input", "units": "input", "checks": "input", "case": "input",
-    "vehicle_case": "input",
+    "vehicle_case": "input", "flight_case": "input",
     "memo": "core", "floquet": "core", "bands": "core", "shell_of_revolution": "core",
     "dynamics": "core", "flight": "core",
     "model": "model", "cost": "model", "_threads": "pipeline",
-    "results": "results", "danger": "results", "analysis": "pipeline",
+    "results": "results", "danger": "results", "flight_results": "results",
+    "analysis": "pipeline", "flight_stage": "pipeline",
     "present": "present", "sweep": "sweep", "cli": "cli", "__init__": "api", "__main__": "cli",
 }
 #: Which layers a layer may import (itself included).

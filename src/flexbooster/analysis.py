@@ -30,6 +30,7 @@ from .dynamics import (
     vehicle_regions,
 )
 from .errors import AnalysisWarning
+from .flight_stage import flight_stage
 from .memo import charts
 from .memo.beam import beam_modes
 from .memo.beam_action import PeriodMapOverflowError, beam_action_analysis
@@ -223,6 +224,8 @@ def analyze(
             step(FORCED_STAGE)
             forced, skipped = _forced_stage(case)
             extra += skipped
+        flight, skipped = flight_stage(case) if vehicle else (None, [])  # [flight] only
+        extra += skipped
     return Results(
         case=case,
         mass=model.mass,
@@ -243,6 +246,7 @@ def analyze(
         danger=_danger(model, pitch, action, regions, severity),
         severity=severity,
         forced_response=forced,
+        flight=flight,
     )
 
 
@@ -256,8 +260,10 @@ def _analyze_segments(case: Case, step: Callable[[str], None], *, figures: bool,
         step(STAGES[0])
         structure = vehicle_from_case(case)
         mass = mass_properties(structure)
-        est = cost.check_case_cost(None, case.max_seconds, vehicle=cost.estimate_vehicle_cost(
-            case, regions=regions, figures=figures, forced=regions))
+        vehicle_cost = cost.estimate_vehicle_cost(case, regions=regions, figures=figures,
+                                                  forced=regions)
+        est = cost.check_case_cost(None, case.max_seconds,
+                                   vehicle=cost.with_flight(case, vehicle_cost))  # [flight]
         if on_estimate is not None:
             on_estimate(est, case.max_seconds)
         step(STAGES[1])
@@ -278,6 +284,8 @@ def _analyze_segments(case: Case, step: Callable[[str], None], *, figures: bool,
             step(FORCED_STAGE)
             forced, skipped = _forced_stage(case)
             extra += skipped
+        flight, skipped = flight_stage(case) if regions else (None, [])  # [flight] only
+        extra += skipped
     danger = danger_summary(
         operating_range=(t.omega_min, t.omega_max),
         bands={"pitch": pitch.bands, **({} if found is None else {"vehicle": found.regions})},
@@ -289,7 +297,8 @@ def _analyze_segments(case: Case, step: Callable[[str], None], *, figures: bool,
     return Results(case=case, mass=None, omega_1=None, omega_psi=omega_psi, groups=None,
                    beam=None, pitch=pitch, shell=None, warnings=tuple(extra), vehicle=survey,
                    vehicle_regions=found, danger=danger, vehicle_mass=mass,
-                   not_applicable=MEMO_NOT_APPLICABLE, forced_response=forced)
+                   not_applicable=MEMO_NOT_APPLICABLE, forced_response=forced,
+                   flight=flight)
 
 
 def _danger(model: BoosterModel, pitch, action, regions, severity):
@@ -329,8 +338,8 @@ def _feasibility(case: Case, model: BoosterModel, *, with_regions: bool = True,
     cost.check_physical(model)
     # the vehicle stages too: modes survey, regions (lower bound with damping)
     veh = dict(regions=with_regions, forced=with_regions, figures=stages.get("figures", True))
-    est = cost.check_case_cost(model, case.max_seconds,
-                               vehicle=cost.estimate_vehicle_cost(case, **veh), **stages)
+    vehicle = cost.with_flight(case, cost.estimate_vehicle_cost(case, **veh))  # [flight]
+    est = cost.check_case_cost(model, case.max_seconds, vehicle=vehicle, **stages)
     out = cost.physical_warnings(model) + cost.capped_steps_warning(est, model)
     if est.seconds > 0.5 * case.max_seconds:
         out.append(AnalysisWarning("cost-estimate", "max_seconds",

@@ -23,6 +23,7 @@ import numpy as np
 from pydantic import BaseModel, ConfigDict, StrictInt, ValidationError, field_validator
 
 from .errors import CaseError
+from .flight_case import FlightTable, check_flight
 from .units import to_si
 from .vehicle_case import VehicleTable, check_vehicle
 
@@ -376,6 +377,8 @@ class Case(BaseModel):
         Optional tables (no damping by default).
     vehicle : VehicleTable or None
         The optional ``[vehicle]`` table (:mod:`flexbooster.vehicle_case`).
+    flight : FlightTable or None
+        The optional ``[flight]`` table (:mod:`flexbooster.flight_case`).
     output : Output
         Optional ``[output]``: ``units = "SI" | "US"`` of the summary and report.
     max_seconds : float
@@ -391,6 +394,7 @@ class Case(BaseModel):
     truncation: Truncation = Truncation()
     damping: Damping = Damping()
     vehicle: VehicleTable | None = None
+    flight: FlightTable | None = None  # flexbooster.flight_case
     output: Output = Output()
 
     @field_validator("max_seconds", mode="before")
@@ -457,6 +461,8 @@ class Case(BaseModel):
             data.pop("vehicle", None)
         if not data.get("output", {}).get("stations", True):
             data["output"].pop("stations")
+        if data.get("flight") is None:  # no [flight]: results.json as before
+            data.pop("flight", None)
         if data.get("output") == {"units": "SI"}:  # the default [output]: as before
             data.pop("output", None)
         return data
@@ -572,6 +578,7 @@ def _cross_checks(case: Case) -> None:
     if b is None:
         _segment_materials(case.vehicle)
     _check_forced_inputs(case)
+    check_flight(case.flight, n_tanks=len(case.vehicle.tanks) if case.vehicle else 0)
 
 
 def _one_vehicle(case: Case) -> None:

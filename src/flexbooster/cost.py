@@ -44,6 +44,8 @@ from .memo.pitch import PITCH_MAX_TONGUE
 
 __all__ = [
     "CostEstimate",
+    "flight_time_seconds",
+    "with_flight",
     "estimate_cost",
     "check_case_cost",
     "check_physical",
@@ -647,3 +649,66 @@ def capped_steps_warning(estimate: CostEstimate, model: BoosterModel) -> list[An
         f"{estimate.capped_omega_max:.6g} rad/s: the beam-action step count per half "
         f"period is capped at {MONODROMY_MAX_STEPS} (bounded cost); alpha there is accurate "
         "to about 1e-5 instead of 1e-9")]
+
+
+def flight_time_seconds(case: Any) -> float:
+    """The predicted time (s) of one frozen time of the flight
+    (:mod:`flexbooster.flight_stage`): the modes k = 0..k_max and the regions k = 1..k_max
+    over the union of the oscillation bands (the lower bound: damping certifies the
+    harmonics), without boundary curves; 0 without ``[flight]``. No solver is run.
+
+    Parameters
+    ----------
+    case : Case
+        The validated case (SI).
+    """
+    from .model import timeline_from_case, vehicle_from_case
+    from .vehicle_case import VehicleTable
+
+    timeline = timeline_from_case(case)
+    if timeline is None:
+        return 0.0
+    table = case.vehicle if case.vehicle is not None else VehicleTable()
+    try:
+        vehicle = vehicle_from_case(case)
+        dofs = _dof_factor(vehicle)
+        n_modes = region_modes(case, vehicle, k_max=max(table.k_max, 1))[0]
+    except ValueError:  # a vehicle the mesh refuses: the stage says why
+        return 0.0
+    lo = min(p.oscillation[0] for p in timeline.points)
+    hi = max(p.oscillation[1] for p in timeline.points)
+    damped = table.damping_ratio > 0.0
+    gammas = [p.gamma for p in timeline.points]
+    searched = 0 if damped or max(gammas) == 0.0 else table.k_max
+    c0, c1 = _C_SURVEY
+    modes = c0 + c1 * (table.k_max + 1) * dofs
+    search = searched * search_seconds(max(n_modes, 3), lo, max(hi, lo * 1.01), damped=damped,
+                                       boundaries=False)
+    return float(modes + table.k_max * _C_HARMONIC_BUILD * dofs * max(1.0, n_modes / 20.0)
+                 + search)
+
+
+def with_flight(case: Any, vehicle: CostEstimate) -> CostEstimate:
+    """``vehicle`` (:func:`estimate_vehicle_cost`) with the part "flight": the frozen times
+    (:func:`flexbooster.model.flight_times`) times :func:`flight_time_seconds`.
+
+    Parameters
+    ----------
+    case : Case
+        The validated case (SI).
+    vehicle : CostEstimate
+        The vehicle stages' estimate.
+    """
+    from .model import flight_times
+
+    n = int(flight_times(case).size)
+    if n == 0:
+        return vehicle
+    seconds = n * flight_time_seconds(case)
+    return CostEstimate(seconds=vehicle.seconds + seconds,
+                        parts={**vehicle.parts, "flight": seconds},
+                        drivers={**vehicle.drivers,
+                                 "flight": ("flight.stations", "flight.times", "vehicle.k_max",
+                                            "vehicle.n_modes", "vehicle.segments")},
+                        capped_points=vehicle.capped_points,
+                        capped_omega_max=vehicle.capped_omega_max)

@@ -10,6 +10,7 @@ import numpy as np
 
 from .checks import FieldValueError
 from .errors import CaseError
+from .flight.timeline import FlightPoint, Timeline, frozen_times
 from .memo.model import BoosterModel, Truncation, booster_model
 from .shell_of_revolution.assembly import MAX_ELEMENTS, auto_element_counts
 from .shell_of_revolution.geometry import (
@@ -24,7 +25,8 @@ from .shell_of_revolution.geometry import (
 if TYPE_CHECKING:
     from .case import Case
 
-__all__ = ["MEMO_NOT_APPLICABLE", "check_memo_applies", "model_from_case", "vehicle_from_case"]
+__all__ = ["MEMO_NOT_APPLICABLE", "check_memo_applies", "model_from_case", "vehicle_from_case",
+           "timeline_from_case", "flight_times"]
 
 #: Why the memo's method (beam, Galerkin shells, beam action, the 13-family table, its charts)
 #: does not apply to a case whose vehicle is ``[[vehicle.segments]]``.
@@ -145,3 +147,41 @@ def _meshable(vehicle: Vehicle, lengths: list[tuple[str, float]]) -> Vehicle:
                             f"{n} shell elements, more than {MAX_ELEMENTS}: shorten it or "
                             "split it into [[vehicle.segments]]")
     return vehicle
+
+
+def timeline_from_case(case: Case) -> Timeline | None:
+    """The flight schedule of a case's ``[flight]`` table (None without one): its points, linear
+    in time between them (docs/theory/flight.md).
+
+    Parameters
+    ----------
+    case : Case
+        A validated case (SI).
+    """
+    table = getattr(case, "flight", None)
+    if table is None:
+        return None
+    return Timeline(tuple(FlightPoint(time=p.time, F0=p.F0, fill=p.fill,
+                                      oscillation=p.oscillation, gamma=p.gamma)
+                          for p in table.points))
+
+
+def flight_times(case: Case) -> np.ndarray:
+    """The frozen times (s) of a case's flight: ``flight.times`` or ``flight.stations``
+    equally spaced ones, with the points' own times (:func:`flexbooster.flight.frozen_times`);
+    empty without ``[flight]``.
+
+    Parameters
+    ----------
+    case : Case
+        A validated case (SI).
+    """
+    from .flight_case import FLIGHT_STATIONS
+
+    timeline = timeline_from_case(case)
+    if timeline is None:
+        return np.zeros(0)
+    table = case.flight
+    if table.times is not None:
+        return frozen_times(timeline, times=table.times, include_points=True)
+    return frozen_times(timeline, n=table.stations or FLIGHT_STATIONS, include_points=True)

@@ -15,6 +15,7 @@ from .danger import DangerSummary
 from .dynamics import ForcedResponse, VehicleRegions
 from .dynamics.forced import STANDARD_GRAVITY
 from .errors import AnalysisWarning
+from .flight_results import FlightResults
 from .memo.beam import BeamModes
 from .memo.beam_action import BeamActionResult
 from .memo.charts import FigureData
@@ -181,6 +182,8 @@ class Results:
         The memo-table roots inside each region.
     danger : DangerSummary or None
         One verdict per mechanism and the ranked bands (the first screen).
+    flight : FlightResults or None
+        The vehicle through the case's [flight] (:mod:`flexbooster.flight_stage`).
     severity : SeverityResult or None
         Severity of the roots and their bands (results.json ``stability.severity``).
     vehicle_mass : shell_of_revolution.MassProperties or None
@@ -216,6 +219,7 @@ class Results:
     vehicle_mass: VehicleMassProperties | None = None
     not_applicable: str | None = None
     forced_response: ForcedLoads | None = None
+    flight: FlightResults | None = None  # only for a case with [flight]
 
     @property
     def Omega(self) -> np.ndarray:
@@ -263,6 +267,8 @@ class Results:
         out["vehicle_regions"] = self._vehicle_regions_dict()
         out["forced_response"] = (None if self.forced_response is None
                                   else self.forced_response.to_dict())
+        if self.flight is not None:  # only for a case with [flight]
+            out["flight"] = self.flight.to_dict()
         return out if self.not_applicable is None else self._memo_not_applicable(out)
 
     def _memo_not_applicable(self, out: dict[str, Any]) -> dict[str, Any]:

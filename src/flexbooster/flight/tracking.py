@@ -13,7 +13,6 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from scipy.optimize import linear_sum_assignment
 
 from ..checks import finite, finite_array
 
@@ -140,6 +139,9 @@ def track_modes(shapes_per_time: Any, frequencies_per_time: Any, *, mass: Any = 
     min_mac : float
         Smallest MAC of a continuation, in (0, 1].
     """
+    # scipy.optimize here, not at import: a run without [flight] does not load it
+    from scipy.optimize import linear_sum_assignment
+
     shapes = [_shapes(f"shapes_per_time[{t}]", s) for t, s in enumerate(shapes_per_time)]
     freqs = [finite_array(f"frequencies_per_time[{t}]", f).ravel()
              for t, f in enumerate(frequencies_per_time)]

@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING
 from ..errors import CaseError
 from ..results import Results
 from .figure_files import render_figure
+from .flight import flight_figure_names, write_flight_csvs
 from .io import (
     hold_signals,
     locked_folder,
@@ -224,6 +225,7 @@ def _write_files(results: Results, folder: Path, figures: bool,
 
             written.append(write_csv_atomic(folder / FORCED_CSV,
                                             results.forced_response.csv_columns()))
+        written += write_flight_csvs(results.flight, folder)  # [flight]
         svgs: dict[str, str] = {}
         if names:
             step(OUTPUT_STAGES[1])
@@ -351,6 +353,7 @@ def figure_names(results: Results) -> tuple[str, ...]:
     from .forced import forced_figure_names
 
     names += forced_figure_names(results)
+    names += flight_figure_names(results.flight)  # [flight] only
     return tuple(names)
 
 
@@ -374,6 +377,7 @@ def make_figures(results: Results, *, names=None) -> dict[str, Figure]:
     from .plotting.bands import plot_band_chart
     from .plotting.beam import mode_shape_plot
     from .plotting.danger import danger_map
+    from .plotting.flight import flight_campbell
     from .plotting.patterns import nodal_patterns
     from .plotting.pitch import ince_strutt_chart
     from .plotting.shell import frequency_curves
@@ -402,6 +406,7 @@ def make_figures(results: Results, *, names=None) -> dict[str, Figure]:
                                                      omega_1=results.omega_1),
         "campbell": lambda: campbell_diagram(data.campbell),
         "vehicle-regions": lambda: vehicle_region_figures(results)["vehicle-regions"],
+        "flight-campbell": lambda: flight_campbell(results.flight),
     }
     from .forced import FORCED_FIGURES, forced_figures
 

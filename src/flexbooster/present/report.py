@@ -31,6 +31,7 @@ from ..memo.charts import (
     VEHICLE_CHART_LEVELS,
 )
 from ..results import Results
+from .flight import FLIGHT_FIGURES, flight_report_html
 from .forced import (
     FORCED_CSV,
     FORCED_FIGURES,
@@ -344,8 +345,8 @@ def inline_svg(svg: str, prefix: str, label: str) -> str:
     )
 
 
-def _figure(name: str, svgs: Mapping[str, str] | None) -> str:
-    caption = FIGURES[name][1]
+def _figure(name: str, svgs: Mapping[str, str] | None, caption: str | None = None) -> str:
+    caption = FIGURES[name][1] if caption is None else caption
     if not svgs or name not in svgs:
         return f'<p class="note">Figure "{_e(name)}" was not drawn (run without --no-figures).</p>'
     return (
@@ -708,6 +709,8 @@ def render_report(results: Results, svgs: Mapping[str, str] | None = None,
         "verification": _verification,
         "warnings": lambda: _warnings(results),
         "vehicle-modes": lambda: _vehicle(results, svgs),
+        "flight": lambda: flight_report_html(results.flight) + _figure(
+            "flight-campbell", svgs, FLIGHT_FIGURES["flight-campbell"]),
     }
     na = not_applicable_text(results)
     if na is not None:  # a [[vehicle.segments]] case: the memo's sections say why not
@@ -716,6 +719,8 @@ def render_report(results: Results, svgs: Mapping[str, str] | None = None,
     if results.vehicle is not None:  # a case with [vehicle]: before the verification summary
         sections = (*SECTIONS[:-2], ("vehicle-modes", "Vehicle modes (shell of revolution)"),
                     *SECTIONS[-2:])
+    if results.flight is not None:  # a case with [flight]: the flight section
+        sections = (*sections[:-2], ("flight", "Through the flight"), *sections[-2:])
     title = f"flexbooster report: {case.name}"
     parts = [
         "<!DOCTYPE html>",

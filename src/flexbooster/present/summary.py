@@ -151,6 +151,12 @@ def print_summary(results: Results, console: Console | None = None) -> None:
     from .forced import print_forced_response
 
     print_forced_response(results, console)
+    if results.flight is not None:  # a case with [flight] only
+        from .flight import flight_lines
+
+        console.print("[bold]Flight[/bold] (worst moment first)")
+        for line in flight_lines(results.flight):
+            console.print("  " + escape(line))
     if results.warnings:
         console.print(f"[bold yellow]Warnings ({len(results.warnings)}):[/bold yellow]")
         for w in results.warnings:
