@@ -16,7 +16,7 @@ import numpy as np
 
 from . import cost, floquet
 from ._threads import blas_threads
-from .case import Case
+from .case import Case, deprecation_warnings
 from .checks import count, finite, positive
 from .danger import danger_summary
 from .dynamics import VehicleRegions, region_curves, vehicle_regions
@@ -195,7 +195,8 @@ def analyze(
         figures=data,
         beam_action=action,
         stability=table,
-        warnings=tuple(_warnings(model, pitch.a, pitch.q) + extra),
+        warnings=tuple(deprecation_warnings(case) + _warnings(model, pitch.a, pitch.q)
+                       + extra),
         vehicle=survey,
         vehicle_regions=regions,
         memo_roots_in_regions=matches,
@@ -470,7 +471,7 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
     # at most the DOFs of a harmonic's mesh (a vehicle.n_modes up to 500 is valid input)
     n_modes = cost.region_modes(case, vehicle, k_max=k_max)[0]
     settings = dict(F0=case.F0, omega_min=t.omega_min, omega_max=t.omega_max, k_min=k_min,
-                    k_max=k_max, n_modes=n_modes, damping_ratio=table.damping_ratio,
+                    k_max=k_max, n_modes=n_modes, damping_ratio=case.vehicle_damping_ratio,
                     gimbal_gain=t.K)
     with blas_threads(1):
         try:

@@ -7,6 +7,7 @@ screen and the danger map draw this and nothing else.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
@@ -14,14 +15,87 @@ from typing import Any
 
 from .bands import MECHANISMS, Band, SearchGap, gaps_text
 
-__all__ = ["RankedBand", "DangerSummary", "STEADY_CAUSE", "danger_bands", "danger_summary",
-           "mechanism_verdicts"]
+__all__ = ["RankedBand", "DangerSummary", "Verdict", "STEADY_CAUSE", "NEGLIGIBLE_GROWTH",
+           "NEGLIGIBLE_AMPLIFICATION", "UNSTABLE_AMPLIFICATION", "UNSTABLE_E_FOLDING",
+           "AMPLIFICATION_EXPONENT_MAX", "band_measures", "band_status", "danger_bands",
+           "danger_summary", "mechanism_verdicts", "overall_verdict"]
 
 _KIND_WORDS = {"simple": "simple", "sum": "sum combination",
                "difference": "difference combination"}
 #: The cause of a "steady" band: the system under the steady thrust alone (gamma = 0) is not
 #: stable (flutter or divergence, Beal 1965; a slow growth of the rigid pitch), not parametric.
 STEADY_CAUSE = "unstable without pulsation"
+
+
+#: Growth rate below which a band is negligible (1/s): an e-folding time above 1e6 s (11.6
+#: days), longer than any excitation of a launch vehicle (docs/theory/verdicts.md).
+NEGLIGIBLE_GROWTH = 1e-6
+#: With a duration T: amplification exp(sigma T) below which a band is negligible (the motion
+#: grows less than 10 % over the whole excitation).
+NEGLIGIBLE_AMPLIFICATION = 1.1
+#: With a duration T: amplification exp(sigma T) above which an open band is unstable.
+UNSTABLE_AMPLIFICATION = 10.0
+#: Without a duration: e-folding time 1 / sigma (s) below which an open band is unstable.
+UNSTABLE_E_FOLDING = 10.0
+#: Largest sigma T whose exp is stored (exp(700) ~ 1e304); above it amplification is None.
+AMPLIFICATION_EXPONENT_MAX = 700.0
+
+
+def band_measures(band: Band, *, gamma: float, duration: float | None) -> Band:
+    """The band with its margin critical_gamma / gamma (where gamma > 0 and the band is
+    damped) and its growth exponent sigma T and amplification exp(sigma T) over the
+    duration T (None without one). A resonance is returned unchanged.
+
+    Parameters
+    ----------
+    band : Band
+        A band of any mechanism.
+    gamma : float
+        The case's pulsation amplitude, >= 0.
+    duration : float or None
+        Duration of the excitation T (s), > 0, or None.
+    """
+    if band.mechanism == "resonance":
+        return band
+    margin = band.critical_gamma / gamma if gamma > 0.0 and band.critical_gamma > 0.0 else None
+    exponent = amplification = None
+    if duration is not None:
+        exponent = band.growth_rate_max * float(duration)  # sigma T
+        if exponent <= AMPLIFICATION_EXPONENT_MAX:
+            amplification = math.exp(exponent)
+    return dataclasses.replace(band, margin=margin, growth_exponent=exponent,
+                               amplification=amplification)
+
+
+def band_status(band: Band, *, duration: float | None, modal_ratio: float = 0.0) -> str:
+    """How a band counts in the verdict (docs/theory/verdicts.md): ``"unstable"``,
+    ``"marginal"``, ``"negligible"`` or, for a damped forced resonance, ``"bounded"``.
+
+    A region: negligible when sigma < :data:`NEGLIGIBLE_GROWTH` or (with T) exp(sigma T) <
+    :data:`NEGLIGIBLE_AMPLIFICATION`; unstable when exp(sigma T) > :data:`UNSTABLE_AMPLIFICATION`
+    or (without T) 1 / sigma < :data:`UNSTABLE_E_FOLDING`; marginal otherwise. A resonance of
+    memo 7: unstable (secular growth) without modal damping, bounded with it.
+
+    Parameters
+    ----------
+    band : Band
+        The band (with :func:`band_measures` applied where a duration is given).
+    duration : float or None
+        Duration of the excitation T (s), or None.
+    modal_ratio : float
+        The case's modal damping ratio of the elastic modes.
+    """
+    if band.mechanism == "resonance":
+        return "bounded" if modal_ratio > 0.0 else "unstable"
+    sigma = band.growth_rate_max
+    if sigma < NEGLIGIBLE_GROWTH:
+        return "negligible"
+    if duration is not None:
+        exponent = sigma * float(duration)
+        if exponent < math.log(NEGLIGIBLE_AMPLIFICATION):
+            return "negligible"
+        return "unstable" if exponent > math.log(UNSTABLE_AMPLIFICATION) else "marginal"
+    return "unstable" if 1.0 / sigma < UNSTABLE_E_FOLDING else "marginal"
 
 
 def _cause(band: Band) -> str:

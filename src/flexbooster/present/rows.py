@@ -82,8 +82,9 @@ def input_rows(results: Results) -> list[Row]:
     ]
     damping = getattr(case, "damping", None)
     if damping is not None:
-        rows.append(("damping ratio: beam modes / rigid-body pitch",
-                     f"{damping.beam_modal_ratio:g} / {damping.pitch_ratio:g}", "-"))
+        rows.append(("damping ratio: beam modes / vehicle modes / rigid-body pitch",
+                     f"{damping.beam_ratio:g} / {case.vehicle_damping_ratio:g} / "
+                     f"{damping.pitch_ratio:g}", "-"))
     return with_us_units(results, rows)
 
 
@@ -291,7 +292,7 @@ def vehicle_region_rows(results: Results) -> list[Row]:
     ks = [h.k for h in vr.harmonics]
     n_modes = sorted({h.omega_unloaded.size for h in vr.harmonics})
     rows += [
-        ("modal damping ratio zeta of the loaded shell modes (vehicle.damping_ratio)",
+        ("modal damping ratio zeta of the loaded shell modes (damping.modal_ratio)",
          vr.damping_ratio, "-"),
         ("harmonics k / modes per k (vehicle.n_modes)",
          f"{min(ks)}..{max(ks)} / {', '.join(str(n) for n in n_modes)}" if ks else "none", "-"),
