@@ -175,7 +175,8 @@ def test_a_mechanism_with_a_gap_is_never_stable():
         (), computed={"vehicle": True, "pitch": True}, gaps=[gap]))
     assert v["vehicle"] == "not fully searched: harmonic k = 19 not searched: max_steps"
     assert v["pitch"] == "stable in the operating range"
-    bands = danger_bands([_band("vehicle", 20.0, 21.0, 0.1, k=2)], operating_range=OPERATING)
+    # growth 1 1/s: e-folding 1 s, unstable (docs/theory/verdicts.md)
+    bands = danger_bands([_band("vehicle", 20.0, 21.0, 1.0, k=2)], operating_range=OPERATING)
     (text,) = [t for k, _, t in mechanism_verdicts(bands, computed={"vehicle": True},
                                                    gaps=[gap]) if k == "vehicle"]
     assert text.startswith("unstable: 1 instability region") and text.endswith(

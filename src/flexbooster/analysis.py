@@ -200,13 +200,14 @@ def analyze(
         vehicle=survey,
         vehicle_regions=regions,
         memo_roots_in_regions=matches,
-        danger=_danger(model, pitch, action, regions, severity),
+        danger=_danger(model, pitch, action, regions, severity, case=case),
         severity=severity,
     )
 
 
-def _danger(model: BoosterModel, pitch, action, regions, severity):
-    """The ranked bands and verdicts of every mechanism computed, with their gaps."""
+def _danger(model: BoosterModel, pitch, action, regions, severity, *, case: Case):
+    """The ranked bands, the verdicts of every mechanism computed (with their gaps) and the
+    overall verdict at the case's damping and duration."""
     found = {"pitch": pitch.bands}
     gaps = list(pitch.gaps)
     if action is not None:
@@ -217,7 +218,11 @@ def _danger(model: BoosterModel, pitch, action, regions, severity):
         gaps += regions.gaps
     if severity is not None:
         found["resonance"] = severity.bands
-    return danger_summary(operating_range=model.omega_range, bands=found, gaps=gaps)
+    return danger_summary(operating_range=model.omega_range, bands=found, gaps=gaps,
+                          gamma=model.gamma, duration=case.thrust.duration,
+                          # the least damped elastic modes (a deprecated key may set one)
+                          modal_ratio=min(case.damping.beam_ratio, case.vehicle_damping_ratio),
+                          pitch_ratio=case.damping.pitch_ratio)
 
 
 def _stability_table(model: BoosterModel, shell, params

@@ -18,7 +18,7 @@ from .bands import MECHANISMS, Band, SearchGap, gaps_text
 __all__ = ["RankedBand", "DangerSummary", "Verdict", "STEADY_CAUSE", "NEGLIGIBLE_GROWTH",
            "NEGLIGIBLE_AMPLIFICATION", "UNSTABLE_AMPLIFICATION", "UNSTABLE_E_FOLDING",
            "AMPLIFICATION_EXPONENT_MAX", "band_measures", "band_status", "danger_bands",
-           "danger_summary", "mechanism_verdicts", "overall_verdict"]
+           "danger_summary", "hz_text", "mechanism_verdicts", "overall_verdict"]
 
 _KIND_WORDS = {"simple": "simple", "sum": "sum combination",
                "difference": "difference combination"}
@@ -220,11 +220,44 @@ def danger_bands(bands: Sequence[Band], *, operating_range: tuple[float, float],
     return tuple(ranked if limit is None else ranked[:limit])
 
 
+def hz_text(lo_hz: float, hi_hz: float) -> str:
+    """Band edges in Hz to the digits that tell them apart: "18.25-18.31 Hz",
+    "45.20013-45.20021 Hz" (at least 4 significant digits, at most 15).
+
+    Parameters
+    ----------
+    lo_hz, hi_hz : float
+        The edges (Hz), 0 <= lo_hz <= hi_hz.
+    """
+    width = hi_hz - lo_hz
+    digits = 4 if width <= 0.0 or hi_hz <= 0.0 else \
+        min(15, max(4, math.ceil(math.log10(hi_hz / width)) + 2))
+    return f"{lo_hz:.{digits}g}-{hi_hz:.{digits}g} Hz" if width > 0.0 else f"{lo_hz:.{digits}g} Hz"
+
+
+def _status(ranked: RankedBand, duration: float | None, modal_ratio: float) -> str:
+    return band_status(ranked.band, duration=duration, modal_ratio=modal_ratio)
+
+
+def _growth_words(band: Band, duration: float | None) -> str:
+    """ "e-folding time 352 s" and, with T, "x 1.53 in 150 s"."""
+    e = band.e_folding_s
+    text = "no growth" if e is None else f"e-folding time {e:.3g} s"
+    if duration is not None and band.growth_exponent is not None:
+        amp = band.amplification
+        text += (f", x {amp:.3g} in {duration:g} s" if amp is not None else
+                 f", x e^{band.growth_exponent:.3g} in {duration:g} s")
+    return text
+
+
 def mechanism_verdicts(ranked: Sequence[RankedBand], *, computed: Mapping[str, bool],
-                       gaps: Sequence[SearchGap] = ()) -> tuple[tuple[str, str, str], ...]:
+                       gaps: Sequence[SearchGap] = (), duration: float | None = None,
+                       modal_ratio: float = 0.0) -> tuple[tuple[str, str, str], ...]:
     """(key, words, verdict) per mechanism of :data:`flexbooster.bands.MECHANISMS`: "not
-    computed", "stable in the operating range", "not fully searched: ..." or "unstable: N ..."
-    (with "; not fully searched: ..." when a gap remains).
+    computed", "stable in the operating range", "not fully searched: ...", "unstable: N ..." or
+    "marginal: N ..." (with "; not fully searched: ..." when a gap remains); regions of
+    negligible growth (:func:`band_status`) are counted apart, never as unstable; a damped
+    resonance is "bounded by damping".
 
     Parameters
     ----------
@@ -234,35 +267,181 @@ def mechanism_verdicts(ranked: Sequence[RankedBand], *, computed: Mapping[str, b
         Whether each mechanism was computed; a missing key means not computed.
     gaps : sequence of SearchGap
         What the searches left out (``stage`` names the mechanism).
+    duration : float or None
+        Duration of the excitation (s), or None.
+    modal_ratio : float
+        Modal damping ratio of the elastic modes.
     """
     out = []
     for key, words in MECHANISMS:
         if not computed.get(key, False):
             out.append((key, words, "not computed"))
             continue
-        mine = [b for b in ranked if b.mechanism == key and b.in_operating_range]
+        inside = [b for b in ranked if b.mechanism == key and b.in_operating_range]
+        status = [_status(b, duration, modal_ratio) for b in inside]
+        mine = [b for b, st in zip(inside, status, strict=True) if st != "negligible"]
+        slow = [b for b, st in zip(inside, status, strict=True) if st == "negligible"]
         left = [g for g in gaps if g.stage == key]
+        slow_text = "" if not slow else (
+            f" ({len(slow)} region{'s' if len(slow) > 1 else ''} of negligible growth, "
+            f"largest {max(b.growth_rate for b in slow):.3g} 1/s)")
         if not mine:
-            out.append((key, words, gaps_text(left) if left else
-                        "stable in the operating range"))
+            out.append((key, words, (gaps_text(left) if left else
+                                     "stable in the operating range") + slow_text))
             continue
         resonance = key == "resonance"
         noun = ("resonance" if resonance else "instability region") + \
             ("s" if len(mine) > 1 else "") + (" (memo 7)" if resonance else "")
-        text = f"unstable: {len(mine)} {noun} in the operating range"
         if resonance:
-            text += f", largest severity {max(b.severity or 0.0 for b in mine):.3g} m/s"
+            sev = max(b.severity or 0.0 for b in mine)
+            text = (f"unstable: {len(mine)} {noun} in the operating range, largest severity "
+                    f"{sev:.3g} m/s" if "unstable" in status else
+                    f"bounded by damping: {len(mine)} {noun} in the operating range, largest "
+                    f"undamped secular rate {sev:.3g} m/s")
         else:
-            text += f", largest growth rate {max(b.growth_rate for b in mine):.3g} 1/s"
+            word = "unstable" if "unstable" in status else "marginal"
+            top = max(mine, key=lambda b: b.band.growth_rate_max)
+            text = (f"{word}: {len(mine)} {noun} in the operating range, largest growth rate "
+                    f"{top.growth_rate:.3g} 1/s")
+            if duration is not None:
+                text += f" ({_growth_words(top.band, duration)})"
         steady = [b for b in mine if b.band.kind == "steady"]
         if steady:  # not parametric: the steady system itself (its growth, e-folding time)
             g = max(b.growth_rate for b in steady)
             text += (f" ({len(steady)} of them {STEADY_CAUSE}: growth rate {g:.3g} 1/s"
                      + (f", e-folding time {1.0 / g:.3g} s)" if g > 0.0 else ")"))
+        text += slow_text
         if left:
             text += "; " + gaps_text(left)
         out.append((key, words, text))
     return tuple(out)
+
+
+def _damping_text(modal_ratio: float, pitch_ratio: float) -> str:
+    """ "1 % modal damping (rigid pitch undamped)"."""
+    modal = f"{100.0 * modal_ratio:g} % modal damping" if modal_ratio > 0.0 else \
+        "no modal damping"
+    pitch = f"rigid pitch {100.0 * pitch_ratio:g} %" if pitch_ratio > 0.0 else \
+        "rigid pitch undamped"
+    return f"{modal} ({pitch})"
+
+
+def _where(band: Band) -> str:
+    """ "18.25-18.31 Hz (beam action: bending 1 + bending 2)"."""
+    words = {"pitch": "rigid-body pitch", "beam_action": "beam action",
+             "vehicle": "vehicle", "resonance": "memo resonance"}[band.mechanism]
+    return f"{hz_text(*band.hz)} ({words}: {_mode_text(band)})"
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """The one overall answer (docs/theory/verdicts.md).
+
+    Attributes
+    ----------
+    overall : str
+        ``"UNSTABLE"``, ``"MARGINAL"`` or ``"STABLE"``.
+    reason : str
+        Why, in words.
+    mechanisms : tuple of (str, str)
+        (key, verdict) per mechanism (:func:`mechanism_verdicts`).
+    modal_ratio, pitch_ratio : float
+        The damping used.
+    duration : float or None
+        Duration of the excitation (s).
+    """
+
+    overall: str
+    reason: str
+    mechanisms: tuple[tuple[str, str], ...]
+    modal_ratio: float
+    pitch_ratio: float
+    duration: float | None
+
+    @property
+    def line(self) -> str:
+        """ "STABLE: reason"."""
+        return f"{self.overall}: {self.reason}"
+
+    @property
+    def damping_text(self) -> str:
+        """The damping used, in words."""
+        return _damping_text(self.modal_ratio, self.pitch_ratio)
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready mapping."""
+        return {"overall": self.overall, "reason": self.reason,
+                "mechanisms": dict(self.mechanisms),
+                "damping": {"modal_ratio": float(self.modal_ratio),
+                            "pitch_ratio": float(self.pitch_ratio)},
+                "duration": None if self.duration is None else float(self.duration)}
+
+
+def overall_verdict(ranked: Sequence[RankedBand], *,
+                    verdicts: Sequence[tuple[str, str, str]], gaps: Sequence[SearchGap] = (),
+                    duration: float | None = None, modal_ratio: float = 0.0,
+                    pitch_ratio: float = 0.0) -> Verdict:
+    """UNSTABLE when a band in the operating range is unstable (:func:`band_status`); else
+    MARGINAL when one is marginal or a computed mechanism was not fully searched; else STABLE.
+
+    Parameters
+    ----------
+    ranked : sequence of RankedBand
+        From :func:`danger_bands`.
+    verdicts : sequence of (str, str, str)
+        From :func:`mechanism_verdicts`.
+    gaps : sequence of SearchGap
+        What the searches left out.
+    duration : float or None
+        Duration of the excitation (s).
+    modal_ratio, pitch_ratio : float
+        The damping used.
+    """
+    inside = [b for b in ranked if b.in_operating_range]
+    by = {"unstable": [], "marginal": [], "negligible": [], "bounded": []}
+    for b in inside:
+        by[_status(b, duration, modal_ratio)].append(b.band)
+    damping = _damping_text(modal_ratio, pitch_ratio)
+    computed = {k for k, _, v in verdicts if v != "not computed"}
+    cut = sorted({g.stage for g in gaps if g.stage in computed})
+    names = dict(MECHANISMS)
+    regions_u = [b for b in by["unstable"] if b.mechanism != "resonance"]
+    res_u = [b for b in by["unstable"] if b.mechanism == "resonance"]
+    parts: list[str] = []
+    if by["unstable"]:
+        overall = "UNSTABLE"
+        if regions_u:
+            top = max(regions_u, key=lambda b: b.growth_rate_max)
+            rule = (f"grow more than {UNSTABLE_AMPLIFICATION:g}-fold in {duration:g} s"
+                    if duration is not None else
+                    f"have an e-folding time under {UNSTABLE_E_FOLDING:g} s")
+            n = len(regions_u)
+            parts.append(f"at {damping}, {n} region{'s' if n > 1 else ''} {rule}; "
+                         f"fastest {_where(top)}, {_growth_words(top, duration)}")
+        if res_u:
+            parts.append(f"{len(res_u)} forced resonance{'s' if len(res_u) > 1 else ''} "
+                         "grow without bound (no modal damping)")
+    elif by["marginal"] or cut:
+        overall = "MARGINAL"
+        if by["marginal"]:
+            top = max(by["marginal"], key=lambda b: b.growth_rate_max)
+            n = len(by["marginal"])
+            parts.append(f"at {damping}, {n} region{'s' if n > 1 else ''} open; fastest "
+                         f"{_where(top)}, {_growth_words(top, duration)}")
+        if cut:
+            parts.append("not fully searched: " + ", ".join(names[k] for k in cut))
+    else:
+        overall = "STABLE"
+        parts.append(f"at {damping}, no region" + (
+            f" grows more than {100.0 * (NEGLIGIBLE_AMPLIFICATION - 1.0):g} % in "
+            f"{duration:g} s" if duration is not None else
+            f" has an e-folding time under {1.0 / NEGLIGIBLE_GROWTH:.0e} s"))
+    if by["bounded"] and overall != "UNSTABLE":
+        n = len(by["bounded"])
+        parts.append(f"{n} forced resonance{'s' if n > 1 else ''} bounded by damping")
+    return Verdict(overall, "; ".join(parts), tuple((k, v) for k, _, v in verdicts),
+                   float(modal_ratio), float(pitch_ratio),
+                   None if duration is None else float(duration))
 
 
 @dataclass(frozen=True)
@@ -277,23 +456,30 @@ class DangerSummary:
         (key, mechanism in words, verdict), see :func:`mechanism_verdicts`.
     bands : tuple of RankedBand
         Every band, ranked (see :func:`danger_bands`).
+    verdict : Verdict or None
+        The overall verdict (:func:`overall_verdict`).
     """
 
     operating_range: tuple[float, float]
     verdicts: tuple[tuple[str, str, str], ...]
     bands: tuple[RankedBand, ...]
+    verdict: Verdict | None = None
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready mapping."""
         return {"operating_range": [float(v) for v in self.operating_range],
                 "verdicts": [{"mechanism": k, "words": w, "verdict": v}
                              for k, w, v in self.verdicts],
-                "bands": [b.to_dict() for b in self.bands]}
+                "bands": [b.to_dict() for b in self.bands],
+                "verdict": None if self.verdict is None else self.verdict.to_dict()}
 
 
 def danger_summary(*, operating_range: tuple[float, float], bands: Mapping[str, Sequence[Band]],
-                   gaps: Sequence[SearchGap] = ()) -> DangerSummary:
-    """Verdicts and ranked bands of every mechanism computed.
+                   gaps: Sequence[SearchGap] = (), gamma: float = 0.0,
+                   duration: float | None = None, modal_ratio: float = 0.0,
+                   pitch_ratio: float = 0.0) -> DangerSummary:
+    """Verdicts, the overall verdict and the ranked bands (each with :func:`band_measures`)
+    of every mechanism computed.
 
     Parameters
     ----------
@@ -303,13 +489,23 @@ def danger_summary(*, operating_range: tuple[float, float], bands: Mapping[str, 
         The bands of each mechanism computed, by key of :data:`flexbooster.bands.MECHANISMS`.
     gaps : sequence of SearchGap
         What the searches left out.
+    gamma : float
+        The case's pulsation amplitude (the margins critical_gamma / gamma).
+    duration : float or None
+        Duration of the excitation (s).
+    modal_ratio, pitch_ratio : float
+        The damping used (the verdict's words; a damped resonance is bounded).
     """
     for key in bands:
         if key not in dict(MECHANISMS):
             raise ValueError(f"bands: unknown mechanism {key!r}")
-    ranked = danger_bands([b for found in bands.values() for b in found],
+    ranked = danger_bands([band_measures(b, gamma=gamma, duration=duration)
+                           for found in bands.values() for b in found],
                           operating_range=operating_range)
     computed = {key: True for key in bands}
     lo, hi = _operating(operating_range)
-    return DangerSummary((lo, hi), mechanism_verdicts(ranked, computed=computed, gaps=gaps),
-                         ranked)
+    verdicts = mechanism_verdicts(ranked, computed=computed, gaps=gaps, duration=duration,
+                                  modal_ratio=modal_ratio)
+    verdict = overall_verdict(ranked, verdicts=verdicts, gaps=gaps, duration=duration,
+                              modal_ratio=modal_ratio, pitch_ratio=pitch_ratio)
+    return DangerSummary((lo, hi), verdicts, ranked, verdict)

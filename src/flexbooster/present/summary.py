@@ -33,8 +33,12 @@ __all__ = ["print_summary", "print_stability", "print_first_screen", "TERMINAL_B
 TERMINAL_BANDS = 5
 
 
+_OVERALL_STYLE = {"UNSTABLE": "bold red", "MARGINAL": "bold yellow", "STABLE": "bold green"}
+
+
 def print_first_screen(results: Results, console: Console) -> None:
-    """The answer first: one verdict per mechanism, the ranked dangerous bands, the warnings.
+    """The answer first: the overall verdict and the damping and duration it holds for, one
+    verdict per mechanism, the ranked dangerous bands, the warnings.
 
     Parameters
     ----------
@@ -43,13 +47,24 @@ def print_first_screen(results: Results, console: Console) -> None:
     console : rich.console.Console
         Where to print.
     """
+    verdict = None if results.danger is None else results.danger.verdict
+    if verdict is not None:
+        style = _OVERALL_STYLE[verdict.overall]
+        console.print(f"[{style}]{verdict.overall}[/{style}]: {escape(verdict.reason)}")
+    console.print(f"[bold]flexbooster[/bold] - {escape(results.case.name)}")
+    if verdict is not None:
+        duration = ("none given (verdict from e-folding times)" if verdict.duration is None
+                    else f"{verdict.duration:g} s")
+        console.print(f"damping: {verdict.damping_text}; excitation duration: {duration}",
+                      highlight=False)
     verdicts = Table(title="Verdicts", title_justify="left", box=box.SIMPLE_HEAD,
                      header_style="bold", pad_edge=False)
     verdicts.add_column("mechanism", ratio=1)
     verdicts.add_column("verdict", ratio=2)
     for words, verdict in verdict_rows(results):
         style = "red" if verdict.startswith("unstable") else (
-            "green" if verdict.startswith("stable") else "")
+            "green" if verdict.startswith(("stable", "bounded")) else (
+                "yellow" if verdict.startswith("marginal") else ""))
         verdicts.add_row(words, f"[{style}]{verdict}[/{style}]" if style else verdict)
     console.print(verdicts)
     rows = danger_rows(results, TERMINAL_BANDS)
@@ -120,7 +135,6 @@ def print_summary(results: Results, console: Console | None = None) -> None:
         Where to print; a new console on standard output by default.
     """
     console = console or Console()
-    console.print(f"[bold]flexbooster[/bold] - {results.case.name}")
     print_first_screen(results, console)
     for title, rows in (("Input (SI)", input_rows(results)),
                         ("Mass properties (memo 2.2, Fig. 1; I_cm per erratum E1)",
