@@ -29,7 +29,6 @@ from flexbooster.danger import (
     danger_summary,
     hz_text,
 )
-from flexbooster.errors import CaseError
 from flexbooster.memo.beam_action import band_modes
 from flexbooster.memo.pitch import PITCH_MODE, pitch_bands
 from flexbooster.memo.severity import FAMILY_CAUSES, shell_mode
@@ -204,7 +203,8 @@ def test_damping_defaults():
     ("damping", "beam_modal_ratio", 0.02), ("vehicle", "damping_ratio", 0.03)])
 def test_deprecated_key_is_used_and_warned_in_results_json(table, key, value):
     """An old key keeps working, with a ``deprecated-key`` warning naming damping.modal_ratio
-    in Results.warnings and results.json; given beside damping.modal_ratio it is refused."""
+    in Results.warnings and results.json; given beside damping.modal_ratio it is used for its
+    modes (a case dumped and loaded again keeps its meaning)."""
     d = tomllib.loads(default_case_text())
     del d["damping"]
     d.setdefault(table, {})[key] = value
@@ -215,6 +215,25 @@ def test_deprecated_key_is_used_and_warned_in_results_json(table, key, value):
     (w,) = [w for w in json.loads(json.dumps(r.to_dict()))["warnings"]
             if w["code"] == "deprecated-key"]
     assert w["field"] == f"{table}.{key}" and "damping.modal_ratio" in w["message"]
-    d.setdefault("damping", {})["modal_ratio"] = 0.01
-    with pytest.raises(CaseError, match="damping.modal_ratio only"):
-        load_case(d)
+    again = load_case(case.model_dump(exclude_none=True))
+    assert (again.damping.beam_ratio, again.vehicle_damping_ratio) == (
+        case.damping.beam_ratio, case.vehicle_damping_ratio)
+
+
+def test_the_same_tongue_from_pitch_and_beam_action_is_listed_once():
+    """Exact: the rigid-pitch tongue r found by the pitch (memo 4.2) and by the beam action
+    ("rigid pitch", simple, order r, overlapping) is one ranked band naming both mechanisms,
+    with the coupled model's edges; a pitch tongue the beam action does not overlap stays."""
+    pitch1 = _band(40.0, 42.0, 0.2, mechanism="pitch")
+    pitch2 = _band(20.0, 20.5, 0.1, mechanism="pitch")
+    coupled = Band(mechanism="beam_action", Omega_lo=40.1, Omega_hi=42.1, kind="simple",
+                   order=1, modes=band_modes((0,)), growth_rate_max=0.21, Omega_at_max=41.0,
+                   Omega_center=41.0)
+    s = danger_summary(operating_range=OPERATING,
+                       bands={"pitch": [pitch1, pitch2], "beam_action": [coupled]})
+    assert [(b.band.Omega_lo, b.mechanisms) for b in s.bands] == [
+        (40.1, ("beam_action", "pitch")), (20.0, ("pitch",))]
+    assert "also the rigid-body pitch's Mathieu tongue 1" in s.bands[0].cause_text
+    text = dict((k, v) for k, _, v in s.verdicts)
+    assert text["pitch"].startswith("unstable: 2 instability regions")
+    assert text["beam_action"].startswith("unstable: 1 instability region ")

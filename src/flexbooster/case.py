@@ -48,7 +48,8 @@ MAX_GRID = 100_000
 #: Default damping ratio of every elastic mode (``damping.modal_ratio``).
 MODAL_DAMPING_RATIO = REGION_DAMPING_RATIO
 #: Keys kept for old case files: (deprecated key, key that replaces it). Each one given is
-#: used, with a ``deprecated-key`` warning (:func:`deprecation_warnings`).
+#: used for its modes (over ``damping.modal_ratio``), with a ``deprecated-key`` warning
+#: (:func:`deprecation_warnings`).
 DEPRECATED_KEYS = (("damping.beam_modal_ratio", "damping.modal_ratio"),
                    ("vehicle.damping_ratio", "damping.modal_ratio"))
 
@@ -487,10 +488,6 @@ def _cross_checks(case: Case) -> None:
             f"must not exceed N + 1 = {n.N + 1} (rigid rotation plus N elastic modes)",
         )
     check_vehicle(case.vehicle, booster_radii=(b.cylinder1.radius, b.cylinder2.radius))
-    if "modal_ratio" in case.damping.model_fields_set:
-        for key, value in _deprecated_given(case):
-            raise CaseError(key, value, "replaced by damping.modal_ratio, which is given too: "
-                            "give damping.modal_ratio only")
 
 
 def _deprecated_given(case: Case) -> list[tuple[str, float]]:

@@ -127,10 +127,18 @@ class RankedBand:
         The band (Omega in rad/s).
     in_operating_range : bool
         True when the band overlaps the case's operating range [omega_min, omega_max].
+    also : tuple of str
+        Other mechanisms that found the same physical band (listed once, under ``band``).
     """
 
     band: Band
     in_operating_range: bool
+    also: tuple[str, ...] = ()
+
+    @property
+    def mechanisms(self) -> tuple[str, ...]:
+        """Every mechanism that found the band, its own first."""
+        return (self.band.mechanism, *self.also)
 
     @property
     def mechanism(self) -> str:
@@ -169,13 +177,17 @@ class RankedBand:
 
     @property
     def cause_text(self) -> str:
-        """The mechanism in words."""
+        """The mechanism in words (and the other mechanisms that found the band)."""
+        if "pitch" in self.also:
+            return f"{_cause(self.band)}; also the rigid-body pitch's Mathieu tongue " \
+                   f"{self.band.order}"
         return _cause(self.band)
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready mapping (plain floats, str, bool; None kept)."""
         lo_hz, hi_hz = self.hz
-        return {"mechanism": self.mechanism, "Omega_lo": float(self.Omega_lo),
+        return {"mechanism": self.mechanism, "mechanisms": list(self.mechanisms),
+                "Omega_lo": float(self.Omega_lo),
                 "Omega_hi": float(self.Omega_hi), "Omega_lo_hz": float(lo_hz),
                 "Omega_hi_hz": float(hi_hz),
                 "growth_rate": None if self.growth_rate is None else float(self.growth_rate),
@@ -192,10 +204,40 @@ def _operating(operating_range: tuple[float, float]) -> tuple[float, float]:
     return lo, hi
 
 
+def _is_pitch_tongue(band: Band) -> bool:
+    """A beam-action band of the rigid pitch alone ("rigid pitch", simple): a Mathieu tongue."""
+    return band.mechanism == "beam_action" and band.kind == "simple" and \
+        [m.label for m in band.modes] == ["rigid pitch"]
+
+
+def _same_bands(bands: Sequence[Band]) -> list[tuple[Band, tuple[str, ...]]]:
+    """Each band once with the other mechanisms that found it: a rigid-pitch tongue of the
+    pitch (memo 4.2) that a beam-action rigid-pitch band of the same order overlaps is that
+    band (the coupled model's edges are kept)."""
+    tongues = [b for b in bands if _is_pitch_tongue(b)]
+    out = []
+    merged: set[int] = set()
+    for b in bands:
+        if b.mechanism != "pitch":
+            continue
+        if any(t.order == b.order and t.Omega_lo <= b.Omega_hi and b.Omega_lo <= t.Omega_hi
+               for t in tongues):
+            merged.add(id(b))
+    for b in bands:
+        if id(b) in merged:
+            continue
+        also = ("pitch",) if _is_pitch_tongue(b) and any(
+            p.mechanism == "pitch" and id(p) in merged and p.order == b.order
+            and p.Omega_lo <= b.Omega_hi and b.Omega_lo <= p.Omega_hi for p in bands) else ()
+        out.append((b, also))
+    return out
+
+
 def danger_bands(bands: Sequence[Band], *, operating_range: tuple[float, float],
                  limit: int | None = None) -> tuple[RankedBand, ...]:
-    """Every band, most dangerous first: those the operating range reaches, then by growth rate,
-    then resonances by severity; ties by Omega_lo.
+    """Every band once (the same physical band of two mechanisms merged, naming both), most
+    dangerous first: those the operating range reaches, then by growth rate, then resonances
+    by severity; ties by Omega_lo.
 
     Parameters
     ----------
@@ -209,7 +251,8 @@ def danger_bands(bands: Sequence[Band], *, operating_range: tuple[float, float],
     lo, hi = _operating(operating_range)
     if limit is not None and (not isinstance(limit, int) or limit < 0):
         raise ValueError(f"limit = {limit!r}: must be a non-negative integer")
-    ranked = [RankedBand(b, b.Omega_hi >= lo and b.Omega_lo <= hi) for b in bands]
+    ranked = [RankedBand(b, b.Omega_hi >= lo and b.Omega_lo <= hi, also)
+              for b, also in _same_bands(bands)]
 
     def key(r: RankedBand) -> tuple:
         if r.growth_rate is not None:
@@ -277,7 +320,7 @@ def mechanism_verdicts(ranked: Sequence[RankedBand], *, computed: Mapping[str, b
         if not computed.get(key, False):
             out.append((key, words, "not computed"))
             continue
-        inside = [b for b in ranked if b.mechanism == key and b.in_operating_range]
+        inside = [b for b in ranked if key in b.mechanisms and b.in_operating_range]
         status = [_status(b, duration, modal_ratio) for b in inside]
         mine = [b for b, st in zip(inside, status, strict=True) if st != "negligible"]
         slow = [b for b, st in zip(inside, status, strict=True) if st == "negligible"]
