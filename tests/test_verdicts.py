@@ -9,6 +9,7 @@ deprecated keys' warning reaching results.json).
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import math
 import tomllib
@@ -237,3 +238,51 @@ def test_the_same_tongue_from_pitch_and_beam_action_is_listed_once():
     text = dict((k, v) for k, _, v in s.verdicts)
     assert text["pitch"].startswith("unstable: 2 instability regions")
     assert text["beam_action"].startswith("unstable: 1 instability region ")
+
+
+# --------------------------------------------------------------------------------------------
+# Forced resonances: the damped steady amplitude
+# --------------------------------------------------------------------------------------------
+def test_resonance_steady_amplitude_closed_form_and_direct_integration():
+    """A single mode y'' + 2 zeta w y' + w^2 y = (F / m) cos(w t) at resonance: the undamped
+    secular rate (severity) v = F / (2 m w) (docs/theory/severity.md), and band_measures'
+    damped steady amplitude against the closed form F / (2 zeta w^2 m) and against direct
+    integration (solve_ivp to steady state, the last period's peak), to 1 %."""
+    w, zeta, m, F = 2 * math.pi * 45.2, 0.01, 3.0, 50.0
+    v = F / (2.0 * m * w)  # severity: the undamped envelope grows like v t
+    mode = shell_mode(1, 1, 0, 1, "axial")
+    band = Band(mechanism="resonance", Omega_lo=w, Omega_hi=w, kind="resonance", order=3,
+                modes=(dataclasses.replace(mode, omega=w),), growth_rate_max=0.0,
+                Omega_at_max=w, Omega_center=w, severity=v, cause=FAMILY_CAUSES[3])
+    got = band_measures(band, gamma=0.05, duration=None, modal_ratio=zeta)
+    closed = F / (2.0 * zeta * w * w * m)
+    assert got.steady_amplitude == pytest.approx(closed, rel=1e-12)
+    assert got.steady_acceleration == pytest.approx(closed * w * w, rel=1e-12)
+    T = 2 * math.pi / w
+    n_settle = int(12.0 / (zeta * w * T))  # 12 time constants 1 / (zeta w)
+
+    def rhs(t, y):
+        return [y[1], F / m * math.cos(w * t) - 2 * zeta * w * y[1] - w * w * y[0]]
+
+    sol = integrate.solve_ivp(rhs, (0.0, (n_settle + 1) * T), [0.0, 0.0], method="DOP853",
+                              rtol=1e-9, atol=1e-12, dense_output=True)
+    tail = sol.sol(np.linspace(n_settle * T, (n_settle + 1) * T, 2001))[0]
+    assert got.steady_amplitude == pytest.approx(np.max(np.abs(tail)), rel=1e-2)
+    undamped = band_measures(band, gamma=0.05, duration=None, modal_ratio=0.0)
+    assert undamped.steady_amplitude is None  # undamped: no steady state (secular growth)
+
+
+def test_damped_resonances_rank_by_steady_amplitude():
+    """Exact: of two damped resonances the larger v / (zeta w) ranks first, though its
+    severity v is the smaller."""
+    mode = shell_mode(1, 1, 0, 1, "axial")
+
+    def res(lo, v, w):
+        return Band(mechanism="resonance", Omega_lo=lo, Omega_hi=lo, kind="resonance",
+                    order=3, modes=(dataclasses.replace(mode, omega=w),), growth_rate_max=0.0,
+                    Omega_at_max=lo, Omega_center=lo, severity=v, cause=FAMILY_CAUSES[3])
+
+    s = danger_summary(operating_range=OPERATING, modal_ratio=0.01,
+                       bands={"resonance": [res(20.0, 2.0, 1000.0), res(30.0, 1.0, 10.0)]})
+    assert [b.Omega_lo for b in s.bands] == [30.0, 20.0]
+    assert "largest response 1e+04 mm" in s.verdict.reason

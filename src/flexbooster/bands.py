@@ -153,6 +153,9 @@ class Band:
     growth_exponent, amplification : float or None
         sigma T and exp(sigma T) over the excitation's duration T (``thrust.duration``); None
         without a duration (amplification also past exp(700)).
+    steady_amplitude, steady_acceleration : float or None
+        Resonance: the damped steady amplitude (m) and acceleration (m/s^2) of the resonant
+        mode's largest surface displacement at the case's modal damping; None undamped.
     """
 
     mechanism: str
@@ -176,6 +179,8 @@ class Band:
     margin: float | None = None
     growth_exponent: float | None = None
     amplification: float | None = None
+    steady_amplitude: float | None = None
+    steady_acceleration: float | None = None
 
     def __post_init__(self) -> None:
         if self.mechanism not in dict(MECHANISMS):
@@ -231,6 +236,8 @@ class Band:
             "critical_damping_ratio": _opt(self.critical_damping_ratio),
             "margin": _opt(self.margin), "growth_exponent": _opt(self.growth_exponent),
             "amplification": _opt(self.amplification),
+            "steady_amplitude": _opt(self.steady_amplitude),
+            "steady_acceleration": _opt(self.steady_acceleration),
         }
 
 

@@ -41,10 +41,16 @@ UNSTABLE_E_FOLDING = 10.0
 AMPLIFICATION_EXPONENT_MAX = 700.0
 
 
-def band_measures(band: Band, *, gamma: float, duration: float | None) -> Band:
+def band_measures(band: Band, *, gamma: float, duration: float | None,
+                  modal_ratio: float = 0.0) -> Band:
     """The band with its margin critical_gamma / gamma (where gamma > 0 and the band is
     damped) and its growth exponent sigma T and amplification exp(sigma T) over the
-    duration T (None without one). A resonance is returned unchanged.
+    duration T (None without one); a resonance with its damped steady amplitude.
+
+    A resonance of memo 7 grows undamped like (|G| / 2 omega) t (docs/theory/severity.md: the
+    severity v, m/s); with modal damping zeta its steady amplitude is |G| / (2 zeta omega^2) =
+    v / (zeta omega) (m) and its acceleration that times omega^2, omega the resonant mode's
+    frequency (rad/s; Meirovitch 1986, sec. 3.3).
 
     Parameters
     ----------
@@ -54,9 +60,16 @@ def band_measures(band: Band, *, gamma: float, duration: float | None) -> Band:
         The case's pulsation amplitude, >= 0.
     duration : float or None
         Duration of the excitation T (s), > 0, or None.
+    modal_ratio : float
+        Modal damping ratio zeta of the elastic modes, 0 <= zeta < 1.
     """
     if band.mechanism == "resonance":
-        return band
+        w = band.modes[0].omega if band.modes else None
+        if modal_ratio <= 0.0 or band.severity is None or not w:
+            return band
+        amplitude = band.severity / (modal_ratio * w)  # v / (zeta omega)
+        return dataclasses.replace(band, steady_amplitude=amplitude,
+                                   steady_acceleration=amplitude * w * w)
     margin = band.critical_gamma / gamma if gamma > 0.0 and band.critical_gamma > 0.0 else None
     exponent = amplification = None
     if duration is not None:
@@ -237,7 +250,7 @@ def danger_bands(bands: Sequence[Band], *, operating_range: tuple[float, float],
                  limit: int | None = None) -> tuple[RankedBand, ...]:
     """Every band once (the same physical band of two mechanisms merged, naming both), most
     dangerous first: those the operating range reaches, then by growth rate, then resonances
-    by severity; ties by Omega_lo.
+    by damped steady amplitude (undamped: by severity); ties by Omega_lo.
 
     Parameters
     ----------
@@ -257,7 +270,9 @@ def danger_bands(bands: Sequence[Band], *, operating_range: tuple[float, float],
     def key(r: RankedBand) -> tuple:
         if r.growth_rate is not None:
             return (not r.in_operating_range, 0, -r.growth_rate, r.Omega_lo)
-        return (not r.in_operating_range, 1, -(r.severity or 0.0), r.Omega_lo)
+        amp = r.band.steady_amplitude  # damped: the steady amplitude; undamped: the severity
+        return (not r.in_operating_range, 1, 0 if amp is not None else 1,
+                -(amp if amp is not None else r.severity or 0.0), r.Omega_lo)
 
     ranked.sort(key=key)
     return tuple(ranked if limit is None else ranked[:limit])
@@ -339,8 +354,8 @@ def mechanism_verdicts(ranked: Sequence[RankedBand], *, computed: Mapping[str, b
             sev = max(b.severity or 0.0 for b in mine)
             text = (f"unstable: {len(mine)} {noun} in the operating range, largest severity "
                     f"{sev:.3g} m/s" if "unstable" in status else
-                    f"bounded by damping: {len(mine)} {noun} in the operating range, largest "
-                    f"undamped secular rate {sev:.3g} m/s")
+                    f"bounded by damping: {len(mine)} {noun} in the operating range"
+                    + _response_text([b.band for b in mine], ", largest steady response "))
         else:
             word = "unstable" if "unstable" in status else "marginal"
             top = max(mine, key=lambda b: b.band.growth_rate_max)
@@ -358,6 +373,21 @@ def mechanism_verdicts(ranked: Sequence[RankedBand], *, computed: Mapping[str, b
             text += "; " + gaps_text(left)
         out.append((key, words, text))
     return tuple(out)
+
+
+#: Standard gravity (m/s^2), for accelerations in g.
+G_STANDARD = 9.80665
+
+
+def _response_text(bands: Sequence[Band], lead: str) -> str:
+    """lead + "1.6 mm (0.9 g) at 45.2 Hz" of the largest damped steady amplitude; "" if none."""
+    damped = [b for b in bands if b.steady_amplitude is not None]
+    if not damped:
+        return ""
+    top = max(damped, key=lambda b: b.steady_amplitude)
+    f = top.modes[0].omega / (2.0 * math.pi)
+    return (f"{lead}{1e3 * top.steady_amplitude:.3g} mm "
+            f"({top.steady_acceleration / G_STANDARD:.3g} g) at {f:.4g} Hz")
 
 
 def _damping_text(modal_ratio: float, pitch_ratio: float) -> str:
@@ -481,7 +511,8 @@ def overall_verdict(ranked: Sequence[RankedBand], *,
             f" has an e-folding time under {1.0 / NEGLIGIBLE_GROWTH:.0e} s"))
     if by["bounded"] and overall != "UNSTABLE":
         n = len(by["bounded"])
-        parts.append(f"{n} forced resonance{'s' if n > 1 else ''} bounded by damping")
+        parts.append(f"{n} forced resonance{'s' if n > 1 else ''} bounded by damping"
+                     + _response_text(by["bounded"], ", largest response "))
     return Verdict(overall, "; ".join(parts), tuple((k, v) for k, _, v in verdicts),
                    float(modal_ratio), float(pitch_ratio),
                    None if duration is None else float(duration))
@@ -542,7 +573,8 @@ def danger_summary(*, operating_range: tuple[float, float], bands: Mapping[str, 
     for key in bands:
         if key not in dict(MECHANISMS):
             raise ValueError(f"bands: unknown mechanism {key!r}")
-    ranked = danger_bands([band_measures(b, gamma=gamma, duration=duration)
+    ranked = danger_bands([band_measures(b, gamma=gamma, duration=duration,
+                                         modal_ratio=modal_ratio)
                            for found in bands.values() for b in found],
                           operating_range=operating_range)
     computed = {key: True for key in bands}

@@ -43,7 +43,7 @@ ROUND_OFF = 1e-14
 #: Bands listed on the first screen (terminal and report); all are in results.json.
 FIRST_SCREEN_BANDS = 8
 #: Column headings of :func:`danger_rows`.
-DANGER_HEADER = ("#", "Omega (rad/s)", "Omega (Hz)", "growth (1/s) / severity",
+DANGER_HEADER = ("#", "Omega (rad/s)", "Omega (Hz)", "growth (1/s) / response",
                  "in operating range", "mode", "mechanism")
 
 #: (quantity, value, unit): the value is a float, an int or text.
@@ -215,6 +215,8 @@ def danger_rows(results: Results, limit: int = FIRST_SCREEN_BANDS) -> list[tuple
         lo_hz, hi_hz = b.hz
         if b.growth_rate is not None:
             level = f"{b.growth_rate:.3g}"
+        elif b.band.steady_amplitude is not None:  # damped: the steady response
+            level = f"{1e3 * b.band.steady_amplitude:.3g} mm"
         elif b.severity is not None:
             level = f"sev. {b.severity:.3g}"
         else:

@@ -36,7 +36,7 @@ TERMINAL_BANDS = 5
 _OVERALL_STYLE = {"UNSTABLE": "bold red", "MARGINAL": "bold yellow", "STABLE": "bold green"}
 
 
-def print_first_screen(results: Results, console: Console) -> None:
+def print_first_screen(results: Results, console: Console, *, full: bool = True) -> None:
     """The answer first: the overall verdict and the damping and duration it holds for, one
     verdict per mechanism, the ranked dangerous bands, the warnings.
 
@@ -46,6 +46,8 @@ def print_first_screen(results: Results, console: Console) -> None:
         The analysis.
     console : rich.console.Console
         Where to print.
+    full : bool
+        The full summary follows (the warnings' details at its end); False: the short one.
     """
     verdict = None if results.danger is None else results.danger.verdict
     if verdict is not None:
@@ -76,7 +78,8 @@ def print_first_screen(results: Results, console: Console) -> None:
     elif n_all == 0 and results.danger is not None:
         console.print("No unstable band in any mechanism computed.")
     if results.warnings:
-        console.print(f"[bold yellow]Warnings ({len(results.warnings)}; details at the end):"
+        where = "details at the end" if full else "details in the report"
+        console.print(f"[bold yellow]Warnings ({len(results.warnings)}; {where}):"
                       "[/bold yellow]")
         for w in results.warnings:
             console.print(f"  [yellow]warning[/yellow] {escape(f'[{w.code}] {w.field}')}")
@@ -102,7 +105,7 @@ def _g(x: object) -> str:
 
 def _band_block(rows: list[tuple[str, ...]], width: int) -> str:
     """Fixed-width text of the ranked bands: numbers in columns never cut, words wrapped."""
-    heads = ("#", "Omega rad/s", "Omega Hz", "growth 1/s", "in range")
+    heads = ("#", "Omega rad/s", "Omega Hz", "growth/resp.", "in range")
     widths = [max(len(r[i]) for r in [*rows, heads]) for i in range(5)]
     lead = sum(widths) + 2 * len(widths)
     below = width - lead < 30  # a narrow terminal: the words on their own line(s)
@@ -124,8 +127,10 @@ def _band_block(rows: list[tuple[str, ...]], width: int) -> str:
     return "\n".join(out)
 
 
-def print_summary(results: Results, console: Console | None = None) -> None:
-    """Print the summary tables of an analysis.
+def print_summary(results: Results, console: Console | None = None, *,
+                  full: bool = True) -> None:
+    """Print the summary of an analysis: the first screen (:func:`print_first_screen`) and,
+    with ``full``, every table.
 
     Parameters
     ----------
@@ -133,9 +138,13 @@ def print_summary(results: Results, console: Console | None = None) -> None:
         The analysis to summarise.
     console : rich.console.Console, optional
         Where to print; a new console on standard output by default.
+    full : bool
+        Every table after the first screen (``flexbooster run --full``).
     """
     console = console or Console()
-    print_first_screen(results, console)
+    print_first_screen(results, console, full=full)
+    if not full:
+        return
     for title, rows in (("Input (SI)", input_rows(results)),
                         ("Mass properties (memo 2.2, Fig. 1; I_cm per erratum E1)",
                          mass_rows(results)),
