@@ -466,7 +466,8 @@ def test_default_case_results_unchanged():
                         "mass_properties", "frequencies", "dimensionless", "beam_modes",
                         "pitch", "shell_frequencies", "beam_action", "stability",
                         "warnings", "figures", "vehicle_regions",  # issue 15: every case
-                        "danger"}  # issue 17
+                        "danger",  # issue 17
+                        "verdict"}  # issue 33
 
 
 def test_thick_shell_warning_reaches_summary_and_results(tmp_path, capsys):

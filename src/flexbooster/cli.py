@@ -256,8 +256,11 @@ def run(case_file: Path | None, output: Path, no_figures: bool, no_vehicle: bool
                           on_estimate=getattr(step, "estimate", None))
         paths = write_outputs(results, output, figures=not no_figures, progress=step)
     _report(results, fmt, quiet, functools.partial(print_summary, full=full))
-    _wrote(paths, fmt, quiet)
     report = [p for p in paths if Path(p).name == "report.html"]
+    if full or fmt == "json" or not paths:
+        _wrote(paths, fmt, quiet)
+    elif not quiet:  # the short summary: one line for the files, then the report
+        click.echo(f"wrote {len(paths)} files to {Path(paths[0]).parent}")
     if report and fmt != "json" and not quiet:
         click.echo(f"open {report[0]}")
 

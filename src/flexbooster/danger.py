@@ -18,7 +18,7 @@ from .bands import MECHANISMS, Band, SearchGap, gaps_text
 __all__ = ["RankedBand", "DangerSummary", "Verdict", "STEADY_CAUSE", "NEGLIGIBLE_GROWTH",
            "NEGLIGIBLE_AMPLIFICATION", "UNSTABLE_AMPLIFICATION", "UNSTABLE_E_FOLDING",
            "AMPLIFICATION_EXPONENT_MAX", "band_measures", "band_status", "danger_bands",
-           "danger_summary", "hz_text", "mechanism_verdicts", "overall_verdict"]
+           "danger_summary", "edges_text", "hz_text", "mechanism_verdicts", "overall_verdict"]
 
 _KIND_WORDS = {"simple": "simple", "sum": "sum combination",
                "difference": "difference combination"}
@@ -111,10 +111,20 @@ def band_status(band: Band, *, duration: float | None, modal_ratio: float = 0.0)
     return "unstable" if 1.0 / sigma < UNSTABLE_E_FOLDING else "marginal"
 
 
+#: The forcing of a memo resonance in engineering words, by family (memo 7.3; the memo's terms
+#: stay in the severity table, docs/theory/severity.md).
+_FORCING_WORDS = {1: "pitch acceleration", 2: "beam bending", 3: "thrust pulsation at the aft edge",
+                  4: "pitch rate (centrifugal)", 5: "pitch rate (centrifugal)",
+                  6: "pitch rate (centrifugal)", 7: "pitch and gimbal side force",
+                  8: "pulsating gimbal side force", 9: "pulsating gimbal side force",
+                  10: "pitch rate (centrifugal)", 11: "pitch rate (centrifugal)",
+                  12: "pitch rate (centrifugal)", 13: "beam bending"}
+
+
 def _cause(band: Band) -> str:
     """The mechanism of a band in words."""
     if band.mechanism == "resonance":
-        return f"resonance (memo 7): family {band.order}: {band.cause}"
+        return f"forced resonance: {_FORCING_WORDS.get(band.order, band.cause)}"
     if band.mechanism == "pitch":
         return f"instability region (Mathieu tongue {band.order})"
     model = "; vehicle model" if band.mechanism == "vehicle" else ""
@@ -246,11 +256,18 @@ def _same_bands(bands: Sequence[Band]) -> list[tuple[Band, tuple[str, ...]]]:
     return out
 
 
+#: Order of the statuses in the ranking (:func:`band_status`).
+_STATUS_RANK = {"unstable": 0, "marginal": 1, "bounded": 2, "negligible": 3}
+
+
 def danger_bands(bands: Sequence[Band], *, operating_range: tuple[float, float],
-                 limit: int | None = None) -> tuple[RankedBand, ...]:
+                 limit: int | None = None, duration: float | None = None,
+                 modal_ratio: float = 0.0) -> tuple[RankedBand, ...]:
     """Every band once (the same physical band of two mechanisms merged, naming both), most
-    dangerous first: those the operating range reaches, then by growth rate, then resonances
-    by damped steady amplitude (undamped: by severity); ties by Omega_lo.
+    dangerous first: those the operating range reaches; then by status (:func:`band_status`:
+    unstable, marginal, bounded resonances, negligible growth); within one status the regions
+    by growth rate before the resonances by damped steady amplitude (undamped: by severity);
+    ties by Omega_lo.
 
     Parameters
     ----------
@@ -260,6 +277,10 @@ def danger_bands(bands: Sequence[Band], *, operating_range: tuple[float, float],
         [omega_min, omega_max] of the case (rad/s), finite, 0 <= omega_min < omega_max.
     limit : int, optional
         Keep the first ``limit`` (>= 0); all by default.
+    duration : float or None
+        Duration of the excitation (s), for the statuses.
+    modal_ratio : float
+        Modal damping ratio of the elastic modes, for the statuses.
     """
     lo, hi = _operating(operating_range)
     if limit is not None and (not isinstance(limit, int) or limit < 0):
@@ -268,29 +289,41 @@ def danger_bands(bands: Sequence[Band], *, operating_range: tuple[float, float],
               for b, also in _same_bands(bands)]
 
     def key(r: RankedBand) -> tuple:
+        rank = _STATUS_RANK[_status(r, duration, modal_ratio)]
         if r.growth_rate is not None:
-            return (not r.in_operating_range, 0, -r.growth_rate, r.Omega_lo)
+            return (not r.in_operating_range, rank, 0, -r.growth_rate, r.Omega_lo)
         amp = r.band.steady_amplitude  # damped: the steady amplitude; undamped: the severity
-        return (not r.in_operating_range, 1, 0 if amp is not None else 1,
-                -(amp if amp is not None else r.severity or 0.0), r.Omega_lo)
+        return (not r.in_operating_range, rank, 1, -(amp if amp is not None else
+                                                      r.severity or 0.0), r.Omega_lo)
 
     ranked.sort(key=key)
     return tuple(ranked if limit is None else ranked[:limit])
 
 
+def edges_text(lo: float, hi: float) -> str:
+    """'lo-hi' with the fewest significant digits (4..10) that tell the edges apart.
+
+    Parameters
+    ----------
+    lo, hi : float
+        Edges (any unit).
+    """
+    for digits in range(4, 11):
+        a, b = f"{lo:.{digits}g}", f"{hi:.{digits}g}"
+        if a != b:
+            return f"{a}-{b}"
+    return f"{lo:.10g}"
+
+
 def hz_text(lo_hz: float, hi_hz: float) -> str:
-    """Band edges in Hz to the digits that tell them apart: "18.25-18.31 Hz",
-    "45.20013-45.20021 Hz" (at least 4 significant digits, at most 15).
+    """Band edges in Hz to the digits that tell them apart: "18.25-18.31 Hz".
 
     Parameters
     ----------
     lo_hz, hi_hz : float
-        The edges (Hz), 0 <= lo_hz <= hi_hz.
+        The edges (Hz).
     """
-    width = hi_hz - lo_hz
-    digits = 4 if width <= 0.0 or hi_hz <= 0.0 else \
-        min(15, max(4, math.ceil(math.log10(hi_hz / width)) + 2))
-    return f"{lo_hz:.{digits}g}-{hi_hz:.{digits}g} Hz" if width > 0.0 else f"{lo_hz:.{digits}g} Hz"
+    return f"{edges_text(lo_hz, hi_hz)} Hz"
 
 
 def _status(ranked: RankedBand, duration: float | None, modal_ratio: float) -> str:
@@ -576,7 +609,8 @@ def danger_summary(*, operating_range: tuple[float, float], bands: Mapping[str, 
     ranked = danger_bands([band_measures(b, gamma=gamma, duration=duration,
                                          modal_ratio=modal_ratio)
                            for found in bands.values() for b in found],
-                          operating_range=operating_range)
+                          operating_range=operating_range, duration=duration,
+                          modal_ratio=modal_ratio)
     computed = {key: True for key in bands}
     lo, hi = _operating(operating_range)
     verdicts = mechanism_verdicts(ranked, computed=computed, gaps=gaps, duration=duration,

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 
+from ..danger import edges_text
 from ..results import Results
 
 __all__ = [
@@ -171,18 +172,15 @@ def frequency_rows(results: Results) -> list[Row]:
 
 
 def range_text(lo: float, hi: float) -> str:
-    """'lo-hi' with the fewest significant digits (4..10) that tell the edges apart.
+    """'lo-hi' with the fewest significant digits (4..10) that tell the edges apart
+    (:func:`flexbooster.danger.edges_text`).
 
     Parameters
     ----------
     lo, hi : float
         Edges (any unit).
     """
-    for digits in range(4, 11):
-        a, b = f"{lo:.{digits}g}", f"{hi:.{digits}g}"
-        if a != b:
-            return f"{a}-{b}"
-    return f"{lo:.10g}"
+    return edges_text(lo, hi)
 
 
 def verdict_rows(results: Results) -> list[tuple[str, str]]:

@@ -27,10 +27,13 @@ from .rows import (
     verdict_rows,
 )
 
-__all__ = ["print_summary", "print_stability", "print_first_screen", "TERMINAL_BANDS"]
+__all__ = ["print_summary", "print_stability", "print_first_screen", "TERMINAL_BANDS",
+           "TERMINAL_MODES"]
 
 #: Bands listed on the terminal's first screen (the report lists more; all in results.json).
-TERMINAL_BANDS = 5
+TERMINAL_BANDS = 8
+#: Modes of a band named on the terminal (the rest counted; all in the report).
+TERMINAL_MODES = 2
 
 
 _OVERALL_STYLE = {"UNSTABLE": "bold red", "MARGINAL": "bold yellow", "STABLE": "bold green"}
@@ -123,7 +126,10 @@ def _band_block(rows: list[tuple[str, ...]], width: int) -> str:
     out = line(heads, "mode; mechanism")
     out.append("-" * min(width - 1, lead + 72))
     for r in rows:
-        out += line(r[:5], f"{r[5]}; {r[6]}")
+        modes = r[5].split(" + ")
+        if len(modes) > TERMINAL_MODES:
+            modes = [*modes[:TERMINAL_MODES], f"{len(modes) - TERMINAL_MODES} more"]
+        out += line(r[:5], f"{' + '.join(modes)}; {r[6]}")
     return "\n".join(out)
 
 
