@@ -74,10 +74,10 @@ def test_pitch_principal_region_critical_damping_and_gamma_against_direct_floque
                                       damping_ratio=zeta) if b.order == 1]
     zeta_cr = optimize.brentq(lambda z: _peak(w, gamma, z), 1e-3, 0.1, xtol=1e-10)
     gamma_cr = optimize.brentq(lambda g: _peak(w, g, zeta), 1e-3, gamma, xtol=1e-10)
-    assert band.critical_damping_ratio == pytest.approx(zeta_cr, rel=1e-4)
+    measured = band_measures(band, gamma=gamma, duration=None)  # as danger_summary does
+    assert measured.critical_damping_ratio == pytest.approx(zeta_cr, rel=1e-4)
     assert band.critical_gamma == pytest.approx(gamma_cr, rel=1e-4)
     # and its margin at the case's gamma is gamma_cr / gamma (< 1: open)
-    measured = band_measures(band, gamma=gamma, duration=None)
     assert measured.margin == pytest.approx(gamma_cr / gamma, rel=1e-4)
 
 
@@ -286,3 +286,33 @@ def test_damped_resonances_rank_by_steady_amplitude():
                        bands={"resonance": [res(20.0, 2.0, 1000.0), res(30.0, 1.0, 10.0)]})
     assert [b.Omega_lo for b in s.bands] == [30.0, 20.0]
     assert "largest response 1e+04 mm" in s.verdict.reason
+
+
+# --------------------------------------------------------------------------------------------
+# The default case (acceptance of issue 33)
+# --------------------------------------------------------------------------------------------
+@pytest.mark.slow
+def test_default_case_verdict_acceptance(default_results):
+    """The default case: results.json holds the verdict (overall, reason, mechanisms) at 1 %
+    modal damping and 150 s; no band with an e-folding time above 1e6 s counts as unstable
+    (nor its mechanism's line); no band is listed twice (no two ranked bands of one mechanism
+    with the same edges, no pitch tongue beside the beam action's rigid-pitch band of the same
+    order that overlaps it)."""
+    r = default_results
+    d = json.loads(json.dumps(r.to_dict()))["verdict"]
+    assert d["overall"] in ("UNSTABLE", "MARGINAL", "STABLE") and d["reason"]
+    assert d["damping"] == {"modal_ratio": 0.01, "pitch_ratio": 0.0} and d["duration"] == 150.0
+    assert set(d["mechanisms"]) == {"pitch", "beam_action", "vehicle", "resonance"}
+    slow = [b for b in r.danger.bands if b.band.e_folding_s is not None
+            and b.band.e_folding_s > 1e6]
+    for b in slow:
+        assert band_status(b.band, duration=150.0, modal_ratio=0.01) == "negligible"
+    for key in {b.mechanism for b in slow}:
+        assert not d["mechanisms"][key].startswith("unstable")
+    keys = [(b.mechanism, b.Omega_lo, b.Omega_hi) for b in r.danger.bands]
+    assert len(keys) == len(set(keys))
+    pitch = [b for b in r.danger.bands if b.mechanism == "pitch"]
+    tongues = [b for b in r.danger.bands if b.mechanism == "beam_action"
+               and b.band.kind == "simple" and b.mode_text == "rigid pitch"]
+    assert not any(p.band.order == t.band.order and p.Omega_lo <= t.Omega_hi
+                   and t.Omega_lo <= p.Omega_hi for p in pitch for t in tongues)

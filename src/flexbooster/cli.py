@@ -260,7 +260,7 @@ def run(case_file: Path | None, output: Path, no_figures: bool, no_vehicle: bool
     if full or fmt == "json" or not paths:
         _wrote(paths, fmt, quiet)
     elif not quiet:  # the short summary: one line for the files, then the report
-        click.echo(f"wrote {len(paths)} files to {Path(paths[0]).parent}")
+        click.echo(f"wrote {len(paths)} files to {output}")
     if report and fmt != "json" and not quiet:
         click.echo(f"open {report[0]}")
 

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from .bands import MECHANISMS, Band, SearchGap, gaps_text
+from .floquet import tongue_critical_damping
 
 __all__ = ["RankedBand", "DangerSummary", "Verdict", "STEADY_CAUSE", "NEGLIGIBLE_GROWTH",
            "NEGLIGIBLE_AMPLIFICATION", "UNSTABLE_AMPLIFICATION", "UNSTABLE_E_FOLDING",
@@ -44,8 +45,10 @@ AMPLIFICATION_EXPONENT_MAX = 700.0
 def band_measures(band: Band, *, gamma: float, duration: float | None,
                   modal_ratio: float = 0.0) -> Band:
     """The band with its margin critical_gamma / gamma (where gamma > 0 and the band is
-    damped) and its growth exponent sigma T and amplification exp(sigma T) over the
-    duration T (None without one); a resonance with its damped steady amplitude.
+    damped), its growth exponent sigma T and amplification exp(sigma T) over the duration T
+    (None without one) and, for a rigid-pitch tongue that is not negligible
+    (:func:`band_status`), its critical damping ratio; a resonance with its damped steady
+    amplitude.
 
     A resonance of memo 7 grows undamped like (|G| / 2 omega) t (docs/theory/severity.md: the
     severity v, m/s); with modal damping zeta its steady amplitude is |G| / (2 zeta omega^2) =
@@ -76,8 +79,14 @@ def band_measures(band: Band, *, gamma: float, duration: float | None,
         exponent = band.growth_rate_max * float(duration)  # sigma T
         if exponent <= AMPLIFICATION_EXPONENT_MAX:
             amplification = math.exp(exponent)
+    zeta_cr = band.critical_damping_ratio
+    if zeta_cr is None and band.mechanism == "pitch" and 0.0 < gamma < 1.0 and \
+            band_status(band, duration=duration) != "negligible":
+        # Mathieu tongue r: the smallest pitch damping closing it (Bolotin 1964, sec. 6);
+        # only where the band counts (each costs a few Hill maximisations)
+        zeta_cr = tongue_critical_damping(band.order, gamma)
     return dataclasses.replace(band, margin=margin, growth_exponent=exponent,
-                               amplification=amplification)
+                               amplification=amplification, critical_damping_ratio=zeta_cr)
 
 
 def band_status(band: Band, *, duration: float | None, modal_ratio: float = 0.0) -> str:

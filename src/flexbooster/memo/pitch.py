@@ -380,8 +380,7 @@ def _pitch_search(omega_psi: float, gamma: float, omega_min: float, omega_max: f
         # growth of psi: e^((mu - c) tau_1), tau_1 = Omega t / 2, c = zeta sqrt(a)
         growth = max(f_m, 0.0) * om_m / 2.0
         crit = mathieu.tongue_critical_gamma(r, gamma, zeta) if zeta > 0.0 else 0.0
-        bands.append(Band(critical_damping_ratio=mathieu.tongue_critical_damping(r, gamma),
-                          mechanism="pitch", Omega_lo=float(lo), Omega_hi=float(hi),
+        bands.append(Band(mechanism="pitch", Omega_lo=float(lo), Omega_hi=float(hi),
                           kind="simple", order=r, modes=(PITCH_MODE,),
                           growth_rate_max=float(growth), Omega_at_max=float(om_m),
                           Omega_center=2.0 * w / r,  # tongue r: a = 4 omega_psi^2/Omega^2 = r^2
