@@ -412,7 +412,7 @@ def test_run_with_vehicle_table(vehicle_case_file, tmp_path, capsys):
     they are tested through analyze in test_vehicle_pipeline.py)."""
     out = tmp_path / "run"
     assert run_cli(["run", str(vehicle_case_file), "-o", str(out), "--no-figures",
-                    "--no-vehicle"]) == 0
+                    "--no-vehicle", "--full"]) == 0  # --full: every table (issue 33)
     text = capsys.readouterr().out
     assert "Vehicle modes (shell of revolution)" in text and "prestressed by the thrust" in text
     data = json.loads((out / "results.json").read_text())
