@@ -190,6 +190,7 @@ def test_same_case_in_si_and_inch_pound_units(case_dict, default_results):
             "omega_min": f"{t.omega_min / (2 * math.pi)!r} Hz",
             "omega_max": f"{t.omega_max * 60 / (2 * math.pi)!r} rpm",
             "n_omega": t.n_omega,
+            "duration": f"{t.duration / 60.0!r} min",  # the default case's 150 s (issue 33)
         },
         "truncation": case_dict["truncation"],
     }

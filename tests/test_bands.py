@@ -47,6 +47,7 @@ def _titan(**thrust):
     data = tomllib.loads(TITAN.read_text())
     data["thrust"]["n_omega"] = 40  # issue 12: the bands must not depend on the grid
     data["thrust"].update(thrust)
+    data["damping"] = {"modal_ratio": 0.0}  # the memo's undamped idealisation
     return load_case(data)
 
 
@@ -450,12 +451,16 @@ def test_results_json_holds_the_bands(default_results):
 
 
 @pytest.mark.slow
-def test_beam_action_chart_tips_are_the_resonance_centres(default_results):
+def test_beam_action_chart_tips_are_the_resonance_centres(case_dict):
     # exact limit: without damping each region grows out of its analytic centre at gamma = 0
     # (2 omega_i or omega_i + omega_k for order 1), and widens with gamma (Bolotin 1964 ch. 1);
     # centres from the loaded frequencies to 1e-12 relative
-    chart = default_results.figures.beam_action_chart
-    system = beam_system(default_results.model)
+    from flexbooster.memo.charts import beam_action_chart
+
+    case_dict["damping"] = {"modal_ratio": 0.0}  # the default case undamped
+    model = model_from_case(load_case(case_dict))
+    chart = beam_action_chart(model)
+    system = beam_system(model)
     w = np.real(loaded_frequencies(system)) * system.omega_1
     centres = np.concatenate([2 * w, (w[:, None] + w[None, :])[np.triu_indices(w.size, 1)],
                               np.abs(w[:, None] - w[None, :])[np.triu_indices(w.size, 1)]])
@@ -492,7 +497,10 @@ def test_damping_fields_are_validated(field, value):
 
 def test_damping_fields_reach_the_model():
     data = tomllib.loads(TITAN.read_text())
-    data["damping"] = {"beam_modal_ratio": 0.01, "pitch_ratio": 0.02}
+    data["damping"] = {"modal_ratio": 0.03, "pitch_ratio": 0.02}
     m = model_from_case(load_case(data))
-    assert (m.beam_damping_ratio, m.pitch_damping_ratio) == (0.01, 0.02)
-    assert model_from_case(default_case()).beam_damping_ratio == 0.0
+    assert (m.beam_damping_ratio, m.pitch_damping_ratio) == (0.03, 0.02)
+    data["damping"] = {"beam_modal_ratio": 0.04}  # the deprecated key: used, with a warning
+    m = model_from_case(load_case(data))
+    assert (m.beam_damping_ratio, m.pitch_damping_ratio) == (0.04, 0.0)
+    assert model_from_case(default_case()).beam_damping_ratio == 0.01  # 1 % by default

@@ -23,7 +23,7 @@ def run_cli(argv):
 
 @pytest.mark.slow
 def test_run_default_writes_results(tmp_path, capsys):
-    assert run_cli(["run", "-o", str(tmp_path)]) == 0
+    assert run_cli(["run", "-o", str(tmp_path), "--full"]) == 0  # --full: every table
     out = capsys.readouterr().out
     assert "Mass properties" in out and "omega_1" in out
     data = json.loads((tmp_path / "results.json").read_text())
@@ -430,12 +430,28 @@ def test_the_command_runs_one_blas_thread_unless_the_user_chose(user, expected):
         assert threads == expected[0]
 
 
+def test_short_summary_by_default(tmp_path, capsys, small_case_file, monkeypatch):
+    """flexbooster run (issue 33): the overall verdict on line 1, the damping stated, no input
+    table (those with --full), one line for the files and "open OUT/report.html" last; piped
+    at COLUMNS=80 no line is wider than 80 columns and no cell is cut."""
+    monkeypatch.setenv("COLUMNS", "80")
+    out = tmp_path / "out"
+    assert run_cli(["run", str(small_case_file), "--no-figures", "-o", str(out)]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert lines[0].split(":")[0] in ("UNSTABLE", "MARGINAL", "STABLE")
+    assert any(line.startswith("damping: ") for line in lines[:8])
+    assert not any(line.startswith("Input (SI)") for line in lines)
+    assert lines[-2].startswith("wrote ") and lines[-1] == f"open {out / 'report.html'}"
+    assert max(len(line) for line in lines[:-2]) <= 80  # the two path lines: as long as OUT
+    assert "\u2026" not in "".join(lines)
+
+
 def test_a_fault_of_the_summary_loses_no_result(tmp_path, capsys, monkeypatch, small_case_file):
     """The summary is printed once the files are published: an error in it (a bug) is an
     internal error (exit 1, one line) and the set stays whole."""
     import flexbooster.present.summary as summary
 
-    def broken(results, console):
+    def broken(results, console, **options):  # options: full (run --full)
         raise RuntimeError("summary fault")
 
     monkeypatch.setattr(summary, "print_summary", broken)

@@ -89,14 +89,16 @@ def test_in_operating_range_is_interval_overlap(lo, hi, inside):
 
 
 def test_ranking_exact_and_independent_of_input_order():
-    # by construction: in range before out of range; growth rate (largest first) before
-    # resonances (largest severity first)
+    # by construction: in range before out of range; then by status (docs/theory/verdicts.md:
+    # unstable, marginal, ...); within a status growth rate (largest first) before resonances
+    # (largest severity first). Undamped, no duration: growth 0.5 1/s (e-folding 2 s) and the
+    # resonances are unstable, 0.01 1/s (100 s) marginal
     bands = [_ba(20.0, 21.0, 0.01), _ba(30.0, 31.0, 0.5), _ba(200.0, 201.0, 9.0),
              _res(60.0, 60.5, 3.0), _res(70.0, 70.5, 30.0)]
     ranked = danger_bands(bands, operating_range=OPERATING)
     order = [(b.mechanism, b.Omega_lo) for b in ranked]
-    assert order == [("beam_action", 30.0), ("beam_action", 20.0), ("resonance", 70.0),
-                     ("resonance", 60.0), ("beam_action", 200.0)]
+    assert order == [("beam_action", 30.0), ("resonance", 70.0), ("resonance", 60.0),
+                     ("beam_action", 20.0), ("beam_action", 200.0)]
     assert danger_bands(bands[::-1], operating_range=OPERATING) == ranked
     assert danger_bands(bands, operating_range=OPERATING, limit=2) == ranked[:2]
 
@@ -111,7 +113,8 @@ def test_resonance_band_in_words():
     (d,) = danger_bands([band], operating_range=OPERATING)
     assert (d.Omega_lo, d.Omega_hi, d.severity, d.growth_rate) == (379.1, 379.3, 6.4e-3, None)
     assert d.mode_text.startswith("cylinder 1 shell mode j = 1, k = 0, m = 1 (axial)")
-    assert d.cause_text == "resonance (memo 7): family 3: thrust pulsation at the aft edge"
+    # engineering words on the first screen; the memo's family stays in the severity table
+    assert d.cause_text == "forced resonance: thrust pulsation at the aft edge"
 
 
 def test_vehicle_region_in_words():
@@ -175,7 +178,8 @@ def test_a_mechanism_with_a_gap_is_never_stable():
         (), computed={"vehicle": True, "pitch": True}, gaps=[gap]))
     assert v["vehicle"] == "not fully searched: harmonic k = 19 not searched: max_steps"
     assert v["pitch"] == "stable in the operating range"
-    bands = danger_bands([_band("vehicle", 20.0, 21.0, 0.1, k=2)], operating_range=OPERATING)
+    # growth 1 1/s: e-folding 1 s, unstable (docs/theory/verdicts.md)
+    bands = danger_bands([_band("vehicle", 20.0, 21.0, 1.0, k=2)], operating_range=OPERATING)
     (text,) = [t for k, _, t in mechanism_verdicts(bands, computed={"vehicle": True},
                                                    gaps=[gap]) if k == "vehicle"]
     assert text.startswith("unstable: 1 instability region") and text.endswith(

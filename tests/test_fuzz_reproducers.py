@@ -491,7 +491,8 @@ def test_fuzz_reproducer_vehicle_regions_of_a_flat_plate():
         "thrust": {"gamma": 0.126, "K": 1.97, "omega_min": 1.0, "omega_max": 957.0,
                    "n_omega": 12, "T0": 1.539e8},
         "truncation": {"M1": 4, "N1": 4, "M2": 3, "N2": 3, "N": 3, "S": 1, "R": 2},
-        "vehicle": {"k_max": 10, "n_modes": 5, "damping_ratio": 0.0, "theory": "donnell",
+        "damping": {"modal_ratio": 0.0},  # undamped as found (before the 1 % default)
+        "vehicle": {"k_max": 10, "n_modes": 5, "theory": "donnell",
                     "aft_end": "free", "fwd_end": "hinged", "segments": [
                         {"kind": "cone", "radius_aft": 1.0, "radius_fwd": 3.0, "length": 0.0,
                          "thickness": 0.0794},

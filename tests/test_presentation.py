@@ -24,9 +24,9 @@ def results(default_results):
     return default_results
 
 
-def _summary_text(results, width: int) -> str:
+def _summary_text(results, width: int, *, full: bool = True) -> str:
     console = Console(width=width, record=True, color_system=None)
-    print_summary(results, console)
+    print_summary(results, console, full=full)
     return console.export_text()
 
 
@@ -35,29 +35,37 @@ def _summary_text(results, width: int) -> str:
 def test_summary_fits_without_a_cut_cell(results, width):
     # acceptance of issue 17: at 80 columns no cell is cut (rich marks a cut with an ellipsis)
     # and no line is wider than the terminal
-    text = _summary_text(results, width)
-    assert "\u2026" not in text and "..." not in text.replace(" .. ", "")
-    assert max(len(line) for line in text.splitlines()) <= width
+    for full in (True, False):
+        text = _summary_text(results, width, full=full)
+        assert "\u2026" not in text and "..." not in text.replace(" .. ", "")
+        assert max(len(line) for line in text.splitlines()) <= width
 
 
 def test_first_screen_is_verdicts_then_ranked_bands(results):
-    # acceptance: the first screen (at most 40 lines of an 80-column terminal, up to the
-    # first input table) holds the verdict of every mechanism and the top bands
-    lines = _summary_text(results, 80).splitlines()
-    n_head = next(i for i, line in enumerate(lines) if line.startswith("Input (SI)"))
-    assert n_head <= 40
-    head = "\n".join(lines[:n_head])
+    # acceptance (issues 17, 33): line 1 is the overall verdict, the damping is stated, then
+    # the verdict of every mechanism and the top bands; the short summary (flexbooster run
+    # without --full) is at most 60 lines of an 80-column terminal and the full summary starts
+    # with the same first screen
+    short = _summary_text(results, 80, full=False)
+    lines = short.splitlines()
+    assert len(lines) <= 60
+    assert re.match(r"^(UNSTABLE|MARGINAL|STABLE): ", lines[0])
+    assert "1 % modal damping" in short and "Input (SI)" not in short
     for words in ("rigid-body pitch", "beam action", "vehicle parametric regions",
                   "memo resonances", "Most dangerous thrust-frequency bands"):
-        assert words in head, words
-    assert head.index("Verdicts") < head.index("Most dangerous")
-    ranked = [line for line in lines[:n_head] if re.match(r"^\d+ ", line)]
+        assert words in short, words
+    assert short.index("Verdicts") < short.index("Most dangerous")
+    for internal in ("issue", "memo roots", "certified", "family 3 (3,13)", "via u*"):
+        assert internal not in short, internal
+    after = lines[next(i for i, x in enumerate(lines) if x.startswith("Most dangerous")):]
+    ranked = [line for line in after if re.match(r"^\d+ ", line)]
     assert len(ranked) == min(TERMINAL_BANDS, len(results.danger.bands))
     # the top band's Omega range (rad/s) as the table prints it
     top = results.danger.bands[0]
     assert range_text(top.Omega_lo, top.Omega_hi) in ranked[0]
-    text = "\n".join(lines)
-    assert "instability region" in text and "unstable frequencies:" not in text.lower()
+    full = _summary_text(results, 80)
+    assert full.startswith(short.split("Warnings")[0]) and "Input (SI)" in full
+    assert "unstable frequencies:" not in full.lower()
 
 
 @pytest.mark.parametrize(
@@ -180,7 +188,10 @@ def test_danger_map_tooltips_and_axes(results, default_svgs):
     titles = re.findall(r"<title>([^<]*)</title>", svg)
     # one tooltip per band (a resonance's stem and its head carry the same one)
     assert len(set(titles)) == len(results.danger.bands)
-    assert titles[0].startswith("#1: Omega ") and "1/s" in titles[0]
+    # the top-ranked band's tooltip is there; a region's names its growth rate, a damped
+    # resonance's its steady response (issue 33)
+    assert any(t.startswith("#1: Omega ") for t in titles)
+    assert all("1/s" in t or " mm (severity " in t for t in titles)
     assert "<script" not in svg
     from flexbooster.present.plotting.danger import danger_map
 

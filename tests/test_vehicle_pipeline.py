@@ -223,9 +223,10 @@ def test_region_fields_and_defaults():
     """Defaults (issue 15): damping ratio 0.01, 20 modes per k; 0 damping allowed; the memo
     vehicle's [vehicle] table (no segments) may set them."""
     case = load_case(small_case_data(damping_ratio=0, n_modes=4))
-    assert case.vehicle.damping_ratio == 0.0 and case.vehicle.n_modes == 4
-    case = load_case(small_case_data(theory="donnell"))
-    assert case.vehicle.damping_ratio == 0.01 and case.vehicle.n_modes == 20
+    assert case.vehicle_damping_ratio == 0.0 and case.vehicle.n_modes == 4
+    case = load_case(small_case_data(theory="donnell"))  # damping.modal_ratio (issue 33)
+    assert case.vehicle.damping_ratio is None and case.vehicle_damping_ratio == 0.01
+    assert case.vehicle.n_modes == 20
 
 
 # --------------------------------------------------------------------------- settings

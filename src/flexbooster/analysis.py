@@ -18,7 +18,7 @@ import numpy as np
 
 from . import cost, floquet
 from ._threads import blas_threads
-from .case import Case
+from .case import Case, deprecation_warnings
 from .checks import count, finite, positive
 from .danger import danger_summary
 from .dynamics import (
@@ -239,11 +239,12 @@ def analyze(
         figures=data,
         beam_action=action,
         stability=table,
-        warnings=tuple(_warnings(model, pitch.a, pitch.q) + extra),
+        warnings=tuple(deprecation_warnings(case) + _warnings(model, pitch.a, pitch.q)
+                       + extra),
         vehicle=survey,
         vehicle_regions=regions,
         memo_roots_in_regions=matches,
-        danger=_danger(model, pitch, action, regions, severity),
+        danger=_danger(model, pitch, action, regions, severity, case=case),
         severity=severity,
         forced_response=forced,
         flight=flight,
@@ -289,7 +290,9 @@ def _analyze_segments(case: Case, step: Callable[[str], None], *, figures: bool,
     danger = danger_summary(
         operating_range=(t.omega_min, t.omega_max),
         bands={"pitch": pitch.bands, **({} if found is None else {"vehicle": found.regions})},
-        gaps=list(pitch.gaps) + ([] if found is None else list(found.gaps)))
+        gaps=list(pitch.gaps) + ([] if found is None else list(found.gaps)),
+        gamma=t.gamma, duration=t.duration, modal_ratio=case.vehicle_damping_ratio,
+        pitch_ratio=case.damping.pitch_ratio)
     memo = {"beam_action", "resonance"}  # the memo's mechanisms: not applicable, never stable
     danger = dataclasses.replace(danger, verdicts=tuple(
         (key, words, f"not applicable: {MEMO_NOT_APPLICABLE}" if key in memo else verdict)
@@ -301,8 +304,9 @@ def _analyze_segments(case: Case, step: Callable[[str], None], *, figures: bool,
                    flight=flight)
 
 
-def _danger(model: BoosterModel, pitch, action, regions, severity):
-    """The ranked bands and verdicts of every mechanism computed, with their gaps."""
+def _danger(model: BoosterModel, pitch, action, regions, severity, *, case: Case):
+    """The ranked bands, the verdicts of every mechanism computed (with their gaps) and the
+    overall verdict at the case's damping and duration."""
     found = {"pitch": pitch.bands}
     gaps = list(pitch.gaps)
     if action is not None:
@@ -313,7 +317,11 @@ def _danger(model: BoosterModel, pitch, action, regions, severity):
         gaps += regions.gaps
     if severity is not None:
         found["resonance"] = severity.bands
-    return danger_summary(operating_range=model.omega_range, bands=found, gaps=gaps)
+    return danger_summary(operating_range=model.omega_range, bands=found, gaps=gaps,
+                          gamma=model.gamma, duration=case.thrust.duration,
+                          # the least damped elastic modes (a deprecated key may set one)
+                          modal_ratio=min(case.damping.beam_ratio, case.vehicle_damping_ratio),
+                          pitch_ratio=case.damping.pitch_ratio)
 
 
 def _stability_table(model: BoosterModel, shell, params
@@ -572,7 +580,7 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
     # at most the DOFs of a harmonic's mesh (a vehicle.n_modes up to 500 is valid input)
     n_modes = cost.region_modes(case, vehicle, k_max=k_max)[0]
     settings = dict(F0=case.F0, omega_min=t.omega_min, omega_max=t.omega_max, k_min=k_min,
-                    k_max=k_max, n_modes=n_modes, damping_ratio=table.damping_ratio,
+                    k_max=k_max, n_modes=n_modes, damping_ratio=case.vehicle_damping_ratio,
                     gimbal_gain=t.K)
     with blas_threads(1):
         try:
@@ -667,16 +675,14 @@ def memo_roots_in_regions(table: StabilityTable, regions: VehicleRegions, *,
 
 def modal_damping_ratio(case: Case) -> float:
     """The modal damping ratio zeta of the vehicle's elastic modes in the forced response:
-    ``vehicle.damping_ratio`` (default :data:`flexbooster.vehicle_case.REGION_DAMPING_RATIO`).
+    ``damping.modal_ratio`` (or the deprecated ``vehicle.damping_ratio`` where given).
 
     Parameters
     ----------
     case : Case
         The validated case.
     """
-    from .vehicle_case import VehicleTable
-
-    return (case.vehicle if case.vehicle is not None else VehicleTable()).damping_ratio
+    return case.vehicle_damping_ratio
 
 
 def forced_stations(case: Case, vehicle=None) -> tuple[tuple[tuple[str, float], ...], tuple]:
@@ -757,7 +763,7 @@ def analyze_forced_response(case: Case) -> ForcedLoads:
     stations (the edges, junctions, lumped masses and ``[[output.stations]]``), all the modes
     below 4 Omega_max (at least 4) with the static correction of the others, and its convergence
     against half the basis; CaseError on ``thrust.F0`` (the thrust buckles the vehicle),
-    ``vehicle.damping_ratio`` or ``damping.pitch_ratio`` (an undamped resonance in the range)
+    ``damping.modal_ratio`` or ``damping.pitch_ratio`` (an undamped resonance in the range)
     or ``vehicle.segments`` (a flat plate). Theory: docs/theory/forced-response.md.
 
     Parameters
@@ -783,7 +789,7 @@ def analyze_forced_response(case: Case) -> ForcedLoads:
                             f"({exc}): no forced response") from None
         except UndampedResonanceError as exc:
             field = ("damping.pitch_ratio" if exc.parameter == "pitch_damping_ratio"
-                     else "vehicle.damping_ratio")
+                     else "damping.modal_ratio")
             value = (case.damping.pitch_ratio if exc.parameter == "pitch_damping_ratio"
                      else modal_damping_ratio(case))
             raise CaseError(field, value, f"the k = {exc.k} mode at {exc.omega:.6g} rad/s "

@@ -145,6 +145,17 @@ class Band:
         Resonance: families (memo 7.3) of the band's roots.
     cause : str
         The forcing or mechanism in words, where the kind alone does not say it.
+    critical_damping_ratio : float or None
+        Smallest modal damping ratio of the band's modes that closes it at the case's gamma;
+        None where not computed.
+    margin : float or None
+        critical_gamma / gamma at the case's gamma (< 1: open); None where not set.
+    growth_exponent, amplification : float or None
+        sigma T and exp(sigma T) over the excitation's duration T (``thrust.duration``); None
+        without a duration (amplification also past exp(700)).
+    steady_amplitude, steady_acceleration : float or None
+        Resonance: the damped steady amplitude (m) and acceleration (m/s^2) of the resonant
+        mode's largest surface displacement at the case's modal damping; None undamped.
     """
 
     mechanism: str
@@ -164,6 +175,12 @@ class Band:
     n_roots: int = 0
     families: tuple[int, ...] = ()
     cause: str = ""
+    critical_damping_ratio: float | None = None
+    margin: float | None = None
+    growth_exponent: float | None = None
+    amplification: float | None = None
+    steady_amplitude: float | None = None
+    steady_acceleration: float | None = None
 
     def __post_init__(self) -> None:
         if self.mechanism not in dict(MECHANISMS):
@@ -189,6 +206,12 @@ class Band:
         return self.Omega_lo / (2.0 * math.pi), self.Omega_hi / (2.0 * math.pi)
 
     @property
+    def e_folding_s(self) -> float | None:
+        """Time in which the largest growth multiplies the motion by e: 1 / growth_rate_max
+        (s); None without growth (a resonance, a band at its edge)."""
+        return 1.0 / self.growth_rate_max if self.growth_rate_max > 0.0 else None
+
+    @property
     def mode_text(self) -> str:
         """The modes in words, joined by " + "."""
         return " + ".join(m.label for m in self.modes) or "-"
@@ -209,5 +232,15 @@ class Band:
             "severity": None if self.severity is None else float(self.severity),
             "severity_rel": None if self.severity_rel is None else float(self.severity_rel),
             "n_roots": int(self.n_roots), "families": [int(f) for f in self.families],
-            "cause": self.cause,
+            "cause": self.cause, "e_folding_s": _opt(self.e_folding_s),
+            "critical_damping_ratio": _opt(self.critical_damping_ratio),
+            "margin": _opt(self.margin), "growth_exponent": _opt(self.growth_exponent),
+            "amplification": _opt(self.amplification),
+            "steady_amplitude": _opt(self.steady_amplitude),
+            "steady_acceleration": _opt(self.steady_acceleration),
         }
+
+
+def _opt(value: float | None) -> float | None:
+    """A float for JSON, None kept."""
+    return None if value is None else float(value)

@@ -22,10 +22,10 @@ from typing import Any, Literal
 import numpy as np
 from pydantic import BaseModel, ConfigDict, StrictInt, ValidationError, field_validator
 
-from .errors import CaseError
+from .errors import AnalysisWarning, CaseError
 from .flight_case import FlightTable, check_flight
 from .units import to_si
-from .vehicle_case import VehicleTable, check_vehicle
+from .vehicle_case import REGION_DAMPING_RATIO, VehicleTable, check_vehicle
 
 __all__ = [
     "Cylinder",
@@ -40,6 +40,9 @@ __all__ = [
     "Case",
     "MAX_MODES",
     "vehicle_length",
+    "MODAL_DAMPING_RATIO",
+    "DEPRECATED_KEYS",
+    "deprecation_warnings",
     "load_case",
     "default_case",
     "default_case_text",
@@ -49,6 +52,14 @@ __all__ = [
 MAX_MODES = 500
 #: Largest number of points of the Omega grid.
 MAX_GRID = 100_000
+
+#: Default damping ratio of every elastic mode (``damping.modal_ratio``).
+MODAL_DAMPING_RATIO = REGION_DAMPING_RATIO
+#: Keys kept for old case files: (deprecated key, key that replaces it). Each one given is
+#: used for its modes (over ``damping.modal_ratio``), with a ``deprecated-key`` warning
+#: (:func:`deprecation_warnings`).
+DEPRECATED_KEYS = (("damping.beam_modal_ratio", "damping.modal_ratio"),
+                   ("vehicle.damping_ratio", "damping.modal_ratio"))
 
 _FROZEN = ConfigDict(extra="forbid", frozen=True)
 
@@ -171,6 +182,9 @@ class Thrust(BaseModel):
     spectrum : tuple of SpectrumLine or None
         Lines of the thrust oscillation for the forced response, instead of gamma over the
         Omega range; frequencies strictly increasing.
+    duration : float or None
+        How long the pulsation lasts (s), > 0, finite: the amplification exp(sigma T) of each
+        band over it; None (default): the verdict speaks of e-folding times only.
     """
 
     model_config = _FROZEN
@@ -191,8 +205,10 @@ class Thrust(BaseModel):
         if not abs(result) < math.pi / 2.0:
             raise ValueError("must be an angle in (-pi/2, pi/2) rad")
         return result
+    duration: float | None = None
 
     _F0 = field_validator("F0", mode="before")(_quantity("force"))
+    _duration = field_validator("duration", mode="before")(_quantity("time"))
     _T0 = field_validator("T0", mode="before")(_quantity("force_per_length"))
     _omega = field_validator("omega_min", "omega_max", mode="before")(
         _quantity("angular_frequency")
@@ -258,28 +274,39 @@ class Truncation(BaseModel):
 
 
 class Damping(BaseModel):
-    """Optional viscous damping of the band search (table ``[damping]``; default none).
+    """Viscous modal damping of every mechanism (table ``[damping]``).
 
     Attributes
     ----------
-    beam_modal_ratio : float
-        Modal damping ratio of the elastic beam modes in the steady beam-action modal frame,
-        0 <= zeta < 1.
+    modal_ratio : float
+        Damping ratio zeta of every elastic mode of every mechanism: the memo's beam modes
+        (beam action), the vehicle's loaded modes (parametric regions), 0 <= zeta < 1, default
+        :data:`MODAL_DAMPING_RATIO`; 0 gives the memo's undamped idealisation.
     pitch_ratio : float
-        Damping ratio of the rigid-body pitch, 0 <= zeta < 1.
+        Damping ratio of the rigid-body pitch, 0 <= zeta < 1, default 0.
+    beam_modal_ratio : float or None
+        Deprecated name of the beam modes' ratio (:data:`DEPRECATED_KEYS`): used for the beam
+        modes when given, with a warning naming ``damping.modal_ratio``.
     """
 
     model_config = _FROZEN
-    beam_modal_ratio: float = 0.0
+    modal_ratio: float = MODAL_DAMPING_RATIO
     pitch_ratio: float = 0.0
+    beam_modal_ratio: float | None = None
 
-    @field_validator("beam_modal_ratio", "pitch_ratio", mode="before")
+    @field_validator("modal_ratio", "beam_modal_ratio", "pitch_ratio", mode="before")
     @classmethod
     def _ratio(cls, value: Any, info) -> float:  # noqa: ANN001
         result = to_si(info.field_name, value, "dimensionless")
         if not 0.0 <= result < 1.0:
             raise ValueError("damping ratio must lie in [0, 1)")
         return result
+
+    @property
+    def beam_ratio(self) -> float:
+        """Damping ratio of the memo's elastic beam modes: ``modal_ratio``, or the deprecated
+        ``beam_modal_ratio`` where given."""
+        return self.modal_ratio if self.beam_modal_ratio is None else self.beam_modal_ratio
 
 
 class OutputStation(BaseModel):
@@ -374,7 +401,7 @@ class Case(BaseModel):
     truncation : Truncation
         Series truncation of the memo's method.
     damping, severity : Damping, SeverityTable
-        Optional tables (no damping by default).
+        Optional tables (1 % modal damping, undamped rigid pitch by default).
     vehicle : VehicleTable or None
         The optional ``[vehicle]`` table (:mod:`flexbooster.vehicle_case`).
     flight : FlightTable or None
@@ -442,6 +469,14 @@ class Case(BaseModel):
             raise CaseError("thrust", None, "required field is missing (the analysis needs "
                             "the thrust; 'flexbooster modes' gives the unloaded modes without)")
         return self.thrust
+
+    @property
+    def vehicle_damping_ratio(self) -> float:
+        """Damping ratio of the vehicle's loaded modes: ``damping.modal_ratio``, or the
+        deprecated ``vehicle.damping_ratio`` where given."""
+        v = self.vehicle
+        return self.damping.modal_ratio if v is None or v.damping_ratio is None \
+            else v.damping_ratio
 
     def omega_grid(self) -> np.ndarray:
         """The uniform grid of thrust pulsation frequencies Omega (rad/s)."""
@@ -647,6 +682,32 @@ def _check_forced_inputs(case: Case) -> None:
                             "must differ from the other stations' names (and from aft-edge, "
                             "forward-edge, junction-i)")
         taken.add(st.name)
+
+
+def _deprecated_given(case: Case) -> list[tuple[str, float]]:
+    """(key, value) of each deprecated key of :data:`DEPRECATED_KEYS` the case gives."""
+    given = {"damping.beam_modal_ratio": case.damping.beam_modal_ratio,
+             "vehicle.damping_ratio": None if case.vehicle is None
+             else case.vehicle.damping_ratio}
+    return [(key, given[key]) for key, _ in DEPRECATED_KEYS if given[key] is not None]
+
+
+def deprecation_warnings(case: Case) -> list[AnalysisWarning]:
+    """A ``deprecated-key`` warning for each deprecated key the case gives, naming the key
+    that replaces it (:data:`DEPRECATED_KEYS`).
+
+    Parameters
+    ----------
+    case : Case
+        A validated case.
+    """
+    new = dict(DEPRECATED_KEYS)
+    return [AnalysisWarning("deprecated-key", key,
+                            f"{key} = {value:g} is deprecated: write {new[key]} (the damping "
+                            "ratio of every elastic mode); the value given is used for "
+                            + ("the beam modes" if key.startswith("damping") else
+                               "the vehicle's modes"))
+            for key, value in _deprecated_given(case)]
 
 
 def _validate(data: Mapping[str, Any]) -> Case:

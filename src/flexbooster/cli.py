@@ -10,6 +10,7 @@ a terminal), ``--quiet`` silences everything but errors and ``--format json`` pr
 
 from __future__ import annotations
 
+import functools
 import math
 import os
 import sys
@@ -221,14 +222,18 @@ def _wrote(paths, fmt: str, quiet: bool) -> None:
 @click.option("--no-figures", is_flag=True, help="Do not draw the figures (faster).")
 @click.option("--no-vehicle", is_flag=True,
               help="Skip the vehicle's parametric instability regions (shell of revolution).")
+@click.option("--full", is_flag=True,
+              help="Print every table (the report and results.json always hold them).")
 @_BUDGET
 @_QUIET
 @_FORMAT
 def run(case_file: Path | None, output: Path, no_figures: bool, no_vehicle: bool,
-        max_seconds: float | None, quiet: bool, fmt: str) -> None:
+        full: bool, max_seconds: float | None, quiet: bool, fmt: str) -> None:
     """Analyse CASE_FILE (TOML; the embedded default case if omitted).
 
-    Prints a summary and writes OUTPUT/results.json, the CSV tables, the figures and
+    Prints a short summary (the overall verdict, the damping, one line per mechanism, the
+    ranked bands, the warnings; every table with --full) and writes OUTPUT/results.json, the
+    CSV tables, the figures and
     OUTPUT/report.html, one self-contained page to read in a browser or send (each file is
     written to a temporary name and renamed, so an interrupted run never leaves a half-written
     file).
@@ -252,8 +257,14 @@ def run(case_file: Path | None, output: Path, no_figures: bool, no_vehicle: bool
         results = analyze(case, progress=step, figures=not no_figures, vehicle=not no_vehicle,
                           on_estimate=getattr(step, "estimate", None))
         paths = write_outputs(results, output, figures=not no_figures, progress=step)
-    _report(results, fmt, quiet, print_summary)
-    _wrote(paths, fmt, quiet)
+    _report(results, fmt, quiet, functools.partial(print_summary, full=full))
+    report = [p for p in paths if Path(p).name == "report.html"]
+    if full or fmt == "json" or not paths:
+        _wrote(paths, fmt, quiet)
+    elif not quiet:  # the short summary: one line for the files, then the report
+        click.echo(f"wrote {len(paths)} files to {output}")
+    if report and fmt != "json" and not quiet:
+        click.echo(f"open {report[0]}")
 
 
 #: Files written by ``flexbooster stability`` (names of its own: never half of a ``run``).

@@ -232,14 +232,14 @@ def estimate_cost(model: BoosterModel, *, beam_action: bool = True, stability: b
             damped = model.beam_damping_ratio > 0.0 or model.pitch_damping_ratio > 0.0
             parts["beam-action bands"] = _C_BANDS * weight * (1.0 + _DAMPED_FACTOR * damped)
             drivers["beam-action bands"] = ("truncation.N", "thrust.omega_min",
-                                            "damping.beam_modal_ratio", "thrust.F0")
+                                            "damping.modal_ratio", "thrust.F0")
         low_hi = min(hi, BAND_OMEGA_BAR_MIN * model.omega_1)
         if low_hi > lo:  # below omega_1 / 4: the rigid-pitch tongues (harmonic balance)
             parts[TONGUE_PART] = tongue_search_seconds(
                 system, model.gamma, omega_min=lo, omega_max=low_hi,
                 beam_ratio=model.beam_damping_ratio, pitch_ratio=model.pitch_damping_ratio)
             drivers[TONGUE_PART] = ("thrust.omega_min", "thrust.gamma", "truncation.N",
-                                    "damping.pitch_ratio", "damping.beam_modal_ratio")
+                                    "damping.pitch_ratio", "damping.modal_ratio")
     if beam_action and stability:
         curves = 13.0 * n.R * (2 * n.S + 1)
         parts["stability table"] = _C_STABILITY * curves * modes
@@ -521,14 +521,14 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
                                   + per_harmonic(table.k_max + 1, min(table.k_max + 1, 2)))
         drivers["vehicle modes"] = ("vehicle.k_max", "vehicle.segments") + attached
     if regions and n_k >= 1:
-        damped = table.damping_ratio > 0.0
+        damped = case.vehicle_damping_ratio > 0.0
         searched = 0 if (damped and certified) or t.gamma == 0.0 else n_k
         # k = 1 has the rigid modes too (at least 3 basis modes)
         search = searched * search_seconds(max(n_modes, 3), t.omega_min, t.omega_max,
                                            damped=damped, boundaries=figures)
         parts["vehicle regions"] = n_k * _C_HARMONIC_BUILD * dofs * max(
             1.0, n_modes / 20.0) + per_harmonic(n_k, 1) + search
-        drivers["vehicle regions"] = ("vehicle.n_modes", "vehicle.damping_ratio",
+        drivers["vehicle regions"] = ("vehicle.n_modes", "damping.modal_ratio",
                                       "vehicle.k_max", "thrust.omega_min", "thrust.omega_max",
                                       "vehicle.segments") + attached
         if damped:  # the certificates: map, search, chart (none undamped: no certificate)
@@ -677,7 +677,7 @@ def flight_time_seconds(case: Any) -> float:
         return 0.0
     lo = min(p.oscillation[0] for p in timeline.points)
     hi = max(p.oscillation[1] for p in timeline.points)
-    damped = table.damping_ratio > 0.0
+    damped = case.vehicle_damping_ratio > 0.0
     gammas = [p.gamma for p in timeline.points]
     searched = 0 if damped or max(gammas) == 0.0 else table.k_max
     c0, c1 = _C_SURVEY

@@ -7,15 +7,19 @@ screen and the danger map draw this and nothing else.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
 from .bands import MECHANISMS, Band, SearchGap, gaps_text
+from .floquet import tongue_critical_damping
 
-__all__ = ["RankedBand", "DangerSummary", "STEADY_CAUSE", "danger_bands", "danger_summary",
-           "mechanism_verdicts"]
+__all__ = ["RankedBand", "DangerSummary", "Verdict", "STEADY_CAUSE", "NEGLIGIBLE_GROWTH",
+           "NEGLIGIBLE_AMPLIFICATION", "UNSTABLE_AMPLIFICATION", "UNSTABLE_E_FOLDING",
+           "AMPLIFICATION_EXPONENT_MAX", "band_measures", "band_status", "danger_bands",
+           "danger_summary", "edges_text", "hz_text", "mechanism_verdicts", "overall_verdict"]
 
 _KIND_WORDS = {"simple": "simple", "sum": "sum combination",
                "difference": "difference combination"}
@@ -24,10 +28,112 @@ _KIND_WORDS = {"simple": "simple", "sum": "sum combination",
 STEADY_CAUSE = "unstable without pulsation"
 
 
+#: Growth rate below which a band is negligible (1/s): an e-folding time above 1e6 s (11.6
+#: days), longer than any excitation of a launch vehicle (docs/theory/verdicts.md).
+NEGLIGIBLE_GROWTH = 1e-6
+#: With a duration T: amplification exp(sigma T) below which a band is negligible (the motion
+#: grows less than 10 % over the whole excitation).
+NEGLIGIBLE_AMPLIFICATION = 1.1
+#: With a duration T: amplification exp(sigma T) above which an open band is unstable.
+UNSTABLE_AMPLIFICATION = 10.0
+#: Without a duration: e-folding time 1 / sigma (s) below which an open band is unstable.
+UNSTABLE_E_FOLDING = 10.0
+#: Largest sigma T whose exp is stored (exp(700) ~ 1e304); above it amplification is None.
+AMPLIFICATION_EXPONENT_MAX = 700.0
+
+
+def band_measures(band: Band, *, gamma: float, duration: float | None,
+                  modal_ratio: float = 0.0) -> Band:
+    """The band with its margin critical_gamma / gamma (where gamma > 0 and the band is
+    damped), its growth exponent sigma T and amplification exp(sigma T) over the duration T
+    (None without one) and, for a rigid-pitch tongue that is not negligible
+    (:func:`band_status`), its critical damping ratio; a resonance with its damped steady
+    amplitude.
+
+    A resonance of memo 7 grows undamped like (|G| / 2 omega) t (docs/theory/severity.md: the
+    severity v, m/s); with modal damping zeta its steady amplitude is |G| / (2 zeta omega^2) =
+    v / (zeta omega) (m) and its acceleration that times omega^2, omega the resonant mode's
+    frequency (rad/s; Meirovitch 1986, sec. 3.3).
+
+    Parameters
+    ----------
+    band : Band
+        A band of any mechanism.
+    gamma : float
+        The case's pulsation amplitude, >= 0.
+    duration : float or None
+        Duration of the excitation T (s), > 0, or None.
+    modal_ratio : float
+        Modal damping ratio zeta of the elastic modes, 0 <= zeta < 1.
+    """
+    if band.mechanism == "resonance":
+        w = band.modes[0].omega if band.modes else None
+        if modal_ratio <= 0.0 or band.severity is None or not w:
+            return band
+        amplitude = band.severity / (modal_ratio * w)  # v / (zeta omega)
+        return dataclasses.replace(band, steady_amplitude=amplitude,
+                                   steady_acceleration=amplitude * w * w)
+    margin = band.critical_gamma / gamma if gamma > 0.0 and band.critical_gamma > 0.0 else None
+    exponent = amplification = None
+    if duration is not None:
+        exponent = band.growth_rate_max * float(duration)  # sigma T
+        if exponent <= AMPLIFICATION_EXPONENT_MAX:
+            amplification = math.exp(exponent)
+    zeta_cr = band.critical_damping_ratio
+    if zeta_cr is None and band.mechanism == "pitch" and 0.0 < gamma < 1.0 and \
+            band_status(band, duration=duration) != "negligible":
+        # Mathieu tongue r: the smallest pitch damping closing it (Bolotin 1964, sec. 6);
+        # only where the band counts (each costs a few Hill maximisations)
+        zeta_cr = tongue_critical_damping(band.order, gamma)
+    return dataclasses.replace(band, margin=margin, growth_exponent=exponent,
+                               amplification=amplification, critical_damping_ratio=zeta_cr)
+
+
+def band_status(band: Band, *, duration: float | None, modal_ratio: float = 0.0) -> str:
+    """How a band counts in the verdict (docs/theory/verdicts.md): ``"unstable"``,
+    ``"marginal"``, ``"negligible"`` or, for a damped forced resonance, ``"bounded"``.
+
+    A region: negligible when sigma < :data:`NEGLIGIBLE_GROWTH` or (with T) exp(sigma T) <
+    :data:`NEGLIGIBLE_AMPLIFICATION`; unstable when exp(sigma T) > :data:`UNSTABLE_AMPLIFICATION`
+    or (without T) 1 / sigma < :data:`UNSTABLE_E_FOLDING`; marginal otherwise. A resonance of
+    memo 7: unstable (secular growth) without modal damping, bounded with it.
+
+    Parameters
+    ----------
+    band : Band
+        The band (with :func:`band_measures` applied where a duration is given).
+    duration : float or None
+        Duration of the excitation T (s), or None.
+    modal_ratio : float
+        The case's modal damping ratio of the elastic modes.
+    """
+    if band.mechanism == "resonance":
+        return "bounded" if modal_ratio > 0.0 else "unstable"
+    sigma = band.growth_rate_max
+    if sigma < NEGLIGIBLE_GROWTH:
+        return "negligible"
+    if duration is not None:
+        exponent = sigma * float(duration)
+        if exponent < math.log(NEGLIGIBLE_AMPLIFICATION):
+            return "negligible"
+        return "unstable" if exponent > math.log(UNSTABLE_AMPLIFICATION) else "marginal"
+    return "unstable" if 1.0 / sigma < UNSTABLE_E_FOLDING else "marginal"
+
+
+#: The forcing of a memo resonance in engineering words, by family (memo 7.3; the memo's terms
+#: stay in the severity table, docs/theory/severity.md).
+_FORCING_WORDS = {1: "pitch acceleration", 2: "beam bending", 3: "thrust pulsation at the aft edge",
+                  4: "pitch rate (centrifugal)", 5: "pitch rate (centrifugal)",
+                  6: "pitch rate (centrifugal)", 7: "pitch and gimbal side force",
+                  8: "pulsating gimbal side force", 9: "pulsating gimbal side force",
+                  10: "pitch rate (centrifugal)", 11: "pitch rate (centrifugal)",
+                  12: "pitch rate (centrifugal)", 13: "beam bending"}
+
+
 def _cause(band: Band) -> str:
     """The mechanism of a band in words."""
     if band.mechanism == "resonance":
-        return f"resonance (memo 7): family {band.order}: {band.cause}"
+        return f"forced resonance: {_FORCING_WORDS.get(band.order, band.cause)}"
     if band.mechanism == "pitch":
         return f"instability region (Mathieu tongue {band.order})"
     model = "; vehicle model" if band.mechanism == "vehicle" else ""
@@ -53,10 +159,18 @@ class RankedBand:
         The band (Omega in rad/s).
     in_operating_range : bool
         True when the band overlaps the case's operating range [omega_min, omega_max].
+    also : tuple of str
+        Other mechanisms that found the same physical band (listed once, under ``band``).
     """
 
     band: Band
     in_operating_range: bool
+    also: tuple[str, ...] = ()
+
+    @property
+    def mechanisms(self) -> tuple[str, ...]:
+        """Every mechanism that found the band, its own first."""
+        return (self.band.mechanism, *self.also)
 
     @property
     def mechanism(self) -> str:
@@ -95,13 +209,17 @@ class RankedBand:
 
     @property
     def cause_text(self) -> str:
-        """The mechanism in words."""
+        """The mechanism in words (and the other mechanisms that found the band)."""
+        if "pitch" in self.also:
+            return f"{_cause(self.band)}; also the rigid-body pitch's Mathieu tongue " \
+                   f"{self.band.order}"
         return _cause(self.band)
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready mapping (plain floats, str, bool; None kept)."""
         lo_hz, hi_hz = self.hz
-        return {"mechanism": self.mechanism, "Omega_lo": float(self.Omega_lo),
+        return {"mechanism": self.mechanism, "mechanisms": list(self.mechanisms),
+                "Omega_lo": float(self.Omega_lo),
                 "Omega_hi": float(self.Omega_hi), "Omega_lo_hz": float(lo_hz),
                 "Omega_hi_hz": float(hi_hz),
                 "growth_rate": None if self.growth_rate is None else float(self.growth_rate),
@@ -118,10 +236,47 @@ def _operating(operating_range: tuple[float, float]) -> tuple[float, float]:
     return lo, hi
 
 
+def _is_pitch_tongue(band: Band) -> bool:
+    """A beam-action band of the rigid pitch alone ("rigid pitch", simple): a Mathieu tongue."""
+    return band.mechanism == "beam_action" and band.kind == "simple" and \
+        [m.label for m in band.modes] == ["rigid pitch"]
+
+
+def _same_bands(bands: Sequence[Band]) -> list[tuple[Band, tuple[str, ...]]]:
+    """Each band once with the other mechanisms that found it: a rigid-pitch tongue of the
+    pitch (memo 4.2) that a beam-action rigid-pitch band of the same order overlaps is that
+    band (the coupled model's edges are kept)."""
+    tongues = [b for b in bands if _is_pitch_tongue(b)]
+    out = []
+    merged: set[int] = set()
+    for b in bands:
+        if b.mechanism != "pitch":
+            continue
+        if any(t.order == b.order and t.Omega_lo <= b.Omega_hi and b.Omega_lo <= t.Omega_hi
+               for t in tongues):
+            merged.add(id(b))
+    for b in bands:
+        if id(b) in merged:
+            continue
+        also = ("pitch",) if _is_pitch_tongue(b) and any(
+            p.mechanism == "pitch" and id(p) in merged and p.order == b.order
+            and p.Omega_lo <= b.Omega_hi and b.Omega_lo <= p.Omega_hi for p in bands) else ()
+        out.append((b, also))
+    return out
+
+
+#: Order of the statuses in the ranking (:func:`band_status`).
+_STATUS_RANK = {"unstable": 0, "marginal": 1, "bounded": 2, "negligible": 3}
+
+
 def danger_bands(bands: Sequence[Band], *, operating_range: tuple[float, float],
-                 limit: int | None = None) -> tuple[RankedBand, ...]:
-    """Every band, most dangerous first: those the operating range reaches, then by growth rate,
-    then resonances by severity; ties by Omega_lo.
+                 limit: int | None = None, duration: float | None = None,
+                 modal_ratio: float = 0.0) -> tuple[RankedBand, ...]:
+    """Every band once (the same physical band of two mechanisms merged, naming both), most
+    dangerous first: those the operating range reaches; then by status (:func:`band_status`:
+    unstable, marginal, bounded resonances, negligible growth); within one status the regions
+    by growth rate before the resonances by damped steady amplitude (undamped: by severity);
+    ties by Omega_lo.
 
     Parameters
     ----------
@@ -131,26 +286,78 @@ def danger_bands(bands: Sequence[Band], *, operating_range: tuple[float, float],
         [omega_min, omega_max] of the case (rad/s), finite, 0 <= omega_min < omega_max.
     limit : int, optional
         Keep the first ``limit`` (>= 0); all by default.
+    duration : float or None
+        Duration of the excitation (s), for the statuses.
+    modal_ratio : float
+        Modal damping ratio of the elastic modes, for the statuses.
     """
     lo, hi = _operating(operating_range)
     if limit is not None and (not isinstance(limit, int) or limit < 0):
         raise ValueError(f"limit = {limit!r}: must be a non-negative integer")
-    ranked = [RankedBand(b, b.Omega_hi >= lo and b.Omega_lo <= hi) for b in bands]
+    ranked = [RankedBand(b, b.Omega_hi >= lo and b.Omega_lo <= hi, also)
+              for b, also in _same_bands(bands)]
 
     def key(r: RankedBand) -> tuple:
+        rank = _STATUS_RANK[_status(r, duration, modal_ratio)]
         if r.growth_rate is not None:
-            return (not r.in_operating_range, 0, -r.growth_rate, r.Omega_lo)
-        return (not r.in_operating_range, 1, -(r.severity or 0.0), r.Omega_lo)
+            return (not r.in_operating_range, rank, 0, -r.growth_rate, r.Omega_lo)
+        amp = r.band.steady_amplitude  # damped: the steady amplitude; undamped: the severity
+        return (not r.in_operating_range, rank, 1, -(amp if amp is not None else
+                                                      r.severity or 0.0), r.Omega_lo)
 
     ranked.sort(key=key)
     return tuple(ranked if limit is None else ranked[:limit])
 
 
+def edges_text(lo: float, hi: float) -> str:
+    """'lo-hi' with the fewest significant digits (4..10) that tell the edges apart.
+
+    Parameters
+    ----------
+    lo, hi : float
+        Edges (any unit).
+    """
+    for digits in range(4, 11):
+        a, b = f"{lo:.{digits}g}", f"{hi:.{digits}g}"
+        if a != b:
+            return f"{a}-{b}"
+    return f"{lo:.10g}"
+
+
+def hz_text(lo_hz: float, hi_hz: float) -> str:
+    """Band edges in Hz to the digits that tell them apart: "18.25-18.31 Hz".
+
+    Parameters
+    ----------
+    lo_hz, hi_hz : float
+        The edges (Hz).
+    """
+    return f"{edges_text(lo_hz, hi_hz)} Hz"
+
+
+def _status(ranked: RankedBand, duration: float | None, modal_ratio: float) -> str:
+    return band_status(ranked.band, duration=duration, modal_ratio=modal_ratio)
+
+
+def _growth_words(band: Band, duration: float | None) -> str:
+    """ "e-folding time 352 s" and, with T, "x 1.53 in 150 s"."""
+    e = band.e_folding_s
+    text = "no growth" if e is None else f"e-folding time {e:.3g} s"
+    if duration is not None and band.growth_exponent is not None:
+        amp = band.amplification
+        text += (f", x {amp:.3g} in {duration:g} s" if amp is not None else
+                 f", x e^{band.growth_exponent:.3g} in {duration:g} s")
+    return text
+
+
 def mechanism_verdicts(ranked: Sequence[RankedBand], *, computed: Mapping[str, bool],
-                       gaps: Sequence[SearchGap] = ()) -> tuple[tuple[str, str, str], ...]:
+                       gaps: Sequence[SearchGap] = (), duration: float | None = None,
+                       modal_ratio: float = 0.0) -> tuple[tuple[str, str, str], ...]:
     """(key, words, verdict) per mechanism of :data:`flexbooster.bands.MECHANISMS`: "not
-    computed", "stable in the operating range", "not fully searched: ..." or "unstable: N ..."
-    (with "; not fully searched: ..." when a gap remains).
+    computed", "stable in the operating range", "not fully searched: ...", "unstable: N ..." or
+    "marginal: N ..." (with "; not fully searched: ..." when a gap remains); regions of
+    negligible growth (:func:`band_status`) are counted apart, never as unstable; a damped
+    resonance is "bounded by damping".
 
     Parameters
     ----------
@@ -160,35 +367,197 @@ def mechanism_verdicts(ranked: Sequence[RankedBand], *, computed: Mapping[str, b
         Whether each mechanism was computed; a missing key means not computed.
     gaps : sequence of SearchGap
         What the searches left out (``stage`` names the mechanism).
+    duration : float or None
+        Duration of the excitation (s), or None.
+    modal_ratio : float
+        Modal damping ratio of the elastic modes.
     """
     out = []
     for key, words in MECHANISMS:
         if not computed.get(key, False):
             out.append((key, words, "not computed"))
             continue
-        mine = [b for b in ranked if b.mechanism == key and b.in_operating_range]
+        inside = [b for b in ranked if key in b.mechanisms and b.in_operating_range]
+        status = [_status(b, duration, modal_ratio) for b in inside]
+        mine = [b for b, st in zip(inside, status, strict=True) if st != "negligible"]
+        slow = [b for b, st in zip(inside, status, strict=True) if st == "negligible"]
         left = [g for g in gaps if g.stage == key]
+        slow_text = "" if not slow else (
+            f" ({len(slow)} region{'s' if len(slow) > 1 else ''} of negligible growth, "
+            f"largest {max(b.growth_rate for b in slow):.3g} 1/s)")
         if not mine:
-            out.append((key, words, gaps_text(left) if left else
-                        "stable in the operating range"))
+            out.append((key, words, (gaps_text(left) if left else
+                                     "stable in the operating range") + slow_text))
             continue
         resonance = key == "resonance"
         noun = ("resonance" if resonance else "instability region") + \
             ("s" if len(mine) > 1 else "") + (" (memo 7)" if resonance else "")
-        text = f"unstable: {len(mine)} {noun} in the operating range"
         if resonance:
-            text += f", largest severity {max(b.severity or 0.0 for b in mine):.3g} m/s"
+            sev = max(b.severity or 0.0 for b in mine)
+            text = (f"unstable: {len(mine)} {noun} in the operating range, largest severity "
+                    f"{sev:.3g} m/s" if "unstable" in status else
+                    f"bounded by damping: {len(mine)} {noun} in the operating range"
+                    + _response_text([b.band for b in mine], ", largest steady response "))
         else:
-            text += f", largest growth rate {max(b.growth_rate for b in mine):.3g} 1/s"
+            word = "unstable" if "unstable" in status else "marginal"
+            top = max(mine, key=lambda b: b.band.growth_rate_max)
+            text = (f"{word}: {len(mine)} {noun} in the operating range, largest growth rate "
+                    f"{top.growth_rate:.3g} 1/s")
+            if duration is not None:
+                text += f" ({_growth_words(top.band, duration)})"
         steady = [b for b in mine if b.band.kind == "steady"]
         if steady:  # not parametric: the steady system itself (its growth, e-folding time)
             g = max(b.growth_rate for b in steady)
             text += (f" ({len(steady)} of them {STEADY_CAUSE}: growth rate {g:.3g} 1/s"
                      + (f", e-folding time {1.0 / g:.3g} s)" if g > 0.0 else ")"))
+        text += slow_text
         if left:
             text += "; " + gaps_text(left)
         out.append((key, words, text))
     return tuple(out)
+
+
+#: Standard gravity (m/s^2), for accelerations in g.
+G_STANDARD = 9.80665
+
+
+def _response_text(bands: Sequence[Band], lead: str) -> str:
+    """lead + "1.6 mm (0.9 g) at 45.2 Hz" of the largest damped steady amplitude; "" if none."""
+    damped = [b for b in bands if b.steady_amplitude is not None]
+    if not damped:
+        return ""
+    top = max(damped, key=lambda b: b.steady_amplitude)
+    f = top.modes[0].omega / (2.0 * math.pi)
+    return (f"{lead}{1e3 * top.steady_amplitude:.3g} mm "
+            f"({top.steady_acceleration / G_STANDARD:.3g} g) at {f:.4g} Hz")
+
+
+def _damping_text(modal_ratio: float, pitch_ratio: float) -> str:
+    """ "1 % modal damping (rigid pitch undamped)"."""
+    modal = f"{100.0 * modal_ratio:g} % modal damping" if modal_ratio > 0.0 else \
+        "no modal damping"
+    pitch = f"rigid pitch {100.0 * pitch_ratio:g} %" if pitch_ratio > 0.0 else \
+        "rigid pitch undamped"
+    return f"{modal} ({pitch})"
+
+
+def _where(band: Band) -> str:
+    """ "18.25-18.31 Hz (beam action: bending 1 + bending 2)"."""
+    words = {"pitch": "rigid-body pitch", "beam_action": "beam action",
+             "vehicle": "vehicle", "resonance": "memo resonance"}[band.mechanism]
+    return f"{hz_text(*band.hz)} ({words}: {_mode_text(band)})"
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """The one overall answer (docs/theory/verdicts.md).
+
+    Attributes
+    ----------
+    overall : str
+        ``"UNSTABLE"``, ``"MARGINAL"`` or ``"STABLE"``.
+    reason : str
+        Why, in words.
+    mechanisms : tuple of (str, str)
+        (key, verdict) per mechanism (:func:`mechanism_verdicts`).
+    modal_ratio, pitch_ratio : float
+        The damping used.
+    duration : float or None
+        Duration of the excitation (s).
+    """
+
+    overall: str
+    reason: str
+    mechanisms: tuple[tuple[str, str], ...]
+    modal_ratio: float
+    pitch_ratio: float
+    duration: float | None
+
+    @property
+    def line(self) -> str:
+        """ "STABLE: reason"."""
+        return f"{self.overall}: {self.reason}"
+
+    @property
+    def damping_text(self) -> str:
+        """The damping used, in words."""
+        return _damping_text(self.modal_ratio, self.pitch_ratio)
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready mapping."""
+        return {"overall": self.overall, "reason": self.reason,
+                "mechanisms": dict(self.mechanisms),
+                "damping": {"modal_ratio": float(self.modal_ratio),
+                            "pitch_ratio": float(self.pitch_ratio)},
+                "duration": None if self.duration is None else float(self.duration)}
+
+
+def overall_verdict(ranked: Sequence[RankedBand], *,
+                    verdicts: Sequence[tuple[str, str, str]], gaps: Sequence[SearchGap] = (),
+                    duration: float | None = None, modal_ratio: float = 0.0,
+                    pitch_ratio: float = 0.0) -> Verdict:
+    """UNSTABLE when a band in the operating range is unstable (:func:`band_status`); else
+    MARGINAL when one is marginal or a computed mechanism was not fully searched; else STABLE.
+
+    Parameters
+    ----------
+    ranked : sequence of RankedBand
+        From :func:`danger_bands`.
+    verdicts : sequence of (str, str, str)
+        From :func:`mechanism_verdicts`.
+    gaps : sequence of SearchGap
+        What the searches left out.
+    duration : float or None
+        Duration of the excitation (s).
+    modal_ratio, pitch_ratio : float
+        The damping used.
+    """
+    inside = [b for b in ranked if b.in_operating_range]
+    by = {"unstable": [], "marginal": [], "negligible": [], "bounded": []}
+    for b in inside:
+        by[_status(b, duration, modal_ratio)].append(b.band)
+    damping = _damping_text(modal_ratio, pitch_ratio)
+    computed = {k for k, _, v in verdicts if v != "not computed"}
+    cut = sorted({g.stage for g in gaps if g.stage in computed})
+    names = dict(MECHANISMS)
+    regions_u = [b for b in by["unstable"] if b.mechanism != "resonance"]
+    res_u = [b for b in by["unstable"] if b.mechanism == "resonance"]
+    parts: list[str] = []
+    if by["unstable"]:
+        overall = "UNSTABLE"
+        if regions_u:
+            top = max(regions_u, key=lambda b: b.growth_rate_max)
+            rule = (f"grow more than {UNSTABLE_AMPLIFICATION:g}-fold in {duration:g} s"
+                    if duration is not None else
+                    f"have an e-folding time under {UNSTABLE_E_FOLDING:g} s")
+            n = len(regions_u)
+            parts.append(f"at {damping}, {n} region{'s' if n > 1 else ''} {rule}; "
+                         f"fastest {_where(top)}, {_growth_words(top, duration)}")
+        if res_u:
+            parts.append(f"{len(res_u)} forced resonance{'s' if len(res_u) > 1 else ''} "
+                         "grow without bound (no modal damping)")
+    elif by["marginal"] or cut:
+        overall = "MARGINAL"
+        if by["marginal"]:
+            top = max(by["marginal"], key=lambda b: b.growth_rate_max)
+            n = len(by["marginal"])
+            parts.append(f"at {damping}, {n} region{'s' if n > 1 else ''} open; fastest "
+                         f"{_where(top)}, {_growth_words(top, duration)}")
+        if cut:
+            parts.append("not fully searched: " + ", ".join(names[k] for k in cut))
+    else:
+        overall = "STABLE"
+        parts.append(f"at {damping}, no region" + (
+            f" grows more than {100.0 * (NEGLIGIBLE_AMPLIFICATION - 1.0):g} % in "
+            f"{duration:g} s" if duration is not None else
+            f" has an e-folding time under {1.0 / NEGLIGIBLE_GROWTH:.0e} s"))
+    if by["bounded"] and overall != "UNSTABLE":
+        n = len(by["bounded"])
+        parts.append(f"{n} forced resonance{'s' if n > 1 else ''} bounded by damping"
+                     + _response_text(by["bounded"], ", largest response "))
+    return Verdict(overall, "; ".join(parts), tuple((k, v) for k, _, v in verdicts),
+                   float(modal_ratio), float(pitch_ratio),
+                   None if duration is None else float(duration))
 
 
 @dataclass(frozen=True)
@@ -203,23 +572,30 @@ class DangerSummary:
         (key, mechanism in words, verdict), see :func:`mechanism_verdicts`.
     bands : tuple of RankedBand
         Every band, ranked (see :func:`danger_bands`).
+    verdict : Verdict or None
+        The overall verdict (:func:`overall_verdict`).
     """
 
     operating_range: tuple[float, float]
     verdicts: tuple[tuple[str, str, str], ...]
     bands: tuple[RankedBand, ...]
+    verdict: Verdict | None = None
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready mapping."""
         return {"operating_range": [float(v) for v in self.operating_range],
                 "verdicts": [{"mechanism": k, "words": w, "verdict": v}
                              for k, w, v in self.verdicts],
-                "bands": [b.to_dict() for b in self.bands]}
+                "bands": [b.to_dict() for b in self.bands],
+                "verdict": None if self.verdict is None else self.verdict.to_dict()}
 
 
 def danger_summary(*, operating_range: tuple[float, float], bands: Mapping[str, Sequence[Band]],
-                   gaps: Sequence[SearchGap] = ()) -> DangerSummary:
-    """Verdicts and ranked bands of every mechanism computed.
+                   gaps: Sequence[SearchGap] = (), gamma: float = 0.0,
+                   duration: float | None = None, modal_ratio: float = 0.0,
+                   pitch_ratio: float = 0.0) -> DangerSummary:
+    """Verdicts, the overall verdict and the ranked bands (each with :func:`band_measures`)
+    of every mechanism computed.
 
     Parameters
     ----------
@@ -229,13 +605,25 @@ def danger_summary(*, operating_range: tuple[float, float], bands: Mapping[str, 
         The bands of each mechanism computed, by key of :data:`flexbooster.bands.MECHANISMS`.
     gaps : sequence of SearchGap
         What the searches left out.
+    gamma : float
+        The case's pulsation amplitude (the margins critical_gamma / gamma).
+    duration : float or None
+        Duration of the excitation (s).
+    modal_ratio, pitch_ratio : float
+        The damping used (the verdict's words; a damped resonance is bounded).
     """
     for key in bands:
         if key not in dict(MECHANISMS):
             raise ValueError(f"bands: unknown mechanism {key!r}")
-    ranked = danger_bands([b for found in bands.values() for b in found],
-                          operating_range=operating_range)
+    ranked = danger_bands([band_measures(b, gamma=gamma, duration=duration,
+                                         modal_ratio=modal_ratio)
+                           for found in bands.values() for b in found],
+                          operating_range=operating_range, duration=duration,
+                          modal_ratio=modal_ratio)
     computed = {key: True for key in bands}
     lo, hi = _operating(operating_range)
-    return DangerSummary((lo, hi), mechanism_verdicts(ranked, computed=computed, gaps=gaps),
-                         ranked)
+    verdicts = mechanism_verdicts(ranked, computed=computed, gaps=gaps, duration=duration,
+                                  modal_ratio=modal_ratio)
+    verdict = overall_verdict(ranked, verdicts=verdicts, gaps=gaps, duration=duration,
+                              modal_ratio=modal_ratio, pitch_ratio=pitch_ratio)
+    return DangerSummary((lo, hi), verdicts, ranked, verdict)

@@ -83,7 +83,7 @@ def flight_stage(case: Case) -> tuple[FlightResults | None, list[AnalysisWarning
     base = vehicle_from_case(case)
     k_max = table.k_max
     n_modes = cost.region_modes(case, base, k_max=max(k_max, 1))[0]
-    zeta = table.damping_ratio
+    zeta = case.vehicle_damping_ratio
     lo, hi = _omega_range(timeline)
     points = [timeline.at(float(t)) for t in times]
     masses, regions_per_time, found_per_time, modes_per_time = [], [], [], []
@@ -118,7 +118,7 @@ def flight_stage(case: Case) -> tuple[FlightResults | None, list[AnalysisWarning
     if zeta > 0.0:
         events += _axial_events(times, points, found_per_time, harmonics, osc, zeta)
     else:
-        notes.append("no k = 0 resonance peaks: vehicle.damping_ratio = 0 (undamped)")
+        notes.append("no k = 0 resonance peaks: damping.modal_ratio = 0 (undamped)")
     gaps = {}
     for found, _ in found_per_time:
         for g in () if found is None else found.gaps:

@@ -68,7 +68,7 @@ def model_from_case(case: Case) -> BoosterModel:
                 L2=b.cylinder2.half_length, h=b.thickness, E=b.E, nu=b.nu, rho=b.rho,
                 F0=case.F0, gamma=t.gamma, K=t.K, Omega=case.omega_grid(),
                 truncation=Truncation(M1=n.M1, N1=n.N1, M2=n.M2, N2=n.N2, N=n.N, S=n.S, R=n.R),
-                beam_damping_ratio=case.damping.beam_modal_ratio,
+                beam_damping_ratio=case.damping.beam_ratio,
                 pitch_damping_ratio=case.damping.pitch_ratio,
             )
     except (ValueError, FloatingPointError, OverflowError, ZeroDivisionError) as exc:

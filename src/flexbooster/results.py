@@ -260,6 +260,8 @@ class Results:
             "figures": None if self.figures is None else self.figures.to_dict(),
         }
         out["danger"] = None if self.danger is None else self.danger.to_dict()
+        out["verdict"] = None if self.danger is None or self.danger.verdict is None \
+            else self.danger.verdict.to_dict()
         if out["stability"] is not None and self.severity is not None:
             out["stability"]["severity"] = self.severity.to_dict()
         if self.vehicle is not None:  # only for a case with [vehicle] (units inside)

@@ -56,7 +56,7 @@ K_MAX_LIMIT = 200
 #: Relative tolerance on the radii where two segments meet at a continuous junction.
 RADIUS_RTOL = 1e-6
 
-#: Default modal damping ratio of the vehicle's parametric regions (``vehicle.damping_ratio``).
+#: Default modal damping ratio of every elastic mode (``damping.modal_ratio``).
 REGION_DAMPING_RATIO = 0.01
 #: Default modes per harmonic k in the regions' modal basis (``vehicle.n_modes``).
 REGION_N_MODES = 20
@@ -298,9 +298,9 @@ class VehicleTable(BaseModel):
         ``"continuous"`` needs R1 = R2).
     segments : tuple of VehicleSegment or None
         The segments from the aft edge forward; None: the memo vehicle.
-    damping_ratio : float
-        Modal damping ratio of the loaded modes in the regions, [0, 1), default
-        :data:`REGION_DAMPING_RATIO`.
+    damping_ratio : float or None
+        Deprecated: the modal damping ratio of the loaded modes in the regions, [0, 1); by
+        default ``damping.modal_ratio`` (``Case.vehicle_damping_ratio``).
     n_modes : int
         Modes per harmonic in the regions' basis, 1..:data:`REGION_N_MODES_LIMIT`, default
         :data:`REGION_N_MODES`.
@@ -320,7 +320,7 @@ class VehicleTable(BaseModel):
     k_max: StrictInt = 20
     junction: str | None = None
     segments: tuple[VehicleSegment, ...] | None = None
-    damping_ratio: float = REGION_DAMPING_RATIO
+    damping_ratio: float | None = None
     n_modes: StrictInt = REGION_N_MODES
     masses: tuple[VehicleMass, ...] = ()
     tanks: tuple[VehicleTankTable, ...] = ()

@@ -18,11 +18,13 @@ from .hill import (
 )
 from .mathieu import (
     MATHIEU_SCALE_MAX,
+    ZETA_SEARCH_MAX,
     beta_from_discriminants,
     characteristic_exponent,
     characteristic_value,
     damped_tongue,
     floquet_discriminant,
+    tongue_critical_damping,
     tongue_critical_gamma,
     tongue_edges,
     transition_curves,
@@ -62,7 +64,8 @@ from .regions import (
 
 __all__ = ["MATHIEU_SCALE_MAX", "beta_from_discriminants", "characteristic_exponent",
            "characteristic_value", "damped_tongue", "floquet_discriminant",
-           "tongue_critical_gamma", "tongue_edges", "transition_curves", "DAMPING_MARGIN",
+           "tongue_critical_gamma", "tongue_critical_damping",
+           "ZETA_SEARCH_MAX", "tongue_edges", "transition_curves", "DAMPING_MARGIN",
            "CriticalAmplitude", "InstabilityRegion", "RegionBoundary", "TooManyCandidatesError",
            "converged_periodic_boundaries", "critical_amplitude", "NoConvergenceError",
            "brent_max", "expand_bracket", "golden_section_max", "illinois_root",

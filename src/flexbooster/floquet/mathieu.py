@@ -24,7 +24,8 @@ from .optimize import expand_bracket
 
 __all__ = ["MATHIEU_SCALE_MAX", "characteristic_exponent", "floquet_discriminant",
            "beta_from_discriminants", "transition_curves", "characteristic_value",
-           "tongue_edges", "damped_tongue", "tongue_critical_gamma"]
+           "tongue_edges", "damped_tongue", "tongue_critical_gamma",
+           "tongue_critical_damping", "ZETA_SEARCH_MAX"]
 
 _METHODS = ("floquet", "hill")
 #: Largest sqrt(|a| + 2|q|) of both methods: their cost grows like it (24 + 16 sqrt(a)
@@ -507,6 +508,22 @@ def damped_tongue(x_b: float, x_a: float, g: float, zeta: float) -> tuple | None
     return lo, hi, x_m, f_m
 
 
+def _tongue_peak(r: int, gamma: float, zeta: float) -> float:
+    """Largest growth minus damping f = mu(x) - zeta sqrt(x / (1 - zeta^2)) over damped tongue r
+    on the ray q = gamma x / (2 (1 - zeta^2)) (> 0: the tongue is open; Bolotin 1964, sec. 6);
+    -zeta r / sqrt(1 - zeta^2) where the undamped tongue is below round-off."""
+    from scipy import optimize  # here: its import is a sixth of a run's (unused by most)
+    s = 1.0 / (1.0 - zeta * zeta)
+    g = gamma * s
+    edges = tongue_edges(r, g)
+    if edges is None:
+        return -zeta * np.sqrt(r * r * s)
+    res = optimize.minimize_scalar(
+        lambda x: -(_mu(x, g) - zeta * np.sqrt(x * s)), bounds=edges, method="bounded",
+        options={"xatol": 1e-10 * edges[1], "maxiter": 500})
+    return -float(res.fun)
+
+
 def tongue_critical_gamma(r: int, gamma: float, zeta: float) -> float:
     """Smallest amplitude at which damped tongue r opens: brentq in gamma on the largest f of
     :func:`damped_tongue`; 0 when open down to 1e-12 gamma (Bolotin 1964, sec. 6).
@@ -521,17 +538,9 @@ def tongue_critical_gamma(r: int, gamma: float, zeta: float) -> float:
         Damping ratio, 0 < zeta < 1.
     """
     from scipy import optimize  # here: its import is a sixth of a run's (unused by most)
-    s = 1.0 / (1.0 - zeta * zeta)
 
     def peak(gam: float) -> float:
-        g = gam * s
-        edges = tongue_edges(r, g)
-        if edges is None:
-            return -zeta * np.sqrt(r * r * s)
-        res = optimize.minimize_scalar(
-            lambda x: -(_mu(x, g) - zeta * np.sqrt(x * s)), bounds=edges, method="bounded",
-            options={"xatol": 1e-10 * edges[1], "maxiter": 500})
-        return -float(res.fun)
+        return _tongue_peak(r, gam, zeta)
 
     g_lo = 1e-3 * gamma
     while peak(g_lo) > 0.0:
@@ -539,4 +548,41 @@ def tongue_critical_gamma(r: int, gamma: float, zeta: float) -> float:
         if g_lo < 1e-12:
             return 0.0
     return float(optimize.brentq(peak, g_lo, gamma, xtol=1e-10 * gamma, rtol=1e-12,
+                                 maxiter=200))
+
+
+#: Largest damping ratio :func:`tongue_critical_damping` searches (zeta < 1).
+ZETA_SEARCH_MAX = 0.999
+
+
+def tongue_critical_damping(r: int, gamma: float) -> float:
+    """Smallest damping ratio that closes tongue r at amplitude gamma: brentq in zeta on the
+    largest f of :func:`damped_tongue` (Bolotin 1964, sec. 6); 0 where the undamped tongue is
+    below round-off, :data:`ZETA_SEARCH_MAX` where that damping does not close it.
+
+    Parameters
+    ----------
+    r : int
+        Tongue order, >= 1.
+    gamma : float
+        Amplitude (ray q = gamma x / (2 (1 - zeta^2))), 0 < gamma < 1.
+    """
+    from scipy import optimize  # here: its import is a sixth of a run's (unused by most)
+
+    def peak(zeta: float) -> float:
+        return _tongue_peak(r, gamma, zeta)
+
+    if not peak(0.0) > 0.0:
+        return 0.0
+    z_hi = gamma
+    while peak(z_hi) > 0.0:  # bracket upwards: zeta_cr ~ gamma / 4 for r = 1, less above
+        if z_hi >= ZETA_SEARCH_MAX:
+            return ZETA_SEARCH_MAX
+        z_hi = min(2.0 * z_hi, ZETA_SEARCH_MAX)
+    z_lo = 0.5 * z_hi
+    while peak(z_lo) <= 0.0:  # zeta_cr ~ q^r: down by decades
+        z_hi, z_lo = z_lo, 0.1 * z_lo
+        if z_lo < 1e-300:
+            return 0.0
+    return float(optimize.brentq(peak, z_lo, z_hi, xtol=1e-13 * z_lo, rtol=1e-12,
                                  maxiter=200))

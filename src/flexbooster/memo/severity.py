@@ -14,6 +14,7 @@ Dynamic Stability of Elastic Systems*, 1964, ch. 1; H. Risken, *The Fokker-Planc
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
@@ -515,7 +516,10 @@ def resonance_bands(table: StabilityTable, sev: RootSeverity, *,
         bands.append(Band(
             mechanism="resonance", kind="resonance", Omega_lo=float(Om[a]),
             Omega_hi=float(Om[b - 1]), Omega_at_max=peak, Omega_center=peak,
-            growth_rate_max=0.0, order=family, modes=tuple(shell_mode(*m) for m in modes),
+            growth_rate_max=0.0, order=family,
+            modes=tuple(dataclasses.replace(  # the top root's mode first, with its frequency
+                shell_mode(*m), omega=float(table.shell_omega_bar[top] * table.omega_1))
+                if n == 0 else shell_mode(*m) for n, m in enumerate(modes)),
             severity=float(sev.severity[top]), severity_rel=float(sev.severity_rel[top]),
             n_roots=int(b - a), families=tuple(sorted({int(table.family[n]) for n in members})),
             cause=FAMILY_CAUSES[family]))

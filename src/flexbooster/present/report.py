@@ -616,8 +616,18 @@ def _warnings(results: Results) -> str:
 
 
 def _first_screen(results: Results, svgs: Mapping[str, str] | None) -> str:
-    """Verdicts, the ranked bands, the warnings (named) and the danger map: the answer first."""
-    out = ['<div class="first" id="first-screen"><h3>Verdicts</h3>',
+    """The overall verdict and the damping it holds for, the verdicts, the ranked bands, the
+    warnings (named) and the danger map: the answer first."""
+    out = ['<div class="first" id="first-screen">']
+    verdict = None if results.danger is None else results.danger.verdict
+    if verdict is not None:
+        duration = ("none given (verdict from e-folding times)" if verdict.duration is None
+                    else f"{verdict.duration:g} s")
+        out.append(f'<p class="overall {"bad" if verdict.overall == "UNSTABLE" else ""}">'
+                   f"<strong>{_e(verdict.overall)}</strong>: {_e(verdict.reason)}</p>"
+                   f"<p>Damping: {_e(verdict.damping_text)}; excitation duration: "
+                   f"{_e(duration)}.</p>")
+    out += ['<h3>Verdicts</h3>',
            _table(("mechanism", "verdict"), verdict_rows(results), (False, False),
                   ["bad" if v.startswith("unstable") else "" for _, v in
                    verdict_rows(results)])]

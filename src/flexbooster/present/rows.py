@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 
+from ..danger import edges_text
 from ..results import Results
 
 __all__ = [
@@ -47,7 +48,7 @@ ROUND_OFF = 1e-14
 #: Bands listed on the first screen (terminal and report); all are in results.json.
 FIRST_SCREEN_BANDS = 8
 #: Column headings of :func:`danger_rows`.
-DANGER_HEADER = ("#", "Omega (rad/s)", "Omega (Hz)", "growth (1/s) / severity",
+DANGER_HEADER = ("#", "Omega (rad/s)", "Omega (Hz)", "growth (1/s) / response",
                  "in operating range", "mode", "mechanism")
 
 #: (quantity, value, unit): the value is a float, an int or text.
@@ -88,8 +89,9 @@ def input_rows(results: Results) -> list[Row]:
     ]
     damping = getattr(case, "damping", None)
     if damping is not None:
-        rows.append(("damping ratio: beam modes / rigid-body pitch",
-                     f"{damping.beam_modal_ratio:g} / {damping.pitch_ratio:g}", "-"))
+        rows.append(("damping ratio: beam modes / vehicle modes / rigid-body pitch",
+                     f"{damping.beam_ratio:g} / {case.vehicle_damping_ratio:g} / "
+                     f"{damping.pitch_ratio:g}", "-"))
     return with_us_units(results, rows)
 
 
@@ -271,18 +273,15 @@ def frequency_rows(results: Results) -> list[Row]:
 
 
 def range_text(lo: float, hi: float) -> str:
-    """'lo-hi' with the fewest significant digits (4..10) that tell the edges apart.
+    """'lo-hi' with the fewest significant digits (4..10) that tell the edges apart
+    (:func:`flexbooster.danger.edges_text`).
 
     Parameters
     ----------
     lo, hi : float
         Edges (any unit).
     """
-    for digits in range(4, 11):
-        a, b = f"{lo:.{digits}g}", f"{hi:.{digits}g}"
-        if a != b:
-            return f"{a}-{b}"
-    return f"{lo:.10g}"
+    return edges_text(lo, hi)
 
 
 def verdict_rows(results: Results) -> list[tuple[str, str]]:
@@ -315,6 +314,8 @@ def danger_rows(results: Results, limit: int = FIRST_SCREEN_BANDS) -> list[tuple
         lo_hz, hi_hz = b.hz
         if b.growth_rate is not None:
             level = f"{b.growth_rate:.3g}"
+        elif b.band.steady_amplitude is not None:  # damped: the steady response
+            level = f"{1e3 * b.band.steady_amplitude:.3g} mm"
         elif b.severity is not None:
             level = f"sev. {b.severity:.3g}"
         else:
@@ -392,7 +393,7 @@ def vehicle_region_rows(results: Results) -> list[Row]:
     ks = [h.k for h in vr.harmonics]
     n_modes = sorted({h.omega_unloaded.size for h in vr.harmonics})
     rows += [
-        ("modal damping ratio zeta of the loaded shell modes (vehicle.damping_ratio)",
+        ("modal damping ratio zeta of the loaded shell modes (damping.modal_ratio)",
          vr.damping_ratio, "-"),
         ("harmonics k / modes per k (vehicle.n_modes)",
          f"{min(ks)}..{max(ks)} / {', '.join(str(n) for n in n_modes)}" if ks else "none", "-"),

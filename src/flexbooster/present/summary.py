@@ -29,14 +29,21 @@ from .rows import (
     verdict_rows,
 )
 
-__all__ = ["print_summary", "print_stability", "print_first_screen", "TERMINAL_BANDS"]
+__all__ = ["print_summary", "print_stability", "print_first_screen", "TERMINAL_BANDS",
+           "TERMINAL_MODES"]
 
 #: Bands listed on the terminal's first screen (the report lists more; all in results.json).
-TERMINAL_BANDS = 5
+TERMINAL_BANDS = 8
+#: Modes of a band named on the terminal (the rest counted; all in the report).
+TERMINAL_MODES = 2
 
 
-def print_first_screen(results: Results, console: Console) -> None:
-    """The answer first: one verdict per mechanism, the ranked dangerous bands, the warnings.
+_OVERALL_STYLE = {"UNSTABLE": "bold red", "MARGINAL": "bold yellow", "STABLE": "bold green"}
+
+
+def print_first_screen(results: Results, console: Console, *, full: bool = True) -> None:
+    """The answer first: the overall verdict and the damping and duration it holds for, one
+    verdict per mechanism, the ranked dangerous bands, the warnings.
 
     Parameters
     ----------
@@ -44,14 +51,27 @@ def print_first_screen(results: Results, console: Console) -> None:
         The analysis.
     console : rich.console.Console
         Where to print.
+    full : bool
+        The full summary follows (the warnings' details at its end); False: the short one.
     """
+    verdict = None if results.danger is None else results.danger.verdict
+    if verdict is not None:
+        style = _OVERALL_STYLE[verdict.overall]
+        console.print(f"[{style}]{verdict.overall}[/{style}]: {escape(verdict.reason)}")
+    console.print(f"[bold]flexbooster[/bold] - {escape(results.case.name)}")
+    if verdict is not None:
+        duration = ("none given (verdict from e-folding times)" if verdict.duration is None
+                    else f"{verdict.duration:g} s")
+        console.print(f"damping: {verdict.damping_text}; excitation duration: {duration}",
+                      highlight=False)
     verdicts = Table(title="Verdicts", title_justify="left", box=box.SIMPLE_HEAD,
                      header_style="bold", pad_edge=False)
     verdicts.add_column("mechanism", ratio=1)
     verdicts.add_column("verdict", ratio=2)
     for words, verdict in verdict_rows(results):
         style = "red" if verdict.startswith("unstable") else (
-            "green" if verdict.startswith("stable") else "")
+            "green" if verdict.startswith(("stable", "bounded")) else (
+                "yellow" if verdict.startswith("marginal") else ""))
         verdicts.add_row(words, f"[{style}]{verdict}[/{style}]" if style else verdict)
     console.print(verdicts)
     rows = danger_rows(results, TERMINAL_BANDS)
@@ -63,7 +83,8 @@ def print_first_screen(results: Results, console: Console) -> None:
     elif n_all == 0 and results.danger is not None:
         console.print("No unstable band in any mechanism computed.")
     if results.warnings:
-        console.print(f"[bold yellow]Warnings ({len(results.warnings)}; details at the end):"
+        where = "details at the end" if full else "details in the report"
+        console.print(f"[bold yellow]Warnings ({len(results.warnings)}; {where}):"
                       "[/bold yellow]")
         for w in results.warnings:
             console.print(f"  [yellow]warning[/yellow] {escape(f'[{w.code}] {w.field}')}")
@@ -89,7 +110,7 @@ def _g(x: object) -> str:
 
 def _band_block(rows: list[tuple[str, ...]], width: int) -> str:
     """Fixed-width text of the ranked bands: numbers in columns never cut, words wrapped."""
-    heads = ("#", "Omega rad/s", "Omega Hz", "growth 1/s", "in range")
+    heads = ("#", "Omega rad/s", "Omega Hz", "growth/resp.", "in range")
     widths = [max(len(r[i]) for r in [*rows, heads]) for i in range(5)]
     lead = sum(widths) + 2 * len(widths)
     below = width - lead < 30  # a narrow terminal: the words on their own line(s)
@@ -107,12 +128,17 @@ def _band_block(rows: list[tuple[str, ...]], width: int) -> str:
     out = line(heads, "mode; mechanism")
     out.append("-" * min(width - 1, lead + 72))
     for r in rows:
-        out += line(r[:5], f"{r[5]}; {r[6]}")
+        modes = r[5].split(" + ")
+        if len(modes) > TERMINAL_MODES:
+            modes = [*modes[:TERMINAL_MODES], f"{len(modes) - TERMINAL_MODES} more"]
+        out += line(r[:5], f"{' + '.join(modes)}; {r[6]}")
     return "\n".join(out)
 
 
-def print_summary(results: Results, console: Console | None = None) -> None:
-    """Print the summary tables of an analysis.
+def print_summary(results: Results, console: Console | None = None, *,
+                  full: bool = True) -> None:
+    """Print the summary of an analysis: the first screen (:func:`print_first_screen`) and,
+    with ``full``, every table.
 
     Parameters
     ----------
@@ -120,10 +146,13 @@ def print_summary(results: Results, console: Console | None = None) -> None:
         The analysis to summarise.
     console : rich.console.Console, optional
         Where to print; a new console on standard output by default.
+    full : bool
+        Every table after the first screen (``flexbooster run --full``).
     """
     console = console or Console()
-    console.print(f"[bold]flexbooster[/bold] - {results.case.name}")
-    print_first_screen(results, console)
+    print_first_screen(results, console, full=full)
+    if not full:
+        return
     for title, rows in (("Input (SI)", input_rows(results)),
                         (mass_title(results), mass_rows(results)),
                         ("Frequencies and dimensionless groups (memo 3.0, 4.2)",

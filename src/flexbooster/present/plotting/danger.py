@@ -47,8 +47,10 @@ def band_tooltip(rank: int, band: RankedBand) -> str:
         The band.
     """
     lo_hz, hi_hz = band.hz
+    amp = band.band.steady_amplitude
     level = (f"growth rate {band.growth_rate:.3g} 1/s" if band.growth_rate is not None
-             else f"severity {band.severity:.3g}")
+             else f"steady response {1e3 * amp:.3g} mm (severity {band.severity:.3g})"
+             if amp is not None else f"severity {band.severity:.3g}")
     where = "in the operating range" if band.in_operating_range else "outside the operating range"
     return (f"#{rank}: Omega {band.Omega_lo:.6g}-{band.Omega_hi:.6g} rad/s "
             f"({lo_hz:.6g}-{hi_hz:.6g} Hz); {level}; {band.mode_text}; {band.cause_text}; "

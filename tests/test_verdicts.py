@@ -1,0 +1,318 @@
+"""The overall verdict and the per-band measures (flexbooster.danger, docs/theory/verdicts.md).
+
+Tiers: an independent model (the damped Mathieu equation's Floquet multipliers from a monodromy
+integrated by scipy's solve_ivp, its critical damping and critical gamma by brentq, written
+here) against the pitch bands' critical values; exact rules on synthetic bands (the statuses
+and the overall verdict follow from the stated floors); the damping input (defaults, the
+deprecated keys' warning reaching results.json).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import math
+import tomllib
+
+import numpy as np
+import pytest
+from scipy import integrate, optimize
+
+from flexbooster.analysis import analyze
+from flexbooster.bands import Band, SearchGap
+from flexbooster.case import default_case, default_case_text, load_case
+from flexbooster.danger import (
+    NEGLIGIBLE_GROWTH,
+    UNSTABLE_E_FOLDING,
+    band_measures,
+    band_status,
+    danger_bands,
+    danger_summary,
+    hz_text,
+)
+from flexbooster.memo.beam_action import band_modes
+from flexbooster.memo.pitch import PITCH_MODE, pitch_bands
+from flexbooster.memo.severity import FAMILY_CAUSES, shell_mode
+
+OPERATING = (10.0, 100.0)
+
+
+# --------------------------------------------------------------------------------------------
+# Independent model: the damped Mathieu equation by direct integration
+# --------------------------------------------------------------------------------------------
+def _log_rho(Omega: float, w: float, gamma: float, zeta: float) -> float:
+    """ln of the largest |Floquet multiplier| of psi'' + 2 zeta w psi' + w^2 (1 - gamma
+    cos Omega t) psi = 0: the monodromy over T = 2 pi / Omega by solve_ivp (DOP853, rtol
+    1e-12), both columns at once."""
+    def rhs(t, y):
+        k = w * w * (1.0 - gamma * math.cos(Omega * t))
+        return [y[1], -2.0 * zeta * w * y[1] - k * y[0], y[3], -2.0 * zeta * w * y[3] - k * y[2]]
+
+    T = 2.0 * math.pi / Omega
+    sol = integrate.solve_ivp(rhs, (0.0, T), [1.0, 0.0, 0.0, 1.0], method="DOP853",
+                              rtol=1e-12, atol=1e-14)
+    Phi = sol.y[:, -1].reshape(2, 2).T
+    return float(np.log(np.max(np.abs(np.linalg.eigvals(Phi)))))
+
+
+def _peak(w: float, gamma: float, zeta: float) -> float:
+    """Largest ln|rho| over Omega about the principal tongue's centre 2 w sqrt(1 - zeta^2)."""
+    c = 2.0 * w
+    res = optimize.minimize_scalar(lambda om: -_log_rho(om, w, gamma, zeta),
+                                   bounds=(c * (1.0 - 0.3 * gamma), c * (1.0 + 0.3 * gamma)),
+                                   method="bounded", options={"xatol": 1e-9 * c})
+    return -float(res.fun)
+
+
+def test_pitch_principal_region_critical_damping_and_gamma_against_direct_floquet():
+    """The rigid-pitch principal region (Mathieu tongue 1) of a damped case: its critical
+    damping ratio (the smallest closing it at gamma) and its critical gamma at the case's
+    damping against an independent computation (monodromy by solve_ivp, the largest
+    multiplier maximised over Omega, brentq on |rho| = 1), to 1e-4 relative."""
+    w, gamma, zeta = 10.0, 0.1, 0.01
+    (band,) = [b for b in pitch_bands(w, gamma, omega_min=15.0, omega_max=25.0,
+                                      damping_ratio=zeta) if b.order == 1]
+    zeta_cr = optimize.brentq(lambda z: _peak(w, gamma, z), 1e-3, 0.1, xtol=1e-10)
+    gamma_cr = optimize.brentq(lambda g: _peak(w, g, zeta), 1e-3, gamma, xtol=1e-10)
+    measured = band_measures(band, gamma=gamma, duration=None)  # as danger_summary does
+    assert measured.critical_damping_ratio == pytest.approx(zeta_cr, rel=1e-4)
+    assert band.critical_gamma == pytest.approx(gamma_cr, rel=1e-4)
+    # and its margin at the case's gamma is gamma_cr / gamma (< 1: open)
+    assert measured.margin == pytest.approx(gamma_cr / gamma, rel=1e-4)
+
+
+def test_amplification_is_exp_growth_times_duration():
+    """Exact: amplification = exp(growth_rate_max x duration), e-folding time = 1 / growth;
+    None without a duration; sigma T past 700 stores the exponent only (no inf)."""
+    (band,) = [b for b in pitch_bands(10.0, 0.1, omega_min=15.0, omega_max=25.0,
+                                      damping_ratio=0.01) if b.order == 1]
+    m = band_measures(band, gamma=0.1, duration=150.0)
+    assert m.amplification == math.exp(band.growth_rate_max * 150.0)
+    assert m.e_folding_s == 1.0 / band.growth_rate_max
+    assert band_measures(band, gamma=0.1, duration=None).amplification is None
+    huge = band_measures(band, gamma=0.1, duration=1e6)
+    assert huge.amplification is None and huge.growth_exponent == band.growth_rate_max * 1e6
+    assert json.loads(json.dumps(huge.to_dict()))["amplification"] is None
+
+
+# --------------------------------------------------------------------------------------------
+# Rules (exact, synthetic bands)
+# --------------------------------------------------------------------------------------------
+def _band(lo, hi, g, mechanism="beam_action", **extra):
+    modes = (PITCH_MODE,) if mechanism == "pitch" else band_modes((0, 1))
+    return Band(mechanism=mechanism, Omega_lo=lo, Omega_hi=hi, kind="sum", order=1,
+                modes=modes, growth_rate_max=g, Omega_at_max=0.5 * (lo + hi),
+                Omega_center=0.5 * (lo + hi), **extra)
+
+
+def _res(lo, hi, severity):
+    return Band(mechanism="resonance", Omega_lo=lo, Omega_hi=hi, kind="resonance", order=3,
+                modes=(shell_mode(1, 1, 0, 1, "axial"),), growth_rate_max=0.0,
+                Omega_at_max=lo, Omega_center=lo, severity=severity, cause=FAMILY_CAUSES[3])
+
+
+@pytest.mark.parametrize(("g", "duration", "status"), [
+    pytest.param(0.5 * NEGLIGIBLE_GROWTH, None, "negligible", id="e-folding-over-1e6s"),
+    pytest.param(0.5 * NEGLIGIBLE_GROWTH, 1e9, "negligible", id="floor-even-for-long-T"),
+    pytest.param(1.0 / (2.0 * UNSTABLE_E_FOLDING), None, "marginal", id="slow-no-T"),
+    pytest.param(2.0 / UNSTABLE_E_FOLDING, None, "unstable", id="fast-no-T"),
+    pytest.param(math.log(1.05) / 150.0, 150.0, "negligible", id="x1.05-in-T"),
+    pytest.param(math.log(5.0) / 150.0, 150.0, "marginal", id="x5-in-T"),
+    pytest.param(math.log(20.0) / 150.0, 150.0, "unstable", id="x20-in-T"),
+])
+def test_band_status_follows_the_stated_floors(g, duration, status):
+    """The rules of docs/theory/verdicts.md, each on one side of its floor (exact)."""
+    assert band_status(_band(20.0, 21.0, g), duration=duration) == status
+
+
+def test_no_band_with_e_folding_over_1e6_s_is_unstable():
+    """Regions of negligible growth never make a mechanism or the whole "unstable"."""
+    s = danger_summary(operating_range=OPERATING, bands={
+        "beam_action": [_band(20.0, 21.0, 9.9e-13), _band(30.0, 31.0, 5e-7)]})
+    assert s.verdict.overall == "STABLE"
+    (text,) = [v for k, _, v in s.verdicts if k == "beam_action"]
+    assert text.startswith("stable in the operating range (2 regions of negligible growth")
+
+
+def test_overall_verdict_unstable_marginal_stable():
+    """UNSTABLE with a band past the floor, MARGINAL with only marginal ones, STABLE with
+    none; the reason names the fastest band's edges in Hz and the damping."""
+    kw = dict(operating_range=OPERATING, duration=150.0, modal_ratio=0.01, gamma=0.05)
+    fast = _band(20.0, 21.0, math.log(100.0) / 150.0)
+    slow = _band(40.0, 41.0, math.log(3.0) / 150.0)
+    u = danger_summary(bands={"beam_action": [fast, slow]}, **kw).verdict
+    assert u.overall == "UNSTABLE" and u.line.startswith("UNSTABLE: at 1 % modal damping")
+    assert hz_text(20.0 / (2 * math.pi), 21.0 / (2 * math.pi)) in u.reason
+    assert "x 100 in 150 s" in u.reason
+    m = danger_summary(bands={"beam_action": [slow]}, **kw).verdict
+    assert m.overall == "MARGINAL" and "x 3 in 150 s" in m.reason
+    st = danger_summary(bands={"beam_action": [], "resonance": [_res(50.0, 51.0, 1.0)]},
+                        **kw).verdict
+    assert st.overall == "STABLE" and "1 forced resonance bounded by damping" in st.reason
+    d = json.loads(json.dumps(st.to_dict()))
+    assert d["overall"] == "STABLE" and d["damping"]["modal_ratio"] == 0.01
+    assert d["mechanisms"]["pitch"] == "not computed"
+    assert d["mechanisms"]["resonance"].startswith("bounded by damping: 1 resonance")
+
+
+def test_undamped_resonances_are_unstable():
+    """Without modal damping a memo resonance grows secularly (memo 7): unstable."""
+    s = danger_summary(operating_range=OPERATING, modal_ratio=0.0,
+                       bands={"resonance": [_res(50.0, 51.0, 1.0)]})
+    assert s.verdict.overall == "UNSTABLE"
+
+
+def test_not_fully_searched_is_never_stable():
+    """A computed mechanism with a gap: the overall verdict is at best MARGINAL and says
+    "not fully searched"; its mechanism line keeps the gap's reason."""
+    gap = SearchGap(stage="vehicle", reason="harmonic k = 19 not searched: max_steps",
+                    limit="max_steps", k=19)
+    s = danger_summary(operating_range=OPERATING, bands={"vehicle": [], "pitch": []},
+                       gaps=[gap], modal_ratio=0.01)
+    assert s.verdict.overall == "MARGINAL"
+    assert "not fully searched: vehicle parametric regions" in s.verdict.reason
+    assert dict(s.verdict.mechanisms)["vehicle"].startswith("not fully searched: harmonic")
+
+
+def test_hz_text_distinguishes_the_edges():
+    """Edges printed to the digits that tell them apart (at least 4 significant)."""
+    assert hz_text(18.25, 18.31) == "18.25-18.31 Hz"
+    lo, hi = hz_text(45.200132, 45.200214).removesuffix(" Hz").split("-")
+    assert lo != hi and float(lo) == pytest.approx(45.200132, rel=1e-6)
+
+
+def test_ranked_bands_carry_the_measures():
+    """danger_summary applies band_measures to every band it ranks."""
+    s = danger_summary(operating_range=OPERATING, duration=10.0, gamma=0.05,
+                       bands={"beam_action": [_band(20.0, 21.0, 0.1, critical_gamma=0.02)]})
+    (b,) = s.bands
+    assert b.band.amplification == math.exp(0.1 * 10.0) and b.band.margin == 0.02 / 0.05
+    assert danger_bands([b.band], operating_range=OPERATING)[0].band is b.band
+
+
+# --------------------------------------------------------------------------------------------
+# Damping input
+# --------------------------------------------------------------------------------------------
+def test_damping_defaults():
+    """1 % on every elastic mode (beam and vehicle), the rigid pitch undamped."""
+    c = default_case()
+    assert (c.damping.modal_ratio, c.damping.pitch_ratio) == (0.01, 0.0)
+    assert c.damping.beam_ratio == 0.01 and c.vehicle_damping_ratio == 0.01
+
+
+@pytest.mark.parametrize(("table", "key", "value"), [
+    ("damping", "beam_modal_ratio", 0.02), ("vehicle", "damping_ratio", 0.03)])
+def test_deprecated_key_is_used_and_warned_in_results_json(table, key, value):
+    """An old key keeps working, with a ``deprecated-key`` warning naming damping.modal_ratio
+    in Results.warnings and results.json; given beside damping.modal_ratio it is used for its
+    modes (a case dumped and loaded again keeps its meaning)."""
+    d = tomllib.loads(default_case_text())
+    del d["damping"]
+    d.setdefault(table, {})[key] = value
+    case = load_case(d)
+    used = case.damping.beam_ratio if table == "damping" else case.vehicle_damping_ratio
+    assert used == value
+    r = analyze(case, beam_action=False, stability=False, figures=False, vehicle=False)
+    (w,) = [w for w in json.loads(json.dumps(r.to_dict()))["warnings"]
+            if w["code"] == "deprecated-key"]
+    assert w["field"] == f"{table}.{key}" and "damping.modal_ratio" in w["message"]
+    again = load_case(case.model_dump(exclude_none=True))
+    assert (again.damping.beam_ratio, again.vehicle_damping_ratio) == (
+        case.damping.beam_ratio, case.vehicle_damping_ratio)
+
+
+def test_the_same_tongue_from_pitch_and_beam_action_is_listed_once():
+    """Exact: the rigid-pitch tongue r found by the pitch (memo 4.2) and by the beam action
+    ("rigid pitch", simple, order r, overlapping) is one ranked band naming both mechanisms,
+    with the coupled model's edges; a pitch tongue the beam action does not overlap stays."""
+    pitch1 = _band(40.0, 42.0, 0.2, mechanism="pitch")
+    pitch2 = _band(20.0, 20.5, 0.1, mechanism="pitch")
+    coupled = Band(mechanism="beam_action", Omega_lo=40.1, Omega_hi=42.1, kind="simple",
+                   order=1, modes=band_modes((0,)), growth_rate_max=0.21, Omega_at_max=41.0,
+                   Omega_center=41.0)
+    s = danger_summary(operating_range=OPERATING,
+                       bands={"pitch": [pitch1, pitch2], "beam_action": [coupled]})
+    assert [(b.band.Omega_lo, b.mechanisms) for b in s.bands] == [
+        (40.1, ("beam_action", "pitch")), (20.0, ("pitch",))]
+    assert "also the rigid-body pitch's Mathieu tongue 1" in s.bands[0].cause_text
+    text = dict((k, v) for k, _, v in s.verdicts)
+    assert text["pitch"].startswith("unstable: 2 instability regions")
+    assert text["beam_action"].startswith("unstable: 1 instability region ")
+
+
+# --------------------------------------------------------------------------------------------
+# Forced resonances: the damped steady amplitude
+# --------------------------------------------------------------------------------------------
+def test_resonance_steady_amplitude_closed_form_and_direct_integration():
+    """A single mode y'' + 2 zeta w y' + w^2 y = (F / m) cos(w t) at resonance: the undamped
+    secular rate (severity) v = F / (2 m w) (docs/theory/severity.md), and band_measures'
+    damped steady amplitude against the closed form F / (2 zeta w^2 m) and against direct
+    integration (solve_ivp to steady state, the last period's peak), to 1 %."""
+    w, zeta, m, F = 2 * math.pi * 45.2, 0.01, 3.0, 50.0
+    v = F / (2.0 * m * w)  # severity: the undamped envelope grows like v t
+    mode = shell_mode(1, 1, 0, 1, "axial")
+    band = Band(mechanism="resonance", Omega_lo=w, Omega_hi=w, kind="resonance", order=3,
+                modes=(dataclasses.replace(mode, omega=w),), growth_rate_max=0.0,
+                Omega_at_max=w, Omega_center=w, severity=v, cause=FAMILY_CAUSES[3])
+    got = band_measures(band, gamma=0.05, duration=None, modal_ratio=zeta)
+    closed = F / (2.0 * zeta * w * w * m)
+    assert got.steady_amplitude == pytest.approx(closed, rel=1e-12)
+    assert got.steady_acceleration == pytest.approx(closed * w * w, rel=1e-12)
+    T = 2 * math.pi / w
+    n_settle = int(12.0 / (zeta * w * T))  # 12 time constants 1 / (zeta w)
+
+    def rhs(t, y):
+        return [y[1], F / m * math.cos(w * t) - 2 * zeta * w * y[1] - w * w * y[0]]
+
+    sol = integrate.solve_ivp(rhs, (0.0, (n_settle + 1) * T), [0.0, 0.0], method="DOP853",
+                              rtol=1e-9, atol=1e-12, dense_output=True)
+    tail = sol.sol(np.linspace(n_settle * T, (n_settle + 1) * T, 2001))[0]
+    assert got.steady_amplitude == pytest.approx(np.max(np.abs(tail)), rel=1e-2)
+    undamped = band_measures(band, gamma=0.05, duration=None, modal_ratio=0.0)
+    assert undamped.steady_amplitude is None  # undamped: no steady state (secular growth)
+
+
+def test_damped_resonances_rank_by_steady_amplitude():
+    """Exact: of two damped resonances the larger v / (zeta w) ranks first, though its
+    severity v is the smaller."""
+    mode = shell_mode(1, 1, 0, 1, "axial")
+
+    def res(lo, v, w):
+        return Band(mechanism="resonance", Omega_lo=lo, Omega_hi=lo, kind="resonance",
+                    order=3, modes=(dataclasses.replace(mode, omega=w),), growth_rate_max=0.0,
+                    Omega_at_max=lo, Omega_center=lo, severity=v, cause=FAMILY_CAUSES[3])
+
+    s = danger_summary(operating_range=OPERATING, modal_ratio=0.01,
+                       bands={"resonance": [res(20.0, 2.0, 1000.0), res(30.0, 1.0, 10.0)]})
+    assert [b.Omega_lo for b in s.bands] == [30.0, 20.0]
+    assert "largest response 1e+04 mm" in s.verdict.reason
+
+
+# --------------------------------------------------------------------------------------------
+# The default case (acceptance of issue 33)
+# --------------------------------------------------------------------------------------------
+@pytest.mark.slow
+def test_default_case_verdict_acceptance(default_results):
+    """The default case: results.json holds the verdict (overall, reason, mechanisms) at 1 %
+    modal damping and 150 s; no band with an e-folding time above 1e6 s counts as unstable
+    (nor its mechanism's line); no band is listed twice (no two ranked bands of one mechanism
+    with the same edges, no pitch tongue beside the beam action's rigid-pitch band of the same
+    order that overlaps it)."""
+    r = default_results
+    d = json.loads(json.dumps(r.to_dict()))["verdict"]
+    assert d["overall"] in ("UNSTABLE", "MARGINAL", "STABLE") and d["reason"]
+    assert d["damping"] == {"modal_ratio": 0.01, "pitch_ratio": 0.0} and d["duration"] == 150.0
+    assert set(d["mechanisms"]) == {"pitch", "beam_action", "vehicle", "resonance"}
+    slow = [b for b in r.danger.bands if b.band.e_folding_s is not None
+            and b.band.e_folding_s > 1e6]
+    for b in slow:
+        assert band_status(b.band, duration=150.0, modal_ratio=0.01) == "negligible"
+    for key in {b.mechanism for b in slow}:
+        assert not d["mechanisms"][key].startswith("unstable")
+    keys = [(b.mechanism, b.Omega_lo, b.Omega_hi) for b in r.danger.bands]
+    assert len(keys) == len(set(keys))
+    pitch = [b for b in r.danger.bands if b.mechanism == "pitch"]
+    tongues = [b for b in r.danger.bands if b.mechanism == "beam_action"
+               and b.band.kind == "simple" and b.mode_text == "rigid pitch"]
+    assert not any(p.band.order == t.band.order and p.Omega_lo <= t.Omega_hi
+                   and t.Omega_lo <= p.Omega_hi for p in pitch for t in tongues)
