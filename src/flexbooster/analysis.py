@@ -295,7 +295,8 @@ def _analyze_segments(case: Case, step: Callable[[str], None], *, figures: bool,
         pitch_ratio=case.damping.pitch_ratio)
     memo = {"beam_action", "resonance"}  # the memo's mechanisms: not applicable, never stable
     danger = dataclasses.replace(danger, verdicts=tuple(
-        (key, words, f"not applicable: {MEMO_NOT_APPLICABLE}" if key in memo else verdict)
+        (key, words, "not applicable: the memo's method models the two bare cylinders of "
+         "[booster] only" if key in memo else verdict)
         for key, words, verdict in danger.verdicts))
     return Results(case=case, mass=None, omega_1=None, omega_psi=omega_psi, groups=None,
                    beam=None, pitch=pitch, shell=None, warnings=tuple(extra), vehicle=survey,
