@@ -118,7 +118,8 @@ def _tolerance(key: str) -> tuple[float, float] | None:
     solved ones (SOLVED): 1e-8, 1e-12 absolute; the peak growth log|rho| / T of a band:
     multipliers from the monodromy eigenvalues, accurate to ~1e-10, i.e. ~1e-7 1/s at
     omega_1 ~ 100 rad/s; not compared: hill_monodromy_difference (an error estimate of the
-    eigen-solvers, ~1e-11) and a band's width (omega_hi - omega_lo of two edges compared); the
+    eigen-solvers, ~1e-11), a band's width (omega_hi - omega_lo of two edges compared) and its
+    e-folding time, growth exponent and amplification (functions of its growth rate); the
     forced response's half-basis change (a difference of two equal peaks: an error estimate)
     and the Omega of a peak (the peak values are compared; at the edges the axial force is
     gamma F0 or 0 at every Omega, so where it peaks is round-off); its loads to
@@ -126,6 +127,8 @@ def _tolerance(key: str) -> tuple[float, float] | None:
     """
     if key.endswith("hill_monodromy_difference") or (".bands[" in key and key.endswith(".width")):
         return None
+    if ".bands[" in key and key.endswith((".e_folding_s", ".growth_exponent", ".amplification")):
+        return None  # 1/growth, growth T, exp(growth T): the growth itself is compared below
     if key.startswith(".forced_response."):
         if key.endswith("max_change") or ".Omega" in key:
             return None
@@ -162,10 +165,15 @@ def _differences(a, b, key=""):
 
 
 @pytest.mark.slow
-def test_same_case_in_si_and_inch_pound_units(case_dict, default_results):
+def test_same_case_in_si_and_inch_pound_units(case_dict):
     """The default case written in inch-pound units (exact conversion factors) gives the same
-    results to 1e-12 relative."""
-    si = default_results.case
+    results to 1e-12 relative (the solved ones to 1e-8). Both undamped (modal_ratio = 0): the
+    edges of a damped region whose growth barely exceeds 0 are ill-conditioned (a shallow
+    maximum crossing zero), so round-off moves them by up to 1e-3 relative between the two unit
+    systems, as it would between two machines."""
+    undamped = {**case_dict, "damping": {**case_dict.get("damping", {}), "modal_ratio": 0.0}}
+    si_results = analyze(load_case(undamped), vehicle=False)  # undamped regions: over budget
+    si = si_results.case
     b, t = si.booster, si.thrust
     ip = {
         "name": si.name,
@@ -190,11 +198,13 @@ def test_same_case_in_si_and_inch_pound_units(case_dict, default_results):
             "omega_min": f"{t.omega_min / (2 * math.pi)!r} Hz",
             "omega_max": f"{t.omega_max * 60 / (2 * math.pi)!r} rpm",
             "n_omega": t.n_omega,
-            "duration": f"{t.duration / 60.0!r} min",  # the default case's 150 s (issue 33)
+            "duration": f"{t.duration / 60.0!r} min",  # the default case's 150 s
         },
         "truncation": case_dict["truncation"],
+        "damping": undamped["damping"],
     }
-    bad = list(_differences(default_results.to_dict(), analyze(load_case(ip)).to_dict()))
+    bad = list(_differences(si_results.to_dict(),
+                            analyze(load_case(ip), vehicle=False).to_dict()))
     assert not bad, bad[:8]
 
 

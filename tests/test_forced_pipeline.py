@@ -76,6 +76,7 @@ def _case_text(thrust: str = "", damping: str = "pitch_ratio = 0.02", extra: str
     text = default_case_text().replace("[thrust]\n", f"[thrust]\n{thrust}\n", 1)
     # one vehicle per case: README's [vehicle] segments replace the memo's [booster]
     text = text[:text.index("[booster]")] + text[text.index("[thrust]"):]
+    text = re.sub(r"^\[damping\][^\[]*", "", text, flags=re.M)  # the test's own [damping]
     for key in ("M1", "N1", "M2", "N2", "N"):  # small memo truncation: the stages run fast
         text = re.sub(rf"^{key} = \d+", f"{key} = 3", text, flags=re.M)
     return text + f"\n[damping]\n{damping}\n" + README_TABLE + extra

@@ -549,3 +549,24 @@ def test_fuzz_reproducer_memo_vehicle_70_km_forward_cylinder():
     assert info.value.field == "booster.cylinder2.half_length"
     # the default vehicle is within the limit
     assert max(auto_element_counts(vehicle_from_case(flexbooster.default_case()))) <= MAX_ELEMENTS
+
+
+def test_fuzz_reproducer_segments_pitch_beyond_the_mathieu_range():
+    """A [vehicle]-segments case whose rigid pitch (omega_psi = sqrt(F0 d K / I_cm) of a tiny
+    light cone) gives Mathieu a = 4 omega_psi^2 / omega_min^2 = 2.39e6 (memo eq. 4.2-4, closed
+    form from the case's mass properties), beyond the Mathieu numerics' 1e6: once an internal
+    ValueError of the Magnus integration, now the memo path's one-line CaseError on
+    thrust.F0."""
+    data = {"name": "fuzz", "max_seconds": 20.0,
+            "thrust": {"gamma": 0.0, "K": 1.0, "omega_min": 0.1, "omega_max": 1.0,
+                       "n_omega": 2, "T0": 50.329212104487034},
+            "damping": {"pitch_ratio": 0.0},
+            "vehicle": {"k_max": 0, "n_modes": 1, "E": 1e8, "nu": 0.25, "rho": 10.0,
+                        "segments": [{"kind": "cone", "radius_aft": 10.0 ** -0.5,
+                                      "radius_fwd": 0.31622776601683794, "length": 1.0,
+                                      "thickness": 0.0031622776601683794}]}}
+    case = flexbooster.load_case(data)
+    with pytest.raises(CaseError) as info:
+        analyze(case, figures=False)
+    assert info.value.field == "thrust.F0" and "\n" not in str(info.value)
+    assert "a = 4 omega_psi^2/Omega^2 = 2.39e+06" in str(info.value)

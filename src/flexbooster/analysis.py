@@ -270,6 +270,8 @@ def _analyze_segments(case: Case, step: Callable[[str], None], *, figures: bool,
         step(STAGES[1])
         t, Omega = case.thrust, case.omega_grid()
         omega_psi = pitch_frequency(case.F0, mass.cm_m, t.K, mass.I_cm_kg_m2)  # eq. (4.2-1)
+        cost.check_pitch_range(F0=case.F0, omega_psi=omega_psi, omega_min=float(Omega.min()),
+                               gamma=t.gamma)
         pitch = pitch_analysis(Omega, omega_psi, t.gamma, damping_ratio=case.damping.pitch_ratio)
         extra = _mathieu_warnings(Omega, omega_psi, pitch.a, pitch.q)
         step(VEHICLE_STAGE)
@@ -789,8 +791,9 @@ def analyze_forced_response(case: Case) -> ForcedLoads:
             raise CaseError("thrust.F0", case.F0, "the steady thrust buckles the vehicle "
                             f"({exc}): no forced response") from None
         except UndampedResonanceError as exc:
+            deprecated = case.vehicle is not None and case.vehicle.damping_ratio is not None
             field = ("damping.pitch_ratio" if exc.parameter == "pitch_damping_ratio"
-                     else "damping.modal_ratio")
+                     else "vehicle.damping_ratio" if deprecated else "damping.modal_ratio")
             value = (case.damping.pitch_ratio if exc.parameter == "pitch_damping_ratio"
                      else modal_damping_ratio(case))
             raise CaseError(field, value, f"the k = {exc.k} mode at {exc.omega:.6g} rad/s "

@@ -739,8 +739,10 @@ def load_case(source: str | Path | Mapping[str, Any]) -> Case:
                         f"mapping, not {type(source).__name__}")
     path = Path(source)
     try:
-        # stat first: opening a FIFO or a device would block or read without end
-        if not stat.S_ISREG(path.stat().st_mode):
+        # stat first: opening a FIFO or a device would block or read without end (but a pipe
+        # that is this process's standard input, e.g. /dev/stdin, has its writer)
+        info = path.stat()
+        if not stat.S_ISREG(info.st_mode) and not _is_standard_input(info):
             raise CaseError("case file", str(path), "must be a regular file (not a folder, a "
                             "FIFO or a device)")
         text = path.read_text(encoding="utf-8")
@@ -754,6 +756,14 @@ def load_case(source: str | Path | Mapping[str, Any]) -> Case:
     except tomllib.TOMLDecodeError as exc:
         raise CaseError("case file", str(path), f"not a valid TOML file ({exc})") from None
     return _validate(data)
+
+
+def _is_standard_input(info: os.stat_result) -> bool:
+    """``info`` (a ``stat``) is a pipe that is this process's standard input."""
+    try:
+        return stat.S_ISFIFO(info.st_mode) and os.path.samestat(info, os.fstat(0))
+    except OSError:  # no standard input
+        return False
 
 
 def default_case_text() -> str:

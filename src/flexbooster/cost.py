@@ -43,6 +43,7 @@ from .memo.model import BoosterModel
 from .memo.pitch import PITCH_MAX_TONGUE
 
 __all__ = [
+    "check_pitch_range",
     "CostEstimate",
     "flight_time_seconds",
     "with_flight",
@@ -575,6 +576,31 @@ def check_case_cost(model: BoosterModel | None, max_seconds: float, *,
     return est
 
 
+def check_pitch_range(*, F0: float, omega_psi: float, omega_min: float, gamma: float) -> None:
+    """CaseError on ``thrust.F0`` when the rigid pitch's Mathieu a = 4 omega_psi^2 / Omega^2
+    (memo eq. 4.2-4) at the lowest Omega is beyond what the Mathieu numerics bound
+    (MATHIEU_SCALE_MAX^2), before any solver runs.
+
+    Parameters
+    ----------
+    F0 : float
+        Steady thrust (N).
+    omega_psi : float
+        Rigid-body pitch frequency (rad/s).
+    omega_min : float
+        Lowest thrust pulsation frequency (rad/s), > 0.
+    gamma : float
+        Pulsation amplitude.
+    """
+    a_max = 4.0 * omega_psi**2 / omega_min**2  # eq. (4.2-4)
+    if not math.sqrt(a_max * (1.0 + gamma)) <= MATHIEU_SCALE_MAX:
+        raise CaseError("thrust.F0", F0,
+                        f"gives Mathieu a = 4 omega_psi^2/Omega^2 = {a_max:.3g} at the lowest "
+                        f"Omega {omega_min:.6g} rad/s (omega_psi = {omega_psi:.6g} rad/s), "
+                        f"beyond {MATHIEU_SCALE_MAX**2:.3g} (eq. 4.2-4): reduce it or the "
+                        "gimbal gain K, or raise omega_min")
+
+
 def check_physical(model: BoosterModel) -> None:
     """Refuse a load at or above what the structure carries, before any solver runs: CaseError on
     ``thrust.F0`` when the steady beam-action system diverges or flutters (Beal 1965; memo
@@ -585,14 +611,8 @@ def check_physical(model: BoosterModel) -> None:
     model : BoosterModel
         The derived model.
     """
-    lo = float(np.min(model.Omega))
-    a_max = 4.0 * model.omega_psi**2 / lo**2  # eq. (4.2-4)
-    if not math.sqrt(a_max * (1.0 + model.gamma)) <= MATHIEU_SCALE_MAX:
-        raise CaseError("thrust.F0", model.F0,
-                        f"gives Mathieu a = 4 omega_psi^2/Omega^2 = {a_max:.3g} at the lowest "
-                        f"Omega {lo:.6g} rad/s (omega_psi = {model.omega_psi:.6g} rad/s), "
-                        f"beyond {MATHIEU_SCALE_MAX**2:.3g} (eq. 4.2-4): reduce it or the "
-                        "gimbal gain K, or raise omega_min")
+    check_pitch_range(F0=model.F0, omega_psi=model.omega_psi,
+                      omega_min=float(np.min(model.Omega)), gamma=model.gamma)
     system = beam_system(model)
     mu = np.linalg.eigvals(system.A0)  # squared steady frequencies / omega_1^2, eq. (4.1-11)
     big = float(np.max(np.abs(mu)))

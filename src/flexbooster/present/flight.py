@@ -10,10 +10,12 @@ from pathlib import Path
 from ..flight_results import EVENT_COLUMNS, MODE_COLUMNS, FlightResults
 from .io import write_csv_atomic
 
-__all__ = ["FLIGHT_FIGURES", "flight_lines", "flight_report_html", "write_flight_csvs",
-           "flight_figure_names", "event_text"]
+__all__ = ["FLIGHT_CSVS", "FLIGHT_FIGURES", "flight_lines", "flight_report_html",
+           "write_flight_csvs", "flight_figure_names", "event_text"]
 
 #: The flight's figure (file stem) and its caption in the report.
+#: The flight's tables in the output set.
+FLIGHT_CSVS = ("flight-modes.csv", "flight-events.csv")
 FLIGHT_FIGURES = {
     "flight-campbell": (
         "The flight's Campbell diagram: the frequencies of the tracked modes of every harmonic "
@@ -94,8 +96,8 @@ def write_flight_csvs(flight: FlightResults | None, folder: Path) -> list[Path]:
         return []
     modes = flight.mode_rows() or {c: [] for c in MODE_COLUMNS}
     events = flight.event_rows() or {c: [] for c in EVENT_COLUMNS}
-    return [write_csv_atomic(Path(folder) / "flight-modes.csv", modes),
-            write_csv_atomic(Path(folder) / "flight-events.csv", events)]
+    return [write_csv_atomic(Path(folder) / FLIGHT_CSVS[0], modes),
+            write_csv_atomic(Path(folder) / FLIGHT_CSVS[1], events)]
 
 
 def flight_figure_names(flight: FlightResults | None) -> tuple[str, ...]:

@@ -21,7 +21,8 @@ from typing import TYPE_CHECKING
 from ..errors import CaseError
 from ..results import Results
 from .figure_files import render_figure
-from .flight import flight_figure_names, write_flight_csvs
+from .flight import FLIGHT_CSVS, FLIGHT_FIGURES, flight_figure_names, write_flight_csvs
+from .forced import FORCED_CSV, FORCED_FIGURES
 from .io import (
     hold_signals,
     locked_folder,
@@ -50,12 +51,13 @@ MANIFEST = "manifest.json"
 STAGING_PREFIX = ".flexbooster-staging-"
 #: The data files a set may hold (each written only when its result exists).
 TABLE_NAMES = ("results.json", "shell-frequencies.csv", "unstable-frequencies.csv",
-               "resonance-bands.csv", "vehicle-modes.csv", "vehicle-regions.csv", "report.html")
+               "resonance-bands.csv", "vehicle-modes.csv", "vehicle-regions.csv", FORCED_CSV,
+               *FLIGHT_CSVS, "report.html")
 #: Every figure :func:`figure_names` may name (each saved as .svg and .png).
 FIGURE_STEMS = ("danger-map", "ince-strutt", "beam-modes", "shell-frequencies-cylinder1",
                 "shell-frequencies-cylinder2", "nodal-patterns", "pitch-band-chart",
                 "beam-action-chart", "campbell", "vehicle-regions", "vehicle-mode-shapes",
-                "vehicle-unrolled")
+                "vehicle-unrolled", *FORCED_FIGURES, *FLIGHT_FIGURES)
 #: Every name a set of :func:`write_outputs` may use in its folder.
 SET_NAMES = (TABLE_NAMES + tuple(f"{stem}.{ext}" for stem in FIGURE_STEMS
                                  for ext in ("svg", "png")) + (MANIFEST, ".flexbooster.lock"))
@@ -221,8 +223,6 @@ def _write_files(results: Results, folder: Path, figures: bool,
             written.append(write_csv_atomic(folder / "vehicle-regions.csv",
                                             vehicle_region_columns(results.vehicle_regions)))
         if results.forced_response is not None:
-            from .forced import FORCED_CSV
-
             written.append(write_csv_atomic(folder / FORCED_CSV,
                                             results.forced_response.csv_columns()))
         written += write_flight_csvs(results.flight, folder)  # [flight]
