@@ -539,3 +539,59 @@ def test_fuzz_reproducer_memo_vehicle_70_km_forward_cylinder():
     assert info.value.field == "booster.cylinder2.half_length"
     # the default vehicle is within the limit
     assert max(auto_element_counts(vehicle_from_case(flexbooster.default_case()))) <= MAX_ELEMENTS
+
+
+# The free-free [vehicle] with heavy damping (issue 36): k = 1 keeps its undamped rigid pitch
+# (gimbal gain K > 0), so the damping certifies nothing and the harmonic is searched, with
+# hundreds of monodromy steps per period at the bottom of the Omega range.  Two of the 60
+# cases of scripts/free_free_damped_cases.py (fixed seed): index 1, the worst (past 290 s on
+# the shared machine before the k = 1 search was estimated), and index 47, a moderate one.
+def _free_free_script():
+    import importlib.util
+
+    path = Path(SRC).parent / "scripts" / "free_free_damped_cases.py"
+    spec = importlib.util.spec_from_file_location("free_free_damped_cases", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_fuzz_reproducer_free_free_heavy_damping_is_refused_up_front():
+    """Found by the fuzz (issue 36, 5 of 60 such cases past 60 s against estimates under 1 s):
+    the worst free-free case of the generator (damping 0.3, 2 modes, K = 2, omega_min 0.27
+    rad/s).  Expected: the up-front estimate holds the k = 1 search (its candidates and steps
+    per period counted by floquet.search_work, as the monodromy kernel chooses them), here
+    far beyond 60 s, so a 60 s budget refuses it in one line naming that part, before any
+    solver runs.  Source: the cost model of docs/theory/robustness.md."""
+    data = _free_free_script().free_free_cases(max_seconds=60.0)[1]
+    assert data["vehicle"]["damping_ratio"] == 0.3 and data["thrust"]["K"] == 2.0
+    case = flexbooster.load_case(data)
+    est = cost.estimate_vehicle_cost(case, figures=False)
+    assert est.parts[cost.BENDING_SEARCH_PART] > 60.0
+    with pytest.raises(CaseError) as info:
+        analyze(case, figures=False, vehicle=True)
+    msg = str(info.value)
+    assert info.value.field == "max_seconds" and "\n" not in msg
+    assert cost.BENDING_SEARCH_PART in msg
+
+
+@pytest.mark.slow
+def test_fuzz_reproducer_free_free_heavy_damping_steps_within_the_estimate():
+    """The moderate case of the same generator (index 47: damping 0.3, 2 modes, omega_min 0.58
+    rad/s): the monodromy steps the k = 1 search integrates (a counter on the step counts the
+    search asks of the kernel: work, not wall time) are at most 1.5x the up-front estimate's
+    steps (cost.bending_search_steps; issue 36 acceptance: no run over 1.5x its estimate),
+    and the estimate is at most 4x the count (measured 0.85: 162,547 against 192,140).
+    ~10 s."""
+    from flexbooster.dynamics import bending_regions
+
+    script = _free_free_script()
+    case = flexbooster.load_case(script.free_free_cases()[47])
+    t = case.thrust
+    estimated = cost.bending_search_steps(script.k1_work(case))[0]
+    with script.StepCounter() as counter:
+        bending_regions(vehicle_from_case(case), F0=case.F0, gamma=t.gamma,
+                        omega_min=t.omega_min, omega_max=t.omega_max, gimbal_gain=t.K,
+                        n_modes=3, damping_ratio=case.vehicle.damping_ratio)
+    assert 0 < counter.steps <= 1.5 * estimated <= 6.0 * counter.steps, (counter.steps,
+                                                                          estimated)
