@@ -432,11 +432,17 @@ BENDING_SEARCH_PART = "vehicle k = 1 search"
 # certifies nothing and the harmonic is searched.  Monodromy evaluations per candidate,
 # measured by a step counter on 10 free-free cases (damping 0.3 / 0.99, 2 modes, Omega
 # 0.2-6 rad/s; scripts/free_free_damped_cases.py): undamped seeds 10-31 x the steps at the
-# candidate centres, damped search 16-363 x (marches to the ends of the widened range, 8 or 64
-# check points per round); CPU per integration step of one point: 3.2e-5..5.7e-5 s at n = 2
-# (the dense Lawson kernel: a Python loop of 4 (2n x 2n) products per step), n^3 beyond n = 8
-_K1_EVALS_UNDAMPED, _K1_EVALS_DAMPED = 30.0, 250.0
+# candidate centres, damped search 16-464 x (marches to the ends of the widened range, 8 or 64
+# check points per round; the worst case, index 1, past 464 x when stopped at 155 s CPU), so
+# 500 x: over by up to 30x where the marches stay short; CPU per integration step of one
+# point: 3.2e-5..5.7e-5 s at n = 2 (the dense Lawson kernel: a Python loop of 4 (2n x 2n)
+# products per step), n^3 assumed beyond n = 8 (not measured)
+_K1_EVALS_UNDAMPED, _K1_EVALS_DAMPED = 30.0, 500.0
 _C_K1_STEP, _K1_STEP_N = 5e-5, 8.0
+# above this many modes the k = 1 search is estimated by search_seconds (n^4 law: 96 s at 40
+# modes, so such a search is the budget's concern anyway) after the certificate, without
+# enumerating its candidates (247 modes over a wide range: more than 20 GB of candidates)
+_K1_COUNTED_MODES = 40
 
 
 def bending_search_steps(work: Any) -> tuple[float, float]:
@@ -462,7 +468,7 @@ def bending_search_steps(work: Any) -> tuple[float, float]:
     return float(steps), float(steps * per_step)
 
 
-def _bending_search_seconds(case: Any, vehicle: Any, n_modes: int) -> float:
+def _bending_search_seconds(case: Any, vehicle: Any, n_modes: int, zeta: float) -> float:
     """The k = 1 search of a damped case (:func:`bending_search_steps`); 0 where the search
     stops at a toolkit limit (a SearchGap) or the harmonic cannot be built (the stage says
     why)."""
@@ -474,9 +480,13 @@ def _bending_search_seconds(case: Any, vehicle: Any, n_modes: int) -> float:
     t = case.thrust
     try:
         h = bending_harmonic(vehicle, F0=case.F0, n_modes=max(n_modes, 3),
-                             damping_ratio=case.vehicle.damping_ratio, gimbal_gain=t.K)
-        work = floquet.search_work(*h.periodic(t.gamma), t.omega_min, t.omega_max,
-                                   **floquet_options())
+                             damping_ratio=zeta, gimbal_gain=t.K)
+        system = h.periodic(t.gamma)
+        if system[0].shape[0] > _K1_COUNTED_MODES:  # the n^4 law (its candidates: memory)
+            if floquet.stability_certificate(*system).certified:
+                return 0.0
+            return search_seconds(system[0].shape[0], t.omega_min, t.omega_max, damped=True)
+        work = floquet.search_work(*system, t.omega_min, t.omega_max, **floquet_options())
     except (*LIMIT_ERRORS, BucklingError, ValueError):
         return 0.0
     return bending_search_steps(work)[1]
@@ -567,7 +577,7 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
                                       "vehicle.k_max", "thrust.omega_min", "thrust.omega_max",
                                       "vehicle.segments")
         if damped and certified and t.gamma > 0.0:  # k = 1 keeps its undamped rigid pitch
-            k1 = _bending_search_seconds(case, vehicle, n_modes) * (
+            k1 = _bending_search_seconds(case, vehicle, n_modes, table.damping_ratio) * (
                 _BOUNDARY_SEARCH_FACTOR if figures else 1.0)
             if k1 > 0.0:
                 parts[BENDING_SEARCH_PART] = k1
