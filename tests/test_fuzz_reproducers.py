@@ -22,6 +22,7 @@ from flexbooster.errors import CaseError
 from flexbooster.memo import beam_action as ba
 from flexbooster.memo import pitch
 from flexbooster.model import model_from_case, vehicle_from_case
+from flexbooster.present.io import dumps_finite
 
 nan, inf = math.nan, math.inf
 SRC = str(Path(flexbooster.__file__).parents[1])
@@ -595,3 +596,27 @@ def test_fuzz_reproducer_free_free_heavy_damping_steps_within_the_estimate():
                         n_modes=3, damping_ratio=case.vehicle.damping_ratio)
     assert 0 < counter.steps <= 1.5 * estimated <= 6.0 * counter.steps, (counter.steps,
                                                                           estimated)
+
+
+def test_fuzz_reproducer_lone_candidate_window_is_finite():
+    """Found by the fuzz (robustness-2 run, 2 of 300 valid cases): the memo vehicle of a
+    booster with a 21.9 m forward cylinder, K = 0.4, pitch damping 0.5, its regions searched:
+    "ValueError: Omega = array([inf])" (exit 1) -- a lone resonance candidate of the seed
+    search has no other centre in range (gap = inf), so its window's upper end Oc + 0.45 gap
+    was inf.  Expected: the window is finite ((0.5, 1.9) x the centre) and the analysis gives
+    finite results (the robustness rule: no internal error, no NaN/inf)."""
+    data = {"name": "fuzz", "max_seconds": 20.0, "booster": {
+        "cylinder1": {"radius": 2.453610599763134, "half_length": 2.530870944293749},
+        "cylinder2": {"radius": 21.876278821636507, "half_length": 1.0},
+        "thickness": 0.0002453610599763134, "E": 1e11, "nu": 0.26473988425201456,
+        "rho": 1461.549637214256},
+        "thrust": {"gamma": 0.4697340039814173, "K": 0.40326999991523566,
+                   "omega_min": 1.1453563610377246, "omega_max": 2.262907991271374,
+                   "n_omega": 5, "F0": 641.700089683178},
+        "truncation": {"M1": 1, "N1": 1, "M2": 1, "N2": 1, "N": 1, "S": 1, "R": 1},
+        "damping": {"beam_modal_ratio": 0.2, "pitch_ratio": 0.5}}
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        res = analyze(flexbooster.load_case(data), figures=False, vehicle=True)
+    json.loads(dumps_finite(res.to_dict()))
+    assert res.vehicle_regions is not None
