@@ -406,6 +406,7 @@ API_CALLS = [
      lambda: cost.tongue_search_seconds(_system(), nan, omega_min=1., omega_max=10.)),
     ("tongue_search_seconds-range", "omega_min",
      lambda: cost.tongue_search_seconds(_system(), 0.1, omega_min=10., omega_max=1.)),
+    ("bending_search_steps-type", "work", lambda: cost.bending_search_steps({"n": 2})),
     ("beam_action_analysis-n_hill-0", "n_hill",
      lambda: ba.beam_action_analysis(_model(), n_hill=0)),
     ("pitch_tongue_omega_bound-tongue-0", "tongue",

@@ -122,7 +122,8 @@ def vehicle_tables(draw, r1: float, r2: float, h: float) -> dict:
     """A ``[vehicle]`` table in the documented ranges: k_max 0..200, n_modes 1..500 (mostly
     small), damping_ratio 0 <= zeta < 1, theory, ends; either the memo vehicle's settings
     (junction; continuous only with R1 = R2) or 1..3 segments from the aft edge forward
-    (cylinders and cones, continuous radii or rigid bulkheads, 0 < h < R)."""
+    (cylinders and cones, continuous radii or rigid bulkheads, 0 < h < R) with their optional
+    loads and stiffeners, rigid masses and a tank."""
     table = {"k_max": draw(st.sampled_from([0, 1, 2, 3, 4, 6, 10, 20, 50, 200])),
              "n_modes": draw(st.one_of(st.integers(1, 12), st.integers(1, 40),
                                        st.integers(1, 500))),
@@ -153,10 +154,46 @@ def vehicle_tables(draw, r1: float, r2: float, h: float) -> dict:
         seg["thickness"] = min(start, end) * min(h / min(r1, r2), 0.5)
         if i:
             seg["junction"] = joint
+        seg.update(draw(segment_loads()))
         segments.append(seg)
         radius = end
     table["segments"] = segments
+    stations = [0.0]
+    for seg in segments:
+        stations.append(stations[-1] + seg["length"])
+    if draw(st.integers(0, 2)) == 0:  # [[vehicle.masses]]: rigid masses on the wall
+        table["masses"] = [{
+            "station": round(stations[-1] * draw(st.floats(0.0, 1.0)), 6),
+            "mass": draw(_log_uniform(1.0, 1e5)),
+            "transverse_inertia": draw(st.sampled_from([0.0, 10.0, 1e4])),
+            "offset": draw(st.sampled_from([0.0, 0.5, -1.0]))}
+            for _ in range(draw(st.integers(1, 2)))]
+    full = [i for i, seg in enumerate(segments) if seg["length"] > 0.0]
+    if full and draw(st.integers(0, 2)) == 0:  # [[vehicle.tanks]]: liquid in one segment
+        i = draw(st.sampled_from(full))
+        table["tanks"] = [{"aft": stations[i], "fwd": stations[i + 1],
+                           "fill": draw(st.floats(0.0, 1.0)),
+                           "density": draw(_log_uniform(50.0, 1500.0))}]
     return table
+
+
+@st.composite
+def segment_loads(draw) -> dict:
+    """Optional fields of a segment (flexbooster/vehicle_case.py): nonstructural_mass (kg/m^2,
+    >= 0), pressure (Pa, any sign), rings and stringers (spacing m, area m^2, inertia m^4,
+    eccentricity m)."""
+    out = {}
+    if draw(st.integers(0, 2)) == 0:
+        out["nonstructural_mass"] = draw(_log_uniform(0.1, 200.0))
+    if draw(st.integers(0, 2)) == 0:
+        out["pressure"] = draw(st.sampled_from([-2e4, 0.0, 5e4, 3e5]))
+    for name, spacing in (("rings", (0.2, 5.0)), ("stringers", (0.05, 1.0))):
+        if draw(st.integers(0, 3)) == 0:
+            out[name] = {"spacing": draw(_log_uniform(*spacing)),
+                         "area": draw(_log_uniform(1e-5, 1e-2)),
+                         "inertia": draw(st.sampled_from([0.0, 1e-8, 1e-6])),
+                         "eccentricity": draw(st.sampled_from([0.0, 0.02, -0.02]))}
+    return out
 
 
 class _Hung(Exception):

@@ -22,6 +22,7 @@ from flexbooster.errors import CaseError
 from flexbooster.memo import beam_action as ba
 from flexbooster.memo import pitch
 from flexbooster.model import model_from_case, vehicle_from_case
+from flexbooster.present.io import dumps_finite
 
 nan, inf = math.nan, math.inf
 SRC = str(Path(flexbooster.__file__).parents[1])
@@ -570,3 +571,81 @@ def test_fuzz_reproducer_segments_pitch_beyond_the_mathieu_range():
         analyze(case, figures=False)
     assert info.value.field == "thrust.F0" and "\n" not in str(info.value)
     assert "a = 4 omega_psi^2/Omega^2 = 2.39e+06" in str(info.value)
+# The free-free [vehicle] with heavy damping (issue 36): k = 1 keeps its undamped rigid pitch
+# (gimbal gain K > 0), so the damping certifies nothing and the harmonic is searched, with
+# hundreds of monodromy steps per period at the bottom of the Omega range.  Two of the 60
+# cases of scripts/free_free_damped_cases.py (fixed seed): index 1, the worst (past 290 s on
+# the shared machine before the k = 1 search was estimated), and index 47, a moderate one.
+def _free_free_script():
+    import importlib.util
+
+    path = Path(SRC).parent / "scripts" / "free_free_damped_cases.py"
+    spec = importlib.util.spec_from_file_location("free_free_damped_cases", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_fuzz_reproducer_free_free_heavy_damping_is_refused_up_front():
+    """Found by the fuzz (issue 36, 5 of 60 such cases past 60 s against estimates under 1 s):
+    the worst free-free case of the generator (damping 0.3, 2 modes, K = 2, omega_min 0.27
+    rad/s).  Expected: the up-front estimate holds the k = 1 search (its candidates and steps
+    per period counted by floquet.search_work, as the monodromy kernel chooses them), here
+    far beyond 60 s, so a 60 s budget refuses it in one line naming that part, before any
+    solver runs.  Source: the cost model of docs/theory/robustness.md."""
+    data = _free_free_script().free_free_cases(max_seconds=60.0)[1]
+    assert data["vehicle"]["damping_ratio"] == 0.3 and data["thrust"]["K"] == 2.0
+    case = flexbooster.load_case(data)
+    est = cost.estimate_vehicle_cost(case, figures=False)
+    assert est.parts[cost.BENDING_SEARCH_PART] > 60.0
+    with pytest.raises(CaseError) as info:
+        analyze(case, figures=False, vehicle=True)
+    msg = str(info.value)
+    assert info.value.field == "max_seconds" and "\n" not in msg
+    assert cost.BENDING_SEARCH_PART in msg
+
+
+@pytest.mark.slow
+def test_fuzz_reproducer_free_free_heavy_damping_steps_within_the_estimate():
+    """The moderate case of the same generator (index 47: damping 0.3, 2 modes, omega_min 0.58
+    rad/s): the monodromy steps the k = 1 search integrates (a counter on the step counts the
+    search asks of the kernel: work, not wall time) are at most 1.5x the up-front estimate's
+    steps (cost.bending_search_steps; issue 36 acceptance: no run over 1.5x its estimate),
+    and the estimate is at most 4x the count (measured 2.3: 373,390 against 162,547).
+    ~10 s."""
+    from flexbooster.dynamics import bending_regions
+
+    script = _free_free_script()
+    case = flexbooster.load_case(script.free_free_cases()[47])
+    t = case.thrust
+    estimated = cost.bending_search_steps(script.k1_work(case))[0]
+    with script.StepCounter() as counter:
+        bending_regions(vehicle_from_case(case), F0=case.F0, gamma=t.gamma,
+                        omega_min=t.omega_min, omega_max=t.omega_max, gimbal_gain=t.K,
+                        n_modes=3, damping_ratio=case.vehicle.damping_ratio)
+    assert 0 < counter.steps <= 1.5 * estimated <= 6.0 * counter.steps, (counter.steps,
+                                                                          estimated)
+
+
+def test_fuzz_reproducer_lone_candidate_window_is_finite():
+    """Found by the fuzz (robustness-2 run, 2 of 300 valid cases): the memo vehicle of a
+    booster with a 21.9 m forward cylinder, K = 0.4, pitch damping 0.5, its regions searched:
+    "ValueError: Omega = array([inf])" (exit 1) -- a lone resonance candidate of the seed
+    search has no other centre in range (gap = inf), so its window's upper end Oc + 0.45 gap
+    was inf.  Expected: the window is finite ((0.5, 1.9) x the centre) and the analysis gives
+    finite results (the robustness rule: no internal error, no NaN/inf)."""
+    data = {"name": "fuzz", "max_seconds": 20.0, "booster": {
+        "cylinder1": {"radius": 2.453610599763134, "half_length": 2.530870944293749},
+        "cylinder2": {"radius": 21.876278821636507, "half_length": 1.0},
+        "thickness": 0.0002453610599763134, "E": 1e11, "nu": 0.26473988425201456,
+        "rho": 1461.549637214256},
+        "thrust": {"gamma": 0.4697340039814173, "K": 0.40326999991523566,
+                   "omega_min": 1.1453563610377246, "omega_max": 2.262907991271374,
+                   "n_omega": 5, "F0": 641.700089683178},
+        "truncation": {"M1": 1, "N1": 1, "M2": 1, "N2": 1, "N": 1, "S": 1, "R": 1},
+        "damping": {"beam_modal_ratio": 0.2, "pitch_ratio": 0.5}}
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", RuntimeWarning)
+        res = analyze(flexbooster.load_case(data), figures=False, vehicle=True)
+    json.loads(dumps_finite(res.to_dict()))
+    assert res.vehicle_regions is not None

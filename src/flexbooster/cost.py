@@ -55,6 +55,8 @@ __all__ = [
     "estimate_vehicle_cost",
     "region_modes",
     "search_seconds",
+    "bending_search_steps",
+    "BENDING_SEARCH_PART",
     "TONGUE_PART",
     "tongue_search_seconds",
 ]
@@ -435,6 +437,73 @@ def search_seconds(n_modes: int, omega_min: float, omega_max: float, *, damped: 
                  * (_BOUNDARY_SEARCH_FACTOR if boundaries else 1.0))
 
 
+#: Name of the part of :func:`estimate_vehicle_cost` for the search of the damped k = 1
+#: harmonic (:func:`bending_search_steps`).
+BENDING_SEARCH_PART = "vehicle k = 1 search"
+# The damped k = 1 search keeps the undamped rigid pitch (gimbal gain K > 0), so the damping
+# certifies nothing and the harmonic is searched.  Monodromy evaluations per candidate,
+# measured by a step counter on 10 free-free cases (damping 0.3 / 0.99, 2 modes, Omega
+# 0.2-6 rad/s; scripts/free_free_damped_cases.py): undamped seeds 10-31 x the steps at the
+# candidate centres, damped search 16-464 x (marches to the ends of the widened range, 8 or 64
+# check points per round; the worst case, index 1, past 464 x when stopped at 155 s CPU), so
+# 500 x: over by up to 30x where the marches stay short; CPU per integration step of one
+# point: 3.2e-5..5.7e-5 s at n = 2 (the dense Lawson kernel: a Python loop of 4 (2n x 2n)
+# products per step), n^3 assumed beyond n = 8 (not measured)
+_K1_EVALS_UNDAMPED, _K1_EVALS_DAMPED = 30.0, 500.0
+_C_K1_STEP, _K1_STEP_N = 5e-5, 8.0
+# above this many modes the k = 1 search is estimated by search_seconds (n^4 law: 96 s at 40
+# modes, so such a search is the budget's concern anyway) after the certificate, without
+# enumerating its candidates (247 modes over a wide range: more than 20 GB of candidates)
+_K1_COUNTED_MODES = 40
+
+
+def bending_search_steps(work: Any) -> tuple[float, float]:
+    """Monodromy integration steps (summed over the evaluated points) and CPU time (s, one core)
+    of the k = 1 region search whose work the toolkit counts up front (steps per period chosen
+    exactly as the monodromy kernel does, at each candidate's centre).
+
+    Parameters
+    ----------
+    work : flexbooster.floquet.SearchWork
+        :func:`flexbooster.floquet.search_work` of the harmonic (0 steps when steady or
+        certified stable: no search).
+    """
+    from .floquet import SearchWork
+
+    if not isinstance(work, SearchWork):
+        raise ValueError(f"work = {type(work).__name__}: must be a SearchWork")
+    if work.steady or work.certified:
+        return 0.0, 0.0
+    steps = (_K1_EVALS_UNDAMPED * work.undamped_steps
+             + _K1_EVALS_DAMPED * work.damped_steps)  # eq. above: evaluations x steps
+    per_step = _C_K1_STEP * max(1.0, (work.n / _K1_STEP_N) ** 3)
+    return float(steps), float(steps * per_step)
+
+
+def _bending_search_seconds(case: Any, vehicle: Any, n_modes: int, zeta: float) -> float:
+    """The k = 1 search of a damped case (:func:`bending_search_steps`); 0 where the search
+    stops at a toolkit limit (a SearchGap) or the harmonic cannot be built (the stage says
+    why)."""
+    from . import floquet
+    from .dynamics import bending_harmonic
+    from .dynamics.harmonic import LIMIT_ERRORS, floquet_options
+    from .shell_of_revolution import BucklingError
+
+    t = case.thrust
+    try:
+        h = bending_harmonic(vehicle, F0=case.F0, n_modes=max(n_modes, 3),
+                             damping_ratio=zeta, gimbal_gain=t.K)
+        system = h.periodic(t.gamma)
+        if system[0].shape[0] > _K1_COUNTED_MODES:  # the n^4 law (its candidates: memory)
+            if floquet.stability_certificate(*system).certified:
+                return 0.0
+            return search_seconds(system[0].shape[0], t.omega_min, t.omega_max, damped=True)
+        work = floquet.search_work(*system, t.omega_min, t.omega_max, **floquet_options())
+    except (*LIMIT_ERRORS, BucklingError, ValueError):
+        return 0.0
+    return bending_search_steps(work)[1]
+
+
 def _dof_factor(vehicle) -> float:
     from .shell_of_revolution import mesh_vehicle
 
@@ -532,6 +601,13 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
         drivers["vehicle regions"] = ("vehicle.n_modes", "damping.modal_ratio",
                                       "vehicle.k_max", "thrust.omega_min", "thrust.omega_max",
                                       "vehicle.segments") + attached
+        if damped and certified and t.gamma > 0.0:  # k = 1 keeps its undamped rigid pitch
+            k1 = _bending_search_seconds(case, vehicle, n_modes, case.vehicle_damping_ratio) * (
+                _BOUNDARY_SEARCH_FACTOR if figures else 1.0)
+            if k1 > 0.0:
+                parts[BENDING_SEARCH_PART] = k1
+                drivers[BENDING_SEARCH_PART] = ("damping.modal_ratio", "thrust.omega_min",
+                                                "thrust.K", "vehicle.n_modes")
         if damped:  # the certificates: map, search, chart (none undamped: no certificate)
             calls = 2 + bool(figures)
             parts["vehicle certificates"] = n_k * calls * _C_CERTIFICATE * (

@@ -559,8 +559,10 @@ def _monodromy_search(system, w, cand, lo, hi, opt,
         sub = cand if idx is None else {key: v[idx] for key, v in cand.items()}
         return _indicator(system, w, sub, x, opt)
 
-    # window: no other candidate inside (F stays unimodal), at least the estimated width
-    delta = np.maximum(0.45 * cand["gap"], np.minimum(2.0 * cand["est"], 0.2 * Oc / cand["j"]))
+    # window: no other candidate inside (F stays unimodal), at least the estimated width; a
+    # lone candidate (gap = inf: no other centre in [lo / 2, 2 hi]) within (0.5, 1.9) Oc
+    delta = np.maximum(0.45 * np.minimum(cand["gap"], 2.0 * Oc),
+                       np.minimum(2.0 * cand["est"], 0.2 * Oc / cand["j"]))
     a = np.maximum(Oc - delta, 0.5 * Oc)
     b = Oc + delta
     xs, fs = brent_max(F, a, b, Oc, np.maximum(10.0 * xtol, 1e-15 * Oc), stop_above=_F_FLOOR)
