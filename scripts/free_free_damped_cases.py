@@ -47,13 +47,15 @@ def free_free_cases(n: int = 60, seed: int = 36, max_seconds: float = 300.0) -> 
         segs = [{"kind": "cylinder", "radius": r, "length": lu(2, 60),
                  "thickness": r * lu(1e-3, 2e-2)} for _ in range(rng.randint(1, 3))]
         om = lu(0.1, 6.0)
-        out.append({"name": "free-free", "booster": booster, "max_seconds": max_seconds,
+        out.append({"name": "free-free", "max_seconds": max_seconds,
                     "thrust": {"F0": lu(1e4, 1e6), "gamma": rng.uniform(0.05, 0.5),
                                "K": rng.choice([0.0, 0.5, 2.0]), "omega_min": om,
                                "omega_max": om * lu(1.5, 100)},
                     "vehicle": {"k_max": rng.choice([1, 2, 3]), "n_modes": rng.choice([1, 2]),
                                 "damping_ratio": rng.choice([0.3, 0.99]), "aft_end": "free",
-                                "fwd_end": "free", "segments": segs}})
+                                "fwd_end": "free", "segments": segs,
+                                # one vehicle per case: the default booster's material
+                                **{key: booster[key] for key in ("E", "nu", "rho")}}})
     return out
 
 

@@ -145,5 +145,6 @@ def test_vehicle_estimate_grows_with_the_tanks_and_the_masses():
         assert "vehicle.tanks" in est[1].drivers[part]
         assert "vehicle.tanks" not in est[0].drivers[part]
     with_masses = cost.estimate_vehicle_cost(_tank_case(1, 3))
-    assert with_masses.seconds > est[1].seconds
+    # the masses' matrices (the k = 1 search part, if any, depends on the harmonic's spectrum)
+    assert with_masses.parts["vehicle modes"] > est[1].parts["vehicle modes"]
     assert "vehicle.masses" in with_masses.drivers["vehicle modes"]
