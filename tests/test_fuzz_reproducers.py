@@ -105,7 +105,7 @@ _FUZZ_TONGUE = {
 @pytest.mark.slow
 @pytest.mark.skipif(os.environ.get("FLEXBOOSTER_FUZZ") != "long",
                     reason="~15-20 s: FLEXBOOSTER_FUZZ=long pytest "
-                           "tests/test_robustness.py runs it")
+                           "tests/test_fuzz_reproducers.py runs it")
 def test_fuzz_reproducer_pitch_tongue_edges():
     """Passes since bands2's fix of the tongue search (merged into main): every band finite
     and inside the searched range."""
