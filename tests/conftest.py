@@ -90,3 +90,37 @@ def dump_toml(data: dict, prefix: str = "") -> str:
             name = f"{prefix}.{key}" if prefix else key
             lines += ["", f"[{name}]", dump_toml(value, name)]
     return "\n".join(lines)
+
+
+def run_cli(argv) -> int:
+    """Run the command in-process; return the exit code."""
+    from flexbooster.cli import main
+
+    with pytest.raises(SystemExit) as info:
+        main(argv)
+    return info.value.code
+
+
+@pytest.fixture
+def alarm():
+    """A call that hangs fails instead of blocking the suite: a hang guard (10 min, far above
+    any machine's load), not a measurement; the bounds themselves are the deterministic caps
+    the tests check."""
+    def handler(signum, frame):
+        raise TimeoutError("the call did not return within 600 s")
+
+    previous = signal.signal(signal.SIGALRM, handler)
+    signal.alarm(600)
+    yield
+    signal.alarm(0)
+    signal.signal(signal.SIGALRM, previous)
+
+
+def case_with(case_dict: dict, **fields):
+    """The validated case of ``case_dict`` with dotted fields set (``thrust__F0=1e6``)."""
+    import flexbooster
+    from test_case import _set
+
+    for dotted, value in fields.items():
+        _set(case_dict, dotted.replace("__", "."), value)
+    return flexbooster.load_case(case_dict)

@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import functools
 import math
-import signal
 import warnings
 from pathlib import Path
 
@@ -18,7 +17,6 @@ import pytest
 import flexbooster
 from flexbooster import analysis, checks, cost, units
 from flexbooster.analysis import analyze
-from flexbooster.cli import main
 from flexbooster.dynamics import axial as vaxial
 from flexbooster.dynamics import bending as vbending
 from flexbooster.dynamics import regions as vregions
@@ -46,28 +44,6 @@ from reference import donnell
 
 nan, inf = math.nan, math.inf
 SRC = str(Path(flexbooster.__file__).parents[1])
-
-
-def run_cli(argv):
-    """Run the command in-process; return the exit code."""
-    with pytest.raises(SystemExit) as info:
-        main(argv)
-    return info.value.code
-
-
-@pytest.fixture
-def alarm():
-    """A call that hangs fails instead of blocking the suite: a hang guard (10 min, far above
-    any machine's load), not a measurement; the bounds themselves are the deterministic caps
-    tested below."""
-    def handler(signum, frame):
-        raise TimeoutError("the call did not return within 600 s")
-
-    previous = signal.signal(signal.SIGALRM, handler)
-    signal.alarm(600)
-    yield
-    signal.alarm(0)
-    signal.signal(signal.SIGALRM, previous)
 
 
 _G = dict(R1=5.0, L1=21.0, R2=3.3, L2=9.0, h=0.02, rho=2768.0)

@@ -9,16 +9,8 @@ import sys
 
 import pytest
 
-from conftest import dump_toml
-from flexbooster.cli import main
+from conftest import dump_toml, run_cli
 from test_case import BAD_INPUTS, _set
-
-
-def run_cli(argv):
-    """Run the command in-process; return (exit code, stdout, stderr)."""
-    with pytest.raises(SystemExit) as info:
-        main(argv)
-    return info.value.code
 
 
 @pytest.mark.slow

@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import json
 import math
-import signal
 import warnings
 from pathlib import Path
 
@@ -16,59 +15,29 @@ import numpy as np
 import pytest
 
 import flexbooster
-from conftest import dump_toml
+from conftest import case_with, dump_toml, run_cli
 from flexbooster import cost
 from flexbooster.analysis import analyze
-from flexbooster.cli import main
 from flexbooster.errors import CaseError
 from flexbooster.floquet import mathieu
 from flexbooster.memo import beam_action as ba
 from flexbooster.model import model_from_case
-from test_case import _set
 
 nan, inf = math.nan, math.inf
 SRC = str(Path(flexbooster.__file__).parents[1])
-
-
-def run_cli(argv):
-    """Run the command in-process; return the exit code."""
-    with pytest.raises(SystemExit) as info:
-        main(argv)
-    return info.value.code
-
-
-@pytest.fixture
-def alarm():
-    """A call that hangs fails instead of blocking the suite: a hang guard (10 min, far above
-    any machine's load), not a measurement; the bounds themselves are the deterministic caps
-    tested below."""
-    def handler(signum, frame):
-        raise TimeoutError("the call did not return within 600 s")
-
-    previous = signal.signal(signal.SIGALRM, handler)
-    signal.alarm(600)
-    yield
-    signal.alarm(0)
-    signal.signal(signal.SIGALRM, previous)
-
-
-def _case(case_dict, **fields):
-    for dotted, value in fields.items():
-        _set(case_dict, dotted.replace("__", "."), value)
-    return flexbooster.load_case(case_dict)
 
 
 def test_estimate_grows_with_the_fields_that_drive_it(case_dict):
     """Invariant: each kernel's estimate grows with its driving field (monodromy ~1/Omega,
     Hill ~(N (2 S + 1))^3), and the refusal names those fields once each."""
     def mono(omega_min):
-        case = _case(case_dict, thrust__n_omega=2, thrust__omega_min=omega_min)
+        case = case_with(case_dict, thrust__n_omega=2, thrust__omega_min=omega_min)
         return cost.estimate_cost(model_from_case(case)).parts["beam-action monodromy"]
 
     assert mono(5.0) > 3.0 * mono(20.0)  # ~1/Omega above the cap
     assert mono(0.05) == mono(0.5)  # bounded below it (MONODROMY_MAX_STEPS)
-    base = cost.estimate_cost(model_from_case(_case(case_dict)))
-    big = cost.estimate_cost(model_from_case(_case(case_dict, truncation__S=40)))
+    base = cost.estimate_cost(model_from_case(case_with(case_dict)))
+    big = cost.estimate_cost(model_from_case(case_with(case_dict, truncation__S=40)))
     ratio = big.parts["Hill determinant"] / base.parts["Hill determinant"]
     assert ratio == pytest.approx((81 / 21) ** 3, rel=1e-12)  # the cost model's own law
     assert set(base.to_dict()) >= {"seconds", "parts", "drivers", "capped_points"}
@@ -79,7 +48,7 @@ def _tongue_case(case_dict, **fields):
     rigid-pitch tongues r = 1..4 (tips 2.39 / r rad/s) are searched by harmonic balance."""
     base = dict(thrust__omega_min=0.5, thrust__omega_max=20.0, thrust__n_omega=4,
                 thrust__gamma=0.5, truncation__N=4)
-    return model_from_case(_case(case_dict, **{**base, **fields}))
+    return model_from_case(case_with(case_dict, **{**base, **fields}))
 
 
 def test_tongue_estimate_grows_with_the_fields_that_drive_it(case_dict):
@@ -137,7 +106,7 @@ def test_budget_option_refuses_and_case_field_is_used(case_dict, tmp_path, capsy
     assert run_cli(["run", "-q", "--max-seconds", "0.5", "-o", str(tmp_path)]) == 2
     assert "estimated run time" in capsys.readouterr().err
     with pytest.raises(CaseError, match="max_seconds"):
-        analyze(_case(case_dict, max_seconds=0.5))
+        analyze(case_with(case_dict, max_seconds=0.5))
 
 
 def test_monodromy_cap_error_against_four_times_the_steps():
@@ -157,7 +126,7 @@ def test_monodromy_cap_error_against_four_times_the_steps():
 def test_low_omega_runs_bounded_with_a_warning(case_dict, alarm):
     """A reported omega_min = 0.05 rad/s case (39 s in the monodromy alone): capped steps,
     finite results and the warning that names the cap."""
-    case = _case(case_dict, thrust__omega_min=0.05, thrust__n_omega=3, thrust__omega_max=50.0,
+    case = case_with(case_dict, thrust__omega_min=0.05, thrust__n_omega=3, thrust__omega_max=50.0,
                  truncation__N=2, truncation__S=2, truncation__R=2)
     with warnings.catch_warnings():
         warnings.simplefilter("error", RuntimeWarning)

@@ -7,7 +7,6 @@ import copy
 import json
 import math
 import os
-import signal
 import warnings
 from pathlib import Path
 
@@ -17,7 +16,6 @@ import pytest
 import flexbooster
 from flexbooster import analysis, cost
 from flexbooster.analysis import analyze
-from flexbooster.cli import main
 from flexbooster.errors import CaseError
 from flexbooster.memo import beam_action as ba
 from flexbooster.memo import pitch
@@ -26,28 +24,6 @@ from flexbooster.present.io import dumps_finite
 
 nan, inf = math.nan, math.inf
 SRC = str(Path(flexbooster.__file__).parents[1])
-
-
-def run_cli(argv):
-    """Run the command in-process; return the exit code."""
-    with pytest.raises(SystemExit) as info:
-        main(argv)
-    return info.value.code
-
-
-@pytest.fixture
-def alarm():
-    """A call that hangs fails instead of blocking the suite: a hang guard (10 min, far above
-    any machine's load), not a measurement; the bounds themselves are the deterministic caps
-    tested below."""
-    def handler(signum, frame):
-        raise TimeoutError("the call did not return within 600 s")
-
-    previous = signal.signal(signal.SIGALRM, handler)
-    signal.alarm(600)
-    yield
-    signal.alarm(0)
-    signal.signal(signal.SIGALRM, previous)
 
 
 #: Found by `make fuzz` (300 cases): the damped band search of flexbooster.floquet stepped to

@@ -8,17 +8,15 @@ from __future__ import annotations
 
 import math
 import os
-import signal
 from pathlib import Path
 
 import pytest
 
 import flexbooster
-from conftest import dump_toml
+from conftest import case_with, dump_toml, run_cli
 from flexbooster import cost
 from flexbooster.analysis import analyze
 from flexbooster.case import default_case_text
-from flexbooster.cli import main
 from flexbooster.errors import CaseError
 from flexbooster.model import model_from_case
 from test_case import BAD_INPUTS, _set
@@ -27,33 +25,6 @@ nan, inf = math.nan, math.inf
 SRC = str(Path(flexbooster.__file__).parents[1])
 
 
-def run_cli(argv):
-    """Run the command in-process; return the exit code."""
-    with pytest.raises(SystemExit) as info:
-        main(argv)
-    return info.value.code
-
-
-@pytest.fixture
-def alarm():
-    """A call that hangs fails instead of blocking the suite: a hang guard (10 min, far above
-    any machine's load), not a measurement; the bounds themselves are the deterministic caps
-    tested below."""
-    def handler(signum, frame):
-        raise TimeoutError("the call did not return within 600 s")
-
-    previous = signal.signal(signal.SIGALRM, handler)
-    signal.alarm(600)
-    yield
-    signal.alarm(0)
-    signal.signal(signal.SIGALRM, previous)
-
-
-def _case(case_dict, **fields):
-    for dotted, value in fields.items():
-        _set(case_dict, dotted.replace("__", "."), value)
-    return flexbooster.load_case(case_dict)
-
 # --------------------------------------------------------------------------------------------
 @pytest.mark.parametrize(("F0", "word"), [(1e12, "flutter"), (1e10, "divergence")],
                          ids=["F0=1e12-flutter", "F0=1e10-divergence"])
@@ -61,16 +32,16 @@ def test_load_beyond_the_structure_is_a_case_error(case_dict, F0, word):
     """Source: the eigenvalues of the steady system Lambda + B (complex at 1e12 N, negative
     at 1e10 N for the default booster): a CaseError naming thrust.F0, not a LinAlgError."""
     with pytest.raises(CaseError) as info:
-        analyze(_case(case_dict, thrust__F0=F0), figures=False)
+        analyze(case_with(case_dict, thrust__F0=F0), figures=False)
     assert info.value.field == "thrust.F0" and word in str(info.value)
 
 
 def test_shell_buckling_is_a_named_warning(case_dict):
     """Source: 2 pi E h^2 / sqrt(3 (1 - nu^2)) (Timoshenko & Gere 11-17), exact formula."""
-    model = model_from_case(_case(case_dict))
+    model = model_from_case(case_with(case_dict))
     f_cr = 2 * math.pi * model.E * model.h**2 / math.sqrt(3 * (1 - model.nu**2))
     assert cost.physical_warnings(model) == []
-    above = model_from_case(_case(case_dict, thrust__F0=1.01 * f_cr))
+    above = model_from_case(case_with(case_dict, thrust__F0=1.01 * f_cr))
     assert [w.code for w in cost.physical_warnings(above)] == ["shell-buckling"]
 
 

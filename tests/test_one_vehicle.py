@@ -29,9 +29,9 @@ import numpy as np
 import pytest
 from rich.console import Console
 
+from conftest import run_cli
 from flexbooster.analysis import analyze, analyze_vehicle, analyze_vehicle_regions
 from flexbooster.case import default_case, default_case_text, load_case
-from flexbooster.cli import main
 from flexbooster.errors import CaseError
 from flexbooster.memo.pitch import pitch_analysis
 from flexbooster.model import MEMO_NOT_APPLICABLE, model_from_case, vehicle_from_case
@@ -101,11 +101,6 @@ def _close(a, b, rtol: float, where: str = "") -> None:
     else:
         assert a == b, where
 
-
-def run_cli(argv) -> int:
-    with pytest.raises(SystemExit) as info:
-        main(argv)
-    return info.value.code
 
 
 # --------------------------------------------------------------------------- the case

@@ -15,9 +15,8 @@ from pathlib import Path
 import pytest
 
 import flexbooster
-from conftest import dump_toml
+from conftest import dump_toml, run_cli
 from flexbooster.analysis import FORCED_STAGE, STAGES, VEHICLE_REGIONS_STAGE
-from flexbooster.cli import main
 from flexbooster.present.outputs import (
     MANIFEST,
     OUTPUT_STAGES,
@@ -27,28 +26,6 @@ from flexbooster.present.outputs import (
 
 nan, inf = math.nan, math.inf
 SRC = str(Path(flexbooster.__file__).parents[1])
-
-
-def run_cli(argv):
-    """Run the command in-process; return the exit code."""
-    with pytest.raises(SystemExit) as info:
-        main(argv)
-    return info.value.code
-
-
-@pytest.fixture
-def alarm():
-    """A call that hangs fails instead of blocking the suite: a hang guard (10 min, far above
-    any machine's load), not a measurement; the bounds themselves are the deterministic caps
-    tested below."""
-    def handler(signum, frame):
-        raise TimeoutError("the call did not return within 600 s")
-
-    previous = signal.signal(signal.SIGALRM, handler)
-    signal.alarm(600)
-    yield
-    signal.alarm(0)
-    signal.signal(signal.SIGALRM, previous)
 
 
 def _small_case(tmp_path: Path, case_dict: dict, name: str, n_omega: int = 30) -> Path:

@@ -27,9 +27,9 @@ import xml.etree.ElementTree as ET
 import numpy as np
 import pytest
 
+from conftest import run_cli
 from flexbooster.analysis import analyze, analyze_vehicle
 from flexbooster.case import default_case, default_case_text, load_case
-from flexbooster.cli import main
 from flexbooster.errors import CaseError
 from flexbooster.model import vehicle_from_case
 from flexbooster.shell_of_revolution import Cone, Cylinder, Vehicle, vehicle_modes
@@ -82,11 +82,6 @@ def _with_issue_table(**changes) -> dict:
     data["vehicle"].update(changes)
     return data
 
-
-def run_cli(argv):
-    with pytest.raises(SystemExit) as info:
-        main(argv)
-    return info.value.code
 
 
 def _toml_value(value):

@@ -705,7 +705,7 @@ def forced_stations(case: Case, vehicle=None) -> tuple[tuple[tuple[str, float], 
     users = [(st.name, st.station) for st in case.output.stations]
     taken = {name for name, _ in users}
     masses = []
-    for i, m in enumerate(getattr(vehicle, "masses", ())):
+    for i, m in enumerate(vehicle.masses):
         name = m.name or f"mass-{i + 1}"
         if name in taken:
             name = f"{name} (mass {i + 1})"

@@ -615,7 +615,7 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
             drivers["vehicle certificates"] = ("vehicle.n_modes", "vehicle.k_max")
     if forced:
         parts["vehicle forced response"] = _C_FORCED * dofs * (
-            1.0 + (getattr(t, "misalignment", 0.0) != 0.0))
+            1.0 + (t.misalignment != 0.0))
         drivers["vehicle forced response"] = ("vehicle.segments", "thrust.misalignment")
     return CostEstimate(seconds=float(sum(parts.values())), parts=parts, drivers=drivers)
 

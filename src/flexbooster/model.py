@@ -158,7 +158,7 @@ def timeline_from_case(case: Case) -> Timeline | None:
     case : Case
         A validated case (SI).
     """
-    table = getattr(case, "flight", None)
+    table = case.flight
     if table is None:
         return None
     return Timeline(tuple(FlightPoint(time=p.time, F0=p.F0, fill=p.fill,
