@@ -46,6 +46,7 @@ from .rows import (
     BAND_COLUMNS,
     DANGER_HEADER,
     FIRST_SCREEN_BANDS,
+    FIRST_SCREEN_MODES,
     FORCED_AXIAL_HEADER,
     MEMO_ROOT_HEADER,
     REGION_HEADER,
@@ -231,10 +232,12 @@ VERIFICATION: tuple[tuple[str, str, str, str], ...] = (
 
 _CSS = """
 body{font-family:system-ui,-apple-system,"Segoe UI",Roboto,Helvetica,Arial,sans-serif;
-margin:0 auto;max-width:1100px;padding:1em 2em;color:#1d1d1f;line-height:1.4}
-h1{font-size:1.6em;margin-bottom:0.2em}h2{border-bottom:2px solid #d0d7de;padding-bottom:0.2em;
+margin:0 auto;max-width:1300px;padding:1em 2em;color:#1d1d1f;line-height:1.4}
+h1{font-size:1.6em;margin:0.2em 0}h2{border-bottom:2px solid #d0d7de;padding-bottom:0.2em;
 margin-top:1.6em}
-nav ol{columns:5;font-size:0.82em;margin:0.3em 0}
+nav ol{font-size:0.82em;margin:0.3em 0;padding:0;list-style:none;counter-reset:s}
+nav li{display:inline;counter-increment:s;margin-right:1.1em;white-space:nowrap}
+nav li::before{content:counter(s) ". "}
 table{border-collapse:collapse;margin:0.6em 0;font-size:0.88em}
 th,td{border:1px solid #d0d7de;padding:0.25em 0.6em;vertical-align:top}
 th{background:#f3f5f7;text-align:left}
@@ -247,7 +250,8 @@ figure{margin:1em 0}figcaption{font-size:0.88em;color:#57606a;max-width:60em}
 figure svg{max-width:100%;height:auto;display:block}
 svg.figure *{stroke-linejoin:round;stroke-linecap:butt}
 .first{font-size:0.95em}.first h3{margin:0.6em 0 0.2em}
-.first table{margin:0.3em 0}
+.first table{margin:0.3em 0}.first p{margin:0.35em 0}.first th{white-space:nowrap}
+.first td{padding:0.15em 0.5em}#summary h2{margin-top:0.8em}
 .first ul.warnings{margin:0.2em 0;padding-left:1.2em}
 @media print{
 body{max-width:none;padding:0;font-size:10pt;color:#000}
@@ -631,7 +635,7 @@ def _first_screen(results: Results, svgs: Mapping[str, str] | None) -> str:
            _table(("mechanism", "verdict"), verdict_rows(results), (False, False),
                   ["bad" if v.startswith("unstable") else "" for _, v in
                    verdict_rows(results)])]
-    rows = danger_rows(results, FIRST_SCREEN_BANDS)
+    rows = danger_rows(results, FIRST_SCREEN_BANDS, modes=FIRST_SCREEN_MODES)
     n_all = 0 if results.danger is None else len(results.danger.bands)
     if rows:
         out.append(f"<h3>Most dangerous thrust-frequency bands ({len(rows)} of {n_all}; all "
@@ -739,7 +743,8 @@ def render_report(results: Results, svgs: Mapping[str, str] | None = None,
         f"<title>{_e(title)}</title><style>{_CSS}</style></head><body>",
         f"<header><h1>{_e(title)}</h1>",
         f'<p class="note">flexbooster {_e(__version__)}{_e(stamp)}. Dynamic stability '
-        "of a flexible two-cylinder booster under a gimbaled, pulsating thrust (Tech Memo 104). "
+        "and thrust-oscillation response of a flexible launch vehicle under a gimbaled, pulsating "
+        "thrust. "
         f"{_units_note(case)}</p>",
         "<nav><ol>",
         *[f'<li><a href="#{sid}">{_e(name)}</a></li>' for sid, name in sections],

@@ -33,6 +33,8 @@ __all__ = [
     "ROUND_OFF",
     "with_us_units",
     "FIRST_SCREEN_BANDS",
+    "FIRST_SCREEN_MODES",
+    "short_mode_text",
     "range_text",
     "verdict_rows",
     "danger_rows",
@@ -47,9 +49,12 @@ __all__ = [
 ROUND_OFF = 1e-14
 #: Bands listed on the first screen (terminal and report); all are in results.json.
 FIRST_SCREEN_BANDS = 8
+#: Modes of a band named on a first screen (the rest counted; all in the report's sections
+#: and results.json).
+FIRST_SCREEN_MODES = 2
 #: Column headings of :func:`danger_rows`.
 DANGER_HEADER = ("#", "Omega (rad/s)", "Omega (Hz)", "growth (1/s) / response",
-                 "in operating range", "mode", "mechanism")
+                 "in range", "mode", "mechanism")
 
 #: (quantity, value, unit): the value is a float, an int or text.
 Row = tuple[str, object, str]
@@ -297,7 +302,25 @@ def verdict_rows(results: Results) -> list[tuple[str, str]]:
     return [(words, verdict) for _, words, verdict in results.danger.verdicts]
 
 
-def danger_rows(results: Results, limit: int = FIRST_SCREEN_BANDS) -> list[tuple[str, ...]]:
+def short_mode_text(text: str, keep: int = FIRST_SCREEN_MODES) -> str:
+    """A band's modes ("A + B + C + D") with the first ``keep`` named and the rest counted:
+    "A + B + 2 more".
+
+    Parameters
+    ----------
+    text : str
+        The modes joined by " + ".
+    keep : int
+        Modes named, >= 1.
+    """
+    modes = text.split(" + ")
+    if len(modes) > keep:
+        modes = [*modes[:keep], f"{len(modes) - keep} more"]
+    return " + ".join(modes)
+
+
+def danger_rows(results: Results, limit: int = FIRST_SCREEN_BANDS,
+                modes: int | None = None) -> list[tuple[str, ...]]:
     """The most dangerous bands, ranked, as text cells (columns :data:`DANGER_HEADER`).
 
     Parameters
@@ -306,6 +329,8 @@ def danger_rows(results: Results, limit: int = FIRST_SCREEN_BANDS) -> list[tuple
         The analysis.
     limit : int
         Rows shown, >= 0.
+    modes : int or None
+        Modes named per band (:func:`short_mode_text`); None names all.
     """
     if results.danger is None:
         return []
@@ -321,7 +346,9 @@ def danger_rows(results: Results, limit: int = FIRST_SCREEN_BANDS) -> list[tuple
         else:
             level = "-"
         out.append((str(n + 1), range_text(b.Omega_lo, b.Omega_hi), range_text(lo_hz, hi_hz),
-                    level, "yes" if b.in_operating_range else "no", b.mode_text, b.cause_text))
+                    level, "yes" if b.in_operating_range else "no",
+                    b.mode_text if modes is None else short_mode_text(b.mode_text, modes),
+                    b.cause_text))
     return out
 
 

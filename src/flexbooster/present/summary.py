@@ -26,16 +26,14 @@ from .rows import (
     not_applicable_text,
     range_text,
     severity_caption,
+    short_mode_text,
     verdict_rows,
 )
 
-__all__ = ["print_summary", "print_stability", "print_first_screen", "TERMINAL_BANDS",
-           "TERMINAL_MODES"]
+__all__ = ["print_summary", "print_stability", "print_first_screen", "TERMINAL_BANDS"]
 
 #: Bands listed on the terminal's first screen (the report lists more; all in results.json).
 TERMINAL_BANDS = 8
-#: Modes of a band named on the terminal (the rest counted; all in the report).
-TERMINAL_MODES = 2
 
 
 _OVERALL_STYLE = {"UNSTABLE": "bold red", "MARGINAL": "bold yellow", "STABLE": "bold green"}
@@ -153,10 +151,7 @@ def _band_block(rows: list[tuple[str, ...]], width: int) -> str:
     out = line(heads, "mode; mechanism")
     out.append("-" * min(width - 1, lead + 72))
     for r in rows:
-        modes = r[5].split(" + ")
-        if len(modes) > TERMINAL_MODES:
-            modes = [*modes[:TERMINAL_MODES], f"{len(modes) - TERMINAL_MODES} more"]
-        out += line(r[:5], f"{' + '.join(modes)}; {r[6]}")
+        out += line(r[:5], f"{short_mode_text(r[5])}; {r[6]}")
     return "\n".join(out)
 
 
