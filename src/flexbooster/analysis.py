@@ -20,12 +20,13 @@ from . import cost, floquet
 from ._threads import blas_threads
 from .case import Case, deprecation_warnings
 from .checks import count, finite, positive
-from .danger import danger_summary
+from .danger import NEGLIGIBLE_GROWTH, danger_summary
 from .dynamics import (
     ThrustSpectrum,
     UndampedResonanceError,
     VehicleRegions,
     forced_response,
+    region_critical_damping,
     region_curves,
     vehicle_regions,
 )
@@ -588,6 +589,8 @@ def analyze_vehicle_regions(case: Case, *, k_min: int = VEHICLE_REGIONS_K_MIN,
     with blas_threads(1):
         try:
             found = vehicle_regions(vehicle, gamma=t.gamma, **settings)
+            # the damping that would close each region that counts (docs/theory/verdicts.md)
+            found = region_critical_damping(found, growth_floor=NEGLIGIBLE_GROWTH)
             top = _chart_gamma(found)
             if boundaries and top > 0.0:
                 # the harmonics that can have a region at the chart's top (above the case's

@@ -21,6 +21,7 @@ from typing import Any
 import numpy as np
 
 from .checks import count, nonnegative, positive
+from .dynamics.regions import CRITICAL_DAMPING_REGIONS
 from .errors import AnalysisWarning, CaseError
 from .floquet import MATHIEU_SCALE_MAX
 from .memo.beam_action import (
@@ -437,6 +438,11 @@ def search_seconds(n_modes: int, omega_min: float, omega_max: float, *, damped: 
                  * (_BOUNDARY_SEARCH_FACTOR if boundaries else 1.0))
 
 
+# The critical damping ratio of one region (an Illinois root in zeta of Brent maxima over
+# Omega, some 200 monodromies): 6.5 s for 8 regions of the default case undamped, k <= 4,
+# 20 modes per harmonic (one core, measured); n^3 assumed above 20 modes (dense products)
+_C_CRITICAL_REGION, _CRITICAL_REGION_N = 0.8, 20.0
+
 #: Name of the part of :func:`estimate_vehicle_cost` for the search of the damped k = 1
 #: harmonic (:func:`bending_search_steps`).
 BENDING_SEARCH_PART = "vehicle k = 1 search"
@@ -608,6 +614,11 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
                 parts[BENDING_SEARCH_PART] = k1
                 drivers[BENDING_SEARCH_PART] = ("damping.modal_ratio", "thrust.omega_min",
                                                 "thrust.K", "vehicle.n_modes")
+        if searched or BENDING_SEARCH_PART in parts:  # regions may open: their critical
+            # damping ratios (dynamics.region_critical_damping), at most a fixed number
+            parts["vehicle critical damping"] = CRITICAL_DAMPING_REGIONS * _C_CRITICAL_REGION * max(
+                1.0, (max(n_modes, 3) / _CRITICAL_REGION_N) ** 3)
+            drivers["vehicle critical damping"] = ("vehicle.n_modes", "damping.modal_ratio")
         if damped:  # the certificates: map, search, chart (none undamped: no certificate)
             calls = 2 + bool(figures)
             parts["vehicle certificates"] = n_k * calls * _C_CERTIFICATE * (

@@ -25,6 +25,7 @@ from .regions import (
     RegionCurve,
     VehicleRegions,
     harmonic_system,
+    region_critical_damping,
     region_curves,
     vehicle_regions,
 )
@@ -48,6 +49,7 @@ __all__ = [
     "forced_response",
     "forced_axial",
     "harmonic_system",
+    "region_critical_damping",
     "region_curves",
     "vehicle_regions",
 ]

@@ -83,6 +83,14 @@ class HarmonicSystem(ModalMatrices):
                         type=kind, omega=float(self.omega_loaded[index]),
                         share=float(self.mode_share[index]))
 
+    @property
+    def damping_per_ratio(self) -> np.ndarray:
+        """C per unit damping ratio (1/s): 2 diag(omega) of the basis (the loaded one for
+        k >= 2, the unloaded one with 0 on the rigid modes for k = 1), so that C = zeta times
+        this."""
+        omega = self.omega_unloaded if self.k == 1 else self.omega_loaded
+        return 2.0 * np.diag(omega)  # C = 2 zeta diag(omega) (Meirovitch 1986, sec. 4.10)
+
     def periodic(self, gamma: float) -> tuple:
         """(M, C or None when undamped, A, B) for :mod:`flexbooster.floquet`."""
         M, C, A, B = self.matrices(gamma)

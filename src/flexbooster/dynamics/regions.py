@@ -33,7 +33,7 @@ from .harmonic import (
 )
 
 __all__ = ["RegionCurve", "VehicleRegions", "harmonic_system", "vehicle_regions",
-           "region_curves"]
+           "region_curves", "region_critical_damping", "CRITICAL_DAMPING_REGIONS"]
 
 #: Largest harmonic accepted (as :mod:`flexbooster.shell_of_revolution`).
 K_MAX = 200
@@ -361,3 +361,46 @@ def vehicle_regions(
                                      damping_margin=damping_margin)
         found = dataclasses.replace(found, curves=curves, chart_gaps=more)
     return found
+
+
+#: Regions of a map whose critical damping ratio :func:`region_critical_damping` computes at
+#: most (the fastest-growing first): a deterministic bound on its work (each costs some 200
+#: monodromies of its harmonic).
+CRITICAL_DAMPING_REGIONS = 8
+
+
+def region_critical_damping(found: VehicleRegions, *, growth_floor: float = 0.0,
+                            limit: int = CRITICAL_DAMPING_REGIONS) -> VehicleRegions:
+    """The map with the critical damping ratio (the smallest modal damping ratio that closes
+    the region at the map's gamma, Bolotin 1964, sec. 6) of its ``limit`` fastest-growing
+    regions that grow faster than ``growth_floor`` and are not clipped by the Omega range; None
+    on the others (and where a damping ratio of 1 does not close it).
+
+    Parameters
+    ----------
+    found : VehicleRegions
+        The map (:func:`vehicle_regions`).
+    growth_floor : float
+        Regions growing slower than this (1/s) are left out, >= 0.
+    limit : int
+        At most this many regions, >= 0.
+    """
+    if not isinstance(found, VehicleRegions):
+        raise ValueError(f"found = {type(found).__name__}: must be a VehicleRegions")
+    floor = nonnegative("growth_floor", growth_floor)
+    limit = count("limit", limit, 0, 10_000)
+    by_k = {h.k: h for h in found.harmonics}
+    chosen = sorted((i for i, r in enumerate(found.regions)
+                     if r.kind != "steady" and not r.clipped and r.k in by_k
+                     and r.growth_rate_max > max(floor, 2.0 * floquet.CLOSED_GROWTH * r.Omega_hi)),
+                    key=lambda i: -found.regions[i].growth_rate_max)[:limit]
+    regions = list(found.regions)
+    for i in chosen:
+        r = regions[i]
+        h = by_k[r.k]
+        M, _, A, B = h.matrices(found.gamma)
+        zeta_cr = floquet.critical_damping(M, h.damping_per_ratio, A, B, omega_lo=r.Omega_lo,
+                                           omega_hi=r.Omega_hi, zeta=found.damping_ratio,
+                                           omega_start=r.Omega_at_max)
+        regions[i] = dataclasses.replace(r, critical_damping_ratio=zeta_cr)
+    return dataclasses.replace(found, regions=tuple(regions))

@@ -9,6 +9,7 @@ only.  Theory: ``docs/theory/floquet.md``.
 """
 
 from .bounds import StabilityCertificate, stability_certificate
+from .critical_damping import CLOSED_GROWTH, critical_damping
 from .hill import (
     HillModes,
     converged_periodic_boundaries,
@@ -73,4 +74,5 @@ __all__ = ["MATHIEU_SCALE_MAX", "beta_from_discriminants", "characteristic_expon
            "LinearPeriodicSystem", "StepLimitError", "MAX_STEPS", "PeriodMapOverflowError",
            "floquet_exponents", "floquet_multipliers", "growth_rate", "hill_exponents",
            "HillModes", "hill_modes", "monodromy", "periodic_boundaries", "periodic_system",
-           "steady_frequencies", "step_counts", "StabilityCertificate", "stability_certificate"]
+           "steady_frequencies", "step_counts", "StabilityCertificate", "stability_certificate",
+           "CLOSED_GROWTH", "critical_damping"]
