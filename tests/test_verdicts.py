@@ -316,3 +316,29 @@ def test_default_case_verdict_acceptance(default_results):
                and b.band.kind == "simple" and b.mode_text == "rigid pitch"]
     assert not any(p.band.order == t.band.order and p.Omega_lo <= t.Omega_hi
                    and t.Omega_lo <= p.Omega_hi for p in pitch for t in tongues)
+
+
+def test_ranked_bands_carry_their_measures_into_results_json():
+    # a region growing at 0.02 1/s for T = 100 s: e-folding 1 / 0.02 = 50 s, growth exponent
+    # 2 and amplification exp(2) (closed form, exactly); margin = critical gamma / gamma =
+    # 0.01 / 0.05 = 0.2 (open); a resonance of severity 1e-3 m/s at omega = 100 rad/s with
+    # zeta = 0.01: steady amplitude v / (zeta omega) = 1e-3 m (docs/theory/verdicts.md)
+    region = _band(40.0, 41.0, 0.02, mechanism="vehicle", k=3, critical_gamma=0.01,
+                   critical_damping_ratio=0.004)
+    res = _res(100.0, 100.0, 1e-3)
+    omega = 100.0  # the resonant shell mode's frequency (rad/s), given to its label
+    res = dataclasses.replace(res, modes=(dataclasses.replace(res.modes[0], omega=omega),))
+    bands = {"vehicle": [region], "resonance": [res]}
+    found = danger_summary(operating_range=(1.0, 1000.0), bands=bands, gamma=0.05,
+                           duration=100.0, modal_ratio=0.01)
+    by = {b["mechanism"]: b for b in found.to_dict()["bands"]}
+    v = by["vehicle"]
+    assert v["e_folding_s"] == pytest.approx(50.0, rel=1e-15)
+    assert v["growth_exponent"] == pytest.approx(2.0, rel=1e-15)
+    assert v["amplification"] == pytest.approx(math.exp(2.0), rel=1e-15)
+    assert v["margin"] == pytest.approx(0.2, rel=1e-15)
+    assert v["critical_damping_ratio"] == 0.004
+    assert by["resonance"]["steady_amplitude"] == pytest.approx(1e-3 / (0.01 * omega),
+                                                                rel=1e-15)
+    assert by["resonance"]["steady_acceleration"] == pytest.approx(1e-3 * omega / 0.01,
+                                                                   rel=1e-14)

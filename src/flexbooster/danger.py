@@ -14,12 +14,14 @@ from dataclasses import dataclass
 from typing import Any
 
 from .bands import MECHANISMS, Band, SearchGap, gaps_text
+from .dynamics import STANDARD_GRAVITY
 from .floquet import tongue_critical_damping
 
 __all__ = ["RankedBand", "DangerSummary", "Verdict", "STEADY_CAUSE", "NEGLIGIBLE_GROWTH",
            "NEGLIGIBLE_AMPLIFICATION", "UNSTABLE_AMPLIFICATION", "UNSTABLE_E_FOLDING",
            "AMPLIFICATION_EXPONENT_MAX", "band_measures", "band_status", "danger_bands",
-           "danger_summary", "edges_text", "hz_text", "mechanism_verdicts", "overall_verdict"]
+           "danger_summary", "edges_text", "hz_text", "mechanism_verdicts", "overall_verdict",
+           "MEASURES"]
 
 _KIND_WORDS = {"simple": "simple", "sum": "sum combination",
                "difference": "difference combination"}
@@ -149,6 +151,11 @@ def _mode_text(band: Band) -> str:
     return band.mode_text
 
 
+#: The measures of a band (:func:`band_measures`) that a ranked band carries into results.json.
+MEASURES = ("e_folding_s", "growth_exponent", "amplification", "critical_gamma", "margin",
+            "critical_damping_ratio", "steady_amplitude", "steady_acceleration")
+
+
 @dataclass(frozen=True)
 class RankedBand:
     """A band of the danger ranking: the band and whether the operating range reaches it.
@@ -225,7 +232,8 @@ class RankedBand:
                 "growth_rate": None if self.growth_rate is None else float(self.growth_rate),
                 "severity": None if self.severity is None else float(self.severity),
                 "mode_text": self.mode_text, "cause_text": self.cause_text,
-                "in_operating_range": bool(self.in_operating_range)}
+                "in_operating_range": bool(self.in_operating_range),
+                **{key: value for key, value in self.band.to_dict().items() if key in MEASURES}}
 
 
 def _operating(operating_range: tuple[float, float]) -> tuple[float, float]:
@@ -417,8 +425,6 @@ def mechanism_verdicts(ranked: Sequence[RankedBand], *, computed: Mapping[str, b
     return tuple(out)
 
 
-#: Standard gravity (m/s^2), for accelerations in g.
-G_STANDARD = 9.80665
 
 
 def _response_text(bands: Sequence[Band], lead: str) -> str:
@@ -429,7 +435,7 @@ def _response_text(bands: Sequence[Band], lead: str) -> str:
     top = max(damped, key=lambda b: b.steady_amplitude)
     f = top.modes[0].omega / (2.0 * math.pi)
     return (f"{lead}{1e3 * top.steady_amplitude:.3g} mm "
-            f"({top.steady_acceleration / G_STANDARD:.3g} g) at {f:.4g} Hz")
+            f"({top.steady_acceleration / STANDARD_GRAVITY:.3g} g) at {f:.4g} Hz")
 
 
 def _damping_text(modal_ratio: float, pitch_ratio: float) -> str:

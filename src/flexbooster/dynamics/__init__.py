@@ -13,6 +13,7 @@ from .bending import (
     follower_flutter_thrust,
 )
 from .forced import (
+    STANDARD_GRAVITY,
     ForcedPeak,
     ForcedResponse,
     LoadEnvelope,
@@ -31,6 +32,7 @@ from .regions import (
 )
 
 __all__ = [
+    "STANDARD_GRAVITY",
     "AxialResonance",
     "BendingSystem",
     "ForcedAxial",

@@ -44,6 +44,7 @@ from .forced import (
 from .io import write_text_atomic
 from .rows import (
     BAND_COLUMNS,
+    BAND_MEASURE_HEADER,
     DANGER_HEADER,
     FIRST_SCREEN_BANDS,
     FIRST_SCREEN_MODES,
@@ -51,6 +52,7 @@ from .rows import (
     MEMO_ROOT_HEADER,
     REGION_HEADER,
     ROUND_OFF,
+    band_measure_rows,
     band_rows,
     danger_rows,
     forced_axial_rows,
@@ -654,6 +656,15 @@ def _first_screen(results: Results, svgs: Mapping[str, str] | None) -> str:
     out.append("</div>")
     if results.danger is not None:
         out.append(_figure("danger-map", svgs))
+        measures = band_measure_rows(results)
+        if measures:
+            out.append("<h3>Measures of the ranked bands</h3><p class=\"note\">Numbered as "
+                       "above; e-folding time 1 / growth, amplification exp(growth x duration), "
+                       "margin = critical gamma / gamma (below 1: open), the critical damping "
+                       "ratio closes the band at the case's gamma (docs/theory/verdicts.md); "
+                       "- where it does not apply or was not computed.</p>")
+            out.append(_table(BAND_MEASURE_HEADER, measures,
+                              (True, True, False) + (True,) * 7))
     return "".join(out)
 
 

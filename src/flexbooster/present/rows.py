@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 
 from ..danger import edges_text
+from ..dynamics import STANDARD_GRAVITY
 from ..results import Results
 
 __all__ = [
@@ -34,6 +35,8 @@ __all__ = [
     "with_us_units",
     "FIRST_SCREEN_BANDS",
     "FIRST_SCREEN_MODES",
+    "BAND_MEASURE_HEADER",
+    "band_measure_rows",
     "short_mode_text",
     "range_text",
     "verdict_rows",
@@ -349,6 +352,46 @@ def danger_rows(results: Results, limit: int = FIRST_SCREEN_BANDS,
                     level, "yes" if b.in_operating_range else "no",
                     b.mode_text if modes is None else short_mode_text(b.mode_text, modes),
                     b.cause_text))
+    return out
+
+
+#: Column headings of :func:`band_measure_rows`.
+BAND_MEASURE_HEADER = ("#", "Omega (Hz)", "mechanism", "growth (1/s)", "e-folding (s)",
+                       "amplification", "critical gamma", "margin", "critical damping ratio",
+                       "steady response")
+
+
+def _g(value: float | None, unit: str = "") -> str:
+    """4 significant digits, or "-" for None."""
+    return "-" if value is None else f"{value:.4g}{unit}"
+
+
+def band_measure_rows(results: Results, limit: int = 50) -> list[tuple[str, ...]]:
+    """The measures of the ranked bands (docs/theory/verdicts.md) as text cells, numbered as
+    :func:`danger_rows`: growth rate, e-folding time, amplification over the duration,
+    critical gamma at the case's damping, margin critical gamma / gamma, critical damping
+    ratio, and a resonance's damped steady response (columns :data:`BAND_MEASURE_HEADER`).
+
+    Parameters
+    ----------
+    results : Results
+        The analysis.
+    limit : int
+        Rows shown, >= 0.
+    """
+    if results.danger is None:
+        return []
+    out = []
+    for n, rb in enumerate(results.danger.bands[:limit]):
+        b = rb.band
+        region = b.mechanism != "resonance"
+        steady = "-" if b.steady_amplitude is None else \
+            f"{1e3 * b.steady_amplitude:.3g} mm ({b.steady_acceleration / STANDARD_GRAVITY:.3g} g)"
+        out.append((str(n + 1), range_text(*rb.hz), b.mechanism.replace("_", " "),
+                    _g(b.growth_rate_max) if region else "-",
+                    _g(b.e_folding_s) if region else "-", _g(b.amplification),
+                    _g(b.critical_gamma) if region and b.critical_gamma > 0.0 else "-",
+                    _g(b.margin), _g(b.critical_damping_ratio), steady))
     return out
 
 
