@@ -181,7 +181,7 @@ def main() -> None:
     t_rank, summary = _best(lambda: danger_summary(
         operating_range=results.model.omega_range, pitch=results.pitch,
         beam_action=results.beam_action), args.repeat)
-    t_map, (svg_map, _) = _best(lambda: _render(danger_map(summary, omega_1=results.omega_1)),
+    t_map, (svg_map, _) = _best(lambda: _render(danger_map(summary)),
                                 args.repeat)
     print(f"danger_summary ({len(summary.bands)} bands): {t_rank * 1e3:.3f} ms")
     print(f"danger map render: {t_map:.3f} s, SVG {len(svg_map) / 1e3:.0f} kB")

@@ -397,7 +397,8 @@ def test_bad_input_raises_value_error(call, match):
 
 
 def test_mode_shape_plot_marks_junction():
-    # The plot draws phi_1..phi_N (as mode_shape) and the junction at zeta = 2 L1 / L (C-8).
+    # The plot draws phi_1..phi_N (as mode_shape) against the station x = L zeta (m) and the
+    # junction at zeta = 2 L1 / L (C-8), i.e. x = 2 L1 = 42 m from the aft edge.
     from flexbooster.memo.charts import beam_mode_shapes
     from flexbooster.present.plotting.beam import mode_shape_plot
 
@@ -407,4 +408,4 @@ def test_mode_shape_plot_marks_junction():
     lines = fig.axes[0].get_lines()
     assert len([ln for ln in lines if ln.get_label().startswith("φ")]) == 3
     junction = [ln for ln in lines if ln.get_label() == "junction"][0]
-    assert junction.get_xdata()[0] == pytest.approx(2 * 21.0 / 30.0, rel=1e-14)
+    assert junction.get_xdata()[0] == pytest.approx(2 * 21.0, rel=1e-14)

@@ -18,7 +18,13 @@ from ..floquet import region_boundaries, transition_curves
 from .beam import free_free_eigenvalues, mode_shape
 from .beam_action import BAND_OMEGA_BAR_MIN, beam_system, modal_damping
 from .geometry import MassProperties
-from .pitch import PITCH_MAX_TONGUE, PitchResult, pitch_band_edges, pitch_tongue_omega_bound
+from .pitch import (
+    PITCH_MAX_TONGUE,
+    PITCH_MODE,
+    PitchResult,
+    pitch_band_edges,
+    pitch_tongue_omega_bound,
+)
 from .shell import ShellFrequencies
 from .stability import StabilityTable, excitation, excitation_curves
 
@@ -208,12 +214,16 @@ class RegionCurves:
         "tongue r" (pitch) or "kind modes j" (beam action).
     gamma, omega_lo, omega_hi : numpy.ndarray
         Amplitudes ascending from the tip (the critical gamma) and the edges (rad/s).
+    key : tuple
+        (kind, mode indices, order) of the region, as the :class:`~flexbooster.bands.Band` of
+        the same region has them (``kind``, ``modes[i].index``, ``order``); () if unknown.
     """
 
     label: str
     gamma: np.ndarray
     omega_lo: np.ndarray
     omega_hi: np.ndarray
+    key: tuple = ()
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready mapping (plain lists)."""
@@ -288,7 +298,8 @@ def pitch_band_chart(model: Any, *, n_gamma: int = PITCH_BAND_CHART_LEVELS,
             if rows:
                 g_, a_, b_ = (np.array(c) for c in zip(*rows, strict=True))
                 regions.append(RegionCurves(label=f"tongue {r}", gamma=g_, omega_lo=a_,
-                                            omega_hi=b_))
+                                            omega_hi=b_,
+                                            key=("simple", (PITCH_MODE.index,), r)))
     return BandChart(title="Rigid-body pitch: Mathieu tongues", regions=tuple(regions),
                      gamma_operating=float(model.gamma), omega_min=lo, omega_max=hi,
                      gamma_max=gamma_max)
@@ -333,7 +344,8 @@ def beam_action_chart(model: Any, *, n_gamma: int = BEAM_ACTION_CHART_LEVELS,
         RegionCurves(label=f"{c.kind} {'+'.join(str(m) for m in c.modes)} j={c.order}",
                      gamma=np.asarray(c.gamma, dtype=float),
                      omega_lo=np.asarray(c.omega_lo) * w1,  # Omega_bar -> rad/s
-                     omega_hi=np.asarray(c.omega_hi) * w1)
+                     omega_hi=np.asarray(c.omega_hi) * w1,
+                     key=(str(c.kind), tuple(int(m) for m in c.modes), int(c.order)))
         for c in curves if c.kind != "steady")
     return BandChart(title="Beam action: instability regions", regions=regions,
                      gamma_operating=float(model.gamma), omega_min=lo, omega_max=hi,
@@ -350,6 +362,9 @@ class BeamModeShapes:
         Coordinate (n,), 0 at the aft edge, 2 at the nose; shapes (N, n); eigenvalues (N,).
     zeta_junction, zeta_cm : float
         zeta of the junction (C-8) and of the CM.
+    half_length : float
+        L (m): the station x = L zeta from the aft edge (C-6 with xi_bar = (x - x_cm) / L,
+        d4 = L - x_cm); 0 if unknown.
     """
 
     zeta: np.ndarray
@@ -357,6 +372,7 @@ class BeamModeShapes:
     lambda_n: np.ndarray
     zeta_junction: float
     zeta_cm: float
+    half_length: float = 0.0
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready mapping (plain lists)."""
@@ -383,7 +399,7 @@ def beam_mode_shapes(mass: MassProperties, *, N: int = MODE_SHAPE_COUNT,
     L = float(mass.L)
     return BeamModeShapes(zeta=zeta, phi=phi, lambda_n=free_free_eigenvalues(N),
                           zeta_junction=(L - (mass.d4 - mass.d1)) / L,  # eq. (C-8)
-                          zeta_cm=1.0 - mass.d4 / L)
+                          zeta_cm=1.0 - mass.d4 / L, half_length=L)
 
 
 def nodal_lines(j: int, k: int) -> tuple[np.ndarray, np.ndarray]:

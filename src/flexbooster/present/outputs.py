@@ -394,16 +394,20 @@ def make_figures(results: Results, *, names=None) -> dict[str, Figure]:
             raise ValueError(f"names = {name!r}: not a figure of these results "
                              f"({', '.join(available)})")
     makers: dict[str, Callable[[], Figure]] = {
-        "danger-map": lambda: danger_map(results.danger, omega_1=results.omega_1),
+        "danger-map": lambda: danger_map(results.danger),
         "ince-strutt": lambda: ince_strutt_chart(data.ince_strutt, Omega=results.pitch.Omega),
         "beam-modes": lambda: mode_shape_plot(data.beam_modes),
         "shell-frequencies-cylinder1": lambda: frequency_curves(results.shell, 1),
         "shell-frequencies-cylinder2": lambda: frequency_curves(results.shell, 2),
         "nodal-patterns": lambda: nodal_patterns(data.nodal_patterns),
-        "pitch-band-chart": lambda: plot_band_chart(data.pitch_band_chart,
-                                                    omega_1=results.omega_1),
-        "beam-action-chart": lambda: plot_band_chart(data.beam_action_chart,
-                                                     omega_1=results.omega_1),
+        "pitch-band-chart": lambda: plot_band_chart(
+            data.pitch_band_chart, omega_1=results.omega_1, bands=results.pitch.bands,
+            damping_text=f"rigid-pitch damping ratio {results.pitch.damping_ratio:g}"),
+        "beam-action-chart": lambda: plot_band_chart(
+            data.beam_action_chart, omega_1=results.omega_1, bands=results.beam_action.bands,
+            damping_text=(f"modal damping ratio {results.beam_action.beam_damping_ratio:g}, "
+                          f"rigid pitch {results.beam_action.pitch_damping_ratio:g}"),
+            searched=results.beam_action.band_range),
         "campbell": lambda: campbell_diagram(data.campbell),
         "vehicle-regions": lambda: vehicle_region_figures(results)["vehicle-regions"],
         "flight-campbell": lambda: flight_campbell(results.flight),

@@ -111,22 +111,25 @@ FIGURES: dict[str, tuple[str, str]] = {
     **{name: ("forced-response", caption) for name, caption in FORCED_FIGURES.items()},
     "danger-map": (
         "summary",
-        "Danger map: every unstable band of the thrust frequency Omega (Hz, logarithmic) of "
-        "every mechanism computed; instability regions as bars of height and colour their "
-        "largest growth rate (1/s; bands narrower than 1.2 % of a decade drawn that wide), "
-        "the five most dangerous numbered; memo resonances (when computed) as stems by "
-        "severity on a logarithmic axis; grey: outside the operating range. Hover a band for "
-        "its values.",
+        "Danger map: every unstable or resonant band of the thrust frequency Omega (Hz, "
+        "logarithmic) of every mechanism computed, one panel per quantity: instability regions "
+        "as bars up to their largest growth rate (1/s, logarithmic; coloured by mechanism; "
+        "dotted: the growth below which a band is negligible; bands narrower than 1.2 % of a "
+        "decade drawn that wide), forced resonances as stems up to their damped steady "
+        "response (mm; undamped: their severity); the five most dangerous numbered; grey: "
+        "outside the operating range. Hover a band for its values.",
     ),
     "beam-modes": (
         "beam-modes",
-        "Free-free mode shapes phi_n(zeta) of the equivalent beam (appendix C); dashed: the "
-        "junction of the cylinders, dotted: the centre of mass.",
+        "Free-free mode shapes phi_n of the equivalent beam (appendix C) against the station "
+        "x = L zeta from the aft edge (m); dashed: the junction of the cylinders, dotted: the "
+        "centre of mass.",
     ),
     "ince-strutt": (
         "rigid-body",
-        "Ince-Strutt chart of the pitch equation (4.2-3) with the operating path "
-        "(a(Omega), q(Omega)) of eq. (4.2-4); shaded: unstable; red points: unstable grid points.",
+        "Ince-Strutt chart of the pitch equation (4.2-3), zoomed to the operating path "
+        "(a(Omega), q(Omega)) of eq. (4.2-4), its points labelled in Hz; shaded: unstable; red "
+        "points: unstable grid points; the next transition curve above the view is named.",
     ),
     "shell-frequencies-cylinder1": (
         "shell-frequencies",
@@ -149,7 +152,8 @@ FIGURES: dict[str, tuple[str, str]] = {
         "Instability tongues of the rigid-body pitch in the plane of the thrust frequency Omega "
         "(Hz) and the pulsation amplitude gamma: edges where the path (4.2-4) crosses the "
         f"transition curves a_r, b_r, at {PITCH_BAND_CHART_LEVELS} levels of gamma in "
-        f"[0, {BAND_CHART_GAMMA_MAX:g}]; dashed: the case's gamma.",
+        f"[0, {BAND_CHART_GAMMA_MAX:g}] at the case's pitch damping; dashed: the case's gamma, "
+        "on it (thick) the tongues open there.",
     ),
     "beam-action-chart": (
         "beam-action",
@@ -158,7 +162,9 @@ FIGURES: dict[str, tuple[str, str]] = {
         f"(|rho| = 1) at {BEAM_ACTION_CHART_LEVELS - 1} levels of gamma up to "
         f"{BAND_CHART_GAMMA_MAX:g} and the tip; resonances of order <= "
         f"{BEAM_ACTION_CHART_MAX_ORDER} wider than {BEAM_ACTION_CHART_RTOL:g} of "
-        "their centre; dashed: the case's gamma.",
+        "their centre, at the case's damping (in the title); dashed: the case's gamma, on it "
+        "(thick) the regions open there at that damping (their edges also put into the "
+        "outlines); grey: below the searched range.",
     ),
     "campbell": (
         "campbell",
@@ -175,8 +181,9 @@ FIGURES: dict[str, tuple[str, str]] = {
         f"(|rho| = 1) at {VEHICLE_CHART_LEVELS - 1} levels of gamma up to "
         f"{VEHICLE_CHART_GAMMA_MAX:g} (or the case's gamma if larger) and the tip at the "
         "critical gamma; coloured by the largest "
-        "growth rate at the case's gamma (dashed; dots: the regions there), grey where the "
-        "region does not reach it.",
+        "growth rate at the case's gamma (dashed; dots: the regions there; a logarithmic "
+        "colour scale when the rates span more than two decades), grey where the region does "
+        "not reach it.",
     ),
 }
 

@@ -8,26 +8,24 @@ from matplotlib.colors import LogNorm
 from matplotlib.figure import Figure
 
 from ...memo.beam_action import StabilityChart
+from .labels import plain_log_ticks
 from .layout import axes_with_colorbar
 
 __all__ = ["plot_stability_chart"]
 
 
-def plot_stability_chart(chart: StabilityChart, normalised: bool = True,
-                         ax: Axes | None = None) -> Figure:
+def plot_stability_chart(chart: StabilityChart, ax: Axes | None = None) -> Figure:
     """Unstable points of the beam-action system coloured by the growth rate (1/s, log), gamma
-    against Omega (Bolotin 1964, ch. 3; memo 4.1).
+    against Omega in Hz (log) (Bolotin 1964, ch. 3; memo 4.1).
 
     Parameters
     ----------
     chart : StabilityChart
         Result of :func:`flexbooster.memo.beam_action.stability_chart`.
-    normalised : bool
-        Plot Omega / omega_1 (True) or Omega in rad/s on the horizontal axis.
     ax : matplotlib.axes.Axes, optional
         Axes to draw on; a new figure is made when None.
     """
-    x = chart.Omega / chart.omega_1 if normalised else chart.Omega
+    x = chart.Omega / (2.0 * np.pi)  # rad/s -> Hz
     growth = np.where(chart.stable, np.nan, chart.growth_rate)
     finite = growth[np.isfinite(growth)]
     fig, ax, cax = axes_with_colorbar(ax, (6.4, 4.8), colorbar=bool(finite.size))
@@ -40,7 +38,9 @@ def plot_stability_chart(chart: StabilityChart, normalised: bool = True,
     else:
         ax.text(0.5, 0.5, f"stable at all {chart.stable.size} grid points", transform=ax.transAxes,
                 ha="center", va="center")
-    ax.set_xlabel("Omega / omega_1" if normalised else "Omega (rad/s)")
+    ax.set_xscale("log")
+    plain_log_ticks(ax.xaxis)
+    ax.set_xlabel("thrust frequency Omega (Hz)")
     ax.set_ylabel("gamma (pulsation amplitude)")
     ax.set_xlim(x.min(), x.max())
     ax.set_ylim(chart.gamma.min(), chart.gamma.max())

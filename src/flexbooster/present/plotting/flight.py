@@ -47,13 +47,13 @@ def flight_campbell(flight: FlightResults, ax: Axes | None = None) -> Figure:
         y = top * (0.97 - 0.04 * (n % 5))
         ax.plot([e.t_start_s, e.t_end_s], [y, y], color="k" if e.mechanism != "forced"
                 else "C3", lw=3, solid_capstyle="butt")
-        ax.annotate(f"{n + 1}", (e.t_start_s, y), fontsize=7, xytext=(2, 2),
+        ax.annotate(f"{n + 1}", (e.t_start_s, y), fontsize=7, xytext=(2, -3), va="top",
                     textcoords="offset points")
     ax.set_ylim(0.0, top)
     ax.set_xlim(float(t[0]), float(t[-1]))
     ax.set_xlabel("flight time (s)")
     ax.set_ylabel("frequency (Hz)")
-    ax.set_title("Flight Campbell diagram: modes per k, oscillation band (grey), events "
-                 "(bars: black regions, red resonances, numbered worst first)", fontsize=8)
+    ax.set_title("Flight Campbell diagram: modes per k, oscillation band (grey), events\n"
+                 "(bars: black regions, red resonances, numbered worst first)", fontsize=9)
     ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     return fig

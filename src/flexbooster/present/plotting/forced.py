@@ -10,24 +10,17 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.figure import Figure
+from matplotlib.ticker import MaxNLocator
 
 from ...dynamics.forced import STANDARD_GRAVITY
 from ...results import ForcedLoads
+from .layout import new_axes, panel_axes
 
 __all__ = ["forced_acceleration_chart", "forced_envelope_chart"]
 
 _TO_HZ = 1.0 / (2.0 * np.pi)
 _STYLE = {0: "-", 1: "--"}
 _WORDS = {0: "axial", 1: "lateral"}
-
-
-def _new(ax: Axes | None, size: tuple[float, float]) -> tuple[Figure, Axes]:
-    if ax is not None:
-        return ax.figure, ax
-    import matplotlib.pyplot as plt
-
-    fig, ax = plt.subplots(figsize=size)
-    return fig, ax
 
 
 def forced_acceleration_chart(loads: ForcedLoads, ax: Axes | None = None) -> Figure:
@@ -42,7 +35,7 @@ def forced_acceleration_chart(loads: ForcedLoads, ax: Axes | None = None) -> Fig
     ax : matplotlib.axes.Axes, optional
         Axes to draw on; a new figure is made when None.
     """
-    fig, ax = _new(ax, (7.0, 4.6))
+    fig, ax = new_axes(ax, (7.0, 4.6))
     r = loads.response
     hz = r.omega * _TO_HZ
     acc = np.abs(r.acceleration) / STANDARD_GRAVITY
@@ -80,32 +73,40 @@ def forced_acceleration_chart(loads: ForcedLoads, ax: Axes | None = None) -> Fig
 
 def forced_envelope_chart(loads: ForcedLoads, ax: Axes | None = None) -> Figure:
     """The axial force (k = 0) and bending moment (k = 1) amplitudes along the vehicle at the Omega
-    where each is largest, and the envelope of the peaks over the Omega range (dotted).
+    where each is largest, and the envelope of the peaks over the Omega range (dotted): one
+    panel per forced quantity, the stations marked.
 
     Parameters
     ----------
     loads : ForcedLoads
         The stored forced response.
     ax : matplotlib.axes.Axes, optional
-        Axes of the axial force; the bending moment on a twin axis. A new figure when None.
+        Its place is split into the panels; a new figure is made when None.
     """
-    fig, ax = _new(ax, (7.0, 4.6))
     r = loads.response
     forced = {k: loads.convergence[ik] is not None for ik, k in enumerate(r.harmonics)}
-    panels = [(ax, "axial_force", 0, "C0", "axial force amplitude (N)")]
-    if forced.get(1, False):
-        panels.append((ax.twinx(), "bending_moment", 1, "C3", "bending moment amplitude (N m)"))
-    for axis, quantity, k, colour, label in panels:
-        env = next((e for e in r.envelopes if e.quantity == quantity), None)
-        if env is None or not forced.get(k, False):
-            continue
+    wanted = [(q, k, c, lab) for q, k, c, lab in (
+        ("axial_force", 0, "C0", "axial force amplitude (N)"),
+        ("bending_moment", 1, "C3", "bending moment amplitude (N m)"))
+        if forced.get(k, False) and any(e.quantity == q for e in r.envelopes)]
+    fig, axes = panel_axes(ax, max(1, len(wanted)), (7.0, 1.4 + 2.8 * max(1, len(wanted))))
+    for axis, (quantity, _k, colour, label) in zip(axes, wanted, strict=False):
+        env = next(e for e in r.envelopes if e.quantity == quantity)
         axis.plot(env.x, np.abs(env.at_worst), "-", color=colour,
                   label=f"{quantity.replace('_', ' ')} at {env.worst_omega * _TO_HZ:.4g} Hz")
         axis.plot(env.x, env.peak, ":", color=colour, label="peak over the range")
-        axis.set_ylabel(label, color=colour)
-        axis.legend(loc="upper left" if k == 0 else "lower center", fontsize="x-small")
-    for s in r.stations:
-        ax.axvline(s.x, color="0.8", lw=0.6)
-    ax.set_xlabel("station: distance from the aft edge (m)")
-    ax.set_title("Internal loads along the vehicle at the worst Omega")
+        axis.set_ylabel(label)
+        # ticks independent of the panel's height: the labels the layout measures are drawn
+        axis.yaxis.set_major_locator(MaxNLocator(nbins=6))
+        axis.legend(loc="upper right", fontsize="x-small")
+    if not wanted:
+        axes[0].text(0.5, 0.5, "no thrust oscillation: zero loads", transform=axes[0].transAxes,
+                     ha="center", va="center")
+    for axis in axes:
+        for s in r.stations:
+            axis.axvline(s.x, color="0.8", lw=0.6)
+    for axis in axes[:-1]:
+        axis.tick_params(axis="x", labelbottom=False)
+    axes[-1].set_xlabel("station: distance from the aft edge (m)")
+    axes[0].set_title("Internal loads along the vehicle at the worst Omega")
     return fig

@@ -11,7 +11,7 @@ from matplotlib.axes import Axes
 from matplotlib.figure import Figure
 from matplotlib.layout_engine import TightLayoutEngine
 
-__all__ = ["new_figure", "new_axes", "axes_with_colorbar", "lay_out_once",
+__all__ = ["new_figure", "new_axes", "panel_axes", "axes_with_colorbar", "lay_out_once",
            "LAYOUT_PAD", "SUBPLOT_PAD", "COLORBAR_WIDTH"]
 
 #: Space between the labels and the figure's edge, in units of the font size (matplotlib's
@@ -56,6 +56,35 @@ def new_axes(ax: Axes | None, figsize: tuple[float, float]) -> tuple[Figure, Axe
         fig = new_figure(figsize)
         return fig, fig.add_subplot()
     return ax.figure, ax
+
+
+def panel_axes(ax: Axes | None, n: int, figsize: tuple[float, float]) -> tuple[Figure, list[Axes]]:
+    """(figure, ``n`` axes stacked top to bottom): a new figure of ``figsize``, or the place of
+    ``ax`` (its subplot cell) split into ``n`` rows, ``ax`` itself removed.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes or None
+        Axes whose place is split; a new figure is made when None.
+    n : int
+        Number of panels, >= 1.
+    figsize : tuple of float
+        Size of the new figure (in).
+    """
+    if ax is None:
+        fig = new_figure(figsize)
+        return fig, list(fig.subplots(n, 1, squeeze=False)[:, 0])
+    fig = ax.figure
+    spec = ax.get_subplotspec()
+    if spec is None:  # an axes placed by hand: its rectangle split
+        box = ax.get_position()
+        ax.remove()
+        h = box.height / n
+        return fig, [fig.add_axes((box.x0, box.y0 + (n - 1 - i) * h, box.width, 0.85 * h))
+                     for i in range(n)]
+    ax.remove()
+    grid = spec.subgridspec(n, 1)
+    return fig, [fig.add_subplot(grid[i, 0]) for i in range(n)]
 
 
 def axes_with_colorbar(ax: Axes | None, figsize: tuple[float, float], *,

@@ -10,13 +10,39 @@ from ...memo.charts import InceStruttData
 from .labels import subscript as _sub
 from .layout import new_axes
 
-__all__ = ["ince_strutt_chart", "beta_comparison_plot"]
+__all__ = ["ince_strutt_chart", "ince_strutt_view", "beta_comparison_plot", "PATH_MARGIN"]
+
+
+#: The Ince-Strutt chart's view: the operating path's extent widened by this fraction of it on
+#: each side (q from 0: the path's q tends to 0 as Omega grows).
+PATH_MARGIN = 0.1
+#: Smallest span of a in the view (a path of one point or of constant a).
+_MIN_A_SPAN = 0.02
+
+
+def ince_strutt_view(data: InceStruttData) -> tuple[tuple[float, float], tuple[float, float]]:
+    """The chart's view ((q_lo, q_hi), (a_lo, a_hi)), zoomed to the operating path: q from 0 to
+    (1 + :data:`PATH_MARGIN`) max q_path, a over the path's range widened by
+    :data:`PATH_MARGIN` of it on each side (at least ``_MIN_A_SPAN`` wide).
+
+    Parameters
+    ----------
+    data : InceStruttData
+        The stored chart (its path).
+    """
+    q_max = float(np.max(data.q_path)) if data.q_path.size else 0.0
+    q_hi = (1.0 + PATH_MARGIN) * q_max if q_max > 0.0 else float(data.q[-1])
+    a_min, a_max = (float(np.min(data.a_path)), float(np.max(data.a_path))) \
+        if data.a_path.size else (0.0, 1.0)
+    pad = PATH_MARGIN * max(a_max - a_min, _MIN_A_SPAN)
+    return (0.0, q_hi), (a_min - pad, a_max + pad)
 
 
 def ince_strutt_chart(data: InceStruttData, ax: Axes | None = None, *,
                       Omega: np.ndarray | None = None) -> Figure:
-    """Ince-Strutt chart (a against q) with the operating path (4.2-4): the tongues shaded from
-    their boundaries, the path's unstable points red, labelled in Hz with ``Omega`` (A&S fig.
+    """Ince-Strutt chart (a against q) zoomed to the operating path (4.2-4,
+    :func:`ince_strutt_view`): the tongues shaded from their boundaries, the path's unstable
+    points red, labelled in Hz with ``Omega``, the lowest tongue above the view named (A&S fig.
     20.1).
 
     Parameters
@@ -30,9 +56,10 @@ def ince_strutt_chart(data: InceStruttData, ax: Axes | None = None, *,
     """
     fig, ax = new_axes(ax, (6.4, 4.8))
     q, curves = data.q, data.curves
-    a_lo = min(-0.2, float(np.min(data.a_path)) - 0.1)
-    a_hi = max(1.5, float(np.max(data.a_path)) * 1.1)
-    ax.fill_between(q, a_lo, curves["a0"], color="C3", alpha=0.25, lw=0)
+    (q_lo, q_hi), (a_lo, a_hi) = ince_strutt_view(data)
+    in_q = q <= q_hi * (1.0 + 1e-12)
+    floor = min(a_lo, float(np.min(curves["a0"]))) - 1.0  # below the view: fill to here
+    ax.fill_between(q, floor, curves["a0"], color="C3", alpha=0.25, lw=0)
     r = 1
     while f"a{r}" in curves:
         lower = np.minimum(curves[f"a{r}"], curves[f"b{r}"])
@@ -40,45 +67,58 @@ def ince_strutt_chart(data: InceStruttData, ax: Axes | None = None, *,
         ax.fill_between(q, lower, upper, color="C3", alpha=0.25, lw=0,
                         label="unstable (tongues)" if r == 1 else None)
         r += 1
+    above = []
     for name, values in curves.items():
         ax.plot(q, values, "-" if name.startswith("a") else "--", color="k", lw=0.8)
-        visible = (values > a_lo) & (values < a_hi)
+        visible = in_q & (values > a_lo) & (values < a_hi)
         if np.any(visible):
             i = np.flatnonzero(visible)[-1]
             ax.annotate(_sub(name[0], name[1:]), (q[i], values[i]), fontsize=8,
-                        xytext=(2, 2), textcoords="offset points")
+                        xytext=(-2, 2), textcoords="offset points", ha="right")
+        elif np.all(values[in_q] >= a_hi):
+            above.append((float(np.min(values[in_q])), name))
+    if above:
+        a_next, name = min(above)
+        ax.text(0.98, 0.98, f"next boundary above the view: {_sub(name[0], name[1:])} at "
+                f"a ≥ {a_next:.3g}", transform=ax.transAxes, ha="right", va="top", fontsize=7,
+                color="0.3")
     ok = data.path_stable
     ax.plot(data.q_path, data.a_path, "-", color="C0", lw=1.2, label="operating path")
     ax.plot(data.q_path[ok], data.a_path[ok], "o", color="C0", ms=2.5)
     if np.any(~ok):
         ax.plot(data.q_path[~ok], data.a_path[~ok], "o", color="C3", ms=3.5, label="unstable")
     if Omega is not None and np.shape(Omega) == np.shape(data.a_path):
-        _label_path(ax, data, np.asarray(Omega, dtype=float) / (2.0 * np.pi), (a_lo, a_hi))
+        _label_path(ax, data, np.asarray(Omega, dtype=float) / (2.0 * np.pi),
+                    ((q_lo, q_hi), (a_lo, a_hi)))
     ax.legend(loc="upper left", fontsize=8)
-    ax.set_xlim(0.0, float(q[-1]))
+    ax.set_xlim(q_lo, q_hi)
     ax.set_ylim(a_lo, a_hi)
     ax.set_xlabel("q")
     ax.set_ylabel("a")
-    ax.set_title("Ince-Strutt chart, ψ″ + (a − 2q cos 2τ₁) ψ = 0")
+    ax.set_title("Ince-Strutt chart, ψ″ + (a − 2q cos 2τ₁) ψ = 0, at the operating path",
+                 fontsize=10)
     return fig
 
 
 def _label_path(ax: Axes, data: InceStruttData, hz: np.ndarray,
-                a_range: tuple[float, float]) -> None:
-    """'f Hz' at the points of the path nearest to round frequencies (1-2-5 steps)."""
-    inside = (data.a_path > a_range[0]) & (data.a_path < a_range[1])
+                view: tuple[tuple[float, float], tuple[float, float]]) -> None:
+    """'f Hz' at the points of the path nearest to round frequencies (1-2-5 steps), no two
+    closer than a label's size in the view."""
+    (q_lo, q_hi), (a_lo, a_hi) = view
+    inside = ((data.a_path > a_lo) & (data.a_path < a_hi) & (data.q_path >= q_lo)
+              & (data.q_path <= q_hi))
     if not np.any(inside):
         return
     lo, hi = float(hz[inside].min()), float(hz[inside].max())
     marks = [m * 10.0 ** e for e in range(-3, 6) for m in (1, 2, 5) if lo <= m * 10.0 ** e <= hi]
     idx = np.flatnonzero(inside)
-    span_q = float(np.max(data.q)) or 1.0
-    span_a = a_range[1] - a_range[0]
+    span_q = (q_hi - q_lo) or 1.0
+    span_a = (a_hi - a_lo) or 1.0
     placed: list[tuple[float, float]] = []
-    for f in marks[::-1]:  # low a (high Omega) crowd together: keep the labels apart
+    for f in marks:  # low Omega (high a) first: the labels near the origin crowd together
         i = idx[np.argmin(np.abs(np.log(hz[idx] / f)))]
-        pos = (data.q_path[i] / span_q, data.a_path[i] / span_a)
-        if any(abs(pos[0] - p[0]) < 0.06 and abs(pos[1] - p[1]) < 0.05 for p in placed):
+        pos = ((data.q_path[i] - q_lo) / span_q, (data.a_path[i] - a_lo) / span_a)
+        if any(abs(pos[0] - p[0]) < 0.12 and abs(pos[1] - p[1]) < 0.05 for p in placed):
             continue
         placed.append(pos)
         ax.annotate(f"{f:g} Hz", (data.q_path[i], data.a_path[i]), fontsize=7, color="C0",
