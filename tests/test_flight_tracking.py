@@ -53,6 +53,12 @@ def test_two_dof_crossing_frequencies_keep_identities():
     # plain MAC (no mass) keeps the identities too: the shapes are distinct
     plain = track_modes(shapes, freqs)
     assert plain.order.tolist() == tracked.order.tolist()
+    # the MAC given by the caller (every mode of t against every mode of t + 1, M-weighted as
+    # the flight stage does with the DOF vectors it holds): the closed-form identities again
+    given = [mac_matrix(shapes[t], shapes[t + 1], mass=M) for t in range(times.size - 1)]
+    via_macs = track_modes(shapes, freqs, macs=given)
+    assert via_macs.order.tolist() == tracked.order.tolist()
+    np.testing.assert_allclose(via_macs.mac, 1.0, atol=1e-10)
     # the flight-modes.csv rows: one per time and mode, hz = omega / (2 pi)
     rows = mode_rows(times, tracked, k=0, types=["axial", "bending"])
     assert len(rows) == 24 and tuple(rows[0]) == MODE_COLUMNS
@@ -140,6 +146,14 @@ def test_bad_input_names_the_parameter():
         track_modes([a], [[1.0, 2.0]], min_mac=0.0)
     with pytest.raises(ValueError, match="^mass"):
         track_modes([a, a], [[1.0, 2.0]] * 2, mass=np.eye(2))
+    with pytest.raises(ValueError, match=r"^macs\[0\] = shape"):
+        track_modes([a, a], [[1.0, 2.0]] * 2, macs=[np.eye(3)])
+    with pytest.raises(ValueError, match="^macs: 2 matrices"):
+        track_modes([a, a], [[1.0, 2.0]] * 2, macs=[np.eye(2)] * 2)
+    with pytest.raises(ValueError, match=r"^macs\[0\]: must lie"):
+        track_modes([a, a], [[1.0, 2.0]] * 2, macs=[2.0 * np.eye(2)])
+    with pytest.raises(ValueError, match="^macs: give"):
+        track_modes([a, a], [[1.0, 2.0]] * 2, macs=[np.eye(2)], mass=np.eye(3))
     with pytest.raises(ValueError, match="^a, b"):
         mac_matrix(np.zeros((3, 1)), a)
     with pytest.raises(ValueError, match="^frequencies_per_time"):

@@ -15,15 +15,23 @@ from . import cost, floquet
 from .case import Case
 from .dynamics import forced_axial, forced_response, vehicle_regions
 from .errors import AnalysisWarning, CaseError
-from .flight import band_events, band_key, band_rate, resonance_events, track_modes, worst_first
+from .flight import (
+    band_events,
+    band_key,
+    band_rate,
+    mac_matrix,
+    resonance_events,
+    track_modes,
+    worst_first,
+)
 from .flight_results import FlightHarmonic, FlightResults
 from .model import flight_times, timeline_from_case, vehicle_from_case
 from .shell_of_revolution import BucklingError
 from .shell_of_revolution.mass_properties import mass_properties
-from .shell_of_revolution.modes import vehicle_modes
+from .shell_of_revolution.modes import mode_vectors, shared_harmonics, vehicle_modes
 
-__all__ = ["flight_stage", "STANDARD_GRAVITY", "KNOWN_FREQUENCY_MARGIN", "MATCH_RTOL",
-           "MIN_PARTICIPATION"]
+__all__ = ["flight_stage", "flight_omega_range", "STANDARD_GRAVITY", "KNOWN_FREQUENCY_MARGIN",
+           "MATCH_RTOL", "MIN_PARTICIPATION"]
 
 #: g (m/s^2) of the accelerations in g (CGPM 1901).
 STANDARD_GRAVITY = 9.80665
@@ -38,8 +46,15 @@ MATCH_RTOL = 1e-6
 MIN_PARTICIPATION = 1e-8
 
 
-def _omega_range(timeline) -> tuple[float, float]:
-    """The union of the oscillation bands (rad/s), widened around one constant frequency."""
+def flight_omega_range(timeline) -> tuple[float, float]:
+    """The Omega range (rad/s) searched at every frozen time: the union of the oscillation
+    bands, widened by :data:`KNOWN_FREQUENCY_MARGIN` around one constant frequency.
+
+    Parameters
+    ----------
+    timeline : flexbooster.flight.Timeline
+        The flight's schedule (:func:`flexbooster.model.timeline_from_case`).
+    """
     lo = min(p.oscillation[0] for p in timeline.points)
     hi = max(p.oscillation[1] for p in timeline.points)
     if hi <= lo:
@@ -62,8 +77,11 @@ def flight_stage(case: Case) -> tuple[FlightResults | None, list[AnalysisWarning
     fills (the shell and its mesh unchanged), its mass properties, its lowest
     ``vehicle.n_modes`` modes per k = 0..k_max under that time's F0, the parametric regions of
     k = 1..k_max at that time's F0 and gamma over the union of the oscillation bands, and the
-    k = 0 axial participations. The modes are tracked across times by the MAC of their sampled
-    shapes (:func:`flexbooster.flight.track_modes`), the regions followed by their tracked modes
+    k = 0 axial participations. Each time's harmonic matrices and eigenpairs are computed once
+    for the modes, the regions and the resonances. The modes are tracked across times by the
+    MAC of their DOF vectors weighted by the structure's mass matrix (Allemang 2003; shell
+    and lumped masses, the same at every time; :func:`flexbooster.flight.track_modes`), the
+    regions followed by their tracked modes
     (:func:`flexbooster.flight.band_events`, rates by :func:`flexbooster.flight.band_rate`) and
     the k = 0 resonances by :func:`flexbooster.flight.resonance_events`. CaseError on
     ``flight.points`` where the thrust buckles the vehicle at a frozen time.
@@ -84,31 +102,30 @@ def flight_stage(case: Case) -> tuple[FlightResults | None, list[AnalysisWarning
     k_max = table.k_max
     n_modes = cost.region_modes(case, base, k_max=max(k_max, 1))[0]
     zeta = case.vehicle_damping_ratio
-    lo, hi = _omega_range(timeline)
+    lo, hi = flight_omega_range(timeline)
     points = [timeline.at(float(t)) for t in times]
     masses, regions_per_time, found_per_time, modes_per_time = [], [], [], []
+    macs: dict[int, list] = {k: [] for k in range(k_max + 1)}
+    previous = None
     for p in points:
         vehicle = _vehicle_at(base, p.fill)
         masses.append(mass_properties(vehicle))
         try:
-            modes_per_time.append(vehicle_modes(vehicle, k_max=k_max, n_modes=n_modes,
-                                                prestress_F0=p.F0))
-            if k_max >= 1:
-                found = vehicle_regions(vehicle, F0=p.F0, gamma=p.gamma, omega_min=lo,
-                                        omega_max=hi, k_min=1, k_max=k_max, n_modes=n_modes,
-                                        damping_ratio=zeta, gimbal_gain=case.thrust.K)
-                axial = found.forced_axial
-            else:
-                found = None
-                axial = forced_axial(vehicle, F0=p.F0, omega_min=lo, omega_max=hi,
-                                     n_modes=n_modes, damping_ratio=zeta)
+            modes, found, axial, vectors = _frozen_time(
+                vehicle, p, k_max=k_max, n_modes=n_modes, omega_range=(lo, hi), zeta=zeta,
+                gain=case.thrust.K)
         except BucklingError as exc:
             raise CaseError("flight.points", f"F0 = {p.F0:.6g} N at t = {p.time:.6g} s",
                             f"the thrust buckles the vehicle at this frozen time ({exc})"
                             ) from None
+        if previous is not None:  # MAC weighted by the structure's mass (fill-independent)
+            for k, (X, M) in vectors.items():
+                macs[k].append(mac_matrix(previous[k], X, mass=M))
+        previous = {k: X for k, (X, _) in vectors.items()}
+        modes_per_time.append(modes)
         found_per_time.append((found, axial))
         regions_per_time.append(() if found is None else found.regions)
-    harmonics = _track(times, modes_per_time, k_max)
+    harmonics = _track(times, modes_per_time, k_max, macs)
     osc = np.array([p.oscillation for p in points])
     events = _region_events(times, points, found_per_time, harmonics, modes_per_time, osc)
     notes = ["the forced response of the bending harmonic k = 1 along the flight is not in "
@@ -135,6 +152,27 @@ def flight_stage(case: Case) -> tuple[FlightResults | None, list[AnalysisWarning
     return result, warnings
 
 
+def _frozen_time(vehicle, p, *, k_max: int, n_modes: int, omega_range: tuple, zeta: float,
+                 gain: float) -> tuple:
+    """(modes, regions or None, k = 0 axial resonances, {k: (X, M)}) of ``vehicle`` at frozen
+    point ``p``: :func:`vehicle_modes` and :func:`flexbooster.dynamics.vehicle_regions`
+    (k >= 1) or :func:`flexbooster.dynamics.forced_axial` (k_max = 0) of that time, and per k
+    the modes' DOF vectors and mass matrix (:func:`mode_vectors`), each harmonic's matrices
+    and eigenpairs computed once for all of them
+    (:func:`flexbooster.shell_of_revolution.shared_harmonics`: the numbers of separate calls)."""
+    lo, hi = omega_range
+    with shared_harmonics():
+        modes = vehicle_modes(vehicle, k_max=k_max, n_modes=n_modes, prestress_F0=p.F0)
+        vectors = {k: mode_vectors(vehicle, k, n_modes, p.F0) for k in range(k_max + 1)}
+        if k_max < 1:
+            return modes, None, forced_axial(vehicle, F0=p.F0, omega_min=lo, omega_max=hi,
+                                             n_modes=n_modes, damping_ratio=zeta), vectors
+        found = vehicle_regions(vehicle, F0=p.F0, gamma=p.gamma, omega_min=lo, omega_max=hi,
+                                k_min=1, k_max=k_max, n_modes=n_modes, damping_ratio=zeta,
+                                gimbal_gain=gain)
+    return modes, found, found.forced_axial, vectors
+
+
 def _vehicle_at(base, fill: tuple):
     """The vehicle with its tanks filled to ``fill`` (the shell, masses and mesh unchanged)."""
     return dataclasses.replace(base, tanks=tuple(
@@ -156,9 +194,11 @@ def _forced_response_check(vehicle, point, zeta: float, gain: float
     return []
 
 
-def _track(times: np.ndarray, modes_per_time: list, k_max: int) -> tuple[FlightHarmonic, ...]:
-    """Per k, the modes tracked across the frozen times by the MAC of their sampled (u, v, w)
-    shapes (common sample points: the mesh does not depend on the fills)."""
+def _track(times: np.ndarray, modes_per_time: list, k_max: int,
+           macs: dict) -> tuple[FlightHarmonic, ...]:
+    """Per k, the modes tracked across the frozen times by ``macs[k]``, the mass-weighted MAC
+    between neighbouring times (common DOFs and structural mass: the mesh does not depend on
+    the fills)."""
     out = []
     for k in range(k_max + 1):
         masks = [m.select(k) for m in modes_per_time]
@@ -167,7 +207,7 @@ def _track(times: np.ndarray, modes_per_time: list, k_max: int) -> tuple[FlightH
         shapes = [m.shapes[mask].reshape(int(mask.sum()), -1).T
                   for m, mask in zip(modes_per_time, masks, strict=True)]
         omegas = [m.omega[mask] for m, mask in zip(modes_per_time, masks, strict=True)]
-        tracked = track_modes(shapes, omegas)
+        tracked = track_modes(shapes, omegas, macs=macs[k])
         kinds = [m.type[mask] for m, mask in zip(modes_per_time, masks, strict=True)]
         types = np.array([[kinds[t][c] if c >= 0 else "" for c in tracked.order[t]]
                           for t in range(times.size)], dtype=object).astype(str)

@@ -120,7 +120,7 @@ class TrackedModes:
 
 
 def track_modes(shapes_per_time: Any, frequencies_per_time: Any, *, mass: Any = None,
-                min_mac: float = 0.5) -> TrackedModes:
+                macs: Any = None, min_mac: float = 0.5) -> TrackedModes:
     """Follow the modes through the frozen times: at each step the assignment of the next
     time's modes to the present identities that maximises the total MAC (Hungarian method,
     scipy.optimize.linear_sum_assignment on 1 - MAC, Kuhn 1955); an assignment with
@@ -136,6 +136,10 @@ def track_modes(shapes_per_time: Any, frequencies_per_time: Any, *, mass: Any = 
     mass : array_like or sequence of array_like, optional
         One mass matrix, or one per frozen time; the MAC between times t and t + 1 is
         weighted by their mean (M_t + M_t+1) / 2. Without it the plain MAC.
+    macs : sequence of array_like, optional
+        Per step t = 0..T-2, the MAC (m_t, m_t+1) between every mode of time t and every mode
+        of time t + 1, computed by the caller (e.g. :func:`mac_matrix` with the mass matrices
+        it holds), used instead of the MAC of the shapes; not with ``mass``.
     min_mac : float
         Smallest MAC of a continuation, in (0, 1].
     """
@@ -163,6 +167,9 @@ def track_modes(shapes_per_time: Any, frequencies_per_time: Any, *, mass: Any = 
                              f"{s.shape[1]} like its shapes' columns")
     masses = _masses(mass, len(shapes), n_dof)
     T = len(shapes)
+    given = None if macs is None else _given_macs(macs, [s.shape[1] for s in shapes])
+    if given is not None and masses is not None:
+        raise ValueError("macs: give the MAC or the mass matrices, not both")
     first = np.argsort(freqs[0], kind="stable")  # identities: ascending at the first time
     history = {j: [(0, int(c))] for j, c in enumerate(first)}  # identity -> (time, column)
     links: list[list[tuple[int, float]]] = [[] for _ in first]  # identity -> (time, MAC)
@@ -170,7 +177,8 @@ def track_modes(shapes_per_time: Any, frequencies_per_time: Any, *, mass: Any = 
     for t in range(T - 1):
         weight = None if masses is None else 0.5 * (masses[t] + masses[t + 1])
         cols_now = [history[j][-1][1] for j in active]
-        mac = mac_matrix(shapes[t][:, cols_now], shapes[t + 1], mass=weight)
+        mac = mac_matrix(shapes[t][:, cols_now], shapes[t + 1], mass=weight) if given is None \
+            else given[t][cols_now]
         rows, cols = linear_sum_assignment(1.0 - mac)  # maximal total MAC
         taken = set()
         continued = []
@@ -199,6 +207,21 @@ def track_modes(shapes_per_time: Any, frequencies_per_time: Any, *, mass: Any = 
         for t, value in links[j]:
             macs[t, j] = value
     return TrackedModes(order=order, mac=macs, frequencies=frequencies)
+
+
+def _given_macs(macs: Any, sizes: list[int]) -> list[np.ndarray]:
+    """The caller's MAC matrices, one per step, checked: (m_t, m_t+1), finite, in [0, 1]."""
+    out = [finite_array(f"macs[{t}]", m) for t, m in enumerate(macs)]
+    if len(out) != len(sizes) - 1:
+        raise ValueError(f"macs: {len(out)} matrices, must be {len(sizes) - 1} (one per step "
+                         "between frozen times)")
+    for t, m in enumerate(out):
+        if m.shape != (sizes[t], sizes[t + 1]):
+            raise ValueError(f"macs[{t}] = shape {m.shape}: must be ({sizes[t]}, "
+                             f"{sizes[t + 1]}) like the modes of times {t} and {t + 1}")
+        if np.any(m < 0.0) or np.any(m > 1.0):
+            raise ValueError(f"macs[{t}]: must lie in [0, 1]")
+    return out
 
 
 def _masses(mass: Any, T: int, n: int) -> list[np.ndarray] | None:

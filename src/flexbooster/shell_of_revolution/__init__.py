@@ -35,6 +35,8 @@ from .modes import (
     buckling_load,
     labelled_modal_system,
     modal_system,
+    mode_vectors,
+    shared_harmonics,
     vehicle_modes,
 )
 from .slosh import SloshMode
@@ -67,6 +69,8 @@ __all__ = [
     "mass_properties",
     "mesh_vehicle",
     "modal_system",
+    "mode_vectors",
+    "shared_harmonics",
     "slosh_modes",
     "system_matrices",
     "vehicle_modes",

@@ -12,7 +12,9 @@ ch. 5 (linear buckling: K_e x = -lambda K_g x).
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
+from contextvars import ContextVar
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -48,6 +50,8 @@ __all__ = [
     "labelled_modal_system",
     "buckling_load",
     "BucklingError",
+    "shared_harmonics",
+    "mode_vectors",
 ]
 
 class BucklingError(ValueError):
@@ -241,12 +245,66 @@ class BucklingLoad:
                 "shapes": self.shapes.tolist()}
 
 
+# ------------------------------------------------------------------------- shared work
+
+#: Within :func:`shared_harmonics`: the meshes, harmonic matrices and eigenpairs computed so
+#: far, keyed by the identity of their inputs (each entry keeps those inputs alive).
+_SHARED: ContextVar[dict | None] = ContextVar("shared_harmonics", default=None)
+
+
+@contextmanager
+def shared_harmonics() -> Iterator[None]:
+    """Within the block, a vehicle's mesh, each harmonic's matrices (shell, liquid, prestress)
+    and each of its eigenproblems are computed once and reused by :func:`vehicle_modes`,
+    :func:`modal_system`, :func:`labelled_modal_system` and the stages built on them: the same
+    numbers as computing them again (the same operations on the same inputs), at the cost of
+    one computation. Inputs are matched by identity (the same :class:`Vehicle` object) and
+    value (k, thrust, load path, mesh options); the cached arrays are read-only. Nested blocks
+    share the outermost one's store.
+    """
+    if _SHARED.get() is not None:
+        yield
+        return
+    token = _SHARED.set({})
+    try:
+        yield
+    finally:
+        _SHARED.reset(token)
+
+
+def _shared(key: tuple, keep: tuple, make: Callable):
+    """``make()``, or its stored value within :func:`shared_harmonics` (``keep``: the inputs
+    whose identities are in ``key``, held so that they outlive the entry)."""
+    store = _SHARED.get()
+    if store is None:
+        return make()
+    if key not in store:
+        store[key] = (keep, make())
+    return store[key][1]
+
+
+def _readonly(*arrays) -> None:
+    for arr in arrays:
+        if isinstance(arr, np.ndarray):
+            arr.setflags(write=False)
+
+
+def _mesh(vehicle: Vehicle, elements_per_segment, order: int, refinement: int = 1) -> Mesh:
+    """:func:`~.assembly.mesh_vehicle`, once per vehicle within :func:`shared_harmonics`."""
+    counts = tuple(elements_per_segment) if isinstance(elements_per_segment, list | np.ndarray) \
+        else elements_per_segment
+    return _shared(("mesh", id(vehicle), counts, order, refinement), (vehicle,),
+                   lambda: mesh_vehicle(vehicle, elements_per_segment=elements_per_segment,
+                                        order=order, refinement=refinement))
+
+
 # ----------------------------------------------------------------------------- helpers
 
 
 @dataclass(frozen=True)
 class _Harmonic:
-    """Matrices of one harmonic, with the rigid-free basis Q (None: no rigid motions)."""
+    """Matrices of one harmonic, with the rigid-free basis Q (None: no rigid motions); M with
+    the tanks' liquid, ``structural_mass`` without it (the shell and the lumped masses)."""
 
     k: int
     mesh: Mesh
@@ -259,6 +317,7 @@ class _Harmonic:
     R: np.ndarray
     dmap: DofMap
     elem_k: np.ndarray
+    structural_mass: np.ndarray
 
     @property
     def n_rigid(self) -> int:
@@ -290,6 +349,15 @@ def _rigid_subspace(mesh: Mesh, dmap, k: int) -> np.ndarray:
 
 def _harmonic(vehicle: Vehicle, mesh: Mesh, k: int, *, F0: float, supported: bool | None,
               geometric: bool) -> _Harmonic:
+    """The matrices of harmonic k (:class:`_Harmonic`), once within :func:`shared_harmonics`."""
+    return _shared(("harmonic", id(vehicle), id(mesh), k, F0, supported, geometric),
+                   (vehicle, mesh), lambda: _new_harmonic(vehicle, mesh, k, F0=F0,
+                                                          supported=supported,
+                                                          geometric=geometric))
+
+
+def _new_harmonic(vehicle: Vehicle, mesh: Mesh, k: int, *, F0: float, supported: bool | None,
+                  geometric: bool) -> _Harmonic:
     pre = thrust_prestate(vehicle, mesh, F0, supported_forward_end=supported) if geometric \
         else None
     hm = harmonic_matrices(vehicle, mesh, k, prestate=pre)
@@ -305,8 +373,9 @@ def _harmonic(vehicle: Vehicle, mesh: Mesh, k: int, *, F0: float, supported: boo
         q_full, _ = np.linalg.qr(M @ R if Z is None else Z.T @ M @ R, mode="complete")
         # Q^T M R = 0: the M-orthogonal complement (Bathe 10.2), within the admissible motions
         Q = q_full[:, R.shape[1]:] if Z is None else Z @ q_full[:, R.shape[1]:]
+    _readonly(M, K, G, Q, R, ke, hm.mass)
     return _Harmonic(k=k, mesh=mesh, theory=vehicle.theory, prestate=pre, M=M, K=K, G=G, Q=Q,
-                     R=R, dmap=dmap, elem_k=ke)
+                     R=R, dmap=dmap, elem_k=ke, structural_mass=hm.mass)
 
 
 def _project(h: _Harmonic, mat: np.ndarray) -> np.ndarray:
@@ -359,7 +428,17 @@ def _lowest_sparse(A: np.ndarray, B: np.ndarray, count: int) -> tuple | None:
 def _solve(h: _Harmonic, *, loaded: bool, n_modes: int | None, w2_max: float | None):
     """Lowest eigenpairs (omega^2, reduced vectors (n, m), M-orthonormal) of K_e x = omega^2
     M x, or of (K_e + K_g) x = omega^2 M x when ``loaded``, on the complement of the rigid
-    motions; omega^2 are the Rayleigh quotients of the vectors (:func:`_rayleigh`)."""
+    motions; omega^2 are the Rayleigh quotients of the vectors (:func:`_rayleigh`). Once per
+    harmonic and arguments within :func:`shared_harmonics`."""
+    def make():
+        vals, vecs = _new_solve(h, loaded=loaded, n_modes=n_modes, w2_max=w2_max)
+        _readonly(vals, vecs)
+        return vals, vecs
+
+    return _shared(("solve", id(h), loaded, n_modes, w2_max), (h,), make)
+
+
+def _new_solve(h: _Harmonic, *, loaded: bool, n_modes: int | None, w2_max: float | None):
     stiff = h.K + h.G if loaded else h.K
     if n_modes is None and w2_max is not None and h.Q is None and _none_below(
             stiff, h.M, w2_max):
@@ -560,8 +639,7 @@ def vehicle_modes(
                 F0=F0, supported=supported_forward_end, points_per_element=points_per_element)
     refinement = count("refinement", refinement, 1, 64)
     if tolerance is None:
-        mesh = mesh_vehicle(vehicle, elements_per_segment=elements_per_segment, order=order,
-                            refinement=refinement)
+        mesh = _mesh(vehicle, elements_per_segment, order, refinement)
         return _modes_on_mesh(vehicle, mesh, **opts)
     tolerance = positive("tolerance", tolerance)
     if not 1e-9 <= tolerance <= 0.1:
@@ -717,7 +795,7 @@ def labelled_modal_system(
     _, F0 = _check_common(vehicle, 0, F0)
     k = count("k", k, 0, K_MAX)
     n_modes = count("n_modes", n_modes, 1, 2000)
-    mesh = mesh_vehicle(vehicle, elements_per_segment=elements_per_segment, order=order)
+    mesh = _mesh(vehicle, elements_per_segment, order)
     h = _harmonic(vehicle, mesh, k, F0=F0, supported=supported_forward_end, geometric=True)
     n_rigid = h.n_rigid if rigid else 0
     n_elastic = n_modes - n_rigid
@@ -758,6 +836,34 @@ def labelled_modal_system(
         return ordr, names
 
     return ms, labels
+
+
+def mode_vectors(
+    vehicle: Vehicle, k: int, n_modes: int, F0: float, *,
+    supported_forward_end: bool | None = None, elements_per_segment: int | tuple | None = None,
+    order: int = DEFAULT_ORDER,
+) -> tuple[np.ndarray, np.ndarray]:
+    """(X, M_s): the lowest ``n_modes`` elastic modes of harmonic k (loaded by F0; unloaded at
+    F0 = 0) as columns on the reduced DOFs, in the order of the rows of k of
+    :func:`vehicle_modes` with ``n_modes`` (orthonormal in the mass with the tanks' liquid),
+    and the structure's mass matrix M_s (shell and lumped masses, without the liquid: the same
+    for every fill; kg), the weight of a mass-weighted modal assurance criterion (Allemang
+    2003). Within :func:`shared_harmonics`, the eigenproblem that :func:`vehicle_modes` solved.
+
+    Parameters
+    ----------
+    vehicle, k, F0, supported_forward_end, elements_per_segment, order
+        As :func:`modal_system` (F0 = 0: the unloaded modes).
+    n_modes : int
+        Elastic modes, 1..2000.
+    """
+    _, F0 = _check_common(vehicle, 0, F0)
+    k = count("k", k, 0, K_MAX)
+    n_modes = count("n_modes", n_modes, 1, 2000)
+    mesh = _mesh(vehicle, elements_per_segment, order)
+    loaded = F0 != 0.0
+    h = _harmonic(vehicle, mesh, k, F0=F0, supported=supported_forward_end, geometric=loaded)
+    return _solve(h, loaded=loaded, n_modes=n_modes, w2_max=None)[1], h.structural_mass
 
 
 def buckling_load(
