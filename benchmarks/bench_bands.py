@@ -1,4 +1,4 @@
-"""Benchmark: the band search and the band charts on the default case.
+"""Benchmark: the band search and the band charts on the memo case.
 
 Times, in the same run (best of ``--repeat``, wall and CPU):
   1. the pipeline's beam-action band search (``beam_action_bands`` over
@@ -10,7 +10,7 @@ Times, in the same run (best of ``--repeat``, wall and CPU):
      ``floquet.region_boundaries``) against the monodromy grid chart it replaced
      (``stability_chart`` on 80 log-spaced Omega x 30 gamma in [0, 0.9], step_phase 0.25);
   3. the pitch bands and the pitch band chart;
-  4. one ``analyze(default_case())``, and the same without figures.
+  4. one ``analyze(memo_case())``, and the same without figures.
 
 Usage::
 
@@ -26,7 +26,7 @@ import time
 import numpy as np
 
 from flexbooster.analysis import analyze
-from flexbooster.case import default_case
+from flexbooster.case import memo_case
 from flexbooster.memo import charts
 from flexbooster.memo.beam_action import (
     BAND_OMEGA_BAR_MIN,
@@ -55,7 +55,7 @@ def main() -> None:
     parser.add_argument("--repeat", type=int, default=2)
     parser.add_argument("--scan", type=int, default=20_000)
     args = parser.parse_args()
-    case = default_case()
+    case = memo_case()
     model = model_from_case(case)
     system = beam_system(model)
     w1 = system.omega_1
@@ -63,7 +63,7 @@ def main() -> None:
     hi = model.omega_range[1]
     g = model.gamma
 
-    print(f"default case: omega_1 = {w1:.6g} rad/s, band range [{lo:.6g}, {hi:.6g}] rad/s")
+    print(f"memo case: omega_1 = {w1:.6g} rad/s, band range [{lo:.6g}, {hi:.6g}] rad/s")
     bands, t_b, c_b = best_of(lambda: beam_action_bands(system, g, omega_min=lo, omega_max=hi),
                               args.repeat)
     grid = np.linspace(lo, hi, args.scan)
@@ -92,7 +92,7 @@ def main() -> None:
 
     _, t_a, c_a = best_of(lambda: analyze(case), args.repeat)
     _, t_n, c_n = best_of(lambda: analyze(case, figures=False), args.repeat)
-    print(f"4. analyze(default_case()): {t_a:.3f} s wall ({c_a:.3f} s CPU); without figures "
+    print(f"4. analyze(memo_case()): {t_a:.3f} s wall ({c_a:.3f} s CPU); without figures "
           f"{t_n:.3f} s wall ({c_n:.3f} s CPU)")
     print(f"   before the band search (none, the old chart instead of the two new ones), "
           f"estimated from the CPU times above: {c_a - c_b - c_new + c_old:.3f} s CPU")

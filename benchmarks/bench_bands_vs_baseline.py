@@ -1,14 +1,14 @@
-"""Benchmark: band search and damped chart of the default case against the code before them.
+"""Benchmark: band search and damped chart of the memo case against the code before them.
 
 Times, in the same run (best of ``--repeat``, wall and CPU of a child
 process), in this tree and in commit ``BASELINE`` (checked out side by side with
 ``git worktree`` into a temporary folder and run with the same Python, as
 ``benchmarks/bench_run.py`` does):
 
-1. the pipeline's beam-action band search of the default case (``beam_action_bands`` over
+1. the pipeline's beam-action band search of the memo case (``beam_action_bands`` over
    [max(omega_min, omega_1 / 4), omega_max], no damping): the new one adds the narrow regions
    below the monodromy floor (``floquet/narrow.py``); the band counts are printed;
-2. the damped beam-action (Omega, gamma) chart, default case with
+2. the damped beam-action (Omega, gamma) chart, memo case with
    ``[damping] beam_modal_ratio = 0.01`` (``flexbooster.memo.charts.beam_action_chart``:
    boundaries from ``floquet.region_boundaries``, tips from ``critical_amplitude``); the
    baseline's tips come from brentq over gamma of full region searches (biased upward by the
@@ -44,7 +44,7 @@ ROOT = Path(__file__).resolve().parents[1]
 
 _CHILD = r"""
 import json, sys, time, tomllib
-from flexbooster.case import default_case_text, load_case
+from flexbooster.case import memo_case_text, load_case
 from flexbooster.memo import charts
 from flexbooster.memo.beam_action import BAND_OMEGA_BAR_MIN, beam_action_bands, beam_system
 from flexbooster.model import model_from_case
@@ -60,7 +60,7 @@ def best(fn, repeat):
 
 
 repeat = int(sys.argv[1])
-data = tomllib.loads(default_case_text())
+data = tomllib.loads(memo_case_text())
 model = model_from_case(load_case(data))
 system = beam_system(model)
 w1 = float(system.omega_1)
@@ -92,7 +92,7 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as tmp:
         with baseline_checkout(args.baseline, Path(tmp) / "baseline") as base:
             old = _run(base / "src", args.repeat)
-    print(f"default case, best of {args.repeat}, baseline {args.baseline}:")
+    print(f"memo case, best of {args.repeat}, baseline {args.baseline}:")
     print(f"1. band search: new {new['bands']} bands, {new['band_wall']:.3f} s wall "
           f"({new['band_cpu']:.3f} s CPU); baseline {old['bands']} bands, "
           f"{old['band_wall']:.3f} s wall ({old['band_cpu']:.3f} s CPU)")

@@ -1,7 +1,7 @@
 """Benchmark: the pitch and beam-action stages against a baseline commit, in the same run.
 
 Times ``pitch_analysis`` and ``beam_action_analysis`` (exponents on the grid, bands, Hill
-check) of the default case and of the inch-pound Titan-class case (tests/data), in this tree
+check) of the memo case and of the inch-pound Titan-class case (tests/data), in this tree
 and in commit ``--baseline`` (default 66f93aa, the code before the sequential pipeline), each
 in a child process with one BLAS thread, alternating tree and baseline ``--rounds`` times;
 prints the best CPU time of each (less sensitive than wall time to other processes on the
@@ -26,18 +26,18 @@ from baseline_checkout import ROOT, baseline_checkout
 
 __all__ = ["CASES", "main"]
 
-#: The cases timed: the default case and the Titan-class case of the regression tests.
+#: The cases timed: the memo case and the Titan-class case of the regression tests.
 CASES = {"default": None, "titan": ROOT / "tests" / "data" / "cases" / "titan-inch-pound.toml"}
 
 _CHILD = r"""
 import json, sys, time
-from flexbooster.case import default_case, load_case
+from flexbooster.case import memo_case, load_case
 from flexbooster.memo.beam_action import beam_action_analysis
 from flexbooster.memo.pitch import pitch_analysis
 from flexbooster.model import model_from_case
 
 path = sys.argv[1]
-model = model_from_case(default_case() if path == "-" else load_case(path))
+model = model_from_case(memo_case() if path == "-" else load_case(path))
 t0 = time.process_time()
 pitch_analysis(model.Omega, model.omega_psi, model.gamma,
                damping_ratio=model.pitch_damping_ratio)

@@ -29,7 +29,7 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 import flexbooster  # noqa: E402
 from flexbooster._threads import blas_threads  # noqa: E402
 from flexbooster.analysis import analyze  # noqa: E402
-from flexbooster.case import default_case_text  # noqa: E402
+from flexbooster.case import memo_case_text  # noqa: E402
 from flexbooster.cost import (  # noqa: E402
     TONGUE_PART,
     check_physical,
@@ -99,7 +99,7 @@ def tongues(spread: int) -> None:
     print(f"\n{'pitch tongues (default booster, Omega 0.5..20 rad/s, gamma 0.5)':<44} "
           f"{'estimate s':>10} {'measured s':>10} {'ratio':>6}")
     for name, update in TONGUE_CASES.items():
-        d = tomllib.loads(default_case_text())
+        d = tomllib.loads(memo_case_text())
         for key, value in {**_LOW, **update}.items():
             d.setdefault(key, {}).update(value)
         model = model_from_case(flexbooster.load_case(d))
@@ -152,7 +152,7 @@ def main() -> None:
         return
     print(f"{'case':<22} {'estimate s':>10} {'measured s':>10} {'ratio':>6} {'est. time':>9}")
     for name, (update, figures) in CASES.items():
-        d = tomllib.loads(default_case_text())
+        d = tomllib.loads(memo_case_text())
         for key, value in update.items():
             d[key].update(value)
         case = flexbooster.load_case(d)
@@ -161,7 +161,7 @@ def main() -> None:
         est = estimate_cost(model, figures=figures).seconds
         measured = best(lambda c=case, f=figures: analyze(c, figures=f), args.repeat)
         print(f"{name:<22} {est:10.2f} {measured:10.2f} {est / measured:6.2f} {t_est:9.4f}")
-    model = model_from_case(flexbooster.default_case())
+    model = model_from_case(flexbooster.memo_case())
     system = ba.beam_system(model)
     Om = np.array([0.05])
     raw = int(ba.monodromy_steps(system, Om, model.gamma)[0])

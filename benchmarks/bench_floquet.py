@@ -1,4 +1,4 @@
-"""Benchmark: flexbooster.floquet.instability_regions on the beam-action system of the default case.
+"""Benchmark: flexbooster.floquet.instability_regions on the beam-action system of the memo case.
 
 Times, in the same run,
   1. the candidate-driven region search (``instability_regions``) on the normalised beam-action
@@ -45,8 +45,8 @@ from flexbooster.model import model_from_case
 
 
 def default_system(N: int = 10):
-    """(M, C, A, B), Omega_bar range, omega_1 and gamma of the default case's beam action."""
-    case = flexbooster.default_case()
+    """(M, C, A, B), Omega_bar range, omega_1 and gamma of the memo case's beam action."""
+    case = flexbooster.memo_case()
     t = case.thrust
     sys_ = beam_system(model_from_case(case), N)
     w1 = float(sys_.omega_1)
@@ -173,7 +173,7 @@ def main() -> None:
     mats, lo, hi, w1, gamma = default_system(10)
     cpu: list = []
     regions, t_search = best_of(lambda: instability_regions(*mats, lo, hi), args.repeat, cpu)
-    print(f"default case, N = 10 (n = 11), gamma = {gamma}, Omega_bar = {lo:.4f}..{hi:.3f} "
+    print(f"memo case, N = 10 (n = 11), gamma = {gamma}, Omega_bar = {lo:.4f}..{hi:.3f} "
           f"(Omega = {lo * w1:.1f}..{hi * w1:.1f} rad/s), omega_1 = {w1:.3f} rad/s")
     print(f"region search: {len(regions)} regions in {t_search:.3f} s wall, {cpu[0]:.3f} s CPU "
           f"(best of {args.repeat}); load average {load_average()}")

@@ -1,15 +1,15 @@
-"""Benchmark: the figures on the default case.
+"""Benchmark: the figures on the memo case.
 
 Times, in the same run (best of ``--repeat``), rendering to SVG + PNG with the pipeline's own
 renderer (``present.outputs._render``):
   1. the Campbell diagram (the roots with active forcing and their shell frequencies) against
      the baseline, the diagram that drew everything (every one of the ~42,000 roots and all
      ~660 shell frequencies, redrawn here as it was);
-  2. the danger map, and the ranking itself (``danger_summary``) on the default case's bands.
+  2. the danger map, and the ranking itself (``danger_summary``) on the memo case's bands.
 Also prints the SVG sizes.
 
 ``--figures`` instead times the CPU of drawing and saving (SVG + PNG) every figure of the
-default case, as ``flexbooster run`` does it (``present.outputs._figure_files``), now against
+memo case, as ``flexbooster run`` does it (``present.outputs._figure_files``), now against
 ``--baseline REV`` (default ``main``) checked out side by side with ``git worktree``: each
 code analyses the case once (pickled, not timed), then, alternating, best of ``--repeat``:
 
@@ -46,7 +46,7 @@ from matplotlib.collections import LineCollection  # noqa: E402
 from matplotlib.figure import Figure  # noqa: E402
 
 from flexbooster.analysis import analyze  # noqa: E402
-from flexbooster.case import default_case  # noqa: E402
+from flexbooster.case import memo_case  # noqa: E402
 from flexbooster.danger import danger_summary  # noqa: E402
 from flexbooster.present.outputs import _render  # noqa: E402
 from flexbooster.present.plotting.danger import danger_map  # noqa: E402
@@ -82,16 +82,16 @@ def _best(fn, repeat: int) -> tuple[float, object]:
 
 
 ROOT = Path(__file__).resolve().parents[1]
-#: Run by each code (PYTHONPATH=its src): "analyse PATH" pickles the default case's results;
+#: Run by each code (PYTHONPATH=its src): "analyse PATH" pickles the memo case's results;
 #: "draw PATH [NAMES]" prints the CPU seconds of drawing each figure (JSON).
 _CHILD = r"""
 import json, pickle, sys, time
 mode, path = sys.argv[1], sys.argv[2]
 if mode == "analyse":
     from flexbooster.analysis import analyze
-    from flexbooster.case import default_case
+    from flexbooster.case import memo_case
     with open(path, "wb") as f:
-        pickle.dump(analyze(default_case()), f)
+        pickle.dump(analyze(memo_case()), f)
     raise SystemExit
 with open(path, "rb") as f:
     results = pickle.load(f)
@@ -144,7 +144,7 @@ def figures_against(baseline: str, repeat: int) -> None:
                     prepare[label] = min(prepare[label], run["prepare"])
                     for name in run["cpu"]:
                         _best(fresh[label], _child(src, "draw", pkl, name)["cpu"])
-    print(f"figures of the default case, CPU s of drawing each (SVG + PNG), best of {repeat}, "
+    print(f"figures of the memo case, CPU s of drawing each (SVG + PNG), best of {repeat}, "
           f"baseline {baseline}, load average {os.getloadavg()[0]:.2f}")
     print(f"  {'figure':30s} {'one process':>22s} {'fresh process each':>26s}")
     print(f"  {'':30s} {'baseline':>10s} {'now':>10s}   {'baseline':>10s} {'now':>10s}")
@@ -169,9 +169,9 @@ def main() -> None:
     if args.figures:
         figures_against(args.baseline, args.repeat)
         return
-    results = analyze(default_case())
+    results = analyze(memo_case())
     data = results.figures.campbell
-    print(f"default case: {data.root_active.size} roots, {int(data.root_active.sum())} active, "
+    print(f"memo case: {data.root_active.size} roots, {int(data.root_active.sum())} active, "
           f"{data.shell_omega_bar.size} shell frequencies")
     t_old, (svg_old, _) = _best(lambda: _render(_old_campbell(data)), args.repeat)
     t_new, (svg_new, _) = _best(lambda: _render(campbell_diagram(data)), args.repeat)

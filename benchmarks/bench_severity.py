@@ -20,7 +20,7 @@ import time
 
 import numpy as np
 
-from flexbooster.case import default_case
+from flexbooster.case import memo_case
 from flexbooster.memo.beam_action import beam_action_analysis
 from flexbooster.memo.responses import excitation_parameters, secular_rates
 from flexbooster.memo.severity import root_severity
@@ -34,7 +34,7 @@ SAMPLE = 40  # roots of the baseline actually computed
 
 
 def main() -> None:
-    model = model_from_case(default_case())
+    model = model_from_case(memo_case())
     shell = natural_frequencies(model)
     params = excitation_parameters(model, beam_action_analysis(model))
     lo, hi = model.omega_range

@@ -1,6 +1,6 @@
 """Benchmark: shell natural frequencies, batched eigenproblems against a plain Python loop.
 
-M = N = 100 per cylinder (2 x (100 + 2*100 + 3*100*100) = 60,600 frequencies), default case,
+M = N = 100 per cylinder (2 x (100 + 2*100 + 3*100*100) = 60,600 frequencies), memo case,
 default method (zero-phase).  The vectorised path is
 :func:`flexbooster.memo.shell.composite_frequencies` (coefficients by quadrature, one batched
 ``eigh`` per system size).  The baseline, measured in the same run, computes the same
@@ -19,7 +19,7 @@ import time
 import numpy as np
 import scipy.linalg
 
-from flexbooster.case import default_case
+from flexbooster.case import memo_case
 from flexbooster.memo.beam import first_bending_frequency
 from flexbooster.memo.shell import composite_frequencies, cylinder_coefficients
 from flexbooster.memo.shell_coefficients import shell_parameters
@@ -30,7 +30,7 @@ M = N = 100
 
 
 def _arguments():
-    case = default_case()
+    case = memo_case()
     b = case.booster
     R1, L1 = b.cylinder1.radius, b.cylinder1.half_length
     R2, L2 = b.cylinder2.radius, b.cylinder2.half_length

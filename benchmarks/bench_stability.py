@@ -26,7 +26,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from flexbooster.analysis import analyze
-from flexbooster.case import default_case, load_case
+from flexbooster.case import load_case, memo_case
 from flexbooster.memo.responses import excitation_parameters
 from flexbooster.memo.shell import natural_frequencies
 from flexbooster.memo.stability import (
@@ -43,7 +43,7 @@ SAMPLE = 150  # equations of the baseline actually solved
 
 
 def main() -> None:
-    data = default_case().model_dump(exclude_none=True)
+    data = memo_case().model_dump(exclude_none=True)
     data["truncation"].update(M1=30, N1=30, M2=30, N2=30, N=10, S=10, R=4)
     case = load_case(data)
     t = case.thrust

@@ -39,10 +39,10 @@ REPEATS = int(os.environ.get("BENCH_REPEATS", "3"))
 
 
 def _spec():
-    from flexbooster.case import default_case_text
+    from flexbooster.case import memo_case_text
     from flexbooster.sweep.spec import make_spec
 
-    data = tomllib.loads(default_case_text())
+    data = tomllib.loads(memo_case_text())
     data["thrust"]["n_omega"] = 16
     data["truncation"] = {"M1": 4, "N1": 4, "M2": 4, "N2": 4, "N": 4, "S": 4, "R": 2}
     axes = {

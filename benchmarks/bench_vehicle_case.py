@@ -2,13 +2,13 @@
 
 Work timed (best of REPEATS, ``time.perf_counter``):
 
-1. ``analyze_vehicle`` on the default case's memo vehicle (two cylinders from ``[booster]``,
+1. ``analyze_vehicle`` on the memo case's vehicle (two cylinders from ``[booster]``,
    memo-bulkhead, k = 0..20, prestressed by F0 = 2.8 MN, with the figure data), against the
    bare ``shell_of_revolution.vehicle_modes`` on the same Vehicle: the overhead of the case
    layer and of the figure data (ratio close to 1 is the goal);
-2. the ``vehicle modes`` stage inside ``analyze`` of the default case with ``[vehicle]`` (the
+2. the ``vehicle modes`` stage inside ``analyze`` of the memo case with ``[vehicle]`` (the
    memo vehicle, k_max 20; timed through the progress callback) against ``analyze`` of the
-   default case as shipped (no ``[vehicle]``: no vehicle stage): the share the stage adds to
+   memo case as shipped (no ``[vehicle]``: no vehicle stage): the share the stage adds to
    ``flexbooster run`` when asked for (the default run does not run it).  The two analyses
    are interleaved, so that a change of machine load affects both.
 
@@ -25,7 +25,7 @@ import tomllib
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 from flexbooster.analysis import analyze, analyze_vehicle  # noqa: E402
-from flexbooster.case import default_case, default_case_text, load_case  # noqa: E402
+from flexbooster.case import load_case, memo_case, memo_case_text  # noqa: E402
 from flexbooster.model import vehicle_from_case  # noqa: E402
 from flexbooster.shell_of_revolution import vehicle_modes  # noqa: E402
 
@@ -44,13 +44,13 @@ def best(fn, repeats=REPEATS) -> float:
 
 
 def main() -> None:
-    case = default_case()
+    case = memo_case()
     vehicle = vehicle_from_case(case)
     t_stage = best(lambda: analyze_vehicle(case, k_max=20, views=True))
     t_bare = best(lambda: vehicle_modes(vehicle, k_max=20, prestress_F0=case.F0))
     print(f"analyze_vehicle (k 0..20, views): {t_stage:.3f} s; bare vehicle_modes: "
           f"{t_bare:.3f} s; ratio {t_stage / t_bare:.2f}")
-    data = copy.deepcopy(tomllib.loads(default_case_text()))
+    data = copy.deepcopy(tomllib.loads(memo_case_text()))
     data["vehicle"] = {"k_max": 20}
     with_vehicle = load_case(data)
     stage, total, default = [], [], []
@@ -63,7 +63,7 @@ def main() -> None:
         stage.append(end - marks["vehicle modes"])
         total.append(end - start)
         default.append(best(lambda: analyze(case), repeats=1))
-    print(f"vehicle stage in analyze: {min(stage):.3f} s of {min(total):.3f} s; default case "
+    print(f"vehicle stage in analyze: {min(stage):.3f} s of {min(total):.3f} s; memo case "
           f"(no vehicle stage): {min(default):.3f} s; stage / default run "
           f"{min(stage) / min(default):.3f}")
 

@@ -1,6 +1,6 @@
 """Benchmark: the vehicle-regions stage of the pipeline against its baselines, same run.
 
-Work timed (best of ``--repeat``, ``time.perf_counter``), on the default case's memo vehicle
+Work timed (best of ``--repeat``, ``time.perf_counter``), on the memo case's vehicle
 (k = 2..10, F0 = 2.8 MN, gamma = 0.05, Omega 5..2000 rad/s, damping 0.01) with ``--n-modes``
 modes per k (default 4):
 
@@ -29,7 +29,7 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 from bench_vehicle_case import best  # noqa: E402  (best of n, time.perf_counter)
 
 from flexbooster.analysis import analyze_vehicle_regions  # noqa: E402
-from flexbooster.case import default_case_text, load_case  # noqa: E402
+from flexbooster.case import load_case, memo_case_text  # noqa: E402
 from flexbooster.dynamics import vehicle_regions  # noqa: E402
 from flexbooster.memo.charts import VEHICLE_CHART_GAMMA_MAX, VEHICLE_CHART_LEVELS  # noqa: E402
 from flexbooster.model import vehicle_from_case  # noqa: E402
@@ -42,7 +42,7 @@ def main() -> None:
     parser.add_argument("--n-modes", type=int, default=4)
     parser.add_argument("--repeat", type=int, default=2)
     args = parser.parse_args()
-    data = copy.deepcopy(tomllib.loads(default_case_text()))
+    data = copy.deepcopy(tomllib.loads(memo_case_text()))
     data["vehicle"] = {"n_modes": args.n_modes}
     case = load_case(data)
     vehicle = vehicle_from_case(case)

@@ -1,9 +1,9 @@
-"""Benchmark: flexbooster.dynamics.vehicle_regions on the default case's vehicle.
+"""Benchmark: flexbooster.dynamics.vehicle_regions on the memo case's vehicle.
 
-The vehicle of ``flexbooster.model.vehicle_from_case(flexbooster.default_case())`` (the memo's
+The vehicle of ``flexbooster.model.vehicle_from_case(flexbooster.memo_case())`` (the memo's
 two cylinders, memo bulkhead, shear-diaphragm ends, inertia relief), F0 = 2.8 MN, k = 1..20
-(k = 1: bending with the gimbal gain K = 0.5 of the default case), 20 modes per k, Omega =
-5..2000 rad/s, gamma = 0.05, damping ratio 0.01 (the default case).  Times, in the same run,
+(k = 1: bending with the gimbal gain K = 0.5 of the memo case), 20 modes per k, Omega =
+5..2000 rad/s, gamma = 0.05, damping ratio 0.01 (the memo case).  Times, in the same run,
 
   1. the map ``vehicle_regions`` (the deliverable: < 5 s), with the k = 0 forced resonances,
      and its k = 1 part alone (the cost that k = 1 adds to ``flexbooster run``);
@@ -42,7 +42,7 @@ import numpy as np
 
 import flexbooster
 from flexbooster import floquet
-from flexbooster.case import default_case_text, load_case
+from flexbooster.case import load_case, memo_case_text
 from flexbooster.cost import search_seconds
 from flexbooster.dynamics import vehicle_regions
 from flexbooster.floquet import growth_rate
@@ -50,7 +50,7 @@ from flexbooster.model import vehicle_from_case
 
 F0, GAMMA, LO, HI = 2.8e6, 0.05, 5.0, 2000.0
 
-#: The README's ``[vehicle]`` example (appended to the default case).
+#: The README's ``[vehicle]`` example (appended to the memo case).
 README_VEHICLE = """
 [vehicle]
 E = "70 GPa"
@@ -117,11 +117,11 @@ def main() -> None:
     ap.add_argument("--limits", action="store_true", help="a former candidate-count case")
     args = ap.parse_args()
     print(f"load average {Path('/proc/loadavg').read_text().split()[:3]} at start")
-    veh = vehicle_from_case(flexbooster.default_case())
+    veh = vehicle_from_case(flexbooster.memo_case())
     kw = dict(F0=F0, gamma=GAMMA, omega_min=LO, omega_max=HI, k_min=1, k_max=args.k_max,
               n_modes=args.n_modes, gimbal_gain=0.5)
     res, t_map, c_map = best_of(lambda: vehicle_regions(veh, **kw), args.repeat)
-    print(f"default case vehicle, k = 1..{args.k_max}, {args.n_modes} modes per k, "
+    print(f"memo case vehicle, k = 1..{args.k_max}, {args.n_modes} modes per k, "
           f"Omega = {LO:g}..{HI:g} rad/s, gamma = {GAMMA}, zeta = 0.01")
     _, t_10, c_10 = best_of(lambda: vehicle_regions(veh, **{**kw, "k_max": 10}), args.repeat)
     print(f"k = 1..10, same run: {t_10:.3f} s wall, {c_10:.3f} s CPU")
@@ -171,12 +171,12 @@ def _case(text: str):
 
 def cost_check(modes) -> None:
     """Up-front estimate / measured CPU time of single harmonics' searches (item 4)."""
-    memo = vehicle_from_case(flexbooster.default_case())
+    memo = vehicle_from_case(flexbooster.memo_case())
     cases = [(f"default vehicle, k = 3, {n} modes, undamped", memo, 3, n, 0.0) for n in modes]
     cases += [("README example, k = 2, 20 modes, zeta = 0.01",
-               vehicle_from_case(_case(default_case_text() + README_VEHICLE)), 2, 20, 0.01),
+               vehicle_from_case(_case(memo_case_text() + README_VEHICLE)), 2, 20, 0.01),
               ("free-free default vehicle, k = 1, 20 modes, zeta = 0.01",
-               vehicle_from_case(_case(default_case_text() + FREE_ENDS)), 1, 20, 0.01)]
+               vehicle_from_case(_case(memo_case_text() + FREE_ENDS)), 1, 20, 0.01)]
     for name, veh, k, n, zeta in cases:  # a handful of harmonics
         kw = dict(F0=F0, gamma=GAMMA, omega_min=LO, omega_max=HI, k_min=k, k_max=k,
                   n_modes=n, damping_ratio=zeta, gimbal_gain=0.5, axial=False)
@@ -188,7 +188,7 @@ def cost_check(modes) -> None:
 
 def limits(repeat: int) -> None:
     """Item 5: the README example, k = 2, 8 modes, undamped, Omega 1..2000 rad/s."""
-    veh = vehicle_from_case(_case(default_case_text() + README_VEHICLE))
+    veh = vehicle_from_case(_case(memo_case_text() + README_VEHICLE))
     kw = dict(F0=F0, gamma=GAMMA, omega_min=1.0, omega_max=HI, k_min=2, k_max=2, n_modes=8,
               damping_ratio=0.0, axial=False)
     found, t_map, c_map = best_of(lambda: vehicle_regions(veh, **kw), repeat)

@@ -27,7 +27,7 @@ import flexbooster
 import flexbooster.floquet.regions as floquet_regions
 from flexbooster import cost, floquet
 from flexbooster.analysis import analyze_vehicle_regions
-from flexbooster.case import default_case_text
+from flexbooster.case import memo_case_text
 from flexbooster.dynamics import bending_harmonic
 from flexbooster.dynamics.harmonic import floquet_options
 from flexbooster.model import vehicle_from_case
@@ -36,7 +36,7 @@ from flexbooster.model import vehicle_from_case
 def free_free_cases(n: int = 60, seed: int = 36, max_seconds: float = 300.0) -> list[dict]:
     """The case dictionaries (load with ``flexbooster.load_case``)."""
     rng = random.Random(seed)
-    booster = tomllib.loads(default_case_text())["booster"]
+    booster = tomllib.loads(memo_case_text())["booster"]
 
     def lu(lo: float, hi: float) -> float:
         return 10 ** rng.uniform(math.log10(lo), math.log10(hi))

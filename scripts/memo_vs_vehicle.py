@@ -1,6 +1,6 @@
 """Print the tables of docs/theory/memo-vs-vehicle.md from the current code.
 
-The default case with the pipeline's own settings: the memo table of ``analyze`` (its
+The memo case with the pipeline's own settings: the memo table of ``analyze`` (its
 ``active`` flag is severity_rel >= threshold since issue 13), the vehicle regions of the
 pipeline's stage (``analyze_vehicle_regions``: k = 1..10, ``vehicle.n_modes`` = 20 modes per k,
 damping ratio 0.01, k = 1 with the gimbal gain), the same map undamped and with small damping
@@ -20,7 +20,7 @@ from collections import Counter
 
 import numpy as np
 
-from flexbooster import default_case
+from flexbooster import memo_case
 from flexbooster.analysis import (
     VEHICLE_REGIONS_K_MIN,
     analyze,
@@ -59,7 +59,7 @@ def main() -> None:
                     help="highest harmonic of the damping sweep (the pipeline: vehicle.k_max)")
     ap.add_argument("--zetas", type=float, nargs="*", default=[1e-4, 3e-4, 1e-3])
     args = ap.parse_args()
-    case = default_case()
+    case = memo_case()
     t = case.thrust
     t0 = time.perf_counter()
     res = analyze(case, figures=False, vehicle=False)

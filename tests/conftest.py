@@ -29,40 +29,40 @@ def _sigint_raises_keyboard_interrupt():
 
 
 @pytest.fixture(scope="session")
-def default_results():
-    """``analyze(default_case())``, computed once per test process and shared by every test
-    that reads the full analysis of the default case (figures' data and vehicle regions
+def memo_results():
+    """``analyze(memo_case())``, computed once per test process and shared by every test
+    that reads the full analysis of the memo case (figures' data and vehicle regions
     included).  Read it, never modify it: the next test sees the same object."""
-    from flexbooster import analyze, default_case
+    from flexbooster import analyze, memo_case
 
-    return analyze(default_case())
+    return analyze(memo_case())
 
 
 @pytest.fixture
-def case_dict() -> dict:
-    """The embedded default case as a fresh, mutable mapping."""
-    from flexbooster.case import default_case_text
+def memo_case_dict() -> dict:
+    """The embedded memo case as a fresh, mutable mapping."""
+    from flexbooster.case import memo_case_text
 
-    return copy.deepcopy(tomllib.loads(default_case_text()))
+    return copy.deepcopy(tomllib.loads(memo_case_text()))
 
 
 @pytest.fixture(scope="session")
-def default_svgs(default_results):
-    """The SVG of every figure of :func:`default_results` (``figure_svgs``), drawn once per
+def memo_svgs(memo_results):
+    """The SVG of every figure of :func:`memo_results` (``figure_svgs``), drawn once per
     test process: the report's and the figures' tests read the same drawings."""
     from flexbooster.present.outputs import figure_svgs
 
-    return figure_svgs(default_results)
+    return figure_svgs(memo_results)
 
 
 @pytest.fixture
-def small_case_file(case_dict, tmp_path):
-    """The default case with a small truncation and 40 Omega points, as a case file: every
+def small_memo_case_file(memo_case_dict, tmp_path):
+    """The memo case with a small truncation and 40 Omega points, as a case file: every
     stage of a run in about a second, for tests whose evidence needs no full truncation."""
-    case_dict["truncation"].update(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)
-    case_dict["thrust"]["n_omega"] = 40
+    memo_case_dict["truncation"].update(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)
+    memo_case_dict["thrust"]["n_omega"] = 40
     path = tmp_path / "small.toml"
-    path.write_text(dump_toml(case_dict))
+    path.write_text(dump_toml(memo_case_dict))
     return path
 
 
@@ -116,11 +116,11 @@ def alarm():
     signal.signal(signal.SIGALRM, previous)
 
 
-def case_with(case_dict: dict, **fields):
-    """The validated case of ``case_dict`` with dotted fields set (``thrust__F0=1e6``)."""
+def case_with(data: dict, **fields):
+    """The validated case of the mapping ``data`` with dotted fields set (``thrust__F0=1e6``)."""
     import flexbooster
     from test_case import _set
 
     for dotted, value in fields.items():
-        _set(case_dict, dotted.replace("__", "."), value)
-    return flexbooster.load_case(case_dict)
+        _set(data, dotted.replace("__", "."), value)
+    return flexbooster.load_case(data)

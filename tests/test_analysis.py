@@ -17,13 +17,13 @@ INCH = 0.0254  # exact (international inch)
 LBF = 4.4482216152605  # N, exact (NIST SP 811)
 
 
-def test_mathieu_parameters_reproduce_the_pitch_equation(case_dict):
+def test_mathieu_parameters_reproduce_the_pitch_equation(memo_case_dict):
     """Eqs. (4.2-1) -> (4.2-3): integrate the linearised pitch equation in physical time,
     psi'' + (2 pi R1 d2 K T(t) / I_cm) psi = 0 (E2: lever arm d2), and the Mathieu equation
     y'' + (a - 2q cos 2 tau1) y = 0 with the pipeline's a, q in tau1 = Omega t / 2; the two
     solutions from the same initial state must coincide (solve_ivp DOP853, rtol 1e-11)."""
-    case_dict["thrust"]["gamma"] = 0.3  # a sizeable modulation makes a wrong q visible
-    case = load_case(case_dict)
+    memo_case_dict["thrust"]["gamma"] = 0.3  # a sizeable modulation makes a wrong q visible
+    case = load_case(memo_case_dict)
     res = analyze(case, beam_action=False, stability=False, figures=False, vehicle=False)
     c1 = case.booster.cylinder1
     k_phys = 2 * math.pi * c1.radius * res.mass.d2 * case.thrust.K * case.T0 / res.mass.I_cm
@@ -64,10 +64,10 @@ def test_memo_moment_without_lever_arm_is_not_an_angular_acceleration():
     assert corrected.dimensionality == (u.s**-2).dimensionality
 
 
-def test_default_case_in_memo_range_without_warnings(default_results):
-    """The default case is chosen so that 0 < a < 1 and 0 < q <= 0.05 on its Omega grid (4.2-5)
+def test_memo_case_in_memo_range_without_warnings(memo_results):
+    """The memo case is chosen so that 0 < a < 1 and 0 < q <= 0.05 on its Omega grid (4.2-5)
     and h/R <= 1/20."""
-    res = default_results
+    res = memo_results
     assert res.warnings == ()
     assert np.all((res.a > 0) & (res.a < 1)) and np.all((res.q > 0) & (res.q <= 0.05))
 
@@ -82,14 +82,14 @@ def test_default_case_in_memo_range_without_warnings(default_results):
         ({"booster": {"thickness": "0.3 m"}}, {"thin-shell"}),
     ],
 )
-def test_warnings(case_dict, changes, codes):
+def test_warnings(memo_case_dict, changes, codes):
     # a small truncation and grid: the warnings come from the inputs and the pitch stage, the
     # whole pipeline still runs (no NaN or inf in results.json even with K = 0)
-    case_dict["truncation"].update(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)
-    case_dict["thrust"]["n_omega"] = 40
+    memo_case_dict["truncation"].update(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)
+    memo_case_dict["thrust"]["n_omega"] = 40
     for table, values in changes.items():
-        case_dict[table].update(values)
-    res = analyze(load_case(case_dict))
+        memo_case_dict[table].update(values)
+    res = analyze(load_case(memo_case_dict))
     assert {w.code for w in res.warnings} == codes
     data = res.to_dict()
     assert {w["code"] for w in data["warnings"]} == codes
@@ -165,13 +165,14 @@ def _differences(a, b, key=""):
 
 
 @pytest.mark.slow
-def test_same_case_in_si_and_inch_pound_units(case_dict):
-    """The default case written in inch-pound units (exact conversion factors) gives the same
+def test_same_case_in_si_and_inch_pound_units(memo_case_dict):
+    """The memo case written in inch-pound units (exact conversion factors) gives the same
     results to 1e-12 relative (the solved ones to 1e-8). Both undamped (modal_ratio = 0): the
     edges of a damped region whose growth barely exceeds 0 are ill-conditioned (a shallow
     maximum crossing zero), so round-off moves them by up to 1e-3 relative between the two unit
     systems, as it would between two machines."""
-    undamped = {**case_dict, "damping": {**case_dict.get("damping", {}), "modal_ratio": 0.0}}
+    undamped = {**memo_case_dict,
+                "damping": {**memo_case_dict.get("damping", {}), "modal_ratio": 0.0}}
     si_results = analyze(load_case(undamped), vehicle=False)  # undamped regions: over budget
     si = si_results.case
     b, t = si.booster, si.thrust
@@ -198,9 +199,9 @@ def test_same_case_in_si_and_inch_pound_units(case_dict):
             "omega_min": f"{t.omega_min / (2 * math.pi)!r} Hz",
             "omega_max": f"{t.omega_max * 60 / (2 * math.pi)!r} rpm",
             "n_omega": t.n_omega,
-            "duration": f"{t.duration / 60.0!r} min",  # the default case's 150 s
+            "duration": f"{t.duration / 60.0!r} min",  # the memo case's 150 s
         },
-        "truncation": case_dict["truncation"],
+        "truncation": memo_case_dict["truncation"],
         "damping": undamped["damping"],
     }
     bad = list(_differences(si_results.to_dict(),
@@ -209,7 +210,7 @@ def test_same_case_in_si_and_inch_pound_units(case_dict):
 
 
 @pytest.mark.slow
-def test_oversized_stability_table_becomes_a_warning(case_dict, monkeypatch):
+def test_oversized_stability_table_becomes_a_warning(memo_case_dict, monkeypatch):
     """A truncation whose table would not fit in memory: the analysis goes on without the table
     and says so (warning in the results), instead of crashing."""
     from flexbooster.memo import stability
@@ -220,7 +221,7 @@ def test_oversized_stability_table_becomes_a_warning(case_dict, monkeypatch):
         return original(*args, **kwargs, max_roots=100)
 
     monkeypatch.setattr("flexbooster.analysis.unstable_frequencies", small_limit)
-    res = analyze(load_case(case_dict))
+    res = analyze(load_case(memo_case_dict))
     assert res.stability is None
     codes = [w["code"] for w in res.to_dict()["warnings"]]
     assert codes == ["stability-skipped"]

@@ -57,7 +57,7 @@ def _system():
 
 @functools.cache
 def _model():
-    return model_from_case(flexbooster.default_case())
+    return model_from_case(flexbooster.memo_case())
 
 
 #: A matrix of NaN in flexbooster.floquet: its ValueError prints the whole array (several
@@ -186,7 +186,7 @@ def test_bad_call_raises_value_error_naming_the_parameter(alarm, name, call):
 
 @functools.cache
 def _vehicle():
-    return vehicle_from_case(flexbooster.default_case())
+    return vehicle_from_case(flexbooster.memo_case())
 
 
 def _plate_vehicle():
@@ -198,9 +198,9 @@ def _plate_vehicle():
 
 @functools.cache
 def _small() -> dict:
-    """A small analysis (the default case, truncations 2/2/2/2, N = 2, S = R = 1, 20 points)
+    """A small analysis (the memo case, truncations 2/2/2/2, N = 2, S = R = 1, 20 points)
     and the objects the result-taking functions need."""
-    d = flexbooster.default_case().model_dump(exclude_none=True)
+    d = flexbooster.memo_case().model_dump(exclude_none=True)
     d["truncation"].update(M1=2, N1=2, M2=2, N2=2, N=2, S=1, R=1)
     d["thrust"]["n_omega"] = 20
     res = analyze(flexbooster.load_case(d), figures=False, vehicle=False)
@@ -244,16 +244,16 @@ API_CALLS = [
     ("units.to_us-overflow", "value", lambda: units.to_us(1e308, "m")),  # was (inf, 'in')
     ("units.to_us-unit", "si_unit", lambda: units.to_us(1.0, ["m"])),
     ("simulate_case-Omega-nan", "Omega",
-     lambda: analysis.simulate_case(flexbooster.default_case(), nan, tau_max=10.0)),
+     lambda: analysis.simulate_case(flexbooster.memo_case(), nan, tau_max=10.0)),
     ("simulate_case-n_out-1", "n_out",
-     lambda: analysis.simulate_case(flexbooster.default_case(), 10.0, tau_max=10.0,
+     lambda: analysis.simulate_case(flexbooster.memo_case(), 10.0, tau_max=10.0,
                                     n_out=1)),
     ("analyze_vehicle-k_max-neg", "k_max",
-     lambda: analysis.analyze_vehicle(flexbooster.default_case(), k_max=-1)),
+     lambda: analysis.analyze_vehicle(flexbooster.memo_case(), k_max=-1)),
     ("analyze_vehicle-f_max-nan", "f_max",
-     lambda: analysis.analyze_vehicle(flexbooster.default_case(), f_max=nan)),
+     lambda: analysis.analyze_vehicle(flexbooster.memo_case(), f_max=nan)),
     ("analyze_vehicle_regions-k_min-neg", "k_min",
-     lambda: analysis.analyze_vehicle_regions(flexbooster.default_case(), k_min=-1)),
+     lambda: analysis.analyze_vehicle_regions(flexbooster.memo_case(), k_min=-1)),
     ("booster_model-R1-nan", "R1", lambda: _booster_model(R1=nan)),
     ("booster_model-Omega-empty", "Omega", lambda: _booster_model(Omega=np.array([]))),
     ("booster_model-gamma-neg", "gamma", lambda: _booster_model(gamma=-0.1)),

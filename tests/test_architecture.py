@@ -161,7 +161,7 @@ def test_default_analysis_imports_neither_dask_nor_scipy_optimize():
     code = (
         "import sys, tomllib\n"
         "from flexbooster import analysis, case\n"
-        "d = tomllib.loads(case.default_case_text())\n"
+        "d = tomllib.loads(case.memo_case_text())\n"
         "d['thrust']['n_omega'] = 60\n"
         "d['truncation'] = dict(M1=4, N1=4, M2=4, N2=4, N=4, S=3, R=3)\n"
         "analysis.analyze(case.load_case(d))\n"

@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from flexbooster.case import default_case, load_case
+from flexbooster.case import load_case, memo_case
 from flexbooster.errors import CaseError
 from flexbooster.floquet import (
     critical_amplitude,
@@ -351,15 +351,15 @@ def test_pipeline_bands_hold_the_coupled_tongue_below_omega_1_over_4(titan_model
 
 
 @pytest.mark.slow
-def test_default_case_narrow_bands_confirmed_by_hill():
-    # the default case's bands over [omega_1 / 4, omega_max]: 50 (18 before the narrow-region
+def test_memo_case_narrow_bands_confirmed_by_hill():
+    # the memo case's bands over [omega_1 / 4, omega_max]: 50 (18 before the narrow-region
     # search; those 18 are unchanged, bitwise).  The 33 narrower than 6e-8 / j of their centre
     # (relative widths 1e-14 .. 5e-8; all but one, sum 2+5 j = 1 at 5.3e-8, from the
     # harmonic-balance pair of floquet/narrow.py): Hill's method (S = 8, an independent
     # eigenproblem of the full system) gives the same growth rate at each vertex, to 1 % for
     # widths >= 1e-12 (measured 3e-3) and 30 % below (Hill's round-off, ~1e-14 / tau, is
     # comparable there; the band at 3.5e-14 relative, growth 9e-15, below it, is skipped)
-    model = model_from_case(default_case())
+    model = model_from_case(memo_case())
     s = beam_system(model)
     w1, n = float(s.omega_1), s.A0.shape[0]
     lo = max(model.omega_range[0], BAND_OMEGA_BAR_MIN * w1)
@@ -407,12 +407,12 @@ def test_beal_follower_flutter_is_the_gamma_zero_limit_of_the_regions():
 @pytest.mark.slow
 def test_beam_damping_shrinks_regions_and_sets_critical_gamma():
     # Bolotin (1964) sec. 6: damping makes a region appear only above a critical gamma; for the
-    # sum resonance of modes 0 + 1 of the default case with equal modal damping rates
+    # sum resonance of modes 0 + 1 of the memo case with equal modal damping rates
     # zeta_0 omega_0 = zeta_1 omega_1 = eps the region narrows (with unequal rates a
     # combination region can widen: Nayfeh & Mook 1979, sec. 5.7), and to first order in gamma
     # the growth rate is the undamped one (proportional to gamma) minus eps, so
     # gamma_cr = gamma eps / g_max(gamma) (tolerance 5 %: first order only)
-    system = beam_system(model_from_case(default_case()))
+    system = beam_system(model_from_case(memo_case()))
     w = np.real(loaded_frequencies(system)) * system.omega_1
     centre = w[0] + w[1]
     lo, hi = 0.999 * centre, 1.001 * centre
@@ -435,10 +435,10 @@ def test_beam_damping_shrinks_regions_and_sets_critical_gamma():
 # Pipeline
 # --------------------------------------------------------------------------------------------
 @pytest.mark.slow
-def test_results_json_holds_the_bands(default_results):
+def test_results_json_holds_the_bands(memo_results):
     # the verdicts follow from the bands (issue 12): beam action "unstable" iff a band exists;
-    # the default case's pitch tongues lie below its range (2 omega_psi = 2.4 < 5 rad/s)
-    d = json.loads(json.dumps(default_results.to_dict(), allow_nan=False))
+    # the memo case's pitch tongues lie below its range (2 omega_psi = 2.4 < 5 rad/s)
+    d = json.loads(json.dumps(memo_results.to_dict(), allow_nan=False))
     ba = d["beam_action"]
     assert ba["bands"] and ba["verdict"] == "unstable"
     assert ba["unstable_intervals"] == [[b["Omega_lo"], b["Omega_hi"]] for b in ba["bands"]]
@@ -451,14 +451,14 @@ def test_results_json_holds_the_bands(default_results):
 
 
 @pytest.mark.slow
-def test_beam_action_chart_tips_are_the_resonance_centres(case_dict):
+def test_beam_action_chart_tips_are_the_resonance_centres(memo_case_dict):
     # exact limit: without damping each region grows out of its analytic centre at gamma = 0
     # (2 omega_i or omega_i + omega_k for order 1), and widens with gamma (Bolotin 1964 ch. 1);
     # centres from the loaded frequencies to 1e-12 relative
     from flexbooster.memo.charts import beam_action_chart
 
-    case_dict["damping"] = {"modal_ratio": 0.0}  # the default case undamped
-    model = model_from_case(load_case(case_dict))
+    memo_case_dict["damping"] = {"modal_ratio": 0.0}  # the memo case undamped
+    model = model_from_case(load_case(memo_case_dict))
     chart = beam_action_chart(model)
     system = beam_system(model)
     w = np.real(loaded_frequencies(system)) * system.omega_1
@@ -503,4 +503,4 @@ def test_damping_fields_reach_the_model():
     data["damping"] = {"beam_modal_ratio": 0.04}  # the deprecated key: used, with a warning
     m = model_from_case(load_case(data))
     assert (m.beam_damping_ratio, m.pitch_damping_ratio) == (0.04, 0.0)
-    assert model_from_case(default_case()).beam_damping_ratio == 0.01  # 1 % by default
+    assert model_from_case(memo_case()).beam_damping_ratio == 0.01  # 1 % by default

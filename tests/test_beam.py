@@ -18,7 +18,7 @@ from harness import Reference, check_reference  # noqa: E402
 from reference import appendix_b
 
 # Geometries (R1, L1, R2, L2) in m, h = 20 mm, rho = 2768 kg/m^3:
-# the default case (Saturn-class), a short forward stage, and one with L/L2 = 7/4, for which
+# the memo case (Saturn-class), a short forward stage, and one with L/L2 = 7/4, for which
 # j pi L / L2 = 3.5 j pi hits lambda_n ~ (n + 1/2) pi whenever 7 j / 2 = n + 1/2, where the
 # memo's factor 2/B^- is singular (exactly, in double precision, for n >= 10).
 GEOMETRIES = {

@@ -120,7 +120,7 @@ def test_rigid_rotation_alone_is_mathieu_of_pitch_module(a, q):
     # Elastic modes removed (N = 0): the rigid rotation of the composite must obey (4.2-3) with
     # a, q of pitch.mathieu_parameters; reference cos(pi nu) = y1(pi) by solve_ivp (rtol 1e-12),
     # Magnus & Winkler (1966) thm 1.1; multipliers e^{2 pi i alpha} = e^{i pi nu} hence
-    # cos(2 pi alpha) = y1(pi).  Composite numbers of the default case's order of magnitude.
+    # cos(2 pi alpha) = y1(pi).  Composite numbers of the memo case's order of magnitude.
     mass, L, d2, I_cm, F0, K, omega_1 = 9.4e4, 30.0, 27.6, 2.7e7, 2.8e6, 0.5, 113.5
     omega_psi = pitch.pitch_frequency(F0, d2, K, I_cm)
     Omega = 2.0 * omega_psi / np.sqrt(a)
@@ -314,17 +314,17 @@ def test_chart_classification_matches_hill():
 
 def _model(Omega, N, S, R):
     """Derived model of the default booster with the given Omega grid and truncation."""
-    from flexbooster.case import default_case
+    from flexbooster.case import memo_case
     from flexbooster.memo.model import Truncation
     from flexbooster.model import model_from_case
 
-    m = model_from_case(default_case())
+    m = model_from_case(memo_case())
     return dataclasses.replace(m, Omega=np.asarray(Omega, dtype=float),
                                truncation=Truncation(M1=1, N1=1, M2=1, N2=1, N=N, S=S, R=R))
 
 
 def test_analysis_result_is_json_ready_and_consistent():
-    # Pipeline entry point on a composite of the default case's magnitude with a small grid;
+    # Pipeline entry point on a composite of the memo case's magnitude with a small grid;
     # both methods must agree (1e-8), alpha_r Omega_bar stays near omega_r for the weak
     # coupling of a realistic thrust (p ~ 0.02), and to_dict() is strict JSON.
     res = beam_action_analysis(_model(np.linspace(10.0, 600.0, 8), N=4, S=6, R=3), n_hill=3)

@@ -44,9 +44,9 @@ pytestmark = pytest.mark.skipif(_skip_reason() is not None, reason=str(_skip_rea
 
 
 @pytest.fixture(scope="module")
-def report(tmp_path_factory, default_results):
+def report(tmp_path_factory, memo_results):
     folder = tmp_path_factory.mktemp("report")
-    write_outputs(default_results, folder)
+    write_outputs(memo_results, folder)
     return folder / "report.html"
 
 
@@ -191,7 +191,7 @@ def test_first_screen_screenshot_not_blank(loaded):
 
 
 def test_danger_map_has_tooltips(loaded):
-    # one <title> per band of results.danger (18 for the default case: the beam-action bands
+    # one <title> per band of results.danger (18 for the memo case: the beam-action bands
     # of test_beam_action; the pitch is stable), inside the figure's SVG
     n = loaded.execute_script(
         "return document.querySelectorAll('#fig-danger-map svg g > title').length;")

@@ -1,12 +1,20 @@
-"""Case files: units, validation rules and the embedded default case."""
+"""Case files: units, validation rules and the embedded default and memo cases."""
 
 from __future__ import annotations
 
 import math
+import tomllib
 
 import pytest
 
-from flexbooster.case import MAX_MODES, default_case, default_case_text, load_case
+from flexbooster.case import (
+    MAX_MODES,
+    default_case,
+    default_case_text,
+    load_case,
+    memo_case,
+    memo_case_text,
+)
 from flexbooster.errors import CaseError
 from flexbooster.units import to_si, to_us
 
@@ -113,21 +121,50 @@ def test_to_us_rejects_non_finite_values_in_one_line(value, unit, rule):
     assert rule in str(info.value) and "\n" not in str(info.value)
 
 
-def test_default_case_is_valid_and_documented():
-    case = default_case()
-    assert case.booster.cylinder1.radius == 5.05
-    assert case.thrust.F0 == 2.8e6 and case.thrust.T0 is None
-    assert case.T0 == pytest.approx(2.8e6 / (2 * math.pi * 5.05), rel=1e-15)
-    # every field line of the embedded file carries a comment
-    for line in default_case_text().splitlines():
+def _documented(text: str) -> None:
+    """Every field line of an embedded case file carries a comment."""
+    for line in text.splitlines():
         if "=" in line and not line.lstrip().startswith("#") and not line.startswith("name"):
             assert "#" in line, line
 
 
-def test_T0_instead_of_F0(case_dict):
-    del case_dict["thrust"]["F0"]
-    case_dict["thrust"]["T0"] = "500 lbf/in"
-    case = load_case(case_dict)
+def test_default_case_is_the_launch_vehicle_through_its_flight_and_documented():
+    """The default case (`flexbooster init`): a [vehicle] with tanks and a [flight]; the
+    numbers against the sources tagged in the file (exact unit definitions: 1 lbf =
+    4.4482216152605 N, 1 Hz = 2 pi rad/s), to 1e-15 relative."""
+    case = default_case()
+    assert case.booster is None and case.has_segments
+    assert case.F0 == pytest.approx(430000 * LBF, rel=1e-15)  # [W] LR87 thrust
+    assert [t.name for t in case.vehicle.tanks] == ["stage-1 fuel", "stage-1 oxidiser",
+                                                    "stage-2 fuel", "stage-2 oxidiser"]
+    flight = case.flight
+    assert flight.duration == 156.0 and [p.time for p in flight.points] == [0.0, 156.0]
+    for point in flight.points:  # [H] the pogo band 10-12 Hz; one fill per tank
+        assert point.oscillation == pytest.approx((20 * math.pi, 24 * math.pi), rel=1e-15)
+        assert len(point.fill) == len(case.vehicle.tanks)
+    _documented(default_case_text())
+
+
+def test_default_case_round_trips():
+    """The default case through its SI mapping and through TOML text gives the same case
+    (the validated case is a function of its content; frozen models compare by value)."""
+    case = default_case()
+    assert load_case(case.model_dump(exclude_none=True)) == case
+    assert load_case(tomllib.loads(default_case_text())) == case
+
+
+def test_memo_case_is_valid_and_documented():
+    case = memo_case()
+    assert case.booster.cylinder1.radius == 5.05
+    assert case.thrust.F0 == 2.8e6 and case.thrust.T0 is None
+    assert case.T0 == pytest.approx(2.8e6 / (2 * math.pi * 5.05), rel=1e-15)
+    _documented(memo_case_text())
+
+
+def test_T0_instead_of_F0(memo_case_dict):
+    del memo_case_dict["thrust"]["F0"]
+    memo_case_dict["thrust"]["T0"] = "500 lbf/in"
+    case = load_case(memo_case_dict)
     assert case.F0 == pytest.approx(2 * math.pi * 5.05 * 500 * LBF / INCH, rel=1e-14)
 
 
@@ -180,10 +217,10 @@ BAD_INPUTS = [
 
 
 @pytest.mark.parametrize(("path", "value", "field", "rule"), BAD_INPUTS)
-def test_bad_input_names_field_value_and_rule(case_dict, path, value, field, rule):
-    _set(case_dict, path, value)
+def test_bad_input_names_field_value_and_rule(memo_case_dict, path, value, field, rule):
+    _set(memo_case_dict, path, value)
     with pytest.raises(CaseError) as info:
-        load_case(case_dict)
+        load_case(memo_case_dict)
     assert info.value.field == field
     assert rule in info.value.rule
     message = str(info.value)
@@ -203,6 +240,6 @@ def test_file_missing(tmp_path):
 
 
 def test_case_is_frozen():
-    case = default_case()
+    case = memo_case()
     with pytest.raises(Exception):  # noqa: B017 - pydantic raises ValidationError for frozen models
         case.booster.E = 1.0

@@ -14,11 +14,14 @@ from test_case import BAD_INPUTS, _set
 
 
 @pytest.mark.slow
-def test_run_default_writes_results(tmp_path, capsys):
-    assert run_cli(["run", "-o", str(tmp_path), "--full"]) == 0  # --full: every table
+def test_run_memo_writes_results(tmp_path, capsys):
+    assert run_cli(["run", "--memo", "-o", str(tmp_path), "--full"]) == 0  # --full: every table
     out = capsys.readouterr().out
     assert "Mass properties" in out and "omega_1" in out
     data = json.loads((tmp_path / "results.json").read_text())
+    # the overall verdict of results.json is the summary's first line (docs/theory/verdicts.md)
+    assert out.splitlines()[0].startswith(data["verdict"]["overall"] + ": ")
+    assert data["case"]["booster"]["cylinder1"]["radius"] == 5.05  # the memo case's R1
     assert data["schema_version"] == "1.0" and "units" in data
     assert data["mass_properties"]["I_cm"] > 0
     names = {p.name for p in tmp_path.iterdir()}
@@ -34,21 +37,53 @@ def test_run_default_writes_results(tmp_path, capsys):
     assert not [n for n in names if n.endswith(".part")]  # no temporary leftovers
 
 
-@pytest.mark.slow
-def test_init_then_run(tmp_path, capsys):
-    path = tmp_path / "my.toml"
+def test_init_writes_the_launch_vehicle_and_init_memo_the_memo_case(tmp_path, capsys):
+    from flexbooster.case import default_case, load_case, memo_case
+
+    path, memo = tmp_path / "my.toml", tmp_path / "memo.toml"
     assert run_cli(["init", str(path)]) == 0
     assert run_cli(["init", str(path)]) == 2  # refuses to overwrite
     assert "file exists" in capsys.readouterr().err
-    assert run_cli(["run", str(path), "-o", str(tmp_path / "out"), "--no-figures"]) == 0
-    assert (tmp_path / "out" / "results.json").exists()
+    assert run_cli(["init", "--memo", str(memo)]) == 0
+    vehicle = load_case(path)
+    # the launch vehicle: [vehicle] segments with tanks and a [flight], no [booster]
+    assert vehicle == default_case() and vehicle.booster is None
+    assert vehicle.has_segments and vehicle.vehicle.tanks and vehicle.flight is not None
+    # the memo case: [booster] (the memo's two cylinders), no [vehicle], no [flight]
+    assert load_case(memo) == memo_case() and memo_case().booster is not None
+    assert memo_case().vehicle is None and memo_case().flight is None
+    # --memo with a case file: one line naming the option, exit 2
+    assert run_cli(["run", str(path), "--memo", "-o", str(tmp_path / "x")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("flexbooster: error: --memo = ") and len(err.splitlines()) == 1
+    assert not (tmp_path / "x").exists()
+
+
+@pytest.mark.slow
+def test_init_then_run_shows_the_flight(tmp_path, capsys):
+    """The newcomer's first run (`flexbooster init` + `run`): the overall verdict first, then
+    the flight's worst moment in the summary; the flight's files written."""
+    path, out = tmp_path / "my.toml", tmp_path / "out"
+    assert run_cli(["init", str(path)]) == 0
+    capsys.readouterr()
+    assert run_cli(["run", str(path), "-o", str(out), "--no-figures"]) == 0
+    text = capsys.readouterr().out
+    data = json.loads((out / "results.json").read_text())
+    # the overall verdict of results.json is the summary's first line (docs/theory/verdicts.md)
+    assert text.splitlines()[0].startswith(data["verdict"]["overall"] + ": ")
+    assert "Worst moment" in " ".join(text.split())
+    assert {"flight-events.csv", "flight-modes.csv"} <= {p.name for p in out.iterdir()}
+    # 11 frozen times over the 156 s burn (the case's [flight]), every event inside it
+    assert data["flight"]["times_s"] == pytest.approx([15.6 * i for i in range(11)], abs=1e-9)
+    assert data["flight"]["events"]
+    assert all(0.0 <= e["t_start_s"] <= e["t_end_s"] <= 156.0 for e in data["flight"]["events"])
 
 
 @pytest.mark.parametrize(("path", "value", "field", "rule"), BAD_INPUTS)
-def test_bad_input_exit_code_2(case_dict, tmp_path, capsys, path, value, field, rule):
-    _set(case_dict, path, value)
+def test_bad_input_exit_code_2(memo_case_dict, tmp_path, capsys, path, value, field, rule):
+    _set(memo_case_dict, path, value)
     case_file = tmp_path / "bad.toml"
-    case_file.write_text(dump_toml(case_dict))
+    case_file.write_text(dump_toml(memo_case_dict))
     assert run_cli(["run", str(case_file), "-o", str(tmp_path / "out")]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1, err
@@ -63,12 +98,12 @@ def test_not_toml_exit_code_2(tmp_path, capsys):
     assert "not a valid TOML file" in capsys.readouterr().err
 
 
-def test_warning_reaches_summary_and_results(case_dict, tmp_path, capsys):
-    case_dict["booster"]["thickness"] = "0.2 m"  # h/R2 = 0.2/3.3 > 1/20
-    case_dict["truncation"].update(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)  # a second's run
-    case_dict["thrust"]["n_omega"] = 40
+def test_warning_reaches_summary_and_results(memo_case_dict, tmp_path, capsys):
+    memo_case_dict["booster"]["thickness"] = "0.2 m"  # h/R2 = 0.2/3.3 > 1/20
+    memo_case_dict["truncation"].update(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)  # a second's run
+    memo_case_dict["thrust"]["n_omega"] = 40
     case_file = tmp_path / "thick.toml"
-    case_file.write_text(dump_toml(case_dict))
+    case_file.write_text(dump_toml(memo_case_dict))
     assert run_cli(["run", str(case_file), "-o", str(tmp_path), "--no-figures"]) == 0
     assert "thin-shell" in capsys.readouterr().out
     codes = [w["code"] for w in json.loads((tmp_path / "results.json").read_text())["warnings"]]
@@ -76,12 +111,12 @@ def test_warning_reaches_summary_and_results(case_dict, tmp_path, capsys):
 
 
 @pytest.mark.slow
-def test_real_process_no_traceback(tmp_path, case_dict):
+def test_real_process_no_traceback(tmp_path, memo_case_dict):
     """The installed entry point, as a user runs it: exit 2, one line and no traceback, the
     same for a case read from a file and from a pipe."""
     bad = tmp_path / "bad.toml"
-    case_dict["booster"]["E"] = "1 furlong"
-    bad.write_text(dump_toml(case_dict))
+    memo_case_dict["booster"]["E"] = "1 furlong"
+    bad.write_text(dump_toml(memo_case_dict))
     errors = []
     for path, piped in ((bad, None), ("/dev/stdin", bad.read_text())):
         proc = subprocess.run([sys.executable, "-m", "flexbooster", "run", str(path)],
@@ -150,9 +185,9 @@ def test_simulate_bad_input(capsys, args, words):
     assert words in err and "Traceback" not in err
 
 
-def test_format_json_is_results_json(tmp_path, capsys, small_case_file):
+def test_format_json_is_results_json(tmp_path, capsys, small_memo_case_file):
     """--format json prints exactly what results.json holds, and nothing else, on stdout."""
-    code = run_cli(["run", str(small_case_file), "--format", "json", "--no-figures", "-o",
+    code = run_cli(["run", str(small_memo_case_file), "--format", "json", "--no-figures", "-o",
                     str(tmp_path / "out")])
     assert code == 0
     out, err = capsys.readouterr()
@@ -161,12 +196,12 @@ def test_format_json_is_results_json(tmp_path, capsys, small_case_file):
     assert "wrote" in err and "wrote" not in out
 
 
-def test_quiet_prints_nothing(tmp_path, capsys, small_case_file):
+def test_quiet_prints_nothing(tmp_path, capsys, small_memo_case_file):
     out = tmp_path / "out"
-    assert run_cli(["run", str(small_case_file), "-q", "--no-figures", "-o", str(out)]) == 0
+    assert run_cli(["run", str(small_memo_case_file), "-q", "--no-figures", "-o", str(out)]) == 0
     assert capsys.readouterr() == ("", "")
     assert (out / "report.html").exists()  # the work is still done
-    assert run_cli(["stability", str(small_case_file), "-q", "--omega-min", "100",
+    assert run_cli(["stability", str(small_memo_case_file), "-q", "--omega-min", "100",
                     "--omega-max", "150", "-o", str(out)]) == 0
     assert capsys.readouterr() == ("", "")
 
@@ -185,20 +220,20 @@ def test_help_has_examples_and_exit_codes(capsys, argv):
     assert "Exit codes" in out and "130" in out
 
 
-def test_progress_reports_every_stage_in_order(small_case_file):
+def test_progress_reports_every_stage_in_order(small_memo_case_file):
     from flexbooster.analysis import FORCED_STAGE, STAGES, VEHICLE_REGIONS_STAGE, analyze
     from flexbooster.case import load_case
 
     seen = []
-    analyze(load_case(small_case_file), progress=seen.append)
+    analyze(load_case(small_memo_case_file), progress=seen.append)
     assert seen == [*STAGES, VEHICLE_REGIONS_STAGE, FORCED_STAGE]  # the vehicle stages last
     seen.clear()
-    analyze(load_case(small_case_file), beam_action=False, progress=seen.append,
+    analyze(load_case(small_memo_case_file), beam_action=False, progress=seen.append,
             vehicle=False)
     assert seen == [*STAGES[:3], STAGES[-1]]  # the skipped stages are not announced
 
 
-def _bar_text(monkeypatch, tmp_path, case_dict, *options):
+def _bar_text(monkeypatch, tmp_path, memo_case_dict, *options):
     """Run ``flexbooster run`` in-process with its progress bar drawn on a forced terminal;
     return what the bar printed (ANSI codes removed) and the results.json written."""
     import io
@@ -211,7 +246,7 @@ def _bar_text(monkeypatch, tmp_path, case_dict, *options):
         file=buf, force_terminal=True, width=250) if stderr else real(**kw))
     tmp_path.mkdir()
     path = tmp_path / "small.toml"
-    path.write_text(dump_toml(case_dict))
+    path.write_text(dump_toml(memo_case_dict))
     out = tmp_path / "out"
     assert run_cli(["run", str(path), "--no-figures", "--no-vehicle", "-o", str(out),
                     *options]) == 0
@@ -220,7 +255,7 @@ def _bar_text(monkeypatch, tmp_path, case_dict, *options):
 
 
 def test_progress_bar_shows_the_estimate_and_flags_half_the_budget(monkeypatch, tmp_path,
-                                                                   case_dict, capsys):
+                                                                   memo_case_dict, capsys):
     """Issue 18: the bar shows the run's estimated time (cost.estimate_cost of the stages
     run, computed here independently); over half the budget it says so, and the results have
     the cost-estimate warning."""
@@ -228,28 +263,28 @@ def test_progress_bar_shows_the_estimate_and_flags_half_the_budget(monkeypatch, 
     from flexbooster.cost import estimate_cost
     from flexbooster.model import model_from_case
 
-    case_dict["truncation"].update(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)
-    case_dict["thrust"]["n_omega"] = 40
-    seconds = estimate_cost(model_from_case(flexbooster.load_case(case_dict)),
+    memo_case_dict["truncation"].update(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)
+    memo_case_dict["thrust"]["n_omega"] = 40
+    seconds = estimate_cost(model_from_case(flexbooster.load_case(memo_case_dict)),
                             figures=False).seconds
-    text, data = _bar_text(monkeypatch, tmp_path / "a", case_dict)
+    text, data = _bar_text(monkeypatch, tmp_path / "a", memo_case_dict)
     assert f"est. {seconds:.3g} s" in text and "budget" not in text
     assert "cost-estimate" not in {w["code"] for w in data["warnings"]}
     budget = 1.5 * seconds  # the estimate is between half the budget and the budget
-    text, data = _bar_text(monkeypatch, tmp_path / "b", case_dict, "--max-seconds",
+    text, data = _bar_text(monkeypatch, tmp_path / "b", memo_case_dict, "--max-seconds",
                            str(budget))
     assert f"est. {seconds:.3g} s of the {budget:g} s budget" in text
     assert "cost-estimate" in {w["code"] for w in data["warnings"]}
 
 
 @pytest.mark.slow
-def test_two_runs_write_byte_identical_files(tmp_path, case_dict, capsys):
+def test_two_runs_write_byte_identical_files(tmp_path, memo_case_dict, capsys):
     """Determinism (issue 18 item 5): no time stamp in report.html (unless SOURCE_DATE_EPOCH),
     no date in the SVG metadata, fixed SVG ids: two runs of one case give the same bytes."""
-    case_dict["truncation"].update(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)
-    case_dict["thrust"]["n_omega"] = 40
+    memo_case_dict["truncation"].update(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)
+    memo_case_dict["thrust"]["n_omega"] = 40
     path = tmp_path / "small.toml"
-    path.write_text(dump_toml(case_dict))
+    path.write_text(dump_toml(memo_case_dict))
     for out in ("a", "b"):
         assert run_cli(["run", str(path), "-q", "-o", str(tmp_path / out)]) == 0
     names = sorted(p.name for p in (tmp_path / "a").iterdir())
@@ -284,10 +319,10 @@ def test_output_that_is_a_file_is_refused_before_the_analysis(tmp_path, capsys, 
 
 
 def _edited_default(tmp_path, old: str, new: str):
-    """The default case file with one line edited (the error cases of issue 17)."""
-    from flexbooster.case import default_case_text
+    """The memo case file with one line edited (the error cases of issue 17)."""
+    from flexbooster.case import memo_case_text
 
-    text = default_case_text()
+    text = memo_case_text()
     assert old in text
     path = tmp_path / "case.toml"
     path.write_text(text.replace(old, new, 1))
@@ -324,15 +359,15 @@ def test_error_lines(tmp_path, capsys, edit, argv, line):
 
 
 @pytest.mark.slow
-def test_stability_never_replaces_half_of_a_run(tmp_path, capsys, small_case_file):
+def test_stability_never_replaces_half_of_a_run(tmp_path, capsys, small_memo_case_file):
     # issue 17 item 5: `stability -o DIR` used to replace the CSV of a run in DIR while its
     # results.json kept the old numbers; now it writes files of its own, on the case's range
     from flexbooster.cli import STABILITY_FILES
 
     out = tmp_path / "out"
-    assert run_cli(["run", str(small_case_file), "-q", "--no-figures", "-o", str(out)]) == 0
+    assert run_cli(["run", str(small_memo_case_file), "-q", "--no-figures", "-o", str(out)]) == 0
     before = {p.name: p.read_bytes() for p in out.iterdir()}
-    assert run_cli(["stability", str(small_case_file), "-q", "-o", str(out)]) == 0
+    assert run_cli(["stability", str(small_memo_case_file), "-q", "-o", str(out)]) == 0
     after = {p.name: p.read_bytes() for p in out.iterdir()}
     assert {n: after[n] for n in before} == before  # every file of the run untouched
     assert set(after) - set(before) == set(STABILITY_FILES)
@@ -346,10 +381,10 @@ def test_simulate_time_as_a_quantity_quiet_and_json(tmp_path, capsys):
     # issue 17: --t-max "T s" is tau_max = omega_1 T (memo 3.0): the same time histories as
     # --tau-max omega_1 T (to the CSV's printed digits); --quiet prints nothing; --format json
     # prints simulation.json and nothing else on standard output
-    from flexbooster.case import default_case
+    from flexbooster.case import memo_case
     from flexbooster.model import model_from_case
 
-    omega_1 = model_from_case(default_case()).omega_1
+    omega_1 = model_from_case(memo_case()).omega_1
     base = ["simulate", "--omega", "300", "--n-out", "11"]
     assert run_cli([*base, "--t-max", "40 ms", "-q", "-o", str(tmp_path / "a")]) == 0
     assert capsys.readouterr() == ("", "")
@@ -422,13 +457,13 @@ def test_the_command_runs_one_blas_thread_unless_the_user_chose(user, expected):
         assert threads == expected[0]
 
 
-def test_short_summary_by_default(tmp_path, capsys, small_case_file, monkeypatch):
+def test_short_summary_by_default(tmp_path, capsys, small_memo_case_file, monkeypatch):
     """flexbooster run (issue 33): the overall verdict on line 1, the damping stated, no input
     table (those with --full), one line for the files and "open OUT/report.html" last; piped
     at COLUMNS=80 no line is wider than 80 columns and no cell is cut."""
     monkeypatch.setenv("COLUMNS", "80")
     out = tmp_path / "out"
-    assert run_cli(["run", str(small_case_file), "--no-figures", "-o", str(out)]) == 0
+    assert run_cli(["run", str(small_memo_case_file), "--no-figures", "-o", str(out)]) == 0
     lines = capsys.readouterr().out.splitlines()
     assert lines[0].split(":")[0] in ("UNSTABLE", "MARGINAL", "STABLE")
     assert any(line.startswith("damping: ") for line in lines[:8])
@@ -438,7 +473,8 @@ def test_short_summary_by_default(tmp_path, capsys, small_case_file, monkeypatch
     assert "\u2026" not in "".join(lines)
 
 
-def test_a_fault_of_the_summary_loses_no_result(tmp_path, capsys, monkeypatch, small_case_file):
+def test_a_fault_of_the_summary_loses_no_result(tmp_path, capsys, monkeypatch,
+                                                small_memo_case_file):
     """The summary is printed once the files are published: an error in it (a bug) is an
     internal error (exit 1, one line) and the set stays whole."""
     import flexbooster.present.summary as summary
@@ -448,32 +484,32 @@ def test_a_fault_of_the_summary_loses_no_result(tmp_path, capsys, monkeypatch, s
 
     monkeypatch.setattr(summary, "print_summary", broken)
     out = tmp_path / "out"
-    assert run_cli(["run", str(small_case_file), "--no-figures", "-o", str(out)]) == 1
+    assert run_cli(["run", str(small_memo_case_file), "--no-figures", "-o", str(out)]) == 1
     err = capsys.readouterr().err
     assert "internal error: RuntimeError: summary fault" in err
     assert json.loads((out / "results.json").read_text())["stability"]["count"] > 0
     assert (out / "manifest.json").exists()
 
 
-def test_stability_names_the_files_it_writes(tmp_path, capsys, small_case_file):
+def test_stability_names_the_files_it_writes(tmp_path, capsys, small_memo_case_file):
     """Source: the files in the output folder after ``flexbooster stability`` (issue 36: the
     summary named unstable-frequencies.csv and resonance-bands.csv, which it does not write):
     every .csv name the summary prints exists there."""
     import re
 
     out = tmp_path / "out"
-    assert run_cli(["stability", str(small_case_file), "-o", str(out)]) == 0
+    assert run_cli(["stability", str(small_memo_case_file), "-o", str(out)]) == 0
     text = " ".join(capsys.readouterr().out.split())
     named = set(re.findall(r"[\w.-]+\.csv", text))
     assert "stability-unstable-frequencies.csv" in named
     assert named <= {p.name for p in out.iterdir()}, named
 
 
-def test_simulate_lists_the_10_largest_in_10_lines(tmp_path, capsys, small_case_file):
+def test_simulate_lists_the_10_largest_in_10_lines(tmp_path, capsys, small_memo_case_file):
     """Source: the header "the N largest" (issue 36: 13 lines under "the 10 largest"): exactly
     min(10, relevant) indented rows follow it."""
     out = tmp_path / "sim"
-    assert run_cli(["simulate", str(small_case_file), "--omega", "300", "--tau-max", "50",
+    assert run_cli(["simulate", str(small_memo_case_file), "--omega", "300", "--tau-max", "50",
                     "-o", str(out)]) == 0
     lines = capsys.readouterr().out.splitlines()
     (head,) = [i for i, x in enumerate(lines) if x.endswith("largest:")]
@@ -482,12 +518,12 @@ def test_simulate_lists_the_10_largest_in_10_lines(tmp_path, capsys, small_case_
     assert n == 10 and len(rows) == 10
 
 
-def test_simulate_inside_a_beam_action_band_is_refused(tmp_path, capsys, small_case_file):
+def test_simulate_inside_a_beam_action_band_is_refused(tmp_path, capsys, small_memo_case_file):
     """Source: the small case's beam-action band 114.6729..114.6843 rad/s (growth 2.8e-3 1/s,
     beam_action_bands): alpha_1 is complex there, the motion grows and the bounded Floquet
     form cannot show it (issue 36: its real part was used, showing the motion bounded). One
     line naming --omega, exit 2."""
-    assert run_cli(["simulate", str(small_case_file), "--omega", "114.678", "--tau-max", "50",
+    assert run_cli(["simulate", str(small_memo_case_file), "--omega", "114.678", "--tau-max", "50",
                     "-o", str(tmp_path / "sim")]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and err.startswith("flexbooster: error: --omega = ")

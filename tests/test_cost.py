@@ -27,31 +27,31 @@ nan, inf = math.nan, math.inf
 SRC = str(Path(flexbooster.__file__).parents[1])
 
 
-def test_estimate_grows_with_the_fields_that_drive_it(case_dict):
+def test_estimate_grows_with_the_fields_that_drive_it(memo_case_dict):
     """Invariant: each kernel's estimate grows with its driving field (monodromy ~1/Omega,
     Hill ~(N (2 S + 1))^3), and the refusal names those fields once each."""
     def mono(omega_min):
-        case = case_with(case_dict, thrust__n_omega=2, thrust__omega_min=omega_min)
+        case = case_with(memo_case_dict, thrust__n_omega=2, thrust__omega_min=omega_min)
         return cost.estimate_cost(model_from_case(case)).parts["beam-action monodromy"]
 
     assert mono(5.0) > 3.0 * mono(20.0)  # ~1/Omega above the cap
     assert mono(0.05) == mono(0.5)  # bounded below it (MONODROMY_MAX_STEPS)
-    base = cost.estimate_cost(model_from_case(case_with(case_dict)))
-    big = cost.estimate_cost(model_from_case(case_with(case_dict, truncation__S=40)))
+    base = cost.estimate_cost(model_from_case(case_with(memo_case_dict)))
+    big = cost.estimate_cost(model_from_case(case_with(memo_case_dict, truncation__S=40)))
     ratio = big.parts["Hill determinant"] / base.parts["Hill determinant"]
     assert ratio == pytest.approx((81 / 21) ** 3, rel=1e-12)  # the cost model's own law
     assert set(base.to_dict()) >= {"seconds", "parts", "drivers", "capped_points"}
 
 
-def _tongue_case(case_dict, **fields):
+def _tongue_case(memo_case_dict, **fields):
     """The default booster with its Omega range below omega_1 / 4 (113.5 rad/s / 4): the
     rigid-pitch tongues r = 1..4 (tips 2.39 / r rad/s) are searched by harmonic balance."""
     base = dict(thrust__omega_min=0.5, thrust__omega_max=20.0, thrust__n_omega=4,
                 thrust__gamma=0.5, truncation__N=4)
-    return model_from_case(case_with(case_dict, **{**base, **fields}))
+    return model_from_case(case_with(memo_case_dict, **{**base, **fields}))
 
 
-def test_tongue_estimate_grows_with_the_fields_that_drive_it(case_dict):
+def test_tongue_estimate_grows_with_the_fields_that_drive_it(memo_case_dict):
     """Invariants of the pitch-tongue term (cost.TONGUE_PART): none above
     omega_1 / 4 or without pulsation; more with more beam modes (eigenproblems of order
     ~ (N + 1) K) and with pitch damping (the critical gamma's bisection); named fields."""
@@ -59,7 +59,7 @@ def test_tongue_estimate_grows_with_the_fields_that_drive_it(case_dict):
 
     def part(**fields):  # undamped unless the damping is given (the memo's idealisation)
         fields = {"damping": {"modal_ratio": 0.0}, **fields}
-        est = cost.estimate_cost(_tongue_case(_copy.deepcopy(case_dict), **fields))
+        est = cost.estimate_cost(_tongue_case(_copy.deepcopy(memo_case_dict), **fields))
         return est.parts.get(cost.TONGUE_PART, 0.0), est
 
     base, est = part()
@@ -71,15 +71,15 @@ def test_tongue_estimate_grows_with_the_fields_that_drive_it(case_dict):
 
 
 def test_tongue_search_limit_is_a_gap_a_warning_and_no_stable_verdict(monkeypatch,
-                                                                        case_dict):
+                                                                        memo_case_dict):
     """A tongue search cut by its order limit (TONGUE_MAX_ORDER, set to 0 here: no tongue
     searched) leaves a SearchGap in the result (stage, limit, first order left out, its
     Omega range), a warning (code beam-action-not-fully-searched, field the limit) and the
     verdict "not fully searched", never "stable"; results.json holds the gap."""
     monkeypatch.setattr(ba, "TONGUE_MAX_ORDER", 0)
-    case_dict["truncation"].update(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)
-    case_dict["thrust"].update(omega_min=0.5, omega_max=20.0, n_omega=4)
-    res = analyze(flexbooster.load_case(case_dict), figures=False, vehicle=False)
+    memo_case_dict["truncation"].update(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)
+    memo_case_dict["thrust"].update(omega_min=0.5, omega_max=20.0, n_omega=4)
+    res = analyze(flexbooster.load_case(memo_case_dict), figures=False, vehicle=False)
     (gap,) = res.beam_action.gaps
     assert (gap.stage, gap.limit, gap.order) == ("beam_action", "TONGUE_MAX_ORDER", 1)
     assert gap.Omega_lo == 0.5 and 0.5 < gap.Omega_hi <= 20.0 and not res.beam_action.bands
@@ -89,12 +89,12 @@ def test_tongue_search_limit_is_a_gap_a_warning_and_no_stable_verdict(monkeypatc
     assert res.to_dict()["beam_action"]["gaps"] == [gap.to_dict()]
 
 
-def test_huge_truncation_is_refused_up_front_in_one_line(case_dict, tmp_path, capsys):
+def test_huge_truncation_is_refused_up_front_in_one_line(memo_case_dict, tmp_path, capsys):
     """A reported M = N = 100, beam N = 50, S = 50 case (9 minutes, 8 GB, no output) is
     refused before any solver runs: exit 2, one line, estimate and driving fields."""
-    case_dict["truncation"].update(M1=100, N1=100, M2=100, N2=100, N=50, S=50)
+    memo_case_dict["truncation"].update(M1=100, N1=100, M2=100, N2=100, N=50, S=50)
     path = tmp_path / "huge.toml"
-    path.write_text(dump_toml(case_dict))
+    path.write_text(dump_toml(memo_case_dict))
     assert run_cli(["run", str(path), "-q", "-o", str(tmp_path / "out")]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and err.count("max_seconds") == 1
@@ -102,17 +102,17 @@ def test_huge_truncation_is_refused_up_front_in_one_line(case_dict, tmp_path, ca
     assert not (tmp_path / "out" / "results.json").exists()
 
 
-def test_budget_option_refuses_and_case_field_is_used(case_dict, tmp_path, capsys):
+def test_budget_option_refuses_and_case_field_is_used(memo_case_dict, tmp_path, capsys):
     assert run_cli(["run", "-q", "--max-seconds", "0.5", "-o", str(tmp_path)]) == 2
     assert "estimated run time" in capsys.readouterr().err
     with pytest.raises(CaseError, match="max_seconds"):
-        analyze(case_with(case_dict, max_seconds=0.5))
+        analyze(case_with(memo_case_dict, max_seconds=0.5))
 
 
 def test_monodromy_cap_error_against_four_times_the_steps():
     """Source: the same monodromy with 4x the steps; tolerance 1e-6 on the reduced exponents
     (measured 1.6e-7 with a cap of 2048 at Omega_bar = 0.005, where the rule asks 2e4)."""
-    model = model_from_case(flexbooster.default_case())
+    model = model_from_case(flexbooster.memo_case())
     system = ba.beam_system(model, N=4)
     Om = np.array([0.005 * system.omega_1])
     assert ba.monodromy_steps(system, Om, model.gamma)[0] > 2048
@@ -123,11 +123,11 @@ def test_monodromy_cap_error_against_four_times_the_steps():
 
 
 @pytest.mark.slow
-def test_low_omega_runs_bounded_with_a_warning(case_dict, alarm):
+def test_low_omega_runs_bounded_with_a_warning(memo_case_dict, alarm):
     """A reported omega_min = 0.05 rad/s case (39 s in the monodromy alone): capped steps,
     finite results and the warning that names the cap."""
-    case = case_with(case_dict, thrust__omega_min=0.05, thrust__n_omega=3, thrust__omega_max=50.0,
-                 truncation__N=2, truncation__S=2, truncation__R=2)
+    case = case_with(memo_case_dict, thrust__omega_min=0.05, thrust__n_omega=3,
+                     thrust__omega_max=50.0, truncation__N=2, truncation__S=2, truncation__R=2)
     with warnings.catch_warnings():
         warnings.simplefilter("error", RuntimeWarning)
         res = analyze(case, stability=False, figures=False)

@@ -29,11 +29,11 @@ OPERATING = (10.0, 100.0)
 
 
 @pytest.fixture(scope="module")
-def default_results():
+def memo_results():
     from flexbooster.analysis import analyze
-    from flexbooster.case import default_case
+    from flexbooster.case import memo_case
 
-    return analyze(default_case(), stability=False, figures=False)
+    return analyze(memo_case(), stability=False, figures=False)
 
 
 def _band(mechanism, lo, hi, g=0.0, *, kind="simple", order=1, modes=(), **extra):
@@ -216,11 +216,11 @@ def test_summary_to_dict_is_json():
 
 
 @pytest.mark.slow
-def test_default_case_top_band_is_the_beam_action_maximum(default_results):
+def test_memo_case_top_band_is_the_beam_action_maximum(memo_results):
     # two paths to one number: the first ranked band's growth rate equals the beam action's
     # own largest growth rate (memo 4.1 bands, exact maxima; 1e-12 relative), and every band
     # of the pitch and the beam action is listed once
-    r = default_results
+    r = memo_results
     assert r.danger is not None
     top = r.danger.bands[0]
     assert top.mechanism == "beam_action"

@@ -29,7 +29,7 @@ from flexbooster.analysis import (
     analyze_forced_response,
     forced_stations,
 )
-from flexbooster.case import default_case_text, load_case
+from flexbooster.case import load_case, memo_case_text
 from flexbooster.cli import main
 from flexbooster.cost import estimate_vehicle_cost
 from flexbooster.dynamics import ThrustSpectrum, forced_response
@@ -71,9 +71,9 @@ station = "300 cm"
 
 
 def _case_text(thrust: str = "", damping: str = "pitch_ratio = 0.02", extra: str = "") -> str:
-    """The default case with README's [vehicle], thrust lines inserted after [thrust], a
+    """The memo case with README's [vehicle], thrust lines inserted after [thrust], a
     [damping] table and extra tables (TOML text: arrays of tables need no writer)."""
-    text = default_case_text().replace("[thrust]\n", f"[thrust]\n{thrust}\n", 1)
+    text = memo_case_text().replace("[thrust]\n", f"[thrust]\n{thrust}\n", 1)
     # one vehicle per case: README's [vehicle] segments replace the memo's [booster]
     text = text[:text.index("[booster]")] + text[text.index("[thrust]"):]
     text = re.sub(r"^\[damping\][^\[]*", "", text, flags=re.M)  # the test's own [damping]
@@ -108,10 +108,10 @@ def test_case_fields_in_si(tmp_path):
                                                                    ("mid", 3.0)]
 
 
-def test_defaults_leave_results_case_unchanged(case_dict):
+def test_defaults_leave_results_case_unchanged(memo_case_dict):
     """Without the fields: misalignment 0, no spectrum, no stations; ``output`` stays out of
     results.json's case as before (source: Case.to_si_dict's rule for the default table)."""
-    case = flexbooster.load_case(case_dict)
+    case = flexbooster.load_case(memo_case_dict)
     assert case.thrust.misalignment == 0.0 and case.thrust.spectrum is None
     assert case.output.stations == () and "output" not in case.to_si_dict()
 
@@ -292,7 +292,7 @@ def test_lumped_mass_stations_are_named():
     """Each lumped mass of the vehicle is a station (its name, else "mass-i"), before the
     user's; a name a user station has is made distinct (source: the rule of forced_stations).
     A stand-in vehicle carries the masses (the case file's [[vehicle.masses]] is not merged)."""
-    case = flexbooster.default_case()
+    case = flexbooster.memo_case()
     mass = types.SimpleNamespace
     stand_in = types.SimpleNamespace(masses=(mass(name="", station=3.0),
                                              mass(name="payload", station=50.0)))
@@ -317,17 +317,17 @@ def test_cost_counts_the_forced_stage(tmp_path):
     assert "vehicle forced response" not in estimate_vehicle_cost(case0).parts
 
 
-def test_no_vehicle_skips_the_stage(small_case_file):
+def test_no_vehicle_skips_the_stage(small_memo_case_file):
     """``analyze(vehicle=False)`` (``--no-vehicle``) neither announces nor computes it."""
     seen = []
-    res = analyze(load_case(small_case_file), progress=seen.append, vehicle=False,
+    res = analyze(load_case(small_memo_case_file), progress=seen.append, vehicle=False,
                   figures=False)
     assert FORCED_STAGE not in seen and res.forced_response is None
     assert res.to_dict()["forced_response"] is None
 
 
 @pytest.mark.slow
-def test_summary_report_and_figures_read_the_stored_data(case_dict, tmp_path):
+def test_summary_report_and_figures_read_the_stored_data(memo_case_dict, tmp_path):
     """The summary and report sections show the stored peaks; the figures draw the stored
     curves (compute -> data -> plot): the acceleration lines equal |a| / g at the stations, the
     envelope line |N| at the worst Omega (exact)."""
@@ -335,9 +335,9 @@ def test_summary_report_and_figures_read_the_stored_data(case_dict, tmp_path):
     from flexbooster.present.report import render_report
     from flexbooster.present.summary import print_summary
 
-    case_dict["truncation"].update(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)
-    case_dict["thrust"]["n_omega"] = 40
-    res = analyze(flexbooster.load_case(case_dict))
+    memo_case_dict["truncation"].update(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)
+    memo_case_dict["thrust"]["n_omega"] = 40
+    res = analyze(flexbooster.load_case(memo_case_dict))
     loads = res.forced_response
     console = Console(record=True, width=200)
     print_summary(res, console)

@@ -65,7 +65,7 @@ def _log_uniform(lo: float, hi: float):
 
 @st.composite
 def valid_cases(draw) -> dict:
-    """A case inside the documented ranges (case.py, default_case.toml), small truncations."""
+    """A case inside the documented ranges (case.py, memo_case.toml), small truncations."""
     r1 = draw(_log_uniform(0.2, 50.0))
     r2 = draw(_log_uniform(0.2, 50.0))
     h = min(r1, r2) * draw(_log_uniform(1e-4, 0.5))  # 0 < h < R (h/R > 1/20 warns)

@@ -493,7 +493,7 @@ def test_a_band_search_past_the_toolkit_limits_is_a_case_error(monkeypatch):
     a one-line CaseError naming truncation.N (exit 2), not the toolkit's
     TooManyCandidatesError (exit 1)."""
     monkeypatch.setattr(ba, "BAND_MAX_CANDIDATES", 10)
-    model = model_from_case(flexbooster.default_case())
+    model = model_from_case(flexbooster.memo_case())
     with pytest.raises(CaseError, match=r"^truncation\.N = 10: the beam-action band search"):
         analysis._beam_action(model)
 
@@ -508,7 +508,7 @@ def test_fuzz_reproducer_memo_vehicle_70_km_forward_cylinder():
     memo's own analysis stands)."""
     from flexbooster.shell_of_revolution.assembly import MAX_ELEMENTS, auto_element_counts
 
-    data = copy.deepcopy(flexbooster.default_case().model_dump(exclude_none=True))
+    data = copy.deepcopy(flexbooster.memo_case().model_dump(exclude_none=True))
     data["booster"]["cylinder2"]["half_length"] = 35_000.0
     data["thrust"].update(F0=1000.0, n_omega=20)
     data["truncation"].update(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)
@@ -525,7 +525,7 @@ def test_fuzz_reproducer_memo_vehicle_70_km_forward_cylinder():
         analyze(flexbooster.load_case(data), figures=False)
     assert info.value.field == "booster.cylinder2.half_length"
     # the default vehicle is within the limit
-    assert max(auto_element_counts(vehicle_from_case(flexbooster.default_case()))) <= MAX_ELEMENTS
+    assert max(auto_element_counts(vehicle_from_case(flexbooster.memo_case()))) <= MAX_ELEMENTS
 
 
 def test_fuzz_reproducer_segments_pitch_beyond_the_mathieu_range():

@@ -16,7 +16,7 @@ import flexbooster
 from conftest import case_with, dump_toml, run_cli
 from flexbooster import cost
 from flexbooster.analysis import analyze
-from flexbooster.case import default_case_text
+from flexbooster.case import memo_case_text
 from flexbooster.errors import CaseError
 from flexbooster.model import model_from_case
 from test_case import BAD_INPUTS, _set
@@ -28,20 +28,20 @@ SRC = str(Path(flexbooster.__file__).parents[1])
 # --------------------------------------------------------------------------------------------
 @pytest.mark.parametrize(("F0", "word"), [(1e12, "flutter"), (1e10, "divergence")],
                          ids=["F0=1e12-flutter", "F0=1e10-divergence"])
-def test_load_beyond_the_structure_is_a_case_error(case_dict, F0, word):
+def test_load_beyond_the_structure_is_a_case_error(memo_case_dict, F0, word):
     """Source: the eigenvalues of the steady system Lambda + B (complex at 1e12 N, negative
     at 1e10 N for the default booster): a CaseError naming thrust.F0, not a LinAlgError."""
     with pytest.raises(CaseError) as info:
-        analyze(case_with(case_dict, thrust__F0=F0), figures=False)
+        analyze(case_with(memo_case_dict, thrust__F0=F0), figures=False)
     assert info.value.field == "thrust.F0" and word in str(info.value)
 
 
-def test_shell_buckling_is_a_named_warning(case_dict):
+def test_shell_buckling_is_a_named_warning(memo_case_dict):
     """Source: 2 pi E h^2 / sqrt(3 (1 - nu^2)) (Timoshenko & Gere 11-17), exact formula."""
-    model = model_from_case(case_with(case_dict))
+    model = model_from_case(case_with(memo_case_dict))
     f_cr = 2 * math.pi * model.E * model.h**2 / math.sqrt(3 * (1 - model.nu**2))
     assert cost.physical_warnings(model) == []
-    above = model_from_case(case_with(case_dict, thrust__F0=1.01 * f_cr))
+    above = model_from_case(case_with(memo_case_dict, thrust__F0=1.01 * f_cr))
     assert [w.code for w in cost.physical_warnings(above)] == ["shell-buckling"]
 
 
@@ -69,10 +69,10 @@ _PROBES = [(p, v, f) for p, v, f, _ in BAD_INPUTS] + EXTRA_PROBES
 @pytest.mark.parametrize(("path", "value", "field"), _PROBES,
                          ids=[f"{p}={'<deleted>' if type(v) is object else repr(v)}"[:40]
                               for p, v, _ in _PROBES])  # stable ids (pytest-xdist collects twice)
-def test_bad_case_probe_exit_2_one_line(case_dict, tmp_path, capsys, path, value, field):
-    _set(case_dict, path, value)
+def test_bad_case_probe_exit_2_one_line(memo_case_dict, tmp_path, capsys, path, value, field):
+    _set(memo_case_dict, path, value)
     case = tmp_path / "bad.toml"
-    case.write_text(dump_toml(case_dict))
+    case.write_text(dump_toml(memo_case_dict))
     assert run_cli(["run", str(case), "-q", "--no-figures", "-o", str(tmp_path / "o")]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1 and err.startswith("flexbooster: error: ")
@@ -97,13 +97,13 @@ ISSUE36_PROBES = [
 
 @pytest.mark.parametrize(("path", "value", "rule"), ISSUE36_PROBES,
                          ids=[f"{p}={v!r}" for p, v, _ in ISSUE36_PROBES])
-def test_issue36_bad_value_is_one_line_naming_field_value_rule(case_dict, tmp_path, capsys,
+def test_issue36_bad_value_is_one_line_naming_field_value_rule(memo_case_dict, tmp_path, capsys,
                                                                path, value, rule):
     """Source: the issue's list; each refused before any solver (exit 2, one line, no
     RuntimeWarning) with the field, the value as written and the rule."""
-    _set(case_dict, path, value)
+    _set(memo_case_dict, path, value)
     case = tmp_path / "bad.toml"
-    case.write_text(dump_toml(case_dict))
+    case.write_text(dump_toml(memo_case_dict))
     assert run_cli(["run", str(case), "-q", "--no-figures", "-o", str(tmp_path / "o")]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1, err
@@ -208,10 +208,10 @@ def test_case_file_that_is_not_a_regular_file_is_refused(tmp_path, capsys, alarm
 def test_case_file_with_a_utf8_byte_order_mark_is_read(tmp_path):
     """Source: the Unicode standard (U+FEFF at the start of a UTF-8 file is a signature, not
     content): the same case as without the mark, field for field."""
-    text = default_case_text()
+    text = memo_case_text()
     path = tmp_path / "bom.toml"
     path.write_bytes(b"\xef\xbb\xbf" + text.encode("utf-8"))
-    assert flexbooster.load_case(path) == flexbooster.default_case()
+    assert flexbooster.load_case(path) == flexbooster.memo_case()
 
 
 @pytest.mark.parametrize("source", [42, None, 3.5, b"case.toml"])

@@ -59,10 +59,10 @@ def test_a_nan_in_the_stability_table_is_named_and_nothing_is_published(tmp_path
     import dataclasses
 
     from flexbooster import analysis
-    from flexbooster.case import default_case, load_case
+    from flexbooster.case import load_case, memo_case
     from flexbooster.present.outputs import write_outputs
 
-    data = default_case().model_dump(exclude_none=True)
+    data = memo_case().model_dump(exclude_none=True)
     data["thrust"]["n_omega"] = 40
     data["truncation"].update(M1=6, N1=6, M2=6, N2=6, N=4, S=4, R=3)
     results = analysis.analyze(load_case(data), figures=False, vehicle=False)

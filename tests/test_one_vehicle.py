@@ -2,7 +2,7 @@
 
 Tiers:
 
-* exact limits: the default case written as an equivalent ``[vehicle]`` (two cylinder
+* exact limits: the memo case written as an equivalent ``[vehicle]`` (two cylinder
   segments, a "memo-bulkhead" junction, "shear-diaphragm" ends, [booster]'s material) gives
   the vehicle modes and the vehicle regions of the memo vehicle that ``model.vehicle_from_case``
   builds from ``[booster]`` (rel. 1e-12: the same shell of revolution reached two ways);
@@ -31,7 +31,7 @@ from rich.console import Console
 
 from conftest import run_cli
 from flexbooster.analysis import analyze, analyze_vehicle, analyze_vehicle_regions
-from flexbooster.case import default_case, default_case_text, load_case
+from flexbooster.case import load_case, memo_case, memo_case_text
 from flexbooster.errors import CaseError
 from flexbooster.memo.pitch import pitch_analysis
 from flexbooster.model import MEMO_NOT_APPLICABLE, model_from_case, vehicle_from_case
@@ -47,7 +47,7 @@ from flexbooster.shell_of_revolution import (
 )
 
 SEGMENT_TOML = """
-name = "the default case as vehicle segments"
+name = "the memo case as vehicle segments"
 [thrust]
 F0 = "2.8 MN"
 gamma = 0.05
@@ -80,7 +80,7 @@ VEHICLE_TOML = SEGMENT_TOML[SEGMENT_TOML.index("[vehicle]"):]
 
 
 def _segments() -> dict:
-    """The default case (src/flexbooster/data/default_case.toml) as its equivalent [vehicle]:
+    """The memo case (src/flexbooster/data/memo_case.toml) as its equivalent [vehicle]:
     cylinder 1 (R1 = 5.05 m, 2 L1 = 42 m), cylinder 2 (R2 = 3.30 m, 2 L2 = 18 m), h = 20 mm,
     the same material and thrust."""
     return tomllib.loads(SEGMENT_TOML)
@@ -109,14 +109,14 @@ def _close(a, b, rtol: float, where: str = "") -> None:
 def test_booster_and_segments_is_one_line_error(tmp_path, capsys):
     """[booster] and [[vehicle.segments]] together: a CaseError naming both tables (exit 2,
     one line)."""
-    data = tomllib.loads(default_case_text())
+    data = tomllib.loads(memo_case_text())
     data["vehicle"] = _segments()["vehicle"]
     with pytest.raises(CaseError) as info:
         load_case(data)
     assert info.value.field == "booster/vehicle.segments"
     assert "[booster]" in info.value.rule and "[[vehicle.segments]]" in info.value.rule
     path = tmp_path / "both.toml"
-    path.write_text(default_case_text() + "\n" + VEHICLE_TOML)
+    path.write_text(memo_case_text() + "\n" + VEHICLE_TOML)
     assert run_cli(["modes", str(path)]) == 2
     err = capsys.readouterr().err.strip()
     assert err.startswith("flexbooster: error: booster/vehicle.segments = 'both'")
@@ -149,7 +149,7 @@ def test_segments_without_a_material_name_the_field(name):
     assert info.value.field == f"vehicle.segments[1].{name}"
     data["vehicle"]["segments"][1][name] = value
     assert getattr(vehicle_from_case(load_case(data)).segments[1], name) == getattr(
-        default_case().booster, name)
+        memo_case().booster, name)
 
 
 def test_t0_is_per_unit_circumference_of_the_first_segment():
@@ -169,11 +169,11 @@ def test_t0_is_per_unit_circumference_of_the_first_segment():
 
 @pytest.mark.slow
 def test_equivalent_vehicle_gives_the_memo_vehicle_modes_and_regions():
-    """Acceptance (issue 32): the default case as [booster] and as its equivalent [vehicle]
+    """Acceptance (issue 32): the memo case as [booster] and as its equivalent [vehicle]
     give the same vehicle modes (k = 0..20, prestressed by F0) and the same vehicle regions
     (every number of VehicleRegions.to_dict) to rel. 1e-12. Source: the memo vehicle built
     from [booster] by model.vehicle_from_case."""
-    memo, seg = default_case(), load_case(_segments())
+    memo, seg = memo_case(), load_case(_segments())
     assert vehicle_from_case(memo) == vehicle_from_case(seg)
     a, b = analyze_vehicle(memo, views=False), analyze_vehicle(seg, views=False)
     assert (a.source, b.source) == ("memo", "vehicle")
@@ -194,7 +194,7 @@ def test_vehicle_pitch_equals_the_memo_pitch(segment_results):
     the walls, d = the centre of mass from the aft edge) equals the memo's (closed-form mass
     properties of the two cylinders, memo 2.2, eq. 4.2-1, erratum E1/E2) to rel. 1e-12, and
     the pitch's Mathieu exponents and bands equal the memo's to rel. 1e-12."""
-    model = model_from_case(default_case())
+    model = model_from_case(memo_case())
     res = segment_results
     assert res.omega_psi == pytest.approx(model.omega_psi, rel=1e-12)
     m = res.vehicle_mass
@@ -265,7 +265,7 @@ def test_modes_without_thrust_is_unloaded(tmp_path, capsys):
     path = tmp_path / "nothrust.toml"
     path.write_text(VEHICLE_TOML)
     booster = tmp_path / "booster.toml"
-    text = default_case_text()
+    text = memo_case_text()
     booster.write_text(text[:text.index("[thrust]")] + text[text.index("[truncation]"):])
     for file in (path, booster):
         assert run_cli(["modes", str(file), "--k-max", "2", "--format", "json"]) == 0

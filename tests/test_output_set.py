@@ -28,8 +28,8 @@ nan, inf = math.nan, math.inf
 SRC = str(Path(flexbooster.__file__).parents[1])
 
 
-def _small_case(tmp_path: Path, case_dict: dict, name: str, n_omega: int = 30) -> Path:
-    d = json.loads(json.dumps(case_dict))
+def _small_case(tmp_path: Path, memo_case_dict: dict, name: str, n_omega: int = 30) -> Path:
+    d = json.loads(json.dumps(memo_case_dict))
     d["name"] = name
     d["truncation"].update(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)
     d["thrust"]["n_omega"] = n_omega
@@ -98,16 +98,16 @@ MOMENTS = (*STAGES, VEHICLE_REGIONS_STAGE, FORCED_STAGE, *OUTPUT_STAGES)
 
 
 @pytest.mark.slow
-def test_signal_at_ten_moments_no_part_file_never_a_mixed_set(tmp_path, case_dict):
+def test_signal_at_ten_moments_no_part_file_never_a_mixed_set(tmp_path, memo_case_dict):
     """SIGTERM and SIGINT (alternately) at the 10 moments above, over a complete previous set,
     each sent by the process to itself from a thread when the stage starts (the signal lands
     inside the stage's work).  Each run must end by exit 130 with one line "interrupted" and
     no traceback, leave no .part file and no staging folder, and leave one whole set
     (results.json and report.html of one case, manifest verified)."""
     out = tmp_path / "out"
-    assert _cli(str(_small_case(tmp_path, case_dict, "old-case")), "-o", str(out)).wait(
+    assert _cli(str(_small_case(tmp_path, memo_case_dict, "old-case")), "-o", str(out)).wait(
         timeout=300) == 0
-    new = _small_case(tmp_path, case_dict, "new-case")
+    new = _small_case(tmp_path, memo_case_dict, "new-case")
     for i, moment in enumerate(MOMENTS):
         sig = "SIGTERM" if i % 2 else "SIGINT"
         proc = _driven(moment, sig, "thread", str(new), "-o", str(out))
@@ -192,7 +192,7 @@ def test_late_signal_never_ends_the_process_by_the_signal(when, code):
         assert proc.stderr.endswith("flexbooster: error: interrupted\n")
 
 
-def test_interrupt_at_each_file_of_the_set_keeps_the_previous_set(tmp_path, case_dict,
+def test_interrupt_at_each_file_of_the_set_keeps_the_previous_set(tmp_path, memo_case_dict,
                                                                   capsys, monkeypatch):
     """Ctrl-C while the n-th file of the new set is being written (a KeyboardInterrupt from
     its fsync: the temporary file exists, half the set is staged), for every n, in-process
@@ -200,9 +200,9 @@ def test_interrupt_at_each_file_of_the_set_keeps_the_previous_set(tmp_path, case
     the previous set whole (manifest verified) and nothing of the new one."""
     out = tmp_path / "out"
     args = ["run", "-q", "--no-vehicle", "--no-figures", "-o", str(out)]
-    assert run_cli([*args, str(_small_case(tmp_path, case_dict, "old-case"))]) == 0
+    assert run_cli([*args, str(_small_case(tmp_path, memo_case_dict, "old-case"))]) == 0
     old = check_output_set(out)
-    new = str(_small_case(tmp_path, case_dict, "new-case"))
+    new = str(_small_case(tmp_path, memo_case_dict, "new-case"))
     real = os.fsync
     for n in range(1, len(old) + 1):  # the set's files less the manifest, and the report
         calls = []
@@ -247,9 +247,9 @@ def test_signal_is_held_during_the_renames_with_another_thread_alive():
 
 
 @pytest.mark.slow
-def test_two_concurrent_runs_give_one_consistent_set(tmp_path, case_dict):
+def test_two_concurrent_runs_give_one_consistent_set(tmp_path, memo_case_dict):
     out = tmp_path / "out"
-    procs = [_cli(str(_small_case(tmp_path, case_dict, name)), "--no-figures", "-o", str(out))
+    procs = [_cli(str(_small_case(tmp_path, memo_case_dict, name)), "--no-figures", "-o", str(out))
              for name in ("case-a", "case-b")]
     for proc in procs:
         _, err = proc.communicate(timeout=180)
@@ -297,18 +297,18 @@ def test_unwritable_output_is_refused_before_the_analysis(tmp_path, capsys, monk
 
 
 @pytest.mark.slow
-def test_run_output_names_are_all_checked_up_front(tmp_path, small_case_file):
+def test_run_output_names_are_all_checked_up_front(tmp_path, small_memo_case_file):
     """Source: the files a real run writes (every stage, figures included): each is one of
     SET_NAMES, the names check_output_folder looks at before the analysis."""
     from flexbooster.present.outputs import SET_NAMES
 
     out = tmp_path / "out"
-    assert run_cli(["run", str(small_case_file), "-q", "-o", str(out)]) == 0
+    assert run_cli(["run", str(small_memo_case_file), "-q", "-o", str(out)]) == 0
     written = {p.name for p in out.iterdir()}
     assert written - set(SET_NAMES) == set() and "danger-map.svg" in written
 
 
-def test_full_disk_names_the_file_exit_2(tmp_path, capsys, monkeypatch, small_case_file):
+def test_full_disk_names_the_file_exit_2(tmp_path, capsys, monkeypatch, small_memo_case_file):
     """Source: POSIX write(2)/fsync(2) report ENOSPC without a file name; the message names the
     file being written (exit 2, one line) and the folder keeps no part file."""
     import errno
@@ -320,7 +320,7 @@ def test_full_disk_names_the_file_exit_2(tmp_path, capsys, monkeypatch, small_ca
 
     monkeypatch.setattr(io.os, "fsync", full)
     out = tmp_path / "out"
-    assert run_cli(["run", str(small_case_file), "-q", "--no-figures", "-o", str(out)]) == 2
+    assert run_cli(["run", str(small_memo_case_file), "-q", "--no-figures", "-o", str(out)]) == 2
     err = capsys.readouterr().err.strip()
     assert len(err.splitlines()) == 1, err
     assert err.startswith("flexbooster: error: ") and err.endswith(

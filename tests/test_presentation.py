@@ -1,7 +1,7 @@
 """The answer first (issue 17): the terminal summary and the report's first screen, the danger
 map, the number formats.
 
-The default case is analysed once (about 12 s); every check reads that analysis.
+The memo case is analysed once (about 12 s); every check reads that analysis.
 """
 
 from __future__ import annotations
@@ -20,8 +20,8 @@ from flexbooster.present.summary import TERMINAL_BANDS, print_summary
 
 
 @pytest.fixture(scope="module")
-def results(default_results):
-    return default_results
+def results(memo_results):
+    return memo_results
 
 
 def _summary_text(results, width: int, *, full: bool = True) -> str:
@@ -105,7 +105,7 @@ def test_report_first_screen_and_print_css(results):
 
 
 def test_maximum_of_nothing_is_a_dash_and_round_off_is_zero(results):
-    # the default case's pitch is stable: its "largest growth rate" is "-", not 0;
+    # the memo case's pitch is stable: its "largest growth rate" is "-", not 0;
     # a value below ROUND_OFF (1e-14) is printed as 0
     html = render_report(results)
     assert results.pitch.bands == ()
@@ -182,9 +182,9 @@ def test_figures_drawn_in_processes_are_the_figures_drawn_here(results):
     assert render_figures(results, processes=2) == here
 
 
-def test_danger_map_tooltips_and_axes(results, default_svgs):
+def test_danger_map_tooltips_and_axes(results, memo_svgs):
     # one SVG <title> per band, no script, Omega in Hz on the x axis
-    svg = default_svgs["danger-map"]
+    svg = memo_svgs["danger-map"]
     titles = re.findall(r"<title>([^<]*)</title>", svg)
     # one tooltip per band (a resonance's stem and its head carry the same one)
     assert len(set(titles)) == len(results.danger.bands)
@@ -221,11 +221,11 @@ def test_us_units_beside_si(results):
     assert "output" not in results.case.to_si_dict()
 
 
-def test_output_units_error_line(case_dict):
+def test_output_units_error_line(memo_case_dict):
     from flexbooster.case import load_case
     from flexbooster.errors import CaseError
 
-    case_dict["output"] = {"units": "SU"}
+    memo_case_dict["output"] = {"units": "SU"}
     with pytest.raises(CaseError) as info:
-        load_case(case_dict)
+        load_case(memo_case_dict)
     assert str(info.value) == "output.units = 'SU': must be 'SI' or 'US'"

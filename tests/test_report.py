@@ -34,13 +34,13 @@ SVG = "{http://www.w3.org/2000/svg}"
 
 
 @pytest.fixture(scope="module")
-def results(default_results):
-    return default_results
+def results(memo_results):
+    return memo_results
 
 
 @pytest.fixture(scope="module")
-def svgs(default_svgs):
-    return default_svgs
+def svgs(memo_svgs):
+    return memo_svgs
 
 
 @pytest.fixture(scope="module")
@@ -156,7 +156,7 @@ def test_verification_rows_name_real_tests(page):
 def test_inputs_and_results_shown_with_units(results, page):
     root = parse(page)
     inputs = {row[0]: row[1:] for row in cells(root, "inputs")}
-    # the default case file: R1 = 5.05 m, gamma = 0.05 (flexbooster/data/default.toml)
+    # the memo case file: R1 = 5.05 m, gamma = 0.05 (flexbooster/data/memo_case.toml)
     assert inputs["cylinder 1 (aft) radius R1"] == ["5.05", "m"]
     assert inputs["pulsation amplitude gamma, T = T0 (1 - gamma cos Omega t)"] == ["0.05", "-"]
     mass = {row[0]: row[1:] for row in cells(root, "mass-properties")}
@@ -177,7 +177,7 @@ def test_unstable_table_active_first_and_capped(results, page):
     rows = rows[11:]  # after the roots' header row
     assert len(rows) == min(len(st), MAX_UNSTABLE_ROWS)
     n_active = int(st.active.sum())
-    assert len(st) > MAX_UNSTABLE_ROWS  # the default case exercises the cap
+    assert len(st) > MAX_UNSTABLE_ROWS  # the memo case exercises the cap
     assert f"The first {MAX_UNSTABLE_ROWS} of {len(st)}" in page
     expected = ["active"] * min(n_active, len(rows)) + ["listed"] * (len(rows) - n_active)
     assert [r[-1] for r in rows] == expected

@@ -20,7 +20,7 @@ import numpy as np
 import pytest
 from numpy.polynomial.legendre import leggauss
 
-from flexbooster.case import default_case, default_case_text, load_case
+from flexbooster.case import load_case, memo_case, memo_case_text
 from flexbooster.memo import beam
 from flexbooster.memo import responses as r
 from flexbooster.memo.beam_action import beam_action_analysis
@@ -31,7 +31,7 @@ from flexbooster.model import model_from_case
 
 def small_case(**thrust):
     """Derived model of the default geometry, few modes; optional thrust overrides (gamma, K)."""
-    d = tomllib.loads(default_case_text())
+    d = tomllib.loads(memo_case_text())
     d["thrust"].update(thrust)
     d["truncation"].update(M1=2, N1=3, M2=2, N2=3, N=2, S=2, R=2)
     return model_from_case(load_case(d))
@@ -244,7 +244,7 @@ def test_closed_form_matches_integration(strong, kind, d):
 def test_printed_phase_has_no_normal_coordinates():
     """With the printed phase (E10) low modes have complex/negative omega^2: modal_basis
     refuses them (docs/theory/shell.md section 3), the zero phase does not."""
-    shell = model_from_case(default_case()).shell
+    shell = model_from_case(memo_case()).shell
     printed = r.modal_groups(shell, (2, 2), (4, 4), 2, phase="printed")
     with pytest.raises(ValueError, match="printed phase"):
         for g in printed:
@@ -353,7 +353,7 @@ def test_secular_growth_at_a_root_bounded_away(strong_model, params, table, fami
 def test_simulate_long_time_many_modes_no_nan():
     """tau up to 1e4 and 100 x 100 modes per cylinder (10 beam modes): finite, JSON without
     NaN."""
-    d = tomllib.loads(default_case_text())
+    d = tomllib.loads(memo_case_text())
     d["truncation"].update(N=10, S=2, R=2)
     res = r.simulate(model_from_case(load_case(d)), 300.0, 1e4, n_out=101,
                      modes=(100, 100, 100, 100),

@@ -3,7 +3,7 @@ the results alone.
 
 The baselines ``tests/data/baseline/*.json.gz`` are the results.json of three cases written by
 commit 045ce06 with the script in the docstring of
-:func:`_case`: the default case, a case with the CM in cylinder 2 and an inch-pound case, each
+:func:`_case`: the memo case, a case with the CM in cylinder 2 and an inch-pound case, each
 with a reduced truncation (60 Omega points; M = N = 4 shell modes, N = 4 beam modes, S = 3,
 R = 3) so that the files stay small.  Every key of the baseline must be in today's results
 with the same value to 1e-12 relative (added keys, such as ``figures``, are allowed).
@@ -22,7 +22,7 @@ from pathlib import Path
 import pytest
 
 import flexbooster
-from flexbooster.case import default_case_text
+from flexbooster.case import memo_case_text
 
 DATA = Path(__file__).parent / "data"
 CASES = {"default": None, "cm-in-cylinder2": "cases/cm-in-cylinder2.toml",
@@ -37,7 +37,7 @@ def _case(name: str, *, undamped: bool = True):
         d["truncation"] = dict(M1=4, N1=4, M2=4, N2=4, N=4, S=3, R=3)
     """
     path = CASES[name]
-    d = tomllib.loads(default_case_text() if path is None else (DATA / path).read_text())
+    d = tomllib.loads(memo_case_text() if path is None else (DATA / path).read_text())
     d["thrust"]["n_omega"] = 60
     d["truncation"] = dict(M1=4, N1=4, M2=4, N2=4, N=4, S=3, R=3)
     if undamped:  # the baselines are the memo's undamped idealisation

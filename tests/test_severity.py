@@ -20,7 +20,7 @@ import pytest
 from scipy.integrate import solve_ivp
 
 import flexbooster
-from flexbooster.case import default_case_text
+from flexbooster.case import memo_case_text
 from flexbooster.memo.beam_action import beam_system, hill_exponents, loaded_frequencies
 from flexbooster.memo.responses import (
     excitation_parameters,
@@ -43,7 +43,7 @@ SOURCE = {1: _PSI, 3: _THRUST, 4: _PSI_SQ, 5: _PSI_SQ, 6: _PSI_SQ, 7: _PSI, 8: _
 
 
 def _case_dict(**truncation):
-    d = tomllib.loads(default_case_text())
+    d = tomllib.loads(memo_case_text())
     if truncation:
         d["thrust"]["n_omega"] = 120
         d["truncation"] = truncation
@@ -52,7 +52,7 @@ def _case_dict(**truncation):
 
 @pytest.fixture(scope="module")
 def small():
-    """A reduced default case (fast): 120 Omega points, M = 6, N = 4 shell modes, N = 4, S = 3."""
+    """A reduced memo case (fast): 120 Omega points, M = 6, N = 4 shell modes, N = 4, S = 3."""
     case = flexbooster.load_case(_case_dict(M1=6, N1=4, M2=6, N2=4, N=4, S=3, R=3))
     res = flexbooster.analyze(case, figures=False, vehicle=False)
     return res, excitation_parameters(res.model, res.beam_action)
@@ -60,7 +60,7 @@ def small():
 
 @pytest.fixture(scope="module")
 def default():
-    """The default case (S = 10) and the same with S = 3."""
+    """The memo case (S = 10) and the same with S = 3."""
     out = {}
     for S in (10, 3):
         d = _case_dict()
@@ -168,7 +168,7 @@ def _direct_rate(res, params, n):
 @pytest.mark.slow
 @pytest.mark.parametrize("family", [1, 2, 3, 4, 5, 6, 7, 8, 10, 11, 12, 13])
 def test_severity_against_direct_integration(small, family):
-    """Most severe root of each family (reduced default case) against solve_ivp of the forced
+    """Most severe root of each family (reduced memo case) against solve_ivp of the forced
     modal ODE, forcing by quadrature of its definition: envelope slope within 2 % (issue 13
     acceptance); family 9 has no root in the range."""
     res, params = small
@@ -427,7 +427,7 @@ def _keys(res, mask):
 
 @pytest.mark.slow
 def test_truncation_independence(default):
-    """Default case, S = 3 against S = 10: the roots with severity_rel >= 1e-6 (Jaccard >= 0.9,
+    """Memo case, S = 3 against S = 10: the roots with severity_rel >= 1e-6 (Jaccard >= 0.9,
     issue 13) and the top 10 bands (same peaks and modes, severity to 1e-3)."""
     a, b = default[10], default[3]
     ka = _keys(a, a.severity.roots.severity_rel >= 1e-6)

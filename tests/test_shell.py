@@ -16,7 +16,7 @@ import mpmath
 import numpy as np
 import pytest
 
-from flexbooster.case import default_case
+from flexbooster.case import memo_case
 from flexbooster.memo.beam import first_bending_frequency
 from flexbooster.memo.shell import (
     METHODS,
@@ -47,7 +47,7 @@ E, NU, RHO = 72.39e9, 0.33, 2768.0
 #: a long very thin one (the worst-conditioned), a stubby one.
 SINGLE = [(5.05, 21.0, 0.02), (3.3, 9.0, 0.02), (1.0, 2.0, 0.01), (2.0, 30.0, 0.003),
           (0.5, 0.4, 0.02)]
-DEFAULT = (5.05, 21.0, 3.3, 9.0, 0.02)  # R1, L1, R2, L2, h of the default case
+DEFAULT = (5.05, 21.0, 3.3, 9.0, 0.02)  # R1, L1, R2, L2, h of the memo case
 #: Donnell's determinant expanded by sympy and its roots by mpmath at 30 digits (the script
 #: tests/data/make_donnell_reference.py, which names the method and the points).
 DONNELL = json.loads((Path(__file__).parent / "data" / "donnell_reference.json").read_text())
@@ -233,7 +233,7 @@ def test_zero_phase_equals_isolated_donnell(geometry):
 
 def test_printed_phase_moves_frequencies():
     # Reading guide 4.3 (reproduced): with the printed phase the composite frequencies of the
-    # default case leave the isolated-cylinder values by tens of percent (j, k <= 10), and
+    # memo case leave the isolated-cylinder values by tens of percent (j, k <= 10), and
     # some low modes lose their real frequency altogether.  Reference: donnell_reference.
     R1, L1, R2, L2, h = DEFAULT
     for method in ("galerkin", "memo"):
@@ -315,7 +315,7 @@ def test_mode_counts_up_to_200(method):
 def test_mode_types_follow_shell_theory():
     # Leissa sec. 2.3: for k = 0 the lower branch of a long shell is longitudinal (axial),
     # the upper the breathing (radial) mode; for k >= 2 the lowest branch is flexural
-    # (radial).  Default case, cylinder 1.
+    # (radial).  Memo case, cylinder 1.
     f = composite(*DEFAULT, M=10, N=10)
     assert f.mode_type[f.select(1, 1, 0, 1)][0] == "axial"
     assert f.mode_type[f.select(1, 1, 0, 2)][0] == "radial"
@@ -327,7 +327,7 @@ def test_mode_types_follow_shell_theory():
 def test_natural_frequencies_of_the_model_equal_composite_frequencies():
     # natural_frequencies(model) is composite_frequencies with the model's numbers; omega_1 is
     # beam.first_bending_frequency (4.2-8b) of L = L1 + L2.  Same table to the last bit.
-    case = default_case()
+    case = memo_case()
     b, t = case.booster, case.truncation
     a = natural_frequencies(model_from_case(case))
     w1 = first_bending_frequency(b.cylinder1.half_length + b.cylinder2.half_length,
@@ -343,7 +343,7 @@ def test_natural_frequencies_of_the_model_equal_composite_frequencies():
 def test_table_outputs():
     # to_dict: JSON-ready parallel lists; to_rows: one dict per row with the CSV columns;
     # hz = rad_s / 2 pi = omega_bar omega_1 / 2 pi (definitions).
-    f = natural_frequencies(model_from_case(default_case()), method="galerkin")
+    f = natural_frequencies(model_from_case(memo_case()), method="galerkin")
     d = f.to_dict()
     json.dumps(d, allow_nan=False)
     assert len(d["hz"]) == len(f) and d["method"] == "galerkin"
@@ -383,7 +383,7 @@ def test_bad_counts_raise(name, value):
 
 def test_bad_method_raises():
     with pytest.raises(ValueError, match="method"):
-        natural_frequencies(model_from_case(default_case()), method="printed")
+        natural_frequencies(model_from_case(memo_case()), method="printed")
 
 
 @pytest.mark.parametrize(

@@ -25,7 +25,7 @@ from flexbooster.memo.shell_coefficients import (
 from reference.donnell import single_cylinder_matrix
 
 E, NU, RHO = 72.39e9, 0.33, 2768.0
-#: Geometries (R1, L1, R2, L2, h) in m: the default case (Saturn-class, CM in cylinder 1), a
+#: Geometries (R1, L1, R2, L2, h) in m: the memo case (Saturn-class, CM in cylinder 1), a
 #: smaller two-stage vehicle, and one with the CM in cylinder 2 (d1 < 0).
 GEOMETRIES = {
     "default": (5.05, 21.0, 3.3, 9.0, 0.02),
@@ -88,7 +88,7 @@ def test_zero_phase_edge_terms_vanish_in_every_convention(d):
 
 def test_printed_phase_does_not_vanish_at_aft_edge():
     # Erratum E10: 5.3-2 at xi_bar = a gives s = j pi (d1 - d2)/(2 L1), not a multiple of pi,
-    # so h = sin s does not vanish at the aft edge (default case: (d1 - d2)/L1 = -0.625).
+    # so h = sin s does not vanish at the aft edge (memo case: (d1 - d2)/L1 = -0.625).
     p = params("default")
     j = np.arange(1, 5)
     s_aft, s_fwd = edge_arguments(p, 1, j, "printed")
@@ -211,7 +211,7 @@ def test_orthogonality_only_in_zero_phase(d):
     # 5.2-6 / 5.3 decouple the equations per (j, k) "using the orthogonal properties" of the
     # shape functions.  Zero phase: int cos s_j cos s_j' = (L_d/L) delta_jj' (exact; 1e-13).
     # Printed phase: off-diagonal overlaps up to 0.41 (cylinder 1) and 0.21 (cylinder 2)
-    # against diagonals 0.70, 0.30 (default case, quadrature) - not orthogonal.
+    # against diagonals 0.70, 0.30 (memo case, quadrature) - not orthogonal.
     p = params("default")
     Ld = p.half_length(d) / p.L
     cz, sz = overlap_matrices(p, d, 12, "zero")
@@ -298,7 +298,7 @@ def test_edge_conditions_of_the_shape_functions():
     # Zero phase, both edges: sin s = 0 (v = w = 0) and d/ds cos s = -sin s = 0 (u' = 0, so
     # N_x = 0 at k = 0 up to the nu w term, which is 0 too), d^2/ds^2 sin s = 0 (M_x = 0):
     # the shear diaphragm.  5.3-1a,b (v' = w' = 0 at the ends) would need cos s = 0: it is
-    # |cos s| = 1 in the zero phase, and not 0 in the printed phase either (default case,
+    # |cos s| = 1 in the zero phase, and not 0 in the printed phase either (memo case,
     # aft edge of cylinder 1: |cos(0.3125 j pi)| = 0.56, 0.38, 0.98, 0.71).  Exact values.
     p = params("default")
     j = np.arange(1, 5)

@@ -636,10 +636,10 @@ def test_automatic_mesh_converged_to_0p1_percent():
 
 def _test_vehicles() -> dict:
     """The vehicles of the test suite's shell-of-revolution and region tests (one of each
-    kind): README.md's [vehicle] example, a two-cone vehicle, the default case's memo vehicle,
+    kind): README.md's [vehicle] example, a two-cone vehicle, the memo case's vehicle,
     a cylinder-cone-cylinder with a rigid bulkhead, a clamped stack with a cone, the SD
-    cylinder, the default case's size as a cylinder-cone-cylinder, a slender tube."""
-    from flexbooster.case import default_case
+    cylinder, the memo case's size as a cylinder-cone-cylinder, a slender tube."""
+    from flexbooster.case import memo_case
     from flexbooster.model import vehicle_from_case
 
     alu = {"E": 70e9, "nu": 0.3, "rho": 2700.0}
@@ -648,7 +648,7 @@ def _test_vehicles() -> dict:
         "readme": Vehicle([Cylinder(1.5, 6.0, 0.016, **alu), Cone(1.5, 1.0, 1.0, 0.016, **alu)]),
         "two-cone": Vehicle([Cylinder(1.5, 4.0, 0.012, **alu), Cone(1.5, 1.1, 1.2, 0.01, **alu),
                              Cylinder(1.1, 3.0, 0.008, **alu), Cone(1.1, 0.6, 1.5, 0.006, **alu)]),
-        "memo": vehicle_from_case(default_case()),
+        "memo": vehicle_from_case(memo_case()),
         "bulkhead": Vehicle([Cylinder(0.5, 4.0, 0.004, **STEEL),
                              Cone(0.5, 0.35, 1.0, 0.004, **STEEL),
                              Cylinder(0.35, 3.0, 0.003, **STEEL)],

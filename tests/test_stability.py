@@ -26,7 +26,7 @@ from flexbooster.memo.stability import (
     unstable_frequencies,
 )
 
-OMEGA_1 = 113.5  # rad/s, of the order of the default case's omega_1
+OMEGA_1 = 113.5  # rad/s, of the order of the memo case's omega_1
 W_PSI = 1.2 / OMEGA_1  # pitch frequency in units of omega_1
 LOADED = np.array([1.0, 2.76, 5.40])  # synthetic loaded-beam frequencies alpha_r Omega_bar
 
@@ -87,7 +87,7 @@ def small_modes():
     )
 
 
-RANGE = (5.0, 2000.0)  # rad/s, the default case's Omega range
+RANGE = (5.0, 2000.0)  # rad/s, the memo case's Omega range
 R, S = 3, 4
 #: Keyword arguments of unstable_frequencies for the synthetic case (Omega in units of omega_1).
 SOLVE = dict(Omega_bar_range=(RANGE[0] / OMEGA_1, RANGE[1] / OMEGA_1), omega_1=OMEGA_1, R=R, S=S,
@@ -251,8 +251,8 @@ def test_no_pulsation_silences_omega_1_and_3():
 
 
 @pytest.mark.slow
-def test_active_flags_match_the_forcing_computed_from_its_definition(default_results):
-    """The 'active' column of the default case against the resonant forcing of each root
+def test_active_flags_match_the_forcing_computed_from_its_definition(memo_results):
+    """The 'active' column of the memo case against the resonant forcing of each root
     computed by quadrature of the forcing functions (3.0-3, 5.3-4) on the shape functions
     (responses.secular_rates): active roots have a relative forcing above 1e-17, the others
     below 1e-22 (round-off). Families 2 and 13 (beam harmonics, one Hill solve per root) are
@@ -260,7 +260,7 @@ def test_active_flags_match_the_forcing_computed_from_its_definition(default_res
     structural flag by severity_rel >= threshold, issue 13: tests/test_severity.py.)"""
     from flexbooster.memo.responses import excitation_parameters, secular_rates
 
-    res = default_results
+    res = memo_results
     n, (lo, hi) = res.model.truncation, res.model.omega_range
     modes = ShellModes(res.shell.cylinder, res.shell.j, res.shell.k, res.shell.branch,
                        res.shell.omega_bar)
@@ -335,15 +335,15 @@ def _labels(table):
 
 
 @pytest.mark.slow
-def test_default_case_same_roots_as_brute_force_on_sampled_curves(default_results):
-    """Issue 6 acceptance on the default case: for two curves of every family (sampled with a
+def test_memo_case_same_roots_as_brute_force_on_sampled_curves(memo_results):
+    """Issue 6 acceptance on the memo case: for two curves of every family (sampled with a
     fixed seed), every root against every shell frequency of its set found by a brute-force
     scan -- the equation sampled on a grid ten times finer than the solver's, scipy brentq on each
     sign change -- is in the table (its own row or merged into a coinciding family's), and the
     table has no other root of those curves."""
     from flexbooster.memo.responses import excitation_parameters
 
-    res = default_results
+    res = memo_results
     case = res.case
     t, n = case.thrust, case.truncation
     prm = excitation_parameters(res.model, res.beam_action)

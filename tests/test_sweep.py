@@ -56,10 +56,10 @@ SOFT_E = "1e8 Pa"  # a soft booster: strong beam-action bands (growth 0.1 1/s at
 
 
 def tiny_case() -> dict:
-    """The default case with a coarse Omega grid and a small truncation (about 0.1 s)."""
-    from flexbooster.case import default_case_text
+    """The memo case with a coarse Omega grid and a small truncation (about 0.1 s)."""
+    from flexbooster.case import memo_case_text
 
-    data = tomllib.loads(default_case_text())
+    data = tomllib.loads(memo_case_text())
     data["name"] = "tiny"
     data["thrust"].update(n_omega=8)
     data["truncation"] = {"M1": 2, "N1": 2, "M2": 2, "N2": 2, "N": 2, "S": 2, "R": 2}

@@ -12,7 +12,7 @@ Tiers:
   each cylinder with shear-diaphragm edges, the Donnell cubic; rel. 1e-5);
 * invariants and interfaces: every bad field gives one CaseError line naming it; the CLI
   ``modes`` table, JSON and files; ``run`` with a ``[vehicle]`` case adds the key, the CSV,
-  the report section and its figures; the default case's results.json gains no key.
+  the report section and its figures; the memo case's results.json gains no key.
 """
 
 from __future__ import annotations
@@ -29,7 +29,7 @@ import pytest
 
 from conftest import run_cli
 from flexbooster.analysis import analyze, analyze_vehicle
-from flexbooster.case import default_case, default_case_text, load_case
+from flexbooster.case import load_case, memo_case, memo_case_text
 from flexbooster.errors import CaseError
 from flexbooster.model import vehicle_from_case
 from flexbooster.shell_of_revolution import Cone, Cylinder, Vehicle, vehicle_modes
@@ -62,7 +62,7 @@ SMALL = {"n_omega": 40, "truncation": dict(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2
 
 
 def _base() -> dict:
-    return copy.deepcopy(tomllib.loads(default_case_text()))
+    return copy.deepcopy(tomllib.loads(memo_case_text()))
 
 
 def _small(data: dict) -> dict:
@@ -72,7 +72,7 @@ def _small(data: dict) -> dict:
 
 
 def _with_issue_table(**changes) -> dict:
-    """The default case with the issue's [vehicle] table in place of [booster] (one vehicle per
+    """The memo case with the issue's [vehicle] table in place of [booster] (one vehicle per
     case) and F0 = 0.3 MN (2.8 MN would exceed the k = 2 buckling load of this small free-free
     vehicle)."""
     data = _base()
@@ -165,7 +165,7 @@ def test_memo_vehicle_from_booster():
     """Without [vehicle]: cylinder 1 (R1, 2 L1) aft, cylinder 2 (R2, 2 L2), h, E, nu, rho of
     [booster] (memo Fig. 1), memo-bulkhead junction, shear-diaphragm ends (the memo's end
     bulkheads, eqs. 5.3-2/3); [vehicle] without segments overrides ends and theory."""
-    case = default_case()
+    case = memo_case()
     b = case.booster
     veh = vehicle_from_case(case)
     expect = [(b.cylinder1.radius, 2 * b.cylinder1.half_length),
@@ -269,10 +269,10 @@ def test_bad_vehicle_in_a_file_exits_2(tmp_path, capsys):
 
 @pytest.mark.parametrize("prestress", [False, True], ids=["unloaded", "prestressed"])
 def test_memo_vehicle_frequencies_equal_the_package(prestress):
-    """k = 2..4 of analyze_vehicle on the default case = vehicle_modes on the hand-built
+    """k = 2..4 of analyze_vehicle on the memo case = vehicle_modes on the hand-built
     Vehicle (R1 = 5.05 m, 42 m; R2 = 3.30 m, 18 m; h = 20 mm; 10.5e6 psi, 0.33,
-    2.59e-4 lbf s^2/in^4 from default_case.toml), F0 = 2.8 MN or 0; rel. 1e-9."""
-    case = default_case()
+    2.59e-4 lbf s^2/in^4 from memo_case.toml), F0 = 2.8 MN or 0; rel. 1e-9."""
+    case = memo_case()
     survey = analyze_vehicle(case, k_max=4, prestress=prestress, f_max=40.0, views=False)
     mat = dict(E=10.5e6 * 6894.757293168361, nu=0.33,
                rho=2.59e-4 * 4.4482216152605 / 0.0254**4)
@@ -395,9 +395,9 @@ def test_modes_output_files(vehicle_case_file, tmp_path, capsys):
         fig["unrolled_index"])
 
 
-def test_modes_of_the_default_case_memo_vehicle(capsys):
-    """No [vehicle]: `modes` analyses the memo vehicle built from [booster]."""
-    assert run_cli(["modes", "--k-max", "3", "--format", "json"]) == 0
+def test_modes_of_the_memo_case_vehicle(capsys):
+    """No [vehicle]: `modes --memo` analyses the memo vehicle built from [booster]."""
+    assert run_cli(["modes", "--memo", "--k-max", "3", "--format", "json"]) == 0
     data = json.loads(capsys.readouterr().out)
     assert data["source"] == "memo"
     assert data["vehicle"]["junctions"] == ["memo-bulkhead"]
@@ -454,9 +454,9 @@ def test_report_embeds_the_vehicle_figures(vehicle_case_file):
     assert sections.count("vehicle-modes") == 1 and len(sections) == len(SECTIONS) + 1
 
 
-def test_default_case_results_unchanged():
+def test_memo_case_results_unchanged():
     """Without [vehicle]: no vehicle stage, no vehicle_modes key, no case.vehicle key (the
-    keys of the default case's results.json as before issue 14)."""
+    keys of the memo case's results.json as before issue 14)."""
     data = _small(_base())
     seen = []
     results = analyze(load_case(data), figures=False, progress=seen.append)

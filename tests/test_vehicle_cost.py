@@ -2,7 +2,7 @@
 
 Interface tiers: a ``[vehicle]`` case whose regions cannot fit the budget (undamped, 40 modes
 per k, k_max = 40) is refused before any solver runs with a ``CaseError`` on ``max_seconds``
-that gives the estimate and the fields that drive it; the default case and a damped 40-mode
+that gives the estimate and the fields that drive it; the memo case and a damped 40-mode
 case (certified stable: no search) are not refused; a map with a SearchGap and no region is
 not "stable".  The calibration (measured times) is in the comments of flexbooster/cost.py;
 estimate against measured time in benchmarks/bench_vehicle_regions.py (``--cost``), not here.
@@ -18,13 +18,13 @@ import pytest
 from flexbooster import cost
 from flexbooster.analysis import analyze
 from flexbooster.bands import SearchGap
-from flexbooster.case import default_case_text, load_case
+from flexbooster.case import load_case, memo_case_text
 from flexbooster.errors import CaseError
 from flexbooster.model import model_from_case
 
 
 def _case(**vehicle):
-    data = tomllib.loads(default_case_text())
+    data = tomllib.loads(memo_case_text())
     if vehicle:
         data["vehicle"] = dict(vehicle)
         if "segments" in vehicle:  # one vehicle per case: the segments, the booster's material
@@ -58,7 +58,7 @@ def test_big_undamped_vehicle_case_is_refused_up_front():
 @pytest.mark.parametrize("vehicle", [{}, {"k_max": 40, "n_modes": 40}],
                          ids=["default", "damped-40-modes"])
 def test_default_and_damped_cases_are_not_refused(vehicle):
-    """The default case (no [vehicle]: k = 1..20, 20 modes, zeta = 0.01) and a damped
+    """The memo case (no [vehicle]: k = 1..20, 20 modes, zeta = 0.01) and a damped
     40-mode [vehicle] case (k = 1..40) fit the budget: with damping the estimate is the
     certified lower bound (building each harmonic)."""
     case = _case(**vehicle)
@@ -121,9 +121,9 @@ def test_certificates_are_counted_and_refused_up_front():
     assert info.value.field == "max_seconds" and "vehicle certificates" in msg
     assert "vehicle.n_modes" in msg and "\n" not in msg
 def _tank_case(n_tanks: int, n_masses: int = 0):
-    """The default case with a [vehicle] of three 2 m cylinders (R 1.5 m, 4 mm aluminium) and
+    """The memo case with a [vehicle] of three 2 m cylinders (R 1.5 m, 4 mm aluminium) and
     the first ``n_tanks`` of its three segments filled to 60 %, ``n_masses`` masses of 500 kg."""
-    data = tomllib.loads(default_case_text())
+    data = tomllib.loads(memo_case_text())
     del data["booster"]  # one vehicle per case: the segments
     cyl = {"kind": "cylinder", "radius": 1.5, "length": 2.0, "thickness": 0.004}
     data["vehicle"] = {

@@ -40,7 +40,7 @@ from flexbooster.analysis import (
     memo_roots_in_regions,
 )
 from flexbooster.bands import Band, BandMode, SearchGap
-from flexbooster.case import default_case_text, load_case
+from flexbooster.case import load_case, memo_case_text
 from flexbooster.cli import main
 from flexbooster.dynamics import (
     RegionCurve,
@@ -61,8 +61,8 @@ SMALL_TRUNCATION = dict(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)
 
 
 def small_case_data(**vehicle) -> dict:
-    """The default case, 40 Omega points, a small truncation, and ``[vehicle]`` fields."""
-    data = tomllib.loads(default_case_text())
+    """The memo case, 40 Omega points, a small truncation, and ``[vehicle]`` fields."""
+    data = tomllib.loads(memo_case_text())
     data["thrust"]["n_omega"] = 40
     data["truncation"] = dict(SMALL_TRUNCATION)
     if vehicle:

@@ -26,7 +26,7 @@ from scipy.special import mathieu_a, mathieu_b
 
 import sanders_ritz as ritz
 from flexbooster.analysis import analyze_vehicle_regions
-from flexbooster.case import default_case_text, load_case
+from flexbooster.case import load_case, memo_case_text
 from flexbooster.dynamics import bending_system, harmonic_system, vehicle_regions
 from flexbooster.shell_of_revolution import Cone, Cylinder, Vehicle, mesh_vehicle, vehicle_modes
 from flexbooster.shell_of_revolution.assembly import thrust_prestate
@@ -34,7 +34,7 @@ from flexbooster.shell_of_revolution.elements import reference_element
 
 ALU = {"E": 70e9, "nu": 0.3, "rho": 2700.0}  # README.md's [vehicle] example
 STEEL = {"E": 210e9, "nu": 0.3, "rho": 7850.0}
-F0 = 2.8e6  # N, the default case's thrust (flexbooster init)
+F0 = 2.8e6  # N, the memo case's thrust (flexbooster init)
 
 
 def readme_vehicle() -> Vehicle:
@@ -234,7 +234,7 @@ def test_the_case_passes_the_ends_to_the_load_path(fwd_end, path):
     """Through the case (model.vehicle_from_case, the pipeline's analyze_vehicle_regions):
     an axially restrained forward end (clamped, hinged) reacts the thrust, a shear diaphragm
     (axially free) does not; results.json's vehicle_regions say which."""
-    data = tomllib.loads(default_case_text())
+    data = tomllib.loads(memo_case_text())
     b = data.pop("booster")  # one vehicle per case: the segment, [booster]'s material
     data["vehicle"] = {"E": b["E"], "nu": b["nu"], "rho": b["rho"],
                        "aft_end": "shear-diaphragm", "fwd_end": fwd_end, "k_max": 2,

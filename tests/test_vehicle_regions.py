@@ -8,7 +8,7 @@ Tiers:
   the threshold mu_cr = Delta / pi = 2 zeta (Bolotin sec. 6, first order);
 * independent model: Floquet monodromy of the full multi-mode system
   (``floquet.growth_rate``) inside and outside the regions of a cylinder-cone-cylinder of the
-  default case's size;
+  memo case's size;
 * invariants: gamma -> 0 (widths linear in gamma, none with damping), JSON, bad input.
 
 Closed forms used below (written out, not imported): the SD-SD Donnell cylinder, mode
@@ -52,7 +52,7 @@ from flexbooster.shell_of_revolution import (
 )
 
 STEEL = {"E": 210e9, "nu": 0.3, "rho": 7850.0}
-# default_case.toml: E = 10.5e6 psi, rho = 2.59e-4 lbf s^2/in^4
+# memo_case.toml: E = 10.5e6 psi, rho = 2.59e-4 lbf s^2/in^4
 ALU = {"E": 72.4e9, "nu": 0.33, "rho": 2768.0}
 L_SD, R_SD, H_SD = 2.0, 1.0, 0.01
 SD_MESH = 12  # elements: SD frequencies within 1e-10 of the closed form (measured)
@@ -184,13 +184,13 @@ def test_sd_modal_system_decouples_in_m():
 
 
 def default_size_vehicle() -> Vehicle:
-    """Cylinder-cone-cylinder of the default case's size (default_case.toml: R1 = 5.05 m,
+    """Cylinder-cone-cylinder of the memo case's size (memo_case.toml: R1 = 5.05 m,
     42 m; R2 = 3.3 m, 18 m; h = 20 mm; aluminium); a 5 m cone joins them; free-free."""
     return Vehicle([Cylinder(5.05, 42.0, 0.02, **ALU), Cone(5.05, 3.3, 5.0, 0.02, **ALU),
                     Cylinder(3.3, 18.0, 0.02, **ALU)])
 
 
-F0_DEFAULT = 2.8e6  # N (default_case.toml)
+F0_DEFAULT = 2.8e6  # N (memo_case.toml)
 
 
 @pytest.fixture(scope="module")
@@ -305,7 +305,7 @@ def test_modal_truncation_converges():
         assert abs(ra[i].growth_rate_max / rb[i].growth_rate_max - 1) < 1e-3
 
 
-def test_default_damping_suppresses_default_case_regions():
+def test_default_damping_suppresses_memo_case_regions():
     """Default zeta = 0.01 at gamma = 0.05: the principal region of the lowest k = 3 mode
     (undamped growth ~ gamma B1_00 / (4 w_0) ~ 2e-3 1/s < zeta w_0 ~ 0.09 1/s) does not
     survive (3 modes, Omega around 2 w_0)."""
@@ -368,16 +368,16 @@ def test_bad_range_order():
         vehicle_regions(sd_vehicle(), **{**GOOD, "omega_min": 60.0})
 
 
-# --------------------------------------------------------------------------- the default case
+# --------------------------------------------------------------------------- the memo case
 
 
 @pytest.fixture(scope="module")
 def memo_vehicle() -> Vehicle:
-    """The vehicle of the default case (the memo's two cylinders, memo bulkhead, SD ends)."""
-    return vehicle_from_case(flexbooster.default_case())
+    """The vehicle of the memo case (the memo's two cylinders, memo bulkhead, SD ends)."""
+    return vehicle_from_case(flexbooster.memo_case())
 
 
-def test_default_case_map_is_certified_stable(memo_vehicle):
+def test_memo_case_map_is_certified_stable(memo_vehicle):
     """The deliverable of issue 15 item 4 (k <= 10, 20 modes per k, Omega 5..2000 rad/s,
     gamma = 0.05, zeta = 0.01): every harmonic is certified stable at every Omega by the
     weighted logarithmic norm (floquet.stability_certificate; a theorem, Desoer & Vidyasagar
@@ -447,7 +447,7 @@ def test_damping_filter_finds_every_region_of_the_unfiltered_search(memo_vehicle
                                                                      gamma):
     """Verification of the damping filter (issue 15 leftover; it is a first-order estimate
     with a safety factor 4, not a proof): on a grid of small damped systems that keep 0 to 8
-    regions -- the default case's vehicle (Omega 10..300 rad/s) and the cylinder-cone-cylinder
+    regions -- the memo case's vehicle (Omega 10..300 rad/s) and the cylinder-cone-cylinder
     of the same size (10..100 rad/s), k = 3, 5 modes, orders <= 2, zeta = 5e-4 and 2e-3,
     gamma = 0.3 and 0.6 -- floquet.instability_regions with the filter (damping_margin = 4)
     finds exactly the regions of the unfiltered search (damping_margin = None: every

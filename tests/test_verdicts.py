@@ -20,7 +20,7 @@ from scipy import integrate, optimize
 
 from flexbooster.analysis import analyze
 from flexbooster.bands import Band, SearchGap
-from flexbooster.case import default_case, default_case_text, load_case
+from flexbooster.case import load_case, memo_case, memo_case_text
 from flexbooster.danger import (
     NEGLIGIBLE_GROWTH,
     UNSTABLE_E_FOLDING,
@@ -195,7 +195,7 @@ def test_ranked_bands_carry_the_measures():
 # --------------------------------------------------------------------------------------------
 def test_damping_defaults():
     """1 % on every elastic mode (beam and vehicle), the rigid pitch undamped."""
-    c = default_case()
+    c = memo_case()
     assert (c.damping.modal_ratio, c.damping.pitch_ratio) == (0.01, 0.0)
     assert c.damping.beam_ratio == 0.01 and c.vehicle_damping_ratio == 0.01
 
@@ -206,7 +206,7 @@ def test_deprecated_key_is_used_and_warned_in_results_json(table, key, value):
     """An old key keeps working, with a ``deprecated-key`` warning naming damping.modal_ratio
     in Results.warnings and results.json; given beside damping.modal_ratio it is used for its
     modes (a case dumped and loaded again keeps its meaning)."""
-    d = tomllib.loads(default_case_text())
+    d = tomllib.loads(memo_case_text())
     del d["damping"]
     d.setdefault(table, {})[key] = value
     case = load_case(d)
@@ -289,16 +289,16 @@ def test_damped_resonances_rank_by_steady_amplitude():
 
 
 # --------------------------------------------------------------------------------------------
-# The default case (acceptance of issue 33)
+# The memo case (acceptance of issue 33)
 # --------------------------------------------------------------------------------------------
 @pytest.mark.slow
-def test_default_case_verdict_acceptance(default_results):
-    """The default case: results.json holds the verdict (overall, reason, mechanisms) at 1 %
+def test_memo_case_verdict_acceptance(memo_results):
+    """The memo case: results.json holds the verdict (overall, reason, mechanisms) at 1 %
     modal damping and 150 s; no band with an e-folding time above 1e6 s counts as unstable
     (nor its mechanism's line); no band is listed twice (no two ranked bands of one mechanism
     with the same edges, no pitch tongue beside the beam action's rigid-pitch band of the same
     order that overlaps it)."""
-    r = default_results
+    r = memo_results
     d = json.loads(json.dumps(r.to_dict()))["verdict"]
     assert d["overall"] in ("UNSTABLE", "MARGINAL", "STABLE") and d["reason"]
     assert d["damping"] == {"modal_ratio": 0.01, "pitch_ratio": 0.0} and d["duration"] == 150.0

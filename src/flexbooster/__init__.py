@@ -4,7 +4,7 @@ periodically varying end thrust (Research & Analysis Section Tech Memo 104).
 Public API::
 
     import flexbooster
-    case = flexbooster.default_case()            # or flexbooster.load_case("case.toml" or dict)
+    case = flexbooster.default_case()            # or memo_case(), or load_case("case.toml" or dict)
     results = flexbooster.analyze(case)
     results.to_dict()                            # what results.json holds
 
@@ -22,6 +22,7 @@ _LAZY = {
     "Case": "case",
     "default_case": "case",
     "load_case": "case",
+    "memo_case": "case",
     "Results": "analysis",
     "analyze": "analysis",
     "sweep": "sweep.run",

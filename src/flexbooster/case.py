@@ -3,7 +3,8 @@
 One vehicle per case: ``[booster]`` (``cylinder1``, ``cylinder2``: the memo's two bare
 cylinders) or ``[vehicle]`` with ``[[vehicle.segments]]``, never both; then ``[thrust]``
 (needed by ``run``, not by ``modes``), ``[truncation]`` and the optional tables. The embedded
-default case (``flexbooster init``) documents every field. A
+default case (``flexbooster init``: a launch vehicle through its flight) and memo case
+(``flexbooster init --memo``: the memo's two cylinders) document every field. A
 value is an SI number or a string with units. Invalid input raises
 :class:`~flexbooster.errors.CaseError` naming the field, the value and the rule.
 """
@@ -46,6 +47,8 @@ __all__ = [
     "load_case",
     "default_case",
     "default_case_text",
+    "memo_case",
+    "memo_case_text",
 ]
 
 #: Largest mode count, harmonic count or grid size a case may ask for (each index).
@@ -766,11 +769,28 @@ def _is_standard_input(info: os.stat_result) -> bool:
         return False
 
 
+def _packaged(name: str) -> str:
+    return resources.files("flexbooster").joinpath(f"data/{name}").read_text("utf-8")
+
+
 def default_case_text() -> str:
-    """The embedded default case file, with a comment on every field."""
-    return resources.files("flexbooster").joinpath("data/default_case.toml").read_text("utf-8")
+    """The embedded default case file, with a comment on every field: a Titan-II-like
+    two-stage liquid launch vehicle (``[vehicle]`` with tanks) through its first-stage burn
+    (``[flight]``), the source of each number tagged in the file."""
+    return _packaged("default_case.toml")
 
 
 def default_case() -> Case:
-    """The embedded default case (a Saturn-class two-stage booster), validated."""
+    """The embedded default case (:func:`default_case_text`), validated."""
     return _validate(tomllib.loads(default_case_text()))
+
+
+def memo_case_text() -> str:
+    """The embedded memo case file, with a comment on every field: a Saturn-class booster as
+    the memo's two bare cylinders (``[booster]``, Tech Memo 104 Fig. 1)."""
+    return _packaged("memo_case.toml")
+
+
+def memo_case() -> Case:
+    """The embedded memo case (:func:`memo_case_text`), validated."""
+    return _validate(tomllib.loads(memo_case_text()))

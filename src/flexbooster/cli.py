@@ -70,6 +70,7 @@ def cli() -> None:
     \b
     Examples:
       flexbooster run                         # the default case -> flexbooster-results/
+      flexbooster run --memo                  # the memo's two-cylinder case
       flexbooster init my-booster.toml        # write the default case, commented, to edit
       flexbooster run my-booster.toml -o out  # summary; out/results.json, CSV, report.html
       flexbooster run -q --format json > r.json   # results as JSON on standard output
@@ -79,15 +80,25 @@ def cli() -> None:
     """
 
 
-def _load(case_file: Path | None):
-    from .case import default_case, load_case
+def _load(case_file: Path | None, memo: bool = False):
+    """The case of CASE_FILE, else the embedded memo case with ``memo``, else the default."""
+    from .case import default_case, load_case, memo_case
 
-    return default_case() if case_file is None else load_case(case_file)
+    if case_file is not None and memo:
+        raise CaseError("--memo", str(case_file), "give a case file or --memo, not both")
+    if case_file is not None:
+        return load_case(case_file)
+    return memo_case() if memo else default_case()
 
 
 _CASE_ARG = click.argument(
     "case_file", required=False, type=click.Path(dir_okay=False, path_type=Path)
 )
+_MEMO = click.option("--memo", is_flag=True,
+                     help="The embedded memo case (the memo's two bare cylinders) instead of "
+                          "the default case.")
+
+
 def _check_output(ctx: click.Context, param: click.Parameter, value: str) -> Path:
     """The output folder, checked before any analysis
     (:func:`flexbooster.present.outputs.check_output_folder`: not empty, not a file, under no
@@ -224,12 +235,14 @@ def _wrote(paths, fmt: str, quiet: bool) -> None:
               help="Skip the vehicle's parametric instability regions (shell of revolution).")
 @click.option("--full", is_flag=True,
               help="Print every table (the report and results.json always hold them).")
+@_MEMO
 @_BUDGET
 @_QUIET
 @_FORMAT
 def run(case_file: Path | None, output: Path, no_figures: bool, no_vehicle: bool,
-        full: bool, max_seconds: float | None, quiet: bool, fmt: str) -> None:
-    """Analyse CASE_FILE (TOML; the embedded default case if omitted).
+        full: bool, memo: bool, max_seconds: float | None, quiet: bool, fmt: str) -> None:
+    """Analyse CASE_FILE (TOML; if omitted, the embedded default case: a launch vehicle through
+    its flight, or with --memo the memo's two-cylinder case).
 
     Prints a short summary (the overall verdict, the damping, one line per mechanism, the
     ranked bands, the warnings; every table with --full) and writes OUTPUT/results.json, the
@@ -241,6 +254,7 @@ def run(case_file: Path | None, output: Path, no_figures: bool, no_vehicle: bool
     \b
     Examples:
       flexbooster run                        # default case -> flexbooster-results/report.html
+      flexbooster run --memo -o memo/        # the memo's two-cylinder case
       flexbooster run my.toml -o out/ --no-figures
       flexbooster run my.toml --no-vehicle   # without the vehicle's instability regions
       flexbooster run -q --format json | python -m json.tool | head
@@ -250,7 +264,7 @@ def run(case_file: Path | None, output: Path, no_figures: bool, no_vehicle: bool
     from .present.summary import print_summary
 
     _check_names(output, SET_NAMES)
-    case = _with_budget(_load(case_file), max_seconds)
+    case = _with_budget(_load(case_file, memo), max_seconds)
     n_stages = (len(STAGES) + (case.vehicle is not None) + 2 * (not no_vehicle)
                 + len(OUTPUT_STAGES))
     with _progress(n_stages, quiet) as step:
@@ -318,8 +332,9 @@ def stability(
     case_file: Path | None, omega_min: str | None, omega_max: str | None, output: Path,
     max_seconds: float | None, quiet: bool, fmt: str
 ) -> None:
-    """Unstable thrust frequencies (memo 7.3) of CASE_FILE for Omega in [OMEGA_MIN, OMEGA_MAX]
-    (the case's Omega range by default).
+    """Unstable thrust frequencies (memo 7.3) of CASE_FILE (the memo's two cylinders; the
+    embedded memo case if omitted) for Omega in [OMEGA_MIN, OMEGA_MAX] (the case's Omega range
+    by default).
 
     Writes OUTPUT/stability-unstable-frequencies.csv and OUTPUT/stability.json: names of its
     own, so that it never replaces one half of an earlier `flexbooster run` in the same folder
@@ -327,7 +342,7 @@ def stability(
 
     \b
     Examples:
-      flexbooster stability                      # the default case's Omega range
+      flexbooster stability                      # the memo case's Omega range
       flexbooster stability --omega-min 100 --omega-max "20 Hz"
       flexbooster stability my.toml --omega-min 5 --omega-max 500 -o out/
     """
@@ -337,7 +352,8 @@ def stability(
     from .present.summary import print_stability
 
     _check_names(output, STABILITY_FILES)
-    case = _with_budget(_case_with_range(_load(case_file), omega_min, omega_max), max_seconds)
+    case = _with_budget(_case_with_range(_load(case_file, memo=case_file is None), omega_min,
+                                         omega_max), max_seconds)
     check_memo_applies(case)  # the memo's table: [booster] only
     with _progress(len(STAGES), quiet) as step:
         results = analyze(case, progress=step, vehicle=False,  # the memo table only
@@ -412,7 +428,8 @@ def simulate(
     case_file: Path | None, omega: str, t_max: str | None, tau_max: float | None, n_out: int,
     psi0: float, output: Path, quiet: bool, fmt: str
 ) -> None:
-    """Modal time responses of CASE_FILE at one thrust frequency (memo 6.2).
+    """Modal time responses of CASE_FILE (the memo's two cylinders; the embedded memo case if
+    omitted) at one thrust frequency (memo 6.2).
 
     Prints, per modal coordinate, whether it grows over the window; writes
     OUTPUT/time-histories.csv, OUTPUT/simulation.json and figures of the modal amplitudes
@@ -431,7 +448,7 @@ def simulate(
     from .units import to_si
 
     _check_names(output, SIMULATE_FILES)
-    case = _load(case_file)
+    case = _load(case_file, memo=case_file is None)
     try:
         value = float(omega)
     except ValueError:
@@ -518,12 +535,13 @@ MODES_FILES = ("modes.json", "vehicle-modes.csv")
               callback=lambda ctx, param, value: None if value is None
               else _check_output(ctx, param, value),
               help="Also write OUTPUT/modes.json, OUTPUT/vehicle-modes.csv and the figures.")
+@_MEMO
 @_QUIET
 @click.option("--format", "fmt", type=click.Choice(["table", "json"]), default="table",
               show_default=True,
               help='table: one table per k; json: {"modes": [...], ...} on standard output.')
 def modes(case_file: Path | None, k_max: int | None, f_max: str | None, no_prestress: bool,
-          output: Path | None, quiet: bool, fmt: str) -> None:
+          output: Path | None, memo: bool, quiet: bool, fmt: str) -> None:
     """Natural modes of the vehicle of CASE_FILE as one shell of revolution, k = 0..K_MAX.
 
     The vehicle is the case's [vehicle] table, or, without one, the memo's: the two cylinders
@@ -533,7 +551,8 @@ def modes(case_file: Path | None, k_max: int | None, f_max: str | None, no_prest
 
     \b
     Examples:
-      flexbooster modes                               # the default case's memo vehicle
+      flexbooster modes                               # the default case's vehicle
+      flexbooster modes --memo                        # the memo case's two cylinders
       flexbooster modes my.toml --k-max 8 --f-max 40
       flexbooster modes my.toml --format json | python -m json.tool | head
       flexbooster modes my.toml -o out/               # modes.json, CSV, mode-shape figures
@@ -542,7 +561,7 @@ def modes(case_file: Path | None, k_max: int | None, f_max: str | None, no_prest
 
     if output is not None:
         _check_names(output, MODES_FILES)
-    case = _load(case_file)
+    case = _load(case_file, memo)
     if k_max is not None and not 0 <= k_max <= 200:
         raise CaseError("--k-max", k_max, "must be an integer in [0, 200]")
     survey = analyze_vehicle(case, k_max=k_max, f_max=_f_max(f_max),
@@ -569,19 +588,23 @@ def modes(case_file: Path | None, k_max: int | None, f_max: str | None, no_prest
     type=click.Path(dir_okay=False, path_type=Path),
 )
 @click.option("--force", is_flag=True, help="Overwrite an existing file.")
-def init(path: Path, force: bool) -> None:
-    """Write the embedded default case, with a comment on every field, to PATH.
+@_MEMO
+def init(path: Path, force: bool, memo: bool) -> None:
+    """Write the embedded default case (a launch vehicle with its tanks, through its flight),
+    or with --memo the memo case (the memo's two bare cylinders), with a comment on every
+    field, to PATH.
 
     \b
-    Example:
-      flexbooster init my-booster.toml && flexbooster run my-booster.toml
+    Examples:
+      flexbooster init my-vehicle.toml && flexbooster run my-vehicle.toml
+      flexbooster init --memo my-booster.toml  # the memo's two-cylinder case
     """
-    from .case import default_case_text
+    from .case import default_case_text, memo_case_text
     from .present.io import write_text_atomic
 
     if path.exists() and not force:
         raise CaseError("PATH", str(path), "file exists (use --force to overwrite)")
-    write_text_atomic(path, default_case_text())
+    write_text_atomic(path, memo_case_text() if memo else default_case_text())
     click.echo(f"wrote {path}")
 
 

@@ -4,7 +4,7 @@
 derived model alone, one term per expensive kernel with the case fields that drive it;
 :func:`check_case_cost` refuses a case over its budget (``max_seconds``); :func:`check_physical`
 refuses a load at or above what the structure carries and :func:`physical_warnings` names
-the others. Constants calibrated on the default case (docs/theory/robustness.md), good to a
+the others. Constants calibrated on the memo case (docs/theory/robustness.md), good to a
 factor of about 2.
 
 References: Tech Memo 104, eqs. (4.1-10)..(4.1-12), (4.2-3), (4.2-4), sec. 7.3;
@@ -67,7 +67,7 @@ __all__ = [
 TONGUE_PART = "beam-action pitch tongues"
 
 
-# Calibration (s), measured on the default case on one core (docs/theory/robustness.md).
+# Calibration (s), measured on the memo case on one core (docs/theory/robustness.md).
 _C_MONODROMY = 9e-5  # per grid point and Lawson step, n <= 24 modes (numpy overhead bound)
 _C_HILL = 2e-9  # per (2 m)^3 of one Hill eigenproblem, m = n (2 S + 1)
 _C_BANDS = 5.4e-3  # band search, per resonance candidate and order j (default: 204, 1.1 s)
@@ -261,7 +261,7 @@ def estimate_cost(model: BoosterModel, *, beam_action: bool = True, stability: b
 
 
 # The rigid-pitch tongue search (flexbooster.memo.beam_action.pitch_tongue_bands; one core),
-# measured on 310 fuzz-like boosters (N = 1..4, 2..5 modes) and the default booster at N = 6
+# measured on 310 fuzz-like boosters (N = 1..4, 2..5 modes) and the memo booster at N = 6
 # and 10 (benchmarks/bench_cost.py): each harmonic-balance eigenproblem (QZ, order m = n h,
 # 2 n h with damping, h = 2 K or 2 K + 1 harmonic blocks) costs _TONGUE_QZ m^3 + _TONGUE_CALL;
 # the growth maximum of tongue r (~31 Hill eigenproblems of order 2 n (2 S_r + 1) and one of
@@ -381,7 +381,7 @@ def tongue_search_seconds(system: Any, gamma: float, *, omega_min: float, omega_
     return float(seconds)
 
 
-# Vehicle stages: calibration on the default case's vehicle (the memo's two
+# Vehicle stages: calibration on the memo case's vehicle (the memo's two
 # cylinders, 263 FE DOFs), one core.  The modes survey (``[vehicle]`` only): k_max = 20 in
 # 0.38 s, 40 in 0.47 s (-> 0.3 s + 5e-3 s per harmonic); building a harmonic of the regions:
 # flexbooster.dynamics.HARMONIC_BUILD_SECONDS; its search where the certificate does not
@@ -409,7 +409,7 @@ _DAMPED_UPFRONT_FACTOR, _BOUNDARY_SEARCH_FACTOR = 3.0, 4.0
 # CPU time); computed for the map, again by the search, and once more for the chart's curves
 _C_CERTIFICATE = 3.5e-9
 # The forced response (k = 0 and 1, with the half-basis convergence run of each forced
-# harmonic): the default case's memo vehicle, 400 Omega points, 0.87 s axial only, 1.83 s with
+# harmonic): the memo case's vehicle, 400 Omega points, 0.87 s axial only, 1.83 s with
 # a misalignment (the lateral harmonic forced too); the README's [vehicle] 0.15 s / 0.23 s.
 _C_FORCED = 0.9
 

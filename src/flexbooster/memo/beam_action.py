@@ -52,7 +52,7 @@ __all__ = ["PeriodMapOverflowError", "BeamActionSystem", "beam_action_system", "
 _STABLE_TOL = 1e-6  # |Im alpha| below which an exponent counts as real (see docs)
 
 #: Cap on the automatic step count of :func:`monodromy_exponents` per half period: the
-#: largest count the default case uses.
+#: largest count the memo case uses.
 MONODROMY_MAX_STEPS = 8192
 
 

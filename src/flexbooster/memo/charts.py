@@ -66,7 +66,7 @@ BEAM_ACTION_CHART_STEP_PHASE = 0.25
 #: :data:`VEHICLE_CHART_GAMMA_MAX`.
 VEHICLE_CHART_LEVELS = 4
 #: Largest gamma of the vehicle's region chart, raised to the case's gamma when that is larger
-#: (the search cost grows fast with gamma: at 0.5 the default vehicle's 20-mode search takes a
+#: (the search cost grows fast with gamma: at 0.5 the memo vehicle's 20-mode search takes a
 #: minute where the stability certificate fails, at 0.2 the certificate holds for every k and
 #: it takes 0.3 s).
 VEHICLE_CHART_GAMMA_MAX = 0.2
