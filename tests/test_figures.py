@@ -2,7 +2,7 @@
 views the figures promise (one quantity per axes, the path in view, the regions at the case's
 damping, stations in metres, frequencies in Hz), and no two of its texts overprint.
 
-Most checks read the default case's analysis (``default_results``, shared by the session).
+Most checks read the memo case's analysis (``memo_results``, shared by the session).
 """
 
 from __future__ import annotations
@@ -75,13 +75,13 @@ def _band(lo_hz: float, hi_hz: float, *, growth: float | None = None,
 # ------------------------------------------------------------------------------ danger map
 
 
-def test_danger_map_one_quantity_per_panel(default_results):
+def test_danger_map_one_quantity_per_panel(memo_results):
     # the default case has beam-action regions (growth rates) and damped resonances (steady
     # amplitudes): two panels, one y quantity each, never two scales on one axes (no twin:
     # the panels' rectangles are disjoint)
     from flexbooster.present.plotting.danger import danger_map, danger_quantities
 
-    danger = default_results.danger
+    danger = memo_results.danger
     regions = [b for b in danger.bands if b.growth_rate is not None]
     stems = [b for b in danger.bands if b.growth_rate is None]
     assert regions and stems
@@ -108,7 +108,7 @@ def test_danger_map_one_quantity_per_panel(default_results):
     # the stems are the resonances at the damped steady amplitude in mm: the single-mode
     # closed form |G| / (2 zeta omega^2) = v / (zeta omega) (Meirovitch 1986, sec. 3.3) from the
     # band's undamped severity v (m/s), the case's modal damping and the mode's omega, 1e-12
-    zeta = default_results.case.damping.modal_ratio
+    zeta = memo_results.case.damping.modal_ratio
     stem = {ln.get_gid(): ln for ln in bottom.get_lines() if ln.get_gid()}
     assert len(stem) == len(stems)
     for n, b in enumerate(danger.bands):
@@ -125,12 +125,12 @@ def test_danger_map_one_quantity_per_panel(default_results):
         assert numbers[str(n + 1)] is expected
 
 
-def test_danger_map_labels_never_overprinted(default_results):
+def test_danger_map_labels_never_overprinted(memo_results):
     # every text of the drawn map (tick labels in view, axis labels, title, legends, the rank
     # numbers) apart from every other
     from flexbooster.present.plotting.danger import danger_map
 
-    fig = danger_map(default_results.danger)
+    fig = danger_map(memo_results.danger)
     render_figure(fig)
     assert _overprinted(fig) == []
 
@@ -169,15 +169,15 @@ def test_danger_map_without_bands_says_so():
 # ------------------------------------------------------------------------- Ince-Strutt
 
 
-def test_ince_strutt_view_holds_the_path_and_is_at_most_a_stated_factor_wider(default_results):
+def test_ince_strutt_view_holds_the_path_and_is_at_most_a_stated_factor_wider(memo_results):
     # the view contains the whole operating path (a, |q|) of eq. (4.2-4), stored in
     # results.pitch, and is at most 1.1 x its q extent (from q = 0) and 1.2 x its a extent
     # (10 % margins each side; PATH_MARGIN), never the fixed [0, 0.1] x [-0.2, 1.5] frame
     from flexbooster.present.plotting.pitch import ince_strutt_chart
 
-    pitch = default_results.pitch
+    pitch = memo_results.pitch
     q_path, a_path = np.abs(pitch.q), pitch.a
-    fig = ince_strutt_chart(default_results.figures.ince_strutt, Omega=pitch.Omega)
+    fig = ince_strutt_chart(memo_results.figures.ince_strutt, Omega=pitch.Omega)
     render_figure(fig)
     ax = fig.axes[0]
     (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
@@ -193,14 +193,14 @@ def test_ince_strutt_view_holds_the_path_and_is_at_most_a_stated_factor_wider(de
 # ---------------------------------------------------------------- beam-action band chart
 
 
-def test_beam_action_chart_draws_the_regions_at_the_case_damping(default_results):
+def test_beam_action_chart_draws_the_regions_at_the_case_damping(memo_results):
     # the thick bars on the case's gamma are the stored beam-action bands (computed at the
     # case's damping: [damping] modal_ratio for the beam, pitch_ratio for the rigid pitch),
     # their edges in Hz exactly; the title states that damping; each region's outline passes
     # through its band's edges at the case's gamma (the outline agrees with the band)
     from flexbooster.present.outputs import make_figures
 
-    r = default_results
+    r = memo_results
     ba = r.beam_action
     assert ba.beam_damping_ratio == r.case.damping.modal_ratio
     assert ba.pitch_damping_ratio == r.case.damping.pitch_ratio
@@ -285,14 +285,14 @@ def test_vehicle_region_chart_axes_and_scale_labels_placed():
 # ------------------------------------------------------------------------- beam modes
 
 
-def test_beam_modes_against_the_station_in_metres(default_results):
+def test_beam_modes_against_the_station_in_metres(memo_results):
     # zeta = xi_bar - d4/L + 1 with xi_bar = (x - x_cm)/L and d4 = L - x_cm gives x = L zeta
     # (C-6): the default booster (L1 = 21 m, L2 = 9 m, L = 30 m) spans 0..60 m, the junction
     # at 2 L1 = 42 m from the aft edge (exact to 1e-12)
     from flexbooster.present.plotting.beam import mode_shape_plot
 
-    data = default_results.figures.beam_modes
-    b = default_results.case.booster
+    data = memo_results.figures.beam_modes
+    b = memo_results.case.booster
     L1, L2 = b.cylinder1.half_length, b.cylinder2.half_length
     fig = mode_shape_plot(data)
     ax = fig.axes[0]
@@ -320,15 +320,15 @@ def _frequency_labels(fig) -> list[str]:
 
 
 @pytest.mark.slow
-def test_every_frequency_axis_in_hz(default_results):
+def test_every_frequency_axis_in_hz(memo_results):
     # every axis of every figure of the default case that carries a frequency names it in Hz:
     # no "rad/s" axis; a "frequency" or "Omega (" axis says "(Hz)" (the memo's dimensionless
     # Omega / omega_1 on the top of its own charts is a ratio, not a frequency axis)
     from flexbooster.present.outputs import figure_names, make_figures
 
     seen = 0
-    for name in figure_names(default_results):
-        fig = make_figures(default_results, names=(name,))[name]
+    for name in figure_names(memo_results):
+        fig = make_figures(memo_results, names=(name,))[name]
         for label in _frequency_labels(fig):
             assert "rad/s" not in label, (name, label)
             if "frequency" in label or "Omega (" in label:
