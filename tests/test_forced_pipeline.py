@@ -405,3 +405,21 @@ def test_no_oscillation_is_zero_and_said(tmp_path):
     console = Console(record=True, width=200)
     print_forced_response(types.SimpleNamespace(forced_response=loads), console)
     assert FORCED_ZERO in console.export_text().replace("\n", " ")
+
+
+def test_a_supported_aft_end_reacting_the_misalignment_is_a_warning(memo_case_dict):
+    """The memo's vehicle has shear-diaphragm ends (memo 5.3-2): a support at the aft edge
+    reacts the thrust's lateral component, so the k = 1 response is exactly zero (statics: the
+    load acts on a constrained degree of freedom) and the stage says so; with free ends (the
+    vehicle in flight) the same misalignment bends the vehicle and nothing is said."""
+    from flexbooster.analysis import _forced_stage  # noqa: PLC2701 - the stage's own wrapper
+
+    memo_case_dict["thrust"]["misalignment"] = 0.01
+    found, warnings = _forced_stage(flexbooster.load_case(memo_case_dict))
+    assert [(w.code, w.field) for w in warnings] == [("misalignment-reacted",
+                                                      "thrust.misalignment")]
+    k1 = found.response.harmonics.index(1)
+    assert not np.any(found.response.bending_moment[k1])
+    memo_case_dict["vehicle"] = {"aft_end": "free", "fwd_end": "free"}
+    found, warnings = _forced_stage(flexbooster.load_case(memo_case_dict))
+    assert warnings == [] and np.max(np.abs(found.response.bending_moment[k1])) > 0.0

@@ -815,7 +815,17 @@ def _forced_stage(case: Case) -> tuple[ForcedLoads | None, list[AnalysisWarning]
     from .errors import CaseError
 
     try:
-        return analyze_forced_response(case), []
+        loads = analyze_forced_response(case)
     except CaseError as exc:
         return None, [AnalysisWarning("forced-response-skipped", exc.field,
                                       f"{exc.field} = {exc.value!r}: {exc.rule}")]
+    aft = vehicle_from_case(case).aft_end
+    if case.thrust.misalignment != 0.0 and aft != "free":
+        # a supported aft edge reacts the lateral thrust there: the k = 1 response is zero
+        return loads, [AnalysisWarning(
+            "misalignment-reacted", "thrust.misalignment",
+            f"the aft end is {aft!r} (the memo's shell ends unless vehicle.aft_end says "
+            "otherwise): it reacts the thrust's lateral component, so the lateral (k = 1) "
+            "forced response is zero; set vehicle.aft_end = \"free\" for the vehicle in "
+            "flight")]
+    return loads, []
