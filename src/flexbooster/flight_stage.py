@@ -13,7 +13,7 @@ import numpy as np
 
 from . import cost, floquet
 from .case import Case
-from .dynamics import forced_axial, forced_response, vehicle_regions
+from .dynamics import STANDARD_GRAVITY, forced_axial, forced_response, vehicle_regions
 from .errors import AnalysisWarning, CaseError
 from .flight import (
     band_events,
@@ -30,11 +30,9 @@ from .shell_of_revolution import BucklingError
 from .shell_of_revolution.mass_properties import mass_properties
 from .shell_of_revolution.modes import mode_vectors, shared_harmonics, vehicle_modes
 
-__all__ = ["flight_stage", "flight_omega_range", "STANDARD_GRAVITY", "KNOWN_FREQUENCY_MARGIN",
+__all__ = ["flight_stage", "flight_omega_range", "KNOWN_FREQUENCY_MARGIN",
            "MATCH_RTOL", "MIN_PARTICIPATION"]
 
-#: g (m/s^2) of the accelerations in g (CGPM 1901).
-STANDARD_GRAVITY = 9.80665
 #: A flight whose oscillation is one constant frequency: the regions are searched over that
 #: frequency times (1 -+ this), so that a region holding it is found with its edges.
 KNOWN_FREQUENCY_MARGIN = 0.05
