@@ -130,3 +130,15 @@ def test_the_limit_and_floor_leave_regions_without_a_value():
     top = found.regions[0].growth_rate_max
     assert region_critical_damping(found, growth_floor=2.0 * top).regions[0] \
         .critical_damping_ratio is None
+
+
+def test_a_fixed_damping_part_adds_to_the_scaled_one():
+    # C0 + zeta C1 with C0 = 0.01 C1 is the damping (zeta + 0.01) C1: the threshold in zeta is
+    # the one without C0 less 0.01 (exact, the same equation)
+    M, C1, A = np.eye(1), np.array([[2.0 * W]]), np.array([[W * W]])
+    B = np.array([[-GAMMA * W * W]])
+    plain = floquet.critical_damping(M, C1, A, B, omega_lo=19.49, omega_hi=20.5)
+    (region,) = floquet.instability_regions(M, 0.01 * C1, A, B, 15.0, 25.0)
+    shifted = floquet.critical_damping(M, C1, A, B, omega_lo=region.omega_lo,
+                                       omega_hi=region.omega_hi, C0=0.01 * C1)
+    assert shifted == pytest.approx(plain - 0.01, rel=1e-5)

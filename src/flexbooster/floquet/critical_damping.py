@@ -1,6 +1,6 @@
 """The smallest modal damping that closes an instability region of a linear periodic system.
 
-M q'' + zeta C1 q' + (A + B cos Omega t) q = 0: the region's largest growth rate g(zeta) =
+M q'' + (C0 + zeta C1) q' + (A + B cos Omega t) q = 0: the region's largest growth rate g(zeta) =
 max over Omega in the region of log|rho|_max / T falls as the damping grows (Bolotin 1964,
 sec. 6); its root in zeta is the critical damping ratio.  Theory: ``docs/theory/verdicts.md``.
 """
@@ -28,11 +28,12 @@ _OMEGA_XTOL = 1e-4
 
 
 def critical_damping(M, C1, A, B, *, omega_lo: float, omega_hi: float, zeta: float = 0.0,
+                     C0=None,
                      zeta_max: float = ZETA_SEARCH_MAX, omega_start: float | None = None,
                      rtol: float = 1e-6,
                      step_phase: float = 0.06, max_steps: int = MAX_STEPS) -> float | None:
     """Smallest zeta >= ``zeta`` at which the region open in [omega_lo, omega_hi] at damping
-    zeta C1 closes, or None when it is still open at ``zeta_max``.
+    C0 + zeta C1 closes, or None when it is still open at ``zeta_max``.
 
     The damped region lies inside the less damped one (damping narrows a region about its
     centre, Bolotin 1964, sec. 6), so the search stays in the given interval: the region's edges
@@ -47,6 +48,8 @@ def critical_damping(M, C1, A, B, *, omega_lo: float, omega_hi: float, zeta: flo
         The region's edges at ``zeta`` (rad/s), 0 < omega_lo < omega_hi.
     zeta : float
         The damping ratio at which the region is open, 0 <= zeta < zeta_max.
+    C0 : array_like, shape (n, n), optional
+        Damping that does not scale with zeta (1/s; e.g. the rigid pitch's own), default 0.
     zeta_max : float
         Largest damping ratio searched, <= 1.
     omega_start : float, optional
@@ -69,6 +72,9 @@ def critical_damping(M, C1, A, B, *, omega_lo: float, omega_hi: float, zeta: flo
     C1 = np.asarray(C1, dtype=float)
     if not np.all(np.isfinite(C1)) or not np.any(C1):
         raise ValueError("C1: must be finite and not zero (the damping per unit ratio)")
+    C0 = np.zeros_like(C1) if C0 is None else np.asarray(C0, dtype=float)
+    if C0.shape != C1.shape or not np.all(np.isfinite(C0)):
+        raise ValueError(f"C0: must be finite with the shape of C1 {C1.shape}")
     floor = CLOSED_GROWTH * hi
     xtol = np.array([max(_OMEGA_XTOL * (hi - lo), 1e-15 * hi)])
     best = [0.5 * (lo + hi) if omega_start is None or not lo <= omega_start <= hi
@@ -76,7 +82,7 @@ def critical_damping(M, C1, A, B, *, omega_lo: float, omega_hi: float, zeta: flo
 
     def g(z: float) -> float:
         def f(x, idx):
-            return growth_rate(M, z * C1, A, B, np.asarray(x, dtype=float),
+            return growth_rate(M, C0 + z * C1, A, B, np.asarray(x, dtype=float),
                                step_phase=step_phase, max_steps=max_steps)
 
         starts = np.concatenate([[best[0]], np.linspace(lo, hi, _SAMPLES)])
