@@ -22,9 +22,12 @@ import numpy as np
 
 from .checks import count, nonnegative, positive
 from .errors import AnalysisWarning, CaseError
-from .floquet import MATHIEU_SCALE_MAX
+from .floquet import MATHIEU_SCALE_MAX, search_work
 from .memo.beam_action import (
+    BAND_MAX_CANDIDATES,
+    BAND_MAX_ORDER,
     BAND_OMEGA_BAR_MIN,
+    BAND_RTOL,
     MONODROMY_MAX_STEPS,
     TONGUE_FLOOR_OMEGA_BAR,
     TONGUE_GAMMA_RTOL,
@@ -56,6 +59,8 @@ __all__ = [
     "region_modes",
     "search_seconds",
     "bending_search_steps",
+    "damped_band_steps",
+    "search_step_seconds",
     "BENDING_SEARCH_PART",
     "TONGUE_PART",
     "tongue_search_seconds",
@@ -70,8 +75,6 @@ TONGUE_PART = "beam-action pitch tongues"
 _C_MONODROMY = 9e-5  # per grid point and Lawson step, n <= 24 modes (numpy overhead bound)
 _C_HILL = 2e-9  # per (2 m)^3 of one Hill eigenproblem, m = n (2 S + 1)
 _C_BANDS = 5.4e-3  # band search, per resonance candidate and order j (default: 204, 1.1 s)
-_DAMPED_FACTOR = 40.0  # with damping: the critical gamma of every region (a search each)
-_BAND_RTOL = 1e-9  # flexbooster.memo.beam_action.BAND_RTOL
 _C_CHART = 2.5  # beam-action chart of the default, scales like (n / 11)^2.5
 _C_PITCH_STEP = (2e-5, 3e-7)  # per Magnus step: fixed, per grid point
 _C_TONGUE = 0.07  # pitch bands, per tongue in the range
@@ -148,7 +151,7 @@ def _resonance_weight(A0: np.ndarray, B: np.ndarray, lo: float, hi: float) -> fl
     j_lo = np.maximum(1.0, np.ceil(base / hi))
     j_hi = np.minimum(np.floor(base / lo), 1e7)
     if zeta < 1.0:  # est ~ scale zeta^(j - 2) >= 1e-2 rtol: the highest order kept
-        top = 2.0 + np.log(np.maximum(1e-2 * _BAND_RTOL / np.maximum(scale, 1e-300),
+        top = 2.0 + np.log(np.maximum(1e-2 * BAND_RTOL / np.maximum(scale, 1e-300),
                                       1e-300)) / np.log(max(zeta, 1e-300))
         j_hi = np.minimum(j_hi, np.maximum(top, 1.0))
     n_j = np.maximum(0.0, j_hi - j_lo + 1.0)
@@ -233,7 +236,10 @@ def estimate_cost(model: BoosterModel, *, beam_action: bool = True, stability: b
             weight = _resonance_weight(system.A0, model.gamma * system.B, lo_b,
                                        hi / model.omega_1)
             damped = model.beam_damping_ratio > 0.0 or model.pitch_damping_ratio > 0.0
-            parts["beam-action bands"] = _C_BANDS * weight * (1.0 + _DAMPED_FACTOR * damped)
+            # damped: the undamped seeds, the damped regions and their critical gamma, all
+            # counted in monodromy steps (the undamped search alone: per candidate and order)
+            parts["beam-action bands"] = (damped_band_steps(model)[1] if damped
+                                          else _C_BANDS * weight)
             drivers["beam-action bands"] = ("truncation.N", "thrust.omega_min",
                                             "damping.modal_ratio", "thrust.F0")
         low_hi = min(hi, BAND_OMEGA_BAR_MIN * model.omega_1)
@@ -445,12 +451,17 @@ BENDING_SEARCH_PART = "vehicle k = 1 search"
 # measured by a step counter on 10 free-free cases (damping 0.3 / 0.99, 2 modes, Omega
 # 0.2-6 rad/s; scripts/free_free_damped_cases.py): undamped seeds 10-31 x the steps at the
 # candidate centres, damped search 16-464 x (marches to the ends of the widened range, 8 or 64
-# check points per round; the worst case, index 1, past 464 x when stopped at 155 s CPU), so
-# 500 x: over by up to 30x where the marches stay short; CPU per integration step of one
-# point: 3.2e-5..5.7e-5 s at n = 2 (the dense Lawson kernel: a Python loop of 4 (2n x 2n)
-# products per step), n^3 assumed beyond n = 8 (not measured)
+# check points per round), so 500 x (measured 250-500 x the damped steps in all on indices
+# 47, 25, 7).  The memo's beam action (light damping, 1 %: its damped regions end near their
+# seeds) integrates 7.8 x its undamped and 33.5 x its damped centre steps (the default case,
+# search and critical gamma), so 10 x and 40 x there.
 _K1_EVALS_UNDAMPED, _K1_EVALS_DAMPED = 30.0, 500.0
-_C_K1_STEP, _K1_STEP_N = 5e-5, 8.0
+_MEMO_EVALS_UNDAMPED, _MEMO_EVALS_DAMPED = 10.0, 40.0
+# CPU per integration step of one point, dense kernel (step matrices formed for a block of
+# steps and multiplied by pairs, floquet.multipliers): a fixed part and one (2n)^3 product,
+# 14.6 us at n = 11 (the memo's default, 81,931 steps in 1.2 s) and 0.85-2.8 us at n = 2
+# (free-free indices 7, 25, 47, with the harmonic's build), one core
+_C_SEARCH_STEP = (2e-6, 1.2e-9)
 # above this many modes the k = 1 search is estimated by search_seconds (n^4 law: 96 s at 40
 # modes, so such a search is the budget's concern anyway) after the certificate, without
 # enumerating its candidates (247 modes over a wide range: more than 20 GB of candidates)
@@ -476,8 +487,56 @@ def bending_search_steps(work: Any) -> tuple[float, float]:
         return 0.0, 0.0
     steps = (_K1_EVALS_UNDAMPED * work.undamped_steps
              + _K1_EVALS_DAMPED * work.damped_steps)  # eq. above: evaluations x steps
-    per_step = _C_K1_STEP * max(1.0, (work.n / _K1_STEP_N) ** 3)
-    return float(steps), float(steps * per_step)
+    return float(steps), float(steps * search_step_seconds(work.n))
+
+
+def search_step_seconds(n: int) -> float:
+    """CPU time (s, one core) of one monodromy integration step of one point of a system of n
+    degrees of freedom: a fixed part and one (2n)^3 matrix product (measured, see above).
+
+    Parameters
+    ----------
+    n : int
+        Degrees of freedom, >= 1.
+    """
+    c0, c1 = _C_SEARCH_STEP
+    return c0 + c1 * float(2 * count("n", n, 1, None)) ** 3
+
+
+def damped_band_steps(model: BoosterModel) -> tuple[float, float]:
+    """Monodromy steps (summed over the evaluated points) and CPU time (s, one core) of the damped
+    part of the memo's beam-action band search above omega_1 / 4 (the damped regions from their
+    undamped seeds and the critical gamma of each): 10 x the undamped and 40 x the damped step
+    counts at the candidate centres (:func:`flexbooster.floquet.search_work`, steps chosen as the
+    kernel does); 0 without damping or where the damping certifies the system stable.
+
+    Parameters
+    ----------
+    model : BoosterModel
+        The derived model.
+    """
+    if model.gamma <= 0.0:
+        return 0.0, 0.0
+    system = beam_system(model)
+    w1 = float(system.omega_1)
+    lo = max(float(np.min(model.Omega)), BAND_OMEGA_BAR_MIN * w1) / w1
+    hi = float(np.max(model.Omega)) / w1
+    C = modal_damping(system, beam_ratio=model.beam_damping_ratio,
+                      pitch_ratio=model.pitch_damping_ratio)
+    if C is None or not hi > lo:
+        return 0.0, 0.0
+    n = system.N + 1
+    try:
+        work = search_work(np.eye(n), C, system.A0, -model.gamma * system.B, lo, hi,
+                           rtol=BAND_RTOL, max_order=BAND_MAX_ORDER,
+                           max_candidates=BAND_MAX_CANDIDATES, step_phase=0.12)
+    except ValueError:  # past a size limit of the toolkit: the stage says so
+        return 0.0, 0.0
+    if work.steady or work.certified:
+        return 0.0, 0.0
+    steps = (_MEMO_EVALS_UNDAMPED * work.undamped_steps
+             + _MEMO_EVALS_DAMPED * work.damped_steps)
+    return float(steps), float(steps * search_step_seconds(work.n))
 
 
 def _bending_search_seconds(case: Any, vehicle: Any, n_modes: int, zeta: float) -> float:
