@@ -576,7 +576,8 @@ def test_fuzz_reproducer_free_free_heavy_damping_is_refused_up_front():
     case = flexbooster.load_case(data)
     est = cost.estimate_vehicle_cost(case, figures=False)
     assert est.parts[cost.BENDING_SEARCH_PART] == max(est.parts.values())
-    assert cost.bending_search_steps(script.k1_work(case))[0] > 7e6
+    assert cost.bending_search_steps(script.k1_work(case),
+                                     damping_ratio=case.vehicle_damping_ratio)[0] > 7e6
     budget = 0.5 * est.parts[cost.BENDING_SEARCH_PART]
     with pytest.raises(CaseError) as info:
         analyze(flexbooster.load_case({**data, "max_seconds": budget}), figures=False,
@@ -599,7 +600,8 @@ def test_fuzz_reproducer_free_free_heavy_damping_steps_within_the_estimate():
     script = _free_free_script()
     case = flexbooster.load_case(script.free_free_cases()[47])
     t = case.thrust
-    estimated = cost.bending_search_steps(script.k1_work(case))[0]
+    estimated = cost.bending_search_steps(script.k1_work(case),
+                                          damping_ratio=case.vehicle_damping_ratio)[0]
     with script.StepCounter() as counter:
         bending_regions(vehicle_from_case(case), F0=case.F0, gamma=t.gamma,
                         omega_min=t.omega_min, omega_max=t.omega_max, gimbal_gain=t.K,

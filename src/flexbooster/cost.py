@@ -60,6 +60,7 @@ __all__ = [
     "search_seconds",
     "bending_search_steps",
     "damped_band_steps",
+    "damped_search_cost",
     "search_step_seconds",
     "BENDING_SEARCH_PART",
     "TONGUE_PART",
@@ -447,52 +448,81 @@ def search_seconds(n_modes: int, omega_min: float, omega_max: float, *, damped: 
 #: harmonic (:func:`bending_search_steps`).
 BENDING_SEARCH_PART = "vehicle k = 1 search"
 # The damped k = 1 search keeps the undamped rigid pitch (gimbal gain K > 0), so the damping
-# certifies nothing and the harmonic is searched.  Monodromy evaluations per candidate,
-# measured by a step counter on 10 free-free cases (damping 0.3 / 0.99, 2 modes, Omega
-# 0.2-6 rad/s; scripts/free_free_damped_cases.py): undamped seeds 10-31 x the steps at the
-# candidate centres, damped search 16-464 x (marches to the ends of the widened range, 8 or 64
-# check points per round), so 500 x (measured 250-500 x the damped steps in all on indices
-# 47, 25, 7).  The memo's beam action (light damping, 1 %: its damped regions end near their
-# seeds) integrates 7.8 x its undamped and 33.5 x its damped centre steps (the default case,
-# search and critical gamma), so 10 x and 40 x there.
-_K1_EVALS_UNDAMPED, _K1_EVALS_DAMPED = 30.0, 500.0
-_MEMO_EVALS_UNDAMPED, _MEMO_EVALS_DAMPED = 10.0, 40.0
-# CPU per integration step of one point, dense kernel (step matrices formed for a block of
-# steps and multiplied by pairs, floquet.multipliers): a fixed part and one (2n)^3 product,
-# 14.6 us at n = 11 (the memo's default, 81,931 steps in 1.2 s) and 0.85-2.8 us at n = 2
-# (free-free indices 7, 25, 47, with the harmonic's build), one core
-_C_SEARCH_STEP = (2e-6, 1.2e-9)
+# certifies nothing and the harmonic is searched.  The work of a damped search, counted by a
+# step counter (scripts/free_free_damped_cases.py, tests/test_cost.py), in units of the step
+# counts at the candidate centres (floquet.search_work): light damping (zeta = 0.01) 7.8 x the
+# undamped and 33.5 x the damped steps (the memo's default: seeds, damped regions, critical
+# gamma; the README's two-stage liquid vehicle's k = 1, 232 candidates: 33 x in all), so 10 x
+# and 40 x; heavy damping (zeta = 0.3, free-free, 2 modes, Omega 0.2-6 rad/s: the marches run
+# to the ends of the widened range) 250-500 x in all, so 30 x and 500 x; log-log between, the
+# end values outside.  Evaluated points: 68 per candidate (memo), 24 (liquid): 70.
+_EVALS_ZETA = (0.01, 0.3)
+_EVALS_UNDAMPED, _EVALS_DAMPED, _EVALS_POINTS = (10.0, 30.0), (40.0, 500.0), 70.0
+# CPU, one core: per evaluated point 4e-4 s (the step rule, two expm, the eigenvalues) and per
+# integration step of one point 1e-6 s + 3e-10 s (2n)^3 (the dense kernel: step matrices of a
+# block of steps multiplied by pairs); fitted on the memo's default (n = 11: 1,775 points,
+# 81,931 steps, 1.2 s), the liquid vehicle's k = 1 (n = 19: 5,571 points, 1.38 million steps,
+# 24.6 s) and free-free index 7 (n = 2: 2.08 million steps, 1.8 s)
+_C_SEARCH_POINT = 4e-4
+_C_SEARCH_STEP = (1e-6, 3e-10)
 # above this many modes the k = 1 search is estimated by search_seconds (n^4 law: 96 s at 40
 # modes, so such a search is the budget's concern anyway) after the certificate, without
 # enumerating its candidates (247 modes over a wide range: more than 20 GB of candidates)
 _K1_COUNTED_MODES = 40
 
 
-def bending_search_steps(work: Any) -> tuple[float, float]:
+def bending_search_steps(work: Any, *, damping_ratio: float) -> tuple[float, float]:
     """Monodromy integration steps (summed over the evaluated points) and CPU time (s, one core)
     of the k = 1 region search whose work the toolkit counts up front (steps per period chosen
-    exactly as the monodromy kernel does, at each candidate's centre).
+    exactly as the monodromy kernel does, at each candidate's centre): :func:`damped_search_cost`.
 
     Parameters
     ----------
     work : flexbooster.floquet.SearchWork
         :func:`flexbooster.floquet.search_work` of the harmonic (0 steps when steady or
         certified stable: no search).
+    damping_ratio : float
+        The modal damping ratio of the harmonic, 0 < zeta < 1.
+    """
+    return damped_search_cost(work, damping_ratio=damping_ratio)
+
+
+def damped_search_cost(work: Any, *, damping_ratio: float) -> tuple[float, float]:
+    """Steps (summed over the evaluated points) and CPU time (s, one core) of a damped region
+    search (the undamped seeds, the damped regions, the critical gamma of each) from its count
+    up front: E_u x the undamped + E_d x the damped steps at the candidate centres, E_u = 10,
+    E_d = 40 at zeta <= 0.01 to 30 and 500 at zeta >= 0.3 (log-log between), and 70 evaluated
+    points per candidate; 4e-4 s per point and :func:`search_step_seconds` per step (measured).
+
+    Parameters
+    ----------
+    work : flexbooster.floquet.SearchWork
+        :func:`flexbooster.floquet.search_work` of the damped system (0 when steady or
+        certified stable: no search).
+    damping_ratio : float
+        The damping ratio that drives the search, 0 < zeta < 1.
     """
     from .floquet import SearchWork
 
     if not isinstance(work, SearchWork):
         raise ValueError(f"work = {type(work).__name__}: must be a SearchWork")
+    zeta = positive("damping_ratio", damping_ratio)
+    if zeta >= 1.0:
+        raise ValueError(f"damping_ratio = {zeta!r}: must satisfy 0 < zeta < 1")
     if work.steady or work.certified:
         return 0.0, 0.0
-    steps = (_K1_EVALS_UNDAMPED * work.undamped_steps
-             + _K1_EVALS_DAMPED * work.damped_steps)  # eq. above: evaluations x steps
-    return float(steps), float(steps * search_step_seconds(work.n))
+    z0, z1 = _EVALS_ZETA
+    x = min(max(math.log(zeta / z0) / math.log(z1 / z0), 0.0), 1.0)  # log-log interpolation
+    e_u, e_d = (a * (b / a) ** x for a, b in (_EVALS_UNDAMPED, _EVALS_DAMPED))
+    steps = e_u * work.undamped_steps + e_d * work.damped_steps
+    seconds = (_C_SEARCH_POINT * _EVALS_POINTS * work.n_candidates
+               + steps * search_step_seconds(work.n))
+    return float(steps), float(seconds)
 
 
 def search_step_seconds(n: int) -> float:
     """CPU time (s, one core) of one monodromy integration step of one point of a system of n
-    degrees of freedom: a fixed part and one (2n)^3 matrix product (measured, see above).
+    degrees of freedom in the dense kernel: 1e-6 s + 3e-10 s (2n)^3 (measured, see above).
 
     Parameters
     ----------
@@ -506,9 +536,9 @@ def search_step_seconds(n: int) -> float:
 def damped_band_steps(model: BoosterModel) -> tuple[float, float]:
     """Monodromy steps (summed over the evaluated points) and CPU time (s, one core) of the damped
     part of the memo's beam-action band search above omega_1 / 4 (the damped regions from their
-    undamped seeds and the critical gamma of each): 10 x the undamped and 40 x the damped step
-    counts at the candidate centres (:func:`flexbooster.floquet.search_work`, steps chosen as the
-    kernel does); 0 without damping or where the damping certifies the system stable.
+    undamped seeds and the critical gamma of each): :func:`damped_search_cost` at the largest
+    of the beam and pitch damping ratios; 0 without damping or pulsation, or where the damping
+    certifies the system stable.
 
     Parameters
     ----------
@@ -532,11 +562,8 @@ def damped_band_steps(model: BoosterModel) -> tuple[float, float]:
                            max_candidates=BAND_MAX_CANDIDATES, step_phase=0.12)
     except ValueError:  # past a size limit of the toolkit: the stage says so
         return 0.0, 0.0
-    if work.steady or work.certified:
-        return 0.0, 0.0
-    steps = (_MEMO_EVALS_UNDAMPED * work.undamped_steps
-             + _MEMO_EVALS_DAMPED * work.damped_steps)
-    return float(steps), float(steps * search_step_seconds(work.n))
+    return damped_search_cost(work, damping_ratio=max(model.beam_damping_ratio,
+                                                      model.pitch_damping_ratio))
 
 
 def _bending_search_seconds(case: Any, vehicle: Any, n_modes: int, zeta: float) -> float:
@@ -560,7 +587,7 @@ def _bending_search_seconds(case: Any, vehicle: Any, n_modes: int, zeta: float) 
         work = floquet.search_work(*system, t.omega_min, t.omega_max, **floquet_options())
     except (*LIMIT_ERRORS, BucklingError, ValueError):
         return 0.0
-    return bending_search_steps(work)[1]
+    return bending_search_steps(work, damping_ratio=zeta)[1]
 
 
 def _dof_factor(vehicle) -> float:
