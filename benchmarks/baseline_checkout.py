@@ -8,11 +8,12 @@ packages (``PYTHONPATH=<folder>/src``), and removed afterwards.
 from __future__ import annotations
 
 import subprocess
-from collections.abc import Iterator
+import tempfile
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
 
-__all__ = ["ROOT", "baseline_checkout"]
+__all__ = ["ROOT", "baseline_checkout", "alternate"]
 
 #: The repository root.
 ROOT = Path(__file__).resolve().parents[1]
@@ -42,3 +43,28 @@ def baseline_checkout(rev: str, folder: str | Path) -> Iterator[Path]:
     finally:
         subprocess.run(["git", "-C", str(ROOT), "worktree", "remove", "--force", str(folder)],
                        check=False)
+
+
+def alternate(rev: str, rounds: int, run: Callable[[Path], dict]) -> dict[str, list[dict]]:
+    """``run(src)`` on this tree's ``src`` and on commit ``rev``'s, alternating, ``rounds`` times.
+
+    Parameters
+    ----------
+    rev : str
+        The baseline commit.
+    rounds : int
+        Rounds (each runs both trees once).
+    run : callable
+        Takes the ``src`` folder, returns the measurements of one run.
+
+    Returns
+    -------
+    dict
+        ``{"new": [...], "old": [...]}``: the runs of this tree and of the baseline, in order.
+    """
+    out: dict[str, list[dict]] = {"new": [], "old": []}
+    with tempfile.TemporaryDirectory() as tmp, baseline_checkout(rev, Path(tmp) / "base") as base:
+        for _ in range(rounds):
+            for tree, src in (("new", ROOT / "src"), ("old", base / "src")):
+                out[tree].append(run(src))
+    return out

@@ -109,7 +109,8 @@ def main() -> None:
     cases = free_free_cases()
     for i in args.index or range(len(cases)):
         case = flexbooster.load_case(cases[i])
-        est_steps, est_s = cost.bending_search_steps(k1_work(case))
+        est_steps, est_s = cost.bending_search_steps(
+            k1_work(case), damping_ratio=case.vehicle_damping_ratio)
         line = f"{i:3d} estimate {est_steps:12.0f} steps {est_s:8.2f} s"
         if args.run:
             start = time.process_time()

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import dataclasses
 import json
+from pathlib import Path
 
 import matplotlib
 
@@ -31,6 +32,7 @@ from flexbooster.memo.beam_action import (
 from flexbooster.present.plotting.beam_action import plot_stability_chart
 
 LAM1 = beam.free_free_eigenvalues(1)[0]
+DATA = Path(__file__).parent / "data"
 
 
 def _mathieu_trace(a: float, q: float) -> float:
@@ -369,3 +371,46 @@ def test_plot_returns_figure():
 def test_bad_input_raises_value_error_naming_parameter(call, name):
     with pytest.raises(ValueError, match=name):
         call()
+
+
+def test_damped_bands_of_the_memo_case_match_the_one_step_kernel():
+    """The damped bands of the memo's case (beam 1 %, pitch 0) against those of the kernel that
+    stepped one RK4 step at a time and bisected the critical gamma down from gamma (stored by
+    tests/data/make_damped_bands_reference.py at commit 2ffa6ec: an independent run of the same
+    method).  Each edge agrees to 10 rtol (BAND_RTOL = 1e-9 of the centre) or is a zero of
+    log|rho|_max of today's monodromy to round-off (|log|rho|| <= 1e-13 per period: the plateau
+    of a region's tail whose growth is below floating point, measured 1e-15..3e-14, where any
+    two roundings put the edge elsewhere); the growth maxima agree to 1e-4 (Brent to 1e-4 of
+    its bracket on a peak flat to round-off); the critical gamma to its tolerance 1e-6 gamma.
+    """
+    import flexbooster
+    from flexbooster import floquet
+    from flexbooster.memo.beam_action import BAND_RTOL, beam_system, modal_damping, pipeline_bands
+    from flexbooster.model import model_from_case
+
+    ref = json.loads((DATA / "damped_bands_reference.json").read_text())
+    model = model_from_case(flexbooster.load_case(ref["case"]))
+    bands = pipeline_bands(model)
+    assert [(b.kind, [m.index for m in b.modes], b.order) for b in bands] == [
+        (r["kind"], [m["index"] for m in r["modes"]], r["order"]) for r in ref["bands"]]
+    system = beam_system(model)
+    w1 = system.omega_1
+    C = modal_damping(system, beam_ratio=model.beam_damping_ratio,
+                      pitch_ratio=model.pitch_damping_ratio)
+    n = system.N + 1
+
+    def log_rho(Omega):  # log|rho|_max per period at Omega (rad/s), the search's step phase
+        om = np.atleast_1d(Omega) / w1
+        g = floquet.growth_rate(np.eye(n), C, system.A0, -model.gamma * system.B, om,
+                                step_phase=0.12)
+        return g * 2.0 * np.pi / om
+
+    for band, r in zip(bands, ref["bands"], strict=True):
+        c = r["Omega_center"]
+        for key in ("Omega_lo", "Omega_hi"):
+            new, old = getattr(band, key), r[key]
+            if abs(new - old) > 10.0 * BAND_RTOL * c:
+                assert np.all(np.abs(log_rho(np.array([new, old]))) <= 1e-13), (key, new, old)
+        assert band.growth_rate_max == pytest.approx(r["growth_rate_max"], rel=1e-4)
+        assert band.critical_gamma == pytest.approx(r["critical_gamma"],
+                                                    abs=1e-6 * model.gamma)

@@ -456,6 +456,22 @@ def test_damped_combination_against_exact_shift():
     assert c.gamma_cr == pytest.approx(4 * eps_d * np.sqrt(W1 * W2), rel=1e-4)
 
 
+def test_damped_combination_with_an_undamped_mode_has_a_zero_tip():
+    # mode 1 undamped, mode 2 damped (C = diag(0, 2 eps)): the first-order threshold of the sum
+    # region is c^2 b12 b21 / (16 w1 w2) > delta_1 delta_2 = 0 (Hsu 1963), so the region holds
+    # down to gamma = 0 and its tip is reported within gamma_rtol x gamma_max of 0; with mode 1
+    # damped as well (delta_1 = delta_2 = eps) the tip is the closed form 4 eps
+    # sqrt(w1 w2 / (b12 b21)) of the test above (rel. 1e-4): the probe at gamma_rtol does not
+    # stop there
+    eps_d = 0.002
+    M, _, A, B = hsu(0.05, 1.0, 1.0)
+    opts = dict(gamma_max=0.05, omega_min=2.5, omega_max=4.0, max_order=1, gamma_rtol=1e-6)
+    (c,) = critical_amplitude(M, np.diag([0.0, 2 * eps_d]), A, B / 0.05, **opts)
+    assert c.kind == "sum" and 0.0 <= c.gamma_cr <= 1e-6 * 0.05
+    (c,) = critical_amplitude(M, 2 * eps_d * np.eye(2), A, B / 0.05, **opts)
+    assert c.gamma_cr == pytest.approx(4 * eps_d * np.sqrt(W1 * W2), rel=1e-4)
+
+
 def test_region_boundaries_hsu_width_linear_in_gamma():
     # Hsu (1963): the sum region widens like gamma sqrt(b12 b21 / (w1 w2)) from its centre
     # w1 + w2 at gamma = 0; traced widths / gamma within 0.1% of it for gamma <= 0.02

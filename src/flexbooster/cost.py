@@ -23,9 +23,12 @@ import numpy as np
 from .checks import count, nonnegative, positive
 from .dynamics.regions import CRITICAL_DAMPING_REGIONS
 from .errors import AnalysisWarning, CaseError
-from .floquet import MATHIEU_SCALE_MAX
+from .floquet import MATHIEU_SCALE_MAX, search_work
 from .memo.beam_action import (
+    BAND_MAX_CANDIDATES,
+    BAND_MAX_ORDER,
     BAND_OMEGA_BAR_MIN,
+    BAND_RTOL,
     MONODROMY_MAX_STEPS,
     TONGUE_FLOOR_OMEGA_BAR,
     TONGUE_GAMMA_RTOL,
@@ -57,6 +60,9 @@ __all__ = [
     "region_modes",
     "search_seconds",
     "bending_search_steps",
+    "damped_band_steps",
+    "damped_search_cost",
+    "search_step_seconds",
     "BENDING_SEARCH_PART",
     "TONGUE_PART",
     "tongue_search_seconds",
@@ -71,8 +77,6 @@ TONGUE_PART = "beam-action pitch tongues"
 _C_MONODROMY = 9e-5  # per grid point and Lawson step, n <= 24 modes (numpy overhead bound)
 _C_HILL = 2e-9  # per (2 m)^3 of one Hill eigenproblem, m = n (2 S + 1)
 _C_BANDS = 5.4e-3  # band search, per resonance candidate and order j (default: 204, 1.1 s)
-_DAMPED_FACTOR = 40.0  # with damping: the critical gamma of every region (a search each)
-_BAND_RTOL = 1e-9  # flexbooster.memo.beam_action.BAND_RTOL
 _C_CHART = 2.5  # beam-action chart of the default, scales like (n / 11)^2.5
 _C_PITCH_STEP = (2e-5, 3e-7)  # per Magnus step: fixed, per grid point
 _C_TONGUE = 0.07  # pitch bands, per tongue in the range
@@ -149,7 +153,7 @@ def _resonance_weight(A0: np.ndarray, B: np.ndarray, lo: float, hi: float) -> fl
     j_lo = np.maximum(1.0, np.ceil(base / hi))
     j_hi = np.minimum(np.floor(base / lo), 1e7)
     if zeta < 1.0:  # est ~ scale zeta^(j - 2) >= 1e-2 rtol: the highest order kept
-        top = 2.0 + np.log(np.maximum(1e-2 * _BAND_RTOL / np.maximum(scale, 1e-300),
+        top = 2.0 + np.log(np.maximum(1e-2 * BAND_RTOL / np.maximum(scale, 1e-300),
                                       1e-300)) / np.log(max(zeta, 1e-300))
         j_hi = np.minimum(j_hi, np.maximum(top, 1.0))
     n_j = np.maximum(0.0, j_hi - j_lo + 1.0)
@@ -234,7 +238,10 @@ def estimate_cost(model: BoosterModel, *, beam_action: bool = True, stability: b
             weight = _resonance_weight(system.A0, model.gamma * system.B, lo_b,
                                        hi / model.omega_1)
             damped = model.beam_damping_ratio > 0.0 or model.pitch_damping_ratio > 0.0
-            parts["beam-action bands"] = _C_BANDS * weight * (1.0 + _DAMPED_FACTOR * damped)
+            # damped: the undamped seeds, the damped regions and their critical gamma, all
+            # counted in monodromy steps (the undamped search alone: per candidate and order)
+            parts["beam-action bands"] = (damped_band_steps(model)[1] if damped
+                                          else _C_BANDS * weight)
             drivers["beam-action bands"] = ("truncation.N", "thrust.omega_min",
                                             "damping.modal_ratio", "thrust.F0")
         low_hi = min(hi, BAND_OMEGA_BAR_MIN * model.omega_1)
@@ -447,43 +454,122 @@ _C_CRITICAL_REGION, _CRITICAL_REGION_N = 0.8, 20.0
 #: harmonic (:func:`bending_search_steps`).
 BENDING_SEARCH_PART = "vehicle k = 1 search"
 # The damped k = 1 search keeps the undamped rigid pitch (gimbal gain K > 0), so the damping
-# certifies nothing and the harmonic is searched.  Monodromy evaluations per candidate,
-# measured by a step counter on 10 free-free cases (damping 0.3 / 0.99, 2 modes, Omega
-# 0.2-6 rad/s; scripts/free_free_damped_cases.py): undamped seeds 10-31 x the steps at the
-# candidate centres, damped search 16-464 x (marches to the ends of the widened range, 8 or 64
-# check points per round; the worst case, index 1, past 464 x when stopped at 155 s CPU), so
-# 500 x: over by up to 30x where the marches stay short; CPU per integration step of one
-# point: 3.2e-5..5.7e-5 s at n = 2 (the dense Lawson kernel: a Python loop of 4 (2n x 2n)
-# products per step), n^3 assumed beyond n = 8 (not measured)
-_K1_EVALS_UNDAMPED, _K1_EVALS_DAMPED = 30.0, 500.0
-_C_K1_STEP, _K1_STEP_N = 5e-5, 8.0
+# certifies nothing and the harmonic is searched.  The work of a damped search, counted by a
+# step counter (scripts/free_free_damped_cases.py, tests/test_cost.py), in units of the step
+# counts at the candidate centres (floquet.search_work): light damping (zeta = 0.01) 7.8 x the
+# undamped and 33.5 x the damped steps (the memo's default: seeds, damped regions, critical
+# gamma; the README's two-stage liquid vehicle's k = 1, 232 candidates: 33 x in all), so 10 x
+# and 40 x; heavy damping (zeta = 0.3, free-free, 2 modes, Omega 0.2-6 rad/s: the marches run
+# to the ends of the widened range) 250-500 x in all, so 30 x and 500 x; log-log between, the
+# end values outside.  Evaluated points: 68 per candidate (memo), 24 (liquid): 70.
+_EVALS_ZETA = (0.01, 0.3)
+_EVALS_UNDAMPED, _EVALS_DAMPED, _EVALS_POINTS = (10.0, 30.0), (40.0, 500.0), 70.0
+# CPU, one core: per evaluated point 4e-4 s (the step rule, two expm, the eigenvalues) and per
+# integration step of one point 1e-6 s + 3e-10 s (2n)^3 (the dense kernel: step matrices of a
+# block of steps multiplied by pairs); fitted on the memo's default (n = 11: 1,775 points,
+# 81,931 steps, 1.2 s), the liquid vehicle's k = 1 (n = 19: 5,571 points, 1.38 million steps,
+# 24.6 s) and free-free index 7 (n = 2: 2.08 million steps, 1.8 s)
+_C_SEARCH_POINT = 4e-4
+_C_SEARCH_STEP = (1e-6, 3e-10)
 # above this many modes the k = 1 search is estimated by search_seconds (n^4 law: 96 s at 40
 # modes, so such a search is the budget's concern anyway) after the certificate, without
 # enumerating its candidates (247 modes over a wide range: more than 20 GB of candidates)
 _K1_COUNTED_MODES = 40
 
 
-def bending_search_steps(work: Any) -> tuple[float, float]:
+def bending_search_steps(work: Any, *, damping_ratio: float) -> tuple[float, float]:
     """Monodromy integration steps (summed over the evaluated points) and CPU time (s, one core)
     of the k = 1 region search whose work the toolkit counts up front (steps per period chosen
-    exactly as the monodromy kernel does, at each candidate's centre).
+    exactly as the monodromy kernel does, at each candidate's centre): :func:`damped_search_cost`.
 
     Parameters
     ----------
     work : flexbooster.floquet.SearchWork
         :func:`flexbooster.floquet.search_work` of the harmonic (0 steps when steady or
         certified stable: no search).
+    damping_ratio : float
+        The modal damping ratio of the harmonic, 0 < zeta < 1.
+    """
+    return damped_search_cost(work, damping_ratio=damping_ratio)
+
+
+def damped_search_cost(work: Any, *, damping_ratio: float) -> tuple[float, float]:
+    """Steps (summed over the evaluated points) and CPU time (s, one core) of a damped region
+    search (the undamped seeds, the damped regions, the critical gamma of each) from its count
+    up front: E_u x the undamped + E_d x the damped steps at the candidate centres, E_u = 10,
+    E_d = 40 at zeta <= 0.01 to 30 and 500 at zeta >= 0.3 (log-log between), and 70 evaluated
+    points per candidate; 4e-4 s per point and :func:`search_step_seconds` per step (measured).
+
+    Parameters
+    ----------
+    work : flexbooster.floquet.SearchWork
+        :func:`flexbooster.floquet.search_work` of the damped system (0 when steady or
+        certified stable: no search).
+    damping_ratio : float
+        The damping ratio that drives the search, 0 < zeta < 1.
     """
     from .floquet import SearchWork
 
     if not isinstance(work, SearchWork):
         raise ValueError(f"work = {type(work).__name__}: must be a SearchWork")
+    zeta = positive("damping_ratio", damping_ratio)
+    if zeta >= 1.0:
+        raise ValueError(f"damping_ratio = {zeta!r}: must satisfy 0 < zeta < 1")
     if work.steady or work.certified:
         return 0.0, 0.0
-    steps = (_K1_EVALS_UNDAMPED * work.undamped_steps
-             + _K1_EVALS_DAMPED * work.damped_steps)  # eq. above: evaluations x steps
-    per_step = _C_K1_STEP * max(1.0, (work.n / _K1_STEP_N) ** 3)
-    return float(steps), float(steps * per_step)
+    z0, z1 = _EVALS_ZETA
+    x = min(max(math.log(zeta / z0) / math.log(z1 / z0), 0.0), 1.0)  # log-log interpolation
+    e_u, e_d = (a * (b / a) ** x for a, b in (_EVALS_UNDAMPED, _EVALS_DAMPED))
+    steps = e_u * work.undamped_steps + e_d * work.damped_steps
+    seconds = (_C_SEARCH_POINT * _EVALS_POINTS * work.n_candidates
+               + steps * search_step_seconds(work.n))
+    return float(steps), float(seconds)
+
+
+def search_step_seconds(n: int) -> float:
+    """CPU time (s, one core) of one monodromy integration step of one point of a system of n
+    degrees of freedom in the dense kernel: 1e-6 s + 3e-10 s (2n)^3 (measured, see above).
+
+    Parameters
+    ----------
+    n : int
+        Degrees of freedom, >= 1.
+    """
+    c0, c1 = _C_SEARCH_STEP
+    return c0 + c1 * float(2 * count("n", n, 1, None)) ** 3
+
+
+def damped_band_steps(model: BoosterModel) -> tuple[float, float]:
+    """Monodromy steps (summed over the evaluated points) and CPU time (s, one core) of the damped
+    part of the memo's beam-action band search above omega_1 / 4 (the damped regions from their
+    undamped seeds and the critical gamma of each): :func:`damped_search_cost` at the largest
+    of the beam and pitch damping ratios; 0 without damping or pulsation, or where the damping
+    certifies the system stable.
+
+    Parameters
+    ----------
+    model : BoosterModel
+        The derived model.
+    """
+    if model.gamma <= 0.0:
+        return 0.0, 0.0
+    system = beam_system(model)
+    w1 = float(system.omega_1)
+    lo = max(float(np.min(model.Omega)), BAND_OMEGA_BAR_MIN * w1) / w1
+    hi = float(np.max(model.Omega)) / w1
+    C = modal_damping(system, beam_ratio=model.beam_damping_ratio,
+                      pitch_ratio=model.pitch_damping_ratio)
+    if C is None or not hi > lo:
+        return 0.0, 0.0
+    n = system.N + 1
+    try:
+        work = search_work(np.eye(n), C, system.A0, -model.gamma * system.B, lo, hi,
+                           rtol=BAND_RTOL, max_order=BAND_MAX_ORDER,
+                           max_candidates=BAND_MAX_CANDIDATES, step_phase=0.12)
+    except ValueError:  # past a size limit of the toolkit: the stage says so
+        return 0.0, 0.0
+    return damped_search_cost(work, damping_ratio=max(model.beam_damping_ratio,
+                                                      model.pitch_damping_ratio))
 
 
 def _bending_search_seconds(case: Any, vehicle: Any, n_modes: int, zeta: float) -> float:
@@ -507,7 +593,7 @@ def _bending_search_seconds(case: Any, vehicle: Any, n_modes: int, zeta: float) 
         work = floquet.search_work(*system, t.omega_min, t.omega_max, **floquet_options())
     except (*LIMIT_ERRORS, BucklingError, ValueError):
         return 0.0
-    return bending_search_steps(work)[1]
+    return bending_search_steps(work, damping_ratio=zeta)[1]
 
 
 def _dof_factor(vehicle) -> float:

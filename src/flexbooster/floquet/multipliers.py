@@ -345,34 +345,70 @@ def _lawson_modal(z, Bt, phase, amp, n_steps, c1, s1, m1, c2, s2, hh):
     return out
 
 
+#: Bytes of the step matrices held at once by the dense kernel (:func:`_period_dense`).
+_DENSE_BLOCK_BYTES = 1 << 25
+
+
+def _step_coefficients(system: LinearPeriodicSystem, h: np.ndarray
+                       ) -> tuple[np.ndarray, np.ndarray]:
+    """E(h) and the five matrices of one Lawson RK4 step of each point, shapes (P, 2n, 2n) and
+    (P, 5, 2n, 2n): the step is S = E(h) + f0 M1 + f1 M2 + f2 M3 + f0 f1 M4 + f1 f2 M5 with
+    f0, f1, f2 the amplitude a cos(Omega t) at t = k h, (k + 1/2) h, (k + 1) h.
+
+    With N(t) = f(t) Nb, Nb = [[0, 0], [-M^-1 B, 0]] nilpotent (Nb^2 = 0), the stages
+    k1 = N0 z, k2 = N1 E2 (z + h/2 k1), k3 = N1 (E2 z + h/2 k2) = N1 E2 z,
+    k4 = N2 (E1 z + h E2 k3) of z+ = E1 z + h/6 (E1 k1 + 2 E2 (k2 + k3) + k4) give
+    M1 = h/6 E1 Nb, M2 = 4 h/6 E2 Nb E2, M3 = h/6 Nb E1, M4 = h^2/6 E2 Nb E2 Nb,
+    M5 = h^2/6 Nb E2 Nb E2 (Lawson 1967: the step itself, regrouped).
+    """
+    n = system.n
+    L0 = np.block([[np.zeros((n, n)), np.eye(n)], [-system.K0, -system.Kc]])
+    E1 = scipy.linalg.expm(L0[None] * h[:, None, None])  # exact steady propagator E(h)
+    E2 = scipy.linalg.expm(L0[None] * (0.5 * h)[:, None, None])
+    Nb = np.zeros((2 * n, 2 * n))
+    Nb[n:, :n] = -system.Kb
+    h6 = (h / 6.0)[:, None, None]
+    NE2 = Nb @ E2
+    E2NE2 = E2 @ NE2
+    M = np.stack([h6 * (E1 @ Nb), 4.0 * h6 * E2NE2, h6 * (Nb @ E1),
+                  (h[:, None, None] * h6) * (E2NE2 @ Nb),
+                  (h[:, None, None] * h6) * (NE2 @ NE2)], axis=1)
+    return E1, M
+
+
+def _ordered_product(S: np.ndarray) -> np.ndarray:
+    """S[:, m-1] ... S[:, 1] S[:, 0] of a stack (P, m, k, k), by pairs (log2 m batched rounds)."""
+    while S.shape[1] > 1:
+        even = S.shape[1] - S.shape[1] % 2  # a last odd one is carried to the next round
+        pairs = S[:, 1:even:2] @ S[:, 0:even:2]
+        S = pairs if even == S.shape[1] else np.concatenate([pairs, S[:, even:]], axis=1)
+    return S[:, 0]
+
+
 def _period_dense(system: LinearPeriodicSystem, om: np.ndarray, n_steps: int,
                   half: bool, amp: np.ndarray) -> np.ndarray:
     """Phi over one period (or half period) in (q, q'), shape (P, 2n, 2n); dense Lawson RK4.
 
-    Point p has the excitation amp[p] B."""
-    n, P = system.n, om.size
-    L0 = np.block([[np.zeros((n, n)), np.eye(n)], [-system.K0, -system.Kc]])
+    Point p has the excitation amp[p] B. Each step is a matrix affine in the forcing samples
+    (:func:`_step_coefficients`): the step matrices of a block of steps are formed at once and
+    multiplied by pairs, in time order.
+    """
+    m, P = 2 * system.n, om.size
     h = ((1.0 if half else 2.0) * np.pi / om) / n_steps
-    E1 = scipy.linalg.expm(L0[None] * h[:, None, None])  # exact steady propagator E(h)
-    E2 = scipy.linalg.expm(L0[None] * (0.5 * h)[:, None, None])
-    Kb = system.Kb
-    hh = h[:, None, None]
-
-    def force(t, z):  # N(t) z = (0, -a cos(Omega t) M^-1 B q)
-        out = np.zeros_like(z)
-        out[:, n:, :] = -(amp * np.cos(om * t))[:, None, None] * (Kb @ z[:, :n, :])
-        return out
-
-    z = np.broadcast_to(np.eye(2 * n), (P, 2 * n, 2 * n)).copy()
+    E1, M = _step_coefficients(system, h)
+    Mflat = M.reshape(P, 5, m * m)
+    block = max(1, min(n_steps, _DENSE_BLOCK_BYTES // (3 * 8 * P * m * m)))
+    z = np.broadcast_to(np.eye(m), (P, m, m)).copy()
     with np.errstate(over="ignore", invalid="ignore"):  # overflow is reported by _finite
-        for k in range(n_steps):  # Lawson (1967) integrating-factor RK4
-            t0 = k * h
-            k1 = force(t0, z)
-            k2 = force(t0 + 0.5 * h, E2 @ (z + 0.5 * hh * k1))
-            k3 = force(t0 + 0.5 * h, E2 @ z + 0.5 * hh * k2)
-            Ez = E1 @ z
-            k4 = force(t0 + h, Ez + hh * (E2 @ k3))
-            z = Ez + hh / 6.0 * (E1 @ k1 + 2.0 * (E2 @ (k2 + k3)) + k4)
+        for start in range(0, n_steps, block):
+            k = np.arange(start, min(start + block, n_steps))
+            t = h[:, None] * k[None, :]  # (P, b)
+            f0 = amp[:, None] * np.cos(om[:, None] * t)
+            f1 = amp[:, None] * np.cos(om[:, None] * (t + 0.5 * h[:, None]))
+            f2 = amp[:, None] * np.cos(om[:, None] * (t + h[:, None]))
+            coef = np.stack([f0, f1, f2, f0 * f1, f1 * f2], axis=-1)  # (P, b, 5)
+            S = (coef @ Mflat).reshape(P, k.size, m, m) + E1[:, None]
+            z = _ordered_product(S) @ z
     return z
 
 

@@ -1044,13 +1044,25 @@ def _tips(base: LinearPeriodicSystem, top, opt: _Options, gamma_rtol: float):
     if pos.any():
         ids = np.nonzero(pos)[0]
         c_vec = np.ones(P)
+        # first a probe at the tolerance: a region that holds down to gamma_rtol (one of its
+        # modes undamped: the threshold c^2 |H_ik H_ki| > delta_i delta_k is 0, Hsu 1963) has
+        # its root in the final bracket [0, gamma_rtol] at once, not after ~log2(1 / gamma_rtol)
+        # halvings from c = 1; the others get a nearer outer end than c = 0
+        c_vec[ids] = gamma_rtol
+        g_probe = g(c_vec, ids)
+        low = g_probe > 0.0
+        c_cr[ids[low]] = 0.5 * gamma_rtol  # the midpoint of that bracket, as illinois_root
+        c_out[ids[~low]], f_out[ids[~low]] = gamma_rtol, g_probe[~low]
+        rest = ids[~low]
+        if rest.size:
+            c_vec[rest] = 1.0
 
-        def root_f(c, act):
-            c_vec[ids[act]] = c
-            return g(c_vec, ids[act])
+            def root_f(c, act):
+                c_vec[rest[act]] = c
+                return g(c_vec, rest[act])
 
-        c_cr[ids] = illinois_root(root_f, c_in[ids], f_in[ids], c_out[ids], f_out[ids],
-                              np.full(ids.size, gamma_rtol))
+            c_cr[rest] = illinois_root(root_f, c_in[rest], f_in[rest], c_out[rest],
+                                       f_out[rest], np.full(rest.size, gamma_rtol))
         c_vec[ids] = c_cr[ids]
         g(c_vec, ids)  # the maximiser at the tip
     return c_cr, xs

@@ -599,7 +599,8 @@ def beam_action_bands(system: BeamActionSystem, gamma: float, *, omega_min: floa
     crit: dict = {}
     if C is not None and gamma > 0.0 and any(r.kind != "steady" for r in regions):
         for c in critical_amplitude(np.eye(n), C, system.A0, -system.B, gamma_max=gamma,
-                                    omega_min=lo / w1, omega_max=hi / w1, **opts):
+                                    omega_min=lo / w1, omega_max=hi / w1,
+                                    regions=regions, **opts):  # the search above, reused
             crit[(c.kind, c.modes, c.order)] = c.gamma_cr
     out = []
     for r in regions:
