@@ -21,7 +21,7 @@ import tomllib
 from pathlib import Path
 
 import flexbooster
-from flexbooster.case import default_case_text
+from flexbooster.case import memo_case_text
 from flexbooster.memo.beam_action import pipeline_bands
 from flexbooster.model import model_from_case
 
@@ -29,7 +29,7 @@ OUT = Path(__file__).parent / "damped_bands_reference.json"
 
 
 def main() -> None:
-    case = tomllib.loads(default_case_text())
+    case = tomllib.loads(memo_case_text())
     model = model_from_case(flexbooster.load_case(case))
     bands = pipeline_bands(model)
     commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
