@@ -11,6 +11,7 @@ from scipy.integrate import solve_ivp
 from scipy.optimize import brentq, minimize_scalar
 
 from flexbooster import floquet
+from flexbooster.bands import NEGLIGIBLE_GROWTH
 from flexbooster.dynamics import region_critical_damping, vehicle_regions
 from test_vehicle_regions import SD_MESH, sd_loaded_mode, sd_vehicle
 
@@ -142,3 +143,31 @@ def test_a_fixed_damping_part_adds_to_the_scaled_one():
     shifted = floquet.critical_damping(M, C1, A, B, omega_lo=region.omega_lo,
                                        omega_hi=region.omega_hi, C0=0.01 * C1)
     assert shifted == pytest.approx(plain - 0.01, rel=1e-5)
+
+
+def test_beam_action_simple_band_against_the_first_order_damping_shift():
+    # a uniform free-free beam under thrust (Beal 1965), undamped: in a narrow simple region of
+    # order j of bending mode m the growth at modal damping zeta is sigma - zeta omega_m to
+    # first order (the substitution q = exp(-zeta omega_m t) y, Bolotin 1964, sec. 6), so the
+    # band closes at zeta_cr = sigma_max / omega_m, omega_m = j Omega_center / 2; the bands are
+    # ~1e-5 wide relative, first-order error well under the 5e-3 asked
+    from flexbooster.memo.beam_action import (
+        band_critical_damping,
+        beam_action_bands,
+        uniform_beam_system,
+    )
+
+    system = uniform_beam_system(2.0, K=0.5, N=3, omega_1=100.0)
+    found = beam_action_bands(system, 0.05, omega_min=150.0, omega_max=500.0)
+    done = band_critical_damping(system, found, gamma=0.05)
+    simple = [b for b in done if b.kind == "simple" and b.modes[0].index != 0]
+    counted = [b for b in simple if b.growth_rate_max > NEGLIGIBLE_GROWTH]
+    assert counted and len(counted) <= 8
+    # below the floor (an e-folding time over 1e6 s) nothing is computed
+    assert all(b.critical_damping_ratio is None for b in simple if b not in counted)
+    for b in counted:
+        assert b.critical_damping_ratio == pytest.approx(
+            b.growth_rate_max / (0.5 * b.order * b.Omega_center), rel=5e-3)
+    # a band holding the undamped rigid pitch: no elastic damping closes it (None)
+    with_pitch = [b for b in done if any(m.index == 0 for m in b.modes)]
+    assert with_pitch and all(b.critical_damping_ratio is None for b in with_pitch)

@@ -69,8 +69,13 @@ PLATFORM_ROUND_OFF = {".beam_action.alpha_real": 1e-10, ".beam_action.alpha_imag
                       ".beam_action.hill_monodromy_difference": 1e-10}
 
 
+#: The memo's case is no longer the embedded default (the launch vehicle with its flight is):
+#: its name says "memo case" instead of "default".
+CHANGED_NAME = {".case.name"}
+
+
 def _diff(old, new, path="", atol=0.0):
-    if path in CHANGED_EXACT_BANDS | CHANGED_SEVERITY:
+    if path in CHANGED_EXACT_BANDS | CHANGED_SEVERITY | CHANGED_NAME:
         return
     atol = PLATFORM_ROUND_OFF.get(path, atol)
     if isinstance(old, dict):

@@ -18,9 +18,10 @@ import numpy as np
 
 from . import cost, floquet
 from ._threads import blas_threads
+from .bands import NEGLIGIBLE_GROWTH
 from .case import Case, deprecation_warnings
 from .checks import count, finite, positive
-from .danger import NEGLIGIBLE_GROWTH, danger_summary
+from .danger import danger_summary
 from .dynamics import (
     ThrustSpectrum,
     UndampedResonanceError,

@@ -10,7 +10,12 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
-__all__ = ["Band", "BandMode", "KINDS", "MECHANISMS", "SearchGap", "gaps_text"]
+__all__ = ["Band", "BandMode", "KINDS", "MECHANISMS", "NEGLIGIBLE_GROWTH", "SearchGap",
+           "gaps_text"]
+
+#: Growth rate below which a band is negligible (1/s): an e-folding time above 1e6 s (11.6
+#: days), longer than any excitation of a launch vehicle (docs/theory/verdicts.md).
+NEGLIGIBLE_GROWTH = 1e-6
 
 
 @dataclass(frozen=True)

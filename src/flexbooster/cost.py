@@ -29,6 +29,7 @@ from .memo.beam_action import (
     BAND_MAX_ORDER,
     BAND_OMEGA_BAR_MIN,
     BAND_RTOL,
+    CRITICAL_DAMPING_BANDS,
     MONODROMY_MAX_STEPS,
     TONGUE_FLOOR_OMEGA_BAR,
     TONGUE_GAMMA_RTOL,
@@ -244,6 +245,13 @@ def estimate_cost(model: BoosterModel, *, beam_action: bool = True, stability: b
                                           else _C_BANDS * weight)
             drivers["beam-action bands"] = ("truncation.N", "thrust.omega_min",
                                             "damping.modal_ratio", "thrust.F0")
+            if model.gamma > 0.0:  # the critical damping ratios of the bands that count:
+                # all CRITICAL_DAMPING_BANDS undamped, one where the damping closes most
+                counted = 1 if model.beam_damping_ratio > 0.0 else CRITICAL_DAMPING_BANDS
+                parts["beam-action critical damping"] = counted * _C_CRITICAL_BAND * max(
+                    1.0, (nn / _CRITICAL_BAND_N) ** 3)
+                drivers["beam-action critical damping"] = ("damping.modal_ratio",
+                                                           "truncation.N")
         low_hi = min(hi, BAND_OMEGA_BAR_MIN * model.omega_1)
         if low_hi > lo:  # below omega_1 / 4: the rigid-pitch tongues (harmonic balance)
             parts[TONGUE_PART] = tongue_search_seconds(
@@ -445,6 +453,9 @@ def search_seconds(n_modes: int, omega_min: float, omega_max: float, *, damped: 
                  * (_BOUNDARY_SEARCH_FACTOR if boundaries else 1.0))
 
 
+# The critical damping ratio of one beam-action band: 7.6 s for the 8 bands of the memo case
+# undamped (one core, measured; 11 modes), n^3 assumed above
+_C_CRITICAL_BAND, _CRITICAL_BAND_N = 0.95, 11.0
 # The critical damping ratio of one region (an Illinois root in zeta of Brent maxima over
 # Omega, some 200 monodromies): 6.5 s for 8 regions of the default case undamped, k <= 4,
 # 20 modes per harmonic (one core, measured); n^3 assumed above 20 modes (dense products)

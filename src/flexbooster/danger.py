@@ -13,7 +13,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from .bands import MECHANISMS, Band, SearchGap, gaps_text
+from .bands import MECHANISMS, NEGLIGIBLE_GROWTH, Band, SearchGap, gaps_text
 from .dynamics import STANDARD_GRAVITY
 from .floquet import tongue_critical_damping
 
@@ -30,9 +30,6 @@ _KIND_WORDS = {"simple": "simple", "sum": "sum combination",
 STEADY_CAUSE = "unstable without pulsation"
 
 
-#: Growth rate below which a band is negligible (1/s): an e-folding time above 1e6 s (11.6
-#: days), longer than any excitation of a launch vehicle (docs/theory/verdicts.md).
-NEGLIGIBLE_GROWTH = 1e-6
 #: With a duration T: amplification exp(sigma T) below which a band is negligible (the motion
 #: grows less than 10 % over the whole excitation).
 NEGLIGIBLE_AMPLIFICATION = 1.1

@@ -373,8 +373,9 @@ def region_critical_damping(found: VehicleRegions, *, growth_floor: float = 0.0,
                             limit: int = CRITICAL_DAMPING_REGIONS) -> VehicleRegions:
     """The map with the critical damping ratio (the smallest modal damping ratio that closes
     the region at the map's gamma, Bolotin 1964, sec. 6) of its ``limit`` fastest-growing
-    regions that grow faster than ``growth_floor`` and are not clipped by the Omega range; None
-    on the others (and where a damping ratio of 1 does not close it).
+    regions that grow faster than ``growth_floor``, are not clipped by the Omega range and hold
+    no (undamped) rigid mode; None on the others (and where a damping ratio of 1 does not close
+    it).
 
     Parameters
     ----------
@@ -390,8 +391,11 @@ def region_critical_damping(found: VehicleRegions, *, growth_floor: float = 0.0,
     floor = nonnegative("growth_floor", growth_floor)
     limit = count("limit", limit, 0, 10_000)
     by_k = {h.k: h for h in found.harmonics}
+    # the rigid modes of k = 1 are undamped: no modal damping closes a region holding one
+    # (threshold lambda^2 > delta_i delta_k = 0, Hsu 1963), its growth only falls to round-off
     chosen = sorted((i for i, r in enumerate(found.regions)
                      if r.kind != "steady" and not r.clipped and r.k in by_k
+                     and not any(m.type.startswith("rigid") for m in r.modes)
                      and r.growth_rate_max > max(floor, 2.0 * floquet.CLOSED_GROWTH * r.Omega_hi)),
                     key=lambda i: -found.regions[i].growth_rate_max)[:limit]
     regions = list(found.regions)

@@ -13,17 +13,18 @@ V. V. Bolotin, *The Dynamic Stability of Elastic Systems*, 1964; W. Magnus, S. W
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..bands import Band, BandMode, SearchGap, gaps_text
+from ..bands import NEGLIGIBLE_GROWTH, Band, BandMode, SearchGap, gaps_text
 from ..checks import count, nonnegative, positive
 from ..floquet import (
     LinearPeriodicSystem,
     PeriodMapOverflowError,
     critical_amplitude,
+    critical_damping,
     floquet_multipliers,
     golden_section_max,
     hill_modes,
@@ -47,7 +48,8 @@ __all__ = ["PeriodMapOverflowError", "BeamActionSystem", "beam_action_system", "
            "TONGUE_FLOOR_OMEGA_BAR", "TONGUE_MAX_ORDER", "TongueEdgesError",
            "tongue_hill_harmonics", "pitch_mode", "pitch_guide", "band_modes", "modal_damping",
            "beam_action_bands", "pitch_tongue_bands", "pipeline_bands", "BeamActionResult",
-           "beam_action_analysis", "StabilityChart", "stability_chart"]
+           "beam_action_analysis", "StabilityChart", "stability_chart", "band_critical_damping",
+           "CRITICAL_DAMPING_BANDS"]
 
 _STABLE_TOL = 1e-6  # |Im alpha| below which an exponent counts as real (see docs)
 
@@ -613,6 +615,67 @@ def beam_action_bands(system: BeamActionSystem, gamma: float, *, omega_min: floa
     return tuple(out)
 
 
+#: Bands of a search whose critical damping ratio :func:`band_critical_damping` computes at
+#: most (the fastest-growing first): a deterministic bound on its work.
+CRITICAL_DAMPING_BANDS = 8
+
+
+def band_critical_damping(system: BeamActionSystem, bands, *, gamma: float,
+                          beam_ratio: float = 0.0, pitch_ratio: float = 0.0,
+                          growth_floor: float = NEGLIGIBLE_GROWTH,
+                          limit: int = CRITICAL_DAMPING_BANDS) -> tuple[Band, ...]:
+    """The bands with the critical damping ratio of the elastic modes (the smallest
+    ``beam_ratio`` closing the band at gamma, the rigid pitch keeping ``pitch_ratio``; Bolotin
+    1964, sec. 6) on the ``limit`` fastest-growing ones that grow faster than ``growth_floor``,
+    are not clipped and hold an elastic mode (only elastic modes when the pitch is undamped:
+    no elastic damping closes a combination with an undamped mode); None on the others and
+    where a ratio of 1 does not close the band.
+
+    Parameters
+    ----------
+    system : BeamActionSystem
+        The normalised system.
+    bands : sequence of Band
+        Its bands at gamma (:func:`beam_action_bands`, rad/s).
+    gamma : float
+        Pulsation amplitude, 0 < gamma < 1.
+    beam_ratio, pitch_ratio : float
+        The damping ratios at which the bands were found (:func:`modal_damping`).
+    growth_floor : float
+        Bands growing slower than this (1/s) are left out, >= 0.
+    limit : int
+        At most this many bands, >= 0.
+    """
+    floor = nonnegative("growth_floor", growth_floor)
+    limit = count("limit", limit, 0, 10_000)
+    bands = tuple(bands)
+    w1 = float(system.omega_1)
+    # a band of the pitch alone is the pitch's; with an undamped pitch no elastic damping
+    # closes a combination holding it (threshold lambda^2 > delta_i delta_k = 0, Hsu 1963):
+    # its growth only falls towards round-off
+    elastic = (lambda b: all(m.index != 0 for m in b.modes)) if pitch_ratio == 0.0 else (
+        lambda b: any(m.index != 0 for m in b.modes))
+    chosen = sorted((i for i, b in enumerate(bands)
+                     if b.kind != "steady" and not b.clipped and b.growth_rate_max > floor
+                     and elastic(b)),
+                    key=lambda i: -bands[i].growth_rate_max)[:limit]
+    if not chosen:
+        return bands
+    half = 0.5  # C is linear in the elastic ratio: C1 = (C(1/2) - C(0)) / (1/2)
+    C0 = modal_damping(system, beam_ratio=0.0, pitch_ratio=pitch_ratio)
+    C1 = (modal_damping(system, beam_ratio=half, pitch_ratio=pitch_ratio)
+          - (0.0 if C0 is None else C0)) / half
+    n = system.Lambda.size
+    out = list(bands)
+    for i in chosen:
+        b = bands[i]
+        zeta_cr = critical_damping(np.eye(n), C1, system.A0, -gamma * system.B,
+                                   omega_lo=b.Omega_lo / w1, omega_hi=b.Omega_hi / w1,
+                                   zeta=beam_ratio, C0=C0, omega_start=b.Omega_at_max / w1)
+        out[i] = replace(b, critical_damping_ratio=zeta_cr)
+    return tuple(out)
+
+
 # --------------------------------------------------------------------------------------------
 # Pipeline result and chart
 # --------------------------------------------------------------------------------------------
@@ -1072,6 +1135,10 @@ def beam_action_analysis(model: BoosterModel, *, n_hill: int = 3) -> BeamActionR
     i = int(np.argmax(growth))
     peak, at_peak = float(growth[i]), (float(Ob[i] * system.omega_1) if growth[i] > 0.0 else 0.0)
     found, gaps = _band_search(model, system)
+    if gamma > 0.0:  # the damping that would close each band that counts
+        found = band_critical_damping(system, found, gamma=gamma,
+                                      beam_ratio=float(model.beam_damping_ratio),
+                                      pitch_ratio=float(model.pitch_damping_ratio))
     for band in found:  # the bands' exact maxima: a grid steps over narrow bands
         if band.growth_rate_max > peak:
             peak, at_peak = float(band.growth_rate_max), float(band.Omega_at_max)
