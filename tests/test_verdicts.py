@@ -272,9 +272,10 @@ def test_resonance_steady_amplitude_closed_form_and_direct_integration():
     assert undamped.steady_amplitude is None  # undamped: no steady state (secular growth)
 
 
-def test_damped_resonances_rank_by_steady_amplitude():
-    """Exact: of two damped resonances the larger v / (zeta w) ranks first, though its
-    severity v is the smaller."""
+def test_damped_resonances_rank_by_steady_acceleration():
+    """Exact: of two damped resonances the larger steady acceleration v w / zeta ranks first
+    (the one scale, in g, of every bounded response; docs/theory/verdicts.md), though its
+    severity v and its displacement v / (zeta w) are the smaller; the reason names it."""
     mode = shell_mode(1, 1, 0, 1, "axial")
 
     def res(lo, v, w):
@@ -282,10 +283,11 @@ def test_damped_resonances_rank_by_steady_amplitude():
                     order=3, modes=(dataclasses.replace(mode, omega=w),), growth_rate_max=0.0,
                     Omega_at_max=lo, Omega_center=lo, severity=v, cause=FAMILY_CAUSES[3])
 
+    # res(20): 20 m, 2e3 m/s^2; res(30): 0.1 m, 1e5 m/s^2 = 1.02e4 g at 1000 / 2 pi Hz
     s = danger_summary(operating_range=OPERATING, modal_ratio=0.01,
-                       bands={"resonance": [res(20.0, 2.0, 1000.0), res(30.0, 1.0, 10.0)]})
+                       bands={"resonance": [res(20.0, 2.0, 10.0), res(30.0, 1.0, 1000.0)]})
     assert [b.Omega_lo for b in s.bands] == [30.0, 20.0]
-    assert "largest response 1e+04 mm" in s.verdict.reason
+    assert "largest response 100 mm (1.02e+04 g) at 159.2 Hz" in s.verdict.reason
 
 
 # --------------------------------------------------------------------------------------------

@@ -69,7 +69,8 @@ def forced_basis_text(results: Results) -> str:
 
 def forced_rows(results: Results) -> list[tuple]:
     """One row per forced harmonic and station (:data:`FORCED_HEADER`), aft to forward: the peak
-    acceleration (g), per 1 % of F0 of thrust oscillation ("-" for a spectrum or gamma = 0), its
+    acceleration (g), per 1 % of F0 of thrust oscillation ("-" for a spectrum or gamma = 0,
+    where the report and the summary drop the column), its
     Omega (Hz), the peak axial force (k = 0) and bending moment (k = 1) and their Omega.
 
     Parameters
@@ -146,21 +147,39 @@ def print_forced_response(results: Results, console: Console) -> None:
                       "warnings).")
         return
     r = f.response
-    load = ("the spectrum's lines" if r.combination == "spectrum" else
-            f"gamma = {r.amplitude[0]:g} over the Omega range")
+    per = f.per_percent
+    # the "per 1 %" column where it says something: not for a spectrum (its lines have their
+    # own amplitudes) nor at gamma = 1 % (it repeats the peak; the title says so)
+    show_per = per is not None and abs(per - 1.0) > 1e-12
+    load = ("the spectrum's lines as given" if r.combination == "spectrum" else
+            f"gamma = {r.amplitude[0]:g} over the Omega range"
+            + ("" if show_per or per is None else ": the peaks are per 1 % of F0"))
+    cells = []
+    for row in forced_rows(results):  # the load of the harmonic: axial force or bending moment
+        load_cells = row[6:8] if row[2] == 0 else row[8:10]
+        cells.append([_cell(v) for v in (*row[:4], *(row[4:5] if show_per else ()), row[5],
+                                         *load_cells)])
+    header = [h for h in _TERMINAL_HEADER if show_per or h != "per 1 % (g)"]
+    # the station names fit beside the numbers (never folded); a name too long for the
+    # terminal is shortened with "~", the full name being in the CSV
+    widths = [max(len(c[i]) for c in [header, *cells]) for i in range(1, len(header))]
+    room = max(8, console.width - 1 - sum(widths) - 2 * len(widths))
+    short = False
+    for c in cells:
+        if len(c[0]) > room:
+            c[0], short = c[0][:room - 1] + "~", True
     table = Table(title=f"Forced response to the thrust oscillation ({load}, zeta = "
                   f"{r.damping_ratio:g}, misalignment {r.misalignment:g} rad; load: axial "
                   f"force in N for k = 0, bending moment in N m for k = 1; curves in "
                   f"{FORCED_CSV})", title_justify="left", header_style="bold",
                   box=box.SIMPLE_HEAD, pad_edge=False, collapse_padding=True)
-    for col in _TERMINAL_HEADER:  # 80 columns: folded, never cut
-        table.add_column(col, justify="left" if col == "station" else "right",
-                         overflow="fold", no_wrap=col != "station")
-    rows = forced_rows(results)
-    for row in rows:  # the load of the harmonic: axial force (k = 0) or bending moment (k = 1)
-        load_cells = row[6:8] if row[2] == 0 else row[8:10]
-        table.add_row(*(escape(_cell(v)) for v in (*row[:6], *load_cells)))
-    console.print(table if rows else FORCED_ZERO)
+    for col in header:  # numbers and names never cut
+        table.add_column(col, justify="left" if col == "station" else "right", no_wrap=True)
+    for c in cells:
+        table.add_row(*(escape(v) for v in c))
+    console.print(table if cells else FORCED_ZERO)
+    if short:
+        console.print(f"(station names shortened with ~; full names in {FORCED_CSV})")
     console.print(escape(f"Basis: {forced_basis_text(results)}"), highlight=False)
     for line in forced_worst_lines(results):
         console.print(escape(line), highlight=False)
