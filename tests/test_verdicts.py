@@ -358,7 +358,7 @@ def test_ranked_bands_carry_their_measures_into_results_json():
 # --------------------------------------------------------------------------------------------
 # Everything computed in one verdict: the vehicle's bounded responses and the flight
 # --------------------------------------------------------------------------------------------
-def _peak(acc_g, Omega, *, k=0, station="payload", station_m=10.0, **extra):
+def _response(acc_g, Omega, *, k=0, station="payload", station_m=10.0, **extra):
     extra.setdefault("modes", f"k = {k}")
     return ResponsePeak(source="forced response", k=k, Omega=Omega, acceleration_g=acc_g,
                         station=station, station_m=station_m, **extra)
@@ -396,9 +396,9 @@ def test_a_bounded_response_never_worsens_the_verdict_and_is_named():
     STABLE stays STABLE and the reason names the largest response in g with its station, Omega
     (Hz) and load; in the one ranking it comes after an unstable region and before a region of
     negligible growth; results.json's verdict carries it."""
-    big = _peak(50.0, 2 * math.pi * 12.0, load_quantity="axial force", load_unit="N",
+    big = _response(50.0, 2 * math.pi * 12.0, load_quantity="axial force", load_unit="N",
                 load=3.0e6, load_station_m=40.0)
-    small = _peak(0.5, 2 * math.pi * 30.0, station="aft edge", station_m=0.0)
+    small = _response(0.5, 2 * math.pi * 30.0, station="aft edge", station_m=0.0)
     s = danger_summary(operating_range=(10.0, 300.0), modal_ratio=0.01,
                        bands={"vehicle": [_band(20.0, 21.0, 1e-9, mechanism="vehicle")]},
                        responses=[small, big])
@@ -420,9 +420,9 @@ def test_a_resonance_found_twice_is_listed_once():
     """Exact: a k = 0 axial resonance whose half-power band omega (1 -+ zeta) holds a k = 0
     forced-response peak is that peak (named in its ``also``); one outside stays."""
     w1, w2 = 2 * math.pi * 12.0, 2 * math.pi * 20.0
-    forced = [_peak(4.0, w1 * (1 + 0.5 * 0.01))]  # inside the half-power band at zeta = 1 %
-    axial = [_peak(3.9, w1, station="aft edge", modes="k = 0 mode 1"),
-             _peak(0.2, w2, station="aft edge", modes="k = 0 mode 2")]
+    forced = [_response(4.0, w1 * (1 + 0.5 * 0.01))]  # inside the half-power band at zeta = 1 %
+    axial = [_response(3.9, w1, station="aft edge", modes="k = 0 mode 1"),
+             _response(0.2, w2, station="aft edge", modes="k = 0 mode 2")]
     axial = [dataclasses.replace(a, source="axial resonance") for a in axial]
     merged = merge_responses(forced, axial, damping_ratio=0.01)
     assert [(m.source, m.Omega, m.also) for m in merged] == [

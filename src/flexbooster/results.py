@@ -122,6 +122,11 @@ UNITS: dict[str, str] = {
     "forced_response.peaks.bending_moment_Nm": "N m",
     "forced_response.envelopes.peak, at_worst": "N (axial, shear force) or N m (moment)",
     "forced_response.convergence.max_change": "1 (relative to the largest peak)",
+    "danger.responses.Omega, danger.ranking.Omega": "rad/s (a bounded response)",
+    "danger.responses.acceleration_g, verdict.largest_response.acceleration_g": "1 (units of g)",
+    "danger.responses.displacement_m, station_m, load_station_m": "m",
+    "danger.responses.load": "N (axial force) or N m (bending moment), see load_unit",
+    "verdict.flight.t_start_s, t_end_s": "s",
 }
 UNITS.update({
     "mass_properties.mass_kg, contributions.mass_kg": "kg ([vehicle] segments)",
