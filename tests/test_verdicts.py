@@ -456,6 +456,8 @@ def test_flight_events_enter_the_verdict_and_negligible_ones_are_dropped():
     assert ("over the flight (t = 0-150 s) no region grows more than 10 %; worst moment 0.223 g "
             "at aft edge, t = 0-64.39 s, axial (k = 0, mode 0) (1 event of negligible growth "
             "dropped)") in s.verdict.reason
+    # the largest bounded response is that forced resonance: named once, as the worst moment
+    assert s.verdict.reason.endswith("largest response: the flight's worst moment")
     loud = flight_verdict([slow, forced, fast], times=(0.0, 150.0))
     assert loud.worst is fast
     u = danger_summary(operating_range=OPERATING, bands={"vehicle": []}, flight=loud)

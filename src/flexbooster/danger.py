@@ -887,7 +887,12 @@ def overall_verdict(ranked: Sequence[RankedBand], *,
         parts.append(f"{n} forced resonance{'s' if n > 1 else ''} bounded by damping")
     top = _largest_response(by["bounded"], responses, flight)
     if top is not None:
-        parts.append(f"largest response {top[0]}")
+        worst = None if flight is None else flight.worst
+        same = worst is not None and top[1].get("source") == "flight" and \
+            top[1] == dict(worst.to_dict(), source="flight",
+                           acceleration_g=worst.peak_acceleration_g)
+        parts.append("largest response: the flight's worst moment" if same
+                     else f"largest response {top[0]}")
     return Verdict(overall, "; ".join(parts), tuple((k, v) for k, _, v in verdicts),
                    float(modal_ratio), float(pitch_ratio),
                    None if duration is None else float(duration),
