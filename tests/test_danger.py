@@ -166,7 +166,7 @@ def test_verdicts_not_computed_stable_unstable():
     res = danger_bands([_res(50, 51, 2.0)], operating_range=OPERATING)
     (r,) = [t for k, _, t in mechanism_verdicts(res, computed={"resonance": True})
             if k == "resonance"]
-    assert r == "unstable: 1 resonance (memo 7) in the operating range, largest severity 2 m/s"
+    assert r == "unstable: 1 resonance in the operating range, largest severity 2 m/s"
 
 
 def test_a_mechanism_with_a_gap_is_never_stable():

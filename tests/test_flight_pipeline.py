@@ -242,7 +242,10 @@ def test_summary_and_report_show_the_flight_worst_first(constant):
     assert "Flight (worst moment first)" in text and worst in text
     page = render_report(constant)
     assert '<section id="flight">' in page
-    assert page.index(worst.replace("'", "&#x27;")) > page.index('<section id="flight">')
+    flight = page[page.index('<section id="flight">'):]
+    assert worst.replace("'", "&#x27;") in flight
+    first = page[page.index('id="first-screen"'):page.index('<section id="inputs"')]
+    assert worst.replace("'", "&#x27;") in first  # the first screen says the same
 
 
 def test_forced_response_refusal_is_a_warning_not_a_crash():
@@ -262,3 +265,43 @@ def test_forced_response_refusal_is_a_warning_not_a_crash():
         p["fill"] = []
     _, warnings = flight_stage(load_case(data))
     assert "flight-forced-response" not in [w.code for w in warnings]
+
+
+@pytest.mark.slow
+def test_the_overall_verdict_is_the_worst_over_the_flight(constant):
+    """Exact limit (constant flight): every region of the single case lasts the whole 40 s, so
+    its e-folds are growth x 40 s; those past ln 10 make the flight, and so the overall
+    verdict, UNSTABLE; results.json, the terminal's first line and the report's first screen
+    carry the same verdict. A negligible event (1e-7 1/s) added to the flight is dropped,
+    counted, and never the worst moment."""
+    import dataclasses
+    import io
+    import math
+
+    from rich.console import Console
+
+    from flexbooster.flight import FlightEvent
+    from flexbooster.present.report import render_report
+    from flexbooster.present.summary import print_summary
+
+    expected = sorted(b.growth_rate_max * 40.0 for b in constant.vehicle_regions.regions
+                      if b.growth_rate_max * 40.0 > math.log(1.1))
+    v = constant.danger.verdict
+    assert sorted(e.efolds for e in v.flight.events) == pytest.approx(expected, rel=1e-12)
+    assert v.overall == "UNSTABLE" and v.flight.status() == "unstable"
+    data = json.loads(json.dumps(constant.to_dict()))["verdict"]
+    assert data == json.loads(json.dumps(v.to_dict()))
+    buffer = io.StringIO()
+    print_summary(constant, Console(file=buffer, width=2000), full=False)
+    assert buffer.getvalue().splitlines()[0] == f"UNSTABLE: {v.reason}"
+    page = render_report(constant)
+    first = page[page.index('id="first-screen"'):page.index('<section id="inputs"')]
+    assert v.reason.replace("'", "&#x27;") in first
+    slow = FlightEvent(mechanism="vehicle", k=1, modes="bending 1", t_start_s=0.0,
+                       t_end_s=40.0, max_growth_1_s=1e-7, efolds=4e-6, amplification=1.000004)
+    fl = dataclasses.replace(constant.flight, events=(slow, *constant.flight.events))
+    assert fl.dropped == 1 and fl.worst is constant.flight.events[0]
+    lines = flight_lines(fl)
+    assert lines[0].startswith("Worst moment: vehicle k = 2") and any(
+        line.startswith("1 event of negligible growth dropped") for line in lines)
+    assert json.loads(json.dumps(fl.to_dict()))["events_dropped"] == 1

@@ -36,6 +36,7 @@ from flexbooster.dynamics import ThrustSpectrum, forced_response
 from flexbooster.dynamics.forced import STANDARD_GRAVITY
 from flexbooster.errors import CaseError
 from flexbooster.model import vehicle_from_case
+from flexbooster.present.forced import FORCED_CSV
 from flexbooster.shell_of_revolution import Cone, Cylinder, Vehicle
 
 EXAMPLE = Path(__file__).parents[1] / "examples" / "ares-i-like.toml"
@@ -423,3 +424,36 @@ def test_a_supported_aft_end_reacting_the_misalignment_is_a_warning(memo_case_di
     memo_case_dict["vehicle"] = {"aft_end": "free", "fwd_end": "free"}
     found, warnings = _forced_stage(flexbooster.load_case(memo_case_dict))
     assert warnings == [] and np.max(np.abs(found.response.bending_moment[k1])) > 0.0
+
+
+def test_terminal_table_fits_80_columns_without_wrapped_names(tmp_path):
+    """At 80 columns every line fits and no station name is folded over two lines: a name that
+    fits is printed whole; one longer than the room beside the numbers is shortened with "~"
+    and the note names the CSV that holds it whole (forced-response.csv's ``station``, exact).
+    For a spectrum the "per 1 %" column is dropped (its lines have their own amplitudes)."""
+    from flexbooster.present.forced import print_forced_response
+
+    long_name = "aft-skirt-to-first-stage-forward-dome-attachment-ring-number-2"
+    extra = ('\n[[output.stations]]\nname = "first-stage-forward"\nstation = "3 m"\n'
+             f'[[output.stations]]\nname = "{long_name}"\nstation = "5 m"\n')
+    case, _ = _load(tmp_path, _case_text("misalignment = 0.01", extra=extra))
+    loads = analyze_forced_response(case)
+    console = Console(record=True, width=80, color_system=None)
+    print_forced_response(types.SimpleNamespace(forced_response=loads), console)
+    text = console.export_text()
+    assert max(len(line) for line in text.splitlines()) <= 80
+    rows = [line for line in text.splitlines() if line.startswith(" first-stage-forward ")]
+    assert len(rows) == 2  # k = 0 and k = 1, the whole name on the row
+    assert long_name not in text and f"{long_name[:10]}" in text and "~" in text
+    assert f"full names in {FORCED_CSV}" in text
+    assert long_name in loads.csv_columns()["station"]
+    (head,) = [line for line in text.splitlines() if line.startswith(" station ")]
+    assert "per 1 %" in head  # gamma = 0.05: the column says something
+    spec, _ = _load(tmp_path, _case_text(extra='\n[[thrust.spectrum]]\nfrequency = "13 Hz"'
+                                         '\namplitude = 0.01\n'), name="spectrum.toml")
+    console = Console(record=True, width=80, color_system=None)
+    print_forced_response(types.SimpleNamespace(forced_response=analyze_forced_response(spec)),
+                          console)
+    text = console.export_text()
+    (head,) = [line for line in text.splitlines() if line.startswith(" station ")]
+    assert "per 1 %" not in head and "peak (g)" in head

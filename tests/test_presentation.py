@@ -13,6 +13,7 @@ import xml.etree.ElementTree as ET
 import pytest
 from rich.console import Console
 
+from flexbooster.danger import ResponsePeak
 from flexbooster.errors import AnalysisWarning
 from flexbooster.present.report import ROUND_OFF, render_report
 from flexbooster.present.rows import FIRST_SCREEN_BANDS, range_text
@@ -51,18 +52,22 @@ def test_first_screen_is_verdicts_then_ranked_bands(results):
     assert len(lines) <= 60
     assert re.match(r"^(UNSTABLE|MARGINAL|STABLE): ", lines[0])
     assert "1 % modal damping" in short and "Input (SI)" not in short
-    for words in ("rigid-body pitch", "beam action", "vehicle parametric regions",
-                  "memo resonances", "Most dangerous thrust-frequency bands"):
+    for words in ("rigid-body pitch", "beam bending under thrust", "vehicle parametric regions",
+                  "shell resonances", "Most dangerous thrust frequencies"):
         assert words in short, words
     assert short.index("Verdicts") < short.index("Most dangerous")
-    for internal in ("issue", "memo roots", "certified", "family 3 (3,13)", "via u*"):
+    # engineering words only (issue 33 item 5): the memo's terms stay in the detailed sections
+    for internal in ("issue", "memo roots", "certified", "family 3 (3,13)", "via u*", "(memo 4",
+                     "(memo 7"):
         assert internal not in short, internal
     after = lines[next(i for i, x in enumerate(lines) if x.startswith("Most dangerous")):]
     ranked = [line for line in after if re.match(r"^\d+ ", line)]
-    assert len(ranked) == min(TERMINAL_BANDS, len(results.danger.bands))
-    # the top band's Omega range (rad/s) as the table prints it
-    top = results.danger.bands[0]
-    assert range_text(top.Omega_lo, top.Omega_hi) in ranked[0]
+    assert len(ranked) == min(TERMINAL_BANDS, len(results.danger.ranking))
+    # the top item's Omega (rad/s) as the table prints it: a band's range, a response's Omega
+    top = results.danger.ranking[0]
+    text = (f"{top.Omega:.6g}" if isinstance(top, ResponsePeak)
+            else range_text(top.Omega_lo, top.Omega_hi))
+    assert text in ranked[0]
     full = _summary_text(results, 80)
     assert full.startswith(short.split("Warnings")[0]) and "Input (SI)" in full
     assert "unstable frequencies:" not in full.lower()
@@ -98,7 +103,7 @@ def test_report_first_screen_and_print_css(results):
     start = html.index('id="first-screen"')
     first = html[start:html.index("</div>", start)]
     assert first.count("<table>") == 2  # verdicts, ranked bands
-    n_rows = min(FIRST_SCREEN_BANDS, len(results.danger.bands))
+    n_rows = min(FIRST_SCREEN_BANDS, len(results.danger.ranking))
     ranked = first[first.index("Most dangerous"):]
     assert ranked.count("<tr>") == n_rows + 1  # header + rows
     assert "@media print" in html and "nav{display:none}" in html

@@ -24,12 +24,21 @@ from flexbooster.case import load_case, memo_case, memo_case_text
 from flexbooster.danger import (
     NEGLIGIBLE_GROWTH,
     UNSTABLE_E_FOLDING,
+    RankedBand,
+    ResponsePeak,
+    axial_resonance_peaks,
     band_measures,
     band_status,
     danger_bands,
     danger_summary,
+    event_status,
+    flight_verdict,
     hz_text,
+    merge_responses,
 )
+from flexbooster.dynamics import STANDARD_GRAVITY
+from flexbooster.dynamics.axial import AxialResonance
+from flexbooster.flight import FlightEvent, band_events
 from flexbooster.memo.beam_action import band_modes
 from flexbooster.memo.pitch import PITCH_MODE, pitch_bands
 from flexbooster.memo.severity import FAMILY_CAUSES, shell_mode
@@ -272,9 +281,10 @@ def test_resonance_steady_amplitude_closed_form_and_direct_integration():
     assert undamped.steady_amplitude is None  # undamped: no steady state (secular growth)
 
 
-def test_damped_resonances_rank_by_steady_amplitude():
-    """Exact: of two damped resonances the larger v / (zeta w) ranks first, though its
-    severity v is the smaller."""
+def test_damped_resonances_rank_by_steady_acceleration():
+    """Exact: of two damped resonances the larger steady acceleration v w / zeta ranks first
+    (the one scale, in g, of every bounded response; docs/theory/verdicts.md), though its
+    severity v and its displacement v / (zeta w) are the smaller; the reason names it."""
     mode = shell_mode(1, 1, 0, 1, "axial")
 
     def res(lo, v, w):
@@ -282,10 +292,11 @@ def test_damped_resonances_rank_by_steady_amplitude():
                     order=3, modes=(dataclasses.replace(mode, omega=w),), growth_rate_max=0.0,
                     Omega_at_max=lo, Omega_center=lo, severity=v, cause=FAMILY_CAUSES[3])
 
+    # res(20): 20 m, 2e3 m/s^2; res(30): 0.1 m, 1e5 m/s^2 = 1.02e4 g at 1000 / 2 pi Hz
     s = danger_summary(operating_range=OPERATING, modal_ratio=0.01,
-                       bands={"resonance": [res(20.0, 2.0, 1000.0), res(30.0, 1.0, 10.0)]})
+                       bands={"resonance": [res(20.0, 2.0, 10.0), res(30.0, 1.0, 1000.0)]})
     assert [b.Omega_lo for b in s.bands] == [30.0, 20.0]
-    assert "largest response 1e+04 mm" in s.verdict.reason
+    assert "largest response 100 mm (1.02e+04 g) at 159.2 Hz" in s.verdict.reason
 
 
 # --------------------------------------------------------------------------------------------
@@ -342,3 +353,115 @@ def test_ranked_bands_carry_their_measures_into_results_json():
                                                                 rel=1e-15)
     assert by["resonance"]["steady_acceleration"] == pytest.approx(1e-3 * omega / 0.01,
                                                                    rel=1e-14)
+
+
+# --------------------------------------------------------------------------------------------
+# Everything computed in one verdict: the vehicle's bounded responses and the flight
+# --------------------------------------------------------------------------------------------
+def _response(acc_g, Omega, *, k=0, station="payload", station_m=10.0, **extra):
+    extra.setdefault("modes", f"k = {k}")
+    return ResponsePeak(source="forced response", k=k, Omega=Omega, acceleration_g=acc_g,
+                        station=station, station_m=station_m, **extra)
+
+
+def test_axial_resonance_peak_against_direct_integration():
+    """A k = 0 mode p'' + 2 zeta w p' + w^2 p = phi dF cos(w t) (mass-normalised, aft-edge
+    displacement u = phi p): axial_resonance_peaks' displacement and acceleration (g) against
+    the closed form phi^2 dF / (2 zeta w^2) and against direct integration (solve_ivp to steady
+    state, the last period's peak), to 1 %."""
+    w, zeta, phi, dF = 2 * math.pi * 12.07, 0.01, 2.0e-3, 1.0e5
+    res = AxialResonance(index=0, order=1, type="axial", omega=w, participation=phi,
+                         flexibility=phi**2 / w**2, amplitude=phi**2 / (2 * zeta * w**2))
+    (p,) = axial_resonance_peaks([res], load=dF, operating_range=(70.0, 90.0))
+    closed = phi**2 * dF / (2.0 * zeta * w * w)
+    assert p.displacement_m == pytest.approx(closed, rel=1e-12)
+    T = 2 * math.pi / w
+    n_settle = int(12.0 / (zeta * w * T))  # 12 time constants 1 / (zeta w)
+
+    def rhs(t, y):
+        return [y[1], phi * dF * math.cos(w * t) - 2 * zeta * w * y[1] - w * w * y[0]]
+
+    sol = integrate.solve_ivp(rhs, (0.0, (n_settle + 1) * T), [0.0, 0.0], method="DOP853",
+                              rtol=1e-9, atol=1e-14, dense_output=True)
+    t = np.linspace(n_settle * T, (n_settle + 1) * T, 2001)
+    y, v = sol.sol(t)
+    acc = phi * (phi * dF * np.cos(w * t) - 2 * zeta * w * v - w * w * y)  # u'' from the ODE
+    assert p.displacement_m == pytest.approx(phi * np.max(np.abs(y)), rel=1e-2)
+    assert p.acceleration_g == pytest.approx(np.max(np.abs(acc)) / STANDARD_GRAVITY, rel=1e-2)
+    assert p.in_operating_range and p.station == "aft edge"
+
+
+def test_a_bounded_response_never_worsens_the_verdict_and_is_named():
+    """Exact rules (docs/theory/verdicts.md): a forced response, however large, is bounded:
+    STABLE stays STABLE and the reason names the largest response in g with its station, Omega
+    (Hz) and load; in the one ranking it comes after an unstable region and before a region of
+    negligible growth; results.json's verdict carries it."""
+    big = _response(50.0, 2 * math.pi * 12.0, load_quantity="axial force", load_unit="N",
+                load=3.0e6, load_station_m=40.0)
+    small = _response(0.5, 2 * math.pi * 30.0, station="aft edge", station_m=0.0)
+    s = danger_summary(operating_range=(10.0, 300.0), modal_ratio=0.01,
+                       bands={"vehicle": [_band(20.0, 21.0, 1e-9, mechanism="vehicle")]},
+                       responses=[small, big])
+    assert s.verdict.overall == "STABLE"
+    assert s.verdict.reason.endswith("largest response 50 g at payload (10 m, k = 0), 12 Hz, "
+                                      "axial force 3e+06 N at 40 m")
+    assert s.responses == (big, small)
+    assert [type(x).__name__ for x in s.ranking] == ["ResponsePeak", "ResponsePeak",
+                                                    "RankedBand"]
+    u = danger_summary(operating_range=(10.0, 300.0), modal_ratio=0.01, responses=[big],
+                       bands={"vehicle": [_band(20.0, 21.0, 1.0, mechanism="vehicle")]})
+    assert u.verdict.overall == "UNSTABLE" and isinstance(u.ranking[0], RankedBand)
+    d = json.loads(json.dumps(s.to_dict()))
+    assert d["verdict"]["largest_response"]["acceleration_g"] == 50.0
+    assert [x["item"] for x in d["ranking"]] == ["response", "response", "band"]
+
+
+def test_a_resonance_found_twice_is_listed_once():
+    """Exact: a k = 0 axial resonance whose half-power band omega (1 -+ zeta) holds a k = 0
+    forced-response peak is that peak (named in its ``also``); one outside stays."""
+    w1, w2 = 2 * math.pi * 12.0, 2 * math.pi * 20.0
+    forced = [_response(4.0, w1 * (1 + 0.5 * 0.01))]  # inside the half-power band at zeta = 1 %
+    axial = [_response(3.9, w1, station="aft edge", modes="k = 0 mode 1"),
+             _response(0.2, w2, station="aft edge", modes="k = 0 mode 2")]
+    axial = [dataclasses.replace(a, source="axial resonance") for a in axial]
+    merged = merge_responses(forced, axial, damping_ratio=0.01)
+    assert [(m.source, m.Omega, m.also) for m in merged] == [
+        ("forced response", forced[0].Omega, ("k = 0 mode 1",)),
+        ("axial resonance", w2, ())]
+
+
+def test_flight_events_enter_the_verdict_and_negligible_ones_are_dropped():
+    """A flight's region events by their accumulated e-folds (closed form: a constant growth
+    rate sigma held over the dwell T gives sigma T, :func:`band_events`' exact integral): one
+    at 1.85e-5 1/s over 15 s (2.8e-4 e-folds, under ln 1.1) is dropped and counted, never the
+    worst moment; one at 0.2 1/s over 20 s (4 e-folds > ln 10) makes the overall verdict
+    UNSTABLE though no frozen-time band counts; a forced resonance is bounded."""
+    def events(rate, t1):
+        band = _band(20.0, 21.0, rate, mechanism="vehicle", k=1)
+        return band_events([0.0, t1], [[band], [band]], [[20.5, 20.5], [20.5, 20.5]])
+
+    (slow,) = events(1.85e-5, 15.0)
+    (fast,) = events(0.2, 20.0)
+    assert slow.efolds == pytest.approx(1.85e-5 * 15.0, rel=1e-12)
+    assert fast.efolds == pytest.approx(0.2 * 20.0, rel=1e-12)
+    forced = FlightEvent(mechanism="forced", k=0, modes="axial (k = 0, mode 0)", t_start_s=0.0,
+                         t_end_s=64.39, max_growth_1_s=0.0, efolds=0.0, amplification=1.0,
+                         peak_acceleration_g=0.223, station="aft edge")
+    assert [event_status(e) for e in (slow, fast, forced)] == ["negligible", "unstable",
+                                                               "bounded"]
+    quiet = flight_verdict([slow, forced], times=(0.0, 150.0))
+    assert quiet.worst is forced and quiet.dropped == 1
+    s = danger_summary(operating_range=OPERATING, bands={"vehicle": []}, flight=quiet)
+    assert s.verdict.overall == "STABLE"
+    assert ("over the flight (t = 0-150 s) no region grows more than 10 %; worst moment 0.223 g "
+            "at aft edge, t = 0-64.39 s, axial (k = 0, mode 0) (1 event of negligible growth "
+            "dropped)") in s.verdict.reason
+    # the largest bounded response is that forced resonance: named once, as the worst moment
+    assert s.verdict.reason.endswith("largest response: the flight's worst moment")
+    loud = flight_verdict([slow, forced, fast], times=(0.0, 150.0))
+    assert loud.worst is fast
+    u = danger_summary(operating_range=OPERATING, bands={"vehicle": []}, flight=loud)
+    assert u.verdict.overall == "UNSTABLE" and "1 region grows more than 10-fold" in \
+        u.verdict.reason
+    d = json.loads(json.dumps(u.to_dict()))["verdict"]["flight"]
+    assert (d["status"], d["events_counted"], d["events_dropped"]) == ("unstable", 2, 1)

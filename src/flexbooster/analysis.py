@@ -21,7 +21,12 @@ from ._threads import blas_threads
 from .bands import NEGLIGIBLE_GROWTH
 from .case import Case, deprecation_warnings
 from .checks import count, finite, positive
-from .danger import danger_summary
+from .danger import (
+    axial_resonance_peaks,
+    danger_summary,
+    flight_verdict,
+    merge_responses,
+)
 from .dynamics import (
     ThrustSpectrum,
     UndampedResonanceError,
@@ -246,7 +251,8 @@ def analyze(
         vehicle=survey,
         vehicle_regions=regions,
         memo_roots_in_regions=matches,
-        danger=_danger(model, pitch, action, regions, severity, case=case),
+        danger=_danger(model, pitch, action, regions, severity, case=case,
+                       more=_bounded_and_flight(regions, forced, flight, model.omega_range)),
         severity=severity,
         forced_response=forced,
         flight=flight,
@@ -296,12 +302,14 @@ def _analyze_segments(case: Case, step: Callable[[str], None], *, figures: bool,
         bands={"pitch": pitch.bands, **({} if found is None else {"vehicle": found.regions})},
         gaps=list(pitch.gaps) + ([] if found is None else list(found.gaps)),
         gamma=t.gamma, duration=t.duration, modal_ratio=case.vehicle_damping_ratio,
-        pitch_ratio=case.damping.pitch_ratio)
+        pitch_ratio=case.damping.pitch_ratio,
+        **_bounded_and_flight(found, forced, flight, (t.omega_min, t.omega_max)))
     memo = {"beam_action", "resonance"}  # the memo's mechanisms: not applicable, never stable
-    danger = dataclasses.replace(danger, verdicts=tuple(
-        (key, words, "not applicable: the memo's method models the two bare cylinders of "
-         "[booster] only" if key in memo else verdict)
-        for key, words, verdict in danger.verdicts))
+    verdicts = tuple((key, words, "not applicable: the memo's method models the two bare "
+                      "cylinders of [booster] only" if key in memo else verdict)
+                     for key, words, verdict in danger.verdicts)
+    danger = dataclasses.replace(danger, verdicts=verdicts, verdict=dataclasses.replace(
+        danger.verdict, mechanisms=tuple((k, v) for k, _, v in verdicts)))
     return Results(case=case, mass=None, omega_1=None, omega_psi=omega_psi, groups=None,
                    beam=None, pitch=pitch, shell=None, warnings=tuple(extra), vehicle=survey,
                    vehicle_regions=found, danger=danger, vehicle_mass=mass,
@@ -309,9 +317,27 @@ def _analyze_segments(case: Case, step: Callable[[str], None], *, figures: bool,
                    flight=flight)
 
 
-def _danger(model: BoosterModel, pitch, action, regions, severity, *, case: Case):
+def _bounded_and_flight(regions, forced, flight, operating_range) -> dict:
+    """The overall verdict's inputs beyond the bands: the vehicle's bounded responses (its
+    forced response's peaks and its k = 0 axial resonances, each resonance once) and the
+    flight's events that count."""
+    fa = None if regions is None else regions.forced_axial
+    axial = () if fa is None else axial_resonance_peaks(
+        fa.resonances, load=regions.gamma * regions.F0, operating_range=operating_range)
+    peaks = () if forced is None else forced.response_peaks()
+    zeta = forced.response.damping_ratio if forced is not None else (
+        fa.damping_ratio if fa is not None else 0.0)
+    return {"responses": merge_responses(peaks, axial, damping_ratio=zeta),
+            "flight": None if flight is None else flight_verdict(
+                flight.events, times=(float(flight.times[0]), float(flight.times[-1])),
+                gaps=len(flight.gaps))}
+
+
+def _danger(model: BoosterModel, pitch, action, regions, severity, *, case: Case,
+            more: dict):
     """The ranked bands, the verdicts of every mechanism computed (with their gaps) and the
-    overall verdict at the case's damping and duration."""
+    overall verdict at the case's damping and duration, with ``more`` (the vehicle's
+    responses and the flight, :func:`_bounded_and_flight`)."""
     found = {"pitch": pitch.bands}
     gaps = list(pitch.gaps)
     if action is not None:
@@ -326,7 +352,7 @@ def _danger(model: BoosterModel, pitch, action, regions, severity, *, case: Case
                           gamma=model.gamma, duration=case.thrust.duration,
                           # the least damped elastic modes (a deprecated key may set one)
                           modal_ratio=min(case.damping.beam_ratio, case.vehicle_damping_ratio),
-                          pitch_ratio=case.damping.pitch_ratio)
+                          pitch_ratio=case.damping.pitch_ratio, **more)
 
 
 def _stability_table(model: BoosterModel, shell, params

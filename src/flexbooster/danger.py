@@ -15,13 +15,15 @@ from typing import Any
 
 from .bands import MECHANISMS, NEGLIGIBLE_GROWTH, Band, SearchGap, gaps_text
 from .dynamics import STANDARD_GRAVITY
+from .flight import FlightEvent
 from .floquet import tongue_critical_damping
 
-__all__ = ["RankedBand", "DangerSummary", "Verdict", "STEADY_CAUSE", "NEGLIGIBLE_GROWTH",
-           "NEGLIGIBLE_AMPLIFICATION", "UNSTABLE_AMPLIFICATION", "UNSTABLE_E_FOLDING",
-           "AMPLIFICATION_EXPONENT_MAX", "band_measures", "band_status", "danger_bands",
+__all__ = ["RankedBand", "DangerSummary", "Verdict", "ResponsePeak", "FlightVerdict",
+           "STEADY_CAUSE", "NEGLIGIBLE_GROWTH", "NEGLIGIBLE_AMPLIFICATION",
+           "UNSTABLE_AMPLIFICATION", "UNSTABLE_E_FOLDING", "AMPLIFICATION_EXPONENT_MAX",
+           "FIRST_SCREEN_WORDS", "MEASURES", "band_measures", "band_status", "danger_bands",
            "danger_summary", "edges_text", "hz_text", "mechanism_verdicts", "overall_verdict",
-           "MEASURES"]
+           "event_status", "flight_verdict", "axial_resonance_peaks", "merge_responses"]
 
 _KIND_WORDS = {"simple": "simple", "sum": "sum combination",
                "difference": "difference combination"}
@@ -39,6 +41,11 @@ UNSTABLE_AMPLIFICATION = 10.0
 UNSTABLE_E_FOLDING = 10.0
 #: Largest sigma T whose exp is stored (exp(700) ~ 1e304); above it amplification is None.
 AMPLIFICATION_EXPONENT_MAX = 700.0
+#: The mechanisms in engineering words, for the first screen (the memo's section numbers
+#: stay in :data:`flexbooster.bands.MECHANISMS` and the detailed sections).
+FIRST_SCREEN_WORDS = {"pitch": "rigid-body pitch", "beam_action": "beam bending under thrust",
+                      "vehicle": "vehicle parametric regions",
+                      "resonance": "shell resonances"}
 
 
 def band_measures(band: Band, *, gamma: float, duration: float | None,
@@ -233,6 +240,239 @@ class RankedBand:
                 **{key: value for key, value in self.band.to_dict().items() if key in MEASURES}}
 
 
+@dataclass(frozen=True)
+class ResponsePeak:
+    """A bounded forced response of the vehicle in the ranking: its largest acceleration at
+    one resonance, with the station, Omega and internal load (docs/theory/verdicts.md).
+
+    Attributes
+    ----------
+    source : str
+        ``"forced response"`` (the steady response at the stations, results
+        ``forced_response``) or ``"axial resonance"`` (a k = 0 mode's single-mode resonant
+        amplitude at the aft edge, ``vehicle_regions.forced_axial``).
+    k : int
+        Circumferential harmonic (0 axial, 1 lateral).
+    Omega : float
+        Thrust-oscillation frequency of the peak (rad/s).
+    acceleration_g : float
+        Peak acceleration amplitude (units of g = :data:`STANDARD_GRAVITY`), >= 0.
+    station : str
+        Where the acceleration peaks.
+    station_m : float
+        Its distance from the aft edge (m).
+    displacement_m : float or None
+        Displacement amplitude there (m).
+    modes : str
+        The modes in words ("k = 0", "k = 0 mode 1 (axial, order 1)").
+    load_quantity, load_unit : str or None
+        The largest internal load near this Omega ("axial force", N; "bending moment", N m).
+    load, load_station_m : float or None
+        Its amplitude and where along the vehicle (m from the aft edge).
+    in_operating_range : bool
+        Omega lies in the case's operating range.
+    also : tuple of str
+        The same resonance found by another source (listed once, here).
+    """
+
+    source: str
+    k: int
+    Omega: float
+    acceleration_g: float
+    station: str
+    station_m: float
+    displacement_m: float | None = None
+    modes: str = ""
+    load_quantity: str | None = None
+    load_unit: str | None = None
+    load: float | None = None
+    load_station_m: float | None = None
+    in_operating_range: bool = True
+    also: tuple[str, ...] = ()
+
+    def __post_init__(self) -> None:
+        for name in ("Omega", "acceleration_g", "station_m"):
+            v = float(getattr(self, name))
+            if not math.isfinite(v) or (name != "station_m" and v < 0.0):
+                raise ValueError(f"{name} = {v!r}: must be finite and >= 0")
+
+    @property
+    def hz(self) -> float:
+        """Omega in Hz."""
+        return self.Omega / (2.0 * math.pi)
+
+    @property
+    def text(self) -> str:
+        """ "3.99 g at aft edge (0 m, k = 0), 12.07 Hz, axial force 3.44e+06 N at 64.3 m"."""
+        out = (f"{self.acceleration_g:.3g} g at {self.station} ({self.station_m:.4g} m, "
+               f"k = {self.k}), {self.hz:.4g} Hz")
+        if self.load is not None:
+            out += (f", {self.load_quantity} {self.load:.3g} {self.load_unit} at "
+                    f"{self.load_station_m:.4g} m")
+        return out
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready mapping (None kept; Omega also in Hz)."""
+        def opt(v: float | None) -> float | None:
+            return None if v is None else float(v)
+
+        return {"source": self.source, "k": int(self.k), "Omega": float(self.Omega),
+                "Omega_hz": float(self.hz), "acceleration_g": float(self.acceleration_g),
+                "station": self.station, "station_m": float(self.station_m),
+                "displacement_m": opt(self.displacement_m), "modes": self.modes,
+                "load_quantity": self.load_quantity, "load_unit": self.load_unit,
+                "load": opt(self.load), "load_station_m": opt(self.load_station_m),
+                "in_operating_range": bool(self.in_operating_range), "also": list(self.also)}
+
+
+def axial_resonance_peaks(resonances: Sequence[Any], *, load: float,
+                          operating_range: tuple[float, float]) -> tuple[ResponsePeak, ...]:
+    """The damped k = 0 axial resonances of the vehicle as :class:`ResponsePeak`: at Omega =
+    omega_n the aft-edge displacement a_n Delta F, a_n = phi_n^2 / (2 zeta omega_n^2) the
+    single-mode resonant amplitude per newton (Meirovitch 1986, sec. 3.3; memo family 3), and
+    the acceleration omega_n^2 times that; undamped ones (a_n None) are left out.
+
+    Parameters
+    ----------
+    resonances : sequence of AxialResonance
+        :attr:`flexbooster.dynamics.ForcedAxial.resonances` (``omega``, ``amplitude``,
+        ``index``, ``type``, ``order``).
+    load : float
+        The pulsating thrust Delta F = gamma F0 (N), >= 0.
+    operating_range : (float, float)
+        [omega_min, omega_max] (rad/s).
+    """
+    if not (math.isfinite(load) and load >= 0.0):
+        raise ValueError(f"load = {load!r}: must be finite and >= 0 (N)")
+    lo, hi = _operating(operating_range)
+    out = []
+    for r in resonances:
+        if r.amplitude is None:
+            continue
+        u = float(r.amplitude) * load  # m, at the aft edge
+        out.append(ResponsePeak(
+            source="axial resonance", k=0, Omega=float(r.omega),
+            acceleration_g=u * r.omega**2 / STANDARD_GRAVITY, station="aft edge", station_m=0.0,
+            displacement_m=u, modes=f"k = 0 mode {r.index + 1} ({r.type}, order {r.order})",
+            in_operating_range=bool(lo <= r.omega <= hi)))
+    return tuple(out)
+
+
+def merge_responses(forced: Sequence[ResponsePeak], axial: Sequence[ResponsePeak], *,
+                    damping_ratio: float) -> tuple[ResponsePeak, ...]:
+    """Every bounded response once, the largest acceleration first: a k = 0 axial resonance
+    whose half-power band omega_n (1 -+ zeta) holds a k = 0 peak of the forced response is
+    that peak (named in its ``also``; the forced response, with its stations and loads, is
+    kept).
+
+    Parameters
+    ----------
+    forced : sequence of ResponsePeak
+        The forced response's peaks.
+    axial : sequence of ResponsePeak
+        From :func:`axial_resonance_peaks`.
+    damping_ratio : float
+        The modal damping ratio zeta of the k = 0 modes, >= 0.
+    """
+    tol = max(float(damping_ratio), 1e-3)
+    kept = list(forced)
+    for a in axial:
+        hit = [i for i, p in enumerate(kept) if p.source == "forced response" and p.k == 0
+               and abs(p.Omega - a.Omega) <= tol * a.Omega]
+        if hit:
+            i = hit[0]
+            kept[i] = dataclasses.replace(kept[i], also=(*kept[i].also, a.modes))
+        else:
+            kept.append(a)
+    return tuple(sorted(kept, key=lambda p: (not p.in_operating_range, -p.acceleration_g,
+                                             p.Omega)))
+
+
+def event_status(event: FlightEvent) -> str:
+    """How a flight event counts (docs/theory/verdicts.md): a forced resonance is
+    ``"bounded"``; a region by its accumulated e-folds N over its interval, with the floors of
+    :func:`band_status`: ``"negligible"`` when its largest growth rate is below
+    :data:`NEGLIGIBLE_GROWTH` or N < ln :data:`NEGLIGIBLE_AMPLIFICATION`, ``"unstable"`` when
+    N > ln :data:`UNSTABLE_AMPLIFICATION`, ``"marginal"`` otherwise.
+
+    Parameters
+    ----------
+    event : FlightEvent
+        An event of the flight.
+    """
+    if event.mechanism == "forced":
+        return "bounded"
+    if event.max_growth_1_s < NEGLIGIBLE_GROWTH or \
+            event.efolds < math.log(NEGLIGIBLE_AMPLIFICATION):
+        return "negligible"
+    return "unstable" if event.efolds > math.log(UNSTABLE_AMPLIFICATION) else "marginal"
+
+
+@dataclass(frozen=True)
+class FlightVerdict:
+    """The flight's part of the overall verdict: its events that count, the worst first.
+
+    Attributes
+    ----------
+    t_start_s, t_end_s : float
+        The flight's first and last frozen time (s).
+    events : tuple of FlightEvent
+        The events that count (:func:`event_status` not negligible), the worst first.
+    dropped : int
+        Events of negligible growth, left out.
+    gaps : int
+        Searches at frozen times cut by a limit.
+    """
+
+    t_start_s: float
+    t_end_s: float
+    events: tuple[FlightEvent, ...]
+    dropped: int = 0
+    gaps: int = 0
+
+    @property
+    def worst(self) -> FlightEvent | None:
+        """The worst event that counts, None where none does."""
+        return self.events[0] if self.events else None
+
+    def status(self) -> str:
+        """The worst status of its events ("unstable", "marginal", "bounded") or "stable"."""
+        found = {event_status(e) for e in self.events}
+        return next((s for s in ("unstable", "marginal", "bounded") if s in found), "stable")
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready mapping."""
+        worst = self.worst
+        return {"t_start_s": float(self.t_start_s), "t_end_s": float(self.t_end_s),
+                "status": self.status(), "events_counted": len(self.events),
+                "events_dropped": int(self.dropped), "gaps": int(self.gaps),
+                "worst": None if worst is None else dict(worst.to_dict(),
+                                                         status=event_status(worst))}
+
+
+def flight_verdict(events: Sequence[FlightEvent], *, times: tuple[float, float],
+                   gaps: int = 0) -> FlightVerdict:
+    """The events that count over a flight, the worst first (unstable, then marginal regions
+    by accumulated e-folds, then the forced resonances by peak acceleration, then the
+    earliest), and how many of negligible growth were dropped.
+
+    Parameters
+    ----------
+    events : sequence of FlightEvent
+        Every event of the flight.
+    times : (float, float)
+        The flight's first and last frozen time (s).
+    gaps : int
+        Searches at frozen times cut by a limit (>= 0).
+    """
+    rank = {"unstable": 0, "marginal": 1, "bounded": 2}
+    kept = [e for e in events if event_status(e) != "negligible"]
+    kept.sort(key=lambda e: (rank[event_status(e)], -e.efolds,
+                             -(e.peak_acceleration_g or 0.0), e.t_start_s))
+    return FlightVerdict(float(times[0]), float(times[1]), tuple(kept),
+                         len(events) - len(kept), int(gaps))
+
+
 def _operating(operating_range: tuple[float, float]) -> tuple[float, float]:
     lo, hi = (float(v) for v in operating_range)
     if not (math.isfinite(lo) and math.isfinite(hi) and 0.0 <= lo < hi):
@@ -280,8 +520,8 @@ def danger_bands(bands: Sequence[Band], *, operating_range: tuple[float, float],
     """Every band once (the same physical band of two mechanisms merged, naming both), most
     dangerous first: those the operating range reaches; then by status (:func:`band_status`:
     unstable, marginal, bounded resonances, negligible growth); within one status the regions
-    by growth rate before the resonances by damped steady amplitude (undamped: by severity);
-    ties by Omega_lo.
+    by growth rate before the resonances by damped steady acceleration (undamped: by
+    severity); ties by Omega_lo.
 
     Parameters
     ----------
@@ -306,8 +546,10 @@ def danger_bands(bands: Sequence[Band], *, operating_range: tuple[float, float],
         rank = _STATUS_RANK[_status(r, duration, modal_ratio)]
         if r.growth_rate is not None:
             return (not r.in_operating_range, rank, 0, -r.growth_rate, r.Omega_lo)
-        amp = r.band.steady_amplitude  # damped: the steady amplitude; undamped: the severity
-        return (not r.in_operating_range, rank, 1, -(amp if amp is not None else
+        # damped: the steady acceleration in g, the one scale of every bounded response
+        # (:class:`ResponsePeak`); undamped: the severity
+        acc = r.band.steady_acceleration
+        return (not r.in_operating_range, rank, 1, -(acc / STANDARD_GRAVITY if acc is not None else
                                                       r.severity or 0.0), r.Omega_lo)
 
     ranked.sort(key=key)
@@ -396,7 +638,7 @@ def mechanism_verdicts(ranked: Sequence[RankedBand], *, computed: Mapping[str, b
             continue
         resonance = key == "resonance"
         noun = ("resonance" if resonance else "instability region") + \
-            ("s" if len(mine) > 1 else "") + (" (memo 7)" if resonance else "")
+            ("s" if len(mine) > 1 else "")
         if resonance:
             sev = max(b.severity or 0.0 for b in mine)
             text = (f"unstable: {len(mine)} {noun} in the operating range, largest severity "
@@ -422,14 +664,13 @@ def mechanism_verdicts(ranked: Sequence[RankedBand], *, computed: Mapping[str, b
     return tuple(out)
 
 
-
-
 def _response_text(bands: Sequence[Band], lead: str) -> str:
-    """lead + "1.6 mm (0.9 g) at 45.2 Hz" of the largest damped steady amplitude; "" if none."""
-    damped = [b for b in bands if b.steady_amplitude is not None]
+    """lead + "1.6 mm (0.9 g) at 45.2 Hz" of the largest damped steady acceleration; "" if
+    none."""
+    damped = [b for b in bands if b.steady_acceleration is not None]
     if not damped:
         return ""
-    top = max(damped, key=lambda b: b.steady_amplitude)
+    top = max(damped, key=lambda b: b.steady_acceleration)
     f = top.modes[0].omega / (2.0 * math.pi)
     return (f"{lead}{1e3 * top.steady_amplitude:.3g} mm "
             f"({top.steady_acceleration / STANDARD_GRAVITY:.3g} g) at {f:.4g} Hz")
@@ -467,6 +708,12 @@ class Verdict:
         The damping used.
     duration : float or None
         Duration of the excitation (s).
+    largest_response : dict or None
+        The largest bounded response over everything computed (acceleration in g): the
+        ``to_dict`` of a :class:`ResponsePeak`, a resonance band's or a flight event's, with
+        ``"source"`` naming which.
+    flight : FlightVerdict or None
+        The flight's part (a case with ``[flight]``).
     """
 
     overall: str
@@ -475,6 +722,8 @@ class Verdict:
     modal_ratio: float
     pitch_ratio: float
     duration: float | None
+    largest_response: dict | None = None
+    flight: FlightVerdict | None = None
 
     @property
     def line(self) -> str:
@@ -492,15 +741,83 @@ class Verdict:
                 "mechanisms": dict(self.mechanisms),
                 "damping": {"modal_ratio": float(self.modal_ratio),
                             "pitch_ratio": float(self.pitch_ratio)},
-                "duration": None if self.duration is None else float(self.duration)}
+                "duration": None if self.duration is None else float(self.duration),
+                "largest_response": self.largest_response,
+                "flight": None if self.flight is None else self.flight.to_dict()}
+
+
+def _event_words(e: FlightEvent) -> str:
+    """A flight event in a few words, with its interval."""
+    k = "" if e.k is None or "k =" in e.modes else f" (k = {e.k})"
+    when = f"t = {e.t_start_s:.4g}-{e.t_end_s:.4g} s"
+    if e.peak_acceleration_g is not None:
+        return f"{e.peak_acceleration_g:.3g} g at {e.station}, {when}, {e.modes}{k}"
+    amp = f"x {e.amplification:.3g}" if math.isfinite(e.amplification) and \
+        e.efolds <= AMPLIFICATION_EXPONENT_MAX else f"x e^{e.efolds:.3g}"
+    return f"{e.modes}{k}, {when}, {amp} ({e.efolds:.3g} e-folds)"
+
+
+def _largest_response(bounded: Sequence[Band], responses: Sequence[ResponsePeak],
+                      flight: FlightVerdict | None) -> tuple[str, dict] | None:
+    """The largest bounded response in g over the damped resonances, the vehicle's responses
+    in the operating range and the flight's forced resonances: (words, JSON mapping)."""
+    found: list[tuple[float, str, dict]] = []
+    for b in bounded:
+        if b.steady_acceleration is not None:
+            g = b.steady_acceleration / STANDARD_GRAVITY
+            found.append((g, _response_text([b], "") + " (shell resonance)",
+                          {"source": "shell resonance", "acceleration_g": g,
+                           "displacement_m": float(b.steady_amplitude),
+                           "Omega": float(b.modes[0].omega),
+                           "Omega_hz": float(b.modes[0].omega / (2.0 * math.pi)),
+                           "modes": b.mode_text}))
+    for r in responses:
+        if r.in_operating_range:
+            found.append((r.acceleration_g, r.text, r.to_dict()))
+    for e in () if flight is None else flight.events:
+        if e.peak_acceleration_g is not None:
+            found.append((e.peak_acceleration_g, f"{_event_words(e)} (flight)",
+                          dict(e.to_dict(), source="flight", acceleration_g=e.peak_acceleration_g)))
+    if not found:
+        return None
+    g, words, data = max(found, key=lambda f: f[0])
+    return words, data
+
+
+def _flight_text(flight: FlightVerdict, duration_rule: str) -> str:
+    """The flight's part of the reason."""
+    span = f"over the flight (t = {flight.t_start_s:g}-{flight.t_end_s:g} s)"
+    status = flight.status()
+    worst = flight.worst
+    if status in ("unstable", "marginal"):
+        n = sum(1 for e in flight.events if event_status(e) == status)
+        rule = (f"grow{'s' if n == 1 else ''} more than {UNSTABLE_AMPLIFICATION:g}-fold"
+                if status == "unstable" else "open")
+        text = (f"{span} {n} region{'s' if n > 1 else ''} {rule}; worst "
+                f"{_event_words(worst)}")
+    else:
+        text = f"{span} no region grows more than {duration_rule}"
+        if worst is not None:
+            text += f"; worst moment {_event_words(worst)}"
+    if flight.dropped:
+        text += (f" ({flight.dropped} event{'s' if flight.dropped > 1 else ''} of negligible "
+                 "growth dropped)")
+    if flight.gaps:
+        text += f"; not fully searched at {flight.gaps} frozen-time search(es)"
+    return text
 
 
 def overall_verdict(ranked: Sequence[RankedBand], *,
                     verdicts: Sequence[tuple[str, str, str]], gaps: Sequence[SearchGap] = (),
                     duration: float | None = None, modal_ratio: float = 0.0,
-                    pitch_ratio: float = 0.0) -> Verdict:
-    """UNSTABLE when a band in the operating range is unstable (:func:`band_status`); else
-    MARGINAL when one is marginal or a computed mechanism was not fully searched; else STABLE.
+                    pitch_ratio: float = 0.0, responses: Sequence[ResponsePeak] = (),
+                    flight: FlightVerdict | None = None) -> Verdict:
+    """The worst over everything computed: UNSTABLE when a band in the operating range or a
+    flight event is unstable (:func:`band_status`, :func:`event_status`); else MARGINAL when
+    one is marginal or a computed mechanism (or the flight) was not fully searched; else
+    STABLE. A bounded response (a damped resonance, the vehicle's forced response, a flight's
+    forced resonance) never makes the verdict worse: the largest, in g, is named in the
+    reason.
 
     Parameters
     ----------
@@ -514,6 +831,10 @@ def overall_verdict(ranked: Sequence[RankedBand], *,
         Duration of the excitation (s).
     modal_ratio, pitch_ratio : float
         The damping used.
+    responses : sequence of ResponsePeak
+        The vehicle's bounded forced responses (:func:`merge_responses`).
+    flight : FlightVerdict or None
+        The flight's events that count (:func:`flight_verdict`).
     """
     inside = [b for b in ranked if b.in_operating_range]
     by = {"unstable": [], "marginal": [], "negligible": [], "bounded": []}
@@ -525,8 +846,9 @@ def overall_verdict(ranked: Sequence[RankedBand], *,
     names = dict(MECHANISMS)
     regions_u = [b for b in by["unstable"] if b.mechanism != "resonance"]
     res_u = [b for b in by["unstable"] if b.mechanism == "resonance"]
+    fstatus = "stable" if flight is None else flight.status()
     parts: list[str] = []
-    if by["unstable"]:
+    if by["unstable"] or fstatus == "unstable":
         overall = "UNSTABLE"
         if regions_u:
             top = max(regions_u, key=lambda b: b.growth_rate_max)
@@ -539,7 +861,7 @@ def overall_verdict(ranked: Sequence[RankedBand], *,
         if res_u:
             parts.append(f"{len(res_u)} forced resonance{'s' if len(res_u) > 1 else ''} "
                          "grow without bound (no modal damping)")
-    elif by["marginal"] or cut:
+    elif by["marginal"] or cut or fstatus == "marginal" or (flight is not None and flight.gaps):
         overall = "MARGINAL"
         if by["marginal"]:
             top = max(by["marginal"], key=lambda b: b.growth_rate_max)
@@ -550,17 +872,32 @@ def overall_verdict(ranked: Sequence[RankedBand], *,
             parts.append("not fully searched: " + ", ".join(names[k] for k in cut))
     else:
         overall = "STABLE"
-        parts.append(f"at {damping}, no region" + (
+    if not (by["unstable"] or by["marginal"]):  # the frozen-time regions: none counts
+        parts.insert(0, f"at {damping}, no region" + (
             f" grows more than {100.0 * (NEGLIGIBLE_AMPLIFICATION - 1.0):g} % in "
             f"{duration:g} s" if duration is not None else
             f" has an e-folding time under {1.0 / NEGLIGIBLE_GROWTH:.0e} s"))
-    if by["bounded"] and overall != "UNSTABLE":
+    if flight is not None:
+        parts.append(_flight_text(flight, f"{100.0 * (NEGLIGIBLE_AMPLIFICATION - 1.0):g} %"))
+    if by["bounded"]:
         n = len(by["bounded"])
-        parts.append(f"{n} forced resonance{'s' if n > 1 else ''} bounded by damping"
-                     + _response_text(by["bounded"], ", largest response "))
+        parts.append(f"{n} forced resonance{'s' if n > 1 else ''} bounded by damping")
+    top = _largest_response(by["bounded"], responses, flight)
+    if top is not None:
+        worst = None if flight is None else flight.worst
+        same = worst is not None and top[1].get("source") == "flight" and \
+            top[1] == dict(worst.to_dict(), source="flight",
+                           acceleration_g=worst.peak_acceleration_g)
+        parts.append("largest response: the flight's worst moment" if same
+                     else f"largest response {top[0]}")
     return Verdict(overall, "; ".join(parts), tuple((k, v) for k, _, v in verdicts),
                    float(modal_ratio), float(pitch_ratio),
-                   None if duration is None else float(duration))
+                   None if duration is None else float(duration),
+                   None if top is None else top[1], flight)
+
+
+#: Order of the statuses in the one ranking of bands and responses.
+_ITEM_RANK = {"unstable": 0, "marginal": 1, "bounded": 2, "negligible": 3}
 
 
 @dataclass(frozen=True)
@@ -577,28 +914,61 @@ class DangerSummary:
         Every band, ranked (see :func:`danger_bands`).
     verdict : Verdict or None
         The overall verdict (:func:`overall_verdict`).
+    responses : tuple of ResponsePeak
+        The vehicle's bounded forced responses, the largest acceleration first.
+    ranking : tuple of RankedBand or ResponsePeak
+        The bands and the responses in one ranking: in the operating range first, then by
+        status (unstable, marginal, bounded, negligible); regions by growth rate, bounded
+        responses by acceleration in g.
     """
 
     operating_range: tuple[float, float]
     verdicts: tuple[tuple[str, str, str], ...]
     bands: tuple[RankedBand, ...]
     verdict: Verdict | None = None
+    responses: tuple[ResponsePeak, ...] = ()
+    ranking: tuple = ()
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready mapping."""
+        def item(x: RankedBand | ResponsePeak) -> dict[str, Any]:
+            if isinstance(x, ResponsePeak):
+                return dict(x.to_dict(), item="response")
+            return dict(x.to_dict(), item="band")
+
         return {"operating_range": [float(v) for v in self.operating_range],
                 "verdicts": [{"mechanism": k, "words": w, "verdict": v}
                              for k, w, v in self.verdicts],
                 "bands": [b.to_dict() for b in self.bands],
+                "responses": [r.to_dict() for r in self.responses],
+                "ranking": [item(x) for x in self.ranking],
                 "verdict": None if self.verdict is None else self.verdict.to_dict()}
+
+
+def _ranking(bands: Sequence[RankedBand], responses: Sequence[ResponsePeak], *,
+             duration: float | None, modal_ratio: float) -> tuple:
+    """The bands and the responses in one order (:attr:`DangerSummary.ranking`)."""
+    def key(x: RankedBand | ResponsePeak) -> tuple:
+        if isinstance(x, ResponsePeak):
+            return (not x.in_operating_range, _ITEM_RANK["bounded"], 1, -x.acceleration_g,
+                    x.Omega)
+        rank = _ITEM_RANK[_status(x, duration, modal_ratio)]
+        if x.growth_rate is not None:
+            return (not x.in_operating_range, rank, 0, -x.growth_rate, x.Omega_lo)
+        acc = x.band.steady_acceleration
+        return (not x.in_operating_range, rank, 1,
+                -(acc / STANDARD_GRAVITY if acc is not None else x.severity or 0.0), x.Omega_lo)
+
+    return tuple(sorted([*bands, *responses], key=key))
 
 
 def danger_summary(*, operating_range: tuple[float, float], bands: Mapping[str, Sequence[Band]],
                    gaps: Sequence[SearchGap] = (), gamma: float = 0.0,
                    duration: float | None = None, modal_ratio: float = 0.0,
-                   pitch_ratio: float = 0.0) -> DangerSummary:
+                   pitch_ratio: float = 0.0, responses: Sequence[ResponsePeak] = (),
+                   flight: FlightVerdict | None = None) -> DangerSummary:
     """Verdicts, the overall verdict and the ranked bands (each with :func:`band_measures`)
-    of every mechanism computed.
+    of every mechanism computed, with the vehicle's bounded responses and the flight.
 
     Parameters
     ----------
@@ -614,6 +984,10 @@ def danger_summary(*, operating_range: tuple[float, float], bands: Mapping[str, 
         Duration of the excitation (s).
     modal_ratio, pitch_ratio : float
         The damping used (the verdict's words; a damped resonance is bounded).
+    responses : sequence of ResponsePeak
+        The vehicle's bounded forced responses (:func:`merge_responses`).
+    flight : FlightVerdict or None
+        The flight's part (:func:`flight_verdict`).
     """
     for key in bands:
         if key not in dict(MECHANISMS):
@@ -627,6 +1001,11 @@ def danger_summary(*, operating_range: tuple[float, float], bands: Mapping[str, 
     lo, hi = _operating(operating_range)
     verdicts = mechanism_verdicts(ranked, computed=computed, gaps=gaps, duration=duration,
                                   modal_ratio=modal_ratio)
+    responses = tuple(sorted(responses, key=lambda r: (not r.in_operating_range,
+                                                       -r.acceleration_g, r.Omega)))
     verdict = overall_verdict(ranked, verdicts=verdicts, gaps=gaps, duration=duration,
-                              modal_ratio=modal_ratio, pitch_ratio=pitch_ratio)
-    return DangerSummary((lo, hi), verdicts, ranked, verdict)
+                              modal_ratio=modal_ratio, pitch_ratio=pitch_ratio,
+                              responses=responses, flight=flight)
+    return DangerSummary((lo, hi), verdicts, ranked, verdict, responses,
+                         _ranking(ranked, responses, duration=duration,
+                                  modal_ratio=modal_ratio))

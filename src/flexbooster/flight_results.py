@@ -11,6 +11,7 @@ from typing import Any
 
 import numpy as np
 
+from .danger import event_status
 from .flight import EVENT_COLUMNS, MODE_COLUMNS, FlightEvent
 
 __all__ = ["FlightHarmonic", "FlightResults", "EVENT_COLUMNS", "MODE_COLUMNS"]
@@ -105,9 +106,22 @@ class FlightResults:
     notes: tuple = field(default=())
 
     @property
+    def counted(self) -> tuple[FlightEvent, ...]:
+        """The events that count (:func:`flexbooster.danger.event_status` not negligible: a
+        region whose growth is below the verdict's floors is dropped), worst first."""
+        return tuple(e for e in self.events if event_status(e) != "negligible")
+
+    @property
+    def dropped(self) -> int:
+        """How many events of negligible growth :attr:`counted` leaves out."""
+        return len(self.events) - len(self.counted)
+
+    @property
     def worst(self) -> FlightEvent | None:
-        """The worst event (the first), None where the oscillation meets nothing."""
-        return self.events[0] if self.events else None
+        """The worst event that counts (the first of :attr:`counted`), None where the
+        oscillation meets nothing that counts."""
+        counted = self.counted
+        return counted[0] if counted else None
 
     def mode_rows(self) -> list[dict[str, Any]]:
         """The rows of flight-modes.csv (:data:`MODE_COLUMNS`): per frozen time, harmonic and
@@ -140,6 +154,7 @@ class FlightResults:
             "regions": [[b.to_dict() for b in bands] for bands in self.regions],
             "events": self.event_rows(),
             "worst": None if worst is None else worst.to_dict(),
+            "events_dropped": self.dropped,
             "gaps": [g.to_dict() for g in self.gaps],
             "notes": list(self.notes),
         }

@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from . import __version__
-from .danger import DangerSummary
+from .danger import DangerSummary, ResponsePeak
 from .dynamics import ForcedResponse, VehicleRegions
 from .dynamics.forced import STANDARD_GRAVITY
 from .errors import AnalysisWarning
@@ -122,6 +122,11 @@ UNITS: dict[str, str] = {
     "forced_response.peaks.bending_moment_Nm": "N m",
     "forced_response.envelopes.peak, at_worst": "N (axial, shear force) or N m (moment)",
     "forced_response.convergence.max_change": "1 (relative to the largest peak)",
+    "danger.responses.Omega, danger.ranking.Omega": "rad/s (a bounded response)",
+    "danger.responses.acceleration_g, verdict.largest_response.acceleration_g": "1 (units of g)",
+    "danger.responses.displacement_m, station_m, load_station_m": "m",
+    "danger.responses.load": "N (axial force) or N m (bending moment), see load_unit",
+    "verdict.flight.t_start_s, t_end_s": "s",
 }
 UNITS.update({
     "mass_properties.mass_kg, contributions.mass_kg": "kg ([vehicle] segments)",
@@ -473,6 +478,41 @@ class ForcedLoads:
                     bending_moment_Nm=bm, Omega_axial_force=wa, Omega_bending_moment=wb,
                     in_operating_range=bool(lo <= w <= hi)))
         return tuple(sorted(out, key=lambda p: -p.acceleration_g))
+
+    def response_peaks(self) -> tuple[ResponsePeak, ...]:
+        """The forced response in the overall verdict's ranking: per forced harmonic, one
+        :class:`~flexbooster.danger.ResponsePeak` per resonance (the stations whose peak
+        accelerations lie within zeta Omega of each other are one resonance, shown at the
+        largest), with the largest internal load along the vehicle (axial force for k = 0,
+        bending moment for k = 1) whose peak lies within zeta Omega of it."""
+        r = self.response
+        tol = max(float(r.damping_ratio), 1e-3)
+        taken: list[tuple[int, float]] = []
+        out = []
+        for p in self.ranked_peaks():  # the largest acceleration first
+            if any(k == p.k and abs(w - p.Omega) <= tol * p.Omega for k, w in taken):
+                continue
+            taken.append((p.k, p.Omega))
+            disp, _ = self.peak_value(p.k, p.station, "displacement")
+            quantity = "axial_force" if p.k == 0 else "bending_moment"
+            load = None
+            for e in r.envelopes:
+                if e.k != p.k or e.quantity != quantity or not e.peak.size:
+                    continue
+                near = np.abs(e.peak_omega - p.Omega) <= tol * p.Omega
+                if near.any():
+                    i = int(np.argmax(np.where(near, e.peak, -np.inf)))
+                    load = (quantity.replace("_", " "), e.unit, float(e.peak[i]), float(e.x[i]))
+            out.append(ResponsePeak(
+                source="forced response", k=int(p.k), Omega=float(p.Omega),
+                acceleration_g=float(p.acceleration_g), station=p.station,
+                station_m=float(p.station_m), displacement_m=float(disp), modes=f"k = {p.k}",
+                load_quantity=None if load is None else load[0],
+                load_unit=None if load is None else load[1],
+                load=None if load is None else load[2],
+                load_station_m=None if load is None else load[3],
+                in_operating_range=p.in_operating_range))
+        return tuple(out)
 
     def csv_columns(self) -> dict[str, list]:
         """forced-response.csv in long format: one row per harmonic, station and Omega;

@@ -7,6 +7,7 @@ from __future__ import annotations
 import html
 from pathlib import Path
 
+from ..danger import NEGLIGIBLE_AMPLIFICATION, NEGLIGIBLE_GROWTH
 from ..flight_results import EVENT_COLUMNS, MODE_COLUMNS, FlightResults
 from .io import write_csv_atomic
 
@@ -43,7 +44,8 @@ def event_text(e) -> str:
 
 
 def flight_lines(flight: FlightResults) -> list[str]:
-    """The summary's "Flight" lines: the worst moment first, then every event, the notes.
+    """The summary's "Flight" lines: the worst moment first, then every event that counts,
+    how many of negligible growth were dropped, the notes.
 
     Parameters
     ----------
@@ -55,11 +57,16 @@ def flight_lines(flight: FlightResults) -> list[str]:
            f"{flight.mass[0].mass_kg:.4g} -> {flight.mass[-1].mass_kg:.4g} kg"]
     worst = flight.worst
     if worst is None:
-        out.insert(0, "Worst moment: the oscillation band meets no region and no k = 0 "
-                      "resonance during the flight")
+        out.insert(0, "Worst moment: the oscillation band meets no region that counts and no "
+                      "k = 0 resonance during the flight")
     else:
         out.insert(0, "Worst moment: " + event_text(worst))
-        out += [f"{n + 1}. {event_text(e)}" for n, e in enumerate(flight.events)]
+        out += [f"{n + 1}. {event_text(e)}" for n, e in enumerate(flight.counted)]
+    if flight.dropped:
+        n = flight.dropped
+        out.append(f"{n} event{'s' if n > 1 else ''} of negligible growth dropped (growth "
+                   f"rate under {NEGLIGIBLE_GROWTH:g} 1/s or amplification under "
+                   f"{NEGLIGIBLE_AMPLIFICATION:g}; all in {FLIGHT_CSVS[1]})")
     mins = [f"k = {h.k}: {h.min_mac:.2f}" for h in flight.harmonics]
     out.append("smallest MAC of a tracked mode between neighbouring times: " + ", ".join(mins))
     if flight.gaps:

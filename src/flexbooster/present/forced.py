@@ -6,6 +6,7 @@ nothing.
 
 from __future__ import annotations
 
+import io
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -42,7 +43,7 @@ FORCED_HEADER = ("station", "x (m)", "k", "peak acceleration (g)", "per 1 % of F
 
 _TO_HZ = 1.0 / (2.0 * np.pi)
 #: The terminal's columns (80 wide): the report's, with one load column per harmonic.
-_TERMINAL_HEADER = ("station", "x (m)", "k", "peak (g)", "per 1 % (g)", "at (Hz)", "peak load",
+_TERMINAL_HEADER = ("station", "x (m)", "k", "peak (g)", "per 1 %", "at (Hz)", "peak load",
                     "at (Hz)")
 
 
@@ -69,7 +70,8 @@ def forced_basis_text(results: Results) -> str:
 
 def forced_rows(results: Results) -> list[tuple]:
     """One row per forced harmonic and station (:data:`FORCED_HEADER`), aft to forward: the peak
-    acceleration (g), per 1 % of F0 of thrust oscillation ("-" for a spectrum or gamma = 0), its
+    acceleration (g), per 1 % of F0 of thrust oscillation ("-" for a spectrum or gamma = 0,
+    where the report and the summary drop the column), its
     Omega (Hz), the peak axial force (k = 0) and bending moment (k = 1) and their Omega.
 
     Parameters
@@ -130,6 +132,24 @@ def _cell(value: object) -> str:
     return f"{float(value):.4g}"
 
 
+def _forced_table(title: str, header: list[str], cells: list[list[str]]) -> Table:
+    """The terminal's table: numbers and names never folded."""
+    table = Table(title=title, title_justify="left", header_style="bold", box=box.SIMPLE_HEAD,
+                  pad_edge=False, collapse_padding=True)
+    for col in header:
+        table.add_column(col, justify="left" if col == "station" else "right", no_wrap=True)
+    for c in cells:
+        table.add_row(*(escape(v) for v in c))
+    return table
+
+
+def _natural_width(header: list[str], cells: list[list[str]]) -> int:
+    """The widest line of the table (without its title) on an unbounded terminal."""
+    wide = Console(width=100_000, file=io.StringIO(), record=True, color_system=None)
+    wide.print(_forced_table("", header, cells))
+    return max((len(line.rstrip()) for line in wide.export_text().splitlines()), default=0)
+
+
 def print_forced_response(results: Results, console: Console) -> None:
     """Print the section "Forced response to the thrust oscillation" (``flexbooster run``).
 
@@ -146,21 +166,36 @@ def print_forced_response(results: Results, console: Console) -> None:
                       "warnings).")
         return
     r = f.response
-    load = ("the spectrum's lines" if r.combination == "spectrum" else
-            f"gamma = {r.amplitude[0]:g} over the Omega range")
-    table = Table(title=f"Forced response to the thrust oscillation ({load}, zeta = "
-                  f"{r.damping_ratio:g}, misalignment {r.misalignment:g} rad; load: axial "
-                  f"force in N for k = 0, bending moment in N m for k = 1; curves in "
-                  f"{FORCED_CSV})", title_justify="left", header_style="bold",
-                  box=box.SIMPLE_HEAD, pad_edge=False, collapse_padding=True)
-    for col in _TERMINAL_HEADER:  # 80 columns: folded, never cut
-        table.add_column(col, justify="left" if col == "station" else "right",
-                         overflow="fold", no_wrap=col != "station")
-    rows = forced_rows(results)
-    for row in rows:  # the load of the harmonic: axial force (k = 0) or bending moment (k = 1)
+    per = f.per_percent
+    # the "per 1 %" column where it says something: not for a spectrum (its lines have their
+    # own amplitudes) nor at gamma = 1 % (it repeats the peak; the title says so)
+    show_per = per is not None and abs(per - 1.0) > 1e-12
+    load = ("the spectrum's lines as given" if r.combination == "spectrum" else
+            f"gamma = {r.amplitude[0]:g} over the Omega range"
+            + ("" if show_per or per is None else ": the peaks are per 1 % of F0"))
+    cells = []
+    for row in forced_rows(results):  # the load of the harmonic: axial force or bending moment
         load_cells = row[6:8] if row[2] == 0 else row[8:10]
-        table.add_row(*(escape(_cell(v)) for v in (*row[:6], *load_cells)))
-    console.print(table if rows else FORCED_ZERO)
+        cells.append([_cell(v) for v in (*row[:4], *(row[4:5] if show_per else ()), row[5],
+                                         *load_cells)])
+    header = [h for h in _TERMINAL_HEADER if show_per or h != "per 1 %"]
+    title = (f"Forced response to the thrust oscillation ({load}, zeta = {r.damping_ratio:g}, "
+             f"misalignment {r.misalignment:g} rad; accelerations in g, per 1 % of F0 where "
+             f"given; load: axial force in N for k = 0, bending "
+             f"moment in N m for k = 1; curves in {FORCED_CSV})")
+    table = _forced_table(title, header, cells)
+    # the station names fit beside the numbers (never folded); names too long for the
+    # terminal are shortened with "~", the full names being in the CSV
+    excess = _natural_width(header, cells) - (console.width - 1)
+    longest = max((len(c[0]) for c in cells), default=0)
+    if cells and excess > 0:
+        room = max(8, longest - excess)
+        for c in cells:
+            c[0] = c[0] if len(c[0]) <= room else c[0][:room - 1] + "~"
+        table = _forced_table(title, header, cells)
+    console.print(table if cells else FORCED_ZERO)
+    if cells and excess > 0:
+        console.print(f"(station names shortened with ~; full names in {FORCED_CSV})")
     console.print(escape(f"Basis: {forced_basis_text(results)}"), highlight=False)
     for line in forced_worst_lines(results):
         console.print(escape(line), highlight=False)

@@ -57,10 +57,12 @@ from .rows import (
     danger_rows,
     forced_axial_rows,
     frequency_rows,
+    headline_lines,
     input_rows,
     mass_rows,
     memo_root_rows,
     not_applicable_text,
+    ranking,
     severity_caption,
     slosh_rows,
     vehicle_region_rows,
@@ -600,14 +602,25 @@ def _forced_response(results: Results, svgs: Mapping[str, str] | None) -> str:
            f"{_e(_fmt(r.misalignment))} rad, lateral (k = 1) with the gimbal gain "
            f"{_e(_fmt(r.gimbal_gain))}; modal damping {_e(_fmt(r.damping_ratio))}. Peaks are "
            f"amplitudes over the range; every curve is in {FORCED_CSV}.</p>",
-           _table(FORCED_HEADER, forced_rows(results),
-                  (False, True, True, True, True, True, True, True, True, True))
-           if forced_rows(results) else f"<p>{_e(FORCED_ZERO)}</p>",
+           _forced_table(results) if forced_rows(results) else f"<p>{_e(FORCED_ZERO)}</p>",
            f"<p>Basis: {_e(forced_basis_text(results))}.</p>"]
     lines = forced_worst_lines(results)
     if lines:
         out.append("<ul>" + "".join(f"<li>{_e(x)}</li>" for x in lines) + "</ul>")
     return "".join(out) + "".join(_figure(name, svgs) for name in FORCED_FIGURES)
+
+
+def _forced_table(results: Results) -> str:
+    """The peaks per station; without "per 1 % of F0" where it is not defined (a spectrum,
+    whose lines have their own amplitudes)."""
+    keep = [i for i in range(len(FORCED_HEADER))
+            if i != 4 or results.forced_response.per_percent is not None]
+    note = "" if len(keep) == len(FORCED_HEADER) else (
+        '<p class="note">A spectrum: the peaks are the response to its lines as given (no '
+        '"per 1 % of F0": each line has its own amplitude).</p>')
+    return note + _table(tuple(FORCED_HEADER[i] for i in keep),
+                         [tuple(row[i] for i in keep) for row in forced_rows(results)],
+                         tuple(i > 0 for i in keep))
 
 
 def _verification() -> str:
@@ -645,13 +658,17 @@ def _first_screen(results: Results, svgs: Mapping[str, str] | None) -> str:
                   ["bad" if v.startswith("unstable") else "" for _, v in
                    verdict_rows(results)])]
     rows = danger_rows(results, FIRST_SCREEN_BANDS, modes=FIRST_SCREEN_MODES)
-    n_all = 0 if results.danger is None else len(results.danger.bands)
+    n_all = len(ranking(results))
     if rows:
-        out.append(f"<h3>Most dangerous thrust-frequency bands ({len(rows)} of {n_all}; all "
+        out.append(f"<h3>Most dangerous thrust frequencies ({len(rows)} of {n_all}; all "
                    "in results.json <code>danger</code>)</h3>")
         out.append(_table(DANGER_HEADER, rows, (True, True, True, True, False, False, False)))
     elif results.danger is not None:
         out.append("<p>No unstable band in any mechanism computed.</p>")
+    heads = headline_lines(results)
+    if heads:  # the forced response's peaks and the flight's worst moment
+        out.append('<ul class="headline">' + "".join(f"<li>{_e(line.strip())}</li>"
+                                                      for line in heads) + "</ul>")
     if results.warnings:
         out.append(f'<p><strong>Warnings ({len(results.warnings)})</strong> (details in '
                    '<a href="#warnings">Warnings</a>):</p><ul class="warnings">')

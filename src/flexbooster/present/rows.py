@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 
-from ..danger import edges_text
+from ..danger import FIRST_SCREEN_WORDS, ResponsePeak, edges_text
 from ..dynamics import STANDARD_GRAVITY
 from ..results import Results
 
@@ -41,6 +41,8 @@ __all__ = [
     "range_text",
     "verdict_rows",
     "danger_rows",
+    "headline_lines",
+    "ranking",
     "DANGER_HEADER",
     "BAND_COLUMNS",
     "band_rows",
@@ -302,7 +304,51 @@ def verdict_rows(results: Results) -> list[tuple[str, str]]:
     """
     if results.danger is None:
         return [("all mechanisms", "not computed")]
-    return [(words, verdict) for _, words, verdict in results.danger.verdicts]
+    return [(FIRST_SCREEN_WORDS.get(key, words), verdict)
+            for key, words, verdict in results.danger.verdicts]
+
+
+def headline_lines(results: Results) -> list[str]:
+    """The first screen's lines of the forced response (the largest acceleration, the largest
+    loads) and of the flight (its worst moment that counts), when the case has them.
+
+    Parameters
+    ----------
+    results : Results
+        The analysis.
+    """
+    from .forced import forced_worst_lines
+
+    out = []
+    f = results.forced_response
+    peaks = () if f is None else f.ranked_peaks()
+    if peaks:
+        p = peaks[0]
+        out.append(f"Forced response: largest acceleration {p.acceleration_g:.4g} g at "
+                   f"{p.station} ({p.station_m:.4g} m, k = {p.k}), Omega = "
+                   f"{p.Omega / (2.0 * math.pi):.4g} Hz")
+        out += ["  " + line for line in forced_worst_lines(results)]
+    if results.flight is not None:
+        from .flight import flight_lines
+
+        lines = flight_lines(results.flight)
+        out.append("Flight: " + lines[0])
+        out += ["  " + line for line in lines if "negligible growth dropped" in line]
+    return out
+
+
+def ranking(results: Results) -> tuple:
+    """The bands and the vehicle's bounded responses in one ranking
+    (:attr:`flexbooster.danger.DangerSummary.ranking`; the bands alone where it is empty).
+
+    Parameters
+    ----------
+    results : Results
+        The analysis.
+    """
+    if results.danger is None:
+        return ()
+    return results.danger.ranking or results.danger.bands
 
 
 def short_mode_text(text: str, keep: int = FIRST_SCREEN_MODES) -> str:
@@ -324,7 +370,8 @@ def short_mode_text(text: str, keep: int = FIRST_SCREEN_MODES) -> str:
 
 def danger_rows(results: Results, limit: int = FIRST_SCREEN_BANDS,
                 modes: int | None = None) -> list[tuple[str, ...]]:
-    """The most dangerous bands, ranked, as text cells (columns :data:`DANGER_HEADER`).
+    """The most dangerous bands and bounded responses, ranked, as text cells (columns
+    :data:`DANGER_HEADER`; a response: its acceleration in g, station and load).
 
     Parameters
     ----------
@@ -338,12 +385,21 @@ def danger_rows(results: Results, limit: int = FIRST_SCREEN_BANDS,
     if results.danger is None:
         return []
     out = []
-    for n, b in enumerate(results.danger.bands[:limit]):
+    for n, b in enumerate(ranking(results)[:limit]):
+        if isinstance(b, ResponsePeak):  # a bounded forced response of the vehicle
+            also = "".join(f"; also {a}" for a in b.also)
+            load = "" if b.load is None else (f", {b.load_quantity} {b.load:.3g} {b.load_unit}"
+                                               f" at {b.load_station_m:.4g} m")
+            out.append((str(n + 1), f"{b.Omega:.6g}", f"{b.hz:.6g}", f"{b.acceleration_g:.3g} g",
+                        "yes" if b.in_operating_range else "no",
+                        f"{b.station} ({b.station_m:.4g} m), k = {b.k}",
+                        f"{b.source} of the vehicle{load}{also}"))
+            continue
         lo_hz, hi_hz = b.hz
         if b.growth_rate is not None:
             level = f"{b.growth_rate:.3g}"
-        elif b.band.steady_amplitude is not None:  # damped: the steady response
-            level = f"{1e3 * b.band.steady_amplitude:.3g} mm"
+        elif b.band.steady_acceleration is not None:  # damped: the steady response, in g
+            level = f"{b.band.steady_acceleration / STANDARD_GRAVITY:.3g} g"
         elif b.severity is not None:
             level = f"sev. {b.severity:.3g}"
         else:

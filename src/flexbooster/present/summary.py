@@ -20,11 +20,13 @@ from .rows import (
     band_rows,
     danger_rows,
     frequency_rows,
+    headline_lines,
     input_rows,
     mass_rows,
     mass_title,
     not_applicable_text,
     range_text,
+    ranking,
     severity_caption,
     short_mode_text,
     verdict_rows,
@@ -74,14 +76,14 @@ def print_first_screen(results: Results, console: Console, *, full: bool = True)
                          else escape(verdict))
     console.print(verdicts)
     rows = danger_rows(results, TERMINAL_BANDS)
-    n_all = 0 if results.danger is None else len(results.danger.bands)
+    n_all = len(ranking(results))
     if rows:
-        console.print(f"[bold]Most dangerous thrust-frequency bands[/bold] ({len(rows)} of "
+        console.print(f"[bold]Most dangerous thrust frequencies[/bold] ({len(rows)} of "
                       f"{n_all}; all in results.json)")
         console.print(_band_block(rows, console.width), highlight=False, markup=False)
     elif n_all == 0 and results.danger is not None:
         console.print("No unstable band in any mechanism computed.")
-    for line in _headline_lines(results):
+    for line in headline_lines(results):
         console.print(escape(textwrap.fill(line, width=max(40, console.width - 1),
                                            subsequent_indent="    ")), highlight=False)
     if results.warnings:
@@ -90,27 +92,6 @@ def print_first_screen(results: Results, console: Console, *, full: bool = True)
                       "[/bold yellow]")
         for w in results.warnings:
             console.print(f"  [yellow]warning[/yellow] {escape(f'[{w.code}] {w.field}')}")
-
-
-def _headline_lines(results: Results) -> list[str]:
-    """The first screen's lines of the forced response (the largest acceleration, the largest
-    loads) and of the flight (its worst moment), when the case has them."""
-    from .forced import forced_worst_lines
-
-    out = []
-    f = results.forced_response
-    peaks = () if f is None else f.ranked_peaks()
-    if peaks:
-        p = peaks[0]
-        out.append(f"Forced response: largest acceleration {p.acceleration_g:.4g} g at "
-                   f"{p.station} ({p.station_m:.4g} m, k = {p.k}), Omega = "
-                   f"{p.Omega / (2.0 * np.pi):.4g} Hz")
-        out += ["  " + line for line in forced_worst_lines(results)]
-    if results.flight is not None:
-        from .flight import flight_lines
-
-        out.append("Flight: " + flight_lines(results.flight)[0])
-    return out
 
 
 def _table(title: str, rows: list[tuple[str, str, str]]) -> Table:
