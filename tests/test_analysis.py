@@ -121,13 +121,15 @@ def _tolerance(key: str) -> tuple[float, float] | None:
     eigen-solvers, ~1e-11), a band's width (omega_hi - omega_lo of two edges compared) and its
     e-folding time, growth exponent and amplification (functions of its growth rate); the
     forced response's half-basis change (a difference of two equal peaks: an error estimate)
+    and a critical damping ratio to 1e-5 (a root to 1e-6 of itself in each unit system);
     and the Omega of a peak (the peak values are compared; at the edges the axial force is
     gamma F0 or 0 at every Omega, so where it peaks is round-off); its loads to
     FORCED_LOAD_ATOL.
     """
-    if key.endswith("hill_monodromy_difference") or (".bands[" in key and key.endswith(".width")):
+    band = ".bands[" in key or ".ranking[" in key  # a band, or one in the one ranking
+    if key.endswith("hill_monodromy_difference") or (band and key.endswith(".width")):
         return None
-    if ".bands[" in key and key.endswith((".e_folding_s", ".growth_exponent", ".amplification")):
+    if band and key.endswith((".e_folding_s", ".growth_exponent", ".amplification")):
         return None  # 1/growth, growth T, exp(growth T): the growth itself is compared below
     if key.startswith(".forced_response."):
         if key.endswith("max_change") or ".Omega" in key:
@@ -135,8 +137,11 @@ def _tolerance(key: str) -> tuple[float, float] | None:
         if key.startswith(".forced_response.envelopes") or key.endswith(("_N", "_Nm")):
             return 1e-8, FORCED_LOAD_ATOL
     rel, tol = (1e-8, 1e-12) if key.startswith(SOLVED) else (1e-12, 1e-300)
-    if ".bands[" in key and key.endswith(("growth_rate_max", ".growth_rate")):
+    if band and key.endswith(("growth_rate_max", ".growth_rate")):
         tol = 1e-7
+    if key.endswith(".critical_damping_ratio"):
+        # a root in zeta to rtol 1e-6 of itself (floquet.critical_damping), in each system
+        rel = 1e-5
     return rel, tol
 
 

@@ -39,12 +39,13 @@ from flexbooster.analysis import (
     analyze_vehicle_regions,
     memo_roots_in_regions,
 )
-from flexbooster.bands import Band, BandMode, SearchGap
+from flexbooster.bands import NEGLIGIBLE_GROWTH, Band, BandMode, SearchGap
 from flexbooster.case import load_case, memo_case_text
 from flexbooster.cli import main
 from flexbooster.dynamics import (
     RegionCurve,
     VehicleRegions,
+    region_critical_damping,
     vehicle_regions,
 )
 from flexbooster.errors import CaseError
@@ -354,12 +355,14 @@ def test_stage_warns_instead_of_failing(monkeypatch):
 
 def test_pipeline_stores_the_regions_of_the_case(results):
     """The stored regions are those of vehicle_regions called directly with the case's
-    settings (exact), with curves (the chart data) for the regions of the chart's gamma."""
+    settings, with their critical damping ratios (exact), with curves (the chart data) for the
+    regions of the chart's gamma."""
     case = results.case
     vr = results.vehicle_regions
-    direct = vehicle_regions(vehicle_from_case(case), F0=case.F0, gamma=0.3, omega_min=5.0,
-                             omega_max=2000.0, k_min=1, k_max=3, n_modes=3, damping_ratio=0.0,
-                             gimbal_gain=case.thrust.K)
+    direct = region_critical_damping(vehicle_regions(
+        vehicle_from_case(case), F0=case.F0, gamma=0.3, omega_min=5.0, omega_max=2000.0,
+        k_min=1, k_max=3, n_modes=3, damping_ratio=0.0, gimbal_gain=case.thrust.K),
+        growth_floor=NEGLIGIBLE_GROWTH)
     assert vr.regions == direct.regions and len(vr.regions) > 0
     assert [h.k for h in vr.harmonics] == [1, 2, 3]
     top = max(VEHICLE_CHART_GAMMA_MAX, case.thrust.gamma)  # the chart's top (the case's 0.3)

@@ -23,6 +23,9 @@ CLOSED_GROWTH = 1e-10
 #: Brent maximum: outside the shrinking region the growth is flat, and Brent started there
 #: would stay on the plateau.
 _SAMPLES = 7
+#: Rounds of the root search in zeta, and the first round's bracket relative to its upper
+#: end when the lower one is 0 (an undamped start).
+_ROUNDS, _FIRST_ROUND = 4, 1e-3
 #: Omega tolerance of each maximum, relative to the region's width.
 _OMEGA_XTOL = 1e-4
 
@@ -107,6 +110,13 @@ def critical_damping(M, C1, A, B, *, omega_lo: float, omega_hi: float, zeta: flo
     def root_f(z, idx):
         return np.array([g(float(z[0]))])
 
-    root = illinois_root(root_f, np.array([z_in]), np.array([g_in]), np.array([z_out]),
-                         np.array([g_out]), np.array([rtol * z_out]))
-    return float(root[0])
+    # rounds of Illinois, each to rtol of the bracket's open (lower) end, so that the root is
+    # found to rtol of itself even far below the first bracket (zeta_cr ~ 1e-6 in [0, 1e-3]):
+    # at most _ROUNDS, each ending with a narrower bracket and a larger open end
+    a, fa, b, fb = (np.array([v]) for v in (z_in, g_in, z_out, g_out))
+    for _ in range(_ROUNDS):
+        if b[0] - a[0] <= rtol * a[0]:
+            break
+        xtol = rtol * a[0] if a[0] > 0.0 else _FIRST_ROUND * b[0]
+        a, fa, b, fb = illinois_root(root_f, a, fa, b, fb, np.array([xtol]), bracket=True)
+    return float(0.5 * (a[0] + b[0]))
