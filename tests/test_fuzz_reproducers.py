@@ -632,3 +632,33 @@ def test_fuzz_reproducer_lone_candidate_window_is_finite():
         res = analyze(flexbooster.load_case(data), figures=False, vehicle=True)
     json.loads(dumps_finite(res.to_dict()))
     assert res.vehicle_regions is not None
+
+
+#: Found by `make fuzz`: a rigid-pitch tongue whose tip (2 omega_pitch / r) lies in the Omega
+#: range but which a large gamma (0.71) shifts wholly below it: its edges clipped to the range
+#: gave Omega_lo > Omega_hi ("ValueError: Omega_lo, Omega_hi = 0.3084, 0.3027"), exit 1.
+_FUZZ_SHIFTED_TONGUE = {
+    "name": "fuzz",
+    "booster": {"cylinder1": {"radius": 2.154434690031884, "half_length": 3.184128587375645},
+                "cylinder2": {"radius": 25.508972534089388, "half_length": 1.0},
+                "thickness": 0.013516269587302877, "E": 703930702949.5588,
+                "nu": 0.23762646793115252, "rho": 40.13568663372682},
+    "thrust": {"gamma": 0.7142610705767835, "K": 0.3333333333333333,
+               "omega_min": 0.3084133748876701, "omega_max": 0.6644564737278048,
+               "n_omega": 3, "F0": 10278.892732082046},
+    "truncation": {"M1": 2, "N1": 1, "M2": 4, "N2": 4, "N": 3, "S": 3, "R": 1},
+    "damping": {"beam_modal_ratio": 0.0, "pitch_ratio": 0.0},
+}
+
+
+def test_fuzz_reproducer_tongue_shifted_out_of_the_range():
+    """A tongue outside the searched range is not a band; every band found lies inside the
+    range (Band's own invariant Omega_lo <= Omega_hi held by construction)."""
+    from flexbooster._threads import blas_threads
+
+    model = model_from_case(flexbooster.load_case(_FUZZ_SHIFTED_TONGUE))
+    with blas_threads(1):
+        bands = ba.pipeline_bands(model)
+    lo, hi = model.omega_range
+    for b in bands:
+        assert lo <= b.Omega_lo <= b.Omega_hi <= hi and math.isfinite(b.growth_rate_max)

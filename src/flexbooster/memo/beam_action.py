@@ -1036,6 +1036,8 @@ def _tongue_search(system: BeamActionSystem, gamma: float, lo: float, hi: float,
             if r > 2:
                 break  # higher tongues are narrower still
             continue
+        if e[1] * w1 < lo or e[0] * w1 > hi:
+            continue  # tip in the range, the tongue itself outside (shifted at a large gamma)
         g_max, x_max = _growth_max(A, C, -gamma * system.B, *e, S=tongue_hill_harmonics(r))
         g_cr = 0.0
         if C is not None:  # bisection on existence (Bolotin 1964, sec. 6), K of the edges
