@@ -171,3 +171,33 @@ def test_beam_action_simple_band_against_the_first_order_damping_shift():
     # a band holding the undamped rigid pitch: no elastic damping closes it (None)
     with_pitch = [b for b in done if any(m.index == 0 for m in b.modes)]
     assert with_pitch and all(b.critical_damping_ratio is None for b in with_pitch)
+
+
+def test_certified_margin_is_a_lower_bound_of_the_closed_form_threshold():
+    # one loaded shear-diaphragm mode with modal damping zeta: its principal region opens at
+    # gamma_cr = 4 zeta w^2 / (P0 s) (Bolotin 1964, sec. 6, first order; sd_loaded_mode closed
+    # form, checked to 1e-5 in test_vehicle_regions); the stability certificate's margin is a
+    # lower bound of gamma_cr / gamma, and the danger verdict states it
+    from flexbooster.danger import danger_summary
+
+    zeta, gamma = 0.01, 0.002
+    P0, w_l, slope = sd_loaded_mode(4)
+    g_cr = 4.0 * zeta * w_l**2 / (P0 * slope)
+    found = vehicle_regions(sd_vehicle(), gamma=gamma, F0=P0, omega_min=1.5 * w_l,
+                            omega_max=2.5 * w_l, k_min=4, k_max=4, n_modes=1,
+                            damping_ratio=zeta, supported_forward_end=True,
+                            elements_per_segment=SD_MESH, max_order=1)
+    assert found.regions == () and gamma < g_cr
+    margin = found.certified_margin
+    assert margin is not None and 1.0 < margin <= (g_cr / gamma) * (1.0 + zeta)
+    summary = danger_summary(operating_range=(1.5 * w_l, 2.5 * w_l), bands={"vehicle": ()},
+                             gamma=gamma, modal_ratio=zeta, certified={"vehicle": margin})
+    (words,) = [v for k, _, v in summary.verdicts if k == "vehicle"]
+    assert words.startswith("stable")
+    assert f"margin on gamma at least {margin:.3g} at every Omega" in words
+    # undamped: nothing is certified
+    undamped = vehicle_regions(sd_vehicle(), gamma=gamma, F0=P0, omega_min=1.5 * w_l,
+                               omega_max=2.5 * w_l, k_min=4, k_max=4, n_modes=1,
+                               damping_ratio=0.0, supported_forward_end=True,
+                               elements_per_segment=SD_MESH, max_order=1)
+    assert undamped.certified_margin is None

@@ -302,7 +302,7 @@ def _analyze_segments(case: Case, step: Callable[[str], None], *, figures: bool,
         bands={"pitch": pitch.bands, **({} if found is None else {"vehicle": found.regions})},
         gaps=list(pitch.gaps) + ([] if found is None else list(found.gaps)),
         gamma=t.gamma, duration=t.duration, modal_ratio=case.vehicle_damping_ratio,
-        pitch_ratio=case.damping.pitch_ratio,
+        pitch_ratio=case.damping.pitch_ratio, certified=_certified(found),
         **_bounded_and_flight(found, forced, flight, (t.omega_min, t.omega_max)))
     memo = {"beam_action", "resonance"}  # the memo's mechanisms: not applicable, never stable
     verdicts = tuple((key, words, "not applicable: the memo's method models the two bare "
@@ -352,7 +352,14 @@ def _danger(model: BoosterModel, pitch, action, regions, severity, *, case: Case
                           gamma=model.gamma, duration=case.thrust.duration,
                           # the least damped elastic modes (a deprecated key may set one)
                           modal_ratio=min(case.damping.beam_ratio, case.vehicle_damping_ratio),
-                          pitch_ratio=case.damping.pitch_ratio, **more)
+                          pitch_ratio=case.damping.pitch_ratio,
+                          certified=_certified(regions), **more)
+
+
+def _certified(regions: VehicleRegions | None) -> dict[str, float]:
+    """{"vehicle": the regions' certified margin} where there is one."""
+    bound = None if regions is None else regions.certified_margin
+    return {} if bound is None else {"vehicle": bound}
 
 
 def _stability_table(model: BoosterModel, shell, params

@@ -599,7 +599,8 @@ def _growth_words(band: Band, duration: float | None) -> str:
 
 def mechanism_verdicts(ranked: Sequence[RankedBand], *, computed: Mapping[str, bool],
                        gaps: Sequence[SearchGap] = (), duration: float | None = None,
-                       modal_ratio: float = 0.0) -> tuple[tuple[str, str, str], ...]:
+                       modal_ratio: float = 0.0, certified: Mapping[str, float] | None = None
+                       ) -> tuple[tuple[str, str, str], ...]:
     """(key, words, verdict) per mechanism of :data:`flexbooster.bands.MECHANISMS`: "not
     computed", "stable in the operating range", "not fully searched: ...", "unstable: N ..." or
     "marginal: N ..." (with "; not fully searched: ..." when a gap remains); regions of
@@ -618,7 +619,11 @@ def mechanism_verdicts(ranked: Sequence[RankedBand], *, computed: Mapping[str, b
         Duration of the excitation (s), or None.
     modal_ratio : float
         Modal damping ratio of the elastic modes.
+    certified : mapping of str to float, optional
+        Per mechanism, the factor on gamma below which a certificate proves it free of
+        regions at every Omega (a lower bound of every margin), said on a stable verdict.
     """
+    certified = {} if certified is None else certified
     out = []
     for key, words in MECHANISMS:
         if not computed.get(key, False):
@@ -633,8 +638,13 @@ def mechanism_verdicts(ranked: Sequence[RankedBand], *, computed: Mapping[str, b
             f" ({len(slow)} region{'s' if len(slow) > 1 else ''} of negligible growth, "
             f"largest {max(b.growth_rate for b in slow):.3g} 1/s)")
         if not mine:
+            bound = certified.get(key)
+            margin = "" if left or bound is None else (
+                "; margin on gamma at least " + (
+                    f"{bound:.3g}" if math.isfinite(bound) else "infinite")
+                + " at every Omega (a proven bound)")
             out.append((key, words, (gaps_text(left) if left else
-                                     "stable in the operating range") + slow_text))
+                                     "stable in the operating range") + margin + slow_text))
             continue
         resonance = key == "resonance"
         noun = ("resonance" if resonance else "instability region") + \
@@ -966,7 +976,8 @@ def danger_summary(*, operating_range: tuple[float, float], bands: Mapping[str, 
                    gaps: Sequence[SearchGap] = (), gamma: float = 0.0,
                    duration: float | None = None, modal_ratio: float = 0.0,
                    pitch_ratio: float = 0.0, responses: Sequence[ResponsePeak] = (),
-                   flight: FlightVerdict | None = None) -> DangerSummary:
+                   flight: FlightVerdict | None = None,
+                   certified: Mapping[str, float] | None = None) -> DangerSummary:
     """Verdicts, the overall verdict and the ranked bands (each with :func:`band_measures`)
     of every mechanism computed, with the vehicle's bounded responses and the flight.
 
@@ -988,6 +999,8 @@ def danger_summary(*, operating_range: tuple[float, float], bands: Mapping[str, 
         The vehicle's bounded forced responses (:func:`merge_responses`).
     flight : FlightVerdict or None
         The flight's part (:func:`flight_verdict`).
+    certified : mapping of str to float, optional
+        Certified margins per mechanism (:func:`mechanism_verdicts`).
     """
     for key in bands:
         if key not in dict(MECHANISMS):
@@ -1000,7 +1013,7 @@ def danger_summary(*, operating_range: tuple[float, float], bands: Mapping[str, 
     computed = {key: True for key in bands}
     lo, hi = _operating(operating_range)
     verdicts = mechanism_verdicts(ranked, computed=computed, gaps=gaps, duration=duration,
-                                  modal_ratio=modal_ratio)
+                                  modal_ratio=modal_ratio, certified=certified)
     responses = tuple(sorted(responses, key=lambda r: (not r.in_operating_range,
                                                        -r.acceleration_g, r.Omega)))
     verdict = overall_verdict(ranked, verdicts=verdicts, gaps=gaps, duration=duration,

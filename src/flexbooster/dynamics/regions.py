@@ -119,6 +119,18 @@ class VehicleRegions:
     gaps: tuple = ()
     chart_gaps: tuple = ()
 
+    @property
+    def certified_margin(self) -> float | None:
+        """The smallest factor on gamma up to which every harmonic is certified free of
+        regions at every Omega (the stability certificate's 1 / rho, Bolotin 1964, sec. 6: a
+        lower bound of every region's margin critical gamma / gamma); None without damping,
+        without pulsation or where a harmonic is not certified at gamma. inf when no harmonic
+        is excited."""
+        if self.damping_ratio <= 0.0 or self.gamma <= 0.0 or not self.certificates or \
+                not all(c.certified for c in self.certificates):
+            return None
+        return float(min(c.amplitude_factor for c in self.certificates))
+
     def harmonic(self, k: int) -> HarmonicSystem:
         """The system of harmonic k (one of those computed)."""
         for h in self.harmonics:

@@ -112,12 +112,18 @@ def _g(x: object) -> str:
     return f"{x:.6g}"
 
 
+#: Narrowest column of words beside the ranked bands' numbers; narrower, the words go below.
+BAND_TEXT_MIN = 48
+
+
 def _band_block(rows: list[tuple[str, ...]], width: int) -> str:
     """Fixed-width text of the ranked bands: numbers in columns never cut, words wrapped."""
     heads = ("#", "Omega rad/s", "Omega Hz", "growth/resp.", "in range")
     widths = [max(len(r[i]) for r in [*rows, heads]) for i in range(5)]
     lead = sum(widths) + 2 * len(widths)
-    below = width - lead < 30  # a narrow terminal: the words on their own line(s)
+    # the words on their own line(s) where beside the numbers they would wrap into a narrow
+    # column (under BAND_TEXT_MIN characters)
+    below = width - lead < BAND_TEXT_MIN
     indent = widths[0] + 2 if below else lead
     text_width = max(20, width - indent - 1)
 
