@@ -40,7 +40,8 @@ def _skip_reason() -> str | None:
     return None
 
 
-pytestmark = pytest.mark.skipif(_skip_reason() is not None, reason=str(_skip_reason()))
+pytestmark = [pytest.mark.skipif(_skip_reason() is not None, reason=str(_skip_reason())),
+              pytest.mark.slow]  # Chromium's start and the memo case's report: `make test`
 
 
 @pytest.fixture(scope="module")

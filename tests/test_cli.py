@@ -196,6 +196,7 @@ def test_format_json_is_results_json(tmp_path, capsys, small_memo_case_file):
     assert "wrote" in err and "wrote" not in out
 
 
+@pytest.mark.slow
 def test_quiet_prints_nothing(tmp_path, capsys, small_memo_case_file):
     out = tmp_path / "out"
     assert run_cli(["run", str(small_memo_case_file), "-q", "--no-figures", "-o", str(out)]) == 0
@@ -220,6 +221,7 @@ def test_help_has_examples_and_exit_codes(capsys, argv):
     assert "Exit codes" in out and "130" in out
 
 
+@pytest.mark.slow
 def test_progress_reports_every_stage_in_order(small_memo_case_file):
     from flexbooster.analysis import FORCED_STAGE, STAGES, VEHICLE_REGIONS_STAGE, analyze
     from flexbooster.case import load_case
@@ -457,6 +459,7 @@ def test_the_command_runs_one_blas_thread_unless_the_user_chose(user, expected):
         assert threads == expected[0]
 
 
+@pytest.mark.slow
 def test_short_summary_by_default(tmp_path, capsys, small_memo_case_file, monkeypatch):
     """flexbooster run (issue 33): the overall verdict on line 1, the damping stated, no input
     table (those with --full), one line for the files and "open OUT/report.html" last; piped
@@ -505,6 +508,7 @@ def test_stability_names_the_files_it_writes(tmp_path, capsys, small_memo_case_f
     assert named <= {p.name for p in out.iterdir()}, named
 
 
+@pytest.mark.slow
 def test_simulate_lists_the_10_largest_in_10_lines(tmp_path, capsys, small_memo_case_file):
     """Source: the header "the N largest" (issue 36: 13 lines under "the 10 largest"): exactly
     min(10, relevant) indented rows follow it."""

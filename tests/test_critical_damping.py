@@ -145,6 +145,7 @@ def test_a_fixed_damping_part_adds_to_the_scaled_one():
     assert shifted == pytest.approx(plain - 0.01, rel=1e-5)
 
 
+@pytest.mark.slow
 def test_beam_action_simple_band_against_the_first_order_damping_shift():
     # a uniform free-free beam under thrust (Beal 1965), undamped: in a narrow simple region of
     # order j of bending mode m the growth at modal damping zeta is sigma - zeta omega_m to

@@ -453,6 +453,7 @@ def test_fuzz_reproducer_vehicle_n_modes_above_the_axial_modes():
     assert "vehicle-modes-clipped" in {w.code for w in res.warnings}
 
 
+@pytest.mark.slow
 def test_fuzz_reproducer_vehicle_regions_of_a_flat_plate():
     """Found by the fuzz (run 6, the merged vehicle stages): a [vehicle] whose first segment
     is a flat annular plate (a cone of length 0) ended the run with the shell model's
@@ -610,6 +611,7 @@ def test_fuzz_reproducer_free_free_heavy_damping_steps_within_the_estimate():
                                                                           estimated)
 
 
+@pytest.mark.slow
 def test_fuzz_reproducer_lone_candidate_window_is_finite():
     """Found by the fuzz (robustness-2 run, 2 of 300 valid cases): the memo vehicle of a
     booster with a 21.9 m forward cylinder, K = 0.4, pitch damping 0.5, its regions searched:

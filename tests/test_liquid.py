@@ -405,6 +405,7 @@ def test_slosh_cone_cylinder_against_refined_mesh(radii, fill):
 
 
 @pytest.mark.parametrize("fill", [0.55, 0.85])
+@pytest.mark.slow
 def test_wet_frequencies_converge_with_the_liquid_mesh(fill):
     """Free-free cylinder-cone-cylinder, a tank with its surface in the cylinder or in the cone
     (the wall moves there: the singular corner wall / free surface): the lowest 6 elastic wet

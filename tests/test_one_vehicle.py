@@ -291,6 +291,7 @@ def test_memo_commands_on_segments_name_booster(tmp_path, capsys, command):
     assert "\n" not in err
 
 
+@pytest.mark.slow
 def test_run_a_segment_case_writes_its_files(tmp_path, capsys):
     """`flexbooster run` on a [vehicle]-segments case: exit 0; results.json, the vehicle CSVs
     and the report; no memo shell CSV."""

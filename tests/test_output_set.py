@@ -192,6 +192,7 @@ def test_late_signal_never_ends_the_process_by_the_signal(when, code):
         assert proc.stderr.endswith("flexbooster: error: interrupted\n")
 
 
+@pytest.mark.slow
 def test_interrupt_at_each_file_of_the_set_keeps_the_previous_set(tmp_path, memo_case_dict,
                                                                   capsys, monkeypatch):
     """Ctrl-C while the n-th file of the new set is being written (a KeyboardInterrupt from

@@ -178,6 +178,7 @@ def test_tongues_below_the_range_are_not_solved(monkeypatch):
     assert pitch.pitch_bands(1.2, 0.05, omega_min=5.0, omega_max=2000.0) == ()
 
 
+@pytest.mark.slow
 def test_tongues_past_the_order_limit_are_a_gap_not_a_stable_verdict():
     # omega_psi = 1 rad/s, gamma = 0.9 over Omega in [0.02, 0.03] rad/s: the tongues with
     # tips 2 / r in the range have r = 67..100; every tongue r <= PITCH_MAX_TONGUE = 60 lies

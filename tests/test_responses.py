@@ -221,6 +221,7 @@ def _closed(g, x0, nu, f, tau):
 
 @pytest.mark.parametrize("d", [1, 2])
 @pytest.mark.parametrize("kind", ["0k", "j0", "jk"])
+@pytest.mark.slow
 def test_closed_form_matches_integration(strong, kind, d):
     """U_0k (6.2-3), U_j0/W_j0 (6.2-8/9), U/V/W_jk (6.2-20) with initial displacements,
     Omega = 300 rad/s (off resonance), against scipy DOP853 (rtol 1e-10): 1e-6 relative."""

@@ -552,6 +552,7 @@ def test_interrupted_zarr_sweep_resumes_without_recomputing(tmp_path, capsys):
             np.testing.assert_allclose(resumed[name].values, whole[name].values, rtol=RTOL)
 
 
+@pytest.mark.slow
 def test_interrupted_netcdf_sweep_is_saved_and_resumed(tmp_path):
     base = tiny_case()
     axes = {"thrust.gamma": [0.0, 0.1, 0.2, 0.3]}
@@ -607,6 +608,7 @@ def test_package_is_callable_as_the_sweep_function():
     assert out.stdout.split() == ["sweep", "_CallableModule", "True", "True"]
 
 
+@pytest.mark.slow
 def test_figure_and_page(tmp_path):
     html5lib = pytest.importorskip("html5lib")
     import matplotlib

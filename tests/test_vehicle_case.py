@@ -454,6 +454,7 @@ def test_report_embeds_the_vehicle_figures(vehicle_case_file):
     assert sections.count("vehicle-modes") == 1 and len(sections) == len(SECTIONS) + 1
 
 
+@pytest.mark.slow
 def test_memo_case_results_unchanged():
     """Without [vehicle]: no vehicle stage, no vehicle_modes key, no case.vehicle key (the
     keys of the memo case's results.json as before issue 14)."""
