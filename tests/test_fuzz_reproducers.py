@@ -664,3 +664,15 @@ def test_fuzz_reproducer_tongue_shifted_out_of_the_range():
     lo, hi = model.omega_range
     for b in bands:
         assert lo <= b.Omega_lo <= b.Omega_hi <= hi and math.isfinite(b.growth_rate_max)
+
+
+def test_fuzz_reproducer_subnormal_gamma_has_no_per_percent_loads(memo_case_dict):
+    """Found by `make fuzz`: thrust.gamma = 5e-324 (subnormal): 1 % of F0 over it overflows, so
+    results.json held acceleration_g_per_percent = inf. The loads per 1 % are then not a number
+    to report (None, "-"); every value of forced_response is finite (json with allow_nan off)."""
+    from flexbooster.analysis import analyze_forced_response
+
+    memo_case_dict["thrust"]["gamma"] = 5e-324
+    loads = analyze_forced_response(flexbooster.load_case(memo_case_dict))
+    assert loads.per_percent is None
+    json.dumps(loads.to_dict(), allow_nan=False)  # raises on inf or nan

@@ -451,7 +451,9 @@ class ForcedLoads:
         r = self.response
         if r.combination != "sweep" or not r.amplitude.size or r.amplitude[0] <= 0.0:
             return None
-        return 0.01 / float(r.amplitude[0])
+        factor = 0.01 / float(r.amplitude[0])
+        # a gamma so small (subnormal) that 1 % of F0 over it overflows: the loads are round-off
+        return factor if np.isfinite(factor) else None
 
     def peak_value(self, k: int, station: str, quantity: str) -> tuple[float, float]:
         """(peak, Omega in rad/s) of a quantity at a station; (0, nan) where k is not computed."""
@@ -549,8 +551,9 @@ class ForcedLoads:
                     row[c] = p.value / f
                     row[f"Omega_{q}"] = p.omega
                     row[f"Omega_{q}_hz"] = p.omega / (2.0 * np.pi)
-                if scale is not None:
-                    row["acceleration_g_per_percent"] = row["acceleration_g"] * scale
+                if scale is not None:  # None where the product is not a number (round-off)
+                    value = row["acceleration_g"] * scale
+                    row["acceleration_g_per_percent"] = value if np.isfinite(value) else None
                 peaks.append(row)
         return {
             "combination": r.combination, "F0": float(r.F0),
