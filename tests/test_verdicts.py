@@ -465,3 +465,17 @@ def test_flight_events_enter_the_verdict_and_negligible_ones_are_dropped():
         u.verdict.reason
     d = json.loads(json.dumps(u.to_dict()))["verdict"]["flight"]
     assert (d["status"], d["events_counted"], d["events_dropped"]) == ("unstable", 2, 1)
+
+
+def test_pitch_critical_damping_only_for_the_fastest_tongues():
+    # at a large gamma a hundred tongues can count, each a root search of about a second: the
+    # critical damping ratio is computed for the CRITICAL_DAMPING_COUNT fastest-growing only
+    # (a deterministic bound), the others keep None; ten tongues r = 1..10, growth falling with r
+    from flexbooster.bands import CRITICAL_DAMPING_COUNT
+
+    tongues = [dataclasses.replace(_band(2.0 / r, 2.0 / r + 0.01, 0.1 / r, mechanism="pitch"),
+                                   kind="simple", order=r) for r in range(1, 11)]
+    s = danger_summary(operating_range=(0.1, 5.0), bands={"pitch": tongues}, gamma=0.3)
+    got = {b.band.order: b.band.critical_damping_ratio for b in s.bands}
+    assert sorted(r for r, z in got.items() if z is not None) == \
+        list(range(1, CRITICAL_DAMPING_COUNT + 1))

@@ -11,11 +11,14 @@ from dataclasses import dataclass
 from typing import Any
 
 __all__ = ["Band", "BandMode", "KINDS", "MECHANISMS", "NEGLIGIBLE_GROWTH", "SearchGap",
-           "gaps_text"]
+           "gaps_text", "CRITICAL_DAMPING_COUNT"]
 
 #: Growth rate below which a band is negligible (1/s): an e-folding time above 1e6 s (11.6
 #: days), longer than any excitation of a launch vehicle (docs/theory/verdicts.md).
 NEGLIGIBLE_GROWTH = 1e-6
+#: The fastest-growing bands of each mechanism whose critical damping ratio is computed (each
+#: is a root search over growth maxima, about a second): a deterministic bound on that work.
+CRITICAL_DAMPING_COUNT = 8
 
 
 @dataclass(frozen=True)

@@ -20,8 +20,8 @@ from typing import Any
 
 import numpy as np
 
+from .bands import CRITICAL_DAMPING_COUNT
 from .checks import count, nonnegative, positive
-from .dynamics.regions import CRITICAL_DAMPING_REGIONS
 from .errors import AnalysisWarning, CaseError
 from .floquet import MATHIEU_SCALE_MAX, search_work
 from .memo.beam_action import (
@@ -29,7 +29,6 @@ from .memo.beam_action import (
     BAND_MAX_ORDER,
     BAND_OMEGA_BAR_MIN,
     BAND_RTOL,
-    CRITICAL_DAMPING_BANDS,
     MONODROMY_MAX_STEPS,
     TONGUE_FLOOR_OMEGA_BAR,
     TONGUE_GAMMA_RTOL,
@@ -86,6 +85,9 @@ _C_TONGUE = 0.07  # pitch bands, per tongue in the range
 # = 0.78 for r = 6..60, 0.83 s at 0.4, x 2.5 with pitch damping, 12 s)
 _C_TONGUE_R = (4.6e-4, 0.78, 110.0, 2.5)  # per r^1.5 at gamma_ref; r cut / gamma; damped x
 _C_TONGUE_LEVEL = 0.04  # pitch chart, per tongue and gamma level
+# critical damping of one pitch tongue r (floquet.tongue_critical_damping), c0 + c1 r s: 0.61 s
+# at r = 5 to 2.46 s at r = 33, gamma = 0.92 (one core, measured on a fuzz case)
+_C_TONGUE_CRITICAL = (0.28, 0.066)
 _C_STABILITY = 1.5e-6  # per (excitation curve x shell mode)
 _C_SHELL = 1e-4  # per shell mode
 _HILL_POINTS = 3  # beam_action_analysis n_hill
@@ -215,6 +217,13 @@ def estimate_cost(model: BoosterModel, *, beam_action: bool = True, stability: b
     t_bands = _tongues(model.omega_psi, lo, hi, 1.0)
     parts["pitch bands"] = _C_TONGUE * t_bands + _tongue_orders(model, lo, hi)
     drivers["pitch bands"] = ("thrust.omega_min", "thrust.F0", "thrust.K")
+    if 0.0 < model.gamma < 1.0 and t_bands > 0:  # the fastest (lowest) tongues' critical
+        # damping, CRITICAL_DAMPING_COUNT at most, each costing more with its order r
+        r_lo = max(1, math.ceil(2.0 * model.omega_psi / hi))
+        orders = np.arange(r_lo, r_lo + min(CRITICAL_DAMPING_COUNT, t_bands))
+        c0, c1 = _C_TONGUE_CRITICAL
+        parts["pitch critical damping"] = float(np.sum(c0 + c1 * orders))
+        drivers["pitch critical damping"] = ("thrust.gamma", "thrust.omega_min")
     modes = (n.M1 + 1) * (n.N1 + 1) + (n.M2 + 1) * (n.N2 + 1)
     parts["shell frequencies"] = _C_SHELL * modes
     drivers["shell frequencies"] = ("truncation.M1", "truncation.N1", "truncation.M2",
@@ -246,8 +255,8 @@ def estimate_cost(model: BoosterModel, *, beam_action: bool = True, stability: b
             drivers["beam-action bands"] = ("truncation.N", "thrust.omega_min",
                                             "damping.modal_ratio", "thrust.F0")
             if model.gamma > 0.0:  # the critical damping ratios of the bands that count:
-                # all CRITICAL_DAMPING_BANDS undamped, one where the damping closes most
-                counted = 1 if model.beam_damping_ratio > 0.0 else CRITICAL_DAMPING_BANDS
+                # all CRITICAL_DAMPING_COUNT undamped, one where the damping closes most
+                counted = 1 if model.beam_damping_ratio > 0.0 else CRITICAL_DAMPING_COUNT
                 parts["beam-action critical damping"] = counted * _C_CRITICAL_BAND * max(
                     1.0, (nn / _CRITICAL_BAND_N) ** 3)
                 drivers["beam-action critical damping"] = ("damping.modal_ratio",
@@ -713,7 +722,7 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
                                                 "thrust.K", "vehicle.n_modes")
         if searched or BENDING_SEARCH_PART in parts:  # regions may open: their critical
             # damping ratios (dynamics.region_critical_damping), at most a fixed number
-            parts["vehicle critical damping"] = CRITICAL_DAMPING_REGIONS * _C_CRITICAL_REGION * max(
+            parts["vehicle critical damping"] = CRITICAL_DAMPING_COUNT * _C_CRITICAL_REGION * max(
                 1.0, (max(n_modes, 3) / _CRITICAL_REGION_N) ** 3)
             drivers["vehicle critical damping"] = ("vehicle.n_modes", "damping.modal_ratio")
         if damped:  # the certificates: map, search, chart (none undamped: no certificate)

@@ -13,7 +13,14 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from .bands import MECHANISMS, NEGLIGIBLE_GROWTH, Band, SearchGap, gaps_text
+from .bands import (
+    CRITICAL_DAMPING_COUNT,
+    MECHANISMS,
+    NEGLIGIBLE_GROWTH,
+    Band,
+    SearchGap,
+    gaps_text,
+)
 from .dynamics import STANDARD_GRAVITY
 from .flight import FlightEvent
 from .floquet import tongue_critical_damping
@@ -49,7 +56,7 @@ FIRST_SCREEN_WORDS = {"pitch": "rigid-body pitch", "beam_action": "beam bending 
 
 
 def band_measures(band: Band, *, gamma: float, duration: float | None,
-                  modal_ratio: float = 0.0) -> Band:
+                  modal_ratio: float = 0.0, critical_damping: bool = True) -> Band:
     """The band with its margin critical_gamma / gamma (where gamma > 0 and the band is
     damped), its growth exponent sigma T and amplification exp(sigma T) over the duration T
     (None without one) and, for a rigid-pitch tongue that is not negligible
@@ -71,6 +78,9 @@ def band_measures(band: Band, *, gamma: float, duration: float | None,
         Duration of the excitation T (s), > 0, or None.
     modal_ratio : float
         Modal damping ratio zeta of the elastic modes, 0 <= zeta < 1.
+    critical_damping : bool
+        Compute a rigid-pitch tongue's critical damping ratio (False: left None;
+        :func:`danger_summary` asks it for the CRITICAL_DAMPING_COUNT fastest only).
     """
     if band.mechanism == "resonance":
         w = band.modes[0].omega if band.modes else None
@@ -86,8 +96,8 @@ def band_measures(band: Band, *, gamma: float, duration: float | None,
         if exponent <= AMPLIFICATION_EXPONENT_MAX:
             amplification = math.exp(exponent)
     zeta_cr = band.critical_damping_ratio
-    if zeta_cr is None and band.mechanism == "pitch" and 0.0 < gamma < 1.0 and \
-            band_status(band, duration=duration) != "negligible":
+    if zeta_cr is None and critical_damping and band.mechanism == "pitch" and \
+            0.0 < gamma < 1.0 and band_status(band, duration=duration) != "negligible":
         # Mathieu tongue r: the smallest pitch damping closing it (Bolotin 1964, sec. 6);
         # only where the band counts (each costs a few Hill maximisations)
         zeta_cr = tongue_critical_damping(band.order, gamma)
@@ -1005,8 +1015,14 @@ def danger_summary(*, operating_range: tuple[float, float], bands: Mapping[str, 
     for key in bands:
         if key not in dict(MECHANISMS):
             raise ValueError(f"bands: unknown mechanism {key!r}")
+    # the pitch tongues' critical damping for the fastest CRITICAL_DAMPING_COUNT only (at a
+    # large gamma a hundred tongues count, each a root search of about a second)
+    tongues = sorted((b for b in bands.get("pitch", ()) if b.critical_damping_ratio is None),
+                     key=lambda b: -b.growth_rate_max)[:CRITICAL_DAMPING_COUNT]
+    chosen = {id(b) for b in tongues}
     ranked = danger_bands([band_measures(b, gamma=gamma, duration=duration,
-                                         modal_ratio=modal_ratio)
+                                         modal_ratio=modal_ratio,
+                                         critical_damping=id(b) in chosen)
                            for found in bands.values() for b in found],
                           operating_range=operating_range, duration=duration,
                           modal_ratio=modal_ratio)

@@ -17,6 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import floquet
+from ..bands import CRITICAL_DAMPING_COUNT
 from ..checks import count, nonnegative, positive
 from ..shell_of_revolution import DEFAULT_ORDER, Vehicle
 from ..shell_of_revolution.prestress import load_path
@@ -33,7 +34,7 @@ from .harmonic import (
 )
 
 __all__ = ["RegionCurve", "VehicleRegions", "harmonic_system", "vehicle_regions",
-           "region_curves", "region_critical_damping", "CRITICAL_DAMPING_REGIONS"]
+           "region_curves", "region_critical_damping"]
 
 #: Largest harmonic accepted (as :mod:`flexbooster.shell_of_revolution`).
 K_MAX = 200
@@ -375,14 +376,8 @@ def vehicle_regions(
     return found
 
 
-#: Regions of a map whose critical damping ratio :func:`region_critical_damping` computes at
-#: most (the fastest-growing first): a deterministic bound on its work (each costs some 200
-#: monodromies of its harmonic).
-CRITICAL_DAMPING_REGIONS = 8
-
-
 def region_critical_damping(found: VehicleRegions, *, growth_floor: float = 0.0,
-                            limit: int = CRITICAL_DAMPING_REGIONS) -> VehicleRegions:
+                            limit: int = CRITICAL_DAMPING_COUNT) -> VehicleRegions:
     """The map with the critical damping ratio (the smallest modal damping ratio that closes
     the region at the map's gamma, Bolotin 1964, sec. 6) of its ``limit`` fastest-growing
     regions that grow faster than ``growth_floor``, are not clipped by the Omega range and hold

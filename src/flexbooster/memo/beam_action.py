@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..bands import NEGLIGIBLE_GROWTH, Band, BandMode, SearchGap, gaps_text
+from ..bands import CRITICAL_DAMPING_COUNT, NEGLIGIBLE_GROWTH, Band, BandMode, SearchGap, gaps_text
 from ..checks import count, nonnegative, positive
 from ..floquet import (
     LinearPeriodicSystem,
@@ -49,7 +49,7 @@ __all__ = ["PeriodMapOverflowError", "BeamActionSystem", "beam_action_system", "
            "tongue_hill_harmonics", "pitch_mode", "pitch_guide", "band_modes", "modal_damping",
            "beam_action_bands", "pitch_tongue_bands", "pipeline_bands", "BeamActionResult",
            "beam_action_analysis", "StabilityChart", "stability_chart", "band_critical_damping",
-           "CRITICAL_DAMPING_BANDS"]
+           ]
 
 _STABLE_TOL = 1e-6  # |Im alpha| below which an exponent counts as real (see docs)
 
@@ -615,15 +615,10 @@ def beam_action_bands(system: BeamActionSystem, gamma: float, *, omega_min: floa
     return tuple(out)
 
 
-#: Bands of a search whose critical damping ratio :func:`band_critical_damping` computes at
-#: most (the fastest-growing first): a deterministic bound on its work.
-CRITICAL_DAMPING_BANDS = 8
-
-
 def band_critical_damping(system: BeamActionSystem, bands, *, gamma: float,
                           beam_ratio: float = 0.0, pitch_ratio: float = 0.0,
                           growth_floor: float = NEGLIGIBLE_GROWTH,
-                          limit: int = CRITICAL_DAMPING_BANDS) -> tuple[Band, ...]:
+                          limit: int = CRITICAL_DAMPING_COUNT) -> tuple[Band, ...]:
     """The bands with the critical damping ratio of the elastic modes (the smallest
     ``beam_ratio`` closing the band at gamma, the rigid pitch keeping ``pitch_ratio``; Bolotin
     1964, sec. 6) on the ``limit`` fastest-growing ones that grow faster than ``growth_floor``,
