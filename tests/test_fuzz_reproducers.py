@@ -676,3 +676,69 @@ def test_fuzz_reproducer_subnormal_gamma_has_no_per_percent_loads(memo_case_dict
     loads = analyze_forced_response(flexbooster.load_case(memo_case_dict))
     assert loads.per_percent is None
     json.dumps(loads.to_dict(), allow_nan=False)  # raises on inf or nan
+
+
+#: Found by `make fuzz`: a [[vehicle.segments]] case whose rigid pitch (gamma 0.49, K 3.9)
+#: holds many tongues: 11.6 s CPU against an estimate of 0.89 s, which counted the vehicle's
+#: modes only, not the pitch that the one-vehicle path also runs.
+_FUZZ_SEGMENTS_PITCH = {"name": "fuzz",
+                        "max_seconds": 60.0,
+                        "thrust": {"gamma": 0.4866961994049531,
+                                   "K": 3.915238191262471,
+                                   "omega_min": 3.9810717055349722,
+                                   "omega_max": 1012.7253625928213,
+                                   "n_omega": 8,
+                                   "F0": 66135297108.52766},
+                        "truncation": {"M1": 3, "N1": 2, "M2": 4, "N2": 2, "N": 4, "S": 0, "R": 2},
+                        "damping": {"beam_modal_ratio": 0.2, "pitch_ratio": 0.0},
+                        "vehicle": {"k_max": 3,
+                                    "n_modes": 278,
+                                    "damping_ratio": 0.9,
+                                    "theory": "donnell",
+                                    "aft_end": "hinged",
+                                    "segments": [{"kind": "cylinder",
+                                                  "radius": 7.5360197756437834,
+                                                  "length": 78.53137801712144,
+                                                  "thickness": 1.9179746996249005,
+                                                  "nonstructural_mass": 1.0,
+                                                  "rings": {"spacing": 0.7607523500186075,
+                                                            "area": 2.182573126885898e-05,
+                                                            "inertia": 0.0,
+                                                            "eccentricity": 0.0}},
+                                                 {"kind": "cone",
+                                                  "radius_aft": 1.0,
+                                                  "radius_fwd": 2.356083705956424,
+                                                  "length": 0.0,
+                                                  "thickness": 0.25450765214599674,
+                                                  "junction": "rigid-bulkhead",
+                                                  "nonstructural_mass": 1.0,
+                                                  "rings": {"spacing": 1.0,
+                                                            "area": 0.009999769744141627,
+                                                            "inertia": 1e-06,
+                                                            "eccentricity": 0.02}},
+                                                 {"kind": "cylinder",
+                                                  "radius": 0.37323384335738247,
+                                                  "length": 43.42078283843124,
+                                                  "thickness": 0.09499086917431414,
+                                                  "junction": "rigid-bulkhead",
+                                                  "rings": {"spacing": 1.0,
+                                                            "area": 0.0021735591911175786,
+                                                            "inertia": 1e-06,
+                                                            "eccentricity": 0.0}}],
+                                    "E": 2474021305.047452,
+                                    "nu": 0.14434383944333784,
+                                    "rho": 79.43282347242814},
+                        "severity": {"psi0": -0.08565177630969738,
+                                     "beam_amplitude": 1e-06,
+                                     "threshold": 0.9027216283862418,
+                                     "resolution": 0.11790482749492885}}
+
+
+def test_fuzz_reproducer_segments_estimate_counts_the_pitch():
+    """The one-vehicle path's estimate holds the pitch's parts (the same model as the memo
+    path, cost.estimate_pitch_cost): a budget below it refuses the case naming them."""
+    data = copy.deepcopy(_FUZZ_SEGMENTS_PITCH)
+    data["max_seconds"] = 1.0
+    with pytest.raises(CaseError) as info:
+        analyze(flexbooster.load_case(data), figures=False, vehicle=False)
+    assert info.value.field == "max_seconds" and "pitch bands" in str(info.value)

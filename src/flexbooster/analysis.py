@@ -269,17 +269,19 @@ def _analyze_segments(case: Case, step: Callable[[str], None], *, figures: bool,
         step(STAGES[0])
         structure = vehicle_from_case(case)
         mass = mass_properties(structure)
-        vehicle_cost = cost.estimate_vehicle_cost(case, regions=regions, figures=figures,
-                                                  forced=regions)
-        est = cost.check_case_cost(None, case.max_seconds,
-                                   vehicle=cost.with_flight(case, vehicle_cost))  # [flight]
-        if on_estimate is not None:
-            on_estimate(est, case.max_seconds)
-        step(STAGES[1])
         t, Omega = case.thrust, case.omega_grid()
         omega_psi = pitch_frequency(case.F0, mass.cm_m, t.K, mass.I_cm_kg_m2)  # eq. (4.2-1)
         cost.check_pitch_range(F0=case.F0, omega_psi=omega_psi, omega_min=float(Omega.min()),
                                gamma=t.gamma)
+        vehicle_cost = cost.estimate_vehicle_cost(case, regions=regions, figures=figures,
+                                                  forced=regions)
+        pitch_cost = cost.estimate_pitch_cost(omega_psi=omega_psi, Omega=Omega, gamma=t.gamma,
+                                              pitch_ratio=case.damping.pitch_ratio)
+        est = cost.check_case_cost(None, case.max_seconds, vehicle=cost.combined(
+            pitch_cost, cost.with_flight(case, vehicle_cost)))  # [flight]
+        if on_estimate is not None:
+            on_estimate(est, case.max_seconds)
+        step(STAGES[1])
         pitch = pitch_analysis(Omega, omega_psi, t.gamma, damping_ratio=case.damping.pitch_ratio)
         extra = _mathieu_warnings(Omega, omega_psi, pitch.a, pitch.q)
         step(VEHICLE_STAGE)

@@ -57,6 +57,8 @@ __all__ = [
     "physical_warnings",
     "capped_steps_warning",
     "estimate_vehicle_cost",
+    "estimate_pitch_cost",
+    "combined",
     "region_modes",
     "search_seconds",
     "bending_search_steps",
@@ -172,21 +174,64 @@ def _tongues(omega_psi: float, lo: float, hi: float, widen: float) -> int:
     return max(0, r_hi - r_lo + 1)
 
 
-def _tongue_orders(model: BoosterModel, lo: float, hi: float) -> float:
+def _tongue_orders(omega_psi: float, gamma: float, pitch_ratio: float, lo: float,
+                   hi: float) -> float:
     """Order-dependent part of the pitch-band search (s): sum of r^1.5 over the tongues in the
     range wider than round-off (r <= 110 gamma), scaled by gamma^1.5.
     """
     c, g_ref, r_per_gamma, damped = _C_TONGUE_R
-    if model.omega_psi <= 0.0 or model.gamma <= 0.0:
+    if omega_psi <= 0.0 or gamma <= 0.0:
         return 0.0
-    r_lo = max(1, math.ceil(2.0 * model.omega_psi / hi))
-    r_hi = min(PITCH_MAX_TONGUE, math.floor(2.0 * model.omega_psi / lo),
-               math.floor(r_per_gamma * model.gamma))
+    r_lo = max(1, math.ceil(2.0 * omega_psi / hi))
+    r_hi = min(PITCH_MAX_TONGUE, math.floor(2.0 * omega_psi / lo),
+               math.floor(r_per_gamma * gamma))
     if r_hi < r_lo:
         return 0.0
     orders = np.arange(r_lo, r_hi + 1, dtype=float)
-    factor = damped if model.pitch_damping_ratio > 0.0 else 1.0
-    return float(c * (model.gamma / g_ref) ** 1.5 * factor * np.sum(orders**1.5))
+    factor = damped if pitch_ratio > 0.0 else 1.0
+    return float(c * (gamma / g_ref) ** 1.5 * factor * np.sum(orders**1.5))
+
+
+def estimate_pitch_cost(*, omega_psi: float, Omega, gamma: float,
+                        pitch_ratio: float = 0.0) -> CostEstimate:
+    """The predicted run time of the rigid-body pitch (the Magnus pass over the Omega grid, the
+    tongues' bands and the critical damping of the fastest of them), for the memo's model and
+    the one-vehicle case alike.
+
+    Parameters
+    ----------
+    omega_psi : float
+        Rigid-body pitch frequency (rad/s), >= 0.
+    Omega : array_like
+        The Omega grid (rad/s), > 0.
+    gamma : float
+        Pulsation amplitude.
+    pitch_ratio : float
+        Damping ratio of the pitch.
+    """
+    Omega = np.asarray(Omega, dtype=float)
+    G = Omega.size
+    lo, hi = float(Omega.min()), float(Omega.max())
+    parts: dict[str, float] = {}
+    drivers: dict[str, tuple[str, ...]] = {}
+    a_max = 4.0 * omega_psi**2 / lo**2  # eq. (4.2-4)
+    scale = math.sqrt(a_max * (1.0 + gamma))
+    steps = 24.0 + 16.0 * min(scale, MATHIEU_SCALE_MAX)
+    c0, c1 = _C_PITCH_STEP
+    parts["pitch (Magnus)"] = 3.0 * steps * (c0 + c1 * G)
+    drivers["pitch (Magnus)"] = ("thrust.omega_min", "thrust.F0", "thrust.K", "thrust.n_omega")
+    t_bands = _tongues(omega_psi, lo, hi, 1.0)
+    parts["pitch bands"] = _C_TONGUE * t_bands + _tongue_orders(omega_psi, gamma, pitch_ratio,
+                                                                lo, hi)
+    drivers["pitch bands"] = ("thrust.omega_min", "thrust.F0", "thrust.K")
+    if 0.0 < gamma < 1.0 and t_bands > 0:  # the fastest (lowest) tongues' critical
+        # damping, CRITICAL_DAMPING_COUNT at most, each costing more with its order r
+        r_lo = max(1, math.ceil(2.0 * omega_psi / hi))
+        orders = np.arange(r_lo, r_lo + min(CRITICAL_DAMPING_COUNT, t_bands))
+        c0, c1 = _C_TONGUE_CRITICAL
+        parts["pitch critical damping"] = float(np.sum(c0 + c1 * orders))
+        drivers["pitch critical damping"] = ("thrust.gamma", "thrust.omega_min")
+    return CostEstimate(seconds=float(sum(parts.values())), parts=parts, drivers=drivers)
 
 
 def estimate_cost(model: BoosterModel, *, beam_action: bool = True, stability: bool = True,
@@ -208,22 +253,10 @@ def estimate_cost(model: BoosterModel, *, beam_action: bool = True, stability: b
     lo, hi = float(Omega.min()), float(Omega.max())
     parts: dict[str, float] = {}
     drivers: dict[str, tuple[str, ...]] = {}
-    a_max = 4.0 * model.omega_psi**2 / lo**2  # eq. (4.2-4)
-    scale = math.sqrt(a_max * (1.0 + model.gamma))
-    steps = 24.0 + 16.0 * min(scale, MATHIEU_SCALE_MAX)
-    c0, c1 = _C_PITCH_STEP
-    parts["pitch (Magnus)"] = 3.0 * steps * (c0 + c1 * G)
-    drivers["pitch (Magnus)"] = ("thrust.omega_min", "thrust.F0", "thrust.K", "thrust.n_omega")
-    t_bands = _tongues(model.omega_psi, lo, hi, 1.0)
-    parts["pitch bands"] = _C_TONGUE * t_bands + _tongue_orders(model, lo, hi)
-    drivers["pitch bands"] = ("thrust.omega_min", "thrust.F0", "thrust.K")
-    if 0.0 < model.gamma < 1.0 and t_bands > 0:  # the fastest (lowest) tongues' critical
-        # damping, CRITICAL_DAMPING_COUNT at most, each costing more with its order r
-        r_lo = max(1, math.ceil(2.0 * model.omega_psi / hi))
-        orders = np.arange(r_lo, r_lo + min(CRITICAL_DAMPING_COUNT, t_bands))
-        c0, c1 = _C_TONGUE_CRITICAL
-        parts["pitch critical damping"] = float(np.sum(c0 + c1 * orders))
-        drivers["pitch critical damping"] = ("thrust.gamma", "thrust.omega_min")
+    pitch = estimate_pitch_cost(omega_psi=model.omega_psi, Omega=Omega, gamma=model.gamma,
+                                pitch_ratio=model.pitch_damping_ratio)
+    parts.update(pitch.parts)
+    drivers.update(pitch.drivers)
     modes = (n.M1 + 1) * (n.N1 + 1) + (n.M2 + 1) * (n.N2 + 1)
     parts["shell frequencies"] = _C_SHELL * modes
     drivers["shell frequencies"] = ("truncation.M1", "truncation.N1", "truncation.M2",
@@ -899,6 +932,25 @@ def flight_time_seconds(case: Any) -> float:
                                        boundaries=False)
     return float(modes + table.k_max * _C_HARMONIC_BUILD * dofs * max(1.0, n_modes / 20.0)
                  + search)
+
+
+def combined(*estimates: CostEstimate) -> CostEstimate:
+    """The estimates of stages that run one after the other, as one (parts by name).
+
+    Parameters
+    ----------
+    *estimates : CostEstimate
+        Estimates with distinct part names.
+    """
+    parts, drivers = {}, {}
+    for e in estimates:
+        parts.update(e.parts)
+        drivers.update(e.drivers)
+    return CostEstimate(seconds=float(sum(e.seconds for e in estimates)), parts=parts,
+                        drivers=drivers,
+                        capped_points=sum(e.capped_points for e in estimates),
+                        capped_omega_max=max((e.capped_omega_max for e in estimates),
+                                             default=0.0))
 
 
 def with_flight(case: Any, vehicle: CostEstimate) -> CostEstimate:
