@@ -742,3 +742,29 @@ def test_fuzz_reproducer_segments_estimate_counts_the_pitch():
     with pytest.raises(CaseError) as info:
         analyze(flexbooster.load_case(data), figures=False, vehicle=False)
     assert info.value.field == "max_seconds" and "pitch bands" in str(info.value)
+
+
+#: Found by `make fuzz`: with pitch damping (0.02) at gamma 0.86 the damped band of a tongue
+#: (inside the undamped one, which reaches the range) lies wholly below omega_min = 1 rad/s:
+#: clipped to the range it gave Omega_lo > Omega_hi, an internal error.
+_FUZZ_DAMPED_TONGUE_BELOW = {
+    "name": "fuzz",
+    "booster": {"cylinder1": {"radius": 7.378425923265487, "half_length": 12.3033683514754},
+                "cylinder2": {"radius": 1.0, "half_length": 3.618897247246941},
+                "thickness": 0.00125299336292783, "E": 575488633602.873,
+                "nu": 0.3323752114868459, "rho": 112.82574728628786},
+    "thrust": {"gamma": 0.8570945715477428, "K": 4.2601450669665955, "omega_min": 1.0,
+               "omega_max": 2.154434690031884, "n_omega": 6, "F0": 1107.4161690871151},
+    "truncation": {"M1": 2, "N1": 1, "M2": 2, "N2": 4, "N": 1, "S": 3, "R": 2},
+    "damping": {"beam_modal_ratio": 0.01, "pitch_ratio": 0.02},
+}
+
+
+def test_fuzz_reproducer_damped_pitch_band_below_the_range():
+    """A damped pitch band outside the range is not a band; every band lies inside it."""
+    model = model_from_case(flexbooster.load_case(_FUZZ_DAMPED_TONGUE_BELOW))
+    found = pitch.pitch_analysis(model.Omega, model.omega_psi, model.gamma,
+                                 damping_ratio=model.pitch_damping_ratio)
+    lo, hi = model.omega_range
+    for b in found.bands:
+        assert lo <= b.Omega_lo <= b.Omega_hi <= hi and math.isfinite(b.growth_rate_max)

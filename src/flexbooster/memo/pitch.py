@@ -378,6 +378,8 @@ def _pitch_search(omega_psi: float, gamma: float, omega_min: float, omega_max: f
             continue
         x_lo, x_hi, x_m, f_m = band
         lo, hi = omega(x_hi), omega(x_lo)  # larger x is smaller Omega
+        if hi < omega_min or lo > omega_max:
+            continue  # the damped band (inside the undamped tongue) lies outside the range
         clipped = lo < omega_min or hi > omega_max
         lo, hi = max(lo, omega_min), min(hi, omega_max)
         om_m = omega(x_m)
