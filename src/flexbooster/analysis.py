@@ -28,6 +28,7 @@ from .danger import (
     merge_responses,
 )
 from .dynamics import (
+    IllConditionedError,
     ThrustSpectrum,
     UndampedResonanceError,
     VehicleRegions,
@@ -829,6 +830,13 @@ def analyze_forced_response(case: Case) -> ForcedLoads:
         except BucklingError as exc:
             raise CaseError("thrust.F0", case.F0, "the steady thrust buckles the vehicle "
                             f"({exc}): no forced response") from None
+        except IllConditionedError as exc:
+            field, value = (("booster", "the two cylinders") if case.vehicle is None
+                            or case.vehicle.segments is None else
+                            ("vehicle.segments", f"{len(case.vehicle.segments)} segments"))
+            raise CaseError(field, value, f"{exc}: the geometry and material are too extreme "
+                            "for the forced response (its residual modes); none "
+                            "computed") from None
         except UndampedResonanceError as exc:
             deprecated = case.vehicle is not None and case.vehicle.damping_ratio is not None
             field = ("damping.pitch_ratio" if exc.parameter == "pitch_damping_ratio"

@@ -21,6 +21,7 @@ from .forced import (
     UndampedResonanceError,
     forced_response,
 )
+from .forced_model import IllConditionedError
 from .harmonic import HarmonicSystem
 from .regions import (
     RegionCurve,
@@ -32,6 +33,7 @@ from .regions import (
 )
 
 __all__ = [
+    "IllConditionedError",
     "STANDARD_GRAVITY",
     "AxialResonance",
     "BendingSystem",

@@ -17,6 +17,7 @@ eq. 2.2-2.
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass, field, replace
 
 import numpy as np
@@ -37,7 +38,7 @@ from ..shell_of_revolution.elements import reference_element
 from ..shell_of_revolution.wetted_wall import tank_added_mass
 
 __all__ = ["ROWS", "FullModel", "ModalModel", "cut_vehicle", "full_model", "mesh_nodes",
-           "modal_model"]
+           "modal_model", "IllConditionedError"]
 
 #: Default basis: every mode below MODE_CUTOFF times the highest Omega (at least MIN_MODES).
 MODE_CUTOFF, MIN_MODES = 4.0, 4
@@ -371,6 +372,11 @@ def _basis(K, M, n_modes, omega_max):
     return w2, V * scale[:, None], n_rigid
 
 
+class IllConditionedError(ValueError):
+    """The static correction's bordered system is singular to working precision: its
+    residual-mode loads would be round-off."""
+
+
 def _condense(KL, M, Phi, F, static: bool):
     """(Psi, G_c F, A, f) of the static correction (static=False: Phi, 0, Phi^T K_L Phi, Phi^T F).
     """
@@ -381,7 +387,13 @@ def _condense(KL, M, Phi, F, static: bool):
     s = np.max(np.abs(KL)) / np.max(np.abs(MPhi))  # rows of comparable size
     bordered = np.block([[KL, s * MPhi], [s * MPhi.T, np.zeros((m, m))]])
     rhs = np.vstack([np.column_stack([F, KL @ Phi]), np.zeros((m, m + 1))])
-    sol = sla.solve(bordered, rhs, check_finite=False)[:n]  # Craig & Kurdila: inertia relief
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", sla.LinAlgWarning)
+        try:  # Craig & Kurdila: inertia relief
+            sol = sla.solve(bordered, rhs, check_finite=False)[:n]
+        except sla.LinAlgWarning as exc:
+            raise IllConditionedError("the static correction is singular to working "
+                                      f"precision ({exc})") from None
     xr, Psi = sol[:, 0], Phi - sol[:, 1:]
     return Psi, xr, Phi.T @ KL @ Psi, Phi.T @ (F - KL @ xr)
 
