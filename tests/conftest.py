@@ -67,7 +67,8 @@ def small_memo_case_file(memo_case_dict, tmp_path):
 
 
 def dump_toml(data: dict, prefix: str = "") -> str:
-    """A minimal TOML writer for test cases: scalars first, then sub-tables."""
+    """A minimal TOML writer for test cases: scalars, lists and inline tables (a table inside
+    a list, e.g. ``[[flight.points]]`` rows) first, then sub-tables."""
     import json
     import math
 
@@ -82,6 +83,8 @@ def dump_toml(data: dict, prefix: str = "") -> str:
             return json.dumps(value)
         if isinstance(value, list):
             return "[" + ", ".join(scalar(v) for v in value) + "]"
+        if isinstance(value, dict):
+            return "{" + ", ".join(f"{k} = {scalar(v)}" for k, v in value.items()) + "}"
         raise TypeError(type(value))
 
     lines = [f"{k} = {scalar(v)}" for k, v in data.items() if not isinstance(v, dict)]

@@ -17,6 +17,7 @@ import json
 import numpy as np
 import pytest
 
+from conftest import dump_toml
 from flexbooster.analysis import analyze
 from flexbooster.case import load_case
 from flexbooster.cli import main
@@ -42,21 +43,6 @@ CASE = {
 }
 
 
-def _toml(data: dict, prefix: str = "") -> str:
-    """A minimal TOML writer: scalars, lists and inline tables, then sub-tables."""
-    def value(v) -> str:
-        if isinstance(v, dict):
-            return "{" + ", ".join(f"{k} = {value(x)}" for k, x in v.items()) + "}"
-        if isinstance(v, list):
-            return "[" + ", ".join(value(x) for x in v) + "]"
-        return json.dumps(v)
-
-    lines = [f"{k} = {value(v)}" for k, v in data.items() if not isinstance(v, dict)]
-    for k, v in data.items():
-        if isinstance(v, dict):
-            name = f"{prefix}.{k}" if prefix else k
-            lines += [f"[{name}]", _toml(v, name)]
-    return "\n".join(lines)
 
 
 @pytest.fixture(scope="module")
@@ -218,7 +204,7 @@ def test_bad_flight_field_is_one_line_naming_it(change, field, rule, tmp_path, c
         load_case(data)
     assert info.value.field == field and rule in info.value.rule
     path = tmp_path / "bad.toml"
-    path.write_text(_toml(data))
+    path.write_text(dump_toml(data))
     with pytest.raises(SystemExit) as code:
         main(["run", str(path), "-o", str(tmp_path / "out")])
     assert code.value.code == 2
