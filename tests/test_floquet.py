@@ -9,8 +9,6 @@ monodromy, harmonic balance vs monodromy, truncation, range independence), and b
 from __future__ import annotations
 
 import json
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -822,17 +820,6 @@ def test_bad_omega_and_options():
     with pytest.raises(ValueError, match="n_gamma"):
         region_boundaries(*mathieu(0.1), gamma_max=0.1, omega_min=1.0, omega_max=3.0,
                           n_gamma=1)
-
-
-def test_numerical_core_imports_numpy_and_scipy_only():
-    # house rule (tests/test_architecture.py covers the top-level modules only)
-    code = ("import sys, flexbooster.floquet\n"
-            "bad = {m.split('.')[0] for m in sys.modules} & {'pydantic', 'pint', 'matplotlib',"
-            " 'rich', 'click', 'mpmath', 'sympy'}\n"
-            "print(','.join(sorted(bad)))")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         check=True)
-    assert out.stdout.strip() == ""
 
 
 # --------------------------------------------------------------------------------------------

@@ -408,6 +408,7 @@ def test_no_oscillation_is_zero_and_said(tmp_path):
     assert FORCED_ZERO in console.export_text().replace("\n", " ")
 
 
+@pytest.mark.slow
 def test_a_supported_aft_end_reacting_the_misalignment_is_a_warning(memo_case_dict):
     """The memo's vehicle has shear-diaphragm ends (memo 5.3-2): a support at the aft edge
     reacts the thrust's lateral component, so the k = 1 response is exactly zero (statics: the

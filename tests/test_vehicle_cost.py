@@ -99,6 +99,7 @@ def _three_long_segments(**vehicle):
                  segments=[segment, dict(segment), dict(segment)], **vehicle)
 
 
+@pytest.mark.slow
 def test_certificates_are_counted_and_refused_up_front():
     """Source: the certificate's bounded work (floquet.bounds: CERTIFICATE_FLOPS_PER_N3
     (2n)^3 operations per call, three calls per damped harmonic with the chart); the estimate

@@ -467,6 +467,7 @@ def test_flight_events_enter_the_verdict_and_negligible_ones_are_dropped():
     assert (d["status"], d["events_counted"], d["events_dropped"]) == ("unstable", 2, 1)
 
 
+@pytest.mark.slow
 def test_pitch_critical_damping_only_for_the_fastest_tongues():
     # at a large gamma a hundred tongues can count, each a root search of about a second: the
     # critical damping ratio is computed for the CRITICAL_DAMPING_COUNT fastest-growing only
