@@ -388,7 +388,7 @@ def test_axial_resonance_peak_against_direct_integration():
     acc = phi * (phi * dF * np.cos(w * t) - 2 * zeta * w * v - w * w * y)  # u'' from the ODE
     assert p.displacement_m == pytest.approx(phi * np.max(np.abs(y)), rel=1e-2)
     assert p.acceleration_g == pytest.approx(np.max(np.abs(acc)) / STANDARD_GRAVITY, rel=1e-2)
-    assert p.in_operating_range and p.station == "aft edge"
+    assert p.in_operating_range and p.station == "aft-edge"
 
 
 def test_a_bounded_response_never_worsens_the_verdict_and_is_named():
@@ -398,7 +398,7 @@ def test_a_bounded_response_never_worsens_the_verdict_and_is_named():
     negligible growth; results.json's verdict carries it."""
     big = _response(50.0, 2 * math.pi * 12.0, load_quantity="axial force", load_unit="N",
                 load=3.0e6, load_station_m=40.0)
-    small = _response(0.5, 2 * math.pi * 30.0, station="aft edge", station_m=0.0)
+    small = _response(0.5, 2 * math.pi * 30.0, station="aft-edge", station_m=0.0)
     s = danger_summary(operating_range=(10.0, 300.0), modal_ratio=0.01,
                        bands={"vehicle": [_band(20.0, 21.0, 1e-9, mechanism="vehicle")]},
                        responses=[small, big])
@@ -421,8 +421,8 @@ def test_a_resonance_found_twice_is_listed_once():
     forced-response peak is that peak (named in its ``also``); one outside stays."""
     w1, w2 = 2 * math.pi * 12.0, 2 * math.pi * 20.0
     forced = [_response(4.0, w1 * (1 + 0.5 * 0.01))]  # inside the half-power band at zeta = 1 %
-    axial = [_response(3.9, w1, station="aft edge", modes="k = 0 mode 1"),
-             _response(0.2, w2, station="aft edge", modes="k = 0 mode 2")]
+    axial = [_response(3.9, w1, station="aft-edge", modes="k = 0 mode 1"),
+             _response(0.2, w2, station="aft-edge", modes="k = 0 mode 2")]
     axial = [dataclasses.replace(a, source="axial resonance") for a in axial]
     merged = merge_responses(forced, axial, damping_ratio=0.01)
     assert [(m.source, m.Omega, m.also) for m in merged] == [
@@ -446,7 +446,7 @@ def test_flight_events_enter_the_verdict_and_negligible_ones_are_dropped():
     assert fast.efolds == pytest.approx(0.2 * 20.0, rel=1e-12)
     forced = FlightEvent(mechanism="forced", k=0, modes="axial (k = 0, mode 0)", t_start_s=0.0,
                          t_end_s=64.39, max_growth_1_s=0.0, efolds=0.0, amplification=1.0,
-                         peak_acceleration_g=0.223, station="aft edge")
+                         peak_acceleration_g=0.223, station="aft-edge")
     assert [event_status(e) for e in (slow, fast, forced)] == ["negligible", "unstable",
                                                                "bounded"]
     quiet = flight_verdict([slow, forced], times=(0.0, 150.0))
@@ -454,10 +454,10 @@ def test_flight_events_enter_the_verdict_and_negligible_ones_are_dropped():
     s = danger_summary(operating_range=OPERATING, bands={"vehicle": []}, flight=quiet)
     assert s.verdict.overall == "STABLE"
     assert ("over the flight (t = 0-150 s) no region grows more than 10 %; worst moment 0.223 g "
-            "at aft edge, t = 0-64.39 s, axial (k = 0, mode 0) (1 event of negligible growth "
+            "at aft-edge, t = 0-64.39 s, axial (k = 0, mode 0) (1 event of negligible growth "
             "dropped)") in s.verdict.reason
     # the largest bounded response is that forced resonance: named once, as the worst moment
-    assert s.verdict.reason.endswith("largest response: the flight's worst moment")
+    assert s.verdict.reason.endswith("the flight's worst moment is also the largest response")
     loud = flight_verdict([slow, forced, fast], times=(0.0, 150.0))
     assert loud.worst is fast
     u = danger_summary(operating_range=OPERATING, bands={"vehicle": []}, flight=loud)

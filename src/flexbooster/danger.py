@@ -362,7 +362,7 @@ def axial_resonance_peaks(resonances: Sequence[Any], *, load: float,
         u = float(r.amplitude) * load  # m, at the aft edge
         out.append(ResponsePeak(
             source="axial resonance", k=0, Omega=float(r.omega),
-            acceleration_g=u * r.omega**2 / STANDARD_GRAVITY, station="aft edge", station_m=0.0,
+            acceleration_g=u * r.omega**2 / STANDARD_GRAVITY, station="aft-edge", station_m=0.0,
             displacement_m=u, modes=f"k = 0 mode {r.index + 1} ({r.type}, order {r.order})",
             in_operating_range=bool(lo <= r.omega <= hi)))
     return tuple(out)
@@ -908,7 +908,7 @@ def overall_verdict(ranked: Sequence[RankedBand], *,
         same = worst is not None and top[1].get("source") == "flight" and \
             top[1] == dict(worst.to_dict(), source="flight",
                            acceleration_g=worst.peak_acceleration_g)
-        parts.append("largest response: the flight's worst moment" if same
+        parts.append("the flight's worst moment is also the largest response" if same
                      else f"largest response {top[0]}")
     return Verdict(overall, "; ".join(parts), tuple((k, v) for k, _, v in verdicts),
                    float(modal_ratio), float(pitch_ratio),

@@ -287,5 +287,5 @@ def _axial_events(times, points, found_per_time, harmonics, osc, zeta: float) ->
             kind = h0.types[a, j]
             events += resonance_events(
                 times[a:b], h0.frequencies[a:b, j], osc[a:b], zeta=zeta, steady_peak_g=peak_g,
-                modes=f"{kind} (k = 0, mode {j})", k=0, station="aft edge")
+                modes=f"{kind} (k = 0, mode {j})", k=0, station="aft-edge")
     return events
