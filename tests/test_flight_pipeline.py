@@ -21,8 +21,10 @@ from conftest import dump_toml
 from flexbooster.analysis import analyze
 from flexbooster.case import load_case
 from flexbooster.cli import main
+from flexbooster.dynamics import STANDARD_GRAVITY, forced_response
 from flexbooster.errors import CaseError
-from flexbooster.flight_stage import flight_stage
+from flexbooster.flight_stage import PEAK_WINDOW, flight_stage
+from flexbooster.model import forced_stations, vehicle_from_case
 from flexbooster.present.flight import flight_lines, write_flight_csvs
 
 #: A free-free aluminium cylinder (E = 70 GPa, rho = 2700 kg/m^3) with one LOX tank
@@ -237,23 +239,85 @@ def test_summary_and_report_show_the_flight_worst_first(constant):
     assert worst.replace("'", "&#x27;") in first  # the first screen says the same
 
 
-def test_forced_response_refusal_is_a_warning_not_a_crash():
-    """Brief: where the forced response refuses the vehicle (its masses or tanks), the flight
-    goes on with a ``flight-forced-response`` warning naming why; a bare shell gives none.
-    (k_max = 0: the k = 0 modes only, for speed.)"""
+def test_a_bare_shell_flight_has_no_forced_response_warning():
+    """The forced resonances along the flight need no tanks or masses: a bare shell (k_max = 0,
+    the k = 0 modes only, for speed) gives no ``flight-forced-response`` warning."""
     data = copy.deepcopy(CASE)
     data["vehicle"]["k_max"] = 0
-    _, warnings = flight_stage(load_case(data))
-    codes = [w.code for w in warnings]
-    if "flight-forced-response" in codes:
-        (w,) = [w for w in warnings if w.code == "flight-forced-response"]
-        assert "forced response not computed" in w.message
     data["vehicle"].pop("tanks")
     data["vehicle"].pop("masses")
     for p in data["flight"]["points"]:
         p["fill"] = []
     _, warnings = flight_stage(load_case(data))
     assert "flight-forced-response" not in [w.code for w in warnings]
+
+
+def _forced_case(misalignment: float) -> dict:
+    """CASE with k = 0..1 and an oscillation band [200, 300] rad/s for the 40 s: it holds the
+    first axial mode (253.9 rad/s, k = 0) and the first bending mode (216.3 rad/s, k = 1) of the
+    frozen vehicle; a thrust misaligned by ``misalignment`` rad forces k = 1."""
+    data = copy.deepcopy(CASE)
+    data["vehicle"]["k_max"] = 1
+    data["thrust"].update(omega_min=200.0, omega_max=300.0, misalignment=misalignment)
+    for p in data["flight"]["points"]:
+        p["oscillation"] = [200.0, 300.0]
+    return data
+
+
+@pytest.fixture(scope="module")
+def forced_flight():
+    """The flight of :func:`_forced_case` at misalignments 0.01 and 0.02 rad."""
+    return {d: flight_stage(load_case(_forced_case(d)))[0] for d in (0.01, 0.02)}
+
+
+def test_forced_event_peaks_are_the_steady_peaks_of_the_frozen_vehicle(forced_flight):
+    """Independent search on the frozen vehicle: a constant vehicle and band, so each forced
+    event's peak is the largest steady |acceleration| over the stations within its mode's window
+    omega (1 -+ PEAK_WINDOW zeta). forced_response of the frozen case (the single case's
+    settings and the flight's range widened by the window, hence the same modal basis) with a
+    4001-point grid over that window, the maximum over the grid and the stations: the event is
+    at least that (1e-12) and at most 1e-4 above it (a grid spacing of 4e-6 omega across a
+    peak of half-width zeta omega = 2e-3 omega misses at most (1e-3)^2 / 2 of it); the station
+    named is where the grid's maximum is."""
+    fl = forced_flight[0.01]
+    case = load_case(_forced_case(0.01))
+    vehicle = vehicle_from_case(case)
+    zeta = case.vehicle_damping_ratio
+    forced = {e.k: e for e in fl.events if e.mechanism == "forced"}
+    assert set(forced) == {0, 1}, "both the axial and the bending resonance are in the band"
+    for k, expected_hz in ((0, 253.85), (1, 216.27)):
+        h = next(h for h in fl.harmonics if h.k == k)
+        omega = float(h.frequencies[0, 0])
+        assert omega == pytest.approx(expected_hz, rel=1e-4)
+        w = PEAK_WINDOW * zeta
+        grid = np.concatenate([[200.0 * (1.0 - w)], omega * (1.0 + w * np.linspace(
+            -1.0, 1.0, 4001)), [300.0 * (1.0 + w)]])
+        r = forced_response(vehicle, F0=case.F0, amplitude=case.thrust.gamma, Omega=grid,
+                            damping_ratio=zeta, misalignment=0.01, gimbal_gain=case.thrust.K,
+                            stations=forced_stations(case, vehicle)[0], harmonics=(k,))
+        a = np.abs(r.acceleration[0]) / STANDARD_GRAVITY  # (stations, grid)
+        event = forced[k]
+        assert event.modes == f"{h.types[0, 0]} (k = {k}, mode 0)"
+        assert (event.t_start_s, event.t_end_s) == (0.0, 40.0)
+        assert a.max() * (1 - 1e-12) <= event.peak_acceleration_g <= a.max() * (1 + 1e-4)
+        assert event.station == r.stations[int(np.argmax(a.max(axis=1)))].name
+
+
+def test_forced_event_peaks_scale_with_the_thrust_line(forced_flight):
+    """Linearity (Meirovitch 1986, ch. 7): the thrust line misaligned by delta loads k = 0 by
+    cos delta and k = 1 by sin delta, so doubling delta from 0.01 to 0.02 rad scales the
+    lateral peak by sin 0.02 / sin 0.01 and the axial one by cos 0.02 / cos 0.01 (1e-9); without
+    a misalignment there is no k = 1 event and the flight says why."""
+    one, two = ({e.k: e for e in forced_flight[d].events if e.mechanism == "forced"}
+                for d in (0.01, 0.02))
+    assert two[1].peak_acceleration_g / one[1].peak_acceleration_g == pytest.approx(
+        np.sin(0.02) / np.sin(0.01), rel=1e-9)
+    assert two[0].peak_acceleration_g / one[0].peak_acceleration_g == pytest.approx(
+        np.cos(0.02) / np.cos(0.01), rel=1e-9)
+    none, _ = flight_stage(load_case(dict(_forced_case(0.0), vehicle=dict(
+        _forced_case(0.0)["vehicle"], k_max=0))))
+    assert [e.k for e in none.events if e.mechanism == "forced"] == [0]
+    assert any("thrust.misalignment = 0" in n for n in none.notes)
 
 
 @pytest.mark.slow

@@ -27,7 +27,6 @@ from flexbooster.analysis import (
     FORCED_STAGE,
     analyze,
     analyze_forced_response,
-    forced_stations,
 )
 from flexbooster.case import load_case, memo_case_text
 from flexbooster.cli import main
@@ -35,7 +34,7 @@ from flexbooster.cost import estimate_vehicle_cost
 from flexbooster.dynamics import ThrustSpectrum, forced_response
 from flexbooster.dynamics.forced import STANDARD_GRAVITY
 from flexbooster.errors import CaseError
-from flexbooster.model import vehicle_from_case
+from flexbooster.model import forced_stations, vehicle_from_case
 from flexbooster.present.forced import FORCED_CSV
 from flexbooster.shell_of_revolution import Cone, Cylinder, Vehicle
 

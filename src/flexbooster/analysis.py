@@ -48,7 +48,7 @@ from .memo.responses import SimulationResult, excitation_parameters, simulate
 from .memo.severity import severity_analysis
 from .memo.shell import natural_frequencies
 from .memo.stability import ShellModes, StabilityTable, TooManyRootsError, unstable_frequencies
-from .model import MEMO_NOT_APPLICABLE, model_from_case, vehicle_from_case
+from .model import MEMO_NOT_APPLICABLE, forced_stations, model_from_case, vehicle_from_case
 from .results import SCHEMA_VERSION, UNITS, ForcedLoads, MemoRootsInRegions, Results
 from .shell_of_revolution import BucklingError, mass_properties
 from .shell_of_revolution.survey import VehicleSurvey, has_flat_plate, vehicle_survey
@@ -60,7 +60,6 @@ __all__ = [
     "analyze_vehicle_regions",
     "analyze_forced_response",
     "forced_settings",
-    "forced_stations",
     "modal_damping_ratio",
     "memo_roots_in_regions",
     "simulate_case",
@@ -726,32 +725,6 @@ def modal_damping_ratio(case: Case) -> float:
         The validated case.
     """
     return case.vehicle_damping_ratio
-
-
-def forced_stations(case: Case, vehicle=None) -> tuple[tuple[tuple[str, float], ...], tuple]:
-    """The caller's stations of the forced response: every lumped mass of the vehicle (its name,
-    else "mass-i") then every ``[[output.stations]]``, as (name, station in m); and the names of
-    the masses' stations. The edges and junctions are added by
-    :func:`flexbooster.dynamics.forced_response`.
-
-    Parameters
-    ----------
-    case : Case
-        The validated case.
-    vehicle : Vehicle, optional
-        Its vehicle (:func:`flexbooster.model.vehicle_from_case`), when already built.
-    """
-    vehicle = vehicle_from_case(case) if vehicle is None else vehicle
-    users = [(st.name, st.station) for st in case.output.stations]
-    taken = {name for name, _ in users}
-    masses = []
-    for i, m in enumerate(vehicle.masses):
-        name = m.name or f"mass-{i + 1}"
-        if name in taken:
-            name = f"{name} (mass {i + 1})"
-        taken.add(name)
-        masses.append((name, float(m.station)))
-    return tuple(masses + users), tuple(name for name, _ in masses)
 
 
 def forced_settings(case: Case) -> dict:

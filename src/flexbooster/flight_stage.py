@@ -13,25 +13,34 @@ import numpy as np
 
 from . import cost, floquet
 from .case import Case
-from .dynamics import STANDARD_GRAVITY, forced_axial, forced_response, vehicle_regions
+from .dynamics import (
+    STANDARD_GRAVITY,
+    IllConditionedError,
+    UndampedResonanceError,
+    forced_axial,
+    forced_response,
+    vehicle_regions,
+    window_peaks,
+)
 from .errors import AnalysisWarning, CaseError
 from .flight import (
     band_events,
     band_key,
     band_rate,
     mac_matrix,
+    meeting_intervals,
     resonance_events,
     track_modes,
     worst_first,
 )
 from .flight_results import FlightHarmonic, FlightResults
-from .model import flight_times, timeline_from_case, vehicle_from_case
+from .model import flight_times, forced_stations, timeline_from_case, vehicle_from_case
 from .shell_of_revolution import BucklingError
 from .shell_of_revolution.mass_properties import mass_properties
 from .shell_of_revolution.modes import mode_vectors, shared_harmonics, vehicle_modes
 
 __all__ = ["flight_stage", "flight_omega_range", "KNOWN_FREQUENCY_MARGIN",
-           "MATCH_RTOL", "MIN_PARTICIPATION"]
+           "MATCH_RTOL", "MIN_PARTICIPATION", "PEAK_WINDOW", "BASIS_MATCH_RTOL"]
 
 #: A flight whose oscillation is one constant frequency: the regions are searched over that
 #: frequency times (1 -+ this), so that a region holding it is found with its edges.
@@ -39,9 +48,17 @@ KNOWN_FREQUENCY_MARGIN = 0.05
 #: A region's mode and a computed mode of the same harmonic are the same mode when their
 #: loaded frequencies agree to this relative tolerance (the same eigenproblem solved twice).
 MATCH_RTOL = 1e-6
-#: k = 0 modes whose aft-edge participation phi^2 is below this fraction of the largest are
+#: Modes whose participation f^2 in the thrust oscillation (f the generalised force of the
+#: mass-normalised mode per newton) is below this fraction of the largest of their harmonic are
 #: not forced by the thrust (torsion; :data:`flexbooster.dynamics.axial.MIN_SHARE`).
 MIN_PARTICIPATION = 1e-8
+#: Half-width of the window around a tracked mode's frequency in which its forced peak is
+#: sought, in damping ratios: a mode's resonant peak lies within zeta^2 omega of omega and its
+#: half-power band is omega (1 -+ zeta) (Meirovitch 1986, sec. 3.4); at most 1/2.
+PEAK_WINDOW = 4.0
+#: A tracked mode and a basis mode of the forced model (its own mesh, cut at the stations) are
+#: the same mode when their frequencies agree to this relative tolerance.
+BASIS_MATCH_RTOL = 1e-3
 
 
 def flight_omega_range(timeline) -> tuple[float, float]:
@@ -126,14 +143,16 @@ def flight_stage(case: Case) -> tuple[FlightResults | None, list[AnalysisWarning
     harmonics = _track(times, modes_per_time, k_max, macs)
     osc = np.array([p.oscillation for p in points])
     events = _region_events(times, points, found_per_time, harmonics, modes_per_time, osc)
-    notes = ["the forced response of the bending harmonic k = 1 along the flight is not in "
-             "the events; the k = 0 axial resonances are (peak at the aft edge)"]
-    warnings = _forced_response_check(_vehicle_at(base, points[0].fill), points[0], zeta,
-                                      case.thrust.K)
+    notes: list[str] = []
+    warnings: list[AnalysisWarning] = []
     if zeta > 0.0:
-        events += _axial_events(times, points, found_per_time, harmonics, osc, zeta)
+        forced, more, note = _forced_events(case, base, times, points, harmonics, osc,
+                                            zeta=zeta, omega_range=(lo, hi))
+        events += forced
+        warnings += more
+        notes += note
     else:
-        notes.append("no k = 0 resonance peaks: damping.modal_ratio = 0 (undamped)")
+        notes.append("no forced resonance peaks: damping.modal_ratio = 0 (undamped)")
     gaps = {}
     for found, _ in found_per_time:
         for g in () if found is None else found.gaps:
@@ -175,21 +194,6 @@ def _vehicle_at(base, fill: tuple):
     """The vehicle with its tanks filled to ``fill`` (the shell, masses and mesh unchanged)."""
     return dataclasses.replace(base, tanks=tuple(
         dataclasses.replace(tank, fill=f) for tank, f in zip(base.tanks, fill, strict=True)))
-
-
-def _forced_response_check(vehicle, point, zeta: float, gain: float
-                           ) -> list[AnalysisWarning]:
-    """A ``flight-forced-response`` warning where :func:`flexbooster.dynamics.forced_response`
-    refuses the vehicle (e.g. its masses or tanks): the forced response is then not computed
-    along the flight; none where it accepts it (one evaluation at the band's lower edge)."""
-    try:
-        forced_response(vehicle, F0=point.F0, amplitude=point.gamma,
-                        Omega=np.array([point.oscillation[0]]), damping_ratio=max(zeta, 1e-3),
-                        gimbal_gain=gain)
-    except ValueError as exc:
-        return [AnalysisWarning("flight-forced-response", "vehicle",
-                                f"forced response not computed along the flight: {exc}")]
-    return []
 
 
 def _track(times: np.ndarray, modes_per_time: list, k_max: int,
@@ -257,35 +261,83 @@ def _region_events(times, points, found_per_time, harmonics, modes_per_time, osc
                             key=lambda b: keys[id(b)]))
 
 
-def _axial_events(times, points, found_per_time, harmonics, osc, zeta: float) -> list:
-    """The k = 0 forced resonances the oscillation band crosses, with the peak aft-edge
-    acceleration: steady peak phi^2 gamma F0 / (2 zeta) (m/s^2; Meirovitch 1986, the modal
-    FRF at resonance) at each frozen time, non-stationary where a known frequency crosses."""
-    h0 = next((h for h in harmonics if h.k == 0), None)
-    if h0 is None:
-        return []
-    T, N = h0.frequencies.shape
-    phi2 = np.zeros((T, N))
-    for t, (_, axial) in enumerate(found_per_time):
-        for j in range(N):
-            c = _column(axial.omega_loaded, None if not np.isfinite(h0.frequencies[t, j])
-                        else float(h0.frequencies[t, j]))
-            if c is not None:
-                phi2[t, j] = axial.participation[c] ** 2
-    forced = phi2.max(axis=0) >= MIN_PARTICIPATION * max(float(phi2.max()), 1e-300)
-    F0 = np.array([p.F0 for p in points])
-    gamma = np.array([p.gamma for p in points])
-    events = []
-    for j in np.flatnonzero(forced & (phi2.max(axis=0) > 0.0)):
-        present = np.isfinite(h0.frequencies[:, j])
-        # every run of consecutive frozen times where identity j is present
-        edges = np.flatnonzero(np.diff(np.concatenate([[0], present.astype(int), [0]])))
-        for a, b in zip(edges[::2], edges[1::2], strict=True):
-            if b - a < 2:
+def _forced_events(case: Case, base, times, points, harmonics, osc, *, zeta: float,
+                   omega_range: tuple) -> tuple[list, list[AnalysisWarning], list[str]]:
+    """The forced resonances the oscillation band crosses: every tracked mode of k = 0 (axial)
+    and, with a misaligned thrust, k = 1 (lateral) that the thrust forces, over each run of
+    frozen times where it is present, with the peak steady acceleration at the stations near
+    its frequency (:func:`flexbooster.dynamics.window_peaks` of that time's
+    :func:`flexbooster.dynamics.forced_response`, the case's stations, damping and gimbal)
+    and the non-stationary peak where a known frequency crosses it
+    (:func:`flexbooster.flight.resonance_events`). Returns (events, warnings, notes)."""
+    t = case.thrust
+    ks = (0, 1) if t.misalignment != 0.0 else (0,)
+    notes = [] if len(ks) == 2 else [
+        "no lateral (k = 1) forced resonances: thrust.misalignment = 0 (no lateral force)"]
+    w = min(PEAK_WINDOW * zeta, 0.5)
+    lo, hi = omega_range
+    stations = forced_stations(case, base)[0]
+    by_k = {h.k: h for h in harmonics if h.k in ks}
+    # the (k, mode, run) whose half-power band meets the oscillation band somewhere
+    runs = []
+    for k, h in by_k.items():
+        for j in range(h.frequencies.shape[1]):
+            present = np.isfinite(h.frequencies[:, j])
+            edges = np.flatnonzero(np.diff(np.concatenate([[0], present.astype(int), [0]])))
+            for a, b in zip(edges[::2], edges[1::2], strict=True):
+                om = h.frequencies[a:b, j]
+                if b - a >= 2 and meeting_intervals(times[a:b], om * (1.0 - zeta),
+                                                    om * (1.0 + zeta), osc[a:b, 0],
+                                                    osc[a:b, 1]):
+                    runs.append((k, j, a, b))
+    if not runs:
+        return [], [], notes
+    peak = {(k, j): np.zeros(times.size) for k, j, _, _ in runs}
+    place = {(k, j): np.zeros(times.size, dtype=int) for k, j, _, _ in runs}
+    share = {(k, j): 0.0 for k, j, _, _ in runs}
+    names = None
+    for i, p in enumerate(points):
+        want = [(k, j) for k, j, a, b in runs if a <= i < b]
+        if not want:
+            continue
+        centres = np.array([by_k[k].frequencies[i, j] for k, j in want])
+        # the model's basis follows the grid's top (its modes below 4 Omega_max): the range
+        # searched, widened to every window, so that it is the same at every time it covers
+        grid = np.array([min(lo, centres.min()) * (1.0 - w), max(hi, centres.max()) * (1.0 + w)])
+        try:
+            r = forced_response(_vehicle_at(base, p.fill), F0=p.F0, amplitude=p.gamma,
+                                Omega=grid, damping_ratio=zeta, misalignment=t.misalignment,
+                                gimbal_gain=t.K, pitch_damping_ratio=case.damping.pitch_ratio,
+                                stations=stations, harmonics=ks)
+        except (UndampedResonanceError, IllConditionedError, BucklingError, ValueError) as exc:
+            return [], [AnalysisWarning(
+                "flight-forced-response", "vehicle", "forced resonances not computed along "
+                f"the flight (at t = {p.time:.6g} s): {exc}")], notes
+        names = [s.name for s in r.stations]
+        for k in ks:
+            mine = [(n, (kk, j)) for n, (kk, j) in enumerate(want) if kk == k]
+            if not mine:
                 continue
-            peak_g = phi2[a:b, j] * gamma[a:b] * F0[a:b] / (2.0 * zeta) / STANDARD_GRAVITY
-            kind = h0.types[a, j]
-            events += resonance_events(
-                times[a:b], h0.frequencies[a:b, j], osc[a:b], zeta=zeta, steady_peak_g=peak_g,
-                modes=f"{kind} (k = 0, mode {j})", k=0, station="aft-edge")
-    return events
+            a_max, _, where = window_peaks(r, k=k, omega=centres[[n for n, _ in mine]],
+                                           half_width=w)
+            model = r.models[r.harmonics.index(k)]
+            f2 = model.load[model.n_rigid:] ** 2
+            basis = model.omega_modes[model.n_rigid:]
+            for (n, key), g, st in zip(mine, a_max, where, strict=True):
+                peak[key][i], place[key][i] = g / STANDARD_GRAVITY, st
+                c = int(np.argmin(np.abs(basis - centres[n]))) if basis.size else -1
+                matched = c >= 0 and abs(basis[c] - centres[n]) <= BASIS_MATCH_RTOL * centres[n]
+                # a mode the forced model does not resolve counts as forced (conservative)
+                f = f2[c] / max(float(f2.max()), 1e-300) if matched else 1.0
+                share[key] = max(share[key], f)
+    events = []
+    for k, j, a, b in runs:
+        if share[(k, j)] < MIN_PARTICIPATION:
+            continue  # not forced by the thrust (torsion)
+        h = by_k[k]
+        station = names[place[(k, j)][a + int(np.argmax(peak[(k, j)][a:b]))]]
+        events += resonance_events(
+            times[a:b], h.frequencies[a:b, j], osc[a:b], zeta=zeta,
+            steady_peak_g=peak[(k, j)][a:b], modes=f"{h.types[a, j]} (k = {k}, mode {j})",
+            k=k, station=station)
+    return events, [], notes

@@ -25,7 +25,8 @@ from .shell_of_revolution.geometry import (
 if TYPE_CHECKING:
     from .case import Case
 
-__all__ = ["MEMO_NOT_APPLICABLE", "check_memo_applies", "model_from_case", "vehicle_from_case",
+__all__ = ["MEMO_NOT_APPLICABLE", "forced_stations", "check_memo_applies", "model_from_case",
+           "vehicle_from_case",
            "timeline_from_case", "flight_times"]
 
 #: Why the memo's method (beam, Galerkin shells, beam action, the 13-family table, its charts)
@@ -185,3 +186,29 @@ def flight_times(case: Case) -> np.ndarray:
     if table.times is not None:
         return frozen_times(timeline, times=table.times, include_points=True)
     return frozen_times(timeline, n=table.stations or FLIGHT_STATIONS, include_points=True)
+
+
+def forced_stations(case: Case, vehicle=None) -> tuple[tuple[tuple[str, float], ...], tuple]:
+    """The caller's stations of the forced response: every lumped mass of the vehicle (its name,
+    else "mass-i") then every ``[[output.stations]]``, as (name, station in m); and the names of
+    the masses' stations. The edges and junctions are added by
+    :func:`flexbooster.dynamics.forced_response`.
+
+    Parameters
+    ----------
+    case : Case
+        The validated case.
+    vehicle : Vehicle, optional
+        Its vehicle (:func:`flexbooster.model.vehicle_from_case`), when already built.
+    """
+    vehicle = vehicle_from_case(case) if vehicle is None else vehicle
+    users = [(st.name, st.station) for st in case.output.stations]
+    taken = {name for name, _ in users}
+    masses = []
+    for i, m in enumerate(vehicle.masses):
+        name = m.name or f"mass-{i + 1}"
+        if name in taken:
+            name = f"{name} (mass {i + 1})"
+        taken.add(name)
+        masses.append((name, float(m.station)))
+    return tuple(masses + users), tuple(name for name, _ in masses)

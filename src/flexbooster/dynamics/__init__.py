@@ -20,6 +20,7 @@ from .forced import (
     ThrustSpectrum,
     UndampedResonanceError,
     forced_response,
+    window_peaks,
 )
 from .forced_model import IllConditionedError
 from .harmonic import HarmonicSystem
@@ -51,6 +52,7 @@ __all__ = [
     "ThrustSpectrum",
     "UndampedResonanceError",
     "forced_response",
+    "window_peaks",
     "forced_axial",
     "harmonic_system",
     "region_critical_damping",

@@ -23,7 +23,7 @@ from .forced_model import ROWS, ModalModel, cut_vehicle, mesh_nodes, modal_model
 
 __all__ = ["STANDARD_GRAVITY", "QUANTITIES", "UNITS", "ThrustSpectrum", "Station",
            "ForcedPeak", "LoadEnvelope", "ForcedResponse", "UndampedResonanceError",
-           "forced_response"]
+           "forced_response", "window_peaks"]
 
 #: Standard acceleration of gravity g (m/s^2), exact by definition (3rd CGPM, 1901).
 STANDARD_GRAVITY = 9.80665
@@ -208,6 +208,8 @@ class ForcedResponse:
         k = 0 axial force, k = 1 shear force and bending moment along the vehicle.
     models : tuple of ModalModel
         The reduced model of each harmonic.
+    station_nodes : tuple of int
+        The mesh node of each station (the models' node rows).
     """
 
     omega: np.ndarray
@@ -228,6 +230,7 @@ class ForcedResponse:
     peaks: tuple
     envelopes: tuple
     models: tuple
+    station_nodes: tuple = ()
 
     @property
     def acceleration_g(self) -> np.ndarray:
@@ -503,4 +506,67 @@ def forced_response(
                           damping_ratio=zeta, pitch_damping_ratio=zpsi, misalignment=delta,
                           gimbal_gain=K, harmonics=harmonics, stations=tuple(rows_s),
                           peaks=tuple(peaks), envelopes=tuple(envelopes),
-                          models=tuple(models), **out)
+                          models=tuple(models), station_nodes=tuple(int(a) for a in at),
+                          **out)
+
+
+def window_peaks(response: ForcedResponse, *, k: int, omega, half_width: float
+                 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The peak steady acceleration over the stations near each frequency of ``omega``: the
+    largest |a| at any station for Omega in omega (1 -+ half_width), 2 CLUSTER + 1 points
+    across the window then GOLDEN_STEPS golden-section steps around the largest (Kiefer 1953),
+    as the peaks of :func:`forced_response`. A sweep's amplitude gamma, Delta F = gamma F0
+    along the misaligned thrust line (Meirovitch 1986, ch. 7).
+
+    Parameters
+    ----------
+    response : ForcedResponse
+        A sweep (one gamma) holding harmonic ``k``.
+    k : int
+        The harmonic, 0 or 1.
+    omega : array_like
+        Centres of the windows (rad/s), > 0, shape (n,).
+    half_width : float
+        Relative half-width of each window, in (0, 1).
+
+    Returns
+    -------
+    peak : ndarray, shape (n,)
+        Peak acceleration amplitude (m/s^2), 0 where the harmonic is not forced.
+    at : ndarray, shape (n,)
+        Omega of the peak (rad/s).
+    station : ndarray of int, shape (n,)
+        Index into ``response.stations`` of the station where it is.
+    """
+    if not isinstance(response, ForcedResponse) or response.combination != "sweep":
+        raise ValueError("response: must be the ForcedResponse of a sweep")
+    if k not in response.harmonics:
+        raise ValueError(f"k = {k!r}: must be one of the response's harmonics "
+                         f"{response.harmonics}")
+    om = finite_array("omega", omega, positive=True).ravel()
+    w = finite("half_width", half_width)
+    if not 0.0 < w < 1.0:
+        raise ValueError(f"half_width = {half_width!r}: must be in (0, 1)")
+    model = response.models[response.harmonics.index(k)]
+    share = math.cos(response.misalignment) if k == 0 else math.sin(response.misalignment)
+    # the model is per newton of Delta F along the thrust line: its share is in its load
+    scale = float(response.amplitude[0]) * response.F0 * (share != 0.0)
+    node = np.asarray(response.station_nodes, dtype=int)
+    n, s = om.size, node.size
+    if om.size == 0 or scale == 0.0:
+        return np.zeros(n), om.copy(), np.zeros(n, dtype=int)
+    steps = np.arange(-CLUSTER, CLUSTER + 1) / CLUSTER
+    grid = om[:, None] * (1.0 + w * steps[None, :])  # (n, g)
+    disp = model.response(grid.ravel())[:, node, 0].reshape(n, steps.size, s)
+    mag = grid[:, :, None] ** 2 * np.abs(disp)  # |a| = Omega^2 |u| per newton
+    i = np.argmax(mag, axis=1)  # (n, s)
+    rows = np.arange(n)[:, None]
+    lo = grid[rows, np.maximum(i - 1, 0)].ravel()
+    hi = grid[rows, np.minimum(i + 1, steps.size - 1)].ravel()
+    val, where = _golden(model, lo, hi, np.tile(node, n), np.zeros(n * s, dtype=int), 2)
+    best = mag.max(axis=1).ravel()
+    better = val > best
+    value = np.where(better, val, best).reshape(n, s)
+    place = np.where(better, where, grid[rows, i].ravel()).reshape(n, s)
+    station = np.argmax(value, axis=1)
+    return (scale * value[np.arange(n), station], place[np.arange(n), station], station)
