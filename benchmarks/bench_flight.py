@@ -11,7 +11,9 @@ of the children included, e.g. the figure workers):
      and options. ``--baseline-runs N`` runs N of them, the middle times of N equal blocks of
      the flight, and scales their sum to every frozen time (the output says so).
 The ratios baseline / work are printed (and, with ``--stage``, the flight stage alone
-in-process, for the record). The issue's target is 50 frozen times, k <= 20, 20 modes per k,
+in-process, for the record). With ``--scheduler local`` (or a scheduler's address) the work
+is also run with its frozen times on Dask, and the ratio one process / Dask is printed. The
+issue's target is 50 frozen times, k <= 20, 20 modes per k,
 the work under 60 s wall and >= 10x; the defaults are those sizes (many minutes on a shared
 machine; pass smaller ones for a quick look).
 
@@ -19,7 +21,7 @@ Usage::
 
     OPENBLAS_NUM_THREADS=1 PYTHONPATH=src python benchmarks/bench_flight.py \
         [--stations 50] [--k-max 20] [--n-modes 20] [--baseline-runs 5] [--no-figures] \
-        [--stage]
+        [--stage] [--scheduler local]
 """
 
 from __future__ import annotations
@@ -96,6 +98,8 @@ def main() -> None:
                         "every run (work and baseline alike)")
     parser.add_argument("--stage", action="store_true",
                         help="also time the flight stage alone, in-process")
+    parser.add_argument("--scheduler", default=None,
+                        help="also run the work with --scheduler (local or an address)")
     args = parser.parse_args()
     data = tomllib.loads(EXAMPLE.read_text())
     data["vehicle"].update(k_max=args.k_max, n_modes=args.n_modes)
@@ -126,6 +130,12 @@ def main() -> None:
         work_wall, work_cpu = run(tmp / "flight.toml", tmp / "flight-out", extra)
         print(f"work, one run of the flight case: {work_wall:.1f} s wall, {work_cpu:.1f} s "
               "CPU")
+        if args.scheduler:
+            dask_wall, dask_cpu = run(tmp / "flight.toml", tmp / "flight-dask-out",
+                                      extra + ["--scheduler", args.scheduler])
+            print(f"work on Dask (--scheduler {args.scheduler}): {dask_wall:.1f} s wall, "
+                  f"{dask_cpu:.1f} s CPU (a running cluster's workers not counted); ratio one "
+                  f"process / Dask: {work_wall / dask_wall:.2f}x wall")
         walls, cpus = [], []
         for i in chosen:
             path = tmp / f"frozen-{i}.toml"

@@ -12,7 +12,7 @@ rigid-body pitch, modes and regions (``Results.not_applicable`` holds the reason
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 
 import numpy as np
 
@@ -38,7 +38,7 @@ from .dynamics import (
     vehicle_regions,
 )
 from .errors import AnalysisWarning
-from .flight_stage import flight_stage
+from .flight_stage import FrozenTime, flight_stage
 from .memo import charts
 from .memo.beam import beam_modes
 from .memo.beam_action import PeriodMapOverflowError, beam_action_analysis
@@ -154,6 +154,7 @@ def analyze(
     *,
     vehicle: bool = True,
     on_estimate: Callable[[cost.CostEstimate, float], None] | None = None,
+    frozen: Sequence[FrozenTime] | None = None,
 ) -> Results:
     """Run the analysis of a validated case: the stages of :data:`STAGES` in order.
 
@@ -173,18 +174,27 @@ def analyze(
         Compute the vehicle's parametric instability regions and the memo roots inside them.
     on_estimate : callable, optional
         Called before any solver runs with the cost estimate and ``case.max_seconds`` (s).
+    frozen : sequence of FrozenTime, optional
+        For a case with ``[flight]``: its frozen times already computed
+        (:func:`flexbooster.flight_stage.frozen_time` at every index, in order; on Dask by
+        :func:`flexbooster.sweep.flight.analyze_on_dask`). The flight stage then assembles
+        them (:func:`flexbooster.flight_stage.assemble_flight`) and the cost estimate leaves
+        them out; the results are those of ``frozen=None``, which computes them here.
     """
     _check_case(case)
+    if frozen is not None and not vehicle:
+        raise ValueError("frozen: given with vehicle=False, which computes no flight")
     step = progress or (lambda stage: None)
     case.required_thrust()  # a one-line CaseError on thrust before any stage
     if case.has_segments:  # the memo's method does not apply: the vehicle's stages only
         return _analyze_segments(case, step, figures=figures, regions=vehicle,
-                                 on_estimate=on_estimate)
+                                 on_estimate=on_estimate, frozen=frozen)
     with blas_threads(1):  # many small eigenproblems: one BLAS thread is the fastest
         step(STAGES[0])
         model = model_from_case(case)
         est, extra = _feasibility(case, model, beam_action=beam_action, stability=stability,
-                                  figures=figures, with_regions=vehicle)
+                                  figures=figures, with_regions=vehicle,
+                                  with_flight=frozen is None)
         if on_estimate is not None:
             on_estimate(est, case.max_seconds)
         n = model.truncation
@@ -231,7 +241,8 @@ def analyze(
             step(FORCED_STAGE)
             forced, skipped = _forced_stage(case)
             extra += skipped
-        flight, skipped = flight_stage(case) if vehicle else (None, [])  # [flight] only
+        # [flight] only
+        flight, skipped = flight_stage(case, frozen=frozen) if vehicle else (None, [])
         extra += skipped
     return Results(
         case=case,
@@ -260,7 +271,8 @@ def analyze(
 
 
 def _analyze_segments(case: Case, step: Callable[[str], None], *, figures: bool,
-                      regions: bool, on_estimate: Callable | None) -> Results:
+                      regions: bool, on_estimate: Callable | None,
+                      frozen: Sequence[FrozenTime] | None) -> Results:
     """:func:`analyze` of a ``[[vehicle.segments]]`` case: the vehicle's mass properties, its
     rigid-body pitch (omega_psi = sqrt(F0 d K / I_cm), memo eq. 4.2-1, d the centre of mass
     from the aft edge, on the memo's Mathieu numerics), modes and regions; the memo's stages
@@ -277,8 +289,10 @@ def _analyze_segments(case: Case, step: Callable[[str], None], *, figures: bool,
                                                   forced=regions)
         pitch_cost = cost.estimate_pitch_cost(omega_psi=omega_psi, Omega=Omega, gamma=t.gamma,
                                               pitch_ratio=case.damping.pitch_ratio)
-        est = cost.check_case_cost(None, case.max_seconds, vehicle=cost.combined(
-            pitch_cost, cost.with_flight(case, vehicle_cost)))  # [flight]
+        if frozen is None:  # [flight], unless its frozen times are given
+            vehicle_cost = cost.with_flight(case, vehicle_cost)
+        est = cost.check_case_cost(None, case.max_seconds,
+                                   vehicle=cost.combined(pitch_cost, vehicle_cost))
         if on_estimate is not None:
             on_estimate(est, case.max_seconds)
         step(STAGES[1])
@@ -297,7 +311,8 @@ def _analyze_segments(case: Case, step: Callable[[str], None], *, figures: bool,
             step(FORCED_STAGE)
             forced, skipped = _forced_stage(case)
             extra += skipped
-        flight, skipped = flight_stage(case) if regions else (None, [])  # [flight] only
+        # [flight] only
+        flight, skipped = flight_stage(case, frozen=frozen) if regions else (None, [])
         extra += skipped
     danger = danger_summary(
         operating_range=(t.omega_min, t.omega_max),
@@ -380,13 +395,16 @@ def _stability_table(model: BoosterModel, shell, params
 
 
 def _feasibility(case: Case, model: BoosterModel, *, with_regions: bool = True,
+                 with_flight: bool = True,
                  **stages: bool) -> tuple[cost.CostEstimate, list[AnalysisWarning]]:
     """Refuse a case past its budget or past what the structure carries, before any solver
     runs; the estimate, and the warnings of the budget and of the load."""
     cost.check_physical(model)
     # the vehicle stages too: modes survey, regions (lower bound with damping)
     veh = dict(regions=with_regions, forced=with_regions, figures=stages.get("figures", True))
-    vehicle = cost.with_flight(case, cost.estimate_vehicle_cost(case, **veh))  # [flight]
+    vehicle = cost.estimate_vehicle_cost(case, **veh)
+    if with_flight:  # [flight], unless its frozen times are given
+        vehicle = cost.with_flight(case, vehicle)
     est = cost.check_case_cost(model, case.max_seconds, vehicle=vehicle, **stages)
     out = cost.physical_warnings(model) + cost.capped_steps_warning(est, model)
     if est.seconds > 0.5 * case.max_seconds:

@@ -237,10 +237,15 @@ def _wrote(paths, fmt: str, quiet: bool) -> None:
               help="Print every table (the report and results.json always hold them).")
 @_MEMO
 @_BUDGET
+@click.option("--scheduler", default=None, metavar="ADDRESS|local",
+              help="A case with [flight]: run its frozen times on Dask, on the scheduler at "
+                   "ADDRESS (e.g. tcp://host:8786) or on a local cluster (one worker per "
+                   "core); the results are the same as without [default: one process].")
 @_QUIET
 @_FORMAT
 def run(case_file: Path | None, output: Path, no_figures: bool, no_vehicle: bool,
-        full: bool, memo: bool, max_seconds: float | None, quiet: bool, fmt: str) -> None:
+        full: bool, memo: bool, max_seconds: float | None, scheduler: str | None, quiet: bool,
+        fmt: str) -> None:
     """Analyse CASE_FILE (TOML; if omitted, the embedded default case: a launch vehicle through
     its flight, or with --memo the memo's two-cylinder case).
 
@@ -257,6 +262,7 @@ def run(case_file: Path | None, output: Path, no_figures: bool, no_vehicle: bool
       flexbooster run --memo -o memo/        # the memo's two-cylinder case
       flexbooster run my.toml -o out/ --no-figures
       flexbooster run my.toml --no-vehicle   # without the vehicle's instability regions
+      flexbooster run flight.toml --scheduler local   # the flight's frozen times on Dask
       flexbooster run -q --format json | python -m json.tool | head
     """
     from .analysis import STAGES, analyze
@@ -265,11 +271,17 @@ def run(case_file: Path | None, output: Path, no_figures: bool, no_vehicle: bool
 
     _check_names(output, SET_NAMES)
     case = _with_budget(_load(case_file, memo), max_seconds)
+    if scheduler is not None:
+        _check_scheduler(case, scheduler, no_vehicle=no_vehicle, figures=not no_figures)
     n_stages = (len(STAGES) + (case.vehicle is not None) + 2 * (not no_vehicle)
-                + len(OUTPUT_STAGES))
+                + len(OUTPUT_STAGES) + (scheduler is not None))
     with _progress(n_stages, quiet) as step:
-        results = analyze(case, progress=step, figures=not no_figures, vehicle=not no_vehicle,
-                          on_estimate=getattr(step, "estimate", None))
+        options = dict(progress=step, figures=not no_figures,
+                       on_estimate=getattr(step, "estimate", None))
+        if scheduler is None:
+            results = analyze(case, vehicle=not no_vehicle, **options)
+        else:
+            results = _run_on_dask(case, scheduler, **options)
         paths = write_outputs(results, output, figures=not no_figures, progress=step)
     _report(results, fmt, quiet, functools.partial(print_summary, full=full))
     report = [p for p in paths if Path(p).name == "report.html"]
@@ -279,6 +291,33 @@ def run(case_file: Path | None, output: Path, no_figures: bool, no_vehicle: bool
         click.echo(f"wrote {len(paths)} files to {output}")
     if report and fmt != "json" and not quiet:
         click.echo(f"open {report[0]}")
+
+
+def _check_scheduler(case, scheduler: str, *, no_vehicle: bool, figures: bool) -> None:
+    """--scheduler: only for a case with [flight] and the vehicle's stages; the budget checked
+    before a cluster starts."""
+    from .sweep.flight import check_flight_budget
+
+    if case.flight is None:
+        raise CaseError("--scheduler", scheduler, "only for a case with [flight] (its frozen "
+                        "times run on Dask); this case has none: run it without --scheduler")
+    if no_vehicle:
+        raise CaseError("--scheduler", scheduler, "not with --no-vehicle (without the "
+                        "vehicle's stages there is no flight to run on Dask)")
+    check_flight_budget(case, figures=figures)
+
+
+def _run_on_dask(case, scheduler: str, **options):
+    """The analysis with the flight's frozen times on Dask: a local cluster for ``local``, else
+    the scheduler at that address (closed, its tasks cancelled, on any exit)."""
+    from contextlib import ExitStack
+
+    from .sweep.command import start_client
+    from .sweep.flight import analyze_on_dask
+
+    with ExitStack() as stack:
+        client = start_client(stack, None if scheduler == "local" else scheduler, None)
+        return analyze_on_dask(case, client, **options)
 
 
 #: Files written by ``flexbooster stability`` (names of its own: never half of a ``run``).

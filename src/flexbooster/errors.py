@@ -33,6 +33,15 @@ class CaseError(ValueError):
         self.rule = rule
         super().__init__(message if message is not None else f"{field} = {value!r}: {rule}")
 
+    def __reduce__(self):
+        """Pickled with its field, value, rule and line (a Dask task's error comes back whole)."""
+        return _case_error, (type(self), self.field, self.value, self.rule, str(self))
+
+
+def _case_error(cls: type, field: str, value: object, rule: str, message: str) -> CaseError:
+    """A pickled :class:`CaseError` (or subclass) rebuilt."""
+    return cls(field, value, rule, message=message)
+
 
 @dataclass(frozen=True)
 class AnalysisWarning:

@@ -1,22 +1,30 @@
 """The flight stage of :func:`flexbooster.analysis.analyze`: the vehicle at each frozen time of
 the case's ``[flight]`` (fills, thrust and oscillation from the schedule), its modes tracked
 across times, its parametric regions and k = 0 axial resonances, and the events where the
-oscillation band meets them, the worst first. One plain loop over the frozen times, then one
-call per mechanism (docs/theory/flight.md, "Use in the pipeline").
+oscillation band meets them, the worst first. The frozen times are independent
+(:func:`frozen_time`, pure, picklable results): one plain loop over them here, or a map on Dask
+in the sweep layer (:mod:`flexbooster.sweep.flight`); then :func:`assemble_flight` tracks,
+follows and ranks across them (docs/theory/flight.md, "Use in the pipeline").
 """
 
 from __future__ import annotations
 
 import dataclasses
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
 from . import cost, floquet
+from ._threads import blas_threads
 from .case import Case
 from .dynamics import (
     STANDARD_GRAVITY,
+    ForcedAxial,
     IllConditionedError,
     UndampedResonanceError,
+    VehicleRegions,
     forced_axial,
     forced_response,
     vehicle_regions,
@@ -36,11 +44,17 @@ from .flight import (
 from .flight_results import FlightHarmonic, FlightResults
 from .model import flight_times, forced_stations, timeline_from_case, vehicle_from_case
 from .shell_of_revolution import BucklingError
-from .shell_of_revolution.mass_properties import mass_properties
-from .shell_of_revolution.modes import mode_vectors, shared_harmonics, vehicle_modes
+from .shell_of_revolution.mass_properties import MassProperties, mass_properties
+from .shell_of_revolution.modes import (
+    VehicleModes,
+    mode_vectors,
+    shared_harmonics,
+    vehicle_modes,
+)
 
-__all__ = ["flight_stage", "flight_omega_range", "KNOWN_FREQUENCY_MARGIN",
-           "MATCH_RTOL", "MIN_PARTICIPATION", "PEAK_WINDOW", "BASIS_MATCH_RTOL"]
+__all__ = ["flight_stage", "frozen_time", "assemble_flight", "FrozenTime", "flight_omega_range",
+           "KNOWN_FREQUENCY_MARGIN", "MATCH_RTOL", "MIN_PARTICIPATION", "PEAK_WINDOW",
+           "BASIS_MATCH_RTOL"]
 
 #: A flight whose oscillation is one constant frequency: the regions are searched over that
 #: frequency times (1 -+ this), so that a region holding it is found with its edges.
@@ -85,61 +99,197 @@ def _column(omegas: np.ndarray, omega: float | None) -> int | None:
     return i if abs(omegas[i] - omega) <= MATCH_RTOL * abs(omega) else None
 
 
-def flight_stage(case: Case) -> tuple[FlightResults | None, list[AnalysisWarning]]:
-    """The vehicle through the flight of ``case`` (None and no warnings without ``[flight]``).
+@dataclass(frozen=True)
+class FrozenTime:
+    """Everything computed at one frozen time of a flight (:func:`frozen_time`): independent of
+    the other times, picklable (numpy arrays and frozen dataclasses), the input of
+    :func:`assemble_flight`.
 
-    At each frozen time (:func:`flexbooster.model.flight_times`) the vehicle with that time's
-    fills (the shell and its mesh unchanged), its mass properties, its lowest
-    ``vehicle.n_modes`` modes per k = 0..k_max under that time's F0, the parametric regions of
-    k = 1..k_max at that time's F0 and gamma over the union of the oscillation bands, and the
-    k = 0 axial participations. Each time's harmonic matrices and eigenpairs are computed once
-    for the modes, the regions and the resonances. The modes are tracked across times by the
-    MAC of their DOF vectors weighted by the structure's mass matrix (Allemang 2003; shell
-    and lumped masses, the same at every time; :func:`flexbooster.flight.track_modes`), the
-    regions followed by their tracked modes
-    (:func:`flexbooster.flight.band_events`, rates by :func:`flexbooster.flight.band_rate`) and
-    the k = 0 resonances by :func:`flexbooster.flight.resonance_events`. CaseError on
-    ``flight.points`` where the thrust buckles the vehicle at a frozen time.
+    Attributes
+    ----------
+    index : int
+        Position among the case's frozen times (:func:`flexbooster.model.flight_times`).
+    time : float
+        The frozen time (s).
+    mass : MassProperties
+        The vehicle's mass properties with that time's fills.
+    modes : VehicleModes
+        Its lowest modes per k = 0..k_max under that time's F0.
+    regions : VehicleRegions or None
+        Its parametric regions of k = 1..k_max (None for k_max = 0).
+    axial : ForcedAxial
+        Its k = 0 axial resonances and their aft-edge participations.
+    vectors : tuple of numpy.ndarray
+        Per k = 0..k_max, the modes' DOF vectors (n_dof, n_modes) on the shell's DOFs.
+    structural_mass : tuple of numpy.ndarray or None
+        Per k, the structure's mass matrix (shell and lumped masses, kg), the weight of the
+        MAC: the same at every fill, so held by the frozen time of index 0 only (None at the
+        others: a long flight sends it once).
+    """
+
+    index: int
+    time: float
+    mass: MassProperties
+    modes: VehicleModes
+    regions: VehicleRegions | None
+    axial: ForcedAxial
+    vectors: tuple[np.ndarray, ...]
+    structural_mass: tuple[np.ndarray, ...] | None
+
+
+@dataclass(frozen=True)
+class _Plan:
+    """What every frozen time of a case's flight shares (built from the case alone)."""
+
+    times: np.ndarray
+    points: tuple
+    base: Any
+    k_max: int
+    n_modes: int
+    omega_range: tuple
+    zeta: float
+    gain: float
+
+
+def _plan(case: Case) -> _Plan | None:
+    """The flight's shared data, None without ``[flight]``; TypeError naming ``case`` unless
+    it is a validated Case."""
+    from .vehicle_case import VehicleTable
+
+    if not isinstance(case, Case):
+        raise TypeError(f"case = {case!r:.60}: must be a Case, not {type(case).__name__}")
+
+    timeline = timeline_from_case(case)
+    if timeline is None:
+        return None
+    times = flight_times(case)
+    table = case.vehicle if case.vehicle is not None else VehicleTable()
+    base = vehicle_from_case(case)
+    return _Plan(times=times, points=tuple(timeline.at(float(t)) for t in times), base=base,
+                 k_max=table.k_max,
+                 n_modes=cost.region_modes(case, base, k_max=max(table.k_max, 1))[0],
+                 omega_range=flight_omega_range(timeline), zeta=case.vehicle_damping_ratio,
+                 gain=case.thrust.K)
+
+
+def frozen_time(case: Case, index: int) -> FrozenTime:
+    """The vehicle of ``case`` at its frozen time ``index``
+    (:func:`flexbooster.model.flight_times`): that time's fills (the shell and its mesh
+    unchanged), its mass properties, its lowest ``vehicle.n_modes`` modes per k = 0..k_max
+    under that time's F0, the parametric regions of k = 1..k_max at that time's F0 and gamma
+    over the union of the oscillation bands (:func:`flight_omega_range`), the k = 0 axial
+    participations and the modes' DOF vectors. Each harmonic's matrices and eigenpairs are
+    computed once for all of them. A pure function of its arguments: the frozen times may run
+    in any order, in any process (one BLAS thread, as :func:`flexbooster.analysis.analyze`).
+    CaseError on ``flight.points`` where the thrust buckles the vehicle at that time;
+    ValueError on ``index`` outside the frozen times or a case without ``[flight]``.
+
+    Parameters
+    ----------
+    case : Case
+        The validated case (SI), with ``[flight]``.
+    index : int
+        0 .. (number of frozen times - 1).
+    """
+    plan = _plan(case)
+    if plan is None:
+        raise ValueError("case: has no [flight], so no frozen time")
+    if isinstance(index, bool) or not isinstance(index, (int, np.integer)) or not (
+            0 <= index < plan.times.size):
+        raise ValueError(f"index = {index!r}: must be an integer in 0..{plan.times.size - 1}")
+    return _frozen_at(plan, int(index))
+
+
+def _frozen_at(plan: _Plan, index: int) -> FrozenTime:
+    """:func:`frozen_time` of the plan's frozen time ``index``."""
+    p = plan.points[index]
+    vehicle = _vehicle_at(plan.base, p.fill)
+    with blas_threads(1):
+        mass = mass_properties(vehicle)
+        try:
+            modes, found, axial, vectors = _frozen_time(
+                vehicle, p, k_max=plan.k_max, n_modes=plan.n_modes,
+                omega_range=plan.omega_range, zeta=plan.zeta, gain=plan.gain)
+        except BucklingError as exc:
+            raise CaseError("flight.points", f"F0 = {p.F0:.6g} N at t = {p.time:.6g} s",
+                            f"the thrust buckles the vehicle at this frozen time ({exc})"
+                            ) from None
+    ks = range(plan.k_max + 1)
+    return FrozenTime(index=index, time=float(plan.times[index]), mass=mass, modes=modes,
+                      regions=found, axial=axial, vectors=tuple(vectors[k][0] for k in ks),
+                      structural_mass=tuple(vectors[k][1] for k in ks) if index == 0 else None)
+
+
+def flight_stage(case: Case, *, frozen: Sequence[FrozenTime] | None = None
+                 ) -> tuple[FlightResults | None, list[AnalysisWarning]]:
+    """The vehicle through the flight of ``case`` (None and no warnings without ``[flight]``):
+    :func:`frozen_time` at every frozen time, one after the other in this process, then
+    :func:`assemble_flight`.
 
     Parameters
     ----------
     case : Case
         The validated case (SI).
+    frozen : sequence of FrozenTime, optional
+        The frozen times already computed elsewhere (``frozen_time(case, i)`` for every i, in
+        order; e.g. on Dask, :func:`flexbooster.sweep.flight.frozen_times_on_dask`): then only
+        :func:`assemble_flight` runs here. None: computed here.
     """
-    from .vehicle_case import VehicleTable
-
-    timeline = timeline_from_case(case)
-    if timeline is None:
+    plan = _plan(case)
+    if plan is None:
+        if frozen is not None:
+            raise ValueError("frozen: given for a case without [flight]")
         return None, []
-    times = flight_times(case)
-    table = case.vehicle if case.vehicle is not None else VehicleTable()
-    base = vehicle_from_case(case)
-    k_max = table.k_max
-    n_modes = cost.region_modes(case, base, k_max=max(k_max, 1))[0]
-    zeta = case.vehicle_damping_ratio
-    lo, hi = flight_omega_range(timeline)
-    points = [timeline.at(float(t)) for t in times]
-    masses, regions_per_time, found_per_time, modes_per_time = [], [], [], []
+    if frozen is None:
+        frozen = [_frozen_at(plan, i) for i in range(plan.times.size)]
+    return _assemble(case, plan, frozen)
+
+
+def assemble_flight(case: Case, frozen: Sequence[FrozenTime]
+                    ) -> tuple[FlightResults, list[AnalysisWarning]]:
+    """The flight of ``case`` from its frozen times: the modes tracked across times by the MAC
+    of their DOF vectors weighted by the structure's mass matrix (Allemang 2003; shell and
+    lumped masses, the same at every time; :func:`flexbooster.flight.track_modes`), the
+    regions followed by their tracked modes (:func:`flexbooster.flight.band_events`, rates by
+    :func:`flexbooster.flight.band_rate`), the forced resonances at the stations
+    (:func:`_forced_events`, in this process), the events worst first, the search gaps and
+    the warnings. ValueError on ``frozen`` unless it is :func:`frozen_time` of this case at
+    every frozen time, in order.
+
+    Parameters
+    ----------
+    case : Case
+        The validated case (SI), with ``[flight]``.
+    frozen : sequence of FrozenTime
+        ``frozen_time(case, i)`` for i = 0 .. (number of frozen times - 1).
+    """
+    plan = _plan(case)
+    if plan is None:
+        raise ValueError("case: has no [flight] to assemble")
+    return _assemble(case, plan, frozen)
+
+
+def _assemble(case: Case, plan: _Plan, frozen: Sequence[FrozenTime]
+              ) -> tuple[FlightResults, list[AnalysisWarning]]:
+    """:func:`assemble_flight` with the case's plan."""
+    frozen = list(frozen)
+    times, points, base, k_max, zeta = plan.times, plan.points, plan.base, plan.k_max, plan.zeta
+    lo, hi = plan.omega_range
+    if len(frozen) != times.size or any(
+            not isinstance(f, FrozenTime) or f.index != i or f.time != times[i]
+            for i, f in enumerate(frozen)) or frozen[0].structural_mass is None:
+        raise ValueError(f"frozen = {len(frozen)} frozen times: must be frozen_time(case, i) "
+                         f"for i = 0..{times.size - 1} of this case, in order")
+    weights = frozen[0].structural_mass  # the structure's mass: the same at every fill
     macs: dict[int, list] = {k: [] for k in range(k_max + 1)}
-    previous = None
-    for p in points:
-        vehicle = _vehicle_at(base, p.fill)
-        masses.append(mass_properties(vehicle))
-        try:
-            modes, found, axial, vectors = _frozen_time(
-                vehicle, p, k_max=k_max, n_modes=n_modes, omega_range=(lo, hi), zeta=zeta,
-                gain=case.thrust.K)
-        except BucklingError as exc:
-            raise CaseError("flight.points", f"F0 = {p.F0:.6g} N at t = {p.time:.6g} s",
-                            f"the thrust buckles the vehicle at this frozen time ({exc})"
-                            ) from None
-        if previous is not None:  # MAC weighted by the structure's mass (fill-independent)
-            for k, (X, M) in vectors.items():
-                macs[k].append(mac_matrix(previous[k], X, mass=M))
-        previous = {k: X for k, (X, _) in vectors.items()}
-        modes_per_time.append(modes)
-        found_per_time.append((found, axial))
-        regions_per_time.append(() if found is None else found.regions)
+    # the MAC between neighbouring times, weighted by the structure's mass
+    for before, after in zip(frozen[:-1], frozen[1:], strict=True):
+        for k in range(k_max + 1):
+            macs[k].append(mac_matrix(before.vectors[k], after.vectors[k], mass=weights[k]))
+    masses = [f.mass for f in frozen]
+    modes_per_time = [f.modes for f in frozen]
+    found_per_time = [(f.regions, f.axial) for f in frozen]
+    regions_per_time = [() if f.regions is None else f.regions.regions for f in frozen]
     harmonics = _track(times, modes_per_time, k_max, macs)
     osc = np.array([p.oscillation for p in points])
     events = _region_events(times, points, found_per_time, harmonics, modes_per_time, osc)

@@ -40,7 +40,7 @@ from rich.text import Text
 
 from ..errors import CaseError
 
-__all__ = ["sweep_command", "main", "local_cluster_config"]
+__all__ = ["sweep_command", "main", "local_cluster_config", "start_client"]
 
 # the exit codes of flexbooster.cli (kept equal; see its module docstring)
 EXIT_OK, EXIT_INTERNAL, EXIT_INPUT, EXIT_INTERRUPTED = 0, 1, 2, 130
@@ -96,8 +96,20 @@ def local_cluster_config() -> dict:
     }
 
 
-def _start_client(stack: ExitStack, scheduler: str | None, workers: int | None):
-    """A Dask client: to ``scheduler``, or to a new local cluster of ``workers`` processes."""
+def start_client(stack: ExitStack, scheduler: str | None, workers: int | None):
+    """A Dask client: to ``scheduler``, or to a new local cluster of ``workers`` processes
+    (one thread each, SIGINT ignored in them: on Ctrl-C or an error this process kills them).
+    CaseError on ``--scheduler`` when it cannot connect.
+
+    Parameters
+    ----------
+    stack : contextlib.ExitStack
+        Closes the client (and the local cluster) when it exits.
+    scheduler : str or None
+        Address of a running scheduler, e.g. ``tcp://host:8786``; None: a local cluster.
+    workers : int or None
+        Worker processes of the local cluster (None: one per core).
+    """
     import dask
     from distributed import Client, LocalCluster
 
@@ -241,7 +253,7 @@ def sweep_command(
     say(f"sweep: {spec.n_points} points over {', '.join(a.name for a in spec.axes)}")
     with ExitStack() as stack:
         serial = workers == 0 and not scheduler
-        client = None if serial else _start_client(stack, scheduler, workers)
+        client = None if serial else start_client(stack, scheduler, workers)
         if client is not None:
             n = len(client.scheduler_info().get("workers", {}))
             say(f"dask: {n} workers, scheduler {client.scheduler.address}")
