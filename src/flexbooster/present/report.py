@@ -101,8 +101,8 @@ SECTIONS: tuple[tuple[str, str], ...] = (
     ("verification", "Verification summary"),
     ("warnings", "Warnings"),
 )
-#: The sections of the memo's method alone: "not applicable" with the reason for a
-#: ``[[vehicle.segments]]`` case.
+#: The sections of the memo's method alone: left out of the report of a
+#: ``[[vehicle.segments]]`` case (its summary names them and says why).
 MEMO_SECTIONS = ("beam-modes", "beam-action", "shell-frequencies", "nodal-patterns",
                  "unstable-frequencies", "campbell")
 
@@ -762,12 +762,17 @@ def render_report(results: Results, svgs: Mapping[str, str] | None = None,
             "flight-campbell", svgs, FLIGHT_FIGURES["flight-campbell"]),
     }
     na = not_applicable_text(results)
-    if na is not None:  # a [[vehicle.segments]] case: the memo's sections say why not
-        body.update({sid: (lambda: f'<p class="note">{_e(na)}.</p>') for sid in MEMO_SECTIONS})
     sections = SECTIONS
+    if na is not None:  # a [[vehicle.segments]] case: the memo's sections left out, named once
+        left_out = [name for sid, name in SECTIONS if sid in MEMO_SECTIONS]
+        sections = tuple(item for item in SECTIONS if item[0] not in MEMO_SECTIONS)
+        summary = body["summary"]
+        body["summary"] = lambda: summary() + (
+            f'<p class="note">Sections of the memo\'s method left out ({_e(na)}): '
+            f'{_e(", ".join(left_out))}.</p>')
     if results.vehicle is not None:  # a case with [vehicle]: before the verification summary
-        sections = (*SECTIONS[:-2], ("vehicle-modes", "Vehicle modes (shell of revolution)"),
-                    *SECTIONS[-2:])
+        sections = (*sections[:-2], ("vehicle-modes", "Vehicle modes (shell of revolution)"),
+                    *sections[-2:])
     if results.flight is not None:  # a case with [flight]: the flight section
         sections = (*sections[:-2], ("flight", "Through the flight"), *sections[-2:])
     title = f"flexbooster report: {case.name}"
