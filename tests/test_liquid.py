@@ -228,6 +228,56 @@ def test_added_mass_split_by_where_the_pressure_acts_sums_to_it(fill, k):
     assert am.end_volume[0] == pytest.approx(-np.pi * 1.5**2, rel=1e-12)
 
 
+@pytest.mark.parametrize(("fill", "k"), [(0.7, 0), (0.7, 1), (0.7, 4), (1.0, 0), (1.0, 1)])
+def test_added_mass_of_few_dofs_equals_the_boundary_inverse_and_the_uncondensed_solve(fill, k):
+    """Few DOFs (fewer than the boundary nodes) take the solve H X = G; many DOFs the boundary
+    block of H^-1. M_a is linear in the basis, so a few DOFs' M_a, pressures and end forces are
+    the block of those of a wider basis (the same DOFs first, then random ones past the
+    boundary count): equal to 1e-12 of the largest entry (round-off only). Independent model
+    (no condensation): H = A + k^2 B assembled over all nodes, Phi = 0 on the free surface
+    and, k >= 1, on the axis, G by the wall trace and the end moments, M_a = rho c_k G^T H^-1 G
+    by a dense solve, 1e-11 of the largest entry (round-off of the condensation; observed
+    up to 4e-13)."""
+    from flexbooster.shell_of_revolution.elements import theta_weight
+    from flexbooster.shell_of_revolution.liquid_mesh import radial_moments, wall_trace
+
+    tank = Tank(stations=(0.0, 1.0, 3.0), radii=(1.5, 1.0, 1.0), fill=fill, density=WATER)
+    lm = liquid_mesh(tank)
+    wall = polyline_wall(tank, lm)
+    nx, ny = lm.shape
+    rng = np.random.default_rng(11)
+    n_wide = nx + 2 * ny + 5  # more DOFs than boundary nodes
+    N = rng.standard_normal((wall.x.size, n_wide))
+    aft, fwd = rng.standard_normal(n_wide), rng.standard_normal(n_wide)
+    wide = added_mass(lm, k, wall, N, aft_end=aft, fwd_end=fwd)
+    few = 6
+    am = added_mass(lm, k, wall, N[:, :few], aft_end=aft[:few], fwd_end=fwd[:few])
+    for got, ref in ((am.matrix, wide.matrix[:few, :few]),
+                     (am.point_force, wide.point_force[:, :few]),
+                     (am.end_force, wide.end_force[:, :few])):
+        np.testing.assert_allclose(got, ref, rtol=0.0, atol=1e-12 * np.abs(ref).max())
+    if fill == 1.0 and k == 0:
+        return  # pure Neumann: the gauge of the dense reference would differ
+    i, j = np.divmod(np.arange(nx * ny), ny)
+    free = np.ones(nx * ny, dtype=bool) if fill == 1.0 else i < nx - 1
+    if k >= 1:
+        free &= j > 0
+    Hg = np.zeros((nx * ny, nx * ny))
+    np.add.at(Hg, (lm.nodes[:, :, None], lm.nodes[:, None, :]), lm.gradient + k * k * lm.hoop)
+    axial, val = wall_trace(lm, wall.x)
+    G = np.zeros((nx * ny, few))
+    np.add.at(G, axial * ny + ny - 1,
+              (val * (wall.weight * wall.r)[:, None])[:, :, None] * N[:, None, :few])
+    if k <= 1:
+        moment = radial_moments(lm, k + 1)
+        G[:ny] -= tank.radii[0] ** (k + 2) * np.outer(moment, aft[:few])
+        if fill == 1.0:
+            G[-ny:] += tank.radii[-1] ** (k + 2) * np.outer(moment, fwd[:few])
+    X = np.linalg.solve(Hg[np.ix_(free, free)], G[free])
+    ref = WATER * theta_weight(k) * G[free].T @ X
+    np.testing.assert_allclose(am.matrix, ref, rtol=0.0, atol=1e-11 * np.abs(ref).max())
+
+
 # --------------------------------------------------------------------------- the wet shell
 
 

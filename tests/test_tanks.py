@@ -150,3 +150,28 @@ def test_full_tank_k0_volume_constraint_with_rigid_motion():
     ref = np.sort(w[w > 1e-6 * w.max()])[:4]
     np.testing.assert_allclose(modes.omega, ref, rtol=1e-8)
     assert modes.rigid_modes[0] == 1
+
+
+def test_shared_harmonics_gives_the_numbers_of_separate_calls():
+    """Within shared_harmonics the thrust prestate (k-independent) is made once for every
+    harmonic and a harmonic's labels once for vehicle_modes and labelled_modal_system: every
+    frequency, shape and label equals that of separate calls outside the block exactly (the
+    same operations on the same inputs). Free cylinder with masses and a half-full tank under
+    inertia relief (the prestate holds the liquid's head), k = 0..3, 6 modes."""
+    from flexbooster.shell_of_revolution import labelled_modal_system, shared_harmonics
+
+    veh = Vehicle([Cylinder(1.5, 6.0, 0.004, **STEEL), Cylinder(1.5, 4.0, 0.004, **STEEL)],
+                  junctions=("rigid-bulkhead",),
+                  masses=(LumpedMass(0.0, 2000.0), LumpedMass(10.0, 500.0)),
+                  tanks=(VehicleTank(0.0, 6.0, 0.5, 1140.0),))
+    F0 = 1.0e6
+    alone = vehicle_modes(veh, k_max=3, n_modes=6, prestress_F0=F0)
+    labels_alone = [labelled_modal_system(veh, k, 6, F0)[1]() for k in range(4)]
+    with shared_harmonics():
+        shared = vehicle_modes(veh, k_max=3, n_modes=6, prestress_F0=F0)
+        labels_shared = [labelled_modal_system(veh, k, 6, F0)[1]() for k in range(4)]
+    for name in ("k", "omega", "order", "type", "segment", "kinetic_share", "shapes"):
+        np.testing.assert_array_equal(getattr(shared, name), getattr(alone, name))
+    for (o1, t1), (o2, t2) in zip(labels_shared, labels_alone, strict=True):
+        np.testing.assert_array_equal(o1, o2)
+        np.testing.assert_array_equal(t1, t2)

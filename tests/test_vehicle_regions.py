@@ -263,6 +263,20 @@ def test_vehicle_labels_and_loaded_frequencies(vehicle_map):
 # --------------------------------------------------------------------------- tier 3
 
 
+def test_without_unloaded_frequencies_the_map_is_the_same(vehicle_map):
+    """unloaded_frequencies=False skips the unloaded eigenproblem of k >= 2, which gives only
+    omega_unloaded: the regions, the loaded frequencies and the periodic matrices are those of
+    the full map exactly (the same operations on the same inputs); omega_unloaded is empty."""
+    fast = vehicle_regions(default_size_vehicle(), F0=F0_DEFAULT, gamma=0.05, omega_min=10.0,
+                           omega_max=100.0, k_min=3, k_max=3, n_modes=10, damping_ratio=0.0,
+                           max_order=2, unloaded_frequencies=False)
+    assert fast.regions == vehicle_map.regions and fast.regions
+    full, h = vehicle_map.harmonic(3), fast.harmonic(3)
+    for name in ("omega_loaded", "stiffness", "excitation", "damping", "basis"):
+        np.testing.assert_array_equal(getattr(h, name), getattr(full, name))
+    assert h.omega_unloaded.shape == (0,) and full.omega_unloaded.shape == (10,)
+
+
 def test_gamma_to_zero():
     """gamma -> 0: undamped first-order simple regions shrink linearly (width ratio 2 between
     gamma = 2e-3 and 1e-3 within 1e-2: Bolotin's first-order width gamma |B1_ii| / w_i);
@@ -349,6 +363,7 @@ GOOD = dict(F0=1e6, gamma=0.05, omega_min=5.0, omega_max=50.0, k_max=2, n_modes=
     ("damping_ratio", -0.01), ("damping_ratio", 1.5), ("boundaries", "yes"),
     ("rtol", np.nan), ("max_order", 0), ("damping_margin", 0.5), ("damping_margin", True),
     ("axial", "no"), ("gimbal_gain", -0.5), ("gimbal_gain", np.nan),
+    ("unloaded_frequencies", "no"),
 ])
 def test_bad_input_names_argument(name, value):
     """Bad input: ValueError whose message starts with the argument's name."""

@@ -336,7 +336,7 @@ def _frozen_time(vehicle, p, *, k_max: int, n_modes: int, omega_range: tuple, ze
                                              n_modes=n_modes, damping_ratio=zeta), vectors
         found = vehicle_regions(vehicle, F0=p.F0, gamma=p.gamma, omega_min=lo, omega_max=hi,
                                 k_min=1, k_max=k_max, n_modes=n_modes, damping_ratio=zeta,
-                                gimbal_gain=gain)
+                                gimbal_gain=gain, unloaded_frequencies=False)
     return modes, found, found.forced_axial, vectors
 
 

@@ -146,7 +146,8 @@ def forced_axial(
     zeta = in_unit_interval("damping_ratio", damping_ratio)
     ms, labels, w2, V = loaded_modes(vehicle, 0, n_modes, F0,
                                      supported_forward_end=supported_forward_end,
-                                     elements_per_segment=elements_per_segment, order=order)
+                                     elements_per_segment=elements_per_segment, order=order,
+                                     unloaded_frequencies=False)  # not used here
     omega = np.sqrt(w2)
     # generalised force per unit axial aft load of the loaded modes; a mode is defined up to
     # its sign: each is taken with phi_n >= 0 (else the sign depends on round-off, e.g. the

@@ -127,7 +127,7 @@ def in_unit_interval(name: str, value) -> float:
 
 def loaded_modes(vehicle, k: int, n_modes: int, F0: float, *,
                  supported_forward_end: bool | None,
-                 elements_per_segment, order) -> tuple:
+                 elements_per_segment, order, unloaded_frequencies: bool = True) -> tuple:
     """(modal system, its labels, w2, V): eigenpairs of K_e + K_g in the mass-normalised loaded
     basis (V = I to round-off); BucklingError with the load factor when a loaded omega^2 <= 0.
 
@@ -141,10 +141,14 @@ def loaded_modes(vehicle, k: int, n_modes: int, F0: float, *,
         Steady thrust (N), > 0.
     supported_forward_end, elements_per_segment, order
         As :func:`.regions.harmonic_system`.
+    unloaded_frequencies : bool
+        Also the unloaded frequencies (``ms.omega_unloaded``; False: empty, one eigenproblem
+        fewer; :func:`flexbooster.shell_of_revolution.labelled_modal_system`).
     """
     mesh = {"elements_per_segment": elements_per_segment, "order": order}
     ms, labels = labelled_modal_system(vehicle, k, n_modes, F0,
-                                       supported_forward_end=supported_forward_end, **mesh)
+                                       supported_forward_end=supported_forward_end,
+                                       unloaded_frequencies=unloaded_frequencies, **mesh)
     w2, V = np.linalg.eigh(ms.stiffness + ms.geometric)
     if w2[0] <= 0.0:
         lam = float(buckling_load(vehicle, k, F0=F0, supported_forward_end=supported_forward_end,

@@ -180,7 +180,7 @@ def _range(omega_min, omega_max) -> tuple[float, float]:
 def harmonic_system(
     vehicle: Vehicle, k: int, *, F0: float, n_modes: int = 20, damping_ratio: float = 0.01,
     supported_forward_end: bool | None = None, elements_per_segment: int | tuple | None = None,
-    order: int = DEFAULT_ORDER,
+    order: int = DEFAULT_ORDER, unloaded_frequencies: bool = True,
 ) -> HarmonicSystem:
     """Periodic modal system of harmonic k under T(t) = F0 (1 - gamma cos Omega t) (Bolotin 1964,
     sec. 8); BucklingError (with the load factor) when F0 buckles the harmonic.
@@ -202,6 +202,9 @@ def harmonic_system(
         (:func:`flexbooster.shell_of_revolution.prestress.load_path`).
     elements_per_segment, order
         The mesh (:func:`flexbooster.shell_of_revolution.mesh_vehicle`).
+    unloaded_frequencies : bool
+        Also solve the unloaded eigenproblem for ``omega_unloaded`` (which only describes the
+        harmonic); False: ``omega_unloaded`` empty, every other field the same.
     """
     vehicle = _vehicle(vehicle)
     k = count("k", k, 2, K_MAX)
@@ -211,7 +214,8 @@ def harmonic_system(
     load_path(vehicle, supported_forward_end)  # checks the flag
     ms, labels, w2, V = loaded_modes(vehicle, k, n_modes, F0,
                                      supported_forward_end=supported_forward_end,
-                                     elements_per_segment=elements_per_segment, order=order)
+                                     elements_per_segment=elements_per_segment, order=order,
+                                     unloaded_frequencies=unloaded_frequencies)
     omega_l = np.sqrt(w2)
     n = omega_l.size
     mode_order, mode_type = labels()
@@ -295,7 +299,7 @@ def vehicle_regions(
     order: int = DEFAULT_ORDER, boundaries: bool = False, gamma_max: float = 0.5,
     n_gamma: int = 11, rtol: float = 1e-9, step_phase: float = 0.12,
     max_order: int | None = None, damping_margin: float | None = floquet.DAMPING_MARGIN,
-    axial: bool = True, gimbal_gain: float = 0.0,
+    axial: bool = True, gimbal_gain: float = 0.0, unloaded_frequencies: bool = True,
 ) -> VehicleRegions:
     """Parametric instability regions of every harmonic k_min..k_max in [omega_min, omega_max];
     a harmonic past a size limit of the toolkit is a SearchGap. ValueError for bad input,
@@ -322,6 +326,9 @@ def vehicle_regions(
         Options of :func:`flexbooster.floquet.instability_regions`.
     axial : bool
         Also the k = 0 forced axial resonances (:func:`.axial.forced_axial`).
+    unloaded_frequencies : bool
+        The harmonics' ``omega_unloaded`` for k >= 2 (:func:`harmonic_system`; False: empty,
+        one eigenproblem per harmonic fewer, the regions the same).
     """
     vehicle = _vehicle(vehicle)
     F0 = positive("F0", F0)
@@ -332,7 +339,8 @@ def vehicle_regions(
     k_min = count("k_min", k_min, 1, k_max)
     n_modes = count("n_modes", n_modes, 1, 2000)
     gimbal = nonnegative("gimbal_gain", gimbal_gain)
-    for name, flag in (("boundaries", boundaries), ("axial", axial)):
+    for name, flag in (("boundaries", boundaries), ("axial", axial),
+                       ("unloaded_frequencies", unloaded_frequencies)):
         if not isinstance(flag, bool | np.bool_):
             raise ValueError(f"{name} = {flag!r}: must be a bool")
     if boundaries:
@@ -351,7 +359,7 @@ def vehicle_regions(
                                  gimbal_gain=gimbal, **mesh)
         else:
             h = harmonic_system(vehicle, k, F0=F0, n_modes=n_modes, damping_ratio=zeta,
-                                **mesh)
+                                unloaded_frequencies=unloaded_frequencies, **mesh)
         harmonics.append(h)
         certs.append(floquet.stability_certificate(*h.periodic(gamma)))
         try:

@@ -194,10 +194,17 @@ def added_mass(mesh: LiquidMesh, k: int, wall: WallQuadrature, displacement: np.
         border = np.zeros(n_dof)  # gauge: the sum of Phi over the boundary nodes is 0
         border[bd] = 1.0
         H = sp.bmat([[H, border[:, None]], [border[None, :], None]]).tocsc()
-    rhs = np.zeros((H.shape[0], bd.size))
-    rhs[bd, np.arange(bd.size)] = 1.0
-    Z = splu(H, permc_spec="MMD_AT_PLUS_A").solve(rhs)[bd]
-    P = tank.density * theta_weight(k) * (0.5 * (Z + Z.T)) @ Gb  # node pressures x weights
+    lu = splu(H, permc_spec="MMD_AT_PLUS_A")
+    # node pressures x weights P = rho c_k Z G, Z the boundary block of H^-1
+    if n < bd.size:  # fewer DOFs than boundary nodes: solve H X = G directly (n columns)
+        rhs = np.zeros((H.shape[0], n))
+        rhs[bd] = Gb
+        P = tank.density * theta_weight(k) * lu.solve(rhs)[bd]
+    else:  # Z by its bd.size columns, symmetrised
+        rhs = np.zeros((H.shape[0], bd.size))
+        rhs[bd, np.arange(bd.size)] = 1.0
+        Z = lu.solve(rhs)[bd]
+        P = tank.density * theta_weight(k) * (0.5 * (Z + Z.T)) @ Gb
     M = Gb.T @ P
     # the same product split by where the pressure acts: per wall point, per end
     node_p = np.zeros((nodes.size, n))

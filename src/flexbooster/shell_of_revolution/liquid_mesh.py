@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from functools import cache
 
 import numpy as np
 import scipy.sparse as sp
@@ -169,16 +170,39 @@ class LiquidMesh:
         return self.x_nodes.size, self.eta_nodes.size
 
 
+@cache
 def _gll(p: int) -> np.ndarray:
-    """Gauss-Lobatto-Legendre points of degree p: +-1 and the zeros of P_p' (Jacobi(1, 1))."""
-    return np.concatenate(([-1.0], np.sort(roots_jacobi(p - 1, 1.0, 1.0)[0]), [1.0]))
+    """Gauss-Lobatto-Legendre points of degree p: +-1 and the zeros of P_p' (Jacobi(1, 1));
+    once per degree (read-only)."""
+    out = np.concatenate(([-1.0], np.sort(roots_jacobi(p - 1, 1.0, 1.0)[0]), [1.0]))
+    out.setflags(write=False)
+    return out
+
+
+@cache
+def _legendre_to_lagrange(p: int) -> tuple[np.ndarray, np.ndarray]:
+    """The Legendre coefficients of the degree-p Lagrange basis on the GLL points and the
+    Legendre derivative matrix (degree p -> p - 1), once per degree (read-only)."""
+    coef = np.linalg.inv(leg.legvander(_gll(p), p))
+    deriv = leg.legder(np.eye(p + 1), axis=0)
+    for arr in (coef, deriv):
+        arr.setflags(write=False)
+    return coef, deriv
+
+
+@cache
+def _gauss(n: int) -> tuple[np.ndarray, np.ndarray]:
+    """Gauss-Legendre points and weights of ``n`` points, once per n (read-only)."""
+    out = leg.leggauss(n)
+    for arr in out:
+        arr.setflags(write=False)
+    return out
 
 
 def _lagrange(p: int, xi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Values and d/dxi of the degree-p Lagrange basis on the GLL points at ``xi``."""
-    coef = np.linalg.inv(leg.legvander(_gll(p), p))
-    deriv = leg.legvander(xi, p - 1) @ leg.legder(np.eye(p + 1), axis=0)
-    return leg.legvander(xi, p) @ coef, deriv @ coef
+    coef, deriv = _legendre_to_lagrange(p)
+    return leg.legvander(xi, p) @ coef, (leg.legvander(xi, p - 1) @ deriv) @ coef
 
 
 def _nodes(breaks: np.ndarray, p: int) -> np.ndarray:
@@ -244,7 +268,7 @@ def liquid_mesh(tank: Tank, *, order: int = LIQUID_ORDER, refinement: int = 1) -
     xm, hx = 0.5 * (xb[ex] + xb[ex + 1]), 0.5 * (xb[ex + 1] - xb[ex])
     em, he = 0.5 * (eta[ey] + eta[ey + 1]), 0.5 * (eta[ey + 1] - eta[ey])
     slope = (tank.radius(xb[ex + 1]) - tank.radius(xb[ex])) / (2.0 * hx)
-    q, w = leg.leggauss(p + 3)
+    q, w = _gauss(p + 3)
     val, der = _lagrange(p, q)
     R = tank.radius(xm)[:, None, None] + (slope * hx)[:, None, None] * q[None, :, None]
     et = em[:, None, None] + he[:, None, None] * q[None, None, :]  # (e, g_x, g_eta)
@@ -277,7 +301,7 @@ def _radial_quadrature(mesh: LiquidMesh):
     """Gauss points eta (e, g), weights (e, g), Lagrange values (g, p + 1) and the radial
     node of each (e, p + 1) of the radial elements."""
     p, eb = mesh.order, mesh.eta_breaks
-    q, w = leg.leggauss(p + 3)
+    q, w = _gauss(p + 3)
     em, he = 0.5 * (eb[1:] + eb[:-1]), 0.5 * (eb[1:] - eb[:-1])
     loc = p * np.arange(em.size)[:, None] + np.arange(p + 1)[None, :]
     return em[:, None] + he[:, None] * q, he[:, None] * w, _lagrange(p, q)[0], loc

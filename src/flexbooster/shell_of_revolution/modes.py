@@ -179,8 +179,9 @@ class ModalSystem:
         Circumferential wave number.
     omega : ndarray, shape (n,)
         Natural frequencies of the basis modes (rad/s), loaded or not; 0 for the rigid ones.
-    omega_unloaded : ndarray, shape (n,)
-        The harmonic's lowest frequencies without thrust (rad/s).
+    omega_unloaded : ndarray, shape (n,) or (0,)
+        The harmonic's lowest frequencies without thrust (rad/s); empty when not asked for
+        (:func:`labelled_modal_system` ``unloaded_frequencies=False``).
     mass, stiffness, geometric : ndarray, shape (n, n)
         Modal mass (identity), K_e and K_g of the thrust F0 (1/s^2).
     F0 : float
@@ -358,8 +359,9 @@ def _harmonic(vehicle: Vehicle, mesh: Mesh, k: int, *, F0: float, supported: boo
 
 def _new_harmonic(vehicle: Vehicle, mesh: Mesh, k: int, *, F0: float, supported: bool | None,
                   geometric: bool) -> _Harmonic:
-    pre = thrust_prestate(vehicle, mesh, F0, supported_forward_end=supported) if geometric \
-        else None
+    pre = _shared(("prestate", id(vehicle), id(mesh), F0, supported), (vehicle, mesh),
+                  lambda: thrust_prestate(vehicle, mesh, F0, supported_forward_end=supported)
+                  ) if geometric else None  # k-independent: once for every harmonic
     hm = harmonic_matrices(vehicle, mesh, k, prestate=pre)
     M, K, G, dmap, ke = hm.mass, hm.stiffness, hm.geometric, hm.dmap, hm.element_stiffness
     R = _rigid_subspace(mesh, dmap, k)
@@ -529,6 +531,18 @@ def _sample(mesh: Mesh, dmap, vecs: np.ndarray, xi: np.ndarray):
 
 
 def _labels(mesh: Mesh, h: _Harmonic, vecs: np.ndarray, k: int, n_pts_per_el: int):
+    """(kinetic shares, segment, meridian order, type, sampled shapes) of the modes ``vecs``,
+    once per harmonic, vectors and sampling within :func:`shared_harmonics` (read-only)."""
+    def make():
+        out = _new_labels(mesh, h, vecs, k, n_pts_per_el)
+        _readonly(*out)
+        return out
+
+    return _shared(("labels", id(mesh), id(h), id(vecs), k, n_pts_per_el), (mesh, h, vecs),
+                   make)
+
+
+def _new_labels(mesh: Mesh, h: _Harmonic, vecs: np.ndarray, k: int, n_pts_per_el: int):
     ref = reference_element(mesh.order)
     m = vecs.shape[1]
     # kinetic shares by Gauss quadrature of rho h r (U^2, V^2, W^2)
@@ -783,6 +797,7 @@ def labelled_modal_system(
     vehicle: Vehicle, k: int, n_modes: int, F0: float, *,
     supported_forward_end: bool | None = None, rigid: bool = False, loaded: bool = True,
     elements_per_segment: int | tuple | None = None, order: int = DEFAULT_ORDER,
+    unloaded_frequencies: bool = True,
 ) -> tuple[ModalSystem, Callable[[], tuple[np.ndarray, np.ndarray]]]:
     """:func:`modal_system` and ``labels() -> (order, type)`` of its elastic basis modes, each
     (n - n_rigid,), evaluated when called (an omega^2 <= 0 raises then).
@@ -791,6 +806,9 @@ def labelled_modal_system(
     ----------
     vehicle, k, n_modes, F0, supported_forward_end, rigid, loaded, elements_per_segment, order
         As :func:`modal_system`.
+    unloaded_frequencies : bool
+        With ``loaded``, also solve the unloaded eigenproblem for ``omega_unloaded``; False
+        skips it (``omega_unloaded`` then empty; every other field the same).
     """
     _, F0 = _check_common(vehicle, 0, F0)
     k = count("k", k, 0, K_MAX)
@@ -805,8 +823,10 @@ def labelled_modal_system(
     unloaded = np.zeros(0)
     if n_elastic:
         vals, vecs = _solve(h, loaded=loaded, n_modes=n_elastic, w2_max=None)
-        unloaded = _solve(h, loaded=False, n_modes=n_elastic, w2_max=None)[0] if loaded \
-            else vals
+        if not loaded:
+            unloaded = vals
+        elif unloaded_frequencies:
+            unloaded = _solve(h, loaded=False, n_modes=n_elastic, w2_max=None)[0]
     if vals.size < n_elastic:
         raise ValueError(f"n_modes = {n_modes}: the mesh has only {vals.size + n_rigid} modes "
                          f"for k = {k}")
@@ -825,7 +845,8 @@ def labelled_modal_system(
                     a * np.sin(frame) + b * np.cos(frame), chi], axis=1)  # global frame
     zeros = np.zeros(n_rigid)
     ms = ModalSystem(k=k, omega=np.concatenate([zeros, np.sqrt(np.maximum(vals, 0.0))]),
-                     omega_unloaded=np.concatenate([zeros, np.sqrt(np.maximum(unloaded, 0.0))]),
+                     omega_unloaded=np.concatenate([zeros, np.sqrt(np.maximum(unloaded, 0.0))])
+                     if unloaded_frequencies or not loaded else np.zeros(0),
                      mass=np.eye(n_modes), stiffness=stiff, geometric=kg, F0=F0,
                      n_rigid=n_rigid, aft_edge=aft)
 
