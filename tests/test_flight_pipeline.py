@@ -252,6 +252,18 @@ def test_a_bare_shell_flight_has_no_forced_response_warning():
     assert "flight-forced-response" not in [w.code for w in warnings]
 
 
+def test_no_resonant_peak_above_the_critical_damping_ratio():
+    """A damping ratio past 1/sqrt(2): |H(Omega)| of a mode falls monotonically from Omega = 0
+    (no resonant peak, Meirovitch 1986, sec. 3.4): no forced event, and a note saying why
+    (the forced case of the next tests with zeta = 0.75, k_max = 0)."""
+    data = _forced_case(0.0)
+    data["vehicle"].update(k_max=0, damping_ratio=0.75)
+    flight, warnings = flight_stage(load_case(data))
+    assert not [e for e in flight.events if e.mechanism == "forced"]
+    assert any("1/sqrt(2)" in n for n in flight.notes)
+    assert "flight-forced-response" not in [w.code for w in warnings]
+
+
 def _forced_case(misalignment: float) -> dict:
     """CASE with k = 0..1 and an oscillation band [200, 300] rad/s for the 40 s: it holds the
     first axial mode (253.9 rad/s, k = 0) and the first bending mode (216.3 rad/s, k = 1) of the

@@ -10,6 +10,7 @@ follows and ranks across them (docs/theory/flight.md, "Use in the pipeline").
 from __future__ import annotations
 
 import dataclasses
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -424,6 +425,9 @@ def _forced_events(case: Case, base, times, points, harmonics, osc, *, zeta: flo
     ks = (0, 1) if t.misalignment != 0.0 else (0,)
     notes = [] if len(ks) == 2 else [
         "no lateral (k = 1) forced resonances: thrust.misalignment = 0 (no lateral force)"]
+    if zeta >= math.sqrt(0.5):  # |H| falls monotonically from Omega = 0: no resonant peak
+        return [], [], notes + [f"no forced resonance peaks: modal damping ratio {zeta:g} >= "
+                                "1/sqrt(2) (no resonant peak)"]
     w = min(PEAK_WINDOW * zeta, 0.5)
     lo, hi = omega_range
     stations = forced_stations(case, base)[0]
@@ -440,54 +444,54 @@ def _forced_events(case: Case, base, times, points, harmonics, osc, *, zeta: flo
                                                     om * (1.0 + zeta), osc[a:b, 0],
                                                     osc[a:b, 1]):
                     runs.append((k, j, a, b))
-    if not runs:
-        return [], [], notes
     peak = {(k, j): np.zeros(times.size) for k, j, _, _ in runs}
     place = {(k, j): np.zeros(times.size, dtype=int) for k, j, _, _ in runs}
     share = {(k, j): 0.0 for k, j, _, _ in runs}
-    names = None
+    names: list[str] = []
+    failed: dict[int, str] = {}
     for i, p in enumerate(points):
-        want = [(k, j) for k, j, a, b in runs if a <= i < b]
-        if not want:
-            continue
-        centres = np.array([by_k[k].frequencies[i, j] for k, j in want])
-        # the model's basis follows the grid's top (its modes below 4 Omega_max): the range
-        # searched, widened to every window, so that it is the same at every time it covers
-        grid = np.array([min(lo, centres.min()) * (1.0 - w), max(hi, centres.max()) * (1.0 + w)])
-        try:
-            r = forced_response(_vehicle_at(base, p.fill), F0=p.F0, amplitude=p.gamma,
-                                Omega=grid, damping_ratio=zeta, misalignment=t.misalignment,
-                                gimbal_gain=t.K, pitch_damping_ratio=case.damping.pitch_ratio,
-                                stations=stations, harmonics=ks)
-        except (UndampedResonanceError, IllConditionedError, BucklingError, ValueError) as exc:
-            return [], [AnalysisWarning(
-                "flight-forced-response", "vehicle", "forced resonances not computed along "
-                f"the flight (at t = {p.time:.6g} s): {exc}")], notes
-        names = [s.name for s in r.stations]
         for k in ks:
-            mine = [(n, (kk, j)) for n, (kk, j) in enumerate(want) if kk == k]
-            if not mine:
+            want = [j for kk, j, a, b in runs if kk == k and a <= i < b]
+            if not want or k in failed:
                 continue
-            a_max, _, where = window_peaks(r, k=k, omega=centres[[n for n, _ in mine]],
-                                           half_width=w)
-            model = r.models[r.harmonics.index(k)]
+            centres = by_k[k].frequencies[i, want]
+            # the model's basis follows the grid's top (its modes below 4 Omega_max): the range
+            # searched, widened to every window, the same at every time it covers
+            grid = np.array([min(lo, centres.min()) * (1.0 - w),
+                             max(hi, centres.max()) * (1.0 + w)])
+            try:
+                r = forced_response(_vehicle_at(base, p.fill), F0=p.F0, amplitude=p.gamma,
+                                    Omega=grid, damping_ratio=zeta,
+                                    misalignment=t.misalignment, gimbal_gain=t.K,
+                                    pitch_damping_ratio=case.damping.pitch_ratio,
+                                    stations=stations, harmonics=(k,))
+            except (UndampedResonanceError, IllConditionedError, BucklingError,
+                    ValueError) as exc:
+                failed[k] = f"at t = {p.time:.6g} s: {exc}"
+                continue
+            names = [st.name for st in r.stations]
+            a_max, _, where = window_peaks(r, k=k, omega=centres, half_width=w)
+            model = r.models[0]
             f2 = model.load[model.n_rigid:] ** 2
             basis = model.omega_modes[model.n_rigid:]
-            for (n, key), g, st in zip(mine, a_max, where, strict=True):
-                peak[key][i], place[key][i] = g / STANDARD_GRAVITY, st
-                c = int(np.argmin(np.abs(basis - centres[n]))) if basis.size else -1
-                matched = c >= 0 and abs(basis[c] - centres[n]) <= BASIS_MATCH_RTOL * centres[n]
+            for j, c_j, g, st in zip(want, centres, a_max, where, strict=True):
+                peak[(k, j)][i], place[(k, j)][i] = g / STANDARD_GRAVITY, st
+                c = int(np.argmin(np.abs(basis - c_j))) if basis.size else -1
+                matched = c >= 0 and abs(basis[c] - c_j) <= BASIS_MATCH_RTOL * c_j
                 # a mode the forced model does not resolve counts as forced (conservative)
                 f = f2[c] / max(float(f2.max()), 1e-300) if matched else 1.0
-                share[key] = max(share[key], f)
+                share[(k, j)] = max(share[(k, j)], f)
+    warnings = [AnalysisWarning("flight-forced-response", "vehicle",
+                                f"the k = {k} forced resonances are not computed along the "
+                                f"flight ({why})") for k, why in sorted(failed.items())]
     events = []
     for k, j, a, b in runs:
-        if share[(k, j)] < MIN_PARTICIPATION:
-            continue  # not forced by the thrust (torsion)
+        if k in failed or share[(k, j)] < MIN_PARTICIPATION:
+            continue  # not computed (the warning says why), or not forced by the thrust
         h = by_k[k]
         station = names[place[(k, j)][a + int(np.argmax(peak[(k, j)][a:b]))]]
         events += resonance_events(
             times[a:b], h.frequencies[a:b, j], osc[a:b], zeta=zeta,
             steady_peak_g=peak[(k, j)][a:b], modes=f"{h.types[a, j]} (k = {k}, mode {j})",
             k=k, station=station)
-    return events, [], notes
+    return events, warnings, notes
