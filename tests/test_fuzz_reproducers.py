@@ -801,3 +801,56 @@ def test_fuzz_reproducer_singular_static_correction_is_a_warning():
         res = analyze(flexbooster.load_case(_FUZZ_SINGULAR_STATIC), figures=False)
     assert res.forced_response is None
     assert ("forced-response-skipped", "booster") in [(w.code, w.field) for w in res.warnings]
+
+
+#: Found by the independent fuzz (benchmarks/fuzz_independent.py, seed 36, case 25): a tank
+#: whose aft end is the forward end of a cone (a continuous cone-cylinder junction): the
+#: cone's last element, whose computed end x1 + l cos(phi) lies 4e-15 m past the tank's aft
+#: station, was taken as wetted, and its quadrature points (at x_a, with the cone's normal)
+#: failed the wall check, an internal ValueError in the modes.  Fixed: an element is wetted
+#: when it overlaps the tank by more than the round-off of its end (STATION_RTOL).
+_FUZZ_CONE_TANK_SEGMENTS = [
+    {"kind": "cylinder", "radius": 1.52, "length": 19.1277, "thickness": 0.004},
+    {"kind": "cone", "radius_aft": 0.88629, "radius_fwd": 0.836508, "length": 0.275751,
+     "thickness": 0.00233234, "junction": "rigid-bulkhead"},
+    {"kind": "cylinder", "radius": 0.836508, "length": 2.5, "thickness": 0.004},
+]
+
+
+def test_fuzz_reproducer_tank_aft_of_a_cone_end_is_wetted_only_on_its_wall():
+    """Source: the wetted meridian of a cylindrical tank of radius R filled to height h has
+    length h (closed form: sum of the quadrature weights, ds = dx on a cylinder, to 1e-12
+    relative), every point at r = R with the outward normal (0, 1)."""
+    from flexbooster.shell_of_revolution.assembly import mesh_vehicle
+    from flexbooster.shell_of_revolution.wetted_wall import vehicle_tank, wetted_wall
+
+    segments = copy.deepcopy(_FUZZ_CONE_TANK_SEGMENTS)
+    aft = 19.1277 + 0.275751  # the cone's forward end, as the fuzz case's remapped station
+    data = {"name": "fuzz", "thrust": {"F0": "1 MN", "gamma": 0.05, "K": 0.5,
+                                       "omega_min": "1 Hz", "omega_max": "20 Hz", "n_omega": 5},
+            "vehicle": {"E": "72.4 GPa", "nu": 0.33, "rho": "2800 kg/m^3", "k_max": 1,
+                        "n_modes": 2, "segments": segments,
+                        "tanks": [{"aft": aft, "fwd": aft + 2.5, "fill": 0.8,
+                                   "density": 1440.0}]}}
+    vehicle = vehicle_from_case(flexbooster.load_case(data))
+    mesh = mesh_vehicle(vehicle)
+    tank = vehicle_tank(vehicle, aft=aft, fwd=aft + 2.5, fill=0.8, density=1440.0)
+    for k in (0, 1, 2):
+        wall = wetted_wall(vehicle, mesh, tank, k).wall
+        assert math.isclose(wall.weight.sum(), tank.surface - tank.aft, rel_tol=1e-12)
+        np.testing.assert_allclose(wall.r, 0.836508, rtol=1e-12)
+        np.testing.assert_allclose(wall.normal, [[0.0, 1.0]] * wall.x.size, atol=1e-12)
+
+
+def test_fuzz_reproducer_case_with_a_tank_at_a_cone_end_runs_its_modes():
+    """The fuzz case's geometry through the modes (the stage that failed): finite frequencies,
+    the liquid's slosh among them (independent check of finiteness only: the value is the
+    tests of test_liquid.py's)."""
+    data = {"name": "fuzz", "thrust": {"F0": "1 MN", "gamma": 0.05, "K": 0.5,
+                                       "omega_min": "1 Hz", "omega_max": "20 Hz", "n_omega": 5},
+            "vehicle": {"E": "72.4 GPa", "nu": 0.33, "rho": "2800 kg/m^3", "k_max": 1,
+                        "n_modes": 2, "segments": copy.deepcopy(_FUZZ_CONE_TANK_SEGMENTS),
+                        "tanks": [{"aft": 19.1277 + 0.275751, "fwd": 19.1277 + 0.275751 + 2.5,
+                                   "fill": 0.8, "density": 1440.0}]}}
+    survey = analysis.analyze_vehicle(flexbooster.load_case(data), k_max=1, views=False)
+    json.loads(dumps_finite(survey.to_dict()))

@@ -92,7 +92,11 @@ def wetted_wall(vehicle: Vehicle, mesh: Mesh, tank: Tank, k: int, *,
     x2 = mesh.x1 + mesh.length * mesh.cos_phi
     cuts = np.unique(np.concatenate(([tank.aft, tank.surface], np.ravel(breaks))))
     xi, wt, els = [], [], []
-    for e in np.flatnonzero((x2 > tank.aft) & (mesh.x1 < tank.surface) & (mesh.cos_phi > 0)):
+    # the elements that overlap the wetted wall by more than the round-off of their computed
+    # ends (x2 = x1 + l cos phi): not the neighbour that ends at x_a within it
+    tol = STATION_RTOL * x2.max()
+    wet = (x2 > tank.aft + tol) & (mesh.x1 < tank.surface - tol) & (mesh.cos_phi > 0)
+    for e in np.flatnonzero(wet):
         lo, hi = max(mesh.x1[e], tank.aft), min(x2[e], tank.surface)
         c = np.concatenate(([lo], cuts[(cuts > lo) & (cuts < hi)], [hi]))
         mid, half = 0.5 * (c[1:] + c[:-1]), 0.5 * np.diff(c)

@@ -140,7 +140,8 @@ def _stop_workers(cluster, failed: bool) -> None:  # noqa: ANN001
     would wait for the running tasks and print each cancelled one."""
     if not failed:
         return
-    logging.getLogger("distributed").setLevel(logging.CRITICAL)
+    for name in ("distributed", "tornado"):  # tornado: a callback of a killed worker's comm
+        logging.getLogger(name).setLevel(logging.CRITICAL)
     for nanny in list(cluster.workers.values()):
         nanny.auto_restart = False
         pid = getattr(getattr(nanny, "process", None), "pid", None)
@@ -151,13 +152,22 @@ def _stop_workers(cluster, failed: bool) -> None:  # noqa: ANN001
 
 def _close_cluster(cluster, failed: bool) -> None:  # noqa: ANN001
     """Close the local cluster: gracefully after a finished sweep, within
-    :data:`_STOP_SECONDS` after an error or Ctrl-C (its workers are dead by then: the rest
-    lives in this process and ends with it)."""
-    if not failed:
-        cluster.close()
-        return
-    with contextlib.suppress(Exception):
-        cluster.close(timeout=_STOP_SECONDS)
+    :data:`_STOP_SECONDS` after an error or Ctrl-C, also one during the graceful close (its
+    workers killed first: the rest lives in this process and ends with it). A close cut short
+    leaves the cluster open, and distributed's exit handler would close it again for up to
+    10 s: it is told not to."""
+    try:
+        if not failed:
+            cluster.close()
+    except BaseException:  # Ctrl-C during the graceful close: as after an interrupt
+        failed = True
+        raise
+    finally:
+        if failed:
+            _stop_workers(cluster, True)
+            with contextlib.suppress(Exception):
+                cluster.close(timeout=_STOP_SECONDS)
+            cluster.shutdown_on_close = False  # distributed.deploy.spec.close_clusters skips it
 
 
 #: Longest wait (s) for the local cluster's close after an error or Ctrl-C.
