@@ -854,3 +854,27 @@ def test_fuzz_reproducer_case_with_a_tank_at_a_cone_end_runs_its_modes():
                                    "fill": 0.8, "density": 1440.0}]}}
     survey = analysis.analyze_vehicle(flexbooster.load_case(data), k_max=1, views=False)
     json.loads(dumps_finite(survey.to_dict()))
+
+
+def test_fuzz_reproducer_critical_damping_of_a_tongue_on_a_steep_ray():
+    """Independent fuzz, case 321 (pitch gamma = 0.99, tongue r = 2): the critical damping's
+    bracket doubles zeta up to 0.998, where the ray q = g x / 2 has g = 0.99 / (1 - 0.998^2)
+    = 248 and crosses the tongue's midline far below x = r^2 / 4, where the midline search
+    stopped ("tongue edge not bracketed", internal error). Now it searches down to x = 0 (the
+    midline function is -r^2 there). Evidence: the edges returned are where the ray meets
+    b_2 and a_2 (A&S 20.2, evaluated by characteristic_value: x - a_r(g x / 2) = 0 to 1e-9
+    relative), and the critical damping is a root of the damped tongue's peak growth: the
+    tongue is open just below it and closed just above (rel. 1e-6)."""
+    from flexbooster.floquet import mathieu
+
+    g = 0.99 / (1.0 - 0.998**2)
+    x_b, x_a = mathieu.tongue_edges(2, g)
+    assert 0.0 < x_b < x_a < 4.0 / 4.0
+    for kind, x in (("b", x_b), ("a", x_a)):
+        assert abs(x - mathieu.characteristic_value(kind, 2, 0.5 * g * x)) <= 1e-9 * x
+    zeta = mathieu.tongue_critical_damping(2, 0.99)
+    assert 0.0 < zeta < mathieu.ZETA_SEARCH_MAX
+    for z, is_open in ((zeta * (1.0 - 1e-6), True), (zeta * (1.0 + 1e-6), False)):
+        g_z = 0.99 / (1.0 - z * z)  # the damped tongue's ray (Bolotin 1964, sec. 6)
+        assert (mathieu.damped_tongue(*mathieu.tongue_edges(2, g_z), g_z, z)
+                is not None) == is_open

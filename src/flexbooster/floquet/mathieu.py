@@ -445,7 +445,9 @@ def tongue_edges(r: int, g: float) -> tuple[float, float] | None:
         xm = x0
     else:
         direction = -1.0 if f0 > 0.0 else 1.0
-        limit = 0.25 * x0 if direction < 0 else 4.0 * x0 + 4.0
+        # downwards as far as x = 0, where mid = -r^2 < 0 (a_r(0) = b_r(0) = r^2): a steep ray
+        # (g >> 1, a heavily damped tongue) crosses the midline far below r^2
+        limit = 0.0 if direction < 0 else 4.0 * x0 + 4.0
         x1 = _bracket(mid, x0, f0, direction, 0.01 * x0, limit)
         xm = optimize.brentq(mid, min(x0, x1), max(x0, x1), xtol=1e-15 * x0, rtol=4 * _EPS)
     qm = 0.5 * g * xm
