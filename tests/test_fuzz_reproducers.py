@@ -7,6 +7,7 @@ import copy
 import json
 import math
 import os
+import tomllib
 import warnings
 from pathlib import Path
 
@@ -16,6 +17,7 @@ import pytest
 import flexbooster
 from flexbooster import analysis, cost
 from flexbooster.analysis import analyze
+from flexbooster.case import memo_case_text
 from flexbooster.errors import CaseError
 from flexbooster.memo import beam_action as ba
 from flexbooster.memo import pitch
@@ -878,3 +880,28 @@ def test_fuzz_reproducer_critical_damping_of_a_tongue_on_a_steep_ray():
         g_z = 0.99 / (1.0 - z * z)  # the damped tongue's ray (Bolotin 1964, sec. 6)
         assert (mathieu.damped_tongue(*mathieu.tongue_edges(2, g_z), g_z, z)
                 is not None) == is_open
+
+
+def test_fuzz_reproducer_uncertified_shell_harmonics_are_counted_up_front():
+    """Independent fuzz, case 136 (the memo's two cylinders as one vehicle, 1 % damping, Omega
+    5-2000 rad/s, a 20 s budget): the estimate assumed that damping certifies every harmonic
+    k >= 2, 13 of 20 were not, and the run took minutes. Now each harmonic's certificate
+    (floquet.stability_certificate, the stage's own) decides: k = 2 is certified and costs
+    nothing, k = 3 (of 3..20) is not and is priced from its counted work, and the case is refused
+    up front in one line naming the part (the refusal, not the timing, is the evidence)."""
+    data = tomllib.loads(memo_case_text())
+    data["booster"].update(thickness="3.85682 mm", E="10.5e6 psi", nu=0.33,
+                           rho="0.000494987 lbf*s^2/in^4")  # the fuzz case's two cylinders
+    data["booster"]["cylinder1"].update(radius="5.05 m", half_length="21 m")
+    data["booster"]["cylinder2"].update(radius="3.30 m", half_length="28.5415 m")
+    data["thrust"].update(F0="2.8 MN", gamma=0.05, K=0.5, omega_min=5.0, omega_max=2000.0,
+                          n_omega=20)
+    data["damping"] = {"modal_ratio": 0.01, "pitch_ratio": 0.9}
+    data["vehicle"] = {"k_max": 3}
+    data["max_seconds"] = 1.0
+    case = flexbooster.load_case(data)
+    est = cost.estimate_vehicle_cost(case, regions=True, figures=False)
+    assert est.parts[cost.SHELL_SEARCH_PART] > 0.0
+    with pytest.raises(CaseError) as info:
+        analyze(case, beam_action=False, stability=False, figures=False)
+    assert info.value.field == "max_seconds" and cost.SHELL_SEARCH_PART in str(info.value)

@@ -66,6 +66,8 @@ __all__ = [
     "damped_search_cost",
     "search_step_seconds",
     "BENDING_SEARCH_PART",
+    "SHELL_SEARCH_PART",
+    "shell_search_seconds",
     "TONGUE_PART",
     "tongue_search_seconds",
 ]
@@ -506,6 +508,9 @@ _C_CRITICAL_REGION, _CRITICAL_REGION_N = 0.8, 20.0
 #: Name of the part of :func:`estimate_vehicle_cost` for the search of the damped k = 1
 #: harmonic (:func:`bending_search_steps`).
 BENDING_SEARCH_PART = "vehicle k = 1 search"
+#: Name of the part of :func:`estimate_vehicle_cost` for the searches of the harmonics k >= 2
+#: that damping does not certify (:func:`shell_search_seconds`).
+SHELL_SEARCH_PART = "vehicle k >= 2 searches"
 # The damped k = 1 search keeps the undamped rigid pitch (gimbal gain K > 0), so the damping
 # certifies nothing and the harmonic is searched.  The work of a damped search, counted by a
 # step counter (scripts/free_free_damped_cases.py, tests/test_cost.py), in units of the step
@@ -649,6 +654,61 @@ def _bending_search_seconds(case: Any, vehicle: Any, n_modes: int, zeta: float) 
     return bending_search_steps(work, damping_ratio=zeta)[1]
 
 
+def shell_search_seconds(work: Any) -> float:
+    """CPU time (s, one core) of the region search of a damped harmonic k >= 2 from its work
+    counted up front: the undamped seed search, E_u = 10 evaluations of the steps at the
+    candidate centres and 70 evaluated points per candidate (:func:`damped_search_cost`'s
+    constants); the damped search runs only from the seeds it finds, unknown up front, and is
+    not priced (measured on three vehicles' harmonics k = 3..20, seeds or none, the search
+    took 0.3-1.0 times this). 0 when steady or certified stable.
+
+    Parameters
+    ----------
+    work : flexbooster.floquet.SearchWork
+        :func:`flexbooster.floquet.search_work` of the damped harmonic.
+    """
+    from .floquet import SearchWork
+
+    if not isinstance(work, SearchWork):
+        raise ValueError(f"work = {type(work).__name__}: must be a SearchWork")
+    if work.steady or work.certified:
+        return 0.0
+    return float(_C_SEARCH_POINT * _EVALS_POINTS * work.n_candidates
+                 + _EVALS_UNDAMPED[0] * work.undamped_steps * search_step_seconds(work.n))
+
+
+def _shell_searches(case: Any, vehicle: Any, n_k: int, n_modes: int) -> float:
+    """:func:`shell_search_seconds` summed over the harmonics k = 2..n_k of a damped case, each
+    harmonic's modal system built as the stage builds it; one that cannot be built or passes a
+    size limit is not counted (the stage says why)."""
+    from . import floquet
+    from .dynamics import harmonic_system
+    from .dynamics.harmonic import LIMIT_ERRORS, floquet_options
+    from .shell_of_revolution import BucklingError, shared_harmonics
+
+    t = case.thrust
+    seconds = 0.0
+    with shared_harmonics():
+        for k in range(2, n_k + 1):
+            try:
+                h = harmonic_system(vehicle, k, F0=case.F0, n_modes=n_modes,
+                                    damping_ratio=case.vehicle_damping_ratio,
+                                    unloaded_frequencies=False)
+                system = h.periodic(t.gamma)
+                if system[0].shape[0] > _K1_COUNTED_MODES:  # as k = 1: the n^4 law, not
+                    # the candidates (their enumeration alone can pass the memory)
+                    if not floquet.stability_certificate(*system).certified:
+                        seconds += search_seconds(system[0].shape[0], t.omega_min,
+                                                  t.omega_max, damped=True)
+                    continue
+                work = floquet.search_work(*system, t.omega_min, t.omega_max,
+                                           **floquet_options())
+            except (*LIMIT_ERRORS, BucklingError, ValueError):
+                continue
+            seconds += shell_search_seconds(work)
+    return seconds
+
+
 def _dof_factor(vehicle) -> float:
     from .shell_of_revolution import mesh_vehicle
 
@@ -746,15 +806,24 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
         drivers["vehicle regions"] = ("vehicle.n_modes", "damping.modal_ratio",
                                       "vehicle.k_max", "thrust.omega_min", "thrust.omega_max",
                                       "vehicle.segments") + attached
-        if damped and certified and t.gamma > 0.0:  # k = 1 keeps its undamped rigid pitch
+        if damped and certified and t.gamma > 0.0:
+            # the harmonics k >= 2 that damping does not certify after all: searched
+            shell = _shell_searches(case, vehicle, n_k, n_modes)
+            if shell > 0.0:
+                parts[SHELL_SEARCH_PART] = shell
+                drivers[SHELL_SEARCH_PART] = ("damping.modal_ratio", "thrust.gamma",
+                                              "thrust.omega_min", "thrust.omega_max",
+                                              "vehicle.n_modes", "vehicle.k_max")
+            # k = 1 keeps its undamped rigid pitch
             k1 = _bending_search_seconds(case, vehicle, n_modes, case.vehicle_damping_ratio) * (
                 _BOUNDARY_SEARCH_FACTOR if figures else 1.0)
             if k1 > 0.0:
                 parts[BENDING_SEARCH_PART] = k1
                 drivers[BENDING_SEARCH_PART] = ("damping.modal_ratio", "thrust.omega_min",
                                                 "thrust.K", "vehicle.n_modes")
-        if searched or BENDING_SEARCH_PART in parts:  # regions may open: their critical
-            # damping ratios (dynamics.region_critical_damping), at most a fixed number
+        if searched or BENDING_SEARCH_PART in parts or SHELL_SEARCH_PART in parts:
+            # regions may open: their critical damping ratios
+            # (dynamics.region_critical_damping), at most a fixed number
             parts["vehicle critical damping"] = CRITICAL_DAMPING_COUNT * _C_CRITICAL_REGION * max(
                 1.0, (max(n_modes, 3) / _CRITICAL_REGION_N) ** 3)
             drivers["vehicle critical damping"] = ("vehicle.n_modes", "damping.modal_ratio")
