@@ -29,6 +29,9 @@ import pytest
 from conftest import dump_toml, run_cli
 from flexbooster.case import default_case_text, memo_case_text
 
+#: 300 command-line runs (about 9 s on one core): the whole suite, not the edit loop
+pytestmark = pytest.mark.slow
+
 #: Positive dimensional fields (dotted path into the case; a number in a list is its index).
 POSITIVE = {
     "memo": ["booster.cylinder1.radius", "booster.cylinder2.half_length", "booster.thickness",

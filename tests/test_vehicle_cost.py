@@ -138,6 +138,7 @@ def _tank_case(n_tanks: int, n_masses: int = 0):
     return load_case(data)
 
 
+@pytest.mark.slow
 def test_vehicle_estimate_grows_with_the_tanks_and_the_masses():
     """Each tank adds its liquid mesh and an added mass per harmonic to the modes and the
     regions, each lumped mass its matrices of k <= 1 (the estimate is monotone in both; the
