@@ -26,32 +26,12 @@ import sys
 from pathlib import Path
 
 from baseline_checkout import ROOT, alternate
+from bench_vehicle_regions import README_VEHICLE
 
 #: The code before the pipeline became a plain sequence of stages.
 BASELINE = "66f93aa"
-#: The ``[vehicle]`` example of README.md at :data:`BASELINE`.
-VEHICLE_EXAMPLE = """
-[vehicle]
-E = "70 GPa"
-nu = 0.3
-rho = "2700 kg/m^3"
-aft_end = "free"
-fwd_end = "free"
-theory = "sanders"
-k_max = 20
-[[vehicle.segments]]
-kind = "cylinder"
-radius = "1.5 m"
-length = "6 m"
-thickness = "16 mm"
-[[vehicle.segments]]
-kind = "cone"
-radius_aft = "1.5 m"
-radius_fwd = "1.0 m"
-length = "1 m"
-thickness = "16 mm"
-junction = "continuous"
-"""
+#: The ``[vehicle]`` example of README.md at :data:`BASELINE` (the regions benchmark's).
+VEHICLE_EXAMPLE = README_VEHICLE
 
 CHILD = """
 import json, sys, time, tomllib

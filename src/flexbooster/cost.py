@@ -630,28 +630,38 @@ def damped_band_steps(model: BoosterModel) -> tuple[float, float]:
                                                       model.pitch_damping_ratio))
 
 
-def _bending_search_seconds(case: Any, vehicle: Any, n_modes: int, zeta: float) -> float:
-    """The k = 1 search of a damped case (:func:`bending_search_steps`); 0 where the search
-    stops at a toolkit limit (a SearchGap) or the harmonic cannot be built (the stage says
-    why)."""
+def _system_search_seconds(build, thrust, price) -> float:
+    """CPU time (s) of the damped region search of the harmonic ``build()`` returns: its work
+    counted up front and priced by ``price(work)``, or, past :data:`_K1_COUNTED_MODES` modes,
+    the n^4 law of :func:`search_seconds` unless its certificate holds (enumerating the
+    candidates alone can pass the memory); 0 where the harmonic cannot be built or passes a
+    toolkit limit (the stage says why)."""
     from . import floquet
-    from .dynamics import bending_harmonic
     from .dynamics.harmonic import LIMIT_ERRORS, floquet_options
     from .shell_of_revolution import BucklingError
 
-    t = case.thrust
     try:
-        h = bending_harmonic(vehicle, F0=case.F0, n_modes=max(n_modes, 3),
-                             damping_ratio=zeta, gimbal_gain=t.K)
-        system = h.periodic(t.gamma)
-        if system[0].shape[0] > _K1_COUNTED_MODES:  # the n^4 law (its candidates: memory)
+        system = build().periodic(thrust.gamma)
+        n = system[0].shape[0]
+        if n > _K1_COUNTED_MODES:
             if floquet.stability_certificate(*system).certified:
                 return 0.0
-            return search_seconds(system[0].shape[0], t.omega_min, t.omega_max, damped=True)
-        work = floquet.search_work(*system, t.omega_min, t.omega_max, **floquet_options())
+            return search_seconds(n, thrust.omega_min, thrust.omega_max, damped=True)
+        work = floquet.search_work(*system, thrust.omega_min, thrust.omega_max,
+                                   **floquet_options())
     except (*LIMIT_ERRORS, BucklingError, ValueError):
         return 0.0
-    return bending_search_steps(work, damping_ratio=zeta)[1]
+    return price(work)
+
+
+def _bending_search_seconds(case: Any, vehicle: Any, n_modes: int, zeta: float) -> float:
+    """The k = 1 search of a damped case (:func:`bending_search_steps`)."""
+    from .dynamics import bending_harmonic
+
+    return _system_search_seconds(
+        lambda: bending_harmonic(vehicle, F0=case.F0, n_modes=max(n_modes, 3),
+                                 damping_ratio=zeta, gimbal_gain=case.thrust.K),
+        case.thrust, lambda work: bending_search_steps(work, damping_ratio=zeta)[1])
 
 
 def shell_search_seconds(work: Any) -> float:
@@ -679,34 +689,16 @@ def shell_search_seconds(work: Any) -> float:
 
 def _shell_searches(case: Any, vehicle: Any, n_k: int, n_modes: int) -> float:
     """:func:`shell_search_seconds` summed over the harmonics k = 2..n_k of a damped case, each
-    harmonic's modal system built as the stage builds it; one that cannot be built or passes a
-    size limit is not counted (the stage says why)."""
-    from . import floquet
+    harmonic's modal system built as the stage builds it."""
     from .dynamics import harmonic_system
-    from .dynamics.harmonic import LIMIT_ERRORS, floquet_options
-    from .shell_of_revolution import BucklingError, shared_harmonics
+    from .shell_of_revolution import shared_harmonics
 
-    t = case.thrust
-    seconds = 0.0
     with shared_harmonics():
-        for k in range(2, n_k + 1):
-            try:
-                h = harmonic_system(vehicle, k, F0=case.F0, n_modes=n_modes,
-                                    damping_ratio=case.vehicle_damping_ratio,
-                                    unloaded_frequencies=False)
-                system = h.periodic(t.gamma)
-                if system[0].shape[0] > _K1_COUNTED_MODES:  # as k = 1: the n^4 law, not
-                    # the candidates (their enumeration alone can pass the memory)
-                    if not floquet.stability_certificate(*system).certified:
-                        seconds += search_seconds(system[0].shape[0], t.omega_min,
-                                                  t.omega_max, damped=True)
-                    continue
-                work = floquet.search_work(*system, t.omega_min, t.omega_max,
-                                           **floquet_options())
-            except (*LIMIT_ERRORS, BucklingError, ValueError):
-                continue
-            seconds += shell_search_seconds(work)
-    return seconds
+        return float(sum(_system_search_seconds(
+            lambda k=k: harmonic_system(vehicle, k, F0=case.F0, n_modes=n_modes,
+                                        damping_ratio=case.vehicle_damping_ratio,
+                                        unloaded_frequencies=False),
+            case.thrust, shell_search_seconds) for k in range(2, n_k + 1)))
 
 
 def _dof_factor(vehicle) -> float:

@@ -356,15 +356,23 @@ def _peaks(model: ModalModel, om, scale, objectives, spectrum: bool):
     steps = np.arange(-CLUSTER, CLUSTER + 1) / CLUSTER_DENSITY
     pts = (up.imag[:, None] + np.abs(up.real)[:, None] * steps).ravel()
     grid = np.unique(np.concatenate([om, pts[(pts >= om[0]) & (pts <= om[-1])]]))
-    mag = magnitude(grid, np.full(grid.size, scale[0]))
+    mag = magnitude(grid, np.ones(grid.size))  # per unit scale: the sweep's gamma is constant
+    node, obj = (x.ravel() for x in np.indices(mag.shape[1:]))
+    value, at = _refined_max(model, grid, mag.reshape(grid.size, -1), node, rows[obj],
+                             power[obj])
+    return scale[0] * value.reshape(mag.shape[1:]), at.reshape(mag.shape[1:])
+
+
+def _refined_max(model: ModalModel, grid, mag, node, row, power):
+    """Largest of Omega^power |row| per column of ``mag`` (its samples on ``grid``, (g, m);
+    column j is row ``row[j]`` of node ``node[j]``): the largest sample, then :func:`_golden`
+    between its neighbours, whichever is larger (value (m,), Omega (m,))."""
     i = np.argmax(mag, axis=0)
-    node, obj = (x.ravel() for x in np.indices(i.shape))
-    lo, hi = grid[np.maximum(i - 1, 0)].ravel(), grid[np.minimum(i + 1, grid.size - 1)].ravel()
-    val, at = _golden(model, lo, hi, node, rows[obj], power[obj])
-    best = mag.max(axis=0).ravel()
-    better = val * scale[0] > best
-    value = np.where(better, val * scale[0], best).reshape(i.shape)
-    return value, np.where(better, at, grid[i].ravel()).reshape(i.shape)
+    lo, hi = grid[np.maximum(i - 1, 0)], grid[np.minimum(i + 1, grid.size - 1)]
+    val, at = _golden(model, lo, hi, node, row, power)
+    best = mag.max(axis=0)
+    better = val > best
+    return np.where(better, val, best), np.where(better, at, grid[i])
 
 
 def _harmonic(model: ModalModel, om, scale, spectrum: bool, stations, at):
@@ -556,17 +564,11 @@ def window_peaks(response: ForcedResponse, *, k: int, omega, half_width: float
     if om.size == 0 or scale == 0.0:
         return np.zeros(n), om.copy(), np.zeros(n, dtype=int)
     steps = np.arange(-CLUSTER, CLUSTER + 1) / CLUSTER
-    grid = om[:, None] * (1.0 + w * steps[None, :])  # (n, g)
-    disp = model.response(grid.ravel())[:, node, 0].reshape(n, steps.size, s)
-    mag = grid[:, :, None] ** 2 * np.abs(disp)  # |a| = Omega^2 |u| per newton
-    i = np.argmax(mag, axis=1)  # (n, s)
-    rows = np.arange(n)[:, None]
-    lo = grid[rows, np.maximum(i - 1, 0)].ravel()
-    hi = grid[rows, np.minimum(i + 1, steps.size - 1)].ravel()
-    val, where = _golden(model, lo, hi, np.tile(node, n), np.zeros(n * s, dtype=int), 2)
-    best = mag.max(axis=1).ravel()
-    better = val > best
-    value = np.where(better, val, best).reshape(n, s)
-    place = np.where(better, where, grid[rows, i].ravel()).reshape(n, s)
-    station = np.argmax(value, axis=1)
-    return (scale * value[np.arange(n), station], place[np.arange(n), station], station)
+    peak, at, station = np.zeros(n), np.zeros(n), np.zeros(n, dtype=int)
+    for c, centre in enumerate(om):  # a few tracked modes: one window each
+        grid = centre * (1.0 + w * steps)
+        mag = grid[:, None] ** 2 * np.abs(model.response(grid)[:, node, 0])  # |a| = W^2 |u|
+        value, place = _refined_max(model, grid, mag, node, np.zeros(s, dtype=int), 2)
+        station[c] = int(np.argmax(value))
+        peak[c], at[c] = scale * value[station[c]], place[station[c]]
+    return peak, at, station
