@@ -234,3 +234,35 @@ def test_vehicle_k1_estimate_within_1_5x_of_the_counted_steps(monkeypatch):
                     omega_max=t.omega_max, gimbal_gain=t.K, n_modes=3,
                     damping_ratio=case.vehicle.damping_ratio)
     assert counter.steps / 1.5 <= estimated <= 1.5 * counter.steps, (counter.steps, estimated)
+
+
+@pytest.mark.slow
+def test_flight_k1_search_with_an_undamped_pitch_within_1_5x_of_the_counted_steps(monkeypatch):
+    """A flight's frozen time whose k = 1 rigid pitch has no damping (tests/data/
+    flight_open_pitch_case.toml, t = 0: two pitch regions open at any amplitude, their edges
+    and critical amplitude searched): the steps of the flight's k = 1 search, counted while it
+    runs, against cost.bending_search_steps from floquet.search_work (its open candidates
+    priced at 350 evaluations each): within 1.5x either way (measured 547,000 estimated,
+    622,000 counted; 111,000 estimated before the open candidates were counted)."""
+    from flexbooster.dynamics import bending_harmonic, vehicle_regions
+    from flexbooster.dynamics.harmonic import floquet_options
+    from flexbooster.floquet import search_work
+    from flexbooster.model import flight_times, frozen_case, vehicle_from_case
+
+    flight = flexbooster.load_case(Path(__file__).parent / "data"
+                                   / "flight_open_pitch_case.toml")
+    case = frozen_case(flight, float(flight_times(flight)[0]))
+    t, zeta = case.thrust, case.vehicle_damping_ratio
+    vehicle = vehicle_from_case(case)
+    n_modes = cost.region_modes(case, vehicle, k_max=case.vehicle.k_max)[0]
+    system = bending_harmonic(vehicle, F0=case.F0, n_modes=max(n_modes, 3), damping_ratio=zeta,
+                              gimbal_gain=t.K).periodic(t.gamma)
+    work = search_work(*system, t.omega_min, t.omega_max, **floquet_options())
+    assert work.n_open >= 1
+    estimated = cost.bending_search_steps(work, damping_ratio=zeta)[0]
+    counter = _StepCounter(monkeypatch)
+    found = vehicle_regions(vehicle, F0=case.F0, gamma=t.gamma, omega_min=t.omega_min,
+                            omega_max=t.omega_max, k_min=1, k_max=1, n_modes=n_modes,
+                            damping_ratio=zeta, gimbal_gain=t.K, unloaded_frequencies=False)
+    assert found.regions
+    assert counter.steps / 1.5 <= estimated <= 1.5 * counter.steps, (counter.steps, estimated)

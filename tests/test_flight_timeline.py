@@ -102,3 +102,25 @@ def test_bad_timeline_names_the_parameter():
         frozen_times(tl, times=[0.0, 120.0])
     with pytest.raises(ValueError, match="^times"):
         frozen_times(tl, times=[5.0, 5.0])
+
+
+def test_frozen_case_at_a_point_holds_that_row():
+    """flexbooster.model.frozen_case at a [[flight.points]] row's time: that row's fills, F0
+    and gamma as written in tests/data/flight_open_pitch_case.toml (t = 100 s: F0 = 1.0 MN,
+    fill 0.35, gamma 0.005), Omega over the union of the rows' bands (0.6573 Hz to 14 Hz,
+    2 pi x Hz, 1e-12 relative), no [flight]; a case without [flight] is refused."""
+    import math
+    from pathlib import Path
+
+    import flexbooster
+    from flexbooster.model import frozen_case
+
+    case = flexbooster.load_case(Path(__file__).parent / "data" / "flight_open_pitch_case.toml")
+    frozen = frozen_case(case, 100.0)
+    assert frozen.flight is None and frozen.F0 == pytest.approx(1.0e6, rel=1e-12)
+    assert frozen.thrust.gamma == pytest.approx(0.005, rel=1e-12)
+    assert [tank.fill for tank in frozen.vehicle.tanks] == pytest.approx([0.35], rel=1e-12)
+    assert (frozen.thrust.omega_min, frozen.thrust.omega_max) == pytest.approx(
+        (2 * math.pi * 0.6573, 2 * math.pi * 14.0), rel=1e-12)
+    with pytest.raises(ValueError, match="flight"):
+        frozen_case(frozen, 0.0)

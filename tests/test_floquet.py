@@ -849,6 +849,22 @@ def test_search_work_is_what_the_search_integrates():
     assert json.dumps(d.to_dict())
 
 
+def test_search_work_counts_the_candidates_between_undamped_modes():
+    # two uncoupled Mathieu oscillators, w = 1 undamped and w = 1.6 damped (eps = 0.01), each
+    # pumped (B diagonal): on [1.5, 3.5] mode 0's simple centres 2 w / j hold only j = 1
+    # (Omega = 2; j = 2 gives 1 < 1.5), and every other candidate (mode 1's 3.2 and 1.6, the
+    # combinations) involves the damped mode 1. So exactly 1 open candidate, at the damped
+    # system's step count at Omega = 2 (step_counts). Hand enumeration of 2 w_i / j.
+    M, C = np.eye(2), np.diag([0.0, 2.0 * 0.01 * 1.6])
+    A, B = np.diag([1.0, 1.6**2]), np.diag([-0.2, -0.2 * 1.6**2])
+    d = search_work(M, C, A, B, 1.5, 3.5)
+    assert d.n_candidates >= 3 and d.n_open == 1
+    assert d.open_steps == step_counts(periodic_system(M, C, A, B), [2.0],
+                                       step_phase=0.12)[0]
+    # undamped throughout: no damped search, so nothing open is counted
+    assert search_work(*mathieu(0.1), 1.5, 2.5).n_open == 0
+
+
 def test_certificate_of_damped_mathieu_closed_form():
     # f'' + 2 eps f' + (1 - 2 mu cos) f: in the steady eigenbasis |G_ij| = |b| / (2 w_d) for
     # all four entries (b = 2 mu, w_d = sqrt(1 - eps^2)), so rho = 2 mu / (w_d eps) and, with

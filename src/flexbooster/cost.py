@@ -67,6 +67,8 @@ __all__ = [
     "search_step_seconds",
     "BENDING_SEARCH_PART",
     "SHELL_SEARCH_PART",
+    "CRITICAL_DAMPING_PART",
+    "FLIGHT_SAMPLES",
     "shell_search_seconds",
     "TONGUE_PART",
     "tongue_search_seconds",
@@ -511,6 +513,8 @@ BENDING_SEARCH_PART = "vehicle k = 1 search"
 #: Name of the part of :func:`estimate_vehicle_cost` for the searches of the harmonics k >= 2
 #: that damping does not certify (:func:`shell_search_seconds`).
 SHELL_SEARCH_PART = "vehicle k >= 2 searches"
+#: Name of the part of :func:`estimate_vehicle_cost` for the regions' critical damping ratios.
+CRITICAL_DAMPING_PART = "vehicle critical damping"
 # The damped k = 1 search keeps the undamped rigid pitch (gimbal gain K > 0), so the damping
 # certifies nothing and the harmonic is searched.  The work of a damped search, counted by a
 # step counter (scripts/free_free_damped_cases.py, tests/test_cost.py), in units of the step
@@ -522,6 +526,12 @@ SHELL_SEARCH_PART = "vehicle k >= 2 searches"
 # end values outside.  Evaluated points: 68 per candidate (memo), 24 (liquid): 70.
 _EVALS_ZETA = (0.01, 0.3)
 _EVALS_UNDAMPED, _EVALS_DAMPED, _EVALS_POINTS = (10.0, 30.0), (40.0, 500.0), 70.0
+# A candidate between modes without modal damping (the gimbaled rigid pitch of k = 1) is a
+# region at any damping of the others: its edges and critical amplitude (Illinois on Brent
+# maxima) take some 230-330 more evaluations at about its centre's damped step count
+# (counted on a flight's free-free vehicle, zeta = 0.02, pitch orders 1-3 at 0.9-3.6 Hz:
+# 786, 666 and 1,115 points for 2, 2 and 3 such regions); 350 each.
+_EVALS_OPEN = 350.0
 # CPU, one core: per evaluated point 4e-4 s (the step rule, two expm, the eigenvalues) and per
 # integration step of one point 1e-6 s + 3e-10 s (2n)^3 (the dense kernel: step matrices of a
 # block of steps multiplied by pairs); fitted on the memo's default (n = 11: 1,775 points,
@@ -556,7 +566,9 @@ def damped_search_cost(work: Any, *, damping_ratio: float) -> tuple[float, float
     search (the undamped seeds, the damped regions, the critical gamma of each) from its count
     up front: E_u x the undamped + E_d x the damped steps at the candidate centres, E_u = 10,
     E_d = 40 at zeta <= 0.01 to 30 and 500 at zeta >= 0.3 (log-log between), and 70 evaluated
-    points per candidate; 4e-4 s per point and :func:`search_step_seconds` per step (measured).
+    points per candidate; a candidate between undamped modes (a region at any damping) 350
+    evaluations at its damped steps instead of E_d; 4e-4 s per point and
+    :func:`search_step_seconds` per step (measured).
 
     Parameters
     ----------
@@ -578,8 +590,9 @@ def damped_search_cost(work: Any, *, damping_ratio: float) -> tuple[float, float
     z0, z1 = _EVALS_ZETA
     x = min(max(math.log(zeta / z0) / math.log(z1 / z0), 0.0), 1.0)  # log-log interpolation
     e_u, e_d = (a * (b / a) ** x for a, b in (_EVALS_UNDAMPED, _EVALS_DAMPED))
-    steps = e_u * work.undamped_steps + e_d * work.damped_steps
-    seconds = (_C_SEARCH_POINT * _EVALS_POINTS * work.n_candidates
+    steps = (e_u * work.undamped_steps + e_d * (work.damped_steps - work.open_steps)
+             + _EVALS_OPEN * work.open_steps)
+    seconds = (_C_SEARCH_POINT * (_EVALS_POINTS * work.n_candidates + _EVALS_OPEN * work.n_open)
                + steps * search_step_seconds(work.n))
     return float(steps), float(seconds)
 
@@ -816,9 +829,9 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
         if searched or BENDING_SEARCH_PART in parts or SHELL_SEARCH_PART in parts:
             # regions may open: their critical damping ratios
             # (dynamics.region_critical_damping), at most a fixed number
-            parts["vehicle critical damping"] = CRITICAL_DAMPING_COUNT * _C_CRITICAL_REGION * max(
+            parts[CRITICAL_DAMPING_PART] = CRITICAL_DAMPING_COUNT * _C_CRITICAL_REGION * max(
                 1.0, (max(n_modes, 3) / _CRITICAL_REGION_N) ** 3)
-            drivers["vehicle critical damping"] = ("vehicle.n_modes", "damping.modal_ratio")
+            drivers[CRITICAL_DAMPING_PART] = ("vehicle.n_modes", "damping.modal_ratio")
         if damped:  # the certificates: map, search, chart (none undamped: no certificate)
             calls = 2 + bool(figures)
             parts["vehicle certificates"] = n_k * calls * _C_CERTIFICATE * (
@@ -958,41 +971,46 @@ def capped_steps_warning(estimate: CostEstimate, model: BoosterModel) -> list[An
         "to about 1e-5 instead of 1e-9")]
 
 
+# The forced resonances of one frozen time (flexbooster.flight_stage: the modal model of each
+# harmonic forced -- k = 0, and k = 1 with a misalignment -- and the peak of each resonance
+# met): 0.09 s per frozen time of the flight example (two harmonics, DOF factor 1.4; one core,
+# measured), so 0.03 s per harmonic and DOF factor; 0.1 s with the peaks of many resonances
+_C_FLIGHT_FORCED = 0.1
+#: The flight's frozen times whose vehicle stages are estimated (:func:`flight_time_seconds`):
+#: this many, equally spaced in index from the first to the last.
+FLIGHT_SAMPLES = 5
+
+
 def flight_time_seconds(case: Any) -> float:
-    """The predicted time (s) of one frozen time of the flight
-    (:mod:`flexbooster.flight_stage`): the modes k = 0..k_max and the regions k = 1..k_max
-    over the union of the oscillation bands (the lower bound: damping certifies the
-    harmonics), without boundary curves; 0 without ``[flight]``. No solver is run.
+    """The predicted mean time (s, one core) of a frozen time of the flight
+    (:mod:`flexbooster.flight_stage`): :func:`estimate_vehicle_cost` of the frozen case
+    (:func:`flexbooster.model.frozen_case`: its fills, F0 and gamma over the flight's Omega
+    range; no figures and no critical damping, which the flight does not compute) at
+    :data:`FLIGHT_SAMPLES` frozen times equally spaced in index, averaged over the frozen times
+    by the trapezoidal rule (linear between the samples), plus the forced resonances of each
+    time (k = 0, and k = 1 with a misalignment); 0 without ``[flight]``.
 
     Parameters
     ----------
     case : Case
         The validated case (SI).
     """
-    from .model import timeline_from_case, vehicle_from_case
-    from .vehicle_case import VehicleTable
+    from .model import flight_times, frozen_case, vehicle_from_case
 
-    timeline = timeline_from_case(case)
-    if timeline is None:
+    times = flight_times(case)
+    if times.size == 0:
         return 0.0
-    table = case.vehicle if case.vehicle is not None else VehicleTable()
     try:
-        vehicle = vehicle_from_case(case)
-        dofs = _dof_factor(vehicle)
-        n_modes = region_modes(case, vehicle, k_max=max(table.k_max, 1))[0]
+        dofs = _dof_factor(vehicle_from_case(case))
     except ValueError:  # a vehicle the mesh refuses: the stage says why
         return 0.0
-    lo = min(p.oscillation[0] for p in timeline.points)
-    hi = max(p.oscillation[1] for p in timeline.points)
-    damped = case.vehicle_damping_ratio > 0.0
-    gammas = [p.gamma for p in timeline.points]
-    searched = 0 if damped or max(gammas) == 0.0 else table.k_max
-    c0, c1 = _C_SURVEY
-    modes = c0 + c1 * (table.k_max + 1) * dofs
-    search = searched * search_seconds(max(n_modes, 3), lo, max(hi, lo * 1.01), damped=damped,
-                                       boundaries=False)
-    return float(modes + table.k_max * _C_HARMONIC_BUILD * dofs * max(1.0, n_modes / 20.0)
-                 + search)
+    forced = _C_FLIGHT_FORCED * dofs * (1.0 + (case.thrust.misalignment != 0.0))
+    samples = np.unique(np.linspace(0, times.size - 1, FLIGHT_SAMPLES).round().astype(int))
+    each = np.array([sum(v for k, v in estimate_vehicle_cost(
+        frozen_case(case, float(times[i])), figures=False).parts.items()
+        if k != CRITICAL_DAMPING_PART) for i in samples])
+    mean = float(np.mean(np.interp(np.arange(times.size), samples, each)))
+    return mean + forced
 
 
 def combined(*estimates: CostEstimate) -> CostEstimate:

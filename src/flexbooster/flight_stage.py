@@ -33,9 +33,11 @@ from .dynamics import (
 )
 from .errors import AnalysisWarning, CaseError
 from .flight import (
+    KNOWN_FREQUENCY_MARGIN,
     band_events,
     band_key,
     band_rate,
+    flight_omega_range,
     mac_matrix,
     meeting_intervals,
     resonance_events,
@@ -57,9 +59,6 @@ __all__ = ["flight_stage", "frozen_time", "assemble_flight", "FrozenTime", "flig
            "KNOWN_FREQUENCY_MARGIN", "MATCH_RTOL", "MIN_PARTICIPATION", "PEAK_WINDOW",
            "BASIS_MATCH_RTOL"]
 
-#: A flight whose oscillation is one constant frequency: the regions are searched over that
-#: frequency times (1 -+ this), so that a region holding it is found with its edges.
-KNOWN_FREQUENCY_MARGIN = 0.05
 #: A region's mode and a computed mode of the same harmonic are the same mode when their
 #: loaded frequencies agree to this relative tolerance (the same eigenproblem solved twice).
 MATCH_RTOL = 1e-6
@@ -74,22 +73,6 @@ PEAK_WINDOW = 4.0
 #: A tracked mode and a basis mode of the forced model (its own mesh, cut at the stations) are
 #: the same mode when their frequencies agree to this relative tolerance.
 BASIS_MATCH_RTOL = 1e-3
-
-
-def flight_omega_range(timeline) -> tuple[float, float]:
-    """The Omega range (rad/s) searched at every frozen time: the union of the oscillation
-    bands, widened by :data:`KNOWN_FREQUENCY_MARGIN` around one constant frequency.
-
-    Parameters
-    ----------
-    timeline : flexbooster.flight.Timeline
-        The flight's schedule (:func:`flexbooster.model.timeline_from_case`).
-    """
-    lo = min(p.oscillation[0] for p in timeline.points)
-    hi = max(p.oscillation[1] for p in timeline.points)
-    if hi <= lo:
-        return lo * (1.0 - KNOWN_FREQUENCY_MARGIN), hi * (1.0 + KNOWN_FREQUENCY_MARGIN)
-    return lo, hi
 
 
 def _column(omegas: np.ndarray, omega: float | None) -> int | None:

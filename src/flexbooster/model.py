@@ -25,9 +25,8 @@ from .shell_of_revolution.geometry import (
 if TYPE_CHECKING:
     from .case import Case
 
-__all__ = ["MEMO_NOT_APPLICABLE", "forced_stations", "check_memo_applies", "model_from_case",
-           "vehicle_from_case",
-           "timeline_from_case", "flight_times"]
+__all__ = ["MEMO_NOT_APPLICABLE", "forced_stations", "frozen_case", "check_memo_applies",
+           "model_from_case", "vehicle_from_case", "timeline_from_case", "flight_times"]
 
 #: Why the memo's method (beam, Galerkin shells, beam action, the 13-family table, its charts)
 #: does not apply to a case whose vehicle is ``[[vehicle.segments]]``.
@@ -186,6 +185,36 @@ def flight_times(case: Case) -> np.ndarray:
     if table.times is not None:
         return frozen_times(timeline, times=table.times, include_points=True)
     return frozen_times(timeline, n=table.stations or FLIGHT_STATIONS, include_points=True)
+
+
+def frozen_case(case: Case, time: float) -> Case:
+    """The case of the flight at its frozen time ``time`` (s), as the flight stage analyses it:
+    that time's tank fills, F0 and gamma, Omega over the flight's range
+    (:func:`flexbooster.flight.flight_omega_range`), no ``[flight]``. ValueError without
+    ``[flight]`` or for a time outside the flight.
+
+    Parameters
+    ----------
+    case : Case
+        A validated case (SI) with ``[flight]``.
+    time : float
+        Time (s) within the flight.
+    """
+    from .flight import flight_omega_range
+
+    timeline = timeline_from_case(case)
+    if timeline is None:
+        raise ValueError("case: has no [flight], so no frozen time")
+    p = timeline.at(time)
+    lo, hi = flight_omega_range(timeline)
+    thrust = case.thrust.model_copy(update=dict(F0=p.F0, T0=None, gamma=p.gamma, omega_min=lo,
+                                                omega_max=hi, spectrum=None))
+    vehicle = case.vehicle
+    if vehicle is not None and vehicle.tanks:
+        vehicle = vehicle.model_copy(update=dict(tanks=tuple(
+            tank.model_copy(update=dict(fill=f))
+            for tank, f in zip(vehicle.tanks, p.fill, strict=True))))
+    return case.model_copy(update=dict(thrust=thrust, vehicle=vehicle, flight=None))
 
 
 def forced_stations(case: Case, vehicle=None) -> tuple[tuple[tuple[str, float], ...], tuple]:

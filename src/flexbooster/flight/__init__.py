@@ -27,10 +27,17 @@ from .passage import (
     sweep_passage,
     sweep_response,
 )
-from .timeline import FlightPoint, Timeline, frozen_times
+from .timeline import (
+    KNOWN_FREQUENCY_MARGIN,
+    FlightPoint,
+    Timeline,
+    flight_omega_range,
+    frozen_times,
+)
 from .tracking import MODE_COLUMNS, TrackedModes, mac_matrix, mode_rows, track_modes
 
-__all__ = ["FlightPoint", "Timeline", "frozen_times", "TrackedModes", "MODE_COLUMNS",
+__all__ = ["FlightPoint", "Timeline", "frozen_times", "flight_omega_range",
+           "KNOWN_FREQUENCY_MARGIN", "TrackedModes", "MODE_COLUMNS",
            "mac_matrix", "mode_rows", "track_modes", "MAX_SWEEP_STEPS", "SWEEP_WINDOW",
            "Passage", "ResonancePassage", "accumulated_growth", "crossing_peak_ratio",
            "peak_ratio", "steady_peak", "step_maps", "sweep_passage", "sweep_response",

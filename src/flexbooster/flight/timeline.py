@@ -13,7 +13,12 @@ import numpy as np
 
 from ..checks import count, finite, finite_array, nonnegative
 
-__all__ = ["FlightPoint", "Timeline", "frozen_times"]
+__all__ = ["FlightPoint", "Timeline", "frozen_times", "flight_omega_range",
+           "KNOWN_FREQUENCY_MARGIN"]
+
+#: A flight whose oscillation is one constant frequency: the regions are searched over that
+#: frequency times (1 -+ this), so that a region holding it is found with its edges.
+KNOWN_FREQUENCY_MARGIN = 0.05
 
 
 def _pair(name: str, value: Any) -> tuple[float, float]:
@@ -203,3 +208,19 @@ def frozen_times(timeline: Timeline, *, n: int | None = None, times: Any = None,
         keep = np.concatenate([[True], np.diff(out) > 1e-12 * max(1.0, math.fabs(out[-1]))])
         out = out[keep]
     return out
+
+
+def flight_omega_range(timeline) -> tuple[float, float]:
+    """The Omega range (rad/s) searched at every frozen time: the union of the oscillation
+    bands, widened by :data:`KNOWN_FREQUENCY_MARGIN` around one constant frequency.
+
+    Parameters
+    ----------
+    timeline : flexbooster.flight.Timeline
+        The flight's schedule (:func:`flexbooster.model.timeline_from_case`).
+    """
+    lo = min(p.oscillation[0] for p in timeline.points)
+    hi = max(p.oscillation[1] for p in timeline.points)
+    if hi <= lo:
+        return lo * (1.0 - KNOWN_FREQUENCY_MARGIN), hi * (1.0 + KNOWN_FREQUENCY_MARGIN)
+    return lo, hi

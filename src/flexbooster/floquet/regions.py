@@ -820,6 +820,10 @@ class SearchWork:
         Candidates examined by the monodromy and left to :mod:`.narrow`.
     undamped_steps, damped_steps : int
         Sums of the step counts at the candidate centres (each step ~n^3).
+    n_open, open_steps : int
+        Of a damped system, the candidates whose modes have no modal damping (their regions
+        open at any amplitude, so their edges and critical amplitude are searched) and the
+        sum of the damped system's step counts at their centres.
     """
 
     n: int
@@ -829,13 +833,21 @@ class SearchWork:
     n_narrow: int
     undamped_steps: int
     damped_steps: int
+    n_open: int = 0
+    open_steps: int = 0
 
     def to_dict(self) -> dict:
         """JSON-ready mapping."""
         return {"n": int(self.n), "steady": bool(self.steady),
                 "certified": bool(self.certified), "n_candidates": int(self.n_candidates),
                 "n_narrow": int(self.n_narrow), "undamped_steps": int(self.undamped_steps),
-                "damped_steps": int(self.damped_steps)}
+                "damped_steps": int(self.damped_steps), "n_open": int(self.n_open),
+                "open_steps": int(self.open_steps)}
+
+
+#: A mode whose modal damping ratio is below this counts as undamped in :class:`SearchWork`
+#: (its candidates' regions open at any amplitude).
+OPEN_DAMPING_RATIO = 1e-6
 
 
 def search_work(M, C, A, B, omega_min: float, omega_max: float, **options) -> SearchWork:
@@ -868,16 +880,24 @@ def search_work(M, C, A, B, omega_min: float, omega_max: float, **options) -> Se
     cand = _candidates(np.sqrt(system.mu.real), undamped.Bt, lo, hi, opt, rate=rate)
     mono = cand["mono"]
     centres = cand["centre"][mono]
-    steps_u = steps_d = 0
+    steps_u = steps_d = steps_o = 0
+    # candidates between modes without modal damping: damping ratio delta_a / w_a below
+    # OPEN_DAMPING_RATIO (0 but for the round-off of the modal frame)
+    free = None if rate is None else np.abs(rate) <= OPEN_DAMPING_RATIO * np.sqrt(
+        np.abs(system.mu))
+    is_open = (np.zeros(centres.size, bool) if free is None
+               else free[cand["i"][mono]] & free[cand["k"][mono]])
     if centres.size:
         steps_u = int(np.sum(step_counts(undamped, centres, step_phase=opt.step_phase,
                                          max_steps=opt.max_steps)))
         if system.damped:
-            steps_d = int(np.sum(step_counts(system, centres, step_phase=opt.step_phase,
-                                             max_steps=opt.max_steps)))
+            counts = step_counts(system, centres, step_phase=opt.step_phase,
+                                 max_steps=opt.max_steps)
+            steps_d, steps_o = int(np.sum(counts)), int(np.sum(counts[is_open]))
     return SearchWork(**{**none, "n_candidates": int(centres.size),
                          "n_narrow": 0 if system.damped else int(np.count_nonzero(~mono)),
-                         "undamped_steps": steps_u, "damped_steps": steps_d})
+                         "undamped_steps": steps_u, "damped_steps": steps_d,
+                         "n_open": int(np.count_nonzero(is_open)), "open_steps": steps_o})
 
 
 # --------------------------------------------------------------------------------------------
