@@ -8,7 +8,8 @@ replaced by a value that breaks its rule) a one-line ``CaseError``.  About a thi
 valid cases have a ``[vehicle]`` table (the memo vehicle's settings, or segments: cylinders
 and cones), so the vehicle modes run; one in five runs the vehicle's parametric regions too
 (``analyze(..., vehicle=True)``) under a smaller budget (:data:`REGIONS_BUDGET`), the stage
-whose cost the budget must bound.
+whose cost the budget must bound, and half of those with segments fly (``[flight]``).
+Misalignment, ``damping.modal_ratio`` and ``[[output.stations]]`` are drawn too.
 
 Profiles (environment variable ``FLEXBOOSTER_FUZZ``): ``ci`` (default; a bounded number of
 examples so that this file stays well under 60 s on 2 cores) and ``long`` (``make fuzz``:
@@ -98,19 +99,51 @@ def valid_cases(draw) -> dict:
         "damping": {"beam_modal_ratio": draw(st.sampled_from([0.0, 0.0, 0.01, 0.2])),
                     "pitch_ratio": draw(st.sampled_from([0.0, 0.0, 0.02, 0.5]))},
     }
+    if draw(st.booleans()):  # the modal damping under its current key
+        case["damping"]["modal_ratio"] = case["damping"].pop("beam_modal_ratio")
+    if draw(st.integers(0, 3)) == 0:  # a thrust line off the axis: k = 1 is forced too
+        thrust["misalignment"] = draw(st.sampled_from([0.002, 0.01, -0.05]))
+    if draw(st.booleans()):  # the optional tables too: every table of a case file
+        case["output"] = {"units": draw(st.sampled_from(["SI", "US"]))}
     if draw(st.integers(0, 2)) == 0:
         case["vehicle"] = draw(vehicle_tables(r1, r2, h))
         if "segments" in case["vehicle"]:  # one vehicle per case: the segments, with the
             b = case.pop("booster")        # drawn material on [vehicle]
             case["vehicle"].update({k: b[k] for k in ("E", "nu", "rho")})
-    if draw(st.booleans()):  # the optional tables too: every table of a case file
-        case["output"] = {"units": draw(st.sampled_from(["SI", "US"]))}
+            length = sum(seg["length"] for seg in case["vehicle"]["segments"])
+            if draw(st.integers(0, 2)) == 0:  # [[output.stations]] of the forced response
+                case.setdefault("output", {})["stations"] = [
+                    {"name": f"s{i}", "station": round(length * draw(st.floats(0.0, 1.0)), 6)}
+                    for i in range(draw(st.integers(1, 2)))]
+            if regions and draw(st.booleans()):  # [flight]: the vehicle through its burn
+                case["flight"] = draw(flight_tables(
+                    thrust, len(case["vehicle"].get("tanks", ()))))
     if draw(st.integers(0, 2)) == 0:
         case["severity"] = {"psi0": draw(st.floats(-0.1, 0.1)),
                             "beam_amplitude": draw(st.sampled_from([0.0, 1e-6, 1e-4, 1e-2])),
                             "threshold": draw(st.floats(0.0, 1.0)),
                             "resolution": draw(st.floats(1e-4, 0.5))}
     return {**case, "_regions": regions}
+
+
+@st.composite
+def flight_tables(draw, thrust: dict, n_tanks: int) -> dict:
+    """A ``[flight]`` table (flexbooster/flight_case.py): 2..3 points 10..200 s apart with
+    F0 from a tenth to twice the steady thrust's order, a fill per tank in [0, 1], an
+    oscillation band (or one known frequency) inside the thrust's Omega range, gamma in
+    [0, 0.95]; 2..4 equally spaced frozen times (small, so that an example stays fast)."""
+    lo, hi = thrust["omega_min"], thrust["omega_max"]
+    force = thrust.get("F0", 1e6)
+    points, time = [], 0.0
+    for _ in range(draw(st.integers(2, 3))):
+        a = lo * (hi / lo) ** draw(st.floats(0.0, 1.0))
+        b = a * draw(st.sampled_from([1.0, 1.0, 1.2, 2.0]))
+        points.append({"time": time, "F0": force * draw(_log_uniform(0.1, 2.0)),
+                       "fill": [draw(st.floats(0.0, 1.0)) for _ in range(n_tanks)],
+                       "oscillation": a if b == a else [a, b],
+                       "gamma": draw(st.floats(0.0, 0.95))})
+        time += draw(_log_uniform(10.0, 200.0))
+    return {"stations": draw(st.integers(2, 4)), "points": points}
 
 
 #: The documented choices of the [vehicle] table (README, flexbooster/vehicle_case.py).

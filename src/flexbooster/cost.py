@@ -85,7 +85,11 @@ _C_HILL = 2e-9  # per (2 m)^3 of one Hill eigenproblem, m = n (2 S + 1)
 _C_BANDS = 5.4e-3  # band search, per resonance candidate and order j (default: 204, 1.1 s)
 _C_CHART = 2.5  # beam-action chart of the default, scales like (n / 11)^2.5
 _C_PITCH_STEP = (2e-5, 3e-7)  # per Magnus step: fixed, per grid point
-_C_TONGUE = 0.07  # pitch bands, per tongue in the range
+# pitch bands, per tongue examined (memo.pitch: from Omega_max / 2 down to the first tongue
+# below the range): c0 + c1 r min(g, 1), g = gamma / (1 - zeta^2) (0.07 s at r ~ 5; 2.3 s for
+# r = 43..60 at g = 1, q ~ 3000, on a loaded core: 0.13 s at r ~ 50; narrow tongues, small g,
+# cost about c0)
+_C_TONGUE = (0.05, 0.0016)
 # pitch bands at a large pulsation: tongue r (a ~ r^2) costs ~ r^1.5 Hill rows x evaluations
 # while it is wider than round-off, r <= 110 gamma (fuzz cases: 5.2 s at gamma
 # = 0.78 for r = 6..60, 0.83 s at 0.4, x 2.5 with pitch damping, 12 s)
@@ -178,6 +182,26 @@ def _tongues(omega_psi: float, lo: float, hi: float, widen: float) -> int:
     return max(0, r_hi - r_lo + 1)
 
 
+def _tongues_examined(omega_psi: float, gamma: float, pitch_ratio: float, lo: float,
+                      hi: float) -> np.ndarray:
+    """The tongue orders r the pitch-band search (:mod:`flexbooster.memo.pitch`) examines:
+    from r = floor(omega_psi / hi) up to the first tongue wholly below ``lo``, estimated as the
+    smaller of Weyl's bound 2 omega_psi sqrt(s (1 + g)) / lo (s = 1 - zeta^2, g = gamma / s)
+    and 1.2 x the large-q one, where the lowest edge a = -2q + 2 (2r + 1) sqrt(q) (DLMF
+    28.8.1) on the path q = g a / 2 gives a = 2 g (2r + 1)^2 / (1 + g)^2 (measured: tongues
+    43..60 examined where it gives 55.5), at most PITCH_MAX_TONGUE."""
+    if omega_psi <= 0.0 or gamma <= 0.0:
+        return np.zeros(0)
+    s = 1.0 - pitch_ratio * pitch_ratio
+    g = gamma / s
+    x_max = 4.0 * omega_psi**2 * s / lo**2
+    weyl = 2.0 * omega_psi * math.sqrt(s * (1.0 + g)) / lo
+    large_q = 1.2 * 0.5 * (math.sqrt(x_max * (1.0 + g) ** 2 / (2.0 * g)) - 1.0)
+    r_lo = max(1, math.floor(omega_psi / hi))
+    r_hi = min(PITCH_MAX_TONGUE, math.floor(min(weyl, large_q)))
+    return np.arange(r_lo, r_hi + 1, dtype=float)
+
+
 def _tongue_orders(omega_psi: float, gamma: float, pitch_ratio: float, lo: float,
                    hi: float) -> float:
     """Order-dependent part of the pitch-band search (s): sum of r^1.5 over the tongues in the
@@ -225,8 +249,10 @@ def estimate_pitch_cost(*, omega_psi: float, Omega, gamma: float,
     parts["pitch (Magnus)"] = 3.0 * steps * (c0 + c1 * G)
     drivers["pitch (Magnus)"] = ("thrust.omega_min", "thrust.F0", "thrust.K", "thrust.n_omega")
     t_bands = _tongues(omega_psi, lo, hi, 1.0)
-    parts["pitch bands"] = _C_TONGUE * t_bands + _tongue_orders(omega_psi, gamma, pitch_ratio,
-                                                                lo, hi)
+    examined = _tongues_examined(omega_psi, gamma, pitch_ratio, lo, hi)
+    g = min(1.0, gamma / (1.0 - pitch_ratio**2))
+    parts["pitch bands"] = float(np.sum(_C_TONGUE[0] + _C_TONGUE[1] * g * examined)) + (
+        _tongue_orders(omega_psi, gamma, pitch_ratio, lo, hi))
     drivers["pitch bands"] = ("thrust.omega_min", "thrust.F0", "thrust.K")
     if 0.0 < gamma < 1.0 and t_bands > 0:  # the fastest (lowest) tongues' critical
         # damping, CRITICAL_DAMPING_COUNT at most, each costing more with its order r
@@ -566,8 +592,8 @@ def damped_search_cost(work: Any, *, damping_ratio: float) -> tuple[float, float
     search (the undamped seeds, the damped regions, the critical gamma of each) from its count
     up front: E_u x the undamped + E_d x the damped steps at the candidate centres, E_u = 10,
     E_d = 40 at zeta <= 0.01 to 30 and 500 at zeta >= 0.3 (log-log between), and 70 evaluated
-    points per candidate; a candidate between undamped modes (a region at any damping) 350
-    evaluations at its damped steps instead of E_d; 4e-4 s per point and
+    points per candidate; a candidate between undamped modes (a region at any damping) at
+    least 350 evaluations at its damped steps (max(E_d, 350)); 4e-4 s per point and
     :func:`search_step_seconds` per step (measured).
 
     Parameters
@@ -590,8 +616,9 @@ def damped_search_cost(work: Any, *, damping_ratio: float) -> tuple[float, float
     z0, z1 = _EVALS_ZETA
     x = min(max(math.log(zeta / z0) / math.log(z1 / z0), 0.0), 1.0)  # log-log interpolation
     e_u, e_d = (a * (b / a) ** x for a, b in (_EVALS_UNDAMPED, _EVALS_DAMPED))
+    e_o = max(e_d, _EVALS_OPEN)
     steps = (e_u * work.undamped_steps + e_d * (work.damped_steps - work.open_steps)
-             + _EVALS_OPEN * work.open_steps)
+             + e_o * work.open_steps)
     seconds = (_C_SEARCH_POINT * (_EVALS_POINTS * work.n_candidates + _EVALS_OPEN * work.n_open)
                + steps * search_step_seconds(work.n))
     return float(steps), float(seconds)
