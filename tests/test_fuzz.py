@@ -8,7 +8,7 @@ replaced by a value that breaks its rule) a one-line ``CaseError``.  About a thi
 valid cases have a ``[vehicle]`` table (the memo vehicle's settings, or segments: cylinders
 and cones), so the vehicle modes run; one in five runs the vehicle's parametric regions too
 (``analyze(..., vehicle=True)``) under a smaller budget (:data:`REGIONS_BUDGET`), the stage
-whose cost the budget must bound, and half of those with segments fly (``[flight]``).
+whose cost the budget must bound, and those with segments fly (``[flight]``).
 Misalignment, ``damping.modal_ratio`` and ``[[output.stations]]`` are drawn too.
 
 Profiles (environment variable ``FLEXBOOSTER_FUZZ``): ``ci`` (default; a bounded number of
@@ -115,7 +115,7 @@ def valid_cases(draw) -> dict:
                 case.setdefault("output", {})["stations"] = [
                     {"name": f"s{i}", "station": round(length * draw(st.floats(0.0, 1.0)), 6)}
                     for i in range(draw(st.integers(1, 2)))]
-            if regions and draw(st.booleans()):  # [flight]: the vehicle through its burn
+            if regions:  # [flight]: the vehicle through its burn
                 case["flight"] = draw(flight_tables(
                     thrust, len(case["vehicle"].get("tanks", ()))))
     if draw(st.integers(0, 2)) == 0:
