@@ -905,3 +905,30 @@ def test_fuzz_reproducer_uncertified_shell_harmonics_are_counted_up_front():
     with pytest.raises(CaseError) as info:
         analyze(case, beam_action=False, stability=False, figures=False)
     assert info.value.field == "max_seconds" and cost.SHELL_SEARCH_PART in str(info.value)
+
+
+def test_fuzz_reproducer_centre_of_mass_aft_of_the_aft_edge_with_a_gimbal():
+    """Found by `make fuzz` (7 of 243 cases, an internal ``ValueError: d2 = -0.86``): a thin
+    1 m cylinder with an 885 kg mass whose centre of mass sits 1 m aft of its station 0.125 m
+    puts the vehicle's centre of mass 0.86 m aft of the aft edge. With a gimbal gain K > 0 the
+    rigid pitch then diverges (omega_psi^2 = F0 d K / I_cm < 0, memo eq. 4.2-1): a one-line
+    CaseError naming vehicle.masses and the centre of mass. Without a gimbal (K = 0) the
+    thrust makes no pitch moment and the lever arm is not refused."""
+    case = {"name": "fuzz", "max_seconds": 60.0,
+            "thrust": {"gamma": 0.568, "K": 5.88e-205, "omega_min": 1.0, "omega_max": 5.19,
+                       "n_omega": 11, "T0": 17594.3},
+            "vehicle": {"k_max": 200, "n_modes": 5, "theory": "donnell",
+                        "segments": [{"kind": "cylinder", "radius": 1.195, "length": 1.0,
+                                      "thickness": 1.195e-4}],
+                        "masses": [{"station": 0.125, "mass": 884.8, "transverse_inertia": 1e4,
+                                    "offset": -1.0}],
+                        "E": 1.489e10, "nu": 0.296, "rho": 8288.0}}
+    with pytest.raises(CaseError) as info:
+        analyze(flexbooster.load_case(case), figures=False, vehicle=False)
+    assert info.value.field == "vehicle.masses" and "\n" not in str(info.value)
+    assert "centre of mass at -0.86" in str(info.value)
+    case["thrust"]["K"] = 0.0
+    try:
+        analyze(flexbooster.load_case(case), figures=False, vehicle=False)
+    except CaseError as exc:  # another rule may refuse it (the thin shell buckles)
+        assert exc.field != "vehicle.masses"

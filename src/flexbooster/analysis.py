@@ -270,6 +270,21 @@ def analyze(
     )
 
 
+def _check_lever_arm(case: Case, cm: float) -> None:
+    """CaseError when a gimbal (K > 0) turns the thrust about a centre of mass at or aft of the
+    aft edge: the lever arm d <= 0 makes omega_psi^2 = F0 d K / I_cm <= 0 (memo eq. 4.2-1), the
+    rigid pitch diverges instead of oscillating."""
+    from .errors import CaseError
+
+    if case.thrust.K > 0.0 and not cm > 0.0:
+        masses = case.vehicle is not None and case.vehicle.masses
+        raise CaseError("vehicle.masses" if masses else "vehicle.segments",
+                        f"centre of mass at {cm:.6g} m",
+                        "lies at or aft of the aft edge: with a gimbal gain thrust.K > 0 the "
+                        "rigid pitch diverges (omega_psi^2 = F0 d K / I_cm <= 0, memo eq. "
+                        "4.2-1); move the masses forward or set K = 0")
+
+
 def _analyze_segments(case: Case, step: Callable[[str], None], *, figures: bool,
                       regions: bool, on_estimate: Callable | None,
                       frozen: Sequence[FrozenTime] | None) -> Results:
@@ -282,7 +297,9 @@ def _analyze_segments(case: Case, step: Callable[[str], None], *, figures: bool,
         structure = vehicle_from_case(case)
         mass = mass_properties(structure)
         t, Omega = case.thrust, case.omega_grid()
-        omega_psi = pitch_frequency(case.F0, mass.cm_m, t.K, mass.I_cm_kg_m2)  # eq. (4.2-1)
+        _check_lever_arm(case, mass.cm_m)
+        omega_psi = 0.0 if t.K == 0.0 else pitch_frequency(  # eq. (4.2-1)
+            case.F0, mass.cm_m, t.K, mass.I_cm_kg_m2)
         cost.check_pitch_range(F0=case.F0, omega_psi=omega_psi, omega_min=float(Omega.min()),
                                gamma=t.gamma)
         vehicle_cost = cost.estimate_vehicle_cost(case, regions=regions, figures=figures,
