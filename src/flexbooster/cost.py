@@ -23,7 +23,7 @@ import numpy as np
 from .bands import CRITICAL_DAMPING_COUNT
 from .checks import count, nonnegative, positive
 from .errors import AnalysisWarning, CaseError
-from .floquet import MATHIEU_SCALE_MAX, search_work
+from .floquet import MATHIEU_SCALE_MAX, hill_order, search_work
 from .memo.beam_action import (
     BAND_MAX_CANDIDATES,
     BAND_MAX_ORDER,
@@ -45,6 +45,7 @@ from .memo.beam_action import (
 from .memo.charts import PITCH_BAND_CHART_LEVELS
 from .memo.model import BoosterModel
 from .memo.pitch import PITCH_MAX_TONGUE
+from .memo.stability import SCAN_POINTS
 
 __all__ = [
     "check_pitch_range",
@@ -84,7 +85,9 @@ _C_MONODROMY = 9e-5  # per grid point and Lawson step, n <= 24 modes (numpy over
 _C_HILL = 2e-9  # per (2 m)^3 of one Hill eigenproblem, m = n (2 S + 1)
 _C_BANDS = 5.4e-3  # band search, per resonance candidate and order j (default: 204, 1.1 s)
 _C_CHART = 2.5  # beam-action chart of the default, scales like (n / 11)^2.5
-_C_PITCH_STEP = (2e-5, 3e-7)  # per Magnus step: fixed, per grid point
+# per Magnus step: fixed, per grid point (2e-5 s fixed on a free core; 3.2e-5 s at load 4 on
+# the 2-core machine: the estimate takes the shared machine's figure)
+_C_PITCH_STEP = (3e-5, 3e-7)
 # pitch bands, per tongue examined (memo.pitch: from Omega_max / 2 down to the first tongue
 # below the range): c0 + c1 r min(g, 1), g = gamma / (1 - zeta^2) (0.07 s at r ~ 5; 2.3 s for
 # r = 43..60 at g = 1, q ~ 3000, on a loaded core: 0.13 s at r ~ 50; narrow tongues, small g,
@@ -99,6 +102,10 @@ _C_TONGUE_LEVEL = 0.04  # pitch chart, per tongue and gamma level
 # at r = 5 to 2.46 s at r = 33, gamma = 0.92 (one core, measured on a fuzz case)
 _C_TONGUE_CRITICAL = (0.28, 0.066)
 _C_STABILITY = 1.5e-6  # per (excitation curve x shell mode)
+# the stability table's pitch exponent beta (Hill's continuant, N rows: floquet.hill_order) on
+# its scan grid and again, about as much, at the roots' brackets: per row and point, measured
+# 1.1e-7 s (2,001 points: 0.7 s at a = 3e5, N = 3306, loaded core; the table 1.65 s)
+_C_HILL_ROW = 1.1e-7
 _C_SHELL = 1e-4  # per shell mode
 _HILL_POINTS = 3  # beam_action_analysis n_hill
 
@@ -333,7 +340,10 @@ def estimate_cost(model: BoosterModel, *, beam_action: bool = True, stability: b
                                     "damping.pitch_ratio", "damping.modal_ratio")
     if beam_action and stability:
         curves = 13.0 * n.R * (2 * n.S + 1)
-        parts["stability table"] = _C_STABILITY * curves * modes
+        a_max = 4.0 * model.omega_psi**2 / lo**2  # eq. (4.2-4)
+        rows = hill_order(a_max, 0.5 * model.gamma * a_max)
+        parts["stability table"] = (_C_STABILITY * curves * modes
+                                    + 2.0 * _C_HILL_ROW * rows * SCAN_POINTS)
         drivers["stability table"] = ("truncation.R", "truncation.S", "truncation.M1",
                                       "truncation.N1", "truncation.M2", "truncation.N2")
     if figures:

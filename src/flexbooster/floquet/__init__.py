@@ -25,6 +25,7 @@ from .mathieu import (
     characteristic_value,
     damped_tongue,
     floquet_discriminant,
+    hill_order,
     tongue_critical_damping,
     tongue_critical_gamma,
     tongue_edges,
@@ -63,7 +64,7 @@ from .regions import (
     search_work,
 )
 
-__all__ = ["MATHIEU_SCALE_MAX", "beta_from_discriminants", "characteristic_exponent",
+__all__ = ["MATHIEU_SCALE_MAX", "beta_from_discriminants", "characteristic_exponent", "hill_order",
            "characteristic_value", "damped_tongue", "floquet_discriminant",
            "tongue_critical_gamma", "tongue_critical_damping",
            "ZETA_SEARCH_MAX", "tongue_edges", "transition_curves", "DAMPING_MARGIN",

@@ -25,7 +25,7 @@ from .optimize import expand_bracket
 __all__ = ["MATHIEU_SCALE_MAX", "characteristic_exponent", "floquet_discriminant",
            "beta_from_discriminants", "transition_curves", "characteristic_value",
            "tongue_edges", "damped_tongue", "tongue_critical_gamma",
-           "tongue_critical_damping", "ZETA_SEARCH_MAX"]
+           "tongue_critical_damping", "ZETA_SEARCH_MAX", "hill_order"]
 
 _METHODS = ("floquet", "hill")
 #: Largest sqrt(|a| + 2|q|) of both methods: their cost grows like it (24 + 16 sqrt(a)
@@ -51,10 +51,17 @@ def _as_grid(a: Any, q: Any) -> tuple[np.ndarray, np.ndarray]:
     return a, np.abs(q)  # the exponent is even in q (shift tau_1 by pi/2)
 
 
-def _hill_order(a: np.ndarray, q: np.ndarray) -> int:
+def hill_order(a: Any, q: Any) -> int:
     """Truncation N of the Hill matrices (|m| <= 2N + 1): |a| <= (2N)^2 / 16 and (2N) >= 22 sqrt(q)
-    keep the O(eps^3) remainder, eps = q^2 / (2N)^4, below 1e-15 (mpmath, tests, q <= 20).
+    keep the O(eps^3) remainder, eps = q^2 / (2N)^4, below 1e-15 (mpmath, tests, q <= 20); the
+    continuant's work per point grows like N. ValueError past MATHIEU_SCALE_MAX.
+
+    Parameters
+    ----------
+    a, q : array_like
+        Mathieu parameters (dimensionless); their largest |a| and q decide.
     """
+    a, q = np.asarray(a, dtype=float), np.asarray(q, dtype=float)
     amax = float(np.max(np.abs(a))) if a.size else 0.0
     qmax = float(np.max(q)) if q.size else 0.0
     if np.sqrt(amax + 2.0 * qmax) > MATHIEU_SCALE_MAX:  # bounded cost
@@ -157,7 +164,7 @@ def _hill(a: np.ndarray, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndar
     by a), so no entry is singular; the pivot recurrence also gives the Sturm count; the rows
     beyond m_N by :func:`_log_tail`.
     """
-    N = _hill_order(a, q)
+    N = hill_order(a, q)
     shape = a.shape
     a = a.ravel().astype(float)
     q = q.ravel().astype(float)

@@ -22,6 +22,7 @@ from ..checks import count, positive
 
 __all__ = [
     "EPS",
+    "SCAN_POINTS",
     "FAMILIES",
     "ExcitationCurves",
     "ShellModes",
@@ -373,6 +374,10 @@ class TooManyRootsError(RuntimeError):
 _EQUATIONS = np.array([""] + [FAMILIES[f][0] for f in range(1, max(FAMILIES) + 1)], dtype=object)
 
 
+#: Points of the geometric scan grid that brackets the stability table's roots.
+SCAN_POINTS = 2001
+
+
 def unstable_frequencies(
     modes: ShellModes,
     params: ParamsFn,
@@ -383,7 +388,7 @@ def unstable_frequencies(
     S: int,
     gamma: float,
     K: float,
-    n_scan: int = 2001,
+    n_scan: int = SCAN_POINTS,
     tol: float = 1e-12,
     max_roots: int = 4_000_000,
 ) -> StabilityTable:
