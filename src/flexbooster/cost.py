@@ -51,6 +51,7 @@ __all__ = [
     "check_pitch_range",
     "CostEstimate",
     "flight_time_seconds",
+    "forced_seconds",
     "with_flight",
     "estimate_cost",
     "check_case_cost",
@@ -505,10 +506,15 @@ _DAMPED_UPFRONT_FACTOR, _BOUNDARY_SEARCH_FACTOR = 3.0, 4.0
 # 2n x 2n LAPACK operations): s per (2n)^3, one core (3.4e-9 at n = 200, 3.6e-9 at n = 120,
 # CPU time); computed for the map, again by the search, and once more for the chart's curves
 _C_CERTIFICATE = 3.5e-9
-# The forced response (k = 0 and 1, with the half-basis convergence run of each forced
-# harmonic): the memo case's vehicle, 400 Omega points, 0.87 s axial only, 1.83 s with
-# a misalignment (the lateral harmonic forced too); the README's [vehicle] 0.15 s / 0.23 s.
-_C_FORCED = 0.9
+# The forced response of one harmonic forced (k = 0, and k = 1 with a misalignment), with its
+# half-basis convergence run: c0 + c1 (n / 780)^2 for the full model's n DOFs (its dense
+# eigenproblem and static correction) plus, per Omega point, c2 + c3 min(n, 200) (the modal
+# solves; the basis, unknown up front, is at most the DOFs). Measured on one loaded core:
+# 0.49-0.63 s at n = 780 (13 basis modes) and 20-4,000 points, 1.0 s at 20,000; 0.34-0.54 s
+# at n = 263 (95 modes), 1.65 s at 20,000 points; 0.20 s at n = 369; 0.22 s at n = 543 with
+# two harmonics.
+_C_FORCED = (0.4, 0.8, 2e-5, 5e-7)
+_FORCED_DOFS, _FORCED_BASIS = 780.0, 200.0
 
 
 def search_seconds(n_modes: int, omega_min: float, omega_max: float, *, damped: bool,
@@ -807,8 +813,8 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
         Assume that damping certifies every harmonic stable (the lower bound); False: every
         harmonic searched (the upper bound).
     forced : bool
-        The vehicle's forced response is computed ("vehicle forced response": the FE models of
-        k = 0 and 1, twice for each harmonic forced; dense, like the DOFs cubed).
+        The vehicle's forced response is computed ("vehicle forced response":
+        :func:`forced_seconds` for each harmonic forced).
     """
     from .model import vehicle_from_case
     from .vehicle_case import VehicleTable
@@ -875,9 +881,11 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
                 2.0 * max(n_modes, 3)) ** 3
             drivers["vehicle certificates"] = ("vehicle.n_modes", "vehicle.k_max")
     if forced:
-        parts["vehicle forced response"] = _C_FORCED * dofs * (
+        n_omega = 0 if t.spectrum is not None else t.n_omega
+        parts["vehicle forced response"] = forced_seconds(vehicle, n_omega) * (
             1.0 + (t.misalignment != 0.0))
-        drivers["vehicle forced response"] = ("vehicle.segments", "thrust.misalignment")
+        drivers["vehicle forced response"] = ("vehicle.segments", "thrust.misalignment",
+                                              "thrust.n_omega")
     return CostEstimate(seconds=float(sum(parts.values())), parts=parts, drivers=drivers)
 
 
@@ -1009,20 +1017,48 @@ def capped_steps_warning(estimate: CostEstimate, model: BoosterModel) -> list[An
 
 
 # The forced resonances of one frozen time (flexbooster.flight_stage: the modal model of each
-# harmonic forced -- k = 0, and k = 1 with a misalignment -- and the peak of each resonance
-# met): 0.09 s per frozen time of the flight example (two harmonics, DOF factor 1.4; one core,
-# measured), so 0.03 s per harmonic and DOF factor; 0.1 s with the peaks of many resonances
-_C_FLIGHT_FORCED = 0.1
+# harmonic forced and the peak of each resonance met, one run on a two-point grid): 0.09 s per
+# frozen time of the flight example (n = 369), about 0.14 s for the default case (n = 780),
+# one harmonic each; a quarter of :func:`forced_seconds` (0.15 s and 0.3 s)
+_FLIGHT_FORCED = 0.25
+
+
+def forced_seconds(vehicle: Any, n_omega: int) -> float:
+    """CPU time (s, one core) of the forced response of one harmonic forced, with its
+    convergence run: c0 + c1 (n / 780)^2 + n_omega (c2 + c3 min(n, 200)) for the mesh's n DOFs
+    (measured, see above).
+
+    Parameters
+    ----------
+    vehicle : flexbooster.shell_of_revolution.Vehicle
+        The vehicle.
+    n_omega : int
+        Omega points of the response, >= 0.
+    """
+    from .shell_of_revolution import mesh_vehicle
+
+    n = float(mesh_vehicle(vehicle).n_full)
+    c0, c1, c2, c3 = _C_FORCED
+    points = count("n_omega", n_omega, 0, None)
+    return float(c0 + c1 * (n / _FORCED_DOFS) ** 2 + points * (c2 + c3 * min(n, _FORCED_BASIS)))
 #: The flight's frozen times whose vehicle stages are estimated (:func:`flight_time_seconds`):
-#: this many, equally spaced in index from the first to the last.
-FLIGHT_SAMPLES = 5
+#: this many, equally spaced in index from the first to the last (each sample builds the
+#: harmonics' modal systems: about 0.5-1 s for the default vehicle).
+FLIGHT_SAMPLES = 3
+# A frozen time builds its modes and harmonics with the thrust prestate, the labels and the
+# liquid's operators shared across its harmonics: measured 0.19 (the flight example) and 0.26
+# (the default case) of the "vehicle modes" and "vehicle regions" parts of a separate run;
+# 0.4 taken (the searches and certificates are priced in full)
+_FLIGHT_SHARED = 0.4
+_FLIGHT_SHARED_PARTS = ("vehicle modes", "vehicle regions")
 
 
 def flight_time_seconds(case: Any) -> float:
     """The predicted mean time (s, one core) of a frozen time of the flight
     (:mod:`flexbooster.flight_stage`): :func:`estimate_vehicle_cost` of the frozen case
     (:func:`flexbooster.model.frozen_case`: its fills, F0 and gamma over the flight's Omega
-    range; no figures and no critical damping, which the flight does not compute) at
+    range; no figures and no critical damping, which the flight does not compute; its modes and
+    harmonic builds at 0.4 of a separate run's, shared across harmonics) at
     :data:`FLIGHT_SAMPLES` frozen times equally spaced in index, averaged over the frozen times
     by the trapezoidal rule (linear between the samples), plus the forced resonances of each
     time (k = 0, and k = 1 with a misalignment); 0 without ``[flight]``.
@@ -1038,14 +1074,15 @@ def flight_time_seconds(case: Any) -> float:
     if times.size == 0:
         return 0.0
     try:
-        dofs = _dof_factor(vehicle_from_case(case))
+        forced = _FLIGHT_FORCED * forced_seconds(vehicle_from_case(case), 0) * (
+            1.0 + (case.thrust.misalignment != 0.0))
     except ValueError:  # a vehicle the mesh refuses: the stage says why
         return 0.0
-    forced = _C_FLIGHT_FORCED * dofs * (1.0 + (case.thrust.misalignment != 0.0))
     samples = np.unique(np.linspace(0, times.size - 1, FLIGHT_SAMPLES).round().astype(int))
-    each = np.array([sum(v for k, v in estimate_vehicle_cost(
-        frozen_case(case, float(times[i])), figures=False).parts.items()
-        if k != CRITICAL_DAMPING_PART) for i in samples])
+    each = np.array([sum(v * (_FLIGHT_SHARED if k in _FLIGHT_SHARED_PARTS else 1.0)
+                         for k, v in estimate_vehicle_cost(
+                             frozen_case(case, float(times[i])), figures=False).parts.items()
+                         if k != CRITICAL_DAMPING_PART) for i in samples])
     mean = float(np.mean(np.interp(np.arange(times.size), samples, each)))
     return mean + forced
 
