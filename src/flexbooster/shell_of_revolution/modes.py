@@ -308,7 +308,9 @@ def _mesh(vehicle: Vehicle, elements_per_segment, order: int, refinement: int = 
 @dataclass(frozen=True)
 class _Harmonic:
     """Matrices of one harmonic, with the rigid-free basis Q (None: no rigid motions); M with
-    the tanks' liquid, ``structural_mass`` without it (the shell and the lumped masses)."""
+    the tanks' liquid, ``structural_mass`` without it (the shell and the lumped masses);
+    ``reflectors``: Q as the trailing columns of a product of Householder reflectors (LAPACK
+    ``geqrf`` form (qr, tau)), or None when Q is not one."""
 
     k: int
     mesh: Mesh
@@ -322,6 +324,7 @@ class _Harmonic:
     dmap: DofMap
     elem_k: np.ndarray
     structural_mass: np.ndarray
+    reflectors: tuple | None = None
 
     @property
     def n_rigid(self) -> int:
@@ -373,20 +376,38 @@ def _new_harmonic(vehicle: Vehicle, mesh: Mesh, k: int, *, F0: float, supported:
     if liquid is not None:
         M = M + liquid.matrix
         Z = liquid.basis  # the volume-keeping motions of full closed tanks (k = 0), or None
-    Q = Z
+    Q, reflectors = Z, None
     if R.shape[1]:
-        q_full, _ = np.linalg.qr(M @ R if Z is None else Z.T @ M @ R, mode="complete")
+        MR = M @ R if Z is None else Z.T @ M @ R
+        q_full, _ = np.linalg.qr(MR, mode="complete")
         # Q^T M R = 0: the M-orthogonal complement (Bathe 10.2), within the admissible motions
         Q = q_full[:, R.shape[1]:] if Z is None else Z @ q_full[:, R.shape[1]:]
+        if Z is None:  # the same reflectors (geqrf of the same matrix)
+            reflectors = sla.qr(MR, mode="raw")[0]
+            _readonly(*reflectors)
     _readonly(M, K, G, Q, R, ke, hm.mass)
     return _Harmonic(k=k, mesh=mesh, theory=vehicle.theory, prestate=pre, M=M, K=K, G=G, Q=Q,
-                     R=R, dmap=dmap, elem_k=ke, structural_mass=hm.mass)
+                     R=R, dmap=dmap, elem_k=ke, structural_mass=hm.mass,
+                     reflectors=reflectors)
 
 
 def _project(h: _Harmonic, mat: np.ndarray) -> np.ndarray:
+    """Q^T mat Q, symmetrised; with Householder reflectors, (H^T mat H) without its first
+    n_rigid rows and columns: O(n^2 n_rigid) instead of two dense products (Golub & Van Loan
+    2013, sec. 5.1.6)."""
     if h.Q is None:
         return mat
-    out = h.Q.T @ mat @ h.Q
+    if h.reflectors is None:
+        out = h.Q.T @ mat @ h.Q
+    else:
+        qr, tau = h.reflectors
+        ormqr, = sla.get_lapack_funcs(("ormqr",), (qr,))
+        lwork = 64 * mat.shape[0]
+        left, _, info = ormqr("L", "T", qr, tau, mat, lwork)
+        both, _, info2 = ormqr("R", "N", qr, tau, left, lwork, overwrite_c=1)
+        if info or info2:
+            raise ValueError(f"_project: LAPACK ormqr failed (info {info}, {info2})")
+        out = both[h.n_rigid:, h.n_rigid:]
     return 0.5 * (out + out.T)
 
 
