@@ -872,3 +872,22 @@ def test_lowest_sparse_finds_a_double_eigenvalue_twice():
     vals, _ = modes._lowest_sparse(A, B, 20)
     one = sla.eigh(a, b, subset_by_index=(0, 9), eigvals_only=True)
     np.testing.assert_allclose(vals, np.repeat(one, 2), rtol=1e-12)
+
+
+@pytest.mark.parametrize("k", [0, 1])
+def test_rigid_free_projection_is_the_basis_product(k):
+    """The projection of a harmonic with rigid motions onto their M-orthogonal complement (by
+    its Householder reflectors) against the explicit product Q^T X Q of the basis columns
+    (dense BLAS), for M and K_e + K_g of a free-free stack: equal to 1e-13 of the largest
+    entry (round-off of either product); Q^T M R = 0 (the complement, 1e-12 relative)."""
+    from flexbooster.shell_of_revolution import modes
+
+    veh = Vehicle([Cylinder(1.0, 3.0, 0.01, **STEEL), Cone(1.0, 0.7, 1.0, 0.008, **STEEL)])
+    mesh = mesh_vehicle(veh)
+    h = modes._new_harmonic(veh, mesh, k, F0=1e5, supported=None, geometric=True)
+    assert h.reflectors is not None and h.n_rigid == 2
+    for X in (h.M, h.K + h.G):
+        ref = h.Q.T @ X @ h.Q
+        np.testing.assert_allclose(modes._project(h, X), 0.5 * (ref + ref.T), rtol=0.0,
+                                   atol=1e-13 * np.abs(ref).max())
+    np.testing.assert_allclose(h.Q.T @ h.M @ h.R, 0.0, atol=1e-12 * np.abs(h.M @ h.R).max())
