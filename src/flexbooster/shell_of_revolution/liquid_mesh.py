@@ -41,6 +41,11 @@ MAX_AXIAL_ELEMENTS = 4000
 #: Radial breakpoints of eta = r / R(x) (graded towards the wall, where the high harmonics and
 #: the corners live).
 ETA_BREAKS = (0.0, 0.5, 0.8, 0.96, 1.0)
+#: Largest aspect ratio (longer over shorter side) of the elements of a mesh whose interiors
+#: are condensed through the decomposition of their pencil; a mesh with a flatter element (a
+#: film of liquid) is condensed by direct solves, which round off less where the Schur
+#: complement cancels most of the element's operator.
+PENCIL_MAX_ASPECT = 1e3
 
 
 @dataclass(frozen=True)
@@ -152,6 +157,12 @@ class LiquidMesh:
         Node of every element's local node, the 4 p edge nodes first.
     gradient, hoop : ndarray, shape (e, (p + 1)^2, (p + 1)^2)
         int grad psi . grad psi r dr dx (m^2) and int psi psi / r dr dx (m) per element.
+    interior_values : ndarray, shape (e, (p - 1)^2), or None
+        lambda of the element interiors' pencil A_ii v = lambda B_ii v (1/m), v^T B_ii v = 1
+        (the condensation of every k from one decomposition, :func:`condensed_operator`);
+        None when an element is flatter than :data:`PENCIL_MAX_ASPECT`.
+    coupling_gradient, coupling_hoop : ndarray, shape (e, 4 p, (p - 1)^2), or None
+        A_bi V and B_bi V, V the columns v (m^2, m per sqrt(m)).
     """
 
     tank: Tank
@@ -163,6 +174,9 @@ class LiquidMesh:
     nodes: np.ndarray = field(repr=False)
     gradient: np.ndarray = field(repr=False)
     hoop: np.ndarray = field(repr=False)
+    interior_values: np.ndarray = field(repr=False, default=None)
+    coupling_gradient: np.ndarray = field(repr=False, default=None)
+    coupling_hoop: np.ndarray = field(repr=False, default=None)
 
     @property
     def shape(self) -> tuple[int, int]:
@@ -259,7 +273,9 @@ def liquid_mesh(tank: Tank, *, order: int = LIQUID_ORDER, refinement: int = 1) -
                          f"{rs.max():g} m)")
     if empty:
         none = np.zeros((0, (p + 1) ** 2, (p + 1) ** 2))
-        return LiquidMesh(tank, p, xb, eta, xb, eta, none[:, 0].astype(int), none, none)
+        return LiquidMesh(tank, p, xb, eta, xb, eta, none[:, 0].astype(int), none, none,
+                          np.zeros((0, (p - 1) ** 2)), np.zeros((0, 4 * p, (p - 1) ** 2)),
+                          np.zeros((0, 4 * p, (p - 1) ** 2)))
     x_nodes, eta_nodes = _nodes(xb, p), _nodes(eta, p)
     ny = eta_nodes.size
     # element geometry: x = xm + hx xi, eta = em + he zeta, r = R(x) eta (bilinear, exact)
@@ -289,9 +305,25 @@ def liquid_mesh(tank: Tank, *, order: int = LIQUID_ORDER, refinement: int = 1) -
     order = np.argsort(~((a % p == 0) | (b % p == 0)), kind="stable")  # edge nodes first
     nodes = (ex * p * ny + ey * p)[:, None] + (a * ny + b)[None, order]
     grad, hoop = (np.ascontiguousarray(m[:, order][:, :, order]) for m in (grad, hoop))
-    for arr in (xb, eta, x_nodes, eta_nodes, nodes, grad, hoop):
-        arr.setflags(write=False)
-    return LiquidMesh(tank, p, xb, eta, x_nodes, eta_nodes, nodes, grad, hoop)
+    sides = np.stack([2.0 * hx, tank.radius(xm) * 2.0 * he])  # axial, radial (m)
+    pencil = (None, None, None) if np.max(sides.max(axis=0) / sides.min(axis=0)) > \
+        PENCIL_MAX_ASPECT else _interior_pencil(grad, hoop, 4 * p)
+    for arr in (xb, eta, x_nodes, eta_nodes, nodes, grad, hoop, *pencil):
+        if arr is not None:
+            arr.setflags(write=False)
+    return LiquidMesh(tank, p, xb, eta, x_nodes, eta_nodes, nodes, grad, hoop, *pencil)
+
+
+def _interior_pencil(grad: np.ndarray, hoop: np.ndarray, nb: int):
+    """Per element, lambda and V of A_ii V = B_ii V diag(lambda), V^T B_ii V = I (B_ii = L L^T,
+    the symmetric eigenproblem of L^-1 A_ii L^-T; Golub & Van Loan 2013, sec. 8.7.2), and
+    A_bi V, B_bi V: then (A_ii + k^2 B_ii)^-1 = V diag(1 / (lambda + k^2)) V^T for every k."""
+    inv = np.linalg.inv(np.linalg.cholesky(hoop[:, nb:, nb:]))
+    inv_t = np.swapaxes(inv, 1, 2)
+    core = inv @ grad[:, nb:, nb:] @ inv_t
+    lam, vec = np.linalg.eigh(0.5 * (core + np.swapaxes(core, 1, 2)))
+    vec = inv_t @ vec
+    return lam, grad[:, :nb, nb:] @ vec, hoop[:, :nb, nb:] @ vec
 
 
 # ------------------------------------------------------------------------ boundary integrals
@@ -392,7 +424,9 @@ def dof_index(mesh: LiquidMesh, k: int, *, open_surface: bool) -> tuple[np.ndarr
 
 def condensed_operator(mesh: LiquidMesh, k: int, index: np.ndarray, n: int) -> sp.csc_matrix:
     """H = A + k^2 B (m^2, without c_k) on the DOFs of ``index``, sparse (n, n), the element
-    interiors condensed statically (H_bb - H_bi H_ii^-1 H_ib).
+    interiors condensed statically (H_bb - H_bi H_ii^-1 H_ib, H_ii^-1 from the mesh's
+    decomposition of the interiors' pencil: W diag(1 / (lambda + k^2)) W^T, W = H_bi V; by
+    direct solves without it).
 
     Parameters
     ----------
@@ -403,9 +437,15 @@ def condensed_operator(mesh: LiquidMesh, k: int, index: np.ndarray, n: int) -> s
     index, n : see :func:`dof_index`.
     """
     nb = 4 * mesh.order  # element-edge nodes, first in the element's node order
-    H = mesh.gradient + (k * k) * mesh.hoop
-    hib = H[:, nb:, :nb]
-    S = H[:, :nb, :nb] - hib.transpose(0, 2, 1) @ np.linalg.solve(H[:, nb:, nb:], hib)
+    k2 = float(k * k)
+    if mesh.interior_values is None:  # a flat element: direct solves
+        H = mesh.gradient + k2 * mesh.hoop
+        hib = H[:, nb:, :nb]
+        S = H[:, :nb, :nb] - hib.transpose(0, 2, 1) @ np.linalg.solve(H[:, nb:, nb:], hib)
+    else:
+        W = mesh.coupling_gradient + k2 * mesh.coupling_hoop
+        S = (mesh.gradient[:, :nb, :nb] + k2 * mesh.hoop[:, :nb, :nb]
+             - (W / (mesh.interior_values + k2)[:, None, :]) @ np.swapaxes(W, 1, 2))
     d = index[mesh.nodes[:, :nb]]
     keep = (d[:, :, None] >= 0) & (d[:, None, :] >= 0)
     rows = np.broadcast_to(d[:, :, None], S.shape)[keep]

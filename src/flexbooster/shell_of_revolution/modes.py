@@ -78,6 +78,9 @@ SIGN_TIE_RTOL = 1e-6
 #: The lowest modes of a harmonic without rigid motions by sparse shift-invert Lanczos
 #: (:func:`_lowest_sparse`) from this many DOFs on, when at most an eighth of them is wanted.
 SPARSE_MIN_DOFS = 200
+#: Krylov steps of the Lanczos of :func:`_lowest_sparse` before it hands over to ARPACK: at most
+#: this many times the pairs wanted, and at least LANCZOS_EXTRA more than them.
+LANCZOS_FACTOR, LANCZOS_EXTRA = 4, 100
 #: Shape samples per element of the labels of :func:`labelled_modal_system` (the default
 #: ``points_per_element`` of :func:`vehicle_modes`, whose labels it reproduces).
 _LABEL_POINTS = 9
@@ -305,7 +308,9 @@ def _mesh(vehicle: Vehicle, elements_per_segment, order: int, refinement: int = 
 @dataclass(frozen=True)
 class _Harmonic:
     """Matrices of one harmonic, with the rigid-free basis Q (None: no rigid motions); M with
-    the tanks' liquid, ``structural_mass`` without it (the shell and the lumped masses)."""
+    the tanks' liquid, ``structural_mass`` without it (the shell and the lumped masses);
+    ``reflectors``: Q as the trailing columns of a product of Householder reflectors (LAPACK
+    ``geqrf`` form (qr, tau)), or None when Q is not one."""
 
     k: int
     mesh: Mesh
@@ -319,6 +324,7 @@ class _Harmonic:
     dmap: DofMap
     elem_k: np.ndarray
     structural_mass: np.ndarray
+    reflectors: tuple | None = None
 
     @property
     def n_rigid(self) -> int:
@@ -370,20 +376,38 @@ def _new_harmonic(vehicle: Vehicle, mesh: Mesh, k: int, *, F0: float, supported:
     if liquid is not None:
         M = M + liquid.matrix
         Z = liquid.basis  # the volume-keeping motions of full closed tanks (k = 0), or None
-    Q = Z
+    Q, reflectors = Z, None
     if R.shape[1]:
-        q_full, _ = np.linalg.qr(M @ R if Z is None else Z.T @ M @ R, mode="complete")
+        MR = M @ R if Z is None else Z.T @ M @ R
+        q_full, _ = np.linalg.qr(MR, mode="complete")
         # Q^T M R = 0: the M-orthogonal complement (Bathe 10.2), within the admissible motions
         Q = q_full[:, R.shape[1]:] if Z is None else Z @ q_full[:, R.shape[1]:]
+        if Z is None:  # the same reflectors (geqrf of the same matrix)
+            reflectors = sla.qr(MR, mode="raw")[0]
+            _readonly(*reflectors)
     _readonly(M, K, G, Q, R, ke, hm.mass)
     return _Harmonic(k=k, mesh=mesh, theory=vehicle.theory, prestate=pre, M=M, K=K, G=G, Q=Q,
-                     R=R, dmap=dmap, elem_k=ke, structural_mass=hm.mass)
+                     R=R, dmap=dmap, elem_k=ke, structural_mass=hm.mass,
+                     reflectors=reflectors)
 
 
 def _project(h: _Harmonic, mat: np.ndarray) -> np.ndarray:
+    """Q^T mat Q, symmetrised; with Householder reflectors, (H^T mat H) without its first
+    n_rigid rows and columns: O(n^2 n_rigid) instead of two dense products (Golub & Van Loan
+    2013, sec. 5.1.6)."""
     if h.Q is None:
         return mat
-    out = h.Q.T @ mat @ h.Q
+    if h.reflectors is None:
+        out = h.Q.T @ mat @ h.Q
+    else:
+        qr, tau = h.reflectors
+        ormqr, = sla.get_lapack_funcs(("ormqr",), (qr,))
+        lwork = 64 * mat.shape[0]
+        left, _, info = ormqr("L", "T", qr, tau, mat, lwork)
+        both, _, info2 = ormqr("R", "N", qr, tau, left, lwork, overwrite_c=1)
+        if info or info2:
+            raise ValueError(f"_project: LAPACK ormqr failed (info {info}, {info2})")
+        out = both[h.n_rigid:, h.n_rigid:]
     return 0.5 * (out + out.T)
 
 
@@ -406,25 +430,97 @@ def _none_below(stiff: np.ndarray, mass: np.ndarray, w2: float) -> bool:
 
 def _lowest_sparse(A: np.ndarray, B: np.ndarray, count: int) -> tuple | None:
     """The ``count`` lowest eigenpairs of A x = lambda B x (symmetric, B positive definite),
-    B-normalised, ascending, when A is positive definite (None otherwise): Lanczos in
-    shift-invert mode about 0 (ARPACK; R. B. Lehoucq, D. C. Sorensen, C. Yang, *ARPACK Users'
-    Guide*, 1998, sec. 3.2) on a symmetric sparse LU of A, to machine precision (tol = 0).
+    B-normalised, ascending, when A is positive definite (None otherwise), to machine
+    precision, in shift-invert mode about 0 on a symmetric sparse LU of A: Lanczos with full
+    reorthogonalisation (:func:`_lanczos`), accepted when Sylvester's law of inertia counts
+    exactly ``count`` eigenvalues below a shift between its last wanted and its next Ritz
+    value (none missed, e.g. a multiple one; else the dense ``eigh``); not converged within
+    its steps, implicitly restarted Lanczos (ARPACK; R. B. Lehoucq, D. C. Sorensen, C. Yang,
+    *ARPACK Users' Guide*, 1998, sec. 3.2; tol = 0).
     The pairs of the dense ``eigh``; one sparse factorisation of the banded FE matrix (dense
     only in the liquid's blocks) instead of a dense tridiagonal reduction. Positive
-    definiteness by Sylvester's law of inertia: the pivots of the symmetric factorisation
-    (no row interchange) are all positive.
+    definiteness by the same law: the pivots of the symmetric factorisation (no row
+    interchange) are all positive.
     """
     As = sp.csc_matrix(A)
     lu = spla.splu(As, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
                    options={"SymmetricMode": True})
     if np.any(lu.perm_r != lu.perm_c) or np.any(lu.U.diagonal() <= 0.0):
         return None
-    op = spla.LinearOperator(A.shape, matvec=lu.solve, dtype=float)
-    vals, vecs = spla.eigsh(As, k=count, M=sp.csr_matrix(B), sigma=0.0,
-                            OPinv=op, which="LM", tol=0.0, v0=np.ones(A.shape[0]))
+    Bs = sp.csr_matrix(B)
+    found = _lanczos(lu.solve, Bs, count)
+    below = -1 if found is None else _count_below(As - found[2] * Bs)
+    if below == count:
+        vals, vecs = found[0], found[1]
+    elif found is not None:  # one missed (a multiple eigenvalue) or undecided: dense
+        vals, vecs = sla.eigh(A, B, subset_by_index=(0, count - 1), driver="gvx")
+    else:
+        op = spla.LinearOperator(A.shape, matvec=lu.solve, dtype=float)
+        vals, vecs = spla.eigsh(As, k=count, M=Bs, sigma=0.0, OPinv=op, which="LM", tol=0.0,
+                                v0=np.ones(A.shape[0]))
     order = np.argsort(vals)
     vals, vecs = vals[order], vecs[:, order]
     return vals, vecs / np.sqrt(np.einsum("ij,ij->j", vecs, B @ vecs))
+
+
+def _lanczos(solve: Callable, B, count: int) -> tuple | None:
+    """(lambda (count,), x (n, count), shift) of A x = lambda B x by Lanczos on A^-1 B in the B
+    inner product from x0 = 1, every new vector B-orthogonalised twice against all the
+    previous ones (B. N. Parlett, *The Symmetric Eigenvalue Problem*, 1998, sec. 13.4;
+    T. Ericsson, A. Ruhe, Math. Comp. 35 (1980) 1251-1268), converged when the residual
+    |beta_m s_mi| of each of the count + 1 largest Ritz values theta_i of 1 / lambda is at
+    most machine epsilon x theta_i (ARPACK's test at tol = 0); the shift is halfway between
+    the count-th and the next lambda. None when not converged within the step limit
+    (:data:`LANCZOS_FACTOR`, :data:`LANCZOS_EXTRA`) or on a breakdown.
+    """
+    n = B.shape[0]
+    limit = min(n, max(LANCZOS_FACTOR * count, count + LANCZOS_EXTRA))
+    if limit < count + 2:
+        return None
+    Q, BQ = np.zeros((limit, n)), np.zeros((limit, n))
+    alpha, beta = np.zeros(limit), np.zeros(limit)
+    v = np.ones(n)
+    bv = B @ v
+    norm = np.sqrt(v @ bv)
+    Q[0], BQ[0] = v / norm, bv / norm
+    check = count + 20
+    eps = np.finfo(float).eps
+    for j in range(limit):
+        w = solve(BQ[j])
+        alpha[j] = w @ BQ[j]
+        for _ in range(2):
+            w -= Q[:j + 1].T @ (BQ[:j + 1] @ w)
+        bw = B @ w
+        beta[j] = np.sqrt(max(float(w @ bw), 0.0))
+        m = j + 1
+        if m >= min(check, limit):
+            theta, S = sla.eigh_tridiagonal(alpha[:m], beta[:m - 1])
+            theta, S = theta[::-1], S[:, ::-1]
+            want = slice(0, count + 1)
+            if np.all(np.abs(beta[j] * S[-1, want]) <= eps * np.abs(theta[want])) and \
+                    theta[count] > 0.0:
+                lam = 1.0 / theta[:count + 1]
+                return lam[:count], Q[:m].T @ S[:, :count], 0.5 * (lam[count - 1] + lam[count])
+            check = m + 10
+        if m == limit or beta[j] <= eps * abs(alpha[j]):
+            return None
+        Q[m], BQ[m] = w / beta[j], bw / beta[j]
+    return None
+
+
+def _count_below(shifted) -> int:
+    """The number of eigenvalues of A x = lambda B x below a shift s from ``shifted`` = A - s B
+    (sparse): the negative pivots of its symmetric factorisation (Sylvester's law of
+    inertia); -1 when it needs a row interchange or a pivot is zero (undecided)."""
+    try:
+        lu = spla.splu(sp.csc_matrix(shifted), permc_spec="MMD_AT_PLUS_A",
+                       diag_pivot_thresh=0.0, options={"SymmetricMode": True})
+    except RuntimeError:
+        return -1
+    d = lu.U.diagonal()
+    if np.any(lu.perm_r != lu.perm_c) or np.any(d == 0.0):
+        return -1
+    return int(np.count_nonzero(d < 0.0))
 
 
 def _solve(h: _Harmonic, *, loaded: bool, n_modes: int | None, w2_max: float | None):

@@ -4,8 +4,10 @@
 
 from __future__ import annotations
 
+from collections import OrderedDict
 from dataclasses import dataclass, replace
 from functools import lru_cache
+from threading import Lock
 
 import numpy as np
 from numpy.polynomial import legendre as leg
@@ -88,9 +90,50 @@ def wetted_wall(vehicle: Vehicle, mesh: Mesh, tank: Tank, k: int, *,
     k = count("k", k, 0, 200)
     points = count("points", points, 1, 40)
     ref = reference_element(mesh.order)
+    wall, el, local = _wall_rows(mesh, tank, np.ravel(np.asarray(breaks, dtype=float)), points)
+    x2 = mesh.x1 + mesh.length * mesh.cos_phi
+    dmap = dof_map(vehicle, mesh, k)
+    N = _reduce(dmap, mesh.dofs[el], local)
+    ends = [np.zeros(dmap.n), np.zeros(dmap.n)]
+    end_el = [-1, -1]
+    if k <= 1:
+        for i, (station, end) in enumerate(((tank.aft, 0), (tank.fwd, 1))):
+            edge = (mesh.x1, x2)[end]  # the element that starts (ends) the tank's wall
+            at = np.flatnonzero((np.abs(edge - station) <= STATION_RTOL * x2.max())
+                                & (mesh.cos_phi > 0))
+            if at.size == 0:
+                raise ValueError(f"tank end at {station!r} m: not an element end of the "
+                                 "shell's mesh (make the tank with vehicle_tank)")
+            e = int(at[-end])
+            end_el[i] = e
+            r = mesh.r1[e] + end * mesh.length[e] * mesh.sin_phi[e]
+            fr = mesh.frame[e, end]  # u_x = a cos(frame) - b sin(frame)
+            row = np.zeros((1, ref.n_dof))
+            row[0, 4 * end], row[0, 4 * end + 2] = np.cos(fr) / r**k, -np.sin(fr) / r**k
+            ends[i] = _reduce(dmap, mesh.dofs[e][None], row)[0]
+    return WettedWall(wall, N, ends[0], ends[1], el, tuple(end_el))
+
+
+#: The k-independent rows of :func:`wetted_wall` (quadrature, w in the element DOFs) of the
+#: latest meshes and tanks, each entry holding its mesh: a harmonic's wall reuses them.
+_ROWS: OrderedDict = OrderedDict()
+_ROWS_KEPT = 16
+_ROWS_LOCK = Lock()
+
+
+def _wall_rows(mesh: Mesh, tank: Tank, breaks: np.ndarray, points: int):
+    """(WallQuadrature, element of each point, w per element DOF of each point) of the wetted
+    meridian x_a .. x_s: the same for every harmonic, computed once per mesh (by identity),
+    wetted interval, cuts and points (read-only arrays)."""
+    key = (id(mesh), tank.aft, tank.surface, breaks.tobytes(), points)
+    with _ROWS_LOCK:
+        hit = _ROWS.get(key)
+    if hit is not None and hit[0] is mesh:
+        return hit[1]
+    ref = reference_element(mesh.order)
     g, gw = leg.leggauss(points)
     x2 = mesh.x1 + mesh.length * mesh.cos_phi
-    cuts = np.unique(np.concatenate(([tank.aft, tank.surface], np.ravel(breaks))))
+    cuts = np.unique(np.concatenate(([tank.aft, tank.surface], breaks)))
     xi, wt, els = [], [], []
     # the elements that overlap the wetted wall by more than the round-off of their computed
     # ends (x2 = x1 + l cos phi): not the neighbour that ends at x_a within it
@@ -117,30 +160,17 @@ def wetted_wall(vehicle: Vehicle, mesh: Mesh, tank: Tank, k: int, *,
         delta = mesh.phi[el] - mesh.frame[el, end]
         local[:, ia] = -np.sin(delta) * local[:, ib]
         local[:, ib] *= np.cos(delta)
-    dmap = dof_map(vehicle, mesh, k)
-    N = _reduce(dmap, mesh.dofs[el], local)
     wall = WallQuadrature(x=mesh.x1[el] + s * mesh.cos_phi[el],
                           r=mesh.r1[el] + s * mesh.sin_phi[el],
                           normal=np.stack([-mesh.sin_phi[el], mesh.cos_phi[el]], axis=1),
                           weight=wt)
-    ends = [np.zeros(dmap.n), np.zeros(dmap.n)]
-    end_el = [-1, -1]
-    if k <= 1:
-        for i, (station, end) in enumerate(((tank.aft, 0), (tank.fwd, 1))):
-            edge = (mesh.x1, x2)[end]  # the element that starts (ends) the tank's wall
-            at = np.flatnonzero((np.abs(edge - station) <= STATION_RTOL * x2.max())
-                                & (mesh.cos_phi > 0))
-            if at.size == 0:
-                raise ValueError(f"tank end at {station!r} m: not an element end of the "
-                                 "shell's mesh (make the tank with vehicle_tank)")
-            e = int(at[-end])
-            end_el[i] = e
-            r = mesh.r1[e] + end * mesh.length[e] * mesh.sin_phi[e]
-            fr = mesh.frame[e, end]  # u_x = a cos(frame) - b sin(frame)
-            row = np.zeros((1, ref.n_dof))
-            row[0, 4 * end], row[0, 4 * end + 2] = np.cos(fr) / r**k, -np.sin(fr) / r**k
-            ends[i] = _reduce(dmap, mesh.dofs[e][None], row)[0]
-    return WettedWall(wall, N, ends[0], ends[1], el, tuple(end_el))
+    for arr in (el, local, wall.x, wall.r, wall.normal, wall.weight):
+        arr.setflags(write=False)
+    with _ROWS_LOCK:
+        _ROWS[key] = (mesh, (wall, el, local))
+        while len(_ROWS) > _ROWS_KEPT:
+            _ROWS.popitem(last=False)
+    return wall, el, local
 
 
 def _reduce(dmap, dofs: np.ndarray, rows: np.ndarray) -> np.ndarray:
