@@ -720,13 +720,22 @@ def _bending_search_seconds(case: Any, vehicle: Any, n_modes: int, zeta: float) 
         case.thrust, lambda work: bending_search_steps(work, damping_ratio=zeta)[1])
 
 
+# The undamped seed search of a harmonic with few candidates is as long as its Brent rounds
+# (about 35 evaluations of the indicator) times a candidate's steps, each step of the Lawson
+# modal kernel for one point 2.5x the dense kernel's (a `make fuzz`-like vehicle, k = 2, one
+# candidate of 23,171 half-period steps at n = 20: 40 s on a loaded core against 4.7 s priced)
+_BRENT_ROUNDS, _UNDAMPED_STEP_FACTOR = 35.0, 2.5
+
+
 def shell_search_seconds(work: Any) -> float:
     """CPU time (s, one core) of the region search of a damped harmonic k >= 2 from its work
     counted up front: the undamped seed search, E_u = 10 evaluations of the steps at the
-    candidate centres and 70 evaluated points per candidate (:func:`damped_search_cost`'s
-    constants); the damped search runs only from the seeds it finds, unknown up front, and is
-    not priced (measured on three vehicles' harmonics k = 3..20, seeds or none, the search
-    took 0.3-1.0 times this). 0 when steady or certified stable.
+    candidate centres or, where longer (few candidates), 35 Brent rounds of a mean
+    candidate's steps at 2.5x the step cost, and 70 evaluated points per candidate
+    (:func:`damped_search_cost`'s constants); the damped search runs only from the seeds it
+    finds, unknown up front, and is not priced (measured on three vehicles' harmonics k =
+    3..20, seeds or none, the search took 0.3-1.0 times this). 0 when steady or certified
+    stable.
 
     Parameters
     ----------
@@ -739,8 +748,13 @@ def shell_search_seconds(work: Any) -> float:
         raise ValueError(f"work = {type(work).__name__}: must be a SearchWork")
     if work.steady or work.certified:
         return 0.0
+    step = search_step_seconds(work.n)
+    # the undamped seed search maximises each candidate's indicator together (Brent): a round
+    # per evaluation, each as long as a candidate's step count, at one point's step cost
+    rounds = (_BRENT_ROUNDS * _UNDAMPED_STEP_FACTOR * step * work.undamped_steps
+              / max(work.n_candidates, 1))
     return float(_C_SEARCH_POINT * _EVALS_POINTS * work.n_candidates
-                 + _EVALS_UNDAMPED[0] * work.undamped_steps * search_step_seconds(work.n))
+                 + max(_EVALS_UNDAMPED[0] * work.undamped_steps * step, rounds))
 
 
 def _shell_searches(case: Any, vehicle: Any, n_k: int, n_modes: int) -> float:
