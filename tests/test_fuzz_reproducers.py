@@ -934,3 +934,30 @@ def test_fuzz_reproducer_centre_of_mass_aft_of_the_aft_edge_with_a_gimbal():
         analyze(flexbooster.load_case(case), figures=False, vehicle=False)
     except CaseError as exc:  # another rule may refuse it (the thin shell buckles)
         assert exc.field != "vehicle.masses"
+
+
+def test_fuzz_reproducer_flight_of_a_vehicle_with_a_flat_plate():
+    """Found by `make fuzz` (3 of 1,000 cases, an internal ``ValueError: prestress_F0 = 71.4:
+    a flat annular plate cannot carry the axial force as a membrane``): a [flight] of a vehicle
+    whose first segment is a cone of length 0. As the vehicle's regions (which need the same
+    prestress), the flight is skipped with a one-line ``flight-skipped`` warning naming
+    vehicle.segments; the rest of the analysis stands."""
+    case = {"name": "fuzz", "max_seconds": 300.0,
+            "thrust": {"gamma": 0.18, "K": 4.0, "omega_min": 12.67, "omega_max": 2630.8,
+                       "n_omega": 5, "F0": 100.0},
+            "damping": {"pitch_ratio": 0.5, "modal_ratio": 0.0},
+            "vehicle": {"k_max": 2, "n_modes": 2, "damping_ratio": 0.1, "theory": "donnell",
+                        "aft_end": "clamped", "E": 6.22e10, "nu": 0.305, "rho": 14.2,
+                        "segments": [
+                            {"kind": "cone", "radius_aft": 1.0, "radius_fwd": 0.982,
+                             "length": 0.0, "thickness": 0.0982},
+                            {"kind": "cone", "radius_aft": 2.77, "radius_fwd": 2.77,
+                             "length": 18.2, "thickness": 0.277, "junction": "memo-bulkhead"}]},
+            "flight": {"stations": 2, "points": [
+                {"time": 0.0, "F0": 71.4, "fill": [], "oscillation": 665.5, "gamma": 0.32},
+                {"time": 123.4, "F0": 100.0, "fill": [], "oscillation": 2193.2, "gamma": 0.42}]}}
+    res = analyze(flexbooster.load_case(case), figures=False)
+    assert res.flight is None
+    (skipped,) = [w for w in res.warnings if w.code == "flight-skipped"]
+    assert skipped.field == "vehicle.segments" and "\n" not in skipped.message
+    json.loads(dumps_finite(res.to_dict()))

@@ -54,6 +54,7 @@ from .shell_of_revolution.modes import (
     shared_harmonics,
     vehicle_modes,
 )
+from .shell_of_revolution.survey import has_flat_plate
 
 __all__ = ["flight_stage", "frozen_time", "assemble_flight", "FrozenTime", "flight_omega_range",
            "KNOWN_FREQUENCY_MARGIN", "MATCH_RTOL", "MIN_PARTICIPATION", "PEAK_WINDOW",
@@ -224,6 +225,12 @@ def flight_stage(case: Case, *, frozen: Sequence[FrozenTime] | None = None
         if frozen is not None:
             raise ValueError("frozen: given for a case without [flight]")
         return None, []
+    if has_flat_plate(plan.base):  # as the vehicle's regions: the prestress cannot be made
+        return None, [AnalysisWarning(
+            "flight-skipped", "vehicle.segments",
+            "a flat annular plate (a cone of length 0) cannot carry the thrust as a membrane, "
+            "so no frozen time has its prestress: the flight is not computed (give the plate an "
+            "axial length: a cone)")]
     if frozen is None:
         frozen = [_frozen_at(plan, i) for i in range(plan.times.size)]
     return _assemble(case, plan, frozen)

@@ -21,8 +21,9 @@ from ..analysis import analyze
 from ..case import Case
 from ..errors import CaseError
 from ..flight_stage import FrozenTime, frozen_time
-from ..model import flight_times, model_from_case
+from ..model import flight_times, model_from_case, vehicle_from_case
 from ..results import Results
+from ..shell_of_revolution.survey import has_flat_plate
 
 __all__ = ["FLIGHT_ON_DASK", "check_flight_budget", "frozen_times_on_dask", "analyze_on_dask"]
 
@@ -74,6 +75,8 @@ def frozen_times_on_dask(case: Case, client: Any) -> tuple[FrozenTime, ...]:
     n = int(flight_times(case).size)
     if n == 0:
         raise CaseError("flight", None, "the case has no [flight]: no frozen times")
+    if has_flat_plate(vehicle_from_case(case)):  # the flight stage skips it, with a warning
+        return ()
     stamp = time.monotonic_ns()
     futures = [client.submit(frozen_time, case, i, pure=False,
                              key=f"flexbooster-flight-{i}-{stamp}") for i in range(n)]
