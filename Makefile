@@ -64,8 +64,8 @@ test-browser: browser
 # documented errors, internal errors, NaN, over the budget) and fails unless the last three
 # are 0.  `make test` runs the same file with a bounded number of examples.  A third of the
 # valid cases have a [vehicle] table (segments with loads and stiffeners, masses, a tank), one
-# in five runs the vehicle's regions (budget 20 s).
-# About 6-9 min on 2 shared cores;
+# in five runs the vehicle's regions (budget 20 s), those with segments through a [flight].
+# About an hour on the shared 2-core machine at load 4-6 (the flights, the vehicle regions);
 # FLEXBOOSTER_FUZZ_EXAMPLES=200 for a shorter run, FLEXBOOSTER_FUZZ_LOG=FILE for one line per
 # case (time, outcome, regions, case); the budget is each case's CPU time.
 fuzz: export OPENBLAS_NUM_THREADS = 1
