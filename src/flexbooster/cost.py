@@ -102,7 +102,10 @@ _C_TONGUE_LEVEL = 0.04  # pitch chart, per tongue and gamma level
 # critical damping of one pitch tongue r (floquet.tongue_critical_damping), c0 + c1 r s: 0.61 s
 # at r = 5 to 2.46 s at r = 33, gamma = 0.92 (one core, measured on a fuzz case)
 _C_TONGUE_CRITICAL = (0.28, 0.066)
-_C_STABILITY = 1.5e-6  # per (excitation curve x shell mode)
+# per (excitation curve x shell mode): the memo case at M = N = 10 and 14 (660 and 1,260 shell
+# modes, 42,000 and 73,000 roots) 0.57 s and 1.09 s on a loaded core, 1.43x and 1.47x of
+# 1.5e-6; 2e-6 taken
+_C_STABILITY = 2e-6
 # the stability table's pitch exponent beta (Hill's continuant, N rows: floquet.hill_order) on
 # its scan grid and again, about as much, at the roots' brackets: per row and point, measured
 # 1.1e-7 s (2,001 points: 0.7 s at a = 3e5, N = 3306, loaded core; the table 1.65 s)
