@@ -961,3 +961,19 @@ def test_fuzz_reproducer_flight_of_a_vehicle_with_a_flat_plate():
     (skipped,) = [w for w in res.warnings if w.code == "flight-skipped"]
     assert skipped.field == "vehicle.segments" and "\n" not in skipped.message
     json.loads(dumps_finite(res.to_dict()))
+
+
+@pytest.mark.slow
+def test_fuzz_reproducer_singular_half_period_map_is_a_search_gap():
+    """Found by the independent fuzz (seed 39, case 119; also on the code before): at the
+    flight's frozen time 8 of the mutated default vehicle (gimbal K = 3, damping 0.3) a
+    harmonic's undamped half-period map is finite but singular to working precision, and the
+    run ended with ``LinAlgError: Singular matrix`` (exit 1). Now that harmonic is a search gap
+    (limit ``floating_point``, the regions "not fully searched"; the flight itself is then
+    refused in one line: its thrust buckles the vehicle at t = 140 s)."""
+    from flexbooster.flight_stage import frozen_time
+
+    case = flexbooster.load_case(Path(__file__).parent / "data"
+                                 / "singular_half_period_map_case.toml")
+    gaps = [g for g in frozen_time(case, 8).regions.gaps if g.limit == "floating_point"]
+    assert gaps and all("singular to working precision" in g.reason for g in gaps)

@@ -18,7 +18,8 @@ __all__ = ["ModalMatrices", "HarmonicSystem", "LIMIT_ERRORS",
            "floquet_options", "harmonic_regions", "limit_gap", "in_unit_interval", "loaded_modes"]
 
 #: The toolkit's size limits: past one a harmonic is a :class:`~flexbooster.bands.SearchGap`.
-LIMIT_ERRORS = (floquet.TooManyCandidatesError, floquet.StepLimitError)
+LIMIT_ERRORS = (floquet.TooManyCandidatesError, floquet.StepLimitError,
+                floquet.PeriodMapOverflowError)
 
 
 class ModalMatrices:
@@ -233,7 +234,8 @@ def limit_gap(h: HarmonicSystem, lo: float, hi: float, exc: Exception,
     what : str
         What was left out ("not searched", "not traced for the chart").
     """
-    limit = "max_candidates" if isinstance(exc, floquet.TooManyCandidatesError) else "max_steps"
+    limit = ("max_candidates" if isinstance(exc, floquet.TooManyCandidatesError) else
+             "floating_point" if isinstance(exc, floquet.PeriodMapOverflowError) else "max_steps")
     return SearchGap(
         stage="vehicle", limit=limit, k=int(h.k), Omega_lo=float(lo), Omega_hi=float(hi),
         reason=(f"harmonic k = {h.k} {what}: {exc} ({h.omega_loaded.size} modes up to "

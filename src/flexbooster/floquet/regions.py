@@ -22,6 +22,7 @@ from .bounds import stability_certificate
 from .multipliers import (
     MAX_STEPS,
     LinearPeriodicSystem,
+    PeriodMapOverflowError,
     half_period_maps,
     largest_multiplier,
     period_maps,
@@ -320,11 +321,24 @@ def _half_maps_at(system: LinearPeriodicSystem, om: np.ndarray, opt: _Options) -
     return half_period_maps(system, om, steps, chunk=opt.chunk)
 
 
+def _s_matrices_at(system, om, opt) -> tuple:
+    """:func:`.multipliers.s_matrices` of the half-period maps at om;
+    :class:`.multipliers.PeriodMapOverflowError` where a map is singular to working precision
+    (finite entries, but a growth over half a period beyond floating point)."""
+    try:
+        return s_matrices(_half_maps_at(system, om, opt))
+    except np.linalg.LinAlgError:
+        raise PeriodMapOverflowError(
+            f"Omega = {float(np.min(om))!r}..{float(np.max(om))!r}: the half-period map is "
+            "singular to working precision (growth over half a period beyond floating point)",
+            float(np.min(om))) from None
+
+
 def _indicator(system, w, cand, om, opt) -> np.ndarray:
     """F per candidate at om; each point decomposes only the one matrix of
     :func:`.multipliers.s_matrices` it needs (s, s - 2 or s + 2).
     """
-    mats = s_matrices(_half_maps_at(system, om, opt))
+    mats = _s_matrices_at(system, om, opt)
     P = om.size
     rows = np.arange(P)
     simple = cand["kind"] == 0
@@ -375,7 +389,7 @@ def _unstable_indicator(system, om, opt) -> np.ndarray:
 
 
 def _growth_undamped(system, om, opt) -> np.ndarray:
-    _, Xp, Xm = s_matrices(_half_maps_at(system, om, opt))
+    _, Xp, Xm = _s_matrices_at(system, om, opt)
     rho = largest_multiplier(np.linalg.eigvals(Xp), np.linalg.eigvals(Xm))
     return np.log(rho) * om / (2.0 * np.pi)  # log|rho|_max / T
 
