@@ -518,6 +518,10 @@ _C_CERTIFICATE = 3.5e-9
 # two harmonics.
 _C_FORCED = (0.4, 0.8, 2e-5, 5e-7)
 _FORCED_DOFS, _FORCED_BASIS = 780.0, 200.0
+# A basis of many modes (all below 4 Omega_max: unknown up front) costs like the DOFs cubed:
+# 3.2 s for both harmonics at n = 416 with 225 and 344 basis modes (a fuzz case; 0.63 s by
+# the law above), 0.9 s x (n / 263)^3 per harmonic bounds it; the larger of the two is taken
+_C_FORCED_BASIS = 0.9
 
 
 def search_seconds(n_modes: int, omega_min: float, omega_max: float, *, damped: bool,
@@ -1040,10 +1044,11 @@ def capped_steps_warning(estimate: CostEstimate, model: BoosterModel) -> list[An
 _FLIGHT_FORCED = 0.25
 
 
-def forced_seconds(vehicle: Any, n_omega: int) -> float:
+def forced_seconds(vehicle: Any, n_omega: int, *, large_basis: bool = True) -> float:
     """CPU time (s, one core) of the forced response of one harmonic forced, with its
-    convergence run: c0 + c1 (n / 780)^2 + n_omega (c2 + c3 min(n, 200)) for the mesh's n DOFs
-    (measured, see above).
+    convergence run: the larger of c0 + c1 (n / 780)^2 (a few basis modes) and 0.9 (n / 263)^3
+    (a basis of many: the modes below 4 Omega_max are not known up front), plus n_omega (c2 +
+    c3 min(n, 200)), for the mesh's n DOFs (measured, see above).
 
     Parameters
     ----------
@@ -1051,13 +1056,18 @@ def forced_seconds(vehicle: Any, n_omega: int) -> float:
         The vehicle.
     n_omega : int
         Omega points of the response, >= 0.
+    large_basis : bool
+        Bound a basis of many modes too (False: the few-modes law alone, as measured for the
+        flight's frozen times).
     """
     from .shell_of_revolution import mesh_vehicle
 
     n = float(mesh_vehicle(vehicle).n_full)
     c0, c1, c2, c3 = _C_FORCED
     points = count("n_omega", n_omega, 0, None)
-    return float(c0 + c1 * (n / _FORCED_DOFS) ** 2 + points * (c2 + c3 * min(n, _FORCED_BASIS)))
+    many = _C_FORCED_BASIS * (n / _REF_DOFS) ** 3 if large_basis else 0.0
+    return float(max(c0 + c1 * (n / _FORCED_DOFS) ** 2, many)
+                 + points * (c2 + c3 * min(n, _FORCED_BASIS)))
 #: The flight's frozen times whose vehicle stages are estimated (:func:`flight_time_seconds`):
 #: this many, equally spaced in index from the first to the last (each sample builds the
 #: harmonics' modal systems: about 0.5-1 s for the default vehicle).
@@ -1091,7 +1101,8 @@ def flight_time_seconds(case: Any) -> float:
     if times.size == 0:
         return 0.0
     try:
-        forced = _FLIGHT_FORCED * forced_seconds(vehicle_from_case(case), 0) * (
+        forced = _FLIGHT_FORCED * forced_seconds(vehicle_from_case(case), 0,
+                                                 large_basis=False) * (
             1.0 + (case.thrust.misalignment != 0.0))
     except ValueError:  # a vehicle the mesh refuses: the stage says why
         return 0.0
