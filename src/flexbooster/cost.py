@@ -1068,6 +1068,8 @@ def forced_seconds(vehicle: Any, n_omega: int, *, large_basis: bool = True) -> f
     many = _C_FORCED_BASIS * (n / _REF_DOFS) ** 3 if large_basis else 0.0
     return float(max(c0 + c1 * (n / _FORCED_DOFS) ** 2, many)
                  + points * (c2 + c3 * min(n, _FORCED_BASIS)))
+
+
 #: The flight's frozen times whose vehicle stages are estimated (:func:`flight_time_seconds`):
 #: this many, equally spaced in index from the first to the last (each sample builds the
 #: harmonics' modal systems: about 0.5-1 s for the default vehicle).

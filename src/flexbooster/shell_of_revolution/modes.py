@@ -12,9 +12,7 @@ ch. 5 (linear buckling: K_e x = -lambda K_g x).
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator
-from contextlib import contextmanager
-from contextvars import ContextVar
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -37,6 +35,7 @@ from .assembly import (
 from .elements import element_energies, element_fields, reference_element
 from .geometry import Vehicle
 from .prestress import Prestate, load_path, pressure_resultants, pressure_rings
+from .shared import shared_harmonics, shared_value
 from .wetted_wall import tank_added_mass
 
 __all__ = [
@@ -251,42 +250,6 @@ class BucklingLoad:
 
 # ------------------------------------------------------------------------- shared work
 
-#: Within :func:`shared_harmonics`: the meshes, harmonic matrices and eigenpairs computed so
-#: far, keyed by the identity of their inputs (each entry keeps those inputs alive).
-_SHARED: ContextVar[dict | None] = ContextVar("shared_harmonics", default=None)
-
-
-@contextmanager
-def shared_harmonics() -> Iterator[None]:
-    """Within the block, a vehicle's mesh, each harmonic's matrices (shell, liquid, prestress)
-    and each of its eigenproblems are computed once and reused by :func:`vehicle_modes`,
-    :func:`modal_system`, :func:`labelled_modal_system` and the stages built on them: the same
-    numbers as computing them again (the same operations on the same inputs), at the cost of
-    one computation. Inputs are matched by identity (the same :class:`Vehicle` object) and
-    value (k, thrust, load path, mesh options); the cached arrays are read-only. Nested blocks
-    share the outermost one's store.
-    """
-    if _SHARED.get() is not None:
-        yield
-        return
-    token = _SHARED.set({})
-    try:
-        yield
-    finally:
-        _SHARED.reset(token)
-
-
-def _shared(key: tuple, keep: tuple, make: Callable):
-    """``make()``, or its stored value within :func:`shared_harmonics` (``keep``: the inputs
-    whose identities are in ``key``, held so that they outlive the entry)."""
-    store = _SHARED.get()
-    if store is None:
-        return make()
-    if key not in store:
-        store[key] = (keep, make())
-    return store[key][1]
-
-
 def _readonly(*arrays) -> None:
     for arr in arrays:
         if isinstance(arr, np.ndarray):
@@ -297,7 +260,7 @@ def _mesh(vehicle: Vehicle, elements_per_segment, order: int, refinement: int = 
     """:func:`~.assembly.mesh_vehicle`, once per vehicle within :func:`shared_harmonics`."""
     counts = tuple(elements_per_segment) if isinstance(elements_per_segment, list | np.ndarray) \
         else elements_per_segment
-    return _shared(("mesh", id(vehicle), counts, order, refinement), (vehicle,),
+    return shared_value(("mesh", id(vehicle), counts, order, refinement), (vehicle,),
                    lambda: mesh_vehicle(vehicle, elements_per_segment=elements_per_segment,
                                         order=order, refinement=refinement))
 
@@ -357,7 +320,7 @@ def _rigid_subspace(mesh: Mesh, dmap, k: int) -> np.ndarray:
 def _harmonic(vehicle: Vehicle, mesh: Mesh, k: int, *, F0: float, supported: bool | None,
               geometric: bool) -> _Harmonic:
     """The matrices of harmonic k (:class:`_Harmonic`), once within :func:`shared_harmonics`."""
-    return _shared(("harmonic", id(vehicle), id(mesh), k, F0, supported, geometric),
+    return shared_value(("harmonic", id(vehicle), id(mesh), k, F0, supported, geometric),
                    (vehicle, mesh), lambda: _new_harmonic(vehicle, mesh, k, F0=F0,
                                                           supported=supported,
                                                           geometric=geometric))
@@ -365,7 +328,7 @@ def _harmonic(vehicle: Vehicle, mesh: Mesh, k: int, *, F0: float, supported: boo
 
 def _new_harmonic(vehicle: Vehicle, mesh: Mesh, k: int, *, F0: float, supported: bool | None,
                   geometric: bool) -> _Harmonic:
-    pre = _shared(("prestate", id(vehicle), id(mesh), F0, supported), (vehicle, mesh),
+    pre = shared_value(("prestate", id(vehicle), id(mesh), F0, supported), (vehicle, mesh),
                   lambda: thrust_prestate(vehicle, mesh, F0, supported_forward_end=supported)
                   ) if geometric else None  # k-independent: once for every harmonic
     hm = harmonic_matrices(vehicle, mesh, k, prestate=pre)
@@ -533,7 +496,7 @@ def _solve(h: _Harmonic, *, loaded: bool, n_modes: int | None, w2_max: float | N
         _readonly(vals, vecs)
         return vals, vecs
 
-    return _shared(("solve", id(h), loaded, n_modes, w2_max), (h,), make)
+    return shared_value(("solve", id(h), loaded, n_modes, w2_max), (h,), make)
 
 
 def _new_solve(h: _Harmonic, *, loaded: bool, n_modes: int | None, w2_max: float | None):
@@ -634,7 +597,7 @@ def _labels(mesh: Mesh, h: _Harmonic, vecs: np.ndarray, k: int, n_pts_per_el: in
         _readonly(*out)
         return out
 
-    return _shared(("labels", id(mesh), id(h), id(vecs), k, n_pts_per_el), (mesh, h, vecs),
+    return shared_value(("labels", id(mesh), id(h), id(vecs), k, n_pts_per_el), (mesh, h, vecs),
                    make)
 
 

@@ -4,10 +4,8 @@
 
 from __future__ import annotations
 
-from collections import OrderedDict
 from dataclasses import dataclass, replace
 from functools import lru_cache
-from threading import Lock
 
 import numpy as np
 from numpy.polynomial import legendre as leg
@@ -17,6 +15,7 @@ from .assembly import Mesh, dof_map, mesh_vehicle, system_matrices
 from .elements import reference_element
 from .geometry import STATION_RTOL, Vehicle, tank_liquid, tank_wall
 from .liquid import LiquidMesh, Tank, WallQuadrature, added_mass, liquid_mesh
+from .shared import shared_value
 from .slosh import SloshMode, slosh_mode
 
 __all__ = ["WettedWall", "WetSystem", "vehicle_tank", "wetted_wall", "wet_system_matrices",
@@ -114,22 +113,15 @@ def wetted_wall(vehicle: Vehicle, mesh: Mesh, tank: Tank, k: int, *,
     return WettedWall(wall, N, ends[0], ends[1], el, tuple(end_el))
 
 
-#: The k-independent rows of :func:`wetted_wall` (quadrature, w in the element DOFs) of the
-#: latest meshes and tanks, each entry holding its mesh: a harmonic's wall reuses them.
-_ROWS: OrderedDict = OrderedDict()
-_ROWS_KEPT = 16
-_ROWS_LOCK = Lock()
-
-
 def _wall_rows(mesh: Mesh, tank: Tank, breaks: np.ndarray, points: int):
     """(WallQuadrature, element of each point, w per element DOF of each point) of the wetted
-    meridian x_a .. x_s: the same for every harmonic, computed once per mesh (by identity),
-    wetted interval, cuts and points (read-only arrays)."""
-    key = (id(mesh), tank.aft, tank.surface, breaks.tobytes(), points)
-    with _ROWS_LOCK:
-        hit = _ROWS.get(key)
-    if hit is not None and hit[0] is mesh:
-        return hit[1]
+    meridian x_a .. x_s: the same for every harmonic, computed once per mesh, wetted interval,
+    cuts and points within :func:`~.shared.shared_harmonics` (read-only arrays)."""
+    return shared_value(("wall rows", id(mesh), tank.aft, tank.surface, breaks.tobytes(), points),
+                        (mesh,), lambda: _new_wall_rows(mesh, tank, breaks, points))
+
+
+def _new_wall_rows(mesh: Mesh, tank: Tank, breaks: np.ndarray, points: int):
     ref = reference_element(mesh.order)
     g, gw = leg.leggauss(points)
     x2 = mesh.x1 + mesh.length * mesh.cos_phi
@@ -166,10 +158,6 @@ def _wall_rows(mesh: Mesh, tank: Tank, breaks: np.ndarray, points: int):
                           weight=wt)
     for arr in (el, local, wall.x, wall.r, wall.normal, wall.weight):
         arr.setflags(write=False)
-    with _ROWS_LOCK:
-        _ROWS[key] = (mesh, (wall, el, local))
-        while len(_ROWS) > _ROWS_KEPT:
-            _ROWS.popitem(last=False)
     return wall, el, local
 
 
