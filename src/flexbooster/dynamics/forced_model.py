@@ -38,7 +38,7 @@ from ..shell_of_revolution.elements import reference_element
 from ..shell_of_revolution.wetted_wall import tank_added_mass
 
 __all__ = ["ROWS", "FullModel", "ModalModel", "cut_vehicle", "full_model", "mesh_nodes",
-           "modal_model", "IllConditionedError"]
+           "modal_model", "IllConditionedError", "MIN_RCOND"]
 
 #: Default basis: every mode below MODE_CUTOFF times the highest Omega (at least MIN_MODES).
 MODE_CUTOFF, MIN_MODES = 4.0, 4
@@ -372,6 +372,12 @@ def _basis(K, M, n_modes, omega_max):
     return w2, V * scale[:, None], n_rigid
 
 
+#: Smallest reciprocal condition number of the static correction's bordered system: its
+#: solution's relative error is at most about eps / rcond (Higham 2002, sec. 7.1), so this keeps
+#: three significant digits in the residual modes' loads (the digits the results print).
+MIN_RCOND = 1e3 * np.finfo(float).eps
+
+
 class IllConditionedError(ValueError):
     """The static correction's bordered system is singular to working precision: its
     residual-mode loads would be round-off."""
@@ -387,13 +393,17 @@ def _condense(KL, M, Phi, F, static: bool):
     s = np.max(np.abs(KL)) / np.max(np.abs(MPhi))  # rows of comparable size
     bordered = np.block([[KL, s * MPhi], [s * MPhi.T, np.zeros((m, m))]])
     rhs = np.vstack([np.column_stack([F, KL @ Phi]), np.zeros((m, m + 1))])
+    # Craig & Kurdila: inertia relief.  LU with partial pivoting and LAPACK's 1-norm condition
+    # estimate (getrf, gecon; Golub & Van Loan 2013, sec. 3.5.4) stated here rather than left to
+    # scipy.linalg.solve, whose structure detection (symmetric: sytrf) changes the estimate
     with warnings.catch_warnings():
-        warnings.simplefilter("error", sla.LinAlgWarning)
-        try:  # Craig & Kurdila: inertia relief
-            sol = sla.solve(bordered, rhs, check_finite=False)[:n]
-        except sla.LinAlgWarning as exc:
-            raise IllConditionedError("the static correction is singular to working "
-                                      f"precision ({exc})") from None
+        warnings.simplefilter("ignore", sla.LinAlgWarning)  # an exact zero pivot: rcond 0 below
+        lu, piv = sla.lu_factor(bordered, check_finite=False)
+    rcond, _ = sla.lapack.dgecon(lu, np.linalg.norm(bordered, 1), norm="1")
+    if not rcond >= MIN_RCOND:  # the loads of the residual modes would be round-off
+        raise IllConditionedError("the static correction is singular to working precision "
+                                  f"(reciprocal condition number {rcond:.3g})")
+    sol = sla.lu_solve((lu, piv), rhs, check_finite=False)[:n]
     xr, Psi = sol[:, 0], Phi - sol[:, 1:]
     return Psi, xr, Phi.T @ KL @ Psi, Phi.T @ (F - KL @ xr)
 
