@@ -266,3 +266,54 @@ def test_flight_k1_search_with_an_undamped_pitch_within_1_5x_of_the_counted_step
                             damping_ratio=zeta, gimbal_gain=t.K, unloaded_frequencies=False)
     assert found.regions
     assert counter.steps / 1.5 <= estimated <= 1.5 * counter.steps, (counter.steps, estimated)
+
+
+def test_undamped_search_steps_within_1_5x_of_the_counted_steps(monkeypatch):
+    """An undamped flight's frozen time (tests/data/flight_undamped_case.toml, lift-off and
+    burnout, harmonics k = 3..6): the monodromy steps of the vehicle's undamped region search,
+    counted while it runs, against the E_u = 10 evaluations of the candidates' centre steps
+    (floquet.search_work) that cost.undamped_search_seconds prices: within 1.5x either way
+    (measured 10.9 and 13.4 x the centre steps)."""
+    from flexbooster.dynamics import harmonic_system, vehicle_regions
+    from flexbooster.dynamics.harmonic import floquet_options
+    from flexbooster.floquet import search_work
+    from flexbooster.model import flight_times, frozen_case, vehicle_from_case
+
+    flight = flexbooster.load_case(Path(__file__).parent / "data" / "flight_undamped_case.toml")
+    times = flight_times(flight)
+    for t_s in (times[0], times[-1]):
+        case = frozen_case(flight, float(t_s))
+        t = case.thrust
+        vehicle = vehicle_from_case(case)
+        n_modes = cost.region_modes(case, vehicle, k_max=case.vehicle.k_max)[0]
+        works = [search_work(*harmonic_system(vehicle, k, F0=case.F0, n_modes=n_modes,
+                                              damping_ratio=0.0, unloaded_frequencies=False
+                                              ).periodic(t.gamma),
+                             t.omega_min, t.omega_max, **floquet_options())
+                 for k in range(3, 7)]
+        estimated = 10.0 * sum(w.undamped_steps for w in works)
+        counter = _StepCounter(monkeypatch)
+        found = vehicle_regions(vehicle, F0=case.F0, gamma=t.gamma, omega_min=t.omega_min,
+                                omega_max=t.omega_max, k_min=3, k_max=6, n_modes=n_modes,
+                                damping_ratio=0.0, unloaded_frequencies=False)
+        assert found.regions
+        assert counter.steps / 1.5 <= estimated <= 1.5 * counter.steps, (counter.steps,
+                                                                           estimated)
+        assert cost.undamped_search_seconds(works[0]) > 0.0
+
+
+def test_undamped_estimate_follows_gamma_through_the_counted_candidates():
+    """The same flight's burnout case (gamma 0.2) and the case at gamma 0.02: the undamped
+    searches' estimate grows with the candidates the search examines (regions of higher order
+    resolved at the larger gamma; counted by floquet.search_work: 2.1 s against 5.5 s measured
+    at burnout, 2.1-8.0 s per time along this flight); the shared builds ("vehicle regions")
+    do not depend on gamma."""
+    from flexbooster.model import flight_times, frozen_case
+
+    flight = flexbooster.load_case(Path(__file__).parent / "data" / "flight_undamped_case.toml")
+    burnout = frozen_case(flight, float(flight_times(flight)[-1]))
+    small = burnout.model_copy(update={"thrust": burnout.thrust.model_copy(
+        update={"gamma": 0.02})})
+    big, low = (cost.estimate_vehicle_cost(c, figures=False).parts for c in (burnout, small))
+    assert big[cost.UNDAMPED_SEARCH_PART] > 2.0 * low[cost.UNDAMPED_SEARCH_PART]
+    assert big["vehicle regions"] == low["vehicle regions"]

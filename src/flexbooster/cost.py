@@ -72,6 +72,8 @@ __all__ = [
     "CRITICAL_DAMPING_PART",
     "FLIGHT_SAMPLES",
     "shell_search_seconds",
+    "undamped_search_seconds",
+    "UNDAMPED_SEARCH_PART",
     "TONGUE_PART",
     "tongue_search_seconds",
 ]
@@ -764,6 +766,62 @@ def shell_search_seconds(work: Any) -> float:
                  + max(_EVALS_UNDAMPED[0] * work.undamped_steps * step, rounds))
 
 
+#: Name of the part of :func:`estimate_vehicle_cost` for the searches of an undamped vehicle's
+#: harmonics k = 1..k_max (:func:`undamped_search_seconds`).
+UNDAMPED_SEARCH_PART = "vehicle undamped searches"
+# The undamped search of a harmonic (every combination of its modes whose region the step rule
+# resolves at the case's gamma: more, and of higher orders, as gamma grows) integrates about
+# E_u = 10 times the step counts at its candidates' centres (counted: 7.7-13.4 x on a fuzz
+# flight's harmonics k = 2..20, tests/test_cost.py), at the dense step cost, plus 3e-3 s per
+# candidate examined by the monodromy (the step rule, expm and eigenvalues of its points);
+# fitted on that flight's free-free tanked vehicle (k <= 20, 6 modes, and k <= 8, 14 modes;
+# gamma 0.02 and 0.2 at lift-off and burnout: 351-1,410 regions, 2.1-34.5 s CPU on a loaded
+# core): every one of those eight runs within 1.07-1.62x of it, none above.
+_C_UNDAMPED_CANDIDATE = 3e-3
+
+
+def undamped_search_seconds(work: Any) -> float:
+    """CPU time (s, one core) of the region search of an undamped harmonic from its work
+    counted up front: 3e-3 s per candidate examined by the monodromy and E_u = 10 evaluations
+    of the steps at its centre (:func:`search_step_seconds`); 0 when steady (no search).
+
+    Parameters
+    ----------
+    work : flexbooster.floquet.SearchWork
+        :func:`flexbooster.floquet.search_work` of the undamped harmonic.
+    """
+    from .floquet import SearchWork
+
+    if not isinstance(work, SearchWork):
+        raise ValueError(f"work = {type(work).__name__}: must be a SearchWork")
+    if work.steady:
+        return 0.0
+    return float(_C_UNDAMPED_CANDIDATE * work.n_candidates
+                 + _EVALS_UNDAMPED[0] * work.undamped_steps * search_step_seconds(work.n))
+
+
+def _undamped_searches(case: Any, vehicle: Any, n_k: int, n_modes: int) -> float:
+    """The searches of the harmonics k = 1..n_k of an undamped case, each the larger of
+    :func:`undamped_search_seconds` of its counted work (the modal system built as the stage
+    builds it: k = 1 with the gimbaled rigid pitch) and the blind law :func:`search_seconds`."""
+    from .dynamics import bending_harmonic, harmonic_system
+    from .shell_of_revolution import shared_harmonics
+
+    t = case.thrust
+
+    def build(k: int):
+        if k == 1:
+            return bending_harmonic(vehicle, F0=case.F0, n_modes=max(n_modes, 3),
+                                    damping_ratio=0.0, gimbal_gain=t.K)
+        return harmonic_system(vehicle, k, F0=case.F0, n_modes=n_modes, damping_ratio=0.0,
+                               unloaded_frequencies=False)
+
+    blind = search_seconds(max(n_modes, 3), t.omega_min, t.omega_max, damped=False)
+    with shared_harmonics():
+        return float(sum(max(blind, _system_search_seconds(
+            lambda k=k: build(k), t, undamped_search_seconds)) for k in range(1, n_k + 1)))
+
+
 def _shell_searches(case: Any, vehicle: Any, n_k: int, n_modes: int) -> float:
     """:func:`shell_search_seconds` summed over the harmonics k = 2..n_k of a damped case, each
     harmonic's modal system built as the stage builds it."""
@@ -866,7 +924,8 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
         drivers["vehicle modes"] = ("vehicle.k_max", "vehicle.segments") + attached
     if regions and n_k >= 1:
         damped = case.vehicle_damping_ratio > 0.0
-        searched = 0 if (damped and certified) or t.gamma == 0.0 else n_k
+        # undamped: each harmonic's candidates counted (UNDAMPED_SEARCH_PART, below)
+        searched = 0 if (damped and certified) or t.gamma == 0.0 or not damped else n_k
         # k = 1 has the rigid modes too (at least 3 basis modes)
         search = searched * search_seconds(max(n_modes, 3), t.omega_min, t.omega_max,
                                            damped=damped, boundaries=figures)
@@ -890,7 +949,14 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
                 parts[BENDING_SEARCH_PART] = k1
                 drivers[BENDING_SEARCH_PART] = ("damping.modal_ratio", "thrust.omega_min",
                                                 "thrust.K", "vehicle.n_modes")
-        if searched or BENDING_SEARCH_PART in parts or SHELL_SEARCH_PART in parts:
+        if not damped and t.gamma > 0.0:
+            parts[UNDAMPED_SEARCH_PART] = _undamped_searches(case, vehicle, n_k, n_modes) * (
+                _BOUNDARY_SEARCH_FACTOR if figures else 1.0)
+            drivers[UNDAMPED_SEARCH_PART] = ("damping.modal_ratio", "thrust.gamma",
+                                             "thrust.omega_min", "thrust.omega_max",
+                                             "vehicle.n_modes", "vehicle.k_max")
+        if searched or any(p in parts for p in (BENDING_SEARCH_PART, SHELL_SEARCH_PART,
+                                                UNDAMPED_SEARCH_PART)):
             # regions may open: their critical damping ratios
             # (dynamics.region_critical_damping), at most a fixed number
             parts[CRITICAL_DAMPING_PART] = CRITICAL_DAMPING_COUNT * _C_CRITICAL_REGION * max(
