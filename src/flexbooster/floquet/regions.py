@@ -36,7 +36,7 @@ from .optimize import brent_max, expand_bracket, golden_section_max, illinois_ro
 
 __all__ = ["DAMPING_MARGIN", "TooManyCandidatesError", "InstabilityRegion", "instability_regions",
            "RegionBoundary", "region_boundaries", "CriticalAmplitude", "critical_amplitude",
-           "SearchWork", "search_work"]
+           "SearchWork", "search_work", "OPEN_DAMPING_RATIO"]
 
 _KINDS = ("simple", "sum", "difference")
 
