@@ -9,10 +9,11 @@ OUT    ?= flexbooster-results
 
 venv: $(STAMP)
 
-$(STAMP): pyproject.toml
+# constraints.txt: the versions the suite was last run with (pyproject.toml keeps the ranges)
+$(STAMP): pyproject.toml constraints.txt
 	$(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
-	$(PY) -m pip install --quiet -e '.[test]'
+	$(PY) -m pip install --quiet -c constraints.txt -e '.[test]'
 	touch $(STAMP)
 
 run: export OPENBLAS_NUM_THREADS = 1
@@ -52,7 +53,7 @@ browser: $(STAMP)
 	      -y -qq --no-install-recommends chromium chromium-driver >/dev/null; } || \
 	  echo "browser: apt-get install chromium chromium-driver failed: the browser tests will skip"; \
 	fi
-	@$(PY) -m pip install --quiet -e '.[test,browser]' || \
+	@$(PY) -m pip install --quiet -c constraints.txt -e '.[test,browser]' || \
 	  echo "browser: pip install selenium failed: the browser tests will skip"
 
 test-browser: export OPENBLAS_NUM_THREADS = 1
