@@ -939,8 +939,9 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
         drivers["vehicle modes"] = ("vehicle.k_max", "vehicle.segments") + attached
     if regions and n_k >= 1:
         damped = case.vehicle_damping_ratio > 0.0
-        # undamped: each harmonic's candidates counted (UNDAMPED_SEARCH_PART, below)
-        searched = 0 if (damped and certified) or t.gamma == 0.0 or not damped else n_k
+        # the blind law for the damped upper bound; undamped, each harmonic's candidates are
+        # counted (UNDAMPED_SEARCH_PART, below)
+        searched = n_k if damped and not certified and t.gamma > 0.0 else 0
         # k = 1 has the rigid modes too (at least 3 basis modes)
         search = searched * search_seconds(max(n_modes, 3), t.omega_min, t.omega_max,
                                            damped=damped, boundaries=figures)
