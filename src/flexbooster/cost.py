@@ -813,7 +813,8 @@ def _undamped_searches(case: Any, vehicle: Any, n_k: int, n_modes: int) -> float
     """The searches of the harmonics k = 1..n_k of an undamped case, each the larger of
     :func:`undamped_search_seconds` of its counted work (the modal system built as the stage
     builds it: k = 1 with the gimbaled rigid pitch) and the blind law :func:`search_seconds`;
-    counted at :data:`UNDAMPED_SAMPLES` harmonics at most, linear in k between them."""
+    counted at :data:`UNDAMPED_SAMPLES` harmonics at most, linear in k between them; the
+    blind law alone past :data:`_K1_COUNTED_MODES` modes."""
     from .dynamics import bending_harmonic, harmonic_system
     from .shell_of_revolution import shared_harmonics
 
@@ -827,6 +828,8 @@ def _undamped_searches(case: Any, vehicle: Any, n_k: int, n_modes: int) -> float
                                unloaded_frequencies=False)
 
     blind = search_seconds(max(n_modes, 3), t.omega_min, t.omega_max, damped=False)
+    if n_modes > _K1_COUNTED_MODES:  # the blind law (the candidates are not enumerated)
+        return float(n_k * blind)
     ks = np.arange(1, n_k + 1)
     if n_k > UNDAMPED_SAMPLES:
         ks = np.unique(np.concatenate([[1, 2], np.geomspace(
