@@ -613,6 +613,14 @@ def bending_search_steps(work: Any, *, damping_ratio: float) -> tuple[float, flo
     return damped_search_cost(work, damping_ratio=damping_ratio)
 
 
+def _check_work(work: Any) -> None:
+    """ValueError naming ``work`` unless it is a :class:`flexbooster.floquet.SearchWork`."""
+    from .floquet import SearchWork
+
+    if not isinstance(work, SearchWork):
+        raise ValueError(f"work = {type(work).__name__}: must be a SearchWork")
+
+
 def damped_search_cost(work: Any, *, damping_ratio: float) -> tuple[float, float]:
     """Steps (summed over the evaluated points) and CPU time (s, one core) of a damped region
     search (the undamped seeds, the damped regions, the critical gamma of each) from its count
@@ -630,10 +638,7 @@ def damped_search_cost(work: Any, *, damping_ratio: float) -> tuple[float, float
     damping_ratio : float
         The damping ratio that drives the search, 0 < zeta < 1.
     """
-    from .floquet import SearchWork
-
-    if not isinstance(work, SearchWork):
-        raise ValueError(f"work = {type(work).__name__}: must be a SearchWork")
+    _check_work(work)
     zeta = positive("damping_ratio", damping_ratio)
     if zeta >= 1.0:
         raise ValueError(f"damping_ratio = {zeta!r}: must satisfy 0 < zeta < 1")
@@ -752,10 +757,7 @@ def shell_search_seconds(work: Any) -> float:
     work : flexbooster.floquet.SearchWork
         :func:`flexbooster.floquet.search_work` of the damped harmonic.
     """
-    from .floquet import SearchWork
-
-    if not isinstance(work, SearchWork):
-        raise ValueError(f"work = {type(work).__name__}: must be a SearchWork")
+    _check_work(work)
     if work.steady or work.certified:
         return 0.0
     step = search_step_seconds(work.n)
@@ -791,10 +793,7 @@ def undamped_search_seconds(work: Any) -> float:
     work : flexbooster.floquet.SearchWork
         :func:`flexbooster.floquet.search_work` of the undamped harmonic.
     """
-    from .floquet import SearchWork
-
-    if not isinstance(work, SearchWork):
-        raise ValueError(f"work = {type(work).__name__}: must be a SearchWork")
+    _check_work(work)
     if work.steady:
         return 0.0
     return float(_C_UNDAMPED_CANDIDATE * work.n_candidates

@@ -261,8 +261,8 @@ def _mesh(vehicle: Vehicle, elements_per_segment, order: int, refinement: int = 
     counts = tuple(elements_per_segment) if isinstance(elements_per_segment, list | np.ndarray) \
         else elements_per_segment
     return shared_value(("mesh", id(vehicle), counts, order, refinement), (vehicle,),
-                   lambda: mesh_vehicle(vehicle, elements_per_segment=elements_per_segment,
-                                        order=order, refinement=refinement))
+                        lambda: mesh_vehicle(vehicle, elements_per_segment=elements_per_segment,
+                                             order=order, refinement=refinement))
 
 
 # ----------------------------------------------------------------------------- helpers
@@ -321,16 +321,16 @@ def _harmonic(vehicle: Vehicle, mesh: Mesh, k: int, *, F0: float, supported: boo
               geometric: bool) -> _Harmonic:
     """The matrices of harmonic k (:class:`_Harmonic`), once within :func:`shared_harmonics`."""
     return shared_value(("harmonic", id(vehicle), id(mesh), k, F0, supported, geometric),
-                   (vehicle, mesh), lambda: _new_harmonic(vehicle, mesh, k, F0=F0,
-                                                          supported=supported,
-                                                          geometric=geometric))
+                        (vehicle, mesh), lambda: _new_harmonic(vehicle, mesh, k, F0=F0,
+                                                               supported=supported,
+                                                               geometric=geometric))
 
 
 def _new_harmonic(vehicle: Vehicle, mesh: Mesh, k: int, *, F0: float, supported: bool | None,
                   geometric: bool) -> _Harmonic:
     pre = shared_value(("prestate", id(vehicle), id(mesh), F0, supported), (vehicle, mesh),
-                  lambda: thrust_prestate(vehicle, mesh, F0, supported_forward_end=supported)
-                  ) if geometric else None  # k-independent: once for every harmonic
+                       lambda: thrust_prestate(vehicle, mesh, F0, supported_forward_end=supported)
+                       ) if geometric else None  # k-independent: once for every harmonic
     hm = harmonic_matrices(vehicle, mesh, k, prestate=pre)
     M, K, G, dmap, ke = hm.mass, hm.stiffness, hm.geometric, hm.dmap, hm.element_stiffness
     R = _rigid_subspace(mesh, dmap, k)
@@ -597,8 +597,8 @@ def _labels(mesh: Mesh, h: _Harmonic, vecs: np.ndarray, k: int, n_pts_per_el: in
         _readonly(*out)
         return out
 
-    return shared_value(("labels", id(mesh), id(h), id(vecs), k, n_pts_per_el), (mesh, h, vecs),
-                   make)
+    return shared_value(("labels", id(mesh), id(h), id(vecs), k, n_pts_per_el),
+                        (mesh, h, vecs), make)
 
 
 def _new_labels(mesh: Mesh, h: _Harmonic, vecs: np.ndarray, k: int, n_pts_per_el: int):
