@@ -41,12 +41,13 @@ import pytest
 import scipy.linalg as sla
 from scipy.integrate import solve_ivp
 
-from flexbooster.dynamics import ThrustSpectrum, bending_system, forced_response
+from flexbooster.dynamics import ThrustSpectrum, basis_sizes, bending_system, forced_response
 from flexbooster.dynamics.forced import QUANTITIES, STANDARD_GRAVITY
 from flexbooster.shell_of_revolution import (
     Cone,
     Cylinder,
     Vehicle,
+    eigenvalues_below,
     mesh_vehicle,
     system_matrices,
 )
@@ -404,6 +405,38 @@ def test_doubling_the_modes_changes_the_peaks_by_less_than_1e_3():
     bare = [forced_response(v, n_modes=n, harmonics=(0,), static_correction=False, **kw)
             for n in (counts[0], 2 * counts[0])]
     assert relative_change(*bare) > 1e-3
+
+
+@pytest.mark.parametrize(("vehicle", "top"), [
+    (readme_vehicle, 2000.0), (lambda: tank_vehicle(1.0), 900.0),
+    (lambda: tank_vehicle(0.6), 900.0), (tube, 60.0)])
+def test_counted_basis_is_the_solvers_basis(vehicle, top):
+    """The basis counted up front for the cost estimate (Sylvester's law of inertia on
+    K - (4 Omega_max)^2 M, no eigenvector) equals the basis the response takes (LAPACK's
+    eigenpairs by value below the same bound, rigid ones included; at least 6): the README
+    vehicle (29 + 1 axial, 34 + 2 lateral), the closed full tank (volume-keeping motions at
+    k = 0), the part-full one, and the slender tube below its first bending mode (the minimum
+    6). Exact integers."""
+    v = vehicle()
+    kw = {"F0": 2.8e5, "stations": [("payload", 6.5)]}
+    res = forced_response(v, amplitude=0.05, Omega=np.linspace(5.0, top, 20),
+                          damping_ratio=0.02, misalignment=0.01, **kw)
+    sizes = basis_sizes(v, omega_max=top, **kw)
+    assert sizes == tuple(md.omega_modes.size for md in res.models)
+
+
+def test_eigenvalues_below_dense_path_counts_an_indefinite_pencil():
+    """Sylvester's count when the sparse factorisation needs an interchange: K - w2 M with a
+    zero diagonal ([[0, B], [B^T, 0]]: every first pivot is zero, so the dense Bunch-Kaufman
+    path), against the count of numpy's eigvalsh of M^-1/2 K M^-1/2 (independent; 20
+    negative of 40), at three shifts."""
+    rng = np.random.default_rng(3)
+    B = rng.standard_normal((20, 20))
+    K = np.block([[np.zeros((20, 20)), B], [B.T, np.zeros((20, 20))]])
+    M = np.diag(1.0 + rng.random(40))
+    lam = np.linalg.eigvalsh(np.diag(np.diag(M) ** -0.5) @ K @ np.diag(np.diag(M) ** -0.5))
+    for w2 in (-3.0, 0.0, 4.0):
+        assert eigenvalues_below(K + w2 * M, M, w2) == int(np.count_nonzero(lam < 0.0))
 
 
 # --------------------------------------------------------------------------------- contract

@@ -19,6 +19,7 @@ from .forced import (
     LoadEnvelope,
     ThrustSpectrum,
     UndampedResonanceError,
+    basis_sizes,
     forced_response,
     window_peaks,
 )
@@ -52,6 +53,7 @@ __all__ = [
     "ThrustSpectrum",
     "UndampedResonanceError",
     "forced_response",
+    "basis_sizes",
     "window_peaks",
     "forced_axial",
     "harmonic_system",

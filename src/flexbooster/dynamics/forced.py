@@ -19,11 +19,11 @@ import numpy as np
 
 from ..checks import count, finite, finite_array, nonnegative, positive
 from ..shell_of_revolution import DEFAULT_ORDER, Vehicle, mesh_vehicle
-from .forced_model import ROWS, ModalModel, cut_vehicle, mesh_nodes, modal_model
+from .forced_model import ROWS, ModalModel, basis_size, cut_vehicle, mesh_nodes, modal_model
 
 __all__ = ["STANDARD_GRAVITY", "QUANTITIES", "UNITS", "ThrustSpectrum", "Station",
            "ForcedPeak", "LoadEnvelope", "ForcedResponse", "UndampedResonanceError",
-           "forced_response", "window_peaks"]
+           "forced_response", "basis_sizes", "window_peaks"]
 
 #: Standard acceleration of gravity g (m/s^2), exact by definition (3rd CGPM, 1901).
 STANDARD_GRAVITY = 9.80665
@@ -405,6 +405,47 @@ def _harmonic(model: ModalModel, om, scale, spectrum: bool, stations, at):
     return vals, peaks, envelopes
 
 
+def _station_mesh(vehicle: Vehicle, listed, elements_per_segment, order: int,
+                  refinement: int) -> tuple:
+    """(the vehicle cut at the user's stations, its mesh, the segment starting at each
+    station or None) of :func:`forced_response`."""
+    counts = elements_per_segment
+    if counts is not None and not isinstance(counts, tuple | list):
+        counts = (counts,) * len(vehicle.segments)
+    cut, counts, starts = cut_vehicle(vehicle, [s.x for s, _ in listed if s.kind == "user"],
+                                      counts)
+    mesh = mesh_vehicle(cut, elements_per_segment=counts, order=order, refinement=refinement)
+    return cut, mesh, starts
+
+
+def basis_sizes(vehicle: Vehicle, *, F0: float, omega_max: float, stations=(),
+                harmonics: tuple = (0, 1), supported_forward_end: bool = False,
+                elements_per_segment: int | tuple | None = None, order: int = DEFAULT_ORDER,
+                refinement: int = 1) -> tuple[int, ...]:
+    """The modes of each harmonic's basis in :func:`forced_response` with ``n_modes`` None
+    (rigid ones included; the number of Omega-independent modal coordinates), counted up
+    front without an eigenvector (:func:`.forced_model.basis_size`, Sylvester's law of
+    inertia), for the cost estimate. ValueError for bad input.
+
+    Parameters
+    ----------
+    vehicle, F0, stations, harmonics, supported_forward_end, elements_per_segment, order, \
+refinement
+        As :func:`forced_response`.
+    omega_max : float
+        The highest Omega of the grid or of the spectrum's lines (rad/s), > 0.
+    """
+    if not isinstance(vehicle, Vehicle):
+        raise ValueError(f"vehicle = {vehicle!r}: must be a Vehicle")
+    F0, omega_max = positive("F0", F0), positive("omega_max", omega_max)
+    if (not isinstance(harmonics, tuple | list) or not set(harmonics) <= {0, 1}):
+        raise ValueError(f"harmonics = {harmonics!r}: must be values among (0, 1)")
+    cut, mesh, _ = _station_mesh(vehicle, _stations(vehicle, stations), elements_per_segment,
+                                 order, refinement)
+    return tuple(basis_size(cut, mesh, int(k), F0=F0, omega_max=omega_max,
+                            supported_forward_end=supported_forward_end) for k in harmonics)
+
+
 def forced_response(
     vehicle: Vehicle, *, F0: float, amplitude: float | ThrustSpectrum, Omega=None,
     damping_ratio: float = 0.01, misalignment: float = 0.0, gimbal_gain: float = 0.0,
@@ -464,12 +505,7 @@ def forced_response(
         n_modes = count("n_modes", n_modes, 1, 2000)
     om, gam, combination = _omega(amplitude, Omega)
     listed = _stations(vehicle, stations)
-    counts = elements_per_segment
-    if counts is not None and not isinstance(counts, tuple | list):
-        counts = (counts,) * len(vehicle.segments)
-    cut, counts, starts = cut_vehicle(vehicle, [s.x for s, _ in listed if s.kind == "user"],
-                                      counts)
-    mesh = mesh_vehicle(cut, elements_per_segment=counts, order=order, refinement=refinement)
+    cut, mesh, starts = _station_mesh(vehicle, listed, elements_per_segment, order, refinement)
     x_nodes = mesh_nodes(mesh)[2]
     first = np.concatenate(([0], np.cumsum(mesh.elements_per_segment)))  # a segment's node
     tol = 1e-9 * vehicle.total_length

@@ -23,7 +23,7 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 import scipy.linalg as sla
 
-from ..shell_of_revolution import BucklingError, Cylinder, Vehicle
+from ..shell_of_revolution import BucklingError, Cylinder, Vehicle, eigenvalues_below
 from ..shell_of_revolution.assembly import (
     assemble,
     dof_map,
@@ -38,7 +38,7 @@ from ..shell_of_revolution.elements import reference_element
 from ..shell_of_revolution.wetted_wall import tank_added_mass
 
 __all__ = ["ROWS", "FullModel", "ModalModel", "cut_vehicle", "full_model", "mesh_nodes",
-           "modal_model", "IllConditionedError", "MIN_RCOND"]
+           "modal_model", "basis_size", "IllConditionedError", "MIN_RCOND"]
 
 #: Default basis: every mode below MODE_CUTOFF times the highest Omega (at least MIN_MODES).
 MODE_CUTOFF, MIN_MODES = 4.0, 4
@@ -408,6 +408,60 @@ def _condense(KL, M, Phi, F, static: bool):
     return Psi, xr, Phi.T @ KL @ Psi, Phi.T @ (F - KL @ xr)
 
 
+def _matrices(vehicle: Vehicle, mesh, k: int, *, F0: float, share: float,
+              supported_forward_end: bool) -> tuple:
+    """The kept DOFs' matrices of :func:`full_model` before its basis: (dmap, prestate,
+    element set, kept DOFs, M, K_L, K_e, F, node displacements, those before the volume
+    constraint, T or None, mesh nodes, attached rows, volume data or None)."""
+    dmap = dof_map(vehicle, mesh, k)
+    pre = thrust_prestate(vehicle, mesh, F0, supported_forward_end=supported_forward_end)
+    mats = element_set(vehicle, mesh, k, prestate=pre)
+    keep = _axisymmetric(mesh, dmap, k)
+    rings = ring_matrix(vehicle.theory, dmap, pre, k)[np.ix_(keep, keep)]
+    M, Ke, Kg = (assemble(mesh, dmap, a)[np.ix_(keep, keep)] for a in mats)
+    Kg = Kg + rings  # the hoop rings where the meridian turns
+    fixed = pressure_ring_matrix(vehicle, mesh, dmap, k)  # and the pressure's
+    if fixed is not None:
+        Ke = Ke + fixed[np.ix_(keep, keep)]
+    liquid = tank_added_mass(vehicle, mesh, k)
+    Ma, extra, volume = _attached(vehicle, mesh, dmap, keep, k, liquid)
+    M = M + Ma
+    nodes = mesh_nodes(mesh)
+    D = _node_displacements(mesh, dmap, keep, nodes[0], nodes[1])
+    F = share * (D[0, 0] if k == 0 else 0.5 * (D[0, 2] - D[0, 1]))  # unit aft-edge load
+    KL = Ke + Kg
+    T, D_kept = None, D
+    if liquid is not None and liquid.constraint is not None:  # closed full tanks, k = 0
+        C = liquid.constraint[:, keep]
+        L = np.linalg.solve(C @ C.T, C)  # mu = L r: the uniform pressures of a residual r
+        volume = (volume, L, KL, M, F)
+        Q = np.linalg.qr(C.T, mode="complete")[0]
+        T = Q[:, np.linalg.matrix_rank(C):]  # the motions with C X = 0
+        M, KL, Ke, F = T.T @ M @ T, T.T @ KL @ T, T.T @ Ke @ T, T.T @ F
+        D = D @ T
+    else:
+        volume = None
+    return dmap, pre, mats, keep, M, KL, Ke, F, D, D_kept, T, nodes, extra, volume
+
+
+def basis_size(vehicle: Vehicle, mesh, k: int, *, F0: float, omega_max: float,
+               supported_forward_end: bool) -> int:
+    """The basis modes (rigid ones included) :func:`full_model` takes with ``n_modes`` None:
+    the eigenvalues of (K_L, M) (k = 0) or (K_e, M) (k = 1) below (4 omega_max)^2, at least 6,
+    counted by Sylvester's law of inertia without an eigenvector
+    (:func:`flexbooster.shell_of_revolution.eigenvalues_below`).
+
+    Parameters
+    ----------
+    vehicle, mesh, k, F0, omega_max, supported_forward_end
+        As :func:`full_model`.
+    """
+    M, KL, Ke = _matrices(vehicle, mesh, k, F0=F0, share=1.0,
+                          supported_forward_end=supported_forward_end)[4:7]
+    below = eigenvalues_below(KL if k == 0 else Ke, M, (MODE_CUTOFF * omega_max) ** 2)
+    return min(M.shape[0], max(below, MIN_MODES + 2))
+
+
 @dataclass(frozen=True)
 class FullModel:
     """The finite-element model of one harmonic: M X'' + K_L X = F.
@@ -495,35 +549,9 @@ def full_model(
     supported_forward_end : bool
         Prestress reacted at the nose.
     """
-    dmap = dof_map(vehicle, mesh, k)
-    pre = thrust_prestate(vehicle, mesh, F0, supported_forward_end=supported_forward_end)
-    mats = element_set(vehicle, mesh, k, prestate=pre)
-    keep = _axisymmetric(mesh, dmap, k)
-    rings = ring_matrix(vehicle.theory, dmap, pre, k)[np.ix_(keep, keep)]
-    M, Ke, Kg = (assemble(mesh, dmap, a)[np.ix_(keep, keep)] for a in mats)
-    Kg = Kg + rings  # the hoop rings where the meridian turns
-    fixed = pressure_ring_matrix(vehicle, mesh, dmap, k)  # and the pressure's
-    if fixed is not None:
-        Ke = Ke + fixed[np.ix_(keep, keep)]
-    liquid = tank_added_mass(vehicle, mesh, k)
-    Ma, extra, volume = _attached(vehicle, mesh, dmap, keep, k, liquid)
-    M = M + Ma
-    nodes = mesh_nodes(mesh)
+    dmap, pre, mats, keep, M, KL, Ke, F, D, D_kept, T, nodes, extra, volume = _matrices(
+        vehicle, mesh, k, F0=F0, share=share, supported_forward_end=supported_forward_end)
     r = nodes[3]
-    D = _node_displacements(mesh, dmap, keep, nodes[0], nodes[1])
-    F = share * (D[0, 0] if k == 0 else 0.5 * (D[0, 2] - D[0, 1]))  # unit aft-edge load
-    KL = Ke + Kg
-    T, D_kept = None, D
-    if liquid is not None and liquid.constraint is not None:  # closed full tanks, k = 0
-        C = liquid.constraint[:, keep]
-        L = np.linalg.solve(C @ C.T, C)  # mu = L r: the uniform pressures of a residual r
-        volume = (volume, L, KL, M, F)
-        Q = np.linalg.qr(C.T, mode="complete")[0]
-        T = Q[:, np.linalg.matrix_rank(C):]  # the motions with C X = 0
-        M, KL, Ke, F = T.T @ M @ T, T.T @ KL @ T, T.T @ Ke @ T, T.T @ F
-        D = D @ T
-    else:
-        volume = None
     w2, Phi, n_rigid = _basis(KL if k == 0 else Ke, M, n_modes, omega_max)
     if np.any(w2[n_rigid:] <= 0.0):
         raise BucklingError(f"F0 = {F0!r}: the steady thrust buckles harmonic k = {k}", k, F0)

@@ -51,6 +51,7 @@ __all__ = [
     "BucklingError",
     "shared_harmonics",
     "mode_vectors",
+    "eigenvalues_below",
 ]
 
 class BucklingError(ValueError):
@@ -484,6 +485,29 @@ def _count_below(shifted) -> int:
     if np.any(lu.perm_r != lu.perm_c) or np.any(d == 0.0):
         return -1
     return int(np.count_nonzero(d < 0.0))
+
+
+def eigenvalues_below(stiffness: np.ndarray, mass: np.ndarray, w2: float) -> int:
+    """The number of eigenvalues of K x = lambda M x below ``w2``: the negative eigenvalues of
+    K - w2 M (Sylvester's law of inertia; B. N. Parlett, *The Symmetric Eigenvalue Problem*,
+    1998, sec. 3.3), from the pivots of its sparse symmetric factorisation
+    (:func:`_count_below`) or, when that needs an interchange, of the dense Bunch-Kaufman
+    LDL^T (its 1 x 1 and 2 x 2 blocks: a symmetric tridiagonal D).
+
+    Parameters
+    ----------
+    stiffness, mass : numpy.ndarray
+        K symmetric and M symmetric positive definite, shape (n, n).
+    w2 : float
+        The shift, in the units of K / M (1/s^2 for N/m and kg).
+    """
+    shifted = np.asarray(stiffness, dtype=float) - w2 * np.asarray(mass, dtype=float)
+    below = _count_below(shifted)
+    if below >= 0:
+        return below
+    _, d, _ = sla.ldl(shifted, lower=True)
+    lam = sla.eigvalsh_tridiagonal(np.diag(d).copy(), np.diag(d, -1).copy())
+    return int(np.count_nonzero(lam < 0.0))
 
 
 def _solve(h: _Harmonic, *, loaded: bool, n_modes: int | None, w2_max: float | None):
