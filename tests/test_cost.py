@@ -317,3 +317,14 @@ def test_undamped_estimate_follows_gamma_through_the_counted_candidates():
     big, low = (cost.estimate_vehicle_cost(c, figures=False).parts for c in (burnout, small))
     assert big[cost.UNDAMPED_SEARCH_PART] > 2.0 * low[cost.UNDAMPED_SEARCH_PART]
     assert big["vehicle regions"] == low["vehicle regions"]
+
+
+@pytest.mark.parametrize("price", [
+    lambda w: cost.damped_search_cost(w, damping_ratio=0.02),
+    lambda w: cost.bending_search_steps(w, damping_ratio=0.02),
+    cost.undamped_search_seconds])
+def test_search_prices_refuse_anything_but_a_search_work(price):
+    """A search's price takes a floquet.SearchWork only: a TypeError naming ``work`` and the
+    type given (a mapping with the same fields is not one)."""
+    with pytest.raises(TypeError, match=r"^work = dict: must be a SearchWork$"):
+        price({"n": 4, "n_candidates": 1})

@@ -615,11 +615,11 @@ def bending_search_steps(work: Any, *, damping_ratio: float) -> tuple[float, flo
 
 
 def _check_work(work: Any) -> None:
-    """ValueError naming ``work`` unless it is a :class:`flexbooster.floquet.SearchWork`."""
+    """TypeError naming ``work`` unless it is a :class:`flexbooster.floquet.SearchWork`."""
     from .floquet import SearchWork
 
     if not isinstance(work, SearchWork):
-        raise ValueError(f"work = {type(work).__name__}: must be a SearchWork")
+        raise TypeError(f"work = {type(work).__name__}: must be a SearchWork")
 
 
 def damped_search_cost(work: Any, *, damping_ratio: float) -> tuple[float, float]:
