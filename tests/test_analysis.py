@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import math
+from pathlib import Path
 
 import numpy as np
 import pint
@@ -256,3 +257,35 @@ def test_harmonics_left_out_are_one_warning_per_limit():
         "past max_steps; each one's reason is in vehicle_regions.gaps of results.json")
     assert merged[1].message == cand.reason
     assert [w.message for w in _gap_warnings([steps(5)])] == [steps(5).reason]
+
+
+def test_a_run_builds_each_harmonic_of_its_vehicle_once(monkeypatch, tmp_path):
+    """The estimate, the modes survey and the regions and forced stages of one run share the
+    case's vehicle and its harmonics (one shared_harmonics block over the run): each harmonic
+    k's matrices are assembled once per load state (counter on the assembly; before the block,
+    the estimate and each stage assembled them again), and a second run of the same case
+    gives results equal to the first (the same numbers, key by key)."""
+    import tomllib
+
+    from conftest import dump_toml
+    from flexbooster.shell_of_revolution import modes
+
+    root = Path(__file__).resolve().parents[1]
+    data = tomllib.loads((root / "examples" / "two-stage-liquid.toml").read_text())
+    data["vehicle"].update(k_max=3, n_modes=6)
+    path = tmp_path / "case.toml"
+    path.write_text(dump_toml(data))
+    case = load_case(path)
+    calls = []
+    real = modes.harmonic_matrices
+
+    def counted(vehicle, mesh, k, *, prestate=None):
+        calls.append((id(vehicle), k, prestate is None))
+        return real(vehicle, mesh, k, prestate=prestate)
+
+    monkeypatch.setattr(modes, "harmonic_matrices", counted)
+    first = analyze(case, figures=False)
+    assert calls and len(calls) == len(set(calls)), sorted(calls)
+    assert len({c[0] for c in calls}) == 1  # one vehicle object for every stage
+    again = analyze(case, figures=False)
+    assert json.dumps(again.to_dict()) == json.dumps(first.to_dict())

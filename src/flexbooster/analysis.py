@@ -50,7 +50,7 @@ from .memo.shell import natural_frequencies
 from .memo.stability import ShellModes, StabilityTable, TooManyRootsError, unstable_frequencies
 from .model import MEMO_NOT_APPLICABLE, forced_stations, model_from_case, vehicle_from_case
 from .results import SCHEMA_VERSION, UNITS, ForcedLoads, MemoRootsInRegions, Results
-from .shell_of_revolution import BucklingError, mass_properties
+from .shell_of_revolution import BucklingError, mass_properties, shared_harmonics
 from .shell_of_revolution.survey import VehicleSurvey, has_flat_plate, vehicle_survey
 
 __all__ = [
@@ -189,7 +189,9 @@ def analyze(
     if case.has_segments:  # the memo's method does not apply: the vehicle's stages only
         return _analyze_segments(case, step, figures=figures, regions=vehicle,
                                  on_estimate=on_estimate, frozen=frozen)
-    with blas_threads(1):  # many small eigenproblems: one BLAS thread is the fastest
+    # many small eigenproblems: one BLAS thread is the fastest; the case's vehicle and its
+    # harmonics built once for the estimate and every stage
+    with blas_threads(1), shared_harmonics():
         step(STAGES[0])
         model = model_from_case(case)
         est, extra = _feasibility(case, model, beam_action=beam_action, stability=stability,
@@ -292,7 +294,7 @@ def _analyze_segments(case: Case, step: Callable[[str], None], *, figures: bool,
     rigid-body pitch (omega_psi = sqrt(F0 d K / I_cm), memo eq. 4.2-1, d the centre of mass
     from the aft edge, on the memo's Mathieu numerics), modes and regions; the memo's stages
     are not applicable (``Results.not_applicable``)."""
-    with blas_threads(1):
+    with blas_threads(1), shared_harmonics():  # the vehicle and its harmonics built once
         step(STAGES[0])
         structure = vehicle_from_case(case)
         mass = mass_properties(structure)

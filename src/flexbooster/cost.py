@@ -1240,11 +1240,18 @@ def flight_time_seconds(case: Any) -> float:
             1.0 + (case.thrust.misalignment != 0.0))
     except ValueError:  # a vehicle the mesh refuses: the stage says why
         return 0.0
+    from .shell_of_revolution import shared_harmonics
+
     samples = np.unique(np.linspace(0, times.size - 1, FLIGHT_SAMPLES).round().astype(int))
-    each = np.array([sum(v * (_FLIGHT_SHARED if k in _FLIGHT_SHARED_PARTS else 1.0)
-                         for k, v in estimate_vehicle_cost(
-                             frozen_case(case, float(times[i])), figures=False).parts.items()
-                         if k != CRITICAL_DAMPING_PART) for i in samples])
+
+    def sample(i: int) -> float:  # another vehicle: its builds released after it
+        with shared_harmonics(isolated=True):
+            parts = estimate_vehicle_cost(frozen_case(case, float(times[i])),
+                                          figures=False).parts
+        return sum(v * (_FLIGHT_SHARED if k in _FLIGHT_SHARED_PARTS else 1.0)
+                   for k, v in parts.items() if k != CRITICAL_DAMPING_PART)
+
+    each = np.array([sample(int(i)) for i in samples])
     mean = float(np.mean(np.interp(np.arange(times.size), samples, each)))
     return mean + forced
 

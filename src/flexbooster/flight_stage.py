@@ -317,9 +317,10 @@ def _frozen_time(vehicle, p, *, k_max: int, n_modes: int, omega_range: tuple, ze
     (k >= 1) or :func:`flexbooster.dynamics.forced_axial` (k_max = 0) of that time, and per k
     the modes' DOF vectors and mass matrix (:func:`mode_vectors`), each harmonic's matrices
     and eigenpairs computed once for all of them
-    (:func:`flexbooster.shell_of_revolution.shared_harmonics`: the numbers of separate calls)."""
+    (:func:`flexbooster.shell_of_revolution.shared_harmonics`: the numbers of separate calls;
+    a store of its own, released at the end: no other time has this vehicle)."""
     lo, hi = omega_range
-    with shared_harmonics():
+    with shared_harmonics(isolated=True):
         modes = vehicle_modes(vehicle, k_max=k_max, n_modes=n_modes, prestress_F0=p.F0)
         vectors = {k: mode_vectors(vehicle, k, n_modes, p.F0) for k in range(k_max + 1)}
         if k_max < 1:
@@ -450,11 +451,12 @@ def _forced_events(case: Case, base, times, points, harmonics, osc, *, zeta: flo
             grid = np.array([min(lo, centres.min()) * (1.0 - w),
                              max(hi, centres.max()) * (1.0 + w)])
             try:
-                r = forced_response(_vehicle_at(base, p.fill), F0=p.F0, amplitude=p.gamma,
-                                    Omega=grid, damping_ratio=zeta,
-                                    misalignment=t.misalignment, gimbal_gain=t.K,
-                                    pitch_damping_ratio=case.damping.pitch_ratio,
-                                    stations=stations, harmonics=(k,))
+                with shared_harmonics(isolated=True):  # that time's vehicle: released after
+                    r = forced_response(_vehicle_at(base, p.fill), F0=p.F0, amplitude=p.gamma,
+                                        Omega=grid, damping_ratio=zeta,
+                                        misalignment=t.misalignment, gimbal_gain=t.K,
+                                        pitch_damping_ratio=case.damping.pitch_ratio,
+                                        stations=stations, harmonics=(k,))
             except (UndampedResonanceError, IllConditionedError, BucklingError,
                     ValueError) as exc:
                 failed[k] = f"at t = {p.time:.6g} s: {exc}"

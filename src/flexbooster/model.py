@@ -21,6 +21,7 @@ from .shell_of_revolution.geometry import (
     Vehicle,
     VehicleTank,
 )
+from .shell_of_revolution.shared import shared_value
 
 if TYPE_CHECKING:
     from .case import Case
@@ -84,11 +85,19 @@ def vehicle_from_case(case: Case) -> Vehicle:
     length when its automatic mesh needs more than ``MAX_ELEMENTS`` elements (a segment over
     about 1200 radii long).
 
+    Within :func:`flexbooster.shell_of_revolution.shared_harmonics`, built once per case (the
+    same object for the estimate and every stage, so that they share its mesh and harmonics).
+
     Parameters
     ----------
     case : Case
         A validated case (SI).
     """
+    return shared_value(("vehicle", id(case)), (case,), lambda: _vehicle(case))
+
+
+def _vehicle(case: Case) -> Vehicle:
+    """:func:`vehicle_from_case`, built."""
     from .vehicle_case import MEMO_END, MEMO_JUNCTION
 
     table, b = case.vehicle, case.booster

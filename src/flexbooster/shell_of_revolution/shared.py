@@ -15,7 +15,7 @@ _SHARED: ContextVar[dict | None] = ContextVar("shared_harmonics", default=None)
 
 
 @contextmanager
-def shared_harmonics() -> Iterator[None]:
+def shared_harmonics(*, isolated: bool = False) -> Iterator[None]:
     """Within the block, a vehicle's mesh, each harmonic's matrices (shell, liquid, prestress),
     each of its eigenproblems and the wetted walls' quadrature are computed once and reused by
     :func:`~.modes.vehicle_modes`, :func:`~.modes.modal_system`,
@@ -23,9 +23,16 @@ def shared_harmonics() -> Iterator[None]:
     computing them again (the same operations on the same inputs), at the cost of one
     computation. Inputs are matched by identity (the same :class:`Vehicle` object) and value
     (k, thrust, load path, mesh options); the cached arrays are read-only. Nested blocks share
-    the outermost one's store.
+    the outermost one's store, unless ``isolated``: then the block has a store of its own,
+    released at its end (work on another vehicle that nothing after the block reuses, e.g. a
+    frozen time of a flight).
+
+    Parameters
+    ----------
+    isolated : bool
+        A store of the block's own, even within another block.
     """
-    if _SHARED.get() is not None:
+    if _SHARED.get() is not None and not isolated:
         yield
         return
     token = _SHARED.set({})
