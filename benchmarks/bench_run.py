@@ -1,4 +1,5 @@
-"""End-to-end speed of ``flexbooster run`` on the memo case against a baseline commit.
+"""End-to-end speed of ``flexbooster run`` on the memo case (or ``--case``) against a baseline
+commit.
 
 The baseline (default: commit 66f93aa, the code with worker processes) is checked out
 side by side with ``git worktree`` and run with the same Python and packages, alternating with
@@ -11,7 +12,7 @@ goal :data:`GOAL` (at most 1.5 times the baseline), and whether both wrote the s
 
 Run from the repository root (needs git and the project's venv)::
 
-    .venv/bin/python benchmarks/bench_run.py [--baseline REV] [--repeats N]
+    .venv/bin/python benchmarks/bench_run.py [--baseline REV] [--repeats N] [--case PATH]
 """
 
 from __future__ import annotations
@@ -61,7 +62,10 @@ def main() -> None:
     ap.add_argument("--baseline", default=BASELINE, help="commit to compare with")
     ap.add_argument("--repeats", type=int, default=REPEATS,
                     help="rounds (each runs every code once); best and median reported")
+    ap.add_argument("--case", type=Path, default=None,
+                    help="a case file run by both codes (default: the memo case)")
     opts = ap.parse_args()
+    case = [] if opts.case is None else [str(opts.case.resolve())]
     baseline, repeats = opts.baseline, max(1, opts.repeats)
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
@@ -71,16 +75,17 @@ def main() -> None:
                 times: dict[str, list[tuple[float, float]]] = {"old": [], "new": []}
                 for _ in range(repeats):  # alternating: a slow spell falls on both codes
                     # the baseline's default case is the memo case; now it is `--memo`
-                    for name, src, memo in (("old", base / "src", []),
-                                            ("new", ROOT / "src", ["--memo"])):
-                        times[name].append(_run_once(src, [*args, *memo], tmp / name))
+                    for name, src, memo in (("old", base / "src", case),
+                                            ("new", ROOT / "src", case or ["--memo"])):
+                        times[name].append(_run_once(src, [*memo, *args], tmp / name))
                 rows.append((label, times["old"], times["new"]))
                 same = subprocess.run(
                     [sys.executable, str(ROOT / "benchmarks/compare_results.py"),
                      str(tmp / "old/results.json"), str(tmp / "new/results.json")],
                     capture_output=True, text=True)
                 rows[-1] += (same.stdout.strip(),)
-    print(f"flexbooster run, memo case, {repeats} alternating rounds, baseline {baseline}: "
+    what = "memo case" if opts.case is None else opts.case.name
+    print(f"flexbooster run, {what}, {repeats} alternating rounds, baseline {baseline}: "
           f"wall s best / median (CPU s best), load average {os.getloadavg()[0]:.2f}")
     for label, old, new, same in rows:
         ow, nw = min(x[0] for x in old), min(x[0] for x in new)
