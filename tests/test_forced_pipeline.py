@@ -327,6 +327,31 @@ def test_cost_counts_the_forced_stage(tmp_path):
                        stations=stations) == tuple(m.omega_modes.size for m in run.models)
 
 
+def test_cost_bounds_the_forced_stage_of_a_large_mesh_without_counting(tmp_path, monkeypatch):
+    """Past cost.FORCED_COUNT_MAX_DOFS the estimate does not assemble the dense matrices to
+    count the basis (a case refused for its size must not pay for them): the part is the
+    DOFs-cubed bound of cost.forced_seconds (source: its calibration), and no count is made
+    (a counter on basis_sizes). The README vehicle's cylinder repeated until its mesh passes
+    the limit."""
+    from flexbooster import cost, dynamics
+    from flexbooster.shell_of_revolution import mesh_vehicle
+
+    calls = []
+    monkeypatch.setattr(dynamics, "basis_sizes", lambda *a, **k: calls.append(1) or (6, 6))
+    text = _case_text()
+    cylinder = ('[[vehicle.segments]]\nkind = "cylinder"\nradius = "1.5 m"\nlength = "6 m"\n'
+                'thickness = "16 mm"\n')
+    assert cylinder in text
+    for copies in range(2, 40):
+        case, _ = _load(tmp_path, text.replace(cylinder, cylinder * copies), f"c{copies}.toml")
+        vehicle = vehicle_from_case(case)
+        if mesh_vehicle(vehicle).n_full > cost.FORCED_COUNT_MAX_DOFS:
+            break
+    part = cost.forced_run_seconds(case, vehicle)  # the estimate's "vehicle forced response"
+    assert part == cost.forced_seconds(vehicle, case.thrust.n_omega)
+    assert not calls
+
+
 def test_no_vehicle_skips_the_stage(small_memo_case_file):
     """``analyze(vehicle=False)`` (``--no-vehicle``) neither announces nor computes it."""
     seen = []

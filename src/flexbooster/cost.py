@@ -53,6 +53,7 @@ __all__ = [
     "flight_time_seconds",
     "forced_seconds",
     "forced_run_seconds",
+    "FORCED_COUNT_MAX_DOFS",
     "with_flight",
     "estimate_cost",
     "check_case_cost",
@@ -1164,6 +1165,12 @@ def forced_seconds(vehicle: Any, n_omega: int, *, large_basis: bool = True) -> f
 # twice the fit: actual / estimate at most 0.76 on those cases (median estimate 2.7x).
 _C_FORCED_RUN = (0.27, 1.15e-8, 9.13e-8, 3.6e-9, 5e-4, 0.009)
 _FORCED_RUN_FLOOR, _FORCED_RUN_MARGIN = 0.1, 2.0
+#: Past this many DOFs the forced response's basis is not counted: the count assembles each
+#: harmonic's dense matrices (8 n^2 bytes each: 50 MB at 2,500) and factorises them, which a
+#: case refused for its size should not pay; :func:`forced_seconds` (its DOFs-cubed bound)
+#: prices it instead (the count took 0.23 s at 882 DOFs, 1.5 s at 2,340 on a loaded machine,
+#: where the bound gives 634 s for a forced response of 2.7 s).
+FORCED_COUNT_MAX_DOFS = 2500
 
 
 def forced_run_seconds(case: Any, vehicle: Any) -> float:
@@ -1171,7 +1178,7 @@ def forced_run_seconds(case: Any, vehicle: Any) -> float:
     (:func:`flexbooster.analysis.analyze_forced_response`) from its counted basis per harmonic
     (:func:`flexbooster.dynamics.basis_sizes`, Sylvester's law of inertia; no eigenvector):
     the law above; :func:`forced_seconds` for each harmonic forced where the count cannot be
-    made (the stage then says why).
+    made (the stage then says why) or past :data:`FORCED_COUNT_MAX_DOFS` DOFs.
 
     Parameters
     ----------
@@ -1189,12 +1196,15 @@ def forced_run_seconds(case: Any, vehicle: Any) -> float:
     n_omega = 0 if t.spectrum is not None else t.n_omega
     top = (max(line.frequency for line in t.spectrum) if t.spectrum is not None
            else float(case.omega_grid().max()))
+    n = mesh_vehicle(vehicle).n_full
+    if n > FORCED_COUNT_MAX_DOFS:  # counting would cost what it prices: the bound
+        return forced_seconds(vehicle, n_omega) * forced
     try:
         m = np.array(basis_sizes(vehicle, F0=case.F0, omega_max=top,
                                  stations=forced_stations(case, vehicle)[0]), dtype=float)
     except (ValueError, np.linalg.LinAlgError):
         return forced_seconds(vehicle, n_omega) * forced
-    x = mesh_vehicle(vehicle).n_full / _FORCED_DOFS
+    x = n / _FORCED_DOFS
     c_n, c_s, c_f, c_p, c_m, c_h = _C_FORCED_RUN
     mf = m[:forced]  # k = 0, and k = 1 with a misalignment
     fit = (c_n * x * x * max(1.0, x) + c_s * np.sum(m**3) + c_f * np.sum(mf**3)
