@@ -1240,6 +1240,7 @@ def flight_time_seconds(case: Any) -> float:
         The validated case (SI).
     """
     from .model import flight_times, frozen_case, vehicle_from_case
+    from .shell_of_revolution import shared_harmonics
 
     times = flight_times(case)
     if times.size == 0:
@@ -1250,8 +1251,6 @@ def flight_time_seconds(case: Any) -> float:
             1.0 + (case.thrust.misalignment != 0.0))
     except ValueError:  # a vehicle the mesh refuses: the stage says why
         return 0.0
-    from .shell_of_revolution import shared_harmonics
-
     samples = np.unique(np.linspace(0, times.size - 1, FLIGHT_SAMPLES).round().astype(int))
 
     def sample(i: int) -> float:  # another vehicle: its builds released after it
