@@ -328,3 +328,19 @@ def test_search_prices_refuse_anything_but_a_search_work(price):
     type given (a mapping with the same fields is not one)."""
     with pytest.raises(TypeError, match=r"^work = dict: must be a SearchWork$"):
         price({"n": 4, "n_candidates": 1})
+
+
+def test_a_candidate_past_the_step_limit_is_priced_not_dropped():
+    """tests/data/step_limit_candidate_case.toml (make fuzz): the k = 1 search's candidates
+    include one past the step limit that the search never integrates; the search ran in full,
+    380 s CPU measured (the file's header), where the estimate had priced the harmonic 0 (as
+    if it stopped at the limit). Now every candidate's steps are counted without the limit: the
+    part is at least the measured time / 1.5 (the fuzz's tolerance), so the case is refused
+    up front over its 20 s budget."""
+    case = flexbooster.load_case(Path(__file__).parent / "data" /
+                                 "step_limit_candidate_case.toml")
+    parts = cost.estimate_vehicle_cost(case, figures=True).parts
+    assert parts[cost.BENDING_SEARCH_PART] >= 380.0 / 1.5
+    with pytest.raises(CaseError, match="max_seconds"):
+        cost.check_case_cost(None, case.max_seconds,
+                             vehicle=cost.estimate_vehicle_cost(case, figures=True))

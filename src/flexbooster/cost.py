@@ -703,6 +703,10 @@ def damped_band_steps(model: BoosterModel) -> tuple[float, float]:
                                                       model.pitch_damping_ratio))
 
 
+#: The step limit of a count that must not stop at floquet.MAX_STEPS (no integration).
+_COUNT_MAX_STEPS = 2**62
+
+
 def _system_search_seconds(build, thrust, price) -> float:
     """CPU time (s) of the damped region search of the harmonic ``build()`` returns: its work
     counted up front and priced by ``price(work)``, or, past :data:`_K1_COUNTED_MODES` modes,
@@ -720,8 +724,15 @@ def _system_search_seconds(build, thrust, price) -> float:
             if floquet.stability_certificate(*system).certified:
                 return 0.0
             return search_seconds(n, thrust.omega_min, thrust.omega_max, damped=True)
-        work = floquet.search_work(*system, thrust.omega_min, thrust.omega_max,
-                                   **floquet_options())
+        try:
+            work = floquet.search_work(*system, thrust.omega_min, thrust.omega_max,
+                                       **floquet_options())
+        except floquet.StepLimitError:
+            # a candidate past the step limit: the search integrates only where its seeds
+            # lead, so it may never meet that one and run in full; every candidate's steps
+            # counted with no limit (an upper bound)
+            work = floquet.search_work(*system, thrust.omega_min, thrust.omega_max,
+                                       **{**floquet_options(), "max_steps": _COUNT_MAX_STEPS})
     except (*LIMIT_ERRORS, BucklingError, ValueError):
         return 0.0
     return price(work)
