@@ -977,3 +977,29 @@ def test_fuzz_reproducer_singular_half_period_map_is_a_search_gap():
                                  / "singular_half_period_map_case.toml")
     gaps = [g for g in frozen_time(case, 8).regions.gaps if g.limit == "floating_point"]
     assert gaps and all("singular to working precision" in g.reason for g in gaps)
+
+
+def test_fuzz_reproducer_flight_fill_below_a_tank_state():
+    """Found by `make fuzz` (3 of 1,000 cases, an internal ``FieldValueError: tanks[0].fill =
+    7.9e-304: the liquid depth ... must be 0 or at least 1e-05 of the largest radius``): a
+    [flight] point whose fill is in [0, 1], as the schedule asks, but leaves a liquid depth
+    the vehicle's tank refuses (its rule). The frozen times' tanks are checked before any
+    solver: a one-line CaseError naming flight.points, the time and the fill, with the rule."""
+    case = {"name": "fuzz", "max_seconds": 20.0,
+            "thrust": {"gamma": 0.5, "K": 3.6, "omega_min": 1.15, "omega_max": 16.8,
+                       "n_omega": 3, "F0": 2.57e6},
+            "vehicle": {"k_max": 2, "n_modes": 3, "damping_ratio": 0.9, "E": 1.97e9,
+                        "nu": 0.356, "rho": 100.0,
+                        "segments": [{"kind": "cylinder", "radius": 1.35, "length": 8.83,
+                                      "thickness": 0.0688}],
+                        "tanks": [{"aft": 0.0, "fwd": 8.83, "fill": 0.065, "density": 500.0}]},
+            "flight": {"stations": 4, "points": [
+                {"time": 0.0, "F0": 3.1e5, "fill": [0.071], "oscillation": 1.15,
+                 "gamma": 0.14},
+                {"time": 15.8, "F0": 2.57e6, "fill": [7.93e-304], "oscillation": 16.8,
+                 "gamma": 0.01}]}}
+    with pytest.raises(CaseError) as info:
+        analyze(flexbooster.load_case(case), figures=False)
+    message = str(info.value)
+    assert message.startswith("flight.points = ") and "\n" not in message
+    assert "t = 15.8 s" in message and "1e-05 of the largest radius" in message

@@ -38,7 +38,7 @@ from .dynamics import (
     vehicle_regions,
 )
 from .errors import AnalysisWarning
-from .flight_stage import FrozenTime, flight_stage
+from .flight_stage import FrozenTime, check_fills, flight_stage
 from .memo import charts
 from .memo.beam import beam_modes
 from .memo.beam_action import PeriodMapOverflowError, beam_action_analysis
@@ -194,6 +194,8 @@ def analyze(
     with blas_threads(1), shared_harmonics():
         step(STAGES[0])
         model = model_from_case(case)
+        if vehicle:  # every frozen time's tanks, before the estimate builds any
+            check_fills(case)
         est, extra = _feasibility(case, model, beam_action=beam_action, stability=stability,
                                   figures=figures, with_regions=vehicle,
                                   with_flight=frozen is None)
@@ -297,6 +299,8 @@ def _analyze_segments(case: Case, step: Callable[[str], None], *, figures: bool,
     with blas_threads(1), shared_harmonics():  # the vehicle and its harmonics built once
         step(STAGES[0])
         structure = vehicle_from_case(case)
+        if regions:  # every frozen time's tanks, before the estimate builds any
+            check_fills(case)
         mass = mass_properties(structure)
         t, Omega = case.thrust, case.omega_grid()
         _check_lever_arm(case, mass.cm_m)

@@ -20,6 +20,7 @@ import numpy as np
 from . import cost, floquet
 from ._threads import blas_threads
 from .case import Case
+from .checks import FieldValueError
 from .dynamics import (
     STANDARD_GRAVITY,
     ForcedAxial,
@@ -56,7 +57,8 @@ from .shell_of_revolution.modes import (
 )
 from .shell_of_revolution.survey import has_flat_plate
 
-__all__ = ["flight_stage", "frozen_time", "assemble_flight", "FrozenTime", "flight_omega_range",
+__all__ = ["flight_stage", "frozen_time", "assemble_flight", "check_fills", "FrozenTime",
+           "flight_omega_range",
            "KNOWN_FREQUENCY_MARGIN", "MATCH_RTOL", "MIN_PARTICIPATION", "PEAK_WINDOW",
            "BASIS_MATCH_RTOL"]
 
@@ -185,10 +187,34 @@ def frozen_time(case: Case, index: int) -> FrozenTime:
     return _frozen_at(plan, int(index))
 
 
+def check_fills(case: Case) -> None:
+    """CaseError on ``flight.points`` where a frozen time's fills (the schedule's, linear
+    between its points) are not a tank state the vehicle accepts (a liquid depth between 0
+    and 1e-5 of the largest radius); nothing without ``[flight]``. Before any solver runs.
+
+    Parameters
+    ----------
+    case : Case
+        The validated case (SI).
+    """
+    plan = _plan(case)
+    for p in () if plan is None else plan.points:
+        _tanks_at(plan.base, p)
+
+
+def _tanks_at(base, p):
+    """:func:`_vehicle_at` of frozen point ``p``, or the CaseError of :func:`check_fills`."""
+    try:
+        return _vehicle_at(base, p.fill)
+    except FieldValueError as exc:
+        raise CaseError("flight.points", f"fill = {list(p.fill)} at t = {p.time:.6g} s",
+                        f"not a tank state at this frozen time ({exc})") from None
+
+
 def _frozen_at(plan: _Plan, index: int) -> FrozenTime:
     """:func:`frozen_time` of the plan's frozen time ``index``."""
     p = plan.points[index]
-    vehicle = _vehicle_at(plan.base, p.fill)
+    vehicle = _tanks_at(plan.base, p)
     with blas_threads(1):
         mass = mass_properties(vehicle)
         try:
