@@ -100,8 +100,9 @@ class Tank:
             raise ValueError(f"ends = {ends!r}: an apex (radius 0) has no open end")
         depth = fill * (x[-1] - x[0])
         if 0.0 < depth < MIN_DEPTH_RADII * r.max():
-            raise ValueError(f"fill = {fill!r}: the liquid depth {depth!r} m must be 0 or at "
-                             f"least {MIN_DEPTH_RADII:g} of the largest radius {r.max()!r} m")
+            raise ValueError(f"fill = {fill!r}: the liquid depth {float(depth):.6g} m must be 0 "
+                             f"or at least {MIN_DEPTH_RADII:g} of the largest radius "
+                             f"{float(r.max()):.6g} m")
         if fill > 0.0 and self.radius(self.surface) <= 0.0:
             raise ValueError(f"fill = {fill!r}: the free surface cannot be at an apex")
 
