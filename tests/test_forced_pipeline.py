@@ -347,6 +347,7 @@ def test_cost_bounds_the_forced_stage_of_a_large_mesh_without_counting(tmp_path,
         vehicle = vehicle_from_case(case)
         if mesh_vehicle(vehicle).n_full > cost.FORCED_COUNT_MAX_DOFS:
             break
+    assert mesh_vehicle(vehicle).n_full > cost.FORCED_COUNT_MAX_DOFS  # the premise
     part = cost.forced_run_seconds(case, vehicle)  # the estimate's "vehicle forced response"
     assert part == cost.forced_seconds(vehicle, case.thrust.n_omega)
     assert not calls
