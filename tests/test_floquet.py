@@ -840,6 +840,7 @@ def test_search_work_is_what_the_search_integrates():
         1, False, False, 1, 0, 0)
     und = periodic_system(*mathieu(0.1))
     assert w.undamped_steps == step_counts(und, [2.0], step_phase=0.12)[0]
+    assert w.undamped_max_steps == w.undamped_steps  # one candidate
     (r,) = instability_regions(*mathieu(0.1), 1.5, 2.5)
     assert (r.kind, r.order, r.omega_center) == ("simple", 1, 2.0)
     d = search_work(*mathieu(0.1, 0.01), 1.5, 2.5)
@@ -859,6 +860,12 @@ def test_search_work_counts_the_candidates_between_undamped_modes():
     A, B = np.diag([1.0, 1.6**2]), np.diag([-0.2, -0.2 * 1.6**2])
     d = search_work(M, C, A, B, 1.5, 3.5)
     assert d.n_candidates >= 3 and d.n_open == 1
+    # all candidates on [1.5, 3.5]: simple 2 w_i / j = 2 (mode 0), 3.2 and 1.6 (mode 1), the
+    # combination (w_0 + w_1) / 1 = 2.6; the undamped counts are their step counts' sum and
+    # the largest (the batch runs as long as its longest candidate)
+    counts = step_counts(periodic_system(M, None, A, B), [1.6, 2.0, 2.6, 3.2], step_phase=0.12)
+    assert d.n_candidates == 4
+    assert (d.undamped_steps, d.undamped_max_steps) == (int(counts.sum()), int(counts.max()))
     assert d.open_steps == step_counts(periodic_system(M, C, A, B), [2.0],
                                        step_phase=0.12)[0]
     # undamped throughout: no damped search, so nothing open is counted

@@ -748,18 +748,22 @@ def _bending_search_seconds(case: Any, vehicle: Any, n_modes: int, zeta: float) 
         case.thrust, lambda work: bending_search_steps(work, damping_ratio=zeta)[1])
 
 
-# The undamped seed search of a harmonic with few candidates is as long as its Brent rounds
-# (about 35 evaluations of the indicator) times a candidate's steps, each step of the Lawson
-# modal kernel for one point 2.5x the dense kernel's (a `make fuzz`-like vehicle, k = 2, one
-# candidate of 23,171 half-period steps at n = 20: 40 s on a loaded core against 4.7 s priced)
-_BRENT_ROUNDS, _UNDAMPED_STEP_FACTOR = 35.0, 2.5
+# The candidates' indicators are integrated in one batch (the Lawson modal kernel), which
+# runs as long as its longest candidate: each step of the batch costs a fixed 15e-6 s (its
+# numpy calls: 13-16e-6 s measured at n = 3..10) on top of the points' own steps, and the
+# longest candidate is integrated in some 60 batch evaluations (Brent maxima, then the
+# edges): a short wide cylinder, k = 2, 30 candidates, the longest 23,171 half-period steps
+# at n = 5: 62 evaluations, 1.05 million batch steps, 17.8 s (13.1e-6 s per batch step and
+# 1.39e-6 s per point-step fitted on its 62 calls); one candidate of 23,171 steps at n = 20:
+# 40 s on a loaded core (this law: 22.7 s and 49 s)
+_BATCH_ROUNDS, _C_BATCH_STEP = 60.0, 15e-6
 
 
 def shell_search_seconds(work: Any) -> float:
     """CPU time (s, one core) of the region search of a damped harmonic k >= 2 from its work
     counted up front: the undamped seed search, E_u = 10 evaluations of the steps at the
-    candidate centres or, where longer (few candidates), 35 Brent rounds of a mean
-    candidate's steps at 2.5x the step cost, and 70 evaluated points per candidate
+    candidate centres or, where longer, the batch's rounds (60 evaluations of the longest
+    candidate, see above), and 70 evaluated points per candidate
     (:func:`damped_search_cost`'s constants); the damped search runs only from the seeds it
     finds, unknown up front, and is not priced (measured on three vehicles' harmonics k =
     3..20, seeds or none, the search took 0.3-1.0 times this). 0 when steady or certified
@@ -774,10 +778,8 @@ def shell_search_seconds(work: Any) -> float:
     if work.steady or work.certified:
         return 0.0
     step = search_step_seconds(work.n)
-    # the undamped seed search maximises each candidate's indicator together (Brent): a round
-    # per evaluation, each as long as a candidate's step count, at one point's step cost
-    rounds = (_BRENT_ROUNDS * _UNDAMPED_STEP_FACTOR * step * work.undamped_steps
-              / max(work.n_candidates, 1))
+    # the seeds' indicators in one batch, as long as its longest candidate (see above)
+    rounds = _BATCH_ROUNDS * work.undamped_max_steps * (_C_BATCH_STEP + step)
     return float(_C_SEARCH_POINT * _EVALS_POINTS * work.n_candidates
                  + max(_EVALS_UNDAMPED[0] * work.undamped_steps * step, rounds))
 

@@ -838,6 +838,9 @@ class SearchWork:
         Of a damped system, the candidates whose modes have no modal damping (their regions
         open at any amplitude, so their edges and critical amplitude are searched) and the
         sum of the damped system's step counts at their centres.
+    undamped_max_steps : int
+        The largest of the undamped step counts at the candidate centres: the candidates'
+        indicators are integrated in one batch, which runs as long as its longest member.
     """
 
     n: int
@@ -849,6 +852,7 @@ class SearchWork:
     damped_steps: int
     n_open: int = 0
     open_steps: int = 0
+    undamped_max_steps: int = 0
 
     def to_dict(self) -> dict:
         """JSON-ready mapping."""
@@ -856,7 +860,8 @@ class SearchWork:
                 "certified": bool(self.certified), "n_candidates": int(self.n_candidates),
                 "n_narrow": int(self.n_narrow), "undamped_steps": int(self.undamped_steps),
                 "damped_steps": int(self.damped_steps), "n_open": int(self.n_open),
-                "open_steps": int(self.open_steps)}
+                "open_steps": int(self.open_steps),
+                "undamped_max_steps": int(self.undamped_max_steps)}
 
 
 #: A mode whose modal damping ratio is below this counts as undamped in :class:`SearchWork`
@@ -894,7 +899,7 @@ def search_work(M, C, A, B, omega_min: float, omega_max: float, **options) -> Se
     cand = _candidates(np.sqrt(system.mu.real), undamped.Bt, lo, hi, opt, rate=rate)
     mono = cand["mono"]
     centres = cand["centre"][mono]
-    steps_u = steps_d = steps_o = 0
+    steps_u = steps_d = steps_o = longest = 0
     # candidates between modes without modal damping: damping ratio delta_a / w_a below
     # OPEN_DAMPING_RATIO (0 but for the round-off of the modal frame)
     free = None if rate is None else np.abs(rate) <= OPEN_DAMPING_RATIO * np.sqrt(
@@ -902,8 +907,9 @@ def search_work(M, C, A, B, omega_min: float, omega_max: float, **options) -> Se
     is_open = (np.zeros(centres.size, bool) if free is None
                else free[cand["i"][mono]] & free[cand["k"][mono]])
     if centres.size:
-        steps_u = int(np.sum(step_counts(undamped, centres, step_phase=opt.step_phase,
-                                         max_steps=opt.max_steps)))
+        counts_u = step_counts(undamped, centres, step_phase=opt.step_phase,
+                               max_steps=opt.max_steps)
+        steps_u, longest = int(np.sum(counts_u)), int(np.max(counts_u))
         if system.damped:
             counts = step_counts(system, centres, step_phase=opt.step_phase,
                                  max_steps=opt.max_steps)
@@ -911,7 +917,8 @@ def search_work(M, C, A, B, omega_min: float, omega_max: float, **options) -> Se
     return SearchWork(**{**none, "n_candidates": int(centres.size),
                          "n_narrow": 0 if system.damped else int(np.count_nonzero(~mono)),
                          "undamped_steps": steps_u, "damped_steps": steps_d,
-                         "n_open": int(np.count_nonzero(is_open)), "open_steps": steps_o})
+                         "n_open": int(np.count_nonzero(is_open)), "open_steps": steps_o,
+                         "undamped_max_steps": longest})
 
 
 # --------------------------------------------------------------------------------------------
