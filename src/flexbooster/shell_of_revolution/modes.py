@@ -375,23 +375,6 @@ def _project(h: _Harmonic, mat: np.ndarray) -> np.ndarray:
     return 0.5 * (out + out.T)
 
 
-def _none_below(stiff: np.ndarray, mass: np.ndarray, w2: float) -> bool:
-    """True if K - w2 M is positive definite: no eigenvalue below w2 (Sylvester's law of
-    inertia), decided by a banded Cholesky factorisation (O(n b^2))."""
-    A = stiff - w2 * mass
-    rows, cols = np.nonzero(A)
-    bw = int(np.max(np.abs(rows - cols))) if rows.size else 0
-    n = A.shape[0]
-    ab = np.zeros((bw + 1, n))
-    for d in range(bw + 1):
-        ab[d, :n - d] = np.diagonal(A, -d)
-    try:
-        sla.cholesky_banded(ab, lower=True, check_finite=False)
-    except sla.LinAlgError:
-        return False
-    return True
-
-
 def _lowest_sparse(A: np.ndarray, B: np.ndarray, count: int) -> tuple | None:
     """The ``count`` lowest eigenpairs of A x = lambda B x (symmetric, B positive definite),
     B-normalised, ascending, when A is positive definite (None otherwise), to machine
@@ -525,8 +508,8 @@ def _solve(h: _Harmonic, *, loaded: bool, n_modes: int | None, w2_max: float | N
 
 def _new_solve(h: _Harmonic, *, loaded: bool, n_modes: int | None, w2_max: float | None):
     stiff = h.K + h.G if loaded else h.K
-    if n_modes is None and w2_max is not None and h.Q is None and _none_below(
-            stiff, h.M, w2_max):
+    if n_modes is None and w2_max is not None and h.Q is None and eigenvalues_below(
+            stiff, h.M, w2_max) == 0:
         return np.zeros(0), np.zeros((stiff.shape[0], 0))
     A = _project(h, stiff)
     B = _project(h, h.M)
