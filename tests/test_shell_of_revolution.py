@@ -874,6 +874,42 @@ def test_lowest_sparse_finds_a_double_eigenvalue_twice():
     np.testing.assert_allclose(vals, np.repeat(one, 2), rtol=1e-12)
 
 
+def test_lowest_sparse_converges_on_a_clustered_spectrum(monkeypatch):
+    """tests/data/long_tube_case.toml (a 248 m stiffened tube), harmonic k = 12: its 6 lowest
+    eigenvalues lie within 1e-4 of each other. The Lanczos of the sparse path converges on
+    them by itself (ARPACK, its fallback, is not called), and they are LAPACK's dense
+    generalised eigh of the same pencil (an independent solver) to 1e-10 relative (the dense
+    reduction's round-off, eps ||A|| / lambda: 2e-12 measured)."""
+    import flexbooster
+    from flexbooster import cost
+    from flexbooster.dynamics import harmonic_system
+    from flexbooster.model import vehicle_from_case
+    from flexbooster.shell_of_revolution import modes
+
+    def no_arpack(*args, **kwargs):
+        raise AssertionError("ARPACK called: the Lanczos did not converge")
+
+    pencils = []
+    real = modes._lowest_sparse
+
+    def recorded(A, B, count):
+        out = real(A, B, count)
+        pencils.append((A, B, count, out))
+        return out
+
+    monkeypatch.setattr(modes.spla, "eigsh", no_arpack)
+    monkeypatch.setattr(modes, "_lowest_sparse", recorded)
+    case = flexbooster.load_case(Path(__file__).parent / "data" / "long_tube_case.toml")
+    vehicle = vehicle_from_case(case)
+    n_modes = cost.region_modes(case, vehicle, k_max=12)[0]
+    harmonic_system(vehicle, 12, F0=case.F0, n_modes=n_modes, damping_ratio=0.01,
+                    unloaded_frequencies=False)
+    (A, B, count, (vals, _)), = pencils
+    ref = sla.eigh(A, B, subset_by_index=(0, count - 1), eigvals_only=True)
+    assert ref[-1] - ref[0] < 1e-4 * ref[0]  # the cluster
+    np.testing.assert_allclose(vals, ref, rtol=1e-10)
+
+
 @pytest.mark.parametrize("k", [0, 1])
 def test_rigid_free_projection_is_the_basis_product(k):
     """The projection of a harmonic with rigid motions onto their M-orthogonal complement (by
