@@ -1,5 +1,7 @@
-"""flexbooster: dynamic stability of a flexible two-cylinder booster under a gimbaled,
-periodically varying end thrust (Research & Analysis Section Tech Memo 104).
+"""flexbooster: whether a launch vehicle is safe under its oscillating thrust. The vehicle as
+one shell of revolution (tanks, masses, pressure, stiffeners), its parametric instability
+regions and forced response through its flight, and the method of Research & Analysis Section
+Tech Memo 104 (two bare cylinders under a gimbaled, periodically varying end thrust).
 
 Public API::
 

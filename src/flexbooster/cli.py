@@ -63,9 +63,11 @@ class _Group(click.Group):
 )
 @click.version_option(__version__, prog_name="flexbooster")
 def cli() -> None:
-    """Dynamic stability of a flexible two-cylinder booster under a gimbaled, pulsating thrust
-    (Tech Memo 104): mass properties, beam and shell frequencies, rigid-body and beam stability
-    and the thrust frequencies at which the structure goes unstable.
+    """Whether a launch vehicle is safe under its oscillating thrust: the vehicle as one shell
+    of revolution (tanks, masses, pressure, stiffeners), its parametric instability regions and
+    forced response (g, N) through its flight, the severities and one overall verdict; the
+    memo's two bare cylinders (Tech Memo 104: rigid pitch, beam action, shell resonances) one
+    option away.
 
     \b
     Examples:
