@@ -794,14 +794,20 @@ UNDAMPED_SEARCH_PART = "vehicle undamped searches"
 # candidate examined by the monodromy (the step rule, expm and eigenvalues of its points);
 # fitted on that flight's free-free tanked vehicle (k <= 20, 6 modes, and k <= 8, 14 modes;
 # gamma 0.02 and 0.2 at lift-off and burnout: 351-1,410 regions, 2.1-34.5 s CPU on a loaded
-# core): every one of those eight runs within 1.07-1.62x of it, none above.
+# core): every one of those eight runs within 1.07-1.62x of it, none above. Each evaluation
+# integrates the candidates in one batch, as long as the longest (15e-6 s per batch step, see
+# :func:`shell_search_seconds`): E_u x that as well. A lone candidate of 92,682 half-period
+# steps (the short wide cylinder of tests/data, undamped, k = 2, n = 5, Omega within 0.5 % of
+# one centre): 7-10 evaluations, 9.8-13.8 s CPU measured, 1.2 s priced without this term.
 _C_UNDAMPED_CANDIDATE = 3e-3
 
 
 def undamped_search_seconds(work: Any) -> float:
     """CPU time (s, one core) of the region search of an undamped harmonic from its work
     counted up front: 3e-3 s per candidate examined by the monodromy and E_u = 10 evaluations
-    of the steps at its centre (:func:`search_step_seconds`); 0 when steady (no search).
+    of the steps at its centre (:func:`search_step_seconds`), each with the batch's overhead
+    for its longest candidate (15e-6 s per step of ``work.undamped_max_steps``); 0 when steady
+    (no search).
 
     Parameters
     ----------
@@ -811,8 +817,9 @@ def undamped_search_seconds(work: Any) -> float:
     _check_work(work)
     if work.steady:
         return 0.0
-    return float(_C_UNDAMPED_CANDIDATE * work.n_candidates
-                 + _EVALS_UNDAMPED[0] * work.undamped_steps * search_step_seconds(work.n))
+    return float(_C_UNDAMPED_CANDIDATE * work.n_candidates + _EVALS_UNDAMPED[0] * (
+        work.undamped_steps * search_step_seconds(work.n)
+        + work.undamped_max_steps * _C_BATCH_STEP))
 
 
 #: Harmonics whose undamped search :func:`estimate_vehicle_cost` counts (the others
