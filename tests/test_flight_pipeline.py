@@ -104,6 +104,11 @@ def test_flight_files_have_the_issue_columns(constant, tmp_path):
     assert rows[0] == ["time_s", "k", "mode", "hz", "type"]
     present = sum(int(np.isfinite(h.frequencies).sum()) for h in constant.flight.harmonics)
     assert len(rows) - 1 == present
+    # "mode" is the tracked identity j + 1 (1-based, as "mode N" in the summary's words)
+    h = constant.flight.harmonics[0]
+    first = next(r for r in rows[1:] if r[1] == str(h.k) and r[2] == "1")
+    assert float(first[0]) == constant.flight.times[0]
+    assert float(first[3]) == pytest.approx(h.frequencies[0, 0] / (2 * np.pi), rel=1e-12)
     with events.open() as f:
         rows = list(csv.reader(f))
     assert rows[0] == ["mechanism", "k", "modes", "t_start_s", "t_end_s", "max_growth_1_s",
@@ -309,7 +314,7 @@ def test_forced_event_peaks_are_the_steady_peaks_of_the_frozen_vehicle(forced_fl
                             stations=forced_stations(case, vehicle)[0], harmonics=(k,))
         a = np.abs(r.acceleration[0]) / STANDARD_GRAVITY  # (stations, grid)
         event = forced[k]
-        assert event.modes == f"{h.types[0, 0]} (k = {k}, mode 0)"
+        assert event.modes == f"k = {k} mode 1 ({h.types[0, 0]})"  # 1-based, as every "mode N"
         assert (event.t_start_s, event.t_end_s) == (0.0, 40.0)
         assert a.max() * (1 - 1e-12) <= event.peak_acceleration_g <= a.max() * (1 + 1e-4)
         assert event.station == r.stations[int(np.argmax(a.max(axis=1)))].name

@@ -62,7 +62,7 @@ def test_two_dof_crossing_frequencies_keep_identities():
     # the flight-modes.csv rows: one per time and mode, hz = omega / (2 pi)
     rows = mode_rows(times, tracked, k=0, types=["axial", "bending"])
     assert len(rows) == 24 and tuple(rows[0]) == MODE_COLUMNS
-    assert rows[-1] == {"time_s": 1.0, "k": 0, "mode": 1, "hz": pytest.approx(
+    assert rows[-1] == {"time_s": 1.0, "k": 0, "mode": 2, "hz": pytest.approx(
         np.sqrt(2.0) / (2 * np.pi), rel=1e-10), "type": "bending"}
 
 

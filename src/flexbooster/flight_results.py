@@ -12,7 +12,7 @@ from typing import Any
 import numpy as np
 
 from .danger import event_status
-from .flight import EVENT_COLUMNS, MODE_COLUMNS, FlightEvent
+from .flight import EVENT_COLUMNS, MODE_COLUMNS, FlightEvent, TrackedModes, mode_rows
 
 __all__ = ["FlightHarmonic", "FlightResults", "EVENT_COLUMNS", "MODE_COLUMNS"]
 
@@ -124,17 +124,11 @@ class FlightResults:
         return counted[0] if counted else None
 
     def mode_rows(self) -> list[dict[str, Any]]:
-        """The rows of flight-modes.csv (:data:`MODE_COLUMNS`): per frozen time, harmonic and
-        present identity (``mode``), its frequency (Hz) and type."""
-        rows = []
-        for h in self.harmonics:
-            for i, t in enumerate(self.times):
-                for j in range(h.frequencies.shape[1]):
-                    if np.isfinite(h.frequencies[i, j]):
-                        rows.append({"time_s": float(t), "k": int(h.k), "mode": int(j),
-                                     "hz": float(h.frequencies[i, j] / (2.0 * np.pi)),
-                                     "type": str(h.types[i, j])})
-        return rows
+        """The rows of flight-modes.csv (:data:`MODE_COLUMNS`): per harmonic
+        :func:`flexbooster.flight.mode_rows` of its tracked modes."""
+        return [row for h in self.harmonics for row in mode_rows(
+            self.times, TrackedModes(order=h.order, mac=h.mac, frequencies=h.frequencies),
+            k=h.k, types=h.types)]
 
     def event_rows(self) -> list[dict[str, Any]]:
         """The rows of flight-events.csv (:data:`EVENT_COLUMNS`), the worst first."""

@@ -242,7 +242,8 @@ def _masses(mass: Any, T: int, n: int) -> list[np.ndarray] | None:
 def mode_rows(times: Any, tracked: TrackedModes, *, k: int,
               types: Any = None) -> list[dict[str, Any]]:
     """The rows of flight-modes.csv (:data:`MODE_COLUMNS`) of one harmonic: one per frozen
-    time and present identity, ``mode`` the identity, ``hz`` its frequency / (2 pi).
+    time and present identity, ``mode`` its number j + 1 (1-based as "mode N" in every text:
+    mode 1 is the lowest at the first time), ``hz`` its frequency / (2 pi).
 
     Parameters
     ----------
@@ -260,7 +261,7 @@ def mode_rows(times: Any, tracked: TrackedModes, *, k: int,
     if t.size != T:
         raise ValueError(f"times: {t.size} values, must be {T} like tracked.order")
     kinds = None if types is None else np.broadcast_to(np.asarray(types, dtype=object), (T, N))
-    return [{"time_s": float(t[i]), "k": int(k), "mode": int(j),
+    return [{"time_s": float(t[i]), "k": int(k), "mode": int(j) + 1,
              "hz": float(tracked.frequencies[i, j] / (2.0 * np.pi)),
              "type": None if kinds is None else kinds[i, j]}
             for i in range(T) for j in range(N) if tracked.order[i, j] >= 0]
