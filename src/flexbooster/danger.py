@@ -768,13 +768,13 @@ class Verdict:
 
 def _event_words(e: FlightEvent) -> str:
     """A flight event in a few words, with its interval."""
-    k = "" if e.k is None or "k =" in e.modes else f" (k = {e.k})"
+    what = e.modes if e.k is None else f"k = {e.k} {e.modes}"
     when = f"t = {e.t_start_s:.4g}-{e.t_end_s:.4g} s"
     if e.peak_acceleration_g is not None:
-        return f"{e.peak_acceleration_g:.3g} g at {e.station}, {when}, {e.modes}{k}"
+        return f"{e.peak_acceleration_g:.3g} g at {e.station}, {when}, {what}"
     amp = f"x {e.amplification:.3g}" if math.isfinite(e.amplification) and \
         e.efolds <= AMPLIFICATION_EXPONENT_MAX else f"x e^{e.efolds:.3g}"
-    return f"{e.modes}{k}, {when}, {amp} ({e.efolds:.3g} e-folds)"
+    return f"{what}, {when}, {amp} ({e.efolds:.3g} e-folds)"
 
 
 def _largest_response(bounded: Sequence[Band], responses: Sequence[ResponsePeak],

@@ -510,6 +510,6 @@ def _forced_events(case: Case, base, times, points, harmonics, osc, *, zeta: flo
         station = names[place[(k, j)][a + int(np.argmax(peak[(k, j)][a:b]))]]
         events += resonance_events(
             times[a:b], h.frequencies[a:b, j], osc[a:b], zeta=zeta,
-            steady_peak_g=peak[(k, j)][a:b], modes=f"k = {k} mode {j + 1} ({h.types[a, j]})",
+            steady_peak_g=peak[(k, j)][a:b], modes=f"mode {j + 1} ({h.types[a, j]})",
             k=k, station=station)
     return events, warnings, notes

@@ -40,7 +40,8 @@ class FlightEvent:
     k : int or None
         Circumferential harmonic, where one.
     modes : str
-        The modes in words (" + " between the modes of a combination region).
+        The modes in words (" + " between the modes of a combination region), without k
+        (the texts put ``k`` before them).
     t_start_s, t_end_s : float
         The interval (s) in which the band meets the oscillation band.
     max_growth_1_s : float
