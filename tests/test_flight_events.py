@@ -204,6 +204,25 @@ def test_fast_drift_up_and_down(rate):
     assert event.peak_acceleration_g == pytest.approx(direct, rel=0.02)
 
 
+def test_band_peak_is_the_steady_peak_inside_the_event():
+    """Closed form: a mode omega = 10 + 0.4 t rad/s (zeta = 0.01) under a band [9.5, 12]: its
+    half-power band meets the band from t = 0 until omega (1 - zeta) = 12, t_end = (12 / 0.99 -
+    10) / 0.4 = 5.303 s; the steady peak 1, 2, 30 g at t = 0, 10, 20 s, linear in between
+    like the frequency, is largest inside the event at t_end: 1 + t_end / 10 g (1e-12), not the
+    2 g or 30 g of frozen times after it; the station that of the frozen time nearest (10 s)."""
+    times = np.array([0.0, 10.0, 20.0])
+    (event,) = resonance_events(times, 10.0 + 0.4 * times, np.tile([9.5, 12.0], (3, 1)),
+                                zeta=0.01, steady_peak_g=[1.0, 2.0, 30.0], modes="mode 1",
+                                k=0, station=["aft", "mid", "fwd"])
+    t_end = (12.0 / 0.99 - 10.0) / 0.4
+    assert (event.t_start_s, event.t_end_s) == (0.0, pytest.approx(t_end, rel=1e-12))
+    assert event.peak_acceleration_g == pytest.approx(1.0 + t_end / 10.0, rel=1e-12)
+    assert event.station == "mid"
+    with pytest.raises(ValueError, match="^station"):
+        resonance_events(times, 10.0 + 0.4 * times, np.tile([9.5, 12.0], (3, 1)), zeta=0.01,
+                         steady_peak_g=[1.0, 2.0, 30.0], modes="m", station=["aft"])
+
+
 def test_event_row_has_the_csv_columns():
     """The flight-events.csv row: exactly the issue's columns, in order, JSON types."""
     e = FlightEvent(mechanism="vehicle", k=2, modes="bending 1", t_start_s=1.0, t_end_s=2.5,

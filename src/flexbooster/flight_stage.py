@@ -449,7 +449,8 @@ def _forced_events(case: Case, base, times, points, harmonics, osc, *, zeta: flo
     lo, hi = omega_range
     stations = forced_stations(case, base)[0]
     by_k = {h.k: h for h in harmonics if h.k in ks}
-    # the (k, mode, run) whose half-power band meets the oscillation band somewhere
+    # the (k, mode, run) whose half-power band meets the oscillation band somewhere, and the
+    # frozen times that bound the segments where it does (the events read those alone)
     runs = []
     for k, h in by_k.items():
         for j in range(h.frequencies.shape[1]):
@@ -457,18 +458,18 @@ def _forced_events(case: Case, base, times, points, harmonics, osc, *, zeta: flo
             edges = np.flatnonzero(np.diff(np.concatenate([[0], present.astype(int), [0]])))
             for a, b in zip(edges[::2], edges[1::2], strict=True):
                 om = h.frequencies[a:b, j]
-                if b - a >= 2 and meeting_intervals(times[a:b], om * (1.0 - zeta),
-                                                    om * (1.0 + zeta), osc[a:b, 0],
-                                                    osc[a:b, 1]):
-                    runs.append((k, j, a, b))
-    peak = {(k, j): np.zeros(times.size) for k, j, _, _ in runs}
-    place = {(k, j): np.zeros(times.size, dtype=int) for k, j, _, _ in runs}
-    share = {(k, j): 0.0 for k, j, _, _ in runs}
+                pieces = [] if b - a < 2 else meeting_intervals(
+                    times[a:b], om * (1.0 - zeta), om * (1.0 + zeta), osc[a:b, 0], osc[a:b, 1])
+                if pieces:
+                    runs.append((k, j, a, b, {a + i + d for _, _, i in pieces for d in (0, 1)}))
+    peak = {(k, j): np.zeros(times.size) for k, j, *_ in runs}
+    place = {(k, j): np.zeros(times.size, dtype=int) for k, j, *_ in runs}
+    share = {(k, j): 0.0 for k, j, *_ in runs}
     names: list[str] = []
     failed: dict[int, str] = {}
     for i, p in enumerate(points):
         for k in ks:
-            want = [j for kk, j, a, b in runs if kk == k and a <= i < b]
+            want = [j for kk, j, _, _, need in runs if kk == k and i in need]
             if not want or k in failed:
                 continue
             centres = by_k[k].frequencies[i, want]
@@ -503,13 +504,12 @@ def _forced_events(case: Case, base, times, points, harmonics, osc, *, zeta: flo
                                 f"the k = {k} forced resonances are not computed along the "
                                 f"flight ({why})") for k, why in sorted(failed.items())]
     events = []
-    for k, j, a, b in runs:
+    for k, j, a, b, _ in runs:
         if k in failed or share[(k, j)] < MIN_PARTICIPATION:
             continue  # not computed (the warning says why), or not forced by the thrust
         h = by_k[k]
-        station = names[place[(k, j)][a + int(np.argmax(peak[(k, j)][a:b]))]]
         events += resonance_events(
             times[a:b], h.frequencies[a:b, j], osc[a:b], zeta=zeta,
             steady_peak_g=peak[(k, j)][a:b], modes=f"mode {j + 1} ({h.types[a, j]})",
-            k=k, station=station)
+            k=k, station=[names[c] for c in place[(k, j)][a:b]])
     return events, warnings, notes

@@ -305,13 +305,14 @@ def band_events(times: Any, bands_per_time: Sequence[Sequence[Band]], oscillatio
 
 def resonance_events(times: Any, omega: Any, oscillation: Any, *, zeta: float,
                      steady_peak_g: Any, modes: str, k: int | None = None,
-                     station: str | None = None) -> tuple[FlightEvent, ...]:
+                     station: str | Sequence[str] | None = None) -> tuple[FlightEvent, ...]:
     """The intervals in which a tracked mode's half-power band omega (1 -+ zeta) meets the
     oscillation band, with the peak acceleration: a known oscillation frequency (lo == hi)
     crossing the mode's frequency gives the non-stationary peak, the steady peak at the
     crossing times :func:`.crossing_peak_ratio` of the mode and the forcing drifting at
     their rates in that segment (the largest over the run's crossings); a frequency band
-    gives the largest steady peak of the run (the oscillation may dwell at the resonance).
+    gives the largest steady peak inside the run (the oscillation may dwell at the
+    resonance), the steady peak linear in time between the frozen times as the frequencies.
     Where the crossing is too slow for :data:`.MAX_SWEEP_STEPS`, the steady peak (a bound).
 
     Parameters
@@ -330,8 +331,9 @@ def resonance_events(times: Any, omega: Any, oscillation: Any, *, zeta: float,
         The mode in words.
     k : int, optional
         Its circumferential harmonic.
-    station : str, optional
-        Where the peak acceleration is.
+    station : str or sequence of str, optional
+        Where the peak acceleration is: one name, or one per time (the event's is that of
+        the frozen time nearest to where its peak is).
     """
     t = finite_array("times", times).ravel()
     om = finite_array("omega", omega, positive=True).ravel()
@@ -342,11 +344,21 @@ def resonance_events(times: Any, omega: Any, oscillation: Any, *, zeta: float,
     peak = finite_array("steady_peak_g", steady_peak_g).ravel()
     if om.size != t.size or peak.size != t.size or osc.shape != (t.size, 2):
         raise ValueError(f"omega, steady_peak_g, oscillation: need {t.size} times like times")
+    places = [station] * t.size if station is None or isinstance(station, str) else list(station)
+    if len(places) != t.size:
+        raise ValueError(f"station: {len(places)} names, need {t.size} like times (or one)")
     pieces = meeting_intervals(t, om * (1.0 - zeta), om * (1.0 + zeta), osc[:, 0], osc[:, 1])
     events = []
     for run in _merge(pieces):
         idx = sorted({i for _, _, i in run} | {i + 1 for _, _, i in run})
-        g = float(np.max(peak[idx]))  # a band: the largest steady peak of the run
+        # a band: the largest steady peak inside the run, the peak linear in time between the
+        # frozen times as the frequencies are (a linear function's largest value on a piece
+        # is at one of its ends)
+        def nearest(i: int, when: float) -> int:  # the frozen time nearest to ``when``
+            return i + int(when - t[i] > t[i + 1] - when)
+
+        g, at = max((float(np.interp(end, t[i:i + 2], peak[i:i + 2])), nearest(i, end))
+                    for ta, tb, i in run for end in (ta, tb))
         if np.all(osc[idx, 0] == osc[idx, 1]):
             # a known frequency: where Omega = omega, the steady peak there and the drift
             crossings = []
@@ -357,21 +369,22 @@ def resonance_events(times: Any, omega: Any, oscillation: Any, *, zeta: float,
                     s = d0 / (d0 - d1)  # Omega - omega linear in the segment
                     crossings.append((om[i] + s * (om[i + 1] - om[i]),
                                       (om[i + 1] - om[i]) / h, (osc[i + 1, 0] - osc[i, 0]) / h,
-                                      peak[i] + s * (peak[i + 1] - peak[i])))
+                                      peak[i] + s * (peak[i + 1] - peak[i]),
+                                      nearest(i, t[i] + s * h)))
             ratios = []
-            for w_c, w_rate, W_rate, g_c in crossings:
+            for w_c, w_rate, W_rate, g_c, where in crossings:
                 try:
                     ratio = crossing_peak_ratio(zeta=zeta, omega=w_c, omega_rate=w_rate,
                                                 Omega_rate=W_rate)
                 except StepLimitError:  # too slow to integrate: the steady peak bounds it
                     ratio = 1.0
-                ratios.append(ratio * g_c)
+                ratios.append((ratio * g_c, where))
             if ratios:
-                g = max(ratios)
+                g, at = max(ratios)
         events.append(FlightEvent(
             mechanism="forced", k=k, modes=modes, t_start_s=run[0][0], t_end_s=run[-1][1],
             max_growth_1_s=0.0, efolds=0.0, amplification=1.0,
-            peak_acceleration_g=float(g), station=station))
+            peak_acceleration_g=float(g), station=places[at]))
     return tuple(events)
 
 
