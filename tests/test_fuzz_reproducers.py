@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 import flexbooster
-from flexbooster import analysis, cost
+from flexbooster import analysis, cost, floquet
 from flexbooster.analysis import analyze
 from flexbooster.case import memo_case_text
 from flexbooster.errors import CaseError
@@ -1003,3 +1003,59 @@ def test_fuzz_reproducer_flight_fill_below_a_tank_state():
     message = str(info.value)
     assert message.startswith("flight.points = ") and "\n" not in message
     assert "t = 15.8 s" in message and "1e-05 of the largest radius" in message
+
+
+#: Found by the independent fuzz (seed 43, case 60; the memo's two cylinders, N = 10, gamma =
+#: 0.5, beam damping 1 %, pitch undamped): the rigid-pitch tongue r = 1 at Omega_bar = 8.7e-3
+#: took 112 s CPU against 8.1 s estimated. Its harmonic-balance roots wander by ~5e-9
+#: relative (round-off: the truncation's highest frequency is 5,600 x Omega), above the
+#: edges' tolerance 1e-9 and the 1e-9 test of a real root, so K ran to 24 (QZ of order 1,056)
+#: and the critical-gamma bisection at K = 20 lost the lower edge to that test: critical gamma
+#: 0.25 (margin 0.5) where the tongue exists at gamma = 0.01.
+_FUZZ_TONGUE_ROUNDOFF = {
+    "name": "fuzz",
+    "booster": {"cylinder1": {"radius": "5.05 m", "half_length": "21 m"},
+                "cylinder2": {"radius": "2.49992 m", "half_length": "3.85911 m"},
+                "thickness": "11.3027 mm", "E": "10.5e6 psi", "nu": 0.39873109026692444,
+                "rho": "4.37301e-05 lbf*s^2/in^4"},
+    "thrust": {"F0": "0.394623 MN", "gamma": 0.5, "K": 0.5, "omega_min": "3.22965 rad/s",
+               "omega_max": "1154 rad/s", "n_omega": 50},
+    "damping": {"modal_ratio": 0.01, "pitch_ratio": 0.0},
+    "truncation": {"M1": 1, "N1": 6, "M2": 6, "N2": 10, "N": 10, "S": 3, "R": 3},
+}
+
+
+@pytest.mark.slow
+def test_fuzz_reproducer_pitch_tongue_at_the_roundoff_of_its_roots(monkeypatch):
+    """Independent values: the coupled tongue's upper edge equals the rigid pitch's Mathieu
+    tongue (memo.pitch.pitch_bands, scipy transition curves; the beam's share is O((Omega /
+    omega_1)^2) ~ 7.5e-5, measured 1.5e-5) to 1e-4; the full coupled system's Floquet
+    monodromy at the tongue's centre grows at gamma = 0.01 (so the critical gamma is below
+    0.01). Counter: the harmonic balance stops at K <= 8 (it ran to 24 chasing round-off)."""
+    model = model_from_case(flexbooster.load_case(_FUZZ_TONGUE_ROUNDOFF))
+    system = ba.beam_system(model)
+    sizes = []
+    real = ba.periodic_boundaries
+
+    def counted(*args, **kwargs):
+        sizes.append(kwargs["n_harmonics"])
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(ba, "periodic_boundaries", counted)
+    w1 = system.omega_1
+    (band,) = ba.pitch_tongue_bands(system, model.gamma, omega_min=model.Omega[0],
+                                    omega_max=0.25 * w1, beam_ratio=model.beam_damping_ratio,
+                                    pitch_ratio=model.pitch_damping_ratio)
+    assert max(sizes) <= 8
+    wp = float(ba.loaded_frequencies(system)[ba.pitch_mode(system)].real) * w1
+    (ref,) = pitch.pitch_bands(wp, model.gamma, omega_min=model.Omega[0],
+                               omega_max=0.25 * w1)
+    assert band.order == ref.order == 1
+    assert band.Omega_hi == pytest.approx(ref.Omega_hi, rel=1e-4)
+    C = ba.modal_damping(system, beam_ratio=model.beam_damping_ratio,
+                         pitch_ratio=model.pitch_damping_ratio)
+    n = system.A0.shape[0]
+    growth = floquet.growth_rate(np.eye(n), C, system.A0, -0.01 * system.B,
+                                 np.array([band.Omega_center / w1]))
+    assert growth[0] > 0.0
+    assert band.critical_gamma < 0.01

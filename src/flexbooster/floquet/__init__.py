@@ -11,6 +11,7 @@ only.  Theory: ``docs/theory/floquet.md``.
 from .bounds import StabilityCertificate, stability_certificate
 from .critical_damping import CLOSED_GROWTH, critical_damping
 from .hill import (
+    REAL_ROOT_RTOL,
     HillModes,
     converged_periodic_boundaries,
     hill_exponents,
@@ -74,6 +75,7 @@ __all__ = ["MATHIEU_SCALE_MAX", "beta_from_discriminants", "characteristic_expon
            "instability_regions", "region_boundaries", "SearchWork", "search_work",
            "LinearPeriodicSystem", "StepLimitError", "MAX_STEPS", "PeriodMapOverflowError",
            "floquet_exponents", "floquet_multipliers", "growth_rate", "hill_exponents",
-           "HillModes", "hill_modes", "monodromy", "periodic_boundaries", "periodic_system",
+           "HillModes", "hill_modes", "monodromy", "periodic_boundaries", "REAL_ROOT_RTOL",
+           "periodic_system",
            "steady_frequencies", "step_counts", "StabilityCertificate", "stability_certificate",
            "CLOSED_GROWTH", "critical_damping"]

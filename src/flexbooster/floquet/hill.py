@@ -14,7 +14,11 @@ import scipy.linalg
 from .multipliers import LinearPeriodicSystem, as_omega, periodic_system
 
 __all__ = ["HillModes", "hill_exponents", "hill_modes", "periodic_boundaries",
-           "converged_periodic_boundaries"]
+           "converged_periodic_boundaries", "REAL_ROOT_RTOL"]
+
+#: A root of :func:`periodic_boundaries` is real when |Im| <= this x |Omega| (the eigensolver's
+#: round-off on well-conditioned roots).
+REAL_ROOT_RTOL = 1e-9
 
 
 def _system(M, C, A, B) -> LinearPeriodicSystem:
@@ -185,9 +189,10 @@ def hill_modes(M, C, A, B, Omega, *, n_harmonics: int = 8, chunk: int = 8,
 
 
 def periodic_boundaries(M, C, A, B, *, period: str = "2T", n_harmonics: int = 8,
-                        omega_max: float | None = None) -> np.ndarray:
+                        omega_max: float | None = None,
+                        imag_rtol: float = REAL_ROOT_RTOL) -> np.ndarray:
     """Omega at which a T- or 2T-periodic solution exists (simple-region boundaries): sorted real
-    roots (|Im| > 1e-9 |Omega| dropped) of the truncated problem.
+    roots (|Im| > ``imag_rtol`` |Omega| dropped) of the truncated problem.
 
     [A - (k Omega / 2)^2 M + i (k Omega / 2) C] c_k + (B / 2)(c_(k-2) + c_(k+2)) = 0: an
     eigenproblem in Omega^2 (undamped) or quadratic in Omega (Bolotin 1964, ch. 1 sec. 3-5).
@@ -202,9 +207,14 @@ def periodic_boundaries(M, C, A, B, *, period: str = "2T", n_harmonics: int = 8,
         K, |k| <= 2K, 1..100; the boundaries of order j need K well above j / 2.
     omega_max : float, optional
         Only roots 0 < Omega <= omega_max.
+    imag_rtol : float
+        A root is real when |Im| <= imag_rtol |Omega| (the eigensolver's round-off:
+        :data:`REAL_ROOT_RTOL`, more where the roots are ill-conditioned), in (0, 1).
     """
     system = _system(M, C, A, B)
     K = _harmonics("n_harmonics", n_harmonics, 1, 100)
+    if not (np.isfinite(imag_rtol) and 0.0 < imag_rtol < 1.0):
+        raise ValueError(f"imag_rtol = {imag_rtol!r}: must be in (0, 1)")
     if period == "2T":
         k = np.arange(-(2 * K - 1), 2 * K, 2)
     elif period == "T":
@@ -220,7 +230,7 @@ def periodic_boundaries(M, C, A, B, *, period: str = "2T", n_harmonics: int = 8,
     if not system.damped:
         ev = scipy.linalg.eigvals(P0, -P2)  # Omega^2; k = 0 blocks give infinite values
         ev = ev[np.isfinite(ev)]
-        ok = (np.abs(ev.imag) <= 1e-9 * np.abs(ev)) & (ev.real > 0.0)
+        ok = (np.abs(ev.imag) <= imag_rtol * np.abs(ev)) & (ev.real > 0.0)
         roots = np.sqrt(ev.real[ok])
     else:
         m = n * h
@@ -229,7 +239,7 @@ def periodic_boundaries(M, C, A, B, *, period: str = "2T", n_harmonics: int = 8,
         Rhs = np.block([[Id, Z], [Z, P2]])
         ev = scipy.linalg.eigvals(Lhs, Rhs)
         ev = ev[np.isfinite(ev)]
-        ok = (np.abs(ev.imag) <= 1e-9 * np.abs(ev)) & (ev.real > 0.0)
+        ok = (np.abs(ev.imag) <= imag_rtol * np.abs(ev)) & (ev.real > 0.0)
         roots = ev.real[ok]
     roots = np.sort(roots)
     if omega_max is not None:

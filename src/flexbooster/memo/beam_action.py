@@ -21,6 +21,7 @@ import numpy as np
 from ..bands import CRITICAL_DAMPING_COUNT, NEGLIGIBLE_GROWTH, Band, BandMode, SearchGap, gaps_text
 from ..checks import count, nonnegative, positive
 from ..floquet import (
+    REAL_ROOT_RTOL,
     LinearPeriodicSystem,
     PeriodMapOverflowError,
     critical_amplitude,
@@ -769,6 +770,11 @@ TONGUE_MAX_HARMONICS = 24
 TONGUE_RTOL_FLOOR = 1e-4
 #: Below this Omega_bar the harmonic balance meets that round-off floor.
 TONGUE_FLOOR_OMEGA_BAR = 3e-3
+#: The pitch roots' round-off wander, relative: eps (omega_top / Omega)^2 with omega_top the
+#: truncation's highest steady frequency (measured: 5e-9 against 6.9e-9 at Omega_bar = 8.7e-3,
+#: omega_top = 48.6, N = 10; 1e-10..1.6e-9 against 1.2e-9 for the memo case). Two successive
+#: K agree to the larger of rtol and this factor times it: closer agreement is chance.
+TONGUE_ROUNDOFF_FACTOR = 10.0
 #: Relative tolerance of the critical gamma of a damped pitch tongue (bisection).
 TONGUE_GAMMA_RTOL = 1e-6
 #: Hill harmonics of the growth rate inside the pitch tongues r <= 4
@@ -863,8 +869,10 @@ def _tongue_edges(A, C, B, *, period: str, centre: float, window: tuple[float, f
                   rtol: float, harmonics=None, guess: tuple[float, float] | None = None
                   ) -> tuple[tuple[float, float] | None, int]:
     """Edges of the tongue about ``centre`` from the T / 2T-periodic boundaries (Bolotin 1964,
-    sec. 4-5), harmonics K = 4, 8, .. raised until two successive K agree to rtol * centre (or
-    :data:`TONGUE_RTOL_FLOOR` where round-off stops that).
+    sec. 4-5), harmonics K = 4, 8, .. raised until two successive K agree to rtol * centre
+    (above :data:`TONGUE_FLOOR_OMEGA_BAR`, to the roots' round-off wander where that is larger:
+    :data:`TONGUE_ROUNDOFF_FACTOR`; below it, to :data:`TONGUE_RTOL_FLOOR` where round-off
+    stops that).
 
     Root pairs closer than rtol * centre are dropped; the edges are the nearest remaining roots
     about the centre (or ``guess``), tracked from K to K. ``harmonics`` = (K,): that truncation
@@ -872,12 +880,18 @@ def _tongue_edges(A, C, B, *, period: str, centre: float, window: tuple[float, f
     :class:`TongueEdgesError` when they do not converge with :data:`TONGUE_MAX_HARMONICS`.
     """
     n = A.shape[0]
+    # two K agree, and a root is real, to rtol or, above the floor's Omega_bar, to the roots'
+    # round-off wander where that is larger (below it the floor's closest agreement decides)
+    agree = rtol
+    if centre >= TONGUE_FLOOR_OMEGA_BAR:
+        top = float(np.max(np.abs(np.linalg.eigvals(A))))
+        agree = max(rtol, TONGUE_ROUNDOFF_FACTOR * np.finfo(float).eps * top / centre**2)
     prev = None
     best = (np.inf, None, 0)  # the closest agreement of two successive K (round-off floor)
     Ks = tuple(range(4, TONGUE_MAX_HARMONICS + 1, 4)) if harmonics is None else harmonics
     for K in Ks:
         r = periodic_boundaries(np.eye(n), C, A, B, period=period, n_harmonics=K,
-                                omega_max=window[1])
+                                omega_max=window[1], imag_rtol=max(agree, REAL_ROOT_RTOL))
         r = r[r >= window[0]]
         close = np.diff(r) <= rtol * centre
         drop = np.zeros(r.size, dtype=bool)
@@ -896,7 +910,7 @@ def _tongue_edges(A, C, B, *, period: str, centre: float, window: tuple[float, f
         if len(Ks) == 1:
             return cur, K
         if cur is not None and prev is not None and max(abs(cur[0] - prev[0]),
-                                                        abs(cur[1] - prev[1])) <= rtol * centre:
+                                                        abs(cur[1] - prev[1])) <= agree * centre:
             return (cur if cur[1] - cur[0] > rtol * centre else None), K - 4
         if cur is None and prev is None and K >= 8:
             return None, K  # no tongue at two successive K: below round-off or damped out
