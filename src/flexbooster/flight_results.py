@@ -14,7 +14,7 @@ import numpy as np
 from .danger import event_status
 from .flight import EVENT_COLUMNS, MODE_COLUMNS, FlightEvent, TrackedModes, mode_rows
 
-__all__ = ["FlightHarmonic", "FlightResults", "EVENT_COLUMNS", "MODE_COLUMNS"]
+__all__ = ["FlightHarmonic", "FlightResults", "EVENT_COLUMNS", "MODE_COLUMNS", "verdict_order"]
 
 
 @dataclass(frozen=True)
@@ -59,6 +59,19 @@ class FlightHarmonic:
                 "min_mac": self.min_mac}
 
 
+def verdict_order(events) -> tuple[FlightEvent, ...]:
+    """The events in the verdict's order: those that count (:func:`flexbooster.danger.event_status`
+    not negligible), then those of negligible growth, each in the given (worst-first) order; the
+    order of flight-events.csv, the report's list and the Campbell diagram's numbers.
+
+    Parameters
+    ----------
+    events : sequence of FlightEvent
+        The events, the worst first (:func:`flexbooster.flight.worst_first`).
+    """
+    return tuple(sorted(events, key=lambda e: event_status(e) == "negligible"))  # stable
+
+
 @dataclass(frozen=True)
 class FlightResults:
     """The vehicle through its flight.
@@ -84,7 +97,7 @@ class FlightResults:
     omega_range : tuple of float
         The Omega range (rad/s) of the regions: the union of the oscillation bands.
     events : tuple of FlightEvent
-        The regions and resonances the oscillation band meets, the worst first.
+        The regions and resonances the oscillation band meets, in :func:`verdict_order`.
     gaps : tuple of SearchGap
         What the searches' limits left out, at any frozen time.
     notes : tuple of str
@@ -131,7 +144,7 @@ class FlightResults:
             k=h.k, types=h.types)]
 
     def event_rows(self) -> list[dict[str, Any]]:
-        """The rows of flight-events.csv (:data:`EVENT_COLUMNS`), the worst first."""
+        """The rows of flight-events.csv (:data:`EVENT_COLUMNS`), in :func:`verdict_order`."""
         return [e.to_dict() for e in self.events]
 
     def to_dict(self) -> dict[str, Any]:

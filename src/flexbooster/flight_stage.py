@@ -45,7 +45,7 @@ from .flight import (
     track_modes,
     worst_first,
 )
-from .flight_results import FlightHarmonic, FlightResults
+from .flight_results import FlightHarmonic, FlightResults, verdict_order
 from .model import flight_times, forced_stations, timeline_from_case, vehicle_from_case
 from .shell_of_revolution import BucklingError
 from .shell_of_revolution.mass_properties import MassProperties, mass_properties
@@ -109,9 +109,12 @@ class FrozenTime:
     vectors : tuple of numpy.ndarray
         Per k = 0..k_max, the modes' DOF vectors (n_dof, n_modes) on the shell's DOFs.
     structural_mass : tuple of numpy.ndarray or None
-        Per k, the structure's mass matrix (shell and lumped masses, kg), the weight of the
+        Per k, the structure's mass matrix (shell and lumped masses, kg), a weight of the
         MAC: the same at every fill, so held by the frozen time of index 0 only (None at the
         others: a long flight sends it once).
+    liquid_mass : tuple of scipy.sparse.csr_matrix
+        Per k, the tanks' added mass at this time's fills (kg; nonzero on the wetted walls'
+        DOFs only), the other weight of the MAC.
     """
 
     index: int
@@ -122,6 +125,7 @@ class FrozenTime:
     axial: ForcedAxial
     vectors: tuple[np.ndarray, ...]
     structural_mass: tuple[np.ndarray, ...] | None
+    liquid_mass: tuple = ()
 
 
 @dataclass(frozen=True)
@@ -228,7 +232,8 @@ def _frozen_at(plan: _Plan, index: int) -> FrozenTime:
     ks = range(plan.k_max + 1)
     return FrozenTime(index=index, time=float(plan.times[index]), mass=mass, modes=modes,
                       regions=found, axial=axial, vectors=tuple(vectors[k][0] for k in ks),
-                      structural_mass=tuple(vectors[k][1] for k in ks) if index == 0 else None)
+                      structural_mass=tuple(vectors[k][1] for k in ks) if index == 0 else None,
+                      liquid_mass=tuple(vectors[k][2] for k in ks))
 
 
 def flight_stage(case: Case, *, frozen: Sequence[FrozenTime] | None = None
@@ -265,8 +270,9 @@ def flight_stage(case: Case, *, frozen: Sequence[FrozenTime] | None = None
 def assemble_flight(case: Case, frozen: Sequence[FrozenTime]
                     ) -> tuple[FlightResults, list[AnalysisWarning]]:
     """The flight of ``case`` from its frozen times: the modes tracked across times by the MAC
-    of their DOF vectors weighted by the structure's mass matrix (Allemang 2003; shell and
-    lumped masses, the same at every time; :func:`flexbooster.flight.track_modes`), the
+    of their DOF vectors weighted by the mean of the two times' mass matrices (Allemang 2003;
+    shell, lumped masses and the liquid's added mass, in which each time's modes are
+    orthonormal; :func:`flexbooster.flight.track_modes`), the
     regions followed by their tracked modes (:func:`flexbooster.flight.band_events`, rates by
     :func:`flexbooster.flight.band_rate`), the forced resonances at the stations
     (:func:`_forced_events`, in this process), the events worst first, the search gaps and
@@ -294,15 +300,18 @@ def _assemble(case: Case, plan: _Plan, frozen: Sequence[FrozenTime]
     lo, hi = plan.omega_range
     if len(frozen) != times.size or any(
             not isinstance(f, FrozenTime) or f.index != i or f.time != times[i]
-            for i, f in enumerate(frozen)) or frozen[0].structural_mass is None:
+            for i, f in enumerate(frozen)) or frozen[0].structural_mass is None or any(
+            len(f.liquid_mass) != k_max + 1 for f in frozen):
         raise ValueError(f"frozen = {len(frozen)} frozen times: must be frozen_time(case, i) "
                          f"for i = 0..{times.size - 1} of this case, in order")
-    weights = frozen[0].structural_mass  # the structure's mass: the same at every fill
+    structure = frozen[0].structural_mass  # the same at every fill
     macs: dict[int, list] = {k: [] for k in range(k_max + 1)}
-    # the MAC between neighbouring times, weighted by the structure's mass
+    # the MAC between neighbouring times, weighted by the mean of their eigenproblems' masses
+    # (structure and liquid), in which each time's modes are orthonormal
     for before, after in zip(frozen[:-1], frozen[1:], strict=True):
         for k in range(k_max + 1):
-            macs[k].append(mac_matrix(before.vectors[k], after.vectors[k], mass=weights[k]))
+            weight = structure[k] + (0.5 * (before.liquid_mass[k] + after.liquid_mass[k])).toarray()
+            macs[k].append(mac_matrix(before.vectors[k], after.vectors[k], mass=weight))
     masses = [f.mass for f in frozen]
     modes_per_time = [f.modes for f in frozen]
     found_per_time = [(f.regions, f.axial) for f in frozen]
@@ -332,7 +341,7 @@ def _assemble(case: Case, plan: _Plan, frozen: Sequence[FrozenTime]
         fill=np.array([p.fill for p in points]).reshape(len(points), len(base.tanks)),
         oscillation=osc, tank_names=tuple(t.name for t in base.tanks), mass=tuple(masses),
         harmonics=harmonics, regions=tuple(regions_per_time), omega_range=(lo, hi),
-        events=tuple(worst_first(events)), gaps=tuple(gaps.values()), notes=tuple(notes))
+        events=verdict_order(worst_first(events)), gaps=tuple(gaps.values()), notes=tuple(notes))
     return result, warnings
 
 
@@ -367,8 +376,7 @@ def _vehicle_at(base, fill: tuple):
 def _track(times: np.ndarray, modes_per_time: list, k_max: int,
            macs: dict) -> tuple[FlightHarmonic, ...]:
     """Per k, the modes tracked across the frozen times by ``macs[k]``, the mass-weighted MAC
-    between neighbouring times (common DOFs and structural mass: the mesh does not depend on
-    the fills)."""
+    between neighbouring times (common DOFs: the mesh does not depend on the fills)."""
     out = []
     for k in range(k_max + 1):
         masks = [m.select(k) for m in modes_per_time]

@@ -21,8 +21,9 @@ FLIGHT_FIGURES = {
     "flight-campbell": (
         "The flight's Campbell diagram: the frequencies of the tracked modes of every harmonic "
         "k against flight time, the thrust oscillation band shaded grey, and the events (bars "
-        "along the top, numbered worst first: black a parametric region met by the band, red "
-        "a k = 0 resonance crossed)."),
+        "along the top, numbered as in the list: those that count, the worst first, then those "
+        "of negligible growth; black a parametric region met by the band, red a k = 0 "
+        "resonance crossed)."),
 }
 
 

@@ -933,13 +933,14 @@ def mode_vectors(
     vehicle: Vehicle, k: int, n_modes: int, F0: float, *,
     supported_forward_end: bool | None = None, elements_per_segment: int | tuple | None = None,
     order: int = DEFAULT_ORDER,
-) -> tuple[np.ndarray, np.ndarray]:
-    """(X, M_s): the lowest ``n_modes`` elastic modes of harmonic k (loaded by F0; unloaded at
-    F0 = 0) as columns on the reduced DOFs, in the order of the rows of k of
-    :func:`vehicle_modes` with ``n_modes`` (orthonormal in the mass with the tanks' liquid),
-    and the structure's mass matrix M_s (shell and lumped masses, without the liquid: the same
-    for every fill; kg), the weight of a mass-weighted modal assurance criterion (Allemang
-    2003). Within :func:`shared_harmonics`, the eigenproblem that :func:`vehicle_modes` solved.
+) -> tuple[np.ndarray, np.ndarray, sp.csr_matrix]:
+    """(X, M_s, M_l): the lowest ``n_modes`` elastic modes of harmonic k (loaded by F0;
+    unloaded at F0 = 0) as columns on the reduced DOFs, in the order of the rows of k of
+    :func:`vehicle_modes` with ``n_modes`` (orthonormal in M_s + M_l), the structure's mass
+    matrix M_s (shell and lumped masses: the same for every fill; kg) and the tanks' liquid
+    M_l (its added mass, sparse: nonzero on the wetted walls' DOFs only; kg), the weights of
+    a mass-weighted modal assurance criterion (Allemang 2003). Within
+    :func:`shared_harmonics`, the eigenproblem that :func:`vehicle_modes` solved.
 
     Parameters
     ----------
@@ -954,7 +955,8 @@ def mode_vectors(
     mesh = _mesh(vehicle, elements_per_segment, order)
     loaded = F0 != 0.0
     h = _harmonic(vehicle, mesh, k, F0=F0, supported=supported_forward_end, geometric=loaded)
-    return _solve(h, loaded=loaded, n_modes=n_modes, w2_max=None)[1], h.structural_mass
+    X = _solve(h, loaded=loaded, n_modes=n_modes, w2_max=None)[1]
+    return X, h.structural_mass, sp.csr_matrix(h.M - h.structural_mass)
 
 
 def buckling_load(

@@ -54,6 +54,7 @@ def flight_campbell(flight: FlightResults, ax: Axes | None = None) -> Figure:
     ax.set_xlabel("flight time (s)")
     ax.set_ylabel("frequency (Hz)")
     ax.set_title("Flight Campbell diagram: modes per k, oscillation band (grey), events\n"
-                 "(bars: black regions, red resonances, numbered worst first)", fontsize=9)
+                 "(bars: black regions, red resonances, numbered as listed: the worst first)",
+                 fontsize=9)
     ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     return fig
