@@ -87,14 +87,16 @@ def test_danger_map_one_quantity_per_panel(memo_results):
     assert regions and stems
     fig = danger_map(danger)
     render_figure(fig)
-    assert [k for k, _ in danger_quantities(danger)] == ["growth", "response"]
-    top, bottom = fig.axes
+    assert [k for k, _ in danger_quantities(danger)] == ["growth", "response", "acceleration"]
+    top, bottom, responses = fig.axes  # the vehicle's forced responses in a third panel
     assert not top.get_position().overlaps(bottom.get_position())
+    assert not bottom.get_position().overlaps(responses.get_position())
     assert top.get_ylabel() == "growth rate (1/s)"
     assert bottom.get_ylabel() == "resonance: damped response (mm)"
     assert top.get_yscale() == bottom.get_yscale() == "log"
-    assert top.get_xlim() == bottom.get_xlim()  # one frequency axis
-    assert bottom.get_xlabel() == "thrust frequency Omega (Hz)" and top.get_xlabel() == ""
+    assert top.get_xlim() == bottom.get_xlim() == responses.get_xlim()  # one frequency axis
+    assert responses.get_xlabel() == "thrust frequency Omega (Hz)"
+    assert top.get_xlabel() == bottom.get_xlabel() == ""
     # the bars are the regions: each bar's top is its band's growth rate (the stored value,
     # exact), the negligible growth dotted in the same panel
     bars = {p.get_gid(): p for p in top.patches if isinstance(p, Rectangle) and p.get_gid()}
@@ -118,10 +120,12 @@ def test_danger_map_one_quantity_per_panel(memo_results):
                 expected_mm, rel=1e-12)
             x = stem[f"danger-band-{n + 1}"].get_xdata()[0]
             assert b.hz[0] * (1 - 1e-12) <= x <= b.hz[1] * (1 + 1e-12)  # in Hz
-    # the five most dangerous numbered, in the panel of their quantity
+    # the five most dangerous numbered with their rank in the list (danger.ranking: bands
+    # and responses in one order), in the panel of their quantity
     numbers = {t.get_text(): ax for ax in fig.axes for t in ax.texts}
-    for n in range(5):
-        expected = top if danger.bands[n].growth_rate is not None else bottom
+    for n, item in enumerate(danger.ranking[:5]):
+        expected = (responses if not isinstance(item, RankedBand)
+                    else top if item.growth_rate is not None else bottom)
         assert numbers[str(n + 1)] is expected
 
 
@@ -156,6 +160,43 @@ def test_danger_map_crowded_numbers_are_stacked():
             box = t.get_window_extent(renderer)
             assert frame.y0 <= box.y0 and box.y1 <= frame.y1 + 1.0, t.get_text()
     assert sorted(t.get_text() for ax in fig.axes for t in ax.texts) == list("12345")
+
+
+def test_danger_map_draws_the_vehicle_responses_numbered_as_listed():
+    # the default case's danger list holds only forced responses of the vehicle (no unstable
+    # band): drawn as stems at their Omega (Hz) up to their stored acceleration (g, exact), in
+    # a panel of their own, each numbered with its rank in danger.ranking (the list's "#"), a
+    # region ranked among them numbered likewise; no text overprinted
+    from flexbooster.danger import ResponsePeak, danger_summary
+    from flexbooster.present.plotting.danger import danger_map, danger_quantities
+
+    def peak(hz: float, g: float) -> ResponsePeak:
+        return ResponsePeak(source="forced response", k=0, Omega=TWO_PI * hz, acceleration_g=g,
+                            station="aft-edge", station_m=0.0, modes="k = 0",
+                            in_operating_range=True)
+
+    region = _band(10.5, 10.7, growth=2e-2).band
+    danger = danger_summary(operating_range=(TWO_PI * 8.0, TWO_PI * 16.0),
+                            bands={"beam_action": [region]},
+                            responses=[peak(9.82, 0.918), peak(12.61, 0.633)])
+    assert [k for k, _ in danger_quantities(danger)] == ["growth", "acceleration"]
+    fig = danger_map(danger)
+    render_figure(fig)
+    assert _overprinted(fig) == []
+    bottom = fig.axes[-1]
+    assert bottom.get_ylabel() == "forced response:\nacceleration (g)"
+    stems = {ln.get_gid(): ln for ln in bottom.get_lines() if ln.get_gid()}
+    for i, r in enumerate(danger.responses):
+        line = stems[f"danger-response-{i + 1}"]
+        assert line.get_xdata()[0] == pytest.approx(r.Omega / TWO_PI, rel=1e-12)
+        assert line.get_ydata()[1] == pytest.approx(r.acceleration_g, rel=1e-12)
+    numbers = {t.get_text(): (ax, t.xy) for ax in fig.axes for t in ax.texts}
+    for n, item in enumerate(danger.ranking):
+        ax, (x, y) = numbers[str(n + 1)]
+        if isinstance(item, ResponsePeak):
+            assert ax is bottom and (x, y) == pytest.approx((item.hz, item.acceleration_g))
+        else:
+            assert ax is fig.axes[0] and y == pytest.approx(item.growth_rate)
 
 
 def test_danger_map_without_bands_says_so():

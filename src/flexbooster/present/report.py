@@ -118,8 +118,9 @@ FIGURES: dict[str, tuple[str, str]] = {
         "as bars up to their largest growth rate (1/s, logarithmic; coloured by mechanism; "
         "dotted: the growth below which a band is negligible; bands narrower than 1.2 % of a "
         "decade drawn that wide), forced resonances as stems up to their damped steady "
-        "response (mm; undamped: their severity); the five most dangerous numbered; grey: "
-        "outside the operating range. Hover a band for its values.",
+        "response (mm; undamped: their severity), the vehicle's forced responses as stems up "
+        "to their acceleration (g); the five most dangerous numbered as in the list above; "
+        "grey: outside the operating range. Hover a band or stem for its values.",
     ),
     "beam-modes": (
         "beam-modes",

@@ -4,10 +4,12 @@ One panel per quantity, on one logarithmic axis of the thrust frequency (Hz): th
 instability regions as bars up to their growth rate (1/s, log), coloured by mechanism, with
 the growth below which a band is negligible dotted; the forced resonances as stems up to their
 damped steady amplitude (mm, log; their undamped severity in m/s without damping); the
+vehicle's bounded forced responses as stems up to their acceleration (g, log); the
 operating range of the thrust frequency is the white field between grey margins.  The five
-most dangerous bands are numbered, their numbers stacked where they would overprint.  Each
-band and stem carries a group id (``danger-band-N``); :func:`add_svg_titles` puts an SVG
-``<title>`` (a tooltip in any browser, no script) in each group of the saved SVG.
+most dangerous items are numbered with their rank in the list (``danger.ranking``), the
+numbers stacked where they would overprint.  Each band and stem carries a group id
+(``danger-band-N``, ``danger-response-N``); :func:`add_svg_titles` puts an SVG ``<title>``
+(a tooltip in any browser, no script) in each group of the saved SVG.
 """
 
 from __future__ import annotations
@@ -37,7 +39,8 @@ RANKS_NUMBERED = 5
 #: Smallest drawn width of a band, as a fraction of a decade of the logarithmic Hz axis.
 _MIN_DECADES = 0.012
 #: Colour of each mechanism's regions.
-_COLOURS = {"pitch": "C0", "beam_action": "C3", "vehicle": "C1", "resonance": "C2"}
+_COLOURS = {"pitch": "C0", "beam_action": "C3", "vehicle": "C1", "resonance": "C2",
+            "response": "C4"}
 #: A rank number's box (points): numbers closer than this in x and y are stacked.
 _NUMBER_W, _NUMBER_H = 12.0, 10.0
 #: Headroom above the largest value (decades): this fraction of the panel's span, at least
@@ -69,7 +72,8 @@ def band_tooltip(rank: int, band: RankedBand) -> str:
 def danger_quantities(danger: DangerSummary) -> tuple[tuple[str, str], ...]:
     """The panels of the danger map, top to bottom, as (key, y-axis label): ``"growth"`` when a
     band has a growth rate, ``"response"`` (damped steady amplitude, mm) or ``"severity"``
-    (undamped, m/s) when a band is a forced resonance; one ``"none"`` panel without bands.
+    (undamped, m/s) when a band is a forced resonance, ``"acceleration"`` (g) when the vehicle
+    has bounded forced responses (``danger.responses``); one ``"none"`` panel without any.
 
     Parameters
     ----------
@@ -85,6 +89,8 @@ def danger_quantities(danger: DangerSummary) -> tuple[tuple[str, str], ...]:
         out.append(("response", "resonance: damped response (mm)"))
     elif stems:
         out.append(("severity", "resonance: undamped severity (m/s)"))
+    if danger.responses:
+        out.append(("acceleration", "forced response:\nacceleration (g)"))
     return tuple(out) or (("none", ""),)
 
 
@@ -131,17 +137,21 @@ def danger_map(danger: DangerSummary, ax: Axes | None = None) -> Figure:
     ax : matplotlib.axes.Axes, optional
         Its place is split into the panels; a new figure is made when None.
     """
-    bands = danger.bands
+    bands, responses = danger.bands, danger.responses
     quantities = danger_quantities(danger)
     fig, axes = panel_axes(ax, len(quantities), (9.0, 1.2 + 2.6 * len(quantities)))
     to_hz = 1.0 / (2.0 * math.pi)
     op_lo, op_hi = (v * to_hz for v in danger.operating_range)
-    lo_all = min([op_lo] + [b.hz[0] for b in bands if b.hz[0] > 0])
-    hi_all = max([op_hi] + [b.hz[1] for b in bands])
+    lo_all = min([op_lo] + [b.hz[0] for b in bands if b.hz[0] > 0]
+                 + [r.hz for r in responses if r.hz > 0])
+    hi_all = max([op_hi] + [b.hz[1] for b in bands] + [r.hz for r in responses])
     x_lo, x_hi = lo_all / 1.15, hi_all * 1.15
     titles: dict[str, str] = {}
     factor = 10.0 ** _MIN_DECADES
-    numbers: list[tuple[Axes, int, RankedBand, float]] = []
+    # the numbers are the ranks of the list (bands and responses in one ranking)
+    listed = danger.ranking or bands
+    rank = {id(x): n for n, x in enumerate(listed)}
+    numbers: list[tuple[Axes, int, float, float]] = []
     for panel, (key, label) in zip(axes, quantities, strict=True):
         panel.set_xscale("log")
         panel.set_xlim(x_lo, x_hi)
@@ -154,6 +164,9 @@ def danger_map(danger: DangerSummary, ax: Axes | None = None) -> Figure:
             panel.set_yticks([])
             panel.text(0.5, 0.5, "no unstable or resonant band in the mechanisms computed",
                        transform=panel.transAxes, ha="center", va="center")
+            continue
+        if key == "acceleration":
+            _responses(panel, label, responses, rank, titles, numbers)
             continue
         mine = [(n, b) for n, b in enumerate(bands)
                 if (b.growth_rate is not None) == (key == "growth")]
@@ -183,8 +196,8 @@ def danger_map(danger: DangerSummary, ax: Axes | None = None) -> Figure:
                 panel.add_line(Line2D([x, x], [y_lo, v], color=colour, lw=1.2,
                                       solid_capstyle="butt", marker="o", ms=4, markevery=[1],
                                       gid=gid))
-            if n < RANKS_NUMBERED:
-                numbers.append((panel, n, b, v))
+            if rank.get(id(b), RANKS_NUMBERED) < RANKS_NUMBERED:
+                numbers.append((panel, rank[id(b)], x, v))
         if shade:  # faintly over the full height, in one artist under the bars
             panel.add_collection(PolyCollection(
                 [[(lo, 0.0), (lo, 1.0), (hi, 1.0), (hi, 0.0)] for lo, hi, _ in shade],
@@ -217,9 +230,39 @@ def danger_map(danger: DangerSummary, ax: Axes | None = None) -> Figure:
     return fig
 
 
-def _number(fig: Figure, numbers: list[tuple[Axes, int, RankedBand, float]]) -> None:
-    """Write the rank of each band of ``numbers`` above its bar or stem, stacked where two
-    would overprint."""
+def _responses(panel: Axes, label: str, responses, rank: dict, titles: dict[str, str],
+               numbers: list) -> None:
+    """The vehicle's bounded forced responses (:class:`flexbooster.danger.ResponsePeak`) as
+    stems up to their acceleration (g, log) at their Omega, numbered by ``rank``."""
+    values = [max(r.acceleration_g, 1e-300) for r in responses]
+    top, floor = max(values), min(values) / 3.0
+    span = math.log10(top / floor)
+    y_lo, y_hi = floor, top * 10.0 ** max(_HEADROOM * span, _HEADROOM_MIN)
+    panel.set_yscale("log")
+    for i, (r, v) in enumerate(zip(responses, values, strict=True)):
+        gid = f"danger-response-{i + 1}"
+        n = rank.get(id(r))
+        where = "in the operating range" if r.in_operating_range else \
+            "outside the operating range"
+        titles[gid] = (f"{'' if n is None else f'#{n + 1}: '}{r.source} of the vehicle: "
+                       f"{r.text}; Omega {r.Omega:.6g} rad/s; {r.modes}; {where}")
+        panel.add_line(Line2D([r.hz, r.hz], [y_lo, v], color=_COLOURS["response"], lw=1.2,
+                              solid_capstyle="butt", marker="o", ms=4, markevery=[1], gid=gid))
+        if n is not None and n < RANKS_NUMBERED:
+            numbers.append((panel, n, r.hz, v))
+    panel.set_ylim(y_lo, y_hi)
+    plain_log_ticks(panel.yaxis)  # g: plain numbers (0.2, 0.5, 1, 2)
+    panel.set_ylabel(label, fontsize=9)
+    handles = [Line2D([], [], color=_COLOURS["response"], marker="o", ms=4,
+                      label="vehicle forced response"),
+               Patch(color="0.88", label="outside the operating range")]
+    panel.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=7,
+                 borderaxespad=0.0)
+
+
+def _number(fig: Figure, numbers: list[tuple[Axes, int, float, float]]) -> None:
+    """Write each rank of ``numbers`` (panel, rank, x in Hz, value) above its bar or stem,
+    stacked where two would overprint."""
     by_panel: dict[int, list] = {}
     for item in numbers:
         by_panel.setdefault(id(item[0]), []).append(item)
@@ -230,7 +273,7 @@ def _number(fig: Figure, numbers: list[tuple[Axes, int, RankedBand, float]]) -> 
         size = (box.width * width, box.height * height)
         x0, x1 = (math.log10(v) for v in panel.get_xlim())
         y0, y1 = (math.log10(v) for v in panel.get_ylim())
-        at = [(math.log10(_centre(b)), math.log10(max(v, 1e-300))) for _, _, b, v in items]
+        at = [(math.log10(x), math.log10(max(v, 1e-300))) for _, _, x, v in items]
         for _ in range(4):  # raise the top until every number lies inside the panel
             points = [((x - x0) / (x1 - x0), (y - y0) / (y1 - y0)) for x, y in at]
             levels = _number_levels(points, size)
@@ -240,8 +283,8 @@ def _number(fig: Figure, numbers: list[tuple[Axes, int, RankedBand, float]]) -> 
                 break
             y1 = need
             panel.set_ylim(10.0 ** y0, 10.0 ** y1)
-        for (_, n, b, v), level in zip(items, levels, strict=True):
-            panel.annotate(str(n + 1), (_centre(b), v), xytext=(0, 2 + level * _NUMBER_H),
+        for (_, n, x, v), level in zip(items, levels, strict=True):
+            panel.annotate(str(n + 1), (x, v), xytext=(0, 2 + level * _NUMBER_H),
                            textcoords="offset points", ha="center", va="bottom", fontsize=8,
                            fontweight="bold")
 
