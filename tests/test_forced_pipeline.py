@@ -493,3 +493,31 @@ def test_terminal_table_fits_80_columns_without_wrapped_names(tmp_path):
     text = console.export_text()
     (head,) = [line for line in text.splitlines() if line.startswith(" station ")]
     assert "per 1 %" not in head and "peak (g)" in head
+
+
+def test_a_response_largest_at_the_end_of_the_range_is_marked(tmp_path, readme_loads):
+    """Source: the stored curves. Below README's vehicle's first elastic mode (Omega 5..50
+    rad/s, the axial acceleration nearly the rigid body's F / m) each station's k = 0
+    acceleration is largest at an end of the grid and larger there than at the grid's next
+    point: each such response of the ranking is marked ``at_range_end`` and said so in the
+    list's words ("larger beyond it"); in both this and the full range (5..2000 rad/s) a
+    response is marked exactly where its Omega is an end of the grid."""
+    text = re.sub(r'^omega_max = .*$', 'omega_max = "50 rad/s"',
+                  _case_text(extra=STATIONS), flags=re.M)
+    case, _ = _load(tmp_path, text)
+    low = analyze_forced_response(case)
+    _, full = readme_loads
+    marked = 0
+    for loads in (low, full):
+        r = loads.response
+        ends = (r.omega[0], r.omega[-1])
+        for p in loads.response_peaks():
+            assert p.at_range_end == (p.Omega in ends)
+            assert p.to_dict()["at_range_end"] is p.at_range_end
+            if p.at_range_end:
+                js = [s.name for s in r.stations].index(p.station)
+                a = np.abs(r.acceleration[list(r.harmonics).index(p.k), js])
+                assert (a[-1] > a[-2]) if p.Omega == ends[1] else (a[0] > a[1])
+                assert "larger beyond it" in p.text
+                marked += loads is low
+    assert marked >= 1

@@ -188,15 +188,18 @@ def test_figures_drawn_in_processes_are_the_figures_drawn_here(results):
 
 
 def test_danger_map_tooltips_and_axes(results, memo_svgs):
-    # one SVG <title> per band, no script, Omega in Hz on the x axis
+    # one SVG <title> per band and per forced response of the vehicle, no script, Omega in
+    # Hz on the x axis
     svg = memo_svgs["danger-map"]
     titles = re.findall(r"<title>([^<]*)</title>", svg)
-    # one tooltip per band (a resonance's stem and its head carry the same one)
-    assert len(set(titles)) == len(results.danger.bands)
+    # one tooltip per item (a stem and its head carry the same one), numbered as the list
+    danger = results.danger
+    assert len(set(titles)) == len(danger.bands) + len(danger.responses)
+    assert {int(t[1:t.index(":")]) for t in titles} == set(range(1, len(danger.ranking) + 1))
     # the top-ranked band's tooltip is there; a region's names its growth rate, a damped
-    # resonance's its steady response (issue 33)
+    # resonance's its steady response (issue 33), a forced response its acceleration in g
     assert any(t.startswith("#1: Omega ") for t in titles)
-    assert all("1/s" in t or " mm (severity " in t for t in titles)
+    assert all("1/s" in t or " mm (severity " in t or " g at " in t for t in titles)
     assert "<script" not in svg
     from flexbooster.present.plotting.danger import danger_map
 

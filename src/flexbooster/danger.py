@@ -283,6 +283,9 @@ class ResponsePeak:
         Omega lies in the case's operating range.
     also : tuple of str
         The same resonance found by another source (listed once, here).
+    at_range_end : bool
+        Omega is an end of the computed Omega range: the response is largest there, still
+        rising (larger beyond the range), not at a peak.
     """
 
     source: str
@@ -299,6 +302,7 @@ class ResponsePeak:
     load_station_m: float | None = None
     in_operating_range: bool = True
     also: tuple[str, ...] = ()
+    at_range_end: bool = False
 
     def __post_init__(self) -> None:
         for name in ("Omega", "acceleration_g", "station_m"):
@@ -319,6 +323,8 @@ class ResponsePeak:
         if self.load is not None:
             out += (f", {self.load_quantity} {self.load:.3g} {self.load_unit} at "
                     f"{self.load_station_m:.4g} m")
+        if self.at_range_end:
+            out += " (at the end of the Omega range: larger beyond it)"
         return out
 
     def to_dict(self) -> dict[str, Any]:
@@ -332,7 +338,8 @@ class ResponsePeak:
                 "displacement_m": opt(self.displacement_m), "modes": self.modes,
                 "load_quantity": self.load_quantity, "load_unit": self.load_unit,
                 "load": opt(self.load), "load_station_m": opt(self.load_station_m),
-                "in_operating_range": bool(self.in_operating_range), "also": list(self.also)}
+                "in_operating_range": bool(self.in_operating_range), "also": list(self.also),
+                "at_range_end": bool(self.at_range_end)}
 
 
 def axial_resonance_peaks(resonances: Sequence[Any], *, load: float,

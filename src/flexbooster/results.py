@@ -485,10 +485,12 @@ class ForcedLoads:
         """The forced response in the overall verdict's ranking: per forced harmonic, one
         :class:`~flexbooster.danger.ResponsePeak` per resonance (the stations whose peak
         accelerations lie within zeta Omega of each other are one resonance, shown at the
-        largest), with the largest internal load along the vehicle (axial force for k = 0,
-        bending moment for k = 1) whose peak lies within zeta Omega of it."""
+        largest; one at an end of the Omega range, still rising there, marked ``at_range_end``),
+        with the largest internal load along the vehicle (axial force for k = 0, bending moment
+        for k = 1) whose peak lies within zeta Omega of it."""
         r = self.response
         tol = max(float(r.damping_ratio), 1e-3)
+        ends = (float(r.omega.min()), float(r.omega.max())) if r.omega.size else ()
         taken: list[tuple[int, float]] = []
         out = []
         for p in self.ranked_peaks():  # the largest acceleration first
@@ -513,7 +515,8 @@ class ForcedLoads:
                 load_unit=None if load is None else load[1],
                 load=None if load is None else load[2],
                 load_station_m=None if load is None else load[3],
-                in_operating_range=p.in_operating_range))
+                in_operating_range=p.in_operating_range,
+                at_range_end=any(abs(p.Omega - e) <= 1e-12 * e for e in ends)))
         return tuple(out)
 
     def csv_columns(self) -> dict[str, list]:

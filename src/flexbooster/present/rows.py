@@ -390,10 +390,11 @@ def danger_rows(results: Results, limit: int = FIRST_SCREEN_BANDS,
             also = "".join(f"; also {a}" for a in b.also)
             load = "" if b.load is None else (f", {b.load_quantity} {b.load:.3g} {b.load_unit}"
                                                f" at {b.load_station_m:.4g} m")
+            end = "; at the end of the Omega range: larger beyond it" * b.at_range_end
             out.append((str(n + 1), f"{b.Omega:.6g}", f"{b.hz:.6g}", f"{b.acceleration_g:.3g} g",
                         "yes" if b.in_operating_range else "no",
                         f"{b.station} ({b.station_m:.4g} m), k = {b.k}",
-                        f"{b.source} of the vehicle{load}{also}"))
+                        f"{b.source} of the vehicle{load}{also}{end}"))
             continue
         lo_hz, hi_hz = b.hz
         if b.growth_rate is not None:

@@ -181,7 +181,7 @@ def danger_map(danger: DangerSummary, ax: Axes | None = None) -> Figure:
         shade = []
         for (n, b), v in zip(mine, values, strict=True):
             gid = f"danger-band-{n + 1}"
-            titles[gid] = band_tooltip(n + 1, b)
+            titles[gid] = band_tooltip(rank.get(id(b), n) + 1, b)
             colour = _COLOURS.get(b.mechanism, "C7")
             x = _centre(b)
             if key == "growth":
