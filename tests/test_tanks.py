@@ -175,3 +175,42 @@ def test_shared_harmonics_gives_the_numbers_of_separate_calls():
     for (o1, t1), (o2, t2) in zip(labels_shared, labels_alone, strict=True):
         np.testing.assert_array_equal(o1, o2)
         np.testing.assert_array_equal(t1, t2)
+
+
+@pytest.mark.slow
+def test_regions_below_the_slosh_frequency_are_warned_about():
+    """Independent value: Abramson's first lateral slosh frequency of a flat-bottomed cylinder
+    (NASA SP-106, ch. 2), omega^2 = (a xi_1 / R) tanh(xi_1 h / R), xi_1 the first zero of J_1'
+    and a = F0 / m. The two-stage liquid example, k = 1, Omega 0.3..0.9 Hz: its rigid-pitch
+    region (the pitch at 0.30 Hz, with the liquid's high-frequency added mass) lies below twice
+    the tanks' highest slosh frequency (the stage-1 oxidiser: R = 1.52 m, h = 0.96 x 8 m), so
+    one ``liquid-below-slosh`` warning names that frequency (1 %) and the pitch mode; with the
+    tanks full (no free surface, no slosh) there is none."""
+    import copy
+    import tomllib
+    from pathlib import Path
+
+    from flexbooster.analysis import SLOSH_VALIDITY_FACTOR, analyze
+    from flexbooster.case import load_case
+
+    data = tomllib.loads((Path(__file__).parents[1] / "examples"
+                          / "two-stage-liquid.toml").read_text())
+    data["vehicle"]["k_max"] = 1
+    data["thrust"].update(omega_min="0.3 Hz", omega_max="0.9 Hz", n_omega=20)
+    res = analyze(load_case(data), figures=False)
+    (w,) = [w for w in res.warnings if w.code == "liquid-below-slosh"]
+    assert w.field == "vehicle.tanks" and "\n" not in w.message
+    xi = float(jnp_zeros(1, 1)[0])
+    a = res.case.F0 / res.vehicle_mass.mass_kg
+    R, h = 1.52, 0.96 * 8.0
+    hz = math.sqrt(a * xi / R * math.tanh(xi * h / R)) / (2.0 * math.pi)
+    cited = float(w.message.split("first slosh frequency ")[1].split(" Hz")[0])
+    assert cited == pytest.approx(hz, rel=1e-2) and "tank stage-1 oxidiser" in w.message
+    pitch = [m for r in res.vehicle_regions.regions for m in r.modes
+             if m.type == "rigid-pitch"]
+    assert pitch and all(m.omega < SLOSH_VALIDITY_FACTOR * 2.0 * math.pi * hz for m in pitch)
+    full = copy.deepcopy(data)
+    for tank in full["vehicle"]["tanks"]:
+        tank["fill"] = 1.0
+    assert not [w for w in analyze(load_case(full), figures=False).warnings
+                if w.code == "liquid-below-slosh"]

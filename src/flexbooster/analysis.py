@@ -12,6 +12,7 @@ rigid-body pitch, modes and regions (``Results.not_applicable`` holds the reason
 from __future__ import annotations
 
 import dataclasses
+import math
 from collections.abc import Callable, Sequence
 
 import numpy as np
@@ -57,6 +58,8 @@ __all__ = [
     "analyze",
     "analyze_vehicle",
     "vehicle_warnings",
+    "slosh_warnings",
+    "SLOSH_VALIDITY_FACTOR",
     "analyze_vehicle_regions",
     "analyze_forced_response",
     "forced_settings",
@@ -328,7 +331,7 @@ def _analyze_segments(case: Case, step: Callable[[str], None], *, figures: bool,
         if regions:
             step(VEHICLE_REGIONS_STAGE)
             found, skipped = _vehicle_regions_stage(case, boundaries=figures)
-            extra += skipped
+            extra += skipped + slosh_warnings(survey, found)
         forced = None
         if regions:
             step(FORCED_STAGE)
@@ -560,6 +563,49 @@ def vehicle_warnings(survey: VehicleSurvey) -> list[AnalysisWarning]:
     if "flat plate" in survey.note:
         out.append(AnalysisWarning("vehicle-prestress", "vehicle.segments", survey.note))
     return out
+
+
+#: The liquid's added mass is the high-frequency limit (free surface p = 0: the slosh masses
+#: left out); a slosh oscillator of mass m_1 and frequency omega_s adds m_1 omega_s^2 /
+#: (omega_s^2 - omega^2) at omega, a third of m_1 at omega = 2 omega_s and more below. A region
+#: with a mode below this factor times a tank's first slosh frequency is warned about.
+SLOSH_VALIDITY_FACTOR = 2.0
+
+
+def slosh_warnings(survey: VehicleSurvey | None,
+                   found: VehicleRegions | None) -> list[AnalysisWarning]:
+    """One ``liquid-below-slosh`` warning when a parametric region has a mode below
+    :data:`SLOSH_VALIDITY_FACTOR` times the highest first slosh frequency of the partly filled
+    tanks (``survey.slosh``, under the thrust's acceleration): there the liquid's added mass,
+    the high-frequency limit of a free surface at p = 0 (docs/theory/liquid.md), leaves out
+    slosh masses that move with the tank, and that mode's frequency, so the region's place, is
+    approximate. None without slosh modes or regions.
+
+    Parameters
+    ----------
+    survey : VehicleSurvey or None
+        From :func:`analyze_vehicle`.
+    found : VehicleRegions or None
+        From :func:`analyze_vehicle_regions`.
+    """
+    slosh = () if survey is None else survey.slosh
+    if not slosh or found is None:
+        return []
+    top = max(slosh, key=lambda m: m.omega)
+    limit = SLOSH_VALIDITY_FACTOR * top.omega
+    low = [(m.omega, m.label, r.k) for r in found.regions for m in r.modes
+           if m.omega is not None and 0.0 < m.omega < limit]
+    if not low:
+        return []
+    n = sum(1 for r in found.regions
+            if any(m.omega is not None and 0.0 < m.omega < limit for m in r.modes))
+    w, label, k = min(low)
+    return [AnalysisWarning("liquid-below-slosh", "vehicle.tanks", (
+        f"{n} parametric region(s) hold a mode below {SLOSH_VALIDITY_FACTOR:g} x the first "
+        f"slosh frequency {top.hz:.4g} Hz (tank {top.tank}), the lowest k = {k} {label} at "
+        f"{w / (2.0 * math.pi):.4g} Hz: the liquid's added mass is its high-frequency limit "
+        "(free surface p = 0, the slosh masses left out), so those modes' frequencies and the "
+        "regions' places are approximate there"))]
 
 
 def _vehicle_regions_stage(case: Case, *, boundaries: bool
