@@ -348,15 +348,16 @@ def resonance_events(times: Any, omega: Any, oscillation: Any, *, zeta: float,
     if len(places) != t.size:
         raise ValueError(f"station: {len(places)} names, need {t.size} like times (or one)")
     pieces = meeting_intervals(t, om * (1.0 - zeta), om * (1.0 + zeta), osc[:, 0], osc[:, 1])
+
+    def nearest(i: int, when: float) -> int:  # of segment i's frozen times, the nearer
+        return i + int(when - t[i] > t[i + 1] - when)
+
     events = []
     for run in _merge(pieces):
         idx = sorted({i for _, _, i in run} | {i + 1 for _, _, i in run})
         # a band: the largest steady peak inside the run, the peak linear in time between the
         # frozen times as the frequencies are (a linear function's largest value on a piece
         # is at one of its ends)
-        def nearest(i: int, when: float) -> int:  # the frozen time nearest to ``when``
-            return i + int(when - t[i] > t[i + 1] - when)
-
         g, at = max((float(np.interp(end, t[i:i + 2], peak[i:i + 2])), nearest(i, end))
                     for ta, tb, i in run for end in (ta, tb))
         if np.all(osc[idx, 0] == osc[idx, 1]):
