@@ -13,6 +13,7 @@ import copy
 import csv
 import dataclasses
 import json
+import math
 import tomllib
 
 import numpy as np
@@ -409,3 +410,35 @@ def test_tracking_with_the_liquid_follows_the_veering_pair_of_the_default_case()
     weight = frozen_time(case, 0).structural_mass[0] + frozen.liquid_mass[0].toarray()
     mac = mac_matrix(frozen.vectors[0], frozen.vectors[0], mass=weight)
     np.testing.assert_allclose(mac, np.eye(mac.shape[0]), atol=1e-10)
+
+
+@pytest.mark.slow
+def test_flight_regions_below_the_slosh_frequency_are_warned_about():
+    """Independent value: Abramson's first lateral slosh frequency of a flat-bottomed
+    cylinder (NASA SP-106, ch. 2), omega^2 = (a xi_1 / R) tanh(xi_1 h / R), a = F0(t) / m(t).
+    The default flight, k = 1: from 93.6 s a region holds the rigid pitch (0.33 Hz, the
+    liquid's high-frequency added mass) below twice the slosh frequency: one
+    ``liquid-below-slosh`` warning names the first such frozen time, and the slosh it cites
+    is the stage-1 oxidiser's there (R = 1.52 m, h = its fill x 8 m), to 1 %."""
+    from scipy.special import jnp_zeros
+
+    from flexbooster.dynamics import SLOSH_VALIDITY_FACTOR
+
+    data = tomllib.loads(default_case_text())
+    data["vehicle"]["k_max"] = 1
+    case = load_case(data)
+    fl, warnings = flight_stage(case)
+    (w,) = [w for w in warnings if w.code == "liquid-below-slosh"]
+    t = float(w.message.split("t = ")[1].split(" s")[0])
+    i = int(np.argmin(abs(fl.times - t)))
+    assert fl.times[i] == pytest.approx(t, rel=1e-5)
+    xi = float(jnp_zeros(1, 1)[0])
+    a = fl.F0[i] / fl.mass[i].mass_kg
+    h = fl.fill[i, list(fl.tank_names).index("stage-1 oxidiser")] * 8.0
+    hz = math.sqrt(a * xi / 1.52 * math.tanh(xi * h / 1.52)) / (2.0 * math.pi)
+    cited = float(w.message.split("stage-1 oxidiser at ")[1].split(" Hz")[0])
+    assert cited == pytest.approx(hz, rel=1e-2)
+    pitch = [m.omega for r in fl.regions[i] for m in r.modes if m.type == "rigid-pitch"]
+    assert pitch and min(pitch) < SLOSH_VALIDITY_FACTOR * 2.0 * math.pi * hz
+    assert all(not [m for r in fl.regions[j] for m in r.modes if m.type == "rigid-pitch"]
+               for j in range(i))  # the first such time

@@ -190,8 +190,9 @@ def test_regions_below_the_slosh_frequency_are_warned_about():
     import tomllib
     from pathlib import Path
 
-    from flexbooster.analysis import SLOSH_VALIDITY_FACTOR, analyze
+    from flexbooster.analysis import analyze
     from flexbooster.case import load_case
+    from flexbooster.dynamics import SLOSH_VALIDITY_FACTOR
 
     data = tomllib.loads((Path(__file__).parents[1] / "examples"
                           / "two-stage-liquid.toml").read_text())

@@ -29,10 +29,12 @@ from .danger import (
     merge_responses,
 )
 from .dynamics import (
+    SLOSH_VALIDITY_FACTOR,
     IllConditionedError,
     ThrustSpectrum,
     UndampedResonanceError,
     VehicleRegions,
+    below_slosh,
     forced_response,
     region_critical_damping,
     region_curves,
@@ -59,7 +61,6 @@ __all__ = [
     "analyze_vehicle",
     "vehicle_warnings",
     "slosh_warnings",
-    "SLOSH_VALIDITY_FACTOR",
     "analyze_vehicle_regions",
     "analyze_forced_response",
     "forced_settings",
@@ -565,21 +566,14 @@ def vehicle_warnings(survey: VehicleSurvey) -> list[AnalysisWarning]:
     return out
 
 
-#: The liquid's added mass is the high-frequency limit (free surface p = 0: the slosh masses
-#: left out); a slosh oscillator of mass m_1 and frequency omega_s adds m_1 omega_s^2 /
-#: (omega_s^2 - omega^2) at omega, a third of m_1 at omega = 2 omega_s and more below. A region
-#: with a mode below this factor times a tank's first slosh frequency is warned about.
-SLOSH_VALIDITY_FACTOR = 2.0
-
-
 def slosh_warnings(survey: VehicleSurvey | None,
                    found: VehicleRegions | None) -> list[AnalysisWarning]:
     """One ``liquid-below-slosh`` warning when a parametric region has a mode below
-    :data:`SLOSH_VALIDITY_FACTOR` times the highest first slosh frequency of the partly filled
-    tanks (``survey.slosh``, under the thrust's acceleration): there the liquid's added mass,
-    the high-frequency limit of a free surface at p = 0 (docs/theory/liquid.md), leaves out
-    slosh masses that move with the tank, and that mode's frequency, so the region's place, is
-    approximate. None without slosh modes or regions.
+    :data:`flexbooster.dynamics.SLOSH_VALIDITY_FACTOR` times the highest first slosh frequency
+    of the partly filled tanks (``survey.slosh``, under the thrust's acceleration): there the
+    liquid's added mass, the high-frequency limit of a free surface at p = 0
+    (docs/theory/liquid.md), leaves out slosh masses that move with the tank, and that mode's
+    frequency, so the region's place, is approximate. None without slosh modes or regions.
 
     Parameters
     ----------
@@ -589,21 +583,15 @@ def slosh_warnings(survey: VehicleSurvey | None,
         From :func:`analyze_vehicle_regions`.
     """
     slosh = () if survey is None else survey.slosh
-    if not slosh or found is None:
-        return []
-    top = max(slosh, key=lambda m: m.omega)
-    limit = SLOSH_VALIDITY_FACTOR * top.omega
-    low = [(m.omega, m.label, r.k) for r in found.regions for m in r.modes
-           if m.omega is not None and 0.0 < m.omega < limit]
+    low = () if found is None else below_slosh(found.regions, slosh)
     if not low:
         return []
-    n = sum(1 for r in found.regions
-            if any(m.omega is not None and 0.0 < m.omega < limit for m in r.modes))
-    w, label, k = min(low)
+    top = max(slosh, key=lambda m: m.omega)
+    w, label, k = low[0]
     return [AnalysisWarning("liquid-below-slosh", "vehicle.tanks", (
-        f"{n} parametric region(s) hold a mode below {SLOSH_VALIDITY_FACTOR:g} x the first "
-        f"slosh frequency {top.hz:.4g} Hz (tank {top.tank}), the lowest k = {k} {label} at "
-        f"{w / (2.0 * math.pi):.4g} Hz: the liquid's added mass is its high-frequency limit "
+        f"{len(low)} parametric region(s) hold a mode below {SLOSH_VALIDITY_FACTOR:g} x the "
+        f"first slosh frequency {top.hz:.4g} Hz (tank {top.tank}), the lowest k = {k} {label} "
+        f"at {w / (2.0 * math.pi):.4g} Hz: the liquid's added mass is its high-frequency limit "
         "(free surface p = 0, the slosh masses left out), so those modes' frequencies and the "
         "regions' places are approximate there"))]
 

@@ -22,11 +22,13 @@ from ._threads import blas_threads
 from .case import Case
 from .checks import FieldValueError
 from .dynamics import (
+    SLOSH_VALIDITY_FACTOR,
     STANDARD_GRAVITY,
     ForcedAxial,
     IllConditionedError,
     UndampedResonanceError,
     VehicleRegions,
+    below_slosh,
     forced_axial,
     forced_response,
     vehicle_regions,
@@ -47,7 +49,7 @@ from .flight import (
 )
 from .flight_results import FlightHarmonic, FlightResults, verdict_order
 from .model import flight_times, forced_stations, timeline_from_case, vehicle_from_case
-from .shell_of_revolution import BucklingError
+from .shell_of_revolution import BucklingError, slosh_modes
 from .shell_of_revolution.mass_properties import MassProperties, mass_properties
 from .shell_of_revolution.modes import (
     VehicleModes,
@@ -115,6 +117,8 @@ class FrozenTime:
     liquid_mass : tuple of scipy.sparse.csr_matrix
         Per k, the tanks' added mass at this time's fills (kg; nonzero on the wetted walls'
         DOFs only), the other weight of the MAC.
+    slosh : tuple of SloshMode
+        Each partly filled tank's first slosh mode under this time's acceleration F0 / m.
     """
 
     index: int
@@ -126,6 +130,7 @@ class FrozenTime:
     vectors: tuple[np.ndarray, ...]
     structural_mass: tuple[np.ndarray, ...] | None
     liquid_mass: tuple = ()
+    slosh: tuple = ()
 
 
 @dataclass(frozen=True)
@@ -229,11 +234,12 @@ def _frozen_at(plan: _Plan, index: int) -> FrozenTime:
             raise CaseError("flight.points", f"F0 = {p.F0:.6g} N at t = {p.time:.6g} s",
                             f"the thrust buckles the vehicle at this frozen time ({exc})"
                             ) from None
+        slosh = slosh_modes(vehicle, acceleration=p.F0 / mass.mass_kg) if p.F0 > 0.0 else ()
     ks = range(plan.k_max + 1)
     return FrozenTime(index=index, time=float(plan.times[index]), mass=mass, modes=modes,
                       regions=found, axial=axial, vectors=tuple(vectors[k][0] for k in ks),
                       structural_mass=tuple(vectors[k][1] for k in ks) if index == 0 else None,
-                      liquid_mass=tuple(vectors[k][2] for k in ks))
+                      liquid_mass=tuple(vectors[k][2] for k in ks), slosh=slosh)
 
 
 def flight_stage(case: Case, *, frozen: Sequence[FrozenTime] | None = None
@@ -335,6 +341,7 @@ def _assemble(case: Case, plan: _Plan, frozen: Sequence[FrozenTime]
             gaps.setdefault((g.limit, g.k), g)
     warnings += [AnalysisWarning("flight-not-fully-searched", "flight", g.reason)
                  for g in gaps.values()]
+    warnings += _slosh_warnings(frozen, regions_per_time)
     result = FlightResults(
         times=times, F0=np.array([p.F0 for p in points]),
         gamma=np.array([p.gamma for p in points]),
@@ -343,6 +350,26 @@ def _assemble(case: Case, plan: _Plan, frozen: Sequence[FrozenTime]
         harmonics=harmonics, regions=tuple(regions_per_time), omega_range=(lo, hi),
         events=verdict_order(worst_first(events)), gaps=tuple(gaps.values()), notes=tuple(notes))
     return result, warnings
+
+
+def _slosh_warnings(frozen: Sequence[FrozenTime], regions_per_time) -> list[AnalysisWarning]:
+    """One ``liquid-below-slosh`` warning when a frozen time's region holds a mode below
+    :data:`flexbooster.dynamics.SLOSH_VALIDITY_FACTOR` times that time's highest first slosh
+    frequency (:func:`flexbooster.dynamics.below_slosh`; as the single case's)."""
+    hits = [(f, low) for f, regions in zip(frozen, regions_per_time, strict=True)
+            if (low := below_slosh(regions, f.slosh))]
+    if not hits:
+        return []
+    f, low = hits[0]
+    w, label, k = low[0]
+    top = max(f.slosh, key=lambda m: m.omega)
+    return [AnalysisWarning("liquid-below-slosh", "vehicle.tanks", (
+        f"at {len(hits)} of {len(frozen)} frozen times a parametric region holds a mode below "
+        f"{SLOSH_VALIDITY_FACTOR:g} x the first slosh frequency (the first, t = {f.time:.6g} "
+        f"s: k = {k} {label} at {w / (2.0 * math.pi):.4g} Hz, the slosh of tank {top.tank} "
+        f"at {top.hz:.4g} Hz): the liquid's added mass is its high-frequency limit (free "
+        "surface p = 0, the slosh masses left out), so those modes' frequencies and the "
+        "regions' places are approximate there"))]
 
 
 def _frozen_time(vehicle, p, *, k_max: int, n_modes: int, omega_range: tuple, zeta: float,

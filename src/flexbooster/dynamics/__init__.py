@@ -26,8 +26,10 @@ from .forced import (
 from .forced_model import IllConditionedError
 from .harmonic import HarmonicSystem
 from .regions import (
+    SLOSH_VALIDITY_FACTOR,
     RegionCurve,
     VehicleRegions,
+    below_slosh,
     harmonic_system,
     region_critical_damping,
     region_curves,
@@ -60,4 +62,6 @@ __all__ = [
     "region_critical_damping",
     "region_curves",
     "vehicle_regions",
+    "below_slosh",
+    "SLOSH_VALIDITY_FACTOR",
 ]

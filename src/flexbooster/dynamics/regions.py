@@ -34,7 +34,13 @@ from .harmonic import (
 )
 
 __all__ = ["RegionCurve", "VehicleRegions", "harmonic_system", "vehicle_regions",
-           "region_curves", "region_critical_damping"]
+           "region_curves", "region_critical_damping", "below_slosh", "SLOSH_VALIDITY_FACTOR"]
+
+#: The liquid's added mass is the high-frequency limit (free surface p = 0: the slosh masses
+#: left out); a slosh oscillator of mass m_1 and frequency omega_s adds m_1 omega_s^2 /
+#: (omega_s^2 - omega^2) at omega, a third of m_1 at omega = 2 omega_s and more below: a mode
+#: below this factor times a tank's first slosh frequency is not at the model's frequency.
+SLOSH_VALIDITY_FACTOR = 2.0
 
 #: Largest harmonic accepted (as :mod:`flexbooster.shell_of_revolution`).
 K_MAX = 200
@@ -423,3 +429,28 @@ def region_critical_damping(found: VehicleRegions, *, growth_floor: float = 0.0,
                                            omega_start=r.Omega_at_max)
         regions[i] = dataclasses.replace(r, critical_damping_ratio=zeta_cr)
     return dataclasses.replace(found, regions=tuple(regions))
+
+
+def below_slosh(regions, slosh) -> tuple[tuple[float, str, int], ...]:
+    """The modes of ``regions`` below :data:`SLOSH_VALIDITY_FACTOR` times the highest first
+    slosh frequency of ``slosh`` (where the liquid's high-frequency added mass leaves out
+    slosh masses that move with the tank: docs/theory/liquid.md), one (omega in rad/s, label,
+    k) per region that holds one (its lowest), the lowest first; () without slosh modes.
+
+    Parameters
+    ----------
+    regions : sequence of Band
+        Parametric regions of the vehicle (their modes' loaded frequencies ``omega``).
+    slosh : sequence of SloshMode
+        The first slosh mode of each partly filled tank (:func:`.slosh_modes`).
+    """
+    if not slosh:
+        return ()
+    limit = SLOSH_VALIDITY_FACTOR * max(m.omega for m in slosh)
+    out = []
+    for r in regions:
+        low = [(m.omega, m.label, r.k) for m in r.modes
+               if m.omega is not None and 0.0 < m.omega < limit]
+        if low:
+            out.append(min(low))
+    return tuple(sorted(out))
