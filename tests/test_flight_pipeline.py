@@ -23,10 +23,10 @@ from conftest import dump_toml
 from flexbooster.analysis import analyze
 from flexbooster.case import default_case_text, load_case
 from flexbooster.cli import main
-from flexbooster.dynamics import STANDARD_GRAVITY, forced_response
+from flexbooster.dynamics import PEAK_WINDOW, STANDARD_GRAVITY, forced_response
 from flexbooster.errors import CaseError
 from flexbooster.flight import mac_matrix
-from flexbooster.flight_stage import PEAK_WINDOW, flight_stage, frozen_time
+from flexbooster.flight_stage import flight_stage, frozen_time
 from flexbooster.model import forced_stations, vehicle_from_case
 from flexbooster.present.flight import flight_lines, write_flight_csvs
 

@@ -521,3 +521,36 @@ def test_a_response_largest_at_the_end_of_the_range_is_marked(tmp_path, readme_l
                 assert "larger beyond it" in p.text
                 marked += loads is low
     assert marked >= 1
+
+
+def test_every_forced_resonance_in_range_is_listed(readme_loads):
+    """Source: the stored curves (the grid samples the same response independently). Each
+    mode of the forced model in the operating range that the thrust forces (f^2 >= 1e-8 of its
+    harmonic's largest) has a response in the list within zeta Omega of its peak, whose
+    acceleration is no lower than the largest grid value within the mode's half-power band
+    omega (1 -+ zeta) at any station (the refined peak bounds the samples), also where that
+    resonance is no station's largest peak (the list held each station's largest only)."""
+    from flexbooster.dynamics import MIN_PARTICIPATION
+
+    _, loads = readme_loads
+    r = loads.response
+    lo, hi = loads.operating_range
+    zeta = float(r.damping_ratio)
+    listed = loads.response_peaks()
+    station_max = {(p.k, p.Omega) for p in loads.ranked_peaks()}
+    extra = 0
+    for ik, (k, model) in enumerate(zip(r.harmonics, r.models, strict=True)):
+        basis = model.omega_modes[model.n_rigid:]
+        f2 = model.load[model.n_rigid:] ** 2
+        if not np.any(f2 > 0.0):
+            continue
+        for om in basis[(basis >= lo) & (basis <= hi) & (f2 >= MIN_PARTICIPATION * f2.max())]:
+            band = (r.omega >= om * (1 - zeta)) & (r.omega <= om * (1 + zeta))
+            grid = (np.abs(r.acceleration[ik])[:, band].max() / STANDARD_GRAVITY
+                    if band.any() else 0.0)
+            near = [p for p in listed if p.k == k and abs(p.Omega - om) <= 2 * zeta * om]
+            assert near, (k, om)
+            assert max(p.acceleration_g for p in near) >= grid * (1 - 1e-12)
+            extra += not any(kk == k and abs(w - om) <= 2 * zeta * om
+                             for kk, w in station_max)
+    assert extra >= 1  # resonances that no station's largest peak stands for

@@ -36,6 +36,7 @@ from .dynamics import (
     VehicleRegions,
     below_slosh,
     forced_response,
+    mode_peaks,
     region_critical_damping,
     region_curves,
     vehicle_regions,
@@ -898,7 +899,9 @@ def analyze_forced_response(case: Case) -> ForcedLoads:
     n_modes = tuple(m.omega_modes.size - m.n_rigid for m in found.models)
     t = case.thrust
     return ForcedLoads(response=found, n_modes=n_modes, convergence=convergence,
-                       mass_stations=masses, operating_range=(t.omega_min, t.omega_max))
+                       mass_stations=masses, operating_range=(t.omega_min, t.omega_max),
+                       mode_peaks=mode_peaks(found, omega_min=t.omega_min,
+                                             omega_max=t.omega_max))
 
 
 def _forced_stage(case: Case) -> tuple[ForcedLoads | None, list[AnalysisWarning]]:

@@ -22,6 +22,8 @@ from ._threads import blas_threads
 from .case import Case
 from .checks import FieldValueError
 from .dynamics import (
+    MIN_PARTICIPATION,
+    PEAK_WINDOW,
     SLOSH_VALIDITY_FACTOR,
     STANDARD_GRAVITY,
     ForcedAxial,
@@ -61,20 +63,11 @@ from .shell_of_revolution.survey import has_flat_plate
 
 __all__ = ["flight_stage", "frozen_time", "assemble_flight", "check_fills", "FrozenTime",
            "flight_omega_range",
-           "KNOWN_FREQUENCY_MARGIN", "MATCH_RTOL", "MIN_PARTICIPATION", "PEAK_WINDOW",
-           "BASIS_MATCH_RTOL"]
+           "KNOWN_FREQUENCY_MARGIN", "MATCH_RTOL", "BASIS_MATCH_RTOL"]
 
 #: A region's mode and a computed mode of the same harmonic are the same mode when their
 #: loaded frequencies agree to this relative tolerance (the same eigenproblem solved twice).
 MATCH_RTOL = 1e-6
-#: Modes whose participation f^2 in the thrust oscillation (f the generalised force of the
-#: mass-normalised mode per newton) is below this fraction of the largest of their harmonic are
-#: not forced by the thrust (torsion; :data:`flexbooster.dynamics.axial.MIN_SHARE`).
-MIN_PARTICIPATION = 1e-8
-#: Half-width of the window around a tracked mode's frequency in which its forced peak is
-#: sought, in damping ratios: a mode's resonant peak lies within zeta^2 omega of omega and its
-#: half-power band is omega (1 -+ zeta) (Meirovitch 1986, sec. 3.4); at most 1/2.
-PEAK_WINDOW = 4.0
 #: A tracked mode and a basis mode of the forced model (its own mesh, cut at the stations) are
 #: the same mode when their frequencies agree to this relative tolerance.
 BASIS_MATCH_RTOL = 1e-3

@@ -436,6 +436,9 @@ class ForcedLoads:
         The stations that are lumped masses.
     operating_range : tuple of float
         (omega_min, omega_max) of the case (rad/s).
+    mode_peaks : tuple of ModePeak
+        The peak near each forced mode in the operating range
+        (:func:`flexbooster.dynamics.mode_peaks`).
     """
 
     response: ForcedResponse
@@ -443,6 +446,7 @@ class ForcedLoads:
     convergence: tuple
     mass_stations: tuple = ()
     operating_range: tuple = (0.0, np.inf)
+    mode_peaks: tuple = ()
 
     @property
     def per_percent(self) -> float | None:
@@ -486,8 +490,10 @@ class ForcedLoads:
         :class:`~flexbooster.danger.ResponsePeak` per resonance (the stations whose peak
         accelerations lie within zeta Omega of each other are one resonance, shown at the
         largest; one at an end of the Omega range, still rising there, marked ``at_range_end``),
-        with the largest internal load along the vehicle (axial force for k = 0, bending moment
-        for k = 1) whose peak lies within zeta Omega of it."""
+        then each resonance of :attr:`mode_peaks` that is no station's largest (at its own
+        peak, displacement |a| / Omega^2), with the largest internal load along the vehicle
+        (axial force for k = 0, bending moment for k = 1) whose peak lies within zeta Omega of
+        it; the largest acceleration first."""
         r = self.response
         tol = max(float(r.damping_ratio), 1e-3)
         ends = (float(r.omega.min()), float(r.omega.max())) if r.omega.size else ()
@@ -498,26 +504,43 @@ class ForcedLoads:
                 continue
             taken.append((p.k, p.Omega))
             disp, _ = self.peak_value(p.k, p.station, "displacement")
-            quantity = "axial_force" if p.k == 0 else "bending_moment"
-            load = None
-            for e in r.envelopes:
-                if e.k != p.k or e.quantity != quantity or not e.peak.size:
-                    continue
-                near = np.abs(e.peak_omega - p.Omega) <= tol * p.Omega
-                if near.any():
-                    i = int(np.argmax(np.where(near, e.peak, -np.inf)))
-                    load = (quantity.replace("_", " "), e.unit, float(e.peak[i]), float(e.x[i]))
             out.append(ResponsePeak(
                 source="forced response", k=int(p.k), Omega=float(p.Omega),
                 acceleration_g=float(p.acceleration_g), station=p.station,
                 station_m=float(p.station_m), displacement_m=float(disp), modes=f"k = {p.k}",
-                load_quantity=None if load is None else load[0],
-                load_unit=None if load is None else load[1],
-                load=None if load is None else load[2],
-                load_station_m=None if load is None else load[3],
                 in_operating_range=p.in_operating_range,
-                at_range_end=any(abs(p.Omega - e) <= 1e-12 * e for e in ends)))
-        return tuple(out)
+                at_range_end=any(abs(p.Omega - e) <= 1e-12 * e for e in ends),
+                **self._load_near(p.k, p.Omega, tol)))
+        # the resonances that are no station's largest peak, each at its own peak
+        for m in self.mode_peaks:
+            if any(k == m.k and abs(w - m.Omega) <= tol * m.Omega for k, w in taken):
+                continue
+            taken.append((m.k, m.Omega))
+            s = r.stations[m.station]
+            out.append(ResponsePeak(
+                source="forced response", k=int(m.k), Omega=float(m.Omega),
+                acceleration_g=float(m.acceleration / STANDARD_GRAVITY), station=s.name,
+                station_m=float(s.x), displacement_m=float(m.acceleration / m.Omega**2),
+                modes=f"k = {m.k}", in_operating_range=True,
+                **self._load_near(m.k, m.Omega, tol)))
+        return tuple(sorted(out, key=lambda q: -q.acceleration_g))
+
+    def _load_near(self, k: int, Omega: float, tol: float) -> dict:
+        """The largest internal load along the vehicle (axial force for k = 0, bending moment
+        for k = 1) whose peak lies within tol Omega of ``Omega``, as ResponsePeak fields."""
+        quantity = "axial_force" if k == 0 else "bending_moment"
+        load = None
+        for e in self.response.envelopes:
+            if e.k != k or e.quantity != quantity or not e.peak.size:
+                continue
+            near = np.abs(e.peak_omega - Omega) <= tol * Omega
+            if near.any():
+                i = int(np.argmax(np.where(near, e.peak, -np.inf)))
+                load = (quantity.replace("_", " "), e.unit, float(e.peak[i]), float(e.x[i]))
+        return {"load_quantity": None if load is None else load[0],
+                "load_unit": None if load is None else load[1],
+                "load": None if load is None else load[2],
+                "load_station_m": None if load is None else load[3]}
 
     def csv_columns(self) -> dict[str, list]:
         """forced-response.csv in long format: one row per harmonic, station and Omega;

@@ -13,14 +13,18 @@ from .bending import (
     follower_flutter_thrust,
 )
 from .forced import (
+    MIN_PARTICIPATION,
+    PEAK_WINDOW,
     STANDARD_GRAVITY,
     ForcedPeak,
     ForcedResponse,
     LoadEnvelope,
+    ModePeak,
     ThrustSpectrum,
     UndampedResonanceError,
     basis_sizes,
     forced_response,
+    mode_peaks,
     window_peaks,
 )
 from .forced_model import IllConditionedError
@@ -57,6 +61,10 @@ __all__ = [
     "forced_response",
     "basis_sizes",
     "window_peaks",
+    "ModePeak",
+    "mode_peaks",
+    "PEAK_WINDOW",
+    "MIN_PARTICIPATION",
     "forced_axial",
     "harmonic_system",
     "region_critical_damping",

@@ -23,7 +23,8 @@ from .forced_model import ROWS, ModalModel, basis_size, cut_vehicle, mesh_nodes,
 
 __all__ = ["STANDARD_GRAVITY", "QUANTITIES", "UNITS", "ThrustSpectrum", "Station",
            "ForcedPeak", "LoadEnvelope", "ForcedResponse", "UndampedResonanceError",
-           "forced_response", "basis_sizes", "window_peaks"]
+           "forced_response", "basis_sizes", "window_peaks", "ModePeak", "mode_peaks",
+           "PEAK_WINDOW", "MIN_PARTICIPATION"]
 
 #: Standard acceleration of gravity g (m/s^2), exact by definition (3rd CGPM, 1901).
 STANDARD_GRAVITY = 9.80665
@@ -38,6 +39,14 @@ UNDAMPED_RTOL = 1e-6
 #: CLUSTER, then GOLDEN_STEPS golden-section steps in the bracket of the largest sample (its
 #: width x 0.618^24 = 1e-5: the peak value to about 1e-10 relative).
 CLUSTER, CLUSTER_DENSITY, GOLDEN_STEPS = 32, 8, 24
+#: Half-width of the window around a mode's frequency in which its forced peak is sought, in
+#: damping ratios: a mode's resonant peak lies within zeta^2 omega of omega and its half-power
+#: band is omega (1 -+ zeta) (Meirovitch 1986, sec. 3.4); at most 1/2.
+PEAK_WINDOW = 4.0
+#: Modes whose participation f^2 in the thrust oscillation (f the generalised force of the
+#: mass-normalised mode per newton) is below this fraction of the largest of their harmonic are
+#: not forced by the thrust (torsion; :data:`flexbooster.dynamics.axial.MIN_SHARE`).
+MIN_PARTICIPATION = 1e-8
 
 
 class UndampedResonanceError(ValueError):
@@ -608,3 +617,70 @@ def window_peaks(response: ForcedResponse, *, k: int, omega, half_width: float
         station[c] = int(np.argmax(value))
         peak[c], at[c] = scale * value[station[c]], place[station[c]]
     return peak, at, station
+
+
+@dataclass(frozen=True)
+class ModePeak:
+    """The forced peak near one mode: the largest steady acceleration over the stations within
+    the mode's window (:func:`mode_peaks`).
+
+    Attributes
+    ----------
+    k : int
+        Circumferential harmonic (0 axial, 1 lateral).
+    omega : float
+        The mode's natural frequency in the forced model's basis (rad/s).
+    Omega : float
+        Where the peak is (rad/s).
+    acceleration : float
+        Peak acceleration amplitude (m/s^2).
+    station : int
+        Index into ``ForcedResponse.stations`` of the station where it is.
+    """
+
+    k: int
+    omega: float
+    Omega: float
+    acceleration: float
+    station: int
+
+
+def mode_peaks(response: ForcedResponse, *, omega_min: float, omega_max: float
+               ) -> tuple[ModePeak, ...]:
+    """Per forced harmonic of a sweep, one :class:`ModePeak` per basis mode with its frequency
+    in [omega_min, omega_max] that the thrust forces (participation f^2 at least
+    :data:`MIN_PARTICIPATION` of its harmonic's largest): :func:`window_peaks` over omega (1 -+
+    min(PEAK_WINDOW zeta, 1/2)), kept where that peak lies in the range; by harmonic, then
+    frequency. Every resonance in the range, also one that is no station's largest peak.
+    () for a spectrum.
+
+    Parameters
+    ----------
+    response : ForcedResponse
+        The forced response.
+    omega_min, omega_max : float
+        The range (rad/s), 0 < omega_min <= omega_max.
+    """
+    if not isinstance(response, ForcedResponse):
+        raise ValueError("response: must be a ForcedResponse")
+    lo, hi = finite("omega_min", omega_min), finite("omega_max", omega_max)
+    if not 0.0 < lo <= hi:
+        raise ValueError(f"omega_min, omega_max = {lo!r}, {hi!r}: must satisfy 0 < min <= max")
+    if response.combination != "sweep":
+        return ()
+    w = min(PEAK_WINDOW * float(response.damping_ratio), 0.5)
+    out = []
+    for k, model in zip(response.harmonics, response.models, strict=True):
+        basis = model.omega_modes[model.n_rigid:]
+        f2 = model.load[model.n_rigid:] ** 2
+        if not basis.size or not np.any(f2 > 0.0):
+            continue
+        keep = (basis >= lo) & (basis <= hi) & (f2 >= MIN_PARTICIPATION * float(f2.max()))
+        if not keep.any() or w <= 0.0:
+            continue
+        peak, at, station = window_peaks(response, k=int(k), omega=basis[keep], half_width=w)
+        out += [ModePeak(k=int(k), omega=float(om), Omega=float(a), acceleration=float(g),
+                         station=int(st))
+                for om, g, a, st in zip(basis[keep], peak, at, station, strict=True)
+                if lo <= a <= hi and g > 0.0]
+    return tuple(out)
