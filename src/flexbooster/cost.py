@@ -1185,6 +1185,13 @@ def forced_seconds(vehicle: Any, n_omega: int, *, large_basis: bool = True) -> f
 # twice the fit: actual / estimate at most 0.76 on those cases (median estimate 2.7x).
 _C_FORCED_RUN = (0.27, 1.15e-8, 9.13e-8, 3.6e-9, 5e-4, 0.009)
 _FORCED_RUN_FLOOR, _FORCED_RUN_MARGIN = 0.1, 2.0
+# The peak near each forced mode in the range (dynamics.mode_peaks: one window_peaks each, 65
+# points and the golden steps of the model's response): per mode 3.8, 13.0 and 17.7 ms at
+# bases of 15, 70 and 133 modes (the default case, the two-stage liquid example, the memo
+# case; one core) -> 2 ms + 0.15 ms per basis mode, priced for every basis mode of a forced
+# harmonic (those in the range are not counted up front: an upper bound; 1.57 s against 1.15 s
+# measured for the memo case's 65 peaks)
+_C_MODE_PEAK = (2e-3, 1.5e-4)
 #: Past this many DOFs the forced response's basis is not counted: the count assembles each
 #: harmonic's dense matrices (8 n^2 bytes each: 50 MB at 2,500) and factorises them, which a
 #: case refused for its size should not pay; :func:`forced_seconds` (its DOFs-cubed bound)
@@ -1197,8 +1204,9 @@ def forced_run_seconds(case: Any, vehicle: Any) -> float:
     """CPU time (s, one core) of the forced response of a single run
     (:func:`flexbooster.analysis.analyze_forced_response`) from its counted basis per harmonic
     (:func:`flexbooster.dynamics.basis_sizes`, Sylvester's law of inertia; no eigenvector):
-    the law above; :func:`forced_seconds` for each harmonic forced where the count cannot be
-    made (the stage then says why) or past :data:`FORCED_COUNT_MAX_DOFS` DOFs.
+    the law above, and with a sweep the peak near each forced mode (``_C_MODE_PEAK`` per basis
+    mode of a forced harmonic); :func:`forced_seconds` for each harmonic forced where the count
+    cannot be made (the stage then says why) or past :data:`FORCED_COUNT_MAX_DOFS` DOFs.
 
     Parameters
     ----------
@@ -1229,7 +1237,8 @@ def forced_run_seconds(case: Any, vehicle: Any) -> float:
     mf = m[:forced]  # k = 0, and k = 1 with a misalignment
     fit = (c_n * x * x * max(1.0, x) + c_s * np.sum(m**3) + c_f * np.sum(mf**3)
            + c_p * np.sum(mf**2) * n_omega + c_m * np.sum(m) + c_h * forced)
-    return float(_FORCED_RUN_FLOOR + _FORCED_RUN_MARGIN * fit)
+    peaks = float(np.sum(mf * (_C_MODE_PEAK[0] + _C_MODE_PEAK[1] * mf))) if n_omega else 0.0
+    return float(_FORCED_RUN_FLOOR + _FORCED_RUN_MARGIN * fit + peaks)
 
 
 #: The flight's frozen times whose vehicle stages are estimated (:func:`flight_time_seconds`):
