@@ -12,7 +12,6 @@ rigid-body pitch, modes and regions (``Results.not_applicable`` holds the reason
 from __future__ import annotations
 
 import dataclasses
-import math
 from collections.abc import Callable, Sequence
 
 import numpy as np
@@ -29,7 +28,6 @@ from .danger import (
     merge_responses,
 )
 from .dynamics import (
-    SLOSH_VALIDITY_FACTOR,
     IllConditionedError,
     ThrustSpectrum,
     UndampedResonanceError,
@@ -42,7 +40,7 @@ from .dynamics import (
     vehicle_regions,
 )
 from .errors import AnalysisWarning
-from .flight_stage import FrozenTime, check_fills, flight_stage
+from .flight_stage import FrozenTime, check_fills, flight_stage, slosh_warning
 from .memo import charts
 from .memo.beam import beam_modes
 from .memo.beam_action import PeriodMapOverflowError, beam_action_analysis
@@ -585,16 +583,7 @@ def slosh_warnings(survey: VehicleSurvey | None,
     """
     slosh = () if survey is None else survey.slosh
     low = () if found is None else below_slosh(found.regions, slosh)
-    if not low:
-        return []
-    top = max(slosh, key=lambda m: m.omega)
-    w, label, k = low[0]
-    return [AnalysisWarning("liquid-below-slosh", "vehicle.tanks", (
-        f"{len(low)} parametric region(s) hold a mode below {SLOSH_VALIDITY_FACTOR:g} x the "
-        f"first slosh frequency {top.hz:.4g} Hz (tank {top.tank}), the lowest k = {k} {label} "
-        f"at {w / (2.0 * math.pi):.4g} Hz: the liquid's added mass is its high-frequency limit "
-        "(free surface p = 0, the slosh masses left out), so those modes' frequencies and the "
-        "regions' places are approximate there"))]
+    return [slosh_warning(f"{len(low)} parametric region(s) hold", low, slosh)] if low else []
 
 
 def _vehicle_regions_stage(case: Case, *, boundaries: bool

@@ -23,7 +23,6 @@ from .case import Case
 from .checks import FieldValueError
 from .dynamics import (
     MIN_PARTICIPATION,
-    PEAK_WINDOW,
     SLOSH_VALIDITY_FACTOR,
     STANDARD_GRAVITY,
     ForcedAxial,
@@ -33,6 +32,7 @@ from .dynamics import (
     below_slosh,
     forced_axial,
     forced_response,
+    peak_half_width,
     vehicle_regions,
     window_peaks,
 )
@@ -62,7 +62,7 @@ from .shell_of_revolution.modes import (
 from .shell_of_revolution.survey import has_flat_plate
 
 __all__ = ["flight_stage", "frozen_time", "assemble_flight", "check_fills", "FrozenTime",
-           "flight_omega_range",
+           "flight_omega_range", "slosh_warning",
            "KNOWN_FREQUENCY_MARGIN", "MATCH_RTOL", "BASIS_MATCH_RTOL"]
 
 #: A region's mode and a computed mode of the same harmonic are the same mode when their
@@ -345,24 +345,40 @@ def _assemble(case: Case, plan: _Plan, frozen: Sequence[FrozenTime]
     return result, warnings
 
 
+def slosh_warning(lead: str, low, slosh) -> AnalysisWarning:
+    """The ``liquid-below-slosh`` warning: ``lead`` (where, and "hold(s)"), then the lowest of
+    ``low`` (:func:`flexbooster.dynamics.below_slosh` of ``slosh``) and why it is approximate.
+
+    Parameters
+    ----------
+    lead : str
+        The words before "a mode below ...", e.g. "2 parametric region(s) hold".
+    low : sequence of (float, str, int)
+        :func:`flexbooster.dynamics.below_slosh`, not empty.
+    slosh : sequence of SloshMode
+        The slosh modes it was made with.
+    """
+    w, label, k = low[0]
+    top = max(slosh, key=lambda m: m.omega)
+    return AnalysisWarning("liquid-below-slosh", "vehicle.tanks", (
+        f"{lead} a mode below {SLOSH_VALIDITY_FACTOR:g} x the first slosh frequency "
+        f"{top.hz:.4g} Hz (tank {top.tank}), the lowest k = {k} {label} at "
+        f"{w / (2.0 * math.pi):.4g} Hz: the liquid's added mass is its high-frequency limit "
+        "(free surface p = 0, the slosh masses left out), so those modes' frequencies and the "
+        "regions' places are approximate there"))
+
+
 def _slosh_warnings(frozen: Sequence[FrozenTime], regions_per_time) -> list[AnalysisWarning]:
-    """One ``liquid-below-slosh`` warning when a frozen time's region holds a mode below
+    """:func:`slosh_warning` when a frozen time's region holds a mode below
     :data:`flexbooster.dynamics.SLOSH_VALIDITY_FACTOR` times that time's highest first slosh
-    frequency (:func:`flexbooster.dynamics.below_slosh`; as the single case's)."""
+    frequency, named at the first such time (as the single case's)."""
     hits = [(f, low) for f, regions in zip(frozen, regions_per_time, strict=True)
             if (low := below_slosh(regions, f.slosh))]
     if not hits:
         return []
     f, low = hits[0]
-    w, label, k = low[0]
-    top = max(f.slosh, key=lambda m: m.omega)
-    return [AnalysisWarning("liquid-below-slosh", "vehicle.tanks", (
-        f"at {len(hits)} of {len(frozen)} frozen times a parametric region holds a mode below "
-        f"{SLOSH_VALIDITY_FACTOR:g} x the first slosh frequency (the first, t = {f.time:.6g} "
-        f"s: k = {k} {label} at {w / (2.0 * math.pi):.4g} Hz, the slosh of tank {top.tank} "
-        f"at {top.hz:.4g} Hz): the liquid's added mass is its high-frequency limit (free "
-        "surface p = 0, the slosh masses left out), so those modes' frequencies and the "
-        "regions' places are approximate there"))]
+    return [slosh_warning(f"at {len(hits)} of {len(frozen)} frozen times (the first t = "
+                          f"{f.time:.6g} s) a parametric region holds", low, f.slosh)]
 
 
 def _frozen_time(vehicle, p, *, k_max: int, n_modes: int, omega_range: tuple, zeta: float,
@@ -473,7 +489,7 @@ def _forced_events(case: Case, base, times, points, harmonics, osc, *, zeta: flo
     if zeta >= math.sqrt(0.5):  # |H| falls monotonically from Omega = 0: no resonant peak
         return [], [], notes + [f"no forced resonance peaks: modal damping ratio {zeta:g} >= "
                                 "1/sqrt(2) (no resonant peak)"]
-    w = min(PEAK_WINDOW * zeta, 0.5)
+    w = peak_half_width(zeta)
     lo, hi = omega_range
     stations = forced_stations(case, base)[0]
     by_k = {h.k: h for h in harmonics if h.k in ks}

@@ -25,6 +25,7 @@ from .forced import (
     basis_sizes,
     forced_response,
     mode_peaks,
+    peak_half_width,
     window_peaks,
 )
 from .forced_model import IllConditionedError
@@ -63,6 +64,7 @@ __all__ = [
     "window_peaks",
     "ModePeak",
     "mode_peaks",
+    "peak_half_width",
     "PEAK_WINDOW",
     "MIN_PARTICIPATION",
     "forced_axial",

@@ -24,7 +24,7 @@ from .forced_model import ROWS, ModalModel, basis_size, cut_vehicle, mesh_nodes,
 __all__ = ["STANDARD_GRAVITY", "QUANTITIES", "UNITS", "ThrustSpectrum", "Station",
            "ForcedPeak", "LoadEnvelope", "ForcedResponse", "UndampedResonanceError",
            "forced_response", "basis_sizes", "window_peaks", "ModePeak", "mode_peaks",
-           "PEAK_WINDOW", "MIN_PARTICIPATION"]
+           "PEAK_WINDOW", "MIN_PARTICIPATION", "peak_half_width"]
 
 #: Standard acceleration of gravity g (m/s^2), exact by definition (3rd CGPM, 1901).
 STANDARD_GRAVITY = 9.80665
@@ -668,7 +668,7 @@ def mode_peaks(response: ForcedResponse, *, omega_min: float, omega_max: float
         raise ValueError(f"omega_min, omega_max = {lo!r}, {hi!r}: must satisfy 0 < min <= max")
     if response.combination != "sweep":
         return ()
-    w = min(PEAK_WINDOW * float(response.damping_ratio), 0.5)
+    w = peak_half_width(float(response.damping_ratio))
     out = []
     for k, model in zip(response.harmonics, response.models, strict=True):
         basis = model.omega_modes[model.n_rigid:]
@@ -684,3 +684,15 @@ def mode_peaks(response: ForcedResponse, *, omega_min: float, omega_max: float
                 for om, g, a, st in zip(basis[keep], peak, at, station, strict=True)
                 if lo <= a <= hi and g > 0.0]
     return tuple(out)
+
+
+def peak_half_width(zeta: float) -> float:
+    """The relative half-width of the window in which a mode's forced peak is sought:
+    min(PEAK_WINDOW zeta, 1/2) (:data:`PEAK_WINDOW`).
+
+    Parameters
+    ----------
+    zeta : float
+        The modal damping ratio, >= 0.
+    """
+    return min(PEAK_WINDOW * nonnegative("zeta", zeta), 0.5)
