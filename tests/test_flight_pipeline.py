@@ -247,6 +247,33 @@ def test_summary_and_report_show_the_flight_worst_first(constant):
     assert worst.replace("'", "&#x27;") in first  # the first screen says the same
 
 
+
+def test_verification_names_the_vehicle_checks_not_the_memo_cylinders(constant):
+    """The report's verification summary of a [[vehicle.segments]] case with a flight lists
+    the vehicle model's checks (liquid, slosh, stiffeners, the rigid pitch's Mathieu
+    numerics) and the flight's, and none of the memo's two-cylinder checks (geometry of four
+    boosters, beam, Donnell shells, the memo's roots)."""
+    from flexbooster.present.report import (
+        FLIGHT_VERIFICATION,
+        render_report,
+        verification_rows,
+    )
+
+    tests = [row[3] for row in verification_rows(constant)]
+    assert tests[-len(FLIGHT_VERIFICATION):] == [row[3] for row in FLIGHT_VERIFICATION]
+    for want in ("test_liquid::test_slosh_cylinder_abramson",
+                 "test_stiffeners::test_stiffened_cylinder_matches_smeared_closed_form",
+                 "test_pitch::test_exponent_against_mpmath"):
+        assert want in tests
+    assert not [t for t in tests if t.split("::")[0] in (
+        "test_geometry", "test_beam", "test_shell", "test_beam_action", "test_stability",
+        "test_vehicle_pipeline")]
+    page = render_report(constant)
+    section = page[page.index('<section id="verification">'):]
+    section = section[:section.index("</section>")]
+    assert [t for t in tests if t not in section] == []
+    assert "test_geometry::" not in section
+
 def test_a_bare_shell_flight_has_no_forced_response_warning():
     """The forced resonances along the flight need no tanks or masses: a bare shell (k_max = 0,
     the k = 0 modes only, for speed) gives no ``flight-forced-response`` warning."""

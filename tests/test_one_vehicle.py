@@ -22,6 +22,7 @@ import copy
 import dataclasses
 import json
 import math
+import re
 import tomllib
 from pathlib import Path
 
@@ -252,6 +253,15 @@ def test_summary_and_report_say_not_applicable_and_list_the_masses(segment_resul
     for sid in ("beam-modes", "beam-action", "shell-frequencies", "nodal-patterns",
                 "unstable-frequencies", "campbell"):
         assert f'id="{sid}"' not in html and f'href="#{sid}"' not in html, sid
+    # the rigid-body pitch section has none of the memo's figures (Ince-Strutt, band chart):
+    # no note that they were "not drawn"; the notes name only this case's figures
+    from flexbooster.present.outputs import figure_names
+
+    assert "ince-strutt" not in figure_names(res)
+    assert 'Figure "ince-strutt"' not in html and 'Figure "pitch-band-chart"' not in html
+    notes = re.findall(r'Figure &quot;([a-z0-9-]+)&quot; was not drawn|Figure "([a-z0-9-]+)" '
+                       r"was not drawn", html)
+    assert {a or b for a, b in notes} <= set(figure_names(res))
 
 
 # --------------------------------------------------------------------------- command line

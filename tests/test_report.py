@@ -21,11 +21,15 @@ from flexbooster.memo.charts import nodal_lines, nodal_pattern_data
 from flexbooster.present.plotting.patterns import nodal_pattern, nodal_patterns
 from flexbooster.present.report import (
     FIGURES,
+    FLIGHT_VERIFICATION,
+    FORCED_VERIFICATION,
     MAX_UNSTABLE_ROWS,
     SECTIONS,
+    VEHICLE_VERIFICATION,
     VERIFICATION,
     inline_svg,
     render_report,
+    verification_rows,
     write_report,
 )
 
@@ -140,17 +144,20 @@ def test_no_external_resource(page):
     assert "@import" not in page
 
 
-def test_verification_rows_name_real_tests(page):
-    """Each row of the verification summary names a test that exists in tests/."""
+def test_verification_rows_name_real_tests(results, page):
+    """Each row of every verification table names a test that exists in tests/; the memo
+    case's summary shows the memo's rows first."""
     from pathlib import Path
 
     tests = Path(__file__).parent
-    for quantity, reference, tolerance, test in VERIFICATION:
+    for quantity, reference, tolerance, test in (VERIFICATION + VEHICLE_VERIFICATION
+                                                 + FORCED_VERIFICATION + FLIGHT_VERIFICATION):
         module, name = test.split("::")
         assert f"def {name}(" in (tests / f"{module}.py").read_text(), test
         assert all((quantity, reference, tolerance))
     rows = cells(parse(page), "verification")[1:]
-    assert [r[3] for r in rows] == [v[3] for v in VERIFICATION]
+    assert [r[3] for r in rows] == [v[3] for v in verification_rows(results)]
+    assert [r[3] for r in rows][:len(VERIFICATION)] == [v[3] for v in VERIFICATION]
 
 
 def test_inputs_and_results_shown_with_units(results, page):

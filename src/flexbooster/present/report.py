@@ -75,6 +75,10 @@ __all__ = [
     "SECTIONS",
     "FIGURES",
     "VERIFICATION",
+    "VEHICLE_VERIFICATION",
+    "FORCED_VERIFICATION",
+    "FLIGHT_VERIFICATION",
+    "verification_rows",
     "MAX_UNSTABLE_ROWS",
     "MEMO_SECTIONS",
     "ROUND_OFF",
@@ -242,6 +246,83 @@ VERIFICATION: tuple[tuple[str, str, str, str], ...] = (
      "exact", "test_vehicle_pipeline::test_memo_roots_in_regions_hand_made_table"),
 )
 
+#: The same for a ``[[vehicle.segments]]`` case: the rigid pitch (the memo's Mathieu numerics),
+#: then the vehicle model (mass, liquid, slosh, pressure, stiffeners, prestate, regions).
+VEHICLE_VERIFICATION: tuple[tuple[str, str, str, str], ...] = (
+    *(row for row in VERIFICATION if row[3].startswith("test_pitch::test_")
+      and "memo_formula" not in row[3]),
+    ("vehicle mass, centre of mass, I_cm", "the defining integrals by an independent "
+     "quadrature, each contribution and the total", "1e-10 relative",
+     "test_vehicle_mass::test_mass_properties_match_an_independent_quadrature"),
+    ("rigid pitch under the follower thrust", "F0 d K / I_cm (memo eq. 4.2-1) from the mass "
+     "properties", "1e-6 relative",
+     "test_vehicle_prestress::test_rigid_pitch_under_the_follower_thrust"),
+    ("liquid added mass", "separation of variables, rho_L I_n / (lambda I_n'), cylinder with "
+     "pressure-release ends", "1e-5 relative",
+     "test_liquid::test_pressure_release_added_mass_closed_form"),
+    ("wet frequencies of a full tank", "series solution of the potential between rigid "
+     "bulkheads, shear-diaphragm cylinder", "0.5 %",
+     "test_liquid::test_sd_cylinder_between_rigid_bulkheads"),
+    ("lateral added mass with a free surface", "liquid mass minus all slosh masses "
+     "(Abramson, NASA SP-106, series)", "1e-4 relative",
+     "test_liquid::test_free_surface_lateral_added_mass_is_liquid_minus_all_slosh_masses"),
+    ("first slosh frequency and mass", "Abramson, NASA SP-106: omega^2 = (a xi_1 / R) "
+     "tanh(xi_1 h / R)", "1e-3 (frequency), 1e-2 (mass) relative",
+     "test_liquid::test_slosh_cylinder_abramson"),
+    ("pressurised shell frequencies", "Donnell 3x3 eigenproblem with N_x = p R / 2, "
+     "N_theta = p R", "0.5 %", "test_pressure::test_pressurised_cylinder_matches_3x3_eigenproblem"),
+    ("stiffened shell frequencies", "smeared rings and stringers (Baruch-Singer), Sanders 3x3 "
+     "eigenproblem", "0.5 %",
+     "test_stiffeners::test_stiffened_cylinder_matches_smeared_closed_form"),
+    *(row for row in VERIFICATION if row[3].startswith("test_vehicle_regions::")),
+)
+
+#: The forced response's checks (a case with one).
+FORCED_VERIFICATION: tuple[tuple[str, str, str, str], ...] = (
+    ("forced axial response (k = 0)", "membrane rod driven at its end", "1 %",
+     "test_forced_response::test_axial_end_force_matches_the_membrane_rod"),
+    ("forced lateral response (k = 1)", "Timoshenko tube driven at its end", "1 %",
+     "test_forced_response::test_lateral_end_force_matches_the_timoshenko_tube"),
+    ("forced resonance peak", "solve_ivp of the reduced equations to steady state (rtol "
+     "1e-10)", "1e-6 relative",
+     "test_forced_response::test_peak_matches_time_integration_of_the_modal_equations"),
+)
+
+#: The flight's checks (a case with ``[flight]``).
+FLIGHT_VERIFICATION: tuple[tuple[str, str, str, str], ...] = (
+    ("frozen-time regions", "the single-case analysis of the same vehicle", "bit for bit",
+     "test_flight_pipeline::test_constant_flight_equals_the_single_case"),
+    ("e-folds over the flight", "growth rate x duration, a constant vehicle", "1e-12 relative",
+     "test_flight_pipeline::test_constant_flight_efolds_are_rate_times_duration"),
+    ("slow passage through a region", "direct integration of the non-periodic equation "
+     "(solve_ivp DOP853, rtol 1e-10)", "5 % in log amplitude",
+     "test_flight_passage::test_slow_passage_through_the_principal_region_matches_direct_"
+     "integration"),
+    ("peak of a sweep through resonance", "direct integration (solve_ivp DOP853, rtol 1e-10)",
+     "2 %", "test_flight_passage::test_sweep_peak_matches_direct_integration"),
+    ("mode tracking through a crossing", "two-DOF system with fixed shapes (closed form)",
+     "1e-10 relative", "test_flight_tracking::test_two_dof_crossing_frequencies_keep_identities"),
+)
+
+
+def verification_rows(results: Results) -> tuple[tuple[str, str, str, str], ...]:
+    """The verification summary's rows for these results: the memo's checks for a
+    ``[booster]`` case, the vehicle model's for a ``[[vehicle.segments]]`` one, then those of
+    the forced response and of the flight where the case has them.
+
+    Parameters
+    ----------
+    results : Results
+        The analysis.
+    """
+    rows = VERIFICATION if results.not_applicable is None else VEHICLE_VERIFICATION
+    if results.forced_response is not None:
+        rows += FORCED_VERIFICATION
+    if results.flight is not None:
+        rows += FLIGHT_VERIFICATION
+    return rows
+
+
 _CSS = """
 body{font-family:system-ui,-apple-system,"Segoe UI",Roboto,Helvetica,Arial,sans-serif;
 margin:0 auto;max-width:1300px;padding:1em 2em;color:#1d1d1f;line-height:1.4}
@@ -361,7 +442,13 @@ def inline_svg(svg: str, prefix: str, label: str) -> str:
     )
 
 
-def _figure(name: str, svgs: Mapping[str, str] | None, caption: str | None = None) -> str:
+def _figure(name: str, svgs: Mapping[str, str] | None, caption: str | None = None, *,
+            drawable: bool = True) -> str:
+    """The figure ``name`` inline with its caption; without its SVG a note that it was not
+    drawn, and nothing where this case has no such figure (``drawable`` false: its data is not
+    part of the results)."""
+    if not drawable:
+        return ""
     caption = FIGURES[name][1] if caption is None else caption
     if not svgs or name not in svgs:
         return f'<p class="note">Figure "{_e(name)}" was not drawn (run without --no-figures).</p>'
@@ -395,6 +482,15 @@ def _beam(results: Results, svgs: Mapping[str, str] | None) -> str:
     return table + _figure("beam-modes", svgs)
 
 
+def _has_chart(results: Results, part: str) -> bool:
+    """Whether the case has the memo's figure ``part`` (a field of its figure data): never in a
+    ``[[vehicle.segments]]`` case (the memo's method not applicable), always in a run without
+    figure data (its note says so), else where that stage's chart was computed."""
+    if results.not_applicable is not None:
+        return False
+    return results.figures is None or getattr(results.figures, part) is not None
+
+
 def _verdict(text: str, stable: bool) -> str:
     cls = "ok" if stable else "bad"
     return f'<p>Verdict: <span class="verdict {cls}">{_e(text)}</span></p>'
@@ -423,7 +519,8 @@ def _pitch(results: Results, svgs: Mapping[str, str] | None) -> str:
               b.growth_rate_max, b.critical_gamma) for b in bands[:50]], (True,) * 7)
         if len(bands) > 50:
             out += f'<p class="note">First 50 of {len(bands)} bands.</p>'
-    return out + _figure("ince-strutt", svgs) + _figure("pitch-band-chart", svgs)
+    return out + _figure("ince-strutt", svgs, drawable=_has_chart(results, "ince_strutt")) + \
+        _figure("pitch-band-chart", svgs, drawable=_has_chart(results, "pitch_band_chart"))
 
 
 def _beam_action(results: Results) -> str:
@@ -624,12 +721,12 @@ def _forced_table(results: Results) -> str:
                          tuple(i > 0 for i in keep))
 
 
-def _verification() -> str:
+def _verification(results: Results) -> str:
     return ("<p>Every number of this report is produced by code that the test suite checks "
             "against an independent computation (not against the memo, which prints no "
             "numbers). Run <code>make test</code> to repeat the checks.</p>"
             + _table(("quantity", "checked against", "tolerance", "test (tests/...)"),
-                     VERIFICATION, (False,) * 4))
+                     verification_rows(results), (False,) * 4))
 
 
 def _warnings(results: Results) -> str:
@@ -749,14 +846,15 @@ def render_report(results: Results, svgs: Mapping[str, str] | None = None,
         "frequencies": lambda: _frequencies(results),
         "beam-modes": lambda: _beam(results, svgs),
         "rigid-body": lambda: _pitch(results, svgs),
-        "beam-action": lambda: _beam_action(results) + _figure("beam-action-chart", svgs),
+        "beam-action": lambda: _beam_action(results) + _figure(
+            "beam-action-chart", svgs, drawable=_has_chart(results, "beam_action_chart")),
         "shell-frequencies": lambda: _shell(results, svgs),
         "nodal-patterns": lambda: _figure("nodal-patterns", svgs),
         "unstable-frequencies": lambda: _unstable(results),
-        "campbell": lambda: _figure("campbell", svgs),
+        "campbell": lambda: _figure("campbell", svgs, drawable=_has_chart(results, "campbell")),
         "vehicle-regions": lambda: _vehicle_regions(results, svgs),
         "forced-response": lambda: _forced_response(results, svgs),
-        "verification": _verification,
+        "verification": lambda: _verification(results),
         "warnings": lambda: _warnings(results),
         "vehicle-modes": lambda: _vehicle(results, svgs),
         "flight": lambda: flight_report_html(results.flight) + _figure(
