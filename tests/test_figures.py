@@ -198,6 +198,18 @@ def test_danger_map_draws_the_vehicle_responses_numbered_as_listed():
         else:
             assert ax is fig.axes[0] and y == pytest.approx(item.growth_rate)
 
+    # the operating range 8-16 Hz is under a decade, with a single 1-2-5 tick (10) in view:
+    # the frequency axis is labelled with round linear steps, at least three, all in view
+    # and placed at their values
+    for ax in fig.axes:
+        lo, hi = ax.get_xlim()
+        ticks = [(t.get_loc(), t.label1.get_text()) for t in ax.xaxis.get_major_ticks()
+                 if lo <= t.get_loc() <= hi and t.label1.get_text()]
+        assert len(ticks) >= 3, ticks
+        for loc, text in ticks:
+            assert float(text) == pytest.approx(loc, rel=1e-12)
+            assert float(text) == pytest.approx(round(float(text) * 2) / 2)  # round numbers
+
 
 def test_danger_map_without_bands_says_so():
     from flexbooster.present.plotting.danger import danger_map

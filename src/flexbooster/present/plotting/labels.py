@@ -39,8 +39,9 @@ def superscript(text: object) -> str:
 
 
 def plain_log_ticks(axis, *, minor_marks: bool = True) -> None:
-    """Plain numbers ("0.5", "10", "200") on a logarithmic axis, no minor labels, ticks in the
-    view only.
+    """Plain numbers ("0.5", "10", "200"; round linear steps over a view narrower than a decade
+    with fewer than three of those) on a logarithmic axis, no minor labels, ticks in the view
+    only.
 
     Parameters
     ----------
@@ -52,9 +53,9 @@ def plain_log_ticks(axis, *, minor_marks: bool = True) -> None:
     """
     from matplotlib.ticker import FuncFormatter
 
-    from .ticks import in_view_log_locator, log_minor_ticks
+    from .ticks import log_minor_ticks, plain_log_locator
 
-    axis.set_major_locator(in_view_log_locator(subs=(1.0, 2.0, 5.0)))
+    axis.set_major_locator(plain_log_locator())
     axis.set_major_formatter(FuncFormatter(lambda v, _pos: f"{v:g}"))
     log_minor_ticks(axis, marks=minor_marks)
 

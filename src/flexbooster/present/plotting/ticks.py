@@ -11,9 +11,10 @@ import numpy as np
 from matplotlib import lines as mlines
 from matplotlib import rcParams
 from matplotlib.artist import Artist
-from matplotlib.ticker import LogLocator, NullFormatter, NullLocator
+from matplotlib.ticker import LogLocator, MaxNLocator, NullFormatter, NullLocator
 
-__all__ = ["in_view_log_locator", "MinorTickMarks", "log_minor_ticks"]
+__all__ = ["in_view_log_locator", "plain_log_locator", "MinorTickMarks", "log_minor_ticks",
+           "MIN_LABELLED_TICKS"]
 
 #: Relative tolerance (of the axis' span in decades) within which a tick at the edge of the
 #: view is drawn: matplotlib's (``Axis._update_ticks``, ``_interval_contains_close``).
@@ -53,6 +54,31 @@ class _InViewLogLocator(LogLocator):
     def __call__(self):
         """The tick locations in the view (as ``LogLocator``, less those beyond the view)."""
         return _in_view(super().__call__(), self.axis.get_view_interval(), _LOCATOR_RTOL)
+
+
+#: Fewest labelled ticks of a logarithmic axis: a view narrower than a decade that holds fewer
+#: of 1, 2 and 5 x 10^n gets round linear steps instead (8, 10, 12, 14 Hz).
+MIN_LABELLED_TICKS = 3
+
+
+class _PlainLogLocator(_InViewLogLocator):
+    """1, 2 and 5 per decade in the view; where those are fewer than
+    :data:`MIN_LABELLED_TICKS`, the round numbers of ``MaxNLocator`` (steps 1, 2, 2.5, 5)."""
+
+    def __call__(self):
+        """The tick locations in the view."""
+        locs = super().__call__()
+        lo, hi = sorted(self.axis.get_view_interval())
+        if len(locs) >= MIN_LABELLED_TICKS or not (lo > 0.0 and math.isfinite(hi)):
+            return locs
+        linear = MaxNLocator(nbins=6, steps=[1, 2, 2.5, 5, 10]).tick_values(lo, hi)
+        return _in_view(linear[linear > 0.0], (lo, hi), _LOCATOR_RTOL)
+
+
+def plain_log_locator() -> _PlainLogLocator:
+    """The major ticks of a logarithmic axis with plain labels: 1, 2, 5 x 10^n in the view, or
+    round linear steps over a view too narrow for :data:`MIN_LABELLED_TICKS` of them."""
+    return _PlainLogLocator(base=10.0, subs=(1.0, 2.0, 5.0))
 
 
 def in_view_log_locator(subs) -> _InViewLogLocator:
