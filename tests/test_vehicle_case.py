@@ -1,8 +1,8 @@
-"""Issue 14 integration: the ``[vehicle]`` case table, ``flexbooster modes``, vehicle modes in run.
+"""Integration: the ``[vehicle]`` case table, ``flexbooster modes``, vehicle modes in run.
 
 Tiers:
 
-* exact: unit conversions of the issue's example table (pint, rel. 1e-12); defaults; the memo
+* exact: unit conversions of the example table (pint, rel. 1e-12); defaults; the memo
   vehicle built from ``[booster]`` is the hand-built ``Vehicle`` (two cylinders R1, 2 L1 and
   R2, 2 L2, Tech Memo 104 Fig. 1), and its k >= 2 frequencies are those of
   ``shell_of_revolution.vehicle_modes`` on that Vehicle (rel. 1e-12: the same computation
@@ -34,7 +34,7 @@ from flexbooster.errors import CaseError
 from flexbooster.model import vehicle_from_case
 from flexbooster.shell_of_revolution import Cone, Cylinder, Vehicle, vehicle_modes
 
-#: The issue's example table (issue 14, item 1), verbatim.
+#: The specification's example ``[vehicle]`` table, verbatim.
 ISSUE_TABLE = """
 [vehicle]
 E = "70 GPa"
@@ -72,7 +72,7 @@ def _small(data: dict) -> dict:
 
 
 def _with_issue_table(**changes) -> dict:
-    """The memo case with the issue's [vehicle] table in place of [booster] (one vehicle per
+    """The memo case with the example [vehicle] table in place of [booster] (one vehicle per
     case) and F0 = 0.3 MN (2.8 MN would exceed the k = 2 buckling load of this small free-free
     vehicle)."""
     data = _base()
@@ -124,7 +124,7 @@ def dump_case(data: dict) -> str:
 
 
 def test_issue_table_units_and_defaults():
-    """The issue's table: pint conversions (70 GPa = 7e10 Pa, 8 mm = 0.008 m, rel. 1e-12),
+    """The example table: pint conversions (70 GPa = 7e10 Pa, 8 mm = 0.008 m, rel. 1e-12),
     segment material = the table's, one continuous junction, the ends and theory given."""
     case = load_case(_with_issue_table())
     veh = vehicle_from_case(case)
@@ -460,7 +460,7 @@ def test_report_embeds_the_vehicle_figures(vehicle_case_file):
 @pytest.mark.slow
 def test_memo_case_results_unchanged():
     """Without [vehicle]: no vehicle stage, no vehicle_modes key, no case.vehicle key (the
-    keys of the memo case's results.json as before issue 14)."""
+    top-level keys of the memo case's results.json)."""
     data = _small(_base())
     seen = []
     results = analyze(load_case(data), figures=False, progress=seen.append)
@@ -470,8 +470,8 @@ def test_memo_case_results_unchanged():
     assert set(out) == {"schema_version", "flexbooster_version", "units", "case",
                         "mass_properties", "frequencies", "dimensionless", "beam_modes",
                         "pitch", "shell_frequencies", "beam_action", "stability",
-                        "warnings", "figures", "vehicle_regions",  # issue 15: every case
-                        "danger",  # issue 17
+                        "warnings", "figures", "vehicle_regions",  # every case
+                        "danger",
                         "forced_response", "verdict"}
 
 
@@ -503,7 +503,7 @@ def test_flat_plate_leaves_out_the_prestress():
 
 # ------------------------------------------------ masses, tanks, pressure, stiffeners
 
-#: A two-segment vehicle with every issue-32 field, in units.
+#: A two-segment vehicle with every physics field (masses, tanks, pressure, stiffeners), in units.
 PHYSICS_TABLE = """
 [vehicle]
 E = "70 GPa"
@@ -552,7 +552,7 @@ def _physics_case(**changes) -> dict:
 
 
 def test_physics_fields_units_and_vehicle():
-    """Every issue-32 field reaches the core Vehicle in SI (pint conversions: 0.2 lb/ft^2 =
+    """Every physics field reaches the core Vehicle in SI (pint conversions: 0.2 lb/ft^2 =
     0.976484 kg/m^2, 30 psi = 206842.7 Pa, 4 cm^2 = 4e-4 m^2, 2 cm^4 = 2e-8 m^4, 2 t = 2000 kg;
     rel. 1e-6); defaults: inertia and eccentricity 0, names "mass 1"."""
     veh = vehicle_from_case(load_case(_physics_case()))
@@ -601,7 +601,7 @@ PHYSICS_BAD = [  # (table changes, field, words of the rule)
 @pytest.mark.parametrize("change, field, rule", PHYSICS_BAD,
                          ids=[b[1] + ": " + b[2] for b in PHYSICS_BAD])
 def test_bad_physics_field_is_one_line_naming_it(change, field, rule):
-    """Each invalid issue-32 field: one CaseError line naming the field and the rule."""
+    """Each invalid physics field: one CaseError line naming the field and the rule."""
     data = _physics_case()
     change(data)
     _assert_one_line_error(data, field, rule)
