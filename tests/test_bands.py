@@ -87,7 +87,7 @@ def test_tongue_tips_at_gamma_zero_are_2_omega_psi_over_r():
     assert pitch.pitch_bands(w, 0.0, omega_min=1.0, omega_max=100.0) == ()
 
 
-def test_titan_pitch_bands_issue_12_numbers(titan_model):
+def test_titan_pitch_bands_specified_numbers(titan_model):
     # the band specification (Titan-class case, gamma = 0.05): pitch unstable 11.88-12.17 rad/s
     # with growth 0.075 1/s (to its rounding: +-0.005 rad/s, +-0.0005 1/s); tongues 2, 3 near
     # 2 omega_psi / 2 and 2 omega_psi / 3 (omega_psi = 6.013 rad/s) are also in the range
@@ -115,7 +115,7 @@ def test_pitch_bands_do_not_depend_on_the_grid(titan_model):
     assert coarse == fine and len(coarse) == 3
 
 
-def test_titan_pitch_band_at_gamma_0_3_issue_12():
+def test_titan_pitch_band_at_gamma_0_3():
     # the band specification: with gamma = 0.3 the first band is "~11.11-12.89 rad/s"
     # (approximate: +-0.025)
     m = model_from_case(_titan(gamma=0.3))

@@ -96,7 +96,7 @@ def test_constant_flight_efolds_are_rate_times_duration(constant):
 
 
 @pytest.mark.slow
-def test_flight_files_have_the_issue_columns(constant, tmp_path):
+def test_flight_files_have_the_documented_columns(constant, tmp_path):
     """flight-modes.csv (time_s, k, mode, hz, type) and flight-events.csv (mechanism, k,
     modes, t_start_s, t_end_s, max_growth_1_s, efolds, amplification, peak_acceleration_g,
     station), spelled out here from the README; one mode row per frozen time and present

@@ -35,7 +35,7 @@ from flexbooster.model import vehicle_from_case
 from flexbooster.shell_of_revolution import Cone, Cylinder, Vehicle, vehicle_modes
 
 #: The specification's example ``[vehicle]`` table, verbatim.
-ISSUE_TABLE = """
+EXAMPLE_TABLE = """
 [vehicle]
 E = "70 GPa"
 nu = 0.3
@@ -71,14 +71,14 @@ def _small(data: dict) -> dict:
     return data
 
 
-def _with_issue_table(**changes) -> dict:
+def _with_example_table(**changes) -> dict:
     """The memo case with the example [vehicle] table in place of [booster] (one vehicle per
     case) and F0 = 0.3 MN (2.8 MN would exceed the k = 2 buckling load of this small free-free
     vehicle)."""
     data = _base()
     del data["booster"]
     data["thrust"]["F0"] = "0.3 MN"
-    data.update(tomllib.loads(ISSUE_TABLE))
+    data.update(tomllib.loads(EXAMPLE_TABLE))
     data["vehicle"].update(changes)
     return data
 
@@ -123,10 +123,10 @@ def dump_case(data: dict) -> str:
 # --------------------------------------------------------------------------- case parsing
 
 
-def test_issue_table_units_and_defaults():
+def test_example_table_units_and_defaults():
     """The example table: pint conversions (70 GPa = 7e10 Pa, 8 mm = 0.008 m, rel. 1e-12),
     segment material = the table's, one continuous junction, the ends and theory given."""
-    case = load_case(_with_issue_table())
+    case = load_case(_with_example_table())
     veh = vehicle_from_case(case)
     assert veh.junctions == ("continuous",)
     assert (veh.aft_end, veh.fwd_end, veh.theory) == ("free", "free", "sanders")
@@ -227,7 +227,7 @@ BAD = [  # (change, field, words of the rule); the rule texts are those of vehic
 
 @pytest.mark.parametrize("change, field, rule", BAD, ids=[b[1] + ": " + b[2] for b in BAD])
 def test_bad_vehicle_field_is_one_line_naming_it(change, field, rule):
-    data = _with_issue_table()
+    data = _with_example_table()
     change(data)
     _assert_one_line_error(data, field, rule)
 
@@ -255,7 +255,7 @@ def test_bad_memo_vehicle_table(table, field, rule):
 def test_bad_vehicle_in_a_file_exits_2(tmp_path, capsys):
     """The CLI prints the CaseError as one line and exits 2 (`run` and `modes`)."""
     path = tmp_path / "bad.toml"
-    path.write_text(dump_case(_seg(_with_issue_table(), 1, radius_aft="1.4 m")))
+    path.write_text(dump_case(_seg(_with_example_table(), 1, radius_aft="1.4 m")))
     for command in ("run", "modes"):
         assert run_cli([command, str(path), "-o", str(tmp_path / "out")]) == 2
         err = capsys.readouterr().err.strip()
@@ -317,7 +317,7 @@ def test_memo_vehicle_donnell_equals_memo_shell_path():
 @pytest.fixture
 def vehicle_case_file(tmp_path):
     path = tmp_path / "vehicle.toml"
-    path.write_text(dump_case(_small(_with_issue_table(k_max=3))))
+    path.write_text(dump_case(_small(_with_example_table(k_max=3))))
     return path
 
 
@@ -478,7 +478,7 @@ def test_memo_case_results_unchanged():
 def test_thick_shell_warning_reaches_summary_and_results(tmp_path, capsys):
     """h/R = 0.1 > 1/20 on segment 1: a warning (code thick-shell, field
     vehicle.segments[1]) in results.json and in the summary; the run goes on."""
-    data = _small(_with_issue_table(k_max=2))
+    data = _small(_with_example_table(k_max=2))
     _seg(data, 1, thickness="0.1 m")
     path = tmp_path / "thick.toml"
     path.write_text(dump_case(data))
@@ -493,7 +493,7 @@ def test_thick_shell_warning_reaches_summary_and_results(tmp_path, capsys):
 def test_flat_plate_leaves_out_the_prestress():
     """A flat plate (cone of length 0) cannot carry the thrust as a membrane: the modes are
     unloaded, and the survey says so (no error)."""
-    data = _with_issue_table(k_max=2)
+    data = _with_example_table(k_max=2)
     data["vehicle"]["segments"].append({"kind": "cone", "radius_aft": "1.0 m",
                                         "radius_fwd": "0.5 m", "length": 0,
                                         "thickness": "8 mm"})
