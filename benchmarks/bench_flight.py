@@ -1,5 +1,5 @@
-"""Benchmark: one ``flexbooster run`` of a flight case against separate runs of its frozen cases
-(issue 35 item 5).
+"""Benchmark: one ``flexbooster run`` of a flight case against separate runs of its frozen
+cases.
 
 The example ``examples/flight-two-stage.toml`` with ``--stations`` frozen times, ``--k-max``
 and ``--n-modes``, timed in the same run, each command a child process (wall and CPU, the CPU
@@ -13,7 +13,7 @@ of the children included, e.g. the figure workers):
 The ratios baseline / work are printed (and, with ``--stage``, the flight stage alone
 in-process, for the record). With ``--scheduler local`` (or a scheduler's address) the work
 is also run with its frozen times on Dask, and the ratio one process / Dask is printed. The
-issue's target is 50 frozen times, k <= 20, 20 modes per k,
+target is 50 frozen times, k <= 20, 20 modes per k,
 the work under 60 s wall and >= 10x; the defaults are those sizes (many minutes on a shared
 machine; pass smaller ones for a quick look).
 

@@ -14,7 +14,7 @@ counted (their cost is printed apart):
 * ``run_sweep(spec, client=...)`` on a LocalCluster of 1 worker process, then of 2 (1 thread
   each): validation of every point, batching into tasks, transfer, result extraction, store.
 
-Goals (issue): speed-up 2 workers vs 1 >= 1.7; overhead per point (1 worker vs the loop) < 5 %.
+Goals: speed-up 2 workers vs 1 >= 1.7; overhead per point (1 worker vs the loop) < 5 %.
 Wall times on a shared machine swing with the other users' load (printed), so the CPU time of
 the client, scheduler and worker processes is printed too: the machinery's cost in CPU seconds,
 whatever the load; and the throughput of two concurrent pure-Python spin processes against one

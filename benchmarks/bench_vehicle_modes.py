@@ -1,4 +1,4 @@
-"""Benchmark: the modes of a two-stage liquid launch vehicle with its tanks (issue 32).
+"""Benchmark: the modes of a two-stage liquid launch vehicle with its tanks.
 
 Times, in the same run (best of ``--repeat``, wall and CPU), k = 0..20, 20 modes each:
   1. ``vehicle_modes`` of the wet vehicle (four tanks, lumped engines and payload, pressures,

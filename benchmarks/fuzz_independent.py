@@ -59,7 +59,7 @@ __all__: list[str] = []
 BASES = [ROOT / "src/flexbooster/data/default_case.toml",
          ROOT / "src/flexbooster/data/memo_case.toml",
          *sorted((ROOT / "examples").glob("*.toml"))]
-ESTIMATE_FACTOR = 1.5  # the acceptance: at most 0.5 % of the cases beyond it unwarned
+ESTIMATE_FACTOR = 1.5  # acceptance: at most 0.5 % of the cases beyond it unwarned
 ESTIMATE_FLOOR = 1.0  # s of CPU: below it start-up noise, not the cost model, decides
 HANG_FACTOR = 3
 _NUMBER = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*)$")

@@ -1,4 +1,4 @@
-"""Issue 18 acceptance "two runs of the default case: every output file byte-identical".
+"""Acceptance "two runs of the default case: every output file byte-identical".
 
 Runs ``python -m flexbooster run -q -o DIR`` (the embedded default case, figures, vehicle
 regions, the default worker count) twice into two temporary folders and compares every file

@@ -1,7 +1,7 @@
 """Print the tables of docs/theory/memo-vs-vehicle.md from the current code.
 
 The memo case with the pipeline's own settings: the memo table of ``analyze`` (its
-``active`` flag is severity_rel >= threshold since issue 13), the vehicle regions of the
+``active`` flag is severity_rel >= threshold), the vehicle regions of the
 pipeline's stage (``analyze_vehicle_regions``: k = 1..10, ``vehicle.n_modes`` = 20 modes per k,
 damping ratio 0.01, k = 1 with the gimbal gain), the same map undamped and with small damping
 ratios, and the memo roots inside the undamped regions (``memo_roots_in_regions``).

@@ -18,8 +18,8 @@ def _sigint_raises_keyboard_interrupt():
 
     A non-interactive shell starts a background job (``make test &``, ``nohup``) with SIGINT
     ignored (POSIX), Python then installs no KeyboardInterrupt handler, and the ignore is
-    inherited by every ``flexbooster`` the tests start: the tests that interrupt a run (issue
-    18) then saw exit 0 instead of 130.  The flexbooster command itself is right to keep an
+    inherited by every ``flexbooster`` the tests start: the tests that interrupt a run would
+    then see exit 0 instead of 130.  The flexbooster command itself is right to keep an
     inherited ignore (a background job must not die by the terminal's Ctrl-C); the tests need
     the interactive disposition, which a child started from here inherits as SIG_DFL.
     """

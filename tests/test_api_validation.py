@@ -463,10 +463,10 @@ def test_public_function_rejects_bad_argument_naming_it(alarm, name, call):
 
 
 
-#: Issue 36's bad library calls (an independent review's 103): (id, exception type, the
-#: parameter the message must name, call). Each was accepted, returned inf, hung, or raised
-#: another type (noted); the expected rule is the function's documented contract.
-ISSUE36_CALLS = [
+#: Bad library calls (from an independent review's 103): (id, exception type, the parameter
+#: the message must name, call). Each probes a failure: the call accepted, an inf returned, a
+#: hang, or another exception type (noted); the expected rule is the function's documented contract.
+TYPED_BAD_CALLS = [
     ("mass_properties-h-above-R", ValueError, "h",
      lambda: geo.mass_properties(**{**_G, "h": 6.0})),  # accepted: h > R1 = 5
     ("mass_properties-R1-str", ValueError, "R1",
@@ -506,11 +506,11 @@ ISSUE36_CALLS = [
 ]
 
 
-@pytest.mark.parametrize(("kind", "name", "call"), [c[1:] for c in ISSUE36_CALLS],
-                         ids=[c[0] for c in ISSUE36_CALLS])
-def test_issue36_bad_call_raises_the_documented_type_naming_the_parameter(alarm, kind, name,
+@pytest.mark.parametrize(("kind", "name", "call"), [c[1:] for c in TYPED_BAD_CALLS],
+                         ids=[c[0] for c in TYPED_BAD_CALLS])
+def test_bad_call_raises_the_documented_type_naming_the_parameter(alarm, kind, name,
                                                                           call):
-    """Source: issue 36's list; a ValueError (a TypeError for a wrong type) on one line naming
+    """Source: the list above; a ValueError (a TypeError for a wrong type) on one line naming
     the parameter, without a RuntimeWarning (no silent inf) and without a hang (alarm)."""
     with warnings.catch_warnings():
         warnings.simplefilter("error", RuntimeWarning)

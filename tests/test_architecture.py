@@ -164,7 +164,7 @@ def test_core_imports_numpy_and_scipy_only_at_run_time():
 
 @pytest.mark.slow
 def test_default_analysis_imports_neither_dask_nor_scipy_optimize():
-    # a sixth and a fifth of a run's start (issue 11): scipy.optimize (with scipy.interpolate)
+    # a sixth and a fifth of a run's start: scipy.optimize (with scipy.interpolate)
     # is imported only where a root is solved (a pitch tongue in the range, a flutter
     # thrust), and pint without dask (flexbooster.units._pint); dask still imports afterwards
     code = (

@@ -1,10 +1,10 @@
-"""Instability bands from their boundaries (issue 12): rigid-body pitch and beam action.
+"""Instability bands from their boundaries: rigid-body pitch and beam action.
 
 Tiers: exact limits and closed forms (series of the transition curves, the Mathieu tongue
-centres, Bolotin's critical amplitude), literature values (issue 12's Titan-class numbers,
-Beal's follower flutter load), invariants (the band edges against a fine local scan with an
-independent integrator; the pitch from the transition curves against the Floquet toolkit with
-1 x 1 matrices).  Every expected value names its source and tolerance.
+centres, Bolotin's critical amplitude), reference values (the band specification's Titan-class
+numbers, Beal's follower flutter load), invariants (the band edges against a fine local scan
+with an independent integrator; the pitch from the transition curves against the Floquet
+toolkit with 1 x 1 matrices).  Every expected value names its source and tolerance.
 """
 
 from __future__ import annotations
@@ -45,7 +45,7 @@ TITAN = Path(__file__).parent / "data" / "cases" / "titan-inch-pound.toml"
 
 def _titan(**thrust):
     data = tomllib.loads(TITAN.read_text())
-    data["thrust"]["n_omega"] = 40  # issue 12: the bands must not depend on the grid
+    data["thrust"]["n_omega"] = 40  # the bands must not depend on the grid
     data["thrust"].update(thrust)
     data["damping"] = {"modal_ratio": 0.0}  # the memo's undamped idealisation
     return load_case(data)
@@ -87,9 +87,9 @@ def test_tongue_tips_at_gamma_zero_are_2_omega_psi_over_r():
     assert pitch.pitch_bands(w, 0.0, omega_min=1.0, omega_max=100.0) == ()
 
 
-def test_titan_pitch_bands_issue_12_numbers(titan_model):
-    # issue 12 (Titan-class case, gamma = 0.05): pitch unstable 11.88-12.17 rad/s with growth
-    # 0.075 1/s (the issue's rounding: +-0.005 rad/s, +-0.0005 1/s); tongues 2, 3 near
+def test_titan_pitch_bands_specified_numbers(titan_model):
+    # the band specification (Titan-class case, gamma = 0.05): pitch unstable 11.88-12.17 rad/s
+    # with growth 0.075 1/s (to its rounding: +-0.005 rad/s, +-0.0005 1/s); tongues 2, 3 near
     # 2 omega_psi / 2 and 2 omega_psi / 3 (omega_psi = 6.013 rad/s) are also in the range
     res = pitch.pitch_analysis(titan_model.Omega, titan_model.omega_psi, titan_model.gamma)
     bands = {b.order: b for b in res.bands}
@@ -106,7 +106,7 @@ def test_titan_pitch_bands_issue_12_numbers(titan_model):
 
 
 def test_pitch_bands_do_not_depend_on_the_grid(titan_model):
-    # issue 12: the bands come from the range only: 40 and 4000 grid points give identical
+    # the bands come from the range only: 40 and 4000 grid points give identical
     # edges and growth rates (exact equality)
     w, g = titan_model.omega_psi, titan_model.gamma
     lo, hi = titan_model.omega_range
@@ -115,8 +115,9 @@ def test_pitch_bands_do_not_depend_on_the_grid(titan_model):
     assert coarse == fine and len(coarse) == 3
 
 
-def test_titan_pitch_band_at_gamma_0_3_issue_12():
-    # issue 12: with gamma = 0.3 the first band is "~11.11-12.89 rad/s" (approximate: +-0.025)
+def test_titan_pitch_band_at_gamma_0_3():
+    # the band specification: with gamma = 0.3 the first band is "~11.11-12.89 rad/s"
+    # (approximate: +-0.025)
     m = model_from_case(_titan(gamma=0.3))
     b1 = [b for b in pitch.pitch_analysis(m.Omega, m.omega_psi, 0.3).bands if b.order == 1][0]
     assert b1.Omega_lo == pytest.approx(11.11, abs=0.025)
@@ -136,7 +137,7 @@ def _scan_edge(stable, edge: float, width: float, rel: float = 1e-6) -> float:
 def test_titan_pitch_bands_match_fine_scan(titan_model):
     # invariant: each exact edge against a local scan of the Floquet exponent (Magnus
     # integration, method "floquet": independent of the transition curves) with spacing 1e-6
-    # relative: they agree to one spacing (1e-6 relative), as issue 12 asks of a fine scan
+    # relative: they agree to one spacing (1e-6 relative), as required of a fine scan
     w, g = titan_model.omega_psi, titan_model.gamma
     res = pitch.pitch_analysis(titan_model.Omega, w, g)
 
@@ -240,8 +241,8 @@ def titan_beam_bands(titan_model):
 
 
 def test_titan_beam_action_band_at_2_omega_1(titan_beam_bands):
-    # issue 12: beam action unstable near 264.87 rad/s = 2 omega_1 (simple resonance of the
-    # first elastic mode, order 1); the issue's rounding: +-0.01 rad/s
+    # the band specification: beam action unstable near 264.87 rad/s = 2 omega_1 (simple
+    # resonance of the first elastic mode, order 1); to its rounding: +-0.01 rad/s
     system, bands = titan_beam_bands
     simple = [b for b in bands
               if b.kind == "simple" and b.order == 1 and [m.index for m in b.modes] == [1]]
@@ -380,10 +381,9 @@ def test_beal_follower_flutter_is_the_gamma_zero_limit_of_the_regions():
     # the N-mode Galerkin value p_N (N = 8) converges from above.  Just above it (1e-3
     # relative) the steady system itself is unstable: one "steady" region over the whole
     # range at gamma -> 0 (1e-9); just below, no steady region, only the parametric regions of
-    # order 1, ~1e-8 of their centre wide at gamma = 1e-9.  (Before the narrow-region search
-    # of issue 12's leftovers they were below the monodromy's round-off floor and this test
-    # asserted "no region at all".)  Their widths are the first-order ones, Bolotin's
-    # |Bt_ii| / omega_i (simple) and Hsu's sqrt(|Bt_ik Bt_ki| / (omega_i omega_k))
+    # order 1, ~1e-8 of their centre wide at gamma = 1e-9 (below the monodromy's round-off
+    # floor: the narrow-region search finds them).  Their widths are the first-order ones,
+    # Bolotin's |Bt_ii| / omega_i (simple) and Hsu's sqrt(|Bt_ik Bt_ki| / (omega_i omega_k))
     # (combination), exact to O(gamma) = 1e-9: asserted to 1e-5 relative (measured 4e-7)
     N = 8
     p_n = follower_flutter_load(N)
@@ -436,7 +436,7 @@ def test_beam_damping_shrinks_regions_and_sets_critical_gamma():
 # --------------------------------------------------------------------------------------------
 @pytest.mark.slow
 def test_results_json_holds_the_bands(memo_results):
-    # the verdicts follow from the bands (issue 12): beam action "unstable" iff a band exists;
+    # the verdicts follow from the bands: beam action "unstable" iff a band exists;
     # the memo case's pitch tongues lie below its range (2 omega_psi = 2.4 < 5 rad/s)
     d = json.loads(json.dumps(memo_results.to_dict(), allow_nan=False))
     ba = d["beam_action"]
@@ -474,7 +474,7 @@ def test_beam_action_chart_tips_are_the_resonance_centres(memo_case_dict):
 
 def test_pitch_band_chart_traces_the_titan_tongues(titan_model):
     # the tongue tips are at 2 omega_psi / r (exact, gamma = 0) and at gamma = 0.3 (a level of
-    # the 46-level grid) the first tongue's edges are the issue's ~11.11-12.89 rad/s (+-0.025)
+    # the 46-level grid) the first tongue's edges are the specified ~11.11-12.89 rad/s (+-0.025)
     from flexbooster.memo.charts import pitch_band_chart
 
     chart = pitch_band_chart(titan_model)

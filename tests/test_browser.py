@@ -136,7 +136,7 @@ def _viewport(browser) -> tuple[int, int]:
 
 
 def test_first_screen_holds_verdicts_and_ranked_table(loaded):
-    # acceptance of issue 17: at 1400 x 900 the first screen (no scrolling) shows the verdict
+    # acceptance: at 1400 x 900 the first screen (no scrolling) shows the verdict
     # table and the whole ranked-band table; the viewport height is what the window leaves
     # (about 900 px minus the browser chrome, none in headless mode)
     loaded.execute_script("window.scrollTo(0, 0);")

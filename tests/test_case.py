@@ -68,7 +68,7 @@ def test_unit_conversion(value, kind, expected):
         ("12 s", "length", "wrong dimension"),
         ("3 kg", "pressure", "wrong dimension"),
         ("12 ++ //", "length", "cannot read"),
-        # what pint would read other than as meant (issue 36)
+        # what pint would read other than as meant
         ("5,05 m", "length", "comma"),  # pint: 505 m
         ("1,5e6 psi", "pressure", "comma"),
         ("mm 20", "length", "must start with a number"),  # pint: 0.02 m

@@ -29,10 +29,10 @@ def test_run_memo_writes_results(tmp_path, capsys):
     assert {"ince-strutt.svg", "ince-strutt.png", "campbell.svg"} <= names
     assert {"report.html", "nodal-patterns.svg"} <= names
     report = (tmp_path / "report.html").read_text()
-    assert {"pitch-band-chart.svg", "beam-action-chart.svg"} <= names  # issue 12 charts
-    assert {"vehicle-regions.csv", "vehicle-regions.svg"} <= names  # issue 15
+    assert {"pitch-band-chart.svg", "beam-action-chart.svg"} <= names  # the band charts
+    assert {"vehicle-regions.csv", "vehicle-regions.svg"} <= names  # the vehicle regions
     assert {"forced-response.csv", "forced-acceleration.svg", "forced-envelopes.svg"} <= names
-    # 9 figures + the danger map (issue 17) + the forced response's two (issue 34)
+    # 9 figures + the danger map + the forced response's two
     assert report.count("<svg") == 12 and 'id="unstable-frequencies"' in report
     assert not [n for n in names if n.endswith(".part")]  # no temporary leftovers
 
@@ -152,7 +152,7 @@ def test_stability_command(tmp_path, capsys):
 
 
 def test_stability_command_bad_range(capsys):
-    # issue 17: the option is named as the option, not as the case field
+    # the option is named as the option, not as the case field
     assert run_cli(["stability", "--omega-min", "300", "--omega-max", "100"]) == 2
     err = capsys.readouterr().err.strip()
     assert err == ("flexbooster: error: --omega-min = '300': must be smaller than "
@@ -258,7 +258,7 @@ def _bar_text(monkeypatch, tmp_path, memo_case_dict, *options):
 
 def test_progress_bar_shows_the_estimate_and_flags_half_the_budget(monkeypatch, tmp_path,
                                                                    memo_case_dict, capsys):
-    """Issue 18: the bar shows the run's estimated time (cost.estimate_cost of the stages
+    """The bar shows the run's estimated time (cost.estimate_cost of the stages
     run, computed here independently); over half the budget it says so, and the results have
     the cost-estimate warning."""
     import flexbooster
@@ -281,7 +281,7 @@ def test_progress_bar_shows_the_estimate_and_flags_half_the_budget(monkeypatch, 
 
 @pytest.mark.slow
 def test_two_runs_write_byte_identical_files(tmp_path, memo_case_dict, capsys):
-    """Determinism (issue 18 item 5): no time stamp in report.html (unless SOURCE_DATE_EPOCH),
+    """Determinism: no time stamp in report.html (unless SOURCE_DATE_EPOCH),
     no date in the SVG metadata, fixed SVG ids: two runs of one case give the same bytes."""
     memo_case_dict["truncation"].update(M1=3, N1=3, M2=3, N2=3, N=3, S=2, R=2)
     memo_case_dict["thrust"]["n_omega"] = 40
@@ -321,7 +321,7 @@ def test_output_that_is_a_file_is_refused_before_the_analysis(tmp_path, capsys, 
 
 
 def _edited_default(tmp_path, old: str, new: str):
-    """The memo case file with one line edited (the error cases of issue 17)."""
+    """The memo case file with one line edited (the error cases of test_error_lines)."""
     from flexbooster.case import memo_case_text
 
     text = memo_case_text()
@@ -331,7 +331,7 @@ def _edited_default(tmp_path, old: str, new: str):
     return path
 
 
-# Expected lines: issue 17 item 5 (the value once, the option named as the option, a misspelt
+# Expected lines (the value once, the option named as the option, a misspelt
 # key with a difflib suggestion, a misspelt table without dumping its contents); exact text.
 @pytest.mark.parametrize(
     ("edit", "argv", "line"),
@@ -362,8 +362,8 @@ def test_error_lines(tmp_path, capsys, edit, argv, line):
 
 @pytest.mark.slow
 def test_stability_never_replaces_half_of_a_run(tmp_path, capsys, small_memo_case_file):
-    # issue 17 item 5: `stability -o DIR` used to replace the CSV of a run in DIR while its
-    # results.json kept the old numbers; now it writes files of its own, on the case's range
+    # `stability -o DIR` writes files of its own, on the case's range: it never replaces the
+    # CSV of a run in DIR (the run's results.json would no longer match it)
     from flexbooster.cli import STABILITY_FILES
 
     out = tmp_path / "out"
@@ -380,7 +380,7 @@ def test_stability_never_replaces_half_of_a_run(tmp_path, capsys, small_memo_cas
 
 @pytest.mark.slow
 def test_simulate_time_as_a_quantity_quiet_and_json(tmp_path, capsys):
-    # issue 17: --t-max "T s" is tau_max = omega_1 T (memo 3.0): the same time histories as
+    # --t-max "T s" is tau_max = omega_1 T (memo 3.0): the same time histories as
     # --tau-max omega_1 T (to the CSV's printed digits); --quiet prints nothing; --format json
     # prints simulation.json and nothing else on standard output
     from flexbooster.case import memo_case
@@ -412,7 +412,7 @@ def test_simulate_time_as_a_quantity_quiet_and_json(tmp_path, capsys):
     ],
 )
 def test_simulate_time_errors(capsys, extra, line):
-    # expected lines: issue 17 (time as a quantity, the option named)
+    # expected lines: time as a quantity, the option named
     assert run_cli(["simulate", "--omega", "300", *extra]) == 2
     assert capsys.readouterr().err.strip() == f"flexbooster: error: {line}"
 
@@ -461,7 +461,7 @@ def test_the_command_runs_one_blas_thread_unless_the_user_chose(user, expected):
 
 @pytest.mark.slow
 def test_short_summary_by_default(tmp_path, capsys, small_memo_case_file, monkeypatch):
-    """flexbooster run (issue 33): the overall verdict on line 1, the damping stated, no input
+    """flexbooster run: the overall verdict on line 1, the damping stated, no input
     table (those with --full), one line for the files and "open OUT/report.html" last; piped
     at COLUMNS=80 no line is wider than 80 columns and no cell is cut."""
     monkeypatch.setenv("COLUMNS", "80")
@@ -495,9 +495,9 @@ def test_a_fault_of_the_summary_loses_no_result(tmp_path, capsys, monkeypatch,
 
 
 def test_stability_names_the_files_it_writes(tmp_path, capsys, small_memo_case_file):
-    """Source: the files in the output folder after ``flexbooster stability`` (issue 36: the
-    summary named unstable-frequencies.csv and resonance-bands.csv, which it does not write):
-    every .csv name the summary prints exists there."""
+    """Source: the files in the output folder after ``flexbooster stability`` (it writes
+    neither unstable-frequencies.csv nor resonance-bands.csv): every .csv name the summary
+    prints exists there."""
     import re
 
     out = tmp_path / "out"
@@ -510,8 +510,8 @@ def test_stability_names_the_files_it_writes(tmp_path, capsys, small_memo_case_f
 
 @pytest.mark.slow
 def test_simulate_lists_the_10_largest_in_10_lines(tmp_path, capsys, small_memo_case_file):
-    """Source: the header "the N largest" (issue 36: 13 lines under "the 10 largest"): exactly
-    min(10, relevant) indented rows follow it."""
+    """Source: the header "the N largest": exactly min(10, relevant) indented rows follow it,
+    no more."""
     out = tmp_path / "sim"
     assert run_cli(["simulate", str(small_memo_case_file), "--omega", "300", "--tau-max", "50",
                     "-o", str(out)]) == 0
@@ -525,7 +525,7 @@ def test_simulate_lists_the_10_largest_in_10_lines(tmp_path, capsys, small_memo_
 def test_simulate_inside_a_beam_action_band_is_refused(tmp_path, capsys, small_memo_case_file):
     """Source: the small case's beam-action band 114.6729..114.6843 rad/s (growth 2.8e-3 1/s,
     beam_action_bands): alpha_1 is complex there, the motion grows and the bounded Floquet
-    form cannot show it (issue 36: its real part was used, showing the motion bounded). One
+    form cannot show it (its real part would show the motion bounded). One
     line naming --omega, exit 2."""
     assert run_cli(["simulate", str(small_memo_case_file), "--omega", "114.678", "--tau-max", "50",
                     "-o", str(tmp_path / "sim")]) == 2

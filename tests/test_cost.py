@@ -191,7 +191,7 @@ def test_damped_band_estimate_within_1_5x_of_the_counted_steps(monkeypatch):
     tests/data/damped_bands_reference.json): the steps of the damped band search (seeds,
     damped regions, critical gamma), counted while it runs, against the up-front
     cost.damped_band_steps from the candidates' step counts: the estimate at least the count
-    and at most 1.5x it (issue acceptance: no run over 1.5x its estimate; measured 1.2)."""
+    and at most 1.5x it (acceptance: no run over 1.5x its estimate; measured 1.2)."""
     ref = json.loads((Path(__file__).parent / "data" / "damped_bands_reference.json")
                      .read_text())
     model = model_from_case(flexbooster.load_case(ref["case"]))

@@ -35,7 +35,7 @@ def _growth_ivp(zeta: float, omega: float) -> float:
 def test_mathieu_critical_damping_against_an_independent_floquet_computation():
     # the principal region about Omega = 2 W; the reference: brentq in zeta of the growth
     # maximised over Omega (scipy, bounded, xatol 1e-7) with the solve_ivp monodromy; the
-    # issue's tolerance, 1e-4 relative
+    # required accuracy, 1e-4 relative
     lo, hi = 19.4, 20.6  # contains the undamped region (19.497..20.497, the toolkit's search)
     regions = floquet.instability_regions(np.eye(1), None, np.array([[W * W]]),
                                           np.array([[-GAMMA * W * W]]), 15.0, 25.0)

@@ -98,7 +98,7 @@ def test_two_passages_and_two_bands_worst_first():
 
 
 def test_constant_system_and_oscillation_efolds_are_rate_times_duration():
-    """Acceptance (issue 35), exact: a damped Mathieu mode (M = 1, C = 2 zeta w, A = w^2,
+    """Acceptance, exact: a damped Mathieu mode (M = 1, C = 2 zeta w, A = w^2,
     B = -2 mu w^2, w = 30 rad/s, mu = 0.1, zeta = 0.01) under Omega = 2 w at every frozen
     time: its Floquet growth rate (flexbooster.floquet.growth_rate) times the 80 s duration;
     tolerance 1e-12 relative."""
@@ -224,7 +224,7 @@ def test_band_peak_is_the_steady_peak_inside_the_event():
 
 
 def test_event_row_has_the_csv_columns():
-    """The flight-events.csv row: exactly the issue's columns, in order, JSON types."""
+    """The flight-events.csv row: exactly the README's columns, in order, JSON types."""
     e = FlightEvent(mechanism="vehicle", k=2, modes="bending 1", t_start_s=1.0, t_end_s=2.5,
                     max_growth_1_s=0.3, efolds=0.2, amplification=math.exp(0.2))
     row = e.to_dict()

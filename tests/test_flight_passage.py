@@ -177,7 +177,7 @@ def _ivp_peak(omega, zeta, f, Om0, Om1, T):
 def test_sweep_peak_matches_direct_integration(Om0, Om1, T):
     """Independent model: the peak of q'' + 2 zeta w q' + w^2 q = f cos(phi), phi' linear,
     w = 2 rad/s, zeta = 0.02, f = 3, upward and a faster downward sweep, against solve_ivp
-    DOP853 rtol 1e-10 from the same steady start; tolerance 2 % (the issue's), and the
+    DOP853 rtol 1e-10 from the same steady start; tolerance 2 % (the required accuracy), and the
     peak below the steady one f / (2 zeta sqrt(1 - zeta^2) w^2)."""
     r = sweep_passage(omega=2.0, zeta=0.02, force=3.0, Omega_start=Om0, Omega_end=Om1,
                       duration=T)

@@ -4,7 +4,7 @@
 Evidence: an exact limit (a constant vehicle and a constant oscillation: the flight equals the
 single-case analysis and the e-folds are rate x duration), an independent physical fact for
 the tracking (an inviscid liquid adds no torsional mass: the torsional mode stays put while the
-axial modes rise through it), the file columns of issue 35, and bad-field probes.
+axial modes rise through it), the file columns the README lists, and bad-field probes.
 """
 
 from __future__ import annotations
@@ -96,11 +96,11 @@ def test_constant_flight_efolds_are_rate_times_duration(constant):
 
 
 @pytest.mark.slow
-def test_flight_files_have_the_issue_columns(constant, tmp_path):
-    """Issue 35 item 4: flight-modes.csv (time_s, k, mode, hz, type) and flight-events.csv
-    (mechanism, k, modes, t_start_s, t_end_s, max_growth_1_s, efolds, amplification,
-    peak_acceleration_g, station), spelled out here from the issue; one mode row per frozen
-    time and present mode."""
+def test_flight_files_have_the_documented_columns(constant, tmp_path):
+    """flight-modes.csv (time_s, k, mode, hz, type) and flight-events.csv (mechanism, k,
+    modes, t_start_s, t_end_s, max_growth_1_s, efolds, amplification, peak_acceleration_g,
+    station), spelled out here from the README; one mode row per frozen time and present
+    mode."""
     modes, events = write_flight_csvs(constant.flight, tmp_path)
     with modes.open() as f:
         rows = list(csv.reader(f))
@@ -141,7 +141,7 @@ def test_tracking_keeps_a_torsional_mode_through_rising_axial_modes():
     thrust's prestress, redistributed by inertia relief as the mass drains, is negligible).
     Where an axial identity crosses the torsional one, both keep their type at every time
     and the MAC between neighbouring times stays > 0.9 within two steps of the crossing
-    (issue 35 acceptance; the MAC weighted by the mean of both times' masses, structure and
+    (the MAC weighted by the mean of both times' masses, structure and
     liquid, falls as the square of the step: 61 frozen times, a fill step of 0.01, keep it
     above 0.9 where 41 give 0.89)."""
     data = copy.deepcopy(CASE)

@@ -94,7 +94,7 @@ def test_rod_with_draining_propellant_keeps_identities():
     happen) and leave the computed set of the m lowest at its top. Every identity keeps its
     type (axial share 0 or 1 to 1e-12), an axial identity's frequency is an eigenvalue of the
     separate axial rod (1e-9 relative) and rises at every step, MAC > 0.9 between
-    neighbouring times (the issue's acceptance threshold), and identities enter and leave
+    neighbouring times (the acceptance threshold), and identities enter and leave
     only among the two highest of the set."""
     n_el, m = 30, 8
     times = np.linspace(0.0, 1.0, 41)

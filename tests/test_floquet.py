@@ -44,8 +44,8 @@ def mathieu_edges(mu: float, r: int, qfac: float = 4.0) -> tuple[float, float]:
     """Exact edges in theta of region r of f'' + (1 - 2 mu cos theta t) f = 0.
 
     x = theta t / 2 maps it to y'' + (a - 2 q cos 2x) y = 0 with a = 4 / theta^2 and
-    q = 4 mu / theta^2 (derived here; the issue's q = 2 mu / theta^2, qfac = 2, is the map for
-    f'' + (1 - mu cos theta t) f = 0 and does not give its quoted mu = 0.1 numbers, see
+    q = 4 mu / theta^2 (derived here; q = 2 mu / theta^2, qfac = 2, is the map for
+    f'' + (1 - mu cos theta t) f = 0 and does not give the reference mu = 0.1 numbers, see
     test_mathieu_mapping); the edges are a = a_r(q), a = b_r(q) (DLMF 28.2(v)).
     """
     c = 2.0 / r
@@ -73,8 +73,8 @@ def random_system(n: int, seed: int, damped: bool, scale: float = 0.4):
 # Tier 1: exact limits and closed forms
 # --------------------------------------------------------------------------------------------
 def test_mathieu_mapping():
-    # The issue quotes mu = 0.1 -> [1.898848, 2.098688] (6 digits): a = 4/theta^2 with
-    # q = 4 mu/theta^2 reproduces them to 1e-6, q = 2 mu/theta^2 (the issue's) misses by 0.05.
+    # The reference mu = 0.1 -> [1.898848, 2.098688] (6 digits): a = 4/theta^2 with
+    # q = 4 mu/theta^2 reproduces it to 1e-6, q = 2 mu/theta^2 misses by 0.05.
     lo, hi = mathieu_edges(0.1, 1)
     assert abs(lo - 1.898848) < 1e-6 and abs(hi - 2.098688) < 1e-6
     lo2, hi2 = mathieu_edges(0.1, 1, qfac=2.0)
@@ -823,7 +823,7 @@ def test_bad_omega_and_options():
 
 
 # --------------------------------------------------------------------------------------------
-# The damping shortcuts of the region search (issue 15): certificate and candidate filter
+# The damping shortcuts of the region search: certificate and candidate filter
 # --------------------------------------------------------------------------------------------
 def test_search_work_is_what_the_search_integrates():
     # the cost model's input, known before the search: a steady instability (A < 0) or a

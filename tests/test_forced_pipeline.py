@@ -1,4 +1,4 @@
-"""The forced response wired into the case, the pipeline and the outputs (issue 34).
+"""The forced response wired into the case, the pipeline and the outputs.
 
 The numbers themselves are checked in tests/test_forced_response.py (closed forms, direct
 integration); here the evidence is that the case's fields reach the solver unchanged and the

@@ -1,4 +1,4 @@
-"""Property-based tests (hypothesis) over the documented input space of a case (issue 18).
+"""Property-based tests (hypothesis) over the documented input space of a case.
 
 Every valid case (each field within its documented range, small truncations so that an
 example is fast) gives finite results or a documented error (a one-line ``CaseError``:
@@ -15,7 +15,7 @@ Profiles (environment variable ``FLEXBOOSTER_FUZZ``): ``ci`` (default; a bounded
 examples so that this file stays well under 60 s on 2 cores) and ``long`` (``make fuzz``:
 1,000 valid cases with a fixed seed; the outcomes are tallied, printed, and must show 0
 internal errors, 0 NaN and 0 cases over the budget without a warning or a refusal).
-Sources of the expectations: the rules of ``flexbooster/case.py`` and the issue's acceptance.
+Sources of the expectations: the rules of ``flexbooster/case.py`` and the acceptance above.
 """
 
 from __future__ import annotations
@@ -49,7 +49,7 @@ settings.register_profile(
 #: calibrated for one free core): the check "within the budget" uses it.
 BUDGET = 60.0
 #: Budget of the cases that run the vehicle's regions (s of CPU time): a free-free vehicle's
-#: map can take minutes, the budget must bound it (issue 18), and the fuzz must end.
+#: map can take minutes, the budget must bound it, and the fuzz must end.
 REGIONS_BUDGET = 20.0
 #: A case is stopped after this many budgets (a hang; counted over the budget).
 HANG_FACTOR = 10
@@ -254,12 +254,12 @@ def _outcome(data: dict, regions: bool = False) -> str:
         signal.signal(signal.SIGALRM, previous)
 
 
-#: The warnings of a run that its budget limited or may exceed (issue 18): a case over the
+#: The warnings of a run that its budget limited or may exceed: a case over the
 #: budget with one of them is not "silently" over.
 BUDGET_WARNINGS = ("cost-estimate",)
 
 
-#: A run may take up to this multiple of its up-front estimate unwarned (issue 36 acceptance:
+#: A run may take up to this multiple of its up-front estimate unwarned (acceptance:
 #: at most 0.5 % of the valid cases beyond it).
 ESTIMATE_FACTOR = 1.5
 #: Shortest CPU time (s) judged against the estimate: below it the start-up and timer
@@ -328,7 +328,7 @@ TALLY_DETAILS: list = []
 FIELDS: collections.Counter = collections.Counter()
 
 _BAD_FLOATS = [math.nan, math.inf, -1.0, "xyz", "5 kg", 10**400,  # a 400-digit TOML int
-               # what pint would read other than as meant (issue 36)
+               # what pint would read other than as meant
                "5,05", "mm 20", "psi", "5\u200b", "\ufeff5", "5\u00a0m"]
 _BAD_INTS = [-1, 2.5, "ten", 10**6]
 _FLOAT_FIELDS = ["booster.cylinder1.radius", "booster.cylinder2.half_length",
@@ -371,8 +371,8 @@ def _report() -> None:
 
 
 def test_long_profile_report():
-    """Long profile only: 0 internal errors, 0 NaN, 0 over the budget (issue 18 acceptance),
-    at most 0.5 % of the cases over 1.5x their estimate unwarned (issue 36 acceptance)."""
+    """Long profile only: 0 internal errors, 0 NaN, 0 over the budget,
+    at most 0.5 % of the cases over 1.5x their estimate unwarned."""
     if PROFILE != "long":
         pytest.skip("the long profile is `make fuzz`")
     _report()

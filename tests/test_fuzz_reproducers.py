@@ -502,7 +502,7 @@ def test_a_band_search_past_the_toolkit_limits_is_a_case_error(monkeypatch):
 
 
 def test_fuzz_reproducer_memo_vehicle_70_km_forward_cylinder():
-    """Found by an independent fuzz (issue 36): a memo vehicle with a 70 km forward cylinder
+    """Found by an independent fuzz: a memo vehicle with a 70 km forward cylinder
     (R2 = 3.3 m: 21,000 radii) gave "refinement = 1: more than 400 elements in a segment"
     (exit 1) from the cost estimate. Source of the expectation: the automatic mesh's element
     count (shell_of_revolution.auto_element_counts: 3 radii per element, 7076 > MAX_ELEMENTS =
@@ -550,7 +550,7 @@ def test_fuzz_reproducer_segments_pitch_beyond_the_mathieu_range():
         analyze(case, figures=False)
     assert info.value.field == "thrust.F0" and "\n" not in str(info.value)
     assert "a = 4 omega_psi^2/Omega^2 = 2.39e+06" in str(info.value)
-# The free-free [vehicle] with heavy damping (issue 36): k = 1 keeps its undamped rigid pitch
+# The free-free [vehicle] with heavy damping: k = 1 keeps its undamped rigid pitch
 # (gimbal gain K > 0), so the damping certifies nothing and the harmonic is searched, with
 # hundreds of monodromy steps per period at the bottom of the Omega range.  Two of the 60
 # cases of scripts/free_free_damped_cases.py (fixed seed): index 1, the worst (past 290 s on
@@ -566,7 +566,7 @@ def _free_free_script():
 
 
 def test_fuzz_reproducer_free_free_heavy_damping_is_refused_up_front():
-    """Found by the fuzz (issue 36, 5 of 60 such cases past 60 s against estimates under 1 s):
+    """Found by the fuzz (5 of 60 such cases past 60 s against estimates under 1 s):
     the worst free-free case of the generator (damping 0.3, 2 modes, K = 2, omega_min 0.27
     rad/s).  Expected: the up-front estimate holds the k = 1 search (its candidates and steps
     per period counted by floquet.search_work, as the monodromy kernel chooses them: 7.7
@@ -595,7 +595,7 @@ def test_fuzz_reproducer_free_free_heavy_damping_steps_within_the_estimate():
     """The moderate case of the same generator (index 47: damping 0.3, 2 modes, omega_min 0.58
     rad/s): the monodromy steps the k = 1 search integrates (a counter on the step counts the
     search asks of the kernel: work, not wall time) are at most 1.5x the up-front estimate's
-    steps (cost.bending_search_steps; issue 36 acceptance: no run over 1.5x its estimate),
+    steps (cost.bending_search_steps; acceptance: no run over 1.5x its estimate),
     and the estimate is at most 4x the count (measured 2.1: 373,390 against 179,009).
     ~1 s."""
     from flexbooster.dynamics import bending_regions

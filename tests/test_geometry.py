@@ -19,7 +19,7 @@ import pytest
 from flexbooster.memo.geometry import dimensionless_groups, mass_properties, moment_of_inertia_memo
 from harness import assert_close  # noqa: E402
 
-RTOL = 1e-12  # issue 2 acceptance: agreement to 1e-12 relative
+RTOL = 1e-12  # acceptance: agreement to 1e-12 relative
 
 
 def integrate_shells(R1, L1, R2, L2, h, rho, n_x=20, n_theta=64):
@@ -155,6 +155,6 @@ def test_dimensionless_groups_values():
     ],
 )
 def test_bad_arguments_raise_naming_the_parameter(call, words):
-    # issue 18 item 6: no NaN returned silently, no garbage accepted
+    # no NaN returned silently, no garbage accepted
     with pytest.raises(ValueError, match=re.escape(words)):
         call()

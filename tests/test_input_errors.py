@@ -81,10 +81,10 @@ def test_bad_case_probe_exit_2_one_line(memo_case_dict, tmp_path, capsys, path, 
     assert err.count(head + " ") + err.count(head + ":") <= 2  # the field once (plus rule)
 
 
-#: Issue 36's bad inputs that were accepted silently or failed as internal errors: (path, value,
-#: the rule's words). Source of each "silently wrong" reading: pint 0.24 ("5,05 m" -> 505 m,
+#: Bad values that a unit parser reads silently wrong or that overflow in a solver: (path,
+#: value, the rule's words). Source of each "silently wrong" reading: pint 0.24 ("5,05 m" -> 505 m,
 #: "mm 20" -> 0.02 m, "5\u200b m" -> 5 m, "psi" -> 1 psi).
-ISSUE36_PROBES = [
+BAD_VALUE_PROBES = [
     ("booster.cylinder2.radius", "5,05 m", "comma"),
     ("booster.cylinder2.radius", "mm 20", "must start with a number"),
     ("booster.cylinder2.radius", "5\u200b m", "invisible"),
@@ -95,11 +95,11 @@ ISSUE36_PROBES = [
 ]
 
 
-@pytest.mark.parametrize(("path", "value", "rule"), ISSUE36_PROBES,
-                         ids=[f"{p}={v!r}" for p, v, _ in ISSUE36_PROBES])
-def test_issue36_bad_value_is_one_line_naming_field_value_rule(memo_case_dict, tmp_path, capsys,
+@pytest.mark.parametrize(("path", "value", "rule"), BAD_VALUE_PROBES,
+                         ids=[f"{p}={v!r}" for p, v, _ in BAD_VALUE_PROBES])
+def test_bad_value_is_one_line_naming_field_value_rule(memo_case_dict, tmp_path, capsys,
                                                                path, value, rule):
-    """Source: the issue's list; each refused before any solver (exit 2, one line, no
+    """Source: the list above; each refused before any solver (exit 2, one line, no
     RuntimeWarning) with the field, the value as written and the rule."""
     _set(memo_case_dict, path, value)
     case = tmp_path / "bad.toml"
@@ -161,7 +161,7 @@ def test_bad_option_probe_exit_2_one_line(capsys, tmp_path, argv, field):
     assert err.count(field) == 1, err
 
 
-def test_the_bad_input_table_has_the_issues_74_probes():
+def test_the_bad_input_table_has_its_74_probes():
     """Acceptance "74/74 one line, exit 2, field named once": the case-field probes
     (test_case.BAD_INPUTS and EXTRA_PROBES), the command-line probes (CLI_PROBES) and the two
     paths of test_directory_as_case_file_and_file_as_output, each a parametrized test."""
@@ -179,7 +179,7 @@ def test_directory_as_case_file_and_file_as_output(tmp_path, capsys):
 
 
 # --------------------------------------------------------------------------------------------
-# Case files that are not plain files (issue 36): one line, exit 2, never a block
+# Case files that are not plain files: one line, exit 2, never a block
 # --------------------------------------------------------------------------------------------
 def _special_case_file(folder: Path, kind: str) -> Path:
     path = folder / f"{kind}.toml"

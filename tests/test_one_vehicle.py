@@ -1,4 +1,4 @@
-"""One vehicle per case (issue 32, item 1): ``[booster]`` or ``[vehicle]`` with segments.
+"""One vehicle per case: ``[booster]`` or ``[vehicle]`` with segments.
 
 Tiers:
 
@@ -170,7 +170,7 @@ def test_t0_is_per_unit_circumference_of_the_first_segment():
 
 @pytest.mark.slow
 def test_equivalent_vehicle_gives_the_memo_vehicle_modes_and_regions():
-    """Acceptance (issue 32): the memo case as [booster] and as its equivalent [vehicle]
+    """Acceptance: the memo case as [booster] and as its equivalent [vehicle]
     give the same vehicle modes (k = 0..20, prestressed by F0) and the same vehicle regions
     (every number of VehicleRegions.to_dict) to rel. 1e-12. Source: the memo vehicle built
     from [booster] by model.vehicle_from_case."""

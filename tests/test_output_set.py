@@ -262,7 +262,7 @@ def test_two_concurrent_runs_give_one_consistent_set(tmp_path, memo_case_dict):
 
 
 # --------------------------------------------------------------------------------------------
-# Outputs checked before the analysis (issue 36): one line, the path, exit 2
+# Outputs checked before the analysis: one line, the path, exit 2
 # --------------------------------------------------------------------------------------------
 def _no_analysis(*args, **kwargs):
     raise AssertionError("the analysis started before the output was checked")

@@ -1,4 +1,4 @@
-"""The answer first (issue 17): the terminal summary and the report's first screen, the danger
+"""The answer first: the terminal summary and the report's first screen, the danger
 map, the number formats.
 
 The memo case is analysed once (about 12 s); every check reads that analysis.
@@ -34,7 +34,7 @@ def _summary_text(results, width: int, *, full: bool = True) -> str:
 @pytest.mark.slow
 @pytest.mark.parametrize("width", [80, 160])
 def test_summary_fits_without_a_cut_cell(results, width):
-    # acceptance of issue 17: at 80 columns no cell is cut (rich marks a cut with an ellipsis)
+    # acceptance: at 80 columns no cell is cut (rich marks a cut with an ellipsis)
     # and no line is wider than the terminal
     for full in (True, False):
         text = _summary_text(results, width, full=full)
@@ -43,7 +43,7 @@ def test_summary_fits_without_a_cut_cell(results, width):
 
 
 def test_first_screen_is_verdicts_then_ranked_bands(results):
-    # acceptance (issues 17, 33): line 1 is the overall verdict, the damping is stated, then
+    # acceptance: line 1 is the overall verdict, the damping is stated, then
     # the verdict of every mechanism and the top bands; the short summary (flexbooster run
     # without --full) is at most 60 lines of an 80-column terminal and the full summary starts
     # with the same first screen
@@ -56,7 +56,7 @@ def test_first_screen_is_verdicts_then_ranked_bands(results):
                   "shell resonances", "Most dangerous thrust frequencies"):
         assert words in short, words
     assert short.index("Verdicts") < short.index("Most dangerous")
-    # engineering words only (issue 33 item 5): the memo's terms stay in the detailed sections
+    # engineering words only: the memo's terms stay in the detailed sections
     for internal in ("issue", "memo roots", "certified", "family 3 (3,13)", "via u*", "(memo 4",
                      "(memo 7"):
         assert internal not in short, internal
@@ -87,7 +87,7 @@ def test_range_text_digits(lo, hi, text):
 
 
 def test_warnings_listed_on_the_first_screen(results):
-    # issue 17 item 4: the warnings are named in the summary, not only in the last section
+    # the warnings are named in the summary, not only in the last section
     w = AnalysisWarning("thin-shell", "booster.cylinder1", "h/R1 = 0.06 exceeds 1/20")
     r = dataclasses.replace(results, warnings=(w,))
     text = _summary_text(r, 80)
@@ -197,7 +197,7 @@ def test_danger_map_tooltips_and_axes(results, memo_svgs):
     assert len(set(titles)) == len(danger.bands) + len(danger.responses)
     assert {int(t[1:t.index(":")]) for t in titles} == set(range(1, len(danger.ranking) + 1))
     # the top-ranked band's tooltip is there; a region's names its growth rate, a damped
-    # resonance's its steady response (issue 33), a forced response its acceleration in g
+    # resonance's its steady response, a forced response its acceleration in g
     assert any(t.startswith("#1: Omega ") for t in titles)
     assert all("1/s" in t or " mm (severity " in t or " g at " in t for t in titles)
     assert "<script" not in svg

@@ -173,7 +173,7 @@ def test_inputs_and_results_shown_with_units(results, page):
 
 
 def test_unstable_table_active_first_and_capped(results, page):
-    """The 10 most severe bands first (issue 13), then the roots, most severe first, capped."""
+    """The 10 most severe bands first, then the roots, most severe first, capped."""
     st = results.stability
     rows = cells(parse(page), "unstable-frequencies")[1:]
     bands = rows[:10]  # the bands table (its header row is rows[0] of the section)

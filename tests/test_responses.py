@@ -234,7 +234,7 @@ def test_closed_form_matches_integration(strong, kind, d):
     closed = _closed(g, x0, nu, f, tau)
     num = r.integrate(g, ex, tau, x0, method="DOP853", rtol=1e-10)
     scale = np.abs(num).max()
-    np.testing.assert_allclose(closed, num, rtol=0, atol=1e-6 * scale)  # issue 7 criterion
+    np.testing.assert_allclose(closed, num, rtol=0, atol=1e-6 * scale)  # the acceptance criterion
     # and the resonance-safe form used by simulate, and the Duhamel integrator
     np.testing.assert_allclose(r.harmonic_response(g, ex, tau, x0), closed, rtol=0,
                                atol=1e-10 * scale)
@@ -255,7 +255,7 @@ def test_printed_phase_has_no_normal_coordinates():
 
 
 # --------------------------------------------------------------------------------------------
-# Issue 6 item 4: secular growth at the roots of the stability table
+# Secular growth at the roots of the stability table
 # --------------------------------------------------------------------------------------------
 NB, SB, RB = 2, 2, 2
 TAU_MAX = 3000.0

@@ -1,4 +1,4 @@
-"""Issue 13: severity of the roots of the stability table, bands, truncation independence.
+"""Severity of the roots of the stability table, bands, truncation independence.
 
 Tiers: exact limits and scalings (gamma = 0, linearity in gamma, psi0, beam amplitude);
 independent models (direct solve_ivp integration of the forced modal ODE with the forcing built
@@ -169,8 +169,8 @@ def _direct_rate(res, params, n):
 @pytest.mark.parametrize("family", [1, 2, 3, 4, 5, 6, 7, 8, 10, 11, 12, 13])
 def test_severity_against_direct_integration(small, family):
     """Most severe root of each family (reduced memo case) against solve_ivp of the forced
-    modal ODE, forcing by quadrature of its definition: envelope slope within 2 % (issue 13
-    acceptance); family 9 has no root in the range."""
+    modal ODE, forcing by quadrature of its definition: envelope slope within 2 % (the
+    required accuracy); family 9 has no root in the range."""
     res, params = small
     st, rate = res.stability, res.severity.roots.rate
     cand = np.flatnonzero((st.family == family) & (rate > 0))
@@ -427,8 +427,8 @@ def _keys(res, mask):
 
 @pytest.mark.slow
 def test_truncation_independence(default):
-    """Memo case, S = 3 against S = 10: the roots with severity_rel >= 1e-6 (Jaccard >= 0.9,
-    issue 13) and the top 10 bands (same peaks and modes, severity to 1e-3)."""
+    """Memo case, S = 3 against S = 10: the roots with severity_rel >= 1e-6 (Jaccard >= 0.9
+    required) and the top 10 bands (same peaks and modes, severity to 1e-3)."""
     a, b = default[10], default[3]
     ka = _keys(a, a.severity.roots.severity_rel >= 1e-6)
     kb = _keys(b, b.severity.roots.severity_rel >= 1e-6)
@@ -445,7 +445,7 @@ def test_truncation_independence(default):
 @pytest.mark.slow
 def test_default_summary_shows_the_most_severe_bands_first(default):
     """The default summary: the 10 most severe bands first, Omega in rad/s and Hz, mode
-    (cylinder, j, k, branch, type), family and its cause in words (issue 13 acceptance)."""
+    (cylinder, j, k, branch, type), family and its cause in words."""
     from rich.console import Console
 
     from flexbooster.present.summary import print_stability

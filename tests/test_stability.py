@@ -139,7 +139,7 @@ def test_same_roots_as_brute_force_scan():
 
 
 def test_every_root_satisfies_its_equation():
-    """Residual below 1e-9 in Omega/omega_1 (issue 6), re-evaluated from the memo's equations."""
+    """Residual below 1e-9 in Omega/omega_1, re-evaluated from the memo's equations."""
     modes = small_modes()
     table = unstable_frequencies(modes, params, **SOLVE)
     for n in range(len(table)):
@@ -257,7 +257,7 @@ def test_active_flags_match_the_forcing_computed_from_its_definition(memo_result
     (responses.secular_rates): active roots have a relative forcing above 1e-17, the others
     below 1e-22 (round-off). Families 2 and 13 (beam harmonics, one Hill solve per root) are
     left out here; their selection is delta_1k only.  (The pipeline's table replaces this
-    structural flag by severity_rel >= threshold, issue 13: tests/test_severity.py.)"""
+    structural flag by severity_rel >= threshold: tests/test_severity.py.)"""
     from flexbooster.memo.responses import excitation_parameters, secular_rates
 
     res = memo_results
@@ -278,7 +278,7 @@ def test_active_flags_match_the_forcing_computed_from_its_definition(memo_result
 
 
 def test_campbell_diagram_draws_the_significant_roots_and_their_shell_lines():
-    """The figure's data, not its picture (issue 17): one marker per significant root (default:
+    """The figure's data, not its picture: one marker per significant root (default:
     active forcing) at (Omega, shell frequency) in Hz (= units of omega_1 x omega_1 / 2 pi,
     exact to 1e-15), one horizontal line per shell frequency holding such a root; another mask
     (a severity threshold) selects other roots; a mask of the wrong shape is refused."""
@@ -336,7 +336,7 @@ def _labels(table):
 
 @pytest.mark.slow
 def test_memo_case_same_roots_as_brute_force_on_sampled_curves(memo_results):
-    """Issue 6 acceptance on the memo case: for two curves of every family (sampled with a
+    """Acceptance on the memo case: for two curves of every family (sampled with a
     fixed seed), every root against every shell frequency of its set found by a brute-force
     scan -- the equation sampled on a grid ten times finer than the solver's, scipy brentq on each
     sign change -- is in the table (its own row or merged into a coinciding family's), and the
@@ -399,6 +399,6 @@ def test_too_many_roots_is_a_clear_error_not_a_memory_crash():
     ],
 )
 def test_bad_arguments_raise_naming_the_parameter(call, words):
-    # issue 18 item 6: no NaN returned silently, no garbage accepted
+    # no NaN returned silently, no garbage accepted
     with pytest.raises(ValueError, match=re.escape(words)):
         call()

@@ -51,7 +51,7 @@ SRC = str(Path(flexbooster.__file__).parents[1])
 
 RTOL = 1e-12  # sweep point vs serial analyze: same code on the workers (brief: 1e-12)
 GOOD_E, BAD_E = "10.5e6 psi", "1e-15 Pa"  # BAD_E: valid for the case model (E > 0), but the
-# analysis refuses it (issue 18: the thrust is above the divergence load of the steady system)
+# analysis refuses it (the thrust is above the divergence load of the steady system)
 SOFT_E = "1e8 Pa"  # a soft booster: strong beam-action bands (growth 0.1 1/s at gamma = 0.3)
 
 
@@ -72,9 +72,9 @@ def serial_reference(case_data: dict, *, stability: bool = True) -> dict:
     if "figures" in inspect.signature(flexbooster.analyze).parameters:
         options["figures"] = False  # the figure data: not needed, and slow
     if "vehicle" in inspect.signature(flexbooster.analyze).parameters:
-        options["vehicle"] = False  # the vehicle regions (issue 15): not a sweep variable
+        options["vehicle"] = False  # the vehicle regions: not a sweep variable
     d = flexbooster.analyze(flexbooster.load_case(case_data), **options).to_dict()
-    # the bands (exact edges, issue 12), never grid samples: their count and largest growth
+    # the bands (exact edges), never grid samples: their count and largest growth
     pitch, action = d["pitch"]["bands"], d["beam_action"]["bands"]
     peak = max(action, key=lambda b: b["growth_rate_max"], default=None)
     out = {
@@ -654,7 +654,7 @@ def test_ctrl_c_at_the_terminal_stops_the_cluster_in_one_line(tmp_path):
     """Source: a terminal's Ctrl-C (SIGINT to the whole foreground process group: the command
     and the local cluster's worker processes), sent once the store holds 5 finished points (an
     event read from the store, not a sleep). Expected (README: 130 interrupted): exit 130, with
-    -q a single stderr line and no traceback (issue 36: "IOLoop is closed", 70 lines of worker
+    -q a single stderr line and no traceback (neither "IOLoop is closed" nor the workers'
     tracebacks), no process of the run left, the finished points kept for --resume."""
     psutil = pytest.importorskip("psutil")
     path = write_sweep(

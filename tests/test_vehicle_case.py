@@ -1,8 +1,8 @@
-"""Issue 14 integration: the ``[vehicle]`` case table, ``flexbooster modes``, vehicle modes in run.
+"""Integration: the ``[vehicle]`` case table, ``flexbooster modes``, vehicle modes in run.
 
 Tiers:
 
-* exact: unit conversions of the issue's example table (pint, rel. 1e-12); defaults; the memo
+* exact: unit conversions of the example table (pint, rel. 1e-12); defaults; the memo
   vehicle built from ``[booster]`` is the hand-built ``Vehicle`` (two cylinders R1, 2 L1 and
   R2, 2 L2, Tech Memo 104 Fig. 1), and its k >= 2 frequencies are those of
   ``shell_of_revolution.vehicle_modes`` on that Vehicle (rel. 1e-12: the same computation
@@ -34,8 +34,8 @@ from flexbooster.errors import CaseError
 from flexbooster.model import vehicle_from_case
 from flexbooster.shell_of_revolution import Cone, Cylinder, Vehicle, vehicle_modes
 
-#: The issue's example table (issue 14, item 1), verbatim.
-ISSUE_TABLE = """
+#: The specification's example ``[vehicle]`` table, verbatim.
+EXAMPLE_TABLE = """
 [vehicle]
 E = "70 GPa"
 nu = 0.3
@@ -71,14 +71,14 @@ def _small(data: dict) -> dict:
     return data
 
 
-def _with_issue_table(**changes) -> dict:
-    """The memo case with the issue's [vehicle] table in place of [booster] (one vehicle per
+def _with_example_table(**changes) -> dict:
+    """The memo case with the example [vehicle] table in place of [booster] (one vehicle per
     case) and F0 = 0.3 MN (2.8 MN would exceed the k = 2 buckling load of this small free-free
     vehicle)."""
     data = _base()
     del data["booster"]
     data["thrust"]["F0"] = "0.3 MN"
-    data.update(tomllib.loads(ISSUE_TABLE))
+    data.update(tomllib.loads(EXAMPLE_TABLE))
     data["vehicle"].update(changes)
     return data
 
@@ -123,10 +123,10 @@ def dump_case(data: dict) -> str:
 # --------------------------------------------------------------------------- case parsing
 
 
-def test_issue_table_units_and_defaults():
-    """The issue's table: pint conversions (70 GPa = 7e10 Pa, 8 mm = 0.008 m, rel. 1e-12),
+def test_example_table_units_and_defaults():
+    """The example table: pint conversions (70 GPa = 7e10 Pa, 8 mm = 0.008 m, rel. 1e-12),
     segment material = the table's, one continuous junction, the ends and theory given."""
-    case = load_case(_with_issue_table())
+    case = load_case(_with_example_table())
     veh = vehicle_from_case(case)
     assert veh.junctions == ("continuous",)
     assert (veh.aft_end, veh.fwd_end, veh.theory) == ("free", "free", "sanders")
@@ -227,7 +227,7 @@ BAD = [  # (change, field, words of the rule); the rule texts are those of vehic
 
 @pytest.mark.parametrize("change, field, rule", BAD, ids=[b[1] + ": " + b[2] for b in BAD])
 def test_bad_vehicle_field_is_one_line_naming_it(change, field, rule):
-    data = _with_issue_table()
+    data = _with_example_table()
     change(data)
     _assert_one_line_error(data, field, rule)
 
@@ -255,7 +255,7 @@ def test_bad_memo_vehicle_table(table, field, rule):
 def test_bad_vehicle_in_a_file_exits_2(tmp_path, capsys):
     """The CLI prints the CaseError as one line and exits 2 (`run` and `modes`)."""
     path = tmp_path / "bad.toml"
-    path.write_text(dump_case(_seg(_with_issue_table(), 1, radius_aft="1.4 m")))
+    path.write_text(dump_case(_seg(_with_example_table(), 1, radius_aft="1.4 m")))
     for command in ("run", "modes"):
         assert run_cli([command, str(path), "-o", str(tmp_path / "out")]) == 2
         err = capsys.readouterr().err.strip()
@@ -317,7 +317,7 @@ def test_memo_vehicle_donnell_equals_memo_shell_path():
 @pytest.fixture
 def vehicle_case_file(tmp_path):
     path = tmp_path / "vehicle.toml"
-    path.write_text(dump_case(_small(_with_issue_table(k_max=3))))
+    path.write_text(dump_case(_small(_with_example_table(k_max=3))))
     return path
 
 
@@ -460,7 +460,7 @@ def test_report_embeds_the_vehicle_figures(vehicle_case_file):
 @pytest.mark.slow
 def test_memo_case_results_unchanged():
     """Without [vehicle]: no vehicle stage, no vehicle_modes key, no case.vehicle key (the
-    keys of the memo case's results.json as before issue 14)."""
+    top-level keys of the memo case's results.json)."""
     data = _small(_base())
     seen = []
     results = analyze(load_case(data), figures=False, progress=seen.append)
@@ -470,15 +470,15 @@ def test_memo_case_results_unchanged():
     assert set(out) == {"schema_version", "flexbooster_version", "units", "case",
                         "mass_properties", "frequencies", "dimensionless", "beam_modes",
                         "pitch", "shell_frequencies", "beam_action", "stability",
-                        "warnings", "figures", "vehicle_regions",  # issue 15: every case
-                        "danger",  # issue 17
+                        "warnings", "figures", "vehicle_regions",  # every case
+                        "danger",
                         "forced_response", "verdict"}
 
 
 def test_thick_shell_warning_reaches_summary_and_results(tmp_path, capsys):
     """h/R = 0.1 > 1/20 on segment 1: a warning (code thick-shell, field
     vehicle.segments[1]) in results.json and in the summary; the run goes on."""
-    data = _small(_with_issue_table(k_max=2))
+    data = _small(_with_example_table(k_max=2))
     _seg(data, 1, thickness="0.1 m")
     path = tmp_path / "thick.toml"
     path.write_text(dump_case(data))
@@ -493,7 +493,7 @@ def test_thick_shell_warning_reaches_summary_and_results(tmp_path, capsys):
 def test_flat_plate_leaves_out_the_prestress():
     """A flat plate (cone of length 0) cannot carry the thrust as a membrane: the modes are
     unloaded, and the survey says so (no error)."""
-    data = _with_issue_table(k_max=2)
+    data = _with_example_table(k_max=2)
     data["vehicle"]["segments"].append({"kind": "cone", "radius_aft": "1.0 m",
                                         "radius_fwd": "0.5 m", "length": 0,
                                         "thickness": "8 mm"})
@@ -503,7 +503,7 @@ def test_flat_plate_leaves_out_the_prestress():
 
 # ------------------------------------------------ masses, tanks, pressure, stiffeners
 
-#: A two-segment vehicle with every issue-32 field, in units.
+#: A two-segment vehicle with every physics field (masses, tanks, pressure, stiffeners), in units.
 PHYSICS_TABLE = """
 [vehicle]
 E = "70 GPa"
@@ -552,7 +552,7 @@ def _physics_case(**changes) -> dict:
 
 
 def test_physics_fields_units_and_vehicle():
-    """Every issue-32 field reaches the core Vehicle in SI (pint conversions: 0.2 lb/ft^2 =
+    """Every physics field reaches the core Vehicle in SI (pint conversions: 0.2 lb/ft^2 =
     0.976484 kg/m^2, 30 psi = 206842.7 Pa, 4 cm^2 = 4e-4 m^2, 2 cm^4 = 2e-8 m^4, 2 t = 2000 kg;
     rel. 1e-6); defaults: inertia and eccentricity 0, names "mass 1"."""
     veh = vehicle_from_case(load_case(_physics_case()))
@@ -601,7 +601,7 @@ PHYSICS_BAD = [  # (table changes, field, words of the rule)
 @pytest.mark.parametrize("change, field, rule", PHYSICS_BAD,
                          ids=[b[1] + ": " + b[2] for b in PHYSICS_BAD])
 def test_bad_physics_field_is_one_line_naming_it(change, field, rule):
-    """Each invalid issue-32 field: one CaseError line naming the field and the rule."""
+    """Each invalid physics field: one CaseError line naming the field and the rule."""
     data = _physics_case()
     change(data)
     _assert_one_line_error(data, field, rule)

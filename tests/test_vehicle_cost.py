@@ -92,8 +92,8 @@ def test_verdict_is_not_stable_when_a_harmonic_is_a_gap():
 
 
 def _three_long_segments(k_max: int = 15, **vehicle):
-    """Issue 36's case: three long segments, n_modes 247, k_max 15, zeta 1e-4 (the fuzz ran
-    it past 60 s inside the stability certificates, which the estimate did not count)."""
+    """A fuzz case: three long segments, n_modes 247, k_max 15, zeta 1e-4, whose run spends
+    over 60 s inside the stability certificates."""
     segment = {"kind": "cylinder", "radius": 5.05, "length": 60.0, "thickness": 0.02}
     return _case(k_max=k_max, n_modes=247, damping_ratio=1e-4,
                  segments=[segment, dict(segment), dict(segment)], **vehicle)
@@ -104,7 +104,7 @@ def test_certificates_are_counted_and_refused_up_front():
     """Source: the certificate's bounded work (floquet.bounds: CERTIFICATE_FLOPS_PER_N3
     (2n)^3 operations per call, three calls per damped harmonic with the chart); the estimate
     has a "vehicle certificates" part, growing like n^3 (8x for twice the modes, exact), and a
-    20 s budget (the fuzz's) refuses the issue's case before any solver runs, naming the part
+    20 s budget (the fuzz's) refuses that case before any solver runs, naming the part
     and vehicle.n_modes. (k_max = 3 instead of 15: the estimate builds each harmonic's modal
     system, and the n^3 law and the refusal do not depend on the number of harmonics.)"""
     case = _three_long_segments(k_max=3)

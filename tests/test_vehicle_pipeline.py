@@ -1,4 +1,4 @@
-"""Issue 15 wiring: the vehicle's parametric instability regions in the pipeline and outputs.
+"""The vehicle's parametric instability regions in the pipeline and outputs.
 
 Tiers:
 
@@ -171,7 +171,7 @@ def test_memo_roots_in_regions_equal_a_brute_force_matrix(rtol):
 
 
 def test_memo_roots_severity_hook_and_empty_inputs():
-    """A table with a ``severity`` column (the other helper's issue): the matched roots carry
+    """A table with a ``severity`` column (as a severity stage may add): the matched roots carry
     it (exact); no region / no root: empty answers, no error."""
 
     @dataclasses.dataclass(frozen=True)
@@ -221,11 +221,11 @@ def test_bad_region_field_is_one_case_error_line(field, value, rule):
 
 
 def test_region_fields_and_defaults():
-    """Defaults (issue 15): damping ratio 0.01, 20 modes per k; 0 damping allowed; the memo
+    """Defaults: damping ratio 0.01, 20 modes per k; 0 damping allowed; the memo
     vehicle's [vehicle] table (no segments) may set them."""
     case = load_case(small_case_data(damping_ratio=0, n_modes=4))
     assert case.vehicle_damping_ratio == 0.0 and case.vehicle.n_modes == 4
-    case = load_case(small_case_data(theory="donnell"))  # damping.modal_ratio (issue 33)
+    case = load_case(small_case_data(theory="donnell"))  # damping.modal_ratio
     assert case.vehicle.damping_ratio is None and case.vehicle_damping_ratio == 0.01
     assert case.vehicle.n_modes == 20
 
@@ -310,7 +310,7 @@ def test_chart_top_gamma_is_certified_free_of_regions(path):
     found = analyze_vehicle_regions(case, boundaries=False)
     top = analysis._chart_gamma(found)
     assert case.thrust.gamma <= top <= VEHICLE_CHART_GAMMA_MAX
-    # two methods agree (issue 15 item 6): the search's certificate at gamma, scaled by gamma,
+    # two methods agree: the search's certificate at gamma, scaled by gamma,
     # is the certificate of the excitation per unit gamma (Q linear in B), to 1e-9 relative
     from flexbooster.floquet import stability_certificate
 
@@ -393,7 +393,7 @@ def test_results_json_round_trip(results):
 
 
 def test_csv_columns_against_the_objects(results, tmp_path):
-    """vehicle-regions.csv (write_outputs, atomic): one region a row, the issue's columns,
+    """vehicle-regions.csv (write_outputs, atomic): one region a row, the README's columns,
     values equal to the objects' (exact: repr round trip)."""
     from flexbooster.present.outputs import write_outputs
 

@@ -393,7 +393,7 @@ def memo_vehicle() -> Vehicle:
 
 
 def test_memo_case_map_is_certified_stable(memo_vehicle):
-    """The deliverable of issue 15 item 4 (k <= 10, 20 modes per k, Omega 5..2000 rad/s,
+    """The memo case's vehicle map (k <= 10, 20 modes per k, Omega 5..2000 rad/s,
     gamma = 0.05, zeta = 0.01): every harmonic is certified stable at every Omega by the
     weighted logarithmic norm (floquet.stability_certificate; a theorem, Desoer & Vidyasagar
     sec. 2.8), so no region exists.  Checked independently for k = 3: the damped 20-mode
@@ -410,7 +410,7 @@ def test_memo_case_map_is_certified_stable(memo_vehicle):
 
 
 def test_default_vehicle_regions_against_full_monodromy(memo_vehicle):
-    """Acceptance of issue 15: the default vehicle, k = 3, the full 20-mode system, undamped
+    """Acceptance: the default vehicle, k = 3, the full 20-mode system, undamped
     (the default damping leaves no region), gamma = 0.05, Omega 30..130 rad/s, first-order
     regions: the three widest (simple 2, simple 0, simple 1) against floquet.growth_rate of the
     full system inside (at the reported maximum, 1e-6 relative; positive at the middle) and
@@ -460,7 +460,7 @@ def test_damping_filter_keeps_the_regions_of_the_unfiltered_search(memo_vehicle)
 @pytest.mark.parametrize("which", ["memo", "cone"])
 def test_damping_filter_finds_every_region_of_the_unfiltered_search(memo_vehicle, which, zeta,
                                                                      gamma):
-    """Verification of the damping filter (issue 15 leftover; it is a first-order estimate
+    """Verification of the damping filter (it is a first-order estimate
     with a safety factor 4, not a proof): on a grid of small damped systems that keep 0 to 8
     regions -- the memo case's vehicle (Omega 10..300 rad/s) and the cylinder-cone-cylinder
     of the same size (10..100 rad/s), k = 3, 5 modes, orders <= 2, zeta = 5e-4 and 2e-3,
@@ -720,7 +720,7 @@ def test_k1_damped_regions_against_an_independent_monodromy(which):
     Checks, at the default settings (step_phase 0.12): at least one region with the rigid
     pitch (damped sum regions of the nearly undamped pitch are many times wider than
     undamped: the march to the range ends); growth at each reported maximum to 1e-6 relative
-    (issue 15's acceptance; measured: tube 1.8e-8, 6.7e-9; cone 2.8e-8); each edge a zero of
+    (the acceptance threshold; measured: tube 1.8e-8, 6.7e-9; cone 2.8e-8); each edge a zero of
     the reference growth to 1e-6 (sign change across +-1e-6 relative, measured at all five
     edges, or |growth| <= 1e-6 of the peak where an edge is flat); each region absent at
     0.999 gamma_cr and present at 1.001 gamma_cr (maximal growth over Omega < 0 and > 0).

@@ -300,7 +300,7 @@ def test_damped_resonances_rank_by_steady_acceleration():
 
 
 # --------------------------------------------------------------------------------------------
-# The memo case (acceptance of issue 33)
+# The memo case (acceptance)
 # --------------------------------------------------------------------------------------------
 @pytest.mark.slow
 def test_memo_case_verdict_acceptance(memo_results):

@@ -363,7 +363,7 @@ def load_sweep(source: str | Path | Mapping[str, Any]) -> SweepSpec:
         axes = dict(axes)
     mode = data.get("mode", "product")
     if isinstance(axes, dict) and isinstance(axes.get("mode"), str):
-        # `mode` written inside [axes] (as in the example): no case field is named so
+        # `mode` written inside [axes] (accepted as well): no case field is named so
         if "mode" in data:
             raise CaseError("axes.mode", axes["mode"], "give mode once (top level or in [axes])")
         mode = axes.pop("mode")
