@@ -13,6 +13,7 @@ from __future__ import annotations
 import ast
 import importlib
 import inspect
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -321,3 +322,24 @@ def test_no_import_cycle():
         if v not in index:
             visit(v)
     assert not cycles, f"import cycles: {cycles}"
+
+
+#: Project history in prose: an issue or a session by its number (it belongs in CHANGELOG.md
+#: and git); the words alone ("an issue", "a branch of the root") are not history.
+_HISTORY = re.compile(r"\b(issues?|sessions?)\s+(#|no\.\s*)?\d+", re.IGNORECASE)
+
+
+def test_no_project_history_in_code_tests_or_docs():
+    """The sources, tests, benchmarks, scripts, docs, examples and README carry no project
+    history (issue or session numbers); CHANGELOG.md is where it belongs."""
+    root = Path(flexbooster.__file__).resolve().parents[2]
+    files = [root / "README.md", root / "Makefile"]
+    for folder, pattern in (("src", "*.py"), ("tests", "*.py"), ("benchmarks", "*.py"),
+                            ("benchmarks", "*.md"), ("scripts", "*.py"), ("docs", "*.md"),
+                            ("examples", "*.toml"), ("src", "*.toml")):
+        files += sorted((root / folder).rglob(pattern))
+    hits = [f"{path.relative_to(root)}:{n}: {line.strip()}"
+            for path in files if path.is_file()
+            for n, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1)
+            if _HISTORY.search(line)]
+    assert hits == []
