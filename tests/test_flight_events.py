@@ -24,6 +24,7 @@ from flexbooster.flight import (
     band_events,
     band_rate,
     meeting_intervals,
+    passes_over,
     resonance_events,
 )
 from flexbooster.floquet import growth_rate
@@ -252,3 +253,34 @@ def test_bad_input_names_the_parameter():
                          modes="m")
     with pytest.raises(ValueError, match="^osc_lo, osc_hi"):
         meeting_intervals(TIMES, np.ones(4), np.ones(4), np.full(4, 2.0), np.ones(4))
+
+
+def test_passes_over_finds_the_centres_that_jump_the_range():
+    """Closed form: identities 0 and 1 at 2 and 3 rad/s, then 2 and 9 rad/s, range [4, 5]:
+    2 w_1 / 2 goes 3 -> 9, (w_0 + w_1) / 2 goes 2.5 -> 5.5 and |w_1 - w_0| goes 1 -> 7, each
+    from below 4 to above 5; 2 w_1 = 6 -> 18 and w_0 + w_1 = 5 -> 11 (5 is inside) do not,
+    nor a centre inside the range at one end, nor an identity absent (NaN) at either end.
+    Reversed in time, the same combinations pass down."""
+    f = np.array([[2.0, 3.0, np.nan], [2.0, 9.0, 1.0]])
+    got = {(p.kind, p.identities, p.order) for p in passes_over([0.0, 1.0], f, 4.0, 5.0)}
+    want = {("simple", (1, 1), 2), ("sum", (0, 1), 2), ("difference", (0, 1), 1)}
+    assert got == want
+    back = passes_over([0.0, 1.0], f[::-1], 4.0, 5.0)
+    assert {(p.kind, p.identities, p.order) for p in back} == want
+    assert all((p.t_start, p.t_end) == (0.0, 1.0) for p in back)
+    assert passes_over([0.0, 1.0], f, 4.0, 5.0, orders=1) == tuple(
+        p for p in passes_over([0.0, 1.0], f, 4.0, 5.0) if p.order == 1)
+    # three times: the jump is reported for its own step only
+    three = passes_over([0.0, 1.0, 2.0], np.array([[2.0, 3.0], [2.0, 3.1], [2.0, 9.0]]), 4.0,
+                        5.0)
+    assert {(p.t_start, p.t_end) for p in three} == {(1.0, 2.0)}
+
+
+@pytest.mark.parametrize(("kwargs", "name"), [
+    ({"times": [0.0, np.inf]}, "times"), ({"frequencies": [[1.0]]}, "frequencies"),
+    ({"lo": 0.0}, "lo"), ({"hi": 3.0}, "hi"), ({"orders": 0}, "orders")])
+def test_passes_over_bad_input_names_the_parameter(kwargs, name):
+    args = dict(times=[0.0, 1.0], frequencies=[[1.0], [2.0]], lo=4.0, hi=5.0) | kwargs
+    with pytest.raises(ValueError, match=name):
+        passes_over(args.pop("times"), args.pop("frequencies"), args.pop("lo"), args.pop("hi"),
+                    **args)

@@ -469,3 +469,41 @@ def test_flight_regions_below_the_slosh_frequency_are_warned_about():
     assert pitch and min(pitch) < SLOSH_VALIDITY_FACTOR * 2.0 * math.pi * hz
     assert all(not [m for r in fl.regions[j] for m in r.modes if m.type == "rigid-pitch"]
                for j in range(i))  # the first such time
+
+
+@pytest.mark.slow
+def test_combinations_passing_over_the_band_between_frozen_times_are_warned_about():
+    """Independent count: the default flight (11 frozen times, 10-12 Hz), k = 1 (no stability
+    certificate: its rigid pitch is undamped). From the rows of flight-modes.csv, every pair
+    of tracked k = 1 modes present at both ends of a step whose combination centre (2 f_i,
+    f_i + f_j, |f_i - f_j|, over n = 1, 2) is below 10 Hz at one frozen time and above 12 Hz
+    at the next, or the reverse, counted by hand; the ``flight-pass-over`` warning gives the
+    same count and names k = 1, and a constant flight (nothing moves) has none."""
+    import collections
+    import itertools
+
+    data = tomllib.loads(default_case_text())
+    data["vehicle"]["k_max"] = 1
+    fl, warnings = flight_stage(load_case(data))
+    hz = collections.defaultdict(dict)
+    for row in fl.mode_rows():
+        if row["k"] == 1:
+            hz[row["mode"]][row["time_s"]] = row["hz"]
+    times = list(fl.times)
+    count = 0
+    for a, b in itertools.combinations_with_replacement(sorted(hz), 2):
+        for t0, t1 in zip(times[:-1], times[1:], strict=True):
+            if not all(t in hz[m] for m in (a, b) for t in (t0, t1)):
+                continue
+            ends = [(2 * hz[a][t0], 2 * hz[a][t1])] if a == b else [
+                (hz[a][t0] + hz[b][t0], hz[a][t1] + hz[b][t1]),
+                (abs(hz[a][t0] - hz[b][t0]), abs(hz[a][t1] - hz[b][t1]))]
+            for (c0, c1), n in itertools.product(ends, (1, 2)):
+                c0, c1 = c0 / n, c1 / n
+                count += (c0 < 10.0 and c1 > 12.0) or (c0 > 12.0 and c1 < 10.0)
+    (w,) = [w for w in warnings if w.code == "flight-pass-over"]
+    assert count > 0 and w.message.startswith(f"{count} combination(s)")
+    assert "(the first: k = 1 " in w.message and w.field == "flight.stations"
+    constant_case = load_case(CASE)
+    _, quiet = flight_stage(constant_case)
+    assert not [w for w in quiet if w.code == "flight-pass-over"]

@@ -45,6 +45,7 @@ from .flight import (
     flight_omega_range,
     mac_matrix,
     meeting_intervals,
+    passes_over,
     resonance_events,
     track_modes,
     worst_first,
@@ -335,6 +336,7 @@ def _assemble(case: Case, plan: _Plan, frozen: Sequence[FrozenTime]
     warnings += [AnalysisWarning("flight-not-fully-searched", "flight", g.reason)
                  for g in gaps.values()]
     warnings += _slosh_warnings(frozen, regions_per_time)
+    warnings += _pass_over_warnings(times, frozen, harmonics, (lo, hi))
     result = FlightResults(
         times=times, F0=np.array([p.F0 for p in points]),
         gamma=np.array([p.gamma for p in points]),
@@ -343,6 +345,36 @@ def _assemble(case: Case, plan: _Plan, frozen: Sequence[FrozenTime]
         harmonics=harmonics, regions=tuple(regions_per_time), omega_range=(lo, hi),
         events=verdict_order(worst_first(events)), gaps=tuple(gaps.values()), notes=tuple(notes))
     return result, warnings
+
+
+def _pass_over_warnings(times: np.ndarray, frozen: Sequence[FrozenTime], harmonics,
+                        omega_range: tuple) -> list[AnalysisWarning]:
+    """The ``flight-pass-over`` warning: combinations of tracked modes whose centre passes over
+    the searched Omega range between two frozen times (:func:`flexbooster.flight.passes_over`),
+    in a harmonic searched at either time without a stability certificate (a certified
+    harmonic has no region at any Omega)."""
+    lo, hi = omega_range
+    open_k = [set() for _ in frozen]  # per time: the harmonics searched and not certified
+    for t, f in enumerate(frozen):
+        if f.regions is not None:
+            open_k[t] = {int(h.k) for h, c in zip(f.regions.harmonics, f.regions.certificates,
+                                                   strict=True) if not c.certified}
+    hits = []
+    for h in harmonics:
+        steps = [s for s in range(times.size - 1) if h.k in open_k[s] | open_k[s + 1]]
+        for s in steps:
+            hits += [(h.k, p) for p in passes_over(times[s:s + 2], h.frequencies[s:s + 2], lo, hi)]
+    if not hits:
+        return []
+    k, p = hits[0]
+    i, j = (n + 1 for n in p.identities)  # 1-based, as flight-modes.csv
+    which = f"mode {i}" if p.kind == "simple" else f"modes {i} and {j}"
+    return [AnalysisWarning("flight-pass-over", "flight.stations", (
+        f"{len(hits)} combination(s) of tracked modes pass over the searched Omega range "
+        f"{lo / (2.0 * math.pi):.4g}-{hi / (2.0 * math.pi):.4g} Hz between two frozen times, "
+        f"where neither searched them (the first: k = {k} {which} of flight-modes.csv, "
+        f"{p.kind}, order {p.order}, t = {p.t_start:.6g}-{p.t_end:.6g} s): their regions, if "
+        "any opens, are not in the flight's verdict; more flight.stations shorten the step"))]
 
 
 def slosh_warning(lead: str, low, slosh) -> AnalysisWarning:

@@ -6,11 +6,14 @@ events of the flight (:mod:`.events`). Numerical core: numpy and scipy only. The
 
 from .events import (
     EVENT_COLUMNS,
+    PASS_OVER_ORDERS,
     FlightEvent,
+    PassOver,
     band_events,
     band_key,
     band_rate,
     meeting_intervals,
+    passes_over,
     resonance_events,
     worst_first,
 )
@@ -42,4 +45,5 @@ __all__ = ["FlightPoint", "Timeline", "frozen_times", "flight_omega_range",
            "Passage", "ResonancePassage", "accumulated_growth", "crossing_peak_ratio",
            "peak_ratio", "steady_peak", "step_maps", "sweep_passage", "sweep_response",
            "EVENT_COLUMNS", "FlightEvent", "band_events", "band_key", "band_rate",
-           "meeting_intervals", "resonance_events", "worst_first"]
+           "meeting_intervals", "resonance_events", "worst_first", "PASS_OVER_ORDERS",
+           "PassOver", "passes_over"]

@@ -21,7 +21,8 @@ from ..floquet import StepLimitError
 from .passage import Passage, accumulated_growth, crossing_peak_ratio
 
 __all__ = ["FlightEvent", "EVENT_COLUMNS", "band_key", "band_events", "band_rate",
-           "resonance_events", "meeting_intervals", "worst_first"]
+           "resonance_events", "meeting_intervals", "worst_first", "PASS_OVER_ORDERS",
+           "PassOver", "passes_over"]
 
 #: Columns of flight-events.csv, in order (the keys of :meth:`FlightEvent.to_dict`).
 EVENT_COLUMNS = ("mechanism", "k", "modes", "t_start_s", "t_end_s", "max_growth_1_s",
@@ -400,3 +401,76 @@ def worst_first(events: Sequence[FlightEvent]) -> list[FlightEvent]:
     """
     return sorted(events, key=lambda e: (-e.efolds, -(e.peak_acceleration_g or 0.0),
                                          e.t_start_s))
+
+
+#: Orders n of the combination centres (2 w_i, w_i + w_j, |w_i - w_j|) / n checked by
+#: :func:`passes_over` (the first two: the widest regions).
+PASS_OVER_ORDERS = 2
+
+
+@dataclass(frozen=True)
+class PassOver:
+    """A combination of tracked modes whose centre passes over the searched Omega range
+    between two neighbouring frozen times, where neither searched it.
+
+    Attributes
+    ----------
+    kind : str
+        "simple" (2 w_i / n), "sum" ((w_i + w_j) / n) or "difference" (|w_i - w_j| / n).
+    identities : (int, int)
+        The tracked identities i <= j (i = j for "simple").
+    order : int
+        n.
+    t_start, t_end : float
+        The two frozen times (s).
+    """
+
+    kind: str
+    identities: tuple
+    order: int
+    t_start: float
+    t_end: float
+
+
+def passes_over(times: Any, frequencies: Any, lo: float, hi: float, *,
+                orders: int = PASS_OVER_ORDERS) -> tuple[PassOver, ...]:
+    """The combinations of tracked modes whose centre lies below ``lo`` at one frozen time and
+    above ``hi`` at the next, or the reverse. The frequencies, and so the centres, are linear
+    between frozen times (as everywhere in the flight), so such a centre crosses all of
+    [lo, hi] between the two times, where a search at each frozen time over [lo, hi] sees
+    none of its regions (docs/theory/flight.md, "What the frozen times do not see").
+
+    Parameters
+    ----------
+    times : array_like, shape (T,)
+        Frozen times (s), increasing.
+    frequencies : array_like, shape (T, N)
+        Frequency (rad/s) of each tracked identity at each time; NaN where absent.
+    lo, hi : float
+        The searched Omega range (rad/s), 0 < lo <= hi.
+    orders : int
+        The orders n = 1..orders of the centres, >= 1.
+    """
+    t = finite_array("times", times)
+    f = np.asarray(frequencies, dtype=float)
+    if t.ndim != 1 or f.ndim != 2 or f.shape[0] != t.size:
+        raise ValueError(f"frequencies: shape {f.shape}, need ({t.size}, N)")
+    lo, hi = positive("lo", lo), positive("hi", hi)
+    if hi < lo:
+        raise ValueError(f"hi = {hi!r}: must be >= lo = {lo!r}")
+    if not isinstance(orders, int | np.integer) or orders < 1:
+        raise ValueError(f"orders = {orders!r}: must be an integer >= 1")
+    i, j = np.triu_indices(f.shape[1])
+    out = []
+    for s in range(t.size - 1):
+        a, b = f[s], f[s + 1]
+        for kind, c0, c1, pairs in (
+                ("simple", 2.0 * a[i], 2.0 * b[i], i == j),
+                ("sum", a[i] + a[j], b[i] + b[j], i < j),
+                ("difference", np.abs(a[i] - a[j]), np.abs(b[i] - b[j]), i < j)):
+            for n in range(1, int(orders) + 1):
+                lo0, hi0, lo1, hi1 = c0 / n < lo, c0 / n > hi, c1 / n < lo, c1 / n > hi
+                for m in np.flatnonzero(pairs & ((lo0 & hi1) | (hi0 & lo1))):  # NaN: False
+                    out.append(PassOver(kind=kind, identities=(int(i[m]), int(j[m])), order=n,
+                                        t_start=float(t[s]), t_end=float(t[s + 1])))
+    return tuple(out)
