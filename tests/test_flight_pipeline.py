@@ -245,6 +245,17 @@ def test_summary_and_report_show_the_flight_worst_first(constant):
     assert worst.replace("'", "&#x27;") in flight
     first = page[page.index('id="first-screen"'):page.index('<section id="inputs"')]
     assert worst.replace("'", "&#x27;") in first  # the first screen says the same
+    # the list of the most dangerous frequencies says it is the case's one state, the flight
+    # apart, in the summary and on the first screen (and says nothing of it without a flight)
+    from flexbooster.present.rows import danger_scope
+
+    scope = danger_scope(constant)
+    assert "one vehicle state" in scope and "under Flight" in scope
+    line = next(x for x in text.splitlines() if x.startswith("Most dangerous thrust"))
+    assert line.endswith(f"all in results.json{scope})")
+    html_scope = scope.replace("'", "&#x27;")
+    assert f"<code>danger</code>{html_scope})</h3>" in first
+    assert danger_scope(dataclasses.replace(constant, flight=None)) == ""
 
 
 

@@ -55,6 +55,7 @@ from .rows import (
     band_measure_rows,
     band_rows,
     danger_rows,
+    danger_scope,
     forced_axial_rows,
     frequency_rows,
     headline_lines,
@@ -759,7 +760,7 @@ def _first_screen(results: Results, svgs: Mapping[str, str] | None) -> str:
     n_all = len(ranking(results))
     if rows:
         out.append(f"<h3>Most dangerous thrust frequencies ({len(rows)} of {n_all}; all "
-                   "in results.json <code>danger</code>)</h3>")
+                   f"in results.json <code>danger</code>{_e(danger_scope(results))})</h3>")
         out.append(_table(DANGER_HEADER, rows, (True, True, True, True, False, False, False)))
     elif results.danger is not None:
         out.append("<p>No unstable band in any mechanism computed.</p>")

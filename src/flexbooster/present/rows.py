@@ -38,6 +38,7 @@ __all__ = [
     "BAND_MEASURE_HEADER",
     "band_measure_rows",
     "short_mode_text",
+    "danger_scope",
     "range_text",
     "verdict_rows",
     "danger_rows",
@@ -349,6 +350,22 @@ def ranking(results: Results) -> tuple:
     if results.danger is None:
         return ()
     return results.danger.ranking or results.danger.bands
+
+
+def danger_scope(results: Results) -> str:
+    """What the list of the most dangerous thrust frequencies covers, for a case with
+    ``[flight]`` (its single analysis is of the case's own ``[vehicle]`` and ``[thrust]``, one
+    state, while the flight's events are listed apart); "" otherwise.
+
+    Parameters
+    ----------
+    results : Results
+        The analysis.
+    """
+    if results.flight is None:
+        return ""
+    return ("; the case's [vehicle] and [thrust] as given, one vehicle state; the flight's "
+            "events are under Flight")
 
 
 def short_mode_text(text: str, keep: int = FIRST_SCREEN_MODES) -> str:

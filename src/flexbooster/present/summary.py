@@ -19,6 +19,7 @@ from .rows import (
     ROUND_OFF,
     band_rows,
     danger_rows,
+    danger_scope,
     frequency_rows,
     headline_lines,
     input_rows,
@@ -79,7 +80,7 @@ def print_first_screen(results: Results, console: Console, *, full: bool = True)
     n_all = len(ranking(results))
     if rows:
         console.print(f"[bold]Most dangerous thrust frequencies[/bold] ({len(rows)} of "
-                      f"{n_all}; all in results.json)")
+                      f"{n_all}; all in results.json{escape(danger_scope(results))})")
         console.print(_band_block(rows, console.width), highlight=False, markup=False)
     elif n_all == 0 and results.danger is not None:
         console.print("No unstable band in any mechanism computed.")
