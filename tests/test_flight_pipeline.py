@@ -483,19 +483,29 @@ def test_flight_regions_below_the_slosh_frequency_are_warned_about():
 
 
 @pytest.mark.slow
-def test_combinations_passing_over_the_band_between_frozen_times_are_warned_about():
-    """Independent count: the default flight (11 frozen times, 10-12 Hz), k = 1 (no stability
-    certificate: its rigid pitch is undamped). From the rows of flight-modes.csv, every pair
-    of tracked k = 1 modes present at both ends of a step whose combination centre (2 f_i,
-    f_i + f_j, |f_i - f_j|, over n = 1, 2) is below 10 Hz at one frozen time and above 12 Hz
-    at the next, or the reverse, counted by hand; the ``flight-pass-over`` warning gives the
-    same count and names k = 1, and a constant flight (nothing moves) has none."""
+def test_combinations_passing_over_the_band_are_searched_at_both_ends():
+    """Independent reference: the same flight at 41 frozen times (3.9 s apart) instead of 11
+    (15.6 s). The default flight, k = 1 (no stability certificate: its rigid pitch is
+    undamped), with a narrow oscillation band 10.5-10.7 Hz. (1) The count: every pair of
+    tracked k = 1 modes (flight-modes.csv) whose combination centre (2 f_i, f_i + f_j,
+    |f_i - f_j|, over n = 1, 2) is below the band at one frozen time and above it at the next,
+    or the reverse, counted by hand, is the count of the flight's note. (2) The region
+    rigid-pitch 0 + bending 3 leaves the band between 109.2 and 124.8 s: found at 124.8 s in
+    the window outside the range, its event ends where its edges, linear in time, leave the
+    band, within one fine step of the fine flight's end (held to 124.8 s it would end 8 s
+    late). (3) A window beyond PASS_OVER_REACH of the range is a search gap (not stable)."""
     import collections
     import itertools
 
-    data = tomllib.loads(default_case_text())
-    data["vehicle"]["k_max"] = 1
-    fl, warnings = flight_stage(load_case(data))
+    def run(stations):
+        data = tomllib.loads(default_case_text())
+        data["vehicle"]["k_max"] = 1
+        data["flight"]["stations"] = stations
+        for point in data["flight"]["points"]:
+            point["oscillation"] = ["10.5 Hz", "10.7 Hz"]
+        return flight_stage(load_case(data))
+
+    fl, warnings = run(11)
     hz = collections.defaultdict(dict)
     for row in fl.mode_rows():
         if row["k"] == 1:
@@ -511,10 +521,13 @@ def test_combinations_passing_over_the_band_between_frozen_times_are_warned_abou
                 (abs(hz[a][t0] - hz[b][t0]), abs(hz[a][t1] - hz[b][t1]))]
             for (c0, c1), n in itertools.product(ends, (1, 2)):
                 c0, c1 = c0 / n, c1 / n
-                count += (c0 < 10.0 and c1 > 12.0) or (c0 > 12.0 and c1 < 10.0)
-    (w,) = [w for w in warnings if w.code == "flight-pass-over"]
-    assert count > 0 and w.message.startswith(f"{count} combination(s)")
-    assert "(the first: k = 1 " in w.message and w.field == "flight.stations"
-    constant_case = load_case(CASE)
-    _, quiet = flight_stage(constant_case)
-    assert not [w for w in quiet if w.code == "flight-pass-over"]
+                count += (c0 < 10.5 and c1 > 10.7) or (c0 > 10.7 and c1 < 10.5)
+    (note,) = [n for n in fl.notes if "pass over the searched Omega range" in n]
+    assert count > 0 and note.startswith(f"{count} combination(s)")
+    fine, _ = run(41)
+    (coarse_event,) = [e for e in fl.events if e.modes == "rigid-pitch 0 + bending 3"]
+    (fine_event,) = [e for e in fine.events if e.modes == "rigid-pitch 0 + bending 3"]
+    assert 109.2 < coarse_event.t_end_s < 124.8
+    assert coarse_event.t_end_s == pytest.approx(fine_event.t_end_s, abs=156.0 / 40)
+    assert any(g.limit == "PASS_OVER_REACH" and g.k == 1 for g in fl.gaps)
+    assert [w for w in warnings if w.code == "flight-not-fully-searched"]

@@ -51,6 +51,8 @@ __all__ = [
     "check_pitch_range",
     "CostEstimate",
     "flight_time_seconds",
+    "pass_over_seconds",
+    "PASS_OVER_PART",
     "forced_seconds",
     "forced_run_seconds",
     "FORCED_COUNT_MAX_DOFS",
@@ -787,6 +789,9 @@ def shell_search_seconds(work: Any) -> float:
 #: Name of the part of :func:`estimate_vehicle_cost` for the searches of an undamped vehicle's
 #: harmonics k = 1..k_max (:func:`undamped_search_seconds`).
 UNDAMPED_SEARCH_PART = "vehicle undamped searches"
+#: Name of the part of :func:`with_flight` for the searches outside the flight's range
+#: (:func:`pass_over_seconds`).
+PASS_OVER_PART = "flight pass-over searches"
 # The undamped search of a harmonic (every combination of its modes whose region the step rule
 # resolves at the case's gamma: more, and of higher orders, as gamma grows) integrates about
 # E_u = 10 times the step counts at its candidates' centres (counted: 7.7-13.4 x on a fuzz
@@ -1294,6 +1299,40 @@ def flight_time_seconds(case: Any) -> float:
     return mean + forced
 
 
+#: The parts of :func:`estimate_vehicle_cost` that search a harmonic's regions.
+_SEARCH_PARTS = (BENDING_SEARCH_PART, SHELL_SEARCH_PART, UNDAMPED_SEARCH_PART)
+
+
+def pass_over_seconds(case: Any) -> float:
+    """The predicted time (s, one core) of the flight's searches outside its range, where a
+    combination passes over it between frozen times (:mod:`flexbooster.flight_stage`:
+    ``MAX_PASS_OVER_SEARCHES`` windows, each searched down to the range's lowest Omega over
+    ``PASS_OVER_REACH``, where a step count grows by that factor): that many times
+    ``PASS_OVER_REACH`` times the largest search part of :func:`estimate_vehicle_cost` of the
+    frozen case at the middle frozen time; 0 without ``[flight]``.
+
+    Parameters
+    ----------
+    case : Case
+        The validated case (SI).
+    """
+    from .flight import MAX_PASS_OVER_SEARCHES, PASS_OVER_REACH
+    from .model import flight_times, frozen_case
+    from .shell_of_revolution import shared_harmonics
+
+    times = flight_times(case)
+    if times.size < 2:
+        return 0.0
+    try:
+        with shared_harmonics(isolated=True):
+            parts = estimate_vehicle_cost(frozen_case(case, float(times[times.size // 2])),
+                                          figures=False).parts
+    except ValueError:  # a vehicle the mesh refuses: the stage says why
+        return 0.0
+    return MAX_PASS_OVER_SEARCHES * PASS_OVER_REACH * max(
+        [parts.get(k, 0.0) for k in _SEARCH_PARTS])
+
+
 def combined(*estimates: CostEstimate) -> CostEstimate:
     """The estimates of stages that run one after the other, as one (parts by name).
 
@@ -1315,7 +1354,8 @@ def combined(*estimates: CostEstimate) -> CostEstimate:
 
 def with_flight(case: Any, vehicle: CostEstimate) -> CostEstimate:
     """``vehicle`` (:func:`estimate_vehicle_cost`) with the part "flight": the frozen times
-    (:func:`flexbooster.model.flight_times`) times :func:`flight_time_seconds`.
+    (:func:`flexbooster.model.flight_times`) times :func:`flight_time_seconds`, and the part
+    :data:`PASS_OVER_PART` (:func:`pass_over_seconds`).
 
     Parameters
     ----------
@@ -1330,10 +1370,14 @@ def with_flight(case: Any, vehicle: CostEstimate) -> CostEstimate:
     if n == 0:
         return vehicle
     seconds = n * flight_time_seconds(case)
-    return CostEstimate(seconds=vehicle.seconds + seconds,
-                        parts={**vehicle.parts, "flight": seconds},
+    outside = pass_over_seconds(case)
+    return CostEstimate(seconds=vehicle.seconds + seconds + outside,
+                        parts={**vehicle.parts, "flight": seconds,
+                               PASS_OVER_PART: outside},
                         drivers={**vehicle.drivers,
                                  "flight": ("flight.stations", "flight.times", "vehicle.k_max",
-                                            "vehicle.n_modes", "vehicle.segments")},
+                                            "vehicle.n_modes", "vehicle.segments"),
+                                 PASS_OVER_PART: ("flight.stations", "vehicle.n_modes",
+                                                  "damping.modal_ratio")},
                         capped_points=vehicle.capped_points,
                         capped_omega_max=vehicle.capped_omega_max)

@@ -19,6 +19,7 @@ import numpy as np
 
 from . import cost, floquet
 from ._threads import blas_threads
+from .bands import SearchGap
 from .case import Case
 from .checks import FieldValueError
 from .dynamics import (
@@ -35,10 +36,14 @@ from .dynamics import (
     peak_half_width,
     vehicle_regions,
     window_peaks,
+    window_regions,
 )
 from .errors import AnalysisWarning, CaseError
 from .flight import (
     KNOWN_FREQUENCY_MARGIN,
+    MAX_PASS_OVER_SEARCHES,
+    PASS_OVER_REACH,
+    PASS_OVER_WINDOW,
     band_events,
     band_key,
     band_rate,
@@ -315,11 +320,11 @@ def _assemble(case: Case, plan: _Plan, frozen: Sequence[FrozenTime]
     masses = [f.mass for f in frozen]
     modes_per_time = [f.modes for f in frozen]
     found_per_time = [(f.regions, f.axial) for f in frozen]
-    regions_per_time = [() if f.regions is None else f.regions.regions for f in frozen]
     harmonics = _track(times, modes_per_time, k_max, macs)
     osc = np.array([p.oscillation for p in points])
-    events = _region_events(times, points, found_per_time, harmonics, modes_per_time, osc)
-    notes: list[str] = []
+    extra, pass_gaps, notes = _pass_over_search(times, frozen, harmonics, (lo, hi))
+    events = _region_events(times, points, found_per_time, harmonics, modes_per_time, osc,
+                            extra)
     warnings: list[AnalysisWarning] = []
     if zeta > 0.0:
         forced, more, note = _forced_events(case, base, times, points, harmonics, osc,
@@ -330,13 +335,15 @@ def _assemble(case: Case, plan: _Plan, frozen: Sequence[FrozenTime]
     else:
         notes.append("no forced resonance peaks: damping.modal_ratio = 0 (undamped)")
     gaps = {}
-    for found, _ in found_per_time:
-        for g in () if found is None else found.gaps:
-            gaps.setdefault((g.limit, g.k), g)
+    for g in [g for found, _ in found_per_time for g in (() if found is None else found.gaps)
+              ] + pass_gaps:
+        gaps.setdefault((g.limit, g.k), g)
     warnings += [AnalysisWarning("flight-not-fully-searched", "flight", g.reason)
                  for g in gaps.values()]
+    regions_per_time = [tuple(sorted((() if f.regions is None else f.regions.regions) + more,
+                                     key=lambda r: (r.Omega_lo, r.k)))
+                        for f, more in zip(frozen, extra, strict=True)]
     warnings += _slosh_warnings(frozen, regions_per_time)
-    warnings += _pass_over_warnings(times, frozen, harmonics, (lo, hi))
     result = FlightResults(
         times=times, F0=np.array([p.F0 for p in points]),
         gamma=np.array([p.gamma for p in points]),
@@ -347,34 +354,81 @@ def _assemble(case: Case, plan: _Plan, frozen: Sequence[FrozenTime]
     return result, warnings
 
 
-def _pass_over_warnings(times: np.ndarray, frozen: Sequence[FrozenTime], harmonics,
-                        omega_range: tuple) -> list[AnalysisWarning]:
-    """The ``flight-pass-over`` warning: combinations of tracked modes whose centre passes over
-    the searched Omega range between two frozen times (:func:`flexbooster.flight.passes_over`),
-    in a harmonic searched at either time without a stability certificate (a certified
-    harmonic has no region at any Omega)."""
+def _pass_over_search(times: np.ndarray, frozen: Sequence[FrozenTime], harmonics,
+                      omega_range: tuple) -> tuple[list[tuple], list[SearchGap], list[str]]:
+    """The combinations of tracked modes whose centre passes over the searched Omega range
+    between two frozen times (:func:`flexbooster.flight.passes_over`), in a harmonic searched
+    without a stability certificate at either time (a certified harmonic has no region at any
+    Omega), searched at both times in the window centre (1 -+
+    :data:`flexbooster.flight.PASS_OVER_WINDOW`)
+    outside the range (:func:`flexbooster.dynamics.window_regions`; windows merged per time
+    and harmonic, within :data:`flexbooster.flight.PASS_OVER_REACH` of the range, at most
+    :data:`flexbooster.flight.MAX_PASS_OVER_SEARCHES`), so that their regions are followed
+    across the step like any other. Returns, per frozen time, the regions found outside the
+    range; the search gaps (windows past the limit or the toolkit's limits); the notes."""
     lo, hi = omega_range
     open_k = [set() for _ in frozen]  # per time: the harmonics searched and not certified
     for t, f in enumerate(frozen):
         if f.regions is not None:
             open_k[t] = {int(h.k) for h, c in zip(f.regions.harmonics, f.regions.certificates,
                                                    strict=True) if not c.certified}
-    hits = []
+    windows: dict[tuple[int, int], list[list[float]]] = {}  # (time, k) -> [lo, hi] windows
+    far: list[tuple] = []  # windows beyond the reach: (k, time, lo, hi)
+    count = 0
     for h in harmonics:
-        steps = [s for s in range(times.size - 1) if h.k in open_k[s] | open_k[s + 1]]
-        for s in steps:
-            hits += [(h.k, p) for p in passes_over(times[s:s + 2], h.frequencies[s:s + 2], lo, hi)]
-    if not hits:
-        return []
-    k, p = hits[0]
-    i, j = (n + 1 for n in p.identities)  # 1-based, as flight-modes.csv
-    which = f"mode {i}" if p.kind == "simple" else f"modes {i} and {j}"
-    return [AnalysisWarning("flight-pass-over", "flight.stations", (
-        f"{len(hits)} combination(s) of tracked modes pass over the searched Omega range "
-        f"{lo / (2.0 * math.pi):.4g}-{hi / (2.0 * math.pi):.4g} Hz between two frozen times, "
-        f"where neither searched them (the first: k = {k} {which} of flight-modes.csv, "
-        f"{p.kind}, order {p.order}, t = {p.t_start:.6g}-{p.t_end:.6g} s): their regions, if "
-        "any opens, are not in the flight's verdict; more flight.stations shorten the step"))]
+        for s in range(times.size - 1):
+            if h.k not in open_k[s] | open_k[s + 1]:
+                continue
+            for p in passes_over(times[s:s + 2], h.frequencies[s:s + 2], lo, hi):
+                count += 1
+                for t, c in ((s, p.centre_start), (s + 1, p.centre_end)):
+                    a, b = c * (1.0 - PASS_OVER_WINDOW), c * (1.0 + PASS_OVER_WINDOW)
+                    a, b = (a, min(b, lo)) if c < lo else (max(a, hi), b)
+                    if frozen[t].regions is None or a >= b:
+                        continue
+                    if a < lo / PASS_OVER_REACH or b > hi * PASS_OVER_REACH:
+                        far.append((h.k, t, a, b))
+                    else:
+                        windows.setdefault((t, h.k), []).append([a, b])
+    extra: list[tuple] = [() for _ in frozen]
+    gaps = [SearchGap(
+        stage="vehicle", limit="PASS_OVER_REACH", k=k, Omega_lo=a, Omega_hi=b, reason=(
+            f"harmonic k = {k} at t = {times[t]:.6g} s not searched in "
+            f"{a / (2.0 * math.pi):.4g}-{b / (2.0 * math.pi):.4g} Hz, where a combination "
+            "passes over the oscillation band before or after the next frozen time: beyond "
+            f"PASS_OVER_REACH = {PASS_OVER_REACH:g} x the searched range (more "
+            "flight.stations shorten the steps)")) for k, t, a, b in far]
+    searched = 0
+    for (t, k), spans in sorted(windows.items()):
+        spans.sort()
+        merged = [spans[0]]
+        for a, b in spans[1:]:  # overlapping windows searched once
+            if a <= merged[-1][1]:
+                merged[-1][1] = max(merged[-1][1], b)
+            else:
+                merged.append([a, b])
+        for a, b in merged:
+            if searched == MAX_PASS_OVER_SEARCHES:
+                gaps.append(SearchGap(
+                    stage="vehicle", limit="MAX_PASS_OVER_SEARCHES", k=k, Omega_lo=a,
+                    Omega_hi=b, reason=(
+                        f"harmonic k = {k} at t = {times[t]:.6g} s not searched in "
+                        f"{a / (2.0 * math.pi):.4g}-{b / (2.0 * math.pi):.4g} Hz, where a "
+                        "combination passes over the oscillation band before or after the "
+                        "next frozen time: more than MAX_PASS_OVER_SEARCHES = "
+                        f"{MAX_PASS_OVER_SEARCHES} such windows (more flight.stations shorten "
+                        "the steps)")))
+                continue
+            searched += 1
+            bands, more = window_regions(frozen[t].regions, k, a, b)
+            gaps += list(more)
+            # those that reach the range are the range's own search's
+            extra[t] += tuple(r for r in bands if r.Omega_hi < lo or r.Omega_lo > hi)
+    notes = [] if not count else [
+        f"{count} combination(s) of tracked modes pass over the searched Omega range between "
+        f"two frozen times: searched at both in {searched} window(s) outside the range, "
+        f"{sum(len(e) for e in extra)} region(s) found there"]
+    return extra, gaps, notes
 
 
 def slosh_warning(lead: str, low, slosh) -> AnalysisWarning:
@@ -475,13 +529,15 @@ def _identity(harmonics: dict, modes, t: int, k: int, omega: float | None) -> in
     return int(hit[0]) if hit.size else None
 
 
-def _region_events(times, points, found_per_time, harmonics, modes_per_time, osc) -> list:
-    """The parametric regions met by the oscillation band, with their accumulated growth."""
+def _region_events(times, points, found_per_time, harmonics, modes_per_time, osc,
+                   extra) -> list:
+    """The parametric regions met by the oscillation band, with their accumulated growth
+    (``extra``: per frozen time, the regions found outside the searched range)."""
     by_k = {h.k: h for h in harmonics}
     keys: dict[int, tuple] = {}
     bands_per_time, rates_per_time = [], []
     for t, ((found, _), p) in enumerate(zip(found_per_time, points, strict=True)):
-        bands = [] if found is None else list(found.regions)
+        bands = ([] if found is None else list(found.regions)) + list(extra[t])
         seen = set()
         rates = []
         for b in bands:

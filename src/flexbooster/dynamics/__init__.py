@@ -39,6 +39,7 @@ from .regions import (
     region_critical_damping,
     region_curves,
     vehicle_regions,
+    window_regions,
 )
 
 __all__ = [
@@ -70,6 +71,7 @@ __all__ = [
     "forced_axial",
     "harmonic_system",
     "region_critical_damping",
+    "window_regions",
     "region_curves",
     "vehicle_regions",
     "below_slosh",

@@ -34,7 +34,8 @@ from .harmonic import (
 )
 
 __all__ = ["RegionCurve", "VehicleRegions", "harmonic_system", "vehicle_regions",
-           "region_curves", "region_critical_damping", "below_slosh", "SLOSH_VALIDITY_FACTOR"]
+           "window_regions", "region_curves", "region_critical_damping", "below_slosh",
+           "SLOSH_VALIDITY_FACTOR"]
 
 #: The liquid's added mass is the high-frequency limit (free surface p = 0: the slosh masses
 #: left out); a slosh oscillator of mass m_1 and frequency omega_s adds m_1 omega_s^2 /
@@ -388,6 +389,31 @@ def vehicle_regions(
                                      damping_margin=damping_margin)
         found = dataclasses.replace(found, curves=curves, chart_gaps=more)
     return found
+
+
+def window_regions(found: VehicleRegions, k: int, omega_min: float, omega_max: float
+                   ) -> tuple[tuple, tuple]:
+    """The regions of harmonic k of a map in another Omega window: its harmonic system at its
+    gamma, searched as :func:`vehicle_regions` searches (default options, critical gamma of
+    each), e.g. a flight's frozen time outside its searched range. Returns (bands, gaps): the
+    bands sorted by Omega_lo, or a SearchGap past a size limit of the toolkit.
+
+    Parameters
+    ----------
+    found : VehicleRegions
+        The map (its ``harmonics`` hold harmonic k).
+    k : int
+        Circumferential harmonic, one of the map's.
+    omega_min, omega_max : float
+        The window (rad/s), 0 < omega_min < omega_max.
+    """
+    lo, hi = _range(omega_min, omega_max)
+    h = found.harmonic(k)
+    try:
+        bands = harmonic_regions(h, found.gamma, lo, hi, floquet_options())
+    except LIMIT_ERRORS as exc:
+        return (), (limit_gap(h, lo, hi, exc),)
+    return tuple(sorted(bands, key=lambda r: r.Omega_lo)), ()
 
 
 def region_critical_damping(found: VehicleRegions, *, growth_floor: float = 0.0,

@@ -6,7 +6,10 @@ events of the flight (:mod:`.events`). Numerical core: numpy and scipy only. The
 
 from .events import (
     EVENT_COLUMNS,
+    MAX_PASS_OVER_SEARCHES,
     PASS_OVER_ORDERS,
+    PASS_OVER_REACH,
+    PASS_OVER_WINDOW,
     FlightEvent,
     PassOver,
     band_events,
@@ -46,4 +49,5 @@ __all__ = ["FlightPoint", "Timeline", "frozen_times", "flight_omega_range",
            "peak_ratio", "steady_peak", "step_maps", "sweep_passage", "sweep_response",
            "EVENT_COLUMNS", "FlightEvent", "band_events", "band_key", "band_rate",
            "meeting_intervals", "resonance_events", "worst_first", "PASS_OVER_ORDERS",
-           "PassOver", "passes_over"]
+           "PASS_OVER_WINDOW", "PASS_OVER_REACH", "MAX_PASS_OVER_SEARCHES", "PassOver",
+           "passes_over"]

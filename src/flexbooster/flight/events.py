@@ -22,7 +22,8 @@ from .passage import Passage, accumulated_growth, crossing_peak_ratio
 
 __all__ = ["FlightEvent", "EVENT_COLUMNS", "band_key", "band_events", "band_rate",
            "resonance_events", "meeting_intervals", "worst_first", "PASS_OVER_ORDERS",
-           "PassOver", "passes_over"]
+           "PASS_OVER_WINDOW", "PASS_OVER_REACH", "MAX_PASS_OVER_SEARCHES", "PassOver",
+           "passes_over"]
 
 #: Columns of flight-events.csv, in order (the keys of :meth:`FlightEvent.to_dict`).
 EVENT_COLUMNS = ("mechanism", "k", "modes", "t_start_s", "t_end_s", "max_growth_1_s",
@@ -406,6 +407,16 @@ def worst_first(events: Sequence[FlightEvent]) -> list[FlightEvent]:
 #: Orders n of the combination centres (2 w_i, w_i + w_j, |w_i - w_j|) / n checked by
 #: :func:`passes_over` (the first two: the widest regions).
 PASS_OVER_ORDERS = 2
+#: A combination passing over the searched range between two frozen times is searched at
+#: each of them in the window centre (1 -+ PASS_OVER_WINDOW) outside that range (the first-
+#: order width of a region is a small fraction of its centre: Bolotin 1964, sec. 3).
+PASS_OVER_WINDOW = 0.1
+#: Such windows are searched within [lo / PASS_OVER_REACH, hi PASS_OVER_REACH] of the searched
+#: range [lo, hi] (a window further out is a search gap: its cost grows as 1 / Omega).
+PASS_OVER_REACH = 2.0
+#: Most such windows searched in one flight (merged per frozen time and harmonic); the pass-
+#: overs beyond are search gaps.
+MAX_PASS_OVER_SEARCHES = 24
 
 
 @dataclass(frozen=True)
@@ -423,6 +434,8 @@ class PassOver:
         n.
     t_start, t_end : float
         The two frozen times (s).
+    centre_start, centre_end : float
+        The centre (rad/s) at each.
     """
 
     kind: str
@@ -430,6 +443,8 @@ class PassOver:
     order: int
     t_start: float
     t_end: float
+    centre_start: float
+    centre_end: float
 
 
 def passes_over(times: Any, frequencies: Any, lo: float, hi: float, *,
@@ -472,5 +487,7 @@ def passes_over(times: Any, frequencies: Any, lo: float, hi: float, *,
                 lo0, hi0, lo1, hi1 = c0 / n < lo, c0 / n > hi, c1 / n < lo, c1 / n > hi
                 for m in np.flatnonzero(pairs & ((lo0 & hi1) | (hi0 & lo1))):  # NaN: False
                     out.append(PassOver(kind=kind, identities=(int(i[m]), int(j[m])), order=n,
-                                        t_start=float(t[s]), t_end=float(t[s + 1])))
+                                        t_start=float(t[s]), t_end=float(t[s + 1]),
+                                        centre_start=float(c0[m] / n),
+                                        centre_end=float(c1[m] / n)))
     return tuple(out)
