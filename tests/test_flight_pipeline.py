@@ -531,3 +531,17 @@ def test_combinations_passing_over_the_band_are_searched_at_both_ends():
     assert coarse_event.t_end_s == pytest.approx(fine_event.t_end_s, abs=156.0 / 40)
     assert any(g.limit == "PASS_OVER_REACH" and g.k == 1 for g in fl.gaps)
     assert [w for w in warnings if w.code == "flight-not-fully-searched"]
+
+
+def test_window_regions_over_the_range_are_the_frozen_times_own():
+    """Exact invariant: dynamics.window_regions of a frozen time's map over that map's own
+    Omega range is the same search on the same system, so it returns that harmonic's regions
+    of the map, equal as dataclasses (bit for bit), for every harmonic searched."""
+    from flexbooster.dynamics import window_regions
+
+    found = frozen_time(load_case(CASE), 0).regions
+    assert found.regions  # the constant case has regions
+    for h in found.harmonics:
+        bands, gaps = window_regions(found, h.k, found.omega_min, found.omega_max)
+        assert gaps == ()
+        assert bands == tuple(r for r in found.regions if r.k == h.k)
