@@ -1273,34 +1273,7 @@ def flight_time_seconds(case: Any) -> float:
     case : Case
         The validated case (SI).
     """
-    from .model import flight_times, frozen_case, vehicle_from_case
-    from .shell_of_revolution import shared_harmonics
-
-    times = flight_times(case)
-    if times.size == 0:
-        return 0.0
-    try:
-        forced = _FLIGHT_FORCED * forced_seconds(vehicle_from_case(case), 0,
-                                                 large_basis=False) * (
-            1.0 + (case.thrust.misalignment != 0.0))
-    except ValueError:  # a vehicle the mesh refuses: the stage says why
-        return 0.0
-    samples = np.unique(np.linspace(0, times.size - 1, FLIGHT_SAMPLES).round().astype(int))
-
-    def sample(i: int) -> float:  # another vehicle: its builds released after it
-        with shared_harmonics(isolated=True):
-            parts = estimate_vehicle_cost(frozen_case(case, float(times[i])),
-                                          figures=False).parts
-        return sum(v * (_FLIGHT_SHARED if k in _FLIGHT_SHARED_PARTS else 1.0)
-                   for k, v in parts.items() if k != CRITICAL_DAMPING_PART)
-
-    each = np.array([sample(int(i)) for i in samples])
-    mean = float(np.mean(np.interp(np.arange(times.size), samples, each)))
-    return mean + forced
-
-
-#: The parts of :func:`estimate_vehicle_cost` that search a harmonic's regions.
-_SEARCH_PARTS = (BENDING_SEARCH_PART, SHELL_SEARCH_PART, UNDAMPED_SEARCH_PART)
+    return _flight_samples(case)[0]
 
 
 def pass_over_seconds(case: Any) -> float:
@@ -1309,28 +1282,50 @@ def pass_over_seconds(case: Any) -> float:
     ``MAX_PASS_OVER_SEARCHES`` windows, each searched down to the range's lowest Omega over
     ``PASS_OVER_REACH``, where a step count grows by that factor): that many times
     ``PASS_OVER_REACH`` times the largest search part of :func:`estimate_vehicle_cost` of the
-    frozen case at the middle frozen time; 0 without ``[flight]``.
+    frozen cases of :func:`flight_time_seconds`; 0 without ``[flight]``.
 
     Parameters
     ----------
     case : Case
         The validated case (SI).
     """
+    return _flight_samples(case)[1]
+
+
+#: The parts of :func:`estimate_vehicle_cost` that search a harmonic's regions.
+_SEARCH_PARTS = (BENDING_SEARCH_PART, SHELL_SEARCH_PART, UNDAMPED_SEARCH_PART)
+
+
+def _flight_samples(case: Any) -> tuple[float, float]:
+    """(:func:`flight_time_seconds`, :func:`pass_over_seconds`) from the same samples."""
     from .flight import MAX_PASS_OVER_SEARCHES, PASS_OVER_REACH
-    from .model import flight_times, frozen_case
+    from .model import flight_times, frozen_case, vehicle_from_case
     from .shell_of_revolution import shared_harmonics
 
     times = flight_times(case)
-    if times.size < 2:
-        return 0.0
+    if times.size == 0:
+        return 0.0, 0.0
     try:
-        with shared_harmonics(isolated=True):
-            parts = estimate_vehicle_cost(frozen_case(case, float(times[times.size // 2])),
-                                          figures=False).parts
+        forced = _FLIGHT_FORCED * forced_seconds(vehicle_from_case(case), 0,
+                                                 large_basis=False) * (
+            1.0 + (case.thrust.misalignment != 0.0))
     except ValueError:  # a vehicle the mesh refuses: the stage says why
-        return 0.0
-    return MAX_PASS_OVER_SEARCHES * PASS_OVER_REACH * max(
-        [parts.get(k, 0.0) for k in _SEARCH_PARTS])
+        return 0.0, 0.0
+    samples = np.unique(np.linspace(0, times.size - 1, FLIGHT_SAMPLES).round().astype(int))
+
+    def sample(i: int) -> tuple[float, float]:  # another vehicle: its builds released after it
+        with shared_harmonics(isolated=True):
+            parts = estimate_vehicle_cost(frozen_case(case, float(times[i])),
+                                          figures=False).parts
+        return (sum(v * (_FLIGHT_SHARED if k in _FLIGHT_SHARED_PARTS else 1.0)
+                    for k, v in parts.items() if k != CRITICAL_DAMPING_PART),
+                max(parts.get(k, 0.0) for k in _SEARCH_PARTS))
+
+    each, search = np.array([sample(int(i)) for i in samples]).T
+    mean = float(np.mean(np.interp(np.arange(times.size), samples, each)))
+    outside = 0.0 if times.size < 2 else (
+        MAX_PASS_OVER_SEARCHES * PASS_OVER_REACH * float(np.max(search)))
+    return mean + forced, outside
 
 
 def combined(*estimates: CostEstimate) -> CostEstimate:
@@ -1369,8 +1364,8 @@ def with_flight(case: Any, vehicle: CostEstimate) -> CostEstimate:
     n = int(flight_times(case).size)
     if n == 0:
         return vehicle
-    seconds = n * flight_time_seconds(case)
-    outside = pass_over_seconds(case)
+    each, outside = _flight_samples(case)
+    seconds = n * each
     return CostEstimate(seconds=vehicle.seconds + seconds + outside,
                         parts={**vehicle.parts, "flight": seconds,
                                PASS_OVER_PART: outside},
