@@ -369,10 +369,9 @@ def vehicle_regions(
                                 unloaded_frequencies=unloaded_frequencies, **mesh)
         harmonics.append(h)
         certs.append(floquet.stability_certificate(*h.periodic(gamma)))
-        try:
-            regions += harmonic_regions(h, gamma, lo, hi, opts)
-        except LIMIT_ERRORS as exc:
-            gaps.append(limit_gap(h, lo, hi, exc))
+        found_k, gap_k = _search(h, gamma, lo, hi, opts)
+        regions += found_k
+        gaps += gap_k
     regions.sort(key=lambda r: (r.Omega_lo, r.k))
     fa = None
     if axial:
@@ -408,12 +407,18 @@ def window_regions(found: VehicleRegions, k: int, omega_min: float, omega_max: f
         The window (rad/s), 0 < omega_min < omega_max.
     """
     lo, hi = _range(omega_min, omega_max)
-    h = found.harmonic(k)
+    bands, gaps = _search(found.harmonic(k), found.gamma, lo, hi, floquet_options())
+    return tuple(sorted(bands, key=lambda r: r.Omega_lo)), gaps
+
+
+def _search(h: HarmonicSystem, gamma: float, lo: float, hi: float, opts: dict
+            ) -> tuple[list, tuple]:
+    """:func:`harmonic_regions` of one harmonic, or its SearchGap past a size limit of the
+    toolkit: (bands, gaps)."""
     try:
-        bands = harmonic_regions(h, found.gamma, lo, hi, floquet_options())
+        return harmonic_regions(h, gamma, lo, hi, opts), ()
     except LIMIT_ERRORS as exc:
-        return (), (limit_gap(h, lo, hi, exc),)
-    return tuple(sorted(bands, key=lambda r: r.Omega_lo)), ()
+        return [], (limit_gap(h, lo, hi, exc),)
 
 
 def region_critical_damping(found: VehicleRegions, *, growth_floor: float = 0.0,
