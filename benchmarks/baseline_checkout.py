@@ -7,13 +7,16 @@ packages (``PYTHONPATH=<folder>/src``), and removed afterwards.
 
 from __future__ import annotations
 
+import json
+import os
 import subprocess
+import sys
 import tempfile
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
 
-__all__ = ["ROOT", "baseline_checkout", "alternate"]
+__all__ = ["ROOT", "baseline_checkout", "alternate", "child_json", "best"]
 
 #: The repository root.
 ROOT = Path(__file__).resolve().parents[1]
@@ -68,3 +71,29 @@ def alternate(rev: str, rounds: int, run: Callable[[Path], dict]) -> dict[str, l
             for tree, src in (("new", ROOT / "src"), ("old", base / "src")):
                 out[tree].append(run(src))
     return out
+
+
+def child_json(src: Path, code: str, *args: str) -> dict:
+    """Run ``python -c code args`` with ``PYTHONPATH=src`` and one BLAS thread; the JSON object
+    on the last line of its output (SystemExit with its last error line if it fails).
+
+    Parameters
+    ----------
+    src : pathlib.Path
+        The ``src`` folder of the tree to run.
+    code : str
+        The child's program; it prints one JSON object last.
+    *args : str
+        Its arguments.
+    """
+    env = dict(os.environ, PYTHONPATH=str(src), OPENBLAS_NUM_THREADS="1")
+    done = subprocess.run([sys.executable, "-c", code, *args], env=env, capture_output=True,
+                          text=True)
+    if done.returncode:
+        raise SystemExit(f"{src}: {done.stderr.strip().splitlines()[-1]}")
+    return json.loads(done.stdout.strip().splitlines()[-1])
+
+
+def best(runs: dict[str, list[dict]], key: str = "cpu") -> tuple[float, float]:
+    """(baseline, this tree): the smallest ``key`` of each tree's runs from :func:`alternate`."""
+    return min(r[key] for r in runs["old"]), min(r[key] for r in runs["new"])

@@ -19,13 +19,11 @@ Run from the repository root::
 from __future__ import annotations
 
 import argparse
-import json
 import os
 import subprocess
-import sys
 from pathlib import Path
 
-from baseline_checkout import ROOT, alternate
+from baseline_checkout import ROOT, alternate, best, child_json
 from bench_vehicle_regions import README_VEHICLE
 
 #: The code before the pipeline became a plain sequence of stages.
@@ -66,21 +64,13 @@ def main() -> None:
     case_path.write_text(text + VEHICLE_EXAMPLE)
 
     def run(src: Path) -> dict:
-        tree = "new" if src == ROOT / "src" else "old"
-        env = dict(os.environ, PYTHONPATH=str(src), OPENBLAS_NUM_THREADS="1")
-        done = subprocess.run([sys.executable, "-c", CHILD, str(case_path), tree], env=env,
-                              capture_output=True, text=True)
-        if done.returncode:
-            raise SystemExit(f"{tree}: {done.stderr.strip().splitlines()[-1]}")
-        out = done.stdout
-        return json.loads(out.strip().splitlines()[-1])
+        return child_json(src, CHILD, str(case_path), "new" if src == ROOT / "src" else "old")
 
     try:
         runs = alternate(opts.baseline, opts.rounds, run)
     finally:
         case_path.unlink(missing_ok=True)
-    old = min(r["cpu"] for r in runs["old"])
-    new = min(r["cpu"] for r in runs["new"])
+    old, new = best(runs)
     print(f"vehicle-regions stage of the README [vehicle] example, best CPU of {opts.rounds}, "
           f"load average {os.getloadavg()[0]:.1f}: baseline {opts.baseline} {old:.2f} s, now "
           f"{new:.2f} s; baseline / now {old / new:.2f} (goal >= 1: "

@@ -270,6 +270,9 @@ def test_passes_over_finds_the_centres_that_jump_the_range():
     assert all((p.t_start, p.t_end) == (0.0, 1.0) for p in back)
     assert passes_over([0.0, 1.0], f, 4.0, 5.0, orders=1) == tuple(
         p for p in passes_over([0.0, 1.0], f, 4.0, 5.0) if p.order == 1)
+    # kinds: only those asked for (a canonical harmonic has no difference regions)
+    assert passes_over([0.0, 1.0], f, 4.0, 5.0, kinds=("simple", "sum")) == tuple(
+        p for p in passes_over([0.0, 1.0], f, 4.0, 5.0) if p.kind != "difference")
     # three times: the jump is reported for its own step only
     three = passes_over([0.0, 1.0, 2.0], np.array([[2.0, 3.0], [2.0, 3.1], [2.0, 9.0]]), 4.0,
                         5.0)
@@ -278,7 +281,8 @@ def test_passes_over_finds_the_centres_that_jump_the_range():
 
 @pytest.mark.parametrize(("kwargs", "name"), [
     ({"times": [0.0, np.inf]}, "times"), ({"frequencies": [[1.0]]}, "frequencies"),
-    ({"lo": 0.0}, "lo"), ({"hi": 3.0}, "hi"), ({"orders": 0}, "orders")])
+    ({"lo": 0.0}, "lo"), ({"hi": 3.0}, "hi"), ({"orders": 0}, "orders"),
+    ({"kinds": ("sum", "diff")}, "kinds"), ({"kinds": "sum"}, "kinds")])
 def test_passes_over_bad_input_names_the_parameter(kwargs, name):
     args = dict(times=[0.0, 1.0], frequencies=[[1.0], [2.0]], lo=4.0, hi=5.0) | kwargs
     with pytest.raises(ValueError, match=name):

@@ -28,6 +28,7 @@ from flexbooster.floquet import (
     monodromy,
     periodic_boundaries,
     region_boundaries,
+    resonance_kinds,
     search_work,
     stability_certificate,
     steady_frequencies,
@@ -429,6 +430,119 @@ def test_hsu_edges_against_bruteforce_scan(b12, b21):
 
     lo, hi = _scan_edges(unstable, r.omega_lo - 0.3 * w, r.omega_hi + 0.3 * w, 41, 1e-11)
     assert (r.omega_lo, r.omega_hi) == pytest.approx((lo, hi), abs=1e-8)
+
+
+def test_canonical_flag_and_resonance_kinds():
+    # Krein's theorem needs M, A, B symmetric and M, A positive definite (Yakubovich and
+    # Starzhinskii 1975, ch. VI): the symmetric modal systems of a structure under a dead
+    # load are canonical, with or without damping; a non-symmetric B (Hsu's b12 b21 < 0), an
+    # A with a negative eigenvalue, a non-symmetric M are not; an asymmetry of round-off size
+    # (1e-14 of the largest entry) is ignored, one of 1e-9 is not (SYMMETRY_RTOL = 1e-12)
+    M, C, A, B = weakly_coupled(3, 0.3, 0.01)
+    assert periodic_system(M, None, A, B).canonical and periodic_system(M, C, A, B).canonical
+    assert resonance_kinds(M, C, A, B) == ("simple", "sum")
+    assert resonance_kinds(*hsu(0.02, 1.0, 1.0)) == ("simple", "sum")
+    assert resonance_kinds(*hsu(0.02, 1.0, -1.0)) == ("simple", "sum", "difference")
+    assert resonance_kinds(*hsu(0.02, 0.5, 2.0)) == ("simple", "sum", "difference")
+    skew = np.zeros((4, 4))
+    skew[0, 1], skew[1, 0] = 1.0, -1.0
+    big = np.max(np.abs(B))
+    assert periodic_system(M, None, A, B + 1e-14 * big * skew).canonical
+    assert not periodic_system(M, None, A, B + 1e-9 * big * skew).canonical
+    assert not periodic_system(M, None, A - 1.5 * np.eye(4), B).canonical  # w_0^2 = -0.5
+    assert not periodic_system(M + 0.1 * np.abs(skew) * np.tri(4), None, A, B).canonical
+
+
+def _difference_centres(w: np.ndarray, lo: float, hi: float, orders: int) -> np.ndarray:
+    """(w_k - w_i) / j for i < k, j = 1..orders, inside [lo, hi]."""
+    i, k = np.triu_indices(w.size, 1)
+    c = np.concatenate([(w[k] - w[i]) / j for j in range(1, orders + 1)])
+    return np.sort(c[(c >= lo) & (c <= hi)])
+
+
+def test_canonical_system_is_stable_at_its_difference_centres():
+    # Krein (1955): at a difference centre (w_k - w_i) / j of a canonical system the colliding
+    # multipliers are of the same kind and stay on the unit circle. Independent integration
+    # (solve_ivp, DOP853, rtol 1e-12) of the 4-mode symmetric system at gamma = 0.5 (couplings
+    # up to an eighth of w_a w_b): at each first-order difference centre in [0.3, 4] |rho|_max
+    # = 1 to 1e-8 (the integration's error). The counterpart with one coupling of opposite
+    # sign (B non-symmetric, b_01 b_10 < 0) is unstable at its own difference centre w_1 - w_0
+    # (Hsu 1963), so the check can fail.
+    M, _, A, B = weakly_coupled(3, 0.5, 0.0)
+    w = np.sqrt(np.diag(A))
+    centres = _difference_centres(w, 0.3, 4.0, 1)
+    assert centres.size >= 5
+    for c in centres:
+        assert abs(ivp_growth_rate(M, 0 * M, A, B, c)) * 2 * np.pi / c < 1e-8
+    Bn = B.copy()
+    Bn[1, 0] = -Bn[0, 1]
+    assert ivp_growth_rate(M, 0 * M, A, Bn, w[1] - w[0]) > 1e-4
+
+
+def four_modes(gamma: float, zeta: float, w3: float = 4.15):
+    """:func:`weakly_coupled` (seed 3) with its last frequency moved to ``w3``: at 4.1 the
+    centres 2 w_2 / 3 and (w_1 + w_3) / 3 coincide (2 x 2.9 = 1.7 + 4.1)."""
+    M, C, A, B = weakly_coupled(3, gamma, zeta)
+    w0 = np.sqrt(np.diag(A))
+    w = np.array([w0[0], w0[1], w0[2], w3])
+    scale = np.outer(w, w) / np.outer(w0, w0)
+    return M, 2 * zeta * np.diag(w), np.diag(w**2), B * scale
+
+
+def _unstable_outside(M, C, A, B, regions, lo: float, hi: float, n: int) -> np.ndarray:
+    """Points of a uniform grid of n over [lo, hi] with growth rate > 1e-9 (the monodromy
+    kernel, checked against solve_ivp above) outside every region."""
+    grid = np.linspace(lo, hi, n)
+    unstable = grid[growth_rate(M, C, A, B, grid) > 1e-9]
+    inside = np.zeros(unstable.size, dtype=bool)
+    for r in regions:
+        inside |= (unstable >= r.omega_lo) & (unstable <= r.omega_hi)
+    assert unstable.size
+    return unstable[~inside]
+
+
+@pytest.mark.parametrize("zeta", [0.0, 0.01], ids=["undamped", "damped"])
+def test_canonical_search_without_difference_candidates_finds_every_region(zeta):
+    # invariant: a canonical system searched without its difference candidates against the
+    # same system made non-canonical by an antisymmetric 1e-10 part of B (the full search,
+    # every difference candidate examined; asserted by search_work): the same regions (edges
+    # within 1e-8 relative), none of them of difference kind; gamma = 0.3, every order, Omega
+    # 0.3..9. A region the full search labels "difference" is the one its difference
+    # candidate reached first: a sum or simple region of another order, with the same edges.
+    # And a brute-force scan over 3,000 points of [0.3, 9]: no unstable point outside the
+    # regions.
+    M, C, A, B = four_modes(0.3, zeta)
+    C = C if zeta else None
+    skew = np.zeros((4, 4))
+    skew[0, 1], skew[1, 0] = 1.0, -1.0
+    Bp = B + 1e-10 * np.max(np.abs(B)) * skew
+    assert periodic_system(M, C, A, B).canonical and not periodic_system(M, C, A, Bp).canonical
+    fast = search_work(M, C, A, B, 0.3, 9.0)
+    full = search_work(M, C, A, Bp, 0.3, 9.0)
+    assert full.n_candidates >= fast.n_candidates + 5
+    mine = instability_regions(M, C, A, B, 0.3, 9.0)
+    ref = instability_regions(M, C, A, Bp, 0.3, 9.0)
+    assert len(mine) == len(ref) >= 4
+    assert all(r.kind != "difference" for r in mine)
+    for a, b in zip(sorted(mine, key=lambda r: r.omega_lo),
+                    sorted(ref, key=lambda r: r.omega_lo), strict=True):
+        assert (a.omega_lo, a.omega_hi) == pytest.approx((b.omega_lo, b.omega_hi), rel=1e-8)
+        assert b.kind == "difference" or (a.kind, a.modes, a.order) == (b.kind, b.modes,
+                                                                         b.order)
+    assert _unstable_outside(M, C, A, B, mine, 0.3, 9.0, 3000).size == 0
+
+
+@pytest.mark.xfail(strict=True, reason="known hole: where two candidates' centres coincide "
+                   "the window shrinks to 2 x the estimated width, and a region shifted by "
+                   "the second-order frequency shifts lies outside it")
+def test_region_of_coincident_centres_shifted_out_of_its_window():
+    # 2 w_2 / 3 = (w_1 + w_3) / 3 = 1.9333 at w_3 = 4.1: the simple j = 3 region of mode 2
+    # lies at 1.9243-1.9291 (found at w_3 = 4.15, where the centres are apart, and unstable
+    # at the grid points 1.9245 and 1.9274 by solve_ivp, growth 1.5e-3 and 3.0e-3), 0.4 %
+    # below its centre at gamma = 0.3; the full search misses it too.
+    M, _, A, B = four_modes(0.3, 0.0, w3=4.1)
+    regions = instability_regions(M, None, A, B, 0.3, 9.0)
+    assert _unstable_outside(M, None, A, B, regions, 0.3, 9.0, 3000).size == 0
 
 
 def test_damped_combination_against_exact_shift():

@@ -178,6 +178,10 @@ def test_sd_modal_system_decouples_in_m():
     other = h.mode_order != h.mode_order[0]
     assert np.any(other)
     assert np.max(np.abs(B1[0, other])) < 1e-8 * np.max(np.abs(B1))
+    # the axial thrust is a dead load: M = I, A = diag(omega^2), B1 = -V^T K_g V symmetric,
+    # so the harmonic is canonical and only its simple and sum centres can open a region
+    # (Krein 1955; flexbooster.floquet.resonance_kinds); the k = 1 follower thrust is not
+    assert floquet.resonance_kinds(*h.periodic(0.1)) == ("simple", "sum")
 
 
 # --------------------------------------------------------------------------- tier 2: vehicle
@@ -577,6 +581,7 @@ def test_k1_bending_system_rigid_modes_and_follower_term():
                                                  rel=5e-3)
     M, C, A, B = bs.matrices(0.1)
     assert np.max(np.abs(A - A.T)) > 1e-6 * np.max(np.abs(A))
+    assert floquet.resonance_kinds(M, C, A, B) == ("simple", "sum", "difference")
     json.dumps(bs.to_dict())
     with pytest.raises(ValueError, match="^F0 = "):
         bending_system(veh, F0=0.0)

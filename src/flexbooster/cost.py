@@ -805,12 +805,21 @@ PASS_OVER_PART = "flight pass-over searches"
 # steps (the short wide cylinder of tests/data, undamped, k = 2, n = 5, Omega within 0.5 % of
 # one centre): 7-10 evaluations, 9.8-13.8 s CPU measured, 1.2 s priced without this term.
 _C_UNDAMPED_CANDIDATE = 3e-3
+# A canonical harmonic (every k >= 2: floquet.SearchWork.canonical) has no difference
+# candidates, and nearly all of its simple and sum ones open a region when undamped, each
+# then refined at both edges: 17.7 and 14.5 x its centre steps (tests/data/
+# flight_undamped_case.toml at lift-off and burnout, k = 3..6: 162 regions of 170 candidates
+# and 113 of 214), so E_u = 18; that flight's whole vehicle-regions stage (k <= 20, 433 and
+# 938 regions, 3.8 and 9.0 s CPU) is then 1.0 and 1.42 x its estimate (1.05 and 1.34 x when
+# the difference candidates were examined).
+_EVALS_UNDAMPED_CANONICAL = 18.0
 
 
 def undamped_search_seconds(work: Any) -> float:
     """CPU time (s, one core) of the region search of an undamped harmonic from its work
     counted up front: 3e-3 s per candidate examined by the monodromy and E_u = 10 evaluations
-    of the steps at its centre (:func:`search_step_seconds`), each with the batch's overhead
+    (18 for a canonical harmonic) of the steps at its centre (:func:`search_step_seconds`),
+    each with the batch's overhead
     for its longest candidate (15e-6 s per step of ``work.undamped_max_steps``); 0 when steady
     (no search).
 
@@ -822,7 +831,8 @@ def undamped_search_seconds(work: Any) -> float:
     _check_work(work)
     if work.steady:
         return 0.0
-    return float(_C_UNDAMPED_CANDIDATE * work.n_candidates + _EVALS_UNDAMPED[0] * (
+    evals = _EVALS_UNDAMPED_CANONICAL if work.canonical else _EVALS_UNDAMPED[0]
+    return float(_C_UNDAMPED_CANDIDATE * work.n_candidates + evals * (
         work.undamped_steps * search_step_seconds(work.n)
         + work.undamped_max_steps * _C_BATCH_STEP))
 

@@ -359,7 +359,8 @@ def _pass_over_search(times: np.ndarray, frozen: Sequence[FrozenTime], harmonics
     """The combinations of tracked modes whose centre passes over the searched Omega range
     between two frozen times (:func:`flexbooster.flight.passes_over`), in a harmonic searched
     without a stability certificate at either time (a certified harmonic has no region at any
-    Omega), searched at both times in the window centre (1 -+
+    Omega), of a kind that can open a region there (:func:`flexbooster.floquet.resonance_kinds`),
+    searched at both times in the window centre (1 -+
     :data:`flexbooster.flight.PASS_OVER_WINDOW`)
     outside the range (:func:`flexbooster.dynamics.window_regions`; windows merged per time
     and harmonic, within :data:`flexbooster.flight.PASS_OVER_REACH` of the range, at most
@@ -372,6 +373,17 @@ def _pass_over_search(times: np.ndarray, frozen: Sequence[FrozenTime], harmonics
         if f.regions is not None:
             open_k[t] = {int(h.k) for h, c in zip(f.regions.harmonics, f.regions.certificates,
                                                    strict=True) if not c.certified}
+    kinds_at: dict[tuple[int, int], tuple[str, ...]] = {}
+
+    def kinds(t: int, k: int) -> tuple[str, ...]:  # what can open a region of k at time t
+        if (t, k) not in kinds_at:
+            found = frozen[t].regions
+            system = None if found is None else next(
+                (x for x in found.harmonics if x.k == k), None)
+            kinds_at[(t, k)] = (floquet.RESONANCE_KINDS if system is None else
+                                floquet.resonance_kinds(*system.periodic(found.gamma)))
+        return kinds_at[(t, k)]
+
     windows: dict[tuple[int, int], list[list[float]]] = {}  # (time, k) -> [lo, hi] windows
     far: list[tuple] = []  # windows beyond the reach: (k, time, lo, hi)
     count = 0
@@ -379,7 +391,9 @@ def _pass_over_search(times: np.ndarray, frozen: Sequence[FrozenTime], harmonics
         for s in range(times.size - 1):
             if h.k not in open_k[s] | open_k[s + 1]:
                 continue
-            for p in passes_over(times[s:s + 2], h.frequencies[s:s + 2], lo, hi):
+            either = set(kinds(s, h.k)) | set(kinds(s + 1, h.k))
+            for p in passes_over(times[s:s + 2], h.frequencies[s:s + 2], lo, hi, kinds=tuple(
+                    kind for kind in floquet.RESONANCE_KINDS if kind in either)):
                 count += 1
                 for t, c in ((s, p.centre_start), (s + 1, p.centre_end)):
                     a, b = c * (1.0 - PASS_OVER_WINDOW), c * (1.0 + PASS_OVER_WINDOW)

@@ -17,7 +17,7 @@ import numpy as np
 
 from ..bands import Band
 from ..checks import finite_array, positive
-from ..floquet import StepLimitError
+from ..floquet import RESONANCE_KINDS, StepLimitError
 from .passage import Passage, accumulated_growth, crossing_peak_ratio
 
 __all__ = ["FlightEvent", "EVENT_COLUMNS", "band_key", "band_events", "band_rate",
@@ -448,7 +448,8 @@ class PassOver:
 
 
 def passes_over(times: Any, frequencies: Any, lo: float, hi: float, *,
-                orders: int = PASS_OVER_ORDERS) -> tuple[PassOver, ...]:
+                orders: int = PASS_OVER_ORDERS,
+                kinds: Sequence[str] = RESONANCE_KINDS) -> tuple[PassOver, ...]:
     """The combinations of tracked modes whose centre lies below ``lo`` at one frozen time and
     above ``hi`` at the next, or the reverse. The frequencies, and so the centres, are linear
     between frozen times (as everywhere in the flight), so such a centre crosses all of
@@ -465,6 +466,9 @@ def passes_over(times: Any, frequencies: Any, lo: float, hi: float, *,
         The searched Omega range (rad/s), 0 < lo <= hi.
     orders : int
         The orders n = 1..orders of the centres, >= 1.
+    kinds : sequence of str
+        The kinds of combination looked at, of "simple", "sum", "difference" (a harmonic's
+        :func:`flexbooster.floquet.resonance_kinds`).
     """
     t = finite_array("times", times)
     f = np.asarray(frequencies, dtype=float)
@@ -475,6 +479,9 @@ def passes_over(times: Any, frequencies: Any, lo: float, hi: float, *,
         raise ValueError(f"hi = {hi!r}: must be >= lo = {lo!r}")
     if not isinstance(orders, int | np.integer) or orders < 1:
         raise ValueError(f"orders = {orders!r}: must be an integer >= 1")
+    bad = [k for k in kinds if k not in RESONANCE_KINDS]
+    if isinstance(kinds, str) or bad:
+        raise ValueError(f"kinds = {kinds!r}: each must be 'simple', 'sum' or 'difference'")
     i, j = np.triu_indices(f.shape[1])
     out = []
     for s in range(t.size - 1):
@@ -483,6 +490,8 @@ def passes_over(times: Any, frequencies: Any, lo: float, hi: float, *,
                 ("simple", 2.0 * a[i], 2.0 * b[i], i == j),
                 ("sum", a[i] + a[j], b[i] + b[j], i < j),
                 ("difference", np.abs(a[i] - a[j]), np.abs(b[i] - b[j]), i < j)):
+            if kind not in kinds:
+                continue
             for n in range(1, int(orders) + 1):
                 lo0, hi0, lo1, hi1 = c0 / n < lo, c0 / n > hi, c1 / n < lo, c1 / n > hi
                 for m in np.flatnonzero(pairs & ((lo0 & hi1) | (hi0 & lo1))):  # NaN: False

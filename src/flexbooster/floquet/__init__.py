@@ -54,6 +54,7 @@ from .optimize import (
 )
 from .regions import (
     DAMPING_MARGIN,
+    RESONANCE_KINDS,
     CriticalAmplitude,
     InstabilityRegion,
     RegionBoundary,
@@ -62,6 +63,7 @@ from .regions import (
     critical_amplitude,
     instability_regions,
     region_boundaries,
+    resonance_kinds,
     search_work,
 )
 
@@ -72,7 +74,8 @@ __all__ = ["MATHIEU_SCALE_MAX", "beta_from_discriminants", "characteristic_expon
            "CriticalAmplitude", "InstabilityRegion", "RegionBoundary", "TooManyCandidatesError",
            "converged_periodic_boundaries", "critical_amplitude", "NoConvergenceError",
            "brent_max", "expand_bracket", "golden_section_max", "illinois_root",
-           "instability_regions", "region_boundaries", "SearchWork", "search_work",
+           "instability_regions", "region_boundaries", "resonance_kinds", "RESONANCE_KINDS",
+           "SearchWork", "search_work",
            "LinearPeriodicSystem", "StepLimitError", "MAX_STEPS", "PeriodMapOverflowError",
            "floquet_exponents", "floquet_multipliers", "growth_rate", "hill_exponents",
            "HillModes", "hill_modes", "monodromy", "periodic_boundaries", "REAL_ROOT_RTOL",

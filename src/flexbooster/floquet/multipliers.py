@@ -17,10 +17,11 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.linalg
 
-__all__ = ["MAX_STEPS", "LinearPeriodicSystem", "periodic_system", "steady_frequencies",
-           "as_omega", "step_counts", "StepLimitError", "PeriodMapOverflowError",
-           "half_period_maps", "period_maps", "s_matrices", "s_value_sets", "largest_multiplier",
-           "monodromy", "floquet_multipliers", "floquet_exponents", "growth_rate"]
+__all__ = ["MAX_STEPS", "SYMMETRY_RTOL", "LinearPeriodicSystem", "periodic_system",
+           "steady_frequencies", "as_omega", "step_counts", "StepLimitError",
+           "PeriodMapOverflowError", "half_period_maps", "period_maps", "s_matrices",
+           "s_value_sets", "largest_multiplier", "monodromy", "floquet_multipliers",
+           "floquet_exponents", "growth_rate"]
 
 #: Default cap on the steps per integrated period (half period when C = 0).
 MAX_STEPS = 200_000
@@ -85,6 +86,10 @@ class LinearPeriodicSystem:
     mu, V, Bt : numpy.ndarray
         Eigenvalues of M^-1 A (ascending), its eigenvectors and V^-1 M^-1 B V (V, Bt None when
         V is ill-conditioned: the dense kernel is used).
+    canonical : bool
+        M, A and B symmetric, M and A positive definite (:func:`periodic_system`): with C = 0
+        the system is canonical with a positive Hamiltonian, whose multipliers leave the unit
+        circle only at the simple and sum resonances (Krein 1955).
     """
 
     K0: np.ndarray
@@ -94,6 +99,7 @@ class LinearPeriodicSystem:
     mu: np.ndarray
     V: np.ndarray | None
     Bt: np.ndarray | None
+    canonical: bool = False
 
     @property
     def n(self) -> int:
@@ -139,7 +145,28 @@ def periodic_system(M, C, A, B) -> LinearPeriodicSystem:
     else:
         V = None
     return LinearPeriodicSystem(K0=K0, Kc=Kc, Kb=Kb, damped=bool(np.any(Kc != 0.0)), mu=mu,
-                                V=V, Bt=Bt)
+                                V=V, Bt=Bt, canonical=_canonical(M, A, B, mu))
+
+
+#: Largest asymmetry max |X - X^T| / max |X| of M, A, B still taken as symmetric (round-off of
+#: assembly): a multiplier moves off the unit circle by about this, relative, far below the
+#: monodromy's detection floor (1e-7 in |rho|; :mod:`.regions`).
+SYMMETRY_RTOL = 1e-12
+
+
+def _canonical(M: np.ndarray, A: np.ndarray, B: np.ndarray, mu: np.ndarray) -> bool:
+    """M, A, B symmetric (to :data:`SYMMETRY_RTOL`), M positive definite and every eigenvalue of
+    M^-1 A real and > 0 (A positive definite): M q'' + (A + B cos Omega t) q = 0 is then a
+    canonical system with a positive definite Hamiltonian (Yakubovich and Starzhinskii 1975,
+    ch. VI)."""
+    for X in (M, A, B):
+        if np.max(np.abs(X - X.T)) > SYMMETRY_RTOL * np.max(np.abs(X)):
+            return False
+    try:
+        np.linalg.cholesky(0.5 * (M + M.T))
+    except np.linalg.LinAlgError:
+        return False
+    return bool(np.all(mu.imag == 0.0) and np.all(mu.real > 0.0))
 
 
 def steady_frequencies(M, A, *, C=None) -> np.ndarray:

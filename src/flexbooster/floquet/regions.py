@@ -14,6 +14,7 @@ K. Takahashi, J. Sound Vib. 78 (1981) 519-529.
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
@@ -35,10 +36,13 @@ from .narrow import narrow_search
 from .optimize import brent_max, expand_bracket, golden_section_max, illinois_root
 
 __all__ = ["DAMPING_MARGIN", "TooManyCandidatesError", "InstabilityRegion", "instability_regions",
+           "resonance_kinds", "RESONANCE_KINDS",
            "RegionBoundary", "region_boundaries", "CriticalAmplitude", "critical_amplitude",
            "SearchWork", "search_work", "OPEN_DAMPING_RATIO"]
 
-_KINDS = ("simple", "sum", "difference")
+#: The kinds of resonance centre: 2 omega_i / j, (omega_i + omega_k) / j, |omega_k - omega_i| / j.
+RESONANCE_KINDS = ("simple", "sum", "difference")
+_KINDS = RESONANCE_KINDS
 
 
 class TooManyCandidatesError(ValueError):
@@ -180,13 +184,17 @@ def _damping_caps(w, Bt, base, i0, k0, zrow, zeta, rate, margin) -> np.ndarray:
 
 
 def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Options,
-                rate: np.ndarray | None = None) -> dict:
+                rate: np.ndarray | None = None, canonical: bool = False) -> dict:
     """Analytic centres in [lo, hi] with their first-order width estimates.
 
     Arrays kind (0 simple, 1 sum, 2 difference), i, k, j, centre, est, gap (distance to the
     nearest other centre of any order in [lo / 2, 2 hi]), mono. Orders suppressed by damping
     (:func:`_damping_caps`) or below the floor are not enumerated; more than
-    ``opt.max_candidates`` kept raises :class:`TooManyCandidatesError`.
+    ``opt.max_candidates`` kept raises :class:`TooManyCandidatesError`. A ``canonical`` system
+    (:class:`.multipliers.LinearPeriodicSystem`) has no difference candidates: at
+    (omega_k - omega_i) / j the colliding multipliers are of the same Krein kind and stay on
+    the unit circle (Krein 1955; Yakubovich and Starzhinskii 1975, ch. VI); their centres still
+    bound the other candidates' windows (``gap``).
     """
     n = w.size
     ii, kk = np.triu_indices(n, 1)
@@ -213,7 +221,7 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
     parts, kept = [], 0
     for sel in _batches(counts, _ENUMERATION_BATCH) if counts.size else (np.arange(0),):
         c = _enumerate(sel, counts[sel], jmin_all[sel], base, kind0, i0, k0, w, Bt, zrow,
-                       zeta, lo, hi, opt)
+                       zeta, lo, hi, opt, canonical)
         kept += c["j"].size
         if kept > opt.max_candidates:
             raise TooManyCandidatesError(
@@ -255,8 +263,9 @@ def _batches(counts: np.ndarray, size: int):
 
 
 def _enumerate(sel, counts, jmin, base, kind0, i0, k0, w, Bt, zrow, zeta, lo, hi,
-               opt) -> dict:
-    """The candidates of the bases ``sel``, orders jmin.. (``counts`` each), that are kept."""
+               opt, canonical=False) -> dict:
+    """The candidates of the bases ``sel``, orders jmin.. (``counts`` each), that are kept (no
+    difference candidate of a ``canonical`` system: :func:`_candidates`)."""
     total = int(np.sum(counts))
     rep = np.repeat(sel, counts)
     offs = np.arange(total) - np.repeat(np.cumsum(counts) - counts, counts)
@@ -283,6 +292,8 @@ def _enumerate(sel, counts, jmin, base, kind0, i0, k0, w, Bt, zrow, zeta, lo, hi
     keep &= est >= 1e-2 * _NARROW_FLOOR * centre
     if opt.max_order is not None:
         keep &= j <= opt.max_order
+    if canonical:
+        keep &= kind != 2
     mono = est >= 1e-2 * floor * centre
     return {"kind": kind[keep], "i": i[keep], "k": k[keep], "j": j[keep],
             "centre": centre[keep], "est": est[keep], "mono": mono[keep], "base": rep[keep]}
@@ -757,9 +768,8 @@ def _search(system: LinearPeriodicSystem, lo: float, hi: float, opt: _Options,
         return (InstabilityRegion(omega_lo=lo, omega_hi=hi, growth_rate_max=growth,
                                   omega_at_max=lo, kind="steady", modes=bad, order=0,
                                   omega_center=lo, clipped=True),)
-    undamped = system if not system.damped else LinearPeriodicSystem(
-        K0=system.K0, Kc=np.zeros_like(system.Kc), Kb=system.Kb, damped=False, mu=system.mu,
-        V=system.V, Bt=system.Bt)
+    undamped = system if not system.damped else dataclasses.replace(
+        system, Kc=np.zeros_like(system.Kc), damped=False)
     if undamped.Bt is None:
         raise ValueError("A = the steady matrix M^-1 A is defective (no modal frame): "
                          "instability_regions needs distinct or semisimple eigenvalues")
@@ -769,7 +779,7 @@ def _search(system: LinearPeriodicSystem, lo: float, hi: float, opt: _Options,
         if stability_certificate(system, None, None, None).certified:  # stable at every Omega
             return ()
         rate = _modal_decay_rates(system)
-    cand = _candidates(w, undamped.Bt, lo, hi, opt, rate=rate)
+    cand = _candidates(w, undamped.Bt, lo, hi, opt, rate=rate, canonical=system.canonical)
     if select is not None:
         keep = select(cand)
         cand = {key: v[keep] for key, v in cand.items()}
@@ -782,6 +792,21 @@ def _search(system: LinearPeriodicSystem, lo: float, hi: float, opt: _Options,
     else:
         regs = _undamped_search(undamped, w, cand, lo, hi, opt)
     return _finish(system, regs, lo, hi, opt, system.damped)
+
+
+def resonance_kinds(M, C, A, B) -> tuple[str, ...]:
+    """The kinds of resonance from whose centres :func:`instability_regions` looks for regions:
+    ("simple", "sum") for a canonical system (M, A, B symmetric, M and A positive definite,
+    :class:`.multipliers.LinearPeriodicSystem`), whose multipliers at a difference centre
+    (omega_k - omega_i) / j collide with their own Krein kind and stay on the unit circle
+    (Krein 1955; Yakubovich and Starzhinskii 1975, ch. VI); all three otherwise.
+
+    Parameters
+    ----------
+    M, C, A, B : array_like
+        As :func:`instability_regions`.
+    """
+    return _KINDS[:2] if periodic_system(M, C, A, B).canonical else _KINDS
 
 
 def instability_regions(M, C, A, B, omega_min: float, omega_max: float, *,
@@ -841,6 +866,9 @@ class SearchWork:
     undamped_max_steps : int
         The largest of the undamped step counts at the candidate centres: the candidates'
         indicators are integrated in one batch, which runs as long as its longest member.
+    canonical : bool
+        The system is canonical (:class:`.multipliers.LinearPeriodicSystem`): its candidates
+        are simple and sum ones only.
     """
 
     n: int
@@ -853,6 +881,7 @@ class SearchWork:
     n_open: int = 0
     open_steps: int = 0
     undamped_max_steps: int = 0
+    canonical: bool = False
 
     def to_dict(self) -> dict:
         """JSON-ready mapping."""
@@ -861,7 +890,8 @@ class SearchWork:
                 "n_narrow": int(self.n_narrow), "undamped_steps": int(self.undamped_steps),
                 "damped_steps": int(self.damped_steps), "n_open": int(self.n_open),
                 "open_steps": int(self.open_steps),
-                "undamped_max_steps": int(self.undamped_max_steps)}
+                "undamped_max_steps": int(self.undamped_max_steps),
+                "canonical": bool(self.canonical)}
 
 
 #: A mode whose modal damping ratio is below this counts as undamped in :class:`SearchWork`
@@ -882,21 +912,21 @@ def search_work(M, C, A, B, omega_min: float, omega_max: float, **options) -> Se
     opt = _options(**options)
     system = periodic_system(M, C, A, B)
     none = dict(n=system.n, steady=False, certified=False, n_candidates=0, n_narrow=0,
-                undamped_steps=0, damped_steps=0)
+                undamped_steps=0, damped_steps=0, canonical=system.canonical)
     if not _steady_check(system)[0]:
         return SearchWork(**{**none, "steady": True})
     if system.Bt is None:
         raise ValueError("A = the steady matrix M^-1 A is defective (no modal frame): "
                          "instability_regions needs distinct or semisimple eigenvalues")
-    undamped = system if not system.damped else LinearPeriodicSystem(
-        K0=system.K0, Kc=np.zeros_like(system.Kc), Kb=system.Kb, damped=False, mu=system.mu,
-        V=system.V, Bt=system.Bt)
+    undamped = system if not system.damped else dataclasses.replace(
+        system, Kc=np.zeros_like(system.Kc), damped=False)
     rate = None
     if system.damped and opt.damping_margin is not None:
         if stability_certificate(system, None, None, None).certified:  # as _search: none
             return SearchWork(**{**none, "certified": True})
         rate = _modal_decay_rates(system)
-    cand = _candidates(np.sqrt(system.mu.real), undamped.Bt, lo, hi, opt, rate=rate)
+    cand = _candidates(np.sqrt(system.mu.real), undamped.Bt, lo, hi, opt, rate=rate,
+                       canonical=system.canonical)
     mono = cand["mono"]
     centres = cand["centre"][mono]
     steps_u = steps_d = steps_o = longest = 0
