@@ -532,16 +532,18 @@ def test_canonical_search_without_difference_candidates_finds_every_region(zeta)
     assert _unstable_outside(M, C, A, B, mine, 0.3, 9.0, 3000).size == 0
 
 
-@pytest.mark.xfail(strict=True, reason="known hole: where two candidates' centres coincide "
-                   "the window shrinks to 2 x the estimated width, and a region shifted by "
-                   "the second-order frequency shifts lies outside it")
-def test_region_of_coincident_centres_shifted_out_of_its_window():
-    # 2 w_2 / 3 = (w_1 + w_3) / 3 = 1.9333 at w_3 = 4.1: the simple j = 3 region of mode 2
-    # lies at 1.9243-1.9291 (found at w_3 = 4.15, where the centres are apart, and unstable
-    # at the grid points 1.9245 and 1.9274 by solve_ivp, growth 1.5e-3 and 3.0e-3), 0.4 %
-    # below its centre at gamma = 0.3; the full search misses it too.
+def test_region_of_coincident_centres_shifted_off_them_is_found():
+    # 2 w_2 / 3 = (w_1 + w_3) / 3 = 1.9333 at w_3 = 4.1 (coincident centres): the simple j = 3
+    # region of mode 2 lies 0.4 % below them at gamma = 0.3, 1.9243-1.9291 (as at w_3 = 4.15,
+    # where the centres are apart; unstable at the grid points 1.9245 and 1.9274 by solve_ivp,
+    # growth 1.5e-3 and 3.0e-3). Each of the coincident candidates has the window to the
+    # nearest distinct centre (a window of twice the estimated width missed it): found, and
+    # a 3,000-point growth-rate scan finds nothing outside the regions.
     M, _, A, B = four_modes(0.3, 0.0, w3=4.1)
     regions = instability_regions(M, None, A, B, 0.3, 9.0)
+    (r,) = [r for r in regions if (r.kind, r.modes, r.order) == ("simple", (2,), 3)]
+    assert (r.omega_lo, r.omega_hi) == pytest.approx((1.9243, 1.9291), abs=2e-4)
+    assert ivp_growth_rate(M, 0 * M, A, B, 0.5 * (r.omega_lo + r.omega_hi)) > 1e-3
     assert _unstable_outside(M, None, A, B, regions, 0.3, 9.0, 3000).size == 0
 
 

@@ -58,6 +58,9 @@ _NARROW_FLOOR = 1e-12
 #: A monodromy candidate whose indicator maximum is below -_F_SCREEN has no region (its pair
 #: of s-values stays 1e-6 apart, far beyond the integration error): not re-examined.
 _F_SCREEN = 1e-6
+#: Centres closer than this (relative) coincide (2 w_2 = w_1 + w_3 in exact arithmetic): the
+#: window of each reaches to the nearest other, distinct centre.
+_COINCIDENT = 1e-12
 #: Smallest half-window (relative to the centre) of the narrow-region search.
 _NARROW_WINDOW = 1e-3
 #: Safety factor of the damping filter (see :func:`_damping_caps`): a candidate is examined
@@ -314,6 +317,7 @@ def _gaps(own: np.ndarray, j: np.ndarray, centre: np.ndarray, base: np.ndarray,
             jj = np.clip(jf + d, jmin[None, :], np.maximum(jmax, jmin)[None, :])
             dist = np.abs(c - base[None, :] / jj)
             dist[empty[None, :] | ((np.arange(base.size)[None, :] == o) & (jj == jo))] = np.inf
+            dist[dist <= _COINCIDENT * c] = np.inf  # a coincident centre shares the window
             gap[s:s + step] = np.minimum(gap[s:s + step], np.min(dist, axis=1))
     return gap
 
