@@ -42,7 +42,6 @@ __all__ = ["DAMPING_MARGIN", "TooManyCandidatesError", "InstabilityRegion", "ins
 
 #: The kinds of resonance centre: 2 omega_i / j, (omega_i + omega_k) / j, |omega_k - omega_i| / j.
 RESONANCE_KINDS = ("simple", "sum", "difference")
-_KINDS = RESONANCE_KINDS
 
 
 class TooManyCandidatesError(ValueError):
@@ -732,10 +731,10 @@ def _finish(system, regions, lo, hi, opt, damped) -> tuple[InstabilityRegion, ..
         modes = (r["i"],) if r["kind"] == 0 else (r["i"], r["k"])
         out.append(InstabilityRegion(
             omega_lo=r["lo"], omega_hi=r["hi"], growth_rate_max=r["growth"],
-            omega_at_max=r["at"], kind=_KINDS[r["kind"]], modes=modes, order=r["j"],
+            omega_at_max=r["at"], kind=RESONANCE_KINDS[r["kind"]], modes=modes, order=r["j"],
             omega_center=r["centre"], clipped=r["clipped"]))
     return tuple(sorted(out, key=lambda q: (round(q.omega_lo / quantum), q.order,
-                                            _KINDS.index(q.kind))))
+                                            RESONANCE_KINDS.index(q.kind))))
 
 
 def _finish_monodromy(system, regs, opt, damped) -> tuple[InstabilityRegion, ...]:
@@ -760,7 +759,7 @@ def _finish_monodromy(system, regs, opt, damped) -> tuple[InstabilityRegion, ...
         modes = (r["i"],) if r["kind"] == 0 else (r["i"], r["k"])
         out.append(InstabilityRegion(
             omega_lo=r["lo"], omega_hi=r["hi"], growth_rate_max=float(max(gm[m], 0.0)),
-            omega_at_max=float(xm[m]), kind=_KINDS[r["kind"]], modes=modes, order=r["j"],
+            omega_at_max=float(xm[m]), kind=RESONANCE_KINDS[r["kind"]], modes=modes, order=r["j"],
             omega_center=r["centre"], clipped=r["clipped"]))
     return tuple(out)
 
@@ -810,7 +809,7 @@ def resonance_kinds(M, C, A, B) -> tuple[str, ...]:
     M, C, A, B : array_like
         As :func:`instability_regions`.
     """
-    return _KINDS[:2] if periodic_system(M, C, A, B).canonical else _KINDS
+    return RESONANCE_KINDS[:2] if periodic_system(M, C, A, B).canonical else RESONANCE_KINDS
 
 
 def instability_regions(M, C, A, B, omega_min: float, omega_max: float, *,
