@@ -428,7 +428,9 @@ def test_scheduler_from_environment_variable(scheduler_address, tmp_path, capsys
 @pytest.mark.slow
 def test_failed_task_marks_its_points_and_the_rest_complete(monkeypatch):
     # a task that raises instead of returning (what a dead worker's KilledWorker does) records
-    # its points as errors; the other tasks complete (in-process cluster, to patch the task)
+    # its points as errors; the other tasks complete. The patched task reaches the worker
+    # process by value (cloudpickle); an in-process worker thread once hung formatting the
+    # error while the test's thread collected garbage (seen once under xdist)
     from distributed import Client, LocalCluster
 
     import flexbooster.sweep.run as run
@@ -443,7 +445,7 @@ def test_failed_task_marks_its_points_and_the_rest_complete(monkeypatch):
     monkeypatch.setattr(run, "analyze_batch", crashing)
     with (
         LocalCluster(
-            n_workers=1, threads_per_worker=1, processes=False, dashboard_address=":0"
+            n_workers=1, threads_per_worker=1, processes=True, dashboard_address=":0"
         ) as cluster,
         Client(cluster) as client,
     ):
