@@ -536,9 +536,9 @@ def test_region_of_coincident_centres_shifted_off_them_is_found():
     # 2 w_2 / 3 = (w_1 + w_3) / 3 = 1.9333 at w_3 = 4.1 (coincident centres): the simple j = 3
     # region of mode 2 lies 0.4 % below them at gamma = 0.3, 1.9243-1.9291 (as at w_3 = 4.15,
     # where the centres are apart; unstable at the grid points 1.9245 and 1.9274 by solve_ivp,
-    # growth 1.5e-3 and 3.0e-3). Each of the coincident candidates has the window to the
-    # nearest distinct centre (a window of twice the estimated width missed it): found, and
-    # a 3,000-point growth-rate scan finds nothing outside the regions.
+    # growth 1.5e-3 and 3.0e-3), outside a window of twice its estimated width. Each of the
+    # coincident candidates has the window to the nearest distinct centre: found, and a
+    # 3,000-point growth-rate scan finds nothing outside the regions.
     M, _, A, B = four_modes(0.3, 0.0, w3=4.1)
     regions = instability_regions(M, None, A, B, 0.3, 9.0)
     (r,) = [r for r in regions if (r.kind, r.modes, r.order) == ("simple", (2,), 3)]

@@ -428,9 +428,9 @@ def test_scheduler_from_environment_variable(scheduler_address, tmp_path, capsys
 @pytest.mark.slow
 def test_failed_task_marks_its_points_and_the_rest_complete(monkeypatch):
     # a task that raises instead of returning (what a dead worker's KilledWorker does) records
-    # its points as errors; the other tasks complete. The patched task reaches the worker
-    # process by value (cloudpickle); an in-process worker thread once hung formatting the
-    # error while the test's thread collected garbage (seen once under xdist)
+    # its points as errors; the other tasks complete. The worker is a process of its own
+    # (the patched task reaches it by value, cloudpickle), sharing no thread or garbage
+    # collector with the test
     from distributed import Client, LocalCluster
 
     import flexbooster.sweep.run as run

@@ -810,8 +810,7 @@ _C_UNDAMPED_CANDIDATE = 3e-3
 # then refined at both edges: 17.7 and 14.5 x its centre steps (tests/data/
 # flight_undamped_case.toml at lift-off and burnout, k = 3..6: 162 regions of 170 candidates
 # and 113 of 214), so E_u = 18; that flight's whole vehicle-regions stage (k <= 20, 433 and
-# 938 regions, 3.8 and 9.0 s CPU) is then 1.0 and 1.42 x its estimate (1.05 and 1.34 x when
-# the difference candidates were examined).
+# 938 regions, 3.8 and 9.0 s CPU) is then 1.0 and 1.42 x its estimate.
 _EVALS_UNDAMPED_CANONICAL = 18.0
 
 
@@ -819,9 +818,8 @@ def undamped_search_seconds(work: Any) -> float:
     """CPU time (s, one core) of the region search of an undamped harmonic from its work
     counted up front: 3e-3 s per candidate examined by the monodromy and E_u = 10 evaluations
     (18 for a canonical harmonic) of the steps at its centre (:func:`search_step_seconds`),
-    each with the batch's overhead
-    for its longest candidate (15e-6 s per step of ``work.undamped_max_steps``); 0 when steady
-    (no search).
+    each with the batch's overhead for its longest candidate (15e-6 s per step of
+    ``work.undamped_max_steps``); 0 when steady (no search).
 
     Parameters
     ----------

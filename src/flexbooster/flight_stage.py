@@ -360,8 +360,7 @@ def _pass_over_search(times: np.ndarray, frozen: Sequence[FrozenTime], harmonics
     between two frozen times (:func:`flexbooster.flight.passes_over`), in a harmonic searched
     without a stability certificate at either time (a certified harmonic has no region at any
     Omega), of a kind that can open a region there (:func:`flexbooster.floquet.resonance_kinds`),
-    searched at both times in the window centre (1 -+
-    :data:`flexbooster.flight.PASS_OVER_WINDOW`)
+    searched at both times in the window centre (1 -+ :data:`flexbooster.flight.PASS_OVER_WINDOW`)
     outside the range (:func:`flexbooster.dynamics.window_regions`; windows merged per time
     and harmonic, within :data:`flexbooster.flight.PASS_OVER_REACH` of the range, at most
     :data:`flexbooster.flight.MAX_PASS_OVER_SEARCHES`), so that their regions are followed
@@ -405,13 +404,17 @@ def _pass_over_search(times: np.ndarray, frozen: Sequence[FrozenTime], harmonics
                     else:
                         windows.setdefault((t, h.k), []).append([a, b])
     extra: list[tuple] = [() for _ in frozen]
-    gaps = [SearchGap(
-        stage="vehicle", limit="PASS_OVER_REACH", k=k, Omega_lo=a, Omega_hi=b, reason=(
+
+    def gap(limit: str, k: int, t: int, a: float, b: float, why: str) -> SearchGap:
+        return SearchGap(stage="vehicle", limit=limit, k=k, Omega_lo=a, Omega_hi=b, reason=(
             f"harmonic k = {k} at t = {times[t]:.6g} s not searched in "
             f"{a / (2.0 * math.pi):.4g}-{b / (2.0 * math.pi):.4g} Hz, where a combination "
-            "passes over the oscillation band before or after the next frozen time: beyond "
-            f"PASS_OVER_REACH = {PASS_OVER_REACH:g} x the searched range (more "
-            "flight.stations shorten the steps)")) for k, t, a, b in far]
+            f"passes over the oscillation band before or after the next frozen time: {why} "
+            "(more flight.stations shorten the steps)"))
+
+    gaps = [gap("PASS_OVER_REACH", k, t, a, b,
+                f"beyond PASS_OVER_REACH = {PASS_OVER_REACH:g} x the searched range")
+            for k, t, a, b in far]
     searched = 0
     for (t, k), spans in sorted(windows.items()):
         spans.sort()
@@ -423,15 +426,9 @@ def _pass_over_search(times: np.ndarray, frozen: Sequence[FrozenTime], harmonics
                 merged.append([a, b])
         for a, b in merged:
             if searched == MAX_PASS_OVER_SEARCHES:
-                gaps.append(SearchGap(
-                    stage="vehicle", limit="MAX_PASS_OVER_SEARCHES", k=k, Omega_lo=a,
-                    Omega_hi=b, reason=(
-                        f"harmonic k = {k} at t = {times[t]:.6g} s not searched in "
-                        f"{a / (2.0 * math.pi):.4g}-{b / (2.0 * math.pi):.4g} Hz, where a "
-                        "combination passes over the oscillation band before or after the "
-                        "next frozen time: more than MAX_PASS_OVER_SEARCHES = "
-                        f"{MAX_PASS_OVER_SEARCHES} such windows (more flight.stations shorten "
-                        "the steps)")))
+                gaps.append(gap("MAX_PASS_OVER_SEARCHES", k, t, a, b, "more than "
+                                f"MAX_PASS_OVER_SEARCHES = {MAX_PASS_OVER_SEARCHES} such "
+                                "windows"))
                 continue
             searched += 1
             bands, more = window_regions(frozen[t].regions, k, a, b)
