@@ -190,8 +190,10 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
     """Analytic centres in [lo, hi] with their first-order width estimates.
 
     Arrays kind (0 simple, 1 sum, 2 difference), i, k, j, centre, est, gap (distance to the
-    nearest other centre of any order in [lo / 2, 2 hi]), mono. Orders suppressed by damping
-    (:func:`_damping_caps`) or below the floor are not enumerated; more than
+    nearest other centre of any order in [lo / 2, 2 hi]), mono, and the window searched by
+    the monodromy, middle +- half; the rows ``shifted`` are second windows of candidates
+    moved by the second-order frequency shifts (:func:`_shifted_copies`). Orders suppressed
+    by damping (:func:`_damping_caps`) or below the floor are not enumerated; more than
     ``opt.max_candidates`` kept raises :class:`TooManyCandidatesError`. A ``canonical`` system
     (:class:`.multipliers.LinearPeriodicSystem`) has no difference candidates: at
     (omega_k - omega_i) / j the colliding multipliers are of the same Krein kind and stay on
@@ -232,7 +234,88 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
         parts.append(c)
     out = {key: np.concatenate([p[key] for p in parts]) for key in parts[0]}
     out["gap"] = _gaps(out.pop("base"), out["j"], out["centre"], base, jmin_all, jmax_all)
+    Oc = out["centre"]
+    # the window: no other centre inside (the pair indicator stays unimodal), at least the
+    # estimated width; a lone candidate (gap = inf: no other centre in [lo / 2, 2 hi]) within
+    # (0.5, 1.9) Oc
+    out["middle"] = Oc.copy()
+    out["half"] = np.maximum(0.45 * np.minimum(out["gap"], 2.0 * Oc),
+                             np.minimum(2.0 * out["est"], 0.2 * Oc / out["j"]))
+    out["shifted"] = np.zeros(Oc.size, bool)
+    return _shifted_copies(out, w, Bt, lo, hi, opt)
+
+
+def _shifted_frequencies(w: np.ndarray, Bt: np.ndarray, i: np.ndarray, Omega: np.ndarray,
+                         centre: np.ndarray) -> np.ndarray:
+    """Second-order frequencies w~_i of the modes ``i`` at Omega, w~_i^2 = w_i^2 -
+    (1/4) sum_k Bt_ik Bt_ki sum_+- 1 / (w_k^2 - (w_i +- Omega)^2) (averaging of the
+    non-resonant terms; Mathieu's nu^2 = a - q^2 / (2 (a - 1)), McLachlan 1947 sec. 2.151),
+    without the terms resonant at the analytic ``centre`` (w_k = |w_i +- centre| to 1e-9: the
+    candidate's own first-order resonance); NaN where w~_i^2 <= 0."""
+    out = np.empty(i.size)
+    step = max(1, _ENUMERATION_BATCH // max(w.size, 1))
+    for s in range(0, i.size, step):  # batches of bounded memory
+        m, Om, Oc = i[s:s + step], Omega[s:s + step, None], centre[s:s + step, None]
+        bb = Bt[m, :] * Bt[:, m].T  # Bt_ik Bt_ki
+        wi, wk2 = w[m][:, None], w[None, :] ** 2
+        total = np.zeros(m.size)
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+            for sign in (1.0, -1.0):
+                resonant = np.abs(wk2 - (wi + sign * Oc) ** 2) <= 1e-9 * wk2
+                total += np.sum(np.where(resonant, 0.0, bb / (wk2 - (wi + sign * Om) ** 2)),
+                                axis=1)
+            w2 = w[m] ** 2 - 0.25 * total
+            out[s:s + step] = np.where(np.isfinite(w2) & (w2 > 0.0), np.sqrt(np.abs(w2)),
+                                       np.nan)
     return out
+
+
+def _shifted_copies(cand: dict, w: np.ndarray, Bt: np.ndarray, lo: float, hi: float,
+                    opt: _Options) -> dict:
+    """``cand`` with a second window (``shifted`` rows, the analytic centre kept) for each
+    monodromy candidate whose estimated width is above :func:`_indicator_floor` and whose
+    centre, moved by the second-order frequency shifts (:func:`_shifted_frequencies` at the
+    moved centre, two fixed-point steps), lies outside the inner half of its window, by at
+    most :data:`_MAX_SHIFT` of the centre. The window reaches from the analytic centre to the
+    moved one (the estimate overshoots near a small denominator), widened by twice the
+    estimated width (at most 0.2 Oc / j) on both sides, clipped to [lo, hi]."""
+    floor = _indicator_floor(cand["j"].astype(float), opt.rtol)
+    mono = np.nonzero(cand["mono"] & (cand["est"] >= floor * cand["centre"]))[0]
+    if mono.size == 0:
+        return cand
+    kind, i, k, j = (cand[key][mono] for key in ("kind", "i", "k", "j"))
+    Oc = cand["centre"][mono]
+    Om = Oc
+    for _ in range(2):
+        wi, wk = (_shifted_frequencies(w, Bt, m, Om, Oc) for m in (i, k))
+        Om = np.where(kind == 0, 2.0 * wi, np.where(kind == 1, wi + wk, np.abs(wk - wi))) / j
+    shift = np.abs(Om - Oc)
+    with np.errstate(invalid="ignore"):
+        far = (shift > 0.5 * cand["half"][mono]) & (shift <= _MAX_SHIFT * Oc)
+    with np.errstate(invalid="ignore"):
+        est = np.minimum(2.0 * cand["est"][mono], 0.2 * Oc / j)
+        a = np.maximum(np.minimum(Om, Oc) - est, lo)
+        b = np.minimum(np.maximum(Om, Oc) + est, hi)
+        far &= b > a
+    sel = mono[far]
+    if sel.size == 0:
+        return cand
+    copy = {key: v[sel] for key, v in cand.items()}
+    copy["middle"] = 0.5 * (a[far] + b[far])
+    copy["half"] = 0.5 * (b[far] - a[far])
+    copy["shifted"] = np.ones(sel.size, bool)
+    return {key: np.concatenate([cand[key], copy[key]]) for key in cand}
+
+
+#: The largest relative shift of a centre given a second window (:func:`_shifted_copies`).
+_MAX_SHIFT = 0.05
+
+
+def _indicator_floor(j: np.ndarray, rtol: float) -> np.ndarray:
+    """Relative width below which the monodromy indicators of order ``j`` cannot tell a region
+    from round-off: at a tangency F ~ -kappa (dOmega)^2, so 2 sqrt(_F_FLOOR) / (pi j), and at
+    least the edge tolerance ``rtol`` (docs/theory/floquet.md sec. 6)."""
+    return np.maximum(rtol, 2.0 * np.sqrt(_F_FLOOR) / (np.pi * j))
 
 
 #: Resonance candidates enumerated at once (:func:`_candidates`).
@@ -287,7 +370,7 @@ def _enumerate(sel, counts, jmin, base, kind0, i0, k0, w, Bt, zrow, zeta, lo, hi
     # regions narrower than the round-off floor of the indicators cannot be told from zero by
     # the monodromy ("mono" candidates: est above it); the narrower ones down to the floor of
     # the harmonic-balance pair (:mod:`.narrow`, resolution linear in the width) are kept too
-    floor = np.maximum(opt.rtol, 2.0 * np.sqrt(_F_FLOOR) / (np.pi * jf))
+    floor = _indicator_floor(jf, opt.rtol)
     keep = (centre >= lo * (1.0 - 1e-9)) & (centre <= hi * (1.0 + 1e-9))
     with np.errstate(over="ignore", invalid="ignore"):
         keep |= (centre + 2.0 * est >= lo) & (centre - 2.0 * est <= hi)
@@ -544,7 +627,7 @@ def _undamped_search(system, w, cand, lo, hi, opt, narrow: bool = True,
         return regs
     # the candidates below the monodromy floor, and those whose indicator maximum stayed
     # between -_F_SCREEN and the round-off floor (a pair that approaches within 1e-6 in s)
-    extra = (fmax <= _F_FLOOR) & (fmax > -_F_SCREEN)
+    extra = (fmax <= _F_FLOOR) & (fmax > -_F_SCREEN) & ~sub["shifted"]
     missed = {key: np.concatenate([v[~mono], v[mono][extra]]) for key, v in cand.items()}
     return regs + _narrow_pass(system, missed, regs, lo, hi)
 
@@ -580,17 +663,14 @@ def _monodromy_search(system, w, cand, lo, hi, opt,
     each candidate's indicator (``seeds``: the edges by :func:`_seed_edges`)."""
     if cand["centre"].size == 0:
         return [], np.zeros(0)
-    Oc = cand["centre"]
+    Oc = cand["middle"]
     xtol = opt.rtol * Oc
 
     def F(x, idx=None):
         sub = cand if idx is None else {key: v[idx] for key, v in cand.items()}
         return _indicator(system, w, sub, x, opt)
 
-    # window: no other candidate inside (F stays unimodal), at least the estimated width; a
-    # lone candidate (gap = inf: no other centre in [lo / 2, 2 hi]) within (0.5, 1.9) Oc
-    delta = np.maximum(0.45 * np.minimum(cand["gap"], 2.0 * Oc),
-                       np.minimum(2.0 * cand["est"], 0.2 * Oc / cand["j"]))
+    delta = cand["half"]  # the window (:func:`_candidates`)
     a = np.maximum(Oc - delta, 0.5 * Oc)
     b = Oc + delta
     xs, fs = brent_max(F, a, b, Oc, np.maximum(10.0 * xtol, 1e-15 * Oc), stop_above=_F_FLOOR)
@@ -931,7 +1011,7 @@ def search_work(M, C, A, B, omega_min: float, omega_max: float, **options) -> Se
     cand = _candidates(np.sqrt(system.mu.real), undamped.Bt, lo, hi, opt, rate=rate,
                        canonical=system.canonical)
     mono = cand["mono"]
-    centres = cand["centre"][mono]
+    centres = cand["middle"][mono]
     steps_u = steps_d = steps_o = longest = 0
     # candidates between modes without modal damping: damping ratio delta_a / w_a below
     # OPEN_DAMPING_RATIO (0 but for the round-off of the modal frame)
