@@ -249,7 +249,7 @@ def _shifted_frequencies(w: np.ndarray, Bt: np.ndarray, i: np.ndarray, Omega: np
                          centre: np.ndarray) -> np.ndarray:
     """Second-order frequencies w~_i of the modes ``i`` at Omega, w~_i^2 = w_i^2 -
     (1/4) sum_k Bt_ik Bt_ki sum_+- 1 / (w_k^2 - (w_i +- Omega)^2) (averaging of the
-    non-resonant terms; Mathieu's nu^2 = a - q^2 / (2 (a - 1)), McLachlan 1947 sec. 2.151),
+    non-resonant terms; for one mode Mathieu's nu^2 = a - q^2 / (2 (a - 1)), DLMF 28.15.1),
     without the terms resonant at the analytic ``centre`` (w_k = |w_i +- centre| to 1e-9: the
     candidate's own first-order resonance); NaN where w~_i^2 <= 0."""
     out = np.empty(i.size)
