@@ -1059,3 +1059,38 @@ def test_fuzz_reproducer_pitch_tongue_at_the_roundoff_of_its_roots(monkeypatch):
                                  np.array([band.Omega_center / w1]))
     assert growth[0] > 0.0
     assert band.critical_gamma < 0.01
+
+
+def test_fuzz_reproducer_estimate_of_a_width_near_the_largest_float():
+    """Independent fuzz, seed 50, case 144 (a mutated two-stage liquid vehicle at gamma = 0.9,
+    Omega 0.94-223 Hz): a candidate's width estimate, a product of couplings above the
+    frequencies (zeta > 1) to a high order, lay near the largest float, and twice it (the
+    search window) overflowed: a numpy RuntimeWarning on stderr before the one-line
+    refusal. The estimate now runs without a warning under warnings-as-errors and the case
+    is refused in one line naming max_seconds (the refusal itself is the evidence)."""
+    case = flexbooster.load_case({
+        "name": "fuzz", "max_seconds": 20.0,
+        "thrust": {"F0": "613931 lbf", "gamma": 0.9, "K": 0.5, "omega_min": "0.944388 Hz",
+                   "omega_max": "223.423 Hz", "n_omega": 2},
+        "vehicle": {
+            "E": "7.87091e+06 psi", "nu": 0.33, "rho": "2591.17 kg/m^3", "aft_end": "free",
+            "fwd_end": "free", "k_max": 20, "n_modes": 4,
+            "segments": [
+                {"kind": "cylinder", "radius": "2.12854 m", "length": "2.5 m",
+                 "thickness": "5.60143 mm", "nonstructural_mass": "4 kg/m^2",
+                 "rings": {"spacing": "1.29136 m", "area": "0.319 cm^2", "inertia": "0 cm^4",
+                           "eccentricity": "-2 cm"}},
+                {"kind": "cylinder", "radius": "1.52 m", "length": "6.5 m", "thickness": "4 mm",
+                 "pressure": "1 bar", "junction": "memo-bulkhead",
+                 "nonstructural_mass": "10 kg/m^2"}],
+            "masses": [{"name": "first-stage engine (LR87)", "station": 0.0, "mass": "2000 kg",
+                        "offset": "0.5 m", "transverse_inertia": "1500 kg*m^2"}],
+            "tanks": [{"name": "stage-1 fuel", "aft": 2.5, "fwd": 9.0, "fill": 0.94,
+                       "density": "903 kg/m^3"}]}})
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        est = cost.estimate_vehicle_cost(case, regions=True, figures=False)
+        assert math.isfinite(est.seconds) and est.seconds > case.max_seconds
+        with pytest.raises(CaseError) as info:
+            analyze(case, beam_action=False, stability=False, figures=False)
+    assert info.value.field == "max_seconds" and "\n" not in str(info.value)

@@ -239,8 +239,9 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
     # estimated width; a lone candidate (gap = inf: no other centre in [lo / 2, 2 hi]) within
     # (0.5, 1.9) Oc
     out["middle"] = Oc.copy()
-    out["half"] = np.maximum(0.45 * np.minimum(out["gap"], 2.0 * Oc),
-                             np.minimum(2.0 * out["est"], 0.2 * Oc / out["j"]))
+    with np.errstate(over="ignore"):  # est near the largest float: the cap
+        out["half"] = np.maximum(0.45 * np.minimum(out["gap"], 2.0 * Oc),
+                                 np.minimum(2.0 * out["est"], 0.2 * Oc / out["j"]))
     out["shifted"] = np.zeros(Oc.size, bool)
     return _shifted_copies(out, w, Bt, lo, hi, opt)
 
@@ -290,9 +291,9 @@ def _shifted_copies(cand: dict, w: np.ndarray, Bt: np.ndarray, lo: float, hi: fl
         wi, wk = (_shifted_frequencies(w, Bt, m, Om, Oc) for m in (i, k))
         Om = np.where(kind == 0, 2.0 * wi, np.where(kind == 1, wi + wk, np.abs(wk - wi))) / j
     shift = np.abs(Om - Oc)
-    with np.errstate(invalid="ignore"):
+    # NaN (no second-order frequency): no copy; est near the largest float: the cap
+    with np.errstate(invalid="ignore", over="ignore"):
         far = (shift > 0.5 * cand["half"][mono]) & (shift <= _MAX_SHIFT * Oc)
-    with np.errstate(invalid="ignore"):
         est = np.minimum(2.0 * cand["est"][mono], 0.2 * Oc / j)
         a = np.maximum(np.minimum(Om, Oc) - est, lo)
         b = np.minimum(np.maximum(Om, Oc) + est, hi)
