@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import json
 import math
+import tomllib
 import warnings
 from pathlib import Path
 
@@ -445,3 +446,55 @@ def test_seed_batch_rounds_within_1_5x_of_the_counted_batch_steps(monkeypatch):
     assert floquet.instability_regions(*system, t.omega_min, t.omega_max, **floquet_options())
     priced = 60 * work.undamped_max_steps
     assert counter.steps / 1.5 <= priced <= 1.5 * counter.steps, (counter.steps, priced)
+
+
+def _pass_over_windows(monkeypatch, case) -> tuple[list, list]:
+    """(the windows the flight stage searches outside its range, recorded from its calls of
+    window_regions; the windows cost.pass_over_seconds prices, recorded from its calls of
+    the work price outside the range), both as (a, b) in rad/s."""
+    import flexbooster.flight_stage as stage
+    from flexbooster.flight import flight_omega_range
+    from flexbooster.model import timeline_from_case
+
+    lo, hi = flight_omega_range(timeline_from_case(case))
+    searched, priced = [], []
+    window_regions, work_seconds = stage.window_regions, cost._work_seconds
+
+    def recorded_search(found, k, a, b):
+        searched.append((a, b))
+        return window_regions(found, k, a, b)
+
+    def recorded_price(system, a, b, price):
+        if b <= lo or a >= hi:  # not the frozen cases' own range
+            priced.append((a, b))
+        return work_seconds(system, a, b, price)
+
+    monkeypatch.setattr(stage, "window_regions", recorded_search)
+    monkeypatch.setattr(cost, "_work_seconds", recorded_price)
+    stage.flight_stage(case)
+    cost.pass_over_seconds(case)
+    return searched, priced
+
+
+@pytest.mark.slow
+def test_pass_over_windows_are_predicted_from_the_sampled_frequencies(monkeypatch):
+    """The default flight, k = 1, with a 10.5-10.7 Hz band (18 windows searched outside it
+    by the stage, 19 pass-overs): the estimate puts its windows where the stage does from the
+    frozen times it samples (the frequencies linear in time between them): 14, each outside
+    the range within PASS_OVER_REACH; within 1.5x of the count either way. The example
+    flight's 8-16 Hz band: no combination passes over, none priced (it priced 24 x 2 full
+    searches, 6.2 s, before)."""
+    from flexbooster.case import default_case_text
+    from flexbooster.flight import PASS_OVER_REACH
+
+    data = tomllib.loads(default_case_text())
+    data["vehicle"]["k_max"] = 1
+    for point in data["flight"]["points"]:
+        point["oscillation"] = ["10.5 Hz", "10.7 Hz"]
+    searched, priced = _pass_over_windows(monkeypatch, flexbooster.load_case(data))
+    lo, hi = 2 * math.pi * 10.5, 2 * math.pi * 10.7
+    assert len(searched) / 1.5 <= len(priced) <= 1.5 * len(searched), (searched, priced)
+    assert all(lo / PASS_OVER_REACH <= a < b <= lo or hi <= a < b <= hi * PASS_OVER_REACH
+               for a, b in priced)
+    example = Path(SRC).parent / "examples" / "flight-two-stage.toml"
+    assert _pass_over_windows(monkeypatch, flexbooster.load_case(example)) == ([], [])

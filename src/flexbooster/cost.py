@@ -15,6 +15,7 @@ V. L. Beal, AIAA J. 3 (1965) 486-494.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -23,7 +24,7 @@ import numpy as np
 from .bands import CRITICAL_DAMPING_COUNT
 from .checks import count, nonnegative, positive
 from .errors import AnalysisWarning, CaseError
-from .floquet import MATHIEU_SCALE_MAX, hill_order, search_work
+from .floquet import MATHIEU_SCALE_MAX, RESONANCE_KINDS, hill_order, search_work
 from .memo.beam_action import (
     BAND_MAX_CANDIDATES,
     BAND_MAX_ORDER,
@@ -710,32 +711,43 @@ _COUNT_MAX_STEPS = 2**62
 
 
 def _system_search_seconds(build, thrust, price) -> float:
-    """CPU time (s) of the damped region search of the harmonic ``build()`` returns: its work
-    counted up front and priced by ``price(work)``, or, past :data:`_K1_COUNTED_MODES` modes,
-    the n^4 law of :func:`search_seconds` unless its certificate holds (enumerating the
-    candidates alone can pass the memory); 0 where the harmonic cannot be built or passes a
-    toolkit limit (the stage says why)."""
-    from . import floquet
-    from .dynamics.harmonic import LIMIT_ERRORS, floquet_options
+    """CPU time (s) of the damped region search of the harmonic ``build()`` returns over the
+    thrust's Omega range (:func:`_work_seconds` at its gamma); 0 where the harmonic cannot be
+    built (the stage says why)."""
+    from .dynamics.harmonic import LIMIT_ERRORS
     from .shell_of_revolution import BucklingError
 
     try:
         system = build().periodic(thrust.gamma)
+    except (*LIMIT_ERRORS, BucklingError, ValueError):
+        return 0.0
+    return _work_seconds(system, thrust.omega_min, thrust.omega_max, price)
+
+
+def _work_seconds(system: tuple, omega_min: float, omega_max: float, price) -> float:
+    """CPU time (s) of the region search of the periodic system (M, C, A, B) over [omega_min,
+    omega_max]: its work counted up front and priced by ``price(work)``, or, past
+    :data:`_K1_COUNTED_MODES` modes, the n^4 law of :func:`search_seconds` unless its
+    certificate holds (enumerating the candidates alone can pass the memory); 0 where it
+    passes a toolkit limit (the stage says why)."""
+    from . import floquet
+    from .dynamics.harmonic import LIMIT_ERRORS, floquet_options
+
+    try:
         n = system[0].shape[0]
         if n > _K1_COUNTED_MODES:
             if floquet.stability_certificate(*system).certified:
                 return 0.0
-            return search_seconds(n, thrust.omega_min, thrust.omega_max, damped=True)
+            return search_seconds(n, omega_min, omega_max, damped=True)
         try:
-            work = floquet.search_work(*system, thrust.omega_min, thrust.omega_max,
-                                       **floquet_options())
+            work = floquet.search_work(*system, omega_min, omega_max, **floquet_options())
         except floquet.StepLimitError:
             # a candidate past the step limit: the search integrates only where its seeds
             # lead, so it may never meet that one and run in full; every candidate's steps
             # counted with no limit (an upper bound)
-            work = floquet.search_work(*system, thrust.omega_min, thrust.omega_max,
+            work = floquet.search_work(*system, omega_min, omega_max,
                                        **{**floquet_options(), "max_steps": _COUNT_MAX_STEPS})
-    except (*LIMIT_ERRORS, BucklingError, ValueError):
+    except (*LIMIT_ERRORS, ValueError):
         return 0.0
     return price(work)
 
@@ -1286,11 +1298,11 @@ def flight_time_seconds(case: Any) -> float:
 
 def pass_over_seconds(case: Any) -> float:
     """The predicted time (s, one core) of the flight's searches outside its range, where a
-    combination passes over it between frozen times (:mod:`flexbooster.flight_stage`:
-    ``MAX_PASS_OVER_SEARCHES`` windows, each searched down to the range's lowest Omega over
-    ``PASS_OVER_REACH``, where a step count grows by that factor): that many times
-    ``PASS_OVER_REACH`` times the largest search part of :func:`estimate_vehicle_cost` of the
-    frozen cases of :func:`flight_time_seconds`; 0 without ``[flight]``.
+    combination passes over it between frozen times (:mod:`flexbooster.flight_stage`): the
+    windows :func:`flexbooster.flight.pass_over_windows` puts on the frequencies of the
+    harmonics at the :data:`FLIGHT_SAMPLES` frozen times of :func:`flight_time_seconds`
+    (linear in time between them), at most ``MAX_PASS_OVER_SEARCHES``, each priced as the
+    search of that window (:func:`_pass_over_price`); 0 without ``[flight]``.
 
     Parameters
     ----------
@@ -1300,14 +1312,10 @@ def pass_over_seconds(case: Any) -> float:
     return _flight_samples(case)[1]
 
 
-#: The parts of :func:`estimate_vehicle_cost` that search a harmonic's regions.
-_SEARCH_PARTS = (BENDING_SEARCH_PART, SHELL_SEARCH_PART, UNDAMPED_SEARCH_PART)
-
-
 def _flight_samples(case: Any) -> tuple[float, float]:
     """(:func:`flight_time_seconds`, :func:`pass_over_seconds`) from the same samples."""
-    from .flight import MAX_PASS_OVER_SEARCHES, PASS_OVER_REACH
-    from .model import flight_times, frozen_case, vehicle_from_case
+    from .flight import flight_omega_range
+    from .model import flight_times, frozen_case, timeline_from_case, vehicle_from_case
     from .shell_of_revolution import shared_harmonics
 
     times = flight_times(case)
@@ -1321,19 +1329,94 @@ def _flight_samples(case: Any) -> tuple[float, float]:
         return 0.0, 0.0
     samples = np.unique(np.linspace(0, times.size - 1, FLIGHT_SAMPLES).round().astype(int))
 
-    def sample(i: int) -> tuple[float, float]:  # another vehicle: its builds released after it
+    def sample(i: int) -> tuple[float, dict]:  # another vehicle: its builds released after it
         with shared_harmonics(isolated=True):
-            parts = estimate_vehicle_cost(frozen_case(case, float(times[i])),
-                                          figures=False).parts
+            frozen = frozen_case(case, float(times[i]))
+            parts = estimate_vehicle_cost(frozen, figures=False).parts
+            harmonics = _pass_over_harmonics(frozen) if times.size > 1 else {}
         return (sum(v * (_FLIGHT_SHARED if k in _FLIGHT_SHARED_PARTS else 1.0)
-                    for k, v in parts.items() if k != CRITICAL_DAMPING_PART),
-                max(parts.get(k, 0.0) for k in _SEARCH_PARTS))
+                    for k, v in parts.items() if k != CRITICAL_DAMPING_PART), harmonics)
 
-    each, search = np.array([sample(int(i)) for i in samples]).T
+    each, harmonics = zip(*(sample(int(i)) for i in samples), strict=True)
     mean = float(np.mean(np.interp(np.arange(times.size), samples, each)))
-    outside = 0.0 if times.size < 2 else (
-        MAX_PASS_OVER_SEARCHES * PASS_OVER_REACH * float(np.max(search)))
+    lo, hi = flight_omega_range(timeline_from_case(case))
+    outside = 0.0 if times.size < 2 else _pass_over_price(times, samples, harmonics, lo, hi)
     return mean + forced, outside
+
+
+def _pass_over_harmonics(case: Any) -> dict[int, tuple]:
+    """Per harmonic k = 1..k_max of a frozen case, as the flight stage builds it: (its steady
+    frequencies in rad/s, ascending; the kinds of resonance that can open a region; the
+    periodic system at the case's gamma; the price of its search's work; searched, i.e. not
+    certified stable by damping). The harmonics that cannot be built are left out."""
+    from . import floquet
+    from .dynamics import bending_harmonic, harmonic_system
+    from .dynamics.harmonic import LIMIT_ERRORS
+    from .model import vehicle_from_case
+    from .shell_of_revolution import BucklingError
+
+    t, zeta = case.thrust, case.vehicle_damping_ratio
+    k_max = case.vehicle.k_max if case.vehicle is not None else 0
+    out: dict[int, tuple] = {}
+    try:
+        vehicle = vehicle_from_case(case)
+        n_modes = region_modes(case, vehicle, k_max=max(k_max, 1))[0]
+    except ValueError:  # a vehicle the mesh refuses: the stage says why
+        return out
+    for k in range(1, k_max + 1):
+        try:
+            if k == 1:
+                h = bending_harmonic(vehicle, F0=case.F0, n_modes=max(n_modes, 3),
+                                     damping_ratio=zeta, gimbal_gain=t.K)
+            else:
+                h = harmonic_system(vehicle, k, F0=case.F0, n_modes=n_modes,
+                                    damping_ratio=zeta, unloaded_frequencies=False)
+            system = h.periodic(t.gamma)
+            w = np.sort(floquet.steady_frequencies(system[0], system[2]).real)
+            kinds = floquet.resonance_kinds(*system)
+            searched = zeta == 0.0 or not floquet.stability_certificate(*system).certified
+        except (*LIMIT_ERRORS, BucklingError, ValueError):
+            continue
+        price = (undamped_search_seconds if zeta == 0.0 else shell_search_seconds if k > 1
+                 else lambda work: bending_search_steps(work, damping_ratio=zeta)[1])
+        out[k] = (w, kinds, system, price, searched)
+    return out
+
+
+def _pass_over_price(times: np.ndarray, samples: np.ndarray, harmonics: Sequence[dict],
+                     lo: float, hi: float) -> float:
+    """The flight's searches outside [lo, hi] (:func:`pass_over_seconds`) predicted from the
+    harmonics of frozen times ``samples`` (:func:`_pass_over_harmonics`): each harmonic's
+    frequencies linear in time between the samples (by rank), its pass-over windows where the
+    stage puts them (:func:`flexbooster.flight.pass_over_windows`; a step searched where the
+    nearest sample of either end is), the first ``MAX_PASS_OVER_SEARCHES`` of them (in the
+    stage's order) each priced as the search of that window in the nearest sample's system
+    (:func:`_work_seconds`)."""
+    from .flight import MAX_PASS_OVER_SEARCHES, pass_over_windows
+
+    sample_times = times[samples]
+    nearest = np.argmin(np.abs(times[:, None] - sample_times[None, :]), axis=1)
+    windows: dict[tuple[int, int], list] = {}
+    for k in sorted(set().union(*harmonics)):
+        if not all(k in h for h in harmonics):
+            continue  # a harmonic the stage could not build at some time: it says why
+        n = max(h[k][0].size for h in harmonics)
+        f = np.full((len(harmonics), n), np.nan)
+        for row, h in zip(f, harmonics, strict=True):
+            row[:h[k][0].size] = h[k][0]
+        at = np.column_stack([np.interp(times, sample_times, c) for c in f.T])
+
+        def kinds_at(s: int, k: int = k) -> tuple[str, ...]:
+            ends = [harmonics[nearest[i]][k] for i in (s, s + 1)]
+            return (tuple(sorted(set().union(*(e[1] for e in ends)), key=RESONANCE_KINDS.index))
+                    if any(e[4] for e in ends) else ())
+
+        spans = pass_over_windows(times, at, lo, hi, kinds_at=kinds_at)[1]
+        windows.update({(t, k): v for t, v in spans.items()})
+    chosen = [(t, k, a, b) for (t, k), v in sorted(windows.items()) for a, b in v]
+    return float(sum(
+        _work_seconds(harmonics[nearest[t]][k][2], a, b, harmonics[nearest[t]][k][3])
+        for t, k, a, b in chosen[:MAX_PASS_OVER_SEARCHES]))
 
 
 def combined(*estimates: CostEstimate) -> CostEstimate:

@@ -43,14 +43,13 @@ from .flight import (
     KNOWN_FREQUENCY_MARGIN,
     MAX_PASS_OVER_SEARCHES,
     PASS_OVER_REACH,
-    PASS_OVER_WINDOW,
     band_events,
     band_key,
     band_rate,
     flight_omega_range,
     mac_matrix,
     meeting_intervals,
-    passes_over,
+    pass_over_windows,
     resonance_events,
     track_modes,
     worst_first,
@@ -383,26 +382,20 @@ def _pass_over_search(times: np.ndarray, frozen: Sequence[FrozenTime], harmonics
                                 floquet.resonance_kinds(*system.periodic(found.gamma)))
         return kinds_at[(t, k)]
 
-    windows: dict[tuple[int, int], list[list[float]]] = {}  # (time, k) -> [lo, hi] windows
+    windows: dict[tuple[int, int], list] = {}  # (time, k) -> merged windows (a, b)
     far: list[tuple] = []  # windows beyond the reach: (k, time, lo, hi)
     count = 0
     for h in harmonics:
-        for s in range(times.size - 1):
-            if h.k not in open_k[s] | open_k[s + 1]:
-                continue
-            either = set(kinds(s, h.k)) | set(kinds(s + 1, h.k))
-            for p in passes_over(times[s:s + 2], h.frequencies[s:s + 2], lo, hi, kinds=tuple(
-                    kind for kind in floquet.RESONANCE_KINDS if kind in either)):
-                count += 1
-                for t, c in ((s, p.centre_start), (s + 1, p.centre_end)):
-                    a, b = c * (1.0 - PASS_OVER_WINDOW), c * (1.0 + PASS_OVER_WINDOW)
-                    a, b = (a, min(b, lo)) if c < lo else (max(a, hi), b)
-                    if frozen[t].regions is None or a >= b:
-                        continue
-                    if a < lo / PASS_OVER_REACH or b > hi * PASS_OVER_REACH:
-                        far.append((h.k, t, a, b))
-                    else:
-                        windows.setdefault((t, h.k), []).append([a, b])
+        def kinds_between(s: int, k: int = h.k) -> tuple[str, ...]:
+            if k not in open_k[s] | open_k[s + 1]:
+                return ()
+            either = set(kinds(s, k)) | set(kinds(s + 1, k))
+            return tuple(kind for kind in floquet.RESONANCE_KINDS if kind in either)
+
+        n, spans, out = pass_over_windows(times, h.frequencies, lo, hi, kinds_at=kinds_between)
+        count += n
+        windows.update({(t, h.k): v for t, v in spans.items()})
+        far += [(h.k, t, a, b) for t, a, b in out]
     extra: list[tuple] = [() for _ in frozen]
 
     def gap(limit: str, k: int, t: int, a: float, b: float, why: str) -> SearchGap:
@@ -416,14 +409,7 @@ def _pass_over_search(times: np.ndarray, frozen: Sequence[FrozenTime], harmonics
                 f"beyond PASS_OVER_REACH = {PASS_OVER_REACH:g} x the searched range")
             for k, t, a, b in far]
     searched = 0
-    for (t, k), spans in sorted(windows.items()):
-        spans.sort()
-        merged = [spans[0]]
-        for a, b in spans[1:]:  # overlapping windows searched once
-            if a <= merged[-1][1]:
-                merged[-1][1] = max(merged[-1][1], b)
-            else:
-                merged.append([a, b])
+    for (t, k), merged in sorted(windows.items()):
         for a, b in merged:
             if searched == MAX_PASS_OVER_SEARCHES:
                 gaps.append(gap("MAX_PASS_OVER_SEARCHES", k, t, a, b, "more than "

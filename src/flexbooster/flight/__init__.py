@@ -16,6 +16,7 @@ from .events import (
     band_key,
     band_rate,
     meeting_intervals,
+    pass_over_windows,
     passes_over,
     resonance_events,
     worst_first,
@@ -50,4 +51,4 @@ __all__ = ["FlightPoint", "Timeline", "frozen_times", "flight_omega_range",
            "EVENT_COLUMNS", "FlightEvent", "band_events", "band_key", "band_rate",
            "meeting_intervals", "resonance_events", "worst_first", "PASS_OVER_ORDERS",
            "PASS_OVER_WINDOW", "PASS_OVER_REACH", "MAX_PASS_OVER_SEARCHES", "PassOver",
-           "passes_over"]
+           "passes_over", "pass_over_windows"]

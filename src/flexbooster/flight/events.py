@@ -23,6 +23,7 @@ from .passage import Passage, accumulated_growth, crossing_peak_ratio
 __all__ = ["FlightEvent", "EVENT_COLUMNS", "band_key", "band_events", "band_rate",
            "resonance_events", "meeting_intervals", "worst_first", "PASS_OVER_ORDERS",
            "PASS_OVER_WINDOW", "PASS_OVER_REACH", "MAX_PASS_OVER_SEARCHES", "PassOver",
+           "pass_over_windows",
            "passes_over"]
 
 #: Columns of flight-events.csv, in order (the keys of :meth:`FlightEvent.to_dict`).
@@ -500,3 +501,53 @@ def passes_over(times: Any, frequencies: Any, lo: float, hi: float, *,
                                         centre_start=float(c0[m] / n),
                                         centre_end=float(c1[m] / n)))
     return tuple(out)
+
+
+def pass_over_windows(times: Any, frequencies: Any, lo: float, hi: float, *,
+                      kinds_at: Callable[[int], Sequence[str]]
+                      ) -> tuple[int, dict[int, list[tuple[float, float]]], list[tuple]]:
+    """Where one harmonic is searched outside the range for its combinations that pass over it
+    between frozen times (:func:`passes_over`): at both times of each step, the window centre
+    (1 -+ :data:`PASS_OVER_WINDOW`) on the centre's side of [lo, hi], merged per time where
+    they overlap; windows beyond :data:`PASS_OVER_REACH` of the range are listed apart (the
+    flight's search gaps). Returns (the number of pass-overs, {time index: [(a, b), ...]
+    within the reach, ascending}, [(time index, a, b), ...] beyond it).
+
+    Parameters
+    ----------
+    times, frequencies, lo, hi
+        As :func:`passes_over`.
+    kinds_at : callable
+        ``kinds_at(s)``: the kinds that can open a region between times s and s + 1, in the
+        order of :data:`flexbooster.floquet.RESONANCE_KINDS`; empty: the step is skipped (a
+        harmonic certified stable at both times).
+    """
+    t = finite_array("times", times)
+    f = np.asarray(frequencies, dtype=float)
+    count, spans, far = 0, {}, []
+    for s in range(t.size - 1):
+        kinds = tuple(kinds_at(s))
+        if not kinds:
+            continue
+        for p in passes_over(t[s:s + 2], f[s:s + 2], lo, hi, kinds=kinds):
+            count += 1
+            for i, c in ((s, p.centre_start), (s + 1, p.centre_end)):
+                a, b = c * (1.0 - PASS_OVER_WINDOW), c * (1.0 + PASS_OVER_WINDOW)
+                a, b = (a, min(b, lo)) if c < lo else (max(a, hi), b)
+                if a >= b:
+                    continue
+                if a < lo / PASS_OVER_REACH or b > hi * PASS_OVER_REACH:
+                    far.append((i, a, b))
+                else:
+                    spans.setdefault(i, []).append((a, b))
+    merged = {}
+    for i, windows in spans.items():
+        windows.sort()
+        out = [list(windows[0])]
+        for a, b in windows[1:]:  # overlapping windows searched once
+            if a <= out[-1][1]:
+                out[-1][1] = max(out[-1][1], b)
+            else:
+                out.append([a, b])
+        merged[i] = [(a, b) for a, b in out]
+    return count, merged, far
