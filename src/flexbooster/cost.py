@@ -876,14 +876,28 @@ def _undamped_searches(case: Any, vehicle: Any, n_k: int, n_modes: int) -> float
     blind = search_seconds(max(n_modes, 3), t.omega_min, t.omega_max, damped=False)
     if n_modes > _K1_COUNTED_MODES:  # the blind law (the candidates are not enumerated)
         return float(n_k * blind)
-    ks = np.arange(1, n_k + 1)
-    if n_k > UNDAMPED_SAMPLES:
-        ks = np.unique(np.concatenate([[1, 2], np.geomspace(
-            1, n_k, UNDAMPED_SAMPLES - 1).round().astype(int), [n_k]]))
+    ks = _sampled_harmonics(n_k)
     with shared_harmonics():
         each = [max(blind, _system_search_seconds(lambda k=int(k): build(k), t,
                                                   undamped_search_seconds)) for k in ks]
     return float(np.sum(np.interp(np.arange(1, n_k + 1), ks, each)))
+
+
+def _sampled_harmonics(n_k: int) -> np.ndarray:
+    """The harmonics k of 1..n_k whose search work the estimate counts, the others linear in k
+    between them: all up to :data:`UNDAMPED_SAMPLES`, else k = 1, 2 and geometric steps to
+    n_k.
+
+    Parameters
+    ----------
+    n_k : int
+        Highest harmonic, >= 1.
+    """
+    n_k = count("n_k", n_k, 1, None)
+    if n_k <= UNDAMPED_SAMPLES:
+        return np.arange(1, n_k + 1)
+    return np.unique(np.concatenate([[1, 2], np.geomspace(
+        1, n_k, UNDAMPED_SAMPLES - 1).round().astype(int), [n_k]]))
 
 
 def _shell_searches(case: Any, vehicle: Any, n_k: int, n_modes: int) -> float:
@@ -1345,10 +1359,11 @@ def _flight_samples(case: Any) -> tuple[float, float]:
 
 
 def _pass_over_harmonics(case: Any) -> dict[int, tuple]:
-    """Per harmonic k = 1..k_max of a frozen case, as the flight stage builds it: (its steady
-    frequencies in rad/s, ascending; the kinds of resonance that can open a region; the
-    periodic system at the case's gamma; the price of its search's work; searched, i.e. not
-    certified stable by damping). The harmonics that cannot be built are left out."""
+    """Per harmonic k of :func:`_sampled_harmonics` of a frozen case, as the flight stage builds
+    it: (its steady frequencies in rad/s, ascending; the kinds of resonance that can open a
+    region; the periodic system at the case's gamma; the price of its search's work;
+    searched, i.e. not certified stable by damping). The harmonics that cannot be built are
+    left out."""
     from . import floquet
     from .dynamics import bending_harmonic, harmonic_system
     from .dynamics.harmonic import LIMIT_ERRORS
@@ -1363,7 +1378,7 @@ def _pass_over_harmonics(case: Any) -> dict[int, tuple]:
         n_modes = region_modes(case, vehicle, k_max=max(k_max, 1))[0]
     except ValueError:  # a vehicle the mesh refuses: the stage says why
         return out
-    for k in range(1, k_max + 1):
+    for k in (int(k) for k in _sampled_harmonics(k_max)) if k_max >= 1 else ():
         try:
             if k == 1:
                 h = bending_harmonic(vehicle, F0=case.F0, n_modes=max(n_modes, 3),
@@ -1389,17 +1404,19 @@ def _pass_over_price(times: np.ndarray, samples: np.ndarray, harmonics: Sequence
     harmonics of frozen times ``samples`` (:func:`_pass_over_harmonics`): each harmonic's
     frequencies linear in time between the samples (by rank), its pass-over windows where the
     stage puts them (:func:`flexbooster.flight.pass_over_windows`; a step searched where the
-    nearest sample of either end is), the first ``MAX_PASS_OVER_SEARCHES`` of them (in the
-    stage's order) each priced as the search of that window in the nearest sample's system
-    (:func:`_work_seconds`)."""
+    nearest sample of either end is), each priced as the search of that window in the nearest
+    sample's system (:func:`_work_seconds`); the harmonics between the sampled ones linear in
+    k (their windows and prices); scaled down to ``MAX_PASS_OVER_SEARCHES`` windows when
+    more (the stage searches no more)."""
     from .flight import MAX_PASS_OVER_SEARCHES, pass_over_windows
 
     sample_times = times[samples]
     nearest = np.argmin(np.abs(times[:, None] - sample_times[None, :]), axis=1)
+    ks = sorted(k for k in set().union(*harmonics) if all(k in h for h in harmonics))
+    if not ks:  # no harmonic the stage can build at every sample: it says why
+        return 0.0
     windows: dict[tuple[int, int], list] = {}
-    for k in sorted(set().union(*harmonics)):
-        if not all(k in h for h in harmonics):
-            continue  # a harmonic the stage could not build at some time: it says why
+    for k in ks:
         n = max(h[k][0].size for h in harmonics)
         f = np.full((len(harmonics), n), np.nan)
         for row, h in zip(f, harmonics, strict=True):
@@ -1413,10 +1430,15 @@ def _pass_over_price(times: np.ndarray, samples: np.ndarray, harmonics: Sequence
 
         spans = pass_over_windows(times, at, lo, hi, kinds_at=kinds_at)[1]
         windows.update({(t, k): v for t, v in spans.items()})
-    chosen = [(t, k, a, b) for (t, k), v in sorted(windows.items()) for a, b in v]
-    return float(sum(
-        _work_seconds(harmonics[nearest[t]][k][2], a, b, harmonics[nearest[t]][k][3])
-        for t, k, a, b in chosen[:MAX_PASS_OVER_SEARCHES]))
+    per_k = {k: [0, 0.0] for k in ks}  # windows and their price, per sampled harmonic
+    for (t, k), v in windows.items():
+        per_k[k][0] += len(v)
+        per_k[k][1] += sum(_work_seconds(harmonics[nearest[t]][k][2], a, b,
+                                         harmonics[nearest[t]][k][3]) for a, b in v)
+    every = np.arange(ks[0], ks[-1] + 1)
+    n, seconds = (float(np.sum(np.interp(every, ks, [per_k[k][i] for k in ks])))
+                  for i in (0, 1))
+    return seconds * min(1.0, MAX_PASS_OVER_SEARCHES / n) if n > 0.0 else 0.0
 
 
 def combined(*estimates: CostEstimate) -> CostEstimate:
