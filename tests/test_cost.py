@@ -482,17 +482,18 @@ def test_pass_over_windows_are_predicted_from_the_sampled_frequencies(monkeypatc
     by the stage, 19 pass-overs): the estimate puts its windows where the stage does from the
     frozen times it samples (the frequencies linear in time between them): 14, each outside
     the range within PASS_OVER_REACH; within 1.5x of the count either way. The example
-    flight's 8-16 Hz band: no combination passes over, none priced (it priced 24 x 2 full
-    searches, 6.2 s, before)."""
+    flight's 8-16 Hz band: no combination passes over, none priced."""
     from flexbooster.case import default_case_text
-    from flexbooster.flight import PASS_OVER_REACH
+    from flexbooster.flight import PASS_OVER_REACH, flight_omega_range
+    from flexbooster.model import timeline_from_case
 
     data = tomllib.loads(default_case_text())
     data["vehicle"]["k_max"] = 1
     for point in data["flight"]["points"]:
         point["oscillation"] = ["10.5 Hz", "10.7 Hz"]
-    searched, priced = _pass_over_windows(monkeypatch, flexbooster.load_case(data))
-    lo, hi = 2 * math.pi * 10.5, 2 * math.pi * 10.7
+    case = flexbooster.load_case(data)
+    searched, priced = _pass_over_windows(monkeypatch, case)
+    lo, hi = flight_omega_range(timeline_from_case(case))
     assert len(searched) / 1.5 <= len(priced) <= 1.5 * len(searched), (searched, priced)
     assert all(lo / PASS_OVER_REACH <= a < b <= lo or hi <= a < b <= hi * PASS_OVER_REACH
                for a, b in priced)
