@@ -24,7 +24,7 @@ import numpy as np
 from .bands import CRITICAL_DAMPING_COUNT
 from .checks import count, nonnegative, positive
 from .errors import AnalysisWarning, CaseError
-from .floquet import MATHIEU_SCALE_MAX, RESONANCE_KINDS, hill_order, search_work
+from .floquet import MATHIEU_SCALE_MAX, hill_order, search_work
 from .memo.beam_action import (
     BAND_MAX_CANDIDATES,
     BAND_MAX_ORDER,
@@ -1425,8 +1425,7 @@ def _pass_over_price(times: np.ndarray, samples: np.ndarray, harmonics: Sequence
 
         def kinds_at(s: int, k: int = k) -> tuple[str, ...]:
             ends = [harmonics[nearest[i]][k] for i in (s, s + 1)]
-            return (tuple(sorted(set().union(*(e[1] for e in ends)), key=RESONANCE_KINDS.index))
-                    if any(e[4] for e in ends) else ())
+            return tuple(set().union(*(e[1] for e in ends))) if any(e[4] for e in ends) else ()
 
         spans = pass_over_windows(times, at, lo, hi, kinds_at=kinds_at)[1]
         windows.update({(t, k): v for t, v in spans.items()})

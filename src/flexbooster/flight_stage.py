@@ -389,8 +389,7 @@ def _pass_over_search(times: np.ndarray, frozen: Sequence[FrozenTime], harmonics
         def kinds_between(s: int, k: int = h.k) -> tuple[str, ...]:
             if k not in open_k[s] | open_k[s + 1]:
                 return ()
-            either = set(kinds(s, k)) | set(kinds(s + 1, k))
-            return tuple(kind for kind in floquet.RESONANCE_KINDS if kind in either)
+            return tuple(set(kinds(s, k)) | set(kinds(s + 1, k)))
 
         n, spans, out = pass_over_windows(times, h.frequencies, lo, hi, kinds_at=kinds_between)
         count += n

@@ -518,9 +518,9 @@ def pass_over_windows(times: Any, frequencies: Any, lo: float, hi: float, *,
     times, frequencies, lo, hi
         As :func:`passes_over`.
     kinds_at : callable
-        ``kinds_at(s)``: the kinds that can open a region between times s and s + 1, in the
-        order of :data:`flexbooster.floquet.RESONANCE_KINDS`; empty: the step is skipped (a
-        harmonic certified stable at both times).
+        ``kinds_at(s)``: the kinds that can open a region between times s and s + 1 (the
+        union of both times' :func:`flexbooster.floquet.resonance_kinds`); empty: the step is
+        skipped (a harmonic certified stable at both times).
     """
     t = finite_array("times", times)
     f = np.asarray(frequencies, dtype=float)
