@@ -493,12 +493,21 @@ def tongue_search_seconds(system: Any, gamma: float, *, omega_min: float, omega_
 # Vehicle stages: calibration on the memo case's vehicle (the memo's two
 # cylinders, 263 FE DOFs), one core.  The modes survey (``[vehicle]`` only): k_max = 20 in
 # 0.38 s, 40 in 0.47 s (-> 0.3 s + 5e-3 s per harmonic); building a harmonic of the regions:
-# flexbooster.dynamics.HARMONIC_BUILD_SECONDS; its search where the certificate does not
-# cover it: flexbooster.dynamics.search_seconds.  FE work scales like the DOFs cubed (dense
-# eigensolves), floored at a third (fixed overheads).
+# 0.02 s; its search where the certificate does not cover it: search_seconds.
 _C_SURVEY = (0.3, 5e-3)
 _C_HARMONIC_BUILD = 0.02
 _REF_DOFS = 263.0
+# The FE work per harmonic against x = DOFs / 263 (the matrices are assembled dense: n^2 work
+# and memory, and dense eigensolves n^3 where the sparse Lanczos does not apply), floored at a
+# third (fixed overheads): the survey 1.5 x^2 + 0.25 x^3, a build 0.5 x + 0.2 x^3, in units
+# of the constants above.  Fitted on tubes of 89-3,846 DOFs (6 modes, no tanks; idle core, CPU
+# time): a survey harmonic 0.74, 1.0, 1.5, 4.8, 14, 102, 346, 757 units at x = 0.34, 0.86,
+# 1.37, 2.08, 3.25, 7.0, 11.1, 14.6, a build 0.12, 0.38, 0.55, 1.24, 2.3, 41, 189, 481 units.
+# The stages of those tubes (scripts/fe_work_law.py --large) take 1/1.7 (3,846 DOFs) to 1/19
+# (89 DOFs, the fixed 0.3 s) of the "vehicle modes" part and 1/1.7 to 1/5.3 of the "vehicle
+# regions" part; the cube alone priced the 780-DOF default vehicle's builds 14x their time.
+_SURVEY_DOF_LAW = (1.5, 0.25)  # x^2, x^3
+_BUILD_DOF_LAW = (0.5, 0.2)  # x, x^3
 # Attached masses (benchmarks/bench_vehicle_modes.py's two-stage vehicle, 691 FE DOFs, one
 # core): the liquid mesh of a tank once (4 tanks: 0.11 s), its added mass per harmonic
 # (0.0133 s per tank and k); a lumped mass's matrix per harmonic k <= 1 (1.7e-3 s).
@@ -914,10 +923,14 @@ def _shell_searches(case: Any, vehicle: Any, n_k: int, n_modes: int) -> float:
             case.thrust, shell_search_seconds) for k in range(2, n_k + 1)))
 
 
-def _dof_factor(vehicle) -> float:
+def _dof_factors(vehicle) -> tuple[float, float]:
+    """The FE work of a harmonic of the modes survey and of a harmonic's build, in units of
+    the reference vehicle's (:data:`_SURVEY_DOF_LAW`, :data:`_BUILD_DOF_LAW`)."""
     from .shell_of_revolution import mesh_vehicle
 
-    return max(1.0 / 3.0, (mesh_vehicle(vehicle).n_full / _REF_DOFS) ** 3)
+    x = mesh_vehicle(vehicle).n_full / _REF_DOFS
+    (s2, s3), (b1, b3) = _SURVEY_DOF_LAW, _BUILD_DOF_LAW
+    return max(1.0 / 3.0, s2 * x**2 + s3 * x**3), max(1.0 / 3.0, b1 * x + b3 * x**3)
 
 
 def region_modes(case: Any, vehicle: Any = None, *, k_max: int = 10) -> tuple[int, int]:
@@ -950,7 +963,8 @@ def region_modes(case: Any, vehicle: Any = None, *, k_max: int = 10) -> tuple[in
 
 def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
                           regions: bool = True, figures: bool = True,
-                          certified: bool = True, forced: bool = False) -> CostEstimate:
+                          certified: bool = True, forced: bool = False,
+                          vehicle: Any = None) -> CostEstimate:
     """The predicted time of the vehicle stages of :func:`flexbooster.analysis.analyze`: "vehicle
     modes" (``[vehicle]`` only) and "vehicle regions" (:func:`search_seconds` per harmonic not
     certified), each with the tanks' liquid (a mesh per tank, an added mass per tank and
@@ -972,6 +986,9 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
     forced : bool
         The vehicle's forced response is computed ("vehicle forced response":
         :func:`forced_run_seconds`).
+    vehicle : Vehicle, optional
+        The case's vehicle (:func:`flexbooster.model.vehicle_from_case`), when the caller has
+        it: the harmonics the estimate builds are then shared with the caller's.
     """
     from .model import vehicle_from_case
     from .vehicle_case import VehicleTable
@@ -982,8 +999,8 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
     drivers: dict[str, tuple[str, ...]] = {}
     n_k = table.k_max if regions_k_max is None else min(table.k_max, int(regions_k_max))
     try:
-        vehicle = vehicle_from_case(case)
-        dofs = _dof_factor(vehicle)
+        vehicle = vehicle_from_case(case) if vehicle is None else vehicle
+        survey_dofs, build_dofs = _dof_factors(vehicle)
         n_modes = region_modes(case, vehicle, k_max=max(n_k, 1))[0]
     except ValueError:  # a vehicle the mesh refuses: the stage says why, not the estimate
         return CostEstimate(seconds=0.0)
@@ -997,7 +1014,8 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
 
     if case.vehicle is not None:  # the modes survey, k = 0..k_max
         c0, c1 = _C_SURVEY
-        parts["vehicle modes"] = (c0 + c1 * (table.k_max + 1) * dofs + n_tanks * _C_TANK[0]
+        parts["vehicle modes"] = (c0 + c1 * (table.k_max + 1) * survey_dofs
+                                  + n_tanks * _C_TANK[0]
                                   + per_harmonic(table.k_max + 1, min(table.k_max + 1, 2)))
         drivers["vehicle modes"] = ("vehicle.k_max", "vehicle.segments") + attached
     if regions and n_k >= 1:
@@ -1008,7 +1026,7 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
         # k = 1 has the rigid modes too (at least 3 basis modes)
         search = searched * search_seconds(max(n_modes, 3), t.omega_min, t.omega_max,
                                            damped=damped, boundaries=figures)
-        parts["vehicle regions"] = n_k * _C_HARMONIC_BUILD * dofs * max(
+        parts["vehicle regions"] = n_k * _C_HARMONIC_BUILD * build_dofs * max(
             1.0, n_modes / 20.0) + per_harmonic(n_k, 1) + search
         drivers["vehicle regions"] = ("vehicle.n_modes", "damping.modal_ratio",
                                       "vehicle.k_max", "thrust.omega_min", "thrust.omega_max",
@@ -1346,8 +1364,12 @@ def _flight_samples(case: Any) -> tuple[float, float]:
     def sample(i: int) -> tuple[float, dict]:  # another vehicle: its builds released after it
         with shared_harmonics(isolated=True):
             frozen = frozen_case(case, float(times[i]))
-            parts = estimate_vehicle_cost(frozen, figures=False).parts
-            harmonics = _pass_over_harmonics(frozen) if times.size > 1 else {}
+            try:  # one vehicle: the estimate's harmonics are the pass-over's
+                vehicle = vehicle_from_case(frozen)
+            except ValueError:  # a vehicle the mesh refuses: the stage says why
+                return 0.0, {}
+            parts = estimate_vehicle_cost(frozen, figures=False, vehicle=vehicle).parts
+            harmonics = _pass_over_harmonics(frozen, vehicle) if times.size > 1 else {}
         return (sum(v * (_FLIGHT_SHARED if k in _FLIGHT_SHARED_PARTS else 1.0)
                     for k, v in parts.items() if k != CRITICAL_DAMPING_PART), harmonics)
 
@@ -1358,23 +1380,21 @@ def _flight_samples(case: Any) -> tuple[float, float]:
     return mean + forced, outside
 
 
-def _pass_over_harmonics(case: Any) -> dict[int, tuple]:
+def _pass_over_harmonics(case: Any, vehicle: Any) -> dict[int, tuple]:
     """Per harmonic k of :func:`_sampled_harmonics` of a frozen case, as the flight stage builds
     it: (its steady frequencies in rad/s, ascending; the kinds of resonance that can open a
     region; the periodic system at the case's gamma; the price of its search's work;
-    searched, i.e. not certified stable by damping). The harmonics that cannot be built are
-    left out."""
+    searched, i.e. not certified stable by damping), built on ``vehicle`` (the case's). The
+    harmonics that cannot be built are left out."""
     from . import floquet
     from .dynamics import bending_harmonic, harmonic_system
     from .dynamics.harmonic import LIMIT_ERRORS
-    from .model import vehicle_from_case
     from .shell_of_revolution import BucklingError
 
     t, zeta = case.thrust, case.vehicle_damping_ratio
     k_max = case.vehicle.k_max if case.vehicle is not None else 0
     out: dict[int, tuple] = {}
     try:
-        vehicle = vehicle_from_case(case)
         n_modes = region_modes(case, vehicle, k_max=max(k_max, 1))[0]
     except ValueError:  # a vehicle the mesh refuses: the stage says why
         return out
