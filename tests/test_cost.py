@@ -499,3 +499,36 @@ def test_pass_over_windows_are_predicted_from_the_sampled_frequencies(monkeypatc
                for a, b in priced)
     example = Path(SRC).parent / "examples" / "flight-two-stage.toml"
     assert _pass_over_windows(monkeypatch, flexbooster.load_case(example)) == ([], [])
+
+
+def test_critical_damping_is_priced_for_the_candidates_between_elastic_modes():
+    """The flight example's vehicle at 3 modes, k <= 2, gamma = 0.3, zeta = 0.002: its counted
+    searches have fewer candidates between elastic modes than CRITICAL_DAMPING_COUNT, and the
+    estimate prices the critical damping of that many regions (its part against the blind
+    bound's CRITICAL_DAMPING_COUNT regions, same case), at least one. The invariant: the
+    regions the stage gives a critical damping ratio (dynamics.region_critical_damping's rule:
+    not steady, not clipped, no rigid mode), found by the search itself, are at most those
+    priced."""
+    from flexbooster.dynamics import vehicle_regions
+    from flexbooster.model import vehicle_from_case
+
+    data = tomllib.loads((Path(SRC).parent / "examples" / "flight-two-stage.toml").read_text())
+    data.pop("flight")
+    data["thrust"]["gamma"] = 0.3
+    data["vehicle"].update(k_max=2, n_modes=3, damping_ratio=0.002)
+    data["max_seconds"] = 1e5
+    case = flexbooster.load_case(data)
+    part = cost.CRITICAL_DAMPING_PART
+    counted = cost.estimate_vehicle_cost(case, figures=False).parts[part]
+    bound = cost.estimate_vehicle_cost(case, figures=False, certified=False).parts[part]
+    priced = cost.CRITICAL_DAMPING_COUNT * counted / bound
+    assert priced == pytest.approx(round(priced), abs=1e-9)
+    assert 1 <= round(priced) < cost.CRITICAL_DAMPING_COUNT
+    t = case.thrust
+    found = vehicle_regions(vehicle_from_case(case), F0=case.F0, gamma=t.gamma,
+                            omega_min=t.omega_min, omega_max=t.omega_max, k_min=1, k_max=2,
+                            n_modes=3, damping_ratio=case.vehicle_damping_ratio,
+                            gimbal_gain=t.K, unloaded_frequencies=False)
+    eligible = [r for r in found.regions if r.kind != "steady" and not r.clipped
+                and not any(m.type.startswith("rigid") for m in r.modes)]
+    assert 1 <= len(eligible) <= round(priced)

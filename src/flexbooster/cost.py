@@ -746,18 +746,37 @@ def damped_band_steps(model: BoosterModel) -> tuple[float, float]:
 _COUNT_MAX_STEPS = 2**62
 
 
-def _system_search_seconds(build, thrust, price) -> float:
+def _system_search_seconds(build, thrust, price, elastic: list | None = None) -> float:
     """CPU time (s) of the damped region search of the harmonic ``build()`` returns over the
     thrust's Omega range (:func:`_work_seconds` at its gamma); 0 where the harmonic cannot be
-    built (the stage says why)."""
+    built (the stage says why). With ``elastic``, appends the number of its candidates between
+    elastic modes (:func:`_elastic_candidates`), or None where its work is not counted."""
     from .dynamics.harmonic import LIMIT_ERRORS
     from .shell_of_revolution import BucklingError
 
     try:
-        system = build().periodic(thrust.gamma)
+        h = build()
+        system = h.periodic(thrust.gamma)
     except (*LIMIT_ERRORS, BucklingError, ValueError):
         return 0.0
-    return _work_seconds(system, thrust.omega_min, thrust.omega_max, price)
+    if elastic is None:
+        return _work_seconds(system, thrust.omega_min, thrust.omega_max, price)
+    if system[0].shape[0] > _K1_COUNTED_MODES:  # priced without its candidates
+        elastic.append(None)
+
+    def counted(work) -> float:
+        elastic.append(_elastic_candidates(h, work))
+        return price(work)
+
+    return _work_seconds(system, thrust.omega_min, thrust.omega_max, counted)
+
+
+def _elastic_candidates(h: Any, work: Any) -> int:
+    """The candidates of ``work`` (a harmonic ``h``'s search) between elastic modes: the only
+    ones whose regions get a critical damping ratio (dynamics.region_critical_damping leaves
+    out the regions that hold a rigid mode, which no modal damping closes)."""
+    rigid = {i for i in range(work.n) if h.mode(i).type.startswith("rigid")}
+    return sum(1 for i, k in work.pairs if i not in rigid and k not in rigid)
 
 
 def _work_seconds(system: tuple, omega_min: float, omega_max: float, price) -> float:
@@ -788,14 +807,16 @@ def _work_seconds(system: tuple, omega_min: float, omega_max: float, price) -> f
     return price(work)
 
 
-def _bending_search_seconds(case: Any, vehicle: Any, n_modes: int, zeta: float) -> float:
-    """The k = 1 search of a damped case (:func:`bending_search_steps`)."""
+def _bending_search_seconds(case: Any, vehicle: Any, n_modes: int, zeta: float,
+                            elastic: list | None = None) -> float:
+    """The k = 1 search of a damped case (:func:`bending_search_steps`); ``elastic`` as
+    :func:`_system_search_seconds`."""
     from .dynamics import bending_harmonic
 
     return _system_search_seconds(
         lambda: bending_harmonic(vehicle, F0=case.F0, n_modes=max(n_modes, 3),
                                  damping_ratio=zeta, gimbal_gain=case.thrust.K),
-        case.thrust, lambda work: bending_search_steps(work, damping_ratio=zeta)[1])
+        case.thrust, lambda work: bending_search_steps(work, damping_ratio=zeta)[1], elastic)
 
 
 # The candidates' indicators are integrated in one batch (the Lawson modal kernel), which
@@ -936,9 +957,11 @@ def _sampled_harmonics(n_k: int) -> np.ndarray:
         1, n_k, UNDAMPED_SAMPLES - 1).round().astype(int), [n_k]]))
 
 
-def _shell_searches(case: Any, vehicle: Any, n_k: int, n_modes: int) -> float:
+def _shell_searches(case: Any, vehicle: Any, n_k: int, n_modes: int,
+                    elastic: list | None = None) -> float:
     """:func:`shell_search_seconds` summed over the harmonics k = 2..n_k of a damped case, each
-    harmonic's modal system built as the stage builds it."""
+    harmonic's modal system built as the stage builds it; ``elastic`` as
+    :func:`_system_search_seconds`."""
     from .dynamics import harmonic_system
     from .shell_of_revolution import shared_harmonics
 
@@ -947,7 +970,7 @@ def _shell_searches(case: Any, vehicle: Any, n_k: int, n_modes: int) -> float:
             lambda k=k: harmonic_system(vehicle, k, F0=case.F0, n_modes=n_modes,
                                         damping_ratio=case.vehicle_damping_ratio,
                                         unloaded_frequencies=False),
-            case.thrust, shell_search_seconds) for k in range(2, n_k + 1)))
+            case.thrust, shell_search_seconds, elastic) for k in range(2, n_k + 1)))
 
 
 def _dof_factors(vehicle) -> tuple[float, float]:
@@ -1058,17 +1081,18 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
         drivers["vehicle regions"] = ("vehicle.n_modes", "damping.modal_ratio",
                                       "vehicle.k_max", "thrust.omega_min", "thrust.omega_max",
                                       "vehicle.segments") + attached
+        elastic: list = []  # per searched harmonic: its candidates between elastic modes
         if damped and certified and t.gamma > 0.0:
             # the harmonics k >= 2 that damping does not certify after all: searched
-            shell = _shell_searches(case, vehicle, n_k, n_modes)
+            shell = _shell_searches(case, vehicle, n_k, n_modes, elastic)
             if shell > 0.0:
                 parts[SHELL_SEARCH_PART] = shell
                 drivers[SHELL_SEARCH_PART] = ("damping.modal_ratio", "thrust.gamma",
                                               "thrust.omega_min", "thrust.omega_max",
                                               "vehicle.n_modes", "vehicle.k_max")
             # k = 1 keeps its undamped rigid pitch
-            k1 = _bending_search_seconds(case, vehicle, n_modes, case.vehicle_damping_ratio) * (
-                _BOUNDARY_SEARCH_FACTOR if figures else 1.0)
+            k1 = _bending_search_seconds(case, vehicle, n_modes, case.vehicle_damping_ratio,
+                                         elastic) * (_BOUNDARY_SEARCH_FACTOR if figures else 1.0)
             if k1 > 0.0:
                 parts[BENDING_SEARCH_PART] = k1
                 drivers[BENDING_SEARCH_PART] = ("damping.modal_ratio", "thrust.omega_min",
@@ -1082,10 +1106,16 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
         if searched or any(p in parts for p in (BENDING_SEARCH_PART, SHELL_SEARCH_PART,
                                                 UNDAMPED_SEARCH_PART)):
             # regions may open: their critical damping ratios
-            # (dynamics.region_critical_damping), at most a fixed number
-            parts[CRITICAL_DAMPING_PART] = CRITICAL_DAMPING_COUNT * _C_CRITICAL_REGION * max(
-                1.0, (max(n_modes, 3) / _CRITICAL_REGION_N) ** 3)
-            drivers[CRITICAL_DAMPING_PART] = ("vehicle.n_modes", "damping.modal_ratio")
+            # (dynamics.region_critical_damping), at most a fixed number, and of a damped
+            # case's counted searches at most one per candidate between elastic modes (a
+            # region holding a rigid mode gets none)
+            regions = CRITICAL_DAMPING_COUNT
+            if not searched and elastic and None not in elastic:
+                regions = min(regions, sum(elastic))
+            if regions:
+                parts[CRITICAL_DAMPING_PART] = regions * _C_CRITICAL_REGION * max(
+                    1.0, (max(n_modes, 3) / _CRITICAL_REGION_N) ** 3)
+                drivers[CRITICAL_DAMPING_PART] = ("vehicle.n_modes", "damping.modal_ratio")
         if damped:  # the certificates: map, search, chart (none undamped: no certificate)
             calls = 2 + bool(figures)
             parts["vehicle certificates"] = n_k * calls * _C_CERTIFICATE * (

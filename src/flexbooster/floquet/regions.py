@@ -953,6 +953,9 @@ class SearchWork:
     canonical : bool
         The system is canonical (:class:`.multipliers.LinearPeriodicSystem`): its candidates
         are simple and sum ones only.
+    pairs : tuple of (int, int)
+        The modes (i, k) of each candidate examined by the monodromy (i = k: simple), in the
+        system's modal order (:attr:`InstabilityRegion.modes` of the regions found).
     """
 
     n: int
@@ -966,6 +969,7 @@ class SearchWork:
     open_steps: int = 0
     undamped_max_steps: int = 0
     canonical: bool = False
+    pairs: tuple = ()
 
     def to_dict(self) -> dict:
         """JSON-ready mapping."""
@@ -975,7 +979,8 @@ class SearchWork:
                 "damped_steps": int(self.damped_steps), "n_open": int(self.n_open),
                 "open_steps": int(self.open_steps),
                 "undamped_max_steps": int(self.undamped_max_steps),
-                "canonical": bool(self.canonical)}
+                "canonical": bool(self.canonical),
+                "pairs": [[int(i), int(k)] for i, k in self.pairs]}
 
 
 #: A mode whose modal damping ratio is below this counts as undamped in :class:`SearchWork`
@@ -1032,7 +1037,9 @@ def search_work(M, C, A, B, omega_min: float, omega_max: float, **options) -> Se
                          "n_narrow": 0 if system.damped else int(np.count_nonzero(~mono)),
                          "undamped_steps": steps_u, "damped_steps": steps_d,
                          "n_open": int(np.count_nonzero(is_open)), "open_steps": steps_o,
-                         "undamped_max_steps": longest})
+                         "undamped_max_steps": longest,
+                         "pairs": tuple(zip(cand["i"][mono].tolist(), cand["k"][mono].tolist(),
+                                            strict=True))})
 
 
 # --------------------------------------------------------------------------------------------
