@@ -681,9 +681,10 @@ def damped_search_cost(work: Any, *, damping_ratio: float) -> tuple[float, float
 
 
 def search_step_seconds(n: int) -> float:
-    """CPU time (s, one core) of one monodromy integration step of one point of a system of n
-    degrees of freedom in an undamped search, its share of the search's other work included:
-    1e-6 s + 3e-10 s (2n)^3 (measured, see above).
+    """CPU time (s, one core) of one undamped monodromy integration step of one point of a
+    system of n degrees of freedom (an undamped search, or the undamped seeds of a damped one),
+    its share of the search's other work included: 1e-6 s + 3e-10 s (2n)^3 (measured, see
+    above).
 
     Parameters
     ----------
