@@ -72,7 +72,6 @@ __all__ = [
     "damped_band_steps",
     "damped_search_cost",
     "search_step_seconds",
-    "dense_step_seconds",
     "BENDING_SEARCH_PART",
     "SHELL_SEARCH_PART",
     "CRITICAL_DAMPING_PART",
@@ -603,17 +602,13 @@ _EVALS_OPEN = 350.0
 # integration step of one point 1e-6 s + 3e-10 s (2n)^3, fitted on whole damped searches (their
 # CPU over their steps, on a loaded core): the memo's default (n = 11: 1,775 points, 81,931
 # steps, 1.2 s), the liquid vehicle's k = 1 (n = 19: 5,571 points, 1.38 million steps, 24.6 s)
-# and free-free index 7 (n = 2: 2.08 million steps, 1.8 s); it prices the undamped steps (the
-# liquid vehicle's k = 1 ran in 12.3 s on an idle core, 1.40 million steps)
+# and free-free index 7 (n = 2: 2.08 million steps, 1.8 s). The dense kernel alone takes less
+# a step on an idle core (0.49, 6.80, 42.0 microseconds at n = 2, 19, 40, 64 points a batch);
+# this law also covers the step counts' shortfall where the gimbaled pitch's candidates open
+# at any damping but are counted as damped ones (a mutated liquid vehicle's k = 1: 1.43
+# million steps run, 0.56 million counted)
 _C_SEARCH_POINT = 4e-4
 _C_SEARCH_STEP = (1e-6, 3e-10)
-# The damped steps run in the dense full-period kernel (multipliers._period_dense: the step
-# matrices of a block of steps formed at once and multiplied by pairs), cheaper per step than
-# the law above: measured (scripts/dense_step_cost.py: idle core, 64 points a batch) 0.49,
-# 1.28, 2.73, 6.80, 18.0, 42.0 microseconds at n = 2, 5, 11, 19, 30, 40, against 1.02, 1.30,
-# 4.19, 17.5, 65.8, 155 priced by the law above; 1.3x a fit c0 + c2 (2n)^2 + c3 (2n)^3, which
-# is 1.25-1.65x the measured from n = 5 on
-_C_DENSE_STEP = (1.2e-6, 3.25e-9, 7.8e-11)
 # above this many modes the k = 1 search is estimated by search_seconds (n^4 law: 96 s at 40
 # modes, so such a search is the budget's concern anyway) after the certificate, without
 # enumerating its candidates (247 modes over a wide range: more than 20 GB of candidates)
@@ -650,9 +645,8 @@ def damped_search_cost(work: Any, *, damping_ratio: float) -> tuple[float, float
     up front: E_u x the undamped + E_d x the damped steps at the candidate centres, E_u = 10,
     E_d = 40 at zeta <= 0.01 to 30 and 500 at zeta >= 0.3 (log-log between), and 70 evaluated
     points per candidate; a candidate between undamped modes (a region at any damping) at
-    least 350 evaluations at its damped steps (max(E_d, 350)); 4e-4 s per point,
-    :func:`search_step_seconds` per undamped step and the dense kernel's own law per damped
-    step (both measured).
+    least 350 evaluations at its damped steps (max(E_d, 350)); 4e-4 s per point and
+    :func:`search_step_seconds` per step (measured).
 
     Parameters
     ----------
@@ -672,19 +666,17 @@ def damped_search_cost(work: Any, *, damping_ratio: float) -> tuple[float, float
     x = min(max(math.log(zeta / z0) / math.log(z1 / z0), 0.0), 1.0)  # log-log interpolation
     e_u, e_d = (a * (b / a) ** x for a, b in (_EVALS_UNDAMPED, _EVALS_DAMPED))
     e_o = max(e_d, _EVALS_OPEN)
-    damped = e_d * (work.damped_steps - work.open_steps) + e_o * work.open_steps
-    steps = e_u * work.undamped_steps + damped
+    steps = (e_u * work.undamped_steps + e_d * (work.damped_steps - work.open_steps)
+             + e_o * work.open_steps)
     seconds = (_C_SEARCH_POINT * (_EVALS_POINTS * work.n_candidates + _EVALS_OPEN * work.n_open)
-               + e_u * work.undamped_steps * search_step_seconds(work.n)
-               + damped * dense_step_seconds(work.n))
+               + steps * search_step_seconds(work.n))
     return float(steps), float(seconds)
 
 
 def search_step_seconds(n: int) -> float:
-    """CPU time (s, one core) of one undamped monodromy integration step of one point of a
-    system of n degrees of freedom (an undamped search, or the undamped seeds of a damped one),
-    its share of the search's other work included: 1e-6 s + 3e-10 s (2n)^3 (measured, see
-    above).
+    """CPU time (s, one core) of one monodromy integration step of one point of a system of n
+    degrees of freedom, its share of the search's other work included: 1e-6 s + 3e-10 s
+    (2n)^3 (measured, see above).
 
     Parameters
     ----------
@@ -693,21 +685,6 @@ def search_step_seconds(n: int) -> float:
     """
     c0, c1 = _C_SEARCH_STEP
     return c0 + c1 * float(2 * count("n", n, 1, None)) ** 3
-
-
-def dense_step_seconds(n: int) -> float:
-    """CPU time (s, one core) of one integration step of one point of the dense full-period
-    kernel (the damped steps of a region search): 1.2e-6 s + 3.25e-9 s (2n)^2 + 7.8e-11 s
-    (2n)^3 (measured, see above; scripts/dense_step_cost.py).
-
-    Parameters
-    ----------
-    n : int
-        Degrees of freedom, >= 1.
-    """
-    c0, c2, c3 = _C_DENSE_STEP
-    m = 2.0 * count("n", n, 1, None)
-    return c0 + c2 * m**2 + c3 * m**3
 
 
 def damped_band_steps(model: BoosterModel) -> tuple[float, float]:

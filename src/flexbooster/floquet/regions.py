@@ -15,7 +15,7 @@ K. Takahashi, J. Sound Vib. 78 (1981) 519-529.
 from __future__ import annotations
 
 import dataclasses
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -969,7 +969,7 @@ class SearchWork:
     open_steps: int = 0
     undamped_max_steps: int = 0
     canonical: bool = False
-    pairs: tuple = ()
+    pairs: tuple = field(default=(), repr=False)
 
     def to_dict(self) -> dict:
         """JSON-ready mapping."""
