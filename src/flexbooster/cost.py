@@ -603,7 +603,7 @@ _EVALS_OPEN = 350.0
 # CPU over their steps, on a loaded core): the memo's default (n = 11: 1,775 points, 81,931
 # steps, 1.2 s), the liquid vehicle's k = 1 (n = 19: 5,571 points, 1.38 million steps, 24.6 s)
 # and free-free index 7 (n = 2: 2.08 million steps, 1.8 s). The dense kernel alone takes less
-# a step on an idle core (0.49, 6.80, 42.0 microseconds at n = 2, 19, 40, 64 points a batch);
+# per step on an idle core (0.49, 6.80, 42.0 microseconds at n = 2, 19, 40; 64 points a batch);
 # this law also covers the step counts' shortfall where the gimbaled pitch's candidates open
 # at any damping but are counted as damped ones (a mutated liquid vehicle's k = 1: 1.43
 # million steps run, 0.56 million counted)
