@@ -739,14 +739,16 @@ def _system_search_seconds(build, thrust, price, elastic: list | None = None) ->
         return 0.0
     if elastic is None:
         return _work_seconds(system, thrust.omega_min, thrust.omega_max, price)
-    if system[0].shape[0] > _K1_COUNTED_MODES:  # priced without its candidates
-        elastic.append(None)
+    seen: list = []
 
     def counted(work) -> float:
-        elastic.append(_elastic_candidates(h, work))
+        seen.append(_elastic_candidates(h, work))
         return price(work)
 
-    return _work_seconds(system, thrust.omega_min, thrust.omega_max, counted)
+    seconds = _work_seconds(system, thrust.omega_min, thrust.omega_max, counted)
+    if seen or seconds > 0.0:  # a search priced without its work: its candidates unknown
+        elastic.append(seen[0] if seen else None)
+    return seconds
 
 
 def _elastic_candidates(h: Any, work: Any) -> int:
