@@ -191,8 +191,9 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
 
     Arrays kind (0 simple, 1 sum, 2 difference), i, k, j, centre, est, gap (distance to the
     nearest other centre of any order in [lo / 2, 2 hi]), mono, and the window searched by
-    the monodromy, middle +- half; the rows ``shifted`` are second windows of candidates
-    moved by the second-order frequency shifts (:func:`_shifted_copies`). Orders suppressed
+    the monodromy, middle +- half; the rows ``shifted`` are further windows of candidates
+    moved by the second-order frequency shifts or split by a near resonance
+    (:func:`_shifted_copies`). Orders suppressed
     by damping (:func:`_damping_caps`) or below the floor are not enumerated; more than
     ``opt.max_candidates`` kept raises :class:`TooManyCandidatesError`. A ``canonical`` system
     (:class:`.multipliers.LinearPeriodicSystem`) has no difference candidates: at
@@ -279,7 +280,8 @@ def _shifted_copies(cand: dict, w: np.ndarray, Bt: np.ndarray, lo: float, hi: fl
     moved centre, two fixed-point steps), lies outside the inner half of its window, by at
     most :data:`_MAX_SHIFT` of the centre. The window reaches from the analytic centre to the
     moved one (the estimate overshoots near a small denominator), widened by twice the
-    estimated width (at most 0.2 Oc / j) on both sides, clipped to [lo, hi]."""
+    estimated width (at most 0.2 Oc / j) on both sides, clipped to [lo, hi]. Also ``shifted``
+    rows: the windows of a region split by a near resonance (:func:`_branch_windows`)."""
     floor = _indicator_floor(cand["j"].astype(float), opt.rtol)
     mono = np.nonzero(cand["mono"] & (cand["est"] >= floor * cand["centre"]))[0]
     if mono.size == 0:
@@ -288,8 +290,7 @@ def _shifted_copies(cand: dict, w: np.ndarray, Bt: np.ndarray, lo: float, hi: fl
     Oc = cand["centre"][mono]
     Om = Oc
     for _ in range(2):
-        wi, wk = (_shifted_frequencies(w, Bt, m, Om, Oc) for m in (i, k))
-        Om = np.where(kind == 0, 2.0 * wi, np.where(kind == 1, wi + wk, np.abs(wk - wi))) / j
+        Om = _moved_centre(w, Bt, kind, i, k, j, Om, Oc)
     shift = np.abs(Om - Oc)
     # NaN (no second-order frequency): no copy; est near the largest float: the cap
     with np.errstate(invalid="ignore", over="ignore"):
@@ -298,14 +299,108 @@ def _shifted_copies(cand: dict, w: np.ndarray, Bt: np.ndarray, lo: float, hi: fl
         a = np.maximum(np.minimum(Om, Oc) - est, lo)
         b = np.minimum(np.maximum(Om, Oc) + est, hi)
         far &= b > a
-    sel = mono[far]
+    row, ba, bb = _branch_windows(w, Bt, kind, i, k, j, Oc, cand["est"][mono],
+                                  cand["half"][mono], lo, hi)
+    sel = np.concatenate([mono[far], mono[row]])
     if sel.size == 0:
         return cand
+    a, b = np.concatenate([a[far], ba]), np.concatenate([b[far], bb])
     copy = {key: v[sel] for key, v in cand.items()}
-    copy["middle"] = 0.5 * (a[far] + b[far])
-    copy["half"] = 0.5 * (b[far] - a[far])
+    copy["middle"] = 0.5 * (a + b)
+    copy["half"] = 0.5 * (b - a)
     copy["shifted"] = np.ones(sel.size, bool)
     return {key: np.concatenate([cand[key], copy[key]]) for key in cand}
+
+
+def _moved_centre(w, Bt, kind, i, k, j, Omega, centre) -> np.ndarray:
+    """The candidates' centres from the second-order frequencies at Omega
+    (:func:`_shifted_frequencies`): 2 w~_i / j, (w~_i + w~_k) / j or |w~_k - w~_i| / j."""
+    wi, wk = (_shifted_frequencies(w, Bt, m, Omega, centre) for m in (i, k))
+    return np.where(kind == 0, 2.0 * wi, np.where(kind == 1, wi + wk, np.abs(wk - wi))) / j
+
+
+#: Chebyshev points per interval between poles at which the moved-centre equation is sampled
+#: for a sign change (:func:`_branch_windows`), and bisection steps on each change found.
+_BRANCH_SAMPLES, _BRANCH_BISECTIONS = 16, 40
+
+
+def _branch_windows(w, Bt, kind, i, k, j, Oc, est, half, lo, hi) -> tuple:
+    """Windows of a candidate split by the poles of its second-order frequencies.
+
+    A pole is an Omega where a mode m resonates with mode i of the candidate (w_m =
+    |w_i +- Omega|, :func:`_shifted_frequencies`): near it the centre moves by more than the
+    second-order terms can say, and a region of the candidate may be split in two, one part on
+    either side (e.g. a principal region of mode i on both sides of w_m - w_i). For the poles
+    inside Oc (1 +- :data:`_MAX_SHIFT`):
+
+    * the window Oc +- ``half``, cut at the poles inside it: one window per piece (the pair
+      indicator may have a maximum on either side);
+    * on each interval between poles that does not hold Oc, every root of Omega = the moved
+      centre (:func:`_moved_centre`; a sign change among :data:`_BRANCH_SAMPLES` Chebyshev
+      points, then bisection): a window from the pole to the root, widened beyond it by
+      min(2 est, 0.2 Oc / j).
+
+    Windows clipped to [lo, hi]. Returns (rows of the candidates given, lower and upper window
+    edges).
+    """
+    n = w.size
+    out = [(np.zeros(0, int), np.zeros(0), np.zeros(0))]
+    t = 0.5 * (1.0 - np.cos(np.pi * (np.arange(_BRANCH_SAMPLES) + 0.5) / _BRANCH_SAMPLES))
+    step = max(1, _ENUMERATION_BATCH // (4 * max(n, 1) * _BRANCH_SAMPLES))
+    for s in range(0, Oc.size, step):  # batches of bounded memory
+        c = np.arange(s, min(s + step, Oc.size))
+        poles = np.concatenate([np.abs(w[None, :] - w[i[c], None]), w[None, :] + w[i[c], None],
+                                np.abs(w[None, :] - w[k[c], None]), w[None, :] + w[k[c], None]],
+                               axis=1)
+        inside = (np.abs(poles - Oc[c, None]) < _MAX_SHIFT * Oc[c, None]) \
+            & (np.abs(poles - Oc[c, None]) > 1e-9 * Oc[c, None])
+        inside[:, 2 * n:] &= kind[c, None] != 0  # a simple candidate: mode i's poles once
+        poles = np.sort(np.where(inside, poles, np.inf), axis=1)
+        m = np.arange(poles.shape[1])[None, :] < inside.sum(axis=1)[:, None]
+        if not m.any():
+            continue
+        cc = np.broadcast_to(c[:, None], poles.shape)[m]  # one entry per pole
+        p = poles[m]
+        nxt = np.concatenate([poles[:, 1:], np.full((c.size, 1), np.inf)], axis=1)[m]
+        prv = np.concatenate([np.full((c.size, 1), -np.inf), poles[:, :-1]], axis=1)[m]
+        # the window cut at its poles: the piece below each pole inside it, and the piece
+        # above the highest one
+        w_lo, w_hi = Oc[cc] - half[cc], Oc[cc] + half[cc]
+        cut = (p > w_lo) & (p < w_hi)
+        top = cut & ~(nxt < w_hi)
+        out.append((np.concatenate([cc[cut], cc[top]]),
+                    np.concatenate([np.maximum(prv, w_lo)[cut], p[top]]),
+                    np.concatenate([p[cut], w_hi[top]])))
+        # the interval on each pole's side away from Oc: the roots of the moved centre
+        up = p > Oc[cc]
+        a = np.where(up, p, np.maximum(prv, Oc[cc] * (1.0 - _MAX_SHIFT)))
+        b = np.where(up, np.minimum(nxt, Oc[cc] * (1.0 + _MAX_SHIFT)), p)
+        pts = a[:, None] + (b - a)[:, None] * t[None, :]
+        rep = np.repeat(cc, _BRANCH_SAMPLES)
+        g = pts - _moved_centre(w, Bt, kind[rep], i[rep], k[rep], j[rep], pts.ravel(),
+                                Oc[rep]).reshape(pts.shape)
+        with np.errstate(invalid="ignore"):
+            r_, s_ = np.nonzero(g[:, :-1] * g[:, 1:] < 0.0)
+        if r_.size == 0:
+            continue
+        xa, xb, ga, gb = pts[r_, s_], pts[r_, s_ + 1], g[r_, s_], g[r_, s_ + 1]
+        cb = cc[r_]
+        for _ in range(_BRANCH_BISECTIONS):
+            xm = 0.5 * (xa + xb)
+            gm = xm - _moved_centre(w, Bt, kind[cb], i[cb], k[cb], j[cb], xm, Oc[cb])
+            left = np.sign(gm) == np.sign(ga)
+            xa, ga = np.where(left, xm, xa), np.where(left, gm, ga)
+            xb, gb = np.where(left, xb, xm), np.where(left, gb, gm)
+        root = 0.5 * (xa + xb)
+        e = np.minimum(2.0 * est[cb], 0.2 * Oc[cb] / j[cb])
+        with np.errstate(invalid="ignore", over="ignore"):
+            ok = np.isfinite(gb)  # a bracket closed on a NaN (no frequency) is no root
+        out.append((cb[ok], np.where(up[r_], a[r_], root - e)[ok],
+                    np.where(up[r_], root + e, b[r_])[ok]))
+    rows, wa, wb = (np.concatenate(v) for v in zip(*out, strict=True))
+    wa, wb = np.maximum(wa, lo), np.minimum(wb, hi)
+    keep = wb > wa
+    return rows[keep], wa[keep], wb[keep]
 
 
 #: The largest relative shift of a centre given a second window (:func:`_shifted_copies`).
