@@ -320,8 +320,9 @@ def _moved_centre(w, Bt, kind, i, k, j, Omega, centre) -> np.ndarray:
 
 
 #: Chebyshev points per interval between poles at which the moved-centre equation is sampled
-#: for a sign change (:func:`_branch_windows`), and bisection steps on each change found.
-_BRANCH_SAMPLES, _BRANCH_BISECTIONS = 16, 40
+#: for a sign change (:func:`_branch_windows`), and bisection steps on each change found (a
+#: bracket of at most 1e-2 Oc to 1e-8 Oc).
+_BRANCH_SAMPLES, _BRANCH_BISECTIONS = 16, 20
 
 
 def _branch_windows(w, Bt, kind, i, k, j, Oc, est, half, lo, hi) -> tuple:
@@ -331,7 +332,9 @@ def _branch_windows(w, Bt, kind, i, k, j, Oc, est, half, lo, hi) -> tuple:
     |w_i +- Omega|, :func:`_shifted_frequencies`): near it the centre moves by more than the
     second-order terms can say, and a region of the candidate may be split in two, one part on
     either side (e.g. a principal region of mode i on both sides of w_m - w_i). For the poles
-    inside Oc (1 +- :data:`_MAX_SHIFT`):
+    inside Oc (1 +- :data:`_MAX_SHIFT`) whose term, at the distance d of the pole from Oc,
+    moves the centre by more than a quarter of the estimated width (|Bt_im Bt_mi| /
+    (8 j w_i w_m d) > est / 4; for each mode i of the candidate):
 
     * the window Oc +- ``half``, cut at the poles inside it: one window per piece (the pair
       indicator may have a maximum on either side);
@@ -352,8 +355,14 @@ def _branch_windows(w, Bt, kind, i, k, j, Oc, est, half, lo, hi) -> tuple:
         poles = np.concatenate([np.abs(w[None, :] - w[i[c], None]), w[None, :] + w[i[c], None],
                                 np.abs(w[None, :] - w[k[c], None]), w[None, :] + w[k[c], None]],
                                axis=1)
-        inside = (np.abs(poles - Oc[c, None]) < _MAX_SHIFT * Oc[c, None]) \
-            & (np.abs(poles - Oc[c, None]) > 1e-9 * Oc[c, None])
+        # the pole's reach: its term moves the centre by |Bt_am Bt_ma| / (8 j w_a w_m d) at a
+        # distance d from it, more than a quarter of the estimated width within the reach
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+            ci, ck = (np.abs(Bt[a, :] * Bt[:, a].T) / np.outer(w[a], w) for a in (i[c], k[c]))
+            reach = np.concatenate([ci, ci, ck, ck], axis=1) / (2.0 * j[c, None]
+                                                                * est[c, None])
+        d = np.abs(poles - Oc[c, None])
+        inside = (d < np.minimum(reach, _MAX_SHIFT * Oc[c, None])) & (d > 1e-9 * Oc[c, None])
         inside[:, 2 * n:] &= kind[c, None] != 0  # a simple candidate: mode i's poles once
         poles = np.sort(np.where(inside, poles, np.inf), axis=1)
         m = np.arange(poles.shape[1])[None, :] < inside.sum(axis=1)[:, None]
