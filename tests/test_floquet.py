@@ -645,6 +645,28 @@ def test_principal_region_split_by_a_near_resonance(system, mode, gamma):
                              4001).size == 0
 
 
+#: A random symmetric system (w, r; B = gamma r w_a w_b; numpy default_rng(7), rounded) whose
+#: modes 2 and 3 are nearly degenerate (w within 0.05 %).
+DEGENERATE_4 = (np.array([2.68097049, 2.89468805, 4.31031699, 4.31219567]),
+                np.array([[0.134, -0.085, -0.142, -0.098], [-0.085, -0.092, 0.11, 0.113],
+                          [-0.142, 0.11, 0.159, -0.077], [-0.098, 0.113, -0.077, 0.072]]))
+
+
+def test_combination_region_with_a_nearly_degenerate_partner():
+    # DEGENERATE_4 at gamma = 0.3: the sum (0, 2) and (0, 3) j = 2 centres lie 1e-3 apart,
+    # within each other's estimated width (7e-3), and two s-values sit near p_2 = p_3. The pair
+    # indicator that takes the s nearest to each prediction followed the wrong one and missed
+    # the region at 3.4921-3.4959 (growth 1.9e-3 1/s by solve_ivp at 3.494) and one at
+    # 3.6005-3.6013 (4.1e-4 at 3.6009). Both are found, and a 4,001-point scan of 3.45..3.65
+    # finds no unstable point outside the regions.
+    M, A, B = _shifted_system(DEGENERATE_4, 0.3)
+    regions = instability_regions(M, None, A, B, 0.5, 2.2 * DEGENERATE_4[0][-1])
+    for omega, growth in ((3.494, 1.5e-3), (3.6009, 3e-4)):
+        assert ivp_growth_rate(M, 0 * M, A, B, omega) > growth
+        assert any(q.omega_lo < omega < q.omega_hi for q in regions)
+    assert _unstable_outside(M, None, A, B, regions, 3.45, 3.65, 4001).size == 0
+
+
 def test_search_work_counts_the_second_windows(monkeypatch):
     # the estimate's candidates and step counts are those the search integrates, second
     # windows included, and every second window lies inside the searched range (SHIFTED_4,

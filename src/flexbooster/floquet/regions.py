@@ -563,15 +563,42 @@ def _indicator(system, w, cand, om, opt) -> np.ndarray:
     f_simple = np.where(x_i.imag == 0.0, f_simple, np.minimum(f_simple, -np.abs(x_i.imag)))
     if ev.shape[1] >= 2:
         # combination: the s nearest to each prediction; F = -Re (s_a - s_b)^2 > 0 where the
-        # pair is complex (left |rho| = 1), 0 where it collides on |rho| = 1
+        # pair is complex (left |rho| = 1), 0 where it collides on |rho| = 1. A mode m nearly
+        # degenerate with i (|w_m - w_i| <= j est: its combination centre with k within the
+        # estimated width) has an s near the same prediction, and so for k: a among the c_i s
+        # nearest to p_i, b among the c_k nearest to p_k (other than a), the largest F
         first = np.argmin(np.abs(ev - p_i[:, None]), axis=1)
         d_k = np.abs(ev - p_k[:, None])
         d_k[rows, first] = np.inf
         second = np.argmin(d_k, axis=1)
         f_comb = -((ev[rows, first] - ev[rows, second]) ** 2).real
+        tol = (cand["est"] * cand["j"])[:, None]
+        with np.errstate(invalid="ignore"):
+            c_i, c_k = (np.sum(np.abs(w[None, :] - w[cand[m]][:, None]) <= tol, axis=1)
+                        for m in ("i", "k"))
+        many = np.nonzero((~simple) & ((c_i > 1) | (c_k > 1)))[0]
+        if many.size:
+            f_comb[many] = _cluster_pairs(ev[many], p_i[many], p_k[many], c_i[many], c_k[many])
     else:
         f_comb = np.full(P, -1.0)
     return np.where(simple, f_simple, f_comb)
+
+
+def _cluster_pairs(ev, p_i, p_k, c_i, c_k) -> np.ndarray:
+    """max -Re (s_a - s_b)^2 over a among the c_i s-values ``ev`` nearest to p_i and b among
+    the c_k nearest to p_k other than a (per row)."""
+    rows = np.arange(ev.shape[0])
+    order_i = np.argsort(np.abs(ev - p_i[:, None]), axis=1, kind="stable")
+    order_k = np.argsort(np.abs(ev - p_k[:, None]), axis=1, kind="stable")
+    out = np.full(ev.shape[0], -np.inf)
+    for ai in range(min(int(c_i.max()), ev.shape[1])):
+        a = order_i[:, ai]
+        pos = np.argmax(order_k == a[:, None], axis=1)  # a's place in order_k
+        for bk in range(min(int(c_k.max()) + 1, ev.shape[1])):
+            b = order_k[:, bk]
+            ok = (ai < c_i) & (bk != pos) & (bk - (pos < bk) < c_k)
+            out = np.where(ok, np.maximum(out, -((ev[rows, a] - ev[rows, b]) ** 2).real), out)
+    return out
 
 
 def _unstable_indicator(system, om, opt) -> np.ndarray:
