@@ -566,7 +566,8 @@ def _indicator(system, w, cand, om, opt) -> np.ndarray:
         # pair is complex (left |rho| = 1), 0 where it collides on |rho| = 1. A mode m nearly
         # degenerate with i (|w_m - w_i| <= j est: its combination centre with k within the
         # estimated width) has an s near the same prediction, and so for k: a among the c_i s
-        # nearest to p_i, b among the c_k nearest to p_k (other than a), the largest F
+        # nearest to p_i, b among the c_k nearest to p_k (other than a; c <= _CLUSTER_MAX),
+        # the largest F
         first = np.argmin(np.abs(ev - p_i[:, None]), axis=1)
         d_k = np.abs(ev - p_k[:, None])
         d_k[rows, first] = np.inf
@@ -574,14 +575,19 @@ def _indicator(system, w, cand, om, opt) -> np.ndarray:
         f_comb = -((ev[rows, first] - ev[rows, second]) ** 2).real
         tol = (cand["est"] * cand["j"])[:, None]
         with np.errstate(invalid="ignore"):
-            c_i, c_k = (np.sum(np.abs(w[None, :] - w[cand[m]][:, None]) <= tol, axis=1)
-                        for m in ("i", "k"))
+            c_i, c_k = (np.minimum(np.sum(np.abs(w[None, :] - w[cand[m]][:, None]) <= tol,
+                                          axis=1), _CLUSTER_MAX) for m in ("i", "k"))
         many = np.nonzero((~simple) & ((c_i > 1) | (c_k > 1)))[0]
         if many.size:
             f_comb[many] = _cluster_pairs(ev[many], p_i[many], p_k[many], c_i[many], c_k[many])
     else:
         f_comb = np.full(P, -1.0)
     return np.where(simple, f_simple, f_comb)
+
+
+#: The most s-values near one prediction that a combination indicator pairs (a strongly
+#: coupled candidate's estimated width can span every mode; :func:`_indicator`).
+_CLUSTER_MAX = 4
 
 
 def _cluster_pairs(ev, p_i, p_k, c_i, c_k) -> np.ndarray:
