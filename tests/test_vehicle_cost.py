@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import dataclasses
 import tomllib
+from pathlib import Path
 
 import pytest
 
@@ -20,7 +21,10 @@ from flexbooster.analysis import analyze
 from flexbooster.bands import SearchGap
 from flexbooster.case import load_case, memo_case_text
 from flexbooster.errors import CaseError
-from flexbooster.model import model_from_case
+from flexbooster.model import model_from_case, vehicle_from_case
+from flexbooster.shell_of_revolution import mesh_vehicle, rigid_motion_count
+
+DATA = Path(__file__).parent / "data"
 
 
 def _case(**vehicle):
@@ -153,3 +157,23 @@ def test_vehicle_estimate_grows_with_the_tanks_and_the_masses():
     # the masses' matrices (the k = 1 search part, if any, depends on the harmonic's spectrum)
     assert with_masses.parts["vehicle modes"] > est[1].parts["vehicle modes"]
     assert "vehicle.masses" in with_masses.drivers["vehicle modes"]
+
+
+@pytest.mark.parametrize("aft_end,rigid", [("free", (2, 2, 0)), ("hinged", (0, 0, 0))])
+def test_dense_survey_harmonics_are_those_with_rigid_motions(aft_end, rigid):
+    """The estimate prices the survey harmonics with rigid-body motions by their own law
+    (``cost._SURVEY_DENSE_LAW``: their modes are solved on the complement of those motions): a
+    free-free shell of revolution has two at k = 0 (axial translation, rotation about the axis)
+    and two at k = 1 (lateral translation, pitch), none at k >= 2 (Kraus 1967, the rigid-body
+    motions of a shell of revolution); the tests/data tube's hinged aft end (u = v = w = 0
+    there) admits none."""
+    data = tomllib.loads((DATA / "long_tube_case.toml").read_text())
+    data["vehicle"].update(aft_end=aft_end, k_max=2)
+    data["vehicle"]["segments"][0]["length"] = "45 m"
+    data["output"]["stations"][0]["station"] = 45.0
+    case = load_case(data)
+    vehicle = vehicle_from_case(case)
+    mesh = mesh_vehicle(vehicle)
+    assert tuple(rigid_motion_count(vehicle, mesh, k) for k in range(3)) == rigid
+    assert cost._dense_harmonics(vehicle, 2) == sum(1 for r in rigid if r)
+    assert cost._dense_harmonics(vehicle, 0) == (1 if rigid[0] else 0)

@@ -508,6 +508,13 @@ _REF_DOFS = 263.0
 # regions" part; the cube alone priced the 780-DOF default vehicle's builds 14x their time.
 _SURVEY_DOF_LAW = (1.5, 0.25)  # x^2, x^3
 _BUILD_DOF_LAW = (0.5, 0.2)  # x, x^3
+# Those tubes are hinged: no harmonic has rigid-body motions. A free end's k = 0 and 1 have two
+# each (shell_of_revolution.rigid_motion_count), and their modes are solved on the complement
+# of those motions (a dense projection, a solve for the lowest modes and often a second one
+# for the band of the survey): a survey harmonic of free-free tubes
+# of radius 0.2 m (348-3,051 DOFs, k_max = 1, idle core) took 9, 30, 127, 349 and 727 units
+# at x = 2.10, 3.52, 6.17, 8.89 and 11.6, priced 1.5 x^2 + 0.55 x^3 (1.43-1.46x).
+_SURVEY_DENSE_LAW = (1.5, 0.55)  # x^2, x^3
 # Attached masses (benchmarks/bench_vehicle_modes.py's two-stage vehicle, 691 FE DOFs, one
 # core): the liquid mesh of a tank once (4 tanks: 0.11 s), its added mass per harmonic
 # (0.0133 s per tank and k); a lumped mass's matrix per harmonic k <= 1 (1.7e-3 s).
@@ -953,14 +960,28 @@ def _shell_searches(case: Any, vehicle: Any, n_k: int, n_modes: int,
             case.thrust, shell_search_seconds, elastic) for k in range(2, n_k + 1)))
 
 
-def _dof_factors(vehicle) -> tuple[float, float]:
-    """The FE work of a harmonic of the modes survey and of a harmonic's build, in units of
-    the reference vehicle's (:data:`_SURVEY_DOF_LAW`, :data:`_BUILD_DOF_LAW`)."""
+def _dof_factors(vehicle) -> tuple[float, float, float]:
+    """The FE work of a harmonic of the modes survey, of a harmonic's build and of a survey
+    harmonic with rigid-body motions, in units of the reference vehicle's
+    (:data:`_SURVEY_DOF_LAW`, :data:`_BUILD_DOF_LAW`, :data:`_SURVEY_DENSE_LAW`)."""
     from .shell_of_revolution import mesh_vehicle
 
     x = mesh_vehicle(vehicle).n_full / _REF_DOFS
-    (s2, s3), (b1, b3) = _SURVEY_DOF_LAW, _BUILD_DOF_LAW
-    return max(1.0 / 3.0, s2 * x**2 + s3 * x**3), max(1.0 / 3.0, b1 * x + b3 * x**3)
+    (s2, s3), (b1, b3), (d2, d3) = _SURVEY_DOF_LAW, _BUILD_DOF_LAW, _SURVEY_DENSE_LAW
+    return (max(1.0 / 3.0, s2 * x**2 + s3 * x**3), max(1.0 / 3.0, b1 * x + b3 * x**3),
+            max(1.0 / 3.0, d2 * x**2 + d3 * x**3))
+
+
+def _dense_harmonics(vehicle, k_max: int) -> int:
+    """The harmonics k <= min(1, k_max) whose modes are solved dense: rigid-body motions
+    (:func:`.shell_of_revolution.rigid_motion_count`), or at k = 0 a full tank (its liquid's
+    volume constraint; a vehicle's tanks have rigid ends)."""
+    from .shell_of_revolution import mesh_vehicle, rigid_motion_count
+
+    mesh = mesh_vehicle(vehicle)
+    full = any(t.fill == 1.0 for t in vehicle.tanks)
+    return sum(1 for k in range(min(1, k_max) + 1)
+               if rigid_motion_count(vehicle, mesh, k) or (k == 0 and full))
 
 
 def region_modes(case: Any, vehicle: Any = None, *, k_max: int = 10) -> tuple[int, int]:
@@ -1030,7 +1051,8 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
     n_k = table.k_max if regions_k_max is None else min(table.k_max, int(regions_k_max))
     try:
         vehicle = vehicle_from_case(case) if vehicle is None else vehicle
-        survey_dofs, build_dofs = _dof_factors(vehicle)
+        survey_dofs, build_dofs, dense_dofs = _dof_factors(vehicle)
+        n_dense = _dense_harmonics(vehicle, table.k_max)
         n_modes = region_modes(case, vehicle, k_max=max(n_k, 1))[0]
     except ValueError:  # a vehicle the mesh refuses: the stage says why, not the estimate
         return CostEstimate(seconds=0.0)
@@ -1044,7 +1066,8 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
 
     if case.vehicle is not None:  # the modes survey, k = 0..k_max
         c0, c1 = _C_SURVEY
-        parts["vehicle modes"] = (c0 + c1 * (table.k_max + 1) * survey_dofs
+        parts["vehicle modes"] = (c0 + c1 * ((table.k_max + 1 - n_dense) * survey_dofs
+                                             + n_dense * dense_dofs)
                                   + n_tanks * _C_TANK[0]
                                   + per_harmonic(table.k_max + 1, min(table.k_max + 1, 2)))
         drivers["vehicle modes"] = ("vehicle.k_max", "vehicle.segments") + attached

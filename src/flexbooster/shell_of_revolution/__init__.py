@@ -37,6 +37,7 @@ from .modes import (
     labelled_modal_system,
     modal_system,
     mode_vectors,
+    rigid_motion_count,
     shared_harmonics,
     vehicle_modes,
 )
@@ -72,6 +73,7 @@ __all__ = [
     "mesh_vehicle",
     "modal_system",
     "mode_vectors",
+    "rigid_motion_count",
     "shared_harmonics",
     "slosh_modes",
     "system_matrices",

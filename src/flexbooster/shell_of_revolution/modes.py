@@ -25,6 +25,7 @@ from .assembly import (
     DEFAULT_ORDER,
     DofMap,
     Mesh,
+    dof_map,
     harmonic_matrices,
     mesh_vehicle,
     node_transform,
@@ -52,6 +53,7 @@ __all__ = [
     "shared_harmonics",
     "mode_vectors",
     "eigenvalues_below",
+    "rigid_motion_count",
 ]
 
 class BucklingError(ValueError):
@@ -303,6 +305,25 @@ class _Harmonic:
     def n_rigid(self) -> int:
         """Admissible rigid-body motions (dimensionless)."""
         return int(self.R.shape[1])
+
+
+def rigid_motion_count(vehicle: Vehicle, mesh: Mesh, k: int) -> int:
+    """The rigid-body motions of harmonic k that the vehicle's ends admit (0-2; k = 0: axial
+    translation and rotation, k = 1: lateral translation and pitch; Kraus 1967): where there
+    are any, the modes are solved on their M-orthogonal complement (dense), not by the sparse
+    Lanczos.
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        The vehicle.
+    mesh : Mesh
+        Its mesh (:func:`.assembly.mesh_vehicle`).
+    k : int
+        The harmonic, 0..200.
+    """
+    k = count("k", k, 0, 200)
+    return int(_rigid_subspace(mesh, dof_map(vehicle, mesh, k), k).shape[1])
 
 
 def _rigid_subspace(mesh: Mesh, dmap, k: int) -> np.ndarray:
