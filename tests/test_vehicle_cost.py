@@ -161,8 +161,9 @@ def test_vehicle_estimate_grows_with_the_tanks_and_the_masses():
 
 @pytest.mark.parametrize("aft_end,rigid", [("free", (2, 2, 0)), ("hinged", (0, 0, 0))])
 def test_dense_survey_harmonics_are_those_with_rigid_motions(aft_end, rigid):
-    """The estimate prices the survey harmonics with rigid-body motions by their own law
-    (``cost._SURVEY_DENSE_LAW``: their modes are solved on the complement of those motions): a
+    """The estimate prices the survey harmonics and the regions' builds with rigid-body
+    motions by their own laws (``cost._SURVEY_DENSE_LAW``, ``_BUILD_DENSE_LAW``: their modes
+    are solved on the complement of those motions): a
     free-free shell of revolution has two at k = 0 (axial translation, rotation about the axis)
     and two at k = 1 (lateral translation, pitch), none at k >= 2 (Kraus 1967, the rigid-body
     motions of a shell of revolution); the tests/data tube's hinged aft end (u = v = w = 0
@@ -177,3 +178,4 @@ def test_dense_survey_harmonics_are_those_with_rigid_motions(aft_end, rigid):
     assert tuple(rigid_motion_count(vehicle, mesh, k) for k in range(3)) == rigid
     assert cost._dense_harmonics(vehicle, 2) == sum(1 for r in rigid if r)
     assert cost._dense_harmonics(vehicle, 0) == (1 if rigid[0] else 0)
+    assert cost._dense_harmonics(vehicle, 2, k_min=1) == (1 if rigid[1] else 0)  # regions

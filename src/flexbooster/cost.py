@@ -515,6 +515,11 @@ _BUILD_DOF_LAW = (0.5, 0.2)  # x, x^3
 # of radius 0.2 m (348-3,051 DOFs, k_max = 1, idle core) took 9, 30, 127, 349 and 727 units
 # at x = 2.10, 3.52, 6.17, 8.89 and 11.6, priced 1.5 x^2 + 0.55 x^3 (1.43-1.46x).
 _SURVEY_DENSE_LAW = (1.5, 0.55)  # x^2, x^3
+# The build of such a harmonic for the regions (k = 1, 20 modes on the complement): 3.1, 11.5,
+# 56, 149 and 350 units at x = 1.76, 3.18, 5.83, 8.55 and 11.3 (free-free tubes of radius
+# 0.2 m, 463-2,962 DOFs; k = 2 of the same tubes 1.7-28 units), priced x + 0.35 x^3
+# (1.2-1.5x); the law above priced it 0.83x at 2,962 DOFs.
+_BUILD_DENSE_LAW = (1.0, 0.35)  # x, x^3
 # Attached masses (benchmarks/bench_vehicle_modes.py's two-stage vehicle, 691 FE DOFs, one
 # core): the liquid mesh of a tank once (4 tanks: 0.11 s), its added mass per harmonic
 # (0.0133 s per tank and k); a lumped mass's matrix per harmonic k <= 1 (1.7e-3 s).
@@ -960,27 +965,29 @@ def _shell_searches(case: Any, vehicle: Any, n_k: int, n_modes: int,
             case.thrust, shell_search_seconds, elastic) for k in range(2, n_k + 1)))
 
 
-def _dof_factors(vehicle) -> tuple[float, float, float]:
-    """The FE work of a harmonic of the modes survey, of a harmonic's build and of a survey
-    harmonic with rigid-body motions, in units of the reference vehicle's
-    (:data:`_SURVEY_DOF_LAW`, :data:`_BUILD_DOF_LAW`, :data:`_SURVEY_DENSE_LAW`)."""
+def _dof_factors(vehicle) -> tuple[float, float, float, float]:
+    """The FE work of a harmonic of the modes survey and of a harmonic's build, then of the
+    same for a harmonic with rigid-body motions, in units of the reference vehicle's
+    (:data:`_SURVEY_DOF_LAW`, :data:`_BUILD_DOF_LAW`, :data:`_SURVEY_DENSE_LAW`,
+    :data:`_BUILD_DENSE_LAW`)."""
     from .shell_of_revolution import mesh_vehicle
 
     x = mesh_vehicle(vehicle).n_full / _REF_DOFS
-    (s2, s3), (b1, b3), (d2, d3) = _SURVEY_DOF_LAW, _BUILD_DOF_LAW, _SURVEY_DENSE_LAW
-    return (max(1.0 / 3.0, s2 * x**2 + s3 * x**3), max(1.0 / 3.0, b1 * x + b3 * x**3),
-            max(1.0 / 3.0, d2 * x**2 + d3 * x**3))
+    (s2, s3), (b1, b3) = _SURVEY_DOF_LAW, _BUILD_DOF_LAW
+    (d2, d3), (e1, e3) = _SURVEY_DENSE_LAW, _BUILD_DENSE_LAW
+    return tuple(max(1.0 / 3.0, v) for v in (s2 * x**2 + s3 * x**3, b1 * x + b3 * x**3,
+                                              d2 * x**2 + d3 * x**3, e1 * x + e3 * x**3))
 
 
-def _dense_harmonics(vehicle, k_max: int) -> int:
-    """The harmonics k <= min(1, k_max) whose modes are solved dense: rigid-body motions
+def _dense_harmonics(vehicle, k_max: int, k_min: int = 0) -> int:
+    """The harmonics k_min <= k <= min(1, k_max) whose modes are solved dense: rigid-body motions
     (:func:`.shell_of_revolution.rigid_motion_count`), or at k = 0 a full tank (its liquid's
     volume constraint; a vehicle's tanks have rigid ends)."""
     from .shell_of_revolution import mesh_vehicle, rigid_motion_count
 
     mesh = mesh_vehicle(vehicle)
     full = any(t.fill == 1.0 for t in vehicle.tanks)
-    return sum(1 for k in range(min(1, k_max) + 1)
+    return sum(1 for k in range(k_min, min(1, k_max) + 1)
                if rigid_motion_count(vehicle, mesh, k) or (k == 0 and full))
 
 
@@ -1051,8 +1058,9 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
     n_k = table.k_max if regions_k_max is None else min(table.k_max, int(regions_k_max))
     try:
         vehicle = vehicle_from_case(case) if vehicle is None else vehicle
-        survey_dofs, build_dofs, dense_dofs = _dof_factors(vehicle)
+        survey_dofs, build_dofs, dense_dofs, dense_build = _dof_factors(vehicle)
         n_dense = _dense_harmonics(vehicle, table.k_max)
+        n_dense_build = _dense_harmonics(vehicle, n_k, k_min=1)  # the regions' k = 1
         n_modes = region_modes(case, vehicle, k_max=max(n_k, 1))[0]
     except ValueError:  # a vehicle the mesh refuses: the stage says why, not the estimate
         return CostEstimate(seconds=0.0)
@@ -1079,7 +1087,8 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
         # k = 1 has the rigid modes too (at least 3 basis modes)
         search = searched * search_seconds(max(n_modes, 3), t.omega_min, t.omega_max,
                                            damped=damped, boundaries=figures)
-        parts["vehicle regions"] = n_k * _C_HARMONIC_BUILD * build_dofs * max(
+        parts["vehicle regions"] = _C_HARMONIC_BUILD * (
+            (n_k - n_dense_build) * build_dofs + n_dense_build * dense_build) * max(
             1.0, n_modes / 20.0) + per_harmonic(n_k, 1) + search
         drivers["vehicle regions"] = ("vehicle.n_modes", "damping.modal_ratio",
                                       "vehicle.k_max", "thrust.omega_min", "thrust.omega_max",
