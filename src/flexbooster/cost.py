@@ -511,9 +511,9 @@ _BUILD_DOF_LAW = (0.5, 0.2)  # x, x^3
 # Those tubes are hinged: no harmonic has rigid-body motions. A free end's k = 0 and 1 have two
 # each (shell_of_revolution.rigid_motion_count), and their modes are solved on the complement
 # of those motions (a dense projection, a solve for the lowest modes and often a second one
-# for the band of the survey): a survey harmonic of free-free tubes
-# of radius 0.2 m (348-3,051 DOFs, k_max = 1, idle core) took 9, 30, 127, 349 and 727 units
-# at x = 2.10, 3.52, 6.17, 8.89 and 11.6, priced 1.5 x^2 + 0.55 x^3 (1.43-1.46x).
+# for the band of the survey): a survey harmonic of free-free tubes of radius 0.2 m (348-3,051
+# DOFs, k_max = 1, idle core) took 9, 30, 127, 349 and 727 units at x = 2.10, 3.52, 6.17, 8.89
+# and 11.6, priced 1.5 x^2 + 0.55 x^3 (1.43-1.46x).
 _SURVEY_DENSE_LAW = (1.5, 0.55)  # x^2, x^3
 # The build of such a harmonic for the regions (k = 1, 20 modes on the complement): 3.1, 11.5,
 # 56, 149 and 350 units at x = 1.76, 3.18, 5.83, 8.55 and 11.3 (free-free tubes of radius

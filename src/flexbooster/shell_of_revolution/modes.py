@@ -310,8 +310,8 @@ class _Harmonic:
 def rigid_motion_count(vehicle: Vehicle, mesh: Mesh, k: int) -> int:
     """The rigid-body motions of harmonic k that the vehicle's ends admit (0-2; k = 0: axial
     translation and rotation, k = 1: lateral translation and pitch; Kraus 1967): where there
-    are any, the modes are solved on their M-orthogonal complement (dense), not by the sparse
-    Lanczos.
+    are any, the modes are solved on their M-orthogonal complement (a dense projection and
+    dense solves).
 
     Parameters
     ----------
