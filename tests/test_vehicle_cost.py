@@ -163,11 +163,10 @@ def test_vehicle_estimate_grows_with_the_tanks_and_the_masses():
 def test_dense_survey_harmonics_are_those_with_rigid_motions(aft_end, rigid):
     """The estimate prices the survey harmonics and the regions' builds with rigid-body
     motions by their own laws (``cost._SURVEY_DENSE_LAW``, ``_BUILD_DENSE_LAW``: their modes
-    are solved on the complement of those motions): a
-    free-free shell of revolution has two at k = 0 (axial translation, rotation about the axis)
-    and two at k = 1 (lateral translation, pitch), none at k >= 2 (Kraus 1967, the rigid-body
-    motions of a shell of revolution); the tests/data tube's hinged aft end (u = v = w = 0
-    there) admits none."""
+    are solved on the complement of those motions). A free-free shell of revolution has two
+    at k = 0 (axial translation, rotation about the axis) and two at k = 1 (lateral
+    translation, pitch), none at k >= 2 (Kraus 1967, the rigid-body motions of a shell of
+    revolution); the tests/data tube's hinged aft end (u = v = w = 0 there) admits none."""
     data = tomllib.loads((DATA / "long_tube_case.toml").read_text())
     data["vehicle"].update(aft_end=aft_end, k_max=2)
     data["vehicle"]["segments"][0]["length"] = "45 m"
