@@ -965,30 +965,27 @@ def _shell_searches(case: Any, vehicle: Any, n_k: int, n_modes: int,
             case.thrust, shell_search_seconds, elastic) for k in range(2, n_k + 1)))
 
 
-def _dof_factors(vehicle) -> tuple[float, float, float, float]:
+def _dof_factors(mesh) -> tuple[float, float, float, float]:
     """The FE work of a harmonic of the modes survey and of a harmonic's build, then of the
-    same for a harmonic with rigid-body motions, in units of the reference vehicle's
-    (:data:`_SURVEY_DOF_LAW`, :data:`_BUILD_DOF_LAW`, :data:`_SURVEY_DENSE_LAW`,
+    same for a harmonic with rigid-body motions, on ``mesh``, in units of the reference
+    vehicle's (:data:`_SURVEY_DOF_LAW`, :data:`_BUILD_DOF_LAW`, :data:`_SURVEY_DENSE_LAW`,
     :data:`_BUILD_DENSE_LAW`)."""
-    from .shell_of_revolution import mesh_vehicle
-
-    x = mesh_vehicle(vehicle).n_full / _REF_DOFS
+    x = mesh.n_full / _REF_DOFS
     (s2, s3), (b1, b3) = _SURVEY_DOF_LAW, _BUILD_DOF_LAW
     (d2, d3), (e1, e3) = _SURVEY_DENSE_LAW, _BUILD_DENSE_LAW
     return tuple(max(1.0 / 3.0, v) for v in (s2 * x**2 + s3 * x**3, b1 * x + b3 * x**3,
                                               d2 * x**2 + d3 * x**3, e1 * x + e3 * x**3))
 
 
-def _dense_harmonics(vehicle, k_max: int, k_min: int = 0) -> int:
-    """The harmonics k_min <= k <= min(1, k_max) whose modes are solved dense: rigid-body motions
+def _dense_harmonics(vehicle, mesh, k_max: int) -> tuple[int, ...]:
+    """The harmonics k <= min(1, k_max) whose modes are solved dense: rigid-body motions
     (:func:`.shell_of_revolution.rigid_motion_count`), or at k = 0 a full tank (its liquid's
     volume constraint; a vehicle's tanks have rigid ends)."""
-    from .shell_of_revolution import mesh_vehicle, rigid_motion_count
+    from .shell_of_revolution import rigid_motion_count
 
-    mesh = mesh_vehicle(vehicle)
     full = any(t.fill == 1.0 for t in vehicle.tanks)
-    return sum(1 for k in range(k_min, min(1, k_max) + 1)
-               if rigid_motion_count(vehicle, mesh, k) or (k == 0 and full))
+    return tuple(k for k in range(min(1, k_max) + 1)
+                 if (k == 0 and full) or rigid_motion_count(vehicle, mesh, k))
 
 
 def region_modes(case: Any, vehicle: Any = None, *, k_max: int = 10) -> tuple[int, int]:
@@ -1049,6 +1046,7 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
         it: the harmonics the estimate builds are then shared with the caller's.
     """
     from .model import vehicle_from_case
+    from .shell_of_revolution import mesh_vehicle
     from .vehicle_case import VehicleTable
 
     table = case.vehicle if case.vehicle is not None else VehicleTable()
@@ -1058,9 +1056,11 @@ def estimate_vehicle_cost(case: Any, *, regions_k_max: int | None = None,
     n_k = table.k_max if regions_k_max is None else min(table.k_max, int(regions_k_max))
     try:
         vehicle = vehicle_from_case(case) if vehicle is None else vehicle
-        survey_dofs, build_dofs, dense_dofs, dense_build = _dof_factors(vehicle)
-        n_dense = _dense_harmonics(vehicle, table.k_max)
-        n_dense_build = _dense_harmonics(vehicle, n_k, k_min=1)  # the regions' k = 1
+        mesh = mesh_vehicle(vehicle)
+        survey_dofs, build_dofs, dense_dofs, dense_build = _dof_factors(mesh)
+        dense = _dense_harmonics(vehicle, mesh, max(table.k_max, min(n_k, 1)))
+        n_dense = sum(1 for k in dense if k <= table.k_max)
+        n_dense_build = sum(1 for k in dense if 1 <= k <= n_k)  # the regions' k = 1
         n_modes = region_modes(case, vehicle, k_max=max(n_k, 1))[0]
     except ValueError:  # a vehicle the mesh refuses: the stage says why, not the estimate
         return CostEstimate(seconds=0.0)

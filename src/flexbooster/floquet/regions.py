@@ -190,7 +190,8 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
     """Analytic centres in [lo, hi] with their first-order width estimates.
 
     Arrays kind (0 simple, 1 sum, 2 difference), i, k, j, centre, est, gap (distance to the
-    nearest other centre of any order in [lo / 2, 2 hi]), mono, and the window searched by
+    nearest other centre of any order in [lo / 2, 2 hi]), mono, c_i and c_k (the s-values
+    a combination indicator pairs, :func:`_cluster_sizes`), and the window searched by
     the monodromy, middle +- half; the rows ``shifted`` are further windows of candidates
     moved by the second-order frequency shifts or split by a near resonance
     (:func:`_shifted_copies`). Orders suppressed
@@ -244,7 +245,21 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
         out["half"] = np.maximum(0.45 * np.minimum(out["gap"], 2.0 * Oc),
                                  np.minimum(2.0 * out["est"], 0.2 * Oc / out["j"]))
     out["shifted"] = np.zeros(Oc.size, bool)
+    out["c_i"], out["c_k"] = (_cluster_sizes(w, out[m], out["est"], out["j"]) for m in "ik")
     return _shifted_copies(out, w, Bt, lo, hi, opt)
+
+
+def _cluster_sizes(w: np.ndarray, mode: np.ndarray, est: np.ndarray,
+                   j: np.ndarray) -> np.ndarray:
+    """Per candidate, the modes within j est of the frequency of its ``mode`` (itself
+    included), at most :data:`_CLUSTER_MAX`: the s-values its combination indicator pairs
+    (:func:`_indicator`); est near the largest float: every mode, capped."""
+    ws = np.sort(w)
+    with np.errstate(invalid="ignore", over="ignore"):
+        tol = est * j
+        n = (np.searchsorted(ws, w[mode] + tol, side="right")
+             - np.searchsorted(ws, w[mode] - tol, side="left"))
+    return np.minimum(n, _CLUSTER_MAX)
 
 
 def _shifted_frequencies(w: np.ndarray, Bt: np.ndarray, i: np.ndarray, Omega: np.ndarray,
@@ -573,10 +588,7 @@ def _indicator(system, w, cand, om, opt) -> np.ndarray:
         d_k[rows, first] = np.inf
         second = np.argmin(d_k, axis=1)
         f_comb = -((ev[rows, first] - ev[rows, second]) ** 2).real
-        tol = (cand["est"] * cand["j"])[:, None]
-        with np.errstate(invalid="ignore"):
-            c_i, c_k = (np.minimum(np.sum(np.abs(w[None, :] - w[cand[m]][:, None]) <= tol,
-                                          axis=1), _CLUSTER_MAX) for m in ("i", "k"))
+        c_i, c_k = cand["c_i"], cand["c_k"]  # :func:`_cluster_sizes`
         many = np.nonzero((~simple) & ((c_i > 1) | (c_k > 1)))[0]
         if many.size:
             f_comb[many] = _cluster_pairs(ev[many], p_i[many], p_k[many], c_i[many], c_k[many])
