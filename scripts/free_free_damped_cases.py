@@ -65,7 +65,7 @@ def k1_work(case) -> floquet.SearchWork:
     vehicle = vehicle_from_case(case)
     n = cost.region_modes(case, vehicle, k_max=case.vehicle.k_max)[0]
     h = bending_harmonic(vehicle, F0=case.F0, n_modes=max(n, 3),
-                         damping_ratio=case.vehicle.damping_ratio, gimbal_gain=t.K)
+                         damping_ratio=case.vehicle_damping_ratio, gimbal_gain=t.K)
     return floquet.search_work(*h.periodic(t.gamma), t.omega_min, t.omega_max,
                                **floquet_options())
 

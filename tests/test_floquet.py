@@ -1131,6 +1131,11 @@ def test_search_work_counts_the_candidates_between_undamped_modes():
                                        step_phase=0.12)[0]
     # undamped throughout: no damped search, so nothing open is counted
     assert search_work(*mathieu(0.1), 1.5, 2.5).n_open == 0
+    # mode 0 with a damping ratio of its own, 0.5 % and 2 % of mode 1's 0.01 (either side of
+    # OPEN_DAMPING_FRACTION = 1e-2 of the largest): open, then not
+    for zeta0, n_open in ((0.5e-2 * 0.01, 1), (2e-2 * 0.01, 0)):
+        C0 = np.diag([2.0 * zeta0 * 1.0, 2.0 * 0.01 * 1.6])
+        assert search_work(M, C0, A, B, 1.5, 3.5).n_open == n_open
 
 
 def test_certificate_of_damped_mathieu_closed_form():
