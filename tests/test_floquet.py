@@ -667,6 +667,40 @@ def test_combination_region_with_a_nearly_degenerate_partner():
     assert _unstable_outside(M, None, A, B, regions, 3.45, 3.65, 4001).size == 0
 
 
+#: Random symmetric systems (as DEGENERATE_4: default_rng(7) of
+#: scripts/region_search_survey.py, its systems 12 and 28, rounded) with a combination region
+#: where another mode's prediction p = 2 cos(2 pi w / Omega) meets one of the pair's.
+COINCIDENT_5 = (np.array([1.40439587, 1.53488476, 2.52233905, 3.62897565, 3.64978489]),
+                np.array([[0.165, -0.094, -0.012, -0.082, -0.12],
+                          [-0.094, -0.085, -0.061, -0.197, 0.146],
+                          [-0.012, -0.061, -0.211, -0.039, -0.062],
+                          [-0.082, -0.197, -0.039, 0.203, -0.136],
+                          [-0.12, 0.146, -0.062, -0.136, -0.033]]))
+COINCIDENT_4 = (np.array([1.73708892, 2.21567212, 2.7900629, 4.71198631]),
+                np.array([[-0.111, 0.075, -0.044, 0.03], [0.075, -0.248, 0.147, 0.046],
+                          [-0.044, 0.147, 0.093, -0.13], [0.03, 0.046, -0.13, 0.101]]))
+
+
+@pytest.mark.parametrize("system,omega", [(COINCIDENT_5, 2.0626), (DEGENERATE_4, 2.3293),
+                                          (COINCIDENT_4, 2.4966)],
+                         ids=["5-modes", "degenerate-4", "4-modes"])
+def test_combination_region_where_another_mode_shares_a_prediction(system, omega):
+    # gamma = 0.3. Each system is unstable at omega (growth >= 1.9e-4 1/s by solve_ivp), in a
+    # region inside the window of a combination candidate (i, k) whose pair indicator, taking
+    # the s nearest to p_i and to p_k, follows another mode m there: p_m = p_i where
+    # w_m -+ w_i = n Omega (COINCIDENT_4: w_3 - w_1 = 2.4963, inside the window of the sum
+    # (1, 2) j = 2 at 2.5029, three predictions within 0.04), or modes 2 and 3 within 0.05 %
+    # (the other two). The search missed all three (no region within 5e-3 of omega); a
+    # candidate that finds nothing is searched again with those s-values paired as well. A
+    # 2,001-point scan of omega +- 5e-3 finds no unstable point outside the regions.
+    M, A, B = _shifted_system(system, 0.3)
+    assert ivp_growth_rate(M, 0 * M, A, B, omega) > 1.5e-4
+    regions = instability_regions(M, None, A, B, 0.5, 2.2 * system[0][-1])
+    assert any(q.omega_lo < omega < q.omega_hi for q in regions)
+    assert _unstable_outside(M, None, A, B, regions, omega - 5e-3, omega + 5e-3,
+                             2001).size == 0
+
+
 def test_search_work_counts_the_second_windows(monkeypatch):
     # the estimate's candidates and step counts are those the search integrates, second
     # windows included, and every second window lies inside the searched range (SHIFTED_4,

@@ -245,21 +245,38 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
         out["half"] = np.maximum(0.45 * np.minimum(out["gap"], 2.0 * Oc),
                                  np.minimum(2.0 * out["est"], 0.2 * Oc / out["j"]))
     out["shifted"] = np.zeros(Oc.size, bool)
-    out["c_i"], out["c_k"] = (_cluster_sizes(w, out[m], out["est"], out["j"]) for m in "ik")
-    return _shifted_copies(out, w, Bt, lo, hi, opt)
+    out = _shifted_copies(out, w, Bt, lo, hi, opt)
+    for m in "ik":
+        out["c_" + m] = _cluster_sizes(w, out[m], out["est"], out["j"])
+        out["e_" + m] = _cluster_sizes(w, out[m], out["est"], out["j"], out["middle"],
+                                       out["half"])
+    return out
 
 
-def _cluster_sizes(w: np.ndarray, mode: np.ndarray, est: np.ndarray,
-                   j: np.ndarray) -> np.ndarray:
-    """Per candidate, the modes within j est of the frequency of its ``mode`` (itself
-    included), at most :data:`_CLUSTER_MAX`: the s-values its combination indicator pairs
+def _cluster_sizes(w: np.ndarray, mode: np.ndarray, est: np.ndarray, j: np.ndarray,
+                   middle: np.ndarray | None = None, half: np.ndarray | None = None
+                   ) -> np.ndarray:
+    """Per candidate, its ``mode`` and the modes m whose s-value may lie nearest to its
+    prediction p = 2 cos(2 pi w / Omega): those within j est of its frequency and, given the
+    window middle +- half, those whose prediction equals its own at an Omega of the window
+    (w_m -+ w = n Omega, n >= 1: another combination resonance of the mode inside it); at
+    most :data:`_CLUSTER_MAX`: the s-values its combination indicator pairs
     (:func:`_indicator`); est near the largest float: every mode, capped."""
-    ws = np.sort(w)
-    with np.errstate(invalid="ignore", over="ignore"):
-        tol = est * j
-        n = (np.searchsorted(ws, w[mode] + tol, side="right")
-             - np.searchsorted(ws, w[mode] - tol, side="left"))
-    return np.minimum(n, _CLUSTER_MAX)
+    out = np.empty(mode.size, dtype=np.int64)
+    step = max(1, _ENUMERATION_BATCH // max(w.size, 1))
+    for s in range(0, mode.size, step):  # batches of bounded memory
+        c = slice(s, s + step)
+        wi = w[mode[c]][:, None]
+        if half is not None:
+            a = np.maximum(middle[c] - half[c], 1e-300)[:, None]
+            b = (middle[c] + half[c])[:, None]
+        with np.errstate(invalid="ignore", over="ignore"):
+            near = np.abs(w[None, :] - wi) <= (est[c] * j[c])[:, None]
+            for x in (np.abs(w[None, :] - wi), w[None, :] + wi) if half is not None else ():
+                near |= np.floor(x / a) >= np.maximum(np.ceil(x / b), 1.0)
+        near[np.arange(near.shape[0]), mode[c]] = True
+        out[c] = near.sum(axis=1)
+    return np.minimum(out, _CLUSTER_MAX)
 
 
 def _shifted_frequencies(w: np.ndarray, Bt: np.ndarray, i: np.ndarray, Omega: np.ndarray,
@@ -765,14 +782,17 @@ def _undamped_search(system, w, cand, lo, hi, opt, narrow: bool = True,
         return []
     mono = cand["mono"]
     sub = {key: v[mono] for key, v in cand.items()}
-    regs, fmax = [], [np.zeros(0)]
-    step = max(1, _SEARCH_BATCH_BYTES // (256 * system.n ** 2))  # 4 complex 2n x 2n each
-    for s in range(0, sub["centre"].size, step):  # batches: each candidate on its own
-        r, f = _monodromy_search(system, w, {key: v[s:s + step] for key, v in sub.items()},
-                                 lo, hi, opt, seeds=seeds)
-        regs += r
-        fmax.append(f)
-    fmax = np.concatenate(fmax)
+    regs, fmax = _batched_search(system, w, sub, lo, hi, opt, seeds)
+    # the combination candidates that found nothing, again with every s-value that may lie
+    # nearest to their predictions paired (another resonance of a mode inside the window):
+    # the regions outside every one found
+    again = (fmax <= _F_FLOOR) & (sub["kind"] != 0) & (
+        (sub["e_i"] > sub["c_i"]) | (sub["e_k"] > sub["c_k"]))
+    if again.any():
+        retry = {key: v[again] for key, v in sub.items()}
+        retry["c_i"], retry["c_k"] = retry["e_i"], retry["e_k"]
+        regs += [r for r in _batched_search(system, w, retry, lo, hi, opt, seeds)[0]
+                 if not any(r["lo"] <= q["hi"] and q["lo"] <= r["hi"] for q in regs)]
     if not narrow or seeds:
         return regs
     # the candidates below the monodromy floor, and those whose indicator maximum stayed
@@ -780,6 +800,18 @@ def _undamped_search(system, w, cand, lo, hi, opt, narrow: bool = True,
     extra = (fmax <= _F_FLOOR) & (fmax > -_F_SCREEN) & ~sub["shifted"]
     missed = {key: np.concatenate([v[~mono], v[mono][extra]]) for key, v in cand.items()}
     return regs + _narrow_pass(system, missed, regs, lo, hi)
+
+
+def _batched_search(system, w, cand, lo, hi, opt, seeds: bool) -> tuple[list[dict], np.ndarray]:
+    """:func:`_monodromy_search` of the candidate table in batches of bounded memory."""
+    regs, fmax = [], [np.zeros(0)]
+    step = max(1, _SEARCH_BATCH_BYTES // (256 * system.n ** 2))  # 4 complex 2n x 2n each
+    for s in range(0, cand["centre"].size, step):  # batches: each candidate on its own
+        r, f = _monodromy_search(system, w, {key: v[s:s + step] for key, v in cand.items()},
+                                 lo, hi, opt, seeds=seeds)
+        regs += r
+        fmax.append(f)
+    return regs, np.concatenate(fmax)
 
 
 def _narrow_pass(system, cand, regs, lo, hi) -> list[dict]:
