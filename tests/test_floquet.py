@@ -686,13 +686,15 @@ COINCIDENT_4 = (np.array([1.73708892, 2.21567212, 2.7900629, 4.71198631]),
                          ids=["5-modes", "degenerate-4", "4-modes"])
 def test_combination_region_where_another_mode_shares_a_prediction(system, omega):
     # gamma = 0.3. Each system is unstable at omega (growth >= 1.9e-4 1/s by solve_ivp), in a
-    # region inside the window of a combination candidate (i, k) whose pair indicator, taking
-    # the s nearest to p_i and to p_k, follows another mode m there: p_m = p_i where
-    # w_m -+ w_i = n Omega (COINCIDENT_4: w_3 - w_1 = 2.4963, inside the window of the sum
-    # (1, 2) j = 2 at 2.5029, three predictions within 0.04), or modes 2 and 3 within 0.05 %
-    # (the other two). The search missed all three (no region within 5e-3 of omega); a
-    # candidate that finds nothing is searched again with those s-values paired as well. A
-    # 2,001-point scan of omega +- 5e-3 finds no unstable point outside the regions.
+    # region of a combination candidate (i, k) whose pair indicator, taking the s nearest to
+    # p_i and to p_k, pairs a wrong s there: COINCIDENT_4, another mode's prediction meets
+    # p_1 (w_3 - w_1 = 2.4963, 0.8 estimated widths below the sum (1, 2) j = 2 at 2.5029);
+    # the other two, j = 3 regions moved 5 and 14 estimated widths off their centres, whose
+    # complex pair (s, conj s) sits at one prediction while the real s nearest the other
+    # prediction is another mode's. The search missed all three (no region within 5e-3 of
+    # omega); a candidate that finds nothing is searched again with those s-values paired as
+    # well (floquet.regions._retry_sizes). A 2,001-point scan of omega +- 5e-3 finds no
+    # unstable point outside the regions.
     M, A, B = _shifted_system(system, 0.3)
     assert ivp_growth_rate(M, 0 * M, A, B, omega) > 1.5e-4
     regions = instability_regions(M, None, A, B, 0.5, 2.2 * system[0][-1])
@@ -702,21 +704,25 @@ def test_combination_region_where_another_mode_shares_a_prediction(system, omega
 
 
 def test_search_work_counts_the_second_windows(monkeypatch):
-    # the estimate's candidates and step counts are those the search integrates, second
-    # windows included, and every second window lies inside the searched range (SHIFTED_4,
-    # gamma = 0.1, on 2.285..3.0: the second window of the simple j = 3 region of mode 3 is
-    # clipped at 2.285, above the moved centre 2.280)
+    # the estimate's candidates and step counts are those the search integrates in its first
+    # pass, second windows included, and every second window lies inside the searched range
+    # (SHIFTED_4, gamma = 0.1, on 2.285..3.0: the second window of the simple j = 3 region of
+    # mode 3 is clipped at 2.285, above the moved centre 2.280). The second pass (combination
+    # candidates that found nothing, searched again with more s-values paired) is not counted
+    # up front: here one candidate of 9
     M, A, B = _shifted_system(SHIFTED_4, 0.1)
     seen = []
-    original = regions_module._monodromy_search
+    original = regions_module._batched_search
 
-    def counting(system, w, cand, lo, hi, opt, seeds=False):
-        seen.append((cand["middle"], cand["half"], cand["shifted"]))
-        return original(system, w, cand, lo, hi, opt, seeds=seeds)
+    def counting(system, w, cand, lo, hi, opt, seeds):
+        seen.append(cand)
+        return original(system, w, cand, lo, hi, opt, seeds)
 
-    monkeypatch.setattr(regions_module, "_monodromy_search", counting)
+    monkeypatch.setattr(regions_module, "_batched_search", counting)
     found = instability_regions(M, None, A, B, 2.285, 3.0)
-    middle, half, shifted = (np.concatenate(v) for v in zip(*seen, strict=True))
+    first, *again = seen
+    assert len(again) == 1 and again[0]["centre"].size == 1 and again[0]["kind"][0] != 0
+    middle, half, shifted = first["middle"], first["half"], first["shifted"]
     work = search_work(M, None, A, B, 2.285, 3.0)
     assert work.n_candidates == middle.size and np.count_nonzero(shifted) >= 1
     assert work.undamped_steps == int(np.sum(step_counts(periodic_system(M, None, A, B), middle,

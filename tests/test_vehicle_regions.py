@@ -50,6 +50,7 @@ from flexbooster.shell_of_revolution import (
     buckling_load,
     vehicle_modes,
 )
+from harness import ivp_growth_rate
 
 STEEL = {"E": 210e9, "nu": 0.3, "rho": 7850.0}
 # memo_case.toml: E = 10.5e6 psi, rho = 2.59e-4 lbf s^2/in^4
@@ -650,10 +651,14 @@ def test_k1_in_the_map_against_the_full_bending_monodromy():
     modes, Omega / omega_1 in 0.25..2, first order.  Independent path: the monodromy
     (floquet.growth_rate, step phase 0.06) of the *full* bending_system, the rigid translation
     kept (the map drops it: a zero column, multiplier 1), at each region's reported maximum:
-    growth rates agree to 1e-6 relative (measured 2e-8); the map's system is stable (< 1e-6
-    of the growth) halfway to the next region.  The regions include the rigid pitch's own
-    (2 omega_psi, the memo's pitch tongue) and its sum with the first bending mode; the map
-    stores gimbal_gain."""
+    growth rates agree to 1e-6 relative (measured 2e-8) plus 1e-5 1/s (the translation's
+    double multiplier 1, split by round-off, adds 4.5e-6 at 112 rad/s); the map's system is
+    stable (< 1e-6 of the growth) halfway to the next region.  The regions include the rigid
+    pitch's own (2 omega_psi, the memo's pitch tongue), its sum with the first bending mode
+    and their difference, 1.45e-5 rad/s wide at 111.83 rad/s (growth 1.478e-5 1/s: solve_ivp
+    of the map's system at its maximum, to 1e-4; stable 1e-5 rad/s beyond either edge; found
+    since a combination candidate that finds nothing is searched again with more s-values
+    paired); the map stores gimbal_gain."""
     R, L, h = 0.05, 5.0, 0.002
     veh = Vehicle([Cylinder(R, L, h, **STEEL)])
     F0 = 20.0 * STEEL["E"] * np.pi * R**3 * h / L**2
@@ -670,12 +675,20 @@ def test_k1_in_the_map_against_the_full_bending_monodromy():
     M, _, A, B = full.matrices(0.1)
     at = np.array([r.Omega_at_max for r in res.regions])
     g = floquet.growth_rate(M, None, A, B, at)
-    np.testing.assert_allclose(g, [r.growth_rate_max for r in res.regions], rtol=1e-6)
-    edges = [(r.Omega_lo, r.Omega_hi) for r in res.regions]
-    gaps = np.array([0.5 * (a[1] + b[0]) for a, b in zip(edges, edges[1:], strict=False)])
+    np.testing.assert_allclose(g, [r.growth_rate_max for r in res.regions], rtol=1e-6,
+                               atol=1e-5)
     # outside: the map's own (reduced) system; the full one has the translation's double
     # multiplier 1 (a Jordan block, free drift), which round-off splits by ~1e-4
     Mr, _, Ar, Br = res.harmonic(1).matrices(0.1)
+    (narrow,) = [r for r in res.regions if r.kind == "difference"
+                 and tuple(m.type for m in r.modes) == ("rigid-pitch", "bending")]
+    assert narrow.Omega_hi - narrow.Omega_lo < 1e-6 * narrow.Omega_lo
+    assert ivp_growth_rate(Mr, 0 * Mr, Ar, Br, narrow.Omega_at_max) == pytest.approx(
+        narrow.growth_rate_max, rel=1e-4)
+    for x in (narrow.Omega_lo - 1e-5, narrow.Omega_hi + 1e-5):
+        assert ivp_growth_rate(Mr, 0 * Mr, Ar, Br, x) < 1e-10
+    edges = [(r.Omega_lo, r.Omega_hi) for r in res.regions]
+    gaps = np.array([0.5 * (a[1] + b[0]) for a, b in zip(edges, edges[1:], strict=False)])
     out = floquet.growth_rate(Mr, None, Ar, Br, gaps)
     assert np.all(out < 1e-6 * np.array([r.growth_rate_max for r in res.regions[:-1]]))
     json.dumps(res.to_dict())

@@ -191,7 +191,8 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
 
     Arrays kind (0 simple, 1 sum, 2 difference), i, k, j, centre, est, gap (distance to the
     nearest other centre of any order in [lo / 2, 2 hi]), mono, c_i and c_k (the s-values
-    a combination indicator pairs, :func:`_cluster_sizes`), and the window searched by
+    a combination indicator pairs, :func:`_cluster_sizes`), e_i and e_k (those of its second
+    search when the first found nothing, :func:`_retry_sizes`), and the window searched by
     the monodromy, middle +- half; the rows ``shifted`` are further windows of candidates
     moved by the second-order frequency shifts or split by a near resonance
     (:func:`_shifted_copies`). Orders suppressed
@@ -246,36 +247,54 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
                                  np.minimum(2.0 * out["est"], 0.2 * Oc / out["j"]))
     out["shifted"] = np.zeros(Oc.size, bool)
     out = _shifted_copies(out, w, Bt, lo, hi, opt)
-    for m in "ik":
+    for m, other in (("i", "k"), ("k", "i")):
         out["c_" + m] = _cluster_sizes(w, out[m], out["est"], out["j"])
-        out["e_" + m] = _cluster_sizes(w, out[m], out["est"], out["j"], out["middle"],
-                                       out["half"])
+        out["e_" + m] = _retry_sizes(w, out[m], out[other], out, n)
     return out
 
 
-def _cluster_sizes(w: np.ndarray, mode: np.ndarray, est: np.ndarray, j: np.ndarray,
-                   middle: np.ndarray | None = None, half: np.ndarray | None = None
-                   ) -> np.ndarray:
-    """Per candidate, its ``mode`` and the modes m whose s-value may lie nearest to its
-    prediction p = 2 cos(2 pi w / Omega): those within j est of its frequency and, given the
-    window middle +- half, those whose prediction equals its own at an Omega of the window
-    (w_m -+ w = n Omega, n >= 1: another combination resonance of the mode inside it); at
-    most :data:`_CLUSTER_MAX`: the s-values its combination indicator pairs
+def _cluster_sizes(w: np.ndarray, mode: np.ndarray, est: np.ndarray,
+                   j: np.ndarray) -> np.ndarray:
+    """Per candidate, the modes within j est of the frequency of its ``mode`` (itself
+    included), at most :data:`_CLUSTER_MAX`: the s-values its combination indicator pairs
     (:func:`_indicator`); est near the largest float: every mode, capped."""
+    ws = np.sort(w)
+    with np.errstate(invalid="ignore", over="ignore"):
+        tol = est * j
+        n = (np.searchsorted(ws, w[mode] + tol, side="right")
+             - np.searchsorted(ws, w[mode] - tol, side="left"))
+    return np.minimum(n, _CLUSTER_MAX)
+
+
+def _retry_sizes(w: np.ndarray, mode: np.ndarray, partner: np.ndarray, cand: dict,
+                 n: int) -> np.ndarray:
+    """Per candidate, the s-values nearest to the prediction p = 2 cos(2 pi w / Omega) of its
+    ``mode`` that the search of a candidate that found nothing pairs (:func:`_undamped_search`;
+    at most :data:`_CLUSTER_MAX`): its cluster (:func:`_cluster_sizes`) and every mode m other
+    than its ``partner`` whose prediction equals its own where a region of the candidate can
+    lie (w_m -+ w = q Omega, q >= 1, within twice the estimated width of the centre, or in a
+    second window), and in a second window (the s-values moved far from their predictions)
+    at least the two nearest: a complex s and its conjugate are equally near a real
+    prediction."""
     out = np.empty(mode.size, dtype=np.int64)
-    step = max(1, _ENUMERATION_BATCH // max(w.size, 1))
+    est, j, middle, shifted = cand["est"], cand["j"], cand["middle"], cand["shifted"]
+    with np.errstate(over="ignore"):
+        reach = np.where(shifted, cand["half"], np.minimum(cand["half"], 2.0 * est))
+    step = max(1, _ENUMERATION_BATCH // max(n, 1))
     for s in range(0, mode.size, step):  # batches of bounded memory
         c = slice(s, s + step)
+        rows = np.arange(mode[c].size)
         wi = w[mode[c]][:, None]
-        if half is not None:
-            a = np.maximum(middle[c] - half[c], 1e-300)[:, None]
-            b = (middle[c] + half[c])[:, None]
+        a = np.maximum(middle[c] - reach[c], 1e-300)[:, None]
+        b = (middle[c] + reach[c])[:, None]
         with np.errstate(invalid="ignore", over="ignore"):
             near = np.abs(w[None, :] - wi) <= (est[c] * j[c])[:, None]
-            for x in (np.abs(w[None, :] - wi), w[None, :] + wi) if half is not None else ():
-                near |= np.floor(x / a) >= np.maximum(np.ceil(x / b), 1.0)
-        near[np.arange(near.shape[0]), mode[c]] = True
-        out[c] = near.sum(axis=1)
+            for x in (np.abs(w[None, :] - wi), w[None, :] + wi):
+                meet = np.floor(x / a) >= np.maximum(np.ceil(x / b), 1.0)
+                meet[rows, partner[c]] = False
+                near |= meet
+        near[rows, mode[c]] = True
+        out[c] = np.maximum(near.sum(axis=1), np.where(shifted[c], min(2, n), 1))
     return np.minimum(out, _CLUSTER_MAX)
 
 
@@ -783,9 +802,8 @@ def _undamped_search(system, w, cand, lo, hi, opt, narrow: bool = True,
     mono = cand["mono"]
     sub = {key: v[mono] for key, v in cand.items()}
     regs, fmax = _batched_search(system, w, sub, lo, hi, opt, seeds)
-    # the combination candidates that found nothing, again with every s-value that may lie
-    # nearest to their predictions paired (another resonance of a mode inside the window):
-    # the regions outside every one found
+    # the combination candidates that found nothing, again with more s-values paired
+    # (:func:`_retry_sizes`): the regions outside every one found
     again = (fmax <= _F_FLOOR) & (sub["kind"] != 0) & (
         (sub["e_i"] > sub["c_i"]) | (sub["e_k"] > sub["c_k"]))
     if again.any():
