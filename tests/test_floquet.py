@@ -708,8 +708,8 @@ def test_search_work_counts_the_second_windows(monkeypatch):
     # pass, second windows included, and every second window lies inside the searched range
     # (SHIFTED_4, gamma = 0.1, on 2.285..3.0: the second window of the simple j = 3 region of
     # mode 3 is clipped at 2.285, above the moved centre 2.280). The second pass (combination
-    # candidates that found nothing, searched again with more s-values paired) is not counted
-    # up front: here one candidate of 9
+    # candidates that found nothing, searched again with more s-values paired; here one of 9)
+    # is counted apart, for every candidate it may search
     M, A, B = _shifted_system(SHIFTED_4, 0.1)
     seen = []
     original = regions_module._batched_search
@@ -725,6 +725,10 @@ def test_search_work_counts_the_second_windows(monkeypatch):
     middle, half, shifted = first["middle"], first["half"], first["shifted"]
     work = search_work(M, None, A, B, 2.285, 3.0)
     assert work.n_candidates == middle.size and np.count_nonzero(shifted) >= 1
+    # the second pass searches only candidates counted as its own (an upper bound)
+    assert again[0]["centre"].size <= work.n_retry
+    assert int(np.sum(step_counts(periodic_system(M, None, A, B), again[0]["middle"],
+                                  step_phase=0.12))) <= work.retry_steps
     assert work.undamped_steps == int(np.sum(step_counts(periodic_system(M, None, A, B), middle,
                                                          step_phase=0.12)))
     assert np.all(middle[shifted] - half[shifted] >= 2.285 * (1 - 1e-12))

@@ -657,7 +657,8 @@ def damped_search_cost(work: Any, *, damping_ratio: float) -> tuple[float, float
     up front: E_u x the undamped + E_d x the damped steps at the candidate centres, E_u = 10,
     E_d = 40 at zeta <= 0.01 to 30 and 500 at zeta >= 0.3 (log-log between), and 70 evaluated
     points per candidate; a candidate between undamped modes (a region at any damping) at
-    least 350 evaluations at its damped steps (max(E_d, 350)); 4e-4 s per point and
+    least 350 evaluations at its damped steps (max(E_d, 350)); the candidates of the seeds'
+    second pass (``work.n_retry``) as many more, at E_u; 4e-4 s per point and
     :func:`search_step_seconds` per step (measured).
 
     Parameters
@@ -678,9 +679,10 @@ def damped_search_cost(work: Any, *, damping_ratio: float) -> tuple[float, float
     x = min(max(math.log(zeta / z0) / math.log(z1 / z0), 0.0), 1.0)  # log-log interpolation
     e_u, e_d = (a * (b / a) ** x for a, b in (_EVALS_UNDAMPED, _EVALS_DAMPED))
     e_o = max(e_d, _EVALS_OPEN)
-    steps = (e_u * work.undamped_steps + e_d * (work.damped_steps - work.open_steps)
-             + e_o * work.open_steps)
-    seconds = (_C_SEARCH_POINT * (_EVALS_POINTS * work.n_candidates + _EVALS_OPEN * work.n_open)
+    steps = (e_u * (work.undamped_steps + work.retry_steps)
+             + e_d * (work.damped_steps - work.open_steps) + e_o * work.open_steps)
+    seconds = (_C_SEARCH_POINT * (_EVALS_POINTS * (work.n_candidates + work.n_retry)
+                                  + _EVALS_OPEN * work.n_open)
                + steps * search_step_seconds(work.n))
     return float(steps), float(seconds)
 
@@ -827,7 +829,8 @@ def shell_search_seconds(work: Any) -> float:
     counted up front: the undamped seed search, E_u = 10 evaluations of the steps at the
     candidate centres or, where longer, the batch's rounds (60 evaluations of the longest
     candidate, see above), and 70 evaluated points per candidate
-    (:func:`damped_search_cost`'s constants); the damped search runs only from the seeds it
+    (:func:`damped_search_cost`'s constants), the candidates of the second pass
+    (``work.n_retry``) counted as many more; the damped search runs only from the seeds it
     finds, unknown up front, and is not priced (measured on three vehicles' harmonics k =
     3..20, seeds or none, the search took 0.3-1.0 times this). 0 when steady or certified
     stable.
@@ -843,8 +846,9 @@ def shell_search_seconds(work: Any) -> float:
     step = search_step_seconds(work.n)
     # the seeds' indicators in one batch, as long as its longest candidate (see above)
     rounds = _BATCH_ROUNDS * work.undamped_max_steps * (_C_BATCH_STEP + step)
-    return float(_C_SEARCH_POINT * _EVALS_POINTS * work.n_candidates
-                 + max(_EVALS_UNDAMPED[0] * work.undamped_steps * step, rounds))
+    return float(_C_SEARCH_POINT * _EVALS_POINTS * (work.n_candidates + work.n_retry)
+                 + max(_EVALS_UNDAMPED[0] * (work.undamped_steps + work.retry_steps) * step,
+                       rounds))
 
 
 #: Name of the part of :func:`estimate_vehicle_cost` for the searches of an undamped vehicle's
@@ -879,7 +883,8 @@ def undamped_search_seconds(work: Any) -> float:
     """CPU time (s, one core) of the region search of an undamped harmonic from its work
     counted up front: 3e-3 s per candidate examined by the monodromy and E_u = 10 evaluations
     (18 for a canonical harmonic) of the steps at its centre (:func:`search_step_seconds`),
-    each with the batch's overhead for its longest candidate (15e-6 s per step of
+    the candidates of the second pass (``work.n_retry``) counted as many more, each with the
+    batch's overhead for its longest candidate (15e-6 s per step of
     ``work.undamped_max_steps``); 0 when steady (no search).
 
     Parameters
@@ -891,8 +896,8 @@ def undamped_search_seconds(work: Any) -> float:
     if work.steady:
         return 0.0
     evals = _EVALS_UNDAMPED_CANONICAL if work.canonical else _EVALS_UNDAMPED[0]
-    return float(_C_UNDAMPED_CANDIDATE * work.n_candidates + evals * (
-        work.undamped_steps * search_step_seconds(work.n)
+    return float(_C_UNDAMPED_CANDIDATE * (work.n_candidates + work.n_retry) + evals * (
+        (work.undamped_steps + work.retry_steps) * search_step_seconds(work.n)
         + work.undamped_max_steps * _C_BATCH_STEP))
 
 

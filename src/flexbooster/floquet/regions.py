@@ -1149,6 +1149,10 @@ class SearchWork:
     undamped_max_steps : int
         The largest of the undamped step counts at the candidate centres: the candidates'
         indicators are integrated in one batch, which runs as long as its longest member.
+    n_retry, retry_steps : int
+        The combination candidates that a second pass searches again, with more s-values
+        paired, if the first finds nothing (all of them counted: an upper bound), and the
+        sum of the undamped step counts at their centres.
     canonical : bool
         The system is canonical (:class:`.multipliers.LinearPeriodicSystem`): its candidates
         are simple and sum ones only.
@@ -1167,6 +1171,8 @@ class SearchWork:
     n_open: int = 0
     open_steps: int = 0
     undamped_max_steps: int = 0
+    n_retry: int = 0
+    retry_steps: int = 0
     canonical: bool = False
     pairs: tuple = field(default=(), repr=False)
 
@@ -1178,6 +1184,7 @@ class SearchWork:
                 "damped_steps": int(self.damped_steps), "n_open": int(self.n_open),
                 "open_steps": int(self.open_steps),
                 "undamped_max_steps": int(self.undamped_max_steps),
+                "n_retry": int(self.n_retry), "retry_steps": int(self.retry_steps),
                 "canonical": bool(self.canonical),
                 "pairs": [[int(i), int(k)] for i, k in self.pairs]}
 
@@ -1221,6 +1228,10 @@ def search_work(M, C, A, B, omega_min: float, omega_max: float, **options) -> Se
     mono = cand["mono"]
     centres = cand["middle"][mono]
     steps_u = steps_d = steps_o = longest = 0
+    # the candidates of the second pass (:func:`_undamped_search`), if the first finds nothing
+    retry = (cand["kind"][mono] != 0) & ((cand["e_i"][mono] > cand["c_i"][mono])
+                                         | (cand["e_k"][mono] > cand["c_k"][mono]))
+    steps_r = 0
     # candidates between modes without damping of their own: damping ratio delta_a / w_a
     # below OPEN_DAMPING_FRACTION of the largest
     free = None
@@ -1234,6 +1245,7 @@ def search_work(M, C, A, B, omega_min: float, omega_max: float, **options) -> Se
         counts_u = step_counts(undamped, centres, step_phase=opt.step_phase,
                                max_steps=opt.max_steps)
         steps_u, longest = int(np.sum(counts_u)), int(np.max(counts_u))
+        steps_r = int(np.sum(counts_u[retry]))
         if system.damped:
             counts = step_counts(system, centres, step_phase=opt.step_phase,
                                  max_steps=opt.max_steps)
@@ -1243,6 +1255,7 @@ def search_work(M, C, A, B, omega_min: float, omega_max: float, **options) -> Se
                          "undamped_steps": steps_u, "damped_steps": steps_d,
                          "n_open": int(np.count_nonzero(is_open)), "open_steps": steps_o,
                          "undamped_max_steps": longest,
+                         "n_retry": int(np.count_nonzero(retry)), "retry_steps": steps_r,
                          "pairs": tuple(zip(cand["i"][mono].tolist(), cand["k"][mono].tolist(),
                                             strict=True))})
 
