@@ -282,7 +282,7 @@ def test_k1_search_with_a_pitch_damped_only_by_coupling_within_1_5x_of_the_count
     """A vehicle whose k = 1 gimbaled rigid pitch gets damping only through the coupling of the
     modal frame (tests/data/gimbal_pitch_coupled_damping_case.toml: ratio 1.4e-6 against the
     elastic modes' 0.01; its principal region opens at gamma and its critical amplitude is
-    searched): the pitch candidate counts as open (floquet.OPEN_DAMPING_FRACTION), and the
+    searched): the pitch candidate counts as open (floquet.regions.OPEN_DAMPING_FRACTION), and the
     steps of the k = 1 search, counted while it runs, are within 1.5x of
     cost.bending_search_steps (measured 514,000 estimated, 584,000 counted; 65,000 estimated,
     9x under, while only a ratio below 1e-6 counted as open)."""

@@ -693,7 +693,7 @@ def test_combination_region_where_another_mode_shares_a_prediction(system, omega
     # complex pair (s, conj s) sits at one prediction while the real s nearest the other
     # prediction is another mode's. The search missed all three (no region within 5e-3 of
     # omega); a candidate that finds nothing is searched again with those s-values paired as
-    # well (floquet.regions._retry_sizes). A 2,001-point scan of omega +- 5e-3 finds no
+    # well (the second pass of the search). A 2,001-point scan of omega +- 5e-3 finds no
     # unstable point outside the regions.
     M, A, B = _shifted_system(system, 0.3)
     assert ivp_growth_rate(M, 0 * M, A, B, omega) > 1.5e-4
@@ -701,6 +701,44 @@ def test_combination_region_where_another_mode_shares_a_prediction(system, omega
     assert any(q.omega_lo < omega < q.omega_hi for q in regions)
     assert _unstable_outside(M, None, A, B, regions, omega - 5e-3, omega + 5e-3,
                              2001).size == 0
+
+
+#: Random symmetric systems with modal damping (w, r as DEGENERATE_4; numpy default_rng(8)
+#: and (9), the 15th and 12th systems drawn as scripts/region_search_survey.py draws them,
+#: rounded), each with two pairs of close modes.
+DAMPED_4 = (np.array([2.74640804, 2.75900998, 3.92802488, 3.95733192]),
+            np.array([[0.129, -0.021, -0.031, 0.082], [-0.021, 0.121, 0.083, -0.128],
+                      [-0.031, 0.083, -0.118, 0.03], [0.082, -0.128, 0.03, 0.041]]))
+DAMPED_5 = (np.array([2.22720348, 2.74701391, 3.13206557, 3.15996801, 4.12509992]),
+            np.array([[0.248, 0.005, -0.013, -0.076, 0.118],
+                      [0.005, -0.208, -0.06, -0.085, -0.222],
+                      [-0.013, -0.06, -0.134, -0.053, 0.061],
+                      [-0.076, -0.085, -0.053, 0.002, 0.016],
+                      [0.118, -0.222, 0.061, 0.016, -0.083]]))
+
+
+@pytest.mark.parametrize("system,gamma,zeta,omega,span", [
+    (DAMPED_4, 0.1, 0.002, 6.6845, (6.66, 6.70)), (DAMPED_5, 0.3, 0.01, 6.265, (6.2, 6.33))],
+    ids=["two-damped-regions-in-one-seed", "damped-region-beside-its-seed"])
+def test_damped_region_inside_overlapping_undamped_regions(system, gamma, zeta, omega, span):
+    # C = 2 zeta diag(w). DAMPED_4: the undamped sum regions of (0, 2), (0, 3), (1, 2) and
+    # (1, 3) overlap in one, 6.663-6.741; with damping two regions remain, 6.6807-6.6886
+    # (growth 3.7e-4 1/s) and 6.6923-6.7372, both inside the seed of the sum (1, 2), whose
+    # nine samples are positive in both: the march from the largest found the second only.
+    # DAMPED_5: the undamped simple regions of the close modes 2 and 3 overlap in one,
+    # 6.197-6.399, but the seeds (each candidate's own pair, 6.298-6.327) do not reach the
+    # damped region 6.239-6.290 (growth 2.6e-3 1/s). Now every positive sample outside the
+    # regions found starts a march, and a seed spans the overlapping regions (the whole
+    # system's indicator beyond its own edges). Unstable by solve_ivp at omega; a 2,001-point
+    # scan of the span finds no unstable point outside the regions (both missed before: 396
+    # and 826 of the scan's unstable points outside).
+    w, r = system
+    M, A, B = _shifted_system(system, gamma)
+    C = np.diag(2.0 * zeta * w)
+    assert ivp_growth_rate(M, C, A, B, omega) > 3e-4
+    regions = instability_regions(M, C, A, B, 0.5, 2.2 * w[-1])
+    assert any(q.omega_lo < omega < q.omega_hi for q in regions)
+    assert _unstable_outside(M, C, A, B, regions, *span, 2001).size == 0
 
 
 def test_search_work_counts_the_second_windows(monkeypatch):

@@ -746,11 +746,20 @@ def _seed_edges(f, x0: np.ndarray, f0: np.ndarray, d0: np.ndarray, limit: np.nda
     P = x0.size
     direction = np.concatenate([-np.ones(P), np.ones(P)])
     X0, F0, D0 = (np.concatenate([v, v]) for v in (x0, f0, d0))
-    xi, fi, xo, fo, clip = expand_bracket(f, X0, F0, D0, direction, limit)
-    XT = np.concatenate([xtol, xtol])
-    for _ in range(40):  # each round cuts the brackets by 100 at least
+
+    def width(xi):
         w_in = np.abs(xi[P:] - xi[:P])
-        goal = np.maximum(XT, _SEED_WIDTH_FRACTION * np.concatenate([w_in, w_in]))
+        return np.concatenate([w_in, w_in])
+
+    return _coarse_edges(f, X0, F0, D0, direction, limit, np.concatenate([xtol, xtol]), width)
+
+
+def _coarse_edges(f, X0, F0, D0, direction, limit, XT, width) -> tuple[np.ndarray, np.ndarray]:
+    """The first sign change of f from X0 along ``direction`` (a march, then Illinois) to
+    _SEED_WIDTH_FRACTION of ``width(x_in)`` (or XT). Returns (edges, clipped)."""
+    xi, fi, xo, fo, clip = expand_bracket(f, X0, F0, D0, direction, limit)
+    for _ in range(40):  # each round cuts the brackets by 100 at least
+        goal = np.maximum(XT, _SEED_WIDTH_FRACTION * width(xi))
         act = np.nonzero(~clip & (np.abs(xo - xi) > goal))[0]
         if act.size == 0:
             break
@@ -758,8 +767,7 @@ def _seed_edges(f, x0: np.ndarray, f0: np.ndarray, d0: np.ndarray, limit: np.nda
         xi[act], fi[act], xo[act], fo[act] = illinois_root(
             lambda x, a, act=act: f(x, act[a]), xi[act], fi[act], xo[act], fo[act], tol,
             bracket=True)
-    edge = np.where(clip, limit, 0.5 * (xi + xo))
-    return edge, clip
+    return np.where(clip, limit, 0.5 * (xi + xo)), clip
 
 
 # --------------------------------------------------------------------------------------------
@@ -892,32 +900,30 @@ def _monodromy_search(system, w, cand, lo, hi, opt,
     out = []
     # both edges in one batch: entries 0..P-1 go down, P..2P-1 go up
     P = hit.size
-    if seeds:  # the damped search's seeds: each edge to a fraction of the width
-        edge, clip = _seed_edges(lambda x, idx: Fo(x, idx % P), x0, f0, d0,
-                                 np.concatenate([np.full(P, lo), np.full(P, hi)]), xtol[hit])
-        for m in range(P):
-            a, b = max(float(edge[m]), lo), min(float(edge[P + m]), hi)
-            if b - a <= xtol[hit][m]:
-                continue
-            out.append({"lo": a, "hi": b, "kind": int(sub["kind"][m]), "i": int(sub["i"][m]),
-                        "k": int(sub["k"][m]), "j": int(sub["j"][m]),
-                        "centre": float(sub["centre"][m]),
-                        "clipped": bool(clip[m] or clip[P + m])})
-        return out, fs
     direction = np.concatenate([-np.ones(P), np.ones(P)])
     limit = np.concatenate([np.full(P, lo), np.full(P, hi)])
     X0, F0, D0 = (np.concatenate([v, v]) for v in (x0, f0, d0))
     XT, SC = np.concatenate([xtol[hit], xtol[hit]]), np.concatenate([scale, scale])
-    # stage 1: where this candidate's pair returns to |rho| = 1
-    edge, clip = _edges(lambda x, idx: Fo(x, idx % P), X0, F0, D0, direction, limit, XT, SC)
+    if seeds:  # the damped search's seeds: each edge to a fraction of the width
+        edge, clip = _seed_edges(lambda x, idx: Fo(x, idx % P), x0, f0, d0, limit, xtol[hit])
+    else:  # stage 1: where this candidate's pair returns to |rho| = 1
+        edge, clip = _edges(lambda x, idx: Fo(x, idx % P), X0, F0, D0, direction, limit, XT,
+                            SC)
     # stage 2: if the system is still unstable just beyond (an overlapping region), go on to
-    # the first Omega where it is stable: the boundary is |rho|_max = 1
+    # the first Omega where it is stable: the boundary is |rho|_max = 1 (a seed then spans
+    # the overlapping regions, inside which a damped region may lie beside its own)
     beyond = edge + direction * 4.0 * XT
     go = np.nonzero(~clip & (direction * (limit - beyond) > 0.0))[0]
     if go.size:
         u = U(beyond[go], None)
         go, u = go[u > 0.0], u[u > 0.0]
-    if go.size:
+    if go.size and seeds:  # to a fraction of the seed's width, as its own edges
+        span = np.abs(edge[P:] - edge[:P])[go % P]
+        e2, c2 = _coarse_edges(lambda x, idx: U(x, None), beyond[go], u,
+                               np.maximum(D0[go], 4.0 * XT[go]), direction[go], limit[go],
+                               XT[go], lambda xi: np.abs(xi - beyond[go]) + span)
+        edge[go], clip[go] = e2, c2
+    elif go.size:
         e2, c2 = _edges(lambda x, idx: U(x, None), beyond[go], u,
                         np.maximum(D0[go], 4.0 * XT[go]), direction[go], limit[go], XT[go],
                         SC[go])
@@ -957,29 +963,44 @@ def _damped_search(system, undamped, opt, lo, hi) -> list[dict]:
 
     xs, gs = golden_section_max(G, a, b, xtol=np.maximum(10.0 * xtol, 1e-15 * hi_u),
                                 stop_above=0.0)
+
+    def march(hit, x0, g0) -> list[dict]:
+        # the marches go on to the ends of the (widened) range: a damped region may be much
+        # wider than its undamped seed (a combination region with a nearly undamped mode: the
+        # threshold detuning grows like sqrt(lambda^2 / (delta_i delta_k)), Hsu 1963), and an
+        # edge is either a point of log|rho|_max = 0 or an end of the range (clipped)
+        P = hit.size
+        d0 = np.maximum(width[hit] / 16.0, 4.0 * xtol[hit])
+        edge, clip = _edges(lambda x, idx: G(x), np.concatenate([x0, x0]),
+                            np.concatenate([g0, g0]), np.concatenate([d0, d0]),
+                            np.concatenate([-np.ones(P), np.ones(P)]),
+                            np.concatenate([np.full(P, lo), np.full(P, hi)]),
+                            np.concatenate([xtol[hit], xtol[hit]]),
+                            np.concatenate([0.5 * width[hit], 0.5 * width[hit]]))
+        found = []
+        for m_, m in enumerate(hit):
+            r = dict(undamped[m])
+            r["lo"], r["hi"] = float(edge[m_]), float(edge[P + m_])
+            r["clipped"] = bool(r["clipped"] or clip[m_] or clip[P + m_])
+            found.append(r)
+        return found
+
     hit = np.nonzero(gs > 0.0)[0]
-    out = []
-    if hit.size == 0:
-        return out
-    x0, g0 = xs[hit], gs[hit]
-    d0 = np.maximum(width[hit] / 16.0, 4.0 * xtol[hit])
-    P = hit.size
-    # the marches go on to the ends of the (widened) range: a damped region may be much wider
-    # than its undamped seed (a combination region with a nearly undamped mode: the threshold
-    # detuning grows like sqrt(lambda^2 / (delta_i delta_k)), Hsu 1963), and an edge is either
-    # a point of log|rho|_max = 0 or an end of the range (clipped)
-    edge, clip = _edges(lambda x, idx: G(x), np.concatenate([x0, x0]),
-                        np.concatenate([g0, g0]), np.concatenate([d0, d0]),
-                        np.concatenate([-np.ones(P), np.ones(P)]),
-                        np.concatenate([np.full(P, lo), np.full(P, hi)]),
-                        np.concatenate([xtol[hit], xtol[hit]]),
-                        np.concatenate([0.5 * width[hit], 0.5 * width[hit]]))
-    for m_, m in enumerate(hit):
-        r = dict(undamped[m])
-        r["lo"], r["hi"] = float(edge[m_]), float(edge[P + m_])
-        r["clipped"] = bool(r["clipped"] or clip[m_] or clip[P + m_])
-        out.append(r)
-    return out
+    out = march(hit, xs[hit], gs[hit]) if hit.size else []
+    # a seed's samples where the damped system is unstable outside every region found (the
+    # damped parts of overlapping undamped regions may separate: two damped regions in one
+    # seed): marched from the largest such sample of each seed, which the new region holds,
+    # until every unstable sample lies in a region
+    while True:
+        covered = np.zeros(grid.shape, dtype=bool)
+        for r in out:
+            covered |= (grid >= r["lo"]) & (grid <= r["hi"])
+        left = np.where((g > 0.0) & ~covered, g, -np.inf)
+        hit = np.nonzero(np.isfinite(left).any(axis=1))[0]
+        if hit.size == 0:
+            return out
+        pick = np.argmax(left[hit], axis=1)
+        out += march(hit, grid[hit, pick], g[hit, pick])
 
 
 def _finish(system, regions, lo, hi, opt, damped) -> tuple[InstabilityRegion, ...]:
