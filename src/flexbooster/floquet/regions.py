@@ -990,17 +990,18 @@ def _damped_search(system, undamped, opt, lo, hi) -> list[dict]:
     # a seed's samples where the damped system is unstable outside every region found (the
     # damped parts of overlapping undamped regions may separate: two damped regions in one
     # seed): marched from the largest such sample of each seed, which the new region holds,
-    # until every unstable sample lies in a region
-    while True:
+    # until every unstable sample lies in a region (at most nsamp rounds)
+    for _ in range(nsamp):
         covered = np.zeros(grid.shape, dtype=bool)
         for r in out:
             covered |= (grid >= r["lo"]) & (grid <= r["hi"])
         left = np.where((g > 0.0) & ~covered, g, -np.inf)
         hit = np.nonzero(np.isfinite(left).any(axis=1))[0]
         if hit.size == 0:
-            return out
+            break
         pick = np.argmax(left[hit], axis=1)
         out += march(hit, grid[hit, pick], g[hit, pick])
+    return out
 
 
 def _finish(system, regions, lo, hi, opt, damped) -> tuple[InstabilityRegion, ...]:
