@@ -192,7 +192,8 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
     Arrays kind (0 simple, 1 sum, 2 difference), i, k, j, centre, est, gap (distance to the
     nearest other centre of any order in [lo / 2, 2 hi]), mono, c_i and c_k (the s-values
     a combination indicator pairs, :func:`_cluster_sizes`), e_i and e_k (those of its second
-    search when the first found nothing, :func:`_retry_sizes`), and the window searched by
+    search when the first found nothing, :func:`_retry_sizes`), retry (a combination candidate
+    with more of them: searched again if the first pass finds nothing), and the window searched by
     the monodromy, middle +- half; the rows ``shifted`` are further windows of candidates
     moved by the second-order frequency shifts or split by a near resonance
     (:func:`_shifted_copies`). Orders suppressed
@@ -249,7 +250,9 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
     out = _shifted_copies(out, w, Bt, lo, hi, opt)
     for m, other in (("i", "k"), ("k", "i")):
         out["c_" + m] = _cluster_sizes(w, out[m], out["est"], out["j"])
-        out["e_" + m] = _retry_sizes(w, out[m], out[other], out, n)
+        out["e_" + m] = _retry_sizes(w, out[m], out[other], out)
+    # the combination candidates a second pass searches again if the first finds nothing
+    out["retry"] = (out["kind"] != 0) & ((out["e_i"] > out["c_i"]) | (out["e_k"] > out["c_k"]))
     return out
 
 
@@ -266,8 +269,8 @@ def _cluster_sizes(w: np.ndarray, mode: np.ndarray, est: np.ndarray,
     return np.minimum(n, _CLUSTER_MAX)
 
 
-def _retry_sizes(w: np.ndarray, mode: np.ndarray, partner: np.ndarray, cand: dict,
-                 n: int) -> np.ndarray:
+def _retry_sizes(w: np.ndarray, mode: np.ndarray, partner: np.ndarray,
+                 cand: dict) -> np.ndarray:
     """Per candidate, the s-values nearest to the prediction p = 2 cos(2 pi w / Omega) of its
     ``mode`` that the search of a candidate that found nothing pairs (:func:`_undamped_search`;
     at most :data:`_CLUSTER_MAX`): its cluster (:func:`_cluster_sizes`) and every mode m other
@@ -280,7 +283,7 @@ def _retry_sizes(w: np.ndarray, mode: np.ndarray, partner: np.ndarray, cand: dic
     est, j, middle, shifted = cand["est"], cand["j"], cand["middle"], cand["shifted"]
     with np.errstate(over="ignore"):
         reach = np.where(shifted, cand["half"], np.minimum(cand["half"], 2.0 * est))
-    step = max(1, _ENUMERATION_BATCH // max(n, 1))
+    step = max(1, _ENUMERATION_BATCH // max(w.size, 1))
     for s in range(0, mode.size, step):  # batches of bounded memory
         c = slice(s, s + step)
         rows = np.arange(mode[c].size)
@@ -294,7 +297,7 @@ def _retry_sizes(w: np.ndarray, mode: np.ndarray, partner: np.ndarray, cand: dic
                 meet[rows, partner[c]] = False
                 near |= meet
         near[rows, mode[c]] = True
-        out[c] = np.maximum(near.sum(axis=1), np.where(shifted[c], min(2, n), 1))
+        out[c] = np.maximum(near.sum(axis=1), np.where(shifted[c], min(2, w.size), 1))
     return np.minimum(out, _CLUSTER_MAX)
 
 
@@ -812,8 +815,7 @@ def _undamped_search(system, w, cand, lo, hi, opt, narrow: bool = True,
     regs, fmax = _batched_search(system, w, sub, lo, hi, opt, seeds)
     # the combination candidates that found nothing, again with more s-values paired
     # (:func:`_retry_sizes`): the regions outside every one found
-    again = (fmax <= _F_FLOOR) & (sub["kind"] != 0) & (
-        (sub["e_i"] > sub["c_i"]) | (sub["e_k"] > sub["c_k"]))
+    again = (fmax <= _F_FLOOR) & sub["retry"]
     if again.any():
         retry = {key: v[again] for key, v in sub.items()}
         retry["c_i"], retry["c_k"] = retry["e_i"], retry["e_k"]
@@ -1250,9 +1252,7 @@ def search_work(M, C, A, B, omega_min: float, omega_max: float, **options) -> Se
     mono = cand["mono"]
     centres = cand["middle"][mono]
     steps_u = steps_d = steps_o = longest = 0
-    # the candidates of the second pass (:func:`_undamped_search`), if the first finds nothing
-    retry = (cand["kind"][mono] != 0) & ((cand["e_i"][mono] > cand["c_i"][mono])
-                                         | (cand["e_k"][mono] > cand["c_k"][mono]))
+    retry = cand["retry"][mono]  # the candidates of the second pass (:func:`_candidates`)
     steps_r = 0
     # candidates between modes without damping of their own: damping ratio delta_a / w_a
     # below OPEN_DAMPING_FRACTION of the largest
