@@ -715,11 +715,17 @@ DAMPED_5 = (np.array([2.22720348, 2.74701391, 3.13206557, 3.15996801, 4.12509992
                       [-0.013, -0.06, -0.134, -0.053, 0.061],
                       [-0.076, -0.085, -0.053, 0.002, 0.016],
                       [0.118, -0.222, 0.061, 0.016, -0.083]]))
+# seed 7, system 3 of scripts/region_search_survey.py, w to 8 and r to 3 decimals
+DAMPED_INTERNAL = (np.array([1.52646326, 3.64885895, 4.38029728, 4.4963081]),
+                   np.array([[0.222, 0.024, 0.113, -0.111], [0.024, 0.214, 0.048, -0.145],
+                             [0.113, 0.048, 0.035, -0.146], [-0.111, -0.145, -0.146, 0.188]]))
 
 
 @pytest.mark.parametrize("system,gamma,zeta,omega,span", [
-    (DAMPED_4, 0.1, 0.002, 6.6845, (6.66, 6.70)), (DAMPED_5, 0.3, 0.01, 6.265, (6.2, 6.33))],
-    ids=["two-damped-regions-in-one-seed", "damped-region-beside-its-seed"])
+    (DAMPED_4, 0.1, 0.002, 6.6845, (6.66, 6.70)), (DAMPED_5, 0.3, 0.01, 6.265, (6.2, 6.33)),
+    (DAMPED_INTERNAL, 0.3, 0.002, 2.984, (2.95, 3.02))],
+    ids=["two-damped-regions-in-one-seed", "damped-region-beside-its-seed",
+         "order-3-through-an-internal-resonance"])
 def test_damped_region_inside_overlapping_undamped_regions(system, gamma, zeta, omega, span):
     # C = 2 zeta diag(w). DAMPED_4: the undamped sum regions of (0, 2), (0, 3), (1, 2) and
     # (1, 3) overlap in one, 6.663-6.741; with damping two regions remain, 6.6807-6.6886
@@ -732,6 +738,11 @@ def test_damped_region_inside_overlapping_undamped_regions(system, gamma, zeta, 
     # system's indicator beyond its own edges). Unstable by solve_ivp at omega; a 2,001-point
     # scan of the span finds no unstable point outside the regions (both missed before: 396
     # and 826 of the scan's unstable points outside).
+    # DAMPED_INTERNAL: the simple j = 3 region of mode 3 (centre 2 w_3 / 3 = 2.9975; damped
+    # 2.978-2.989, growth 3e-3 1/s) has an undamped growth of 9.7e-3 1/s, 30 times the damping
+    # filter's path estimate: its chain passes nu = w_3 - Omega = 1.499 beside w_0 = 1.526 (a
+    # small denominator, a_1 = a_2 = 28). Left out by the filter before the small-denominator
+    # factors (312 of the scan's unstable points outside).
     w, r = system
     M, A, B = _shifted_system(system, gamma)
     C = np.diag(2.0 * zeta * w)
@@ -1266,7 +1277,9 @@ def weakly_coupled(seed: int, gamma: float, zeta: float):
 def test_damping_filter_never_drops_a_region(seed, gamma):
     # invariant: the damping filter (default margin 4) against the unfiltered search
     # (damping_margin=None), Omega 0.8..9, orders 1-2, zeta = 0.01, on systems where it drops
-    # a third or more of the candidates (asserted) and regions survive the damping: the same
+    # a fifth or more of the candidates (asserted; 8 of 33 and 10 of 32, fewer than without
+    # the small-denominator factors: e.g. the sum (1, 2.9) j = 2 at 1.95 passes nu = 0.95 beside
+    # w = 1) and regions survive the damping: the same
     # regions (kind, modes, order), edges within 1e-8 relative (10 x rtol: the batches
     # refine differently)
     M, C, A, B = weakly_coupled(seed, gamma, 0.01)
@@ -1275,7 +1288,7 @@ def test_damping_filter_never_drops_a_region(seed, gamma):
     opt = _options(max_order=2)
     n_all = _candidates(w, system.Bt, 0.4, 18.0, opt)["j"].size
     n_kept = _candidates(w, system.Bt, 0.4, 18.0, opt, rate=_modal_decay_rates(system))["j"].size
-    assert n_kept <= 2 * n_all / 3
+    assert n_kept <= 4 * n_all / 5
     fast = instability_regions(M, C, A, B, 0.8, 9.0, max_order=2)
     full = instability_regions(M, C, A, B, 0.8, 9.0, max_order=2, damping_margin=None)
     assert full
