@@ -33,6 +33,7 @@ from flexbooster.danger import (
     danger_summary,
     event_status,
     flight_verdict,
+    g_text,
     hz_text,
     merge_responses,
 )
@@ -188,6 +189,16 @@ def test_hz_text_distinguishes_the_edges():
     assert hz_text(18.25, 18.31) == "18.25-18.31 Hz"
     lo, hi = hz_text(45.200132, 45.200214).removesuffix(" Hz").split("-")
     assert lo != hi and float(lo) == pytest.approx(45.200132, rel=1e-6)
+
+
+def test_g_text_keeps_three_significant_digits():
+    """An acceleration in g to 3 significant digits with its trailing zeros: a peak of 1.997 g
+    reads "2.00 g", never "2 g" (which an engineer takes for a rounded input)."""
+    assert g_text(1.9966831040214328) == "2.00 g"
+    assert g_text(50.0) == "50.0 g"
+    assert g_text(0.91774) == "0.918 g"
+    assert g_text(120.4) == "120 g"
+    assert g_text(3.2e-5) == "3.20e-05 g"
 
 
 def test_ranked_bands_carry_the_measures():
@@ -403,7 +414,7 @@ def test_a_bounded_response_never_worsens_the_verdict_and_is_named():
                        bands={"vehicle": [_band(20.0, 21.0, 1e-9, mechanism="vehicle")]},
                        responses=[small, big])
     assert s.verdict.overall == "STABLE"
-    assert s.verdict.reason.endswith("largest response 50 g at payload (10 m, k = 0), 12 Hz, "
+    assert s.verdict.reason.endswith("largest response 50.0 g at payload (10 m, k = 0), 12 Hz, "
                                       "axial force 3e+06 N at 40 m")
     assert s.responses == (big, small)
     assert [type(x).__name__ for x in s.ranking] == ["ResponsePeak", "ResponsePeak",

@@ -29,8 +29,9 @@ __all__ = ["RankedBand", "DangerSummary", "Verdict", "ResponsePeak", "FlightVerd
            "STEADY_CAUSE", "NEGLIGIBLE_GROWTH", "NEGLIGIBLE_AMPLIFICATION",
            "UNSTABLE_AMPLIFICATION", "UNSTABLE_E_FOLDING", "AMPLIFICATION_EXPONENT_MAX",
            "FIRST_SCREEN_WORDS", "MEASURES", "band_measures", "band_status", "danger_bands",
-           "danger_summary", "edges_text", "hz_text", "mechanism_verdicts", "overall_verdict",
-           "event_status", "flight_verdict", "axial_resonance_peaks", "merge_responses"]
+           "danger_summary", "edges_text", "g_text", "hz_text", "mechanism_verdicts",
+           "overall_verdict", "event_status", "flight_verdict", "axial_resonance_peaks",
+           "merge_responses"]
 
 _KIND_WORDS = {"simple": "simple", "sum": "sum combination",
                "difference": "difference combination"}
@@ -318,7 +319,7 @@ class ResponsePeak:
     @property
     def text(self) -> str:
         """ "3.99 g at aft edge (0 m, k = 0), 12.07 Hz, axial force 3.44e+06 N at 64.3 m"."""
-        out = (f"{self.acceleration_g:.3g} g at {self.station} ({self.station_m:.4g} m, "
+        out = (f"{g_text(self.acceleration_g)} at {self.station} ({self.station_m:.4g} m, "
                f"k = {self.k}), {self.hz:.4g} Hz")
         if self.load is not None:
             out += (f", {self.load_quantity} {self.load:.3g} {self.load_unit} at "
@@ -588,6 +589,18 @@ def edges_text(lo: float, hi: float) -> str:
     return f"{lo:.10g}"
 
 
+def g_text(value: float) -> str:
+    """An acceleration in g to 3 significant digits, trailing zeros kept: "2.00 g" for 1.997
+    (not "2 g"), "50.0 g", "0.918 g", "120 g".
+
+    Parameters
+    ----------
+    value : float
+        The acceleration (g, standard gravity 9.80665 m/s^2).
+    """
+    return f"{f'{value:#.3g}'.rstrip('.')} g"
+
+
 def hz_text(lo_hz: float, hi_hz: float) -> str:
     """Band edges in Hz to the digits that tell them apart: "18.25-18.31 Hz".
 
@@ -700,7 +713,7 @@ def _response_text(bands: Sequence[Band], lead: str) -> str:
     top = max(damped, key=lambda b: b.steady_acceleration)
     f = top.modes[0].omega / (2.0 * math.pi)
     return (f"{lead}{1e3 * top.steady_amplitude:.3g} mm "
-            f"({top.steady_acceleration / STANDARD_GRAVITY:.3g} g) at {f:.4g} Hz")
+            f"({g_text(top.steady_acceleration / STANDARD_GRAVITY)}) at {f:.4g} Hz")
 
 
 def _damping_text(modal_ratio: float, pitch_ratio: float) -> str:
@@ -778,7 +791,7 @@ def _event_words(e: FlightEvent) -> str:
     what = e.modes if e.k is None else f"k = {e.k} {e.modes}"
     when = f"t = {e.t_start_s:.4g}-{e.t_end_s:.4g} s"
     if e.peak_acceleration_g is not None:
-        return f"{e.peak_acceleration_g:.3g} g at {e.station}, {when}, {what}"
+        return f"{g_text(e.peak_acceleration_g)} at {e.station}, {when}, {what}"
     amp = f"x {e.amplification:.3g}" if math.isfinite(e.amplification) and \
         e.efolds <= AMPLIFICATION_EXPONENT_MAX else f"x e^{e.efolds:.3g}"
     return f"{what}, {when}, {amp} ({e.efolds:.3g} e-folds)"

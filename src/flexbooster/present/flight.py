@@ -7,7 +7,7 @@ from __future__ import annotations
 import html
 from pathlib import Path
 
-from ..danger import NEGLIGIBLE_AMPLIFICATION, NEGLIGIBLE_GROWTH
+from ..danger import NEGLIGIBLE_AMPLIFICATION, NEGLIGIBLE_GROWTH, g_text
 from ..flight_results import EVENT_COLUMNS, MODE_COLUMNS, FlightResults
 from .io import write_csv_atomic
 
@@ -36,7 +36,7 @@ def event_text(e) -> str:
         The event.
     """
     k = "" if e.k is None else f" k = {e.k}"
-    what = (f"peak {e.peak_acceleration_g:.3g} g at {e.station}"
+    what = (f"peak {g_text(e.peak_acceleration_g)} at {e.station}"
             if e.peak_acceleration_g is not None
             else f"max growth {e.max_growth_1_s:.3g} 1/s, {e.efolds:.3g} e-folds "
                  f"(amplification {e.amplification:.4g})")

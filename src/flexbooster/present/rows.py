@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 
-from ..danger import FIRST_SCREEN_WORDS, ResponsePeak, edges_text
+from ..danger import FIRST_SCREEN_WORDS, ResponsePeak, edges_text, g_text
 from ..dynamics import STANDARD_GRAVITY
 from ..results import Results
 
@@ -408,7 +408,7 @@ def danger_rows(results: Results, limit: int = FIRST_SCREEN_BANDS,
             load = "" if b.load is None else (f", {b.load_quantity} {b.load:.3g} {b.load_unit}"
                                                f" at {b.load_station_m:.4g} m")
             end = "; at the end of the Omega range: larger beyond it" * b.at_range_end
-            out.append((str(n + 1), f"{b.Omega:.6g}", f"{b.hz:.6g}", f"{b.acceleration_g:.3g} g",
+            out.append((str(n + 1), f"{b.Omega:.6g}", f"{b.hz:.6g}", g_text(b.acceleration_g),
                         "yes" if b.in_operating_range else "no",
                         f"{b.station} ({b.station_m:.4g} m), k = {b.k}",
                         f"{b.source} of the vehicle{load}{also}{end}"))
@@ -417,7 +417,7 @@ def danger_rows(results: Results, limit: int = FIRST_SCREEN_BANDS,
         if b.growth_rate is not None:
             level = f"{b.growth_rate:.3g}"
         elif b.band.steady_acceleration is not None:  # damped: the steady response, in g
-            level = f"{b.band.steady_acceleration / STANDARD_GRAVITY:.3g} g"
+            level = g_text(b.band.steady_acceleration / STANDARD_GRAVITY)
         elif b.severity is not None:
             level = f"sev. {b.severity:.3g}"
         else:
@@ -459,8 +459,9 @@ def band_measure_rows(results: Results, limit: int = 50) -> list[tuple[str, ...]
     for n, rb in enumerate(results.danger.bands[:limit]):
         b = rb.band
         region = b.mechanism != "resonance"
-        steady = "-" if b.steady_amplitude is None else \
-            f"{1e3 * b.steady_amplitude:.3g} mm ({b.steady_acceleration / STANDARD_GRAVITY:.3g} g)"
+        steady = "-" if b.steady_amplitude is None else (
+            f"{1e3 * b.steady_amplitude:.3g} mm "
+            f"({g_text(b.steady_acceleration / STANDARD_GRAVITY)})")
         out.append((str(n + 1), range_text(*rb.hz), b.mechanism.replace("_", " "),
                     _g(b.growth_rate_max) if region else "-",
                     _g(b.e_folding_s) if region else "-", _g(b.amplification),
