@@ -199,9 +199,10 @@ def _internal_resonance(w, base, kind, i0, k0, zeta, floor, lam2, cap) -> np.nda
     The order-j term of a resonance couples j times through the intermediate frequencies
     nu_p = w_i - p Omega_c (sum and simple; w_lo + p Omega_c for a difference), p = 1..j-1; a
     mode m with w_m near |nu_p| multiplies it by a_p = w_m^2 / |w_m^2 - nu_p^2| (the response
-    of mode m off resonance, against w_m^2 taken by zeta; Bolotin 1964, sec. 8), each factor
-    at most 1 / zeta (there the chain is as strong as a lower order). Order j (2 <= j <=
-    cap + :data:`_CAP_SCAN`) is kept while lam2 zeta^(j-2) prod a_p exceeds ``floor``.
+    of mode m off resonance, against the w_m^2 that zeta assumes: the near-resonant terms of
+    the perturbation series, Nayfeh & Mook 1979, ch. 5), each factor at most 1 / zeta (there
+    the chain is as strong as a lower order). Order j (2 <= j <= cap + :data:`_CAP_SCAN`) is
+    kept while lam2 zeta^(j-2) prod a_p exceeds ``floor``.
     """
     big = np.iinfo(np.int64).max // 4
     rows = np.flatnonzero(cap < big // 2)
