@@ -703,6 +703,33 @@ def test_combination_region_where_another_mode_shares_a_prediction(system, omega
                              2001).size == 0
 
 
+#: A random symmetric system with two close modes (w, r as DEGENERATE_4; default_rng(11) of
+#: scripts/region_search_survey.py, its system 5, rounded).
+CLUSTER_4 = (np.array([1.57448577, 1.5989407, 3.50452063, 4.71001039]),
+             np.array([[-0.028, -0.045, 0.01, 0.157], [-0.045, -0.07, -0.148, 0.159],
+                       [0.01, -0.148, -0.071, -0.195], [0.157, 0.159, -0.195, -0.001]]))
+
+
+@pytest.mark.parametrize("zeta,growth", [(0.0, 1e-2), (0.005, 8e-4)], ids=["undamped", "damped"])
+def test_second_region_in_the_window_of_a_cluster_candidate(zeta, growth):
+    # gamma = 0.3, C = 2 zeta diag(w). Modes 0 and 1 are 1.5 % apart: the window of the simple
+    # j = 1 candidate of mode 1 (centre 3.198, +- 0.067) holds the regions 3.1418-3.1522 (sum
+    # (0, 3) j = 2), 3.1902-3.1940 (sum (0, 1)) and its own, moved to 3.2028-3.2370, the
+    # strongest (growth 1.04e-2 1/s undamped, 8.7e-4 with zeta = 0.005, by solve_ivp at 3.22).
+    # Its indicator (the s nearest its prediction, which changes with Omega in the cluster) is
+    # positive in more than one of them, and the maximisation stopped at the first: the region
+    # was missed (489 of the scan's 594 unstable points outside undamped, all 197 damped). The
+    # rest of the window of a cluster candidate that found a region is searched again. A
+    # 2,001-point scan of 3.15-3.29 finds no unstable point outside the regions.
+    w, r = CLUSTER_4
+    M, A, B = _shifted_system(CLUSTER_4, 0.3)
+    C = np.diag(2.0 * zeta * w) if zeta else None
+    assert ivp_growth_rate(M, 0 * M if C is None else C, A, B, 3.22) > growth
+    regions = instability_regions(M, C, A, B, 0.5, 2.2 * w[-1])
+    assert any(q.omega_lo < 3.22 < q.omega_hi for q in regions)
+    assert _unstable_outside(M, C, A, B, regions, 3.15, 3.29, 2001).size == 0
+
+
 #: Random symmetric systems with modal damping (w, r as DEGENERATE_4; numpy default_rng(8)
 #: and (9), the 15th and 12th systems drawn as scripts/region_search_survey.py draws them,
 #: rounded), each with two pairs of close modes.

@@ -877,15 +877,72 @@ def _undamped_search(system, w, cand, lo, hi, opt, narrow: bool = True,
 
 
 def _batched_search(system, w, cand, lo, hi, opt, seeds: bool) -> tuple[list[dict], np.ndarray]:
-    """:func:`_monodromy_search` of the candidate table in batches of bounded memory."""
+    """:func:`_monodromy_search` of the candidate table in batches of bounded memory, then of
+    the rest of the windows where it found a region (:func:`_rest_of_windows`)."""
+    regs, fmax = _plain_batches(system, w, cand, lo, hi, opt, seeds)
+    regs += _rest_of_windows(system, w, cand, regs, lo, hi, opt, seeds)
+    for r in regs:
+        r.pop("row")
+    return regs, fmax
+
+
+def _plain_batches(system, w, cand, lo, hi, opt, seeds) -> tuple[list[dict], np.ndarray]:
+    """:func:`_monodromy_search` in batches; each region's "row" is its candidate's."""
     regs, fmax = [], [np.zeros(0)]
     step = max(1, _SEARCH_BATCH_BYTES // (256 * system.n ** 2))  # 4 complex 2n x 2n each
     for s in range(0, cand["centre"].size, step):  # batches: each candidate on its own
         r, f = _monodromy_search(system, w, {key: v[s:s + step] for key, v in cand.items()},
                                  lo, hi, opt, seeds=seeds)
+        for x in r:
+            x["row"] += s
         regs += r
         fmax.append(f)
     return regs, np.concatenate(fmax)
+
+
+#: Rounds of :func:`_rest_of_windows` (each searches the pieces the last one split).
+_WINDOW_ROUNDS = 2
+
+
+def _rest_of_windows(system, w, cand, regs, lo, hi, opt, seeds) -> list[dict]:
+    """Regions in the rest of a window where the search found one: a window may hold several
+    (a strongly coupled cluster: the s-value nearest a prediction changes with Omega), and the
+    maximisation stops at the first point above the floor. The window less the region found
+    (4 x the edge tolerance beyond its edges) is searched again, piece by piece, in at most
+    :data:`_WINDOW_ROUNDS` rounds; pieces shorter than a tenth of the estimated width or 8 x
+    the edge tolerance are left. The regions kept lie outside every region found before."""
+    Oc, half, est = cand["middle"], cand["half"], cand["est"]
+    a_win = np.maximum(Oc - half, 0.5 * Oc)
+    b_win = Oc + half
+    out, found = [], list(regs)
+    cluster = (cand["c_i"] > 1) | (cand["c_k"] > 1)
+    pieces = [(r["row"], a_win[r["row"]], b_win[r["row"]], r) for r in regs if cluster[r["row"]]]
+    for _ in range(_WINDOW_ROUNDS):
+        rows, lefts, rights = [], [], []
+        for m, a, b, r in pieces:
+            gap = 4.0 * opt.rtol * Oc[m]
+            for left, right in ((a, min(b, r["lo"] - gap)), (max(a, r["hi"] + gap), b)):
+                if right - left > max(8.0 * opt.rtol * Oc[m], 0.1 * est[m]):
+                    rows.append(m)
+                    lefts.append(left)
+                    rights.append(right)
+        if not rows:
+            break
+        idx = np.array(rows)
+        sub = {key: v[idx] for key, v in cand.items()}
+        left, right = np.array(lefts), np.array(rights)
+        sub["middle"], sub["half"] = 0.5 * (left + right), 0.5 * (right - left)
+        new, _ = _plain_batches(system, w, sub, lo, hi, opt, seeds)
+        pieces = []
+        for r in new:
+            if any(r["lo"] <= q["hi"] and q["lo"] <= r["hi"] for q in found):
+                continue
+            piece = int(r["row"])
+            r["row"] = int(idx[piece])
+            pieces.append((r["row"], left[piece], right[piece], r))
+            found.append(r)
+            out.append(r)
+    return out
 
 
 def _narrow_pass(system, cand, regs, lo, hi) -> list[dict]:
@@ -983,7 +1040,8 @@ def _monodromy_search(system, w, cand, lo, hi, opt,
             continue
         out.append({"lo": float(olo[m]), "hi": float(ohi[m]), "kind": int(sub["kind"][m]),
                     "i": int(sub["i"][m]), "k": int(sub["k"][m]), "j": int(sub["j"][m]),
-                    "centre": float(sub["centre"][m]), "clipped": bool(clo[m] or chi[m])})
+                    "centre": float(sub["centre"][m]), "clipped": bool(clo[m] or chi[m]),
+                    "row": int(hit[m])})
     return out, fs
 
 
