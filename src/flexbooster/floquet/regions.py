@@ -160,14 +160,14 @@ def _range(omega_min, omega_max) -> tuple[float, float]:
 # --------------------------------------------------------------------------------------------
 # Candidates
 # --------------------------------------------------------------------------------------------
-def _damping_caps(w, Bt, base, kind, i0, k0, zrow, zeta, rate, margin) -> np.ndarray:
+def _damping_caps(w, Bt, base, kind, i0, k0, zrow, zeta, rate, margin, jmax) -> np.ndarray:
     """Largest order j per resonance base that damping could leave unstable (0: none).
 
     The averaged equations couple with H_ab = |Bt_ab| / (4 sqrt(w_a w_b)); the undamped growth is
     at most the largest row sum R_a (Gershgorin), order j >= 2 at most base zeta_i zeta_k
     zeta^(j-2) / 4 times the small-denominator factors of :func:`_internal_resonance` (up to
-    :data:`_CAP_SCAN` orders beyond the cap without them); kept while margin x growth exceeds
-    min(delta_i, delta_k) (Hsu 1963).
+    :data:`_CAP_SCAN` orders beyond the cap without them, at most ``jmax``); kept while margin
+    x growth exceeds min(delta_i, delta_k) (Hsu 1963).
     """
     with np.errstate(divide="ignore", invalid="ignore"):
         H = np.abs(Bt) / (4.0 * np.sqrt(np.outer(w, w)))
@@ -185,15 +185,16 @@ def _damping_caps(w, Bt, base, kind, i0, k0, zrow, zeta, rate, margin) -> np.nda
         else:
             cap = np.where(t < 1.0, np.iinfo(np.int64).max // 4, cap)
     if 0.0 < zeta < 1.0:
-        cap = _internal_resonance(w, base, kind, i0, k0, zeta, d / margin, lam2, cap)
+        cap = _internal_resonance(w, base, kind, i0, k0, zeta, d / margin, lam2, cap, jmax)
     return np.where(d > 0.0, cap, np.iinfo(np.int64).max // 4)
 
 
-#: Orders beyond the damping cap that :func:`_internal_resonance` examines.
-_CAP_SCAN = 4
+#: Orders beyond the damping cap that :func:`_internal_resonance` examines, and the largest
+#: cap it raises (above it the coupling is strong enough that orders decay slowly anyway).
+_CAP_SCAN, _CAP_SCAN_MAX = 4, 64
 
 
-def _internal_resonance(w, base, kind, i0, k0, zeta, floor, lam2, cap) -> np.ndarray:
+def _internal_resonance(w, base, kind, i0, k0, zeta, floor, lam2, cap, jmax) -> np.ndarray:
     """The damping caps raised where an order's chain passes near a mode (small denominators).
 
     The order-j term of a resonance couples j times through the intermediate frequencies
@@ -201,11 +202,11 @@ def _internal_resonance(w, base, kind, i0, k0, zeta, floor, lam2, cap) -> np.nda
     mode m with w_m near |nu_p| multiplies it by a_p = w_m^2 / |w_m^2 - nu_p^2| (the response
     of mode m off resonance, against the w_m^2 that zeta assumes: the near-resonant terms of
     the perturbation series, Nayfeh & Mook 1979, ch. 5), each factor at most 1 / zeta (there
-    the chain is as strong as a lower order). Order j (2 <= j <= cap + :data:`_CAP_SCAN`) is
-    kept while lam2 zeta^(j-2) prod a_p exceeds ``floor``.
+    the chain is as strong as a lower order). Order j (2 <= j <= min(cap + :data:`_CAP_SCAN`,
+    jmax), cap <= :data:`_CAP_SCAN_MAX`) is kept while lam2 zeta^(j-2) prod a_p exceeds
+    ``floor``.
     """
-    big = np.iinfo(np.int64).max // 4
-    rows = np.flatnonzero(cap < big // 2)
+    rows = np.flatnonzero((cap < jmax) & (cap <= _CAP_SCAN_MAX))
     if rows.size == 0 or w.size == 0:
         return cap
     out = cap.copy()
@@ -226,7 +227,8 @@ def _internal_resonance(w, base, kind, i0, k0, zeta, floor, lam2, cap) -> np.nda
                 a = w2 / np.abs(w2 - (nu * nu)[:, :, None])
             a = np.max(np.where(np.isnan(a), 1.0, a), axis=2)  # 0 / 0: a rigid mode at nu = 0
             log_a = np.where(p < j[c, None], np.log(np.clip(a, 1.0, 1.0 / zeta)), 0.0)
-            kept = (j[c] - 2) * np.log(zeta) + log_a.sum(axis=1) > log_floor[c]
+            kept = ((j[c] - 2) * np.log(zeta) + log_a.sum(axis=1) > log_floor[c]) & (
+                j[c] <= jmax[rows[c]])
             out[rows[c]] = np.where(kept, np.maximum(out[rows[c]], j[c]), out[rows[c]])
     return out
 
@@ -265,8 +267,8 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
     # all orders whose centre lies in [lo / 2, 2 hi] (for the gaps), capped
     jmax_all = np.floor(base / (0.5 * lo)).astype(np.int64)
     if rate is not None and opt.damping_margin is not None:
-        jmax_all = np.minimum(jmax_all, _damping_caps(w, Bt, base, kind0, i0, k0, zrow, zeta, rate,
-                                                      opt.damping_margin))
+        jmax_all = np.minimum(jmax_all, _damping_caps(w, Bt, base, kind0, i0, k0, zrow, zeta,
+                                                      rate, opt.damping_margin, jmax_all))
     jmin_all = np.maximum(1, np.ceil(base / (2.0 * hi)).astype(np.int64))
     # enumerated: the orders up to the last whose width estimate can pass the floor below
     # (est / centre = zeta_i zeta_k zeta^(j-2) >= 1e-2 _NARROW_FLOOR; 3 orders of slack)
