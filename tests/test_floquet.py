@@ -1304,7 +1304,7 @@ def weakly_coupled(seed: int, gamma: float, zeta: float):
 def test_damping_filter_never_drops_a_region(seed, gamma):
     # invariant: the damping filter (default margin 4) against the unfiltered search
     # (damping_margin=None), Omega 0.8..9, orders 1-2, zeta = 0.01, on systems where it drops
-    # a fifth or more of the candidates (asserted; 8 of 33 and 10 of 32, fewer than without
+    # a fifth or more of the candidates (asserted; 9 of 33 and 11 of 32, fewer than without
     # the small-denominator factors: e.g. the sum (1, 2.9) j = 2 at 1.95 passes nu = 0.95 beside
     # w = 1) and regions survive the damping: the same
     # regions (kind, modes, order), edges within 1e-8 relative (10 x rtol: the batches
