@@ -871,7 +871,7 @@ def _undamped_search(system, w, cand, lo, hi, opt, narrow: bool = True,
         retry = {key: v[again] for key, v in sub.items()}
         retry["c_i"], retry["c_k"] = retry["e_i"], retry["e_k"]
         regs += [r for r in _batched_search(system, w, retry, lo, hi, opt, seeds)[0]
-                 if not any(r["lo"] <= q["hi"] and q["lo"] <= r["hi"] for q in regs)]
+                 if not _overlaps(r, regs)]
     if not narrow or seeds:
         return regs
     # the candidates below the monodromy floor, and those whose indicator maximum stayed
@@ -879,6 +879,11 @@ def _undamped_search(system, w, cand, lo, hi, opt, narrow: bool = True,
     extra = (fmax <= _F_FLOOR) & (fmax > -_F_SCREEN) & ~sub["shifted"]
     missed = {key: np.concatenate([v[~mono], v[mono][extra]]) for key, v in cand.items()}
     return regs + _narrow_pass(system, missed, regs, lo, hi)
+
+
+def _overlaps(r: dict, regs: list[dict]) -> bool:
+    """Region ``r`` meets one of ``regs`` (closed intervals lo..hi)."""
+    return any(r["lo"] <= q["hi"] and q["lo"] <= r["hi"] for q in regs)
 
 
 def _batched_search(system, w, cand, lo, hi, opt, seeds: bool) -> tuple[list[dict], np.ndarray]:
@@ -940,7 +945,7 @@ def _rest_of_windows(system, w, cand, regs, lo, hi, opt, seeds) -> list[dict]:
         new, _ = _plain_batches(system, w, sub, lo, hi, opt, seeds)
         pieces = []
         for r in new:
-            if any(r["lo"] <= q["hi"] and q["lo"] <= r["hi"] for q in found):
+            if _overlaps(r, found):
                 continue
             piece = int(r["row"])
             r["row"] = int(idx[piece])
