@@ -242,8 +242,8 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
 
     Arrays kind (0 simple, 1 sum, 2 difference), i, k, j, centre, est, gap (distance to the
     nearest other centre of any order in [lo / 2, 2 hi]), mono, c_i and c_k (the s-values
-    a combination indicator pairs, :func:`_cluster_sizes`), e_i and e_k (those of its second
-    search when the first found nothing, :func:`_retry_sizes`), retry (a combination candidate
+    a combination indicator pairs), e_i and e_k (those of its second search when the first
+    found nothing; both :func:`_pair_sizes`), retry (a combination candidate
     with more of them: searched again if the first pass finds nothing), and the window searched by
     the monodromy, middle +- half; the rows ``shifted`` are further windows of candidates
     moved by the second-order frequency shifts or split by a near resonance
@@ -300,36 +300,27 @@ def _candidates(w: np.ndarray, Bt: np.ndarray, lo: float, hi: float, opt: _Optio
     out["shifted"] = np.zeros(Oc.size, bool)
     out = _shifted_copies(out, w, Bt, lo, hi, opt)
     for m, other in (("i", "k"), ("k", "i")):
-        out["c_" + m] = _cluster_sizes(w, out[m], out["est"], out["j"])
-        out["e_" + m] = _retry_sizes(w, out[m], out[other], out)
+        out["c_" + m], out["e_" + m] = _pair_sizes(w, out[m], out[other], out)
     # the combination candidates a second pass searches again if the first finds nothing
     out["retry"] = (out["kind"] != 0) & ((out["e_i"] > out["c_i"]) | (out["e_k"] > out["c_k"]))
     return out
 
 
-def _cluster_sizes(w: np.ndarray, mode: np.ndarray, est: np.ndarray,
-                   j: np.ndarray) -> np.ndarray:
-    """Per candidate, the modes within j est of the frequency of its ``mode`` (itself
-    included), at most :data:`_CLUSTER_MAX`: the s-values its combination indicator pairs
-    (:func:`_indicator`); est near the largest float: every mode, capped."""
-    ws = np.sort(w)
-    with np.errstate(invalid="ignore", over="ignore"):
-        tol = est * j
-        n = (np.searchsorted(ws, w[mode] + tol, side="right")
-             - np.searchsorted(ws, w[mode] - tol, side="left"))
-    return np.minimum(n, _CLUSTER_MAX)
+def _pair_sizes(w: np.ndarray, mode: np.ndarray, partner: np.ndarray,
+                cand: dict) -> tuple[np.ndarray, np.ndarray]:
+    """Per candidate, the s-values its combination indicator pairs about the prediction
+    p = 2 cos(2 pi w / Omega) of its ``mode`` (:func:`_indicator`), each at most
+    :data:`_CLUSTER_MAX`: (c, e).
 
-
-def _retry_sizes(w: np.ndarray, mode: np.ndarray, partner: np.ndarray,
-                 cand: dict) -> np.ndarray:
-    """Per candidate, the s-values nearest to the prediction p = 2 cos(2 pi w / Omega) of its
-    ``mode`` that the search of a candidate that found nothing pairs (:func:`_undamped_search`;
-    at most :data:`_CLUSTER_MAX`): its cluster (:func:`_cluster_sizes`) and every mode m other
-    than its ``partner`` whose prediction equals its own where a region of the candidate can
-    lie (w_m -+ w = q Omega, q >= 1, within twice the estimated width of the centre, or in a
+    c: its cluster, the modes within j est of the frequency of ``mode`` (itself included; est
+    near the largest float: every mode). e: those of the search of a candidate that found
+    nothing (:func:`_undamped_search`): its cluster and every mode m other than its
+    ``partner`` whose prediction equals its own where a region of the candidate can lie
+    (w_m -+ w = q Omega, q >= 1, within twice the estimated width of the centre, or in a
     second window), and in a second window (the s-values moved far from their predictions)
     at least the two nearest: a complex s and its conjugate are equally near a real
     prediction."""
+    cluster = np.empty(mode.size, dtype=np.int64)
     out = np.empty(mode.size, dtype=np.int64)
     est, j, middle, shifted = cand["est"], cand["j"], cand["middle"], cand["shifted"]
     with np.errstate(over="ignore"):
@@ -343,13 +334,15 @@ def _retry_sizes(w: np.ndarray, mode: np.ndarray, partner: np.ndarray,
         b = (middle[c] + reach[c])[:, None]
         with np.errstate(invalid="ignore", over="ignore"):
             near = np.abs(w[None, :] - wi) <= (est[c] * j[c])[:, None]
+            near[rows, mode[c]] = True
+            cluster[c] = near.sum(axis=1)
             for x in (np.abs(w[None, :] - wi), w[None, :] + wi):
                 meet = np.floor(x / a) >= np.maximum(np.ceil(x / b), 1.0)
                 meet[rows, partner[c]] = False
                 near |= meet
         near[rows, mode[c]] = True
         out[c] = np.maximum(near.sum(axis=1), np.where(shifted[c], min(2, w.size), 1))
-    return np.minimum(out, _CLUSTER_MAX)
+    return np.minimum(cluster, _CLUSTER_MAX), np.minimum(out, _CLUSTER_MAX)
 
 
 def _shifted_frequencies(w: np.ndarray, Bt: np.ndarray, i: np.ndarray, Omega: np.ndarray,
@@ -678,7 +671,7 @@ def _indicator(system, w, cand, om, opt) -> np.ndarray:
         d_k[rows, first] = np.inf
         second = np.argmin(d_k, axis=1)
         f_comb = -((ev[rows, first] - ev[rows, second]) ** 2).real
-        c_i, c_k = cand["c_i"], cand["c_k"]  # :func:`_cluster_sizes`
+        c_i, c_k = cand["c_i"], cand["c_k"]  # :func:`_pair_sizes`
         many = np.nonzero((~simple) & ((c_i > 1) | (c_k > 1)))[0]
         if many.size:
             f_comb[many] = _cluster_pairs(ev[many], p_i[many], p_k[many], c_i[many], c_k[many])
@@ -865,7 +858,7 @@ def _undamped_search(system, w, cand, lo, hi, opt, narrow: bool = True,
     sub = {key: v[mono] for key, v in cand.items()}
     regs, fmax = _batched_search(system, w, sub, lo, hi, opt, seeds)
     # the combination candidates that found nothing, again with more s-values paired
-    # (:func:`_retry_sizes`): the regions outside every one found
+    # (:func:`_pair_sizes`): the regions outside every one found
     again = (fmax <= _F_FLOOR) & sub["retry"]
     if again.any():
         retry = {key: v[again] for key, v in sub.items()}
