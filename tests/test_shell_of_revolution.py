@@ -858,6 +858,26 @@ def test_lowest_sparse_pairs_are_the_dense_ones(seed):
     np.testing.assert_allclose(vecs * sign, rvec, atol=1e-9 * np.abs(rvec).max())
 
 
+@pytest.mark.parametrize("shape", [(400, 400), (7, 3), (1, 1), (0, 0), (3, 0)])
+def test_sparse_form_is_scipys(shape):
+    """The solver's dense -> CSR conversion (and CSC, the CSR of the transpose, transposed)
+    against scipy.sparse's own constructors (an independent path through the coordinate
+    form): the same data, indices and row pointers, exactly, on a random sparse array and its
+    transpose (a non-contiguous view)."""
+    import scipy.sparse as sparse
+
+    from flexbooster.shell_of_revolution import modes
+
+    rng = np.random.default_rng(5)
+    A = rng.standard_normal(shape) * (rng.random(shape) < 0.1)
+    for M in (A, A.T):
+        for got, ref in ((modes._sparse(M), sparse.csr_matrix(M)),
+                         (modes._sparse(M.T).T, sparse.csc_matrix(M))):
+            assert got.format == ref.format and got.shape == ref.shape
+            for name in ("data", "indices", "indptr"):
+                np.testing.assert_array_equal(getattr(got, name), getattr(ref, name))
+
+
 def test_lowest_sparse_finds_a_double_eigenvalue_twice():
     """Two uncoupled copies of one pencil (block diagonal, DOFs interleaved): every eigenvalue
     is double, so a Krylov space from a start vector that is the same in both copies holds

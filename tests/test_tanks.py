@@ -177,6 +177,41 @@ def test_shared_harmonics_gives_the_numbers_of_separate_calls():
         np.testing.assert_array_equal(t1, t2)
 
 
+def test_fills_of_one_shell_share_its_mesh_and_matrices():
+    """Within shared_shell two fills of one vehicle (its tanks replaced, as a flight's frozen
+    times, each in a shared_harmonics block of its own) get one mesh object and one shell part
+    per harmonic, and their modes equal those of separate calls outside any block exactly
+    (the same operations on the same inputs); the two fills' modes differ (the liquid is made
+    per fill). The vehicle of the test above, k = 0..3, 6 modes."""
+    import dataclasses
+
+    from flexbooster.shell_of_revolution import shared_harmonics, shared_shell
+    from flexbooster.shell_of_revolution.assembly import shell_harmonic
+    from flexbooster.shell_of_revolution.modes import _mesh
+
+    base = Vehicle([Cylinder(1.5, 6.0, 0.004, **STEEL), Cylinder(1.5, 4.0, 0.004, **STEEL)],
+                   junctions=("rigid-bulkhead",),
+                   masses=(LumpedMass(0.0, 2000.0), LumpedMass(10.0, 500.0)),
+                   tanks=(VehicleTank(0.0, 6.0, 0.5, 1140.0),))
+    fills = [dataclasses.replace(base, tanks=(dataclasses.replace(base.tanks[0], fill=f),))
+             for f in (0.9, 0.3)]
+    F0 = 1.0e6
+    alone = [vehicle_modes(v, k_max=3, n_modes=6, prestress_F0=F0) for v in fills]
+    shared, meshes = [], []
+    with shared_shell():
+        for v in fills:
+            with shared_harmonics(isolated=True):
+                shared.append(vehicle_modes(v, k_max=3, n_modes=6, prestress_F0=F0))
+                meshes.append(_mesh(v, None, 6))
+        assert meshes[0] is meshes[1]
+        assert all(shell_harmonic(fills[0], meshes[0], k) is shell_harmonic(fills[1], meshes[1], k)
+                   for k in range(4))
+    for a, b in zip(shared, alone, strict=True):
+        for name in ("omega", "order", "type", "kinetic_share", "shapes"):
+            np.testing.assert_array_equal(getattr(a, name), getattr(b, name))
+    assert not np.allclose(alone[0].omega, alone[1].omega, rtol=1e-3)
+
+
 @pytest.mark.slow
 def test_regions_below_the_slosh_frequency_are_warned_about():
     """Independent value: Abramson's first lateral slosh frequency of a flat-bottomed cylinder

@@ -56,7 +56,7 @@ from .flight import (
 )
 from .flight_results import FlightHarmonic, FlightResults, verdict_order
 from .model import flight_times, forced_stations, timeline_from_case, vehicle_from_case
-from .shell_of_revolution import BucklingError, slosh_modes
+from .shell_of_revolution import BucklingError, shared_shell, slosh_modes
 from .shell_of_revolution.mass_properties import MassProperties, mass_properties
 from .shell_of_revolution.modes import (
     VehicleModes,
@@ -267,7 +267,8 @@ def flight_stage(case: Case, *, frozen: Sequence[FrozenTime] | None = None
             "so no frozen time has its prestress: the flight is not computed (give the plate an "
             "axial length: a cone)")]
     if frozen is None:
-        frozen = [_frozen_at(plan, i) for i in range(plan.times.size)]
+        with shared_shell():  # the shell's mesh and matrices once for every frozen time
+            frozen = [_frozen_at(plan, i) for i in range(plan.times.size)]
     return _assemble(case, plan, frozen)
 
 

@@ -369,6 +369,8 @@ def vehicle_regions(
                                 unloaded_frequencies=unloaded_frequencies, **mesh)
         harmonics.append(h)
         certs.append(floquet.stability_certificate(*h.periodic(gamma)))
+        if certs[-1].certified and opts["damping_margin"] is not None:
+            continue  # stable at every Omega: the search's own first test, already passed
         found_k, gap_k = _search(h, gamma, lo, hi, opts)
         regions += found_k
         gaps += gap_k

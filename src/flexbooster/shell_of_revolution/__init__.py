@@ -41,6 +41,7 @@ from .modes import (
     shared_harmonics,
     vehicle_modes,
 )
+from .shared import shared_shell
 from .slosh import SloshMode
 from .wetted_wall import slosh_modes
 
@@ -75,6 +76,7 @@ __all__ = [
     "mode_vectors",
     "rigid_motion_count",
     "shared_harmonics",
+    "shared_shell",
     "slosh_modes",
     "system_matrices",
     "vehicle_modes",

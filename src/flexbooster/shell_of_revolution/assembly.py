@@ -16,12 +16,20 @@ Fig. 1 and appendix D-II.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 
 from ..checks import count, finite
-from .elements import einsum, element_matrices, reference_element, theta_weight
+from .elements import (
+    ElementFields,
+    einsum,
+    element_fields,
+    field_matrices,
+    geometric_matrices,
+    reference_element,
+    theta_weight,
+)
 from .geometry import Cylinder, Vehicle, stiffener_matrix, wall_masses
 from .mesh import Mesh
 from .prestress import (
@@ -33,6 +41,7 @@ from .prestress import (
     pressure_rings,
     total_mass,
 )
+from .shared import shell_value
 
 __all__ = [
     "DEFAULT_ORDER",
@@ -54,6 +63,8 @@ __all__ = [
     "thrust_prestate",
     "HarmonicMatrices",
     "harmonic_matrices",
+    "ShellHarmonic",
+    "shell_harmonic",
 ]
 
 #: Default polynomial degree of the elements.
@@ -387,21 +398,29 @@ def element_set(vehicle: Vehicle, mesh: Mesh, k: int, *, prestate: Prestate | No
     prestate : Prestate, optional
         Membrane prestate of the geometric stiffness (None: no K_g).
     """
-    ref = reference_element(mesh.order)
-    ns0 = nt0 = None
-    if prestate is not None:
-        ns0, nt0 = prestate.meridional, prestate.hoop
-    m, ke, kg = element_matrices(ref, k, r1=mesh.r1, length=mesh.length,
-                                 sin_phi=mesh.sin_phi, cos_phi=mesh.cos_phi,
-                                 thickness=mesh.thickness, E=mesh.E, nu=mesh.nu, rho=mesh.rho,
-                                 theory=vehicle.theory, ns0=ns0, nt0=nt0,
-                                 areal_mass=mesh.areal_mass, stiffening=mesh.stiffening,
-                                 fixed_prestress=pressure_resultants(mesh))
+    f = _element_fields(vehicle, mesh, k)
     T = node_transform(mesh)
-    out = []
-    for mat in (m, ke, kg):
-        out.append(None if mat is None else einsum("eia,eij,ejb->eab", T, mat, T))
-    return tuple(out)
+    m, ke = field_matrices(f, _areal_mass(mesh), fixed_prestress=pressure_resultants(mesh))
+    kg = None if prestate is None else geometric_matrices(f, prestate.meridional, prestate.hoop)
+    return tuple(None if mat is None else _node_frames(T, mat) for mat in (m, ke, kg))
+
+
+def _element_fields(vehicle: Vehicle, mesh: Mesh, k: int) -> ElementFields:
+    """:func:`.elements.element_fields` of the mesh's elements, harmonic k."""
+    return element_fields(reference_element(mesh.order), k, r1=mesh.r1, length=mesh.length,
+                          sin_phi=mesh.sin_phi, cos_phi=mesh.cos_phi, thickness=mesh.thickness,
+                          E=mesh.E, nu=mesh.nu, theory=vehicle.theory,
+                          stiffening=mesh.stiffening)
+
+
+def _areal_mass(mesh: Mesh) -> np.ndarray:
+    """The wall's mass per unit area (kg/m^2): rho h, or the mesh's own (stiffeners, etc.)."""
+    return mesh.rho * mesh.thickness if mesh.areal_mass is None else mesh.areal_mass
+
+
+def _node_frames(T: np.ndarray, mat: np.ndarray) -> np.ndarray:
+    """Element matrices (e, n_dof, n_dof) from the element-local DOFs to the node frames."""
+    return einsum("eia,eij,ejb->eab", T, mat, T)
 
 
 def ring_matrix(theory: str, dmap: DofMap, prestate: Prestate, k: int) -> np.ndarray:
@@ -578,7 +597,7 @@ class HarmonicMatrices:
 def harmonic_matrices(vehicle: Vehicle, mesh: Mesh, k: int, *,
                       prestate: Prestate | None = None) -> HarmonicMatrices:
     """M (with the lumped masses, :func:`lumped_mass_matrix`), K_e and K_g (elements and rings)
-    of harmonic k on a mesh.
+    of harmonic k on a mesh: :func:`shell_harmonic` and the prestate's K_g.
 
     Parameters
     ----------
@@ -592,11 +611,68 @@ def harmonic_matrices(vehicle: Vehicle, mesh: Mesh, k: int, *,
         The prestate of K_g (:func:`thrust_prestate`); None: no K_g.
     """
     k = count("k", k, 0, 200)
-    dmap = dof_map(vehicle, mesh, k)
-    m, ke, kg = element_set(vehicle, mesh, k, prestate=prestate)
+    shell = shell_harmonic(vehicle, mesh, k)
     geo = None
     if prestate is not None:
-        geo = assemble(mesh, dmap, kg) + ring_matrix(vehicle.theory, dmap, prestate, k)
+        kg = _node_frames(shell.transform, geometric_matrices(shell.fields, prestate.meridional,
+                                                              prestate.hoop))
+        geo = assemble(mesh, shell.dmap, kg) + ring_matrix(vehicle.theory, shell.dmap,
+                                                           prestate, k)
+    return HarmonicMatrices(k=k, dmap=shell.dmap, mass=shell.mass, stiffness=shell.stiffness,
+                            geometric=geo, element_stiffness=shell.element_stiffness)
+
+
+@dataclass(frozen=True)
+class ShellHarmonic:
+    """What of harmonic k depends on the shell alone (not on its tanks' fills nor on the
+    thrust), :func:`shell_harmonic`; read-only arrays.
+
+    Attributes
+    ----------
+    k, dmap, mass, stiffness, element_stiffness
+        As :class:`HarmonicMatrices` (M with the lumped masses, K_e with the pressure's rings).
+    fields : ElementFields
+        The elements' fields (:func:`.elements.element_fields`).
+    transform : ndarray, shape (e, n_dof, n_dof)
+        The elements' node-frame rotation (:func:`node_transform`).
+    """
+
+    k: int
+    dmap: DofMap
+    fields: ElementFields
+    transform: np.ndarray
+    mass: np.ndarray
+    stiffness: np.ndarray
+    element_stiffness: np.ndarray
+
+
+def shell_harmonic(vehicle: Vehicle, mesh: Mesh, k: int) -> ShellHarmonic:
+    """The shell's part of harmonic k on a mesh (:class:`ShellHarmonic`): once for every vehicle
+    of the same shell (segments, ends, junctions, theory, lumped masses) within
+    :func:`.shared.shared_shell`, else once per :func:`.shared.shared_harmonics` block.
+
+    Parameters
+    ----------
+    vehicle : Vehicle
+        The vehicle (its tanks are not read).
+    mesh : Mesh
+        Mesh of the vehicle.
+    k : int
+        Circumferential wave number, 0..200.
+    """
+    k = count("k", k, 0, 200)
+    key = ("shell harmonic", id(mesh), k, vehicle.theory, vehicle.aft_end, vehicle.fwd_end,
+           vehicle.junctions, id(vehicle.segments), id(vehicle.masses))
+    return shell_value(key, (mesh, vehicle.segments, vehicle.masses),
+                       lambda: _new_shell_harmonic(vehicle, mesh, k))
+
+
+def _new_shell_harmonic(vehicle: Vehicle, mesh: Mesh, k: int) -> ShellHarmonic:
+    dmap = dof_map(vehicle, mesh, k)
+    f = _element_fields(vehicle, mesh, k)
+    T = node_transform(mesh)
+    m, ke = (_node_frames(T, mat) for mat in field_matrices(
+        f, _areal_mass(mesh), fixed_prestress=pressure_resultants(mesh)))
     mass = assemble(mesh, dmap, m)
     stiffness = assemble(mesh, dmap, ke)
     rings = pressure_ring_matrix(vehicle, mesh, dmap, k)
@@ -605,8 +681,10 @@ def harmonic_matrices(vehicle: Vehicle, mesh: Mesh, k: int, *,
     lumped = lumped_mass_matrix(vehicle, mesh, dmap, k)
     if lumped is not None:
         mass = mass + lumped
-    return HarmonicMatrices(k=k, dmap=dmap, mass=mass, stiffness=stiffness,
-                            geometric=geo, element_stiffness=ke)
+    for arr in (T, mass, stiffness, ke, *(getattr(f, x.name) for x in fields(f))):
+        arr.setflags(write=False)
+    return ShellHarmonic(k=k, dmap=dmap, fields=f, transform=T, mass=mass, stiffness=stiffness,
+                         element_stiffness=ke)
 
 
 def system_matrices(

@@ -24,7 +24,8 @@ from numpy.polynomial import legendre as leg
 from ..checks import count
 
 __all__ = ["ElementFields", "ReferenceElement", "element_energies", "element_fields",
-           "element_matrices", "reference_element", "theta_weight"]
+           "element_matrices", "field_matrices", "geometric_matrices", "reference_element",
+           "theta_weight"]
 
 
 @lru_cache(maxsize=64)
@@ -309,19 +310,46 @@ def element_matrices(
     """
     f = element_fields(ref, k, r1=r1, length=length, sin_phi=sin_phi, cos_phi=cos_phi,
                        thickness=thickness, E=E, nu=nu, theory=theory, stiffening=stiffening)
-    mu = rho * thickness if areal_mass is None else areal_mass
-    dvol = f.volume
-    stiff = einsum("egia,eij,egjb,eg->eab", f.strains, f.material, f.strains, dvol)
+    mass, stiff = field_matrices(f, rho * thickness if areal_mass is None else areal_mass,
+                                 fixed_prestress=fixed_prestress)
+    return mass, stiff, None if ns0 is None else geometric_matrices(f, ns0, nt0)
+
+
+def field_matrices(f: ElementFields, areal_mass: np.ndarray, *,
+                   fixed_prestress: tuple | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """Consistent mass (kg) and elastic stiffness (N/m) of all elements from their fields
+    (:func:`element_fields`), each (e, n_dof, n_dof) in the local DOFs: int mu N^T N dV and
+    int B^T D B dV by the fields' Gauss quadrature (Bathe 1996, sec. 5.3).
+
+    Parameters
+    ----------
+    f : ElementFields
+        The elements' fields of harmonic k.
+    areal_mass : ndarray, shape (e,)
+        Mass per unit wall area (kg/m^2).
+    fixed_prestress : (ndarray, ndarray), optional
+        As :func:`element_matrices`.
+    """
+    stiff = einsum("egia,eij,egjb,eg->eab", f.strains, f.material, f.strains, f.volume)
     mass = einsum("egia,egib,eg->eab", f.displacement, f.displacement,
-                  mu[:, None] * dvol)
-    geo = None if ns0 is None else _geometric(f, ns0, nt0)
+                  areal_mass[:, None] * f.volume)
     if fixed_prestress is not None:
-        stiff = stiff + _geometric(f, *fixed_prestress)
-    return mass, stiff, geo
+        stiff = stiff + geometric_matrices(f, *fixed_prestress)
+    return mass, stiff
 
 
-def _geometric(f: ElementFields, ns0: np.ndarray, nt0: np.ndarray | None) -> np.ndarray:
-    """N_s (beta_s^2 + c Phi^2) + N_theta (beta_theta^2 + c Phi^2) per element (N/m)."""
+def geometric_matrices(f: ElementFields, ns0: np.ndarray, nt0: np.ndarray | None) -> np.ndarray:
+    """Geometric stiffness (N/m) N_s (beta_s^2 + c Phi^2) + N_theta (beta_theta^2 + c Phi^2) of
+    all elements from their fields (:func:`element_fields`), (e, n_dof, n_dof) in the local
+    DOFs (Brush & Almroth 1975, ch. 5).
+
+    Parameters
+    ----------
+    f : ElementFields
+        The elements' fields of harmonic k.
+    ns0, nt0 : ndarray, shape (e, g)
+        As :func:`element_matrices` (``nt0`` None: 0).
+    """
     rot = f.meridional_rotation
     geo = einsum("egia,egib,eg->eab", rot, rot, ns0 * f.volume)
     if nt0 is not None:

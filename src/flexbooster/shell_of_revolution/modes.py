@@ -31,12 +31,13 @@ from .assembly import (
     node_transform,
     rigid_body_fields,
     ring_matrix,
+    shell_harmonic,
     thrust_prestate,
 )
-from .elements import element_energies, element_fields, reference_element
+from .elements import ElementFields, element_energies, reference_element
 from .geometry import Vehicle
 from .prestress import Prestate, load_path, pressure_resultants, pressure_rings
-from .shared import shared_harmonics, shared_value
+from .shared import shared_harmonics, shared_value, shell_value
 from .wetted_wall import tank_added_mass
 
 __all__ = [
@@ -269,12 +270,14 @@ def _readonly(*arrays) -> None:
 
 
 def _mesh(vehicle: Vehicle, elements_per_segment, order: int, refinement: int = 1) -> Mesh:
-    """:func:`~.assembly.mesh_vehicle`, once per vehicle within :func:`shared_harmonics`."""
+    """:func:`~.assembly.mesh_vehicle` (a function of the segments alone), once per segments
+    within :func:`shared_harmonics`, or across vehicles within :func:`.shared.shared_shell`."""
     counts = tuple(elements_per_segment) if isinstance(elements_per_segment, list | np.ndarray) \
         else elements_per_segment
-    return shared_value(("mesh", id(vehicle), counts, order, refinement), (vehicle,),
-                        lambda: mesh_vehicle(vehicle, elements_per_segment=elements_per_segment,
-                                             order=order, refinement=refinement))
+    return shell_value(("mesh", id(vehicle.segments), counts, order, refinement),
+                       (vehicle.segments,),
+                       lambda: mesh_vehicle(vehicle, elements_per_segment=elements_per_segment,
+                                            order=order, refinement=refinement))
 
 
 # ----------------------------------------------------------------------------- helpers
@@ -299,6 +302,7 @@ class _Harmonic:
     dmap: DofMap
     elem_k: np.ndarray
     structural_mass: np.ndarray
+    fields: ElementFields
     reflectors: tuple | None = None
 
     @property
@@ -382,7 +386,7 @@ def _new_harmonic(vehicle: Vehicle, mesh: Mesh, k: int, *, F0: float, supported:
     _readonly(M, K, G, Q, R, ke, hm.mass)
     return _Harmonic(k=k, mesh=mesh, theory=vehicle.theory, prestate=pre, M=M, K=K, G=G, Q=Q,
                      R=R, dmap=dmap, elem_k=ke, structural_mass=hm.mass,
-                     reflectors=reflectors)
+                     fields=shell_harmonic(vehicle, mesh, k).fields, reflectors=reflectors)
 
 
 def _project(h: _Harmonic, mat: np.ndarray) -> np.ndarray:
@@ -419,12 +423,12 @@ def _lowest_sparse(A: np.ndarray, B: np.ndarray, count: int) -> tuple | None:
     definiteness by the same law: the pivots of the symmetric factorisation (no row
     interchange) are all positive.
     """
-    As = sp.csc_matrix(A)
+    As = _sparse(A.T).T  # CSC: the CSR of the transpose
     lu = spla.splu(As, permc_spec="MMD_AT_PLUS_A", diag_pivot_thresh=0.0,
                    options={"SymmetricMode": True})
     if np.any(lu.perm_r != lu.perm_c) or np.any(lu.U.diagonal() <= 0.0):
         return None
-    Bs = sp.csr_matrix(B)
+    Bs = _sparse(B)
     found = _lanczos(lu.solve, Bs, count)
     below = -1 if found is None else _count_below(As - found[2] * Bs)
     if below == count:
@@ -439,6 +443,17 @@ def _lowest_sparse(A: np.ndarray, B: np.ndarray, count: int) -> tuple | None:
     order = np.argsort(vals)
     vals, vecs = vals[order], vecs[:, order]
     return vals, vecs / np.sqrt(np.einsum("ij,ij->j", vecs, B @ vecs))
+
+
+def _sparse(A: np.ndarray) -> sp.csr_matrix:
+    """``scipy.sparse.csr_matrix(A)`` of a dense 2-D array, the same arrays (row-major order of
+    the nonzeros, sorted, no duplicates), without the coordinate form and its sort."""
+    n_rows, n_cols = A.shape
+    flat = np.ravel(A)
+    nz = np.flatnonzero(flat)
+    indptr = np.zeros(n_rows + 1, dtype=np.int32)
+    np.cumsum(np.bincount(nz // n_cols, minlength=n_rows), out=indptr[1:])
+    return sp.csr_matrix((flat[nz], (nz % n_cols).astype(np.int32), indptr), shape=A.shape)
 
 
 def _lanczos(solve: Callable, B, count: int) -> tuple | None:
@@ -592,10 +607,7 @@ def _rayleigh(h: _Harmonic, vecs: np.ndarray, *, loaded: bool) -> np.ndarray:
     the mesh's eigenvalue (Bathe 1996, sec. 10.2.5).
     """
     mesh = h.mesh
-    fields = element_fields(reference_element(mesh.order), h.k, r1=mesh.r1,
-                            length=mesh.length, sin_phi=mesh.sin_phi, cos_phi=mesh.cos_phi,
-                            thickness=mesh.thickness, E=mesh.E, nu=mesh.nu, theory=h.theory,
-                            stiffening=mesh.stiffening)
+    fields = h.fields
     pre = h.prestate if loaded else None
     resultants = [] if pre is None else [(pre.meridional, pre.hoop)]
     fixed = pressure_resultants(mesh)
@@ -983,7 +995,7 @@ def mode_vectors(
     loaded = F0 != 0.0
     h = _harmonic(vehicle, mesh, k, F0=F0, supported=supported_forward_end, geometric=loaded)
     X = _solve(h, loaded=loaded, n_modes=n_modes, w2_max=None)[1]
-    return X, h.structural_mass, sp.csr_matrix(h.M - h.structural_mass)
+    return X, h.structural_mass, _sparse(h.M - h.structural_mass)
 
 
 def buckling_load(
