@@ -400,9 +400,19 @@ def element_set(vehicle: Vehicle, mesh: Mesh, k: int, *, prestate: Prestate | No
     """
     f = _element_fields(vehicle, mesh, k)
     T = node_transform(mesh)
-    m, ke = field_matrices(f, _areal_mass(mesh), fixed_prestress=pressure_resultants(mesh))
-    kg = None if prestate is None else geometric_matrices(f, prestate.meridional, prestate.hoop)
-    return tuple(None if mat is None else _node_frames(T, mat) for mat in (m, ke, kg))
+    return _shell_elements(mesh, f, T) + (
+        None if prestate is None else _geometric_elements(f, T, prestate),)
+
+
+def _shell_elements(mesh: Mesh, f: ElementFields, T: np.ndarray) -> tuple:
+    """(M, K_e) of every element in the node frames (K_e with the pressure's prestress)."""
+    return tuple(_node_frames(T, mat) for mat in field_matrices(
+        f, _areal_mass(mesh), fixed_prestress=pressure_resultants(mesh)))
+
+
+def _geometric_elements(f: ElementFields, T: np.ndarray, prestate: Prestate) -> np.ndarray:
+    """K_g of every element in the node frames, of the prestate's membrane resultants."""
+    return _node_frames(T, geometric_matrices(f, prestate.meridional, prestate.hoop))
 
 
 def _element_fields(vehicle: Vehicle, mesh: Mesh, k: int) -> ElementFields:
@@ -569,8 +579,9 @@ def assemble(mesh: Mesh, dmap: DofMap, element: np.ndarray) -> np.ndarray:
 
 
 @dataclass(frozen=True)
-class HarmonicMatrices:
-    """The assembled matrices of one harmonic (reduced DOFs) and what they were built from.
+class ShellHarmonic:
+    """What of harmonic k depends on the shell alone (not on its tanks' fills nor on the
+    thrust), :func:`shell_harmonic`; read-only arrays.
 
     Attributes
     ----------
@@ -579,19 +590,65 @@ class HarmonicMatrices:
     dmap : DofMap
         Constraint map.
     mass, stiffness : ndarray, shape (n, n)
-        M (kg) and K_e (N/m).
-    geometric : ndarray, shape (n, n) or None
-        K_g of the prestate (N/m): elements and rings; None without a prestate.
+        M with the lumped masses (kg) and K_e with the pressure's rings (N/m), reduced.
     element_stiffness : ndarray, shape (e, n_dof, n_dof)
         K_e of every element in the node frames (N/m).
+    fields : ElementFields
+        The elements' fields (:func:`.elements.element_fields`).
+    transform : ndarray, shape (e, n_dof, n_dof)
+        The elements' node-frame rotation (:func:`node_transform`).
     """
 
     k: int
     dmap: DofMap
     mass: np.ndarray
     stiffness: np.ndarray
-    geometric: np.ndarray | None
     element_stiffness: np.ndarray
+    fields: ElementFields
+    transform: np.ndarray
+
+
+@dataclass(frozen=True)
+class HarmonicMatrices:
+    """The assembled matrices of one harmonic (reduced DOFs) and what they were built from:
+    the shell's part and the prestate's geometric stiffness.
+
+    Attributes
+    ----------
+    shell : ShellHarmonic
+        The shell's part: ``k``, ``dmap``, ``mass`` (M, kg), ``stiffness`` (K_e, N/m) and
+        ``element_stiffness`` are its own, also read as attributes of this one.
+    geometric : ndarray, shape (n, n) or None
+        K_g of the prestate (N/m): elements and rings; None without a prestate.
+    """
+
+    shell: ShellHarmonic
+    geometric: np.ndarray | None
+
+    @property
+    def k(self) -> int:
+        """Circumferential wave number."""
+        return self.shell.k
+
+    @property
+    def dmap(self) -> DofMap:
+        """Constraint map."""
+        return self.shell.dmap
+
+    @property
+    def mass(self) -> np.ndarray:
+        """M (kg), reduced (n, n)."""
+        return self.shell.mass
+
+    @property
+    def stiffness(self) -> np.ndarray:
+        """K_e (N/m), reduced (n, n)."""
+        return self.shell.stiffness
+
+    @property
+    def element_stiffness(self) -> np.ndarray:
+        """K_e of every element in the node frames (N/m), (e, n_dof, n_dof)."""
+        return self.shell.element_stiffness
 
 
 def harmonic_matrices(vehicle: Vehicle, mesh: Mesh, k: int, *,
@@ -614,36 +671,10 @@ def harmonic_matrices(vehicle: Vehicle, mesh: Mesh, k: int, *,
     shell = shell_harmonic(vehicle, mesh, k)
     geo = None
     if prestate is not None:
-        kg = _node_frames(shell.transform, geometric_matrices(shell.fields, prestate.meridional,
-                                                              prestate.hoop))
+        kg = _geometric_elements(shell.fields, shell.transform, prestate)
         geo = assemble(mesh, shell.dmap, kg) + ring_matrix(vehicle.theory, shell.dmap,
                                                            prestate, k)
-    return HarmonicMatrices(k=k, dmap=shell.dmap, mass=shell.mass, stiffness=shell.stiffness,
-                            geometric=geo, element_stiffness=shell.element_stiffness)
-
-
-@dataclass(frozen=True)
-class ShellHarmonic:
-    """What of harmonic k depends on the shell alone (not on its tanks' fills nor on the
-    thrust), :func:`shell_harmonic`; read-only arrays.
-
-    Attributes
-    ----------
-    k, dmap, mass, stiffness, element_stiffness
-        As :class:`HarmonicMatrices` (M with the lumped masses, K_e with the pressure's rings).
-    fields : ElementFields
-        The elements' fields (:func:`.elements.element_fields`).
-    transform : ndarray, shape (e, n_dof, n_dof)
-        The elements' node-frame rotation (:func:`node_transform`).
-    """
-
-    k: int
-    dmap: DofMap
-    fields: ElementFields
-    transform: np.ndarray
-    mass: np.ndarray
-    stiffness: np.ndarray
-    element_stiffness: np.ndarray
+    return HarmonicMatrices(shell=shell, geometric=geo)
 
 
 def shell_harmonic(vehicle: Vehicle, mesh: Mesh, k: int) -> ShellHarmonic:
@@ -671,8 +702,7 @@ def _new_shell_harmonic(vehicle: Vehicle, mesh: Mesh, k: int) -> ShellHarmonic:
     dmap = dof_map(vehicle, mesh, k)
     f = _element_fields(vehicle, mesh, k)
     T = node_transform(mesh)
-    m, ke = (_node_frames(T, mat) for mat in field_matrices(
-        f, _areal_mass(mesh), fixed_prestress=pressure_resultants(mesh)))
+    m, ke = _shell_elements(mesh, f, T)
     mass = assemble(mesh, dmap, m)
     stiffness = assemble(mesh, dmap, ke)
     rings = pressure_ring_matrix(vehicle, mesh, dmap, k)
@@ -683,8 +713,8 @@ def _new_shell_harmonic(vehicle: Vehicle, mesh: Mesh, k: int) -> ShellHarmonic:
         mass = mass + lumped
     for arr in (T, mass, stiffness, ke, *(getattr(f, x.name) for x in fields(f))):
         arr.setflags(write=False)
-    return ShellHarmonic(k=k, dmap=dmap, fields=f, transform=T, mass=mass, stiffness=stiffness,
-                         element_stiffness=ke)
+    return ShellHarmonic(k=k, dmap=dmap, mass=mass, stiffness=stiffness, element_stiffness=ke,
+                         fields=f, transform=T)
 
 
 def system_matrices(

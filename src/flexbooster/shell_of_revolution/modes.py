@@ -31,7 +31,6 @@ from .assembly import (
     node_transform,
     rigid_body_fields,
     ring_matrix,
-    shell_harmonic,
     thrust_prestate,
 )
 from .elements import ElementFields, element_energies, reference_element
@@ -386,7 +385,7 @@ def _new_harmonic(vehicle: Vehicle, mesh: Mesh, k: int, *, F0: float, supported:
     _readonly(M, K, G, Q, R, ke, hm.mass)
     return _Harmonic(k=k, mesh=mesh, theory=vehicle.theory, prestate=pre, M=M, K=K, G=G, Q=Q,
                      R=R, dmap=dmap, elem_k=ke, structural_mass=hm.mass,
-                     fields=shell_harmonic(vehicle, mesh, k).fields, reflectors=reflectors)
+                     fields=hm.shell.fields, reflectors=reflectors)
 
 
 def _project(h: _Harmonic, mat: np.ndarray) -> np.ndarray:
