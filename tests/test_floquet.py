@@ -717,10 +717,10 @@ def test_second_region_in_the_window_of_a_cluster_candidate(zeta, growth):
     # (0, 3) j = 2), 3.1902-3.1940 (sum (0, 1)) and its own, moved to 3.2028-3.2370, the
     # strongest (growth 1.04e-2 1/s undamped, 8.7e-4 with zeta = 0.005, by solve_ivp at 3.22).
     # Its indicator (the s nearest its prediction, which changes with Omega in the cluster) is
-    # positive in more than one of them, and the maximisation stopped at the first: the region
-    # was missed (489 of the scan's 594 unstable points outside undamped, all 197 damped). The
-    # rest of the window of a cluster candidate that found a region is searched again. A
-    # 2,001-point scan of 3.15-3.29 finds no unstable point outside the regions.
+    # positive in more than one of them, and the maximisation stops at the first: without the
+    # search of the rest of the window the region is missed (489 of the scan's 594 unstable
+    # points outside undamped, all 197 damped). A 2,001-point scan of 3.15-3.29 finds no
+    # unstable point outside the regions.
     w, r = CLUSTER_4
     M, A, B = _shifted_system(CLUSTER_4, 0.3)
     C = np.diag(2.0 * zeta * w) if zeta else None
@@ -768,8 +768,8 @@ def test_damped_region_inside_overlapping_undamped_regions(system, gamma, zeta, 
     # DAMPED_INTERNAL: the simple j = 3 region of mode 3 (centre 2 w_3 / 3 = 2.9975; damped
     # 2.978-2.989, growth 3e-3 1/s) has an undamped growth of 9.7e-3 1/s, 30 times the damping
     # filter's path estimate: its chain passes nu = w_3 - Omega = 1.499 beside w_0 = 1.526 (a
-    # small denominator, a_1 = a_2 = 28). Left out by the filter before the small-denominator
-    # factors (312 of the scan's unstable points outside).
+    # small denominator, a_1 = a_2 = 28). The filter without the small-denominator factors
+    # leaves it out (312 of the scan's unstable points outside).
     w, r = system
     M, A, B = _shifted_system(system, gamma)
     C = np.diag(2.0 * zeta * w)

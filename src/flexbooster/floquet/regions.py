@@ -340,7 +340,6 @@ def _pair_sizes(w: np.ndarray, mode: np.ndarray, partner: np.ndarray,
                 meet = np.floor(x / a) >= np.maximum(np.ceil(x / b), 1.0)
                 meet[rows, partner[c]] = False
                 near |= meet
-        near[rows, mode[c]] = True
         out[c] = np.maximum(near.sum(axis=1), np.where(shifted[c], min(2, w.size), 1))
     return np.minimum(cluster, _CLUSTER_MAX), np.minimum(out, _CLUSTER_MAX)
 

@@ -24,7 +24,7 @@ from numpy.polynomial import legendre as leg
 from ..checks import count
 
 __all__ = ["ElementFields", "ReferenceElement", "element_energies", "element_fields",
-           "element_matrices", "field_matrices", "geometric_matrices", "reference_element",
+           "field_matrices", "geometric_matrices", "reference_element",
            "theta_weight"]
 
 
@@ -215,7 +215,8 @@ def element_fields(
     theory: str = "sanders",
     stiffening: np.ndarray | None = None,
 ) -> ElementFields:
-    """The operators of :func:`element_matrices` (Sanders or Donnell).
+    """The operators of :func:`field_matrices` and :func:`geometric_matrices` (Sanders or
+    Donnell).
 
     Parameters
     ----------
@@ -268,53 +269,6 @@ def element_fields(
         volume=theta_weight(k) * ref.weight[None, :] * jac * r)  # theta weight * r ds
 
 
-def element_matrices(
-    ref: ReferenceElement,
-    k: int,
-    *,
-    r1: np.ndarray,
-    length: np.ndarray,
-    sin_phi: np.ndarray,
-    cos_phi: np.ndarray,
-    thickness: np.ndarray,
-    E: np.ndarray,
-    nu: np.ndarray,
-    rho: np.ndarray,
-    theory: str = "sanders",
-    ns0: np.ndarray | None = None,
-    nt0: np.ndarray | None = None,
-    areal_mass: np.ndarray | None = None,
-    stiffening: np.ndarray | None = None,
-    fixed_prestress: tuple | None = None,
-) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
-    """Consistent mass (kg), elastic stiffness (N/m) and geometric stiffness (N/m, None without
-    ``ns0``) N_s (beta_s^2 + c Phi^2) + N_theta (beta_theta^2 + c Phi^2) of all elements for
-    harmonic k, each (e, n_dof, n_dof) in the local DOFs.
-
-    Parameters
-    ----------
-    ref, k, r1, length, sin_phi, cos_phi, thickness, E, nu, theory
-        As :func:`element_fields`.
-    rho : ndarray, shape (e,)
-        Density (kg/m^3).
-    ns0, nt0 : ndarray, shape (e, g), optional
-        Meridional and hoop prestress resultants at the Gauss points (N/m, compression < 0);
-        ``nt0`` None: 0.
-    areal_mass : ndarray, shape (e,), optional
-        Mass per unit wall area (kg/m^2); None: rho h.
-    stiffening : ndarray, shape (e, 6, 6), optional
-        As :func:`element_fields`.
-    fixed_prestress : (ndarray, ndarray), optional
-        (N_s, N_theta) at the Gauss points (N/m) of loads that do not scale with the thrust
-        (internal pressure): their geometric stiffness is added to the elastic one.
-    """
-    f = element_fields(ref, k, r1=r1, length=length, sin_phi=sin_phi, cos_phi=cos_phi,
-                       thickness=thickness, E=E, nu=nu, theory=theory, stiffening=stiffening)
-    mass, stiff = field_matrices(f, rho * thickness if areal_mass is None else areal_mass,
-                                 fixed_prestress=fixed_prestress)
-    return mass, stiff, None if ns0 is None else geometric_matrices(f, ns0, nt0)
-
-
 def field_matrices(f: ElementFields, areal_mass: np.ndarray, *,
                    fixed_prestress: tuple | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Consistent mass (kg) and elastic stiffness (N/m) of all elements from their fields
@@ -328,7 +282,8 @@ def field_matrices(f: ElementFields, areal_mass: np.ndarray, *,
     areal_mass : ndarray, shape (e,)
         Mass per unit wall area (kg/m^2).
     fixed_prestress : (ndarray, ndarray), optional
-        As :func:`element_matrices`.
+        (N_s, N_theta) at the Gauss points (N/m) of loads that do not scale with the thrust
+        (internal pressure): their geometric stiffness is added to the elastic one.
     """
     stiff = einsum("egia,eij,egjb,eg->eab", f.strains, f.material, f.strains, f.volume)
     mass = einsum("egia,egib,eg->eab", f.displacement, f.displacement,
@@ -348,7 +303,8 @@ def geometric_matrices(f: ElementFields, ns0: np.ndarray, nt0: np.ndarray | None
     f : ElementFields
         The elements' fields of harmonic k.
     ns0, nt0 : ndarray, shape (e, g)
-        As :func:`element_matrices` (``nt0`` None: 0).
+        Meridional and hoop prestress resultants at the Gauss points (N/m, compression < 0);
+        ``nt0`` None: 0.
     """
     rot = f.meridional_rotation
     geo = einsum("egia,egib,eg->eab", rot, rot, ns0 * f.volume)
